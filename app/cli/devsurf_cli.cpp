@@ -1,0 +1,297 @@
+// devsurf-cli: the command-line tool for scripts and batch work.
+// Exit codes: 0 success, 1 bad usage, 2 invalid or unreadable input (or an output that
+// cannot be written), each failure explained in one sentence on stderr.
+
+#include "io/file_error.h"
+#include "io/interchange_json.h"
+#include "io/project_file.h"
+#include "model/examples.h"
+#include "model/model_error.h"
+#include "model/surface_statistics.h"
+
+#include <QCoreApplication>
+#include <QSaveFile>
+#include <QString>
+
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace devsurf;
+
+constexpr int kExitOk = 0;
+constexpr int kExitUsage = 1;
+constexpr int kExitInput = 2;
+
+const char* const kUsage = R"(Usage: devsurf-cli COMMAND [OPTIONS]
+
+Commands:
+  example NAME [--size K] -o FILE.devsurf
+                      Write a built-in example (sheet, annulus, cylinder, mixed).
+  info FILE           Print surfaces, faces per type, spline spaces, control points,
+                      vertices and edges.
+  validate FILE       Check every invariant of the model; list all problems.
+  export-json FILE -o OUT.json [--samples N]
+                      Write the interchange JSON (docs/interchange-format.md);
+                      N samples per spline interval for the mesh (default 8).
+  examples            List the built-in examples and their sizes.
+
+Options:
+  -h, --help          Show this help.
+  --version           Show the version.
+
+Exit codes: 0 success, 1 bad usage, 2 invalid or unreadable input.
+)";
+
+struct UsageError {
+    std::string message;
+};
+
+struct Arguments {
+    std::vector<std::string> positional;
+    std::map<std::string, std::string> options;
+};
+
+// Splits arguments into positionals and "--name value" options (only the names given).
+Arguments parse(const std::vector<std::string>& args, const std::vector<std::string>& valued) {
+    Arguments result;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        if (arg.size() > 1 && arg[0] == '-') {
+            bool known = false;
+            for (const std::string& name : valued) {
+                if (arg == name) {
+                    known = true;
+                }
+            }
+            if (!known) {
+                throw UsageError{"unknown option '" + arg + "'"};
+            }
+            if (i + 1 >= args.size()) {
+                throw UsageError{"option '" + arg + "' needs a value"};
+            }
+            if (result.options.count(arg) != 0) {
+                throw UsageError{"option '" + arg + "' is given twice"};
+            }
+            result.options[arg] = args[++i];
+        } else {
+            result.positional.push_back(arg);
+        }
+    }
+    return result;
+}
+
+int parseInteger(const std::string& text, const std::string& option) {
+    try {
+        std::size_t used = 0;
+        const long value = std::stol(text, &used);
+        if (used == text.size() && value >= -1000000 && value <= 1000000) {
+            return static_cast<int>(value);
+        }
+    } catch (const std::exception&) {
+    }
+    throw UsageError{"option '" + option + "' needs a whole number, not '" + text + "'"};
+}
+
+std::string requiredOutput(const Arguments& args) {
+    auto it = args.options.find("-o");
+    if (it == args.options.end()) {
+        throw UsageError{"the output file is missing (use -o FILE)"};
+    }
+    return it->second;
+}
+
+void expectPositionals(const Arguments& args, std::size_t count, const char* what) {
+    if (args.positional.size() != count) {
+        throw UsageError{std::string("expected ") + what};
+    }
+}
+
+void writeTextFile(const std::string& path, const std::string& text) {
+    QSaveFile file(QString::fromStdString(path));
+    if (!file.open(QIODevice::WriteOnly) ||
+        file.write(text.data(), static_cast<qint64>(text.size())) !=
+            static_cast<qint64>(text.size()) ||
+        !file.commit()) {
+        throw io::FileError("Cannot write '" + path + "': " +
+                            file.errorString().toStdString() + ".");
+    }
+}
+
+int commandExample(const std::vector<std::string>& rest) {
+    const Arguments args = parse(rest, {"-o", "--size"});
+    expectPositionals(args, 1, "one example name");
+    int size = 0;
+    if (auto it = args.options.find("--size"); it != args.options.end()) {
+        size = parseInteger(it->second, "--size");
+        if (size <= 0) {
+            throw UsageError{"option '--size' must be positive"};
+        }
+    }
+    const std::string output = requiredOutput(args);
+    model::Project project;
+    try {
+        project = model::makeExample(args.positional[0], size);
+    } catch (const model::ModelError& error) {
+        throw UsageError{error.what()};
+    }
+    io::saveProjectFile(project, QString::fromStdString(output));
+    std::cout << "Wrote " << output << " (" << project.surfaces.front().name() << ", "
+              << project.surfaces.front().faces().size() << " faces, "
+              << project.surfaces.front().controlPointCount() << " control points)\n";
+    return kExitOk;
+}
+
+std::string faceSummary(const model::SurfaceStatistics& stats) {
+    using model::FaceType;
+    auto count = [&stats](FaceType type) {
+        auto it = stats.facesByType.find(type);
+        return it == stats.facesByType.end() ? std::size_t{0} : it->second;
+    };
+    std::string text = std::to_string(stats.faces()) + " (" +
+                       std::to_string(count(FaceType::StripSRSR)) + " SRSR strips, " +
+                       std::to_string(count(FaceType::StripSRS)) + " SRS strips, " +
+                       std::to_string(count(FaceType::ConeSRR)) + " SRR cones, " +
+                       std::to_string(count(FaceType::Planar)) + " planar";
+    if (count(FaceType::Invalid) != 0) {
+        text += ", " + std::to_string(count(FaceType::Invalid)) + " invalid";
+    }
+    return text + ")";
+}
+
+int commandInfo(const std::vector<std::string>& rest) {
+    const Arguments args = parse(rest, {});
+    expectPositionals(args, 1, "one project file");
+    const std::string& path = args.positional[0];
+    const model::Project project = io::loadProjectFile(QString::fromStdString(path));
+    std::cout << "File: " << path << "\n"
+              << "Format version: " << io::kProjectFormatVersion << "\n"
+              << "Units: " << project.units << "\n"
+              << "Surfaces: " << project.surfaces.size() << "\n";
+    for (std::size_t i = 0; i < project.surfaces.size(); ++i) {
+        const model::CompositeSurface& surface = project.surfaces[i];
+        const model::SurfaceStatistics stats = model::surfaceStatistics(surface);
+        std::cout << "Surface " << i + 1 << ": " << surface.name() << "\n"
+                  << "  Faces: " << faceSummary(stats) << "\n"
+                  << "  Spline spaces:";
+        for (const auto& [space, edges] : stats.splineSpaces) {
+            std::cout << (space == stats.splineSpaces.begin()->first ? " " : "; ")
+                      << space.describe() << " (" << edges << " S-edges)";
+        }
+        std::cout << "\n"
+                  << "  Control points: " << stats.controlPoints << "\n"
+                  << "  Vertices: " << stats.vertices << "\n"
+                  << "  Edges: " << stats.splineEdges << " S, " << stats.rulingEdges << " R\n";
+    }
+    return kExitOk;
+}
+
+int commandValidate(const std::vector<std::string>& rest) {
+    const Arguments args = parse(rest, {});
+    expectPositionals(args, 1, "one project file");
+    const std::string& path = args.positional[0];
+    try {
+        const model::Project project = io::loadProjectFile(QString::fromStdString(path));
+        std::cout << path << ": valid (" << project.surfaces.size() << " surface"
+                  << (project.surfaces.size() == 1 ? "" : "s") << ")\n";
+        return kExitOk;
+    } catch (const io::FileError& error) {
+        std::cerr << "devsurf-cli: " << error.what() << "\n";
+        for (const std::string& problem : error.details()) {
+            std::cerr << "  - " << problem << "\n";
+        }
+        return kExitInput;
+    }
+}
+
+int commandExportJson(const std::vector<std::string>& rest) {
+    const Arguments args = parse(rest, {"-o", "--samples"});
+    expectPositionals(args, 1, "one project file");
+    int samples = 8;
+    if (auto it = args.options.find("--samples"); it != args.options.end()) {
+        samples = parseInteger(it->second, "--samples");
+        if (samples < 1 || samples > 1000) {
+            throw UsageError{"option '--samples' must be between 1 and 1000"};
+        }
+    }
+    const std::string output = requiredOutput(args);
+    const model::Project project = io::loadProjectFile(QString::fromStdString(args.positional[0]));
+    writeTextFile(output, io::interchangeJson(project, samples));
+    std::cout << "Wrote " << output << "\n";
+    return kExitOk;
+}
+
+int commandExamples() {
+    for (const model::ExampleInfo& info : model::builtInExamples()) {
+        std::cout << info.name << ": " << info.description << "; size " << info.minSize << "–"
+                  << info.maxSize << ", default " << info.defaultSize << "\n";
+    }
+    return kExitOk;
+}
+
+int run(const std::vector<std::string>& args) {
+    if (args.empty()) {
+        throw UsageError{"a command is missing"};
+    }
+    const std::string& command = args[0];
+    const std::vector<std::string> rest(args.begin() + 1, args.end());
+    if (command == "-h" || command == "--help" || command == "help") {
+        std::cout << kUsage;
+        return kExitOk;
+    }
+    if (command == "--version") {
+        std::cout << "devsurf-cli " << DEVSURF_VERSION << " (project file format "
+                  << io::kProjectFormatVersion << ", interchange format "
+                  << io::kInterchangeVersion << ")\n";
+        return kExitOk;
+    }
+    for (const std::string& arg : rest) {
+        if (arg == "-h" || arg == "--help") {
+            std::cout << kUsage;
+            return kExitOk;
+        }
+    }
+    if (command == "example") {
+        return commandExample(rest);
+    }
+    if (command == "info") {
+        return commandInfo(rest);
+    }
+    if (command == "validate") {
+        return commandValidate(rest);
+    }
+    if (command == "export-json") {
+        return commandExportJson(rest);
+    }
+    if (command == "examples") {
+        return commandExamples();
+    }
+    throw UsageError{"unknown command '" + command + "'"};
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    QCoreApplication app(argc, argv);
+    std::vector<std::string> args(argv + 1, argv + argc);
+    try {
+        return run(args);
+    } catch (const UsageError& error) {
+        std::cerr << "devsurf-cli: " << error.message << ". Run 'devsurf-cli --help' for usage.\n";
+        return kExitUsage;
+    } catch (const io::FileError& error) {
+        std::cerr << "devsurf-cli: " << error.what() << "\n";
+        return kExitInput;
+    } catch (const model::ModelError& error) {
+        std::cerr << "devsurf-cli: " << error.what() << "\n";
+        return kExitInput;
+    } catch (const std::exception& error) {
+        std::cerr << "devsurf-cli: unexpected failure: " << error.what() << "\n";
+        return kExitInput;
+    }
+}

@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# DevSurf setup: installs the Debian packages it needs (only the missing ones), configures and
+# builds, then either starts DevSurf on a built-in example (`run`) or runs every test headless
+# (`test`). Idempotent: a second run with everything in place only rebuilds what changed.
+set -euo pipefail
+
+mode="${1:-run}"
+case "$mode" in
+  run|test|build) ;;
+  *) echo "usage: bash cmake/setup.sh [run|test|build]" >&2; exit 1 ;;
+esac
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="$root/build"
+build_asan="$root/build-asan"
+jobs="$(nproc 2>/dev/null || echo 2)"
+
+packages=(
+  cmake g++ ninja-build ccache pkg-config
+  qt6-base-dev libqt6opengl6-dev qt6-svg-dev qt6-tools-dev qt6-l10n-tools
+  libvtk9-dev libeigen3-dev libsuitesparse-dev libopenmesh-dev libboost-serialization-dev
+  libopenblas0-serial
+  xvfb xauth
+)
+if [ "$mode" = test ]; then
+  packages+=(python3-ezdxf)
+fi
+
+as_root() {
+  if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi
+}
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+if [ "${#missing[@]}" -gt 0 ]; then
+  echo "== Installing ${#missing[@]} Debian packages: ${missing[*]}"
+  as_root apt-get update -qq
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
+fi
+
+# CHOLMOD calls the generic libblas.so.3: make it the single-threaded OpenBLAS, not the
+# reference BLAS (or ATLAS, which other packages may register).
+blas_alt=libblas.so.3-$(gcc -print-multiarch 2>/dev/null || echo x86_64-linux-gnu)
+openblas=$(update-alternatives --list "$blas_alt" 2>/dev/null | grep openblas-serial || true)
+if [ -n "$openblas" ] && [ "$(readlink -f /etc/alternatives/"$blas_alt")" != "$(readlink -f "$openblas")" ]; then
+  as_root update-alternatives --set "$blas_alt" "$openblas"
+fi
+
+configure_and_build() { # dir, extra cmake args...
+  local dir="$1"; shift
+  if [ ! -f "$dir/build.ninja" ]; then
+    cmake -S "$root" -B "$dir" -G Ninja "$@"
+  fi
+  cmake --build "$dir" -j "$jobs"
+}
+
+echo "== Building (Release) in $build"
+configure_and_build "$build" -DCMAKE_BUILD_TYPE=Release
+
+case "$mode" in
+  build)
+    ;;
+  run)
+    example="$build/examples/annulus.devsurf"
+    mkdir -p "$build/examples"
+    "$build/bin/devsurf-cli" example annulus -o "$example" >/dev/null
+    echo "== DevSurf on the built-in example 'annulus' ($example)"
+    if [ -x "$build/bin/devsurf" ]; then
+      exec "$build/bin/devsurf" "$example"
+    fi
+    # The desktop application is not built yet: show the example through the command-line tool.
+    "$build/bin/devsurf-cli" info "$example"
+    "$build/bin/devsurf-cli" validate "$example"
+    ;;
+  test)
+    echo "== Running all tests (headless)"
+    (cd "$build" && xvfb-run -a -s "-screen 0 1920x1080x24" ctest --output-on-failure -j "$jobs")
+    echo "== Building and running the unit tests under AddressSanitizer + UBSan in $build_asan"
+    configure_and_build "$build_asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDEVSURF_SANITIZE=ON \
+      -DDEVSURF_UNIT_TESTS_ONLY=ON
+    (cd "$build_asan" && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+      UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+      xvfb-run -a ctest --output-on-failure -j "$jobs")
+    ;;
+esac

@@ -1,0 +1,16 @@
+#pragma once
+
+#include "model/project.h"
+
+#include <string>
+
+namespace devsurf::io {
+
+inline constexpr int kInterchangeVersion = 1;
+
+// The interchange JSON, version 1 (docs/interchange-format.md): spline data of every strip,
+// cone, planar face and crease, the sampled mesh and its development. Numbers are written with
+// 17 significant digits. Throws model::ModelError if a surface is invalid.
+std::string interchangeJson(const model::Project& project, int samplesPerInterval = 8);
+
+} // namespace devsurf::io

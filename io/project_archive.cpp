@@ -1,0 +1,307 @@
+#include "project_archive.h"
+
+#include "file_error.h"
+#include "model/model_error.h"
+
+#include <boost/archive/archive_exception.hpp>
+#include <boost/archive/text_iarchive.hpp>
+#include <boost/archive/text_oarchive.hpp>
+#include <boost/serialization/level.hpp>
+#include <boost/serialization/split_free.hpp>
+#include <boost/serialization/tracking.hpp>
+#include <boost/serialization/version.hpp>
+
+#include <sstream>
+
+// Class versions of the archive. A reader refuses versions newer than these itself: Boost 1.74
+// passes any version through to the load functions.
+namespace devsurf::io::versions {
+inline constexpr unsigned kProject = 1;
+inline constexpr unsigned kSurface = 1;
+inline constexpr unsigned kEdge = 1;
+} // namespace devsurf::io::versions
+
+BOOST_SERIALIZATION_SPLIT_FREE(devsurf::model::Project)
+BOOST_SERIALIZATION_SPLIT_FREE(devsurf::model::CompositeSurface)
+BOOST_SERIALIZATION_SPLIT_FREE(devsurf::model::EdgeRecord)
+BOOST_CLASS_VERSION(devsurf::model::Project, devsurf::io::versions::kProject)
+BOOST_CLASS_VERSION(devsurf::model::CompositeSurface, devsurf::io::versions::kSurface)
+BOOST_CLASS_VERSION(devsurf::model::EdgeRecord, devsurf::io::versions::kEdge)
+BOOST_CLASS_TRACKING(devsurf::model::Project, boost::serialization::track_never)
+BOOST_CLASS_TRACKING(devsurf::model::CompositeSurface, boost::serialization::track_never)
+BOOST_CLASS_TRACKING(devsurf::model::EdgeRecord, boost::serialization::track_never)
+BOOST_CLASS_IMPLEMENTATION(devsurf::model::Vec3, boost::serialization::object_serializable)
+BOOST_CLASS_TRACKING(devsurf::model::Vec3, boost::serialization::track_never)
+
+namespace devsurf::io {
+namespace {
+
+// Bounds every count read from a file before anything is allocated: no count may exceed its
+// own limit nor what the rest of the archive could possibly hold (each element takes at
+// least two characters in a text archive).
+struct ReadContext {
+    const std::istream* stream = nullptr;
+    std::size_t size = 0;
+};
+thread_local ReadContext readContext;
+
+std::uint32_t checkedCount(std::uint32_t count, std::uint32_t limit, const char* what,
+                           std::uint32_t tokensPerElement = 1) {
+    std::size_t remaining = readContext.size;
+    if (readContext.stream != nullptr) {
+        const auto position = const_cast<std::istream*>(readContext.stream)->tellg();
+        if (position >= 0 && static_cast<std::size_t>(position) <= readContext.size) {
+            remaining = readContext.size - static_cast<std::size_t>(position);
+        }
+    }
+    if (count > limit ||
+        static_cast<std::uint64_t>(count) * tokensPerElement * 2 > remaining + 2) {
+        throw FileError(std::string("it announces ") + std::to_string(count) + " " + what +
+                        ", more than the file can hold");
+    }
+    return count;
+}
+
+void checkVersion(unsigned version, unsigned supported, const char* what) {
+    if (version > supported) {
+        throw FileError(std::string("it was written by a newer version of DevSurf (") + what +
+                        " version " + std::to_string(version) + "; this version reads up to " +
+                        std::to_string(supported) + ")");
+    }
+    if (version == 0) {
+        throw FileError(std::string("it has an unknown ") + what + " version 0");
+    }
+}
+
+template <class Archive> void saveString(Archive& ar, const std::string& text) {
+    const auto size = static_cast<std::uint32_t>(text.size());
+    ar << size;
+    for (char c : text) {
+        const int code = static_cast<unsigned char>(c);
+        ar << code;
+    }
+}
+
+template <class Archive> std::string loadString(Archive& ar, std::uint32_t limit) {
+    std::uint32_t size = 0;
+    ar >> size;
+    checkedCount(size, limit, "characters in a name");
+    std::string text;
+    text.reserve(size);
+    for (std::uint32_t i = 0; i < size; ++i) {
+        int code = 0;
+        ar >> code;
+        if (code < 0 || code > 255) {
+            throw FileError("it holds a name with an invalid character");
+        }
+        text.push_back(static_cast<char>(code));
+    }
+    return text;
+}
+
+} // namespace
+} // namespace devsurf::io
+
+namespace boost::serialization {
+
+using namespace devsurf::model;
+using devsurf::io::checkedCount;
+using devsurf::io::FileError;
+
+template <class Archive> void serialize(Archive& ar, Vec3& p, unsigned /*version*/) {
+    ar& p.x;
+    ar& p.y;
+    ar& p.z;
+}
+
+template <class Archive> void save(Archive& ar, const EdgeRecord& e, unsigned /*version*/) {
+    const int label = static_cast<int>(e.label);
+    ar << e.from << e.to << label;
+    if (!e.isSpline()) {
+        return;
+    }
+    const int condition = static_cast<int>(e.condition);
+    ar << e.space.degree << e.space.smoothness << e.space.intervals << condition;
+    const auto count = static_cast<std::uint32_t>(e.controlPoints.size());
+    ar << count;
+    for (const Vec3& p : e.controlPoints) {
+        ar << p;
+    }
+}
+
+template <class Archive> void load(Archive& ar, EdgeRecord& e, unsigned version) {
+    devsurf::io::checkVersion(version, devsurf::io::versions::kEdge, "edge");
+    int label = 0;
+    ar >> e.from >> e.to >> label;
+    if (label != 0 && label != 1) {
+        throw FileError("it holds an edge with an unknown label");
+    }
+    e.label = static_cast<EdgeLabel>(label);
+    if (!e.isSpline()) {
+        return;
+    }
+    int condition = 0;
+    ar >> e.space.degree >> e.space.smoothness >> e.space.intervals >> condition;
+    if (condition < 0 || condition > 3) {
+        throw FileError("it holds a crease with an unknown condition");
+    }
+    e.condition = static_cast<CreaseCondition>(condition);
+    if (!e.space.isValid()) {
+        throw FileError("it holds a curve with an invalid spline space");
+    }
+    std::uint32_t count = 0;
+    ar >> count;
+    checkedCount(count, 10'000'000, "control points", 3);
+    if (count != static_cast<std::uint32_t>(e.space.controlPointCount(false))) {
+        throw FileError("it holds a curve whose control points do not fit its spline space");
+    }
+    e.controlPoints.resize(count);
+    for (Vec3& p : e.controlPoints) {
+        ar >> p;
+    }
+}
+
+template <class Archive>
+void save(Archive& ar, const CompositeSurface& s, unsigned /*version*/) {
+    devsurf::io::saveString(ar, s.name());
+    ar << s.nextVertexId() << s.nextEdgeId() << s.nextFaceId();
+    const auto vertices = static_cast<std::uint32_t>(s.vertices().size());
+    ar << vertices;
+    for (const auto& [id, p] : s.vertices()) {
+        ar << id << p;
+    }
+    const auto edges = static_cast<std::uint32_t>(s.edges().size());
+    ar << edges;
+    for (const auto& [id, e] : s.edges()) {
+        ar << id << e;
+    }
+    const auto faces = static_cast<std::uint32_t>(s.faces().size());
+    ar << faces;
+    for (const auto& [id, loop] : s.faces()) {
+        const auto corners = static_cast<std::uint32_t>(loop.size());
+        ar << id << corners;
+        for (VertexId v : loop) {
+            ar << v;
+        }
+    }
+}
+
+template <class Archive> void load(Archive& ar, CompositeSurface& s, unsigned version) {
+    devsurf::io::checkVersion(version, devsurf::io::versions::kSurface, "surface");
+    s.setName(devsurf::io::loadString(ar, 4096));
+    VertexId nextVertex = 0;
+    EdgeId nextEdge = 0;
+    FaceId nextFace = 0;
+    ar >> nextVertex >> nextEdge >> nextFace;
+    std::uint32_t vertices = 0;
+    ar >> vertices;
+    checkedCount(vertices, 10'000'000, "vertices", 4);
+    for (std::uint32_t i = 0; i < vertices; ++i) {
+        VertexId id = 0;
+        Vec3 p;
+        ar >> id >> p;
+        s.addVertexWithId(id, p);
+    }
+    std::uint32_t edges = 0;
+    ar >> edges;
+    checkedCount(edges, 30'000'000, "edges", 4);
+    for (std::uint32_t i = 0; i < edges; ++i) {
+        EdgeId id = 0;
+        EdgeRecord e;
+        ar >> id >> e;
+        s.addEdgeWithId(id, e);
+    }
+    std::uint32_t faces = 0;
+    ar >> faces;
+    checkedCount(faces, 10'000'000, "faces", 5);
+    for (std::uint32_t i = 0; i < faces; ++i) {
+        FaceId id = 0;
+        std::uint32_t corners = 0;
+        ar >> id >> corners;
+        checkedCount(corners, 100'000, "corners of a face");
+        std::vector<VertexId> loop(corners);
+        for (VertexId& v : loop) {
+            ar >> v;
+        }
+        s.addFaceWithId(id, loop);
+    }
+    s.setNextIds(nextVertex, nextEdge, nextFace);
+}
+
+template <class Archive> void save(Archive& ar, const Project& p, unsigned /*version*/) {
+    devsurf::io::saveString(ar, p.units);
+    const auto count = static_cast<std::uint32_t>(p.surfaces.size());
+    ar << count;
+    for (const CompositeSurface& s : p.surfaces) {
+        ar << s;
+    }
+}
+
+template <class Archive> void load(Archive& ar, Project& p, unsigned version) {
+    devsurf::io::checkVersion(version, devsurf::io::versions::kProject, "project");
+    p.units = devsurf::io::loadString(ar, 64);
+    std::uint32_t count = 0;
+    ar >> count;
+    checkedCount(count, 100'000, "surfaces", 8);
+    p.surfaces.clear();
+    for (std::uint32_t i = 0; i < count; ++i) {
+        CompositeSurface s;
+        ar >> s;
+        p.surfaces.push_back(std::move(s));
+    }
+}
+
+} // namespace boost::serialization
+
+namespace devsurf::io {
+
+std::string writeProjectArchive(const model::Project& project) {
+    std::ostringstream out;
+    {
+        boost::archive::text_oarchive archive(out);
+        archive << project;
+    }
+    return out.str();
+}
+
+model::Project readProjectArchive(const std::string& payload) {
+    std::istringstream in(payload);
+    readContext = {&in, payload.size()};
+    struct Reset {
+        ~Reset() { readContext = {}; }
+    } reset;
+    model::Project project;
+    try {
+        boost::archive::text_iarchive archive(in);
+        archive >> project;
+    } catch (const FileError&) {
+        throw;
+    } catch (const model::ModelError& error) {
+        throw FileError(std::string("it describes an impossible surface: ") + error.what());
+    } catch (const boost::archive::archive_exception& error) {
+        throw FileError(std::string("its contents are damaged (") + error.what() + ")");
+    } catch (const std::exception& error) {
+        throw FileError(std::string("its contents are damaged (") + error.what() + ")");
+    }
+    // Anything after the archive means the payload is not what was written.
+    in >> std::ws;
+    if (!in.eof()) {
+        throw FileError("its contents are damaged (unexpected data after the project)");
+    }
+    const std::vector<std::string> allowedUnits{"mm", "cm", "m", "in", "ft", "pt", "unit"};
+    if (std::find(allowedUnits.begin(), allowedUnits.end(), project.units) ==
+        allowedUnits.end()) {
+        throw FileError("it uses an unknown length unit");
+    }
+    for (const model::CompositeSurface& surface : project.surfaces) {
+        const auto problems = surface.validate();
+        if (!problems.empty()) {
+            throw FileError("its surface '" + surface.name() + "' is invalid: " +
+                                problems.front(),
+                            problems);
+        }
+    }
+    return project;
+}
+
+} // namespace devsurf::io

@@ -1,0 +1,28 @@
+#pragma once
+
+#include "model/project.h"
+
+#include <QString>
+
+#include <cstdint>
+#include <string>
+
+namespace devsurf::io {
+
+// The .devsurf project file: a 24-byte envelope (magic "DEVSURF\0", format version,
+// payload length, CRC-32 of the payload; little endian) around the project archive.
+inline constexpr std::uint32_t kProjectFormatVersion = 1;
+inline constexpr std::size_t kProjectHeaderSize = 24;
+inline constexpr std::uint64_t kMaxProjectFileSize = 512ull * 1024 * 1024;
+
+std::string encodeProject(const model::Project& project);
+// Throws FileError; the message does not name a file.
+model::Project decodeProject(const std::string& bytes);
+
+// Writes atomically (QSaveFile) and keeps the previous file as PATH.bak.
+// Throws FileError with a sentence that names the file.
+void saveProjectFile(const model::Project& project, const QString& path);
+// Throws FileError with a sentence that names the file; never returns a half-loaded project.
+model::Project loadProjectFile(const QString& path);
+
+} // namespace devsurf::io

@@ -1,0 +1,535 @@
+#include "composite_surface.h"
+
+#include "model_error.h"
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
+
+#include <algorithm>
+#include <numeric>
+#include <set>
+#include <sstream>
+
+namespace devsurf::model {
+
+using Mesh = OpenMesh::PolyMesh_ArrayKernelT<>;
+
+const char* faceTypeName(FaceType type) {
+    switch (type) {
+    case FaceType::StripSRSR:
+        return "SRSR strip";
+    case FaceType::StripSRS:
+        return "SRS strip";
+    case FaceType::ConeSRR:
+        return "SRR cone";
+    case FaceType::Planar:
+        return "planar polygon";
+    case FaceType::Invalid:
+        break;
+    }
+    return "invalid face";
+}
+
+const char* creaseConditionName(CreaseCondition condition) {
+    switch (condition) {
+    case CreaseCondition::None:
+        return "none";
+    case CreaseCondition::CurvedFold:
+        return "curved-fold";
+    case CreaseCondition::Geodesic:
+        return "geodesic";
+    case CreaseCondition::Straight:
+        return "straight";
+    }
+    return "none";
+}
+
+// The OpenMesh mirror of the canonical face loops: answers adjacency questions and refuses
+// non-manifold configurations.
+struct CompositeSurface::Connectivity {
+    Mesh mesh;
+    OpenMesh::VPropHandleT<VertexId> vertexId;
+    OpenMesh::EPropHandleT<EdgeId> edgeId;
+    OpenMesh::FPropHandleT<FaceId> faceId;
+    std::map<VertexId, Mesh::VertexHandle> vertexHandle;
+
+    Connectivity() {
+        // Our own messages name the entity; OpenMesh's log would only add noise on stderr.
+        omerr().disable();
+        mesh.add_property(vertexId);
+        mesh.add_property(edgeId);
+        mesh.add_property(faceId);
+    }
+};
+
+CompositeSurface::CompositeSurface() : m_connectivity(std::make_unique<Connectivity>()) {}
+CompositeSurface::~CompositeSurface() = default;
+
+CompositeSurface::CompositeSurface(const CompositeSurface& other)
+    : m_name(other.m_name), m_vertices(other.m_vertices), m_edges(other.m_edges),
+      m_faces(other.m_faces), m_edgeByVertices(other.m_edgeByVertices),
+      m_nextVertexId(other.m_nextVertexId), m_nextEdgeId(other.m_nextEdgeId),
+      m_nextFaceId(other.m_nextFaceId),
+      m_connectivity(std::make_unique<Connectivity>(*other.m_connectivity)) {}
+
+CompositeSurface& CompositeSurface::operator=(const CompositeSurface& other) {
+    if (this != &other) {
+        CompositeSurface copy(other);
+        *this = std::move(copy);
+    }
+    return *this;
+}
+
+CompositeSurface::CompositeSurface(CompositeSurface&& other) noexcept = default;
+CompositeSurface& CompositeSurface::operator=(CompositeSurface&& other) noexcept = default;
+
+namespace {
+
+std::pair<VertexId, VertexId> edgeKey(VertexId a, VertexId b) {
+    return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+}
+
+std::string str(std::uint32_t id) { return std::to_string(id); }
+
+} // namespace
+
+VertexId CompositeSurface::addVertex(const Vec3& position) {
+    const VertexId id = m_nextVertexId;
+    addVertexWithId(id, position);
+    return id;
+}
+
+void CompositeSurface::addVertexWithId(VertexId id, const Vec3& position) {
+    if (id == kInvalidId || m_vertices.count(id) != 0) {
+        throw ModelError("vertex id " + str(id) + " is used twice.");
+    }
+    m_vertices.emplace(id, position);
+    auto handle = m_connectivity->mesh.add_vertex(Mesh::Point(0, 0, 0));
+    m_connectivity->mesh.property(m_connectivity->vertexId, handle) = id;
+    m_connectivity->vertexHandle.emplace(id, handle);
+    m_nextVertexId = std::max(m_nextVertexId, id + 1);
+}
+
+void CompositeSurface::addEdgeWithId(EdgeId id, const EdgeRecord& record) {
+    if (id == kInvalidId || m_edges.count(id) != 0) {
+        throw ModelError("edge id " + str(id) + " is used twice.");
+    }
+    if (!hasVertex(record.from) || !hasVertex(record.to) || record.from == record.to) {
+        throw ModelError("edge " + str(id) + " does not join two distinct existing vertices.");
+    }
+    const auto key = edgeKey(record.from, record.to);
+    if (m_edgeByVertices.count(key) != 0) {
+        throw ModelError("edge " + str(id) + " duplicates the edge between vertices " +
+                         str(record.from) + " and " + str(record.to) + ".");
+    }
+    m_edges.emplace(id, record);
+    m_edgeByVertices.emplace(key, id);
+    m_nextEdgeId = std::max(m_nextEdgeId, id + 1);
+}
+
+FaceId CompositeSurface::addFace(const std::vector<VertexId>& loop) {
+    const FaceId id = m_nextFaceId;
+    addFaceWithId(id, loop);
+    return id;
+}
+
+void CompositeSurface::addFaceWithId(FaceId id, const std::vector<VertexId>& loop) {
+    if (id == kInvalidId || m_faces.count(id) != 0) {
+        throw ModelError("face id " + str(id) + " is used twice.");
+    }
+    insertFace(id, loop);
+    m_nextFaceId = std::max(m_nextFaceId, id + 1);
+}
+
+void CompositeSurface::insertFace(FaceId id, const std::vector<VertexId>& loop) {
+    const std::string face = "face " + str(id);
+    if (loop.size() < 3) {
+        throw ModelError(face + " has fewer than three vertices.");
+    }
+    std::set<VertexId> distinct(loop.begin(), loop.end());
+    if (distinct.size() != loop.size()) {
+        throw ModelError(face + " visits a vertex twice.");
+    }
+    Connectivity& c = *m_connectivity;
+    std::vector<Mesh::VertexHandle> handles;
+    handles.reserve(loop.size());
+    for (VertexId v : loop) {
+        auto it = c.vertexHandle.find(v);
+        if (it == c.vertexHandle.end()) {
+            throw ModelError(face + " refers to vertex " + str(v) + ", which does not exist.");
+        }
+        handles.push_back(it->second);
+    }
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+        const auto from = handles[i];
+        const auto to = handles[(i + 1) % loop.size()];
+        const auto halfedge = c.mesh.find_halfedge(from, to);
+        if (halfedge.is_valid() && !c.mesh.is_boundary(halfedge)) {
+            throw ModelError(face + " runs along the edge from vertex " + str(loop[i]) +
+                             " to vertex " + str(loop[(i + 1) % loop.size()]) +
+                             " in the same direction as another face: faces must be oriented "
+                             "consistently and an edge can border at most two faces.");
+        }
+    }
+    const auto faceHandle = c.mesh.add_face(handles);
+    if (!faceHandle.is_valid()) {
+        throw ModelError(face + " cannot be attached without making the mesh non-manifold.");
+    }
+    c.mesh.property(c.faceId, faceHandle) = id;
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+        const VertexId a = loop[i];
+        const VertexId b = loop[(i + 1) % loop.size()];
+        auto key = edgeKey(a, b);
+        auto it = m_edgeByVertices.find(key);
+        EdgeId edgeId;
+        if (it == m_edgeByVertices.end()) {
+            edgeId = m_nextEdgeId++;
+            EdgeRecord record;
+            record.from = a;
+            record.to = b;
+            m_edges.emplace(edgeId, record);
+            m_edgeByVertices.emplace(key, edgeId);
+        } else {
+            edgeId = it->second;
+        }
+        const auto halfedge = c.mesh.find_halfedge(handles[i], handles[(i + 1) % loop.size()]);
+        c.mesh.property(c.edgeId, c.mesh.edge_handle(halfedge)) = edgeId;
+    }
+    m_faces.emplace(id, loop);
+}
+
+void CompositeSurface::setNextIds(VertexId vertex, EdgeId edge, FaceId face) {
+    m_nextVertexId = std::max(m_nextVertexId, vertex);
+    m_nextEdgeId = std::max(m_nextEdgeId, edge);
+    m_nextFaceId = std::max(m_nextFaceId, face);
+}
+
+EdgeRecord& CompositeSurface::mutableEdge(EdgeId id) {
+    auto it = m_edges.find(id);
+    if (it == m_edges.end()) {
+        throw ModelError("edge " + str(id) + " does not exist.");
+    }
+    return it->second;
+}
+
+EdgeId CompositeSurface::setSpline(VertexId a, VertexId b, const SplineSpace& space,
+                                   std::vector<Vec3> controlPoints) {
+    const EdgeId id = edgeBetween(a, b);
+    if (id == kInvalidId) {
+        throw ModelError("there is no edge between vertices " + str(a) + " and " + str(b) + ".");
+    }
+    EdgeRecord& record = mutableEdge(id);
+    record.from = a;
+    record.to = b;
+    record.label = EdgeLabel::Spline;
+    record.space = space;
+    record.controlPoints = std::move(controlPoints);
+    return id;
+}
+
+void CompositeSurface::setRuling(EdgeId edge) {
+    EdgeRecord& record = mutableEdge(edge);
+    record.label = EdgeLabel::Ruling;
+    record.space = SplineSpace{};
+    record.controlPoints.clear();
+    record.condition = CreaseCondition::None;
+}
+
+void CompositeSurface::setCreaseCondition(EdgeId edge, CreaseCondition condition) {
+    mutableEdge(edge).condition = condition;
+}
+
+void CompositeSurface::reverseEdge(EdgeId edge) {
+    EdgeRecord& record = mutableEdge(edge);
+    std::swap(record.from, record.to);
+    std::reverse(record.controlPoints.begin(), record.controlPoints.end());
+}
+
+void CompositeSurface::moveVertex(VertexId vertex, const Vec3& position) {
+    auto it = m_vertices.find(vertex);
+    if (it == m_vertices.end()) {
+        throw ModelError("vertex " + str(vertex) + " does not exist.");
+    }
+    it->second = position;
+    for (auto& [id, record] : m_edges) {
+        if (!record.isSpline() || record.controlPoints.empty()) {
+            continue;
+        }
+        if (record.from == vertex) {
+            record.controlPoints.front() = position;
+        }
+        if (record.to == vertex) {
+            record.controlPoints.back() = position;
+        }
+    }
+}
+
+void CompositeSurface::setControlPoints(EdgeId edge, std::vector<Vec3> controlPoints) {
+    mutableEdge(edge).controlPoints = std::move(controlPoints);
+}
+
+const Vec3& CompositeSurface::position(VertexId id) const {
+    auto it = m_vertices.find(id);
+    if (it == m_vertices.end()) {
+        throw ModelError("vertex " + str(id) + " does not exist.");
+    }
+    return it->second;
+}
+
+const EdgeRecord& CompositeSurface::edge(EdgeId id) const {
+    auto it = m_edges.find(id);
+    if (it == m_edges.end()) {
+        throw ModelError("edge " + str(id) + " does not exist.");
+    }
+    return it->second;
+}
+
+const std::vector<VertexId>& CompositeSurface::faceLoop(FaceId id) const {
+    auto it = m_faces.find(id);
+    if (it == m_faces.end()) {
+        throw ModelError("face " + str(id) + " does not exist.");
+    }
+    return it->second;
+}
+
+EdgeId CompositeSurface::edgeBetween(VertexId a, VertexId b) const {
+    auto it = m_edgeByVertices.find(edgeKey(a, b));
+    return it == m_edgeByVertices.end() ? kInvalidId : it->second;
+}
+
+std::vector<FaceId> CompositeSurface::facesOfEdge(EdgeId edgeId) const {
+    const EdgeRecord& record = edge(edgeId);
+    const Connectivity& c = *m_connectivity;
+    std::vector<FaceId> result;
+    const auto from = c.vertexHandle.find(record.from);
+    const auto to = c.vertexHandle.find(record.to);
+    if (from == c.vertexHandle.end() || to == c.vertexHandle.end()) {
+        return result;
+    }
+    const auto halfedge = c.mesh.find_halfedge(from->second, to->second);
+    if (!halfedge.is_valid()) {
+        return result;
+    }
+    for (auto h : {halfedge, c.mesh.opposite_halfedge_handle(halfedge)}) {
+        const auto face = c.mesh.face_handle(h);
+        if (face.is_valid()) {
+            result.push_back(c.mesh.property(c.faceId, face));
+        }
+    }
+    std::sort(result.begin(), result.end());
+    return result;
+}
+
+std::vector<EdgeId> CompositeSurface::faceEdges(FaceId face) const {
+    const auto& loop = faceLoop(face);
+    std::vector<EdgeId> result;
+    result.reserve(loop.size());
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+        result.push_back(edgeBetween(loop[i], loop[(i + 1) % loop.size()]));
+    }
+    return result;
+}
+
+std::vector<Vec3> CompositeSurface::controlPointsFrom(VertexId a, VertexId b) const {
+    const EdgeId id = edgeBetween(a, b);
+    if (id == kInvalidId) {
+        throw ModelError("there is no edge between vertices " + str(a) + " and " + str(b) + ".");
+    }
+    const EdgeRecord& record = edge(id);
+    std::vector<Vec3> points = record.controlPoints;
+    if (record.from != a) {
+        std::reverse(points.begin(), points.end());
+    }
+    return points;
+}
+
+std::string CompositeSurface::labelString(FaceId face) const {
+    std::string labels;
+    for (EdgeId e : faceEdges(face)) {
+        labels += (e != kInvalidId && edge(e).isSpline()) ? 'S' : 'R';
+    }
+    return labels;
+}
+
+FaceType CompositeSurface::faceType(FaceId face) const {
+    const std::string labels = labelString(face);
+    const auto spline = static_cast<std::size_t>(std::count(labels.begin(), labels.end(), 'S'));
+    if (spline == 0) {
+        return FaceType::Planar;
+    }
+    if (labels.size() == 3) {
+        if (spline == 2) {
+            return FaceType::StripSRS;
+        }
+        if (spline == 1) {
+            return FaceType::ConeSRR;
+        }
+        return FaceType::Invalid;
+    }
+    if (labels.size() == 4 && spline == 2 && labels[0] == labels[2] && labels[1] == labels[3]) {
+        return FaceType::StripSRSR;
+    }
+    return FaceType::Invalid;
+}
+
+std::vector<std::vector<EdgeId>> CompositeSurface::splineClasses() const {
+    std::map<EdgeId, EdgeId> parent;
+    for (const auto& [id, record] : m_edges) {
+        if (record.isSpline()) {
+            parent[id] = id;
+        }
+    }
+    auto find = [&parent](EdgeId e) {
+        while (parent[e] != e) {
+            parent[e] = parent[parent[e]];
+            e = parent[e];
+        }
+        return e;
+    };
+    for (const auto& [faceId, loop] : m_faces) {
+        EdgeId first = kInvalidId;
+        for (EdgeId e : faceEdges(faceId)) {
+            if (e == kInvalidId || parent.count(e) == 0) {
+                continue;
+            }
+            if (first == kInvalidId) {
+                first = e;
+            } else {
+                const EdgeId ra = find(first);
+                const EdgeId rb = find(e);
+                parent[std::max(ra, rb)] = std::min(ra, rb);
+            }
+        }
+    }
+    std::map<EdgeId, std::vector<EdgeId>> byRoot;
+    for (const auto& entry : parent) {
+        byRoot[find(entry.first)].push_back(entry.first);
+    }
+    std::vector<std::vector<EdgeId>> classes;
+    for (auto& entry : byRoot) {
+        classes.push_back(std::move(entry.second));
+    }
+    return classes;
+}
+
+std::vector<std::string> CompositeSurface::validate() const {
+    std::vector<std::string> problems;
+    if (m_faces.empty()) {
+        problems.push_back("the surface has no faces.");
+    }
+    std::set<VertexId> usedVertices;
+    std::set<EdgeId> usedEdges;
+    for (const auto& [faceId, loop] : m_faces) {
+        usedVertices.insert(loop.begin(), loop.end());
+        for (EdgeId e : faceEdges(faceId)) {
+            usedEdges.insert(e);
+        }
+    }
+    for (const auto& [id, p] : m_vertices) {
+        if (!p.isFinite()) {
+            problems.push_back("vertex " + str(id) + " has a position that is not a finite number.");
+        }
+        if (usedVertices.count(id) == 0) {
+            problems.push_back("vertex " + str(id) + " belongs to no face.");
+        }
+        if (id >= m_nextVertexId) {
+            problems.push_back("vertex " + str(id) + " lies beyond the id counter.");
+        }
+    }
+    for (const auto& [id, record] : m_edges) {
+        const std::string name = "edge " + str(id);
+        if (usedEdges.count(id) == 0) {
+            problems.push_back(name + " belongs to no face.");
+        }
+        if (id >= m_nextEdgeId) {
+            problems.push_back(name + " lies beyond the id counter.");
+        }
+        if (record.label != EdgeLabel::Spline) {
+            if (!record.controlPoints.empty() || record.condition != CreaseCondition::None) {
+                problems.push_back(name + " is a ruling but carries spline data.");
+            }
+            continue;
+        }
+        if (!record.space.isValid()) {
+            problems.push_back(name + " has an invalid spline space (" + record.space.describe() +
+                               ").");
+            continue;
+        }
+        const auto expected = static_cast<std::size_t>(record.space.controlPointCount(false));
+        if (record.controlPoints.size() != expected) {
+            problems.push_back(name + " has " + std::to_string(record.controlPoints.size()) +
+                               " control points; its spline space (" + record.space.describe() +
+                               ") needs " + std::to_string(expected) + ".");
+            continue;
+        }
+        bool finite = true;
+        for (const Vec3& p : record.controlPoints) {
+            finite = finite && p.isFinite();
+        }
+        if (!finite) {
+            problems.push_back(name + " has a control point that is not a finite number.");
+        }
+        auto from = m_vertices.find(record.from);
+        auto to = m_vertices.find(record.to);
+        if (from != m_vertices.end() && record.controlPoints.front() != from->second) {
+            problems.push_back(name + " does not start at its vertex " + str(record.from) + ".");
+        }
+        if (to != m_vertices.end() && record.controlPoints.back() != to->second) {
+            problems.push_back(name + " does not end at its vertex " + str(record.to) + ".");
+        }
+        const auto faces = facesOfEdge(id);
+        if (record.condition != CreaseCondition::None && faces.size() != 2) {
+            problems.push_back(name + " carries a crease condition but is not shared by two faces.");
+        }
+    }
+    for (const auto& [faceId, loop] : m_faces) {
+        if (faceType(faceId) == FaceType::Invalid) {
+            problems.push_back("face " + str(faceId) + " is labelled " + labelString(faceId) +
+                               "; a face must be an SRSR strip, an SRS strip, an SRR cone or a "
+                               "polygon of rulings only (R…R).");
+        }
+        if (faceId >= m_nextFaceId) {
+            problems.push_back("face " + str(faceId) + " lies beyond the id counter.");
+        }
+    }
+    for (const auto& cls : splineClasses()) {
+        const SplineSpace& space = m_edges.at(cls.front()).space;
+        for (EdgeId e : cls) {
+            const SplineSpace& other = m_edges.at(e).space;
+            if (other != space) {
+                problems.push_back("S-edges " + str(cls.front()) + " and " + str(e) +
+                                   " are connected through faces but use different spline "
+                                   "spaces (" +
+                                   space.describe() + " and " + other.describe() + ").");
+                break;
+            }
+        }
+    }
+    return problems;
+}
+
+std::size_t CompositeSurface::controlPointCount() const {
+    std::size_t count = m_vertices.size();
+    for (const auto& [id, record] : m_edges) {
+        if (record.isSpline() && record.controlPoints.size() >= 2) {
+            count += record.controlPoints.size() - 2;
+        }
+    }
+    return count;
+}
+
+bool CompositeSurface::operator==(const CompositeSurface& other) const {
+    auto sameEdges = [](const EdgeRecord& a, const EdgeRecord& b) {
+        return a.from == b.from && a.to == b.to && a.label == b.label && a.space == b.space &&
+               a.controlPoints == b.controlPoints && a.condition == b.condition;
+    };
+    return m_name == other.m_name && m_vertices == other.m_vertices &&
+           m_faces == other.m_faces && m_nextVertexId == other.m_nextVertexId &&
+           m_nextEdgeId == other.m_nextEdgeId && m_nextFaceId == other.m_nextFaceId &&
+           std::equal(m_edges.begin(), m_edges.end(), other.m_edges.begin(), other.m_edges.end(),
+                      [&](const auto& a, const auto& b) {
+                          return a.first == b.first && sameEdges(a.second, b.second);
+                      });
+}
+
+} // namespace devsurf::model

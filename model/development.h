@@ -1,0 +1,35 @@
+#pragma once
+
+#include "sampled_mesh.h"
+
+#include <optional>
+#include <vector>
+
+namespace devsurf::model {
+
+// The development (V̄,Ē,F̄) of a sampled mesh: a planar position for every vertex (§5).
+struct Development {
+    std::vector<Vec2> vertices; // indexed like SampledMesh::vertices
+    // Set when the unfolding closes up only modulo a translation, as for a surface that
+    // develops onto a cylinder cut open (Fig. 14): coordinates are then read modulo period.
+    std::optional<Vec2> period;
+    // Largest distance between a vertex's position and where a neighbouring face puts it
+    // (after reducing by the period): zero for an exactly developable, globally unfoldable mesh.
+    double closureError = 0.0;
+    // Largest relative difference between an edge length in space and in the development.
+    double maxEdgeLengthError = 0.0;
+    int components = 0;
+};
+
+// The initial development: the faces are split into triangles and unfolded one after the other
+// across shared edges, breadth first, each triangle placed isometrically ("putting together
+// developments of individual faces", §5). Disconnected parts are placed side by side. A flat
+// component keeps the layout of its projection onto the xy-plane; a cylindrical one has its
+// period along +x.
+Development unfoldSampledMesh(const SampledMesh& mesh);
+
+// Relative edge-length error between the mesh and a development of it (§8), using the
+// development's period where it has one.
+double edgeLengthError(const SampledMesh& mesh, const Development& development);
+
+} // namespace devsurf::model

@@ -1,0 +1,250 @@
+#include "examples.h"
+
+#include "bspline_curve.h"
+#include "model_error.h"
+
+#include <cmath>
+#include <functional>
+
+namespace devsurf::model {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Control points of a curve in the given space whose Greville abscissae lie on f; this
+// reproduces lines exactly and approximates other curves closely. The end points are the
+// given vertex positions bit for bit, so the curve starts and ends at its vertices.
+std::vector<Vec3> controlPointsAlong(const SplineSpace& space, const Vec3& start, const Vec3& end,
+                                     const std::function<Vec3(double)>& f) {
+    const std::vector<double> knots = space.knots(false);
+    const int count = space.controlPointCount(false);
+    const int m = space.degree;
+    std::vector<Vec3> points(static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) {
+        double greville = 0.0;
+        for (int j = 1; j <= m; ++j) {
+            greville += knots[static_cast<std::size_t>(i + j)];
+        }
+        points[static_cast<std::size_t>(i)] = f(greville / m);
+    }
+    points.front() = start;
+    points.back() = end;
+    return points;
+}
+
+Vec3 lerp(const Vec3& a, const Vec3& b, double t) { return a * (1.0 - t) + b * t; }
+
+// A flat rectangle cut into size × size strips: rows bounded by straight S-edges (creases),
+// split by rulings into size faces each (Fig. 8).
+CompositeSurface makeSheet(int size) {
+    const double width = 300.0;
+    const double height = 300.0;
+    const SplineSpace space{3, 2, 3};
+    CompositeSurface s;
+    s.setName("sheet");
+    std::vector<std::vector<VertexId>> grid(size + 1, std::vector<VertexId>(size + 1));
+    for (int j = 0; j <= size; ++j) {
+        for (int i = 0; i <= size; ++i) {
+            grid[j][i] = s.addVertex({width * i / size, height * j / size, 0.0});
+        }
+    }
+    for (int j = 0; j < size; ++j) {
+        for (int i = 0; i < size; ++i) {
+            s.addFace({grid[j][i], grid[j][i + 1], grid[j + 1][i + 1], grid[j + 1][i]});
+        }
+    }
+    for (int j = 0; j <= size; ++j) {
+        for (int i = 0; i < size; ++i) {
+            const Vec3 p = s.position(grid[j][i]);
+            const Vec3 q = s.position(grid[j][i + 1]);
+            s.setSpline(grid[j][i], grid[j][i + 1], space,
+                        controlPointsAlong(space, p, q, [&](double t) { return lerp(p, q, t); }));
+        }
+    }
+    return s;
+}
+
+// A flat annulus cut into rings by concentric circular creases and into sectors by radial
+// rulings (Fig. 12).
+CompositeSurface makeAnnulus(int rings) {
+    const int sectors = std::max(3, static_cast<int>(std::lround(4.0 * rings / 3.0)));
+    const double innerRadius = 100.0;
+    const double ringWidth = 150.0 / rings;
+    const SplineSpace space{3, 2, 3};
+    CompositeSurface s;
+    s.setName("annulus");
+    auto angle = [sectors](int i) { return 2.0 * kPi * i / sectors; };
+    auto onCircle = [](double r, double phi) { return Vec3(r * std::cos(phi), r * std::sin(phi), 0); };
+    std::vector<std::vector<VertexId>> grid(rings + 1, std::vector<VertexId>(sectors));
+    for (int j = 0; j <= rings; ++j) {
+        for (int i = 0; i < sectors; ++i) {
+            grid[j][i] = s.addVertex(onCircle(innerRadius + ringWidth * j, angle(i)));
+        }
+    }
+    for (int j = 0; j < rings; ++j) {
+        for (int i = 0; i < sectors; ++i) {
+            const int next = (i + 1) % sectors;
+            // Counter-clockwise seen from +z, so the normal points up as in the other examples.
+            s.addFace({grid[j][i], grid[j + 1][i], grid[j + 1][next], grid[j][next]});
+        }
+    }
+    for (int j = 0; j <= rings; ++j) {
+        const double r = innerRadius + ringWidth * j;
+        for (int i = 0; i < sectors; ++i) {
+            const int next = (i + 1) % sectors;
+            const double phi0 = angle(i);
+            const double phi1 = angle(i + 1);
+            s.setSpline(grid[j][i], grid[j][next], space,
+                        controlPointsAlong(space, s.position(grid[j][i]),
+                                           s.position(grid[j][next]), [&](double t) {
+                                               return onCircle(r, phi0 + t * (phi1 - phi0));
+                                           }));
+        }
+    }
+    return s;
+}
+
+// A closed cylinder of strips around the z-axis (Fig. 14): sectors around, rows stacked. Every
+// strip is a general cylinder (its top curve is its bottom curve translated), so exactly
+// developable.
+CompositeSurface makeCylinder(int sectors) {
+    const int rows = std::max(1, sectors / 2);
+    const double radius = 100.0;
+    const double rowHeight = 60.0;
+    const SplineSpace space{3, 2, 2};
+    CompositeSurface s;
+    s.setName("cylinder");
+    auto angle = [sectors](int i) { return 2.0 * kPi * i / sectors; };
+    auto xy = [radius](double phi) { return Vec3(radius * std::cos(phi), radius * std::sin(phi), 0); };
+    std::vector<std::vector<VertexId>> grid(rows + 1, std::vector<VertexId>(sectors));
+    for (int j = 0; j <= rows; ++j) {
+        for (int i = 0; i < sectors; ++i) {
+            grid[j][i] = s.addVertex(xy(angle(i)) + Vec3(0, 0, rowHeight * j));
+        }
+    }
+    for (int j = 0; j < rows; ++j) {
+        for (int i = 0; i < sectors; ++i) {
+            const int next = (i + 1) % sectors;
+            s.addFace({grid[j][i], grid[j][next], grid[j + 1][next], grid[j + 1][i]});
+        }
+    }
+    for (int j = 0; j <= rows; ++j) {
+        const Vec3 lift(0, 0, rowHeight * j);
+        for (int i = 0; i < sectors; ++i) {
+            const int next = (i + 1) % sectors;
+            const double phi0 = angle(i);
+            const double phi1 = angle(i + 1);
+            // Same x, y at every height: the rows are translates of each other.
+            s.setSpline(grid[j][i], grid[j][next], space,
+                        controlPointsAlong(space, s.position(grid[j][i]),
+                                           s.position(grid[j][next]), [&](double t) {
+                                               return xy(phi0 + t * (phi1 - phi0)) + lift;
+                                           }));
+        }
+    }
+    return s;
+}
+
+// One flat surface with all four face types: a planar square, an SRSR strip with wavy
+// creases, an SRS strip ending in a point and an SRR cone (a sector of a disk), each family
+// of S-edges in its own spline space.
+CompositeSurface makeMixed(int intervals) {
+    CompositeSurface s;
+    s.setName("mixed");
+    const VertexId a = s.addVertex({0, 0, 0});
+    const VertexId b = s.addVertex({100, 0, 0});
+    const VertexId c = s.addVertex({100, 100, 0});
+    const VertexId d = s.addVertex({0, 100, 0});
+    const VertexId e = s.addVertex({200, 0, 0});
+    const VertexId f = s.addVertex({200, 100, 0});
+    const VertexId g = s.addVertex({50, 180, 0});
+    const VertexId h = s.addVertex({100, -100, 0});
+    s.addFace({a, b, c, d}); // R R R R
+    s.addFace({b, e, f, c}); // S R S R
+    s.addFace({d, c, g});    // R S S
+    s.addFace({b, a, h});    // R S R: cone with apex b
+
+    const SplineSpace stripSpace{3, 2, intervals};
+    const Vec3 pb = s.position(b);
+    const Vec3 pe = s.position(e);
+    const Vec3 pf = s.position(f);
+    const Vec3 pc = s.position(c);
+    s.setSpline(b, e, stripSpace, controlPointsAlong(stripSpace, pb, pe, [&](double t) {
+                    return lerp(pb, pe, t) + Vec3(0, -15.0 * std::sin(kPi * t), 0);
+                }));
+    s.setSpline(f, c, stripSpace, controlPointsAlong(stripSpace, pf, pc, [&](double t) {
+                    return lerp(pf, pc, t) + Vec3(0, 15.0 * std::sin(kPi * t), 0);
+                }));
+
+    const SplineSpace pointedSpace{2, 1, intervals};
+    const Vec3 pg = s.position(g);
+    const Vec3 pd = s.position(d);
+    auto bulge = [](const Vec3& p, const Vec3& q, double t, double amount) {
+        const Vec3 along = q - p;
+        const Vec3 outward = Vec3(along.y, -along.x, 0) * (amount / along.norm());
+        return lerp(p, q, t) + outward * std::sin(kPi * t);
+    };
+    s.setSpline(c, g, pointedSpace, controlPointsAlong(pointedSpace, pc, pg, [&](double t) {
+                    return bulge(pc, pg, t, 12.0);
+                }));
+    s.setSpline(g, d, pointedSpace, controlPointsAlong(pointedSpace, pg, pd, [&](double t) {
+                    return bulge(pg, pd, t, 12.0);
+                }));
+
+    const SplineSpace coneSpace{3, 1, intervals};
+    const Vec3 pa = s.position(a);
+    const Vec3 ph = s.position(h);
+    s.setSpline(a, h, coneSpace, controlPointsAlong(coneSpace, pa, ph, [&](double t) {
+                    const double phi = kPi + t * kPi / 2.0;
+                    return pb + Vec3(100.0 * std::cos(phi), 100.0 * std::sin(phi), 0);
+                }));
+    return s;
+}
+
+} // namespace
+
+const std::vector<ExampleInfo>& builtInExamples() {
+    static const std::vector<ExampleInfo> examples{
+        {"sheet", "a flat rectangle of size × size strips (Fig. 8)", 3, 1, 60},
+        {"annulus", "a flat annulus of size rings cut by radial rulings (Fig. 12)", 6, 1, 60},
+        {"cylinder", "a closed cylinder of strips, size sectors around (Fig. 14)", 6, 3, 120},
+        {"mixed", "strips, a pointed strip, a cone and a planar face; size intervals per curve",
+         2, 1, 50},
+    };
+    return examples;
+}
+
+Project makeExample(const std::string& name, int size) {
+    for (const ExampleInfo& info : builtInExamples()) {
+        if (info.name != name) {
+            continue;
+        }
+        if (size == 0) {
+            size = info.defaultSize;
+        }
+        if (size < info.minSize || size > info.maxSize) {
+            throw ModelError("the size of the example '" + name + "' must be between " +
+                             std::to_string(info.minSize) + " and " +
+                             std::to_string(info.maxSize) + ".");
+        }
+        Project project;
+        if (name == "sheet") {
+            project.surfaces.push_back(makeSheet(size));
+        } else if (name == "annulus") {
+            project.surfaces.push_back(makeAnnulus(size));
+        } else if (name == "cylinder") {
+            project.surfaces.push_back(makeCylinder(size));
+        } else {
+            project.surfaces.push_back(makeMixed(size));
+        }
+        return project;
+    }
+    std::string known;
+    for (const ExampleInfo& info : builtInExamples()) {
+        known += (known.empty() ? "" : ", ") + info.name;
+    }
+    throw ModelError("there is no example called '" + name + "'; the examples are " + known + ".");
+}
+
+} // namespace devsurf::model

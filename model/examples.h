@@ -1,0 +1,25 @@
+#pragma once
+
+#include "project.h"
+
+#include <string>
+#include <vector>
+
+namespace devsurf::model {
+
+struct ExampleInfo {
+    std::string name;
+    std::string description;
+    int defaultSize;
+    int minSize;
+    int maxSize;
+};
+
+// The built-in examples: sheet, annulus, cylinder, mixed. Each is exactly developable as built.
+const std::vector<ExampleInfo>& builtInExamples();
+
+// Builds an example; size is its resolution (see builtInExamples()), 0 means the default.
+// Throws ModelError for an unknown name or a size out of range.
+Project makeExample(const std::string& name, int size = 0);
+
+} // namespace devsurf::model

@@ -1,0 +1,39 @@
+#pragma once
+
+#include "solver/core/term.h"
+
+#include <vector>
+
+namespace devsurf::solver {
+
+// Bilinear rows ⟨Σ dₖ nₖ, Σ cᵢ pᵢ⟩ − t = 0: the form of the developability conditions (4),
+// the crease conditions (7), (8) and the reference-shape condition (11). Both sides are
+// linear combinations of points of the same dimension (e.g. a normal-spline evaluation and
+// a difference of de Boor points).
+class BilinearTerm : public Term {
+public:
+    static constexpr int kMaxDimension = 4;
+
+    explicit BilinearTerm(int dimension = 3);
+
+    int dimension() const { return m_dimension; }
+    // Returns the row index within this term.
+    int addRow(const PointCombination& left, const PointCombination& right, double target = 0.0);
+    void setTarget(int row, double target) { m_target[static_cast<std::size_t>(row)] = target; }
+
+    const char* typeName() const override { return "BilinearTerm"; }
+    int rowCount() const override { return static_cast<int>(m_target.size()); }
+    void buildPattern(PatternBuilder& builder) const override;
+    void evaluate(const double* x, double* residuals, double* jacobian) const override;
+
+private:
+    int m_dimension;
+    // Row r uses m_points[m_leftStart[r] .. m_rightStart[r]) on the left and
+    // m_points[m_rightStart[r] .. m_leftStart[r + 1]) on the right.
+    std::vector<int> m_leftStart{0};
+    std::vector<int> m_rightStart;
+    std::vector<PointTerm> m_points;
+    std::vector<double> m_target;
+};
+
+} // namespace devsurf::solver

@@ -1,0 +1,43 @@
+#include "solver/core/fairness_term.h"
+
+namespace devsurf::solver {
+
+void FairnessTerm::addSequence(const std::vector<int>& points, bool closed) {
+    const std::size_t n = points.size();
+    if (n < 3) {
+        return;
+    }
+    if (closed) {
+        for (std::size_t i = 0; i < n; ++i) {
+            m_triples.push_back({points[(i + n - 1) % n], points[i], points[(i + 1) % n]});
+        }
+    } else {
+        for (std::size_t i = 1; i + 1 < n; ++i) {
+            m_triples.push_back({points[i - 1], points[i], points[i + 1]});
+        }
+    }
+}
+
+void FairnessTerm::buildPattern(PatternBuilder& builder) const {
+    for (const Triple& t : m_triples) {
+        for (int k = 0; k < m_dimension; ++k) {
+            builder.beginRow();
+            builder.addColumn(t.previous + k);
+            builder.addColumn(t.current + k);
+            builder.addColumn(t.next + k);
+        }
+    }
+}
+
+void FairnessTerm::evaluate(const double* x, double* residuals, double* jacobian) const {
+    for (const Triple& t : m_triples) {
+        for (int k = 0; k < m_dimension; ++k) {
+            *residuals++ = x[t.previous + k] - 2.0 * x[t.current + k] + x[t.next + k];
+            *jacobian++ = 1.0;
+            *jacobian++ = -2.0;
+            *jacobian++ = 1.0;
+        }
+    }
+}
+
+} // namespace devsurf::solver

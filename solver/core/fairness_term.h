@@ -1,0 +1,35 @@
+#pragma once
+
+#include "solver/core/term.h"
+
+#include <vector>
+
+namespace devsurf::solver {
+
+// Second differences p_{i−1} − 2pᵢ + p_{i+1} (one row per interior point and coordinate) of
+// point sequences, e.g. the control points of a spline: the fairness energy
+// Σ ‖a_{i+1} − 2aᵢ + a_{i−1}‖². Usually in an energy family.
+class FairnessTerm : public Term {
+public:
+    explicit FairnessTerm(int dimension = 3) : m_dimension(dimension) {}
+
+    // `points` are the column offsets of the points in sequence order. A closed sequence
+    // also gets the second differences across its start.
+    void addSequence(const std::vector<int>& points, bool closed = false);
+
+    const char* typeName() const override { return "FairnessTerm"; }
+    int rowCount() const override { return static_cast<int>(m_triples.size()) * m_dimension; }
+    void buildPattern(PatternBuilder& builder) const override;
+    void evaluate(const double* x, double* residuals, double* jacobian) const override;
+
+private:
+    struct Triple {
+        int previous;
+        int current;
+        int next;
+    };
+    int m_dimension;
+    std::vector<Triple> m_triples;
+};
+
+} // namespace devsurf::solver

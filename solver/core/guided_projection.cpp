@@ -1,0 +1,304 @@
+#include "solver/core/guided_projection.h"
+
+#include "solver/core/normal_equations.h"
+#include "solver/core/problem.h"
+#include "solver/core/sparse_cholesky.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+namespace devsurf::solver {
+
+double epsilon1(const Options& options, int iteration) {
+    if (options.eps1Schedule) {
+        return options.eps1Schedule(iteration);
+    }
+    if (iteration < options.eps1Iterations) {
+        return options.eps1Initial * std::pow(options.eps1Decay, iteration);
+    }
+    return options.eps1Final;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double elapsedMs(Clock::time_point since) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
+}
+
+bool allFinite(const std::vector<double>& values) {
+    return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
+}
+
+} // namespace
+
+struct GuidedProjection::Impl {
+    NormalEquations equations;
+    SparseCholesky cholesky;
+    bool analysed = false; // cached mode: cholesky holds the symbolic factor for `equations`
+    FactorizationMethod method = FactorizationMethod::Supernodal;
+    std::vector<double> x;
+    std::vector<double> xNew;
+    std::vector<double> step;
+    std::vector<double> rhs;
+
+    void reset() {
+        equations = NormalEquations();
+        analysed = false;
+    }
+
+    bool prepareCached(const Problem& problem, const Options& options, Summary& summary) {
+        std::string error;
+        if (!equations.build(problem, &error)) {
+            summary.status = Status::InvalidProblem;
+            summary.message = error;
+            return false;
+        }
+        const int n = equations.variableCount();
+        std::vector<int> permutation;
+        bool supernodal = false;
+        if (!cholesky.computeOrdering(n, equations.columnStart(), equations.rowIndex(),
+                                      options.factorization, permutation, supernodal)) {
+            summary.status = Status::FactorizationFailed;
+            summary.message = cholesky.error();
+            return false;
+        }
+        // Supernodal factorises the lower triangle in place, simplicial the upper one.
+        const auto triangle =
+            supernodal ? NormalEquations::Triangle::Lower : NormalEquations::Triangle::Upper;
+        equations.setLayout(permutation, triangle);
+        if (!cholesky.analyzePermuted(n, equations.columnStart(), equations.rowIndex(),
+                                      triangle == NormalEquations::Triangle::Lower, supernodal,
+                                      permutation)) {
+            summary.status = Status::FactorizationFailed;
+            summary.message = cholesky.error();
+            return false;
+        }
+        analysed = true;
+        method = options.factorization;
+        return true;
+    }
+
+    // One linear solve in baseline mode: triplets, Eigen products, full analysis.
+    bool baselineStep(const Problem& problem, double eps1, const Options& options,
+                      IterationStats& stats, Summary& summary) {
+        auto start = Clock::now();
+        Eigen::SparseMatrix<double> upper;
+        Eigen::VectorXd g;
+        equations.assembleFromScratch(problem, eps1, options.eps2, upper, g);
+        const int n = equations.variableCount();
+        std::vector<int> colStart(upper.outerIndexPtr(), upper.outerIndexPtr() + n + 1);
+        std::vector<int> rowIndex(upper.innerIndexPtr(), upper.innerIndexPtr() + upper.nonZeros());
+        stats.assemblyMs += elapsedMs(start);
+        start = Clock::now();
+        if (!cholesky.analyzeGeneral(n, colStart, rowIndex, options.factorization)) {
+            summary.status = Status::FactorizationFailed;
+            summary.message = cholesky.error();
+            return false;
+        }
+        std::memcpy(cholesky.values(), upper.valuePtr(),
+                    sizeof(double) * static_cast<std::size_t>(upper.nonZeros()));
+        if (!cholesky.factorize()) {
+            summary.status = Status::FactorizationFailed;
+            summary.message = cholesky.error();
+            return false;
+        }
+        stats.factorizationMs = elapsedMs(start);
+        start = Clock::now();
+        std::copy(g.data(), g.data() + n, rhs.begin());
+        const bool solved = cholesky.solve(rhs.data(), step.data());
+        stats.solveMs = elapsedMs(start);
+        if (!solved) {
+            summary.status = Status::FactorizationFailed;
+            summary.message = cholesky.error();
+            return false;
+        }
+        return true;
+    }
+
+    bool cachedStep(const Problem& problem, double eps1, const Options& options,
+                    IterationStats& stats, Summary& summary) {
+        auto start = Clock::now();
+        equations.fill(problem, eps1, options.eps2, cholesky.values(), rhs.data());
+        stats.assemblyMs += elapsedMs(start);
+        start = Clock::now();
+        if (!cholesky.factorize()) {
+            summary.status = Status::FactorizationFailed;
+            summary.message = cholesky.error();
+            return false;
+        }
+        stats.factorizationMs = elapsedMs(start);
+        start = Clock::now();
+        const bool solved = cholesky.solve(rhs.data(), step.data());
+        stats.solveMs = elapsedMs(start);
+        if (!solved) {
+            summary.status = Status::FactorizationFailed;
+            summary.message = cholesky.error();
+            return false;
+        }
+        return true;
+    }
+};
+
+GuidedProjection::GuidedProjection() : m_impl(std::make_unique<Impl>()) {}
+GuidedProjection::~GuidedProjection() = default;
+
+void GuidedProjection::invalidate() {
+    m_impl->reset();
+}
+
+const NormalEquations* GuidedProjection::normalEquations() const {
+    return m_impl->equations.isBuilt() ? &m_impl->equations : nullptr;
+}
+
+Summary GuidedProjection::solve(const Problem& problem, std::vector<double>& x,
+                                const Options& options) {
+    if (x.size() != static_cast<std::size_t>(problem.variableCount())) {
+        Summary summary;
+        summary.status = Status::InvalidProblem;
+        summary.message = "state has " + std::to_string(x.size()) + " values for " +
+                          std::to_string(problem.variableCount()) + " variables";
+        return summary;
+    }
+    return solve(problem, x.data(), options);
+}
+
+Summary GuidedProjection::solve(const Problem& problem, double* x, const Options& options) {
+    Impl& d = *m_impl;
+    const auto totalStart = Clock::now();
+    Summary summary;
+    const int n = problem.variableCount();
+    summary.variables = n;
+    if (n > 0 && !x) {
+        summary.status = Status::InvalidProblem;
+        summary.message = "null state";
+        return summary;
+    }
+    d.x.assign(x, x + n);
+    d.xNew.resize(static_cast<std::size_t>(n));
+    d.step.resize(static_cast<std::size_t>(n));
+    d.rhs.resize(static_cast<std::size_t>(n));
+    if (!allFinite(d.x)) {
+        summary.status = Status::NonFiniteValue;
+        summary.message = "the initial state contains a non-finite value";
+        summary.totalMs = elapsedMs(totalStart);
+        return summary;
+    }
+
+    // Structure: reuse while the problem structure (and the factorisation method) is unchanged.
+    const auto analysisStart = Clock::now();
+    const bool reusable = d.equations.matches(problem) &&
+                          (options.baseline || (d.analysed && d.method == options.factorization));
+    if (!reusable) {
+        bool ok = true;
+        if (options.baseline) {
+            std::string error;
+            d.analysed = false;
+            ok = d.equations.build(problem, &error);
+            if (!ok) {
+                summary.status = Status::InvalidProblem;
+                summary.message = error;
+            }
+        } else {
+            ok = d.prepareCached(problem, options, summary);
+        }
+        if (!ok) {
+            d.reset();
+            summary.totalMs = elapsedMs(totalStart);
+            return summary;
+        }
+        summary.analysisMs = elapsedMs(analysisStart);
+    }
+    summary.structureReused = reusable;
+    summary.rows = d.equations.rowCount();
+    summary.jacobianNonZeros = d.equations.jacobianNonZeros();
+    summary.normalMatrixNonZeros = d.equations.normalNonZeros();
+
+    auto evaluationStart = Clock::now();
+    if (!d.equations.evaluate(problem, d.x.data())) {
+        summary.status = Status::NonFiniteValue;
+        summary.message = "a term produced a non-finite value at the initial state";
+        summary.totalMs = elapsedMs(totalStart);
+        return summary;
+    }
+    double pendingEvaluationMs = elapsedMs(evaluationStart);
+    summary.initialMaxConstraintResidual = d.equations.maxConstraintResidual();
+    summary.initialEnergy = d.equations.energy();
+    summary.finalMaxConstraintResidual = summary.initialMaxConstraintResidual;
+    summary.finalEnergy = summary.initialEnergy;
+    summary.status = Status::IterationLimit;
+    if (options.recordIterations) {
+        summary.iterations.reserve(static_cast<std::size_t>(std::max(0, options.maxIterations)));
+    }
+
+    for (int iteration = 0; iteration < options.maxIterations; ++iteration) {
+        if (options.cancel && options.cancel->load()) {
+            summary.status = Status::Cancelled;
+            summary.message = "cancelled";
+            break;
+        }
+        IterationStats stats;
+        stats.iteration = iteration;
+        stats.eps1 = epsilon1(options, options.scheduleOffset + iteration);
+        stats.assemblyMs = pendingEvaluationMs;
+        const bool stepped = options.baseline
+                                 ? d.baselineStep(problem, stats.eps1, options, stats, summary)
+                                 : d.cachedStep(problem, stats.eps1, options, stats, summary);
+        if (!stepped) {
+            break;
+        }
+        stats.factorFlops = d.cholesky.flops();
+        stats.factorNonZeros = d.cholesky.factorNonZeros();
+        if (!allFinite(d.step)) {
+            summary.status = Status::NonFiniteValue;
+            summary.message = "the linear solve produced a non-finite step";
+            break;
+        }
+        double stepSquared = 0.0;
+        for (int i = 0; i < n; ++i) {
+            const auto k = static_cast<std::size_t>(i);
+            d.xNew[k] = d.x[k] + d.step[k];
+            stepSquared += d.step[k] * d.step[k];
+        }
+        stats.stepNorm = std::sqrt(stepSquared);
+        evaluationStart = Clock::now();
+        const bool finite = allFinite(d.xNew) && d.equations.evaluate(problem, d.xNew.data());
+        pendingEvaluationMs = elapsedMs(evaluationStart);
+        stats.assemblyMs += pendingEvaluationMs;
+        pendingEvaluationMs = 0.0;
+        if (!finite) {
+            summary.status = Status::NonFiniteValue;
+            summary.message =
+                "a term produced a non-finite value at iterate " + std::to_string(iteration + 1);
+            break;
+        }
+        d.x.swap(d.xNew);
+        stats.maxConstraintResidual = d.equations.maxConstraintResidual();
+        stats.energy = d.equations.energy();
+        summary.finalMaxConstraintResidual = stats.maxConstraintResidual;
+        summary.finalEnergy = stats.energy;
+        summary.iterationsCompleted = iteration + 1;
+        if (options.recordIterations) {
+            summary.iterations.push_back(stats);
+        }
+        if (options.progress) {
+            options.progress(stats);
+        }
+        if (options.residualTolerance > 0.0 &&
+            stats.maxConstraintResidual <= options.residualTolerance &&
+            epsilon1(options, options.scheduleOffset + iteration + 1) == 0.0) {
+            summary.status = Status::Converged;
+            break;
+        }
+    }
+    summary.supernodal = d.cholesky.isSupernodal();
+    summary.factorizedInPlace = !options.baseline && d.cholesky.factorizesInPlace();
+    std::copy(d.x.begin(), d.x.end(), x);
+    summary.totalMs = elapsedMs(totalStart);
+    return summary;
+}
+
+} // namespace devsurf::solver

@@ -1,0 +1,390 @@
+#include "solver/core/normal_equations.h"
+
+#include "solver/core/problem.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace devsurf::solver {
+
+namespace {
+
+double termWeight(const Problem& problem, int term, double eps1) {
+    const TermFamily& family = problem.family(problem.termFamily(term));
+    return family.role == TermRole::Energy ? family.weight * eps1 : family.weight;
+}
+
+// Builds a CSC pattern from sorted unique keys column * n + row.
+void keysToCsc(const std::vector<std::uint64_t>& keys, int n, std::vector<int>& colStart,
+               std::vector<int>& rowIndex) {
+    colStart.assign(static_cast<std::size_t>(n) + 1, 0);
+    rowIndex.resize(keys.size());
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        const auto column = static_cast<std::size_t>(keys[k] / static_cast<std::uint64_t>(n));
+        rowIndex[k] = static_cast<int>(keys[k] % static_cast<std::uint64_t>(n));
+        ++colStart[column + 1];
+    }
+    std::partial_sum(colStart.begin(), colStart.end(), colStart.begin());
+}
+
+} // namespace
+
+bool NormalEquations::build(const Problem& problem, std::string* error) {
+    m_built = false;
+    const int n = problem.variableCount();
+    const int termCount = problem.termCount();
+    m_variables = n;
+    m_termRowStart.assign(1, 0);
+    m_termJacStart.assign(1, 0);
+    m_jacRowStart.clear();
+    m_jacColumn.clear();
+    for (int t = 0; t < termCount; ++t) {
+        const Term& term = problem.term(t);
+        const std::size_t rowsBefore = m_jacRowStart.size();
+        PatternBuilder builder(m_jacRowStart, m_jacColumn);
+        term.buildPattern(builder);
+        const auto emitted = static_cast<int>(m_jacRowStart.size() - rowsBefore);
+        if (emitted != term.rowCount()) {
+            if (error) {
+                *error = std::string(term.typeName()) + " emitted " + std::to_string(emitted) +
+                         " pattern rows for " + std::to_string(term.rowCount()) + " rows";
+            }
+            return false;
+        }
+        m_termRowStart.push_back(static_cast<int>(m_jacRowStart.size()));
+        m_termJacStart.push_back(static_cast<int>(m_jacColumn.size()));
+    }
+    m_rows = static_cast<int>(m_jacRowStart.size());
+    m_jacRowStart.push_back(static_cast<int>(m_jacColumn.size()));
+    for (int c : m_jacColumn) {
+        if (c < 0 || c >= n) {
+            if (error) {
+                *error = "Jacobian column " + std::to_string(c) + " outside [0, " +
+                         std::to_string(n) + ")";
+            }
+            return false;
+        }
+    }
+    m_jacValue.assign(m_jacColumn.size(), 0.0);
+    m_residual.assign(static_cast<std::size_t>(m_rows), 0.0);
+    m_rowWeight2.assign(static_cast<std::size_t>(m_rows), 0.0);
+
+    // Pattern of the upper triangle of JᵀJ + I, column by column through the transpose of J
+    // (a symbolic sparse product), and for every pair of Jacobian entries in a row the index
+    // of the nonzero it contributes to. Pairs of row r are enumerated as (i, j), i <= j, in
+    // row order, starting at pairBase[r].
+    std::vector<std::size_t> pairBase(static_cast<std::size_t>(m_rows) + 1, 0);
+    for (int r = 0; r < m_rows; ++r) {
+        const auto m = static_cast<std::size_t>(m_jacRowStart[r + 1] - m_jacRowStart[r]);
+        pairBase[static_cast<std::size_t>(r) + 1] =
+            pairBase[static_cast<std::size_t>(r)] + m * (m + 1) / 2;
+    }
+    // Transpose of J: for each column, the Jacobian entries in it.
+    std::vector<int> transposeStart(static_cast<std::size_t>(n) + 1, 0);
+    for (int c : m_jacColumn) {
+        ++transposeStart[static_cast<std::size_t>(c) + 1];
+    }
+    std::partial_sum(transposeStart.begin(), transposeStart.end(), transposeStart.begin());
+    std::vector<int> transposeEntry(m_jacColumn.size());
+    std::vector<int> transposeRow(m_jacColumn.size());
+    {
+        std::vector<int> next(transposeStart.begin(), transposeStart.end() - 1);
+        for (int r = 0; r < m_rows; ++r) {
+            for (int e = m_jacRowStart[r]; e < m_jacRowStart[r + 1]; ++e) {
+                const int k = next[static_cast<std::size_t>(m_jacColumn[e])]++;
+                transposeEntry[static_cast<std::size_t>(k)] = e;
+                transposeRow[static_cast<std::size_t>(k)] = r;
+            }
+        }
+    }
+    m_originalColStart.assign(static_cast<std::size_t>(n) + 1, 0);
+    m_originalRowIndex.clear();
+    m_originalRowIndex.reserve(m_jacColumn.size() * 4 + static_cast<std::size_t>(n));
+    m_originalPairTarget.assign(pairBase.back(), -1);
+    m_originalDiagonal.resize(static_cast<std::size_t>(n));
+    m_duplicates.clear();
+    std::vector<int> mark(static_cast<std::size_t>(n), -1);
+    std::vector<int> position(static_cast<std::size_t>(n), 0);
+    std::vector<int> rowsOfColumn;
+    for (int c = 0; c < n; ++c) {
+        rowsOfColumn.clear();
+        rowsOfColumn.push_back(c);
+        mark[static_cast<std::size_t>(c)] = c;
+        for (int k = transposeStart[c]; k < transposeStart[static_cast<std::size_t>(c) + 1]; ++k) {
+            const int r = transposeRow[static_cast<std::size_t>(k)];
+            for (int e = m_jacRowStart[r]; e < m_jacRowStart[r + 1]; ++e) {
+                const int other = m_jacColumn[e];
+                if (other < c && mark[static_cast<std::size_t>(other)] != c) {
+                    mark[static_cast<std::size_t>(other)] = c;
+                    rowsOfColumn.push_back(other);
+                }
+            }
+        }
+        std::sort(rowsOfColumn.begin(), rowsOfColumn.end());
+        const auto start = static_cast<int>(m_originalRowIndex.size());
+        for (std::size_t k = 0; k < rowsOfColumn.size(); ++k) {
+            position[static_cast<std::size_t>(rowsOfColumn[k])] = start + static_cast<int>(k);
+            m_originalRowIndex.push_back(rowsOfColumn[k]);
+        }
+        m_originalColStart[static_cast<std::size_t>(c) + 1] =
+            static_cast<int>(m_originalRowIndex.size());
+        m_originalDiagonal[static_cast<std::size_t>(c)] = position[static_cast<std::size_t>(c)];
+        // Every pair whose larger column is c gets its target here, exactly once.
+        for (int k = transposeStart[c]; k < transposeStart[static_cast<std::size_t>(c) + 1]; ++k) {
+            const int r = transposeRow[static_cast<std::size_t>(k)];
+            const int begin = m_jacRowStart[r];
+            const int m = m_jacRowStart[r + 1] - begin;
+            const int j = transposeEntry[static_cast<std::size_t>(k)] - begin;
+            for (int i = 0; i < m; ++i) {
+                const int other = m_jacColumn[static_cast<std::size_t>(begin + i)];
+                if (other > c || (other == c && i > j)) {
+                    continue;
+                }
+                const auto a = static_cast<std::size_t>(std::min(i, j));
+                const auto b = static_cast<std::size_t>(std::max(i, j));
+                const std::size_t index = pairBase[static_cast<std::size_t>(r)] +
+                                          a * static_cast<std::size_t>(m) - a * (a - 1) / 2 +
+                                          (b - a);
+                const int target = position[static_cast<std::size_t>(other)];
+                m_originalPairTarget[index] = target;
+                // A column repeated within a row: the cross product lands on the diagonal
+                // twice ((Jᵢ + Jⱼ)² = Jᵢ² + 2JᵢJⱼ + Jⱼ²).
+                if (other == c && i < j) {
+                    m_duplicates.push_back({begin + i, begin + j, r, target});
+                }
+            }
+        }
+    }
+
+    m_structureId = problem.structureId();
+    m_fixedRevision = ~std::uint64_t{0};
+    m_built = true;
+    setLayout({}, Triangle::Upper);
+    return true;
+}
+
+bool NormalEquations::matches(const Problem& problem) const {
+    if (!m_built || problem.structureId() != m_structureId ||
+        problem.variableCount() != m_variables ||
+        problem.termCount() + 1 != static_cast<int>(m_termRowStart.size())) {
+        return false;
+    }
+    for (int t = 0; t < problem.termCount(); ++t) {
+        if (problem.term(t).rowCount() !=
+            m_termRowStart[static_cast<std::size_t>(t) + 1] - m_termRowStart[t]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+void NormalEquations::setLayout(const std::vector<int>& permutation, Triangle triangle) {
+    const int n = m_variables;
+    const auto un = static_cast<std::uint64_t>(n);
+    std::vector<int> inverse(static_cast<std::size_t>(n));
+    if (permutation.empty()) {
+        std::iota(inverse.begin(), inverse.end(), 0);
+    } else {
+        for (int k = 0; k < n; ++k) {
+            inverse[static_cast<std::size_t>(permutation[static_cast<std::size_t>(k)])] = k;
+        }
+    }
+    const std::size_t nnz = m_originalRowIndex.size();
+    std::vector<std::uint64_t> newKey(nnz);
+    for (int c = 0; c < n; ++c) {
+        for (int k = m_originalColStart[c]; k < m_originalColStart[c + 1]; ++k) {
+            const int a = inverse[static_cast<std::size_t>(m_originalRowIndex[k])];
+            const int b = inverse[static_cast<std::size_t>(c)];
+            const auto lo = static_cast<std::uint64_t>(std::min(a, b));
+            const auto hi = static_cast<std::uint64_t>(std::max(a, b));
+            // Upper: column = hi, row = lo. Lower: column = lo, row = hi.
+            newKey[static_cast<std::size_t>(k)] =
+                triangle == Triangle::Upper ? hi * un + lo : lo * un + hi;
+        }
+    }
+    std::vector<int> order(nnz);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&newKey](int a, int b) {
+        return newKey[static_cast<std::size_t>(a)] < newKey[static_cast<std::size_t>(b)];
+    });
+    m_position.resize(nnz);
+    std::vector<std::uint64_t> sortedKeys(nnz);
+    for (std::size_t k = 0; k < nnz; ++k) {
+        m_position[static_cast<std::size_t>(order[k])] = static_cast<int>(k);
+        sortedKeys[k] = newKey[static_cast<std::size_t>(order[k])];
+    }
+    keysToCsc(sortedKeys, n, m_colStart, m_rowIndex);
+    m_pairTarget.resize(m_originalPairTarget.size());
+    for (std::size_t p = 0; p < m_pairTarget.size(); ++p) {
+        m_pairTarget[p] = m_position[static_cast<std::size_t>(m_originalPairTarget[p])];
+    }
+    m_diagonal.resize(m_originalDiagonal.size());
+    for (std::size_t v = 0; v < m_diagonal.size(); ++v) {
+        m_diagonal[v] = m_position[static_cast<std::size_t>(m_originalDiagonal[v])];
+    }
+    m_triangle = triangle;
+}
+
+bool NormalEquations::evaluate(const Problem& problem, const double* x) {
+    const int termCount = problem.termCount();
+    for (int t = 0; t < termCount; ++t) {
+        problem.term(t).evaluate(x, m_residual.data() + m_termRowStart[t],
+                                 m_jacValue.data() + m_termJacStart[t]);
+    }
+    bool finite = true;
+    for (double v : m_residual) {
+        finite = finite && std::isfinite(v);
+    }
+    for (double v : m_jacValue) {
+        finite = finite && std::isfinite(v);
+    }
+    if (problem.fixedRevision() != m_fixedRevision) {
+        // Only when the set of fixed variables changed (not inside the iteration loop).
+        m_fixedJacobianEntries.clear();
+        for (std::size_t e = 0; e < m_jacColumn.size(); ++e) {
+            if (problem.isFixed(m_jacColumn[e])) {
+                m_fixedJacobianEntries.push_back(static_cast<int>(e));
+            }
+        }
+        m_fixedRevision = problem.fixedRevision();
+    }
+    for (int e : m_fixedJacobianEntries) {
+        m_jacValue[static_cast<std::size_t>(e)] = 0.0;
+    }
+    double maxResidual = 0.0;
+    double energy = 0.0;
+    for (int t = 0; t < termCount; ++t) {
+        const TermFamily& family = problem.family(problem.termFamily(t));
+        if (family.weight == 0.0) {
+            continue;
+        }
+        const double w2 = family.weight * family.weight;
+        for (int r = m_termRowStart[t]; r < m_termRowStart[static_cast<std::size_t>(t) + 1]; ++r) {
+            const double phi = m_residual[static_cast<std::size_t>(r)];
+            if (family.role == TermRole::Constraint) {
+                maxResidual = std::max(maxResidual, std::abs(phi));
+            } else {
+                energy += w2 * phi * phi;
+            }
+        }
+    }
+    m_maxConstraintResidual = maxResidual;
+    m_energy = energy;
+    return finite;
+}
+
+void NormalEquations::rowWeights(const Problem& problem, double eps1,
+                                 std::vector<double>& weights) const {
+    weights.resize(static_cast<std::size_t>(m_rows));
+    for (int t = 0; t < problem.termCount(); ++t) {
+        const double w = termWeight(problem, t, eps1);
+        std::fill(weights.begin() + m_termRowStart[t],
+                  weights.begin() + m_termRowStart[static_cast<std::size_t>(t) + 1], w);
+    }
+}
+
+void NormalEquations::fill(const Problem& problem, double eps1, double eps2, double* values,
+                           double* rhs) {
+    std::fill(values, values + m_rowIndex.size(), 0.0);
+    std::fill(rhs, rhs + m_variables, 0.0);
+    const double* jac = m_jacValue.data();
+    const int* column = m_jacColumn.data();
+    const int* target = m_pairTarget.data();
+    std::size_t p = 0;
+    for (int t = 0; t < problem.termCount(); ++t) {
+        const double w = termWeight(problem, t, eps1);
+        const double w2 = w * w;
+        const int rowEnd = m_termRowStart[static_cast<std::size_t>(t) + 1];
+        for (int r = m_termRowStart[t]; r < rowEnd; ++r) {
+            m_rowWeight2[static_cast<std::size_t>(r)] = w2;
+            const int begin = m_jacRowStart[r];
+            const int end = m_jacRowStart[r + 1];
+            if (w2 == 0.0) {
+                const auto m = static_cast<std::size_t>(end - begin);
+                p += m * (m + 1) / 2;
+                continue;
+            }
+            const double f = w2 * m_residual[static_cast<std::size_t>(r)];
+            for (int i = begin; i < end; ++i) {
+                const double a = w2 * jac[i];
+                rhs[column[i]] -= f * jac[i];
+                for (int j = i; j < end; ++j) {
+                    values[target[p++]] += a * jac[j];
+                }
+            }
+        }
+    }
+    for (const DuplicatePair& d : m_duplicates) {
+        values[m_position[static_cast<std::size_t>(d.target)]] +=
+            m_rowWeight2[static_cast<std::size_t>(d.row)] * jac[d.first] * jac[d.second];
+    }
+    const double e2 = eps2 * eps2;
+    for (int v : m_diagonal) {
+        values[v] += e2;
+    }
+    // Fixed variables: their rows and columns are zero; a unit diagonal keeps N definite.
+    for (int v : problem.fixedVariables()) {
+        values[m_diagonal[static_cast<std::size_t>(v)]] += 1.0;
+    }
+}
+
+Eigen::SparseMatrix<double> NormalEquations::weightedJacobian(const Problem& problem,
+                                                              double eps1) const {
+    std::vector<Eigen::Triplet<double>> triplets;
+    triplets.reserve(m_jacColumn.size());
+    for (int t = 0; t < problem.termCount(); ++t) {
+        const double w = termWeight(problem, t, eps1);
+        for (int r = m_termRowStart[t]; r < m_termRowStart[static_cast<std::size_t>(t) + 1]; ++r) {
+            for (int e = m_jacRowStart[r]; e < m_jacRowStart[r + 1]; ++e) {
+                const int c = m_jacColumn[static_cast<std::size_t>(e)];
+                if (!problem.isFixed(c)) {
+                    triplets.emplace_back(r, c, w * m_jacValue[static_cast<std::size_t>(e)]);
+                }
+            }
+        }
+    }
+    Eigen::SparseMatrix<double> h(m_rows, m_variables);
+    h.setFromTriplets(triplets.begin(), triplets.end());
+    return h;
+}
+
+void NormalEquations::assembleFromScratch(const Problem& problem, double eps1, double eps2,
+                                          Eigen::SparseMatrix<double>& upper,
+                                          Eigen::VectorXd& rhs) const {
+    const Eigen::SparseMatrix<double> h = weightedJacobian(problem, eps1);
+    std::vector<double> weights;
+    rowWeights(problem, eps1, weights);
+    Eigen::VectorXd weightedResidual(m_rows);
+    for (int r = 0; r < m_rows; ++r) {
+        weightedResidual[r] =
+            weights[static_cast<std::size_t>(r)] * m_residual[static_cast<std::size_t>(r)];
+    }
+    rhs = -(h.transpose() * weightedResidual);
+    Eigen::SparseMatrix<double> diagonal(m_variables, m_variables);
+    diagonal.setIdentity();
+    diagonal *= eps2 * eps2;
+    for (int v : problem.fixedVariables()) {
+        diagonal.coeffRef(v, v) += 1.0;
+    }
+    const Eigen::SparseMatrix<double> full =
+        Eigen::SparseMatrix<double>(h.transpose() * h) + diagonal;
+    upper = full.triangularView<Eigen::Upper>();
+    upper.makeCompressed();
+}
+
+Eigen::SparseMatrix<double> NormalEquations::toOriginalUpper(const double* values) const {
+    std::vector<Eigen::Triplet<double>> triplets;
+    triplets.reserve(m_originalRowIndex.size());
+    for (int c = 0; c < m_variables; ++c) {
+        for (int k = m_originalColStart[c]; k < m_originalColStart[c + 1]; ++k) {
+            triplets.emplace_back(m_originalRowIndex[static_cast<std::size_t>(k)], c,
+                                  values[m_position[static_cast<std::size_t>(k)]]);
+        }
+    }
+    Eigen::SparseMatrix<double> m(m_variables, m_variables);
+    m.setFromTriplets(triplets.begin(), triplets.end());
+    return m;
+}
+
+} // namespace devsurf::solver

@@ -1,0 +1,117 @@
+#pragma once
+
+#include <Eigen/SparseCore>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace devsurf::solver {
+
+class Problem;
+
+// The linearised system of one guided-projection step, with a sparsity structure that is
+// built once per problem structure:
+//
+//   N = HᵀW²H + ε₁²KᵀK + ε₂²I,   g = −(HᵀW²φ_H + ε₁²Kᵀ φ_K),   N δ = g,   x_{k+1} = x_k + δ
+//
+// (the step form of (6); identical to solving for x with right-hand side HᵀW²r + ε₁²Kᵀs +
+// ε₂²x_k). H and K are the Jacobians of the constraint and energy rows. For every pair of
+// Jacobian entries in the same row the index of the normal-matrix nonzero it contributes to is
+// precomputed, so fill() only runs a multiply-add per pair into the stored triangle. The
+// stored triangle can be laid out in a permuted order (setLayout) so that CHOLMOD factorises
+// it in place without permuting or transposing a copy.
+class NormalEquations {
+public:
+    enum class Triangle { Upper, Lower };
+
+    // Builds the Jacobian (CSR) and normal-matrix patterns. Returns false and sets `error` for
+    // an inconsistent problem (column out of range, wrong number of rows from a term).
+    bool build(const Problem& problem, std::string* error);
+    // True if build() ran for this problem structure (same structureId and row counts).
+    bool matches(const Problem& problem) const;
+    bool isBuilt() const { return m_built; }
+
+    // Evaluates all terms at x, zeroes the Jacobian columns of fixed variables and computes
+    // the residual statistics. Returns false if a residual or Jacobian entry is not finite.
+    bool evaluate(const Problem& problem, const double* x);
+    double maxConstraintResidual() const { return m_maxConstraintResidual; }
+    double energy() const { return m_energy; }
+
+    // Lays the stored triangle out in the order perm (position k holds original variable
+    // perm[k]; empty = identity).
+    void setLayout(const std::vector<int>& permutation, Triangle triangle);
+    Triangle triangle() const { return m_triangle; }
+    const std::vector<int>& columnStart() const { return m_colStart; }
+    const std::vector<int>& rowIndex() const { return m_rowIndex; }
+
+    // Refills the stored triangle of N (current layout) and g (original order) in place from
+    // the last evaluate(). Allocation-free.
+    void fill(const Problem& problem, double eps1, double eps2, double* values, double* rhs);
+
+    int variableCount() const { return m_variables; }
+    int rowCount() const { return m_rows; }
+    long long jacobianNonZeros() const { return static_cast<long long>(m_jacColumn.size()); }
+    long long normalNonZeros() const { return static_cast<long long>(m_rowIndex.size()); }
+    long long pairCount() const { return static_cast<long long>(m_pairTarget.size()); }
+
+    const std::vector<double>& residuals() const { return m_residual; }
+    const std::vector<double>& jacobianValues() const { return m_jacValue; }
+    const std::vector<int>& jacobianRowStart() const { return m_jacRowStart; }
+    const std::vector<int>& jacobianColumns() const { return m_jacColumn; }
+    // Per-row weight w (family weight, times ε₁ for energy rows).
+    void rowWeights(const Problem& problem, double eps1, std::vector<double>& weights) const;
+
+    // Reference assembly from scratch (used by the baseline mode and the tests): the weighted
+    // Jacobian W̃ J (fixed columns zero) built from triplets.
+    Eigen::SparseMatrix<double> weightedJacobian(const Problem& problem, double eps1) const;
+    // N (upper triangle, original order) and g from scratch via Eigen sparse products.
+    void assembleFromScratch(const Problem& problem, double eps1, double eps2,
+                             Eigen::SparseMatrix<double>& upper, Eigen::VectorXd& rhs) const;
+    // Converts stored values in the current layout to an upper-triangular matrix in the
+    // original order.
+    Eigen::SparseMatrix<double> toOriginalUpper(const double* values) const;
+
+private:
+    struct DuplicatePair {
+        int first;  // Jacobian entry index
+        int second; // Jacobian entry index
+        int row;
+        int target; // normal-matrix nonzero in the original layout
+    };
+
+    bool m_built = false;
+    std::uint64_t m_structureId = 0;
+    int m_variables = 0;
+    int m_rows = 0;
+    std::vector<int> m_termRowStart; // per term, first row (size terms + 1)
+    std::vector<int> m_termJacStart; // per term, first Jacobian entry (size terms + 1)
+    std::vector<int> m_jacRowStart;  // CSR row starts (size rows + 1)
+    std::vector<int> m_jacColumn;
+    std::vector<double> m_jacValue;
+    std::vector<double> m_residual;
+    std::vector<double> m_rowWeight2;
+
+    // Normal matrix in the original order, upper triangle, CSC.
+    std::vector<int> m_originalColStart;
+    std::vector<int> m_originalRowIndex;
+    std::vector<int> m_originalPairTarget;
+    std::vector<int> m_originalDiagonal;
+    // Current layout.
+    Triangle m_triangle = Triangle::Upper;
+    std::vector<int> m_colStart;
+    std::vector<int> m_rowIndex;
+    std::vector<int> m_position; // original nonzero -> current nonzero
+    std::vector<int> m_pairTarget;
+    std::vector<int> m_diagonal; // per original variable
+    std::vector<DuplicatePair> m_duplicates;
+
+    // Fixed variables.
+    std::uint64_t m_fixedRevision = ~std::uint64_t{0};
+    std::vector<int> m_fixedJacobianEntries;
+
+    double m_maxConstraintResidual = 0.0;
+    double m_energy = 0.0;
+};
+
+} // namespace devsurf::solver

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <atomic>
+#include <functional>
+
+namespace devsurf::solver {
+
+struct IterationStats;
+
+enum class FactorizationMethod {
+    Supernodal, // CHOLMOD supernodal LLᵀ (BLAS-3); measured faster on our problems
+    Simplicial, // CHOLMOD simplicial LDLᵀ
+    Automatic,  // CHOLMOD's own choice from the flop count per nonzero of L
+};
+
+// Options of GuidedProjection::solve (in the style of Ceres' Solver::Options).
+struct Options {
+    int maxIterations = 10;
+
+    // ε₁ schedule of the paper (Fig. 17): ε₁(i) = eps1Initial · eps1Decay^i for the first
+    // eps1Iterations iterations, then eps1Final. `i` counts from scheduleOffset, so an
+    // interactive caller running one iteration per solve() can continue the schedule.
+    double eps1Initial = 0.1;
+    double eps1Decay = 0.9;
+    int eps1Iterations = 5;
+    double eps1Final = 0.0;
+    int scheduleOffset = 0;
+    // If set, replaces the schedule above: ε₁ as a function of the iteration index.
+    std::function<double(int)> eps1Schedule;
+
+    // Damping ε₂ of ‖x − x_k‖² (paper: 0.01, useful range 1e-6 … 1e-2).
+    double eps2 = 0.01;
+
+    // Stop early once the ε₁ phase is over and the largest constraint residual is at most
+    // this (0 disables early stopping).
+    double residualTolerance = 0.0;
+
+    FactorizationMethod factorization = FactorizationMethod::Supernodal;
+
+    // Benchmark reference: rebuild the normal matrix from triplets and run a full symbolic and
+    // numeric factorisation every iteration (same terms, no caching).
+    bool baseline = false;
+
+    // Checked between iterations; when it becomes true, solve() returns the last completed
+    // iterate with Status::Cancelled.
+    const std::atomic<bool>* cancel = nullptr;
+
+    // Called after every iteration (on the solving thread).
+    std::function<void(const IterationStats&)> progress;
+
+    // Record per-iteration statistics in Summary::iterations.
+    bool recordIterations = true;
+};
+
+// ε₁ for iteration `iteration` (counted from 0, without scheduleOffset) under `options`.
+double epsilon1(const Options& options, int iteration);
+
+} // namespace devsurf::solver

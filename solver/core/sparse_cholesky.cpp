@@ -1,0 +1,220 @@
+#include "solver/core/sparse_cholesky.h"
+
+#include <suitesparse/cholmod.h>
+
+#include <algorithm>
+
+namespace devsurf::solver {
+
+struct SparseCholesky::Impl {
+    cholmod_common common{};
+    cholmod_sparse* matrix = nullptr;
+    cholmod_factor* factor = nullptr;
+    cholmod_dense* rhs = nullptr;
+    cholmod_dense* solution = nullptr;
+    cholmod_dense* workY = nullptr;
+    cholmod_dense* workE = nullptr;
+    std::vector<int> permutation; // empty: CHOLMOD permutes itself (or identity)
+    double flops = 0.0;
+    double lnz = 0.0;
+    bool inPlace = false;
+    std::string error;
+
+    Impl() {
+        cholmod_start(&common);
+        common.print = 0;
+    }
+    ~Impl() {
+        release();
+        cholmod_finish(&common);
+    }
+    void release() {
+        cholmod_free_factor(&factor, &common);
+        cholmod_free_sparse(&matrix, &common);
+        cholmod_free_dense(&rhs, &common);
+        cholmod_free_dense(&solution, &common);
+        cholmod_free_dense(&workY, &common);
+        cholmod_free_dense(&workE, &common);
+        permutation.clear();
+        inPlace = false;
+    }
+    bool fail(const char* what) {
+        error = std::string(what) + " (CHOLMOD status " + std::to_string(common.status) + ")";
+        return false;
+    }
+    cholmod_sparse* makeMatrix(int n, const std::vector<int>& colStart,
+                               const std::vector<int>& rowIndex, int stype, int xtype) {
+        cholmod_sparse* a = cholmod_allocate_sparse(static_cast<size_t>(n), static_cast<size_t>(n),
+                                                    rowIndex.size(), 1, 1, stype, xtype, &common);
+        if (!a) {
+            return nullptr;
+        }
+        std::copy(colStart.begin(), colStart.end(), static_cast<int*>(a->p));
+        std::copy(rowIndex.begin(), rowIndex.end(), static_cast<int*>(a->i));
+        if (xtype == CHOLMOD_REAL) {
+            std::fill_n(static_cast<double*>(a->x), rowIndex.size(), 0.0);
+        }
+        return a;
+    }
+    void setMethod(FactorizationMethod method) {
+        switch (method) {
+        case FactorizationMethod::Supernodal:
+            common.supernodal = CHOLMOD_SUPERNODAL;
+            break;
+        case FactorizationMethod::Simplicial:
+            common.supernodal = CHOLMOD_SIMPLICIAL;
+            break;
+        case FactorizationMethod::Automatic:
+            common.supernodal = CHOLMOD_AUTO;
+            break;
+        }
+    }
+    void defaultOrdering() {
+        common.nmethods = 0;
+        common.postorder = 1;
+    }
+    bool allocateDense(int n) {
+        rhs = cholmod_zeros(static_cast<size_t>(n), 1, CHOLMOD_REAL, &common);
+        return rhs != nullptr;
+    }
+};
+
+SparseCholesky::SparseCholesky() : m_impl(std::make_unique<Impl>()) {}
+SparseCholesky::~SparseCholesky() = default;
+
+bool SparseCholesky::computeOrdering(int n, const std::vector<int>& colStart,
+                                     const std::vector<int>& rowIndex, FactorizationMethod method,
+                                     std::vector<int>& permutation, bool& supernodal) {
+    Impl& d = *m_impl;
+    d.release();
+    d.defaultOrdering();
+    d.setMethod(method);
+    cholmod_sparse* pattern = d.makeMatrix(n, colStart, rowIndex, 1, CHOLMOD_PATTERN);
+    if (!pattern) {
+        return d.fail("allocating the pattern failed");
+    }
+    cholmod_factor* symbolic = cholmod_analyze(pattern, &d.common);
+    cholmod_free_sparse(&pattern, &d.common);
+    if (!symbolic) {
+        return d.fail("symbolic analysis failed");
+    }
+    const int* perm = static_cast<const int*>(symbolic->Perm);
+    permutation.assign(perm, perm + n);
+    supernodal = symbolic->is_super != 0;
+    cholmod_free_factor(&symbolic, &d.common);
+    return true;
+}
+
+bool SparseCholesky::analyzePermuted(int n, const std::vector<int>& colStart,
+                                     const std::vector<int>& rowIndex, bool lowerTriangle,
+                                     bool supernodal, const std::vector<int>& permutation) {
+    Impl& d = *m_impl;
+    d.release();
+    d.matrix = d.makeMatrix(n, colStart, rowIndex, lowerTriangle ? -1 : 1, CHOLMOD_REAL);
+    if (!d.matrix) {
+        return d.fail("allocating the matrix failed");
+    }
+    d.common.nmethods = 1;
+    d.common.method[0].ordering = CHOLMOD_NATURAL;
+    d.common.postorder = 0;
+    d.common.supernodal = supernodal ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
+    d.factor = cholmod_analyze(d.matrix, &d.common);
+    d.defaultOrdering();
+    if (!d.factor) {
+        return d.fail("symbolic analysis failed");
+    }
+    d.flops = d.common.fl;
+    d.lnz = d.common.lnz;
+    d.permutation = permutation;
+    d.inPlace = d.factor->ordering == CHOLMOD_NATURAL &&
+                (d.factor->is_super ? lowerTriangle : !lowerTriangle);
+    if (!d.allocateDense(n)) {
+        return d.fail("allocating the right-hand side failed");
+    }
+    return true;
+}
+
+bool SparseCholesky::analyzeGeneral(int n, const std::vector<int>& colStart,
+                                    const std::vector<int>& rowIndex, FactorizationMethod method) {
+    Impl& d = *m_impl;
+    d.release();
+    d.defaultOrdering();
+    d.setMethod(method);
+    d.matrix = d.makeMatrix(n, colStart, rowIndex, 1, CHOLMOD_REAL);
+    if (!d.matrix) {
+        return d.fail("allocating the matrix failed");
+    }
+    d.factor = cholmod_analyze(d.matrix, &d.common);
+    if (!d.factor) {
+        return d.fail("symbolic analysis failed");
+    }
+    d.flops = d.common.fl;
+    d.lnz = d.common.lnz;
+    if (!d.allocateDense(n)) {
+        return d.fail("allocating the right-hand side failed");
+    }
+    return true;
+}
+
+double* SparseCholesky::values() {
+    return m_impl->matrix ? static_cast<double*>(m_impl->matrix->x) : nullptr;
+}
+
+bool SparseCholesky::factorize() {
+    Impl& d = *m_impl;
+    if (!d.matrix || !d.factor) {
+        d.error = "factorize() before analysis";
+        return false;
+    }
+    const int ok = cholmod_factorize(d.matrix, d.factor, &d.common);
+    if (!ok || d.common.status != CHOLMOD_OK) {
+        if (d.common.status == CHOLMOD_NOT_POSDEF) {
+            d.error =
+                "matrix not positive definite (pivot " + std::to_string(d.factor->minor) + ")";
+            return false;
+        }
+        return d.fail("numeric factorisation failed");
+    }
+    return true;
+}
+
+bool SparseCholesky::solve(const double* b, double* x) {
+    Impl& d = *m_impl;
+    if (!d.factor || !d.rhs) {
+        d.error = "solve() before analysis";
+        return false;
+    }
+    const auto n = static_cast<int>(d.rhs->nrow);
+    auto* bx = static_cast<double*>(d.rhs->x);
+    const bool permuted = !d.permutation.empty();
+    for (int k = 0; k < n; ++k) {
+        bx[k] = b[permuted ? d.permutation[static_cast<std::size_t>(k)] : k];
+    }
+    if (!cholmod_solve2(CHOLMOD_A, d.factor, d.rhs, nullptr, &d.solution, nullptr, &d.workY,
+                        &d.workE, &d.common)) {
+        return d.fail("solve failed");
+    }
+    const auto* sx = static_cast<const double*>(d.solution->x);
+    for (int k = 0; k < n; ++k) {
+        x[permuted ? d.permutation[static_cast<std::size_t>(k)] : k] = sx[k];
+    }
+    return true;
+}
+
+bool SparseCholesky::isSupernodal() const {
+    return m_impl->factor && m_impl->factor->is_super != 0;
+}
+bool SparseCholesky::factorizesInPlace() const {
+    return m_impl->inPlace;
+}
+double SparseCholesky::flops() const {
+    return m_impl->flops;
+}
+double SparseCholesky::factorNonZeros() const {
+    return m_impl->lnz;
+}
+const std::string& SparseCholesky::error() const {
+    return m_impl->error;
+}
+
+} // namespace devsurf::solver

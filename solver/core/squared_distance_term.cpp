@@ -1,0 +1,80 @@
+#include "solver/core/squared_distance_term.h"
+
+#include <array>
+#include <stdexcept>
+
+namespace devsurf::solver {
+
+SquaredDistanceTerm::SquaredDistanceTerm(int leftDimension, int rightDimension)
+    : m_leftDimension(leftDimension), m_rightDimension(rightDimension) {
+    if (leftDimension < 1 || leftDimension > kMaxDimension || rightDimension < 1 ||
+        rightDimension > kMaxDimension) {
+        throw std::invalid_argument("SquaredDistanceTerm: dimension out of range");
+    }
+}
+
+int SquaredDistanceTerm::addRow(const PointCombination& left, const PointCombination& right,
+                                double squaredDistance) {
+    m_points.insert(m_points.end(), left.begin(), left.end());
+    m_rightStart.push_back(static_cast<int>(m_points.size()));
+    m_points.insert(m_points.end(), right.begin(), right.end());
+    m_leftStart.push_back(static_cast<int>(m_points.size()));
+    m_squaredDistance.push_back(squaredDistance);
+    return rowCount() - 1;
+}
+
+void SquaredDistanceTerm::buildPattern(PatternBuilder& builder) const {
+    for (std::size_t r = 0; r < m_squaredDistance.size(); ++r) {
+        builder.beginRow();
+        for (int e = m_leftStart[r]; e < m_rightStart[r]; ++e) {
+            builder.addColumns(m_points[static_cast<std::size_t>(e)].offset, m_leftDimension);
+        }
+        for (int e = m_rightStart[r]; e < m_leftStart[r + 1]; ++e) {
+            builder.addColumns(m_points[static_cast<std::size_t>(e)].offset, m_rightDimension);
+        }
+    }
+}
+
+void SquaredDistanceTerm::evaluate(const double* x, double* residuals, double* jacobian) const {
+    for (std::size_t r = 0; r < m_squaredDistance.size(); ++r) {
+        std::array<double, kMaxDimension> a{};
+        std::array<double, kMaxDimension> b{};
+        const int begin = m_leftStart[r];
+        const int middle = m_rightStart[r];
+        const int end = m_leftStart[r + 1];
+        for (int e = begin; e < middle; ++e) {
+            const PointTerm& p = m_points[static_cast<std::size_t>(e)];
+            for (int k = 0; k < m_leftDimension; ++k) {
+                a[k] += p.coefficient * x[p.offset + k];
+            }
+        }
+        for (int e = middle; e < end; ++e) {
+            const PointTerm& p = m_points[static_cast<std::size_t>(e)];
+            for (int k = 0; k < m_rightDimension; ++k) {
+                b[k] += p.coefficient * x[p.offset + k];
+            }
+        }
+        double value = -m_squaredDistance[r];
+        for (int k = 0; k < m_leftDimension; ++k) {
+            value += a[k] * a[k];
+        }
+        for (int k = 0; k < m_rightDimension; ++k) {
+            value -= b[k] * b[k];
+        }
+        residuals[r] = value;
+        for (int e = begin; e < middle; ++e) {
+            const double c = 2.0 * m_points[static_cast<std::size_t>(e)].coefficient;
+            for (int k = 0; k < m_leftDimension; ++k) {
+                *jacobian++ = c * a[k];
+            }
+        }
+        for (int e = middle; e < end; ++e) {
+            const double c = -2.0 * m_points[static_cast<std::size_t>(e)].coefficient;
+            for (int k = 0; k < m_rightDimension; ++k) {
+                *jacobian++ = c * b[k];
+            }
+        }
+    }
+}
+
+} // namespace devsurf::solver

@@ -1,0 +1,37 @@
+#include "solver/core/summary.h"
+
+#include <cstdio>
+
+namespace devsurf::solver {
+
+const char* toString(Status status) {
+    switch (status) {
+    case Status::Converged:
+        return "converged";
+    case Status::IterationLimit:
+        return "iteration limit";
+    case Status::Cancelled:
+        return "cancelled";
+    case Status::NonFiniteValue:
+        return "non-finite value";
+    case Status::FactorizationFailed:
+        return "factorisation failed";
+    case Status::InvalidProblem:
+        return "invalid problem";
+    }
+    return "unknown";
+}
+
+std::string Summary::briefReport() const {
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer,
+                  "%s after %d iterations: max residual %.3e -> %.3e, energy %.3e -> %.3e, "
+                  "%d variables, %d rows, %s, %.1f ms%s%s",
+                  toString(status), iterationsCompleted, initialMaxConstraintResidual,
+                  finalMaxConstraintResidual, initialEnergy, finalEnergy, variables, rows,
+                  supernodal ? "supernodal" : "simplicial", totalMs, message.empty() ? "" : ": ",
+                  message.c_str());
+    return buffer;
+}
+
+} // namespace devsurf::solver

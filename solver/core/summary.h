@@ -1,0 +1,59 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace devsurf::solver {
+
+enum class Status {
+    Converged,           // residualTolerance reached
+    IterationLimit,      // ran maxIterations
+    Cancelled,           // the cancel flag was raised
+    NonFiniteValue,      // a residual, Jacobian entry or step was NaN/Inf
+    FactorizationFailed, // CHOLMOD failed (not positive definite, out of memory, …)
+    InvalidProblem,      // inconsistent structure (column out of range, wrong row count, …)
+};
+
+const char* toString(Status status);
+
+struct IterationStats {
+    int iteration = 0; // 0-based, within this solve()
+    double eps1 = 0.0;
+    // At the new iterate x_{k+1}: largest |φ| over constraint rows with non-zero weight and
+    // Σ w² φ² over energy rows (without ε₁).
+    double maxConstraintResidual = 0.0;
+    double energy = 0.0;
+    double stepNorm = 0.0;        // ‖x_{k+1} − x_k‖
+    double assemblyMs = 0.0;      // term evaluation + normal-equation fill
+    double factorizationMs = 0.0; // numeric (plus symbolic in baseline mode)
+    double solveMs = 0.0;         // triangular solves
+    double factorFlops = 0.0;     // cholmod_common.fl of the factorisation
+    double factorNonZeros = 0.0;  // cholmod_common.lnz
+};
+
+struct Summary {
+    Status status = Status::IterationLimit;
+    std::string message;
+    int iterationsCompleted = 0;
+    std::vector<IterationStats> iterations;
+    double initialMaxConstraintResidual = 0.0;
+    double initialEnergy = 0.0;
+    double finalMaxConstraintResidual = 0.0;
+    double finalEnergy = 0.0;
+    int variables = 0;
+    int rows = 0;
+    long long jacobianNonZeros = 0;
+    long long normalMatrixNonZeros = 0; // stored triangle
+    bool structureReused = false;       // symbolic analysis from a previous solve() reused
+    bool supernodal = false;
+    bool factorizedInPlace = false; // CHOLMOD factorises our array without a permuted copy
+    double analysisMs = 0.0; // structure build + symbolic analysis in this solve() (0 if reused)
+    double totalMs = 0.0;
+
+    bool succeeded() const {
+        return status == Status::Converged || status == Status::IterationLimit;
+    }
+    std::string briefReport() const;
+};
+
+} // namespace devsurf::solver

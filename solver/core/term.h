@@ -1,0 +1,60 @@
+#pragma once
+
+#include <vector>
+
+namespace devsurf::solver {
+
+// One summand of a linear combination Σ cᵢ pᵢ of points: `offset` is the column of the
+// point's first coordinate (the point occupies `dimension` consecutive columns, where the
+// dimension is a property of the term using the combination).
+struct PointTerm {
+    int offset = 0;
+    double coefficient = 1.0;
+};
+
+using PointCombination = std::vector<PointTerm>;
+
+// Collects the sparsity pattern of a term: for each of its rows, the variable columns its
+// Jacobian row may be non-zero in. The order of the columns defines the order in which
+// Term::evaluate writes the Jacobian values. A column may repeat within a row (the
+// derivative is then the sum of the repeated entries).
+class PatternBuilder {
+public:
+    PatternBuilder(std::vector<int>& rowStart, std::vector<int>& columns)
+        : m_rowStart(rowStart), m_columns(columns) {}
+
+    void beginRow() { m_rowStart.push_back(static_cast<int>(m_columns.size())); }
+    void addColumn(int column) { m_columns.push_back(column); }
+    // Adds `count` consecutive columns starting at `first` (the coordinates of a point).
+    void addColumns(int first, int count) {
+        for (int k = 0; k < count; ++k) {
+            m_columns.push_back(first + k);
+        }
+    }
+
+private:
+    std::vector<int>& m_rowStart;
+    std::vector<int>& m_columns;
+};
+
+// A term appends rows φ_r(x) to the problem. Its sparsity pattern is fixed once it has been
+// added to a Problem: later changes may only alter values (targets, right-hand sides),
+// never the number of rows or their columns. Whether the rows are hard constraints or soft
+// energies, and their weight, is decided by the term's family in the Problem.
+class Term {
+public:
+    Term() = default;
+    Term(const Term&) = delete;
+    Term& operator=(const Term&) = delete;
+    virtual ~Term() = default;
+
+    virtual const char* typeName() const = 0;
+    virtual int rowCount() const = 0;
+    // Must emit exactly rowCount() rows (beginRow() once per row).
+    virtual void buildPattern(PatternBuilder& builder) const = 0;
+    // Writes rowCount() residuals and, in pattern order, the Jacobian values of all rows.
+    // Must not allocate: it runs inside the iteration loop.
+    virtual void evaluate(const double* x, double* residuals, double* jacobian) const = 0;
+};
+
+} // namespace devsurf::solver

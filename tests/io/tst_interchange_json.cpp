@@ -1,0 +1,109 @@
+#include "io/interchange_json.h"
+#include "model/examples.h"
+#include "model/strip.h"
+#include "test_registry.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTest>
+
+using namespace devsurf;
+
+namespace {
+
+// Parsed by Qt's JSON reader, not by anything of ours.
+QJsonObject parse(const std::string& text) {
+    QJsonParseError error{};
+    const QJsonDocument doc = QJsonDocument::fromJson(QByteArray::fromStdString(text), &error);
+    if (error.error != QJsonParseError::NoError) {
+        qWarning("%s", qPrintable(error.errorString()));
+    }
+    return doc.object();
+}
+
+model::Vec3 toVec3(const QJsonValue& value) {
+    const QJsonArray a = value.toArray();
+    return {a[0].toDouble(), a[1].toDouble(), a[2].toDouble()};
+}
+
+} // namespace
+
+class TstInterchangeJson : public QObject {
+    Q_OBJECT
+private slots:
+    void documentFollowsTheFormat() {
+        for (const model::ExampleInfo& info : model::builtInExamples()) {
+            const model::Project project = model::makeExample(info.name);
+            const QJsonObject root = parse(io::interchangeJson(project, 4));
+            QCOMPARE(root["format"].toString(), QString("devsurf-interchange"));
+            QCOMPARE(root["version"].toInt(), 1);
+            QCOMPARE(root["units"].toString(), QString("mm"));
+            const QJsonObject surface = root["surfaces"].toArray()[0].toObject();
+            const model::CompositeSurface& model = project.surfaces[0];
+            const auto strips = model::stripsOf(model);
+            const QJsonArray jsonStrips = surface["strips"].toArray();
+            QCOMPARE(jsonStrips.size(), qsizetype(strips.size()));
+            for (qsizetype i = 0; i < jsonStrips.size(); ++i) {
+                const QJsonObject strip = jsonStrips[i].toObject();
+                const QJsonObject a = strip["a"].toObject();
+                QCOMPARE(a["knots"].toArray().size(),
+                         a["controlPoints"].toArray().size() + a["degree"].toInt() + 1);
+                QCOMPARE(strip["type"].toString() == "cone", strip["b"].isNull());
+                QCOMPARE(strip["type"].toString() == "cone", !strip["apex"].isNull());
+                // Full precision: coordinates read back bit for bit.
+                const auto& points = strips[static_cast<std::size_t>(i)].a.controlPoints();
+                const QJsonArray jsonPoints = a["controlPoints"].toArray();
+                for (qsizetype k = 0; k < jsonPoints.size(); ++k) {
+                    QVERIFY(toVec3(jsonPoints[k]) == points[static_cast<std::size_t>(k)]);
+                }
+            }
+            // Each crease curve equals the side it names on both strips.
+            for (const QJsonValue& value : surface["creases"].toArray()) {
+                const QJsonObject crease = value.toObject();
+                const QJsonArray curve = crease["curve"].toObject()["controlPoints"].toArray();
+                for (const char* which : {"left", "right"}) {
+                    const QJsonObject side = crease[which].toObject();
+                    const QJsonObject strip =
+                        jsonStrips[side["strip"].toInt()].toObject()[side["side"].toString()]
+                            .toObject();
+                    const QJsonArray points = strip["controlPoints"].toArray();
+                    QCOMPARE(points.size(), curve.size());
+                    const bool reversed = side["reversed"].toBool();
+                    for (qsizetype k = 0; k < curve.size(); ++k) {
+                        QVERIFY(toVec3(curve[k]) ==
+                                toVec3(points[reversed ? curve.size() - 1 - k : k]));
+                    }
+                }
+            }
+            const QJsonObject mesh = surface["mesh"].toObject();
+            const QJsonObject development = surface["development"].toObject();
+            QCOMPARE(development["vertices"].toArray().size(), mesh["vertices"].toArray().size());
+            for (const QJsonValue& face : mesh["faces"].toArray()) {
+                const qsizetype corners = face.toArray().size();
+                QVERIFY(corners == 3 || corners == 4);
+                for (const QJsonValue& index : face.toArray()) {
+                    QVERIFY(index.toInt() >= 0 &&
+                            index.toInt() < mesh["vertices"].toArray().size());
+                }
+            }
+            QCOMPARE(development["period"].isNull(), info.name != "cylinder");
+        }
+    }
+
+    void creaseCountsMatchTheModel() {
+        const QJsonObject root = parse(io::interchangeJson(model::makeExample("annulus"), 2));
+        const QJsonObject surface = root["surfaces"].toArray()[0].toObject();
+        // 6 rings: 5 interior circles of 8 arcs each are creases.
+        QCOMPARE(surface["creases"].toArray().size(), qsizetype(5 * 8));
+        QCOMPARE(surface["planarFaces"].toArray().size(), qsizetype(0));
+        const QJsonObject mixed = parse(io::interchangeJson(model::makeExample("mixed"), 2))
+                                      ["surfaces"].toArray()[0].toObject();
+        QCOMPARE(mixed["planarFaces"].toArray().size(), qsizetype(1));
+        QCOMPARE(mixed["planarFaces"].toArray()[0].toObject()["polygon"].toArray().size(),
+                 qsizetype(4));
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstInterchangeJson);
+#include "tst_interchange_json.moc"

@@ -1,0 +1,153 @@
+#include "io/crc32.h"
+#include "io/file_error.h"
+#include "io/project_file.h"
+#include "model/examples.h"
+#include "model/surface_statistics.h"
+#include "test_registry.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace devsurf;
+
+namespace {
+
+std::string readAll(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        return {};
+    }
+    const QByteArray data = file.readAll();
+    return std::string(data.constData(), static_cast<std::size_t>(data.size()));
+}
+
+void writeAll(const QString& path, const std::string& bytes) {
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(bytes.data(), static_cast<qint64>(bytes.size()));
+}
+
+std::string messageOf(const std::string& bytes) {
+    try {
+        io::decodeProject(bytes);
+    } catch (const io::FileError& error) {
+        return error.what();
+    }
+    return {};
+}
+
+} // namespace
+
+class TstProjectFile : public QObject {
+    Q_OBJECT
+private slots:
+    void crcMatchesTheStandardCheckValue() {
+        const char text[] = "123456789";
+        QCOMPARE(io::crc32(text, 9), 0xCBF43926u);
+        QCOMPARE(io::crc32(text, 0), 0u);
+    }
+
+    void roundTripIsByteIdenticalForEveryExample() {
+        for (const model::ExampleInfo& info : model::builtInExamples()) {
+            for (int size : {0, info.minSize}) {
+                const model::Project project = model::makeExample(info.name, size);
+                const std::string first = io::encodeProject(project);
+                const model::Project loaded = io::decodeProject(first);
+                QVERIFY(loaded == project);
+                QCOMPARE(io::encodeProject(loaded), first);
+            }
+        }
+    }
+
+    void savingKeepsTheMaybePreviousFileAsBackup() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath("design.devsurf");
+        const model::Project sheet = model::makeExample("sheet");
+        const model::Project annulus = model::makeExample("annulus");
+        io::saveProjectFile(sheet, path);
+        QVERIFY(!QFile::exists(path + ".bak"));
+        io::saveProjectFile(annulus, path);
+        QVERIFY(io::loadProjectFile(path) == annulus);
+        QVERIFY(io::loadProjectFile(path + ".bak") == sheet);
+        QCOMPARE(readAll(path), io::encodeProject(annulus));
+    }
+
+    void unreadableFilesGiveOneSentenceNamingTheFile() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("broken.devsurf");
+        const std::string good = io::encodeProject(model::makeExample("mixed"));
+        writeAll(path, good.substr(0, good.size() / 2));
+        try {
+            io::loadProjectFile(path);
+            QFAIL("a truncated file loaded");
+        } catch (const io::FileError& error) {
+            const std::string message = error.what();
+            QVERIFY(message.find("broken.devsurf") != std::string::npos);
+            QVERIFY(message.find("truncated") != std::string::npos);
+            QCOMPARE(message.back(), '.');
+            QVERIFY(message.find('\n') == std::string::npos);
+        }
+        QVERIFY_THROWS_EXCEPTION(io::FileError, io::loadProjectFile(dir.filePath("missing.devsurf")));
+    }
+
+    void eachEnvelopeFaultHasItsOwnMessage() {
+        const std::string good = io::encodeProject(model::makeExample("mixed"));
+        QVERIFY(messageOf("hello world, this is not a project").find("not a DevSurf") !=
+                std::string::npos);
+        std::string newer = good;
+        newer[8] = 7;
+        QVERIFY(messageOf(newer).find("newer version") != std::string::npos);
+        std::string zero = good;
+        zero[8] = 0;
+        QVERIFY(messageOf(zero).find("version 0") != std::string::npos);
+        std::string flipped = good;
+        flipped[flipped.size() - 10] ^= 0x20;
+        QVERIFY(messageOf(flipped).find("checksum") != std::string::npos);
+        QVERIFY(messageOf(good + "x").find("unexpected bytes") != std::string::npos);
+        QVERIFY(messageOf(good.substr(0, 30)).find("truncated") != std::string::npos);
+        QVERIFY(messageOf(good).empty());
+    }
+
+    void newerClassVersionsAreRefused() {
+        // Change the project's class version inside the archive and fix up the envelope, so
+        // only our own version check can refuse it.
+        std::string bytes = io::encodeProject(model::makeExample("sheet"));
+        std::string payload = bytes.substr(io::kProjectHeaderSize);
+        const std::string header = "serialization::archive ";
+        const std::size_t at = payload.find(header);
+        QVERIFY(at != std::string::npos);
+        // "22 serialization::archive 19 0 1 ..." : tracking 0, version 1 of Project.
+        std::size_t pos = payload.find(' ', at + header.size()); // after library version
+        pos = payload.find(' ', pos + 1);                        // after tracking level
+        QCOMPARE(payload[pos + 1], '1');
+        payload[pos + 1] = '9';
+        std::string patched = bytes.substr(0, 20);
+        const std::uint32_t crc = io::crc32(payload.data(), payload.size());
+        for (int i = 0; i < 4; ++i) {
+            patched.push_back(static_cast<char>((crc >> (8 * i)) & 0xFF));
+        }
+        patched += payload;
+        const std::string message = messageOf(patched);
+        QVERIFY2(message.find("newer version of DevSurf (project version 9") != std::string::npos,
+                 message.c_str());
+    }
+
+    void versionOneSampleStaysLoadable() {
+        // Committed once with format version 1; it must load with every later version.
+        const QString path = QStringLiteral(DEVSURF_TEST_DATA_DIR "/sample-v1.devsurf");
+        const model::Project project = io::loadProjectFile(path);
+        QCOMPARE(project.units, std::string("mm"));
+        QCOMPARE(project.surfaces.size(), std::size_t(1));
+        const model::SurfaceStatistics stats = model::surfaceStatistics(project.surfaces[0]);
+        QCOMPARE(stats.faces(), std::size_t(4));
+        QCOMPARE(stats.controlPoints, std::size_t(22));
+        QCOMPARE(stats.splineEdges, std::size_t(5));
+        QVERIFY(project.surfaces[0].validate().empty());
+        QCOMPARE(io::encodeProject(project), readAll(path));
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstProjectFile);
+#include "tst_project_file.moc"

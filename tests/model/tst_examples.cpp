@@ -1,0 +1,107 @@
+#include "model/examples.h"
+#include "model/model_error.h"
+#include "model/strip.h"
+#include "model/surface_statistics.h"
+#include "test_registry.h"
+
+#include <QTest>
+
+using namespace devsurf::model;
+
+namespace {
+
+// |det(a−b, a′, b′)| / (|a−b| |a′| |b′|) with derivatives by central differences of the curve
+// points, sampled densely (not at any solver collocation values).
+double maxDevelopabilityResidual(const Strip& strip, int samplesPerInterval) {
+    const int intervals = static_cast<int>(strip.a.knots().size()); // generous upper bound
+    const int count = samplesPerInterval * intervals;
+    const double h = 1e-6;
+    double worst = 0.0;
+    for (int i = 1; i < count; ++i) {
+        const double u = static_cast<double>(i) / count;
+        const Vec3 a = strip.a.evaluate(u);
+        const Vec3 b = strip.b.evaluate(u);
+        const Vec3 da = (strip.a.evaluate(u + h) - strip.a.evaluate(u - h)) / (2 * h);
+        const Vec3 db = (strip.b.evaluate(u + h) - strip.b.evaluate(u - h)) / (2 * h);
+        const double scale = (a - b).norm() * da.norm() * db.norm();
+        if (scale > 0) {
+            worst = std::max(worst, std::abs(det(a - b, da, db)) / scale);
+        }
+    }
+    return worst;
+}
+
+} // namespace
+
+class TstExamples : public QObject {
+    Q_OBJECT
+private slots:
+    void everyExampleValidatesAtSeveralSizes() {
+        for (const ExampleInfo& info : builtInExamples()) {
+            for (int size : {0, info.minSize, info.minSize + 1, info.defaultSize + 2}) {
+                const Project project = makeExample(info.name, size);
+                QCOMPARE(project.surfaces.size(), std::size_t(1));
+                const auto problems = project.surfaces.front().validate();
+                QVERIFY2(problems.empty(), (info.name + ": " + (problems.empty()
+                                                                     ? std::string()
+                                                                     : problems.front()))
+                                               .c_str());
+            }
+        }
+    }
+
+    void defaultsMatchThePapersModels() {
+        const SurfaceStatistics sheet = surfaceStatistics(makeExample("sheet").surfaces[0]);
+        QCOMPARE(sheet.faces(), std::size_t(9));
+        QCOMPARE(sheet.controlPoints, std::size_t(64)); // Fig. 8: 60 control points, 9 strips
+        const SurfaceStatistics annulus = surfaceStatistics(makeExample("annulus").surfaces[0]);
+        QCOMPARE(annulus.facesByType.at(FaceType::StripSRSR), std::size_t(48));
+        QCOMPARE(annulus.controlPoints, std::size_t(280)); // Fig. 12: 270 control points, 48 strips
+        const SurfaceStatistics mixed = surfaceStatistics(makeExample("mixed").surfaces[0]);
+        for (FaceType type : {FaceType::StripSRSR, FaceType::StripSRS, FaceType::ConeSRR,
+                              FaceType::Planar}) {
+            QCOMPARE(mixed.facesByType.at(type), std::size_t(1));
+        }
+        QCOMPARE(mixed.splineSpaces.size(), std::size_t(3));
+        const CompositeSurface cylinder = makeExample("cylinder").surfaces[0];
+        // Closed: every R-edge borders two faces; the S-edges between rows are creases.
+        std::size_t creases = 0;
+        for (const auto& [id, edge] : cylinder.edges()) {
+            const std::size_t faces = cylinder.facesOfEdge(id).size();
+            if (edge.isSpline()) {
+                creases += faces == 2 ? 1 : 0;
+            } else {
+                QCOMPARE(faces, std::size_t(2));
+            }
+        }
+        QCOMPARE(creases, std::size_t(2 * 6)); // 3 rows of 6 sectors
+    }
+
+    void examplesAreExactlyDevelopable() {
+        for (const ExampleInfo& info : builtInExamples()) {
+            const CompositeSurface surface = makeExample(info.name).surfaces[0];
+            for (const Strip& strip : stripsOf(surface)) {
+                if (strip.isCone()) {
+                    continue; // cones are developable by construction
+                }
+                QVERIFY2(maxDevelopabilityResidual(strip, 50) < 1e-7, info.name.c_str());
+            }
+        }
+    }
+
+    void unknownNamesAndSizesAreRefused() {
+        QVERIFY_THROWS_EXCEPTION(ModelError, makeExample("torus"));
+        QVERIFY_THROWS_EXCEPTION(ModelError, makeExample("sheet", 1000));
+        QVERIFY_THROWS_EXCEPTION(ModelError, makeExample("cylinder", 2));
+    }
+
+    void examplesScaleWithSize() {
+        const SurfaceStatistics small = surfaceStatistics(makeExample("sheet", 2).surfaces[0]);
+        const SurfaceStatistics large = surfaceStatistics(makeExample("sheet", 5).surfaces[0]);
+        QCOMPARE(small.faces(), std::size_t(4));
+        QCOMPARE(large.faces(), std::size_t(25));
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstExamples);
+#include "tst_examples.moc"

@@ -1,0 +1,189 @@
+#include "solver_test_problems.h"
+
+#include "solver/core/normal_equations.h"
+
+#include "test_registry.h"
+
+#include <QTest>
+
+#include <algorithm>
+#include <numeric>
+
+using namespace devsurf::solver;
+using namespace devsurf::solver::testing;
+
+namespace {
+
+// A problem with every term type, repeated columns, several families (one of weight 0) and
+// fixed variables.
+Problem makeMixedProblem(unsigned seed, int points) {
+    std::mt19937 rng(seed);
+    Problem p;
+    const int pointBlock = p.addVariableBlock("points", 3 * points);
+    const int normalBlock = p.addVariableBlock("normals", 3 * points);
+    const int flatBlock = p.addVariableBlock("development", 2 * points);
+    const FamilyId dev = p.addFamily("developability", TermRole::Constraint, 1.0);
+    const FamilyId unit = p.addFamily("unit", TermRole::Constraint, 2.0);
+    const FamilyId iso = p.addFamily("isometry", TermRole::Constraint, 0.5);
+    const FamilyId off = p.addFamily("disabled", TermRole::Constraint, 0.0);
+    const FamilyId fair = p.addFamily("fairness", TermRole::Energy, 0.3);
+    const FamilyId target = p.addFamily("target", TermRole::Energy, 1.0);
+    auto bilinear = std::make_unique<BilinearTerm>(3);
+    auto norms = std::make_unique<UnitNormTerm>(3);
+    auto isometry = std::make_unique<SquaredDistanceTerm>(2, 3);
+    auto linear = std::make_unique<LinearTerm>();
+    auto fairness = std::make_unique<FairnessTerm>(3);
+    auto targets = std::make_unique<TargetTerm>();
+    std::uniform_int_distribution<int> pick(0, points - 1);
+    for (int i = 0; i < points; ++i) {
+        PointCombination normal{{normalBlock + 3 * pick(rng), 1.0},
+                                {normalBlock + 3 * pick(rng), 0.5}};
+        PointCombination combination;
+        for (const PointTerm& t : randomCombination(rng, points, 3, 3)) {
+            combination.push_back({pointBlock + t.offset, t.coefficient});
+        }
+        combination.push_back(combination.front()); // repeated point
+        bilinear->addRow(normal, combination);
+        norms->addVector(normalBlock + 3 * i);
+        const int a = pick(rng);
+        const int b = pick(rng);
+        isometry->addRow({{flatBlock + 2 * a, 1.0}, {flatBlock + 2 * b, -1.0}},
+                         {{pointBlock + 3 * a, 1.0}, {pointBlock + 3 * b, -1.0}}, 0.0);
+        targets->addTarget(pointBlock + 3 * i + 1, 0.1 * i);
+    }
+    linear->addRow({{pointBlock, 1.0}, {pointBlock + 3, -1.0}, {pointBlock, 1.0}}, 0.5);
+    std::vector<int> sequence(static_cast<std::size_t>(points));
+    for (int i = 0; i < points; ++i) {
+        sequence[static_cast<std::size_t>(i)] = pointBlock + 3 * i;
+    }
+    fairness->addSequence(sequence);
+    p.add(dev, std::move(bilinear));
+    p.add(unit, std::move(norms));
+    p.add(iso, std::move(isometry));
+    p.add(off, std::move(linear));
+    p.add(fair, std::move(fairness));
+    p.add(target, std::move(targets));
+    p.setFixed(pointBlock + 4);
+    p.setFixed(normalBlock + 2);
+    return p;
+}
+
+double relativeDifference(const Eigen::SparseMatrix<double>& a,
+                          const Eigen::SparseMatrix<double>& b) {
+    return Eigen::SparseMatrix<double>(a - b).norm() / std::max(b.norm(), 1e-300);
+}
+
+} // namespace
+
+class TstNormalEquations : public QObject {
+    Q_OBJECT
+
+private slots:
+    void patternsAndCounts() {
+        Problem p = makeMixedProblem(5, 12);
+        NormalEquations equations;
+        std::string error;
+        QVERIFY(equations.build(p, &error));
+        QCOMPARE(equations.variableCount(), 8 * 12);
+        QCOMPARE(equations.rowCount(), p.rowCount());
+        QVERIFY(equations.matches(p));
+        // A new term changes the structure.
+        auto extra = std::make_unique<TargetTerm>();
+        extra->addTarget(0, 1.0);
+        p.add(p.findFamily("target"), std::move(extra));
+        QVERIFY(!equations.matches(p));
+    }
+
+    void invalidColumnIsReported() {
+        Problem p;
+        p.addVariableBlock("x", 3);
+        auto term = std::make_unique<TargetTerm>();
+        term->addTarget(3, 0.0);
+        p.add(p.addFamily("t", TermRole::Constraint), std::move(term));
+        NormalEquations equations;
+        std::string error;
+        QVERIFY(!equations.build(p, &error));
+        QVERIFY(!error.empty());
+    }
+
+    void refillMatchesScratchAssembly_data() {
+        QTest::addColumn<int>("layout");
+        QTest::newRow("identity upper") << 0;
+        QTest::newRow("permuted lower") << 1;
+        QTest::newRow("permuted upper") << 2;
+    }
+
+    void refillMatchesScratchAssembly() {
+        QFETCH(int, layout);
+        Problem p = makeMixedProblem(7, 40);
+        NormalEquations equations;
+        QVERIFY(equations.build(p, nullptr));
+        const int n = equations.variableCount();
+        std::mt19937 rng(99);
+        if (layout != 0) {
+            std::vector<int> permutation(static_cast<std::size_t>(n));
+            std::iota(permutation.begin(), permutation.end(), 0);
+            std::shuffle(permutation.begin(), permutation.end(), rng);
+            equations.setLayout(permutation, layout == 1 ? NormalEquations::Triangle::Lower
+                                                         : NormalEquations::Triangle::Upper);
+        }
+        std::vector<double> values(static_cast<std::size_t>(equations.normalNonZeros()));
+        std::vector<double> rhs(static_cast<std::size_t>(n));
+        // Several evaluations and ε values: the refill must not accumulate old values.
+        for (const double eps1 : {0.1, 0.0, 0.0729}) {
+            const std::vector<double> x = randomVector(rng, n, 2.0);
+            QVERIFY(equations.evaluate(p, x.data()));
+            equations.fill(p, eps1, 0.01, values.data(), rhs.data());
+            Eigen::SparseMatrix<double> scratch;
+            Eigen::VectorXd scratchRhs;
+            equations.assembleFromScratch(p, eps1, 0.01, scratch, scratchRhs);
+            const Eigen::SparseMatrix<double> refilled = equations.toOriginalUpper(values.data());
+            const double difference = relativeDifference(refilled, scratch);
+            QVERIFY2(difference <= 1e-14, qPrintable(QString::number(difference)));
+            const Eigen::Map<const Eigen::VectorXd> refilledRhs(rhs.data(), n);
+            QVERIFY((refilledRhs - scratchRhs).norm() <= 1e-14 * scratchRhs.norm());
+            QVERIFY(scratch.norm() > 1.0);
+        }
+    }
+
+    void scratchAssemblyAgreesWithDenseProduct() {
+        // The reference itself against a dense HᵀW²H built entry by entry from the terms.
+        Problem p = makeMixedProblem(3, 8);
+        NormalEquations equations;
+        QVERIFY(equations.build(p, nullptr));
+        const int n = equations.variableCount();
+        std::mt19937 rng(5);
+        const std::vector<double> x = randomVector(rng, n);
+        QVERIFY(equations.evaluate(p, x.data()));
+        const double eps1 = 0.05;
+        const double eps2 = 0.02;
+        Eigen::MatrixXd h = Eigen::MatrixXd::Zero(equations.rowCount(), n);
+        std::vector<double> weights;
+        equations.rowWeights(p, eps1, weights);
+        const auto& start = equations.jacobianRowStart();
+        const auto& columns = equations.jacobianColumns();
+        const auto& jac = equations.jacobianValues();
+        for (int r = 0; r < equations.rowCount(); ++r) {
+            for (int e = start[r]; e < start[r + 1]; ++e) {
+                h(r, columns[e]) += weights[r] * jac[e];
+            }
+        }
+        Eigen::MatrixXd dense = h.transpose() * h;
+        dense.diagonal().array() += eps2 * eps2;
+        for (int v : p.fixedVariables()) {
+            dense(v, v) += 1.0;
+        }
+        Eigen::SparseMatrix<double> scratch;
+        Eigen::VectorXd rhs;
+        equations.assembleFromScratch(p, eps1, eps2, scratch, rhs);
+        const Eigen::MatrixXd upper = Eigen::MatrixXd(scratch);
+        const Eigen::MatrixXd expected = dense.triangularView<Eigen::Upper>();
+        QVERIFY((upper - expected).norm() <= 1e-13 * expected.norm());
+        // Fixed variables have no coupling.
+        const int fixed = p.fixedVariables().front();
+        QCOMPARE(upper(fixed, fixed), 1.0 + eps2 * eps2);
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstNormalEquations);
+#include "tst_normal_equations.moc"

@@ -1,0 +1,179 @@
+#include "solver_test_problems.h"
+
+#include "test_registry.h"
+
+#include <QTest>
+
+using namespace devsurf::solver;
+using namespace devsurf::solver::testing;
+
+namespace {
+
+constexpr int kPoints = 6;
+constexpr double kStep = 1e-6;
+constexpr double kTolerance = 1e-7;
+
+// Checks the analytic Jacobian against central differences at several random points.
+void checkAgainstFiniteDifferences(const Term& term, int variables, unsigned seed) {
+    std::mt19937 rng(seed);
+    QVERIFY(term.rowCount() > 0);
+    for (int trial = 0; trial < 5; ++trial) {
+        const std::vector<double> x = randomVector(rng, variables, 1.5);
+        const SparseRows analytic = analyticJacobian(term, x);
+        const SparseRows numeric = finiteDifferenceJacobian(term, x, kStep);
+        QVERIFY(!numeric.empty());
+        const double error = jacobianError(analytic, numeric);
+        QVERIFY2(error < kTolerance,
+                 qPrintable(QString("%1: |J - J_fd| = %2").arg(term.typeName()).arg(error)));
+    }
+}
+
+} // namespace
+
+class TstTerms : public QObject {
+    Q_OBJECT
+
+private slots:
+    void linearTerm() {
+        std::mt19937 rng(1);
+        LinearTerm term;
+        term.addRow({{0, 2.0}, {5, -1.0}, {0, 0.5}}, 0.25); // repeated column
+        term.addPointRelation(3, randomCombination(rng, kPoints, 3, 3), nullptr);
+        const double rhs[3] = {1.0, 2.0, 3.0};
+        term.addPointRelation(3, {{3, 1.0}, {6, -1.0}}, rhs);
+        QCOMPARE(term.rowCount(), 7);
+        checkAgainstFiniteDifferences(term, 3 * kPoints, 11);
+        // Residual value: 2.5 x0 − x5 − 0.25.
+        std::vector<double> x(3 * kPoints, 0.0);
+        x[0] = 1.0;
+        x[5] = 0.5;
+        std::vector<double> r(7), j(20);
+        term.evaluate(x.data(), r.data(), j.data());
+        QCOMPARE(r[0], 2.5 - 0.5 - 0.25);
+    }
+
+    void bilinearTerm() {
+        std::mt19937 rng(2);
+        for (int dimension : {2, 3}) {
+            BilinearTerm term(dimension);
+            for (int row = 0; row < 5; ++row) {
+                term.addRow(randomCombination(rng, kPoints, dimension, 2),
+                            randomCombination(rng, kPoints, dimension, 4), 0.3 * row);
+            }
+            // The same point on both sides and twice on one side.
+            term.addRow({{0, 1.0}, {dimension, 0.5}}, {{0, 1.0}, {0, -0.25}});
+            checkAgainstFiniteDifferences(term, dimension * kPoints, 12u + dimension);
+        }
+        // Value: ⟨(1,2,3), 2·(1,0,1) − (0,1,0)⟩ − 1 = 2 − 2 + 6 − 1 = 5.
+        BilinearTerm term(3);
+        term.addRow({{0, 1.0}}, {{3, 2.0}, {6, -1.0}}, 1.0);
+        const std::vector<double> x{1, 2, 3, 1, 0, 1, 0, 1, 0};
+        double r = 0.0;
+        std::vector<double> j(9);
+        term.evaluate(x.data(), &r, j.data());
+        QCOMPARE(r, 5.0);
+    }
+
+    void unitNormTerm() {
+        std::mt19937 rng(3);
+        UnitNormTerm term(3);
+        term.addVector(0);
+        term.addVector(9);
+        term.addVector(randomCombination(rng, kPoints, 3, 3));
+        checkAgainstFiniteDifferences(term, 3 * kPoints, 13);
+        const std::vector<double> x{0.6, 0.8, 0.0};
+        UnitNormTerm unit(3);
+        unit.addVector(0);
+        double r = 1.0;
+        double j[3];
+        unit.evaluate(x.data(), &r, j);
+        QVERIFY(std::abs(r) < 1e-15);
+        QCOMPARE(j[0], 1.2);
+    }
+
+    void squaredDistanceTerm() {
+        std::mt19937 rng(4);
+        // (12): a 2D development against 3D points, in one variable vector.
+        const int offset2d = 3 * kPoints;
+        SquaredDistanceTerm isometry(2, 3);
+        for (int row = 0; row < 4; ++row) {
+            PointCombination flat;
+            for (const PointTerm& p : randomCombination(rng, kPoints, 2, 2)) {
+                flat.push_back({offset2d + p.offset, p.coefficient});
+            }
+            isometry.addRow(flat, randomCombination(rng, kPoints, 3, 2), 0.0);
+        }
+        checkAgainstFiniteDifferences(isometry, 3 * kPoints + 2 * kPoints, 14);
+
+        SquaredDistanceTerm distance(3, 3);
+        distance.addRow({{0, 1.0}, {3, -1.0}}, 4.0);
+        distance.addRow(randomCombination(rng, kPoints, 3, 3), 0.5);
+        checkAgainstFiniteDifferences(distance, 3 * kPoints, 15);
+        const std::vector<double> x{0, 0, 0, 1, 2, 2};
+        double r[2];
+        std::vector<double> j(64);
+        SquaredDistanceTerm simple(3, 3);
+        simple.addRow({{0, 1.0}, {3, -1.0}}, 4.0);
+        simple.evaluate(x.data(), r, j.data());
+        QCOMPARE(r[0], 9.0 - 4.0);
+    }
+
+    void fairnessTerm() {
+        FairnessTerm term(3);
+        term.addSequence({0, 3, 6, 9});
+        term.addSequence({0, 6, 12, 15}, true);
+        QCOMPARE(term.rowCount(), (2 + 4) * 3);
+        checkAgainstFiniteDifferences(term, 3 * kPoints, 16);
+        // Collinear, equally spaced points have zero second differences.
+        std::vector<double> x(3 * kPoints);
+        for (int i = 0; i < kPoints; ++i) {
+            for (int k = 0; k < 3; ++k) {
+                x[static_cast<std::size_t>(3 * i + k)] = i * (k + 1.0);
+            }
+        }
+        FairnessTerm open(3);
+        open.addSequence({0, 3, 6, 9, 12});
+        std::vector<double> r(9), j(27);
+        open.evaluate(x.data(), r.data(), j.data());
+        for (double v : r) {
+            QCOMPARE(v, 0.0);
+        }
+    }
+
+    void targetTerm() {
+        TargetTerm term;
+        term.addTarget(4, 1.5);
+        const double target[3] = {1.0, 2.0, 3.0};
+        const int first = term.addPointTarget(9, 3, target);
+        QCOMPARE(first, 1);
+        checkAgainstFiniteDifferences(term, 3 * kPoints, 17);
+        term.setTarget(0, -1.0);
+        std::vector<double> x(3 * kPoints, 0.0);
+        std::vector<double> r(4), j(4);
+        term.evaluate(x.data(), r.data(), j.data());
+        QCOMPARE(r[0], 1.0);
+        QCOMPARE(r[3], -3.0);
+    }
+
+    void finiteDifferenceCheckDetectsWrongJacobian() {
+        // The checker itself must be able to fail: a term with a deliberately wrong derivative.
+        struct WrongTerm : Term {
+            const char* typeName() const override { return "WrongTerm"; }
+            int rowCount() const override { return 1; }
+            void buildPattern(PatternBuilder& b) const override {
+                b.beginRow();
+                b.addColumn(0);
+            }
+            void evaluate(const double* x, double* r, double* j) const override {
+                r[0] = x[0] * x[0];
+                j[0] = x[0]; // should be 2 x0
+            }
+        } wrong;
+        const std::vector<double> x{0.7};
+        QVERIFY(jacobianError(analyticJacobian(wrong, x),
+                              finiteDifferenceJacobian(wrong, x, kStep)) > 0.5);
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstTerms);
+#include "tst_terms.moc"
