@@ -16,7 +16,9 @@ constexpr double kSnapTolerance = 1e-12;
 // Closed knot vectors from outside (files, other programs) are periodic only up to rounding.
 constexpr double kPeriodicTolerance = 1e-10;
 
-[[noreturn]] void fail(const std::string& message) { throw std::invalid_argument(message); }
+[[noreturn]] void fail(const std::string& message) {
+    throw std::invalid_argument(message);
+}
 
 std::string num(double value) {
     char buffer[32];
@@ -29,9 +31,13 @@ int wrapIndex(int i, int n) {
     return r < 0 ? r + n : r;
 }
 
-int floorDiv(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+int floorDiv(int a, int b) {
+    return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
 
-std::size_t idx(int i) { return static_cast<std::size_t>(i); }
+std::size_t idx(int i) {
+    return static_cast<std::size_t>(i);
+}
 
 void checkKnots(int m, const std::vector<double>& t) {
     for (double x : t) {
@@ -294,7 +300,9 @@ int BSplineCurve::locate(double& u) const {
     return j;
 }
 
-Vec3 BSplineCurve::evaluate(double u) const { return derivative(u, 0); }
+Vec3 BSplineCurve::evaluate(double u) const {
+    return derivative(u, 0);
+}
 
 Vec3 BSplineCurve::derivative(double u, int order) const {
     if (order < 0) {
@@ -438,8 +446,7 @@ void BSplineCurve::checkInsertion(double u, int existing, int times) const {
     if (existing + times > m_degree) {
         fail("Cannot insert the knot " + num(u) + " " + std::to_string(times) +
              " time(s): it already has multiplicity " + std::to_string(existing) +
-             " and the multiplicity may not exceed the degree " + std::to_string(m_degree) +
-             ".");
+             " and the multiplicity may not exceed the degree " + std::to_string(m_degree) + ".");
     }
 }
 
@@ -548,14 +555,13 @@ BSplineCurve BSplineCurve::clamped() const {
         c.insertKnot(begin, m - sb);
     }
     // With multiplicity >= m at the start, the curve starts at control point g1 - m.
-    const int g1 =
-        static_cast<int>(std::upper_bound(c.m_knots.begin(), c.m_knots.end(), begin) -
-                         c.m_knots.begin()) -
-        1;
+    const int g1 = static_cast<int>(std::upper_bound(c.m_knots.begin(), c.m_knots.end(), begin) -
+                                    c.m_knots.begin()) -
+                   1;
     const int drop = g1 - m;
     std::vector<double> knots(c.m_knots.begin() + drop, c.m_knots.end());
     std::vector<Vec3> points(c.m_controlPoints.begin() + drop, c.m_controlPoints.end());
-    
+    knots.front() = begin;
     c = BSplineCurve(m, std::move(knots), std::move(points), false);
 
     const double end = c.domainEnd();
@@ -583,8 +589,8 @@ BSplineCurve BSplineCurve::openedAt(double u) const {
     const double w = reduceClosed(u, true);
     BSplineCurve c = *this;
     {
-        const auto range = std::equal_range(c.m_knots.begin() + m,
-                                            c.m_knots.begin() + (m + controlCount()), w);
+        const auto range =
+            std::equal_range(c.m_knots.begin() + m, c.m_knots.begin() + (m + controlCount()), w);
         const int s = static_cast<int>(range.second - range.first);
         if (s < m) {
             c.insertKnot(w, m - s);
@@ -657,7 +663,9 @@ BSplineCurve BSplineCurve::reversed() const {
     return result;
 }
 
-std::vector<double> BSplineCurve::exportKnots() const { return m_knots; }
+std::vector<double> BSplineCurve::exportKnots() const {
+    return m_knots;
+}
 
 std::vector<Vec3> BSplineCurve::exportControlPoints() const {
     if (!m_closed) {

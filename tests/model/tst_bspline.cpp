@@ -96,8 +96,8 @@ std::vector<Case> sweep(double geometryScale = 1.0, double parameterScale = 1.0,
                         }
                         c.curve = BSplineCurve(m, knots, points, closed);
                     }
-                    c.name = QByteArray("m=") + QByteArray::number(m) + " k=" +
-                             QByteArray::number(k) + " n=" + QByteArray::number(n) +
+                    c.name = QByteArray("m=") + QByteArray::number(m) +
+                             " k=" + QByteArray::number(k) + " n=" + QByteArray::number(n) +
                              (closed ? " closed" : " open");
                     cases.push_back(std::move(c));
                 }
@@ -176,8 +176,7 @@ double basis(const std::vector<double>& t, int i, int p, double u) {
 }
 
 // Σ P_{i mod N} N_i(u) over knots.size() - m - 1 basis functions.
-Vec3 coxDeBoor(int m, const std::vector<double>& knots, const std::vector<Vec3>& points,
-               double u) {
+Vec3 coxDeBoor(int m, const std::vector<double>& knots, const std::vector<Vec3>& points, double u) {
     Vec3 sum;
     const int count = static_cast<int>(knots.size()) - m - 1;
     const int n = static_cast<int>(points.size());
@@ -234,8 +233,8 @@ void checkRows(const Case& c, std::mt19937& rng) {
             for (double x : *r) {
                 sum += x;
             }
-            QVERIFY2(std::abs(sum - 1.0) < 1e-12, describe(c, u) + " sum " +
-                                                       QByteArray::number(sum, 'g', 17));
+            QVERIFY2(std::abs(sum - 1.0) < 1e-12,
+                     describe(c, u) + " sum " + QByteArray::number(sum, 'g', 17));
         }
         Vec3 viaRows;
         for (int i = 0; i <= m; ++i) {
@@ -301,8 +300,8 @@ void checkDerivatives(const Case& c) {
             const double sumWeights = points.secondDerivativeWeights[0] +
                                       points.secondDerivativeWeights[1] +
                                       points.secondDerivativeWeights[2];
-            QVERIFY(std::abs(sumWeights) <= 1e-12 * std::abs(points.secondDerivativeWeights[1]) +
-                                                1e-300);
+            QVERIFY(std::abs(sumWeights) <=
+                    1e-12 * std::abs(points.secondDerivativeWeights[1]) + 1e-300);
 
             // Higher orders: finite differences of the next lower order; zero beyond m.
             for (int order = 3; order <= m; ++order) {
@@ -395,19 +394,18 @@ void checkInsertion(const Case& c, std::mt19937& rng) {
         candidates.push_back(begin - 0.45 * (end - begin));
     }
     for (double u : candidates) {
-        const double reduced = c.closed && (u < begin || u >= end)
-                                   ? begin + std::fmod(std::fmod(u - begin, end - begin) +
-                                                           (end - begin),
-                                                       end - begin)
-                                   : (c.closed && u == end ? begin : u);
+        const double reduced =
+            c.closed && (u < begin || u >= end)
+                ? begin + std::fmod(std::fmod(u - begin, end - begin) + (end - begin), end - begin)
+                : (c.closed && u == end ? begin : u);
         int existing = 0;
         if (c.closed) {
             const auto& t = curve.knots();
             existing = static_cast<int>(
                 std::count(t.begin() + m, t.begin() + (m + curve.controlPoints().size()), reduced));
         } else {
-            existing = static_cast<int>(
-                std::count(curve.knots().begin(), curve.knots().end(), reduced));
+            existing =
+                static_cast<int>(std::count(curve.knots().begin(), curve.knots().end(), reduced));
         }
         if (existing >= m) {
             BSplineCurve copy = curve;
@@ -417,8 +415,8 @@ void checkInsertion(const Case& c, std::mt19937& rng) {
         for (int times = 1; times <= m - existing; ++times) {
             BSplineCurve refined = curve;
             refined.insertKnot(u, times);
-            const QByteArray what = "insert " + QByteArray::number(u, 'g', 17) + " x" +
-                                    QByteArray::number(times);
+            const QByteArray what =
+                "insert " + QByteArray::number(u, 'g', 17) + " x" + QByteArray::number(times);
             QCOMPARE(refined.controlPoints().size(), curve.controlPoints().size() + times);
             QCOMPARE(refined.isClosed(), c.closed);
             QCOMPARE(refined.domainBegin(), begin);
@@ -499,8 +497,8 @@ void checkOpenedAt(const Case& c, std::mt19937& rng) {
     const double end = curve.domainEnd();
     const double period = end - begin;
     std::uniform_real_distribution<double> in(begin, end);
-    std::vector<double> candidates{begin, in(rng), in(rng), end, begin + 1.37 * period,
-                                   begin - 0.42 * period};
+    std::vector<double> candidates{
+        begin, in(rng), in(rng), end, begin + 1.37 * period, begin - 0.42 * period};
     for (double t : distinctDomainKnots(curve)) {
         candidates.push_back(t);
     }
@@ -509,8 +507,7 @@ void checkOpenedAt(const Case& c, std::mt19937& rng) {
         const QByteArray what = describe(c, u);
         QVERIFY2(!open.isClosed(), what);
         QCOMPARE(open.domainBegin(), u);
-        QVERIFY2(std::abs(open.domainEnd() - (u + period)) <= 1e-14 * (std::abs(u) + period),
-                 what);
+        QVERIFY2(std::abs(open.domainEnd() - (u + period)) <= 1e-14 * (std::abs(u) + period), what);
         const auto& t = open.knots();
         QVERIFY2(std::count(t.begin(), t.end(), open.domainBegin()) == m + 1, what);
         QVERIFY2(std::count(t.begin(), t.end(), open.domainEnd()) == m + 1, what);
@@ -668,8 +665,7 @@ void TstBSpline::matchesCoxDeBoor() {
         for (int s = 0; s < 30; ++s) {
             const double u = in(rng);
             const Vec3 expected = coxDeBoor(m, knots, c.curve.controlPoints(), u);
-            QVERIFY2((c.curve.evaluate(u) - expected).norm() <= 1e-12 * c.diameter,
-                     describe(c, u));
+            QVERIFY2((c.curve.evaluate(u) - expected).norm() <= 1e-12 * c.diameter, describe(c, u));
         }
     }
 }
@@ -691,13 +687,18 @@ void TstBSpline::nonUniformCurves() {
             }
             const auto points = randomPoints(rng, count, 2.0);
             const BSplineCurve open(m, knots, points, false);
-            Case oc{open, "non-uniform open m=" + QByteArray::number(m), m, 0, count - m,
-                    false, diameterOf(points)};
+            Case oc{open,
+                    "non-uniform open m=" + QByteArray::number(m),
+                    m,
+                    0,
+                    count - m,
+                    false,
+                    diameterOf(points)};
             QCOMPARE(open.domainBegin(), knots[m]);
             QCOMPARE(open.domainEnd(), knots[count]);
             for (int s = 0; s < 20; ++s) {
-                const double u = open.domainBegin() + unit(rng) * (open.domainEnd() -
-                                                                   open.domainBegin());
+                const double u =
+                    open.domainBegin() + unit(rng) * (open.domainEnd() - open.domainBegin());
                 QVERIFY2((open.evaluate(u) - coxDeBoor(m, knots, points, u)).norm() <=
                              1e-12 * oc.diameter,
                          describe(oc, u));
@@ -730,7 +731,7 @@ void TstBSpline::nonUniformCurves() {
             const auto periodic = periodicKnots(m, base, 2.5);
             const auto ring = randomPoints(rng, n, 2.0);
             const BSplineCurve closed(m, periodic, ring, true);
-            Case cc{closed, "non-uniform closed m=" + QByteArray::number(m), m, 0, n, true,
+            Case cc{closed,          "non-uniform closed m=" + QByteArray::number(m), m, 0, n, true,
                     diameterOf(ring)};
             QCOMPARE(closed.domainBegin(), -0.7);
             QVERIFY(std::abs(closed.domainEnd() - 1.8) < 1e-15);
@@ -762,13 +763,14 @@ void TstBSpline::nonUniformCurves() {
                 QCOMPARE(rotated[m - 1], rotated[m]);
                 const BSplineCurve rotatedCurve(m, rotated, rotatedRing, true);
                 QCOMPARE(rotatedCurve.domainBegin(), reference.domainBegin());
-                Case rc{reference, "rotated closed m=" + QByteArray::number(m), m, 0, n, true,
+                Case rc{reference,       "rotated closed m=" + QByteArray::number(m), m, 0, n, true,
                         diameterOf(ring)};
                 for (int s = 0; s < 20; ++s) {
                     const double u = -0.7 + 2.5 * unit(rng);
-                    QVERIFY2((rotatedCurve.evaluate(u) - coxDeBoor(m, rotated, rotatedRing, u))
-                                     .norm() <= 1e-12 * rc.diameter,
-                             describe(rc, u));
+                    QVERIFY2(
+                        (rotatedCurve.evaluate(u) - coxDeBoor(m, rotated, rotatedRing, u)).norm() <=
+                            1e-12 * rc.diameter,
+                        describe(rc, u));
                 }
                 RUN_CHECK(checkSameGeometry(rc, rotatedCurve, "rotated input"));
                 RUN_CHECK(checkPeriodicRepresentation(rotatedCurve, "rotated input"));
@@ -931,6 +933,18 @@ void TstBSpline::parameterHandling() {
             QVERIFY2(t[rows.span] <= knot && knot < t[rows.span + 1], describe(c, knot));
         }
     }
+    // Domain end inside a repeated knot (t_{N-1} == t_N): the last non-empty span is used.
+    const std::vector<Vec3> quadPoints{Vec3(0, 0, 0), Vec3(1, 2, 0), Vec3(3, 1, 0), Vec3(4, 4, 1)};
+    const std::vector<double> quadKnots{0, 1, 2, 3, 3, 4, 5};
+    const BSplineCurve quad(2, quadKnots, quadPoints, false);
+    QCOMPARE(quad.domainEnd(), 3.0);
+    QCOMPARE(quad.deBoorRows(3.0).span, 2);
+    const Vec3 atEnd = quad.evaluate(3.0);
+    const Vec3 nearEnd = quad.evaluate(3.0 - 1e-9);
+    QVERIFY(atEnd.isFinite() && (atEnd - nearEnd).norm() < 1e-8);
+    QVERIFY((atEnd - coxDeBoor(2, quadKnots, quadPoints, 3.0 - 1e-15)).norm() < 1e-12);
+    QVERIFY(quad.derivative(3.0, 2).isFinite());
+
     const BSplineCurve empty;
     QVERIFY(empty.isEmpty());
     QVERIFY_THROWS_EXCEPTION(std::logic_error, empty.evaluate(0.0));
@@ -985,8 +999,7 @@ void TstBSpline::invalidInput() {
     notPeriodic = periodic;
     notPeriodic.back() += 1e-3;
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, BSplineCurve(3, notPeriodic, four, true));
-    QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
-                             BSplineCurve(1, {0, 0, 0}, {four[0]}, true));
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, BSplineCurve(1, {0, 0, 0}, {four[0]}, true));
     // Operations with bad arguments.
     BSplineCurve curve = BSplineCurve::uniform({3, 2, 1}, four);
     QVERIFY_THROWS_EXCEPTION(std::invalid_argument, curve.insertKnot(1.5));
