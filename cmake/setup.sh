@@ -19,7 +19,7 @@ packages=(
   cmake g++ ninja-build ccache pkg-config
   qt6-base-dev libqt6opengl6-dev qt6-svg-dev qt6-tools-dev qt6-l10n-tools
   libvtk9-dev libeigen3-dev libsuitesparse-dev libopenmesh-dev libboost-serialization-dev
-  libopenblas0-serial
+  libopenblas0-serial libceres-dev
   xvfb xauth
 )
 if [ "$mode" = test ]; then

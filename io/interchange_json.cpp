@@ -225,9 +225,8 @@ void writeSurface(JsonWriter& w, const model::CompositeSurface& surface, int sam
     w.array(mesh.vertices, [&w](const Vec3& p) { w.point(p); });
     w.text += ",\n        ";
     w.key("faces");
-    w.array(mesh.faces, [&w](const std::vector<int>& face) {
-        w.array(face, [&w](int i) { w.integer(i); });
-    });
+    w.array(mesh.faces,
+            [&w](const std::vector<int>& face) { w.array(face, [&w](int i) { w.integer(i); }); });
     w.text += "},\n      ";
     w.key("development");
     w.text += "{\n        ";

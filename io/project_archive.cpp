@@ -54,8 +54,7 @@ std::uint32_t checkedCount(std::uint32_t count, std::uint32_t limit, const char*
             remaining = readContext.size - static_cast<std::size_t>(position);
         }
     }
-    if (count > limit ||
-        static_cast<std::uint64_t>(count) * tokensPerElement * 2 > remaining + 2) {
+    if (count > limit || static_cast<std::uint64_t>(count) * tokensPerElement * 2 > remaining + 2) {
         throw FileError(std::string("it announces ") + std::to_string(count) + " " + what +
                         ", more than the file can hold");
     }
@@ -161,8 +160,7 @@ template <class Archive> void load(Archive& ar, EdgeRecord& e, unsigned version)
     }
 }
 
-template <class Archive>
-void save(Archive& ar, const CompositeSurface& s, unsigned /*version*/) {
+template <class Archive> void save(Archive& ar, const CompositeSurface& s, unsigned /*version*/) {
     devsurf::io::saveString(ar, s.name());
     ar << s.nextVertexId() << s.nextEdgeId() << s.nextFaceId();
     const auto vertices = static_cast<std::uint32_t>(s.vertices().size());
@@ -289,15 +287,13 @@ model::Project readProjectArchive(const std::string& payload) {
         throw FileError("its contents are damaged (unexpected data after the project)");
     }
     const std::vector<std::string> allowedUnits{"mm", "cm", "m", "in", "ft", "pt", "unit"};
-    if (std::find(allowedUnits.begin(), allowedUnits.end(), project.units) ==
-        allowedUnits.end()) {
+    if (std::find(allowedUnits.begin(), allowedUnits.end(), project.units) == allowedUnits.end()) {
         throw FileError("it uses an unknown length unit");
     }
     for (const model::CompositeSurface& surface : project.surfaces) {
         const auto problems = surface.validate();
         if (!problems.empty()) {
-            throw FileError("its surface '" + surface.name() + "' is invalid: " +
-                                problems.front(),
+            throw FileError("its surface '" + surface.name() + "' is invalid: " + problems.front(),
                             problems);
         }
     }

@@ -37,7 +37,9 @@ std::string withoutFinalPeriod(std::string text) {
     return text;
 }
 
-std::string quoted(const QString& path) { return "'" + path.toStdString() + "'"; }
+std::string quoted(const QString& path) {
+    return "'" + path.toStdString() + "'";
+}
 
 } // namespace
 
@@ -52,7 +54,8 @@ std::string encodeProject(const model::Project& project) {
 }
 
 model::Project decodeProject(const std::string& bytes) {
-    if (bytes.size() < kProjectHeaderSize || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) {
+    if (bytes.size() < kProjectHeaderSize ||
+        std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) {
         throw FileError("it is not a DevSurf project file");
     }
     const auto version = static_cast<std::uint32_t>(getLittleEndian(bytes, 8, 4));
@@ -100,8 +103,8 @@ void saveProjectFile(const model::Project& project, const QString& path) {
         QFile::remove(backup);
         if (!QFile::copy(path, backup)) {
             file.cancelWriting();
-            throw FileError("Cannot save " + quoted(path) + ": the backup copy " +
-                            quoted(backup) + " could not be written.");
+            throw FileError("Cannot save " + quoted(path) + ": the backup copy " + quoted(backup) +
+                            " could not be written.");
         }
     }
     if (!file.commit()) {

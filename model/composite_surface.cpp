@@ -89,7 +89,9 @@ std::pair<VertexId, VertexId> edgeKey(VertexId a, VertexId b) {
     return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
 }
 
-std::string str(std::uint32_t id) { return std::to_string(id); }
+std::string str(std::uint32_t id) {
+    return std::to_string(id);
+}
 
 } // namespace
 
@@ -427,7 +429,8 @@ std::vector<std::string> CompositeSurface::validate() const {
     }
     for (const auto& [id, p] : m_vertices) {
         if (!p.isFinite()) {
-            problems.push_back("vertex " + str(id) + " has a position that is not a finite number.");
+            problems.push_back("vertex " + str(id) +
+                               " has a position that is not a finite number.");
         }
         if (usedVertices.count(id) == 0) {
             problems.push_back("vertex " + str(id) + " belongs to no face.");
@@ -479,7 +482,8 @@ std::vector<std::string> CompositeSurface::validate() const {
         }
         const auto faces = facesOfEdge(id);
         if (record.condition != CreaseCondition::None && faces.size() != 2) {
-            problems.push_back(name + " carries a crease condition but is not shared by two faces.");
+            problems.push_back(name +
+                               " carries a crease condition but is not shared by two faces.");
         }
     }
     for (const auto& [faceId, loop] : m_faces) {
@@ -523,9 +527,9 @@ bool CompositeSurface::operator==(const CompositeSurface& other) const {
         return a.from == b.from && a.to == b.to && a.label == b.label && a.space == b.space &&
                a.controlPoints == b.controlPoints && a.condition == b.condition;
     };
-    return m_name == other.m_name && m_vertices == other.m_vertices &&
-           m_faces == other.m_faces && m_nextVertexId == other.m_nextVertexId &&
-           m_nextEdgeId == other.m_nextEdgeId && m_nextFaceId == other.m_nextFaceId &&
+    return m_name == other.m_name && m_vertices == other.m_vertices && m_faces == other.m_faces &&
+           m_nextVertexId == other.m_nextVertexId && m_nextEdgeId == other.m_nextEdgeId &&
+           m_nextFaceId == other.m_nextFaceId &&
            std::equal(m_edges.begin(), m_edges.end(), other.m_edges.begin(), other.m_edges.end(),
                       [&](const auto& a, const auto& b) {
                           return a.first == b.first && sameEdges(a.second, b.second);

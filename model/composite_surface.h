@@ -102,9 +102,9 @@ public:
     const std::vector<VertexId>& faceLoop(FaceId id) const;
 
     // --- connectivity ----------------------------------------------------------------------
-    EdgeId edgeBetween(VertexId a, VertexId b) const; // kInvalidId if none
+    EdgeId edgeBetween(VertexId a, VertexId b) const;   // kInvalidId if none
     std::vector<FaceId> facesOfEdge(EdgeId edge) const; // one or two faces
-    std::vector<EdgeId> faceEdges(FaceId face) const;    // along the loop, side i = loop[i]→loop[i+1]
+    std::vector<EdgeId> faceEdges(FaceId face) const; // along the loop, side i = loop[i]→loop[i+1]
     // The control points of the edge between a and b as they run from a to b.
     std::vector<Vec3> controlPointsFrom(VertexId a, VertexId b) const;
 

@@ -17,7 +17,9 @@ struct Triangle {
     bool placed = false;
 };
 
-double cross2(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
+double cross2(const Vec2& a, const Vec2& b) {
+    return a.x * b.y - a.y * b.x;
+}
 
 // Places c on the left of the directed segment pa→pb with |c−pa| = da and |c−pb| = db.
 Vec2 placeApex(const Vec2& pa, const Vec2& pb, double da, double db) {
@@ -119,8 +121,8 @@ Development unfoldSampledMesh(const SampledMesh& mesh) {
         Triangle& first = triangles[seed];
         first.corner[0] = Vec2(0, 0);
         first.corner[1] = Vec2(length(first.v[0], first.v[1]), 0);
-        first.corner[2] = placeApex(first.corner[0], first.corner[1], length(first.v[0], first.v[2]),
-                                    length(first.v[1], first.v[2]));
+        first.corner[2] = placeApex(first.corner[0], first.corner[1],
+                                    length(first.v[0], first.v[2]), length(first.v[1], first.v[2]));
         first.placed = true;
         std::deque<int> queue{seed};
         while (!queue.empty()) {
@@ -226,7 +228,8 @@ double edgeLengthError(const SampledMesh& mesh, const Development& development) 
             const int b = face[(i + 1) % face.size()];
             const double l3 = distance(mesh.vertices[a], mesh.vertices[b]);
             const double l2 =
-                reduce(development.vertices[a] - development.vertices[b], development.period).norm();
+                reduce(development.vertices[a] - development.vertices[b], development.period)
+                    .norm();
             if (l3 > 0.0) {
                 worst = std::max(worst, std::abs(l3 - l2) / l3);
             }

@@ -33,7 +33,9 @@ std::vector<Vec3> controlPointsAlong(const SplineSpace& space, const Vec3& start
     return points;
 }
 
-Vec3 lerp(const Vec3& a, const Vec3& b, double t) { return a * (1.0 - t) + b * t; }
+Vec3 lerp(const Vec3& a, const Vec3& b, double t) {
+    return a * (1.0 - t) + b * t;
+}
 
 // A flat rectangle cut into size × size strips: rows bounded by straight S-edges (creases),
 // split by rulings into size faces each (Fig. 8).
@@ -75,7 +77,9 @@ CompositeSurface makeAnnulus(int rings) {
     CompositeSurface s;
     s.setName("annulus");
     auto angle = [sectors](int i) { return 2.0 * kPi * i / sectors; };
-    auto onCircle = [](double r, double phi) { return Vec3(r * std::cos(phi), r * std::sin(phi), 0); };
+    auto onCircle = [](double r, double phi) {
+        return Vec3(r * std::cos(phi), r * std::sin(phi), 0);
+    };
     std::vector<std::vector<VertexId>> grid(rings + 1, std::vector<VertexId>(sectors));
     for (int j = 0; j <= rings; ++j) {
         for (int i = 0; i < sectors; ++i) {
@@ -96,10 +100,9 @@ CompositeSurface makeAnnulus(int rings) {
             const double phi0 = angle(i);
             const double phi1 = angle(i + 1);
             s.setSpline(grid[j][i], grid[j][next], space,
-                        controlPointsAlong(space, s.position(grid[j][i]),
-                                           s.position(grid[j][next]), [&](double t) {
-                                               return onCircle(r, phi0 + t * (phi1 - phi0));
-                                           }));
+                        controlPointsAlong(
+                            space, s.position(grid[j][i]), s.position(grid[j][next]),
+                            [&](double t) { return onCircle(r, phi0 + t * (phi1 - phi0)); }));
         }
     }
     return s;
@@ -116,7 +119,9 @@ CompositeSurface makeCylinder(int sectors) {
     CompositeSurface s;
     s.setName("cylinder");
     auto angle = [sectors](int i) { return 2.0 * kPi * i / sectors; };
-    auto xy = [radius](double phi) { return Vec3(radius * std::cos(phi), radius * std::sin(phi), 0); };
+    auto xy = [radius](double phi) {
+        return Vec3(radius * std::cos(phi), radius * std::sin(phi), 0);
+    };
     std::vector<std::vector<VertexId>> grid(rows + 1, std::vector<VertexId>(sectors));
     for (int j = 0; j <= rows; ++j) {
         for (int i = 0; i < sectors; ++i) {
@@ -136,11 +141,10 @@ CompositeSurface makeCylinder(int sectors) {
             const double phi0 = angle(i);
             const double phi1 = angle(i + 1);
             // Same x, y at every height: the rows are translates of each other.
-            s.setSpline(grid[j][i], grid[j][next], space,
-                        controlPointsAlong(space, s.position(grid[j][i]),
-                                           s.position(grid[j][next]), [&](double t) {
-                                               return xy(phi0 + t * (phi1 - phi0)) + lift;
-                                           }));
+            s.setSpline(
+                grid[j][i], grid[j][next], space,
+                controlPointsAlong(space, s.position(grid[j][i]), s.position(grid[j][next]),
+                                   [&](double t) { return xy(phi0 + t * (phi1 - phi0)) + lift; }));
         }
     }
     return s;
@@ -209,8 +213,8 @@ const std::vector<ExampleInfo>& builtInExamples() {
         {"sheet", "a flat rectangle of size × size strips (Fig. 8)", 3, 1, 60},
         {"annulus", "a flat annulus of size rings cut by radial rulings (Fig. 12)", 6, 1, 60},
         {"cylinder", "a closed cylinder of strips, size sectors around (Fig. 14)", 6, 3, 120},
-        {"mixed", "strips, a pointed strip, a cone and a planar face; size intervals per curve",
-         2, 1, 50},
+        {"mixed", "strips, a pointed strip, a cone and a planar face; size intervals per curve", 2,
+         1, 50},
     };
     return examples;
 }
@@ -225,8 +229,8 @@ Project makeExample(const std::string& name, int size) {
         }
         if (size < info.minSize || size > info.maxSize) {
             throw ModelError("the size of the example '" + name + "' must be between " +
-                             std::to_string(info.minSize) + " and " +
-                             std::to_string(info.maxSize) + ".");
+                             std::to_string(info.minSize) + " and " + std::to_string(info.maxSize) +
+                             ".");
         }
         Project project;
         if (name == "sheet") {

@@ -16,12 +16,12 @@ struct SampledMesh {
         std::vector<int> vertices; // in the edge's stored orientation
     };
 
-    std::vector<Vec3> vertices;             // coarse vertices first (in id order), then samples
-    std::vector<std::vector<int>> faces;    // quads or triangles, oriented like the coarse faces
-    std::vector<FaceId> faceOrigin;         // the coarse face each sampled face belongs to
-    std::vector<Polyline> splineEdges;      // every S-edge, sampled
+    std::vector<Vec3> vertices;               // coarse vertices first (in id order), then samples
+    std::vector<std::vector<int>> faces;      // quads or triangles, oriented like the coarse faces
+    std::vector<FaceId> faceOrigin;           // the coarse face each sampled face belongs to
+    std::vector<Polyline> splineEdges;        // every S-edge, sampled
     std::vector<std::pair<int, int>> rulings; // the sampled rulings u = u_i of every strip
-    std::vector<VertexId> coarseVertexIds;  // coarse vertex of the first coarseVertexIds.size()
+    std::vector<VertexId> coarseVertexIds;    // coarse vertex of the first coarseVertexIds.size()
 };
 
 // Samples every S-edge at samplesPerInterval points per spline interval. The surface must be

@@ -12,7 +12,7 @@ struct SurfaceStatistics {
     std::size_t splineEdges = 0;
     std::size_t rulingEdges = 0;
     std::size_t controlPoints = 0;
-    std::map<FaceType, std::size_t> facesByType;   // every type present, invalid included
+    std::map<FaceType, std::size_t> facesByType;     // every type present, invalid included
     std::map<SplineSpace, std::size_t> splineSpaces; // S-edges per spline space
     std::size_t faces() const;
 };

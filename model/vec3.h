@@ -48,13 +48,21 @@ struct Vec3 {
     bool isFinite() const { return std::isfinite(x) && std::isfinite(y) && std::isfinite(z); }
 };
 
-constexpr Vec3 operator*(double s, const Vec3& v) { return v * s; }
-constexpr double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr Vec3 operator*(double s, const Vec3& v) {
+    return v * s;
+}
+constexpr double dot(const Vec3& a, const Vec3& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-constexpr double det(const Vec3& a, const Vec3& b, const Vec3& c) { return dot(a, cross(b, c)); }
-inline double distance(const Vec3& a, const Vec3& b) { return (a - b).norm(); }
+constexpr double det(const Vec3& a, const Vec3& b, const Vec3& c) {
+    return dot(a, cross(b, c));
+}
+inline double distance(const Vec3& a, const Vec3& b) {
+    return (a - b).norm();
+}
 
 // A point of the plane (developments).
 struct Vec2 {

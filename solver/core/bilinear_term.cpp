@@ -30,45 +30,57 @@ void BilinearTerm::buildPattern(PatternBuilder& builder) const {
     }
 }
 
-void BilinearTerm::evaluate(const double* x, double* residuals, double* jacobian) const {
+int BilinearTerm::evaluateOne(std::size_t r, const double* x, double* residual,
+                              double* jacobian) const {
     const int d = m_dimension;
-    for (std::size_t r = 0; r < m_target.size(); ++r) {
-        std::array<double, kMaxDimension> u{};
-        std::array<double, kMaxDimension> v{};
-        const int begin = m_leftStart[r];
-        const int middle = m_rightStart[r];
-        const int end = m_leftStart[r + 1];
-        for (int e = begin; e < middle; ++e) {
-            const PointTerm& p = m_points[static_cast<std::size_t>(e)];
-            for (int k = 0; k < d; ++k) {
-                u[k] += p.coefficient * x[p.offset + k];
-            }
-        }
-        for (int e = middle; e < end; ++e) {
-            const PointTerm& p = m_points[static_cast<std::size_t>(e)];
-            for (int k = 0; k < d; ++k) {
-                v[k] += p.coefficient * x[p.offset + k];
-            }
-        }
-        double value = -m_target[r];
+    std::array<double, kMaxDimension> u{};
+    std::array<double, kMaxDimension> v{};
+    const int begin = m_leftStart[r];
+    const int middle = m_rightStart[r];
+    const int end = m_leftStart[r + 1];
+    for (int e = begin; e < middle; ++e) {
+        const PointTerm& p = m_points[static_cast<std::size_t>(e)];
         for (int k = 0; k < d; ++k) {
-            value += u[k] * v[k];
-        }
-        residuals[r] = value;
-        // ∂/∂nₖ = dₖ v, ∂/∂pᵢ = cᵢ u.
-        for (int e = begin; e < middle; ++e) {
-            const double c = m_points[static_cast<std::size_t>(e)].coefficient;
-            for (int k = 0; k < d; ++k) {
-                *jacobian++ = c * v[k];
-            }
-        }
-        for (int e = middle; e < end; ++e) {
-            const double c = m_points[static_cast<std::size_t>(e)].coefficient;
-            for (int k = 0; k < d; ++k) {
-                *jacobian++ = c * u[k];
-            }
+            u[k] += p.coefficient * x[p.offset + k];
         }
     }
+    for (int e = middle; e < end; ++e) {
+        const PointTerm& p = m_points[static_cast<std::size_t>(e)];
+        for (int k = 0; k < d; ++k) {
+            v[k] += p.coefficient * x[p.offset + k];
+        }
+    }
+    double value = -m_target[r];
+    for (int k = 0; k < d; ++k) {
+        value += u[k] * v[k];
+    }
+    *residual = value;
+    // ∂/∂nₖ = dₖ v, ∂/∂pᵢ = cᵢ u.
+    double* out = jacobian;
+    for (int e = begin; e < middle; ++e) {
+        const double c = m_points[static_cast<std::size_t>(e)].coefficient;
+        for (int k = 0; k < d; ++k) {
+            *out++ = c * v[k];
+        }
+    }
+    for (int e = middle; e < end; ++e) {
+        const double c = m_points[static_cast<std::size_t>(e)].coefficient;
+        for (int k = 0; k < d; ++k) {
+            *out++ = c * u[k];
+        }
+    }
+    return static_cast<int>(out - jacobian);
+}
+
+void BilinearTerm::evaluate(const double* x, double* residuals, double* jacobian) const {
+    for (std::size_t r = 0; r < m_target.size(); ++r) {
+        jacobian += evaluateOne(r, x, residuals + r, jacobian);
+    }
+}
+
+bool BilinearTerm::evaluateRow(int row, const double* x, double* residual, double* jacobian) const {
+    evaluateOne(static_cast<std::size_t>(row), x, residual, jacobian);
+    return true;
 }
 
 } // namespace devsurf::solver

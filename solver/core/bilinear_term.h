@@ -25,8 +25,11 @@ public:
     int rowCount() const override { return static_cast<int>(m_target.size()); }
     void buildPattern(PatternBuilder& builder) const override;
     void evaluate(const double* x, double* residuals, double* jacobian) const override;
+    bool evaluateRow(int row, const double* x, double* residual, double* jacobian) const override;
 
 private:
+    // Residual and Jacobian values of row r; returns the number of Jacobian values written.
+    int evaluateOne(std::size_t r, const double* x, double* residual, double* jacobian) const;
     int m_dimension;
     // Row r uses m_points[m_leftStart[r] .. m_rightStart[r]) on the left and
     // m_points[m_rightStart[r] .. m_leftStart[r + 1]) on the right.

@@ -40,4 +40,14 @@ void FairnessTerm::evaluate(const double* x, double* residuals, double* jacobian
     }
 }
 
+bool FairnessTerm::evaluateRow(int row, const double* x, double* residual, double* jacobian) const {
+    const Triple& t = m_triples[static_cast<std::size_t>(row / m_dimension)];
+    const int k = row % m_dimension;
+    *residual = x[t.previous + k] - 2.0 * x[t.current + k] + x[t.next + k];
+    jacobian[0] = 1.0;
+    jacobian[1] = -2.0;
+    jacobian[2] = 1.0;
+    return true;
+}
+
 } // namespace devsurf::solver

@@ -21,6 +21,20 @@ double epsilon1(const Options& options, int iteration) {
     return options.eps1Final;
 }
 
+double epsilon2(const Options& options, int iteration, double residual) {
+    if (options.eps2Schedule) {
+        return options.eps2Schedule(iteration, residual);
+    }
+    return options.eps2;
+}
+
+std::function<double(int, double)> residualEps2Schedule(double maximum, double minimum,
+                                                        double factor) {
+    return [maximum, minimum, factor](int, double residual) {
+        return std::clamp(factor * residual, minimum, maximum);
+    };
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -88,7 +102,7 @@ struct GuidedProjection::Impl {
         auto start = Clock::now();
         Eigen::SparseMatrix<double> upper;
         Eigen::VectorXd g;
-        equations.assembleFromScratch(problem, eps1, options.eps2, upper, g);
+        equations.assembleFromScratch(problem, eps1, stats.eps2, upper, g);
         const int n = equations.variableCount();
         std::vector<int> colStart(upper.outerIndexPtr(), upper.outerIndexPtr() + n + 1);
         std::vector<int> rowIndex(upper.innerIndexPtr(), upper.innerIndexPtr() + upper.nonZeros());
@@ -119,10 +133,9 @@ struct GuidedProjection::Impl {
         return true;
     }
 
-    bool cachedStep(const Problem& problem, double eps1, const Options& options,
-                    IterationStats& stats, Summary& summary) {
+    bool cachedStep(const Problem& problem, double eps1, IterationStats& stats, Summary& summary) {
         auto start = Clock::now();
-        equations.fill(problem, eps1, options.eps2, cholesky.values(), rhs.data());
+        equations.fill(problem, eps1, stats.eps2, cholesky.values(), rhs.data());
         stats.assemblyMs += elapsedMs(start);
         start = Clock::now();
         if (!cholesky.factorize()) {
@@ -243,10 +256,12 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         IterationStats stats;
         stats.iteration = iteration;
         stats.eps1 = epsilon1(options, options.scheduleOffset + iteration);
+        stats.eps2 = epsilon2(options, options.scheduleOffset + iteration,
+                              d.equations.maxConstraintResidual());
         stats.assemblyMs = pendingEvaluationMs;
         const bool stepped = options.baseline
                                  ? d.baselineStep(problem, stats.eps1, options, stats, summary)
-                                 : d.cachedStep(problem, stats.eps1, options, stats, summary);
+                                 : d.cachedStep(problem, stats.eps1, stats, summary);
         if (!stepped) {
             break;
         }

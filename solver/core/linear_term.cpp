@@ -31,16 +31,28 @@ void LinearTerm::buildPattern(PatternBuilder& builder) const {
     }
 }
 
+int LinearTerm::evaluateOne(std::size_t r, const double* x, double* residual,
+                            double* jacobian) const {
+    double value = -m_rhs[r];
+    double* out = jacobian;
+    for (int e = m_rowStart[r]; e < m_rowStart[r + 1]; ++e) {
+        const Entry& entry = m_entries[static_cast<std::size_t>(e)];
+        value += entry.coefficient * x[entry.column];
+        *out++ = entry.coefficient;
+    }
+    *residual = value;
+    return static_cast<int>(out - jacobian);
+}
+
 void LinearTerm::evaluate(const double* x, double* residuals, double* jacobian) const {
     for (std::size_t r = 0; r < m_rhs.size(); ++r) {
-        double value = -m_rhs[r];
-        for (int e = m_rowStart[r]; e < m_rowStart[r + 1]; ++e) {
-            const Entry& entry = m_entries[static_cast<std::size_t>(e)];
-            value += entry.coefficient * x[entry.column];
-            *jacobian++ = entry.coefficient;
-        }
-        residuals[r] = value;
+        jacobian += evaluateOne(r, x, residuals + r, jacobian);
     }
+}
+
+bool LinearTerm::evaluateRow(int row, const double* x, double* residual, double* jacobian) const {
+    evaluateOne(static_cast<std::size_t>(row), x, residual, jacobian);
+    return true;
 }
 
 } // namespace devsurf::solver

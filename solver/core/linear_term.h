@@ -28,8 +28,11 @@ public:
     int rowCount() const override { return static_cast<int>(m_rhs.size()); }
     void buildPattern(PatternBuilder& builder) const override;
     void evaluate(const double* x, double* residuals, double* jacobian) const override;
+    bool evaluateRow(int row, const double* x, double* residual, double* jacobian) const override;
 
 private:
+    // Residual and Jacobian values of row r; returns the number of Jacobian values written.
+    int evaluateOne(std::size_t r, const double* x, double* residual, double* jacobian) const;
     std::vector<int> m_rowStart{0};
     std::vector<Entry> m_entries;
     std::vector<double> m_rhs;

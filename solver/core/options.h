@@ -30,6 +30,11 @@ struct Options {
 
     // Damping ε₂ of ‖x − x_k‖² (paper: 0.01, useful range 1e-6 … 1e-2).
     double eps2 = 0.01;
+    // If set, replaces the constant ε₂: a function of the iteration index and of the largest
+    // constraint residual at the current iterate x_k. Shrinking ε₂ with the residual (as
+    // Levenberg–Marquardt methods do) keeps the fast local convergence of Gauss–Newton on
+    // redundant, ill-conditioned constraint sets while damping the first, long steps.
+    std::function<double(int, double)> eps2Schedule;
 
     // Stop early once the ε₁ phase is over and the largest constraint residual is at most
     // this (0 disables early stopping).
@@ -54,5 +59,11 @@ struct Options {
 
 // ε₁ for iteration `iteration` (counted from 0, without scheduleOffset) under `options`.
 double epsilon1(const Options& options, int iteration);
+// ε₂ for iteration `iteration` at an iterate whose largest constraint residual is `residual`.
+double epsilon2(const Options& options, int iteration, double residual);
+
+// The residual-driven ε₂ schedule: ε₂ = clamp(factor · residual, minimum, maximum).
+std::function<double(int, double)> residualEps2Schedule(double maximum = 0.01,
+                                                        double minimum = 1e-6, double factor = 1.0);
 
 } // namespace devsurf::solver

@@ -35,46 +35,59 @@ void SquaredDistanceTerm::buildPattern(PatternBuilder& builder) const {
     }
 }
 
-void SquaredDistanceTerm::evaluate(const double* x, double* residuals, double* jacobian) const {
-    for (std::size_t r = 0; r < m_squaredDistance.size(); ++r) {
-        std::array<double, kMaxDimension> a{};
-        std::array<double, kMaxDimension> b{};
-        const int begin = m_leftStart[r];
-        const int middle = m_rightStart[r];
-        const int end = m_leftStart[r + 1];
-        for (int e = begin; e < middle; ++e) {
-            const PointTerm& p = m_points[static_cast<std::size_t>(e)];
-            for (int k = 0; k < m_leftDimension; ++k) {
-                a[k] += p.coefficient * x[p.offset + k];
-            }
-        }
-        for (int e = middle; e < end; ++e) {
-            const PointTerm& p = m_points[static_cast<std::size_t>(e)];
-            for (int k = 0; k < m_rightDimension; ++k) {
-                b[k] += p.coefficient * x[p.offset + k];
-            }
-        }
-        double value = -m_squaredDistance[r];
+int SquaredDistanceTerm::evaluateOne(std::size_t r, const double* x, double* residual,
+                                     double* jacobian) const {
+    std::array<double, kMaxDimension> a{};
+    std::array<double, kMaxDimension> b{};
+    const int begin = m_leftStart[r];
+    const int middle = m_rightStart[r];
+    const int end = m_leftStart[r + 1];
+    for (int e = begin; e < middle; ++e) {
+        const PointTerm& p = m_points[static_cast<std::size_t>(e)];
         for (int k = 0; k < m_leftDimension; ++k) {
-            value += a[k] * a[k];
-        }
-        for (int k = 0; k < m_rightDimension; ++k) {
-            value -= b[k] * b[k];
-        }
-        residuals[r] = value;
-        for (int e = begin; e < middle; ++e) {
-            const double c = 2.0 * m_points[static_cast<std::size_t>(e)].coefficient;
-            for (int k = 0; k < m_leftDimension; ++k) {
-                *jacobian++ = c * a[k];
-            }
-        }
-        for (int e = middle; e < end; ++e) {
-            const double c = -2.0 * m_points[static_cast<std::size_t>(e)].coefficient;
-            for (int k = 0; k < m_rightDimension; ++k) {
-                *jacobian++ = c * b[k];
-            }
+            a[k] += p.coefficient * x[p.offset + k];
         }
     }
+    for (int e = middle; e < end; ++e) {
+        const PointTerm& p = m_points[static_cast<std::size_t>(e)];
+        for (int k = 0; k < m_rightDimension; ++k) {
+            b[k] += p.coefficient * x[p.offset + k];
+        }
+    }
+    double value = -m_squaredDistance[r];
+    for (int k = 0; k < m_leftDimension; ++k) {
+        value += a[k] * a[k];
+    }
+    for (int k = 0; k < m_rightDimension; ++k) {
+        value -= b[k] * b[k];
+    }
+    *residual = value;
+    double* out = jacobian;
+    for (int e = begin; e < middle; ++e) {
+        const double c = 2.0 * m_points[static_cast<std::size_t>(e)].coefficient;
+        for (int k = 0; k < m_leftDimension; ++k) {
+            *out++ = c * a[k];
+        }
+    }
+    for (int e = middle; e < end; ++e) {
+        const double c = -2.0 * m_points[static_cast<std::size_t>(e)].coefficient;
+        for (int k = 0; k < m_rightDimension; ++k) {
+            *out++ = c * b[k];
+        }
+    }
+    return static_cast<int>(out - jacobian);
+}
+
+void SquaredDistanceTerm::evaluate(const double* x, double* residuals, double* jacobian) const {
+    for (std::size_t r = 0; r < m_squaredDistance.size(); ++r) {
+        jacobian += evaluateOne(r, x, residuals + r, jacobian);
+    }
+}
+
+bool SquaredDistanceTerm::evaluateRow(int row, const double* x, double* residual,
+                                      double* jacobian) const {
+    evaluateOne(static_cast<std::size_t>(row), x, residual, jacobian);
+    return true;
 }
 
 } // namespace devsurf::solver

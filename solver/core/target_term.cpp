@@ -30,4 +30,11 @@ void TargetTerm::evaluate(const double* x, double* residuals, double* jacobian) 
     }
 }
 
+bool TargetTerm::evaluateRow(int row, const double* x, double* residual, double* jacobian) const {
+    const auto r = static_cast<std::size_t>(row);
+    *residual = x[m_column[r]] - m_target[r];
+    jacobian[0] = 1.0;
+    return true;
+}
+
 } // namespace devsurf::solver

@@ -22,6 +22,7 @@ public:
     int rowCount() const override { return static_cast<int>(m_target.size()); }
     void buildPattern(PatternBuilder& builder) const override;
     void evaluate(const double* x, double* residuals, double* jacobian) const override;
+    bool evaluateRow(int row, const double* x, double* residual, double* jacobian) const override;
 
 private:
     std::vector<int> m_column;

@@ -55,6 +55,16 @@ public:
     // Writes rowCount() residuals and, in pattern order, the Jacobian values of all rows.
     // Must not allocate: it runs inside the iteration loop.
     virtual void evaluate(const double* x, double* residuals, double* jacobian) const = 0;
+    // Evaluates row `row` alone: its residual and its Jacobian values in pattern order. Used by
+    // solvers that evaluate residuals one by one (the Ceres peer of the benchmark); returns
+    // false if the term does not support it.
+    virtual bool evaluateRow(int row, const double* x, double* residual, double* jacobian) const {
+        (void)row;
+        (void)x;
+        (void)residual;
+        (void)jacobian;
+        return false;
+    }
 };
 
 } // namespace devsurf::solver

@@ -53,17 +53,17 @@ private slots:
     }
 
     void badUsageExitsWithOne() {
-        for (const QStringList& args : QList<QStringList>{
-                 {},
-                 {"frobnicate"},
-                 {"example", "annulus"},
-                 {"example", "torus", "-o", path("t.devsurf")},
-                 {"example", "sheet", "--size", "abc", "-o", path("t.devsurf")},
-                 {"example", "sheet", "--size", "0", "-o", path("t.devsurf")},
-                 {"info"},
-                 {"info", "a", "b"},
-                 {"export-json", path("x.devsurf")},
-                 {"validate", "--bogus", "x"}}) {
+        for (const QStringList& args :
+             QList<QStringList>{{},
+                                {"frobnicate"},
+                                {"example", "annulus"},
+                                {"example", "torus", "-o", path("t.devsurf")},
+                                {"example", "sheet", "--size", "abc", "-o", path("t.devsurf")},
+                                {"example", "sheet", "--size", "0", "-o", path("t.devsurf")},
+                                {"info"},
+                                {"info", "a", "b"},
+                                {"export-json", path("x.devsurf")},
+                                {"validate", "--bogus", "x"}}) {
             const Run run = cli(args);
             QVERIFY2(run.exitCode == 1, qPrintable(args.join(' ')));
             QVERIFY(run.err.startsWith("devsurf-cli: "));
@@ -79,7 +79,8 @@ private slots:
 
         run = cli({"info", file});
         QCOMPARE(run.exitCode, 0);
-        QVERIFY(run.out.contains("Faces: 48 (48 SRSR strips, 0 SRS strips, 0 SRR cones, 0 planar)"));
+        QVERIFY(
+            run.out.contains("Faces: 48 (48 SRSR strips, 0 SRS strips, 0 SRR cones, 0 planar)"));
         QVERIFY(run.out.contains("Spline spaces: degree 3, C2, 3 intervals (56 S-edges)"));
         QVERIFY(run.out.contains("Control points: 280"));
         QVERIFY(run.out.contains("Vertices: 56"));

@@ -20,5 +20,5 @@ int runAll(int argc, char** argv);
 } // namespace devsurf::test
 
 #define DEVSURF_REGISTER_TEST(Class)                                                               \
-    static const bool devsurfRegistered##Class = ::devsurf::test::registerTest(                    \
-        #Class, [] { return std::unique_ptr<QObject>(new Class); })
+    static const bool devsurfRegistered##Class =                                                   \
+        ::devsurf::test::registerTest(#Class, [] { return std::unique_ptr<QObject>(new Class); })

@@ -64,9 +64,9 @@ private slots:
                 const QJsonArray curve = crease["curve"].toObject()["controlPoints"].toArray();
                 for (const char* which : {"left", "right"}) {
                     const QJsonObject side = crease[which].toObject();
-                    const QJsonObject strip =
-                        jsonStrips[side["strip"].toInt()].toObject()[side["side"].toString()]
-                            .toObject();
+                    const QJsonObject strip = jsonStrips[side["strip"].toInt()]
+                                                  .toObject()[side["side"].toString()]
+                                                  .toObject();
                     const QJsonArray points = strip["controlPoints"].toArray();
                     QCOMPARE(points.size(), curve.size());
                     const bool reversed = side["reversed"].toBool();
@@ -97,8 +97,10 @@ private slots:
         // 6 rings: 5 interior circles of 8 arcs each are creases.
         QCOMPARE(surface["creases"].toArray().size(), qsizetype(5 * 8));
         QCOMPARE(surface["planarFaces"].toArray().size(), qsizetype(0));
-        const QJsonObject mixed = parse(io::interchangeJson(model::makeExample("mixed"), 2))
-                                      ["surfaces"].toArray()[0].toObject();
+        const QJsonObject mixed =
+            parse(io::interchangeJson(model::makeExample("mixed"), 2))["surfaces"]
+                .toArray()[0]
+                .toObject();
         QCOMPARE(mixed["planarFaces"].toArray().size(), qsizetype(1));
         QCOMPARE(mixed["planarFaces"].toArray()[0].toObject()["polygon"].toArray().size(),
                  qsizetype(4));

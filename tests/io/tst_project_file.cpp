@@ -89,7 +89,8 @@ private slots:
             QCOMPARE(message.back(), '.');
             QVERIFY(message.find('\n') == std::string::npos);
         }
-        QVERIFY_THROWS_EXCEPTION(io::FileError, io::loadProjectFile(dir.filePath("missing.devsurf")));
+        QVERIFY_THROWS_EXCEPTION(io::FileError,
+                                 io::loadProjectFile(dir.filePath("missing.devsurf")));
     }
 
     void eachEnvelopeFaultHasItsOwnMessage() {

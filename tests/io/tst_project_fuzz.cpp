@@ -44,10 +44,9 @@ std::string changeNumber(const std::string& payload, std::mt19937& rng) {
         }
     }
     const auto [at, length] = tokens[rng() % tokens.size()];
-    static const char* const hostile[] = {"0",          "1",         "2",         "-1",
-                                          "4294967295", "4294967296", "2147483647", "99999999999",
-                                          "3",          "7",         "1e308",     "nan",
-                                          "-0",         "65536",     "1000000",   "18446744073709551615"};
+    static const char* const hostile[] = {
+        "0", "1", "2",     "-1",  "4294967295", "4294967296", "2147483647", "99999999999",
+        "3", "7", "1e308", "nan", "-0",         "65536",      "1000000",    "18446744073709551615"};
     std::string value = hostile[rng() % (sizeof hostile / sizeof *hostile)];
     if (rng() % 4 == 0) {
         value = std::to_string(static_cast<int>(rng() % 200) - 20);

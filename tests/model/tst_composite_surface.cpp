@@ -85,13 +85,13 @@ private slots:
                 QCOMPARE(surface.labelString(face), labels);
                 const auto problems = surface.validate();
                 if (expected == FaceType::Invalid) {
-                    QVERIFY2(mentions(problems, "face " + std::to_string(face) + " is labelled " +
-                                                    labels),
+                    QVERIFY2(mentions(problems,
+                                      "face " + std::to_string(face) + " is labelled " + labels),
                              labels.c_str());
                 } else {
-                    QVERIFY2(problems.empty(), (labels + ": " + (problems.empty() ? std::string()
-                                                                  : problems.front()))
-                                                   .c_str());
+                    QVERIFY2(problems.empty(),
+                             (labels + ": " + (problems.empty() ? std::string() : problems.front()))
+                                 .c_str());
                 }
             }
         }
@@ -166,7 +166,8 @@ private slots:
         QCOMPARE(s.splineClasses().size(), std::size_t(1));
         const auto loop = s.faceLoop(face);
         const SplineSpace other{2, 1, 2};
-        s.setSpline(loop[2], loop[3], other, straight(other, s.position(loop[2]), s.position(loop[3])));
+        s.setSpline(loop[2], loop[3], other,
+                    straight(other, s.position(loop[2]), s.position(loop[3])));
         QVERIFY(mentions(s.validate(), "different spline spaces"));
     }
 

@@ -65,9 +65,8 @@ private slots:
             QVERIFY(dev.maxEdgeLengthError < 1e-10);
             double worst = 0;
             for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-                worst = std::max(worst, (dev.vertices[i] - Vec2(mesh.vertices[i].x,
-                                                                 mesh.vertices[i].y))
-                                            .norm());
+                worst = std::max(
+                    worst, (dev.vertices[i] - Vec2(mesh.vertices[i].x, mesh.vertices[i].y)).norm());
             }
             QVERIFY2(worst < 1e-8, qPrintable(QString("%1: %2").arg(name).arg(worst)));
         }

@@ -42,10 +42,9 @@ private slots:
                 const Project project = makeExample(info.name, size);
                 QCOMPARE(project.surfaces.size(), std::size_t(1));
                 const auto problems = project.surfaces.front().validate();
-                QVERIFY2(problems.empty(), (info.name + ": " + (problems.empty()
-                                                                     ? std::string()
-                                                                     : problems.front()))
-                                               .c_str());
+                QVERIFY2(problems.empty(),
+                         (info.name + ": " + (problems.empty() ? std::string() : problems.front()))
+                             .c_str());
             }
         }
     }
@@ -58,8 +57,8 @@ private slots:
         QCOMPARE(annulus.facesByType.at(FaceType::StripSRSR), std::size_t(48));
         QCOMPARE(annulus.controlPoints, std::size_t(280)); // Fig. 12: 270 control points, 48 strips
         const SurfaceStatistics mixed = surfaceStatistics(makeExample("mixed").surfaces[0]);
-        for (FaceType type : {FaceType::StripSRSR, FaceType::StripSRS, FaceType::ConeSRR,
-                              FaceType::Planar}) {
+        for (FaceType type :
+             {FaceType::StripSRSR, FaceType::StripSRS, FaceType::ConeSRR, FaceType::Planar}) {
             QCOMPARE(mixed.facesByType.at(type), std::size_t(1));
         }
         QCOMPARE(mixed.splineSpaces.size(), std::size_t(3));

@@ -1,0 +1,164 @@
+#include "solve_command.h"
+
+#include "io/project_file.h"
+#include "model/model_error.h"
+#include "solver/core/guided_projection.h"
+#include "solver/formulation/perturbation.h"
+#include "solver/formulation/surface_formulation.h"
+#include "solver/quality/quality_measures.h"
+
+#include <QString>
+
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+namespace devsurf::app {
+
+namespace {
+
+double parseNumber(const std::string& text, const std::string& option) {
+    try {
+        std::size_t used = 0;
+        const double value = std::stod(text, &used);
+        if (used == text.size() && std::isfinite(value)) {
+            return value;
+        }
+    } catch (const std::exception&) {
+    }
+    throw std::invalid_argument("option '" + option + "' needs a number, not '" + text + "'");
+}
+
+long parseWhole(const std::string& text, const std::string& option, long low, long high) {
+    try {
+        std::size_t used = 0;
+        const long value = std::stol(text, &used);
+        if (used == text.size() && value >= low && value <= high) {
+            return value;
+        }
+    } catch (const std::exception&) {
+    }
+    throw std::invalid_argument("option '" + option + "' needs a whole number between " +
+                                std::to_string(low) + " and " + std::to_string(high) + ", not '" +
+                                text + "'");
+}
+
+std::vector<model::VertexId> parseIds(const std::string& text) {
+    std::vector<model::VertexId> ids;
+    std::stringstream stream(text);
+    std::string item;
+    while (std::getline(stream, item, ',')) {
+        ids.push_back(static_cast<model::VertexId>(parseWhole(item, "--fix", 0, 0xfffffffe)));
+    }
+    if (ids.empty()) {
+        throw std::invalid_argument("option '--fix' needs vertex ids such as 0,4,7");
+    }
+    return ids;
+}
+
+} // namespace
+
+int runSolveCommand(const std::vector<std::string>& positional,
+                    const std::vector<std::pair<std::string, std::string>>& options) {
+    if (positional.size() != 1) {
+        throw std::invalid_argument("expected one project file");
+    }
+    int iterations = 10;
+    double sigma = 0.0;
+    bool perturb = false;
+    unsigned seed = 1;
+    bool seedGiven = false;
+    std::vector<model::VertexId> fixed;
+    std::string output;
+    for (const auto& [name, value] : options) {
+        if (name == "--iterations") {
+            iterations = static_cast<int>(parseWhole(value, name, 1, 10000));
+        } else if (name == "--perturb") {
+            sigma = parseNumber(value, name);
+            if (sigma < 0.0) {
+                throw std::invalid_argument("option '--perturb' must not be negative");
+            }
+            perturb = true;
+        } else if (name == "--seed") {
+            seed = static_cast<unsigned>(parseWhole(value, name, 0, 0x7fffffff));
+            seedGiven = true;
+        } else if (name == "--fix") {
+            fixed = parseIds(value);
+        } else if (name == "-o") {
+            output = value;
+        }
+    }
+    if (output.empty()) {
+        throw std::invalid_argument("the output file is missing (use -o FILE)");
+    }
+    if (seedGiven && !perturb) {
+        throw std::invalid_argument("option '--seed' only makes sense with '--perturb'");
+    }
+    const std::string& path = positional[0];
+    model::Project project = io::loadProjectFile(QString::fromStdString(path));
+    for (std::size_t s = 0; s < project.surfaces.size(); ++s) {
+        model::CompositeSurface& surface = project.surfaces[s];
+        for (model::VertexId v : fixed) {
+            if (!surface.hasVertex(v)) {
+                throw model::ModelError("'" + path + "' has no vertex " + std::to_string(v) +
+                                        " in surface " + std::to_string(s + 1) + ".");
+            }
+        }
+        if (perturb) {
+            solver::perturbSurface(surface, sigma * solver::surfaceDiameter(surface),
+                                   seed + static_cast<unsigned>(s), fixed);
+        }
+        solver::FormulationOptions formulationOptions;
+        for (model::VertexId v : fixed) {
+            formulationOptions.handles.push_back({v, true, {}});
+        }
+        std::unique_ptr<solver::SurfaceFormulation> formulation;
+        try {
+            formulation = std::make_unique<solver::SurfaceFormulation>(surface, formulationOptions);
+        } catch (const std::invalid_argument& error) {
+            throw model::ModelError("surface " + std::to_string(s + 1) + " of '" + path +
+                                    "' cannot be solved: " + error.what());
+        }
+        std::vector<double> x = formulation->initialState();
+        std::cout << "Surface " << s + 1 << " (" << surface.name()
+                  << "): " << formulation->problem().variableCount() << " variables, "
+                  << formulation->problem().rowCount() << " rows\n";
+        solver::GuidedProjection projection;
+        solver::Options solverOptions;
+        solverOptions.eps2 = 1e-3;
+        solverOptions.factorization = solver::FactorizationMethod::Automatic;
+        solverOptions.maxIterations = 1;
+        model::CompositeSurface current = surface;
+        for (int i = 0; i < iterations; ++i) {
+            solverOptions.scheduleOffset = i;
+            const solver::Summary summary =
+                projection.solve(formulation->problem(), x, solverOptions);
+            if (!summary.succeeded() || summary.iterations.empty()) {
+                throw model::ModelError("the solver stopped at iteration " + std::to_string(i + 1) +
+                                        " (" + solver::toString(summary.status) +
+                                        (summary.message.empty() ? "" : ": " + summary.message) +
+                                        "); nothing was written.");
+            }
+            const solver::IterationStats& it = summary.iterations.front();
+            std::string error;
+            if (!formulation->writeBack(x, current, &error)) {
+                throw model::ModelError(error);
+            }
+            const solver::QualityMeasures quality = solver::measureQuality(current);
+            char line[512];
+            std::snprintf(line, sizeof line,
+                          "iteration %3d  residual %.3e  assembly %.3f ms  factorisation %.3f ms "
+                          " solve %.3f ms  %s\n",
+                          i + 1, it.maxConstraintResidual, it.assemblyMs, it.factorizationMs,
+                          it.solveMs, quality.describe().c_str());
+            std::cout << line;
+        }
+        surface = current;
+    }
+    io::saveProjectFile(project, QString::fromStdString(output));
+    std::cout << "Wrote " << output << "\n";
+    return 0;
+}
+
+} // namespace devsurf::app

@@ -1,0 +1,287 @@
+#include "main_window.h"
+
+#include "model/document/document.h"
+#include "model/document/selection.h"
+#include "panels/patch_panel.h"
+#include "panels/properties_panel.h"
+#include "reactions/edit_reactions.h"
+#include "reactions/file_reactions.h"
+#include "reactions/tool_reactions.h"
+#include "reactions/view_reactions.h"
+#include "views/development_view.h"
+#include "views/surface_view.h"
+#include "workspace.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QSettings>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QUndoStack>
+
+namespace devsurf::app {
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_workspace(new Workspace(this)) {
+    setObjectName(QStringLiteral("MainWindow"));
+    setAcceptDrops(true);
+    document::Document* doc = m_workspace->document();
+    document::Selection* selection = m_workspace->selection();
+
+    m_splitter = new QSplitter(Qt::Horizontal, this);
+    m_surfaceView = new views::SurfaceView(doc, selection, m_splitter);
+    m_developmentView = new views::DevelopmentView(doc, selection, m_splitter);
+    m_splitter->addWidget(m_surfaceView);
+    m_splitter->addWidget(m_developmentView);
+    m_splitter->setStretchFactor(0, 3);
+    m_splitter->setStretchFactor(1, 2);
+    setCentralWidget(m_splitter);
+
+    createDocks();
+    createMenus();
+
+    m_countsLabel = new QLabel(this);
+    m_hoverLabel = new QLabel(this);
+    statusBar()->addWidget(m_hoverLabel, 1);
+    statusBar()->addPermanentWidget(m_countsLabel);
+    connect(m_surfaceView, &views::SurfaceView::hoverChanged, m_hoverLabel, &QLabel::setText);
+    connect(m_developmentView, &views::DevelopmentView::hoverChanged, m_hoverLabel,
+            &QLabel::setText);
+    connect(m_workspace, &Workspace::statusMessage, this,
+            [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+
+    connect(doc, &document::Document::modifiedChanged, this, &QWidget::setWindowModified);
+    connect(doc, &document::Document::filePathChanged, this, &MainWindow::updateTitle);
+    connect(doc, &document::Document::changed, this, &MainWindow::updateCounts);
+    connect(selection, &document::Selection::selectionChanged, this, &MainWindow::updateCounts);
+    connect(doc, &document::Document::projectReset, this, [this] {
+        m_surfaceView->fitAll();
+        m_developmentView->fitAll();
+    });
+    updateTitle();
+    updateCounts();
+
+    QSettings settings;
+    if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray())) {
+        resize(1400, 860);
+    }
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    m_splitter->restoreState(settings.value(QStringLiteral("window/splitter")).toByteArray());
+}
+
+MainWindow::~MainWindow() = default;
+
+QAction* MainWindow::addAction(QMenu* menu, const QString& name, const QString& text,
+                               const QKeySequence& shortcut) {
+    auto* action = new QAction(text, this);
+    action->setObjectName(name);
+    if (!shortcut.isEmpty()) {
+        action->setShortcut(shortcut);
+    }
+    menu->addAction(action);
+    return action;
+}
+
+QAction* MainWindow::action(const QString& name) const {
+    return findChild<QAction*>(name);
+}
+
+void MainWindow::createDocks() {
+    document::Document* doc = m_workspace->document();
+    document::Selection* selection = m_workspace->selection();
+    m_patchPanel = new PatchPanel(doc, selection, this);
+    auto* patches = new QDockWidget(tr("Patches"), this);
+    patches->setObjectName(QStringLiteral("PatchesDock"));
+    patches->setWidget(m_patchPanel);
+    addDockWidget(Qt::LeftDockWidgetArea, patches);
+
+    m_propertiesPanel = new PropertiesPanel(doc, selection, this);
+    auto* properties = new QDockWidget(tr("Properties"), this);
+    properties->setObjectName(QStringLiteral("PropertiesDock"));
+    properties->setWidget(m_propertiesPanel);
+    addDockWidget(Qt::LeftDockWidgetArea, properties);
+}
+
+void MainWindow::createMenus() {
+    QToolBar* toolbar = addToolBar(tr("Main"));
+    toolbar->setObjectName(QStringLiteral("MainToolBar"));
+    toolbar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+
+    // File
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* newAction =
+        addAction(file, QStringLiteral("actionNew"), tr("&New from Example…"), QKeySequence::New);
+    new NewFromExampleReaction(newAction, m_workspace);
+    QAction* open = addAction(file, QStringLiteral("actionOpen"), tr("&Open…"), QKeySequence::Open);
+    new OpenReaction(open, m_workspace);
+    QMenu* recent = file->addMenu(tr("Open &Recent"));
+    recent->setObjectName(QStringLiteral("menuRecent"));
+    new OpenRecentReaction(recent, m_workspace);
+    file->addSeparator();
+    QAction* save = addAction(file, QStringLiteral("actionSave"), tr("&Save"), QKeySequence::Save);
+    new SaveReaction(save, m_workspace);
+    QAction* saveAs =
+        addAction(file, QStringLiteral("actionSaveAs"), tr("Save &As…"), QKeySequence::SaveAs);
+    new SaveAsReaction(saveAs, m_workspace);
+    file->addSeparator();
+    QAction* exportJson = addAction(file, QStringLiteral("actionExportJson"),
+                                    tr("&Export Interchange JSON…"), QKeySequence(tr("Ctrl+E")));
+    new ExportJsonReaction(exportJson, m_workspace);
+    file->addSeparator();
+    QAction* quit = addAction(file, QStringLiteral("actionQuit"), tr("&Quit"), QKeySequence::Quit);
+    connect(quit, &QAction::triggered, this, &QWidget::close);
+
+    // Edit
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    edit->setToolTipsVisible(true);
+    QUndoStack* stack = m_workspace->document()->undoStack();
+    QAction* undo = stack->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName(QStringLiteral("actionUndo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = stack->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName(QStringLiteral("actionRedo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    QAction* deleteAction =
+        addAction(edit, QStringLiteral("actionDelete"), tr("&Delete"), QKeySequence::Delete);
+    new DeleteSelectionReaction(deleteAction, m_workspace);
+    QAction* selectNone = addAction(edit, QStringLiteral("actionSelectNone"), tr("Select &None"),
+                                    QKeySequence(tr("Esc")));
+    connect(selectNone, &QAction::triggered, m_workspace->selection(), &document::Selection::clear);
+
+    // View
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    QAction* only3d =
+        addAction(view, QStringLiteral("actionView3D"), tr("&3D View"), QKeySequence(tr("Ctrl+1")));
+    QAction* onlyDev = addAction(view, QStringLiteral("actionViewDevelopment"),
+                                 tr("&Development View"), QKeySequence(tr("Ctrl+2")));
+    QAction* both = addAction(view, QStringLiteral("actionViewBoth"), tr("3D &and Development"),
+                              QKeySequence(tr("Ctrl+3")));
+    new ViewLayoutReaction(only3d, onlyDev, both, m_surfaceView, m_developmentView);
+    view->addSeparator();
+    QAction* polygons = addAction(view, QStringLiteral("actionControlPolygons"),
+                                  tr("&Control Polygons"), QKeySequence(tr("Ctrl+Shift+P")));
+    QAction* vertices = addAction(view, QStringLiteral("actionVertices"), tr("&Vertices"),
+                                  QKeySequence(tr("Ctrl+Shift+V")));
+    new ToggleDisplayReaction(polygons, vertices, m_surfaceView);
+    QAction* fit =
+        addAction(view, QStringLiteral("actionFitAll"), tr("&Fit All"), QKeySequence(tr("F")));
+    connect(fit, &QAction::triggered, m_surfaceView, &views::SurfaceView::fitAll);
+    connect(fit, &QAction::triggered, m_developmentView, &views::DevelopmentView::fitAll);
+    view->addSeparator();
+
+    // Tools
+    QMenu* tools = menuBar()->addMenu(tr("&Tools"));
+    QAction* relabel = addAction(tools, QStringLiteral("actionRelabel"),
+                                 tr("&Relabel Edge (R ↔ S)"), QKeySequence(tr("Ctrl+L")));
+    new RelabelEdgeReaction(relabel, m_workspace);
+    QAction* subdivide =
+        addAction(tools, QStringLiteral("actionSubdivide"), tr("&Subdivide Strip with a Crease…"),
+                  QKeySequence(tr("Ctrl+D")));
+    new SubdivideStripReaction(subdivide, m_workspace);
+    QAction* split = addAction(tools, QStringLiteral("actionSplitAtRuling"),
+                               tr("Split at &Ruling…"), QKeySequence(tr("Ctrl+R")));
+    new SplitAtRulingReaction(split, m_workspace);
+    QAction* refine = addAction(tools, QStringLiteral("actionRefine"), tr("Re&fine Curves"),
+                                QKeySequence(tr("Ctrl+Shift+R")));
+    new RefineCurvesReaction(refine, m_workspace);
+    tools->addSeparator();
+    QAction* move = addAction(tools, QStringLiteral("actionMoveRotate"),
+                              tr("&Move or Rotate Vertices…"), QKeySequence(tr("Ctrl+M")));
+    new MoveVerticesReaction(move, m_workspace);
+
+    // Help
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    QAction* about = addAction(help, QStringLiteral("actionAbout"), tr("&About DevSurf"));
+    connect(about, &QAction::triggered, this, [this] {
+        QMessageBox::about(this, tr("About DevSurf"),
+                           tr("<b>DevSurf %1</b><p>Design of developable surfaces and "
+                              "curved-crease origami with spline developables (Tang, Bo, "
+                              "Wallner, Pottmann 2015).</p>")
+                               .arg(QApplication::applicationVersion()));
+    });
+
+    // Panels can be hidden; their toggles live in the View menu.
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) {
+        view->addAction(dock->toggleViewAction());
+    }
+
+    for (QAction* a : {newAction, open, save}) {
+        toolbar->addAction(a);
+    }
+    toolbar->addSeparator();
+    toolbar->addAction(undo);
+    toolbar->addAction(redo);
+    toolbar->addSeparator();
+    for (QAction* a : {relabel, subdivide, split, move}) {
+        toolbar->addAction(a);
+    }
+    toolbar->addSeparator();
+    toolbar->addAction(polygons);
+    toolbar->addAction(fit);
+}
+
+void MainWindow::updateTitle() {
+    const QString path = m_workspace->document()->filePath();
+    const QString name = path.isEmpty() ? tr("Untitled") : QFileInfo(path).fileName();
+    setWindowTitle(tr("%1[*] — DevSurf").arg(name));
+    setWindowFilePath(path);
+}
+
+void MainWindow::updateCounts() {
+    const auto& surfaces = m_workspace->document()->project().surfaces;
+    std::size_t faces = 0;
+    std::size_t controlPoints = 0;
+    for (const auto& surface : surfaces) {
+        faces += surface.faces().size();
+        controlPoints += surface.controlPointCount();
+    }
+    const auto selected = m_workspace->selection()->picks().size();
+    m_countsLabel->setText(tr("%1 surfaces · %2 patches · %3 control points · %4 selected")
+                               .arg(surfaces.size())
+                               .arg(faces)
+                               .arg(controlPoints)
+                               .arg(selected));
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!m_workspace->maybeSave()) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+    settings.setValue(QStringLiteral("window/splitter"), m_splitter->saveState());
+    event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    const QList<QUrl> urls = event->mimeData()->urls();
+    if (urls.size() == 1 && urls.front().isLocalFile() &&
+        urls.front().toLocalFile().endsWith(QStringLiteral(".devsurf"), Qt::CaseInsensitive)) {
+        event->acceptProposedAction();
+    }
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    const QList<QUrl> urls = event->mimeData()->urls();
+    if (urls.isEmpty() || !urls.front().isLocalFile()) {
+        return;
+    }
+    event->acceptProposedAction();
+    if (m_workspace->maybeSave()) {
+        m_workspace->open(urls.front().toLocalFile());
+    }
+}
+
+} // namespace devsurf::app

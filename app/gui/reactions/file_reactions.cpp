@@ -1,0 +1,108 @@
+#include "file_reactions.h"
+
+#include "../example_dialog.h"
+#include "../workspace.h"
+#include "io/interchange_json.h"
+#include "model/document/document.h"
+#include "model/model_error.h"
+
+#include <QAction>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenu>
+#include <QSaveFile>
+
+namespace devsurf::app {
+
+void NewFromExampleReaction::onTriggered() {
+    ExampleDialog dialog(workspace()->window());
+    if (dialog.exec() != QDialog::Accepted || !workspace()->maybeSave()) {
+        return;
+    }
+    workspace()->newFromExample(dialog.exampleName(), dialog.exampleSize());
+}
+
+void OpenReaction::onTriggered() {
+    if (!workspace()->maybeSave()) {
+        return;
+    }
+    const QString path = QFileDialog::getOpenFileName(workspace()->window(), tr("Open Project"),
+                                                      workspace()->fileDialogDirectory(),
+                                                      tr("DevSurf projects (*.devsurf)"));
+    if (!path.isEmpty()) {
+        workspace()->open(path);
+    }
+}
+
+OpenRecentReaction::OpenRecentReaction(QMenu* menu, Workspace* workspace)
+    : QObject(menu), m_menu(menu), m_workspace(workspace) {
+    connect(workspace, &Workspace::recentFilesChanged, this, &OpenRecentReaction::rebuild);
+    rebuild();
+}
+
+void OpenRecentReaction::rebuild() {
+    m_menu->clear();
+    const QStringList files = m_workspace->recentFiles();
+    int number = 1;
+    for (const QString& path : files) {
+        QAction* action = m_menu->addAction(
+            QStringLiteral("&%1 %2").arg(number++).arg(QFileInfo(path).fileName()));
+        action->setToolTip(path);
+        action->setStatusTip(path);
+        connect(action, &QAction::triggered, this, [this, path] {
+            if (m_workspace->maybeSave()) {
+                m_workspace->open(path);
+            }
+        });
+    }
+    if (files.isEmpty()) {
+        QAction* none = m_menu->addAction(tr("No recent files"));
+        none->setEnabled(false);
+    } else {
+        m_menu->addSeparator();
+        connect(m_menu->addAction(tr("Clear Recent Files")), &QAction::triggered, m_workspace,
+                &Workspace::clearRecentFiles);
+    }
+}
+
+void SaveReaction::onTriggered() {
+    workspace()->save();
+}
+
+void SaveAsReaction::onTriggered() {
+    workspace()->saveAs();
+}
+
+void ExportJsonReaction::onTriggered() {
+    const document::Document* doc = workspace()->document();
+    const QString base =
+        doc->filePath().isEmpty() ? tr("untitled") : QFileInfo(doc->filePath()).completeBaseName();
+    QString path = QFileDialog::getSaveFileName(
+        workspace()->window(), tr("Export Interchange JSON"),
+        QDir(workspace()->fileDialogDirectory()).filePath(base + QStringLiteral(".json")),
+        tr("Interchange JSON (*.json)"));
+    if (path.isEmpty()) {
+        return;
+    }
+    try {
+        const std::string text = io::interchangeJson(doc->project());
+        QSaveFile file(path);
+        if (!file.open(QIODevice::WriteOnly) ||
+            file.write(text.data(), static_cast<qint64>(text.size())) !=
+                static_cast<qint64>(text.size()) ||
+            !file.commit()) {
+            workspace()->showError(
+                tr("Export failed"),
+                tr("Cannot write %1: %2.").arg(QDir::toNativeSeparators(path), file.errorString()));
+            return;
+        }
+        emit workspace()->statusMessage(tr("Exported %1").arg(QFileInfo(path).fileName()));
+    } catch (const model::ModelError& error) {
+        workspace()->showError(
+            tr("Export failed"),
+            tr("The design cannot be exported: %1").arg(QString::fromStdString(error.what())));
+    }
+}
+
+} // namespace devsurf::app

@@ -1,0 +1,277 @@
+#include "tool_reactions.h"
+
+#include "../move_dialog.h"
+#include "../workspace.h"
+#include "model/document/commands/command_or_error.h"
+#include "model/document/commands/move_vertices_command.h"
+#include "model/document/commands/refine_spline_class_command.h"
+#include "model/document/commands/relabel_edge_command.h"
+#include "model/document/commands/split_at_ruling_command.h"
+#include "model/document/commands/subdivide_strip_command.h"
+#include "model/document/document.h"
+#include "model/document/selection.h"
+#include "model/strip.h"
+
+#include <QAction>
+#include <QInputDialog>
+#include <QMessageBox>
+
+namespace devsurf::app {
+
+namespace {
+
+using document::Pick;
+
+std::optional<SelectedIds> selected(const Workspace* workspace, Pick::Kind kind) {
+    std::optional<SelectedIds> result;
+    for (const Pick& pick : workspace->selection()->picks()) {
+        if (pick.kind != kind) {
+            continue;
+        }
+        if (!result) {
+            result = SelectedIds{pick.surface, {}};
+        } else if (result->surface != pick.surface) {
+            return std::nullopt;
+        }
+        result->ids.insert(pick.id);
+    }
+    return result;
+}
+
+const model::CompositeSurface* surfaceOf(const Workspace* workspace, int index) {
+    const auto& surfaces = workspace->document()->project().surfaces;
+    if (index < 0 || index >= static_cast<int>(surfaces.size())) {
+        return nullptr;
+    }
+    return &surfaces[static_cast<std::size_t>(index)];
+}
+
+// The one selected face of the given types, if exactly one face is selected.
+std::optional<std::pair<int, model::FaceId>>
+singleFace(const Workspace* workspace, std::initializer_list<model::FaceType> types) {
+    const auto faces = selected(workspace, Pick::Kind::Face);
+    if (!faces || faces->ids.size() != 1) {
+        return std::nullopt;
+    }
+    const model::CompositeSurface* surface = surfaceOf(workspace, faces->surface);
+    const model::FaceId face = *faces->ids.begin();
+    if (surface == nullptr || !surface->hasFace(face)) {
+        return std::nullopt;
+    }
+    for (model::FaceType type : types) {
+        if (surface->faceType(face) == type) {
+            return std::make_pair(faces->surface, face);
+        }
+    }
+    return std::nullopt;
+}
+
+void explainDisabled(QAction* action, bool enabled, const QString& what) {
+    action->setEnabled(enabled);
+    action->setStatusTip(what);
+    action->setToolTip(what);
+}
+
+} // namespace
+
+RelabelEdgeReaction::RelabelEdgeReaction(QAction* action, Workspace* workspace)
+    : Reaction(action, workspace) {
+    followDocumentAndSelection();
+}
+
+void RelabelEdgeReaction::updateEnableState() {
+    const auto edges = selected(workspace(), Pick::Kind::Edge);
+    explainDisabled(action(), edges.has_value(),
+                    tr("Turn the selected edges from rulings (R) into spline curves (S) or back. "
+                       "Select edges of one surface first."));
+}
+
+void RelabelEdgeReaction::onTriggered() {
+    const auto edges = selected(workspace(), Pick::Kind::Edge);
+    const model::CompositeSurface* surface =
+        edges ? surfaceOf(workspace(), edges->surface) : nullptr;
+    if (surface == nullptr) {
+        return;
+    }
+    std::vector<std::pair<model::EdgeId, model::EdgeLabel>> changes;
+    for (model::EdgeId edge : edges->ids) {
+        if (surface->hasEdge(edge)) {
+            changes.emplace_back(edge, surface->edge(edge).isSpline() ? model::EdgeLabel::Ruling
+                                                                      : model::EdgeLabel::Spline);
+        }
+    }
+    workspace()->apply(
+        document::RelabelEdgeCommand::create(*workspace()->document(), edges->surface, changes),
+        tr("Cannot relabel"));
+}
+
+SubdivideStripReaction::SubdivideStripReaction(QAction* action, Workspace* workspace)
+    : Reaction(action, workspace) {
+    followDocumentAndSelection();
+}
+
+void SubdivideStripReaction::updateEnableState() {
+    explainDisabled(action(), singleFace(workspace(), {model::FaceType::StripSRSR}).has_value(),
+                    tr("Add a crease across the selected strip and the row of strips it belongs "
+                       "to. Select one SRSR strip first."));
+}
+
+void SubdivideStripReaction::onTriggered() {
+    const auto face = singleFace(workspace(), {model::FaceType::StripSRSR});
+    if (!face) {
+        return;
+    }
+    bool ok = false;
+    const double t = QInputDialog::getDouble(
+        workspace()->window(), tr("Subdivide Strip"),
+        tr("Position of the new crease between the strip's curve a (0) and curve b (1):"), 0.5,
+        0.01, 0.99, 3, &ok);
+    if (!ok) {
+        return;
+    }
+    workspace()->apply(document::SubdivideStripCommand::create(*workspace()->document(),
+                                                               face->first, face->second, t),
+                       tr("Cannot subdivide"));
+}
+
+SplitAtRulingReaction::SplitAtRulingReaction(QAction* action, Workspace* workspace)
+    : Reaction(action, workspace) {
+    followDocumentAndSelection();
+}
+
+void SplitAtRulingReaction::updateEnableState() {
+    explainDisabled(action(),
+                    singleFace(workspace(), {model::FaceType::StripSRSR, model::FaceType::StripSRS,
+                                             model::FaceType::ConeSRR})
+                        .has_value(),
+                    tr("Add a ruling across the selected strip and the strips that share its "
+                       "curves. Select one strip or cone first."));
+}
+
+void SplitAtRulingReaction::onTriggered() {
+    const auto face =
+        singleFace(workspace(), {model::FaceType::StripSRSR, model::FaceType::StripSRS,
+                                 model::FaceType::ConeSRR});
+    if (!face) {
+        return;
+    }
+    document::Document& doc = *workspace()->document();
+    auto surface = [&doc, &face]() -> const model::CompositeSurface& {
+        return doc.project().surfaces[static_cast<std::size_t>(face->first)];
+    };
+    // Refining keeps the edge ids, so the strip's curve a stays the same edge.
+    const model::EdgeId curveA = model::stripOfFace(surface(), face->second).aSide.edge;
+    if (surface().edge(curveA).space.intervals < 2) {
+        const auto answer = QMessageBox::question(
+            workspace()->window(), tr("Split at Ruling"),
+            tr("The curves of this strip have a single spline interval, so a ruling can only be "
+               "added after refining them (the shape stays the same). Refine now?"));
+        if (answer != QMessageBox::Yes ||
+            !workspace()->apply(
+                document::RefineSplineClassCommand::create(doc, face->first, curveA, 2),
+                tr("Cannot refine"))) {
+            return;
+        }
+    }
+    const int n = surface().edge(curveA).space.intervals;
+    bool ok = false;
+    const int breakpoint = QInputDialog::getInt(
+        workspace()->window(), tr("Split at Ruling"),
+        tr("The new ruling goes through breakpoint i of the strip's %1 spline intervals "
+           "(u = i/%1). Breakpoint i:")
+            .arg(n),
+        n / 2, 1, n - 1, 1, &ok);
+    if (!ok) {
+        return;
+    }
+    workspace()->apply(
+        document::SplitAtRulingCommand::create(doc, face->first, face->second, breakpoint),
+        tr("Cannot split"));
+}
+
+RefineCurvesReaction::RefineCurvesReaction(QAction* action, Workspace* workspace)
+    : Reaction(action, workspace) {
+    followDocumentAndSelection();
+}
+
+namespace {
+
+// An S-edge to refine: the selected S-edge, or the curve a of the selected strip.
+std::optional<std::pair<int, model::EdgeId>> curveToRefine(const Workspace* workspace) {
+    const auto edges = selected(workspace, Pick::Kind::Edge);
+    if (edges && edges->ids.size() == 1) {
+        const model::CompositeSurface* surface = surfaceOf(workspace, edges->surface);
+        const model::EdgeId edge = *edges->ids.begin();
+        if (surface != nullptr && surface->hasEdge(edge) && surface->edge(edge).isSpline()) {
+            return std::make_pair(edges->surface, edge);
+        }
+    }
+    const auto face = singleFace(workspace, {model::FaceType::StripSRSR, model::FaceType::StripSRS,
+                                             model::FaceType::ConeSRR});
+    if (face) {
+        const model::CompositeSurface* surface = surfaceOf(workspace, face->first);
+        return std::make_pair(face->first, model::stripOfFace(*surface, face->second).aSide.edge);
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+void RefineCurvesReaction::updateEnableState() {
+    explainDisabled(action(), curveToRefine(workspace()).has_value(),
+                    tr("Double the spline intervals of the selected curve and of all curves "
+                       "joined to it through strips; the shape stays the same. Select one "
+                       "spline edge or strip first."));
+}
+
+void RefineCurvesReaction::onTriggered() {
+    const auto curve = curveToRefine(workspace());
+    if (curve) {
+        workspace()->apply(document::RefineSplineClassCommand::create(
+                               *workspace()->document(), curve->first, curve->second, 2),
+                           tr("Cannot refine"));
+    }
+}
+
+MoveVerticesReaction::MoveVerticesReaction(QAction* action, Workspace* workspace)
+    : Reaction(action, workspace) {
+    followDocumentAndSelection();
+}
+
+void MoveVerticesReaction::updateEnableState() {
+    explainDisabled(action(), selected(workspace(), Pick::Kind::Vertex).has_value(),
+                    tr("Translate or rotate the selected vertices with their neighbouring control "
+                       "points. Select vertices of one surface first."));
+}
+
+void MoveVerticesReaction::onTriggered() {
+    const auto vertices = selected(workspace(), Pick::Kind::Vertex);
+    const model::CompositeSurface* surface =
+        vertices ? surfaceOf(workspace(), vertices->surface) : nullptr;
+    if (surface == nullptr) {
+        return;
+    }
+    model::Vec3 centroid;
+    for (model::VertexId v : vertices->ids) {
+        centroid += surface->position(v);
+    }
+    centroid = centroid / static_cast<double>(vertices->ids.size());
+    MoveDialog dialog(centroid, workspace()->window());
+    if (dialog.exec() != QDialog::Accepted) {
+        return;
+    }
+    document::Document& doc = *workspace()->document();
+    const std::set<model::VertexId> ids(vertices->ids.begin(), vertices->ids.end());
+    if (dialog.isRotation()) {
+        workspace()->apply(document::MoveVerticesCommand::createRotation(
+                               doc, vertices->surface, ids, dialog.axisPoint(),
+                               dialog.axisDirection(), dialog.angleRadians()),
+                           tr("Cannot rotate"));
+    } else {
+        workspace()->apply(document::MoveVerticesCommand::createTranslation(
+                               doc, vertices->surface, ids, dialog.translation()),
+                           tr("Cannot move"));
+    }
+}
+
+} // namespace devsurf::app

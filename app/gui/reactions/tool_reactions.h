@@ -1,0 +1,74 @@
+#pragma once
+
+#include "reaction.h"
+
+#include "model/ids.h"
+
+#include <optional>
+#include <set>
+
+namespace devsurf::app {
+
+// The single surface all picks of one kind belong to, with their ids; nullopt when the
+// selection has none of that kind or spans several surfaces.
+struct SelectedIds {
+    int surface = 0;
+    std::set<std::uint32_t> ids;
+};
+
+// Tools ▸ Relabel Edge: turns every selected edge from R to S or from S to R in one step.
+class RelabelEdgeReaction : public Reaction {
+    Q_OBJECT
+public:
+    RelabelEdgeReaction(QAction* action, Workspace* workspace);
+
+protected:
+    void onTriggered() override;
+    void updateEnableState() override;
+};
+
+// Tools ▸ Subdivide Strip: a new crease across the selected strip (and its row).
+class SubdivideStripReaction : public Reaction {
+    Q_OBJECT
+public:
+    SubdivideStripReaction(QAction* action, Workspace* workspace);
+
+protected:
+    void onTriggered() override;
+    void updateEnableState() override;
+};
+
+// Tools ▸ Split at Ruling: a new ruling across the selected strip (and its spline class).
+class SplitAtRulingReaction : public Reaction {
+    Q_OBJECT
+public:
+    SplitAtRulingReaction(QAction* action, Workspace* workspace);
+
+protected:
+    void onTriggered() override;
+    void updateEnableState() override;
+};
+
+// Tools ▸ Refine Curves: doubles the intervals of the selected curve's spline class.
+class RefineCurvesReaction : public Reaction {
+    Q_OBJECT
+public:
+    RefineCurvesReaction(QAction* action, Workspace* workspace);
+
+protected:
+    void onTriggered() override;
+    void updateEnableState() override;
+};
+
+// Tools ▸ Move or Rotate Vertices: exact translation or rotation of the selected vertices.
+class MoveVerticesReaction : public Reaction {
+    Q_OBJECT
+public:
+    MoveVerticesReaction(QAction* action, Workspace* workspace);
+
+protected:
+    void onTriggered() override;
+    void updateEnableState() override;
+};
+
+} // namespace devsurf::app

@@ -1,0 +1,171 @@
+#include "workspace.h"
+
+#include "io/file_error.h"
+#include "io/project_file.h"
+#include "model/document/commands/command_or_error.h"
+#include "model/document/document.h"
+#include "model/document/selection.h"
+#include "model/examples.h"
+#include "model/model_error.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QSettings>
+#include <QUndoStack>
+
+namespace devsurf::app {
+
+namespace {
+const char* const kRecentKey = "recentFiles";
+const char* const kLastDirectoryKey = "lastDirectory";
+} // namespace
+
+Workspace::Workspace(QWidget* window)
+    : QObject(window), m_window(window), m_document(new document::Document(this)),
+      m_selection(new document::Selection(this)) {
+    m_recentFiles = QSettings().value(kRecentKey).toStringList();
+    connect(m_document, &document::Document::projectReset, m_selection,
+            &document::Selection::clear);
+    // After undo or a topological edit, picks of entities that no longer exist are dropped.
+    connect(m_document, &document::Document::changed, m_selection, [this] {
+        const auto& surfaces = m_document->project().surfaces;
+        m_selection->prune([&surfaces](const document::Pick& pick) {
+            if (pick.surface < 0 || pick.surface >= static_cast<int>(surfaces.size())) {
+                return false;
+            }
+            const auto& surface = surfaces[static_cast<std::size_t>(pick.surface)];
+            switch (pick.kind) {
+            case document::Pick::Kind::Vertex:
+                return surface.hasVertex(pick.id);
+            case document::Pick::Kind::Edge:
+                return surface.hasEdge(pick.id);
+            case document::Pick::Kind::Face:
+                return surface.hasFace(pick.id);
+            }
+            return false;
+        });
+    });
+}
+
+bool Workspace::apply(document::CommandOrError edit, const QString& failureTitle) {
+    const QString refusal = document::pushOrExplain(*m_document, std::move(edit));
+    if (!refusal.isEmpty()) {
+        showError(failureTitle, refusal);
+        return false;
+    }
+    return true;
+}
+
+Workspace::~Workspace() = default;
+
+void Workspace::showError(const QString& title, const QString& sentence) const {
+    QMessageBox::warning(m_window, title, sentence);
+}
+
+QString Workspace::fileDialogDirectory() const {
+    if (!m_document->filePath().isEmpty()) {
+        return QFileInfo(m_document->filePath()).absolutePath();
+    }
+    return QSettings().value(kLastDirectoryKey, QDir::homePath()).toString();
+}
+
+bool Workspace::maybeSave() {
+    if (!m_document->isModified()) {
+        return true;
+    }
+    const QString name = m_document->filePath().isEmpty()
+                             ? tr("Untitled")
+                             : QFileInfo(m_document->filePath()).fileName();
+    const auto answer = QMessageBox::warning(
+        m_window, tr("Unsaved changes"),
+        tr("%1 has unsaved changes. Do you want to save them?").arg(name),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save) {
+        return save();
+    }
+    return answer == QMessageBox::Discard;
+}
+
+bool Workspace::open(const QString& path) {
+    try {
+        model::Project project = io::loadProjectFile(path);
+        const QString absolute = QFileInfo(path).absoluteFilePath();
+        m_document->resetProject(std::move(project), absolute);
+        addRecentFile(absolute);
+        QSettings().setValue(kLastDirectoryKey, QFileInfo(absolute).absolutePath());
+        emit statusMessage(tr("Opened %1").arg(QFileInfo(absolute).fileName()));
+        return true;
+    } catch (const io::FileError& error) {
+        showError(tr("Cannot open file"), QString::fromStdString(error.what()));
+        return false;
+    }
+}
+
+bool Workspace::save() {
+    if (m_document->filePath().isEmpty()) {
+        return saveAs();
+    }
+    return saveTo(m_document->filePath());
+}
+
+bool Workspace::saveAs() {
+    QString path = QFileDialog::getSaveFileName(
+        m_window, tr("Save Project As"),
+        QDir(fileDialogDirectory())
+            .filePath(m_document->filePath().isEmpty()
+                          ? tr("untitled.devsurf")
+                          : QFileInfo(m_document->filePath()).fileName()),
+        tr("DevSurf projects (*.devsurf)"));
+    if (path.isEmpty()) {
+        return false;
+    }
+    if (QFileInfo(path).suffix().isEmpty()) {
+        path += QStringLiteral(".devsurf");
+    }
+    return saveTo(path);
+}
+
+bool Workspace::saveTo(const QString& path) {
+    try {
+        io::saveProjectFile(m_document->project(), path);
+    } catch (const io::FileError& error) {
+        showError(tr("Cannot save file"), QString::fromStdString(error.what()));
+        return false;
+    }
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    m_document->setFilePath(absolute);
+    m_document->markSaved();
+    addRecentFile(absolute);
+    QSettings().setValue(kLastDirectoryKey, QFileInfo(absolute).absolutePath());
+    emit statusMessage(tr("Saved %1").arg(QFileInfo(absolute).fileName()));
+    return true;
+}
+
+void Workspace::newFromExample(const QString& name, int size) {
+    try {
+        m_document->resetProject(model::makeExample(name.toStdString(), size));
+        emit statusMessage(tr("New design from the example “%1”").arg(name));
+    } catch (const model::ModelError& error) {
+        showError(tr("Cannot create the example"), QString::fromStdString(error.what()));
+    }
+}
+
+void Workspace::addRecentFile(const QString& path) {
+    m_recentFiles.removeAll(path);
+    m_recentFiles.prepend(path);
+    while (m_recentFiles.size() > kMaxRecentFiles) {
+        m_recentFiles.removeLast();
+    }
+    QSettings().setValue(kRecentKey, m_recentFiles);
+    emit recentFilesChanged();
+}
+
+void Workspace::clearRecentFiles() {
+    m_recentFiles.clear();
+    QSettings().setValue(kRecentKey, m_recentFiles);
+    emit recentFilesChanged();
+}
+
+} // namespace devsurf::app

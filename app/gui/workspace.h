@@ -1,0 +1,62 @@
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <QStringList>
+
+class QWidget;
+
+namespace devsurf::document {
+class CommandOrError;
+class Document;
+class Selection;
+} // namespace devsurf::document
+
+namespace devsurf::app {
+
+// What the main window's handlers share: the open document, the selection, the window to
+// parent dialogs on, and the file operations several actions need (open, save, prompting for
+// unsaved changes, recent files).
+class Workspace : public QObject {
+    Q_OBJECT
+public:
+    explicit Workspace(QWidget* window);
+    ~Workspace() override;
+
+    document::Document* document() const { return m_document; }
+    document::Selection* selection() const { return m_selection; }
+    QWidget* window() const { return m_window; }
+
+    // Asks whether to save unsaved changes. Returns false when the user cancels or saving
+    // failed, i.e. when the caller must not discard the document.
+    bool maybeSave();
+    bool open(const QString& path); // shows an error dialog and returns false on failure
+    bool save();                    // Save As when the document has no file yet
+    bool saveAs();
+    bool saveTo(const QString& path); // shows an error dialog and returns false on failure
+    void newFromExample(const QString& name, int size);
+    void showError(const QString& title, const QString& sentence) const;
+    // Pushes an edit, or tells the user in a dialog why it was refused. Returns whether it was
+    // applied.
+    bool apply(document::CommandOrError edit, const QString& failureTitle);
+
+    QStringList recentFiles() const { return m_recentFiles; }
+    void clearRecentFiles();
+    static constexpr int kMaxRecentFiles = 8;
+
+    QString fileDialogDirectory() const;
+
+signals:
+    void recentFilesChanged();
+    void statusMessage(const QString& text);
+
+private:
+    void addRecentFile(const QString& path);
+
+    QWidget* m_window;
+    document::Document* m_document;
+    document::Selection* m_selection;
+    QStringList m_recentFiles;
+};
+
+} // namespace devsurf::app

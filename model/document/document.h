@@ -1,0 +1,58 @@
+#pragma once
+
+#include "change_flags.h"
+#include "model/project.h"
+
+#include <QObject>
+#include <QString>
+
+class QUndoStack;
+
+namespace devsurf::document {
+
+// The open design. Owns the project and its undo stack; every change goes through a
+// QUndoCommand pushed on undoStack(), and every change raises the revision and emits changed().
+// Views and panels only read and listen.
+class Document : public QObject {
+    Q_OBJECT
+public:
+    explicit Document(QObject* parent = nullptr);
+    ~Document() override;
+
+    const model::Project& project() const { return m_project; }
+    int surfaceCount() const { return static_cast<int>(m_project.surfaces.size()); }
+    // index must be in [0, surfaceCount()).
+    const model::CompositeSurface& surface(int index) const {
+        return m_project.surfaces.at(static_cast<std::size_t>(index));
+    }
+    QUndoStack* undoStack() const { return m_undoStack; }
+    // Increases with every change, undo and redo included; solver results carry the revision
+    // they were computed from and are dropped when it no longer matches.
+    quint64 revision() const { return m_revision; }
+
+    QString filePath() const { return m_filePath; }
+    void setFilePath(const QString& path);
+    bool isModified() const;
+    void markSaved(); // sets the undo stack's clean index
+
+    // New or opened project: replaces everything and clears the undo history.
+    void resetProject(model::Project project, const QString& filePath = QString());
+
+    // For commands only: the project to change, then notifyChanged() once the change is done.
+    model::Project& mutableProject() { return m_project; }
+    void notifyChanged(Changes changes);
+
+signals:
+    void changed(devsurf::document::Changes changes);
+    void projectReset();
+    void modifiedChanged(bool modified);
+    void filePathChanged(const QString& path);
+
+private:
+    model::Project m_project;
+    QUndoStack* m_undoStack = nullptr;
+    quint64 m_revision = 0;
+    QString m_filePath;
+};
+
+} // namespace devsurf::document

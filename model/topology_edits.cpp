@@ -1,0 +1,601 @@
+#include "topology_edits.h"
+
+#include "bspline_curve.h"
+#include "model_error.h"
+#include "strip.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+
+namespace devsurf::model {
+
+namespace {
+
+std::string str(std::uint32_t id) {
+    return std::to_string(id);
+}
+
+std::pair<VertexId, VertexId> key(VertexId a, VertexId b) {
+    return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+}
+
+// The canonical data of a surface while an edit rewrites it; build() turns it back into a
+// surface. CompositeSurface has no removal operations on purpose (ids must stay stable), so a
+// topological edit rebuilds the surface the way loading a file does: vertices, edges, then
+// faces in id order.
+struct SurfaceData {
+    std::string name;
+    std::map<VertexId, Vec3> vertices;
+    std::map<EdgeId, EdgeRecord> edges;
+    std::map<FaceId, std::vector<VertexId>> faces;
+    std::map<std::pair<VertexId, VertexId>, EdgeId> edgeByVertices;
+    VertexId nextVertex = 0;
+    EdgeId nextEdge = 0;
+    FaceId nextFace = 0;
+
+    explicit SurfaceData(const CompositeSurface& s)
+        : name(s.name()), vertices(s.vertices()), edges(s.edges()), faces(s.faces()),
+          nextVertex(s.nextVertexId()), nextEdge(s.nextEdgeId()), nextFace(s.nextFaceId()) {
+        for (const auto& [id, record] : edges) {
+            edgeByVertices[key(record.from, record.to)] = id;
+        }
+    }
+
+    VertexId addVertex(const Vec3& p) {
+        const VertexId id = nextVertex++;
+        vertices.emplace(id, p);
+        return id;
+    }
+    EdgeId find(VertexId a, VertexId b) const {
+        auto it = edgeByVertices.find(key(a, b));
+        return it == edgeByVertices.end() ? kInvalidId : it->second;
+    }
+    EdgeId addEdge(const EdgeRecord& record) {
+        const EdgeId id = nextEdge++;
+        edges.emplace(id, record);
+        edgeByVertices[key(record.from, record.to)] = id;
+        return id;
+    }
+    // An R-edge between a and b, or the existing edge if another face already made it.
+    EdgeId ruling(VertexId a, VertexId b) {
+        const EdgeId existing = find(a, b);
+        if (existing != kInvalidId) {
+            return existing;
+        }
+        EdgeRecord record;
+        record.from = a;
+        record.to = b;
+        return addEdge(record);
+    }
+    void setEnds(EdgeId id, VertexId from, VertexId to) {
+        EdgeRecord& record = edges.at(id);
+        edgeByVertices.erase(key(record.from, record.to));
+        record.from = from;
+        record.to = to;
+        edgeByVertices[key(from, to)] = id;
+    }
+    FaceId addFace(std::vector<VertexId> loop) {
+        const FaceId id = nextFace++;
+        faces.emplace(id, std::move(loop));
+        return id;
+    }
+
+    CompositeSurface build(const std::string& what) const {
+        CompositeSurface s;
+        s.setName(name);
+        for (const auto& [id, p] : vertices) {
+            s.addVertexWithId(id, p);
+        }
+        for (const auto& [id, record] : edges) {
+            s.addEdgeWithId(id, record);
+        }
+        for (const auto& [id, loop] : faces) {
+            s.addFaceWithId(id, loop);
+        }
+        s.setNextIds(nextVertex, nextEdge, nextFace);
+        // A face side without a prepared edge would have been created silently; that, or any
+        // other problem, is a bug in the edit, reported rather than handed to the document.
+        auto problems = s.validate();
+        if (s.edges().size() != edges.size()) {
+            problems.insert(problems.begin(), "a face side has no edge.");
+        }
+        if (!problems.empty()) {
+            throw ModelError(what + " failed unexpectedly: " + problems.front());
+        }
+        return s;
+    }
+};
+
+std::size_t wrap(int i, std::size_t n) {
+    const int size = static_cast<int>(n);
+    return static_cast<std::size_t>(((i % size) + size) % size);
+}
+
+// Greville abscissae of the clamped uniform space: a curve with control points at
+// p + ξ_i (q − p) is the segment pq with linear parametrisation.
+std::vector<Vec3> straightControlPoints(const SplineSpace& space, const Vec3& p, const Vec3& q) {
+    const std::vector<double> knots = space.knots(false);
+    const int count = space.controlPointCount(false);
+    std::vector<Vec3> points;
+    points.reserve(static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) {
+        double xi = 0.0;
+        for (int j = 1; j <= space.degree; ++j) {
+            xi += knots[static_cast<std::size_t>(i + j)];
+        }
+        xi /= space.degree;
+        points.push_back(p * (1.0 - xi) + q * xi);
+    }
+    points.front() = p;
+    points.back() = q;
+    return points;
+}
+
+// The S-side of an SRSR face that stripOfFace() takes as its curve a: loop side ia runs along a.
+std::size_t stripASide(const CompositeSurface& s, FaceId face) {
+    const std::string labels = s.labelString(face);
+    const auto edges = s.faceEdges(face);
+    std::size_t ia = labels[0] == 'S' ? 0 : 1;
+    if (edges[ia + 2] < edges[ia]) {
+        ia += 2;
+    }
+    return ia;
+}
+
+// Reports only what an edit broke, not problems the surface already had.
+void throwIfNewProblem(const CompositeSurface& before, const CompositeSurface& after) {
+    const auto problems = after.validate();
+    if (problems.empty()) {
+        return;
+    }
+    const auto old = before.validate();
+    for (const std::string& problem : problems) {
+        if (std::find(old.begin(), old.end(), problem) == old.end()) {
+            throw ModelError(problem);
+        }
+    }
+}
+
+struct RowFace {
+    FaceId face;
+    std::size_t ia; // loop side along the face's curve a (the side the row's t counts from)
+};
+
+std::vector<RowFace> collectRow(const CompositeSurface& s, FaceId face) {
+    if (!s.hasFace(face)) {
+        throw ModelError("face " + str(face) + " does not exist.");
+    }
+    if (s.faceType(face) != FaceType::StripSRSR) {
+        throw ModelError("face " + str(face) + " is an " + faceTypeName(s.faceType(face)) +
+                         "; only an SRSR strip can be cut by a new crease.");
+    }
+    std::map<FaceId, std::size_t> seen{{face, stripASide(s, face)}};
+    std::vector<RowFace> row{{face, seen[face]}};
+    for (std::size_t next = 0; next < row.size(); ++next) {
+        const RowFace current = row[next];
+        const auto& loop = s.faceLoop(current.face);
+        for (std::size_t side : {wrap(static_cast<int>(current.ia) + 1, 4),
+                                 wrap(static_cast<int>(current.ia) + 3, 4)}) {
+            const VertexId from = loop[side];
+            const VertexId to = loop[wrap(static_cast<int>(side) + 1, 4)];
+            const VertexId aVertex = side == wrap(static_cast<int>(current.ia) + 1, 4) ? from : to;
+            const EdgeId ruling = s.edgeBetween(from, to);
+            for (FaceId other : s.facesOfEdge(ruling)) {
+                if (other == current.face) {
+                    continue;
+                }
+                const FaceType type = s.faceType(other);
+                if (type == FaceType::Planar) {
+                    continue;
+                }
+                if (type != FaceType::StripSRSR) {
+                    throw ModelError("the new crease cannot continue across ruling edge " +
+                                     str(ruling) + " into face " + str(other) + ", an " +
+                                     faceTypeName(type) +
+                                     "; a row of strips can only be cut where its rulings border "
+                                     "SRSR strips, planar faces or the boundary.");
+                }
+                const auto& otherLoop = s.faceLoop(other);
+                std::size_t shared = 0;
+                while (s.edgeBetween(otherLoop[shared],
+                                     otherLoop[wrap(static_cast<int>(shared) + 1, 4)]) != ruling) {
+                    ++shared;
+                }
+                const std::size_t ia = otherLoop[shared] == aVertex
+                                           ? wrap(static_cast<int>(shared) - 1, 4)
+                                           : wrap(static_cast<int>(shared) + 1, 4);
+                auto it = seen.find(other);
+                if (it != seen.end()) {
+                    if (it->second != ia) {
+                        throw ModelError("the row of strips through face " + str(face) +
+                                         " closes on itself with its sides swapped, so it cannot "
+                                         "be cut at one distance between its curves.");
+                    }
+                    continue;
+                }
+                seen.emplace(other, ia);
+                row.push_back({other, ia});
+            }
+        }
+    }
+    return row;
+}
+
+} // namespace
+
+RigidMotion RigidMotion::translationBy(const Vec3& offset) {
+    RigidMotion motion;
+    motion.translation = offset;
+    return motion;
+}
+
+RigidMotion RigidMotion::rotationAbout(const Vec3& point, const Vec3& direction, double angle) {
+    const double length = direction.norm();
+    if (!(length > 0.0) || !std::isfinite(length) || !point.isFinite() || !std::isfinite(angle)) {
+        throw ModelError("a rotation needs a finite axis point, a non-zero axis direction and a "
+                         "finite angle.");
+    }
+    const Vec3 k = direction / length;
+    const double c = std::cos(angle);
+    const double s = std::sin(angle);
+    const double t = 1.0 - c;
+    RigidMotion motion;
+    // Rodrigues: R = c I + s [k]x + (1 − c) k kᵀ.
+    motion.rotation[0][0] = c + t * k.x * k.x;
+    motion.rotation[0][1] = t * k.x * k.y - s * k.z;
+    motion.rotation[0][2] = t * k.x * k.z + s * k.y;
+    motion.rotation[1][0] = t * k.y * k.x + s * k.z;
+    motion.rotation[1][1] = c + t * k.y * k.y;
+    motion.rotation[1][2] = t * k.y * k.z - s * k.x;
+    motion.rotation[2][0] = t * k.z * k.x - s * k.y;
+    motion.rotation[2][1] = t * k.z * k.y + s * k.x;
+    motion.rotation[2][2] = c + t * k.z * k.z;
+    // p ↦ R (p − c) + c = R p + (c − R c).
+    motion.translation = point - motion.apply(point);
+    return motion;
+}
+
+Vec3 RigidMotion::apply(const Vec3& p) const {
+    Vec3 result = translation;
+    for (int i = 0; i < 3; ++i) {
+        result[i] += rotation[i][0] * p.x + rotation[i][1] * p.y + rotation[i][2] * p.z;
+    }
+    return result;
+}
+
+SplineSpace spaceForNewSplineEdge(const CompositeSurface& surface, EdgeId edge) {
+    for (FaceId face : surface.facesOfEdge(edge)) {
+        for (EdgeId other : surface.faceEdges(face)) {
+            if (other != edge && other != kInvalidId && surface.edge(other).isSpline()) {
+                return surface.edge(other).space;
+            }
+        }
+    }
+    return SplineSpace{3, 2, 2};
+}
+
+CompositeSurface relabelEdges(const CompositeSurface& surface,
+                              const std::vector<std::pair<EdgeId, EdgeLabel>>& labels) {
+    if (labels.empty()) {
+        throw ModelError("no edge was given to relabel.");
+    }
+    CompositeSurface result = surface;
+    for (const auto& [edge, label] : labels) {
+        if (!result.hasEdge(edge)) {
+            throw ModelError("edge " + str(edge) + " does not exist.");
+        }
+        const EdgeRecord& record = result.edge(edge);
+        if (record.label == label) {
+            continue;
+        }
+        if (label == EdgeLabel::Ruling) {
+            result.setRuling(edge);
+        } else {
+            const SplineSpace space = spaceForNewSplineEdge(result, edge);
+            const VertexId from = record.from;
+            const VertexId to = record.to;
+            result.setSpline(
+                from, to, space,
+                straightControlPoints(space, result.position(from), result.position(to)));
+        }
+    }
+    throwIfNewProblem(surface, result);
+    return result;
+}
+
+std::vector<FaceId> stripRow(const CompositeSurface& surface, FaceId face) {
+    std::vector<FaceId> faces;
+    for (const RowFace& f : collectRow(surface, face)) {
+        faces.push_back(f.face);
+    }
+    return faces;
+}
+
+CompositeSurface subdivideStrip(const CompositeSurface& surface, FaceId face, double t) {
+    if (!(t > 0.0 && t < 1.0)) {
+        throw ModelError("the new crease must lie strictly between the strip's two curves "
+                         "(0 < t < 1).");
+    }
+    const std::vector<RowFace> row = collectRow(surface, face);
+    SurfaceData data(surface);
+
+    // One new vertex per cut ruling, shared by the faces on both sides of it.
+    std::map<EdgeId, VertexId> cutVertex;
+    std::vector<EdgeId> cutOrder;
+    auto vertexOnRuling = [&](VertexId aVertex, VertexId bVertex) {
+        const EdgeId ruling = surface.edgeBetween(aVertex, bVertex);
+        auto it = cutVertex.find(ruling);
+        if (it != cutVertex.end()) {
+            return it->second;
+        }
+        const Vec3 p = surface.position(aVertex) * (1.0 - t) + surface.position(bVertex) * t;
+        const VertexId v = data.addVertex(p);
+        cutVertex.emplace(ruling, v);
+        cutOrder.push_back(ruling);
+        return v;
+    };
+
+    for (const RowFace& rf : row) {
+        const auto& loop = surface.faceLoop(rf.face);
+        auto at = [&](int offset) { return loop[wrap(static_cast<int>(rf.ia) + offset, 4)]; };
+        // a runs at(0) → at(1), b runs at(3) → at(2); both share the strip's parameter u.
+        const VertexId m1 = vertexOnRuling(at(1), at(2));
+        const VertexId m2 = vertexOnRuling(at(0), at(3));
+        if (data.find(m2, m1) == kInvalidId) {
+            const std::vector<Vec3> a = surface.controlPointsFrom(at(0), at(1));
+            const std::vector<Vec3> b = surface.controlPointsFrom(at(3), at(2));
+            EdgeRecord crease;
+            crease.from = m2;
+            crease.to = m1;
+            crease.label = EdgeLabel::Spline;
+            crease.space = surface.edge(surface.edgeBetween(at(0), at(1))).space;
+            crease.controlPoints.resize(a.size());
+            // c = (1 − t) a + t b is the strip's curve v = t: the geometry is unchanged.
+            for (std::size_t i = 0; i < a.size(); ++i) {
+                crease.controlPoints[i] = a[i] * (1.0 - t) + b[i] * t;
+            }
+            crease.controlPoints.front() = data.vertices.at(m2);
+            crease.controlPoints.back() = data.vertices.at(m1);
+            data.addEdge(crease);
+        }
+        data.faces[rf.face] = {at(0), at(1), m1, m2};
+        data.addFace({m2, m1, at(2), at(3)});
+    }
+    for (EdgeId ruling : cutOrder) {
+        const VertexId m = cutVertex.at(ruling);
+        const EdgeRecord original = surface.edge(ruling);
+        data.setEnds(ruling, original.from, m);
+        EdgeRecord rest;
+        rest.from = m;
+        rest.to = original.to;
+        data.addEdge(rest);
+        // Planar neighbours take the new vertex into their loop and stay planar.
+        for (FaceId other : surface.facesOfEdge(ruling)) {
+            if (surface.faceType(other) != FaceType::Planar) {
+                continue;
+            }
+            auto& loop = data.faces.at(other);
+            for (std::size_t i = 0; i < loop.size(); ++i) {
+                const VertexId p = loop[i];
+                const VertexId q = loop[(i + 1) % loop.size()];
+                if (key(p, q) == key(original.from, original.to)) {
+                    loop.insert(loop.begin() + static_cast<std::ptrdiff_t>(i + 1), m);
+                    break;
+                }
+            }
+        }
+    }
+    return data.build("subdividing face " + str(face));
+}
+
+std::vector<EdgeId> splineClassOf(const CompositeSurface& surface, EdgeId edge) {
+    if (!surface.hasEdge(edge) || !surface.edge(edge).isSpline()) {
+        throw ModelError("edge " + str(edge) + " is not a spline curve (S-edge).");
+    }
+    for (auto& cls : surface.splineClasses()) {
+        if (std::find(cls.begin(), cls.end(), edge) != cls.end()) {
+            return cls;
+        }
+    }
+    return {edge};
+}
+
+CompositeSurface splitAtRuling(const CompositeSurface& surface, FaceId face, int breakpoint) {
+    if (!surface.hasFace(face)) {
+        throw ModelError("face " + str(face) + " does not exist.");
+    }
+    const FaceType type = surface.faceType(face);
+    if (type == FaceType::Planar || type == FaceType::Invalid) {
+        throw ModelError("face " + str(face) + " is a " + faceTypeName(type) +
+                         "; a ruling can only be added to a strip or a cone.");
+    }
+    const Strip start = stripOfFace(surface, face);
+    const SplineSpace space = surface.edge(start.aSide.edge).space;
+    const int n = space.intervals;
+    if (n < 2) {
+        throw ModelError("the curves of face " + str(face) +
+                         " have a single interval; refine them before adding a ruling.");
+    }
+    if (breakpoint < 1 || breakpoint > n - 1) {
+        throw ModelError("a ruling can only be added at an interior breakpoint i/" +
+                         std::to_string(n) + " of the curves of face " + str(face) +
+                         " (1 <= i <= " + std::to_string(n - 1) +
+                         "); refine the curves for finer positions.");
+    }
+
+    // Breakpoint index of every S-edge of the class, in the edge's stored orientation.
+    std::map<EdgeId, int> cut{
+        {start.aSide.edge, start.aSide.reversed ? n - breakpoint : breakpoint}};
+    std::set<FaceId> faces;
+    std::deque<EdgeId> queue{start.aSide.edge};
+    while (!queue.empty()) {
+        const EdgeId e = queue.front();
+        queue.pop_front();
+        for (FaceId g : surface.facesOfEdge(e)) {
+            if (!faces.insert(g).second || surface.faceType(g) == FaceType::ConeSRR) {
+                continue;
+            }
+            const Strip strip = stripOfFace(surface, g);
+            const bool fromA = strip.aSide.edge == e;
+            const StripSide& known = fromA ? strip.aSide : strip.bSide;
+            const StripSide& other = fromA ? strip.bSide : strip.aSide;
+            const int alongU = known.reversed ? n - cut.at(e) : cut.at(e);
+            const int otherCut = other.reversed ? n - alongU : alongU;
+            auto it = cut.find(other.edge);
+            if (it == cut.end()) {
+                cut.emplace(other.edge, otherCut);
+                queue.push_back(other.edge);
+            } else if (it->second != otherCut) {
+                throw ModelError("the curves connected to face " + str(face) +
+                                 " meet themselves reversed, so no ruling position is "
+                                 "consistent across them.");
+            }
+        }
+    }
+
+    SurfaceData data(surface);
+    std::map<EdgeId, VertexId> splitVertex;
+    for (const auto& [e, k] : cut) {
+        const EdgeRecord original = surface.edge(e);
+        if (original.space != space) {
+            throw ModelError("S-edge " + str(e) + " uses a different spline space from face " +
+                             str(face) + "'s curves.");
+        }
+        const BSplineCurve curve = BSplineCurve::uniform(space, original.controlPoints);
+        auto [left, right] = curve.split(static_cast<double>(k) / n);
+        std::vector<Vec3> leftPoints = left.controlPoints();
+        std::vector<Vec3> rightPoints = right.controlPoints();
+        SplineSpace leftSpace = space;
+        leftSpace.intervals = k;
+        SplineSpace rightSpace = space;
+        rightSpace.intervals = n - k;
+        if (leftPoints.size() != static_cast<std::size_t>(leftSpace.controlPointCount(false)) ||
+            rightPoints.size() != static_cast<std::size_t>(rightSpace.controlPointCount(false))) {
+            throw ModelError("splitting S-edge " + str(e) +
+                             " did not give uniform pieces; this is a bug.");
+        }
+        const VertexId w = data.addVertex(leftPoints.back());
+        rightPoints.front() = leftPoints.back();
+        splitVertex.emplace(e, w);
+
+        data.setEnds(e, original.from, w);
+        EdgeRecord& first = data.edges.at(e);
+        first.space = leftSpace;
+        first.controlPoints = std::move(leftPoints);
+        EdgeRecord second = original;
+        second.from = w;
+        second.space = rightSpace;
+        second.controlPoints = std::move(rightPoints);
+        data.addEdge(second);
+    }
+
+    for (FaceId g : faces) {
+        const auto& loop = surface.faceLoop(g);
+        std::vector<VertexId> extended;
+        std::vector<std::size_t> chord;
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            extended.push_back(loop[i]);
+            auto it = splitVertex.find(surface.edgeBetween(loop[i], loop[(i + 1) % loop.size()]));
+            if (it != splitVertex.end()) {
+                chord.push_back(extended.size());
+                extended.push_back(it->second);
+            }
+        }
+        if (chord.size() == 1) {
+            // A cone: the new ruling runs from the split point to the apex.
+            const VertexId apex = stripOfFace(surface, g).apexVertex;
+            chord.push_back(static_cast<std::size_t>(
+                std::find(extended.begin(), extended.end(), apex) - extended.begin()));
+            std::sort(chord.begin(), chord.end());
+        }
+        if (chord.size() != 2) {
+            throw ModelError("face " + str(g) + " cannot take the new ruling; this is a bug.");
+        }
+        const auto i1 = static_cast<std::ptrdiff_t>(chord[0]);
+        const auto i2 = static_cast<std::ptrdiff_t>(chord[1]);
+        std::vector<VertexId> inner(extended.begin() + i1, extended.begin() + i2 + 1);
+        std::vector<VertexId> outer(extended.begin() + i2, extended.end());
+        outer.insert(outer.end(), extended.begin(), extended.begin() + i1 + 1);
+        data.ruling(extended[chord[0]], extended[chord[1]]);
+        data.faces[g] = std::move(outer);
+        data.addFace(std::move(inner));
+    }
+    return data.build("adding a ruling to face " + str(face));
+}
+
+CompositeSurface refineSplineClass(const CompositeSurface& surface, EdgeId edge, int factor) {
+    const std::vector<EdgeId> cls = splineClassOf(surface, edge);
+    const SplineSpace space = surface.edge(edge).space;
+    if (factor < 2) {
+        throw ModelError("refining needs a factor of at least 2.");
+    }
+    if (static_cast<long long>(space.intervals) * factor > SplineSpace::maxIntervals) {
+        throw ModelError("the curves of edge " + str(edge) + " already have " +
+                         std::to_string(space.intervals) +
+                         " intervals; refining them further is not supported.");
+    }
+    SplineSpace refined = space;
+    refined.intervals = space.intervals * factor;
+    const int times = space.degree - space.smoothness;
+    CompositeSurface result = surface;
+    for (EdgeId e : cls) {
+        const EdgeRecord& record = surface.edge(e);
+        BSplineCurve curve = BSplineCurve::uniform(record.space, record.controlPoints);
+        // Knot insertion keeps the curve; inserting every (factor·j + r) / (factor·n) with the
+        // multiplicity of a breakpoint gives exactly the knots of the refined uniform space.
+        for (int j = 0; j < space.intervals; ++j) {
+            for (int r = 1; r < factor; ++r) {
+                curve.insertKnot(static_cast<double>(factor * j + r) / refined.intervals, times);
+            }
+        }
+        std::vector<Vec3> points = curve.controlPoints();
+        if (points.size() != static_cast<std::size_t>(refined.controlPointCount(false))) {
+            throw ModelError("refining S-edge " + str(e) + " went wrong; this is a bug.");
+        }
+        points.front() = surface.position(record.from);
+        points.back() = surface.position(record.to);
+        result.setSpline(record.from, record.to, refined, std::move(points));
+    }
+    return result;
+}
+
+CompositeSurface moveVertices(const CompositeSurface& surface, const std::set<VertexId>& vertices,
+                              const RigidMotion& motion) {
+    if (vertices.empty()) {
+        throw ModelError("no vertex was given to move.");
+    }
+    for (VertexId v : vertices) {
+        if (!surface.hasVertex(v)) {
+            throw ModelError("vertex " + str(v) + " does not exist.");
+        }
+    }
+    CompositeSurface result = surface;
+    for (const auto& [id, record] : surface.edges()) {
+        if (!record.isSpline() || record.controlPoints.size() < 3) {
+            continue;
+        }
+        const bool fromMoves = vertices.count(record.from) != 0;
+        const bool toMoves = vertices.count(record.to) != 0;
+        if (!fromMoves && !toMoves) {
+            continue;
+        }
+        std::vector<Vec3> points = record.controlPoints;
+        const std::size_t last = points.size() - 1;
+        // The neighbours of the ends keep the end tangents attached to the moved vertices.
+        if (fromMoves) {
+            points[1] = motion.apply(record.controlPoints[1]);
+        }
+        if (toMoves && !(fromMoves && last - 1 == 1)) {
+            points[last - 1] = motion.apply(record.controlPoints[last - 1]);
+        }
+        result.setControlPoints(id, std::move(points));
+    }
+    for (VertexId v : vertices) {
+        result.moveVertex(v, motion.apply(surface.position(v)));
+    }
+    throwIfNewProblem(surface, result);
+    return result;
+}
+
+} // namespace devsurf::model

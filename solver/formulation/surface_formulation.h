@@ -1,0 +1,113 @@
+#pragma once
+
+#include "model/composite_surface.h"
+#include "solver/core/problem.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace devsurf::solver {
+
+class TargetTerm;
+
+// A user handle on a coarse vertex: fixed where it is, or pulled towards a target (weight 1).
+struct VertexHandle {
+    model::VertexId vertex = model::kInvalidId;
+    bool fixed = true;
+    model::Vec3 target; // only used when !fixed, in model coordinates
+};
+
+struct FormulationOptions {
+    // (4) with the first-derivative points a¹₀, a¹₁, b¹₀, b¹₁ of every collocation value as
+    // auxiliary variables tied to the control points by linear relations (as the paper does),
+    // instead of substituting those relations into (4). Measured slower at equal quality (see
+    // the benchmark), so off by default.
+    bool auxiliaryDerivativePoints = false;
+    // Collocation values of (4) per interval; 0 means 3m − 2, which makes the strip exactly
+    // developable (det(a−b, a′, b′) has degree 3m − 3 per interval, MATH.md §2).
+    int developabilityValuesPerInterval = 0;
+
+    // Constraint weights (the W of (6)).
+    double developabilityWeight = 1.0;
+    double normalWeight = 1.0; // n(0)ᵀn(0) = 1, cone and plane normals, their definitions
+    double planarityWeight = 1.0;
+    double smoothnessWeight = 1.0;
+    double handleWeight = 1.0;
+    // Energy weights (multiplied by ε₁ in the iteration, so they act in the first iterations
+    // only). Fairness 10 × ε₁ = 1 → 0.59 removes control-polygon noise from a perturbed start
+    // (measured on the benchmark models; lower values leave flipped normal controls).
+    double fairnessWeight = 10.0;
+    double unitControlNormalWeight = 0.1;
+
+    // R-edges between two faces across which the unit normals must agree (smooth transition).
+    std::vector<model::EdgeId> smoothRulings;
+    std::vector<VertexHandle> handles;
+};
+
+// Turns a composite surface into a guided-projection problem (§3.1, §3.2) and writes solutions
+// back. Variables, all in coordinates normalised to the surface's diameter (centre at the
+// origin, diameter 1) so that weights and ε₂ do not depend on the model's units:
+//   "points"            every coarse vertex and every interior S-edge control point, once;
+//   "normalControls"    a cubic C² normal spline per strip (SRSR, SRS);
+//   "coneNormals"       unit normals of every cone at its interval ends;
+//   "planeNormals"      one unit normal per planar face;
+//   "derivativePoints"  a¹₀, a¹₁, b¹₀, b¹₁ per collocation value (auxiliary variant only).
+// Fixed handles are fixed variables (they keep their value exactly).
+class SurfaceFormulation {
+public:
+    // Throws std::invalid_argument (with a sentence naming the entity) when the surface is
+    // not valid or an option refers to something that does not exist or cannot be used.
+    SurfaceFormulation(const model::CompositeSurface& surface, const FormulationOptions& options);
+
+    const Problem& problem() const { return m_problem; }
+    Problem& problem() { return m_problem; }
+    // The state of the given surface (the one passed to the constructor).
+    const std::vector<double>& initialState() const { return m_initialState; }
+
+    // Moves the target of a pulled handle (model coordinates). Returns false if the vertex has
+    // no pulled handle.
+    bool setHandleTarget(model::VertexId vertex, const model::Vec3& target);
+
+    // Writes the vertices and control points of state x into `surface` (which must have the
+    // combinatorics of the formulated surface). Refuses a state of the wrong size or with a
+    // non-finite value: `surface` is then untouched and `error` says why. Coordinates that
+    // the solver did not change are restored bit for bit.
+    bool writeBack(const std::vector<double>& x, model::CompositeSurface& surface,
+                   std::string* error = nullptr) const;
+
+    // Model coordinates of a coarse vertex in state x.
+    model::Vec3 vertexPosition(const std::vector<double>& x, model::VertexId vertex) const;
+
+    int stripCount() const { return m_stripCount; }
+    int coneCount() const { return m_coneCount; }
+    int planarFaceCount() const { return m_planarCount; }
+    int pointCount() const { return m_pointCount; }
+    double scale() const { return m_scale; }
+
+private:
+    struct Builder;
+    int pointOffset(int point) const { return m_pointsOffset + 3 * point; }
+    model::Vec3 toModel(const double* p) const;
+
+    FormulationOptions m_options;
+    Problem m_problem;
+    std::vector<double> m_initialState;
+    model::Vec3 m_centre;
+    double m_scale = 1.0;
+    int m_pointsOffset = 0;
+    int m_pointCount = 0;
+    int m_stripCount = 0;
+    int m_coneCount = 0;
+    int m_planarCount = 0;
+    std::map<model::VertexId, int> m_vertexPoint;
+    std::map<model::EdgeId, std::vector<int>> m_edgePoints; // stored orientation, ends included
+    // The normal of a face at one of its R-edges, keyed by (face, edge): a combination of
+    // normal variables (filled while adding faces, used for smooth transitions).
+    std::map<std::pair<model::FaceId, model::EdgeId>, PointCombination> m_rulingNormals;
+    std::map<model::VertexId, int> m_handleRow; // first TargetTerm row of a pulled handle
+    TargetTerm* m_handleTerm = nullptr;
+    std::vector<model::Vec3> m_originalPoints; // model coordinates of the given surface
+};
+
+} // namespace devsurf::solver

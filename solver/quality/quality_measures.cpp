@@ -1,0 +1,144 @@
+#include "solver/quality/quality_measures.h"
+
+#include "model/sampled_mesh.h"
+#include "model/strip.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace devsurf::solver {
+
+using model::Vec3;
+
+namespace {
+
+constexpr double kTwoPi = 6.28318530717958647692;
+
+double angleBetween(const Vec3& u, const Vec3& v) {
+    return std::atan2(cross(u, v).norm(), dot(u, v));
+}
+
+// δ of a quad p0 p1 p2 p3: distance of the diagonal lines p0p2 and p1p3 over the mean of the
+// two shortest edges. Returns -1 for a quad whose diagonals are parallel (degenerate).
+double quadFlatness(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
+    const Vec3 d1 = p2 - p0;
+    const Vec3 d2 = p3 - p1;
+    const Vec3 normal = cross(d1, d2);
+    const double length = normal.norm();
+    if (!(length > 1e-300)) {
+        return -1.0;
+    }
+    const double gap = std::abs(dot(p1 - p0, normal)) / length;
+    double edges[4] = {distance(p0, p1), distance(p1, p2), distance(p2, p3), distance(p3, p0)};
+    std::sort(edges, edges + 4);
+    const double reference = 0.5 * (edges[0] + edges[1]);
+    return reference > 0.0 ? gap / reference : -1.0;
+}
+
+} // namespace
+
+double normalizedDevelopabilityResidual(const Vec3& aMinusB, const Vec3& aPrime,
+                                        const Vec3& bPrime) {
+    const double scale = aMinusB.norm() * aPrime.norm() * bPrime.norm();
+    if (!(scale > 0.0)) {
+        return 0.0;
+    }
+    return std::abs(det(aMinusB, aPrime, bPrime)) / scale;
+}
+
+QualityMeasures measureQuality(const model::CompositeSurface& surface,
+                               const QualityOptions& options) {
+    QualityMeasures q;
+    const model::SampledMesh mesh =
+        model::sampleSurface(surface, std::max(1, options.meshSamplesPerInterval));
+
+    double flatnessSum = 0.0;
+    std::map<std::pair<int, int>, int> edgeFaces;
+    std::vector<double> angleSum(mesh.vertices.size(), 0.0);
+    for (const std::vector<int>& face : mesh.faces) {
+        const std::size_t n = face.size();
+        for (std::size_t i = 0; i < n; ++i) {
+            const int v = face[i];
+            const int next = face[(i + 1) % n];
+            const int previous = face[(i + n - 1) % n];
+            ++edgeFaces[{std::min(v, next), std::max(v, next)}];
+            const Vec3& p = mesh.vertices[static_cast<std::size_t>(v)];
+            angleSum[static_cast<std::size_t>(v)] +=
+                angleBetween(mesh.vertices[static_cast<std::size_t>(next)] - p,
+                             mesh.vertices[static_cast<std::size_t>(previous)] - p);
+        }
+        if (n == 4) {
+            const double delta = quadFlatness(mesh.vertices[static_cast<std::size_t>(face[0])],
+                                              mesh.vertices[static_cast<std::size_t>(face[1])],
+                                              mesh.vertices[static_cast<std::size_t>(face[2])],
+                                              mesh.vertices[static_cast<std::size_t>(face[3])]);
+            if (delta >= 0.0) {
+                ++q.quads;
+                flatnessSum += delta;
+                q.flatnessMax = std::max(q.flatnessMax, delta);
+            }
+        }
+    }
+    q.flatnessMean = q.quads > 0 ? flatnessSum / q.quads : 0.0;
+
+    std::vector<char> onBoundary(mesh.vertices.size(), 0);
+    std::vector<char> used(mesh.vertices.size(), 0);
+    for (const auto& [edge, faces] : edgeFaces) {
+        used[static_cast<std::size_t>(edge.first)] = used[static_cast<std::size_t>(edge.second)] =
+            1;
+        if (faces == 1) {
+            onBoundary[static_cast<std::size_t>(edge.first)] = 1;
+            onBoundary[static_cast<std::size_t>(edge.second)] = 1;
+        }
+    }
+    double curvatureSum = 0.0;
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+        if (!used[v] || onBoundary[v]) {
+            continue;
+        }
+        const double k = std::abs(kTwoPi - angleSum[v]);
+        ++q.interiorVertices;
+        curvatureSum += k;
+        q.curvatureMax = std::max(q.curvatureMax, k);
+    }
+    q.curvatureMean = q.interiorVertices > 0 ? curvatureSum / q.interiorVertices : 0.0;
+
+    const int samples = std::max(1, options.developabilitySamplesPerInterval);
+    double developabilitySum = 0.0;
+    for (const model::Strip& strip : model::stripsOf(surface)) {
+        if (strip.isCone()) {
+            continue; // cones are developable by construction
+        }
+        const int intervals = surface.edge(strip.aSide.edge).space.intervals;
+        for (int i = 0; i < intervals; ++i) {
+            for (int j = 0; j < samples; ++j) {
+                // Midpoints of a fine subdivision: never the solver's collocation values.
+                const double u = (i + (j + 0.5) / samples) / intervals;
+                const double r = normalizedDevelopabilityResidual(
+                    strip.a.evaluate(u) - strip.b.evaluate(u), strip.a.derivative(u, 1),
+                    strip.b.derivative(u, 1));
+                ++q.developabilitySamples;
+                developabilitySum += r;
+                q.developabilityMax = std::max(q.developabilityMax, r);
+            }
+        }
+    }
+    q.developabilityMean =
+        q.developabilitySamples > 0 ? developabilitySum / q.developabilitySamples : 0.0;
+    return q;
+}
+
+std::string QualityMeasures::describe() const {
+    char buffer[256];
+    std::snprintf(buffer, sizeof buffer,
+                  "flatness mean %.2e max %.2e, |K| mean %.2e max %.2e, det mean %.2e max %.2e",
+                  flatnessMean, flatnessMax, curvatureMean, curvatureMax, developabilityMean,
+                  developabilityMax);
+    return buffer;
+}
+
+} // namespace devsurf::solver

@@ -1,0 +1,44 @@
+#pragma once
+
+#include "model/composite_surface.h"
+
+#include <string>
+
+namespace devsurf::solver {
+
+struct QualityOptions {
+    // Samples per spline interval of the mesh (V,E,F) for flatness and curvature.
+    int meshSamplesPerInterval = 8;
+    // Parameter values per interval for the developability residual (≥ 50, MATH.md §8).
+    int developabilitySamplesPerInterval = 50;
+};
+
+// The quality measures of MATH.md §8, computed from the geometry alone (never from a solver's
+// residuals). All are scale-invariant ratios or angles.
+struct QualityMeasures {
+    // δ = dist(diagonal₁, diagonal₂) / mean(two shortest edge lengths) over the quads of (V,E,F).
+    int quads = 0;
+    double flatnessMean = 0.0;
+    double flatnessMax = 0.0;
+    // |K| = |2π − Σ angles| at the interior vertices of (V,E,F).
+    int interiorVertices = 0;
+    double curvatureMean = 0.0;
+    double curvatureMax = 0.0;
+    // |det(a−b, a′, b′)| / (|a−b| |a′| |b′|) over every strip, densely sampled.
+    int developabilitySamples = 0;
+    double developabilityMean = 0.0;
+    double developabilityMax = 0.0;
+
+    std::string describe() const;
+};
+
+// Throws model::ModelError if the surface is not valid.
+QualityMeasures measureQuality(const model::CompositeSurface& surface,
+                               const QualityOptions& options = {});
+
+// The normalised developability residual of one ruled surface at u (MATH.md §8, from (2)); 0 if
+// a factor vanishes.
+double normalizedDevelopabilityResidual(const model::Vec3& aMinusB, const model::Vec3& aPrime,
+                                        const model::Vec3& bPrime);
+
+} // namespace devsurf::solver

@@ -1,0 +1,254 @@
+#include "io/project_file.h"
+#include "main_window.h"
+#include "model/document/commands/command_or_error.h"
+#include "model/document/commands/move_vertices_command.h"
+#include "model/document/document.h"
+#include "model/document/selection.h"
+#include "model/examples.h"
+#include "panels/patch_panel.h"
+#include "panels/patch_tree_model.h"
+#include "panels/properties_panel.h"
+#include "test_registry.h"
+#include "views/development_view.h"
+#include "views/surface_view.h"
+#include "views/vtk_opengl_widget.h"
+#include "workspace.h"
+
+#include <QAction>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QItemSelectionModel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QPushButton>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QTranslator>
+#include <QTreeView>
+#include <QUndoStack>
+
+#include <set>
+
+using namespace devsurf;
+
+namespace {
+
+// Distinct colours in the central half of an image: a blank view has one (or a gradient),
+// geometry adds patch colours and lines.
+int coloursInCentre(const QImage& image) {
+    std::set<QRgb> colours;
+    const int w = image.width();
+    const int h = image.height();
+    for (int y = h / 4; y < 3 * h / 4; y += 2) {
+        for (int x = w / 4; x < 3 * w / 4; x += 2) {
+            colours.insert(image.pixel(x, y));
+        }
+    }
+    return static_cast<int>(colours.size());
+}
+
+// Answers the next modal message box with the given button.
+void answerNextMessageBox(QMessageBox::StandardButton button) {
+    QTimer::singleShot(0, [button] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (box != nullptr && box->button(button) != nullptr) {
+            box->button(button)->click();
+        }
+    });
+}
+
+} // namespace
+
+class TstMainWindow : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+
+private slots:
+    void init() { QSettings().clear(); }
+
+    void opensEveryExampleAndRendersBothViews() {
+        app::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        for (const model::ExampleInfo& info : model::builtInExamples()) {
+            window.workspace()->newFromExample(QString::fromStdString(info.name), 0);
+            QCOMPARE(window.workspace()->document()->project().surfaces.front().name(), info.name);
+            const QImage view3d = window.surfaceView()->grabImage();
+            const QImage development = window.developmentView()->grabImage();
+            QVERIFY2(coloursInCentre(view3d) > 8, info.name.c_str());
+            QVERIFY2(coloursInCentre(development) > 8, info.name.c_str());
+        }
+    }
+
+    void pickingAVertexSelectsItEverywhere() {
+        app::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.workspace()->newFromExample(QStringLiteral("sheet"), 3);
+        const QPoint at = window.surfaceView()->projectVertexToWidget(0, 5);
+        QTest::mouseClick(window.surfaceView()->glWidget(), Qt::LeftButton, {}, at);
+        const document::Pick expected{document::Pick::Kind::Vertex, 0, 5};
+        QVERIFY(window.workspace()->selection()->contains(expected));
+        QVERIFY(window.developmentView()->highlightedPicks().count(expected) == 1);
+        QVERIFY(window.propertiesPanel()->summaryText().contains("Vertex 5"));
+        QCOMPARE(window.propertiesPanel()->coordinateEditor(0)->value(), 100.0);
+    }
+
+    void patchTreeAndViewsShareTheSelection() {
+        app::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.workspace()->newFromExample(QStringLiteral("mixed"), 2);
+        app::PatchPanel* panel = window.patchPanel();
+        const QModelIndex face2 = panel->model()->indexOfFace(0, 2);
+        QVERIFY(face2.isValid());
+        panel->treeView()->selectionModel()->select(face2, QItemSelectionModel::ClearAndSelect |
+                                                               QItemSelectionModel::Rows);
+        const document::Pick pick{document::Pick::Kind::Face, 0, 2};
+        QVERIFY(window.workspace()->selection()->contains(pick));
+        QVERIFY(window.surfaceView()->highlightedPicks().count(pick) == 1);
+        window.workspace()->selection()->set({{document::Pick::Kind::Face, 0, 3}});
+        const auto rows = panel->treeView()->selectionModel()->selectedRows();
+        QCOMPARE(rows.size(), qsizetype(1));
+        QCOMPARE(panel->model()->entityAt(rows.front()).second, model::FaceId(3));
+    }
+
+    void saveAsThenOpenReproducesTheDocument() {
+        app::MainWindow window;
+        window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
+        const std::string original = io::encodeProject(window.workspace()->document()->project());
+        const QString path = m_dir.filePath("roundtrip.devsurf");
+        QVERIFY(window.workspace()->saveTo(path));
+        QVERIFY(window.windowTitle().contains("roundtrip.devsurf"));
+        window.workspace()->newFromExample(QStringLiteral("sheet"), 0);
+        QVERIFY(window.workspace()->open(path));
+        QCOMPARE(io::encodeProject(window.workspace()->document()->project()), original);
+        QVERIFY(window.workspace()->recentFiles().contains(QFileInfo(path).absoluteFilePath()));
+    }
+
+    void modifiedMarkerFollowsUndoAndRedo() {
+        app::MainWindow window;
+        window.workspace()->newFromExample(QStringLiteral("sheet"), 0);
+        document::Document* doc = window.workspace()->document();
+        QVERIFY(!window.isWindowModified());
+        const QString refusal = document::pushOrExplain(
+            *doc, document::MoveVerticesCommand::createTranslation(*doc, 0, {5}, {0, 0, 10}));
+        QVERIFY(refusal.isEmpty());
+        QVERIFY(window.isWindowModified());
+        QVERIFY(window.action("actionUndo")->text().contains("Move"));
+        window.action("actionUndo")->trigger();
+        QVERIFY(!window.isWindowModified());
+        window.action("actionRedo")->trigger();
+        QVERIFY(window.isWindowModified());
+        QVERIFY(window.workspace()->saveTo(m_dir.filePath("marker.devsurf")));
+        QVERIFY(!window.isWindowModified());
+    }
+
+    void editingACoordinatePushesAnUndoableMove() {
+        app::MainWindow window;
+        window.workspace()->newFromExample(QStringLiteral("sheet"), 0);
+        document::Document* doc = window.workspace()->document();
+        window.workspace()->selection()->set({{document::Pick::Kind::Vertex, 0, 5}});
+        const std::string before = io::encodeProject(doc->project());
+        window.propertiesPanel()->coordinateEditor(2)->setValue(25.0);
+        QCOMPARE(doc->undoStack()->count(), 1);
+        QCOMPARE(doc->project().surfaces[0].position(5).z, 25.0);
+        QVERIFY(doc->project().surfaces[0].validate().empty());
+        doc->undoStack()->undo();
+        QCOMPARE(io::encodeProject(doc->project()), before);
+        QCOMPARE(window.propertiesPanel()->coordinateEditor(2)->value(), 0.0);
+    }
+
+    void toolActionsFollowTheSelection() {
+        app::MainWindow window;
+        window.workspace()->newFromExample(QStringLiteral("sheet"), 0);
+        QAction* subdivide = window.action("actionSubdivide");
+        QAction* move = window.action("actionMoveRotate");
+        QVERIFY(!subdivide->isEnabled());
+        QVERIFY(!move->isEnabled());
+        window.workspace()->selection()->set({{document::Pick::Kind::Face, 0, 4}});
+        QVERIFY(subdivide->isEnabled());
+        window.workspace()->selection()->set({{document::Pick::Kind::Vertex, 0, 1}});
+        QVERIFY(move->isEnabled());
+        QVERIFY(!window.action("actionDelete")->isEnabled());
+        QVERIFY(!window.action("actionDelete")->toolTip().isEmpty());
+    }
+
+    void unsavedChangesPromptOnClose() {
+        app::MainWindow window;
+        window.show();
+        window.workspace()->newFromExample(QStringLiteral("sheet"), 0);
+        document::Document* doc = window.workspace()->document();
+        document::pushOrExplain(
+            *doc, document::MoveVerticesCommand::createTranslation(*doc, 0, {5}, {0, 0, 10}));
+        answerNextMessageBox(QMessageBox::Cancel);
+        QVERIFY(!window.close());
+        QVERIFY(window.isVisible());
+        answerNextMessageBox(QMessageBox::Discard);
+        QVERIFY(window.close());
+    }
+
+    void droppingAProjectFileOpensIt() {
+        const QString path = m_dir.filePath("dropped.devsurf");
+        io::saveProjectFile(model::makeExample("cylinder"), path);
+        app::MainWindow window;
+        window.show();
+        window.workspace()->newFromExample(QStringLiteral("sheet"), 0);
+        QMimeData mime;
+        mime.setUrls({QUrl::fromLocalFile(path)});
+        QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, {});
+        QApplication::sendEvent(&window, &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, {});
+        QApplication::sendEvent(&window, &drop);
+        QCOMPARE(window.workspace()->document()->project().surfaces.front().name(),
+                 std::string("cylinder"));
+    }
+
+    void damagedFileShowsADialogAndKeepsTheDocument() {
+        const QString path = m_dir.filePath("damaged.devsurf");
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("DEVSURF this is not a project");
+        file.close();
+        app::MainWindow window;
+        window.show();
+        window.workspace()->newFromExample(QStringLiteral("mixed"), 0);
+        const std::string before = io::encodeProject(window.workspace()->document()->project());
+        QString shown;
+        QTimer::singleShot(0, [&shown] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (box != nullptr) {
+                shown = box->text();
+                box->accept();
+            }
+        });
+        QVERIFY(!window.workspace()->open(path));
+        QVERIFY(shown.contains("damaged.devsurf"));
+        QCOMPARE(io::encodeProject(window.workspace()->document()->project()), before);
+    }
+
+    void germanTranslationCoversTheMenus() {
+        QTranslator translator;
+        QVERIFY(translator.load(QLocale(QLocale::German), QStringLiteral("devsurf"),
+                                QStringLiteral("_"), QStringLiteral(":/i18n")));
+        QApplication::installTranslator(&translator);
+        {
+            app::MainWindow window;
+            QStringList titles;
+            for (QAction* menu : window.menuBar()->actions()) {
+                titles << menu->text();
+            }
+            QCOMPARE(titles.join(','),
+                     QStringLiteral("&Datei,&Bearbeiten,&Ansicht,&Werkzeuge,&Hilfe"));
+            QCOMPARE(window.action("actionSave")->text(), QStringLiteral("&Speichern"));
+        }
+        QApplication::removeTranslator(&translator);
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstMainWindow);
+#include "tst_main_window.moc"

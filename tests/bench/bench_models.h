@@ -1,0 +1,36 @@
+#pragma once
+
+#include "model/composite_surface.h"
+
+#include <string>
+#include <vector>
+
+namespace devsurf::bench {
+
+// A row of the paper's Fig. 17 (Intel i5-3320M, after 10 iterations).
+struct PaperRow {
+    std::string figure;
+    int controlPoints = 0;
+    int strips = 0;
+    int variables = 0;
+    double flatnessMean = 0.0;
+    double flatnessMax = 0.0;
+    double secondsPerIteration = 0.0;
+};
+
+// A flat model matched to a Fig. 17 row by control points and strips.
+struct BenchModel {
+    std::string name;
+    model::CompositeSurface surface;
+    PaperRow paper;
+};
+
+// Two strips side by side between three parallel straight S-edges of `intervals` cubic C²
+// intervals each (Fig. 13: 36 control points for 9 intervals).
+model::CompositeSurface makeTwoStripSheet(int intervals);
+
+// The benchmark's models: Fig. 8, Fig. 13, Fig. 12 and a model of about 40,000 variables
+// (compared with Fig. 15a, the paper's row of that size). `names` selects (empty: all).
+std::vector<BenchModel> benchModels(const std::vector<std::string>& names = {});
+
+} // namespace devsurf::bench

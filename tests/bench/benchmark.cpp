@@ -1,0 +1,353 @@
+#include "benchmark.h"
+
+#include "bench_models.h"
+#include "ceres_peer.h"
+
+#include "solver/core/blas_info.h"
+#include "solver/core/guided_projection.h"
+#include "solver/formulation/perturbation.h"
+#include "solver/formulation/surface_formulation.h"
+#include "solver/quality/quality_measures.h"
+
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+#include <vector>
+
+namespace devsurf::bench {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> values) {
+    if (values.empty()) {
+        return 0.0;
+    }
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+std::string number(double value) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.6g", value);
+    return buffer;
+}
+
+std::string quoted(const std::string& text) {
+    std::string out = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+        }
+        out += c >= 0 && c < 0x20 ? ' ' : c;
+    }
+    return out + "\"";
+}
+
+// Single-core DGEMM rate of the BLAS the process uses (the one CHOLMOD calls), in GFLOP/s:
+// the best of several n×n products, the ceiling for a supernodal factorisation's flops.
+double measureDgemmGflops() {
+    using Dgemm = void (*)(const char*, const char*, const int*, const int*, const int*,
+                           const double*, const double*, const int*, const double*, const int*,
+                           const double*, double*, const int*);
+    auto dgemm = reinterpret_cast<Dgemm>(dlsym(RTLD_DEFAULT, "dgemm_"));
+    if (!dgemm) {
+        return 0.0;
+    }
+    const int n = 512;
+    std::vector<double> a(static_cast<std::size_t>(n) * n, 0.5);
+    std::vector<double> b(a.size(), 0.25);
+    std::vector<double> c(a.size(), 0.0);
+    const double one = 1.0;
+    const double zero = 0.0;
+    double best = 0.0;
+    for (int repeat = 0; repeat < 8; ++repeat) {
+        const auto start = Clock::now();
+        dgemm("N", "N", &n, &n, &n, &one, a.data(), &n, b.data(), &n, &zero, c.data(), &n);
+        const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        best = std::max(best, 2.0 * n * n * static_cast<double>(n) / seconds * 1e-9);
+    }
+    return best;
+}
+
+struct Timing {
+    double assembly = 0.0;
+    double factorize = 0.0;
+    double solve = 0.0;
+    double total = 0.0;
+};
+
+// Medians per phase over iterations 2..N (the first carries cold caches).
+Timing medianTiming(const solver::Summary& summary) {
+    std::vector<double> a, f, s, t;
+    for (std::size_t i = 1; i < summary.iterations.size(); ++i) {
+        const solver::IterationStats& it = summary.iterations[i];
+        a.push_back(it.assemblyMs);
+        f.push_back(it.factorizationMs);
+        s.push_back(it.solveMs);
+        t.push_back(it.assemblyMs + it.factorizationMs + it.solveMs);
+    }
+    return {median(a), median(f), median(s), median(t)};
+}
+
+struct ModelResult {
+    std::string name;
+    PaperRow paper;
+    std::size_t controlPoints = 0;
+    int strips = 0;
+    int variables = 0;
+    int constraints = 0;
+    long long jacobianNonZeros = 0;
+    double factorNonZeros = 0.0;
+    double flops = 0.0;
+    Timing ours;
+    double oursTotalMs = 0.0;
+    double finalResidual = 0.0;
+    double gflops = 0.0;
+    double lowerBoundMs = 0.0;
+    solver::QualityMeasures quality;
+    Timing baseline;
+    CeresResult ceres;
+    bool auxiliaryMeasured = false;
+    int auxiliaryVariables = 0;
+    Timing auxiliary;
+    double auxiliaryDetMax = 0.0;
+    std::string status;
+};
+
+solver::Summary solveFrom(const solver::Problem& problem, std::vector<double>& x,
+                          const BenchmarkOptions& options, bool baseline) {
+    solver::Options o;
+    o.maxIterations = options.iterations;
+    o.eps2 = options.eps2;
+    o.baseline = baseline;
+    if (options.automaticFactorization) {
+        o.factorization = solver::FactorizationMethod::Automatic;
+    }
+    solver::GuidedProjection projection;
+    return projection.solve(problem, x, o);
+}
+
+ModelResult runModel(const BenchModel& model, const BenchmarkOptions& options, double dgemmGflops) {
+    auto log = [&options](const std::string& line) {
+        if (options.log) {
+            options.log(line);
+        }
+    };
+    ModelResult r;
+    r.name = model.name;
+    r.paper = model.paper;
+    model::CompositeSurface surface = model.surface;
+    r.controlPoints = surface.controlPointCount();
+    const std::vector<model::VertexId> anchors = solver::spreadBoundaryVertices(surface, 3);
+    solver::perturbSurface(surface, options.noise * solver::surfaceDiameter(surface), options.seed,
+                           anchors);
+    solver::FormulationOptions formulationOptions;
+    for (model::VertexId v : anchors) {
+        formulationOptions.handles.push_back({v, true, {}});
+    }
+    const solver::SurfaceFormulation formulation(surface, formulationOptions);
+    r.strips = formulation.stripCount() + formulation.coneCount();
+    const std::vector<double> start = formulation.initialState();
+
+    // Ours: the best of three runs (the machine is shared), each from the same start.
+    solver::Summary best;
+    std::vector<double> bestState;
+    for (int run = 0; run < 3; ++run) {
+        std::vector<double> x = start;
+        solver::Summary summary = solveFrom(formulation.problem(), x, options, false);
+        if (run == 0 || summary.totalMs < best.totalMs) {
+            best = summary;
+            bestState = x;
+        }
+    }
+    r.status = solver::toString(best.status);
+    r.variables = best.variables;
+    r.constraints = best.rows;
+    r.jacobianNonZeros = best.jacobianNonZeros;
+    if (!best.iterations.empty()) {
+        r.flops = best.iterations.back().factorFlops;
+        r.factorNonZeros = best.iterations.back().factorNonZeros;
+    }
+    r.ours = medianTiming(best);
+    r.oursTotalMs = best.totalMs;
+    r.finalResidual = best.finalMaxConstraintResidual;
+    r.gflops = r.ours.factorize > 0.0 ? r.flops / (r.ours.factorize * 1e6) : 0.0;
+    r.lowerBoundMs = dgemmGflops > 0.0 ? r.flops / (dgemmGflops * 1e6) : 0.0;
+    model::CompositeSurface result = surface;
+    std::string error;
+    if (formulation.writeBack(bestState, result, &error)) {
+        r.quality = solver::measureQuality(result);
+    } else {
+        r.status = error;
+    }
+    log(r.name + ": ours " + number(r.ours.total) + " ms/iteration, residual " +
+        number(r.finalResidual));
+
+    std::vector<double> x = start;
+    const solver::Summary baseline = solveFrom(formulation.problem(), x, options, true);
+    r.baseline = medianTiming(baseline);
+    log(r.name + ": baseline " + number(r.baseline.total) + " ms/iteration");
+
+    if (options.compareAuxiliary) {
+        solver::FormulationOptions auxiliaryOptions = formulationOptions;
+        auxiliaryOptions.auxiliaryDerivativePoints = true;
+        const solver::SurfaceFormulation auxiliary(surface, auxiliaryOptions);
+        std::vector<double> y = auxiliary.initialState();
+        const solver::Summary summary = solveFrom(auxiliary.problem(), y, options, false);
+        r.auxiliaryMeasured = true;
+        r.auxiliaryVariables = summary.variables;
+        r.auxiliary = medianTiming(summary);
+        model::CompositeSurface auxiliaryResult = surface;
+        if (auxiliary.writeBack(y, auxiliaryResult)) {
+            r.auxiliaryDetMax = solver::measureQuality(auxiliaryResult).developabilityMax;
+        }
+        log(r.name + ": auxiliary variant " + number(r.auxiliary.total) + " ms/iteration");
+    }
+
+    if (options.runCeres) {
+        r.ceres = runCeres(formulation.problem(), start, r.finalResidual, options.ceresCapSeconds);
+        log(r.name + ": Ceres " + number(r.ceres.milliseconds) + " ms" +
+            (r.ceres.reached ? "" : " (did not reach the residual: " + r.ceres.message + ")"));
+    }
+    return r;
+}
+
+double ratio(double a, double b) {
+    return b > 0.0 ? a / b : 0.0;
+}
+
+void writeJson(const std::vector<ModelResult>& results, const solver::BlasInfo& blas, double dgemm,
+               const BenchmarkOptions& options, std::ostream& out) {
+    out << "{\n  \"blas\": " << quoted(blas.describe())
+        << ",\n  \"dgemm_gflops\": " << number(dgemm)
+        << ",\n  \"iterations\": " << options.iterations
+        << ",\n  \"noise_fraction_of_diameter\": " << number(options.noise)
+        << ",\n  \"seed\": " << options.seed << ",\n  \"eps2\": " << number(options.eps2)
+        << ",\n  \"ceres_available\": " << (ceresAvailable() ? "true" : "false")
+        << ",\n  \"models\": [";
+    for (std::size_t i = 0; i < results.size(); ++i) {
+        const ModelResult& r = results[i];
+        const double paperMs = 1000.0 * r.paper.secondsPerIteration;
+        out << (i == 0 ? "\n" : ",\n") << "    {\n"
+            << "      \"model\": " << quoted(r.name) << ",\n"
+            << "      \"status\": " << quoted(r.status) << ",\n"
+            << "      \"control_points\": " << r.controlPoints << ",\n"
+            << "      \"strips\": " << r.strips << ",\n"
+            << "      \"variables\": " << r.variables << ",\n"
+            << "      \"constraints\": " << r.constraints << ",\n"
+            << "      \"jacobian_nnz\": " << r.jacobianNonZeros << ",\n"
+            << "      \"factor_nnz\": " << number(r.factorNonZeros) << ",\n"
+            << "      \"flops\": " << number(r.flops) << ",\n"
+            << "      \"ms_per_iter\": { \"assembly\": " << number(r.ours.assembly)
+            << ", \"factorize\": " << number(r.ours.factorize)
+            << ", \"solve\": " << number(r.ours.solve) << ", \"total\": " << number(r.ours.total)
+            << " },\n"
+            << "      \"factorize_gflops\": " << number(r.gflops) << ",\n"
+            << "      \"lower_bound_ms\": " << number(r.lowerBoundMs) << ",\n"
+            << "      \"factorize_over_lower_bound\": "
+            << number(ratio(r.ours.factorize, r.lowerBoundMs)) << ",\n"
+            << "      \"paper_figure\": " << quoted(r.paper.figure) << ",\n"
+            << "      \"paper_control_points\": " << r.paper.controlPoints << ",\n"
+            << "      \"paper_strips\": " << r.paper.strips << ",\n"
+            << "      \"paper_variables\": " << r.paper.variables << ",\n"
+            << "      \"paper_s_per_iter\": " << number(r.paper.secondsPerIteration) << ",\n"
+            << "      \"paper_over_ours\": " << number(ratio(paperMs, r.ours.total)) << ",\n"
+            << "      \"baseline_ms_per_iter\": " << number(r.baseline.total) << ",\n"
+            << "      \"baseline_over_ours\": " << number(ratio(r.baseline.total, r.ours.total))
+            << ",\n"
+            << "      \"final_max_constraint_residual\": " << number(r.finalResidual) << ",\n"
+            << "      \"ours_ms_to_residual\": " << number(r.oursTotalMs) << ",\n"
+            << "      \"ceres_ms_to_residual\": "
+            << (r.ceres.available ? number(r.ceres.milliseconds) : "null") << ",\n"
+            << "      \"ceres_reached_residual\": " << (r.ceres.reached ? "true" : "false") << ",\n"
+            << "      \"ceres_hit_time_cap\": " << (r.ceres.hitTimeCap ? "true" : "false") << ",\n"
+            << "      \"ceres_iterations\": " << r.ceres.iterations << ",\n"
+            << "      \"ceres_final_residual\": " << number(r.ceres.finalResidual) << ",\n"
+            << "      \"ceres_over_ours\": " << number(ratio(r.ceres.milliseconds, r.oursTotalMs))
+            << ",\n"
+            << "      \"ours_over_ceres\": " << number(ratio(r.oursTotalMs, r.ceres.milliseconds))
+            << ",\n"
+            << "      \"ours_over_baseline\": " << number(ratio(r.ours.total, r.baseline.total))
+            << ",\n";
+        if (r.auxiliaryMeasured) {
+            out << "      \"auxiliary_variables\": " << r.auxiliaryVariables << ",\n"
+                << "      \"auxiliary_ms_per_iter\": " << number(r.auxiliary.total) << ",\n"
+                << "      \"auxiliary_det_residual_max\": " << number(r.auxiliaryDetMax) << ",\n";
+        }
+        out << "      \"det_residual_max\": " << number(r.quality.developabilityMax) << ",\n"
+            << "      \"det_residual_mean\": " << number(r.quality.developabilityMean) << ",\n"
+            << "      \"flatness_mean\": " << number(r.quality.flatnessMean) << ",\n"
+            << "      \"flatness_max\": " << number(r.quality.flatnessMax) << ",\n"
+            << "      \"paper_flatness_mean\": " << number(r.paper.flatnessMean) << ",\n"
+            << "      \"paper_flatness_max\": " << number(r.paper.flatnessMax) << ",\n"
+            << "      \"gauss_curvature_mean\": " << number(r.quality.curvatureMean) << ",\n"
+            << "      \"gauss_curvature_max\": " << number(r.quality.curvatureMax) << "\n"
+            << "    }";
+    }
+    out << "\n  ]\n}\n";
+}
+
+void writeTable(const std::vector<ModelResult>& results, const solver::BlasInfo& blas, double dgemm,
+                std::ostream& out) {
+    out << "BLAS: " << blas.describe() << "; single-core DGEMM " << number(dgemm) << " GFLOP/s\n";
+    char line[512];
+    std::snprintf(line, sizeof line, "%-18s %7s %7s %9s %9s %9s %9s %9s %9s %9s %9s\n", "model",
+                  "vars", "rows", "ours ms", "fact ms", "bound ms", "paper ms", "base ms",
+                  "ours→res", "ceres ms", "det max");
+    out << line;
+    for (const ModelResult& r : results) {
+        std::snprintf(line, sizeof line,
+                      "%-18s %7d %7d %9.3f %9.3f %9.3f %9.0f %9.3f %9.1f %9.1f %9.2e\n",
+                      r.name.c_str(), r.variables, r.constraints, r.ours.total, r.ours.factorize,
+                      r.lowerBoundMs, 1000.0 * r.paper.secondsPerIteration, r.baseline.total,
+                      r.oursTotalMs, r.ceres.milliseconds, r.quality.developabilityMax);
+        out << line;
+    }
+    if (!ceresAvailable()) {
+        out << runCeres(solver::Problem(), {}, 0.0, 0.0).message << "\n";
+    }
+}
+
+} // namespace
+
+bool ceresAvailable() {
+#ifdef DEVSURF_HAVE_CERES
+    return true;
+#else
+    return false;
+#endif
+}
+
+int runBenchmark(const BenchmarkOptions& options, std::ostream& out) {
+    const std::vector<BenchModel> models = benchModels(options.models);
+    if (models.empty()) {
+        return 1;
+    }
+    BenchmarkOptions effective = options;
+    if (!ceresAvailable()) {
+        effective.runCeres = false;
+        if (options.log) {
+            options.log(runCeres(solver::Problem(), {}, 0.0, 0.0).message);
+        }
+    }
+    const solver::BlasInfo blas = solver::detectBlas();
+    const double dgemm = measureDgemmGflops();
+    std::vector<ModelResult> results;
+    for (const BenchModel& model : models) {
+        results.push_back(runModel(model, effective, dgemm));
+    }
+    if (options.json) {
+        writeJson(results, blas, dgemm, effective, out);
+    } else {
+        writeTable(results, blas, dgemm, out);
+    }
+    return 0;
+}
+
+} // namespace devsurf::bench

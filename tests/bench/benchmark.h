@@ -1,0 +1,36 @@
+#pragma once
+
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace devsurf::bench {
+
+struct BenchmarkOptions {
+    bool json = false;
+    std::vector<std::string> models; // empty: all
+    int iterations = 10;
+    double noise = 0.01;       // σ as a fraction of the model's diameter
+    unsigned seed = 20150801u; // fixed: every run starts from the same perturbed models
+    double eps2 = 1e-3;
+    // CHOLMOD's own choice between supernodal and simplicial (measured: simplicial wins on the
+    // small models, supernodal on the large one).
+    bool automaticFactorization = true;
+    double ceresCapSeconds = 60.0;
+    bool runCeres = true;
+    bool compareAuxiliary = true; // also time the auxiliary-variable formulation
+    // Progress lines (to stderr in the command-line tools).
+    std::function<void(const std::string&)> log;
+};
+
+// The solver benchmark (tests/bench): for each model, 10 iterations from the perturbed flat
+// model with three boundary vertices fixed; timing split, flops, DGEMM bound, quality, the
+// rebuild baseline and Ceres on the same start. Writes JSON or a table to `out`. Returns 0 on
+// success.
+int runBenchmark(const BenchmarkOptions& options, std::ostream& out);
+
+// True if the Ceres peer was compiled in.
+bool ceresAvailable();
+
+} // namespace devsurf::bench

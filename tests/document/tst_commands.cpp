@@ -1,0 +1,299 @@
+#include "document_test_support.h"
+#include "model/document/commands/apply_surface_command.h"
+#include "model/document/commands/move_vertices_command.h"
+#include "model/document/commands/refine_spline_class_command.h"
+#include "model/document/commands/relabel_edge_command.h"
+#include "model/document/commands/split_at_ruling_command.h"
+#include "model/document/commands/subdivide_strip_command.h"
+#include "model/document/selection.h"
+#include "model/examples.h"
+#include "model/strip.h"
+#include "model/topology_edits.h"
+#include "test_registry.h"
+
+#include <QSignalSpy>
+#include <QTest>
+#include <QUndoStack>
+
+using namespace devsurf::document;
+using namespace devsurf::model;
+using devsurf::test::bytesOf;
+using devsurf::test::firstProblem;
+
+namespace {
+
+const char* const kExamples[] = {"sheet", "annulus", "cylinder", "mixed"};
+
+FaceId firstFaceOfType(const CompositeSurface& s, FaceType type) {
+    for (const auto& [id, loop] : s.faces()) {
+        if (s.faceType(id) == type) {
+            return id;
+        }
+    }
+    return kInvalidId;
+}
+
+// A relabelling the surface accepts: one edge if any works, else a whole spline class to R
+// (which turns the strips along it into planar faces).
+CommandOrError someRelabel(Document& doc) {
+    const CompositeSurface& s = doc.surface(0);
+    for (const auto& [id, record] : s.edges()) {
+        const EdgeLabel flipped = record.isSpline() ? EdgeLabel::Ruling : EdgeLabel::Spline;
+        CommandOrError result = RelabelEdgeCommand::create(doc, 0, id, flipped);
+        if (result) {
+            return result;
+        }
+    }
+    std::vector<std::pair<EdgeId, EdgeLabel>> labels;
+    const auto classes = s.splineClasses();
+    for (EdgeId e : classes.front()) {
+        labels.emplace_back(e, EdgeLabel::Ruling);
+    }
+    return RelabelEdgeCommand::create(doc, 0, labels);
+}
+
+} // namespace
+
+class TstCommands : public QObject {
+    Q_OBJECT
+
+    // Pushes the command, then undo and redo, comparing the saved bytes each time.
+    void redoUndoRedo(Document& doc, CommandOrError result, const char* what) {
+        QVERIFY2(result, qPrintable(QString("%1 refused: %2").arg(what, result.error())));
+        QVERIFY(!result.command()->text().isEmpty());
+        QSignalSpy spy(&doc, &Document::changed);
+        const std::string original = bytesOf(doc);
+        const quint64 revision0 = doc.revision();
+        const int count = doc.undoStack()->count();
+        QVERIFY(pushOrExplain(doc, std::move(result)).isEmpty());
+        QCOMPARE(doc.undoStack()->count(), count + 1);
+        const std::string edited = bytesOf(doc);
+        QVERIFY2(edited != original, what);
+        QCOMPARE(spy.count(), 1);
+        const quint64 revision1 = doc.revision();
+        QVERIFY(revision1 > revision0);
+        for (const CompositeSurface& s : doc.project().surfaces) {
+            QVERIFY2(firstProblem(s).empty(), firstProblem(s).c_str());
+        }
+        doc.undoStack()->undo();
+        QVERIFY2(bytesOf(doc) == original, what);
+        QCOMPARE(spy.count(), 2);
+        QVERIFY(doc.revision() > revision1);
+        const quint64 revision2 = doc.revision();
+        doc.undoStack()->redo();
+        QVERIFY2(bytesOf(doc) == edited, what);
+        QCOMPARE(spy.count(), 3);
+        QVERIFY(doc.revision() > revision2);
+        QVERIFY(doc.project() == devsurf::io::decodeProject(edited));
+    }
+
+private slots:
+    void documentBasics() {
+        Document doc;
+        QSignalSpy changed(&doc, &Document::changed);
+        QSignalSpy reset(&doc, &Document::projectReset);
+        QSignalSpy modified(&doc, &Document::modifiedChanged);
+        doc.resetProject(makeExample("mixed"), "/tmp/x.devsurf");
+        QCOMPARE(reset.count(), 1);
+        QCOMPARE(changed.count(), 1);
+        QCOMPARE(changed.takeFirst().at(0).value<Changes>(), Changes(Change::Everything));
+        QCOMPARE(doc.surfaceCount(), 1);
+        QCOMPARE(doc.filePath(), QString("/tmp/x.devsurf"));
+        QVERIFY(!doc.isModified());
+        QVERIFY(pushOrExplain(doc, MoveVerticesCommand::createTranslation(doc, 0, {0}, {1, 0, 0}))
+                    .isEmpty());
+        QCOMPARE(changed.takeFirst().at(0).value<Changes>(), Changes(Change::Geometry));
+        QVERIFY(doc.isModified());
+        QVERIFY(modified.count() >= 1);
+        QCOMPARE(modified.last().at(0).toBool(), true);
+        doc.markSaved();
+        QVERIFY(!doc.isModified());
+        doc.undoStack()->undo();
+        QVERIFY(doc.isModified());
+        // Unknown surface: refused.
+        const CommandOrError refused =
+            MoveVerticesCommand::createTranslation(doc, 3, {0}, {1, 0, 0});
+        QVERIFY(refused.isRefused());
+        QVERIFY(!refused.error().isEmpty());
+    }
+
+    void selectionIsInterfaceState() {
+        Selection selection;
+        QSignalSpy spy(&selection, &Selection::selectionChanged);
+        selection.add({Pick::Kind::Vertex, 0, 3});
+        selection.add({Pick::Kind::Vertex, 0, 3});
+        QCOMPARE(spy.count(), 1);
+        selection.toggle({Pick::Kind::Face, 0, 1});
+        QCOMPARE(selection.picks().size(), std::size_t(2));
+        selection.prune([](const Pick& p) { return p.kind == Pick::Kind::Face; });
+        QCOMPARE(selection.picks().size(), std::size_t(1));
+        QVERIFY(selection.contains({Pick::Kind::Face, 0, 1}));
+        selection.clear();
+        QVERIFY(selection.isEmpty());
+        QCOMPARE(spy.count(), 4);
+    }
+
+    void everyCommandOnEveryExample() {
+        for (const char* name : kExamples) {
+            Document doc;
+            doc.resetProject(makeExample(name));
+            const CompositeSurface& s = doc.surface(0);
+            redoUndoRedo(doc, someRelabel(doc), "relabel");
+            redoUndoRedo(
+                doc,
+                SubdivideStripCommand::create(doc, 0, firstFaceOfType(s, FaceType::StripSRSR), 0.3),
+                "subdivide");
+            for (FaceType type : {FaceType::StripSRSR, FaceType::StripSRS, FaceType::ConeSRR}) {
+                const FaceId face = firstFaceOfType(doc.surface(0), type);
+                if (face != kInvalidId) {
+                    redoUndoRedo(doc, SplitAtRulingCommand::create(doc, 0, face, 1), "split");
+                }
+            }
+            const EdgeId spline = doc.surface(0).splineClasses().back().front();
+            redoUndoRedo(doc, RefineSplineClassCommand::create(doc, 0, spline), "refine");
+            const VertexId v = doc.surface(0).vertices().begin()->first;
+            redoUndoRedo(doc, MoveVerticesCommand::createTranslation(doc, 0, {v, v + 1}, {1, 2, 3}),
+                         "translate");
+            redoUndoRedo(
+                doc, MoveVerticesCommand::createRotation(doc, 0, {v}, {0, 0, 0}, {0, 1, 1}, 0.2),
+                "rotate");
+            CompositeSurface moved =
+                moveVertices(doc.surface(0), {v}, RigidMotion::translationBy({0, 0, 5}));
+            redoUndoRedo(doc, ApplySurfaceCommand::create(doc, 0, moved, "Solve"), "apply");
+            // Undo everything: back to the example.
+            while (doc.undoStack()->canUndo()) {
+                doc.undoStack()->undo();
+            }
+            QVERIFY(bytesOf(doc) == devsurf::io::encodeProject(makeExample(name)));
+        }
+    }
+
+    void splitNeedsBreakpointsAndRefineProvidesThem() {
+        Document doc;
+        doc.resetProject(makeExample("mixed", 1));
+        const FaceId strip = firstFaceOfType(doc.surface(0), FaceType::StripSRSR);
+        const CommandOrError refused = SplitAtRulingCommand::create(doc, 0, strip, 1);
+        QVERIFY(refused.isRefused());
+        QVERIFY(refused.error().contains("refine"));
+        QCOMPARE(SplitAtRulingCommand::nearestBreakpoint(doc.surface(0), strip, 0.4),
+                 std::make_pair(0, 1));
+        const EdgeId a = stripOfFace(doc.surface(0), strip).aSide.edge;
+        QVERIFY(pushOrExplain(doc, RefineSplineClassCommand::create(doc, 0, a)).isEmpty());
+        QCOMPARE(doc.undoStack()->text(0), QString("Refine curves"));
+        QCOMPARE(SplitAtRulingCommand::nearestBreakpoint(doc.surface(0), strip, 0.4),
+                 std::make_pair(1, 2));
+        QVERIFY(pushOrExplain(doc, SplitAtRulingCommand::create(doc, 0, strip, 1)).isEmpty());
+        QCOMPARE(doc.undoStack()->count(), 2);
+    }
+
+    void consecutiveMovesMerge() {
+        Document doc;
+        doc.resetProject(makeExample("annulus", 2));
+        const std::string original = bytesOf(doc);
+        const std::set<VertexId> vertices{1, 2, 5};
+        for (int i = 0; i < 5; ++i) {
+            QVERIFY(pushOrExplain(
+                        doc, MoveVerticesCommand::createTranslation(doc, 0, vertices, {1, 0, 0.5}))
+                        .isEmpty());
+        }
+        QVERIFY(pushOrExplain(doc, MoveVerticesCommand::createRotation(doc, 0, vertices, {0, 0, 0},
+                                                                       {0, 0, 1}, 0.1))
+                    .isEmpty());
+        QCOMPARE(doc.undoStack()->count(), 1);
+        // The merged step ends where the last move ended: x moved 5 times, then the rotation.
+        const Vec3 start = makeExample("annulus", 2).surfaces[0].position(1);
+        const Vec3 translated = start + Vec3(5, 0, 2.5);
+        const Vec3 expected(std::cos(0.1) * translated.x - std::sin(0.1) * translated.y,
+                            std::sin(0.1) * translated.x + std::cos(0.1) * translated.y,
+                            translated.z);
+        QVERIFY(distance(doc.surface(0).position(1), expected) < 1e-9);
+        const std::string moved = bytesOf(doc);
+        // Another vertex set starts a new step.
+        QVERIFY(pushOrExplain(doc, MoveVerticesCommand::createTranslation(doc, 0, {1}, {0, 1, 0}))
+                    .isEmpty());
+        QCOMPARE(doc.undoStack()->count(), 2);
+        doc.undoStack()->undo();
+        QVERIFY(bytesOf(doc) == moved);
+        doc.undoStack()->undo();
+        QVERIFY(bytesOf(doc) == original);
+        QVERIFY(!doc.undoStack()->canUndo());
+    }
+
+    void solverResultsOfOneDragMerge() {
+        Document doc;
+        doc.resetProject(makeExample("sheet", 2));
+        const std::string original = bytesOf(doc);
+        for (int i = 1; i <= 3; ++i) {
+            CompositeSurface solved =
+                moveVertices(doc.surface(0), {4}, RigidMotion::translationBy({0, 0, 1.0 * i}));
+            QVERIFY(pushOrExplain(doc, ApplySurfaceCommand::create(doc, 0, solved, "Drag vertex",
+                                                                   Change::Geometry, 7))
+                        .isEmpty());
+        }
+        QCOMPARE(doc.undoStack()->count(), 1);
+        QCOMPARE(doc.surface(0).position(4).z, 6.0);
+        // Without a merge key every result is its own step.
+        CompositeSurface solved = doc.surface(0);
+        solved.moveVertex(0, {0, 0, 1});
+        QVERIFY(pushOrExplain(doc, ApplySurfaceCommand::create(doc, 0, solved, "Solve")).isEmpty());
+        QCOMPARE(doc.undoStack()->count(), 2);
+        doc.undoStack()->undo();
+        doc.undoStack()->undo();
+        QVERIFY(bytesOf(doc) == original);
+        // An invalid result is refused.
+        CompositeSurface broken = doc.surface(0);
+        broken.moveVertex(0, {std::nan(""), 0, 0});
+        QVERIFY(ApplySurfaceCommand::create(doc, 0, broken, "Solve").isRefused());
+    }
+
+    void invalidRelabelIsRefused() {
+        for (const char* name : kExamples) {
+            Document doc;
+            doc.resetProject(makeExample(name));
+            QSignalSpy spy(&doc, &Document::changed);
+            const std::string original = bytesOf(doc);
+            const quint64 revision = doc.revision();
+            const CompositeSurface& s = doc.surface(0);
+            // An S-edge of an SRSR strip cannot become R: the strip would be labelled RRSR.
+            const FaceId strip = firstFaceOfType(s, FaceType::StripSRSR);
+            const EdgeId edge = stripOfFace(s, strip).aSide.edge;
+            const CommandOrError result =
+                RelabelEdgeCommand::create(doc, 0, edge, EdgeLabel::Ruling);
+            QVERIFY(result.isRefused());
+            QVERIFY2(result.error().contains(QString("face %1").arg(strip)) ||
+                         result.error().contains("face "),
+                     qPrintable(result.error()));
+            QVERIFY(!pushOrExplain(doc, RelabelEdgeCommand::create(doc, 0, edge, EdgeLabel::Ruling))
+                         .isEmpty());
+            // Relabelling to the label it has is refused too.
+            QVERIFY(RelabelEdgeCommand::create(doc, 0, edge, EdgeLabel::Spline).isRefused());
+            QVERIFY(bytesOf(doc) == original);
+            QCOMPARE(doc.undoStack()->count(), 0);
+            QCOMPARE(spy.count(), 0);
+            QCOMPARE(doc.revision(), revision);
+        }
+    }
+
+    void otherRefusalsLeaveTheDocumentUntouched() {
+        Document doc;
+        doc.resetProject(makeExample("mixed"));
+        const std::string original = bytesOf(doc);
+        const CompositeSurface& s = doc.surface(0);
+        const FaceId cone = firstFaceOfType(s, FaceType::ConeSRR);
+        const QString message =
+            pushOrExplain(doc, SubdivideStripCommand::create(doc, 0, cone, 0.5));
+        QVERIFY(message.contains(QString("face %1").arg(cone)));
+        QVERIFY(!pushOrExplain(doc, SplitAtRulingCommand::create(doc, 0, 0, 1)).isEmpty());
+        QVERIFY(!pushOrExplain(doc, RefineSplineClassCommand::create(doc, 0, 0)).isEmpty());
+        QVERIFY(!pushOrExplain(doc, MoveVerticesCommand::createTranslation(doc, 0, {}, {1, 0, 0}))
+                     .isEmpty());
+        QVERIFY(!pushOrExplain(
+                     doc, MoveVerticesCommand::createRotation(doc, 0, {0}, {0, 0, 0}, {0, 0, 0}, 1))
+                     .isEmpty());
+        QVERIFY(bytesOf(doc) == original);
+        QCOMPARE(doc.undoStack()->count(), 0);
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstCommands);
+#include "tst_commands.moc"

@@ -1,0 +1,27 @@
+#pragma once
+
+#include "scene_view.h"
+
+namespace devsurf::views {
+
+// The development view: the unfolded surfaces (model::unfoldSampledMesh) side by side in the
+// plane, seen from above with a parallel projection; the outline, creases and rulings drawn
+// over pale patch colours. Pan (left or middle drag) and zoom (right drag, wheel) only. The
+// selection is the same as the 3D view's: picking here selects the same document::Pick.
+class DevelopmentView : public SceneView {
+    Q_OBJECT
+public:
+    DevelopmentView(document::Document* document, document::Selection* selection,
+                    QWidget* parent = nullptr);
+    ~DevelopmentView() override;
+
+    bool showVertices() const { return m_showVertices; }
+
+public slots:
+    void setShowVertices(bool show);
+
+private:
+    bool m_showVertices = true;
+};
+
+} // namespace devsurf::views

@@ -1,0 +1,488 @@
+#include "scene_renderer.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCellPicker.h>
+#include <vtkDoubleArray.h>
+#include <vtkIdList.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace devsurf::views {
+
+using document::Pick;
+using model::Vec3;
+
+namespace {
+
+// Orange: the selection, in both views.
+constexpr double kSelectionRgb[3] = {1.0, 0.45, 0.0};
+
+vtkSmartPointer<vtkPoints> makePoints(const std::vector<Vec3>& points) {
+    auto result = vtkSmartPointer<vtkPoints>::New();
+    result->SetDataTypeToDouble();
+    result->SetNumberOfPoints(static_cast<vtkIdType>(points.size()));
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        result->SetPoint(static_cast<vtkIdType>(i), points[i].x, points[i].y, points[i].z);
+    }
+    return result;
+}
+
+vtkSmartPointer<vtkPolyData> polylineData(const std::vector<std::vector<Vec3>>& lines) {
+    std::vector<Vec3> points;
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    for (const auto& line : lines) {
+        if (line.size() < 2) {
+            continue;
+        }
+        cells->InsertNextCell(static_cast<vtkIdType>(line.size()));
+        for (const Vec3& p : line) {
+            cells->InsertCellPoint(static_cast<vtkIdType>(points.size()));
+            points.push_back(p);
+        }
+    }
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(makePoints(points));
+    data->SetLines(cells);
+    return data;
+}
+
+vtkSmartPointer<vtkPolyData> segmentData(const std::vector<std::pair<Vec3, Vec3>>& segments) {
+    std::vector<std::vector<Vec3>> lines;
+    lines.reserve(segments.size());
+    for (const auto& [a, b] : segments) {
+        lines.push_back({a, b});
+    }
+    return polylineData(lines);
+}
+
+vtkSmartPointer<vtkPolyData> pointData(const std::vector<Vec3>& points) {
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const vtkIdType id = static_cast<vtkIdType>(i);
+        cells->InsertNextCell(1, &id);
+    }
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(makePoints(points));
+    data->SetVerts(cells);
+    return data;
+}
+
+double distanceToSegment(double px, double py, const Vec3& a, const Vec3& b, double* t) {
+    const double ux = b.x - a.x;
+    const double uy = b.y - a.y;
+    const double len2 = ux * ux + uy * uy;
+    double s = len2 > 0.0 ? ((px - a.x) * ux + (py - a.y) * uy) / len2 : 0.0;
+    s = std::clamp(s, 0.0, 1.0);
+    *t = s;
+    return std::hypot(a.x + s * ux - px, a.y + s * uy - py);
+}
+
+} // namespace
+
+struct SceneRenderer::Layer {
+    vtkSmartPointer<vtkPolyData> data = vtkSmartPointer<vtkPolyData>::New();
+    vtkSmartPointer<vtkPolyDataMapper> mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    vtkSmartPointer<vtkActor> actor = vtkSmartPointer<vtkActor>::New();
+
+    // Takes fresh's content; with geometryOnly and an unchanged structure only the points
+    // (and normals) move, so cells, colours and the GPU index buffers stay.
+    void assign(vtkPolyData* fresh, bool geometryOnly) {
+        const bool sameStructure = data->GetNumberOfPoints() == fresh->GetNumberOfPoints() &&
+                                   data->GetNumberOfCells() == fresh->GetNumberOfCells() &&
+                                   data->GetNumberOfPoints() > 0;
+        if (geometryOnly && sameStructure) {
+            data->GetPoints()->DeepCopy(fresh->GetPoints());
+            data->GetPoints()->Modified();
+            if (vtkDataArray* normals = fresh->GetPointData()->GetNormals()) {
+                data->GetPointData()->SetNormals(normals);
+            }
+            data->Modified();
+        } else {
+            data->ShallowCopy(fresh);
+        }
+    }
+};
+
+SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
+    : m_mode(mode), m_renderer(renderer), m_picker(vtkSmartPointer<vtkCellPicker>::New()) {
+    // Curves lie on the surface: draw lines and points in front of coincident polygons.
+    vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();
+
+    const bool spatial = mode == Mode::Spatial;
+    m_faces = &addLayer();
+    m_faces->mapper->SetScalarModeToUseCellData();
+    m_faces->mapper->SetColorModeToDirectScalars();
+    m_faces->mapper->SetRelativeCoincidentTopologyPolygonOffsetParameters(1.0, 1.0);
+    if (spatial) {
+        // The light sits at the camera: some ambient keeps surfaces seen at a grazing angle
+        // readable.
+        m_faces->actor->GetProperty()->SetAmbient(0.3);
+        m_faces->actor->GetProperty()->SetDiffuse(0.75);
+        m_faces->actor->GetProperty()->SetSpecular(0.15);
+        m_faces->actor->GetProperty()->SetSpecularPower(30.0);
+    } else {
+        // Paper: flat colours, no lighting.
+        m_faces->actor->GetProperty()->SetLighting(false);
+        m_faces->actor->GetProperty()->SetOpacity(1.0);
+    }
+
+    auto lineStyle = [](Layer& layer, double r, double g, double b, double width, bool tubes) {
+        vtkProperty* p = layer.actor->GetProperty();
+        p->SetColor(r, g, b);
+        p->SetLineWidth(static_cast<float>(width));
+        p->SetRenderLinesAsTubes(tubes);
+        p->SetLighting(false);
+        layer.mapper->ScalarVisibilityOff();
+    };
+    auto pointStyle = [](Layer& layer, double r, double g, double b, double size) {
+        vtkProperty* p = layer.actor->GetProperty();
+        p->SetColor(r, g, b);
+        p->SetPointSize(static_cast<float>(size));
+        p->SetRenderPointsAsSpheres(true);
+        layer.mapper->ScalarVisibilityOff();
+    };
+
+    m_rulings = &addLayer();
+    lineStyle(*m_rulings, 0.62, 0.62, 0.62, 1.0, false);
+    m_outline = &addLayer();
+    lineStyle(*m_outline, 0.05, 0.05, 0.05, 2.0, false);
+    m_rulingEdges = &addLayer();
+    lineStyle(*m_rulingEdges, 0.35, 0.35, 0.35, 1.5, false);
+    m_splineEdges = &addLayer();
+    lineStyle(*m_splineEdges, 0.15, 0.15, 0.15, 2.5, false);
+    // Creases: the folds the design is about, thicker and darker than everything else.
+    m_creases = &addLayer();
+    lineStyle(*m_creases, 0.55, 0.0, 0.1, 4.0, spatial);
+    m_controlPolygons = &addLayer();
+    lineStyle(*m_controlPolygons, 0.1, 0.3, 0.95, 1.5, false);
+    m_controlPoints = &addLayer();
+    pointStyle(*m_controlPoints, 0.1, 0.3, 0.95, 6.0);
+    m_vertices = &addLayer();
+    pointStyle(*m_vertices, 0.1, 0.1, 0.1, 9.0);
+    m_target = &addLayer();
+    pointStyle(*m_target, 0.1, 0.7, 0.2, 4.0);
+    m_selectedEdges = &addLayer();
+    lineStyle(*m_selectedEdges, kSelectionRgb[0], kSelectionRgb[1], kSelectionRgb[2], 6.0, true);
+    m_selectedVertices = &addLayer();
+    pointStyle(*m_selectedVertices, kSelectionRgb[0], kSelectionRgb[1], kSelectionRgb[2], 15.0);
+
+    m_controlPolygons->actor->SetVisibility(false);
+    m_controlPoints->actor->SetVisibility(false);
+
+    m_picker->SetTolerance(0.0005);
+    m_picker->PickFromListOn();
+    m_picker->AddPickList(m_faces->actor);
+
+    if (spatial) {
+        m_renderer->GradientBackgroundOn();
+        m_renderer->SetBackground(0.80, 0.83, 0.88);
+        m_renderer->SetBackground2(0.97, 0.97, 0.99);
+        // From the front right, above, z up: no example is seen edge-on (the cylinder's wall
+        // would be from along its axis, the sheet's from the side).
+        vtkCamera* camera = m_renderer->GetActiveCamera();
+        camera->SetFocalPoint(0.0, 0.0, 0.0);
+        camera->SetPosition(1.0, -1.6, 1.2);
+        camera->SetViewUp(0.0, 0.0, 1.0);
+    } else {
+        m_renderer->SetBackground(0.96, 0.96, 0.93);
+        vtkCamera* camera = m_renderer->GetActiveCamera();
+        camera->ParallelProjectionOn();
+        camera->SetPosition(0.0, 0.0, 1.0);
+        camera->SetFocalPoint(0.0, 0.0, 0.0);
+        camera->SetViewUp(0.0, 1.0, 0.0);
+    }
+}
+
+// The actors stay in the renderer: removing one releases its GL resources, which needs the
+// view's context current. They are released with everything else when the GL widget finalizes
+// its render window (with its context current).
+SceneRenderer::~SceneRenderer() = default;
+
+SceneRenderer::Layer& SceneRenderer::addLayer() {
+    m_layers.push_back(std::make_unique<Layer>());
+    Layer& layer = *m_layers.back();
+    layer.mapper->SetInputData(layer.data);
+    layer.actor->SetMapper(layer.mapper);
+    layer.actor->PickableOff();
+    m_renderer->AddActor(layer.actor);
+    return layer;
+}
+
+void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnly) {
+    m_scenes = std::move(scenes);
+
+    // Faces: one polydata for every surface, colour per patch as cell data.
+    std::vector<Vec3> points;
+    std::vector<Vec3> normals;
+    auto polys = vtkSmartPointer<vtkCellArray>::New();
+    m_cellFace.clear();
+    for (const SurfaceScene& scene : m_scenes) {
+        const vtkIdType base = static_cast<vtkIdType>(points.size());
+        points.insert(points.end(), scene.points.begin(), scene.points.end());
+        normals.insert(normals.end(), scene.normals.begin(), scene.normals.end());
+        for (std::size_t i = 0; i < scene.polygons.size(); ++i) {
+            polys->InsertNextCell(static_cast<vtkIdType>(scene.polygons[i].size()));
+            for (int p : scene.polygons[i]) {
+                polys->InsertCellPoint(base + p);
+            }
+            m_cellFace.emplace_back(scene.surface, scene.polygonFace[i]);
+        }
+    }
+    auto faces = vtkSmartPointer<vtkPolyData>::New();
+    faces->SetPoints(makePoints(points));
+    faces->SetPolys(polys);
+    if (!normals.empty() && normals.size() == points.size()) {
+        auto array = vtkSmartPointer<vtkDoubleArray>::New();
+        array->SetNumberOfComponents(3);
+        array->SetNumberOfTuples(static_cast<vtkIdType>(normals.size()));
+        for (std::size_t i = 0; i < normals.size(); ++i) {
+            array->SetTuple3(static_cast<vtkIdType>(i), normals[i].x, normals[i].y, normals[i].z);
+        }
+        faces->GetPointData()->SetNormals(array);
+    }
+    m_faces->assign(faces, geometryOnly);
+    m_faces->actor->SetPickable(true);
+
+    std::vector<std::vector<Vec3>> rulingEdges;
+    std::vector<std::vector<Vec3>> splineEdges;
+    std::vector<std::vector<Vec3>> creases;
+    std::vector<std::pair<Vec3, Vec3>> rulings;
+    std::vector<std::pair<Vec3, Vec3>> outline;
+    std::vector<std::vector<Vec3>> controlPolygons;
+    std::vector<Vec3> controlPoints;
+    std::vector<Vec3> vertices;
+    for (const SurfaceScene& scene : m_scenes) {
+        for (const EdgeCurve& edge : scene.edges) {
+            (edge.crease ? creases : (edge.spline ? splineEdges : rulingEdges))
+                .push_back(edge.points);
+        }
+        rulings.insert(rulings.end(), scene.rulings.begin(), scene.rulings.end());
+        outline.insert(outline.end(), scene.outline.begin(), scene.outline.end());
+        controlPolygons.insert(controlPolygons.end(), scene.controlPolygons.begin(),
+                               scene.controlPolygons.end());
+        controlPoints.insert(controlPoints.end(), scene.controlPoints.begin(),
+                             scene.controlPoints.end());
+        for (const auto& entry : scene.vertices) {
+            vertices.push_back(entry.second);
+        }
+    }
+    m_rulingEdges->assign(polylineData(rulingEdges), geometryOnly);
+    m_splineEdges->assign(polylineData(splineEdges), geometryOnly);
+    m_creases->assign(polylineData(creases), geometryOnly);
+    m_rulings->assign(segmentData(rulings), geometryOnly);
+    m_outline->assign(segmentData(outline), geometryOnly);
+    m_controlPolygons->assign(polylineData(controlPolygons), geometryOnly);
+    m_controlPoints->assign(pointData(controlPoints), geometryOnly);
+    m_vertices->assign(pointData(vertices), geometryOnly);
+
+    double diagonal = 0.0;
+    if (!points.empty()) {
+        double lo[3] = {std::numeric_limits<double>::infinity(),
+                        std::numeric_limits<double>::infinity(),
+                        std::numeric_limits<double>::infinity()};
+        double hi[3] = {-lo[0], -lo[1], -lo[2]};
+        for (const Vec3& p : points) {
+            for (int k = 0; k < 3; ++k) {
+                lo[k] = std::min(lo[k], p[k]);
+                hi[k] = std::max(hi[k], p[k]);
+            }
+        }
+        diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    }
+    m_sceneSize = diagonal > 0.0 ? diagonal : 1.0;
+
+    rebuildHighlight();
+}
+
+void SceneRenderer::setSelection(const std::set<Pick>& picks) {
+    m_selection = picks;
+    rebuildHighlight();
+}
+
+void SceneRenderer::rebuildHighlight() {
+    m_highlighted.clear();
+
+    // Selected faces: their patch colour pulled towards the selection colour.
+    auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    colours->SetNumberOfComponents(3);
+    colours->SetName("colours");
+    colours->SetNumberOfTuples(static_cast<vtkIdType>(m_cellFace.size()));
+    for (std::size_t c = 0; c < m_cellFace.size(); ++c) {
+        const auto& [surface, face] = m_cellFace[c];
+        std::array<double, 3> rgb = patchRgb(face);
+        const Pick pick{Pick::Kind::Face, surface, face};
+        if (m_selection.count(pick) != 0) {
+            m_highlighted.insert(pick);
+            for (int k = 0; k < 3; ++k) {
+                rgb[static_cast<std::size_t>(k)] =
+                    0.3 * rgb[static_cast<std::size_t>(k)] + 0.7 * kSelectionRgb[k];
+            }
+        }
+        unsigned char value[3];
+        for (int k = 0; k < 3; ++k) {
+            value[k] = static_cast<unsigned char>(
+                std::lround(255.0 * std::clamp(rgb[static_cast<std::size_t>(k)], 0.0, 1.0)));
+        }
+        colours->SetTypedTuple(static_cast<vtkIdType>(c), value);
+    }
+    if (m_faces->data->GetNumberOfCells() == static_cast<vtkIdType>(m_cellFace.size())) {
+        m_faces->data->GetCellData()->SetScalars(colours);
+        m_faces->data->Modified();
+    }
+
+    std::vector<std::vector<Vec3>> edges;
+    std::vector<Vec3> vertices;
+    for (const SurfaceScene& scene : m_scenes) {
+        for (const EdgeCurve& edge : scene.edges) {
+            const Pick pick{Pick::Kind::Edge, scene.surface, edge.id};
+            if (m_selection.count(pick) != 0) {
+                m_highlighted.insert(pick);
+                edges.push_back(edge.points);
+            }
+        }
+        for (const auto& [id, position] : scene.vertices) {
+            const Pick pick{Pick::Kind::Vertex, scene.surface, id};
+            if (m_selection.count(pick) != 0) {
+                m_highlighted.insert(pick);
+                vertices.push_back(position);
+            }
+        }
+    }
+    m_selectedEdges->assign(polylineData(edges), false);
+    m_selectedVertices->assign(pointData(vertices), false);
+}
+
+void SceneRenderer::setShowControlPolygons(bool show) {
+    m_controlPolygons->actor->SetVisibility(show);
+    m_controlPoints->actor->SetVisibility(show);
+}
+
+void SceneRenderer::setShowVertices(bool show) {
+    m_vertices->actor->SetVisibility(show);
+}
+
+void SceneRenderer::setTargetPoints(const std::vector<Vec3>& points) {
+    m_target->assign(pointData(points), false);
+}
+
+Vec3 SceneRenderer::viewDirection() const {
+    double direction[3];
+    m_renderer->GetActiveCamera()->GetDirectionOfProjection(direction);
+    return {direction[0], direction[1], direction[2]};
+}
+
+Vec3 SceneRenderer::toDisplay(const Vec3& point) const {
+    m_renderer->SetWorldPoint(point.x, point.y, point.z, 1.0);
+    m_renderer->WorldToDisplay();
+    const double* d = m_renderer->GetDisplayPoint();
+    return {d[0], d[1], d[2]};
+}
+
+const Vec3* SceneRenderer::vertexPosition(int surface, model::VertexId vertex) const {
+    for (const SurfaceScene& scene : m_scenes) {
+        if (scene.surface == surface) {
+            auto it = scene.vertices.find(vertex);
+            return it == scene.vertices.end() ? nullptr : &it->second;
+        }
+    }
+    return nullptr;
+}
+
+std::optional<Vec3> SceneRenderer::surfaceHit(double displayX, double displayY,
+                                              std::optional<Pick>* face) const {
+    if (m_cellFace.empty() || m_picker->Pick(displayX, displayY, 0.0, m_renderer) == 0) {
+        return std::nullopt;
+    }
+    const vtkIdType cell = m_picker->GetCellId();
+    if (cell < 0 || cell >= static_cast<vtkIdType>(m_cellFace.size())) {
+        return std::nullopt;
+    }
+    const auto& [surface, id] = m_cellFace[static_cast<std::size_t>(cell)];
+    *face = Pick{Pick::Kind::Face, surface, id};
+    const double* p = m_picker->GetPickPosition();
+    return Vec3(p[0], p[1], p[2]);
+}
+
+std::optional<Pick> SceneRenderer::pick(double displayX, double displayY, double radius) const {
+    std::optional<Pick> face;
+    const std::optional<Vec3> hit = surfaceHit(displayX, displayY, &face);
+
+    // In 3D, something farther from the eye than the surface under the cursor is hidden.
+    const bool spatial = m_mode == Mode::Spatial;
+    double eye[3];
+    m_renderer->GetActiveCamera()->GetPosition(eye);
+    const Vec3 eyePoint(eye[0], eye[1], eye[2]);
+    const double hitDistance =
+        hit ? distance(eyePoint, *hit) : std::numeric_limits<double>::infinity();
+    const double slack = 0.01 * m_sceneSize;
+    auto hidden = [&](const Vec3& p) {
+        return spatial && hit && distance(eyePoint, p) > hitDistance + slack;
+    };
+
+    std::optional<Pick> best;
+    double bestDistance = radius;
+    for (const SurfaceScene& scene : m_scenes) {
+        for (const auto& [id, position] : scene.vertices) {
+            const Vec3 d = toDisplay(position);
+            const double dist = std::hypot(d.x - displayX, d.y - displayY);
+            if (dist <= bestDistance && !hidden(position)) {
+                bestDistance = dist;
+                best = Pick{Pick::Kind::Vertex, scene.surface, id};
+            }
+        }
+    }
+    if (best) {
+        return best;
+    }
+
+    bestDistance = 0.6 * radius;
+    for (const SurfaceScene& scene : m_scenes) {
+        for (const EdgeCurve& edge : scene.edges) {
+            std::vector<Vec3> display;
+            display.reserve(edge.points.size());
+            for (const Vec3& p : edge.points) {
+                display.push_back(toDisplay(p));
+            }
+            for (std::size_t i = 0; i + 1 < display.size(); ++i) {
+                double t = 0.0;
+                const double dist =
+                    distanceToSegment(displayX, displayY, display[i], display[i + 1], &t);
+                if (dist <= bestDistance) {
+                    const Vec3 world = edge.points[i] * (1.0 - t) + edge.points[i + 1] * t;
+                    if (!hidden(world)) {
+                        bestDistance = dist;
+                        best = Pick{Pick::Kind::Edge, scene.surface, edge.id};
+                    }
+                }
+            }
+        }
+    }
+    if (best) {
+        return best;
+    }
+    return face;
+}
+
+void SceneRenderer::resetCamera() {
+    if (m_mode == Mode::Development) {
+        vtkCamera* camera = m_renderer->GetActiveCamera();
+        camera->SetPosition(0.0, 0.0, 1.0);
+        camera->SetFocalPoint(0.0, 0.0, 0.0);
+        camera->SetViewUp(0.0, 1.0, 0.0);
+    }
+    m_renderer->ResetCamera();
+}
+
+} // namespace devsurf::views

@@ -1,0 +1,85 @@
+#pragma once
+
+// Internal to views/: includes VTK.
+
+#include "model/document/selection.h"
+#include "scene_geometry.h"
+
+#include <vtkSmartPointer.h>
+
+#include <optional>
+#include <set>
+#include <vector>
+
+class vtkActor;
+class vtkCellPicker;
+class vtkPolyData;
+class vtkRenderer;
+
+namespace devsurf::views {
+
+// The VTK side of a view: the actors that draw a list of SurfaceScenes in one renderer, the
+// selection highlight, and picking in display coordinates (device pixels, origin bottom left).
+class SceneRenderer {
+public:
+    enum class Mode { Spatial, Development };
+
+    SceneRenderer(Mode mode, vtkRenderer* renderer);
+    ~SceneRenderer();
+
+    // Replaces what is drawn. With geometryOnly (the combinatorics are unchanged) the layers
+    // whose structure still matches keep their cells and colours and only take new points.
+    void setScenes(std::vector<SurfaceScene> scenes, bool geometryOnly);
+    const std::vector<SurfaceScene>& scenes() const { return m_scenes; }
+
+    void setSelection(const std::set<document::Pick>& picks);
+    // The selected picks that are drawn highlighted (those that exist in the scenes).
+    const std::set<document::Pick>& highlighted() const { return m_highlighted; }
+
+    void setShowControlPolygons(bool show);
+    void setShowVertices(bool show);
+    void setTargetPoints(const std::vector<model::Vec3>& points);
+
+    // Vertex within radius, else edge within radius * 0.6, else face under the point; in 3D
+    // vertices and edges hidden behind the surface are not picked.
+    std::optional<document::Pick> pick(double displayX, double displayY, double radius) const;
+    // Scene point → display coordinates {x, y, depth}.
+    model::Vec3 toDisplay(const model::Vec3& point) const;
+    // Unit vector along which the camera looks.
+    model::Vec3 viewDirection() const;
+    const model::Vec3* vertexPosition(int surface, model::VertexId vertex) const;
+
+    void resetCamera();
+
+private:
+    struct Layer;
+    Layer& addLayer();
+    void rebuildHighlight();
+    std::optional<model::Vec3> surfaceHit(double displayX, double displayY,
+                                          std::optional<document::Pick>* face) const;
+
+    Mode m_mode;
+    vtkSmartPointer<vtkRenderer> m_renderer;
+    vtkSmartPointer<vtkCellPicker> m_picker;
+    std::vector<std::unique_ptr<Layer>> m_layers;
+    Layer* m_faces = nullptr;
+    Layer* m_rulingEdges = nullptr;
+    Layer* m_splineEdges = nullptr;
+    Layer* m_creases = nullptr;
+    Layer* m_rulings = nullptr;
+    Layer* m_outline = nullptr;
+    Layer* m_controlPolygons = nullptr;
+    Layer* m_controlPoints = nullptr;
+    Layer* m_vertices = nullptr;
+    Layer* m_target = nullptr;
+    Layer* m_selectedEdges = nullptr;
+    Layer* m_selectedVertices = nullptr;
+
+    std::vector<SurfaceScene> m_scenes;
+    std::vector<std::pair<int, model::FaceId>> m_cellFace; // faces layer cell -> (surface, face)
+    std::set<document::Pick> m_selection;
+    std::set<document::Pick> m_highlighted;
+    double m_sceneSize = 1.0;
+};
+
+} // namespace devsurf::views

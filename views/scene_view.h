@@ -1,0 +1,95 @@
+#pragma once
+
+#include "model/document/selection.h"
+#include "model/ids.h"
+#include "model/vec3.h"
+
+#include <QImage>
+#include <QPoint>
+#include <QString>
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+#include <set>
+
+namespace devsurf::document {
+class Document;
+} // namespace devsurf::document
+
+namespace devsurf::views {
+
+class VtkOpenGLWidget;
+
+// What the 3D view and the development view share: a VtkOpenGLWidget showing the document's
+// surfaces, updated from Document::changed / projectReset and Selection::selectionChanged, and
+// picking that edits the Selection (never the model). Plain click selects (empty space
+// clears), Shift-click toggles, Ctrl-drag selects the vertices inside a rectangle
+// (Ctrl+Shift-drag adds them).
+//
+// Widget coordinates below are those of glWidget() (logical pixels, origin top left).
+class SceneView : public QWidget {
+    Q_OBJECT
+public:
+    ~SceneView() override;
+
+    document::Document* document() const;
+    document::Selection* selection() const;
+    VtkOpenGLWidget* glWidget() const;
+
+    // The entity under a widget position: a vertex (within a few pixels), else an edge, else a
+    // face; nothing over empty space.
+    std::optional<document::Pick> pickAt(const QPoint& widgetPos) const;
+    // Where a point of the scene is drawn: world coordinates in the 3D view, the laid-out
+    // development plane (z = 0) in the development view.
+    QPoint projectToWidget(const model::Vec3& scenePoint) const;
+    // Where a coarse vertex of a surface is drawn; (-1, -1) if the view shows no such vertex.
+    QPoint projectVertexToWidget(int surface, model::VertexId vertex) const;
+    // The scene point a coarse vertex is drawn at, if it is shown.
+    std::optional<model::Vec3> vertexScenePoint(int surface, model::VertexId vertex) const;
+
+    // The unit vector along which the camera looks (scene coordinates). The 3D view starts
+    // looking from the front right and above (z up); the development view looks down -z.
+    model::Vec3 viewDirection() const;
+
+    // The rendered image (grabFramebuffer of the GL widget).
+    QImage grabImage();
+    // The selected entities this view currently draws highlighted.
+    std::set<document::Pick> highlightedPicks() const;
+    // A one-sentence problem with the current project that this view could not draw (e.g. an
+    // invalid surface), or empty.
+    QString problem() const;
+
+public slots:
+    void fitAll();
+
+signals:
+    // What the mouse is over, e.g. "vertex 12", "edge 7 (S, crease)", "face 3 (SRSR strip)";
+    // empty over nothing.
+    void hoverChanged(const QString& text);
+
+protected:
+    enum class Kind { Spatial, Development };
+    SceneView(Kind kind, document::Document* document, document::Selection* selection,
+              QWidget* parent);
+
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+    void setShowControlPolygonsImpl(bool show);
+    void setShowVerticesImpl(bool show);
+    void setTargetPointsImpl(const std::vector<model::Vec3>& points);
+    void rerender();
+
+private:
+    void onDocumentChanged(unsigned changes);
+    void onProjectReset();
+    void onSelectionChanged();
+    void rebuild(bool geometryOnly);
+    QString describe(const document::Pick& pick) const;
+    void selectInRectangle(const QRect& rect, bool add);
+
+    struct Private;
+    std::unique_ptr<Private> d;
+};
+
+} // namespace devsurf::views
