@@ -69,12 +69,13 @@ case "$mode" in
     mkdir -p "$build/examples"
     "$build/bin/devsurf-cli" example annulus -o "$example" >/dev/null
     echo "== DevSurf on the built-in example 'annulus' ($example)"
-    if [ -x "$build/bin/devsurf" ]; then
-      exec "$build/bin/devsurf" "$example"
+    if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
+      echo "No display: DevSurf is a desktop application. Start it from a desktop session," >&2
+      echo "or run it headless with: xvfb-run -a $build/bin/devsurf $example" >&2
+      "$build/bin/devsurf-cli" info "$example"
+      exit 1
     fi
-    # The desktop application is not built yet: show the example through the command-line tool.
-    "$build/bin/devsurf-cli" info "$example"
-    "$build/bin/devsurf-cli" validate "$example"
+    exec "$build/bin/devsurf" "$example"
     ;;
   test)
     echo "== Running all tests (headless)"
