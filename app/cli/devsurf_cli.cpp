@@ -157,6 +157,10 @@ int commandExample(const std::vector<std::string>& rest) {
     return kExitOk;
 }
 
+std::string counted(std::size_t count, const char* singular, const char* plural) {
+    return std::to_string(count) + " " + (count == 1 ? singular : plural);
+}
+
 std::string faceSummary(const model::SurfaceStatistics& stats) {
     using model::FaceType;
     auto count = [&stats](FaceType type) {
@@ -164,10 +168,10 @@ std::string faceSummary(const model::SurfaceStatistics& stats) {
         return it == stats.facesByType.end() ? std::size_t{0} : it->second;
     };
     std::string text = std::to_string(stats.faces()) + " (" +
-                       std::to_string(count(FaceType::StripSRSR)) + " SRSR strips, " +
-                       std::to_string(count(FaceType::StripSRS)) + " SRS strips, " +
-                       std::to_string(count(FaceType::ConeSRR)) + " SRR cones, " +
-                       std::to_string(count(FaceType::Planar)) + " planar";
+                       counted(count(FaceType::StripSRSR), "SRSR strip", "SRSR strips") + ", " +
+                       counted(count(FaceType::StripSRS), "SRS strip", "SRS strips") + ", " +
+                       counted(count(FaceType::ConeSRR), "SRR cone", "SRR cones") + ", " +
+                       counted(count(FaceType::Planar), "planar face", "planar faces");
     if (count(FaceType::Invalid) != 0) {
         text += ", " + std::to_string(count(FaceType::Invalid)) + " invalid";
     }
@@ -191,7 +195,7 @@ int commandInfo(const std::vector<std::string>& rest) {
                   << "  Spline spaces:";
         for (const auto& [space, edges] : stats.splineSpaces) {
             std::cout << (space == stats.splineSpaces.begin()->first ? " " : "; ")
-                      << space.describe() << " (" << edges << " S-edges)";
+                      << space.describe() << " (" << counted(edges, "S-edge", "S-edges") << ")";
         }
         std::cout << "\n"
                   << "  Control points: " << stats.controlPoints << "\n"

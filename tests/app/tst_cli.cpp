@@ -80,7 +80,7 @@ private slots:
         run = cli({"info", file});
         QCOMPARE(run.exitCode, 0);
         QVERIFY(
-            run.out.contains("Faces: 48 (48 SRSR strips, 0 SRS strips, 0 SRR cones, 0 planar)"));
+            run.out.contains("Faces: 48 (48 SRSR strips, 0 SRS strips, 0 SRR cones, 0 planar faces)"));
         QVERIFY(run.out.contains("Spline spaces: degree 3, C2, 3 intervals (56 S-edges)"));
         QVERIFY(run.out.contains("Control points: 280"));
         QVERIFY(run.out.contains("Vertices: 56"));
@@ -101,7 +101,7 @@ private slots:
         run = cli({"example", "mixed", "--size", "3", "-o", path("m.devsurf")});
         QCOMPARE(run.exitCode, 0);
         run = cli({"info", path("m.devsurf")});
-        QVERIFY(run.out.contains("1 SRSR strips, 1 SRS strips, 1 SRR cones, 1 planar"));
+        QVERIFY(run.out.contains("1 SRSR strip, 1 SRS strip, 1 SRR cone, 1 planar face"));
     }
 
     void damagedInputExitsWithTwo() {
