@@ -185,38 +185,38 @@
 <context>
     <name>devsurf::app::ExportJsonReaction</name>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="76" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="80" />
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="79" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="82" />
         <source>Export Interchange JSON</source>
         <translation>Austausch-JSON exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="81" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="84" />
         <source>Interchange JSON (*.json)</source>
         <translation>Austausch-JSON (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="92" />
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="99" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="96" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="103" />
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="92" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="97" />
         <source>Cannot write %1: %2.</source>
         <translation>%1 kann nicht geschrieben werden: %2.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="97" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="100" />
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="100" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="104" />
         <source>The design cannot be exported: %1</source>
         <translation>Der Entwurf kann nicht exportiert werden: %1</translation>
     </message>
@@ -224,82 +224,82 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="100" />
+        <location filename="../app/gui/main_window.cpp" line="101" />
         <source>Patches</source>
         <translation>Flächenstücke</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="106" />
+        <location filename="../app/gui/main_window.cpp" line="107" />
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="113" />
+        <location filename="../app/gui/main_window.cpp" line="114" />
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="118" />
+        <location filename="../app/gui/main_window.cpp" line="119" />
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="120" />
+        <location filename="../app/gui/main_window.cpp" line="121" />
         <source>&amp;New from Example…</source>
         <translation>&amp;Neu aus Beispiel…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="122" />
+        <location filename="../app/gui/main_window.cpp" line="123" />
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="124" />
+        <location filename="../app/gui/main_window.cpp" line="125" />
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="128" />
+        <location filename="../app/gui/main_window.cpp" line="129" />
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="131" />
+        <location filename="../app/gui/main_window.cpp" line="132" />
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="135" />
+        <location filename="../app/gui/main_window.cpp" line="136" />
         <source>&amp;Export Interchange JSON…</source>
         <translation>Austausch-JSON &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="135" />
+        <location filename="../app/gui/main_window.cpp" line="136" />
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="138" />
+        <location filename="../app/gui/main_window.cpp" line="139" />
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="142" />
+        <location filename="../app/gui/main_window.cpp" line="143" />
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="145" />
+        <location filename="../app/gui/main_window.cpp" line="146" />
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="148" />
+        <location filename="../app/gui/main_window.cpp" line="149" />
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="154" />
+        <location filename="../app/gui/main_window.cpp" line="156" />
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
@@ -309,7 +309,7 @@
         <translation>Auswahl &amp;aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="158" />
+        <location filename="../app/gui/main_window.cpp" line="159" />
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
@@ -319,7 +319,7 @@
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="164" />
+        <location filename="../app/gui/main_window.cpp" line="165" />
         <source>&amp;3D View</source>
         <translation>&amp;3D-Ansicht</translation>
     </message>
@@ -339,7 +339,7 @@
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="169" />
+        <location filename="../app/gui/main_window.cpp" line="168" />
         <source>3D &amp;and Development</source>
         <translation>3D &amp;und Abwicklung</translation>
     </message>
@@ -369,7 +369,7 @@
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="177" />
+        <location filename="../app/gui/main_window.cpp" line="178" />
         <source>&amp;Fit All</source>
         <translation>&amp;Alles zeigen</translation>
     </message>
@@ -520,17 +520,17 @@
 <context>
     <name>devsurf::app::MoveVerticesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="242" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="243" />
         <source>Translate or rotate the selected vertices with their neighbouring control points. Select vertices of one surface first.</source>
         <translation>Verschiebt oder dreht die ausgewählten Ecken samt benachbarten Kontrollpunkten. Wählen Sie zuerst Ecken einer Fläche aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="268" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="269" />
         <source>Cannot rotate</source>
         <translation>Drehen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="272" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="273" />
         <source>Cannot move</source>
         <translation>Verschieben nicht möglich</translation>
     </message>
@@ -564,52 +564,52 @@
 <context>
     <name>devsurf::app::PatchTreeModel</name>
     <message numerus="yes">
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="115" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="119" />
         <source>%n patches</source>
         <translation><numerusform>%n Flächenstück</numerusform><numerusform>%n Flächenstücke</numerusform></translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="124" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="128" />
         <source>Patch %1</source>
         <translation>Flächenstück %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="128" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="132" />
         <source>strip (SRSR)</source>
         <translation>Streifen (SRSR)</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="130" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="134" />
         <source>pointed strip (SRS)</source>
         <translation>spitzer Streifen (SRS)</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="132" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="136" />
         <source>cone (SRR)</source>
         <translation>Kegel (SRR)</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="134" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="138" />
         <source>planar face</source>
         <translation>ebene Fläche</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="136" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="140" />
         <source>invalid labelling %1</source>
         <translation>ungültige Beschriftung %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="143" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="148" />
         <source>Edge labels along the patch: %1</source>
         <translation>Kantenbeschriftung entlang des Flächenstücks: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="153" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="158" />
         <source>Patch</source>
         <translation>Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="153" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="158" />
         <source>Type</source>
         <translation>Typ</translation>
     </message>
@@ -647,52 +647,52 @@
         <translation>Grad %1, C%2, %3 Intervalle</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="89" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="91" />
         <source>Nothing selected.&lt;br&gt;%1 patches, %2 control points.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
         <translation>Nichts ausgewählt.&lt;br&gt;%1 Flächenstücke, %2 Kontrollpunkte.&lt;br&gt;&lt;i&gt;Klicken Sie auf eine Ecke, Kante oder ein Flächenstück, um es auszuwählen; Umschalt-Klick erweitert die Auswahl.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="98" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="100" />
         <source>%1 vertices, %2 edges, %3 patches selected.</source>
         <translation>%1 Ecken, %2 Kanten, %3 Flächenstücke ausgewählt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="114" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="116" />
         <source>&lt;b&gt;Vertex %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;Ecke %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="125" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="127" />
         <source>&lt;b&gt;Edge %1&lt;/b&gt; from vertex %2 to vertex %3&lt;br&gt;</source>
         <translation>&lt;b&gt;Kante %1&lt;/b&gt; von Ecke %2 zu Ecke %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="130" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="132" />
         <source>Spline curve (S), %1, %2 control points.&lt;br&gt;</source>
         <translation>Splinekurve (S), %1, %2 Kontrollpunkte.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="133" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="135" />
         <source>A crease between patches %1 and %2; condition: %3.</source>
         <translation>Ein Falz zwischen den Flächenstücken %1 und %2; Bedingung: %3.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="139" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="141" />
         <source>A boundary curve of patch %1.</source>
         <translation>Eine Randkurve des Flächenstücks %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="141" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="144" />
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>Erzeugende (R), eine Strecke der Länge %1 mm.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="150" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="153" />
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%4 corners.</source>
         <translation>&lt;b&gt;Flächenstück %1&lt;/b&gt;: %2&lt;br&gt;Kantenbeschriftung entlang des Flächenstücks: %3&lt;br&gt;%4 Ecken.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="185" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="188" />
         <source>Cannot move</source>
         <translation>Verschieben nicht möglich</translation>
     </message>
@@ -700,12 +700,12 @@
 <context>
     <name>devsurf::app::RefineCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="221" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="222" />
         <source>Double the spline intervals of the selected curve and of all curves joined to it through strips; the shape stays the same. Select one spline edge or strip first.</source>
         <translation>Verdoppelt die Spline-Intervalle der ausgewählten Kurve und aller über Streifen mit ihr verbundenen Kurven; die Form bleibt gleich. Wählen Sie zuerst eine Splinekante oder einen Streifen aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="231" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="232" />
         <source>Cannot refine</source>
         <translation>Verfeinern nicht möglich</translation>
     </message>
@@ -718,7 +718,7 @@
         <translation>Macht die ausgewählten Kanten von Erzeugenden (R) zu Splinekurven (S) oder umgekehrt. Wählen Sie zuerst Kanten einer Fläche aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="104" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="105" />
         <source>Cannot relabel</source>
         <translation>Umbenennen nicht möglich</translation>
     </message>
@@ -731,28 +731,28 @@
         <translation>Fügt eine Erzeugende quer über den ausgewählten Streifen und die Streifen mit denselben Kurven ein. Wählen Sie zuerst einen Streifen oder Kegel aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="165" />
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="178" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="166" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="179" />
         <source>Split at Ruling</source>
         <translation>An Erzeugender teilen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="166" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="167" />
         <source>The curves of this strip have a single spline interval, so a ruling can only be added after refining them (the shape stays the same). Refine now?</source>
         <translation>Die Kurven dieses Streifens haben nur ein Spline-Intervall; eine Erzeugende kann erst nach dem Verfeinern eingefügt werden (die Form bleibt gleich). Jetzt verfeinern?</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="171" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="172" />
         <source>Cannot refine</source>
         <translation>Verfeinern nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="179" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="180" />
         <source>The new ruling goes through breakpoint i of the strip's %1 spline intervals (u = i/%1). Breakpoint i:</source>
         <translation>Die neue Erzeugende geht durch den Knoten i der %1 Spline-Intervalle des Streifens (u = i/%1). Knoten i:</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="188" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="189" />
         <source>Cannot split</source>
         <translation>Teilen nicht möglich</translation>
     </message>
@@ -783,64 +783,89 @@
 <context>
     <name>devsurf::app::Workspace</name>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="79" />
+        <location filename="../app/gui/workspace.cpp" line="82" />
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="82" />
+        <location filename="../app/gui/workspace.cpp" line="85" />
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="83" />
+        <location filename="../app/gui/workspace.cpp" line="86" />
         <source>%1 has unsaved changes. Do you want to save them?</source>
         <translation>%1 hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="98" />
+        <location filename="../app/gui/workspace.cpp" line="101" />
         <source>Opened %1</source>
         <translation>%1 geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="101" />
+        <location filename="../app/gui/workspace.cpp" line="104" />
         <source>Cannot open file</source>
         <translation>Datei kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="115" />
+        <location filename="../app/gui/workspace.cpp" line="118" />
         <source>Save Project As</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="118" />
+        <location filename="../app/gui/workspace.cpp" line="121" />
         <source>untitled.devsurf</source>
         <translation>unbenannt.devsurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="120" />
+        <location filename="../app/gui/workspace.cpp" line="123" />
         <source>DevSurf projects (*.devsurf)</source>
         <translation>DevSurf-Projekte (*.devsurf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="134" />
+        <location filename="../app/gui/workspace.cpp" line="137" />
         <source>Cannot save file</source>
         <translation>Datei kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="142" />
+        <location filename="../app/gui/workspace.cpp" line="145" />
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="149" />
+        <location filename="../app/gui/workspace.cpp" line="152" />
         <source>New design from the example “%1”</source>
         <translation>Neuer Entwurf aus dem Beispiel „%1“</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="151" />
+        <location filename="../app/gui/workspace.cpp" line="154" />
         <source>Cannot create the example</source>
         <translation>Das Beispiel kann nicht erzeugt werden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="165" />
+        <source>Recovered unsaved work</source>
+        <translation>Ungespeicherte Arbeit wiederhergestellt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="168" />
+        <source>Cannot recover</source>
+        <translation>Wiederherstellen nicht möglich</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="181" />
+        <source>an untitled design</source>
+        <translation>einem unbenannten Entwurf</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="183" />
+        <source>Recover unsaved work</source>
+        <translation>Ungespeicherte Arbeit wiederherstellen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="184" />
+        <source>DevSurf did not close properly last time. Recover the unsaved changes to %1 from %2?</source>
+        <translation>DevSurf wurde zuletzt nicht ordnungsgemäß beendet. Die ungespeicherten Änderungen an %1 vom %2 wiederherstellen?</translation>
     </message>
 </context>
 <context>

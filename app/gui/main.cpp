@@ -59,5 +59,6 @@ int main(int argc, char** argv) {
             parser.isSet(example) ? parser.value(example) : QStringLiteral("annulus");
         workspace->newFromExample(name, 0);
     }
+    QTimer::singleShot(0, &window, [workspace] { workspace->offerRecovery(); });
     return QApplication::exec();
 }

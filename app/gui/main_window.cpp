@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "autosaver.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "panels/patch_panel.h"
@@ -262,6 +263,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
     settings.setValue(QStringLiteral("window/splitter"), m_splitter->saveState());
+    m_workspace->autosaver()->discard();
     event->accept();
 }
 

@@ -1,5 +1,6 @@
 #include "workspace.h"
 
+#include "autosaver.h"
 #include "io/file_error.h"
 #include "io/project_file.h"
 #include "model/document/commands/command_or_error.h"
@@ -8,6 +9,7 @@
 #include "model/examples.h"
 #include "model/model_error.h"
 
+#include <QDateTime>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -24,7 +26,8 @@ const char* const kLastDirectoryKey = "lastDirectory";
 
 Workspace::Workspace(QWidget* window)
     : QObject(window), m_window(window), m_document(new document::Document(this)),
-      m_selection(new document::Selection(this)) {
+      m_selection(new document::Selection(this)),
+      m_autosaver(new Autosaver(m_document, Autosaver::defaultDirectory(), 60 * 1000, this)) {
     m_recentFiles = QSettings().value(kRecentKey).toStringList();
     connect(m_document, &document::Document::projectReset, m_selection,
             &document::Selection::clear);
@@ -149,6 +152,47 @@ void Workspace::newFromExample(const QString& name, int size) {
         emit statusMessage(tr("New design from the example “%1”").arg(name));
     } catch (const model::ModelError& error) {
         showError(tr("Cannot create the example"), QString::fromStdString(error.what()));
+    }
+}
+
+bool Workspace::recover(const QString& recoveryFile) {
+    try {
+        model::Project project = io::loadProjectFile(recoveryFile);
+        m_document->resetProject(std::move(project), Autosaver::originalPath(recoveryFile));
+        m_document->undoStack()->resetClean(); // recovered work is unsaved work
+        Autosaver::removeRecoveryFile(recoveryFile);
+        m_autosaver->saveNow();
+        emit statusMessage(tr("Recovered unsaved work"));
+        return true;
+    } catch (const io::FileError& error) {
+        showError(tr("Cannot recover"), QString::fromStdString(error.what()));
+        return false;
+    }
+}
+
+void Workspace::offerRecovery() {
+    const QStringList stale = Autosaver::staleRecoveryFiles(Autosaver::defaultDirectory());
+    if (stale.isEmpty()) {
+        return;
+    }
+    const QString newest = stale.front();
+    const QString original = Autosaver::originalPath(newest);
+    const QString name =
+        original.isEmpty() ? tr("an untitled design") : QFileInfo(original).fileName();
+    const auto answer = QMessageBox::question(
+        m_window, tr("Recover unsaved work"),
+        tr("DevSurf did not close properly last time. Recover the unsaved changes to %1 from "
+           "%2?")
+            .arg(name, QFileInfo(newest).lastModified().toString(Qt::TextDate)),
+        QMessageBox::Yes | QMessageBox::Discard, QMessageBox::Yes);
+    if (answer == QMessageBox::Yes) {
+        recover(newest);
+    }
+    // Older leftovers would only ask again at every start.
+    for (const QString& file : stale) {
+        if (file != newest || answer != QMessageBox::Yes) {
+            Autosaver::removeRecoveryFile(file);
+        }
     }
 }
 

@@ -14,6 +14,8 @@ class Selection;
 
 namespace devsurf::app {
 
+class Autosaver;
+
 // What the main window's handlers share: the open document, the selection, the window to
 // parent dialogs on, and the file operations several actions need (open, save, prompting for
 // unsaved changes, recent files).
@@ -40,6 +42,12 @@ public:
     // applied.
     bool apply(document::CommandOrError edit, const QString& failureTitle);
 
+    // Opens the work kept in a recovery file as unsaved changes to its original file.
+    bool recover(const QString& recoveryFile);
+    // Asks whether to recover work left by a session that ended without closing cleanly.
+    void offerRecovery();
+    Autosaver* autosaver() const { return m_autosaver; }
+
     QStringList recentFiles() const { return m_recentFiles; }
     void clearRecentFiles();
     static constexpr int kMaxRecentFiles = 8;
@@ -57,6 +65,7 @@ private:
     document::Document* m_document;
     document::Selection* m_selection;
     QStringList m_recentFiles;
+    Autosaver* m_autosaver;
 };
 
 } // namespace devsurf::app

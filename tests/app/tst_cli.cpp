@@ -79,8 +79,8 @@ private slots:
 
         run = cli({"info", file});
         QCOMPARE(run.exitCode, 0);
-        QVERIFY(
-            run.out.contains("Faces: 48 (48 SRSR strips, 0 SRS strips, 0 SRR cones, 0 planar faces)"));
+        QVERIFY(run.out.contains(
+            "Faces: 48 (48 SRSR strips, 0 SRS strips, 0 SRR cones, 0 planar faces)"));
         QVERIFY(run.out.contains("Spline spaces: degree 3, C2, 3 intervals (56 S-edges)"));
         QVERIFY(run.out.contains("Control points: 280"));
         QVERIFY(run.out.contains("Vertices: 56"));

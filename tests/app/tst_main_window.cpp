@@ -1,3 +1,4 @@
+#include "autosaver.h"
 #include "io/project_file.h"
 #include "main_window.h"
 #include "model/document/commands/command_or_error.h"
@@ -15,8 +16,10 @@
 #include "workspace.h"
 
 #include <QAction>
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QFileInfo>
 #include <QItemSelectionModel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -229,6 +232,48 @@ private slots:
         QVERIFY(!window.workspace()->open(path));
         QVERIFY(shown.contains("damaged.devsurf"));
         QCOMPARE(io::encodeProject(window.workspace()->document()->project()), before);
+    }
+
+    void unsavedWorkSurvivesACrash() {
+        const QString original = m_dir.filePath("crash.devsurf");
+        QString leftover;
+        std::string edited;
+        {
+            app::MainWindow window;
+            app::Workspace* workspace = window.workspace();
+            workspace->newFromExample(QStringLiteral("sheet"), 0);
+            QVERIFY(workspace->saveTo(original));
+            workspace->autosaver()->saveNow();
+            QVERIFY(!QFile::exists(workspace->autosaver()->recoveryFile())); // nothing unsaved
+            document::Document* doc = workspace->document();
+            document::pushOrExplain(
+                *doc, document::MoveVerticesCommand::createTranslation(*doc, 0, {5}, {0, 0, 7}));
+            workspace->autosaver()->saveNow();
+            const QString recovery = workspace->autosaver()->recoveryFile();
+            QVERIFY(QFile::exists(recovery));
+            edited = io::encodeProject(doc->project());
+            QCOMPARE(io::encodeProject(io::loadProjectFile(recovery)), edited);
+            // A crashed session leaves its file without a live lock: copy it as such a leftover.
+            leftover = QFileInfo(recovery).dir().filePath("session-999999-1.devsurf");
+            QVERIFY(QFile::copy(recovery, leftover));
+            QVERIFY(QFile::copy(recovery + ".origin", leftover + ".origin"));
+            answerNextMessageBox(QMessageBox::Discard);
+            QVERIFY(window.close());
+            QVERIFY(!QFile::exists(recovery)); // a clean exit leaves nothing behind
+        }
+        app::MainWindow next;
+        next.show();
+        QVERIFY(app::Autosaver::staleRecoveryFiles(app::Autosaver::defaultDirectory())
+                    .contains(leftover));
+        answerNextMessageBox(QMessageBox::Yes);
+        next.workspace()->offerRecovery();
+        document::Document* doc = next.workspace()->document();
+        QCOMPARE(io::encodeProject(doc->project()), edited);
+        QVERIFY(doc->isModified());
+        QCOMPARE(doc->filePath(), QFileInfo(original).absoluteFilePath());
+        QVERIFY(!QFile::exists(leftover));
+        QVERIFY(next.workspace()->save());
+        QCOMPARE(io::encodeProject(io::loadProjectFile(original)), edited);
     }
 
     void germanTranslationCoversTheMenus() {
