@@ -60,7 +60,7 @@ private slots:
         }
     }
 
-    void savingKeepsTheMaybePreviousFileAsBackup() {
+    void savingKeepsThePreviousFileAsBackup() {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString path = dir.filePath("design.devsurf");
