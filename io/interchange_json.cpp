@@ -1,8 +1,11 @@
 #include "interchange_json.h"
 
+#include "file_error.h"
 #include "model/development.h"
 #include "model/sampled_mesh.h"
 #include "model/strip.h"
+
+#include <QSaveFile>
 
 #include <cstdio>
 #include <map>
@@ -246,6 +249,19 @@ void writeSurface(JsonWriter& w, const model::CompositeSurface& surface, int sam
 }
 
 } // namespace
+
+void saveInterchangeJsonFile(const model::Project& project, const QString& path,
+                             int samplesPerInterval) {
+    const std::string text = interchangeJson(project, samplesPerInterval);
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) ||
+        file.write(text.data(), static_cast<qint64>(text.size())) !=
+            static_cast<qint64>(text.size()) ||
+        !file.commit()) {
+        throw FileError("Cannot write '" + path.toStdString() +
+                        "': " + file.errorString().toStdString() + ".");
+    }
+}
 
 std::string interchangeJson(const model::Project& project, int samplesPerInterval) {
     JsonWriter w;

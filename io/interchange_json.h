@@ -2,6 +2,8 @@
 
 #include "model/project.h"
 
+#include <QString>
+
 #include <string>
 
 namespace devsurf::io {
@@ -12,5 +14,10 @@ inline constexpr int kInterchangeVersion = 1;
 // cone, planar face and crease, the sampled mesh and its development. Numbers are written with
 // 17 significant digits. Throws model::ModelError if a surface is invalid.
 std::string interchangeJson(const model::Project& project, int samplesPerInterval = 8);
+
+// Writes the interchange JSON to a file atomically. Throws FileError with a sentence naming the
+// file, or model::ModelError if a surface is invalid.
+void saveInterchangeJsonFile(const model::Project& project, const QString& path,
+                             int samplesPerInterval = 8);
 
 } // namespace devsurf::io

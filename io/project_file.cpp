@@ -84,7 +84,7 @@ model::Project decodeProject(const std::string& bytes) {
     return readProjectArchive(payload);
 }
 
-void saveProjectFile(const model::Project& project, const QString& path) {
+void saveProjectFile(const model::Project& project, const QString& path, Backup backup) {
     const std::string bytes = encodeProject(project);
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
@@ -98,7 +98,7 @@ void saveProjectFile(const model::Project& project, const QString& path) {
         throw FileError("Cannot save " + quoted(path) + ": " + withoutFinalPeriod(reason) + ".");
     }
     // Keep the previous version: a failed or regretted save never loses the last good file.
-    if (QFileInfo::exists(path)) {
+    if (backup == Backup::Keep && QFileInfo::exists(path)) {
         const QString backup = path + QStringLiteral(".bak");
         QFile::remove(backup);
         if (!QFile::copy(path, backup)) {

@@ -19,9 +19,12 @@ std::string encodeProject(const model::Project& project);
 // Throws FileError; the message does not name a file.
 model::Project decodeProject(const std::string& bytes);
 
-// Writes atomically (QSaveFile) and keeps the previous file as PATH.bak.
+enum class Backup { Keep, None };
+
+// Writes atomically (QSaveFile) and, with Backup::Keep, keeps the previous file as PATH.bak.
 // Throws FileError with a sentence that names the file.
-void saveProjectFile(const model::Project& project, const QString& path);
+void saveProjectFile(const model::Project& project, const QString& path,
+                     Backup backup = Backup::Keep);
 // Throws FileError with a sentence that names the file; never returns a half-loaded project.
 model::Project loadProjectFile(const QString& path);
 

@@ -9,6 +9,34 @@
     </message>
 </context>
 <context>
+    <name>FaceType</name>
+    <message>
+        <location filename="../app/gui/face_type_text.cpp" line="10" />
+        <source>strip (SRSR)</source>
+        <translation>Streifen (SRSR)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/face_type_text.cpp" line="12" />
+        <source>pointed strip (SRS)</source>
+        <translation>spitzer Streifen (SRS)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/face_type_text.cpp" line="14" />
+        <source>cone (SRR)</source>
+        <translation>Kegel (SRR)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/face_type_text.cpp" line="16" />
+        <source>planar face</source>
+        <translation>ebene Fläche</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/face_type_text.cpp" line="20" />
+        <source>invalid labelling</source>
+        <translation>ungültige Beschriftung</translation>
+    </message>
+</context>
+<context>
     <name>MoveVerticesCommand</name>
     <message>
         <location filename="../model/document/commands/move_vertices_command.cpp" line="20" />
@@ -200,23 +228,18 @@
         <translation>Austausch-JSON (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="96" />
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="103" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="92" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="95" />
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="97" />
-        <source>Cannot write %1: %2.</source>
-        <translation>%1 kann nicht geschrieben werden: %2.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="100" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="90" />
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="104" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="96" />
         <source>The design cannot be exported: %1</source>
         <translation>Der Entwurf kann nicht exportiert werden: %1</translation>
     </message>
@@ -564,52 +587,32 @@
 <context>
     <name>devsurf::app::PatchTreeModel</name>
     <message numerus="yes">
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="119" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="120" />
         <source>%n patches</source>
         <translation><numerusform>%n Flächenstück</numerusform><numerusform>%n Flächenstücke</numerusform></translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="128" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="129" />
         <source>Patch %1</source>
         <translation>Flächenstück %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="132" />
-        <source>strip (SRSR)</source>
-        <translation>Streifen (SRSR)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="134" />
-        <source>pointed strip (SRS)</source>
-        <translation>spitzer Streifen (SRS)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="136" />
-        <source>cone (SRR)</source>
-        <translation>Kegel (SRR)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="138" />
-        <source>planar face</source>
-        <translation>ebene Fläche</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="140" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="133" />
         <source>invalid labelling %1</source>
         <translation>ungültige Beschriftung %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="148" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="142" />
         <source>Edge labels along the patch: %1</source>
         <translation>Kantenbeschriftung entlang des Flächenstücks: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="158" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="152" />
         <source>Patch</source>
         <translation>Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="158" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="152" />
         <source>Type</source>
         <translation>Typ</translation>
     </message>
@@ -617,82 +620,57 @@
 <context>
     <name>devsurf::app::PropertiesPanel</name>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="23" />
-        <source>strip (SRSR)</source>
-        <translation>Streifen (SRSR)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="25" />
-        <source>pointed strip (SRS)</source>
-        <translation>spitzer Streifen (SRS)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="27" />
-        <source>cone (SRR)</source>
-        <translation>Kegel (SRR)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="29" />
-        <source>planar face</source>
-        <translation>ebene Fläche</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="33" />
-        <source>invalid labelling</source>
-        <translation>ungültige Beschriftung</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="37" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="22" />
         <source>degree %1, C%2, %3 intervals</source>
         <translation>Grad %1, C%2, %3 Intervalle</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="91" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="76" />
         <source>Nothing selected.&lt;br&gt;%1 patches, %2 control points.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
         <translation>Nichts ausgewählt.&lt;br&gt;%1 Flächenstücke, %2 Kontrollpunkte.&lt;br&gt;&lt;i&gt;Klicken Sie auf eine Ecke, Kante oder ein Flächenstück, um es auszuwählen; Umschalt-Klick erweitert die Auswahl.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="100" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="85" />
         <source>%1 vertices, %2 edges, %3 patches selected.</source>
         <translation>%1 Ecken, %2 Kanten, %3 Flächenstücke ausgewählt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="116" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="101" />
         <source>&lt;b&gt;Vertex %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;Ecke %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="127" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="112" />
         <source>&lt;b&gt;Edge %1&lt;/b&gt; from vertex %2 to vertex %3&lt;br&gt;</source>
         <translation>&lt;b&gt;Kante %1&lt;/b&gt; von Ecke %2 zu Ecke %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="132" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="117" />
         <source>Spline curve (S), %1, %2 control points.&lt;br&gt;</source>
         <translation>Splinekurve (S), %1, %2 Kontrollpunkte.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="135" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="120" />
         <source>A crease between patches %1 and %2; condition: %3.</source>
         <translation>Ein Falz zwischen den Flächenstücken %1 und %2; Bedingung: %3.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="141" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="126" />
         <source>A boundary curve of patch %1.</source>
         <translation>Eine Randkurve des Flächenstücks %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="144" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="129" />
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>Erzeugende (R), eine Strecke der Länge %1 mm.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="153" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="138" />
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%4 corners.</source>
         <translation>&lt;b&gt;Flächenstück %1&lt;/b&gt;: %2&lt;br&gt;Kantenbeschriftung entlang des Flächenstücks: %3&lt;br&gt;%4 Ecken.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="188" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="173" />
         <source>Cannot move</source>
         <translation>Verschieben nicht möglich</translation>
     </message>
@@ -798,72 +776,72 @@
         <translation>%1 hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="101" />
+        <location filename="../app/gui/workspace.cpp" line="100" />
         <source>Opened %1</source>
         <translation>%1 geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="104" />
+        <location filename="../app/gui/workspace.cpp" line="103" />
         <source>Cannot open file</source>
         <translation>Datei kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="118" />
+        <location filename="../app/gui/workspace.cpp" line="117" />
         <source>Save Project As</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="121" />
+        <location filename="../app/gui/workspace.cpp" line="120" />
         <source>untitled.devsurf</source>
         <translation>unbenannt.devsurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="123" />
+        <location filename="../app/gui/workspace.cpp" line="122" />
         <source>DevSurf projects (*.devsurf)</source>
         <translation>DevSurf-Projekte (*.devsurf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="137" />
+        <location filename="../app/gui/workspace.cpp" line="136" />
         <source>Cannot save file</source>
         <translation>Datei kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="145" />
+        <location filename="../app/gui/workspace.cpp" line="143" />
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="152" />
+        <location filename="../app/gui/workspace.cpp" line="150" />
         <source>New design from the example “%1”</source>
         <translation>Neuer Entwurf aus dem Beispiel „%1“</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="154" />
+        <location filename="../app/gui/workspace.cpp" line="152" />
         <source>Cannot create the example</source>
         <translation>Das Beispiel kann nicht erzeugt werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="165" />
+        <location filename="../app/gui/workspace.cpp" line="163" />
         <source>Recovered unsaved work</source>
         <translation>Ungespeicherte Arbeit wiederhergestellt</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="168" />
+        <location filename="../app/gui/workspace.cpp" line="166" />
         <source>Cannot recover</source>
         <translation>Wiederherstellen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="181" />
+        <location filename="../app/gui/workspace.cpp" line="179" />
         <source>an untitled design</source>
         <translation>einem unbenannten Entwurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="183" />
+        <location filename="../app/gui/workspace.cpp" line="181" />
         <source>Recover unsaved work</source>
         <translation>Ungespeicherte Arbeit wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="184" />
+        <location filename="../app/gui/workspace.cpp" line="182" />
         <source>DevSurf did not close properly last time. Recover the unsaved changes to %1 from %2?</source>
         <translation>DevSurf wurde zuletzt nicht ordnungsgemäß beendet. Die ungespeicherten Änderungen an %1 vom %2 wiederherstellen?</translation>
     </message>

@@ -11,7 +11,6 @@
 #include "solve_command.h"
 
 #include <QCoreApplication>
-#include <QSaveFile>
 #include <QString>
 
 #include <cstdio>
@@ -122,17 +121,6 @@ void expectPositionals(const Arguments& args, std::size_t count, const char* wha
     }
 }
 
-void writeTextFile(const std::string& path, const std::string& text) {
-    QSaveFile file(QString::fromStdString(path));
-    if (!file.open(QIODevice::WriteOnly) ||
-        file.write(text.data(), static_cast<qint64>(text.size())) !=
-            static_cast<qint64>(text.size()) ||
-        !file.commit()) {
-        throw io::FileError("Cannot write '" + path + "': " + file.errorString().toStdString() +
-                            ".");
-    }
-}
-
 int commandExample(const std::vector<std::string>& rest) {
     const Arguments args = parse(rest, {"-o", "--size"});
     expectPositionals(args, 1, "one example name");
@@ -235,7 +223,7 @@ int commandExportJson(const std::vector<std::string>& rest) {
     }
     const std::string output = requiredOutput(args);
     const model::Project project = io::loadProjectFile(QString::fromStdString(args.positional[0]));
-    writeTextFile(output, io::interchangeJson(project, samples));
+    io::saveInterchangeJsonFile(project, QString::fromStdString(output), samples);
     std::cout << "Wrote " << output << "\n";
     return kExitOk;
 }

@@ -64,8 +64,7 @@ void Autosaver::saveNow() {
         return;
     }
     try {
-        io::saveProjectFile(m_document->project(), m_file);
-        QFile::remove(m_file + QStringLiteral(".bak")); // no backups of recovery copies
+        io::saveProjectFile(m_document->project(), m_file, io::Backup::None);
         QSaveFile origin(sidecar(m_file));
         if (origin.open(QIODevice::WriteOnly)) {
             origin.write(m_document->filePath().toUtf8());
@@ -80,7 +79,6 @@ void Autosaver::saveNow() {
 void Autosaver::discard() {
     m_timer->stop();
     QFile::remove(m_file);
-    QFile::remove(m_file + QStringLiteral(".bak"));
     QFile::remove(sidecar(m_file));
     if (m_lock && m_lock->isLocked()) {
         m_lock->unlock();

@@ -96,8 +96,7 @@ bool Workspace::open(const QString& path) {
         model::Project project = io::loadProjectFile(path);
         const QString absolute = QFileInfo(path).absoluteFilePath();
         m_document->resetProject(std::move(project), absolute);
-        addRecentFile(absolute);
-        QSettings().setValue(kLastDirectoryKey, QFileInfo(absolute).absolutePath());
+        rememberFile(absolute);
         emit statusMessage(tr("Opened %1").arg(QFileInfo(absolute).fileName()));
         return true;
     } catch (const io::FileError& error) {
@@ -140,8 +139,7 @@ bool Workspace::saveTo(const QString& path) {
     const QString absolute = QFileInfo(path).absoluteFilePath();
     m_document->setFilePath(absolute);
     m_document->markSaved();
-    addRecentFile(absolute);
-    QSettings().setValue(kLastDirectoryKey, QFileInfo(absolute).absolutePath());
+    rememberFile(absolute);
     emit statusMessage(tr("Saved %1").arg(QFileInfo(absolute).fileName()));
     return true;
 }
@@ -196,9 +194,10 @@ void Workspace::offerRecovery() {
     }
 }
 
-void Workspace::addRecentFile(const QString& path) {
-    m_recentFiles.removeAll(path);
-    m_recentFiles.prepend(path);
+void Workspace::rememberFile(const QString& absolutePath) {
+    QSettings().setValue(kLastDirectoryKey, QFileInfo(absolutePath).absolutePath());
+    m_recentFiles.removeAll(absolutePath);
+    m_recentFiles.prepend(absolutePath);
     while (m_recentFiles.size() > kMaxRecentFiles) {
         m_recentFiles.removeLast();
     }

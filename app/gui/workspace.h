@@ -59,7 +59,8 @@ signals:
     void statusMessage(const QString& text);
 
 private:
-    void addRecentFile(const QString& path);
+    // An opened or saved file: first in the recent files, its folder the next dialogs' start.
+    void rememberFile(const QString& absolutePath);
 
     QWidget* m_window;
     document::Document* m_document;

@@ -2,6 +2,7 @@
 #include "model/examples.h"
 #include "model/model_error.h"
 #include "model/topology_edits.h"
+#include "straight_control_points.h"
 #include "test_registry.h"
 
 #include <QTest>
@@ -45,19 +46,6 @@ void verifySameGeometry(const CompositeSurface& before, const CompositeSurface& 
              qPrintable(QString("old samples off the new surface by %1").arg(there)));
     QVERIFY2(back <= tolerance,
              qPrintable(QString("new samples off the old surface by %1").arg(back)));
-}
-
-// A straight control sequence in a space (line with linear parametrisation).
-std::vector<Vec3> line(const SplineSpace& space, const Vec3& a, const Vec3& b) {
-    const int count = space.controlPointCount(false);
-    std::vector<Vec3> points;
-    for (int i = 0; i < count; ++i) {
-        const double t = static_cast<double>(i) / (count - 1);
-        points.push_back(a * (1 - t) + b * t);
-    }
-    points.front() = a;
-    points.back() = b;
-    return points;
 }
 
 } // namespace
@@ -141,10 +129,14 @@ private slots:
         s.addFace({a, b, c, d});
         s.addFace({b, e, c});
         const SplineSpace space{3, 2, 2};
-        s.setSpline(a, b, space, line(space, s.position(a), s.position(b)));
-        s.setSpline(c, d, space, line(space, s.position(c), s.position(d)));
-        s.setSpline(b, e, space, line(space, s.position(b), s.position(e)));
-        s.setSpline(e, c, space, line(space, s.position(e), s.position(c)));
+        s.setSpline(a, b, space,
+                    devsurf::test::straightControlPoints(space, s.position(a), s.position(b)));
+        s.setSpline(c, d, space,
+                    devsurf::test::straightControlPoints(space, s.position(c), s.position(d)));
+        s.setSpline(b, e, space,
+                    devsurf::test::straightControlPoints(space, s.position(b), s.position(e)));
+        s.setSpline(e, c, space,
+                    devsurf::test::straightControlPoints(space, s.position(e), s.position(c)));
         QVERIFY2(firstProblem(s).empty(), firstProblem(s).c_str());
         try {
             subdivideStrip(s, 0, 0.5);

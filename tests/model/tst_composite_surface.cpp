@@ -1,6 +1,7 @@
 #include "model/composite_surface.h"
 #include "model/model_error.h"
 #include "model/strip.h"
+#include "straight_control_points.h"
 #include "test_registry.h"
 
 #include <QTest>
@@ -10,18 +11,6 @@
 using namespace devsurf::model;
 
 namespace {
-
-std::vector<Vec3> straight(const SplineSpace& space, const Vec3& a, const Vec3& b) {
-    const int count = space.controlPointCount(false);
-    std::vector<Vec3> points;
-    for (int i = 0; i < count; ++i) {
-        const double t = static_cast<double>(i) / (count - 1);
-        points.push_back(a * (1 - t) + b * t);
-    }
-    points.front() = a;
-    points.back() = b;
-    return points;
-}
 
 // One polygon with the given labels along its loop ('S' or 'R'); S-edges share one space.
 CompositeSurface polygonWithLabels(const std::string& labels, FaceId* faceOut = nullptr) {
@@ -38,7 +27,8 @@ CompositeSurface polygonWithLabels(const std::string& labels, FaceId* faceOut = 
         if (labels[static_cast<std::size_t>(i)] == 'S') {
             const VertexId a = loop[static_cast<std::size_t>(i)];
             const VertexId b = loop[static_cast<std::size_t>((i + 1) % n)];
-            s.setSpline(a, b, space, straight(space, s.position(a), s.position(b)));
+            s.setSpline(a, b, space,
+                        devsurf::test::straightControlPoints(space, s.position(a), s.position(b)));
         }
     }
     if (faceOut != nullptr) {
@@ -166,8 +156,9 @@ private slots:
         QCOMPARE(s.splineClasses().size(), std::size_t(1));
         const auto loop = s.faceLoop(face);
         const SplineSpace other{2, 1, 2};
-        s.setSpline(loop[2], loop[3], other,
-                    straight(other, s.position(loop[2]), s.position(loop[3])));
+        s.setSpline(
+            loop[2], loop[3], other,
+            devsurf::test::straightControlPoints(other, s.position(loop[2]), s.position(loop[3])));
         QVERIFY(mentions(s.validate(), "different spline spaces"));
     }
 

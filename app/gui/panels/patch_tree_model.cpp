@@ -1,5 +1,6 @@
 #include "patch_tree_model.h"
 
+#include "../face_type_text.h"
 #include "model/document/document.h"
 #include "views/surface_view.h"
 
@@ -127,19 +128,12 @@ QVariant PatchTreeModel::data(const QModelIndex& index, int role) const {
         if (index.column() == 0) {
             return tr("Patch %1").arg(face);
         }
-        switch (surface.faceType(face)) {
-        case model::FaceType::StripSRSR:
-            return tr("strip (SRSR)");
-        case model::FaceType::StripSRS:
-            return tr("pointed strip (SRS)");
-        case model::FaceType::ConeSRR:
-            return tr("cone (SRR)");
-        case model::FaceType::Planar:
-            return tr("planar face");
-        case model::FaceType::Invalid:
+        const model::FaceType type = surface.faceType(face);
+        if (type == model::FaceType::Invalid) {
             return tr("invalid labelling %1")
                 .arg(QString::fromStdString(surface.labelString(face)));
         }
+        return faceTypeText(type);
     }
     if (role == Qt::DecorationRole && index.column() == 0) {
         return views::SurfaceView::patchColor(face);

@@ -1,5 +1,6 @@
 #include "properties_panel.h"
 
+#include "../face_type_text.h"
 #include "model/document/commands/command_or_error.h"
 #include "model/document/commands/move_vertices_command.h"
 #include "model/document/document.h"
@@ -16,22 +17,6 @@
 namespace devsurf::app {
 
 namespace {
-
-QString faceTypeText(model::FaceType type) {
-    switch (type) {
-    case model::FaceType::StripSRSR:
-        return PropertiesPanel::tr("strip (SRSR)");
-    case model::FaceType::StripSRS:
-        return PropertiesPanel::tr("pointed strip (SRS)");
-    case model::FaceType::ConeSRR:
-        return PropertiesPanel::tr("cone (SRR)");
-    case model::FaceType::Planar:
-        return PropertiesPanel::tr("planar face");
-    case model::FaceType::Invalid:
-        break;
-    }
-    return PropertiesPanel::tr("invalid labelling");
-}
 
 QString spaceText(const model::SplineSpace& space) {
     return PropertiesPanel::tr("degree %1, C%2, %3 intervals")

@@ -2,6 +2,7 @@
 
 #include "../example_dialog.h"
 #include "../workspace.h"
+#include "io/file_error.h"
 #include "io/interchange_json.h"
 #include "model/document/document.h"
 #include "model/model_error.h"
@@ -11,7 +12,6 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMenu>
-#include <QSaveFile>
 
 namespace devsurf::app {
 
@@ -86,18 +86,10 @@ void ExportJsonReaction::onTriggered() {
         return;
     }
     try {
-        const std::string text = io::interchangeJson(doc->project());
-        QSaveFile file(path);
-        if (!file.open(QIODevice::WriteOnly) ||
-            file.write(text.data(), static_cast<qint64>(text.size())) !=
-                static_cast<qint64>(text.size()) ||
-            !file.commit()) {
-            workspace()->showError(
-                tr("Export failed"),
-                tr("Cannot write %1: %2.").arg(QDir::toNativeSeparators(path), file.errorString()));
-            return;
-        }
+        io::saveInterchangeJsonFile(doc->project(), path);
         emit workspace()->statusMessage(tr("Exported %1").arg(QFileInfo(path).fileName()));
+    } catch (const io::FileError& error) {
+        workspace()->showError(tr("Export failed"), QString::fromStdString(error.what()));
     } catch (const model::ModelError& error) {
         workspace()->showError(
             tr("Export failed"),
