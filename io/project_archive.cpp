@@ -263,6 +263,12 @@ std::string writeProjectArchive(const model::Project& project) {
 }
 
 model::Project readProjectArchive(const std::string& payload) {
+    // Boost reads the signature's length from the archive and allocates that much before it
+    // compares: check the signature ourselves so a damaged length cannot allocate gigabytes.
+    static const std::string signature = "22 serialization::archive ";
+    if (payload.compare(0, signature.size(), signature) != 0) {
+        throw FileError("its contents are damaged (the archive signature is wrong)");
+    }
     std::istringstream in(payload);
     readContext = {&in, payload.size()};
     struct Reset {

@@ -139,6 +139,21 @@ private slots:
               loaded);
     }
 
+    void damagedSignatureLengthIsRejectedBeforeAllocating() {
+        // The archive starts with the length of its signature; Boost would allocate whatever
+        // a damaged length says (4 GB here) before comparing the signature.
+        const std::string good = io::encodeProject(model::makeExample("mixed", 1));
+        const std::string payload = good.substr(io::kProjectHeaderSize);
+        QVERIFY(payload.compare(0, 3, "22 ") == 0);
+        try {
+            io::decodeProject(withEnvelope(good, "4000000000" + payload.substr(2)));
+            QFAIL("a damaged signature loaded");
+        } catch (const io::FileError& error) {
+            QVERIFY2(std::string(error.what()).find("archive signature") != std::string::npos,
+                     error.what());
+        }
+    }
+
     void randomBytesAreRejected() {
         std::mt19937 rng(7);
         for (int i = 0; i < 500; ++i) {
