@@ -127,7 +127,6 @@ int runSolveCommand(const std::vector<std::string>& positional,
         solver::GuidedProjection projection;
         solver::Options solverOptions;
         solverOptions.eps2 = 1e-3;
-        solverOptions.factorization = solver::FactorizationMethod::Automatic;
         solverOptions.maxIterations = 1;
         model::CompositeSurface current = surface;
         for (int i = 0; i < iterations; ++i) {

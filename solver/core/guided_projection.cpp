@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace devsurf::solver {
 
@@ -24,6 +25,9 @@ double epsilon1(const Options& options, int iteration) {
 double epsilon2(const Options& options, int iteration, double residual) {
     if (options.eps2Schedule) {
         return options.eps2Schedule(iteration, residual);
+    }
+    if (options.adaptiveEps2 && epsilon1(options, iteration) == 0.0) {
+        return std::clamp(residual, std::min(options.eps2Minimum, options.eps2), options.eps2);
     }
     return options.eps2;
 }
@@ -64,7 +68,51 @@ struct GuidedProjection::Impl {
         analysed = false;
     }
 
-    bool prepareCached(const Problem& problem, const Options& options, Summary& summary) {
+    // Lays the normal matrix out for the chosen factorisation and analyses it.
+    bool analyse(const std::vector<int>& permutation, bool supernodal, Summary& summary) {
+        // Supernodal factorises the lower triangle in place, simplicial the upper one.
+        const auto triangle =
+            supernodal ? NormalEquations::Triangle::Lower : NormalEquations::Triangle::Upper;
+        equations.setLayout(permutation, triangle);
+        if (!cholesky.analyzePermuted(
+                equations.variableCount(), equations.columnStart(), equations.rowIndex(),
+                triangle == NormalEquations::Triangle::Lower, supernodal, permutation)) {
+            summary.status = Status::FactorizationFailed;
+            summary.message = cholesky.error();
+            return false;
+        }
+        return true;
+    }
+
+    // Times one numeric factorisation at x with the given method (the faster of two when one
+    // takes under 20 ms); infinity if it fails.
+    double timeFactorization(const Problem& problem, const Options& options,
+                             const std::vector<int>& permutation, bool supernodal,
+                             Summary& summary) {
+        if (!analyse(permutation, supernodal, summary)) {
+            return std::numeric_limits<double>::infinity();
+        }
+        equations.fill(problem, epsilon1(options, options.scheduleOffset), options.eps2,
+                       cholesky.values(), rhs.data());
+        std::vector<double> values(cholesky.values(),
+                                   cholesky.values() + equations.normalNonZeros());
+        double best = std::numeric_limits<double>::infinity();
+        for (int repeat = 0; repeat < 2; ++repeat) {
+            std::copy(values.begin(), values.end(), cholesky.values());
+            const auto start = Clock::now();
+            if (!cholesky.factorize()) {
+                return std::numeric_limits<double>::infinity();
+            }
+            best = std::min(best, elapsedMs(start));
+            if (best > 20.0) {
+                break;
+            }
+        }
+        return best;
+    }
+
+    bool prepareCached(const Problem& problem, const double* x, const Options& options,
+                       Summary& summary) {
         std::string error;
         if (!equations.build(problem, &error)) {
             summary.status = Status::InvalidProblem;
@@ -80,15 +128,18 @@ struct GuidedProjection::Impl {
             summary.message = cholesky.error();
             return false;
         }
-        // Supernodal factorises the lower triangle in place, simplicial the upper one.
-        const auto triangle =
-            supernodal ? NormalEquations::Triangle::Lower : NormalEquations::Triangle::Upper;
-        equations.setLayout(permutation, triangle);
-        if (!cholesky.analyzePermuted(n, equations.columnStart(), equations.rowIndex(),
-                                      triangle == NormalEquations::Triangle::Lower, supernodal,
-                                      permutation)) {
-            summary.status = Status::FactorizationFailed;
-            summary.message = cholesky.error();
+        if (options.factorization == FactorizationMethod::Measured &&
+            equations.evaluate(problem, x)) {
+            Summary scratch;
+            const double simplicialMs =
+                timeFactorization(problem, options, permutation, false, scratch);
+            const double supernodalMs =
+                timeFactorization(problem, options, permutation, true, scratch);
+            if (std::isfinite(simplicialMs) || std::isfinite(supernodalMs)) {
+                supernodal = supernodalMs < simplicialMs;
+            }
+        }
+        if (!analyse(permutation, supernodal, summary)) {
             return false;
         }
         analysed = true;
@@ -216,7 +267,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
                 summary.message = error;
             }
         } else {
-            ok = d.prepareCached(problem, options, summary);
+            ok = d.prepareCached(problem, d.x.data(), options, summary);
         }
         if (!ok) {
             d.reset();
@@ -259,9 +310,20 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         stats.eps2 = epsilon2(options, options.scheduleOffset + iteration,
                               d.equations.maxConstraintResidual());
         stats.assemblyMs = pendingEvaluationMs;
-        const bool stepped = options.baseline
-                                 ? d.baselineStep(problem, stats.eps1, options, stats, summary)
-                                 : d.cachedStep(problem, stats.eps1, stats, summary);
+        auto step = [&] {
+            return options.baseline ? d.baselineStep(problem, stats.eps1, options, stats, summary)
+                                    : d.cachedStep(problem, stats.eps1, stats, summary);
+        };
+        bool stepped = step();
+        if (!stepped && summary.status == Status::FactorizationFailed &&
+            stats.eps2 < options.eps2) {
+            // A smaller adaptive ε₂ can leave the matrix numerically singular (a degenerate
+            // strip); repeat with the configured damping.
+            summary.status = Status::IterationLimit;
+            summary.message.clear();
+            stats.eps2 = options.eps2;
+            stepped = step();
+        }
         if (!stepped) {
             break;
         }

@@ -65,6 +65,7 @@ struct SparseCholesky::Impl {
             common.supernodal = CHOLMOD_SIMPLICIAL;
             break;
         case FactorizationMethod::Automatic:
+        case FactorizationMethod::Measured:
             common.supernodal = CHOLMOD_AUTO;
             break;
         }
@@ -88,12 +89,19 @@ bool SparseCholesky::computeOrdering(int n, const std::vector<int>& colStart,
     Impl& d = *m_impl;
     d.release();
     d.defaultOrdering();
-    d.setMethod(method);
+    // Once per structure, so trying three orderings is cheap on small problems: on the
+    // 1,704-variable annulus METIS or nested dissection gives 9 % less fill than AMD. On
+    // 40,000 variables AMD already wins and the other two cost about half a second.
+    if (n <= 20000) {
+        d.common.nmethods = 3;
+    }
+    d.setMethod(method == FactorizationMethod::Measured ? FactorizationMethod::Automatic : method);
     cholmod_sparse* pattern = d.makeMatrix(n, colStart, rowIndex, 1, CHOLMOD_PATTERN);
     if (!pattern) {
         return d.fail("allocating the pattern failed");
     }
     cholmod_factor* symbolic = cholmod_analyze(pattern, &d.common);
+    d.defaultOrdering();
     cholmod_free_sparse(&pattern, &d.common);
     if (!symbolic) {
         return d.fail("symbolic analysis failed");

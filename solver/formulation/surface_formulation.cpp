@@ -91,6 +91,7 @@ struct SurfaceFormulation::Builder {
     std::unique_ptr<LinearTerm> smoothness = std::make_unique<LinearTerm>();
     std::unique_ptr<TargetTerm> handles = std::make_unique<TargetTerm>();
     std::unique_ptr<FairnessTerm> fairness = std::make_unique<FairnessTerm>(3);
+    std::unique_ptr<FairnessTerm> normalFairness = std::make_unique<FairnessTerm>(3);
     std::unique_ptr<UnitNormTerm> unitControlNormals = std::make_unique<UnitNormTerm>(3);
 
     std::vector<model::Strip> strips;
@@ -332,16 +333,18 @@ struct SurfaceFormulation::Builder {
             unitControlNormals->addVector(normalOffset + 3 * i);
             normalSequence.push_back(normalOffset + 3 * i);
         }
-        // Fairness of the normal spline's control sequence too: it keeps neighbouring control
-        // normals from flipping against each other, a degenerate way of satisfying (4) where
-        // n(u) vanishes between them.
-        fairness->addSequence(normalSequence);
+        // Fairness of the normal spline's control sequence (its own family, see
+        // FormulationOptions::normalFairnessWeight).
+        normalFairness->addSequence(normalSequence);
         registerRulingNormals(strip.face, a0, n0, n1);
 
-        // Initial control normals: least-squares fit of the normal field N(u) = a′ × (b − a),
-        // sampled at the collocation values and the ends, scaled so that |n(0)| = 1. N itself
-        // (not N/|N|) is fitted: for strips whose N lies in the normal spline's space (e.g. a
-        // generalised cylinder over a cubic) the fit is then exact and the strip stays put.
+        // Initial control normals, fitted by least squares to N(u) = a′ × (b − a) sampled at
+        // the collocation values and the ends. If N itself lies in the normal spline's space
+        // (e.g. a generalised cylinder over a cubic) its exact fit, scaled to |n(0)| = 1, is
+        // kept and the strip stays put. Otherwise the unit field N/|N| is fitted: it gives every
+        // row of (4) the same scale from the start, whereas on a noisy start |N| varies by
+        // orders of magnitude along a strip and fitting N made the first steps large where |N|
+        // is large (measured: 10× the initial residual).
         std::vector<double> samples = values;
         samples.push_back(0.0);
         samples.push_back(1.0);
@@ -351,27 +354,37 @@ struct SurfaceFormulation::Builder {
             field.push_back(cross(strip.a.derivative(u, 1), strip.bPoint(u) - strip.aPoint(u)));
             typical = std::max(typical, field.back().norm());
         }
+        const auto rowCount = static_cast<Eigen::Index>(samples.size());
+        Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(rowCount, controls);
+        Eigen::MatrixXd scaledField(rowCount, 3);
+        Eigen::MatrixXd unitField(rowCount, 3);
         const double startLength = field[field.size() - 2].norm();
         const double reference = startLength > 1e-9 * typical ? startLength : typical;
-        Eigen::MatrixXd basis =
-            Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(samples.size()), controls);
-        Eigen::MatrixXd targets(static_cast<Eigen::Index>(samples.size()), 3);
+        bool degenerate = !(reference > 0.0);
         for (std::size_t s = 0; s < samples.size(); ++s) {
+            const auto row = static_cast<Eigen::Index>(s);
             const model::DeBoorRows rows = normalCurve.deBoorRows(samples[s]);
             for (std::size_t i = 0; i < rows.indices.size(); ++i) {
-                basis(static_cast<Eigen::Index>(s), rows.indices[i]) += rows.point[i];
+                basis(row, rows.indices[i]) += rows.point[i];
             }
             // A degenerate sample (a collapsed ruling) gets a unit normal from a′ × b′.
-            const Vec3 n = field[s].norm() > 1e-9 * typical && reference > 0.0
-                               ? field[s] / reference
-                               : stripNormal(strip, samples[s]);
+            const bool regular = field[s].norm() > 1e-9 * typical;
+            degenerate = degenerate || !regular;
+            const Vec3 unit = regular ? field[s] / field[s].norm() : stripNormal(strip, samples[s]);
+            const Vec3 scaled = degenerate ? unit : field[s] / reference;
             for (int k = 0; k < 3; ++k) {
-                targets(static_cast<Eigen::Index>(s), k) = n[k];
+                unitField(row, k) = unit[k];
+                scaledField(row, k) = scaled[k];
             }
         }
         const Eigen::MatrixXd normal =
             basis.transpose() * basis + 1e-12 * Eigen::MatrixXd::Identity(controls, controls);
-        const Eigen::MatrixXd fitted = normal.ldlt().solve(basis.transpose() * targets);
+        const Eigen::LDLT<Eigen::MatrixXd> factor = normal.ldlt();
+        Eigen::MatrixXd fitted = factor.solve(basis.transpose() * scaledField);
+        const double misfit = (basis * fitted - scaledField).cwiseAbs().maxCoeff();
+        if (degenerate || !(misfit <= 1e-9 * scaledField.cwiseAbs().maxCoeff())) {
+            fitted = factor.solve(basis.transpose() * unitField);
+        }
         for (int i = 0; i < controls; ++i) {
             setVector(normalOffset + 3 * i, Vec3(fitted(i, 0), fitted(i, 1), fitted(i, 2)));
         }
@@ -481,6 +494,8 @@ struct SurfaceFormulation::Builder {
         }
         add("handles", TermRole::Constraint, options.handleWeight, std::move(handles));
         add("fairness", TermRole::Energy, options.fairnessWeight, std::move(fairness));
+        add("normalFairness", TermRole::Energy, options.normalFairnessWeight,
+            std::move(normalFairness));
         add("unitControlNormals", TermRole::Energy, options.unitControlNormalWeight,
             std::move(unitControlNormals));
     }

@@ -14,9 +14,6 @@ struct BenchmarkOptions {
     double noise = 0.01;       // σ as a fraction of the model's diameter
     unsigned seed = 20150801u; // fixed: every run starts from the same perturbed models
     double eps2 = 1e-3;
-    // CHOLMOD's own choice between supernodal and simplicial (measured: simplicial wins on the
-    // small models, supernodal on the large one).
-    bool automaticFactorization = true;
     double ceresCapSeconds = 60.0;
     bool runCeres = true;
     bool compareAuxiliary = true; // also time the auxiliary-variable formulation

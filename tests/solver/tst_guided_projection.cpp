@@ -155,11 +155,48 @@ private slots:
         QCOMPARE(epsilon1(options, 3), 0.5);
     }
 
+    void adaptiveEps2() {
+        Options options;
+        QVERIFY(options.adaptiveEps2);
+        // During the ε₁ phase: the configured ε₂; afterwards the residual, clamped.
+        QCOMPARE(epsilon2(options, 0, 1e-9), options.eps2);
+        QCOMPARE(epsilon2(options, 5, 1.0), options.eps2);
+        QCOMPARE(epsilon2(options, 5, 1e-4), 1e-4);
+        QCOMPARE(epsilon2(options, 5, 1e-12), options.eps2Minimum);
+        options.adaptiveEps2 = false;
+        QCOMPARE(epsilon2(options, 5, 1e-4), options.eps2);
+    }
+
+    void singularAdaptiveStepIsRepeatedWithConfiguredEps2() {
+        // A variable that no row touches: N is singular once the adaptive ε₂ reaches 0.
+        Problem p;
+        p.addVariableBlock("x", 3);
+        auto target = std::make_unique<TargetTerm>();
+        target->addTarget(0, 1.0);
+        target->addTarget(1, 2.0);
+        p.add(p.addFamily("t", TermRole::Constraint), std::move(target));
+        std::vector<double> x{0.5, 0.5, 0.5};
+        Options options;
+        options.eps1Iterations = 0;
+        options.eps2Minimum = 0.0;
+        options.maxIterations = 6;
+        GuidedProjection solver;
+        const Summary s = solver.solve(p, x, options);
+        QVERIFY2(s.succeeded(), s.briefReport().c_str());
+        QCOMPARE(s.iterationsCompleted, 6);
+        QCOMPARE(s.iterations.front().eps2, options.eps2);
+        QVERIFY(s.iterations[1].eps2 < 1e-3);             // shrunk with the residual
+        QCOMPARE(s.iterations.back().eps2, options.eps2); // 0 failed, repeated with ε₂
+        QVERIFY(std::abs(x[0] - 1.0) < 1e-12 && std::abs(x[1] - 2.0) < 1e-12);
+        QCOMPARE(x[2], 0.5);
+    }
+
     void circleConverges_data() {
         QTest::addColumn<int>("method");
         QTest::newRow("supernodal") << static_cast<int>(FactorizationMethod::Supernodal);
         QTest::newRow("simplicial") << static_cast<int>(FactorizationMethod::Simplicial);
         QTest::newRow("automatic") << static_cast<int>(FactorizationMethod::Automatic);
+        QTest::newRow("measured") << static_cast<int>(FactorizationMethod::Measured);
     }
 
     void circleConverges() {
@@ -306,6 +343,8 @@ private slots:
         std::vector<double> expected = reference->start;
         Options options;
         options.maxIterations = 3;
+        // A fixed method: Measured evaluates the terms once more while it times both.
+        options.factorization = FactorizationMethod::Supernodal;
         GuidedProjection referenceSolver;
         QVERIFY(referenceSolver.solve(reference->problem, expected, options).succeeded());
 
