@@ -119,6 +119,7 @@ struct ModelResult {
     int auxiliaryVariables = 0;
     Timing auxiliary;
     double auxiliaryDetMax = 0.0;
+    solver::QualityMeasures smallNoiseQuality; // the same 10 iterations from the smaller noise
     std::string status;
 };
 
@@ -216,6 +217,20 @@ ModelResult runModel(const BenchModel& model, const BenchmarkOptions& options, d
         log(r.name + ": auxiliary variant " + number(r.auxiliary.total) + " ms/iteration");
     }
 
+    if (options.smallNoise > 0.0) {
+        // Quality only (no timing): the same model, anchors and seed at the smaller noise.
+        model::CompositeSurface quiet = model.surface;
+        solver::perturbSurface(quiet, options.smallNoise * solver::surfaceDiameter(quiet),
+                               options.seed, anchors);
+        const solver::SurfaceFormulation f(quiet, formulationOptions);
+        std::vector<double> y = f.initialState();
+        if (solveFrom(f.problem(), y, options, false).succeeded() && f.writeBack(y, quiet)) {
+            r.smallNoiseQuality = solver::measureQuality(quiet);
+        }
+        log(r.name + ": from " + number(options.smallNoise) + " noise, det max " +
+            number(r.smallNoiseQuality.developabilityMax));
+    }
+
     if (options.runCeres) {
         r.ceres = runCeres(formulation.problem(), start, r.finalResidual, options.ceresCapSeconds);
         log(r.name + ": Ceres " + number(r.ceres.milliseconds) + " ms" +
@@ -234,6 +249,7 @@ void writeJson(const std::vector<ModelResult>& results, const solver::BlasInfo& 
         << ",\n  \"dgemm_gflops\": " << number(dgemm)
         << ",\n  \"iterations\": " << options.iterations
         << ",\n  \"noise_fraction_of_diameter\": " << number(options.noise)
+        << ",\n  \"small_noise_fraction_of_diameter\": " << number(options.smallNoise)
         << ",\n  \"seed\": " << options.seed << ",\n  \"eps2\": " << number(options.eps2)
         << ",\n  \"ceres_available\": " << (ceresAvailable() ? "true" : "false")
         << ",\n  \"models\": [";
@@ -296,7 +312,11 @@ void writeJson(const std::vector<ModelResult>& results, const solver::BlasInfo& 
             << "      \"paper_flatness_mean\": " << number(r.paper.flatnessMean) << ",\n"
             << "      \"paper_flatness_max\": " << number(r.paper.flatnessMax) << ",\n"
             << "      \"gauss_curvature_mean\": " << number(r.quality.curvatureMean) << ",\n"
-            << "      \"gauss_curvature_max\": " << number(r.quality.curvatureMax) << "\n"
+            << "      \"gauss_curvature_max\": " << number(r.quality.curvatureMax) << ",\n"
+            << "      \"small_noise_det_residual_max\": "
+            << number(r.smallNoiseQuality.developabilityMax) << ",\n"
+            << "      \"small_noise_flatness_mean\": " << number(r.smallNoiseQuality.flatnessMean)
+            << "\n"
             << "    }";
     }
     out << "\n  ]\n}\n";

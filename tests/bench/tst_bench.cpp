@@ -1,0 +1,76 @@
+#include "benchmark.h"
+
+#include "test_registry.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTest>
+
+#include <sstream>
+
+using namespace devsurf;
+
+// The benchmark is not a timed test; this checks that it runs and reports what it claims, on
+// the smallest model (Fig. 13), with its peers.
+class TstBench : public QObject {
+    Q_OBJECT
+
+private slots:
+    void jsonReportOfTheTwoStripModel() {
+        bench::BenchmarkOptions options;
+        options.json = true;
+        options.models = {"fig13-two-strips"};
+        std::ostringstream out;
+        QCOMPARE(bench::runBenchmark(options, out), 0);
+        QJsonParseError error;
+        const QJsonDocument document =
+            QJsonDocument::fromJson(QByteArray::fromStdString(out.str()), &error);
+        QVERIFY2(error.error == QJsonParseError::NoError, qPrintable(error.errorString()));
+        const QJsonObject root = document.object();
+        QVERIFY(!root.value("blas").toString().isEmpty());
+        QVERIFY(root.value("dgemm_gflops").toDouble() > 0.0);
+        const QJsonArray models = root.value("models").toArray();
+        QCOMPARE(models.size(), 1);
+        const QJsonObject m = models.first().toObject();
+        QCOMPARE(m.value("model").toString(), QString("fig13-two-strips"));
+        QCOMPARE(m.value("control_points").toInt(), 36);
+        QCOMPARE(m.value("strips").toInt(), 2);
+        QVERIFY(m.value("variables").toInt() > 0);
+        QVERIFY(m.value("constraints").toInt() > 0);
+        QVERIFY(m.value("jacobian_nnz").toDouble() > 0.0);
+        QVERIFY(m.value("factor_nnz").toDouble() > 0.0);
+        QVERIFY(m.value("flops").toDouble() > 0.0);
+        const QJsonObject time = m.value("ms_per_iter").toObject();
+        for (const char* key : {"assembly", "factorize", "solve"}) {
+            QVERIFY2(time.value(key).toDouble() > 0.0, key);
+        }
+        QVERIFY(time.value("total").toDouble() >= time.value("factorize").toDouble());
+        const QString method = m.value("factorization").toString();
+        QVERIFY(method == "simplicial" || method == "supernodal");
+        QVERIFY(m.value("lower_bound_ms").toDouble() > 0.0);
+        QCOMPARE(m.value("paper_s_per_iter").toDouble(), 0.04);
+        QVERIFY(m.value("baseline_ms_per_iter").toDouble() > 0.0);
+        // Quality, measured on the geometry: this model reaches the targets from 1 % noise.
+        QVERIFY(m.value("det_residual_max").toDouble() <= 1e-8);
+        QVERIFY(m.value("flatness_mean").toDouble() <= m.value("paper_flatness_mean").toDouble());
+        QVERIFY(m.value("small_noise_det_residual_max").toDouble() <= 1e-8);
+        if (bench::ceresAvailable()) {
+            QVERIFY(m.value("ceres_reached_residual").toBool());
+            QVERIFY(m.value("ceres_ms_to_residual").toDouble() > 0.0);
+        } else {
+            QVERIFY(m.value("ceres_ms_to_residual").isNull());
+        }
+    }
+
+    void unknownModelIsRefused() {
+        bench::BenchmarkOptions options;
+        options.json = true;
+        options.models = {"no-such-model"};
+        std::ostringstream out;
+        QVERIFY(bench::runBenchmark(options, out) != 0);
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstBench);
+#include "tst_bench.moc"
