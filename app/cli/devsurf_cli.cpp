@@ -47,7 +47,7 @@ Commands:
                       assembly / factorisation / solve, quality). --perturb adds Gaussian
                       noise of SIGMA times the surface's diameter first; --fix keeps the
                       vertices with the given ids (e.g. 0,4,7) where they are.
-  bench [--json]      Run the solver benchmark (about 2 minutes): timings, flops, quality,
+  bench [--json]      Run the solver benchmark (about 80 seconds): timings, flops, quality,
                       the rebuild baseline and Ceres on the paper's Fig. 17 models.
 
 Options:
