@@ -73,6 +73,16 @@ double maxAbsDifference(const std::vector<double>& a, const std::vector<double>&
 }
 
 // Produces finite values for the first `goodEvaluations` evaluations, then NaN.
+// Three variables; hard targets x₀ = 1 and x₁ = 2; no row touches x₂, so N is singular
+// without damping.
+void addTwoTargetsOfThree(Problem& p) {
+    p.addVariableBlock("x", 3);
+    auto target = std::make_unique<TargetTerm>();
+    target->addTarget(0, 1.0);
+    target->addTarget(1, 2.0);
+    p.add(p.addFamily("t", TermRole::Constraint), std::move(target));
+}
+
 class PoisonTerm : public Term {
 public:
     explicit PoisonTerm(int goodEvaluations) : m_remaining(goodEvaluations) {}
@@ -170,11 +180,7 @@ private slots:
     void singularAdaptiveStepIsRepeatedWithConfiguredEps2() {
         // A variable that no row touches: N is singular once the adaptive ε₂ reaches 0.
         Problem p;
-        p.addVariableBlock("x", 3);
-        auto target = std::make_unique<TargetTerm>();
-        target->addTarget(0, 1.0);
-        target->addTarget(1, 2.0);
-        p.add(p.addFamily("t", TermRole::Constraint), std::move(target));
+        addTwoTargetsOfThree(p);
         std::vector<double> x{0.5, 0.5, 0.5};
         Options options;
         options.eps1Iterations = 0;
@@ -368,11 +374,7 @@ private slots:
     void failedFactorizationReturnsLastGoodState() {
         // ε₂ = 0 and a variable that no row touches: N is singular.
         Problem p;
-        p.addVariableBlock("x", 3);
-        auto target = std::make_unique<TargetTerm>();
-        target->addTarget(0, 1.0);
-        target->addTarget(1, 2.0);
-        p.add(p.addFamily("t", TermRole::Constraint), std::move(target));
+        addTwoTargetsOfThree(p);
         std::vector<double> x{0.5, 0.5, 0.5};
         Options options;
         options.eps2 = 0.0;
