@@ -111,25 +111,20 @@ struct GuidedProjection::Impl {
         return best;
     }
 
-    bool prepareCached(const Problem& problem, const double* x, const Options& options,
-                       Summary& summary) {
-        std::string error;
-        if (!equations.build(problem, &error)) {
-            summary.status = Status::InvalidProblem;
-            summary.message = error;
-            return false;
-        }
-        const int n = equations.variableCount();
+    // Ordering, choice of method and symbolic analysis for the cached mode. The equations
+    // must be built and evaluated at the first iterate (Measured times factorisations of it).
+    bool analyseCached(const Problem& problem, const Options& options, Summary& summary) {
         std::vector<int> permutation;
         bool supernodal = false;
-        if (!cholesky.computeOrdering(n, equations.columnStart(), equations.rowIndex(),
-                                      options.factorization, permutation, supernodal)) {
+        if (!cholesky.computeOrdering(equations.variableCount(), equations.columnStart(),
+                                      equations.rowIndex(), options.factorization, permutation,
+                                      supernodal)) {
             summary.status = Status::FactorizationFailed;
             summary.message = cholesky.error();
             return false;
         }
-        if (options.factorization == FactorizationMethod::Measured &&
-            equations.evaluate(problem, x)) {
+        bool analysedAsChosen = false;
+        if (options.factorization == FactorizationMethod::Measured) {
             Summary scratch;
             const double simplicialMs =
                 timeFactorization(problem, options, permutation, false, scratch);
@@ -137,9 +132,11 @@ struct GuidedProjection::Impl {
                 timeFactorization(problem, options, permutation, true, scratch);
             if (std::isfinite(simplicialMs) || std::isfinite(supernodalMs)) {
                 supernodal = supernodalMs < simplicialMs;
+                // The supernodal analysis was the last one; it stands if supernodal won.
+                analysedAsChosen = supernodal && std::isfinite(supernodalMs);
             }
         }
-        if (!analyse(permutation, supernodal, summary)) {
+        if (!analysedAsChosen && !analyse(permutation, supernodal, summary)) {
             return false;
         }
         analysed = true;
@@ -253,24 +250,16 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
     }
 
     // Structure: reuse while the problem structure (and the factorisation method) is unchanged.
-    const auto analysisStart = Clock::now();
+    auto analysisStart = Clock::now();
     const bool reusable = d.equations.matches(problem) &&
                           (options.baseline || (d.analysed && d.method == options.factorization));
     if (!reusable) {
-        bool ok = true;
-        if (options.baseline) {
-            std::string error;
-            d.analysed = false;
-            ok = d.equations.build(problem, &error);
-            if (!ok) {
-                summary.status = Status::InvalidProblem;
-                summary.message = error;
-            }
-        } else {
-            ok = d.prepareCached(problem, d.x.data(), options, summary);
-        }
-        if (!ok) {
+        d.analysed = false;
+        std::string error;
+        if (!d.equations.build(problem, &error)) {
             d.reset();
+            summary.status = Status::InvalidProblem;
+            summary.message = error;
             summary.totalMs = elapsedMs(totalStart);
             return summary;
         }
@@ -289,6 +278,15 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         return summary;
     }
     double pendingEvaluationMs = elapsedMs(evaluationStart);
+    if (!reusable && !options.baseline) {
+        analysisStart = Clock::now();
+        if (!d.analyseCached(problem, options, summary)) {
+            d.reset();
+            summary.totalMs = elapsedMs(totalStart);
+            return summary;
+        }
+        summary.analysisMs += elapsedMs(analysisStart);
+    }
     summary.initialMaxConstraintResidual = d.equations.maxConstraintResidual();
     summary.initialEnergy = d.equations.energy();
     summary.finalMaxConstraintResidual = summary.initialMaxConstraintResidual;

@@ -91,7 +91,7 @@ bool SparseCholesky::computeOrdering(int n, const std::vector<int>& colStart,
     d.defaultOrdering();
     // Once per structure, so trying three orderings is cheap on small problems: on the
     // 1,704-variable annulus METIS or nested dissection gives 9 % less fill than AMD. On
-    // 40,000 variables AMD already wins and the other two cost about half a second.
+    // 40,000 variables AMD already wins and the other two cost about a third of a second.
     if (n <= 20000) {
         d.common.nmethods = 3;
     }

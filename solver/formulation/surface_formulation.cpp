@@ -356,11 +356,10 @@ struct SurfaceFormulation::Builder {
         }
         const auto rowCount = static_cast<Eigen::Index>(samples.size());
         Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(rowCount, controls);
-        Eigen::MatrixXd scaledField(rowCount, 3);
         Eigen::MatrixXd unitField(rowCount, 3);
+        Eigen::MatrixXd scaledField(rowCount, 3); // N / |N(0)|, used only if N is regular
         const double startLength = field[field.size() - 2].norm();
-        const double reference = startLength > 1e-9 * typical ? startLength : typical;
-        bool degenerate = !(reference > 0.0);
+        bool regularEverywhere = typical > 0.0;
         for (std::size_t s = 0; s < samples.size(); ++s) {
             const auto row = static_cast<Eigen::Index>(s);
             const model::DeBoorRows rows = normalCurve.deBoorRows(samples[s]);
@@ -369,20 +368,24 @@ struct SurfaceFormulation::Builder {
             }
             // A degenerate sample (a collapsed ruling) gets a unit normal from a′ × b′.
             const bool regular = field[s].norm() > 1e-9 * typical;
-            degenerate = degenerate || !regular;
+            regularEverywhere = regularEverywhere && regular;
             const Vec3 unit = regular ? field[s] / field[s].norm() : stripNormal(strip, samples[s]);
-            const Vec3 scaled = degenerate ? unit : field[s] / reference;
             for (int k = 0; k < 3; ++k) {
                 unitField(row, k) = unit[k];
-                scaledField(row, k) = scaled[k];
+                scaledField(row, k) = field[s][k] / startLength;
             }
         }
         const Eigen::MatrixXd normal =
             basis.transpose() * basis + 1e-12 * Eigen::MatrixXd::Identity(controls, controls);
         const Eigen::LDLT<Eigen::MatrixXd> factor = normal.ldlt();
-        Eigen::MatrixXd fitted = factor.solve(basis.transpose() * scaledField);
-        const double misfit = (basis * fitted - scaledField).cwiseAbs().maxCoeff();
-        if (degenerate || !(misfit <= 1e-9 * scaledField.cwiseAbs().maxCoeff())) {
+        Eigen::MatrixXd fitted;
+        bool exactFit = false;
+        if (regularEverywhere) {
+            fitted = factor.solve(basis.transpose() * scaledField);
+            const double misfit = (basis * fitted - scaledField).cwiseAbs().maxCoeff();
+            exactFit = misfit <= 1e-9 * scaledField.cwiseAbs().maxCoeff();
+        }
+        if (!exactFit) {
             fitted = factor.solve(basis.transpose() * unitField);
         }
         for (int i = 0; i < controls; ++i) {

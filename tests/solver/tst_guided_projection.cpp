@@ -349,8 +349,6 @@ private slots:
         std::vector<double> expected = reference->start;
         Options options;
         options.maxIterations = 3;
-        // A fixed method: Measured evaluates the terms once more while it times both.
-        options.factorization = FactorizationMethod::Supernodal;
         GuidedProjection referenceSolver;
         QVERIFY(referenceSolver.solve(reference->problem, expected, options).succeeded());
 
