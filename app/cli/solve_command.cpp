@@ -9,6 +9,7 @@
 
 #include <QString>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -55,6 +56,32 @@ std::vector<model::VertexId> parseIds(const std::string& text) {
         throw std::invalid_argument("option '--fix' needs vertex ids such as 0,4,7");
     }
     return ids;
+}
+
+// Says whether the solve reached the tolerance and, if not, which faces are worst (their ids,
+// as the desktop application shows them).
+void reportTolerance(const solver::SurfaceFormulation& formulation, const std::vector<double>& x,
+                     const solver::Summary& summary) {
+    char line[256];
+    if (summary.toleranceReached) {
+        std::snprintf(line, sizeof line, "Reached the tolerance %.1e (largest residual %.2e).\n",
+                      summary.tolerance, summary.finalMaxConstraintResidual);
+        std::cout << line;
+        return;
+    }
+    std::snprintf(line, sizeof line,
+                  "Did not reach the tolerance %.1e (largest residual %.2e); worst faces:",
+                  summary.tolerance, summary.finalMaxConstraintResidual);
+    std::cout << line;
+    const auto faces = formulation.faceResiduals(x);
+    const std::size_t shown = std::min<std::size_t>(faces.size(), 5);
+    for (std::size_t i = 0; i < shown; ++i) {
+        std::snprintf(line, sizeof line, "%s face %u (%.2e)", i == 0 ? "" : ",", faces[i].face,
+                      faces[i].residual);
+        std::cout << line;
+    }
+    std::cout << (shown == 0 ? " none (the residual is in a vertex or normal condition)" : "")
+              << "\n";
 }
 
 } // namespace
@@ -129,6 +156,7 @@ int runSolveCommand(const std::vector<std::string>& positional,
         solverOptions.eps2 = 1e-3;
         solverOptions.maxIterations = 1;
         model::CompositeSurface current = surface;
+        solver::Summary last;
         for (int i = 0; i < iterations; ++i) {
             solverOptions.scheduleOffset = i;
             const solver::Summary summary =
@@ -139,6 +167,7 @@ int runSolveCommand(const std::vector<std::string>& positional,
                                         (summary.message.empty() ? "" : ": " + summary.message) +
                                         "); nothing was written.");
             }
+            last = summary;
             const solver::IterationStats& it = summary.iterations.front();
             std::string error;
             if (!formulation->writeBack(x, current, &error)) {
@@ -153,6 +182,7 @@ int runSolveCommand(const std::vector<std::string>& positional,
                           it.solveMs, quality.describe().c_str());
             std::cout << line;
         }
+        reportTolerance(*formulation, x, last);
         surface = current;
     }
     io::saveProjectFile(project, QString::fromStdString(output));

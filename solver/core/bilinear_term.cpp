@@ -1,7 +1,10 @@
 #include "solver/core/bilinear_term.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace devsurf::solver {
 
@@ -30,46 +33,100 @@ void BilinearTerm::buildPattern(PatternBuilder& builder) const {
     }
 }
 
-int BilinearTerm::evaluateOne(std::size_t r, const double* x, double* residual,
-                              double* jacobian) const {
+void BilinearTerm::sides(std::size_t r, const double* x, double* u, double* v) const {
     const int d = m_dimension;
-    std::array<double, kMaxDimension> u{};
-    std::array<double, kMaxDimension> v{};
-    const int begin = m_leftStart[r];
-    const int middle = m_rightStart[r];
-    const int end = m_leftStart[r + 1];
-    for (int e = begin; e < middle; ++e) {
+    std::fill(u, u + d, 0.0);
+    std::fill(v, v + d, 0.0);
+    for (int e = m_leftStart[r]; e < m_rightStart[r]; ++e) {
         const PointTerm& p = m_points[static_cast<std::size_t>(e)];
         for (int k = 0; k < d; ++k) {
             u[k] += p.coefficient * x[p.offset + k];
         }
     }
-    for (int e = middle; e < end; ++e) {
+    for (int e = m_rightStart[r]; e < m_leftStart[r + 1]; ++e) {
         const PointTerm& p = m_points[static_cast<std::size_t>(e)];
         for (int k = 0; k < d; ++k) {
             v[k] += p.coefficient * x[p.offset + k];
         }
     }
+}
+
+void BilinearTerm::scaleRowsAt(const double* reference) {
+    m_scale.clear();
+    if (!reference) {
+        return;
+    }
+    m_scale.resize(m_target.size());
+    for (std::size_t r = 0; r < m_target.size(); ++r) {
+        std::array<double, kMaxDimension> u{};
+        std::array<double, kMaxDimension> v{};
+        sides(r, reference, u.data(), v.data());
+        double uu = 0.0;
+        double vv = 0.0;
+        for (int k = 0; k < m_dimension; ++k) {
+            uu += u[k] * u[k];
+            vv += v[k] * v[k];
+        }
+        const double product = std::sqrt(uu * vv);
+        m_scale[r] = product > 0.0 && std::isfinite(1.0 / product) ? 1.0 / product : 0.0;
+    }
+    // Scales stay within a factor 100 of the median: a side that nearly vanishes at the
+    // reference (a normal spline passing close to zero on a rough start) would otherwise make
+    // its row dominate every other.
+    std::vector<double> sorted;
+    for (double v : m_scale) {
+        if (v > 0.0) {
+            sorted.push_back(v);
+        }
+    }
+    if (sorted.empty()) {
+        std::fill(m_scale.begin(), m_scale.end(), 1.0);
+        return;
+    }
+    std::nth_element(sorted.begin(),
+                     sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+    const double median = sorted[sorted.size() / 2];
+    for (double& v : m_scale) {
+        v = v > 0.0 ? std::clamp(v, median / 100.0, median * 100.0) : median;
+    }
+}
+
+int BilinearTerm::evaluateOne(std::size_t r, const double* x, double* residual,
+                              double* jacobian) const {
+    const int d = m_dimension;
+    std::array<double, kMaxDimension> u{};
+    std::array<double, kMaxDimension> v{};
+    sides(r, x, u.data(), v.data());
+    const double scale = m_scale.empty() ? 1.0 : m_scale[r];
     double value = -m_target[r];
     for (int k = 0; k < d; ++k) {
         value += u[k] * v[k];
     }
-    *residual = value;
-    // ∂/∂nₖ = dₖ v, ∂/∂pᵢ = cᵢ u.
+    *residual = scale * value;
+    // ∂/∂nₖ = s dₖ v, ∂/∂pᵢ = s cᵢ u.
     double* out = jacobian;
-    for (int e = begin; e < middle; ++e) {
-        const double c = m_points[static_cast<std::size_t>(e)].coefficient;
+    for (int e = m_leftStart[r]; e < m_rightStart[r]; ++e) {
+        const double c = scale * m_points[static_cast<std::size_t>(e)].coefficient;
         for (int k = 0; k < d; ++k) {
             *out++ = c * v[k];
         }
     }
-    for (int e = middle; e < end; ++e) {
-        const double c = m_points[static_cast<std::size_t>(e)].coefficient;
+    for (int e = m_rightStart[r]; e < m_leftStart[r + 1]; ++e) {
+        const double c = scale * m_points[static_cast<std::size_t>(e)].coefficient;
         for (int k = 0; k < d; ++k) {
             *out++ = c * u[k];
         }
     }
     return static_cast<int>(out - jacobian);
+}
+
+double BilinearTerm::rowResidual(int row, const double* x) const {
+    const auto r = static_cast<std::size_t>(row);
+    std::vector<double> jacobian(
+        static_cast<std::size_t>((m_leftStart[r + 1] - m_leftStart[r]) * m_dimension));
+    double residual = 0.0;
+    evaluateOne(r, x, &residual, jacobian.data());
+    return residual;
 }
 
 void BilinearTerm::evaluate(const double* x, double* residuals, double* jacobian) const {

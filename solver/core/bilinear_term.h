@@ -10,6 +10,13 @@ namespace devsurf::solver {
 // the crease conditions (7), (8) and the reference-shape condition (11). Both sides are
 // linear combinations of points of the same dimension (e.g. a normal-spline evaluation and
 // a difference of de Boor points).
+//
+// Rows may carry constant scales sᵣ (scaleRowsAt): sᵣ(⟨u, v⟩ − t) with sᵣ = 1/(|u| |v|) taken
+// at a reference state, so that near it a row measures the cosine of the angle between its two
+// sides: dimensionless, and comparable between thin and wide strips, fine and coarse control
+// spacings and models of any size. (The exact cosine, rescaled at every x, was measured worse:
+// it is invariant to the scale of the points and the normals, and the iteration drifted along
+// those directions until it broke down.)
 class BilinearTerm : public Term {
 public:
     static constexpr int kMaxDimension = 4;
@@ -20,6 +27,15 @@ public:
     // Returns the row index within this term.
     int addRow(const PointCombination& left, const PointCombination& right, double target = 0.0);
     void setTarget(int row, double target) { m_target[static_cast<std::size_t>(row)] = target; }
+    // Sets every row's scale to 1/(|u| |v|) at `reference`, kept within a factor 100 of the
+    // median scale (the median where a side vanishes there);
+    // null resets the scales to 1. Values only: the pattern is unchanged.
+    void scaleRowsAt(const double* reference);
+    double rowScale(int row) const {
+        return m_scale.empty() ? 1.0 : m_scale[static_cast<std::size_t>(row)];
+    }
+    // The residual of one row at x (outside the iteration loop: it allocates).
+    double rowResidual(int row, const double* x) const;
 
     const char* typeName() const override { return "BilinearTerm"; }
     int rowCount() const override { return static_cast<int>(m_target.size()); }
@@ -30,7 +46,10 @@ public:
 private:
     // Residual and Jacobian values of row r; returns the number of Jacobian values written.
     int evaluateOne(std::size_t r, const double* x, double* residual, double* jacobian) const;
+    // The two sides of row r at x.
+    void sides(std::size_t r, const double* x, double* u, double* v) const;
     int m_dimension;
+    std::vector<double> m_scale; // per row; empty: all 1
     // Row r uses m_points[m_leftStart[r] .. m_rightStart[r]) on the left and
     // m_points[m_rightStart[r] .. m_leftStart[r + 1]) on the right.
     std::vector<int> m_leftStart{0};

@@ -18,6 +18,19 @@ void FairnessTerm::addSequence(const std::vector<int>& points, bool closed) {
     }
 }
 
+void FairnessTerm::setReference(const double* reference) {
+    m_reference.clear();
+    if (!reference) {
+        return;
+    }
+    m_reference.reserve(m_triples.size() * static_cast<std::size_t>(m_dimension));
+    for (const Triple& t : m_triples) {
+        for (int k = 0; k < m_dimension; ++k) {
+            m_reference.push_back(secondDifference(t, k, reference));
+        }
+    }
+}
+
 void FairnessTerm::buildPattern(PatternBuilder& builder) const {
     for (const Triple& t : m_triples) {
         for (int k = 0; k < m_dimension; ++k) {
@@ -30,9 +43,10 @@ void FairnessTerm::buildPattern(PatternBuilder& builder) const {
 }
 
 void FairnessTerm::evaluate(const double* x, double* residuals, double* jacobian) const {
+    const double* reference = m_reference.empty() ? nullptr : m_reference.data();
     for (const Triple& t : m_triples) {
         for (int k = 0; k < m_dimension; ++k) {
-            *residuals++ = x[t.previous + k] - 2.0 * x[t.current + k] + x[t.next + k];
+            *residuals++ = secondDifference(t, k, x) - (reference ? *reference++ : 0.0);
             *jacobian++ = 1.0;
             *jacobian++ = -2.0;
             *jacobian++ = 1.0;
@@ -43,7 +57,8 @@ void FairnessTerm::evaluate(const double* x, double* residuals, double* jacobian
 bool FairnessTerm::evaluateRow(int row, const double* x, double* residual, double* jacobian) const {
     const Triple& t = m_triples[static_cast<std::size_t>(row / m_dimension)];
     const int k = row % m_dimension;
-    *residual = x[t.previous + k] - 2.0 * x[t.current + k] + x[t.next + k];
+    *residual = secondDifference(t, k, x) -
+                (m_reference.empty() ? 0.0 : m_reference[static_cast<std::size_t>(row)]);
     jacobian[0] = 1.0;
     jacobian[1] = -2.0;
     jacobian[2] = 1.0;

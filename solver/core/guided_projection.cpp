@@ -22,6 +22,14 @@ double epsilon1(const Options& options, int iteration) {
     return options.eps1Final;
 }
 
+double epsilon1(const Options& options, int iteration, double residual) {
+    const double scheduled = epsilon1(options, iteration);
+    if (options.eps1ResidualFactor > 0.0) {
+        return std::min(scheduled, options.eps1ResidualFactor * residual);
+    }
+    return scheduled;
+}
+
 double epsilon2(const Options& options, int iteration, double residual) {
     if (options.eps2Schedule) {
         return options.eps2Schedule(iteration, residual);
@@ -296,6 +304,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         summary.iterations.reserve(static_cast<std::size_t>(std::max(0, options.maxIterations)));
     }
 
+    double eps2Boost = 1.0; // raised by rejected steps (rejectWorseSteps)
     for (int iteration = 0; iteration < options.maxIterations; ++iteration) {
         if (options.cancel && options.cancel->load()) {
             summary.status = Status::Cancelled;
@@ -304,9 +313,13 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         }
         IterationStats stats;
         stats.iteration = iteration;
-        stats.eps1 = epsilon1(options, options.scheduleOffset + iteration);
+        stats.eps1 = epsilon1(options, options.scheduleOffset + iteration,
+                              d.equations.maxConstraintResidual());
         stats.eps2 = epsilon2(options, options.scheduleOffset + iteration,
                               d.equations.maxConstraintResidual());
+        if (eps2Boost > 1.0) {
+            stats.eps2 = std::min(std::max(options.eps2, stats.eps2), eps2Boost * stats.eps2);
+        }
         stats.assemblyMs = pendingEvaluationMs;
         auto step = [&] {
             return options.baseline ? d.baselineStep(problem, stats.eps1, options, stats, summary)
@@ -340,7 +353,19 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         }
         stats.stepNorm = std::sqrt(stepSquared);
         evaluationStart = Clock::now();
+        const double meritBefore = d.equations.constraintMerit();
         const bool finite = allFinite(d.xNew) && d.equations.evaluate(problem, d.xNew.data());
+        if (finite && options.rejectWorseSteps && stats.eps1 == 0.0 &&
+            d.equations.constraintMerit() > meritBefore && stats.eps2 < options.eps2) {
+            // Keep x_k (evaluated again: the equations hold the rejected iterate) and damp more.
+            stats.rejected = true;
+            stats.stepNorm = 0.0;
+            d.equations.evaluate(problem, d.x.data());
+            std::copy(d.x.begin(), d.x.end(), d.xNew.begin());
+            eps2Boost *= 10.0;
+        } else if (finite) {
+            eps2Boost = std::max(1.0, eps2Boost / 10.0);
+        }
         pendingEvaluationMs = elapsedMs(evaluationStart);
         stats.assemblyMs += pendingEvaluationMs;
         pendingEvaluationMs = 0.0;
@@ -369,6 +394,8 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
             break;
         }
     }
+    summary.tolerance = options.reportTolerance;
+    summary.toleranceReached = summary.finalMaxConstraintResidual <= options.reportTolerance;
     summary.supernodal = d.cholesky.isSupernodal();
     summary.factorizedInPlace = !options.baseline && d.cholesky.factorizesInPlace();
     std::copy(d.x.begin(), d.x.end(), x);

@@ -254,6 +254,7 @@ bool NormalEquations::evaluate(const Problem& problem, const double* x) {
     }
     double maxResidual = 0.0;
     double energy = 0.0;
+    double merit = 0.0;
     for (int t = 0; t < termCount; ++t) {
         const TermFamily& family = problem.family(problem.termFamily(t));
         if (family.weight == 0.0) {
@@ -264,6 +265,7 @@ bool NormalEquations::evaluate(const Problem& problem, const double* x) {
             const double phi = m_residual[static_cast<std::size_t>(r)];
             if (family.role == TermRole::Constraint) {
                 maxResidual = std::max(maxResidual, std::abs(phi));
+                merit += w2 * phi * phi;
             } else {
                 energy += w2 * phi * phi;
             }
@@ -271,6 +273,7 @@ bool NormalEquations::evaluate(const Problem& problem, const double* x) {
     }
     m_maxConstraintResidual = maxResidual;
     m_energy = energy;
+    m_constraintMerit = merit;
     return finite;
 }
 

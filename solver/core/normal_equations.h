@@ -37,6 +37,8 @@ public:
     bool evaluate(const Problem& problem, const double* x);
     double maxConstraintResidual() const { return m_maxConstraintResidual; }
     double energy() const { return m_energy; }
+    // Σ w² φ² over the constraint rows: the merit a step is judged by.
+    double constraintMerit() const { return m_constraintMerit; }
 
     // Lays the stored triangle out in the order perm (position k holds original variable
     // perm[k]; empty = identity).
@@ -112,6 +114,7 @@ private:
 
     double m_maxConstraintResidual = 0.0;
     double m_energy = 0.0;
+    double m_constraintMerit = 0.0;
 };
 
 } // namespace devsurf::solver

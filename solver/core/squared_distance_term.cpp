@@ -1,6 +1,7 @@
 #include "solver/core/squared_distance_term.h"
 
 #include <array>
+#include <cmath>
 #include <stdexcept>
 
 namespace devsurf::solver {
@@ -33,6 +34,22 @@ void SquaredDistanceTerm::buildPattern(PatternBuilder& builder) const {
             builder.addColumns(m_points[static_cast<std::size_t>(e)].offset, m_rightDimension);
         }
     }
+}
+
+double SquaredDistanceTerm::leftLength(int row, const double* x) const {
+    const auto r = static_cast<std::size_t>(row);
+    std::array<double, kMaxDimension> a{};
+    for (int e = m_leftStart[r]; e < m_rightStart[r]; ++e) {
+        const PointTerm& p = m_points[static_cast<std::size_t>(e)];
+        for (int k = 0; k < m_leftDimension; ++k) {
+            a[k] += p.coefficient * x[p.offset + k];
+        }
+    }
+    double squared = 0.0;
+    for (int k = 0; k < m_leftDimension; ++k) {
+        squared += a[k] * a[k];
+    }
+    return std::sqrt(squared);
 }
 
 int SquaredDistanceTerm::evaluateOne(std::size_t r, const double* x, double* residual,

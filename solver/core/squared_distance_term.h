@@ -24,6 +24,9 @@ public:
         m_squaredDistance[static_cast<std::size_t>(row)] = value;
     }
 
+    // ‖Σ cᵢ pᵢ‖ of the left side of row `row` at x.
+    double leftLength(int row, const double* x) const;
+
     const char* typeName() const override { return "SquaredDistanceTerm"; }
     int rowCount() const override { return static_cast<int>(m_squaredDistance.size()); }
     void buildPattern(PatternBuilder& builder) const override;

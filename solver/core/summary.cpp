@@ -23,14 +23,19 @@ const char* toString(Status status) {
 }
 
 std::string Summary::briefReport() const {
-    char buffer[512];
+    char buffer[640];
+    char tolerancePart[96] = "";
+    if (tolerance > 0.0) {
+        std::snprintf(tolerancePart, sizeof tolerancePart, ", tolerance %.1e %s", tolerance,
+                      toleranceReached ? "reached" : "NOT reached");
+    }
     std::snprintf(buffer, sizeof buffer,
-                  "%s after %d iterations: max residual %.3e -> %.3e, energy %.3e -> %.3e, "
+                  "%s after %d iterations: max residual %.3e -> %.3e%s, energy %.3e -> %.3e, "
                   "%d variables, %d rows, %s, %.1f ms%s%s",
                   toString(status), iterationsCompleted, initialMaxConstraintResidual,
-                  finalMaxConstraintResidual, initialEnergy, finalEnergy, variables, rows,
-                  supernodal ? "supernodal" : "simplicial", totalMs, message.empty() ? "" : ": ",
-                  message.c_str());
+                  finalMaxConstraintResidual, tolerancePart, initialEnergy, finalEnergy, variables,
+                  rows, supernodal ? "supernodal" : "simplicial", totalMs,
+                  message.empty() ? "" : ": ", message.c_str());
     return buffer;
 }
 

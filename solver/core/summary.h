@@ -25,6 +25,7 @@ struct IterationStats {
     double maxConstraintResidual = 0.0;
     double energy = 0.0;
     double stepNorm = 0.0;        // ‖x_{k+1} − x_k‖
+    bool rejected = false;        // the step raised the constraint merit; x_k was kept
     double assemblyMs = 0.0;      // term evaluation + normal-equation fill
     double factorizationMs = 0.0; // numeric (plus symbolic in baseline mode)
     double solveMs = 0.0;         // triangular solves
@@ -41,6 +42,11 @@ struct Summary {
     double initialEnergy = 0.0;
     double finalMaxConstraintResidual = 0.0;
     double finalEnergy = 0.0;
+    // Options::reportTolerance and whether the final largest constraint residual is within it.
+    // A solve can succeed (no error) without reaching it; the caller should then show where
+    // (e.g. SurfaceFormulation::faceResiduals).
+    double tolerance = 0.0;
+    bool toleranceReached = false;
     int variables = 0;
     int rows = 0;
     long long jacobianNonZeros = 0;

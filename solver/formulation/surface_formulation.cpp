@@ -5,10 +5,10 @@
 #include "solver/core/bilinear_term.h"
 #include "solver/core/fairness_term.h"
 #include "solver/core/linear_term.h"
+#include "solver/core/minimum_length_term.h"
 #include "solver/core/target_term.h"
 #include "solver/core/unit_norm_term.h"
-
-#include <Eigen/Dense>
+#include "solver/formulation/normal_spline_start.h"
 
 #include <algorithm>
 #include <cmath>
@@ -93,6 +93,8 @@ struct SurfaceFormulation::Builder {
     std::unique_ptr<FairnessTerm> fairness = std::make_unique<FairnessTerm>(3);
     std::unique_ptr<FairnessTerm> normalFairness = std::make_unique<FairnessTerm>(3);
     std::unique_ptr<UnitNormTerm> unitControlNormals = std::make_unique<UnitNormTerm>(3);
+    std::unique_ptr<MinimumLengthTerm> rulingGuard = std::make_unique<MinimumLengthTerm>(3);
+    std::unique_ptr<MinimumLengthTerm> speedGuard = std::make_unique<MinimumLengthTerm>(3);
 
     std::vector<model::Strip> strips;
     std::vector<FaceId> planarFaces;
@@ -104,6 +106,21 @@ struct SurfaceFormulation::Builder {
     int valuesPerInterval(const model::Strip& strip) const {
         return options.developabilityValuesPerInterval > 0 ? options.developabilityValuesPerInterval
                                                            : 3 * strip.a.degree() - 2;
+    }
+
+    // The space of a strip's normal spline. Exact: N = a′ × (b − a) of curves in S(m, k, n)
+    // lies in S(2m − 1, k − 1, n), so every developable strip of the design space (with N ≠ 0)
+    // has a representable normal and a valid design satisfies (4) exactly as it is. The cubic
+    // C² space of the paper cannot represent, e.g., the normal of a generalised cylinder over
+    // a C² cubic, so the solver had to move such designs. A strip that is not developable at
+    // the start gets the cubic C² space: from rough starts it converged better (measured from
+    // 0.1 % noise on the cylinder: det 5e-15 against 2e-6 in the exact space).
+    model::SplineSpace normalSpace(const model::Strip& strip) const {
+        const model::SplineSpace& curves = surface.edge(strip.aSide.edge).space;
+        if (!options.exactNormalSpace || !isDevelopableStart(strip)) {
+            return {3, 2, curves.intervals};
+        }
+        return {2 * curves.degree - 1, std::max(0, curves.smoothness - 1), curves.intervals};
     }
 
     // Point indices of a strip side's curve in the order the strip traverses it.
@@ -200,7 +217,7 @@ struct SurfaceFormulation::Builder {
                 coneNormals += intervals + 1;
                 ++f.m_coneCount;
             } else {
-                normalControls += intervals + 3;
+                normalControls += normalSpace(strip).controlPointCount(false);
                 derivativePoints += 4 * intervals * valuesPerInterval(strip);
                 ++f.m_stripCount;
             }
@@ -242,18 +259,6 @@ struct SurfaceFormulation::Builder {
         }
     }
 
-    // An initial unit normal of a strip at u: a′ × (b − a), which points to the side the face
-    // loop orients (stripOfFace runs a along the loop and b against it), so neighbouring
-    // strips start consistently oriented (MATH.md §2, §5).
-    static Vec3 stripNormal(const model::Strip& strip, double u) {
-        const Vec3 tangent = strip.a.derivative(u, 1);
-        Vec3 n = cross(tangent, strip.bPoint(u) - strip.aPoint(u));
-        if (n.norm() < 1e-12 * (1.0 + tangent.squaredNorm()) && !strip.isCone()) {
-            n = cross(tangent, strip.b.derivative(u, 1)); // a collapsed ruling (SRS end)
-        }
-        return normalised(n);
-    }
-
     void addStrip(const model::Strip& strip, int& normalControl, int& coneNormal,
                   int& derivativePoint) {
         const std::vector<int> aPoints = sidePoints(strip.aSide);
@@ -278,19 +283,19 @@ struct SurfaceFormulation::Builder {
                 normalDefinitions->addRow(n, simplified(tangent));
                 normalDefinitions->addRow(n, simplified(toApex));
                 unitNormals->addVector(offset);
-                setVector(offset, stripNormal(strip, u));
+                setVector(offset, initialStripNormal(strip, u));
                 (i == 0 ? first : last) = n;
             }
             registerRulingNormals(strip.face, a0, first, last);
             return;
         }
         const std::vector<int> bPoints = sidePoints(strip.bSide);
-        const model::SplineSpace normalSpace{3, 2, intervals};
-        const int controls = intervals + 3;
+        const model::SplineSpace space = normalSpace(strip);
+        const int controls = space.controlPointCount(false);
         const int normalOffset = normalControlsOffset + 3 * normalControl;
         normalControl += controls;
         const model::BSplineCurve normalCurve = model::BSplineCurve::uniform(
-            normalSpace, std::vector<Vec3>(static_cast<std::size_t>(controls)));
+            space, std::vector<Vec3>(static_cast<std::size_t>(controls)));
 
         // (4) at 3m − 2 values per interval.
         const std::vector<double> values = collocationValues(intervals, valuesPerInterval(strip));
@@ -318,16 +323,43 @@ struct SurfaceFormulation::Builder {
                     *p = PointCombination{{offset, 1.0}};
                 }
             }
-            // (4): ⟨n, b¹₁ − a¹₁⟩ = ⟨n, a¹₁ − a¹₀⟩ = ⟨n, b¹₁ − b¹₀⟩ = 0.
-            developability->addRow(n, simplified(plus(b11, a11, -1.0)));
-            developability->addRow(n, simplified(plus(a11, a10, -1.0)));
-            developability->addRow(n, simplified(plus(b11, b10, -1.0)));
+            // (4): ⟨n, b¹₁ − a¹₁⟩ = ⟨n, a¹₁ − a¹₀⟩ = ⟨n, b¹₁ − b¹₀⟩ = 0. A side that is
+            // identically zero (b¹₁ − b¹₀ where b is the point of an SRS face) gives no row.
+            for (const PointCombination& side :
+                 {simplified(plus(b11, a11, -1.0)), simplified(plus(a11, a10, -1.0)),
+                  simplified(plus(b11, b10, -1.0))}) {
+                if (!side.empty()) {
+                    developability->addRow(n, side);
+                    f.m_developabilityFaces.push_back(strip.face);
+                }
+            }
+        }
+        // The rulings at the collocation values and the ends, guarded against collapsing
+        // (their minimum lengths are set by setReferenceState).
+        std::vector<double> rulings = values;
+        rulings.push_back(0.0);
+        rulings.push_back(1.0);
+        for (double u : rulings) {
+            const model::DeBoorRows ra = strip.a.deBoorRows(u);
+            const model::DeBoorRows rb = strip.b.deBoorRows(u);
+            rulingGuard->addRow(simplified(plus(combination(aPoints, ra.indices, ra.point),
+                                                combination(bPoints, rb.indices, rb.point), -1.0)),
+                                0.0);
         }
 
         // n(0)ᵀn(0) = 1 hard, unit control normals soft.
         const PointCombination n0 = evaluation(normalOffset, normalCurve.deBoorRows(0.0));
         const PointCombination n1 = evaluation(normalOffset, normalCurve.deBoorRows(1.0));
-        unitNormals->addVector(n0);
+        // The hard unit length at u = 0, or at u = 1 where the start normal nearly vanishes at
+        // u = 0 (the tip of an SRS face, where N = 0).
+        std::vector<double> samples = values;
+        samples.push_back(0.0);
+        samples.push_back(1.0);
+        const std::vector<Vec3> fitted = fitStartNormals(strip, normalCurve, samples);
+        const model::BSplineCurve startNormal = model::BSplineCurve::uniform(space, fitted);
+        const bool unitAtStart =
+            startNormal.evaluate(0.0).norm() >= 1e-3 * startNormal.evaluate(1.0).norm();
+        unitNormals->addVector(unitAtStart ? n0 : n1);
         std::vector<int> normalSequence;
         for (int i = 0; i < controls; ++i) {
             unitControlNormals->addVector(normalOffset + 3 * i);
@@ -338,58 +370,9 @@ struct SurfaceFormulation::Builder {
         normalFairness->addSequence(normalSequence);
         registerRulingNormals(strip.face, a0, n0, n1);
 
-        // Initial control normals, fitted by least squares to N(u) = a′ × (b − a) sampled at
-        // the collocation values and the ends. If N itself lies in the normal spline's space
-        // (e.g. a generalised cylinder over a cubic) its exact fit, scaled to |n(0)| = 1, is
-        // kept and the strip stays put. Otherwise the unit field N/|N| is fitted: it gives every
-        // row of (4) the same scale from the start, whereas on a noisy start |N| varies by
-        // orders of magnitude along a strip and fitting N made the first steps large where |N|
-        // is large (measured: 10× the initial residual).
-        std::vector<double> samples = values;
-        samples.push_back(0.0);
-        samples.push_back(1.0);
-        std::vector<Vec3> field;
-        double typical = 0.0;
-        for (double u : samples) {
-            field.push_back(cross(strip.a.derivative(u, 1), strip.bPoint(u) - strip.aPoint(u)));
-            typical = std::max(typical, field.back().norm());
-        }
-        const auto rowCount = static_cast<Eigen::Index>(samples.size());
-        Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(rowCount, controls);
-        Eigen::MatrixXd unitField(rowCount, 3);
-        Eigen::MatrixXd scaledField(rowCount, 3); // N / |N(0)|, used only if N is regular
-        const double startLength = field[field.size() - 2].norm();
-        bool regularEverywhere = typical > 0.0;
-        for (std::size_t s = 0; s < samples.size(); ++s) {
-            const auto row = static_cast<Eigen::Index>(s);
-            const model::DeBoorRows rows = normalCurve.deBoorRows(samples[s]);
-            for (std::size_t i = 0; i < rows.indices.size(); ++i) {
-                basis(row, rows.indices[i]) += rows.point[i];
-            }
-            // A degenerate sample (a collapsed ruling) gets a unit normal from a′ × b′.
-            const bool regular = field[s].norm() > 1e-9 * typical;
-            regularEverywhere = regularEverywhere && regular;
-            const Vec3 unit = regular ? field[s] / field[s].norm() : stripNormal(strip, samples[s]);
-            for (int k = 0; k < 3; ++k) {
-                unitField(row, k) = unit[k];
-                scaledField(row, k) = field[s][k] / startLength;
-            }
-        }
-        const Eigen::MatrixXd normal =
-            basis.transpose() * basis + 1e-12 * Eigen::MatrixXd::Identity(controls, controls);
-        const Eigen::LDLT<Eigen::MatrixXd> factor = normal.ldlt();
-        Eigen::MatrixXd fitted;
-        bool exactFit = false;
-        if (regularEverywhere) {
-            fitted = factor.solve(basis.transpose() * scaledField);
-            const double misfit = (basis * fitted - scaledField).cwiseAbs().maxCoeff();
-            exactFit = misfit <= 1e-9 * scaledField.cwiseAbs().maxCoeff();
-        }
-        if (!exactFit) {
-            fitted = factor.solve(basis.transpose() * unitField);
-        }
+        // Initial control normals (see fitStartNormals).
         for (int i = 0; i < controls; ++i) {
-            setVector(normalOffset + 3 * i, Vec3(fitted(i, 0), fitted(i, 1), fitted(i, 2)));
+            setVector(normalOffset + 3 * i, fitted[static_cast<std::size_t>(i)]);
         }
     }
 
@@ -416,6 +399,7 @@ struct SurfaceFormulation::Builder {
                 const int from = f.pointOffset(f.m_vertexPoint.at(loop[k]));
                 const int to = f.pointOffset(f.m_vertexPoint.at(loop[(k + 1) % loop.size()]));
                 planarity->addRow({{offset, 1.0}}, {{to, 1.0}, {from, -1.0}});
+                f.m_planarityFaces.push_back(face);
             }
             setVector(offset, normalised(newell));
             unitNormals->addVector(offset);
@@ -465,6 +449,30 @@ struct SurfaceFormulation::Builder {
         }
     }
 
+    // Curve speeds |a¹₁ − a¹₀| of every S-edge at the collocation values of its intervals and
+    // at its ends, guarded against cusps (minimum set by setReferenceState).
+    void addSpeedGuards() {
+        for (const auto& [edge, points] : f.m_edgePoints) {
+            const model::EdgeRecord& record = surface.edge(edge);
+            const model::BSplineCurve curve =
+                model::BSplineCurve::uniform(record.space, record.controlPoints);
+            std::vector<double> samples =
+                collocationValues(record.space.intervals, 3 * record.space.degree - 2);
+            samples.push_back(0.0);
+            samples.push_back(1.0);
+            f.m_speedCurveStart.push_back(speedGuard->rowCount());
+            for (double u : samples) {
+                const model::DeBoorRows rows = curve.deBoorRows(u);
+                speedGuard->addRow(
+                    simplified(plus(combination(points, rows.indices, rows.firstDerivative[1]),
+                                    combination(points, rows.indices, rows.firstDerivative[0]),
+                                    -1.0)),
+                    0.0);
+            }
+        }
+        f.m_speedCurveStart.push_back(speedGuard->rowCount());
+    }
+
     void addFairness() {
         for (const auto& [edge, points] : f.m_edgePoints) {
             (void)edge;
@@ -478,6 +486,17 @@ struct SurfaceFormulation::Builder {
 
     void hand() {
         Problem& p = f.m_problem;
+        f.m_developability = developability->rowCount() > 0 ? developability.get() : nullptr;
+        f.m_planarity = planarity->rowCount() > 0 ? planarity.get() : nullptr;
+        f.m_coneNormals = normalDefinitions->rowCount() > 0 ? normalDefinitions.get() : nullptr;
+        f.m_pointFairness = fairness->rowCount() > 0 ? fairness.get() : nullptr;
+        f.m_normalFairness = normalFairness->rowCount() > 0 ? normalFairness.get() : nullptr;
+        f.m_unitControlNormals =
+            unitControlNormals->rowCount() > 0 ? unitControlNormals.get() : nullptr;
+        const bool rulings = options.rulingGuard > 0.0 && rulingGuard->rowCount() > 0;
+        const bool speeds = options.speedGuard > 0.0 && speedGuard->rowCount() > 0;
+        f.m_rulingGuard = rulings ? rulingGuard.get() : nullptr;
+        f.m_speedGuard = speeds ? speedGuard.get() : nullptr;
         auto add = [&p](const std::string& name, TermRole role, double weight, auto term) {
             if (term->rowCount() > 0) {
                 p.add(p.addFamily(name, role, weight), std::move(term));
@@ -496,6 +515,12 @@ struct SurfaceFormulation::Builder {
             f.m_handleTerm = handles.get();
         }
         add("handles", TermRole::Constraint, options.handleWeight, std::move(handles));
+        if (rulings) {
+            add("rulingGuard", TermRole::Constraint, options.guardWeight, std::move(rulingGuard));
+        }
+        if (speeds) {
+            add("speedGuard", TermRole::Constraint, options.guardWeight, std::move(speedGuard));
+        }
         add("fairness", TermRole::Energy, options.fairnessWeight, std::move(fairness));
         add("normalFairness", TermRole::Energy, options.normalFairnessWeight,
             std::move(normalFairness));
@@ -515,88 +540,10 @@ SurfaceFormulation::SurfaceFormulation(const model::CompositeSurface& surface,
     builder.addPlanarFaces();
     builder.addSmoothRulings();
     builder.addHandles();
+    builder.addSpeedGuards();
     builder.addFairness();
     builder.hand();
-}
-
-bool SurfaceFormulation::setHandleTarget(VertexId vertex, const Vec3& target) {
-    auto it = m_handleRow.find(vertex);
-    if (it == m_handleRow.end() || !m_handleTerm) {
-        return false;
-    }
-    for (int k = 0; k < 3; ++k) {
-        m_handleTerm->setTarget(it->second + k, (target[k] - m_centre[k]) / m_scale);
-    }
-    return true;
-}
-
-Vec3 SurfaceFormulation::toModel(const double* p) const {
-    return Vec3(m_centre.x + m_scale * p[0], m_centre.y + m_scale * p[1],
-                m_centre.z + m_scale * p[2]);
-}
-
-Vec3 SurfaceFormulation::vertexPosition(const std::vector<double>& x, VertexId vertex) const {
-    const int point = m_vertexPoint.at(vertex);
-    const auto offset = static_cast<std::size_t>(pointOffset(point));
-    if (std::equal(x.begin() + static_cast<std::ptrdiff_t>(offset),
-                   x.begin() + static_cast<std::ptrdiff_t>(offset + 3),
-                   m_initialState.begin() + static_cast<std::ptrdiff_t>(offset))) {
-        return m_originalPoints[static_cast<std::size_t>(point)];
-    }
-    return toModel(x.data() + offset);
-}
-
-bool SurfaceFormulation::writeBack(const std::vector<double>& x, model::CompositeSurface& surface,
-                                   std::string* error) const {
-    auto fail = [error](const std::string& message) {
-        if (error) {
-            *error = message;
-        }
-        return false;
-    };
-    if (x.size() != m_initialState.size()) {
-        return fail("the solver state has " + std::to_string(x.size()) + " values, expected " +
-                    std::to_string(m_initialState.size()) + ".");
-    }
-    for (std::size_t i = 0; i < x.size(); ++i) {
-        if (!std::isfinite(x[i])) {
-            return fail("the solver state contains a non-finite value (variable " +
-                        std::to_string(i) + "); the surface was left unchanged.");
-        }
-    }
-    for (const auto& [vertex, point] : m_vertexPoint) {
-        (void)point;
-        if (!surface.hasVertex(vertex)) {
-            return fail("the surface has no vertex " + str(vertex) + " any more.");
-        }
-    }
-    for (const auto& [edge, points] : m_edgePoints) {
-        if (!surface.hasEdge(edge) || !surface.edge(edge).isSpline() ||
-            surface.edge(edge).controlPoints.size() != points.size()) {
-            return fail("the S-edge " + str(edge) + " of the surface has changed.");
-        }
-    }
-    std::vector<Vec3> positions(static_cast<std::size_t>(m_pointCount));
-    for (int i = 0; i < m_pointCount; ++i) {
-        const auto offset = static_cast<std::size_t>(pointOffset(i));
-        const bool unchanged = x[offset] == m_initialState[offset] &&
-                               x[offset + 1] == m_initialState[offset + 1] &&
-                               x[offset + 2] == m_initialState[offset + 2];
-        positions[static_cast<std::size_t>(i)] =
-            unchanged ? m_originalPoints[static_cast<std::size_t>(i)] : toModel(&x[offset]);
-    }
-    for (const auto& [vertex, point] : m_vertexPoint) {
-        surface.moveVertex(vertex, positions[static_cast<std::size_t>(point)]);
-    }
-    for (const auto& [edge, points] : m_edgePoints) {
-        std::vector<Vec3> controls;
-        controls.reserve(points.size());
-        for (int p : points) {
-            controls.push_back(positions[static_cast<std::size_t>(p)]);
-        }
-        surface.setControlPoints(edge, std::move(controls));
-    }
-    return true;
+    setReferenceState(m_initialState);
 }
 
 } // namespace devsurf::solver

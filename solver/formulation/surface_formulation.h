@@ -9,7 +9,11 @@
 
 namespace devsurf::solver {
 
+class BilinearTerm;
+class FairnessTerm;
+class MinimumLengthTerm;
 class TargetTerm;
+class UnitNormTerm;
 
 // A user handle on a coarse vertex: fixed where it is, or pulled towards a target (weight 1).
 struct VertexHandle {
@@ -27,6 +31,40 @@ struct FormulationOptions {
     // Collocation values of (4) per interval; 0 means 3m − 2, which makes the strip exactly
     // developable (det(a−b, a′, b′) has degree 3m − 3 per interval, MATH.md §2).
     int developabilityValuesPerInterval = 0;
+
+    // Scale every row of (4), of planar faces and of cone normals by 1/(|n| |d|) of its two
+    // sides at the reference state (BilinearTerm::scaleRowsAt): near it a row then measures
+    // the cosine of an angle, so a residual of 1e-8 means the same on every strip whatever its
+    // width, control spacing or the model's size. Off by default: measured from 0.1 % noise
+    // (3 seeds, 10 iterations) it helped the sheet (det 2e-15 against 2e-11) and the annulus
+    // (9e-14 against 1e-7) and kept rulings longer, but the cylinder stalled at 1e-5 (against
+    // 5e-15) and one seed of the mixed example degenerated.
+    bool normalizedRows = false;
+
+    // Guards against degenerate solutions, relative to the reference state (the start of the
+    // solve, see setReferenceState): every sampled ruling |a(u) − b(u)| stays at least
+    // rulingGuard times its reference length, and every sampled curve speed |a′(u)| at least
+    // speedGuard times the smaller of its reference speed and the curve's mean reference
+    // speed. Inactive (zero rows) while satisfied, so a valid design is not moved; 0 disables.
+    // Off by default: measured with 0.5 on the sheet and the annulus from 1 % noise, they keep
+    // the rulings above half their length but the iteration then does not converge in 10
+    // iterations (normalised det 0.56–0.99 instead of 1e-5 on the sheet).
+    double rulingGuard = 0.0;
+    double speedGuard = 0.0;
+    double guardWeight = 1.0;
+
+    // Fairness of the change x − x_ref (x_ref: the reference state) instead of fairness of x,
+    // and the soft length of the normal spline's control normals kept at their reference
+    // lengths. Off by default: it leaves a rough start's noise in place, and measured from
+    // 0.1 % noise on the sheet the rulings then collapsed (det 6e-3 instead of 1e-13). Valid
+    // designs stay put either way, because ε₁ is capped by the constraint residual
+    // (Options::eps1ResidualFactor). Meant for drags re-based with setReferenceState.
+    bool relativeFairness = false;
+
+    // The normal spline of a strip in S(2m − 1, k − 1) of its curves' space S(m, k) (quintic C¹
+    // for cubic C² curves), which contains the normal of every developable strip of the
+    // design space, instead of the paper's cubic C² (see the Builder).
+    bool exactNormalSpace = true;
 
     // Constraint weights (the W of (6)).
     double developabilityWeight = 1.0;
@@ -68,6 +106,22 @@ public:
     Problem& problem() { return m_problem; }
     // The state of the given surface (the one passed to the constructor).
     const std::vector<double>& initialState() const { return m_initialState; }
+
+    // Makes x the reference state: the row scales of (4) and the guards' minimum ruling
+    // lengths and curve speeds are taken from x (and, with relativeFairness, fairness
+    // measures the change from x). The constructor uses the
+    // initial state. Values only (the problem's structure is unchanged), so an interactive
+    // caller can re-base between drags without a new symbolic analysis.
+    void setReferenceState(const std::vector<double>& x);
+
+    // Developability (and planarity) residual of every face at state x: the largest |row|
+    // of the face's rows, worst first. Where a solve did not reach its tolerance, these are the
+    // faces to show.
+    struct FaceResidual {
+        model::FaceId face = model::kInvalidId;
+        double residual = 0.0;
+    };
+    std::vector<FaceResidual> faceResiduals(const std::vector<double>& x) const;
 
     // Moves the target of a pulled handle (model coordinates). Returns false if the vertex has
     // no pulled handle.
@@ -111,6 +165,19 @@ private:
     std::map<std::pair<model::FaceId, model::EdgeId>, PointCombination> m_rulingNormals;
     std::map<model::VertexId, int> m_handleRow; // first TargetTerm row of a pulled handle
     TargetTerm* m_handleTerm = nullptr;
+    FairnessTerm* m_pointFairness = nullptr;
+    FairnessTerm* m_normalFairness = nullptr;
+    UnitNormTerm* m_unitControlNormals = nullptr;
+    MinimumLengthTerm* m_rulingGuard = nullptr;
+    MinimumLengthTerm* m_speedGuard = nullptr;
+    // Row ranges of m_speedGuard per curve (the mean speed is taken per curve).
+    std::vector<int> m_speedCurveStart;
+    // The face of every row of the developability and planarity terms.
+    BilinearTerm* m_developability = nullptr;
+    BilinearTerm* m_planarity = nullptr;
+    BilinearTerm* m_coneNormals = nullptr;
+    std::vector<model::FaceId> m_developabilityFaces;
+    std::vector<model::FaceId> m_planarityFaces;
     std::vector<model::Vec3> m_originalPoints; // model coordinates of the given surface
 };
 

@@ -1,11 +1,105 @@
-// devsurf-bench: the solver benchmark (the same code as `devsurf-cli bench`).
+// devsurf-bench: the solver benchmark (the same code as `devsurf-cli bench`), and a quality
+// study of one model over seeds with adjustable options (for measuring solver choices).
+#include "bench_models.h"
 #include "benchmark.h"
+#include "quality_study.h"
 
+#include "model/examples.h"
+#include "solver/formulation/perturbation.h"
+
+#include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 
+namespace {
+
+using namespace devsurf;
+
+// Sets one option of the study by name; false if unknown.
+bool setOption(bench::StudyOptions& o, const std::string& name, double v) {
+    solver::FormulationOptions& f = o.formulation;
+    solver::Options& s = o.solver;
+    if (name == "normalizedRows")
+        f.normalizedRows = v != 0.0;
+    else if (name == "rulingGuard")
+        f.rulingGuard = v;
+    else if (name == "speedGuard")
+        f.speedGuard = v;
+    else if (name == "guardWeight")
+        f.guardWeight = v;
+    else if (name == "relativeFairness")
+        f.relativeFairness = v != 0.0;
+    else if (name == "fairnessWeight")
+        f.fairnessWeight = v;
+    else if (name == "normalFairnessWeight")
+        f.normalFairnessWeight = v;
+    else if (name == "unitControlNormalWeight")
+        f.unitControlNormalWeight = v;
+    else if (name == "exactNormalSpace")
+        f.exactNormalSpace = v != 0.0;
+    else if (name == "eps2")
+        s.eps2 = v;
+    else if (name == "eps2Minimum")
+        s.eps2Minimum = v;
+    else if (name == "eps1Initial")
+        s.eps1Initial = v;
+    else if (name == "eps1Decay")
+        s.eps1Decay = v;
+    else if (name == "eps1Iterations")
+        s.eps1Iterations = static_cast<int>(v);
+    else if (name == "eps1ResidualFactor")
+        s.eps1ResidualFactor = v;
+    else if (name == "rejectWorseSteps")
+        s.rejectWorseSteps = v != 0.0;
+    else if (name == "adaptiveEps2")
+        s.adaptiveEps2 = v != 0.0;
+    else if (name == "fixed")
+        o.fixedVertices = static_cast<int>(v);
+    else
+        return false;
+    return true;
+}
+
+int runStudy(const std::string& name, const bench::StudyStart& start,
+             const bench::StudyOptions& options) {
+    model::CompositeSurface surface;
+    const auto models = bench::benchModels({name});
+    if (!models.empty()) {
+        surface = models.front().surface;
+    } else {
+        try {
+            surface = model::makeExample(name, 0).surfaces.front();
+        } catch (const std::exception& error) {
+            std::cerr << "devsurf-bench: no model or example '" << name << "'.\n";
+            return 1;
+        }
+    }
+    const auto runs = bench::runStudy(surface, start, options);
+    for (const auto& r : runs) {
+        std::printf("seed %u %-16s res %.2e det %.2e flat %.2e ruling %.3f speed %.3f fold %.2f "
+                    "start %.2f deg move %.1e  %.2f ms/it\n",
+                    r.seed, r.status.c_str(), r.residual, r.detMax, r.flatnessMean,
+                    r.change.shortestRuling, r.change.slowestSpeed,
+                    r.change.creaseFoldMean * 57.2958, r.change.startNormalAngleMean * 57.2958,
+                    r.change.largestMove / solver::surfaceDiameter(surface), r.msPerIteration);
+    }
+    const auto s = bench::summarize(runs);
+    std::printf("%s: det worst %.2e median %.2e | flat worst %.2e | ruling worst %.3f median %.3f "
+                "| speed worst %.3f median %.3f | fold/start worst %.2f median %.2f\n",
+                name.c_str(), s.detWorst, s.detMedian, s.flatnessWorst, s.rulingWorst,
+                s.rulingMedian, s.speedWorst, s.speedMedian, s.foldOverStartWorst,
+                s.foldOverStartMedian);
+    return 0;
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
     devsurf::bench::BenchmarkOptions options;
+    std::string study;
+    devsurf::bench::StudyStart start;
+    devsurf::bench::StudyOptions studyOptions;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--json") {
@@ -14,10 +108,34 @@ int main(int argc, char** argv) {
             options.models.push_back(argv[++i]);
         } else if (arg == "--no-ceres") {
             options.runCeres = false;
+        } else if (arg == "--study" && i + 1 < argc) {
+            study = argv[++i];
+        } else if (arg == "--edge-noise" && i + 1 < argc) {
+            start = {devsurf::bench::NoiseScale::EdgeLength, std::atof(argv[++i])};
+        } else if (arg == "--diameter-noise" && i + 1 < argc) {
+            start = {devsurf::bench::NoiseScale::Diameter, std::atof(argv[++i])};
+        } else if (arg == "--seeds" && i + 1 < argc) {
+            studyOptions.seeds = std::atoi(argv[++i]);
+        } else if (arg == "--iterations" && i + 1 < argc) {
+            studyOptions.iterations = std::atoi(argv[++i]);
+        } else if (arg == "--set" && i + 1 < argc) {
+            const std::string assignment = argv[++i];
+            const auto equals = assignment.find('=');
+            if (equals == std::string::npos ||
+                !setOption(studyOptions, assignment.substr(0, equals),
+                           std::atof(assignment.c_str() + equals + 1))) {
+                std::cerr << "devsurf-bench: unknown option '" << assignment << "'.\n";
+                return 1;
+            }
         } else {
-            std::cerr << "usage: devsurf-bench [--json] [--model NAME]... [--no-ceres]\n";
+            std::cerr << "usage: devsurf-bench [--json] [--model NAME]... [--no-ceres]\n"
+                         "       devsurf-bench --study MODEL [--edge-noise F | --diameter-noise F]"
+                         " [--seeds N] [--iterations N] [--set NAME=VALUE]...\n";
             return 1;
         }
+    }
+    if (!study.empty()) {
+        return runStudy(study, start, studyOptions);
     }
     options.log = [](const std::string& line) { std::cerr << line << "\n"; };
     const int code = devsurf::bench::runBenchmark(options, std::cout);

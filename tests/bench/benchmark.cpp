@@ -2,6 +2,7 @@
 
 #include "bench_models.h"
 #include "ceres_peer.h"
+#include "quality_study.h"
 
 #include "solver/core/blas_info.h"
 #include "solver/core/guided_projection.h"
@@ -120,6 +121,15 @@ struct ModelResult {
     Timing auxiliary;
     double auxiliaryDetMax = 0.0;
     solver::QualityMeasures smallNoiseQuality; // the same 10 iterations from the smaller noise
+    struct Study {
+        std::string start; // "edge" or "diameter"
+        double fraction = 0.0;
+        int iterations = 0;
+        int seeds = 0;
+        StudySummary summary;
+        double msPerIteration = 0.0; // median over the seeds
+    };
+    std::vector<Study> studies;
     std::string status;
 };
 
@@ -231,6 +241,35 @@ ModelResult runModel(const BenchModel& model, const BenchmarkOptions& options, d
             number(r.smallNoiseQuality.developabilityMax));
     }
 
+    if (options.studySeeds > 0) {
+        // The ~40,000-variable model gets 20 iterations (the target for it).
+        const int iterations = r.variables > 20000 ? 2 * options.iterations : options.iterations;
+        const StudyStart starts[] = {{NoiseScale::EdgeLength, 0.1}, {NoiseScale::Diameter, 0.01}};
+        for (const StudyStart& start : starts) {
+            StudyOptions studyOptions;
+            studyOptions.iterations = iterations;
+            studyOptions.seeds = options.studySeeds;
+            studyOptions.firstSeed = options.seed;
+            studyOptions.solver.eps2 = options.eps2;
+            const std::vector<StudyRun> runs = runStudy(model.surface, start, studyOptions);
+            ModelResult::Study study;
+            study.start = start.scale == NoiseScale::EdgeLength ? "edge" : "diameter";
+            study.fraction = start.fraction;
+            study.iterations = iterations;
+            study.seeds = options.studySeeds;
+            study.summary = summarize(runs);
+            std::vector<double> times;
+            for (const StudyRun& run : runs) {
+                times.push_back(run.msPerIteration);
+            }
+            study.msPerIteration = median(times);
+            r.studies.push_back(study);
+            log(r.name + ": from σ = " + number(start.fraction) + " of the " +
+                (study.start == "edge" ? "mean edge length" : "diameter") + ", det worst " +
+                number(study.summary.detWorst) + " median " + number(study.summary.detMedian));
+        }
+    }
+
     if (options.runCeres) {
         r.ceres = runCeres(formulation.problem(), start, r.finalResidual, options.ceresCapSeconds);
         log(r.name + ": Ceres " + number(r.ceres.milliseconds) + " ms" +
@@ -315,8 +354,34 @@ void writeJson(const std::vector<ModelResult>& results, const solver::BlasInfo& 
             << "      \"gauss_curvature_max\": " << number(r.quality.curvatureMax) << ",\n"
             << "      \"small_noise_det_residual_max\": "
             << number(r.smallNoiseQuality.developabilityMax) << ",\n"
-            << "      \"small_noise_flatness_mean\": " << number(r.smallNoiseQuality.flatnessMean)
-            << "\n"
+            << "      \"small_noise_flatness_mean\": " << number(r.smallNoiseQuality.flatnessMean);
+        if (!r.studies.empty()) {
+            out << ",\n      \"quality_over_seeds\": [";
+            for (std::size_t k = 0; k < r.studies.size(); ++k) {
+                const ModelResult::Study& q = r.studies[k];
+                const StudySummary& m = q.summary;
+                constexpr double kDegrees = 57.29577951308232;
+                out << (k == 0 ? "\n" : ",\n") << "        { \"start\": " << quoted(q.start)
+                    << ", \"sigma_fraction\": " << number(q.fraction)
+                    << ", \"iterations\": " << q.iterations << ", \"seeds\": " << q.seeds
+                    << ", \"det_residual_max_worst\": " << number(m.detWorst)
+                    << ", \"det_residual_max_median\": " << number(m.detMedian)
+                    << ", \"flatness_mean_worst\": " << number(m.flatnessWorst)
+                    << ", \"flatness_mean_median\": " << number(m.flatnessMedian)
+                    << ", \"shortest_ruling_over_start_worst\": " << number(m.rulingWorst)
+                    << ", \"shortest_ruling_over_start_median\": " << number(m.rulingMedian)
+                    << ", \"slowest_speed_over_start_mean_worst\": " << number(m.speedWorst)
+                    << ", \"slowest_speed_over_start_mean_median\": " << number(m.speedMedian)
+                    << ", \"crease_fold_deg_median\": " << number(m.foldMedian * kDegrees)
+                    << ", \"start_normal_angle_deg_median\": "
+                    << number(m.startAngleMedian * kDegrees)
+                    << ", \"fold_over_start_angle_worst\": " << number(m.foldOverStartWorst)
+                    << ", \"fold_over_start_angle_median\": " << number(m.foldOverStartMedian)
+                    << ", \"ms_per_iter_median\": " << number(q.msPerIteration) << " }";
+            }
+            out << "\n      ]";
+        }
+        out << "\n"
             << "    }";
     }
     out << "\n  ]\n}\n";

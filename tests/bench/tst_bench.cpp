@@ -55,6 +55,21 @@ private slots:
         QVERIFY(m.value("det_residual_max").toDouble() <= 1e-8);
         QVERIFY(m.value("flatness_mean").toDouble() <= m.value("paper_flatness_mean").toDouble());
         QVERIFY(m.value("small_noise_det_residual_max").toDouble() <= 1e-8);
+        // Quality over seeds from the two starts, with the degeneracy figures.
+        const QJsonArray studies = m.value("quality_over_seeds").toArray();
+        QCOMPARE(studies.size(), 2);
+        QCOMPARE(studies[0].toObject().value("start").toString(), QString("edge"));
+        QCOMPARE(studies[1].toObject().value("start").toString(), QString("diameter"));
+        for (const QJsonValue& value : studies) {
+            const QJsonObject study = value.toObject();
+            QCOMPARE(study.value("seeds").toInt(), 10);
+            QVERIFY(study.value("det_residual_max_worst").toDouble() >=
+                    study.value("det_residual_max_median").toDouble());
+            QVERIFY(study.value("shortest_ruling_over_start_worst").toDouble() <=
+                    study.value("shortest_ruling_over_start_median").toDouble());
+            QVERIFY(study.value("start_normal_angle_deg_median").toDouble() > 0.0);
+            QVERIFY(study.value("ms_per_iter_median").toDouble() > 0.0);
+        }
         if (bench::ceresAvailable()) {
             QVERIFY(m.value("ceres_reached_residual").toBool());
             QVERIFY(m.value("ceres_ms_to_residual").toDouble() > 0.0);

@@ -59,7 +59,14 @@ private slots:
         QCOMPARE(f.pointCount(), static_cast<int>(sheet.controlPointCount()));
         // 9 strips × 3 intervals × 7 values × 3 rows of (4) + 9 rows n(0)ᵀn(0) = 1.
         QCOMPARE(f.problem().rowCount() - (9 * 6 * 3) - /*fairness*/ 0 >= 9 * 3 * 7 * 3 + 9, true);
-        QCOMPARE(f.problem().block("normalControls").size, 9 * 6 * 3);
+        // The sheet is developable: its normal splines are quintic C¹ (3 intervals: 14 control
+        // normals), which hold the normal of every developable strip; the paper's cubic C²
+        // space has 6.
+        QCOMPARE(f.problem().block("normalControls").size, 9 * 14 * 3);
+        FormulationOptions cubic;
+        cubic.exactNormalSpace = false;
+        QCOMPARE(SurfaceFormulation(sheet, cubic).problem().block("normalControls").size,
+                 9 * 6 * 3);
         FormulationOptions aux;
         aux.auxiliaryDerivativePoints = true;
         const SurfaceFormulation g(sheet, aux);

@@ -277,6 +277,15 @@ private slots:
         const std::vector<double> start{1.0, 0.0, 0.0, 1.0, -1.0, 0.0};
         Options options;
         options.maxIterations = 10; // 5 with ε₁ (pull), 5 without (back onto the circle)
+        // The start satisfies the constraints: by default (ε₁ capped by the constraint
+        // residual) the energies do not act on it at all.
+        {
+            std::vector<double> y = start;
+            QVERIFY(GuidedProjection().solve(p, y, options).succeeded());
+            QVERIFY(maxAbsDifference(y, start) < 1e-14);
+        }
+        // The paper's schedule alone lets the soft target pull.
+        options.eps1ResidualFactor = 0.0;
         GuidedProjection solver;
 
         std::vector<double> x = start;

@@ -1,8 +1,11 @@
 #include "solver_test_problems.h"
 
+#include "solver/core/minimum_length_term.h"
 #include "test_registry.h"
 
 #include <QTest>
+
+#include <algorithm>
 
 using namespace devsurf::solver;
 using namespace devsurf::solver::testing;
@@ -138,6 +141,96 @@ private slots:
         for (double v : r) {
             QCOMPARE(v, 0.0);
         }
+    }
+
+    void scaledBilinearRows() {
+        // Row scales 1/(|u||v|) taken at a reference state: the Jacobian is that of the scaled
+        // rows, and near the reference the residual is the cosine of the sides' angle.
+        std::mt19937 rng(21);
+        BilinearTerm term(3);
+        for (int row = 0; row < 5; ++row) {
+            term.addRow(randomCombination(rng, kPoints, 3, 2),
+                        randomCombination(rng, kPoints, 3, 3), 0.1 * row);
+        }
+        const std::vector<double> reference = randomVector(rng, 3 * kPoints, 1.5);
+        term.scaleRowsAt(reference.data());
+        checkAgainstFiniteDifferences(term, 3 * kPoints, 22);
+        // At the reference: ⟨u, v⟩/(|u||v|) for the row ⟨x₀, x₁ − x₂⟩, computed by hand.
+        BilinearTerm angle(3);
+        angle.addRow({{0, 1.0}}, {{3, 1.0}, {6, -1.0}});
+        const std::vector<double> x{1, 2, 2, 4, 0, 3, 1, 0, 3}; // u = (1,2,2), v = (3,0,0)
+        angle.scaleRowsAt(x.data());
+        QCOMPARE(angle.rowScale(0), 1.0 / 9.0);
+        QVERIFY(std::abs(angle.rowResidual(0, x.data()) - 3.0 / 9.0) < 1e-15);
+        // Scaling every point by λ (state and reference alike) leaves the residual unchanged.
+        std::vector<double> y = x;
+        for (double& v : y) {
+            v *= 1e-3;
+        }
+        angle.scaleRowsAt(y.data());
+        QVERIFY(std::abs(angle.rowResidual(0, y.data()) - 3.0 / 9.0) < 1e-12);
+        angle.scaleRowsAt(nullptr);
+        QCOMPARE(angle.rowScale(0), 1.0);
+    }
+
+    void minimumLengthTerm() {
+        // Rows max(0, 1 − |Σ cᵢ pᵢ|/L): active rows have minima above their lengths, inactive
+        // ones below (away from the kink at |·| = L, where the derivative jumps).
+        std::mt19937 rng(23);
+        for (int trial = 0; trial < 5; ++trial) {
+            const std::vector<double> x = randomVector(rng, 3 * kPoints, 1.5);
+            MinimumLengthTerm term(3);
+            for (int row = 0; row < 6; ++row) {
+                const PointCombination c = randomCombination(rng, kPoints, 3, 3);
+                const int r = term.addRow(c, 0.0);
+                term.setMinimum(r, (row % 2 == 0 ? 2.0 : 0.5) * term.length(r, x.data()));
+            }
+            const double error =
+                jacobianError(analyticJacobian(term, x), finiteDifferenceJacobian(term, x, kStep));
+            QVERIFY2(error < kTolerance, qPrintable(QString("|J - J_fd| = %1").arg(error)));
+        }
+        // Values: |(3,4,0)| = 5 against minima 10 (active, 0.5), 4 (inactive) and 0 (never).
+        MinimumLengthTerm term(3);
+        term.addRow({{0, 1.0}, {3, -1.0}}, 10.0);
+        term.addRow({{0, 1.0}, {3, -1.0}}, 4.0);
+        term.addRow({{0, 1.0}, {3, -1.0}}, 0.0);
+        const std::vector<double> x{3, 4, 0, 0, 0, 0};
+        double r[3];
+        std::vector<double> j(18);
+        term.evaluate(x.data(), r, j.data());
+        QCOMPARE(r[0], 0.5);
+        QCOMPARE(r[1], 0.0);
+        QCOMPARE(r[2], 0.0);
+        QCOMPARE(j[0], -3.0 / 50.0); // −c v/(|v| L) = −3/(5·10)
+        QCOMPARE(j[6], 0.0);
+    }
+
+    void fairnessOfTheChange() {
+        // With a reference r the rows are Δ²(x − r): zero at the reference, whatever its shape.
+        std::mt19937 rng(24);
+        FairnessTerm term(3);
+        term.addSequence({0, 3, 6, 9});
+        term.addSequence({0, 6, 12, 15}, true);
+        const std::vector<double> reference = randomVector(rng, 3 * kPoints, 1.5);
+        term.setReference(reference.data());
+        checkAgainstFiniteDifferences(term, 3 * kPoints, 25);
+        std::vector<double> r(static_cast<std::size_t>(term.rowCount())), j(3 * r.size());
+        term.evaluate(reference.data(), r.data(), j.data());
+        for (double v : r) {
+            QVERIFY(std::abs(v) < 1e-15);
+        }
+        // A translated reference has the same second differences.
+        std::vector<double> moved = reference;
+        for (double& v : moved) {
+            v += 0.25;
+        }
+        term.evaluate(moved.data(), r.data(), j.data());
+        for (double v : r) {
+            QVERIFY(std::abs(v) < 1e-14);
+        }
+        term.setReference(nullptr);
+        term.evaluate(reference.data(), r.data(), j.data());
+        QVERIFY(std::any_of(r.begin(), r.end(), [](double v) { return std::abs(v) > 1e-3; }));
     }
 
     void targetTerm() {

@@ -1,0 +1,88 @@
+#include "solver/core/minimum_length_term.h"
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace devsurf::solver {
+
+MinimumLengthTerm::MinimumLengthTerm(int dimension) : m_dimension(dimension) {
+    if (dimension < 1 || dimension > kMaxDimension) {
+        throw std::invalid_argument("MinimumLengthTerm: dimension out of range");
+    }
+}
+
+int MinimumLengthTerm::addRow(const PointCombination& combination, double minimum) {
+    m_points.insert(m_points.end(), combination.begin(), combination.end());
+    m_start.push_back(static_cast<int>(m_points.size()));
+    m_minimum.push_back(minimum);
+    return rowCount() - 1;
+}
+
+void MinimumLengthTerm::buildPattern(PatternBuilder& builder) const {
+    for (std::size_t r = 0; r < m_minimum.size(); ++r) {
+        builder.beginRow();
+        for (int e = m_start[r]; e < m_start[r + 1]; ++e) {
+            builder.addColumns(m_points[static_cast<std::size_t>(e)].offset, m_dimension);
+        }
+    }
+}
+
+double MinimumLengthTerm::length(int row, const double* x) const {
+    std::array<double, kMaxDimension> v{};
+    const auto r = static_cast<std::size_t>(row);
+    for (int e = m_start[r]; e < m_start[r + 1]; ++e) {
+        const PointTerm& p = m_points[static_cast<std::size_t>(e)];
+        for (int k = 0; k < m_dimension; ++k) {
+            v[k] += p.coefficient * x[p.offset + k];
+        }
+    }
+    double squared = 0.0;
+    for (int k = 0; k < m_dimension; ++k) {
+        squared += v[k] * v[k];
+    }
+    return std::sqrt(squared);
+}
+
+int MinimumLengthTerm::evaluateOne(std::size_t r, const double* x, double* residual,
+                                   double* jacobian) const {
+    std::array<double, kMaxDimension> v{};
+    for (int e = m_start[r]; e < m_start[r + 1]; ++e) {
+        const PointTerm& p = m_points[static_cast<std::size_t>(e)];
+        for (int k = 0; k < m_dimension; ++k) {
+            v[k] += p.coefficient * x[p.offset + k];
+        }
+    }
+    double squared = 0.0;
+    for (int k = 0; k < m_dimension; ++k) {
+        squared += v[k] * v[k];
+    }
+    const double length = std::sqrt(squared);
+    const double minimum = m_minimum[r];
+    const bool active = minimum > 0.0 && length < minimum;
+    *residual = active ? 1.0 - length / minimum : 0.0;
+    // ∂/∂pᵢ = −cᵢ v / (|v| L) while active (a zero-length side has no direction: zero row).
+    const double factor = active && length > 0.0 ? -1.0 / (length * minimum) : 0.0;
+    double* out = jacobian;
+    for (int e = m_start[r]; e < m_start[r + 1]; ++e) {
+        const double c = m_points[static_cast<std::size_t>(e)].coefficient;
+        for (int k = 0; k < m_dimension; ++k) {
+            *out++ = factor * c * v[k];
+        }
+    }
+    return static_cast<int>(out - jacobian);
+}
+
+void MinimumLengthTerm::evaluate(const double* x, double* residuals, double* jacobian) const {
+    for (std::size_t r = 0; r < m_minimum.size(); ++r) {
+        jacobian += evaluateOne(r, x, residuals + r, jacobian);
+    }
+}
+
+bool MinimumLengthTerm::evaluateRow(int row, const double* x, double* residual,
+                                    double* jacobian) const {
+    evaluateOne(static_cast<std::size_t>(row), x, residual, jacobian);
+    return true;
+}
+
+} // namespace devsurf::solver

@@ -1,0 +1,26 @@
+#pragma once
+
+#include "model/bspline_curve.h"
+#include "model/strip.h"
+
+#include <vector>
+
+namespace devsurf::solver {
+
+// An initial unit normal of a strip at u: a′ × (b − a), which points to the side the face
+// loop orients (stripOfFace runs a along the loop and b against it), so neighbouring strips
+// start consistently oriented (MATH.md §2, §5). A collapsed ruling (SRS end) uses a′ × b′.
+model::Vec3 initialStripNormal(const model::Strip& strip, double u);
+
+// True if the strip's normalised det(a − b, a′, b′) is at most 1e-9 at 50 values per knot interval
+// (cones: always).
+bool isDevelopableStart(const model::Strip& strip);
+
+// Initial control normals of a strip's normal spline `normalCurve` (its space; its control
+// points are ignored), fitted by least squares to N(u) = a′ × (b − a) at `samples`, whose
+// last two values must be u = 0 and u = 1 (an exact fit of N is scaled to |n(0)| = 1).
+std::vector<model::Vec3> fitStartNormals(const model::Strip& strip,
+                                         const model::BSplineCurve& normalCurve,
+                                         const std::vector<double>& samples);
+
+} // namespace devsurf::solver

@@ -1,0 +1,196 @@
+// SurfaceFormulation's states: handle targets, writing a state back to the surface, the
+// reference state (row scales, relative fairness, degeneracy guards) and the per-face
+// residuals reported where a solve falls short.
+#include "solver/formulation/surface_formulation.h"
+
+#include "solver/core/bilinear_term.h"
+#include "solver/core/fairness_term.h"
+#include "solver/core/minimum_length_term.h"
+#include "solver/core/target_term.h"
+#include "solver/core/unit_norm_term.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+namespace devsurf::solver {
+
+using model::Vec3;
+using model::VertexId;
+
+namespace {
+
+std::string str(std::uint32_t id) {
+    return std::to_string(id);
+}
+
+} // namespace
+
+bool SurfaceFormulation::setHandleTarget(VertexId vertex, const Vec3& target) {
+    auto it = m_handleRow.find(vertex);
+    if (it == m_handleRow.end() || !m_handleTerm) {
+        return false;
+    }
+    for (int k = 0; k < 3; ++k) {
+        m_handleTerm->setTarget(it->second + k, (target[k] - m_centre[k]) / m_scale);
+    }
+    return true;
+}
+
+Vec3 SurfaceFormulation::toModel(const double* p) const {
+    return Vec3(m_centre.x + m_scale * p[0], m_centre.y + m_scale * p[1],
+                m_centre.z + m_scale * p[2]);
+}
+
+Vec3 SurfaceFormulation::vertexPosition(const std::vector<double>& x, VertexId vertex) const {
+    const int point = m_vertexPoint.at(vertex);
+    const auto offset = static_cast<std::size_t>(pointOffset(point));
+    if (std::equal(x.begin() + static_cast<std::ptrdiff_t>(offset),
+                   x.begin() + static_cast<std::ptrdiff_t>(offset + 3),
+                   m_initialState.begin() + static_cast<std::ptrdiff_t>(offset))) {
+        return m_originalPoints[static_cast<std::size_t>(point)];
+    }
+    return toModel(x.data() + offset);
+}
+
+bool SurfaceFormulation::writeBack(const std::vector<double>& x, model::CompositeSurface& surface,
+                                   std::string* error) const {
+    auto fail = [error](const std::string& message) {
+        if (error) {
+            *error = message;
+        }
+        return false;
+    };
+    if (x.size() != m_initialState.size()) {
+        return fail("the solver state has " + std::to_string(x.size()) + " values, expected " +
+                    std::to_string(m_initialState.size()) + ".");
+    }
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        if (!std::isfinite(x[i])) {
+            return fail("the solver state contains a non-finite value (variable " +
+                        std::to_string(i) + "); the surface was left unchanged.");
+        }
+    }
+    for (const auto& [vertex, point] : m_vertexPoint) {
+        (void)point;
+        if (!surface.hasVertex(vertex)) {
+            return fail("the surface has no vertex " + str(vertex) + " any more.");
+        }
+    }
+    for (const auto& [edge, points] : m_edgePoints) {
+        if (!surface.hasEdge(edge) || !surface.edge(edge).isSpline() ||
+            surface.edge(edge).controlPoints.size() != points.size()) {
+            return fail("the S-edge " + str(edge) + " of the surface has changed.");
+        }
+    }
+    std::vector<Vec3> positions(static_cast<std::size_t>(m_pointCount));
+    for (int i = 0; i < m_pointCount; ++i) {
+        const auto offset = static_cast<std::size_t>(pointOffset(i));
+        const bool unchanged = x[offset] == m_initialState[offset] &&
+                               x[offset + 1] == m_initialState[offset + 1] &&
+                               x[offset + 2] == m_initialState[offset + 2];
+        positions[static_cast<std::size_t>(i)] =
+            unchanged ? m_originalPoints[static_cast<std::size_t>(i)] : toModel(&x[offset]);
+    }
+    for (const auto& [vertex, point] : m_vertexPoint) {
+        surface.moveVertex(vertex, positions[static_cast<std::size_t>(point)]);
+    }
+    for (const auto& [edge, points] : m_edgePoints) {
+        std::vector<Vec3> controls;
+        controls.reserve(points.size());
+        for (int p : points) {
+            controls.push_back(positions[static_cast<std::size_t>(p)]);
+        }
+        surface.setControlPoints(edge, std::move(controls));
+    }
+    return true;
+}
+
+void SurfaceFormulation::setReferenceState(const std::vector<double>& x) {
+    if (x.size() != m_initialState.size()) {
+        throw std::invalid_argument("the reference state has " + std::to_string(x.size()) +
+                                    " values, expected " + std::to_string(m_initialState.size()) +
+                                    ".");
+    }
+    const double* scaleAt = m_options.normalizedRows ? x.data() : nullptr;
+    for (BilinearTerm* term : {m_developability, m_planarity, m_coneNormals}) {
+        if (term) {
+            term->scaleRowsAt(scaleAt);
+        }
+    }
+    const double* reference = m_options.relativeFairness ? x.data() : nullptr;
+    if (m_pointFairness) {
+        m_pointFairness->setReference(reference);
+    }
+    if (m_normalFairness) {
+        m_normalFairness->setReference(reference);
+    }
+    if (m_unitControlNormals) {
+        // Each control normal keeps its reference length (or, absolute, unit length).
+        for (int row = 0; row < m_unitControlNormals->rowCount(); ++row) {
+            double squared = 1.0;
+            if (reference) {
+                const double length = m_unitControlNormals->leftLength(row, x.data());
+                squared = length * length;
+            }
+            m_unitControlNormals->setSquaredDistance(row, squared);
+        }
+    }
+    // Rulings: a fraction of their reference length. Rulings of (nearly) zero length, such as
+    // the pointed end of an SRS face, get no guard.
+    constexpr double kNegligible = 1e-9; // in coordinates of diameter 1
+    if (m_rulingGuard) {
+        for (int row = 0; row < m_rulingGuard->rowCount(); ++row) {
+            const double length = m_rulingGuard->length(row, x.data());
+            m_rulingGuard->setMinimum(row,
+                                      length > kNegligible ? m_options.rulingGuard * length : 0.0);
+        }
+    }
+    // Speeds: a fraction of the smaller of the reference speed there and the curve's mean
+    // reference speed, so a curve that already runs slowly somewhere is not pushed to speed up.
+    if (m_speedGuard) {
+        for (std::size_t c = 0; c + 1 < m_speedCurveStart.size(); ++c) {
+            const int begin = m_speedCurveStart[c];
+            const int end = m_speedCurveStart[c + 1];
+            double sum = 0.0;
+            for (int row = begin; row < end; ++row) {
+                sum += m_speedGuard->length(row, x.data());
+            }
+            const double mean = end > begin ? sum / (end - begin) : 0.0;
+            for (int row = begin; row < end; ++row) {
+                const double speed = std::min(m_speedGuard->length(row, x.data()), mean);
+                m_speedGuard->setMinimum(row,
+                                         speed > kNegligible ? m_options.speedGuard * speed : 0.0);
+            }
+        }
+    }
+}
+
+std::vector<SurfaceFormulation::FaceResidual>
+SurfaceFormulation::faceResiduals(const std::vector<double>& x) const {
+    std::map<model::FaceId, double> worst;
+    auto collect = [&](const BilinearTerm* term, const std::vector<model::FaceId>& faces) {
+        if (!term || x.size() != m_initialState.size()) {
+            return;
+        }
+        for (int row = 0; row < term->rowCount(); ++row) {
+            const double residual = term->rowResidual(row, x.data());
+            double& value = worst[faces[static_cast<std::size_t>(row)]];
+            value = std::max(value, std::abs(residual));
+        }
+    };
+    collect(m_developability, m_developabilityFaces);
+    collect(m_planarity, m_planarityFaces);
+    std::vector<FaceResidual> result;
+    for (const auto& [face, residual] : worst) {
+        result.push_back({face, residual});
+    }
+    std::stable_sort(
+        result.begin(), result.end(),
+        [](const FaceResidual& a, const FaceResidual& b) { return a.residual > b.residual; });
+    return result;
+}
+
+} // namespace devsurf::solver

@@ -1,0 +1,29 @@
+#pragma once
+
+#include "model/composite_surface.h"
+
+namespace devsurf::solver {
+
+// How a solve changed a surface, from the geometry of the start and the result (same
+// combinatorics), for the degeneracy and noise figures of the benchmark and the tests.
+struct ShapeChange {
+    // Smallest |a(u) − b(u)| of the result over the same ruling's length in the start, over
+    // every strip and sampled u (rulings of zero start length, SRS tips, are skipped).
+    double shortestRuling = 1.0;
+    // Smallest speed |c′(u)| of the result over the mean speed of the same S-edge in the
+    // start, over every S-edge and sampled u.
+    double slowestSpeed = 1.0;
+    // Mean angle (radians) between the normals of the two sampled faces at a crease (an S-edge
+    // between two faces) in the result, and between any two neighbouring sampled faces in the
+    // start: a solve that crumples a noisy start raises the first above the second.
+    double creaseFoldMean = 0.0;
+    double startNormalAngleMean = 0.0;
+    // Largest distance of a vertex or control point from its start position.
+    double largestMove = 0.0;
+};
+
+// Throws model::ModelError if a surface is not valid; the two must share their combinatorics.
+ShapeChange measureShapeChange(const model::CompositeSurface& start,
+                               const model::CompositeSurface& result, int samplesPerInterval = 8);
+
+} // namespace devsurf::solver

@@ -1,0 +1,61 @@
+#pragma once
+
+#include "model/composite_surface.h"
+#include "solver/core/options.h"
+#include "solver/formulation/surface_formulation.h"
+#include "solver/quality/shape_change.h"
+
+#include <string>
+#include <vector>
+
+namespace devsurf::bench {
+
+// The scale of a start's Gaussian noise: a fraction of the mean control-polygon edge length or
+// of the model's diameter.
+enum class NoiseScale { EdgeLength, Diameter };
+
+struct StudyStart {
+    NoiseScale scale = NoiseScale::Diameter;
+    double fraction = 0.01;
+};
+
+struct StudyOptions {
+    int iterations = 10;
+    int seeds = 10;
+    unsigned firstSeed = 20150801u;
+    int fixedVertices = 3; // boundary vertices fixed (spread over the boundary)
+    solver::FormulationOptions formulation;
+    solver::Options solver;
+};
+
+// One solve from one seed, measured on the geometry.
+struct StudyRun {
+    unsigned seed = 0;
+    std::string status;
+    double residual = 0.0; // the solver's largest constraint residual at the end
+    double detMax = 0.0;   // normalised developability residual, max
+    double flatnessMean = 0.0;
+    solver::ShapeChange change;
+    double msPerIteration = 0.0;
+};
+
+// Worst and median over the seeds ("worst" is the largest residual, the shortest ruling, …).
+struct StudySummary {
+    double detWorst = 0.0, detMedian = 0.0;
+    double flatnessWorst = 0.0, flatnessMedian = 0.0;
+    double rulingWorst = 0.0, rulingMedian = 0.0;
+    double speedWorst = 0.0, speedMedian = 0.0;
+    double foldWorst = 0.0, foldMedian = 0.0; // radians
+    double startAngleMedian = 0.0;            // radians
+    double foldOverStartWorst = 0.0, foldOverStartMedian = 0.0;
+};
+
+double meanControlEdgeLength(const model::CompositeSurface& surface);
+// Noise σ in model units for a start on `surface`.
+double noiseSigma(const model::CompositeSurface& surface, const StudyStart& start);
+
+std::vector<StudyRun> runStudy(const model::CompositeSurface& surface, const StudyStart& start,
+                               const StudyOptions& options);
+StudySummary summarize(const std::vector<StudyRun>& runs);
+
+} // namespace devsurf::bench
