@@ -17,7 +17,8 @@
 // passes any version through to the load functions.
 namespace devsurf::io::versions {
 inline constexpr unsigned kProject = 1;
-inline constexpr unsigned kSurface = 1;
+// 2: pinned vertices (project file format 2).
+inline constexpr unsigned kSurface = 2;
 inline constexpr unsigned kEdge = 1;
 } // namespace devsurf::io::versions
 
@@ -182,6 +183,11 @@ template <class Archive> void save(Archive& ar, const CompositeSurface& s, unsig
             ar << v;
         }
     }
+    const auto pinned = static_cast<std::uint32_t>(s.pinnedVertices().size());
+    ar << pinned;
+    for (VertexId v : s.pinnedVertices()) {
+        ar << v;
+    }
 }
 
 template <class Archive> void load(Archive& ar, CompositeSurface& s, unsigned version) {
@@ -224,6 +230,19 @@ template <class Archive> void load(Archive& ar, CompositeSurface& s, unsigned ve
         s.addFaceWithId(id, loop);
     }
     s.setNextIds(nextVertex, nextEdge, nextFace);
+    if (version >= 2) {
+        std::uint32_t pinned = 0;
+        ar >> pinned;
+        checkedCount(pinned, vertices, "pinned vertices");
+        for (std::uint32_t i = 0; i < pinned; ++i) {
+            VertexId v = 0;
+            ar >> v;
+            if (!s.hasVertex(v)) {
+                throw FileError("it pins vertex " + std::to_string(v) + ", which does not exist");
+            }
+            s.setPinned(v, true);
+        }
+    }
 }
 
 template <class Archive> void save(Archive& ar, const Project& p, unsigned /*version*/) {

@@ -1,5 +1,6 @@
 #include "composite_surface.h"
 
+#include "geometry_checks.h"
 #include "model_error.h"
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
@@ -67,7 +68,7 @@ CompositeSurface::~CompositeSurface() = default;
 
 CompositeSurface::CompositeSurface(const CompositeSurface& other)
     : m_name(other.m_name), m_vertices(other.m_vertices), m_edges(other.m_edges),
-      m_faces(other.m_faces), m_edgeByVertices(other.m_edgeByVertices),
+      m_faces(other.m_faces), m_pinned(other.m_pinned), m_edgeByVertices(other.m_edgeByVertices),
       m_nextVertexId(other.m_nextVertexId), m_nextEdgeId(other.m_nextEdgeId),
       m_nextFaceId(other.m_nextFaceId),
       m_connectivity(std::make_unique<Connectivity>(*other.m_connectivity)) {}
@@ -270,6 +271,17 @@ void CompositeSurface::setControlPoints(EdgeId edge, std::vector<Vec3> controlPo
     mutableEdge(edge).controlPoints = std::move(controlPoints);
 }
 
+void CompositeSurface::setPinned(VertexId vertex, bool pinned) {
+    if (!hasVertex(vertex)) {
+        throw ModelError("vertex " + str(vertex) + " does not exist.");
+    }
+    if (pinned) {
+        m_pinned.insert(vertex);
+    } else {
+        m_pinned.erase(vertex);
+    }
+}
+
 const Vec3& CompositeSurface::position(VertexId id) const {
     auto it = m_vertices.find(id);
     if (it == m_vertices.end()) {
@@ -428,10 +440,6 @@ std::vector<std::string> CompositeSurface::validate() const {
         }
     }
     for (const auto& [id, p] : m_vertices) {
-        if (!p.isFinite()) {
-            problems.push_back("vertex " + str(id) +
-                               " has a position that is not a finite number.");
-        }
         if (usedVertices.count(id) == 0) {
             problems.push_back("vertex " + str(id) + " belongs to no face.");
         }
@@ -509,6 +517,10 @@ std::vector<std::string> CompositeSurface::validate() const {
             }
         }
     }
+    // Positions (finite, not absurdly large) and degenerate curves, rulings and faces.
+    for (std::string& problem : degenerateGeometryProblems(*this)) {
+        problems.push_back(std::move(problem));
+    }
     return problems;
 }
 
@@ -529,7 +541,7 @@ bool CompositeSurface::operator==(const CompositeSurface& other) const {
     };
     return m_name == other.m_name && m_vertices == other.m_vertices && m_faces == other.m_faces &&
            m_nextVertexId == other.m_nextVertexId && m_nextEdgeId == other.m_nextEdgeId &&
-           m_nextFaceId == other.m_nextFaceId &&
+           m_nextFaceId == other.m_nextFaceId && m_pinned == other.m_pinned &&
            std::equal(m_edges.begin(), m_edges.end(), other.m_edges.begin(), other.m_edges.end(),
                       [&](const auto& a, const auto& b) {
                           return a.first == b.first && sameEdges(a.second, b.second);

@@ -6,6 +6,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -79,6 +80,9 @@ public:
     // starting and ending at their vertices.
     void moveVertex(VertexId vertex, const Vec3& position);
     void setControlPoints(EdgeId edge, std::vector<Vec3> controlPoints);
+    // Pins a vertex (the solver never moves it) or releases it. Throws ModelError for an
+    // unknown vertex.
+    void setPinned(VertexId vertex, bool pinned);
 
     // Construction with explicit ids (file loading). Ids must be new; next ids advance past them.
     void addVertexWithId(VertexId id, const Vec3& position);
@@ -90,6 +94,8 @@ public:
     const std::map<VertexId, Vec3>& vertices() const { return m_vertices; }
     const std::map<EdgeId, EdgeRecord>& edges() const { return m_edges; }
     const std::map<FaceId, std::vector<VertexId>>& faces() const { return m_faces; }
+    const std::set<VertexId>& pinnedVertices() const { return m_pinned; }
+    bool isPinned(VertexId id) const { return m_pinned.count(id) != 0; }
     VertexId nextVertexId() const { return m_nextVertexId; }
     EdgeId nextEdgeId() const { return m_nextEdgeId; }
     FaceId nextFaceId() const { return m_nextFaceId; }
@@ -133,6 +139,7 @@ private:
     std::map<VertexId, Vec3> m_vertices;
     std::map<EdgeId, EdgeRecord> m_edges;
     std::map<FaceId, std::vector<VertexId>> m_faces;
+    std::set<VertexId> m_pinned;
     std::map<std::pair<VertexId, VertexId>, EdgeId> m_edgeByVertices; // key: (min, max)
     VertexId m_nextVertexId = 0;
     EdgeId m_nextEdgeId = 0;

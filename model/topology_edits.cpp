@@ -29,6 +29,7 @@ struct SurfaceData {
     std::map<VertexId, Vec3> vertices;
     std::map<EdgeId, EdgeRecord> edges;
     std::map<FaceId, std::vector<VertexId>> faces;
+    std::set<VertexId> pinned; // vertices keep their ids, so pins carry over
     std::map<std::pair<VertexId, VertexId>, EdgeId> edgeByVertices;
     VertexId nextVertex = 0;
     EdgeId nextEdge = 0;
@@ -36,7 +37,8 @@ struct SurfaceData {
 
     explicit SurfaceData(const CompositeSurface& s)
         : name(s.name()), vertices(s.vertices()), edges(s.edges()), faces(s.faces()),
-          nextVertex(s.nextVertexId()), nextEdge(s.nextEdgeId()), nextFace(s.nextFaceId()) {
+          pinned(s.pinnedVertices()), nextVertex(s.nextVertexId()), nextEdge(s.nextEdgeId()),
+          nextFace(s.nextFaceId()) {
         for (const auto& [id, record] : edges) {
             edgeByVertices[key(record.from, record.to)] = id;
         }
@@ -94,6 +96,9 @@ struct SurfaceData {
             s.addFaceWithId(id, loop);
         }
         s.setNextIds(nextVertex, nextEdge, nextFace);
+        for (VertexId vertex : pinned) {
+            s.setPinned(vertex, true);
+        }
         // A face side without a prepared edge would have been created silently; that, or any
         // other problem, is a bug in the edit, reported rather than handed to the document.
         auto problems = s.validate();

@@ -9,7 +9,8 @@ enum class Change : unsigned {
     Geometry = 0x1, // positions of vertices or control points
     Labels = 0x2,   // R/S labels, spline spaces, crease conditions
     Topology = 0x4, // vertices, edges or faces added or removed
-    Everything = 0x7,
+    Pins = 0x8,     // vertices pinned or released
+    Everything = 0xf,
 };
 Q_DECLARE_FLAGS(Changes, Change)
 Q_DECLARE_OPERATORS_FOR_FLAGS(Changes)

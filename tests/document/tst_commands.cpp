@@ -1,6 +1,7 @@
 #include "document_test_support.h"
 #include "model/document/commands/apply_surface_command.h"
 #include "model/document/commands/move_vertices_command.h"
+#include "model/document/commands/pin_vertices_command.h"
 #include "model/document/commands/refine_spline_class_command.h"
 #include "model/document/commands/relabel_edge_command.h"
 #include "model/document/commands/split_at_ruling_command.h"
@@ -14,6 +15,8 @@
 #include <QSignalSpy>
 #include <QTest>
 #include <QUndoStack>
+
+#include <set>
 
 using namespace devsurf::document;
 using namespace devsurf::model;
@@ -138,6 +141,9 @@ private slots:
             Document doc;
             doc.resetProject(makeExample(name));
             const CompositeSurface& s = doc.surface(0);
+            const VertexId first = s.vertices().begin()->first;
+            redoUndoRedo(doc, PinVerticesCommand::create(doc, 0, {first, first + 1}, true), "pin");
+            redoUndoRedo(doc, PinVerticesCommand::create(doc, 0, {first + 1}, false), "unpin");
             redoUndoRedo(doc, someRelabel(doc), "relabel");
             redoUndoRedo(
                 doc,
@@ -151,6 +157,8 @@ private slots:
             }
             const EdgeId spline = doc.surface(0).splineClasses().back().front();
             redoUndoRedo(doc, RefineSplineClassCommand::create(doc, 0, spline), "refine");
+            // Topological edits keep vertex ids, and with them the pins.
+            QCOMPARE(doc.surface(0).pinnedVertices(), std::set<VertexId>{first});
             const VertexId v = doc.surface(0).vertices().begin()->first;
             redoUndoRedo(doc, MoveVerticesCommand::createTranslation(doc, 0, {v, v + 1}, {1, 2, 3}),
                          "translate");
@@ -292,6 +300,25 @@ private slots:
                      .isEmpty());
         QVERIFY(bytesOf(doc) == original);
         QCOMPARE(doc.undoStack()->count(), 0);
+    }
+
+    void pinRefusals() {
+        Document doc;
+        doc.resetProject(makeExample("sheet"));
+        const std::string original = bytesOf(doc);
+        QVERIFY(PinVerticesCommand::create(doc, 0, {}, true).isRefused());
+        const CommandOrError unknown = PinVerticesCommand::create(doc, 0, {0, 9999}, true);
+        QVERIFY(unknown.isRefused());
+        QVERIFY(unknown.error().contains("9999"));
+        QVERIFY(PinVerticesCommand::create(doc, 0, {0}, false).isRefused()); // not pinned
+        QVERIFY(PinVerticesCommand::create(doc, 1, {0}, true).isRefused());  // no surface 1
+        QVERIFY(pushOrExplain(doc, PinVerticesCommand::create(doc, 0, {0, 3}, true)).isEmpty());
+        const CommandOrError again = PinVerticesCommand::create(doc, 0, {0, 3}, true);
+        QVERIFY(again.isRefused());
+        QCOMPARE(PinVerticesCommand::create(doc, 0, {0, 1}, true).command()->text(),
+                 QString("Pin 2 vertices"));
+        doc.undoStack()->undo();
+        QVERIFY(bytesOf(doc) == original);
     }
 };
 

@@ -1,6 +1,7 @@
 #include "document_test_support.h"
 #include "model/document/commands/apply_surface_command.h"
 #include "model/document/commands/move_vertices_command.h"
+#include "model/document/commands/pin_vertices_command.h"
 #include "model/document/commands/refine_spline_class_command.h"
 #include "model/document/commands/relabel_edge_command.h"
 #include "model/document/commands/split_at_ruling_command.h"
@@ -140,6 +141,13 @@ private slots:
                 if (s.edge(edge).isSpline() && s.edge(edge).space.intervals <= 4) {
                     result = RefineSplineClassCommand::create(doc, index, edge);
                 }
+            } else if (kind < 0.95) {
+                type = "pin";
+                std::set<VertexId> vertices;
+                for (int i = 0; i < 1 + static_cast<int>(rng() % 3); ++i) {
+                    vertices.insert(randomKey(s.vertices(), rng));
+                }
+                result = PinVerticesCommand::create(doc, index, vertices, unit(rng) < 0.7);
             } else {
                 type = "apply";
                 CompositeSurface solved = s;
@@ -164,7 +172,7 @@ private slots:
             ++total;
         }
         for (const char* type :
-             {"translate", "rotate", "relabel", "subdivide", "split", "refine", "apply"}) {
+             {"translate", "rotate", "relabel", "subdivide", "split", "refine", "pin", "apply"}) {
             qInfo("%s: %d", type, pushed[type]);
             QVERIFY2(pushed[type] >= 10, type);
         }

@@ -9,6 +9,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <set>
+
 using namespace devsurf;
 
 namespace {
@@ -146,7 +148,46 @@ private slots:
         QCOMPARE(stats.controlPoints, std::size_t(22));
         QCOMPARE(stats.splineEdges, std::size_t(5));
         QVERIFY(project.surfaces[0].validate().empty());
-        QCOMPARE(io::encodeProject(project), readAll(path));
+        // Version 1 had no pins; it reads as the same design with none pinned.
+        QVERIFY(project.surfaces[0].pinnedVertices().empty());
+        QVERIFY(project == model::makeExample("mixed", 0));
+        // Saved again it becomes a file of the current version holding the same project.
+        QVERIFY(io::encodeProject(project) != readAll(path));
+        QVERIFY(io::decodeProject(io::encodeProject(project)) == project);
+    }
+
+    void versionTwoSampleStaysLoadable() {
+        // Committed once with format version 2 (the mixed example, vertices 0 and 3 pinned);
+        // it must load with every later version.
+        const QString path = QStringLiteral(DEVSURF_TEST_DATA_DIR "/sample-v2.devsurf");
+        const std::string bytes = readAll(path);
+        QCOMPARE(bytes.substr(8, 4), std::string("\x02\x00\x00\x00", 4));
+        const model::Project project = io::loadProjectFile(path);
+        QCOMPARE(project.surfaces.size(), std::size_t(1));
+        QCOMPARE(project.surfaces[0].pinnedVertices(), (std::set<model::VertexId>{0, 3}));
+        model::Project expected = model::makeExample("mixed", 0);
+        expected.surfaces[0].setPinned(0, true);
+        expected.surfaces[0].setPinned(3, true);
+        QVERIFY(project == expected);
+    }
+
+    void pinsRoundTrip() {
+        model::Project project = model::makeExample("annulus", 0);
+        model::CompositeSurface& surface = project.surfaces[0];
+        for (const auto& entry : surface.vertices()) {
+            if (entry.first % 3 == 0) {
+                surface.setPinned(entry.first, true);
+            }
+        }
+        QVERIFY(surface.pinnedVertices().size() > 10);
+        const model::Project loaded = io::decodeProject(io::encodeProject(project));
+        QCOMPARE(loaded.surfaces[0].pinnedVertices(), surface.pinnedVertices());
+        QVERIFY(loaded == project);
+        // A pin is part of the design: unpinning one changes what is saved.
+        model::Project unpinned = project;
+        unpinned.surfaces[0].setPinned(*surface.pinnedVertices().begin(), false);
+        QVERIFY(!(unpinned == project));
+        QVERIFY(io::encodeProject(unpinned) != io::encodeProject(project));
     }
 };
 

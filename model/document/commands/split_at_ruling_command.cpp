@@ -9,9 +9,9 @@ namespace devsurf::document {
 
 CommandOrError SplitAtRulingCommand::create(Document& document, int surfaceIndex,
                                             model::FaceId face, int breakpoint) {
-    const QString text = tr("Add a ruling to face %1").arg(face);
+    const QString text = tr("Add a ruling across patch %1").arg(face);
     return attempt(
-        document, surfaceIndex, tr("No ruling can be added to face %1").arg(face),
+        document, surfaceIndex, tr("No ruling can be added across patch %1").arg(face),
         [&](const model::CompositeSurface& s) { return model::splitAtRuling(s, face, breakpoint); },
         [&](model::CompositeSurface before, model::CompositeSurface after) {
             return std::unique_ptr<QUndoCommand>(

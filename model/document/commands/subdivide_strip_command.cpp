@@ -6,9 +6,9 @@ namespace devsurf::document {
 
 CommandOrError SubdivideStripCommand::create(Document& document, int surfaceIndex,
                                              model::FaceId face, double t) {
-    const QString text = tr("Subdivide strip %1").arg(face);
+    const QString text = tr("Add a crease across patch %1").arg(face);
     return attempt(
-        document, surfaceIndex, tr("Strip %1 cannot be subdivided").arg(face),
+        document, surfaceIndex, tr("No crease can be added across patch %1").arg(face),
         [&](const model::CompositeSurface& s) { return model::subdivideStrip(s, face, t); },
         [&](model::CompositeSurface before, model::CompositeSurface after) {
             return std::unique_ptr<QUndoCommand>(

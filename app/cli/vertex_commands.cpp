@@ -1,0 +1,206 @@
+#include "vertex_commands.h"
+
+#include "io/project_file.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QString>
+
+#include <iostream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace devsurf::app {
+
+namespace {
+
+std::set<model::VertexId> boundaryVertices(const model::CompositeSurface& surface) {
+    std::set<model::VertexId> boundary;
+    for (const auto& [id, edge] : surface.edges()) {
+        if (surface.facesOfEdge(id).size() == 1) {
+            boundary.insert(edge.from);
+            boundary.insert(edge.to);
+        }
+    }
+    return boundary;
+}
+
+// "crease" for an S-edge between two faces, "boundary" for an S-edge of one face, "" for rulings.
+const char* curveKind(const model::CompositeSurface& surface, model::EdgeId id) {
+    if (!surface.edge(id).isSpline()) {
+        return "";
+    }
+    return surface.facesOfEdge(id).size() == 2 ? "crease" : "boundary";
+}
+
+QJsonObject surfaceJson(const model::CompositeSurface& surface, const EntityListing& listing) {
+    QJsonObject object;
+    object["name"] = QString::fromStdString(surface.name());
+    if (listing.vertices) {
+        const std::set<model::VertexId> boundary = boundaryVertices(surface);
+        QJsonArray vertices;
+        for (const auto& [id, p] : surface.vertices()) {
+            vertices.append(QJsonObject{{"id", static_cast<qint64>(id)},
+                                        {"position", QJsonArray{p.x, p.y, p.z}},
+                                        {"pinned", surface.isPinned(id)},
+                                        {"boundary", boundary.count(id) != 0}});
+        }
+        object["vertices"] = vertices;
+    }
+    if (listing.edges) {
+        QJsonArray edges;
+        for (const auto& [id, edge] : surface.edges()) {
+            QJsonObject e{{"id", static_cast<qint64>(id)},
+                          {"label", edge.isSpline() ? "S" : "R"},
+                          {"vertices", QJsonArray{static_cast<qint64>(edge.from),
+                                                  static_cast<qint64>(edge.to)}}};
+            if (edge.isSpline()) {
+                e["kind"] = curveKind(surface, id);
+                e["condition"] = model::creaseConditionName(edge.condition);
+            }
+            edges.append(e);
+        }
+        object["edges"] = edges;
+    }
+    return object;
+}
+
+void printSurfaceText(const model::CompositeSurface& surface, std::size_t index,
+                      const EntityListing& listing, std::ostream& out) {
+    out << "Surface " << index + 1 << ": " << surface.name() << "\n";
+    if (listing.vertices) {
+        const std::set<model::VertexId> boundary = boundaryVertices(surface);
+        out << "  Vertices (id x y z, pinned, boundary):\n";
+        const auto precision = out.precision(15);
+        for (const auto& [id, p] : surface.vertices()) {
+            out << "    " << id << " " << p.x << " " << p.y << " " << p.z
+                << (surface.isPinned(id) ? " pinned" : " free")
+                << (boundary.count(id) != 0 ? " boundary" : " interior") << "\n";
+        }
+        out.precision(precision);
+    }
+    if (listing.edges) {
+        out << "  Edges (id label from to, kind, condition):\n";
+        for (const auto& [id, edge] : surface.edges()) {
+            out << "    " << id << " " << (edge.isSpline() ? "S" : "R") << " " << edge.from << " "
+                << edge.to;
+            if (edge.isSpline()) {
+                out << " " << curveKind(surface, id) << " "
+                    << model::creaseConditionName(edge.condition);
+            }
+            out << "\n";
+        }
+    }
+}
+
+std::string option(const std::vector<std::pair<std::string, std::string>>& options,
+                   const std::string& name) {
+    for (const auto& [key, value] : options) {
+        if (key == name) {
+            return value;
+        }
+    }
+    return {};
+}
+
+} // namespace
+
+void printEntities(const model::Project& project, const EntityListing& listing, std::ostream& out) {
+    if (listing.json) {
+        QJsonArray surfaces;
+        for (const model::CompositeSurface& surface : project.surfaces) {
+            surfaces.append(surfaceJson(surface, listing));
+        }
+        const QJsonObject root{{"units", QString::fromStdString(project.units)},
+                               {"surfaces", surfaces}};
+        out << QJsonDocument(root).toJson(QJsonDocument::Indented).toStdString();
+        return;
+    }
+    for (std::size_t i = 0; i < project.surfaces.size(); ++i) {
+        printSurfaceText(project.surfaces[i], i, listing, out);
+    }
+}
+
+std::vector<model::VertexId> parseVertexIds(const std::string& text, const std::string& option) {
+    std::vector<model::VertexId> ids;
+    std::stringstream stream(text);
+    std::string item;
+    while (std::getline(stream, item, ',')) {
+        std::size_t used = 0;
+        long value = -1;
+        try {
+            value = std::stol(item, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used == 0 || used != item.size() || value < 0 || value > 0xfffffffeL) {
+            throw std::invalid_argument("option '" + option +
+                                        "' needs vertex ids such as 0,4,7, not '" + text + "'");
+        }
+        ids.push_back(static_cast<model::VertexId>(value));
+    }
+    if (ids.empty()) {
+        throw std::invalid_argument("option '" + option + "' needs vertex ids such as 0,4,7");
+    }
+    return ids;
+}
+
+int runPinCommand(const std::vector<std::string>& positional,
+                  const std::vector<std::pair<std::string, std::string>>& options, bool unpin) {
+    if (positional.size() != 1) {
+        throw std::invalid_argument("expected one project file");
+    }
+    const std::string idsText = option(options, "--vertices");
+    if (idsText.empty()) {
+        throw std::invalid_argument("the vertices are missing (use --vertices IDS)");
+    }
+    const std::string output = option(options, "-o");
+    if (output.empty()) {
+        throw std::invalid_argument("the output file is missing (use -o FILE)");
+    }
+    const std::vector<model::VertexId> ids = parseVertexIds(idsText, "--vertices");
+    model::Project project = io::loadProjectFile(QString::fromStdString(positional[0]));
+    std::size_t index = 0;
+    if (const std::string surfaceText = option(options, "--surface"); !surfaceText.empty()) {
+        std::size_t used = 0;
+        long value = 0;
+        try {
+            value = std::stol(surfaceText, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != surfaceText.size() || value < 1 ||
+            static_cast<std::size_t>(value) > project.surfaces.size()) {
+            throw std::invalid_argument("option '--surface' needs a surface number from 1 to " +
+                                        std::to_string(project.surfaces.size()) + ", not '" +
+                                        surfaceText + "'");
+        }
+        index = static_cast<std::size_t>(value - 1);
+    }
+    if (project.surfaces.empty()) {
+        throw std::invalid_argument("the project has no surface to pin vertices of");
+    }
+    model::CompositeSurface& surface = project.surfaces[index];
+    std::string unknown;
+    for (model::VertexId id : ids) {
+        if (!surface.hasVertex(id)) {
+            unknown += (unknown.empty() ? "" : ", ") + std::to_string(id);
+        }
+    }
+    if (!unknown.empty()) {
+        std::cerr << "devsurf-cli: surface '" << surface.name() << "' has no vertex " << unknown
+                  << " (list them with 'devsurf-cli info FILE --vertices').\n";
+        return 2;
+    }
+    for (model::VertexId id : ids) {
+        surface.setPinned(id, !unpin);
+    }
+    io::saveProjectFile(project, QString::fromStdString(output));
+    std::cout << "Wrote " << output << " (" << surface.pinnedVertices().size() << " of "
+              << surface.vertices().size() << " vertices pinned in '" << surface.name() << "')\n";
+    return 0;
+}
+
+} // namespace devsurf::app
