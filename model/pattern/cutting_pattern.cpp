@@ -1,0 +1,148 @@
+#include "cutting_pattern.h"
+
+#include "model/project.h"
+#include "pattern_geometry.h"
+#include "pattern_layout.h"
+#include "pattern_overlaps.h"
+#include "pattern_pieces.h"
+#include "pattern_seams.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+
+namespace devsurf::model {
+
+const char* patternLayerName(PatternLayer layer) {
+    switch (layer) {
+    case PatternLayer::Cut:
+        return "CUT";
+    case PatternLayer::Mountain:
+        return "MOUNTAIN";
+    case PatternLayer::Valley:
+        return "VALLEY";
+    case PatternLayer::Crease:
+        return "CREASE";
+    case PatternLayer::Score:
+        return "SCORE";
+    case PatternLayer::Seam:
+        return "SEAM";
+    case PatternLayer::Labels:
+        return "LABELS";
+    }
+    return "CUT";
+}
+
+std::pair<Vec2, Vec2> CuttingPattern::bounds(int sheet) const {
+    const double inf = std::numeric_limits<double>::infinity();
+    Vec2 lo(inf, inf);
+    Vec2 hi(-inf, -inf);
+    for (const PatternPiece& piece : pieces) {
+        if (sheet >= 0 && piece.sheet != sheet) {
+            continue;
+        }
+        const auto [a, b] = pattern::pieceBounds(piece);
+        lo = Vec2(std::min(lo.x, a.x), std::min(lo.y, a.y));
+        hi = Vec2(std::max(hi.x, b.x), std::max(hi.y, b.y));
+    }
+    if (!std::isfinite(lo.x)) {
+        return {Vec2(), Vec2()};
+    }
+    return {lo, hi};
+}
+
+namespace {
+
+std::string facesText(const std::vector<FaceId>& faces) {
+    std::string text;
+    const std::size_t shown = std::min<std::size_t>(faces.size(), 8);
+    for (std::size_t i = 0; i < shown; ++i) {
+        text += (i == 0 ? "" : ", ") + std::to_string(faces[i]);
+    }
+    if (shown < faces.size()) {
+        text += ", …";
+    }
+    return text;
+}
+
+} // namespace
+
+CuttingPattern buildCuttingPattern(const Project& project, const PatternOptions& requested) {
+    PatternOptions options = requested;
+    if (!std::isfinite(options.tolerance) || options.tolerance <= 0.0) {
+        options.tolerance = PatternOptions{}.tolerance;
+    }
+    options.tolerance = std::clamp(options.tolerance, 1e-6, 10.0);
+    if (!std::isfinite(options.seamAllowance) || options.seamAllowance < 0.0) {
+        options.seamAllowance = 0.0;
+    }
+    if (!std::isfinite(options.gap) || options.gap < 0.0) {
+        options.gap = 0.0;
+    }
+
+    CuttingPattern pattern;
+    pattern.units = project.units;
+    pattern.sheetSize = options.sheetSize;
+    if (options.layout &&
+        !(options.sheetSize.x > 0.0 && options.sheetSize.y > 0.0 &&
+          std::isfinite(options.sheetSize.x) && std::isfinite(options.sheetSize.y))) {
+        pattern.problems.push_back(
+            "The sheet size must be positive; the pieces are laid out side by side.");
+        options.layout = false;
+    }
+
+    std::vector<std::string> surfaceNames;
+    std::vector<pattern::PieceBuild> builds;
+    int nameIndex = 0;
+    for (std::size_t s = 0; s < project.surfaces.size(); ++s) {
+        const CompositeSurface& surface = project.surfaces[s];
+        const std::string name = "surface " + std::to_string(s + 1) +
+                                 (surface.name().empty() ? "" : " \"" + surface.name() + "\"");
+        surfaceNames.push_back(name);
+        const std::vector<std::string> invalid = surface.validate();
+        if (!invalid.empty()) {
+            pattern.problems.push_back("The " + name +
+                                       " is not valid and has no pattern: " + invalid.front());
+            continue;
+        }
+        try {
+            auto pieces = pattern::developSurface(surface, static_cast<int>(s), options, nameIndex);
+            for (auto& piece : pieces) {
+                builds.push_back(std::move(piece));
+            }
+        } catch (const std::exception& error) {
+            pattern.problems.push_back("The " + name + " could not be developed: " + error.what());
+        }
+    }
+
+    for (pattern::PieceBuild& build : builds) {
+        const int index = static_cast<int>(pattern.pieces.size());
+        std::vector<FaceId> faces;
+        if (pattern::selfOverlaps(build.piece, faces)) {
+            build.piece.selfOverlapping = true;
+            pattern.overlaps.push_back({index, index, faces});
+            pattern.problems.push_back("Piece " + build.piece.name + " (" +
+                                       surfaceNames[static_cast<std::size_t>(build.piece.surface)] +
+                                       ") overlaps itself at patches " + facesText(faces) +
+                                       " and cannot be cut from one sheet.");
+        }
+        pattern::addSeamAllowances(build, options);
+        pattern.pieces.push_back(std::move(build.piece));
+    }
+
+    pattern.sheetCount =
+        pattern::layoutPieces(pattern.pieces, options, surfaceNames, pattern.problems);
+
+    for (PatternOverlap& overlap : pattern::overlapsBetweenPieces(pattern.pieces)) {
+        const PatternPiece& a = pattern.pieces[static_cast<std::size_t>(overlap.first)];
+        const PatternPiece& b = pattern.pieces[static_cast<std::size_t>(overlap.second)];
+        pattern.problems.push_back("Pieces " + a.name + " (patches " + facesText(a.faces) +
+                                   ") and " + b.name + " (patches " + facesText(b.faces) +
+                                   ") overlap on sheet " + std::to_string(a.sheet + 1) + ".");
+        pattern.overlaps.push_back(std::move(overlap));
+    }
+    return pattern;
+}
+
+} // namespace devsurf::model

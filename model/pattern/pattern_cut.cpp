@@ -1,0 +1,174 @@
+#include "pattern_cut.h"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+
+namespace devsurf::model::pattern {
+
+namespace {
+
+class UnionFind {
+public:
+    explicit UnionFind(std::size_t size) : m_parent(size) {
+        std::iota(m_parent.begin(), m_parent.end(), 0);
+    }
+    std::size_t find(std::size_t i) {
+        while (m_parent[i] != i) {
+            m_parent[i] = m_parent[m_parent[i]];
+            i = m_parent[i];
+        }
+        return i;
+    }
+    bool unite(std::size_t a, std::size_t b) {
+        a = find(a);
+        b = find(b);
+        if (a == b) {
+            return false;
+        }
+        m_parent[std::max(a, b)] = std::min(a, b);
+        return true;
+    }
+
+private:
+    std::vector<std::size_t> m_parent;
+};
+
+} // namespace
+
+std::set<EdgeId> chooseCutEdges(const CompositeSurface& surface) {
+    std::map<FaceId, std::size_t> faceIndex;
+    for (const auto& [id, loop] : surface.faces()) {
+        faceIndex.emplace(id, faceIndex.size());
+    }
+    // Interior edges, those between two patches; crossing an S-edge first keeps the patches
+    // of a strip row together and leaves the rulings to be cut.
+    std::vector<EdgeId> interior;
+    std::set<VertexId> boundaryVertices;
+    for (const auto& [id, record] : surface.edges()) {
+        if (surface.facesOfEdge(id).size() == 2) {
+            interior.push_back(id);
+        } else {
+            boundaryVertices.insert(record.from);
+            boundaryVertices.insert(record.to);
+        }
+    }
+    std::stable_sort(interior.begin(), interior.end(), [&surface](EdgeId a, EdgeId b) {
+        return surface.edge(a).isSpline() > surface.edge(b).isSpline();
+    });
+    UnionFind components(faceIndex.size());
+    std::set<EdgeId> cut;
+    for (EdgeId edge : interior) {
+        const std::vector<FaceId> faces = surface.facesOfEdge(edge);
+        if (!components.unite(faceIndex.at(faces[0]), faceIndex.at(faces[1]))) {
+            cut.insert(edge);
+        }
+    }
+    // An uncrossed edge that ends at an interior vertex where no other uncrossed edge ends
+    // only slits the piece: the patches around that vertex close up (they are developable),
+    // so it is not cut. Repeat until every remaining edge runs between boundary vertices or
+    // joins others.
+    bool pruned = true;
+    while (pruned) {
+        pruned = false;
+        std::map<VertexId, int> degree;
+        for (EdgeId edge : cut) {
+            ++degree[surface.edge(edge).from];
+            ++degree[surface.edge(edge).to];
+        }
+        for (auto it = cut.begin(); it != cut.end();) {
+            const EdgeRecord& record = surface.edge(*it);
+            const bool dangling =
+                (degree[record.from] == 1 && boundaryVertices.count(record.from) == 0) ||
+                (degree[record.to] == 1 && boundaryVertices.count(record.to) == 0);
+            if (dangling) {
+                --degree[record.from];
+                --degree[record.to];
+                it = cut.erase(it);
+                pruned = true;
+            } else {
+                ++it;
+            }
+        }
+    }
+    return cut;
+}
+
+std::set<std::pair<int, int>> cutSegments(const CompositeSurface& surface, const SampledMesh& mesh,
+                                          const std::set<EdgeId>& edges) {
+    std::set<std::pair<int, int>> segments;
+    if (edges.empty()) {
+        return segments;
+    }
+    std::map<VertexId, int> coarse;
+    for (std::size_t i = 0; i < mesh.coarseVertexIds.size(); ++i) {
+        coarse[mesh.coarseVertexIds[i]] = static_cast<int>(i);
+    }
+    auto add = [&segments](int a, int b) { segments.emplace(std::min(a, b), std::max(a, b)); };
+    for (const auto& line : mesh.splineEdges) {
+        if (edges.count(line.edge) != 0) {
+            for (std::size_t i = 0; i + 1 < line.vertices.size(); ++i) {
+                add(line.vertices[i], line.vertices[i + 1]);
+            }
+        }
+    }
+    for (EdgeId edge : edges) {
+        const EdgeRecord& record = surface.edge(edge);
+        if (!record.isSpline()) {
+            add(coarse.at(record.from), coarse.at(record.to));
+        }
+    }
+    return segments;
+}
+
+CutMesh splitAlong(const SampledMesh& mesh, const std::set<std::pair<int, int>>& segments) {
+    // Corners (face, position in face) are joined across every uncut edge shared by two faces.
+    std::vector<std::size_t> cornerBase(mesh.faces.size() + 1, 0);
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        cornerBase[f + 1] = cornerBase[f] + mesh.faces[f].size();
+    }
+    UnionFind corners(cornerBase.back());
+    std::map<std::pair<int, int>, std::vector<std::pair<std::size_t, std::size_t>>> uses;
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        const auto& face = mesh.faces[f];
+        for (std::size_t k = 0; k < face.size(); ++k) {
+            const std::size_t next = (k + 1) % face.size();
+            const int a = face[k];
+            const int b = face[next];
+            // The corners of the edge's smaller and larger vertex.
+            const std::size_t ca = cornerBase[f] + (a < b ? k : next);
+            const std::size_t cb = cornerBase[f] + (a < b ? next : k);
+            uses[{std::min(a, b), std::max(a, b)}].emplace_back(ca, cb);
+        }
+    }
+    for (const auto& [segment, list] : uses) {
+        if (segments.count(segment) != 0) {
+            continue;
+        }
+        for (std::size_t i = 1; i < list.size(); ++i) {
+            corners.unite(list[0].first, list[i].first);
+            corners.unite(list[0].second, list[i].second);
+        }
+    }
+    CutMesh cut;
+    std::map<std::size_t, int> copyOfClass;
+    cut.mesh.faceOrigin = mesh.faceOrigin;
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        std::vector<int> face;
+        for (std::size_t k = 0; k < mesh.faces[f].size(); ++k) {
+            const std::size_t root = corners.find(cornerBase[f] + k);
+            auto [it, inserted] = copyOfClass.emplace(root, 0);
+            if (inserted) {
+                it->second = static_cast<int>(cut.mesh.vertices.size());
+                const int original = mesh.faces[f][k];
+                cut.mesh.vertices.push_back(mesh.vertices[static_cast<std::size_t>(original)]);
+                cut.original.push_back(original);
+            }
+            face.push_back(it->second);
+        }
+        cut.mesh.faces.push_back(std::move(face));
+    }
+    return cut;
+}
+
+} // namespace devsurf::model::pattern

@@ -1,0 +1,34 @@
+#pragma once
+
+// Where a surface is cut open so that every connected part develops into one flat piece.
+
+#include "model/composite_surface.h"
+#include "model/sampled_mesh.h"
+
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace devsurf::model::pattern {
+
+// The coarse edges to cut along so that every connected part of the surface becomes a
+// topological disk: the edges not crossed by a spanning tree of the patches (built across
+// S-edges first, so the cut runs along rulings where it can), pruned of every edge that ends at
+// an interior vertex. Empty for a surface that is a disk already; one chain of rulings from
+// boundary to boundary for a closed cylinder or an annulus.
+std::set<EdgeId> chooseCutEdges(const CompositeSurface& surface);
+
+// The sampled segments {min, max} of mesh vertices that lie on the given coarse edges.
+std::set<std::pair<int, int>> cutSegments(const CompositeSurface& surface, const SampledMesh& mesh,
+                                          const std::set<EdgeId>& edges);
+
+// The mesh with every vertex on a cut segment duplicated once per side: faces are kept in the
+// same order, each corner renumbered; the fans of faces around a vertex that are joined across
+// uncut edges share one copy.
+struct CutMesh {
+    SampledMesh mesh;          // vertices, faces and faceOrigin only
+    std::vector<int> original; // for every vertex of the cut mesh, the vertex it copies
+};
+CutMesh splitAlong(const SampledMesh& mesh, const std::set<std::pair<int, int>>& segments);
+
+} // namespace devsurf::model::pattern

@@ -1,0 +1,47 @@
+#pragma once
+
+// Small plane-geometry helpers shared by the pattern's steps (pieces, layout, overlaps, seams).
+
+#include "model/pattern/cutting_pattern.h"
+
+#include <vector>
+
+namespace devsurf::model::pattern {
+
+inline double cross2(const Vec2& a, const Vec2& b) {
+    return a.x * b.y - a.y * b.x;
+}
+inline double dot2(const Vec2& a, const Vec2& b) {
+    return a.x * b.x + a.y * b.y;
+}
+
+// Signed area of a closed polygon (positive when counter-clockwise).
+double signedArea(const std::vector<Vec2>& polygon);
+
+// Whether p lies inside the closed polygon (even-odd rule).
+bool pointInPolygon(const Vec2& p, const std::vector<Vec2>& polygon);
+
+// Whether the closed segments [a,b] and [c,d] have a point in common.
+bool segmentsIntersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d);
+
+// Distance from p to the segment [a,b].
+double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b);
+
+// Convex hull, counter-clockwise, without collinear points.
+std::vector<Vec2> convexHull(std::vector<Vec2> points);
+
+// The rigid motion p ↦ R(angle)·p + shift.
+struct Placement {
+    double angle = 0.0; // radians, counter-clockwise
+    Vec2 shift;
+    Vec2 apply(const Vec2& p) const;
+};
+
+// Moves everything a piece holds (outline, holes, paths, labels, mesh, edges, vertices,
+// rulings) by the motion; labels turn with it.
+void transformPiece(PatternPiece& piece, const Placement& placement);
+
+// Bounding box {min, max} of a piece's outline and holes.
+std::pair<Vec2, Vec2> pieceBounds(const PatternPiece& piece);
+
+} // namespace devsurf::model::pattern

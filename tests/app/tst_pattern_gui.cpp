@@ -1,0 +1,124 @@
+#include "../io/dxf_check.h"
+#include "main_window.h"
+#include "model/examples.h"
+#include "model/project.h"
+#include "pattern_export_dialog.h"
+#include "reactions/pattern_reactions.h"
+#include "test_registry.h"
+#include "workspace.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QFile>
+#include <QFileInfo>
+#include <QLabel>
+#include <QPrinter>
+#include <QProcess>
+#include <QSettings>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace devsurf;
+
+namespace {
+
+int pdfPages(const QString& file) {
+    QProcess process;
+    process.start(QStringLiteral("pdfinfo"), {file});
+    process.waitForFinished(60000);
+    const QString out = QString::fromUtf8(process.readAllStandardOutput());
+    for (const QString& line : out.split(QLatin1Char('\n'))) {
+        if (line.startsWith(QLatin1String("Pages:"))) {
+            return line.mid(6).trimmed().toInt();
+        }
+    }
+    return 0;
+}
+
+app::PatternSettings bigSheet() {
+    app::PatternSettings settings;
+    settings.sheetPreset = int(app::sheetPresets().size()) - 1; // custom
+    settings.pattern.sheetSize = {2000.0, 2000.0};
+    return settings;
+}
+
+} // namespace
+
+// The export dialog and the print path, driven without modal dialogs.
+class TstPatternGui : public QObject {
+    Q_OBJECT
+    QTemporaryDir m_dir;
+
+private slots:
+    void init() { QSettings().clear(); }
+
+    void dialogExportsEveryFormat() {
+        const model::Project project = model::makeExample("cylinder");
+        app::PatternExportDialog dialog(project, QStringLiteral("cylinder"), m_dir.path());
+        dialog.setSettings(bigSheet());
+        dialog.rebuildPattern();
+        QCOMPARE(dialog.reportTable()->rowCount(), int(dialog.pattern().pieces.size()));
+        QCOMPARE(dialog.reportTable()->item(0, 5)->text(), QStringLiteral("yes"));
+        QVERIFY(dialog.warningLabel()->isHidden());
+        for (const char* format : {"dxf", "svg", "pdf", "fold"}) {
+            dialog.formatBox()->setCurrentIndex(int(*io::patternFormatFromName(format)));
+            const QString file = m_dir.filePath(QStringLiteral("dialog.") + format);
+            QVERIFY2(dialog.exportTo(file), format);
+            QVERIFY(QFileInfo(file).size() > 500);
+        }
+        // What the dialog wrote is the pattern it showed, read back by ezdxf.
+        test::verifyDxf(test::readBackDxf(m_dir.filePath("dialog.dxf"), dialog.pattern(), 0.01,
+                                          [](int) { return 0.0; }),
+                        "AC1015", "LWPOLYLINE", 0.01);
+        QVERIFY(pdfPages(m_dir.filePath("dialog.pdf")) >= 3);
+        // The options are remembered for the next export and for printing.
+        QCOMPARE(app::PatternSettings::load().format, io::PatternFormat::Fold);
+        QCOMPARE(app::PatternSettings::load().pattern.sheetSize.x, 2000.0);
+    }
+
+    void dialogWarnsAboutProblemsBeforeWriting() {
+        const model::Project project = model::makeExample("annulus");
+        app::PatternExportDialog dialog(project, QStringLiteral("annulus"), m_dir.path());
+        dialog.show(); // the warning's visibility is only meaningful on a shown dialog
+        app::PatternSettings settings; // the 600 × 400 mm laser bed: the annulus does not fit
+        dialog.setSettings(settings);
+        dialog.rebuildPattern();
+        QVERIFY(dialog.warningLabel()->isVisible());
+        QVERIFY(dialog.warningLabel()->text().contains(QStringLiteral("does not fit")));
+        QCOMPARE(dialog.reportTable()->item(0, 5)->text(), QStringLiteral("no"));
+    }
+
+    void fileMenuHasExportAndPrint() {
+        app::MainWindow window;
+        QAction* print = window.action(QStringLiteral("actionPrint"));
+        QVERIFY(print != nullptr);
+        QCOMPARE(print->shortcut(), QKeySequence(QKeySequence::Print));
+        QVERIFY(window.action(QStringLiteral("actionPrintPreview")) != nullptr);
+        QVERIFY(window.action(QStringLiteral("actionExportPattern")) != nullptr);
+        window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
+        QVERIFY(print->isEnabled());
+        // Ctrl+P is print only.
+        for (QAction* action : window.findChildren<QAction*>()) {
+            if (action != print && !action->shortcut().isEmpty()) {
+                QVERIFY2(action->shortcut() != print->shortcut(), qPrintable(action->objectName()));
+            }
+        }
+    }
+
+    void printingPaintsThroughQPrinter() {
+        const model::CuttingPattern pattern =
+            model::buildCuttingPattern(model::makeExample("annulus"), bigSheet().pattern);
+        const QString file = m_dir.filePath(QStringLiteral("printed.pdf"));
+        QPrinter printer(QPrinter::HighResolution);
+        printer.setOutputFormat(QPrinter::PdfFormat);
+        printer.setOutputFileName(file);
+        printer.setPageSize(QPageSize(QPageSize::A4));
+        QVERIFY(app::printCuttingPattern(printer, pattern, nullptr));
+        // The 500 mm annulus on A4: report, overview and at least 3 × 3 tiles.
+        QVERIFY(pdfPages(file) >= 11);
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstPatternGui);
+#include "tst_pattern_gui.moc"
