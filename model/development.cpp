@@ -195,6 +195,27 @@ Development unfoldSampledMesh(const SampledMesh& mesh) {
     const double tolerance = 1e-9 * std::max(scale, 1.0);
     if (largest <= tolerance) {
         dev.period.reset();
+    } else {
+        // A period is a translation that every closing mismatch agrees with (a cylinder cut
+        // open). A surface that is not exactly developable (a flat design with one vertex
+        // lifted) closes up with mismatches that vary along the seam: that is no period, and
+        // reading the development modulo it would fold the drawing onto a thin band.
+        const double slack = std::max(tolerance, 0.01 * largest);
+        for (const auto& [t1, t2] : nonTreeAdjacencies) {
+            for (int k = 0; k < 3 && dev.period; ++k) {
+                for (int j = 0; j < 3 && dev.period; ++j) {
+                    if (triangles[t1].v[k] != triangles[t2].v[j]) {
+                        continue;
+                    }
+                    const Vec2 d = triangles[t2].corner[j] - triangles[t1].corner[k];
+                    const double off =
+                        std::min({d.norm(), (d - *dev.period).norm(), (d + *dev.period).norm()});
+                    if (off > slack) {
+                        dev.period.reset();
+                    }
+                }
+            }
+        }
     }
     for (const Triangle& tri : triangles) {
         for (int k = 0; k < 3; ++k) {

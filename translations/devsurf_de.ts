@@ -1,9 +1,10 @@
-<?xml version='1.0' encoding='utf-8'?>
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
     <name>ApplySurfaceCommand</name>
     <message>
-        <location filename="../model/document/commands/apply_surface_command.cpp" line="20" />
+        <location filename="../model/document/commands/apply_surface_command.cpp" line="20"/>
         <source>The new shape cannot be applied: %1</source>
         <translation>Die neue Form kann nicht übernommen werden: %1</translation>
     </message>
@@ -11,27 +12,27 @@
 <context>
     <name>FaceType</name>
     <message>
-        <location filename="../app/gui/face_type_text.cpp" line="10" />
+        <location filename="../app/gui/face_type_text.cpp" line="10"/>
         <source>strip (SRSR)</source>
         <translation>Streifen (SRSR)</translation>
     </message>
     <message>
-        <location filename="../app/gui/face_type_text.cpp" line="12" />
+        <location filename="../app/gui/face_type_text.cpp" line="12"/>
         <source>pointed strip (SRS)</source>
         <translation>spitzer Streifen (SRS)</translation>
     </message>
     <message>
-        <location filename="../app/gui/face_type_text.cpp" line="14" />
+        <location filename="../app/gui/face_type_text.cpp" line="14"/>
         <source>cone (SRR)</source>
         <translation>Kegel (SRR)</translation>
     </message>
     <message>
-        <location filename="../app/gui/face_type_text.cpp" line="16" />
-        <source>planar face</source>
-        <translation>ebene Fläche</translation>
+        <location filename="../app/gui/face_type_text.cpp" line="16"/>
+        <source>planar patch</source>
+        <translation>ebenes Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/face_type_text.cpp" line="20" />
+        <location filename="../app/gui/face_type_text.cpp" line="20"/>
         <source>invalid labelling</source>
         <translation>ungültige Beschriftung</translation>
     </message>
@@ -39,40 +40,153 @@
 <context>
     <name>MoveVerticesCommand</name>
     <message>
-        <location filename="../model/document/commands/move_vertices_command.cpp" line="20" />
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="20"/>
         <source>The vertices cannot be moved by an offset that is not a finite number.</source>
         <translation>Die Ecken können nicht um einen Versatz verschoben werden, der keine endliche Zahl ist.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/document/commands/move_vertices_command.cpp" line="23" />
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="23"/>
         <source>Move %n vertices</source>
-        <translation><numerusform>%n Ecke verschieben</numerusform><numerusform>%n Ecken verschieben</numerusform></translation>
+        <translation>
+            <numerusform>%n Ecke verschieben</numerusform>
+            <numerusform>%n Ecken verschieben</numerusform>
+        </translation>
     </message>
     <message>
-        <location filename="../model/document/commands/move_vertices_command.cpp" line="37" />
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="37"/>
         <source>The vertices cannot be rotated: %1</source>
         <translation>Die Ecken können nicht gedreht werden: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/document/commands/move_vertices_command.cpp" line="39" />
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="39"/>
         <source>Rotate %n vertices</source>
-        <translation><numerusform>%n Ecke drehen</numerusform><numerusform>%n Ecken drehen</numerusform></translation>
+        <translation>
+            <numerusform>%n Ecke drehen</numerusform>
+            <numerusform>%n Ecken drehen</numerusform>
+        </translation>
     </message>
     <message>
-        <location filename="../model/document/commands/move_vertices_command.cpp" line="47" />
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="47"/>
         <source>The vertices cannot be moved</source>
         <translation>Die Ecken können nicht verschoben werden</translation>
     </message>
 </context>
 <context>
+    <name>PinVerticesCommand</name>
+    <message>
+        <location filename="../model/document/commands/pin_vertices_command.cpp" line="9"/>
+        <source>Select at least one vertex to pin.</source>
+        <translation>Wählen Sie mindestens eine Ecke zum Festhalten aus.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/pin_vertices_command.cpp" line="10"/>
+        <source>Select at least one vertex to unpin.</source>
+        <translation>Wählen Sie mindestens eine Ecke zum Lösen aus.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/pin_vertices_command.cpp" line="20"/>
+        <source>Vertex %1 does not exist.</source>
+        <translation>Ecke %1 gibt es nicht.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/pin_vertices_command.cpp" line="25"/>
+        <source>The selected vertices are already pinned.</source>
+        <translation>Die ausgewählten Ecken sind bereits festgehalten.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/pin_vertices_command.cpp" line="26"/>
+        <source>The selected vertices are not pinned.</source>
+        <translation>Die ausgewählten Ecken sind nicht festgehalten.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/pin_vertices_command.cpp" line="29"/>
+        <source>Pin %n vertices</source>
+        <translation>
+            <numerusform>%n Ecke festhalten</numerusform>
+            <numerusform>%n Ecken festhalten</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/pin_vertices_command.cpp" line="29"/>
+        <source>Unpin %n vertices</source>
+        <translation>
+            <numerusform>%n Ecke lösen</numerusform>
+            <numerusform>%n Ecken lösen</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="33"/>
+        <source>Laser bed 600 × 400 mm</source>
+        <translation>Laserbett 600 × 400 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="34"/>
+        <source>A4 (210 × 297 mm)</source>
+        <translation>A4 (210 × 297 mm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="35"/>
+        <source>A3 (297 × 420 mm)</source>
+        <translation>A3 (297 × 420 mm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="36"/>
+        <source>Letter (8.5 × 11 in)</source>
+        <translation>Letter (8,5 × 11 in)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
+        <source>Custom</source>
+        <translation>Benutzerdefiniert</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="34"/>
+        <source>Nothing to print</source>
+        <translation>Nichts zu drucken</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="36"/>
+        <source>The design has no surface to develop.</source>
+        <translation>Der Entwurf hat keine Fläche, die abgewickelt werden kann.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="52"/>
+        <source>Printing the cutting pattern…</source>
+        <translation>Der Schnittmusterplan wird gedruckt…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="52"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="140"/>
+        <source>Export &amp;Cutting Pattern…</source>
+        <translation>&amp;Schnittmuster exportieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="142"/>
+        <source>&amp;Print…</source>
+        <translation>&amp;Drucken…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="145"/>
+        <source>Print Pre&amp;view…</source>
+        <translation>Druck&amp;vorschau…</translation>
+    </message>
+</context>
+<context>
     <name>RefineSplineClassCommand</name>
     <message>
-        <location filename="../model/document/commands/refine_spline_class_command.cpp" line="9" />
+        <location filename="../model/document/commands/refine_spline_class_command.cpp" line="9"/>
         <source>Refine curves</source>
         <translation>Kurven verfeinern</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/refine_spline_class_command.cpp" line="11" />
+        <location filename="../model/document/commands/refine_spline_class_command.cpp" line="11"/>
         <source>The curves of edge %1 cannot be refined</source>
         <translation>Die Kurven der Kante %1 können nicht verfeinert werden</translation>
     </message>
@@ -80,47 +194,50 @@
 <context>
     <name>RelabelEdgeCommand</name>
     <message>
-        <location filename="../model/document/commands/relabel_edge_command.cpp" line="16" />
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="16"/>
         <source>Select at least one edge to relabel.</source>
         <translation>Wählen Sie mindestens eine Kante zum Umbenennen aus.</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/relabel_edge_command.cpp" line="23" />
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="23"/>
         <source>Make edge %1 a spline curve</source>
         <translation>Kante %1 zur Splinekurve machen</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/relabel_edge_command.cpp" line="24" />
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="24"/>
         <source>Make edge %1 a ruling</source>
         <translation>Kante %1 zur Erzeugenden machen</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/relabel_edge_command.cpp" line="25" />
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="25"/>
         <source>Edge %1 cannot become a spline curve</source>
         <translation>Kante %1 kann keine Splinekurve werden</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/relabel_edge_command.cpp" line="26" />
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="26"/>
         <source>Edge %1 cannot become a ruling</source>
         <translation>Kante %1 kann keine Erzeugende werden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/document/commands/relabel_edge_command.cpp" line="28" />
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="28"/>
         <source>Relabel %n edges</source>
-        <translation><numerusform>%n Kante umbenennen</numerusform><numerusform>%n Kanten umbenennen</numerusform></translation>
+        <translation>
+            <numerusform>%n Kante umbenennen</numerusform>
+            <numerusform>%n Kanten umbenennen</numerusform>
+        </translation>
     </message>
     <message>
-        <location filename="../model/document/commands/relabel_edge_command.cpp" line="29" />
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="29"/>
         <source>The edges cannot be relabelled</source>
         <translation>Die Kanten können nicht umbenannt werden</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/relabel_edge_command.cpp" line="39" />
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="39"/>
         <source>Edge %1 is already a spline curve.</source>
         <translation>Kante %1 ist bereits eine Splinekurve.</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/relabel_edge_command.cpp" line="40" />
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="40"/>
         <source>Edge %1 is already a ruling.</source>
         <translation>Kante %1 ist bereits eine Erzeugende.</translation>
     </message>
@@ -128,46 +245,149 @@
 <context>
     <name>SplitAtRulingCommand</name>
     <message>
-        <location filename="../model/document/commands/split_at_ruling_command.cpp" line="12" />
-        <source>Add a ruling to face %1</source>
-        <translation>Erzeugende in Fläche %1 einfügen</translation>
+        <location filename="../model/document/commands/split_at_ruling_command.cpp" line="12"/>
+        <source>Add a ruling across patch %1</source>
+        <translation>Erzeugende quer über Flächenstück %1 einfügen</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/split_at_ruling_command.cpp" line="14" />
-        <source>No ruling can be added to face %1</source>
-        <translation>In Fläche %1 kann keine Erzeugende eingefügt werden</translation>
+        <location filename="../model/document/commands/split_at_ruling_command.cpp" line="14"/>
+        <source>No ruling can be added across patch %1</source>
+        <translation>Über Flächenstück %1 kann keine Erzeugende eingefügt werden</translation>
     </message>
 </context>
 <context>
     <name>SubdivideStripCommand</name>
     <message>
-        <location filename="../model/document/commands/subdivide_strip_command.cpp" line="9" />
-        <source>Subdivide strip %1</source>
-        <translation>Streifen %1 unterteilen</translation>
+        <location filename="../model/document/commands/subdivide_strip_command.cpp" line="9"/>
+        <source>Add a crease across patch %1</source>
+        <translation>Falz quer über Flächenstück %1 einfügen</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/subdivide_strip_command.cpp" line="11" />
-        <source>Strip %1 cannot be subdivided</source>
-        <translation>Streifen %1 kann nicht unterteilt werden</translation>
+        <location filename="../model/document/commands/subdivide_strip_command.cpp" line="11"/>
+        <source>No crease can be added across patch %1</source>
+        <translation>Über Flächenstück %1 kann kein Falz eingefügt werden</translation>
     </message>
 </context>
 <context>
     <name>SurfaceEditCommand</name>
     <message>
-        <location filename="../model/document/commands/surface_edit_command.cpp" line="38" />
+        <location filename="../model/document/commands/surface_edit_command.cpp" line="38"/>
         <source>There is no surface number %1 in the design.</source>
         <translation>Der Entwurf hat keine Fläche Nummer %1.</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/surface_edit_command.cpp" line="56" />
+        <location filename="../model/document/commands/surface_edit_command.cpp" line="56"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
 </context>
 <context>
+    <name>devsurf::app::CameraActions</name>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="23"/>
+        <source>&amp;Reset View</source>
+        <translation>Ansicht &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="26"/>
+        <source>Reset View (Home): the starting direction, the whole design in view</source>
+        <translation>Ansicht zurücksetzen (Pos1): die Anfangsrichtung, der ganze Entwurf im Bild</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="31"/>
+        <source>&amp;Standard Views</source>
+        <translation>&amp;Standardansichten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="42"/>
+        <source>&amp;Isometric</source>
+        <translation>&amp;Isometrisch</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="43"/>
+        <source>Isometric view (0): from the front right and above</source>
+        <translation>Isometrische Ansicht (0): von vorn rechts oben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="45"/>
+        <source>&amp;Front</source>
+        <translation>&amp;Vorne</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="45"/>
+        <source>Front view (1): looking along +y</source>
+        <translation>Vorderansicht (1): Blick entlang +y</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="47"/>
+        <source>&amp;Top</source>
+        <translation>&amp;Oben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="47"/>
+        <source>Top view (2): looking down along −z</source>
+        <translation>Draufsicht (2): Blick nach unten entlang −z</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="49"/>
+        <source>&amp;Right</source>
+        <translation>&amp;Rechts</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="49"/>
+        <source>Right view (3): looking along −x</source>
+        <translation>Ansicht von rechts (3): Blick entlang −x</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="51"/>
+        <source>R&amp;ear</source>
+        <translation>&amp;Hinten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="51"/>
+        <source>Rear view (4): looking along −y</source>
+        <translation>Rückansicht (4): Blick entlang −y</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="53"/>
+        <source>&amp;Bottom</source>
+        <translation>&amp;Unten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="53"/>
+        <source>Bottom view (5): looking up along +z</source>
+        <translation>Untersicht (5): Blick nach oben entlang +z</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="55"/>
+        <source>&amp;Left</source>
+        <translation>&amp;Links</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="55"/>
+        <source>Left view (6): looking along +x</source>
+        <translation>Ansicht von links (6): Blick entlang +x</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="79"/>
+        <source>Patch &amp;Numbers</source>
+        <translation>&amp;Nummern der Flächenstücke</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="81"/>
+        <source>Ctrl+Shift+N</source>
+        <translation>Ctrl+Shift+N</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="82"/>
+        <source>Patch Numbers (Ctrl+Shift+N): write each patch&apos;s number on it</source>
+        <translation>Nummern der Flächenstücke (Strg+Umschalt+N): jedes Flächenstück mit seiner Nummer beschriften</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::DeleteSelectionReaction</name>
     <message>
-        <location filename="../app/gui/reactions/edit_reactions.cpp" line="10" />
+        <location filename="../app/gui/reactions/edit_reactions.cpp" line="10"/>
         <source>Deleting parts of a surface is not available yet: relabel an edge (Ctrl+L) or undo (Ctrl+Z) instead.</source>
         <translation>Teile einer Fläche zu löschen ist noch nicht möglich: Benennen Sie stattdessen eine Kante um (Strg+L) oder machen Sie rückgängig (Strg+Z).</translation>
     </message>
@@ -175,37 +395,37 @@
 <context>
     <name>devsurf::app::ExampleDialog</name>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="19" />
+        <location filename="../app/gui/example_dialog.cpp" line="19"/>
         <source>A flat rectangle of size × size strips.</source>
         <translation>Ein ebenes Rechteck aus Größe × Größe Streifen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="22" />
+        <location filename="../app/gui/example_dialog.cpp" line="22"/>
         <source>A flat annulus of size rings cut by radial rulings.</source>
         <translation>Ein ebener Kreisring aus Größe Ringen, geteilt durch radiale Erzeugende.</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="25" />
+        <location filename="../app/gui/example_dialog.cpp" line="25"/>
         <source>A closed cylinder of strips, size sectors around.</source>
         <translation>Ein geschlossener Zylinder aus Streifen, Größe Sektoren im Umfang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="27" />
-        <source>A strip, a pointed strip, a cone and a planar face; size intervals per curve.</source>
-        <translation>Ein Streifen, ein spitzer Streifen, ein Kegel und eine ebene Fläche; Größe Intervalle je Kurve.</translation>
+        <location filename="../app/gui/example_dialog.cpp" line="27"/>
+        <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
+        <translation>Ein Streifen, ein spitzer Streifen, ein Kegel und ein ebenes Flächenstück; Größe Intervalle je Kurve.</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="36" />
+        <location filename="../app/gui/example_dialog.cpp" line="36"/>
         <source>New from Example</source>
         <translation>Neu aus Beispiel</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="42" />
+        <location filename="../app/gui/example_dialog.cpp" line="42"/>
         <source>&amp;Example:</source>
         <translation>&amp;Beispiel:</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="43" />
+        <location filename="../app/gui/example_dialog.cpp" line="43"/>
         <source>&amp;Size:</source>
         <translation>&amp;Größe:</translation>
     </message>
@@ -213,329 +433,408 @@
 <context>
     <name>devsurf::app::ExportJsonReaction</name>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="80" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="109"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="82" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="94"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="111"/>
         <source>Export Interchange JSON</source>
         <translation>Austausch-JSON exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="84" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="95"/>
+        <source>“%1” ends in .%2, but this command writes interchange JSON. Export to “%3” instead?</source>
+        <translation>„%1“ endet auf .%2, dieser Befehl schreibt aber Austausch-JSON. Stattdessen nach „%3“ exportieren?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="100"/>
+        <source>Export as .json</source>
+        <translation>Als .json exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="113"/>
         <source>Interchange JSON (*.json)</source>
         <translation>Austausch-JSON (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="92" />
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="95" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="122"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="125"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="90" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="120"/>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="96" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="126"/>
         <source>The design cannot be exported: %1</source>
         <translation>Der Entwurf kann nicht exportiert werden: %1</translation>
     </message>
 </context>
 <context>
+    <name>devsurf::app::ExportPatternReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="73"/>
+        <source>untitled</source>
+        <translation>unbenannt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="77"/>
+        <source>Exported the cutting pattern</source>
+        <translation>Schnittmuster exportiert</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="101" />
+        <location filename="../app/gui/main_window.cpp" line="106"/>
         <source>Patches</source>
         <translation>Flächenstücke</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="107" />
+        <location filename="../app/gui/main_window.cpp" line="112"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="114" />
+        <location filename="../app/gui/main_window.cpp" line="119"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="119" />
+        <location filename="../app/gui/main_window.cpp" line="126"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="121" />
+        <location filename="../app/gui/main_window.cpp" line="128"/>
         <source>&amp;New from Example…</source>
         <translation>&amp;Neu aus Beispiel…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="123" />
+        <location filename="../app/gui/main_window.cpp" line="130"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="125" />
+        <location filename="../app/gui/main_window.cpp" line="132"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="129" />
+        <location filename="../app/gui/main_window.cpp" line="136"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="132" />
+        <location filename="../app/gui/main_window.cpp" line="139"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="136" />
+        <location filename="../app/gui/main_window.cpp" line="143"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>Austausch-JSON &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="136" />
+        <location filename="../app/gui/main_window.cpp" line="143"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="139" />
+        <location filename="../app/gui/main_window.cpp" line="147"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="143" />
+        <location filename="../app/gui/main_window.cpp" line="151"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="146" />
+        <location filename="../app/gui/main_window.cpp" line="154"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="149" />
+        <location filename="../app/gui/main_window.cpp" line="157"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="156" />
+        <location filename="../app/gui/main_window.cpp" line="164"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="158" />
+        <location filename="../app/gui/main_window.cpp" line="166"/>
         <source>Select &amp;None</source>
         <translation>Auswahl &amp;aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="159" />
+        <location filename="../app/gui/main_window.cpp" line="167"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="163" />
+        <location filename="../app/gui/main_window.cpp" line="171"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="165" />
+        <location filename="../app/gui/main_window.cpp" line="173"/>
         <source>&amp;3D View</source>
         <translation>&amp;3D-Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="165" />
+        <location filename="../app/gui/main_window.cpp" line="173"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="167" />
+        <location filename="../app/gui/main_window.cpp" line="175"/>
         <source>&amp;Development View</source>
         <translation>&amp;Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="167" />
+        <location filename="../app/gui/main_window.cpp" line="175"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="168" />
+        <location filename="../app/gui/main_window.cpp" line="176"/>
         <source>3D &amp;and Development</source>
         <translation>3D &amp;und Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="169" />
+        <location filename="../app/gui/main_window.cpp" line="177"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="173" />
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>&amp;Control Polygons</source>
         <translation>&amp;Kontrollpolygone</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="173" />
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="174" />
+        <location filename="../app/gui/main_window.cpp" line="182"/>
         <source>&amp;Vertices</source>
         <translation>&amp;Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175" />
+        <location filename="../app/gui/main_window.cpp" line="183"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="178" />
+        <location filename="../app/gui/main_window.cpp" line="186"/>
         <source>&amp;Fit All</source>
         <translation>&amp;Alles zeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="178" />
+        <location filename="../app/gui/main_window.cpp" line="186"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="184" />
+        <location filename="../app/gui/main_window.cpp" line="192"/>
+        <source>Reset &amp;Layout</source>
+        <translation>&amp;Layout zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="197"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="186" />
+        <location filename="../app/gui/main_window.cpp" line="200"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>Kante &amp;umbenennen (R ↔ S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="186" />
+        <location filename="../app/gui/main_window.cpp" line="200"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="189" />
-        <source>&amp;Subdivide Strip with a Crease…</source>
-        <translation>Streifen mit Falz &amp;unterteilen…</translation>
+        <location filename="../app/gui/main_window.cpp" line="202"/>
+        <source>Add &amp;Crease…</source>
+        <translation>&amp;Falz einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="190" />
+        <location filename="../app/gui/main_window.cpp" line="205"/>
+        <source>Add R&amp;uling…</source>
+        <translation>&amp;Erzeugende einfügen…</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/main_window.cpp" line="318"/>
+        <source>%n surface(s)</source>
+        <translation>
+            <numerusform>%n Fläche</numerusform>
+            <numerusform>%n Flächen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/main_window.cpp" line="319"/>
+        <source>%n patch(es)</source>
+        <translation>
+            <numerusform>%n Flächenstück</numerusform>
+            <numerusform>%n Flächenstücke</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/main_window.cpp" line="320"/>
+        <source>%n control point(s)</source>
+        <translation>
+            <numerusform>%n Kontrollpunkt</numerusform>
+            <numerusform>%n Kontrollpunkte</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/main_window.cpp" line="321"/>
+        <source>%n selected</source>
+        <translation>
+            <numerusform>%n ausgewählt</numerusform>
+            <numerusform>%n ausgewählt</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="203"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="193" />
-        <source>Split at &amp;Ruling…</source>
-        <translation>An &amp;Erzeugender teilen…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window.cpp" line="193" />
+        <location filename="../app/gui/main_window.cpp" line="206"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="195" />
+        <location filename="../app/gui/main_window.cpp" line="208"/>
         <source>Re&amp;fine Curves</source>
         <translation>Kurven &amp;verfeinern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="196" />
+        <location filename="../app/gui/main_window.cpp" line="209"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200" />
+        <location filename="../app/gui/main_window.cpp" line="213"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>Ecken &amp;verschieben oder drehen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200" />
+        <location filename="../app/gui/main_window.cpp" line="213"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="204" />
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="205" />
+        <location filename="../app/gui/main_window.cpp" line="218"/>
+        <source>&amp;User Manual</source>
+        <translation>&amp;Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>&amp;Tastenkürzel</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>&amp;About DevSurf</source>
         <translation>&amp;Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207" />
+        <location filename="../app/gui/main_window.cpp" line="233"/>
         <source>About DevSurf</source>
         <translation>Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="208" />
+        <location filename="../app/gui/main_window.cpp" line="234"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen mit Spline-Torsen (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="236" />
+        <location filename="../app/gui/main_window.cpp" line="281"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="303"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="237" />
+        <location filename="../app/gui/main_window.cpp" line="304"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
+</context>
+<context>
+    <name>devsurf::app::ManualWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="250" />
-        <source>%1 surfaces · %2 patches · %3 control points · %4 selected</source>
-        <translation>%1 Flächen · %2 Flächenstücke · %3 Kontrollpunkte · %4 ausgewählt</translation>
+        <location filename="../app/gui/help_dialogs.cpp" line="56"/>
+        <source>DevSurf User Manual</source>
+        <translation>DevSurf-Benutzerhandbuch</translation>
     </message>
 </context>
 <context>
     <name>devsurf::app::MoveDialog</name>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="37" />
+        <location filename="../app/gui/move_dialog.cpp" line="37"/>
         <source>&amp;Translate</source>
         <translation>&amp;Verschieben</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="38" />
+        <location filename="../app/gui/move_dialog.cpp" line="38"/>
         <source>&amp;Rotate</source>
         <translation>&amp;Drehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="39" />
+        <location filename="../app/gui/move_dialog.cpp" line="39"/>
         <source>Move or Rotate Vertices</source>
         <translation>Ecken verschieben oder drehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="42" />
+        <location filename="../app/gui/move_dialog.cpp" line="42"/>
         <source>Translation</source>
         <translation>Verschiebung</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="44" />
+        <location filename="../app/gui/move_dialog.cpp" line="44"/>
         <source>Offset (x, y, z):</source>
         <translation>Versatz (x, y, z):</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="47" />
+        <location filename="../app/gui/move_dialog.cpp" line="47"/>
         <source>Rotation</source>
         <translation>Drehung</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="49" />
+        <location filename="../app/gui/move_dialog.cpp" line="49"/>
         <source>Axis through (x, y, z):</source>
         <translation>Achse durch (x, y, z):</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="51" />
+        <location filename="../app/gui/move_dialog.cpp" line="51"/>
         <source>Axis direction:</source>
         <translation>Achsrichtung:</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="55" />
+        <location filename="../app/gui/move_dialog.cpp" line="55"/>
         <source>Angle:</source>
         <translation>Winkel:</translation>
     </message>
@@ -543,17 +842,17 @@
 <context>
     <name>devsurf::app::MoveVerticesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="243" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="312"/>
         <source>Translate or rotate the selected vertices with their neighbouring control points. Select vertices of one surface first.</source>
         <translation>Verschiebt oder dreht die ausgewählten Ecken samt benachbarten Kontrollpunkten. Wählen Sie zuerst Ecken einer Fläche aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="269" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="338"/>
         <source>Cannot rotate</source>
         <translation>Drehen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="273" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="342"/>
         <source>Cannot move</source>
         <translation>Verschieben nicht möglich</translation>
     </message>
@@ -561,12 +860,12 @@
 <context>
     <name>devsurf::app::OpenReaction</name>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="30" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="32"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="32" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="34"/>
         <source>DevSurf projects (*.devsurf)</source>
         <translation>DevSurf-Projekte (*.devsurf)</translation>
     </message>
@@ -574,12 +873,12 @@
 <context>
     <name>devsurf::app::OpenRecentReaction</name>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="60" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="62"/>
         <source>No recent files</source>
         <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="64" />
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="66"/>
         <source>Clear Recent Files</source>
         <translation>Liste leeren</translation>
     </message>
@@ -587,90 +886,437 @@
 <context>
     <name>devsurf::app::PatchTreeModel</name>
     <message numerus="yes">
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="120" />
-        <source>%n patches</source>
-        <translation><numerusform>%n Flächenstück</numerusform><numerusform>%n Flächenstücke</numerusform></translation>
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="120"/>
+        <source>%n patch(es)</source>
+        <translation>
+            <numerusform>%n Flächenstück</numerusform>
+            <numerusform>%n Flächenstücke</numerusform>
+        </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="129" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="129"/>
         <source>Patch %1</source>
         <translation>Flächenstück %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="133" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="133"/>
         <source>invalid labelling %1</source>
         <translation>ungültige Beschriftung %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="142" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="142"/>
         <source>Edge labels along the patch: %1</source>
         <translation>Kantenbeschriftung entlang des Flächenstücks: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="152" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="152"/>
         <source>Patch</source>
         <translation>Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/patch_tree_model.cpp" line="152" />
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="152"/>
         <source>Type</source>
         <translation>Typ</translation>
     </message>
 </context>
 <context>
+    <name>devsurf::app::PatternExportDialog</name>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="82"/>
+        <source>DXF drawing (*.dxf)</source>
+        <translation>DXF-Zeichnung (*.dxf)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="84"/>
+        <source>SVG image (*.svg)</source>
+        <translation>SVG-Bild (*.svg)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="86"/>
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF-Dokument (*.pdf)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="88"/>
+        <source>FOLD crease pattern (*.fold)</source>
+        <translation>FOLD-Faltmuster (*.fold)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="96"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="330"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="339"/>
+        <source>Export Cutting Pattern</source>
+        <translation>Schnittmuster exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
+        <source>DXF (laser and plotter cutters)</source>
+        <translation>DXF (Laser- und Plotterschneider)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
+        <source>SVG (vinyl and paper cutters)</source>
+        <translation>SVG (Folien- und Papierschneider)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="101"/>
+        <source>PDF (print at 1:1, tiled)</source>
+        <translation>PDF (Druck 1:1, gekachelt)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="101"/>
+        <source>FOLD (origami simulators)</source>
+        <translation>FOLD (Origami-Simulatoren)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="102"/>
+        <source>&amp;Format:</source>
+        <translation>&amp;Format:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <source>&amp;Polylines</source>
+        <translation>&amp;Polylinien</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
+        <source>S&amp;plines</source>
+        <translation>S&amp;plines</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="112"/>
+        <source>DXF &amp;R12 (for old cutter software)</source>
+        <translation>DXF &amp;R12 (für alte Schneidsoftware)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="114"/>
+        <source>Curves:</source>
+        <translation>Kurven:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="120"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="138"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="154"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="121"/>
+        <source>&amp;Tolerance:</source>
+        <translation>&amp;Toleranz:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <source>Cut</source>
+        <translation>Schnitt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <source>Mountain</source>
+        <translation>Berg</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <source>Valley</source>
+        <translation>Tal</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <source>Crease</source>
+        <translation>Falz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <source>Rulings (score)</source>
+        <translation>Erzeugende (ritzen)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <source>Seam</source>
+        <translation>Naht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
+        <source>Labels</source>
+        <translation>Beschriftungen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="134"/>
+        <source>Layers:</source>
+        <translation>Ebenen:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="139"/>
+        <source>as &amp;glue tabs</source>
+        <translation>als &amp;Klebelaschen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="143"/>
+        <source>&amp;Seam allowance:</source>
+        <translation>&amp;Nahtzugabe:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="161"/>
+        <source>S&amp;heet:</source>
+        <translation>&amp;Bogen:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <source>A4</source>
+        <translation>A4</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <source>A3</source>
+        <translation>A3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <source>Letter</source>
+        <translation>Letter</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="165"/>
+        <source>P&amp;aper (PDF):</source>
+        <translation>P&amp;apier (PDF):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <source>Piece</source>
+        <translation>Teil</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <source>Sheet</source>
+        <translation>Bogen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <source>Size (mm)</source>
+        <translation>Größe (mm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="173"/>
+        <source>Area (mm²)</source>
+        <translation>Fläche (mm²)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="173"/>
+        <source>Isometry error (mm)</source>
+        <translation>Isometriefehler (mm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <source>Fits sheet</source>
+        <translation>Passt auf Bogen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <source>Overlaps</source>
+        <translation>Überlappungen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
+        <source>Fabrication report</source>
+        <translation>Fertigungsbericht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="185"/>
+        <source>&amp;Export…</source>
+        <translation>&amp;Exportieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="292"/>
+        <source>itself</source>
+        <translation>sich selbst</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="299"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="304"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="300"/>
+        <source>%1 × %2</source>
+        <translation>%1 × %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
+        <source>%n piece(s)</source>
+        <translation>
+            <numerusform>%n Teil</numerusform>
+            <numerusform>%n Teile</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="310"/>
+        <source>%n sheet(s)</source>
+        <translation>
+            <numerusform>%n Bogen</numerusform>
+            <numerusform>%n Bogen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="312"/>
+        <source>largest isometry error %1 mm</source>
+        <translation>größter Isometriefehler %1 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="328"/>
+        <source>Some pieces overlap and cannot be cut as laid out. Export anyway?</source>
+        <translation>Einige Teile überlappen sich und können so nicht geschnitten werden. Trotzdem exportieren?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="329"/>
+        <source>The pattern has problems (see the report). Export anyway?</source>
+        <translation>Das Schnittmuster hat Probleme (siehe Bericht). Trotzdem exportieren?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="358"/>
+        <source>Writing the cutting pattern…</source>
+        <translation>Das Schnittmuster wird geschrieben…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="358"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="369"/>
+        <source>Export failed</source>
+        <translation>Export fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::PrintPatternReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="97"/>
+        <source>Print Cutting Pattern</source>
+        <translation>Schnittmuster drucken</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="102"/>
+        <source>Printing failed</source>
+        <translation>Drucken fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="103"/>
+        <source>The pages could not be sent to the printer.</source>
+        <translation>Die Seiten konnten nicht an den Drucker gesendet werden.</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::PrintPreviewReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="123"/>
+        <source>Print Preview: Cutting Pattern</source>
+        <translation>Druckvorschau: Schnittmuster</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::PropertiesPanel</name>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="22" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="22"/>
         <source>degree %1, C%2, %3 intervals</source>
         <translation>Grad %1, C%2, %3 Intervalle</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="76" />
-        <source>Nothing selected.&lt;br&gt;%1 patches, %2 control points.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
-        <translation>Nichts ausgewählt.&lt;br&gt;%1 Flächenstücke, %2 Kontrollpunkte.&lt;br&gt;&lt;i&gt;Klicken Sie auf eine Ecke, Kante oder ein Flächenstück, um es auszuwählen; Umschalt-Klick erweitert die Auswahl.&lt;/i&gt;</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="85" />
-        <source>%1 vertices, %2 edges, %3 patches selected.</source>
-        <translation>%1 Ecken, %2 Kanten, %3 Flächenstücke ausgewählt.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="101" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="101"/>
         <source>&lt;b&gt;Vertex %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;Ecke %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="112" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="112"/>
         <source>&lt;b&gt;Edge %1&lt;/b&gt; from vertex %2 to vertex %3&lt;br&gt;</source>
         <translation>&lt;b&gt;Kante %1&lt;/b&gt; von Ecke %2 zu Ecke %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="117" />
-        <source>Spline curve (S), %1, %2 control points.&lt;br&gt;</source>
-        <translation>Splinekurve (S), %1, %2 Kontrollpunkte.&lt;br&gt;</translation>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="76"/>
+        <source>Nothing selected.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
+        <translation>Nichts ausgewählt.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Klicken Sie auf eine Ecke, Kante oder ein Flächenstück, um es auszuwählen; Umschalt-Klick erweitert die Auswahl.&lt;/i&gt;</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="78"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="88"/>
+        <source>%n patch(es)</source>
+        <translation>
+            <numerusform>%n Flächenstück</numerusform>
+            <numerusform>%n Flächenstücke</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="79"/>
+        <source>%n control point(s)</source>
+        <translation>
+            <numerusform>%n Kontrollpunkt</numerusform>
+            <numerusform>%n Kontrollpunkte</numerusform>
+        </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="120" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="86"/>
+        <source>Selected: %1, %2, %3.</source>
+        <translation>Ausgewählt: %1, %2, %3.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="87"/>
+        <source>%n vertex(es)</source>
+        <translation>
+            <numerusform>%n Ecke</numerusform>
+            <numerusform>%n Ecken</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="87"/>
+        <source>%n edge(s)</source>
+        <translation>
+            <numerusform>%n Kante</numerusform>
+            <numerusform>%n Kanten</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="117"/>
+        <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
+        <translation>
+            <numerusform>Spline-Kurve (S), %1, %n Kontrollpunkt.&lt;br&gt;</numerusform>
+            <numerusform>Spline-Kurve (S), %1, %n Kontrollpunkte.&lt;br&gt;</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="120"/>
         <source>A crease between patches %1 and %2; condition: %3.</source>
         <translation>Ein Falz zwischen den Flächenstücken %1 und %2; Bedingung: %3.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="126" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="126"/>
         <source>A boundary curve of patch %1.</source>
         <translation>Eine Randkurve des Flächenstücks %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="129" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="129"/>
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>Erzeugende (R), eine Strecke der Länge %1 mm.</translation>
     </message>
-    <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="138" />
-        <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%4 corners.</source>
-        <translation>&lt;b&gt;Flächenstück %1&lt;/b&gt;: %2&lt;br&gt;Kantenbeschriftung entlang des Flächenstücks: %3&lt;br&gt;%4 Ecken.</translation>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="138"/>
+        <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
+        <translation>
+            <numerusform>&lt;b&gt;Flächenstück %1&lt;/b&gt;: %2&lt;br&gt;Kantenbeschriftung entlang des Flächenstücks: %3&lt;br&gt;%n Ecke.</numerusform>
+            <numerusform>&lt;b&gt;Flächenstück %1&lt;/b&gt;: %2&lt;br&gt;Kantenbeschriftung entlang des Flächenstücks: %3&lt;br&gt;%n Ecken.</numerusform>
+        </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="173" />
+        <location filename="../app/gui/panels/properties_panel.cpp" line="174"/>
         <source>Cannot move</source>
         <translation>Verschieben nicht möglich</translation>
     </message>
@@ -678,12 +1324,12 @@
 <context>
     <name>devsurf::app::RefineCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="222" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="291"/>
         <source>Double the spline intervals of the selected curve and of all curves joined to it through strips; the shape stays the same. Select one spline edge or strip first.</source>
         <translation>Verdoppelt die Spline-Intervalle der ausgewählten Kurve und aller über Streifen mit ihr verbundenen Kurven; die Form bleibt gleich. Wählen Sie zuerst eine Splinekante oder einen Streifen aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="232" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="301"/>
         <source>Cannot refine</source>
         <translation>Verfeinern nicht möglich</translation>
     </message>
@@ -691,157 +1337,251 @@
 <context>
     <name>devsurf::app::RelabelEdgeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="85" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="112"/>
+        <source>Cannot relabel: %1</source>
+        <translation>Umbenennen nicht möglich: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="116"/>
         <source>Turn the selected edges from rulings (R) into spline curves (S) or back. Select edges of one surface first.</source>
         <translation>Macht die ausgewählten Kanten von Erzeugenden (R) zu Splinekurven (S) oder umgekehrt. Wählen Sie zuerst Kanten einer Fläche aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="105" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="123"/>
         <source>Cannot relabel</source>
         <translation>Umbenennen nicht möglich</translation>
     </message>
 </context>
 <context>
+    <name>devsurf::app::ShortcutsDialog</name>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="79"/>
+        <source>Keyboard Shortcuts</source>
+        <translation>Tastenkürzel</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="81"/>
+        <source>Keys</source>
+        <translation>Tasten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="81"/>
+        <source>Command</source>
+        <translation>Befehl</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="92"/>
+        <source>Click</source>
+        <translation>Klick</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="92"/>
+        <source>Select a vertex, edge or patch (empty space clears)</source>
+        <translation>Ecke, Kante oder Flächenstück auswählen (leere Stelle hebt die Auswahl auf)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="93"/>
+        <source>Shift+Click</source>
+        <translation>Umschalt+Klick</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="93"/>
+        <source>Add to or remove from the selection</source>
+        <translation>Zur Auswahl hinzufügen oder daraus entfernen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="94"/>
+        <source>Ctrl+Drag</source>
+        <translation>Strg+Ziehen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="94"/>
+        <source>Select the vertices in a rectangle (with Shift: add them)</source>
+        <translation>Ecken in einem Rechteck auswählen (mit Umschalt: hinzufügen)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="95"/>
+        <source>Left drag</source>
+        <translation>Ziehen mit links</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="95"/>
+        <source>3D view: rotate; development view: pan</source>
+        <translation>3D-Ansicht: drehen; Abwicklung: verschieben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="96"/>
+        <source>Middle drag</source>
+        <translation>Ziehen mit Mitte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="96"/>
+        <source>Pan</source>
+        <translation>Verschieben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="97"/>
+        <source>Wheel or right drag</source>
+        <translation>Mausrad oder Ziehen mit rechts</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="97"/>
+        <source>Zoom</source>
+        <translation>Zoomen</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::SplitAtRulingReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="147" />
-        <source>Add a ruling across the selected strip and the strips that share its curves. Select one strip or cone first.</source>
-        <translation>Fügt eine Erzeugende quer über den ausgewählten Streifen und die Streifen mit denselben Kurven ein. Wählen Sie zuerst einen Streifen oder Kegel aus.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="166" />
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="179" />
-        <source>Split at Ruling</source>
-        <translation>An Erzeugender teilen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="167" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="210"/>
         <source>The curves of this strip have a single spline interval, so a ruling can only be added after refining them (the shape stays the same). Refine now?</source>
         <translation>Die Kurven dieses Streifens haben nur ein Spline-Intervall; eine Erzeugende kann erst nach dem Verfeinern eingefügt werden (die Form bleibt gleich). Jetzt verfeinern?</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="172" />
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="215"/>
         <source>Cannot refine</source>
         <translation>Verfeinern nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="180" />
-        <source>The new ruling goes through breakpoint i of the strip's %1 spline intervals (u = i/%1). Breakpoint i:</source>
-        <translation>Die neue Erzeugende geht durch den Knoten i der %1 Spline-Intervalle des Streifens (u = i/%1). Knoten i:</translation>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="209"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="226"/>
+        <source>Add Ruling</source>
+        <translation>Erzeugende einfügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="189" />
-        <source>Cannot split</source>
-        <translation>Teilen nicht möglich</translation>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="190"/>
+        <source>Add a ruling across the selected strip and the strips that share its curves. Select one strip or cone patch first.</source>
+        <translation>Fügt eine Erzeugende quer über den ausgewählten Streifen und die Streifen mit denselben Kurven ein. Wählen Sie zuerst ein Streifen- oder Kegel-Flächenstück aus.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="227"/>
+        <source>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoint(s) of the curves; refine the curves (Ctrl+Shift+R) for more.</source>
+        <translation>
+            <numerusform>Wo die neue Erzeugende Flächenstück %1 und die Streifen mit denselben Kurven kreuzt (grün in der 3D-Ansicht): Prozent des Wegs entlang des Streifens. Erzeugende können durch den %n Knoten der Kurven gehen; verfeinern Sie die Kurven (Strg+Umschalt+R) für mehr.</numerusform>
+            <numerusform>Wo die neue Erzeugende Flächenstück %1 und die Streifen mit denselben Kurven kreuzt (grün in der 3D-Ansicht): Prozent des Wegs entlang des Streifens. Erzeugende können durch die %n Knoten der Kurven gehen; verfeinern Sie die Kurven (Strg+Umschalt+R) für mehr.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="258"/>
+        <source>Cannot add the ruling</source>
+        <translation>Erzeugende kann nicht eingefügt werden</translation>
     </message>
 </context>
 <context>
     <name>devsurf::app::SubdivideStripReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="115" />
-        <source>Add a crease across the selected strip and the row of strips it belongs to. Select one SRSR strip first.</source>
-        <translation>Fügt einen Falz quer über den ausgewählten Streifen und seine Streifenreihe ein. Wählen Sie zuerst einen SRSR-Streifen aus.</translation>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="135"/>
+        <source>Add a crease across the selected strip and the row of strips it belongs to. Select one patch of type strip (SRSR) first.</source>
+        <translation>Fügt einen Falz quer über den ausgewählten Streifen und seine Streifenreihe ein. Wählen Sie zuerst ein Flächenstück vom Typ Streifen (SRSR) aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="126" />
-        <source>Subdivide Strip</source>
-        <translation>Streifen unterteilen</translation>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="146"/>
+        <source>Add Crease</source>
+        <translation>Falz einfügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="127" />
-        <source>Position of the new crease between the strip's curve a (0) and curve b (1):</source>
-        <translation>Lage des neuen Falzes zwischen der Kurve a (0) und der Kurve b (1) des Streifens:</translation>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="147"/>
+        <source>Where the new crease crosses patch %1 and the strips of its row (green in the 3D view): per cent of the way from one curve of the strip to the other.</source>
+        <translation>Wo der neue Falz Flächenstück %1 und die Streifen seiner Reihe kreuzt (grün in der 3D-Ansicht): Prozent des Wegs von einer Kurve des Streifens zur anderen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="134" />
-        <source>Cannot subdivide</source>
-        <translation>Unterteilen nicht möglich</translation>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="176"/>
+        <source>Cannot add the crease</source>
+        <translation>Falz kann nicht eingefügt werden</translation>
     </message>
 </context>
 <context>
     <name>devsurf::app::Workspace</name>
+    <message numerus="yes">
+        <location filename="../app/gui/workspace.cpp" line="82"/>
+        <source>… and %n more problem(s).</source>
+        <translation>
+            <numerusform>… und %n weiteres Problem.</numerusform>
+            <numerusform>… und %n weitere Probleme.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="82" />
+        <location filename="../app/gui/workspace.cpp" line="102"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="85" />
+        <location filename="../app/gui/workspace.cpp" line="105"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="86" />
+        <location filename="../app/gui/workspace.cpp" line="106"/>
         <source>%1 has unsaved changes. Do you want to save them?</source>
         <translation>%1 hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="100" />
+        <location filename="../app/gui/workspace.cpp" line="120"/>
         <source>Opened %1</source>
         <translation>%1 geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="103" />
+        <location filename="../app/gui/workspace.cpp" line="127"/>
         <source>Cannot open file</source>
         <translation>Datei kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="117" />
+        <location filename="../app/gui/workspace.cpp" line="141"/>
         <source>Save Project As</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="120" />
+        <location filename="../app/gui/workspace.cpp" line="144"/>
         <source>untitled.devsurf</source>
         <translation>unbenannt.devsurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="122" />
+        <location filename="../app/gui/workspace.cpp" line="146"/>
         <source>DevSurf projects (*.devsurf)</source>
         <translation>DevSurf-Projekte (*.devsurf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="136" />
+        <location filename="../app/gui/workspace.cpp" line="160"/>
         <source>Cannot save file</source>
         <translation>Datei kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="143" />
+        <location filename="../app/gui/workspace.cpp" line="167"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="150" />
+        <location filename="../app/gui/workspace.cpp" line="174"/>
         <source>New design from the example “%1”</source>
         <translation>Neuer Entwurf aus dem Beispiel „%1“</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="152" />
+        <location filename="../app/gui/workspace.cpp" line="176"/>
         <source>Cannot create the example</source>
         <translation>Das Beispiel kann nicht erzeugt werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="163" />
+        <location filename="../app/gui/workspace.cpp" line="187"/>
         <source>Recovered unsaved work</source>
         <translation>Ungespeicherte Arbeit wiederhergestellt</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="166" />
+        <location filename="../app/gui/workspace.cpp" line="190"/>
         <source>Cannot recover</source>
         <translation>Wiederherstellen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="179" />
+        <location filename="../app/gui/workspace.cpp" line="203"/>
         <source>an untitled design</source>
         <translation>einem unbenannten Entwurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="181" />
+        <location filename="../app/gui/workspace.cpp" line="205"/>
         <source>Recover unsaved work</source>
         <translation>Ungespeicherte Arbeit wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="182" />
+        <location filename="../app/gui/workspace.cpp" line="206"/>
         <source>DevSurf did not close properly last time. Recover the unsaved changes to %1 from %2?</source>
         <translation>DevSurf wurde zuletzt nicht ordnungsgemäß beendet. Die ungespeicherten Änderungen an %1 vom %2 wiederherstellen?</translation>
     </message>
@@ -849,62 +1589,73 @@
 <context>
     <name>devsurf::views::SceneView</name>
     <message>
-        <location filename="../views/scene_view.cpp" line="232" />
+        <location filename="../views/scene_view.cpp" line="60"/>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view.cpp" line="62"/>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view.cpp" line="475"/>
+        <location filename="../views/scene_view.cpp" line="484"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>Fläche %1 ist ungültig und wird nicht angezeigt.</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="254" />
+        <location filename="../views/scene_view.cpp" line="507"/>
         <source>vertex %1</source>
         <translation>Ecke %1</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="263" />
+        <location filename="../views/scene_view.cpp" line="516"/>
         <source>edge %1 (R)</source>
         <translation>Kante %1 (R)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="265" />
+        <location filename="../views/scene_view.cpp" line="518"/>
         <source>edge %1 (S, crease)</source>
         <translation>Kante %1 (S, Falz)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="267" />
+        <location filename="../views/scene_view.cpp" line="520"/>
         <source>edge %1 (S, boundary)</source>
         <translation>Kante %1 (S, Rand)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="278" />
-        <source>SRSR strip</source>
-        <translation>SRSR-Streifen</translation>
+        <location filename="../views/scene_view.cpp" line="531"/>
+        <source>strip (SRSR)</source>
+        <translation>Streifen (SRSR)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="281" />
-        <source>SRS strip</source>
-        <translation>SRS-Streifen</translation>
+        <location filename="../views/scene_view.cpp" line="534"/>
+        <source>pointed strip (SRS)</source>
+        <translation>spitzer Streifen (SRS)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="284" />
-        <source>SRR cone</source>
-        <translation>SRR-Kegel</translation>
+        <location filename="../views/scene_view.cpp" line="537"/>
+        <source>cone (SRR)</source>
+        <translation>Kegel (SRR)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="287" />
-        <source>planar polygon</source>
-        <translation>ebenes Polygon</translation>
+        <location filename="../views/scene_view.cpp" line="540"/>
+        <source>planar patch</source>
+        <translation>ebenes Flächenstück</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="290" />
-        <source>invalid face</source>
-        <translation>ungültige Fläche</translation>
+        <location filename="../views/scene_view.cpp" line="543"/>
+        <source>invalid patch</source>
+        <translation>ungültiges Flächenstück</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="293" />
-        <source>face %1 (%2)</source>
-        <translation>Fläche %1 (%2)</translation>
+        <location filename="../views/scene_view.cpp" line="546"/>
+        <source>patch %1 (%2)</source>
+        <translation>Flächenstück %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="298" />
+        <location filename="../views/scene_view.cpp" line="551"/>
         <source>surface %1: %2</source>
         <translation>Fläche %1: %2</translation>
     </message>
@@ -912,17 +1663,17 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="38" />
+        <location filename="../app/gui/main.cpp" line="28"/>
         <source>Design developable surfaces and curved-crease origami.</source>
         <translation>Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="42" />
+        <location filename="../app/gui/main.cpp" line="32"/>
         <source>A project file to open.</source>
         <translation>Eine zu öffnende Projektdatei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="45" />
+        <location filename="../app/gui/main.cpp" line="35"/>
         <source>Start with a built-in example.</source>
         <translation>Mit einem eingebauten Beispiel beginnen.</translation>
     </message>

@@ -4,9 +4,11 @@
 
 namespace devsurf::views {
 
-// The development view: the unfolded surfaces (model::unfoldSampledMesh) side by side in the
-// plane, seen from above with a parallel projection; the outline, creases and rulings drawn
-// over pale patch colours. Pan (left or middle drag) and zoom (right drag, wheel) only. The
+// The development view: the cutting pattern's pieces (model::buildCuttingPattern, without
+// sheets) side by side in the plane, each oriented as the 3D view shows its surface, seen from
+// above with a parallel projection; the outline (both sides of a cut-open seam, with their
+// vertices), creases and rulings drawn over pale patch colours, pieces that overlap outlined
+// in red. Pan (left or middle drag) and zoom (right drag, wheel) only. The
 // selection is the same as the 3D view's: picking here selects the same document::Pick.
 class DevelopmentView : public SceneView {
     Q_OBJECT

@@ -1,6 +1,6 @@
 #include "scene_geometry.h"
 
-#include "model/development.h"
+#include "model/pattern/cutting_pattern.h"
 #include "model/sampled_mesh.h"
 
 #include <algorithm>
@@ -58,22 +58,8 @@ EdgeCurve makeCurve(const model::CompositeSurface& surface, EdgeId id) {
     return curve;
 }
 
-Vec3 toScene(const Vec2& p, double dx, double dy) {
-    return {p.x + dx, p.y + dy, 0.0};
-}
-
-// The copy of q (modulo the period) nearest to reference.
-Vec2 unwrap(const Vec2& q, const Vec2& reference, const std::optional<Vec2>& period) {
-    if (!period) {
-        return q;
-    }
-    const double len2 = period->x * period->x + period->y * period->y;
-    if (len2 <= 0.0) {
-        return q;
-    }
-    const Vec2 diff = reference - q;
-    const double k = std::round((diff.x * period->x + diff.y * period->y) / len2);
-    return q + *period * k;
+Vec3 toScene(const Vec2& p) {
+    return {p.x, p.y, 0.0};
 }
 
 } // namespace
@@ -135,118 +121,81 @@ SurfaceScene buildSpatialScene(const model::CompositeSurface& surface, int surfa
     return scene;
 }
 
-SurfaceScene buildDevelopmentScene(const model::CompositeSurface& surface, int surfaceIndex,
-                                   double x0) {
-    const model::SampledMesh mesh = model::sampleSurface(surface, kSamplesPerInterval);
-    const model::Development development = model::unfoldSampledMesh(mesh);
-    const auto& flat = development.vertices;
-    const auto& period = development.period;
+DevelopmentScenes buildDevelopmentScenes(const model::Project& project) {
+    model::PatternOptions options;
+    options.layout = false;                           // the pieces side by side, no sheets
+    options.gap = 20.0;                               // mm between the pieces
+    options.samplesPerInterval = kSamplesPerInterval; // as the 3D view samples the curves
+    const model::CuttingPattern pattern = model::buildCuttingPattern(project, options);
 
-    // A periodic development (a cylinder cut open) is drawn over one period, starting at the
-    // first coarse vertex (so the cut runs along a ruling through vertices). Every face, ruling and
-    // edge is first unwrapped around its first point and then moved by whole periods until its
-    // centroid lies in that window, so that the pieces along the cut are drawn whole and on the
-    // same side.
-    double windowStart = 0.0;
-    double period2 = 0.0;
-    if (period) {
-        period2 = period->x * period->x + period->y * period->y;
-        windowStart = std::numeric_limits<double>::infinity();
-        for (std::size_t i = 0; i < mesh.coarseVertexIds.size(); ++i) {
-            const Vec2& v = flat[i];
-            windowStart = std::min(windowStart, (v.x * period->x + v.y * period->y) / period2);
-        }
-        windowStart -= 1e-9;
+    std::set<std::size_t> overlapping;
+    for (const model::PatternOverlap& overlap : pattern.overlaps) {
+        overlapping.insert(static_cast<std::size_t>(overlap.first));
+        overlapping.insert(static_cast<std::size_t>(overlap.second));
     }
-    auto place = [&](const std::vector<int>& indices, bool chain) {
-        std::vector<Vec2> points;
-        Vec2 reference = flat[static_cast<std::size_t>(indices.front())];
-        for (int v : indices) {
-            points.push_back(unwrap(flat[static_cast<std::size_t>(v)], reference, period));
-            if (chain) {
-                reference = points.back();
+    DevelopmentScenes result;
+    std::map<int, std::size_t> sceneOf;
+    for (std::size_t p = 0; p < pattern.pieces.size(); ++p) {
+        const model::PatternPiece& piece = pattern.pieces[p];
+        const model::CompositeSurface& surface =
+            project.surfaces[static_cast<std::size_t>(piece.surface)];
+        auto [it, inserted] = sceneOf.emplace(piece.surface, result.scenes.size());
+        if (inserted) {
+            result.scenes.emplace_back();
+            result.scenes.back().surface = piece.surface;
+        }
+        SurfaceScene& scene = result.scenes[it->second];
+        const int base = static_cast<int>(scene.points.size());
+        for (const Vec2& v : piece.mesh.vertices) {
+            scene.points.push_back(toScene(v));
+        }
+        for (std::size_t f = 0; f < piece.mesh.faces.size(); ++f) {
+            std::vector<int> polygon;
+            for (int v : piece.mesh.faces[f]) {
+                polygon.push_back(base + v);
+            }
+            scene.polygons.push_back(std::move(polygon));
+            scene.polygonFace.push_back(piece.mesh.faceOrigin[f]);
+        }
+        for (const model::PatternPath& path : piece.edgeCurves) {
+            if (!surface.hasEdge(path.edge)) {
+                continue;
+            }
+            EdgeCurve curve = makeCurve(surface, path.edge);
+            for (const Vec2& p2 : path.points) {
+                curve.points.push_back(toScene(p2));
+            }
+            scene.edges.push_back(std::move(curve));
+        }
+        for (const auto& segment : piece.rulingSegments) {
+            scene.rulings.emplace_back(toScene(segment[0]), toScene(segment[1]));
+        }
+        // The outline is every closed cut loop, so a cut-open seam is drawn on both sides.
+        for (const model::PatternPath& path : piece.paths) {
+            if (path.layer != model::PatternLayer::Cut || !path.closed) {
+                continue;
+            }
+            for (std::size_t i = 0; i < path.points.size(); ++i) {
+                const auto segment = std::make_pair(
+                    toScene(path.points[i]), toScene(path.points[(i + 1) % path.points.size()]));
+                scene.outline.push_back(segment);
+                if (overlapping.count(p) != 0) {
+                    scene.overlapOutline.push_back(segment);
+                }
             }
         }
-        if (period && period2 > 0.0) {
-            Vec2 centroid;
-            for (const Vec2& p : points) {
-                centroid = centroid + p * (1.0 / static_cast<double>(points.size()));
-            }
-            const double u = (centroid.x * period->x + centroid.y * period->y) / period2;
-            const double k = std::ceil(windowStart - u);
-            for (Vec2& p : points) {
-                p = p + *period * k;
-            }
-        }
-        return points;
-    };
-
-    std::vector<std::vector<Vec2>> faces;
-    for (const auto& face : mesh.faces) {
-        faces.push_back(place(face, false));
-    }
-    // Place the lower left corner of the drawing at (x0, 0).
-    double minX = std::numeric_limits<double>::infinity();
-    double minY = std::numeric_limits<double>::infinity();
-    for (const auto& face : faces) {
-        for (const Vec2& p : face) {
-            minX = std::min(minX, p.x);
-            minY = std::min(minY, p.y);
-        }
-    }
-    if (!std::isfinite(minX)) {
-        minX = 0.0;
-        minY = 0.0;
-    }
-    const double dx = x0 - minX;
-    const double dy = -minY;
-
-    SurfaceScene scene;
-    scene.surface = surfaceIndex;
-    std::map<std::pair<int, int>, int> edgeUse; // sampled mesh edge -> number of faces
-    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-        const auto& face = mesh.faces[f];
-        std::vector<int> polygon;
-        for (std::size_t i = 0; i < face.size(); ++i) {
-            polygon.push_back(static_cast<int>(scene.points.size()));
-            scene.points.push_back(toScene(faces[f][i], dx, dy));
-            const int a = face[i];
-            const int b = face[(i + 1) % face.size()];
-            ++edgeUse[{std::min(a, b), std::max(a, b)}];
-        }
-        scene.polygons.push_back(std::move(polygon));
-        scene.polygonFace.push_back(mesh.faceOrigin[f]);
-    }
-    // The outline: sampled edges used by a single face, drawn from that face's copy.
-    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-        const auto& face = mesh.faces[f];
-        const auto& polygon = scene.polygons[f];
-        for (std::size_t i = 0; i < face.size(); ++i) {
-            const int a = face[i];
-            const int b = face[(i + 1) % face.size()];
-            if (a != b && edgeUse[{std::min(a, b), std::max(a, b)}] == 1) {
-                scene.outline.emplace_back(
-                    scene.points[static_cast<std::size_t>(polygon[i])],
-                    scene.points[static_cast<std::size_t>(polygon[(i + 1) % face.size()])]);
+        for (const auto& [id, position] : piece.vertices) {
+            if (!scene.vertices.emplace(id, toScene(position)).second) {
+                scene.seamVertices.push_back(toScene(position));
             }
         }
     }
-    for (const auto& [a, b] : mesh.rulings) {
-        const std::vector<Vec2> ends = place({a, b}, false);
-        scene.rulings.emplace_back(toScene(ends[0], dx, dy), toScene(ends[1], dx, dy));
-    }
-    for (const auto& [id, indices] : edgePolylines(surface, mesh)) {
-        EdgeCurve curve = makeCurve(surface, id);
-        for (const Vec2& p : place(indices, true)) {
-            curve.points.push_back(toScene(p, dx, dy));
+    for (std::size_t i = 0; i < project.surfaces.size(); ++i) {
+        if (sceneOf.count(static_cast<int>(i)) == 0 && !project.surfaces[i].validate().empty()) {
+            result.invalidSurfaces.push_back(static_cast<int>(i));
         }
-        scene.edges.push_back(std::move(curve));
     }
-    const std::map<VertexId, int> index = coarseIndex(mesh);
-    for (const auto& [id, i] : index) {
-        scene.vertices[id] = toScene(place({i}, false).front(), dx, dy);
-    }
-    return scene;
+    return result;
 }
 
 std::pair<Vec3, Vec3> sceneBounds(const SurfaceScene& scene) {

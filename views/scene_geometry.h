@@ -4,6 +4,7 @@
 // VTK), built from the model's sampled mesh and development.
 
 #include "model/composite_surface.h"
+#include "model/project.h"
 #include "model/vec3.h"
 
 #include <array>
@@ -38,6 +39,10 @@ struct SurfaceScene {
     std::vector<std::vector<model::Vec3>> controlPolygons;    // 3D only
     std::vector<model::Vec3> controlPoints;                   // interior ones, 3D only
     std::map<model::VertexId, model::Vec3> vertices;
+    // Development only: the second copy of every vertex on a cut-open seam (drawn, not picked)
+    // and the outline of every piece that overlaps itself or another one (drawn in red).
+    std::vector<model::Vec3> seamVertices;
+    std::vector<std::pair<model::Vec3, model::Vec3>> overlapOutline;
 };
 
 // Resolution of the curves drawn: samples per spline interval.
@@ -46,10 +51,15 @@ inline constexpr int kSamplesPerInterval = 8;
 // The surface in space. Throws model::ModelError if the surface is not valid.
 SurfaceScene buildSpatialScene(const model::CompositeSurface& surface, int surfaceIndex);
 
-// The development (model::unfoldSampledMesh) in the plane z = 0, its lower left corner moved
-// to (x0, 0). Throws model::ModelError if the surface is not valid.
-SurfaceScene buildDevelopmentScene(const model::CompositeSurface& surface, int surfaceIndex,
-                                   double x0);
+// The development of every surface as the cutting pattern (model::buildCuttingPattern) lays it
+// out without sheets: every surface's pieces side by side in the plane z = 0, cut open where a
+// surface does not close up, oriented as the 3D view shows the surface. One scene per surface
+// that could be developed; invalidSurfaces lists the indices of those that are not valid.
+struct DevelopmentScenes {
+    std::vector<SurfaceScene> scenes;
+    std::vector<int> invalidSurfaces;
+};
+DevelopmentScenes buildDevelopmentScenes(const model::Project& project);
 
 // Axis-aligned bounds of a scene's polygons: {min, max}.
 std::pair<model::Vec3, model::Vec3> sceneBounds(const SurfaceScene& scene);

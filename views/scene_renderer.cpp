@@ -158,6 +158,8 @@ SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
     lineStyle(*m_rulings, 0.62, 0.62, 0.62, 1.0, false);
     m_outline = &addLayer();
     lineStyle(*m_outline, 0.05, 0.05, 0.05, 2.0, false);
+    m_overlapOutline = &addLayer();
+    lineStyle(*m_overlapOutline, 0.9, 0.05, 0.05, 4.0, false);
     m_rulingEdges = &addLayer();
     lineStyle(*m_rulingEdges, 0.35, 0.35, 0.35, 1.5, false);
     m_splineEdges = &addLayer();
@@ -178,6 +180,11 @@ SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
     m_selectedVertices = &addLayer();
     pointStyle(*m_selectedVertices, kSelectionRgb[0], kSelectionRgb[1], kSelectionRgb[2], 15.0);
 
+    // The preview of an edit: bright green, thick, drawn in front of the surface.
+    m_preview = &addLayer();
+    lineStyle(*m_preview, 0.0, 0.75, 0.25, 5.0, spatial);
+    m_preview->mapper->SetRelativeCoincidentTopologyLineOffsetParameters(-2.0, -2.0);
+
     m_controlPolygons->actor->SetVisibility(false);
     m_controlPoints->actor->SetVisibility(false);
 
@@ -192,8 +199,9 @@ SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
         // From the front right, above, z up: no example is seen edge-on (the cylinder's wall
         // would be from along its axis, the sheet's from the side).
         vtkCamera* camera = m_renderer->GetActiveCamera();
+        const Vec3 direction = defaultDirection();
         camera->SetFocalPoint(0.0, 0.0, 0.0);
-        camera->SetPosition(1.0, -1.6, 1.2);
+        camera->SetPosition(-direction.x, -direction.y, -direction.z);
         camera->SetViewUp(0.0, 0.0, 1.0);
     } else {
         m_renderer->SetBackground(0.96, 0.96, 0.93);
@@ -260,6 +268,7 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
     std::vector<std::vector<Vec3>> creases;
     std::vector<std::pair<Vec3, Vec3>> rulings;
     std::vector<std::pair<Vec3, Vec3>> outline;
+    std::vector<std::pair<Vec3, Vec3>> overlapOutline;
     std::vector<std::vector<Vec3>> controlPolygons;
     std::vector<Vec3> controlPoints;
     std::vector<Vec3> vertices;
@@ -270,6 +279,9 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
         }
         rulings.insert(rulings.end(), scene.rulings.begin(), scene.rulings.end());
         outline.insert(outline.end(), scene.outline.begin(), scene.outline.end());
+        overlapOutline.insert(overlapOutline.end(), scene.overlapOutline.begin(),
+                              scene.overlapOutline.end());
+        vertices.insert(vertices.end(), scene.seamVertices.begin(), scene.seamVertices.end());
         controlPolygons.insert(controlPolygons.end(), scene.controlPolygons.begin(),
                                scene.controlPolygons.end());
         controlPoints.insert(controlPoints.end(), scene.controlPoints.begin(),
@@ -283,6 +295,7 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
     m_creases->assign(polylineData(creases), geometryOnly);
     m_rulings->assign(segmentData(rulings), geometryOnly);
     m_outline->assign(segmentData(outline), geometryOnly);
+    m_overlapOutline->assign(segmentData(overlapOutline), geometryOnly);
     m_controlPolygons->assign(polylineData(controlPolygons), geometryOnly);
     m_controlPoints->assign(pointData(controlPoints), geometryOnly);
     m_vertices->assign(pointData(vertices), geometryOnly);
@@ -377,6 +390,10 @@ void SceneRenderer::setTargetPoints(const std::vector<Vec3>& points) {
     m_target->assign(pointData(points), false);
 }
 
+void SceneRenderer::setPreviewLines(const std::vector<std::vector<Vec3>>& lines) {
+    m_preview->assign(polylineData(lines), false);
+}
+
 Vec3 SceneRenderer::viewDirection() const {
     double direction[3];
     m_renderer->GetActiveCamera()->GetDirectionOfProjection(direction);
@@ -413,6 +430,12 @@ std::optional<Vec3> SceneRenderer::surfaceHit(double displayX, double displayY,
     *face = Pick{Pick::Kind::Face, surface, id};
     const double* p = m_picker->GetPickPosition();
     return Vec3(p[0], p[1], p[2]);
+}
+
+std::optional<Pick> SceneRenderer::faceAt(double displayX, double displayY) const {
+    std::optional<Pick> face;
+    surfaceHit(displayX, displayY, &face);
+    return face;
 }
 
 std::optional<Pick> SceneRenderer::pick(double displayX, double displayY, double radius) const {
@@ -473,6 +496,41 @@ std::optional<Pick> SceneRenderer::pick(double displayX, double displayY, double
         return best;
     }
     return face;
+}
+
+Vec3 SceneRenderer::defaultDirection() {
+    const Vec3 eye(1.0, -1.6, 1.2);
+    return -eye / eye.norm();
+}
+
+void SceneRenderer::lookAlong(const Vec3& direction, const Vec3& up) {
+    if (m_mode != Mode::Spatial || direction.norm() == 0.0) {
+        return;
+    }
+    vtkCamera* camera = m_renderer->GetActiveCamera();
+    const Vec3 d = direction / direction.norm();
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetPosition(-d.x, -d.y, -d.z);
+    camera->SetViewUp(up.x, up.y, up.z);
+    camera->OrthogonalizeViewUp();
+    m_renderer->ResetCamera();
+}
+
+double SceneRenderer::pixelsPerUnit() const {
+    vtkCamera* camera = m_renderer->GetActiveCamera();
+    const int* size = m_renderer->GetSize();
+    if (size[1] <= 0) {
+        return 0.0;
+    }
+    // The height of the scene seen at the focal point, in scene units.
+    double visible = 0.0;
+    if (camera->GetParallelProjection() != 0) {
+        visible = 2.0 * camera->GetParallelScale();
+    } else {
+        constexpr double kDegree = 3.14159265358979323846 / 180.0;
+        visible = 2.0 * camera->GetDistance() * std::tan(0.5 * camera->GetViewAngle() * kDegree);
+    }
+    return visible > 0.0 && std::isfinite(visible) ? size[1] / visible : 0.0;
 }
 
 void SceneRenderer::resetCamera() {

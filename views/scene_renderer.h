@@ -39,17 +39,30 @@ public:
     void setShowControlPolygons(bool show);
     void setShowVertices(bool show);
     void setTargetPoints(const std::vector<model::Vec3>& points);
+    // Lines an edit in progress would add (drawn dashed-bright over everything else).
+    void setPreviewLines(const std::vector<std::vector<model::Vec3>>& lines);
 
     // Vertex within radius, else edge within radius * 0.6, else face under the point; in 3D
     // vertices and edges hidden behind the surface are not picked.
     std::optional<document::Pick> pick(double displayX, double displayY, double radius) const;
+    // The patch drawn at a display position, if any (nothing hides it).
+    std::optional<document::Pick> faceAt(double displayX, double displayY) const;
     // Scene point → display coordinates {x, y, depth}.
     model::Vec3 toDisplay(const model::Vec3& point) const;
     // Unit vector along which the camera looks.
     model::Vec3 viewDirection() const;
     const model::Vec3* vertexPosition(int surface, model::VertexId vertex) const;
 
+    // Fits the camera to the scenes, keeping its direction (the development view always looks
+    // straight down at the plane).
     void resetCamera();
+    // The 3D view: looks along direction with the given up vector, then fits. Ignored by the
+    // development view.
+    void lookAlong(const model::Vec3& direction, const model::Vec3& up);
+    // The 3D view's starting direction: from the front right and above, z up.
+    static model::Vec3 defaultDirection();
+    // Device pixels per scene unit (mm) at the camera's focal point.
+    double pixelsPerUnit() const;
 
 private:
     struct Layer;
@@ -68,12 +81,14 @@ private:
     Layer* m_creases = nullptr;
     Layer* m_rulings = nullptr;
     Layer* m_outline = nullptr;
+    Layer* m_overlapOutline = nullptr; // development: pieces that overlap, in red
     Layer* m_controlPolygons = nullptr;
     Layer* m_controlPoints = nullptr;
     Layer* m_vertices = nullptr;
     Layer* m_target = nullptr;
     Layer* m_selectedEdges = nullptr;
     Layer* m_selectedVertices = nullptr;
+    Layer* m_preview = nullptr;
 
     std::vector<SurfaceScene> m_scenes;
     std::vector<std::pair<int, model::FaceId>> m_cellFace; // faces layer cell -> (surface, face)

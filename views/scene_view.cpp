@@ -3,14 +3,21 @@
 #include "model/document/document.h"
 #include "model/model_error.h"
 #include "scene_renderer.h"
+#include "view_overlay.h"
 #include "vtk_interactor_styles.h"
 #include "vtk_opengl_widget.h"
 
+#include <vtkAxesActor.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCaptionActor2D.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
+#include <vtkTextProperty.h>
 
+#include <QLocale>
 #include <QMouseEvent>
 #include <QPointer>
 #include <QRubberBand>
@@ -20,6 +27,7 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <map>
 
 namespace devsurf::views {
 
@@ -31,6 +39,66 @@ namespace {
 constexpr int kClickSlop = 3;
 // Vertices are picked within this many logical pixels of the cursor.
 constexpr double kPickRadius = 9.0;
+// The scale bar is at most this long (logical pixels); the orientation triad this wide.
+constexpr double kMaxScaleBar = 120.0;
+constexpr double kTriadSize = 110.0;
+
+// The longest of 1, 2 and 5 × 10^k mm that fits in maxPixels.
+double niceLength(double pixelsPerMm, double maxPixels) {
+    const double fits = maxPixels / pixelsPerMm;
+    const double decade = std::pow(10.0, std::floor(std::log10(fits)));
+    for (double step : {5.0, 2.0}) {
+        if (step * decade <= fits) {
+            return step * decade;
+        }
+    }
+    return decade;
+}
+
+QString lengthText(double millimetres) {
+    if (millimetres >= 1000.0) {
+        return SceneView::tr("%1 m").arg(QLocale().toString(millimetres / 1000.0, 'g', 6));
+    }
+    return SceneView::tr("%1 mm").arg(QLocale().toString(millimetres, 'g', 6));
+}
+
+// Where a patch's number is written: the centre of the patch's drawn polygon nearest the
+// mean of all its points, so that the number sits on the patch, not in a hole or off a curve.
+struct LabelAnchor {
+    int surface = 0;
+    model::FaceId face = model::kInvalidId;
+    model::Vec3 point;
+};
+
+std::vector<LabelAnchor> labelAnchors(const std::vector<SurfaceScene>& scenes) {
+    std::vector<LabelAnchor> anchors;
+    for (const SurfaceScene& scene : scenes) {
+        std::map<model::FaceId, std::vector<model::Vec3>> centres;
+        for (std::size_t i = 0; i < scene.polygons.size(); ++i) {
+            model::Vec3 c;
+            for (int p : scene.polygons[i]) {
+                c += scene.points[static_cast<std::size_t>(p)];
+            }
+            if (!scene.polygons[i].empty()) {
+                centres[scene.polygonFace[i]].push_back(
+                    c / static_cast<double>(scene.polygons[i].size()));
+            }
+        }
+        for (const auto& [face, points] : centres) {
+            model::Vec3 mean;
+            for (const model::Vec3& p : points) {
+                mean += p;
+            }
+            mean = mean / static_cast<double>(points.size());
+            const auto nearest =
+                std::min_element(points.begin(), points.end(), [&](const auto& a, const auto& b) {
+                    return (a - mean).squaredNorm() < (b - mean).squaredNorm();
+                });
+            anchors.push_back({scene.surface, face, *nearest});
+        }
+    }
+    return anchors;
+}
 
 } // namespace
 
@@ -49,6 +117,17 @@ struct SceneView::Private {
     bool pressed = false;
     QRubberBand* band = nullptr;
     bool banding = false;
+
+    ViewOverlay* overlay = nullptr;
+    vtkSmartPointer<vtkRenderer> triad; // 3D view only
+    vtkSmartPointer<vtkCallbackCommand> startObserver;
+    vtkSmartPointer<vtkCallbackCommand> endObserver;
+    unsigned long startTag = 0;
+    unsigned long endTag = 0;
+    bool showLabels = false;
+    std::vector<LabelAnchor> anchors;
+    double barLength = 0.0;
+    int previewLines = 0;
 
     double displayX(double widgetX) const { return widgetX * gl->effectiveDevicePixelRatio(); }
     double displayY(double widgetY) const {
@@ -85,7 +164,41 @@ SceneView::SceneView(Kind kind, document::Document* document, document::Selectio
         d->renderer);
 
     d->band = new QRubberBand(QRubberBand::Rectangle, d->gl);
+    d->overlay = new ViewOverlay(d->gl);
+    d->overlay->setGeometry(d->gl->rect());
     d->gl->installEventFilter(this);
+
+    if (kind == Kind::Spatial) {
+        // The orientation triad: the axes in a small renderer over the lower left corner that
+        // turns with the main camera but never moves or zooms.
+        auto axes = vtkSmartPointer<vtkAxesActor>::New();
+        for (vtkCaptionActor2D* caption :
+             {axes->GetXAxisCaptionActor2D(), axes->GetYAxisCaptionActor2D(),
+              axes->GetZAxisCaptionActor2D()}) {
+            vtkTextProperty* text = caption->GetCaptionTextProperty();
+            text->SetColor(0.1, 0.1, 0.1);
+            text->ShadowOff();
+            text->ItalicOff();
+        }
+        d->triad = vtkSmartPointer<vtkRenderer>::New();
+        d->triad->SetLayer(1);
+        d->triad->InteractiveOff();
+        d->triad->AddActor(axes);
+        d->gl->renderWindow()->SetNumberOfLayers(2);
+        d->gl->renderWindow()->AddRenderer(d->triad);
+        d->startObserver = vtkSmartPointer<vtkCallbackCommand>::New();
+        d->startObserver->SetClientData(this);
+        d->startObserver->SetCallback([](vtkObject*, unsigned long, void* view, void*) {
+            static_cast<SceneView*>(view)->syncTriadCamera();
+        });
+        d->startTag = d->renderer->AddObserver(vtkCommand::StartEvent, d->startObserver);
+    }
+    d->endObserver = vtkSmartPointer<vtkCallbackCommand>::New();
+    d->endObserver->SetClientData(this);
+    d->endObserver->SetCallback([](vtkObject*, unsigned long, void* view, void*) {
+        static_cast<SceneView*>(view)->updateOverlay();
+    });
+    d->endTag = d->renderer->AddObserver(vtkCommand::EndEvent, d->endObserver);
 
     if (document != nullptr) {
         connect(document, &document::Document::changed, this,
@@ -101,6 +214,10 @@ SceneView::SceneView(Kind kind, document::Document* document, document::Selectio
 
 SceneView::~SceneView() {
     d->gl->removeEventFilter(this);
+    d->renderer->RemoveObserver(d->endTag);
+    if (d->startObserver != nullptr) {
+        d->renderer->RemoveObserver(d->startTag);
+    }
     // The GL widget, a child, is destroyed after this: it finalizes the render window (and so
     // every actor's GL resources) with its context current.
     d->scene.reset();
@@ -165,6 +282,142 @@ void SceneView::fitAll() {
     rerender();
 }
 
+void SceneView::resetView() {
+    if (d->kind == Kind::Spatial) {
+        d->scene->lookAlong(SceneRenderer::defaultDirection(), {0.0, 0.0, 1.0});
+    } else {
+        d->scene->resetCamera();
+    }
+    rerender();
+}
+
+void SceneView::setStandardView(StandardView view) {
+    if (d->kind != Kind::Spatial) {
+        fitAll();
+        return;
+    }
+    using model::Vec3;
+    const Vec3 up(0.0, 0.0, 1.0);
+    switch (view) {
+    case StandardView::Isometric:
+        d->scene->lookAlong({-1.0, 1.0, -1.0}, up);
+        break;
+    case StandardView::Front:
+        d->scene->lookAlong({0.0, 1.0, 0.0}, up);
+        break;
+    case StandardView::Top:
+        d->scene->lookAlong({0.0, 0.0, -1.0}, {0.0, 1.0, 0.0});
+        break;
+    case StandardView::Right:
+        d->scene->lookAlong({-1.0, 0.0, 0.0}, up);
+        break;
+    case StandardView::Rear:
+        d->scene->lookAlong({0.0, -1.0, 0.0}, up);
+        break;
+    case StandardView::Bottom:
+        d->scene->lookAlong({0.0, 0.0, 1.0}, {0.0, -1.0, 0.0});
+        break;
+    case StandardView::Left:
+        d->scene->lookAlong({1.0, 0.0, 0.0}, up);
+        break;
+    }
+    rerender();
+}
+
+double SceneView::scaleBarLength() const {
+    return d->barLength;
+}
+
+double SceneView::scaleBarPixels() const {
+    return d->overlay->scaleBarPixels();
+}
+
+QString SceneView::scaleBarText() const {
+    return d->overlay->scaleBarText();
+}
+
+bool SceneView::hasOrientationTriad() const {
+    return d->triad != nullptr && d->triad->GetActors()->GetNumberOfItems() > 0;
+}
+
+bool SceneView::showPatchLabels() const {
+    return d->showLabels;
+}
+
+QStringList SceneView::patchLabelTexts() const {
+    QStringList texts;
+    for (const ViewOverlay::Label& label : d->overlay->labels()) {
+        texts << label.text;
+    }
+    return texts;
+}
+
+void SceneView::setShowPatchLabels(bool show) {
+    d->showLabels = show;
+    if (!show) {
+        d->overlay->setLabels({});
+    }
+    rerender();
+}
+
+void SceneView::setPreviewLines(const std::vector<std::vector<model::Vec3>>& lines) {
+    if (d->kind != Kind::Spatial) {
+        return;
+    }
+    d->previewLines = static_cast<int>(lines.size());
+    d->scene->setPreviewLines(lines);
+    rerender();
+}
+
+int SceneView::previewLineCount() const {
+    return d->previewLines;
+}
+
+void SceneView::syncTriadCamera() {
+    vtkCamera* main = d->renderer->GetActiveCamera();
+    vtkCamera* camera = d->triad->GetActiveCamera();
+    double direction[3];
+    main->GetDirectionOfProjection(direction);
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetPosition(-direction[0], -direction[1], -direction[2]);
+    camera->SetViewUp(main->GetViewUp());
+    d->triad->ResetCamera();
+    const int* size = d->gl->renderWindow()->GetSize();
+    if (size[0] > 0 && size[1] > 0) {
+        const double side = kTriadSize * d->gl->effectiveDevicePixelRatio();
+        d->triad->SetViewport(0.0, 0.0, std::min(1.0, side / size[0]),
+                              std::min(1.0, side / size[1]));
+    }
+}
+
+void SceneView::updateOverlay() {
+    const double dpr = d->gl->effectiveDevicePixelRatio();
+    const double perMm = d->scene->pixelsPerUnit() / dpr;
+    if (perMm > 0.0 && std::isfinite(perMm) && !d->scene->scenes().empty()) {
+        d->barLength = niceLength(perMm, kMaxScaleBar);
+        d->overlay->setScaleBar(d->barLength * perMm, lengthText(d->barLength));
+    } else {
+        d->barLength = 0.0;
+        d->overlay->setScaleBar(0.0, QString());
+    }
+    std::vector<ViewOverlay::Label> labels;
+    if (d->showLabels) {
+        for (const LabelAnchor& anchor : d->anchors) {
+            const model::Vec3 display = d->scene->toDisplay(anchor.point);
+            if (d->kind == Kind::Spatial) {
+                // In 3D a number is written only where its patch is seen, not through others.
+                const std::optional<Pick> seen = d->scene->faceAt(display.x, display.y);
+                if (!seen || seen->surface != anchor.surface || seen->id != anchor.face) {
+                    continue;
+                }
+            }
+            labels.push_back({QPointF(display.x / dpr, (d->deviceHeight() - 1.0 - display.y) / dpr),
+                              QString::number(anchor.face)});
+        }
+    }
+    d->overlay->setLabels(std::move(labels));
+}
+
 void SceneView::rerender() {
     d->gl->requestRender();
 }
@@ -214,19 +467,18 @@ void SceneView::rebuild(bool geometryOnly) {
     if (d->document != nullptr) {
         d->builtRevision = d->document->revision();
         const auto& surfaces = d->document->project().surfaces;
-        double x0 = 0.0;
-        for (std::size_t i = 0; i < surfaces.size(); ++i) {
+        if (d->kind == Kind::Development) {
+            // The cutting pattern lays out every surface's pieces at once.
+            DevelopmentScenes development = buildDevelopmentScenes(d->document->project());
+            scenes = std::move(development.scenes);
+            for (int i : development.invalidSurfaces) {
+                d->problem = tr("Surface %1 is not valid and is not shown.").arg(i + 1);
+                geometryOnly = false;
+            }
+        }
+        for (std::size_t i = 0; i < surfaces.size() && d->kind == Kind::Spatial; ++i) {
             try {
-                if (d->kind == Kind::Spatial) {
-                    scenes.push_back(buildSpatialScene(surfaces[i], static_cast<int>(i)));
-                } else {
-                    scenes.push_back(buildDevelopmentScene(surfaces[i], static_cast<int>(i), x0));
-                    // Developments of several surfaces lie side by side with a gap.
-                    const auto [lo, hi] = sceneBounds(scenes.back());
-                    if (std::isfinite(hi.x)) {
-                        x0 = hi.x + 0.1 * std::max(hi.x - lo.x, hi.y - lo.y);
-                    }
-                }
+                scenes.push_back(buildSpatialScene(surfaces[i], static_cast<int>(i)));
             } catch (const std::exception&) {
                 // An invalid surface (e.g. mid-way through an edit) is skipped, not fatal.
                 d->problem = tr("Surface %1 is not valid and is not shown.").arg(i + 1);
@@ -234,6 +486,7 @@ void SceneView::rebuild(bool geometryOnly) {
             }
         }
     }
+    d->anchors = labelAnchors(scenes);
     d->scene->setScenes(std::move(scenes), geometryOnly);
     d->scene->setSelection(d->selection ? d->selection->picks() : std::set<Pick>{});
     rerender();
@@ -275,22 +528,22 @@ QString SceneView::describe(const Pick& pick) const {
         QString type;
         switch (surface.faceType(pick.id)) {
         case model::FaceType::StripSRSR:
-            type = tr("SRSR strip");
+            type = tr("strip (SRSR)");
             break;
         case model::FaceType::StripSRS:
-            type = tr("SRS strip");
+            type = tr("pointed strip (SRS)");
             break;
         case model::FaceType::ConeSRR:
-            type = tr("SRR cone");
+            type = tr("cone (SRR)");
             break;
         case model::FaceType::Planar:
-            type = tr("planar polygon");
+            type = tr("planar patch");
             break;
         case model::FaceType::Invalid:
-            type = tr("invalid face");
+            type = tr("invalid patch");
             break;
         }
-        text = tr("face %1 (%2)").arg(pick.id).arg(type);
+        text = tr("patch %1 (%2)").arg(pick.id).arg(type);
         break;
     }
     }
@@ -320,6 +573,9 @@ bool SceneView::eventFilter(QObject* watched, QEvent* event) {
         return QWidget::eventFilter(watched, event);
     }
     switch (event->type()) {
+    case QEvent::Resize:
+        d->overlay->setGeometry(d->gl->rect());
+        break;
     case QEvent::MouseButtonPress: {
         auto* me = static_cast<QMouseEvent*>(event);
         if (me->button() != Qt::LeftButton) {

@@ -7,6 +7,7 @@
 #include <QImage>
 #include <QPoint>
 #include <QString>
+#include <QStringList>
 #include <QWidget>
 
 #include <memory>
@@ -60,11 +61,36 @@ public:
     // invalid surface), or empty.
     QString problem() const;
 
+    // Standard directions of the 3D view (z up; front looks along +y). The development view
+    // always looks straight down at its plane and only fits.
+    enum class StandardView { Isometric, Front, Top, Right, Rear, Bottom, Left };
+    void setStandardView(StandardView view);
+
+    // The scale bar drawn in the lower right corner: its length in mm, on screen (logical
+    // pixels) and its text ("50 mm"); 0 and empty before the first render. In the 3D view it
+    // holds at the point the camera turns about.
+    double scaleBarLength() const;
+    double scaleBarPixels() const;
+    QString scaleBarText() const;
+    // The 3D view draws an orientation triad (x red, y green, z blue) in its lower left.
+    bool hasOrientationTriad() const;
+    bool showPatchLabels() const;
+    // The patch numbers drawn (the visible ones), in the order of the patches.
+    QStringList patchLabelTexts() const;
+    // The number of preview lines shown.
+    int previewLineCount() const;
+
 public slots:
     void fitAll();
+    // The starting camera (3D: from the front right and above), fitted to the design.
+    void resetView();
+    void setShowPatchLabels(bool show);
+    // Shows the lines an edit would add before it is made (3D scene coordinates; the
+    // development view ignores them). An empty list removes the preview.
+    void setPreviewLines(const std::vector<std::vector<model::Vec3>>& lines);
 
 signals:
-    // What the mouse is over, e.g. "vertex 12", "edge 7 (S, crease)", "face 3 (SRSR strip)";
+    // What the mouse is over, e.g. "vertex 12", "edge 7 (S, crease)", "patch 3 (strip (SRSR))";
     // empty over nothing.
     void hoverChanged(const QString& text);
 
@@ -87,6 +113,9 @@ private:
     void rebuild(bool geometryOnly);
     QString describe(const document::Pick& pick) const;
     void selectInRectangle(const QRect& rect, bool add);
+    // After each render: scale bar and patch labels for the camera just drawn.
+    void updateOverlay();
+    void syncTriadCamera();
 
     struct Private;
     std::unique_ptr<Private> d;

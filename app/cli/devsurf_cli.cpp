@@ -8,7 +8,9 @@
 #include "model/examples.h"
 #include "model/model_error.h"
 #include "model/surface_statistics.h"
+#include "pattern_commands.h"
 #include "solve_command.h"
+#include "vertex_commands.h"
 
 #include <QCoreApplication>
 #include <QString>
@@ -34,8 +36,13 @@ const char* const kUsage = R"(Usage: devsurf-cli COMMAND [OPTIONS]
 Commands:
   example NAME [--size K] -o FILE.devsurf
                       Write a built-in example (sheet, annulus, cylinder, mixed).
-  info FILE           Print surfaces, faces per type, spline spaces, control points,
-                      vertices and edges.
+  info FILE [--vertices] [--edges] [--json]
+                      Print surfaces, faces per type, spline spaces, control points,
+                      vertices and edges; --vertices lists every vertex (id, x y z,
+                      pinned, boundary), --edges every edge (id, R or S, its vertices,
+                      crease condition); --json prints those lists as JSON.
+  pin FILE --vertices IDS [--unpin] [--surface K] -o OUT.devsurf
+                      Pin vertices (the solver never moves them) or release them.
   validate FILE       Check every invariant of the model; list all problems.
   export-json FILE -o OUT.json [--samples N]
                       Write the interchange JSON (docs/interchange-format.md);
@@ -49,6 +56,17 @@ Commands:
                       vertices with the given ids (e.g. 0,4,7) where they are.
   bench [--json]      Run the solver benchmark (about 80 seconds): timings, flops, quality,
                       the rebuild baseline and Ceres on the paper's Fig. 17 models.
+  export FILE --format dxf|svg|pdf|fold [--sheet W,H | --paper A4|A3|Letter]
+         [--tolerance MM] [--splines] [--r12] [--seam MM] [--rulings] -o OUT
+                      Write the cutting pattern: pieces laid out on sheets of W x H mm
+                      (default 600,400) or of a paper's printable size; curves within
+                      MM (default 0.01); DXF as SPLINEs (--splines) or R12 (--r12); a seam
+                      allowance of MM; rulings as scoring lines. PDF prints 1:1 on the
+                      paper (default A4), tiled, after the fabrication report. FOLD
+                      always has the rulings (as flat edges, for folding simulators).
+  report FILE [--json] [--sheet W,H | --paper NAME] [--tolerance MM] [--seam MM]
+                      Print the fabrication report: per piece its sheet, size, area,
+                      largest isometry error, overlaps, and whether it fits the sheet.
 
 Options:
   -h, --help          Show this help.
@@ -166,11 +184,31 @@ std::string faceSummary(const model::SurfaceStatistics& stats) {
     return text + ")";
 }
 
-int commandInfo(const std::vector<std::string>& rest) {
+int commandInfo(const std::vector<std::string>& given) {
+    app::EntityListing listing;
+    std::vector<std::string> rest;
+    for (const std::string& arg : given) {
+        if (arg == "--vertices") {
+            listing.vertices = true;
+        } else if (arg == "--edges") {
+            listing.edges = true;
+        } else if (arg == "--json") {
+            listing.json = true;
+        } else {
+            rest.push_back(arg);
+        }
+    }
+    if (listing.json && !listing.vertices && !listing.edges) {
+        throw UsageError{"option '--json' goes with --vertices or --edges"};
+    }
     const Arguments args = parse(rest, {});
     expectPositionals(args, 1, "one project file");
     const std::string& path = args.positional[0];
     const model::Project project = io::loadProjectFile(QString::fromStdString(path));
+    if (listing.json) {
+        app::printEntities(project, listing, std::cout);
+        return kExitOk;
+    }
     std::cout << "File: " << path << "\n"
               << "Format version: " << io::kProjectFormatVersion << "\n"
               << "Units: " << project.units << "\n"
@@ -188,9 +226,32 @@ int commandInfo(const std::vector<std::string>& rest) {
         std::cout << "\n"
                   << "  Control points: " << stats.controlPoints << "\n"
                   << "  Vertices: " << stats.vertices << "\n"
-                  << "  Edges: " << stats.splineEdges << " S, " << stats.rulingEdges << " R\n";
+                  << "  Edges: " << stats.splineEdges << " S, " << stats.rulingEdges << " R\n"
+                  << "  Pinned vertices: " << surface.pinnedVertices().size() << "\n";
+    }
+    if (listing.vertices || listing.edges) {
+        app::printEntities(project, listing, std::cout);
     }
     return kExitOk;
+}
+
+int commandPin(const std::vector<std::string>& given) {
+    bool unpin = false;
+    std::vector<std::string> rest;
+    for (const std::string& arg : given) {
+        if (arg == "--unpin") {
+            unpin = true;
+        } else {
+            rest.push_back(arg);
+        }
+    }
+    const Arguments args = parse(rest, {"-o", "--vertices", "--surface"});
+    try {
+        return app::runPinCommand(args.positional, {args.options.begin(), args.options.end()},
+                                  unpin);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError{error.what()};
+    }
 }
 
 int commandValidate(const std::vector<std::string>& rest) {
@@ -267,6 +328,9 @@ int run(const std::vector<std::string>& args) {
     if (command == "validate") {
         return commandValidate(rest);
     }
+    if (command == "pin") {
+        return commandPin(rest);
+    }
     if (command == "export-json") {
         return commandExportJson(rest);
     }
@@ -278,6 +342,14 @@ int run(const std::vector<std::string>& args) {
         try {
             return app::runSolveCommand(args.positional,
                                         {args.options.begin(), args.options.end()});
+        } catch (const std::invalid_argument& error) {
+            throw UsageError{error.what()};
+        }
+    }
+    if (command == "export" || command == "report") {
+        try {
+            return command == "export" ? app::runExportPatternCommand(rest)
+                                       : app::runReportCommand(rest);
         } catch (const std::invalid_argument& error) {
             throw UsageError{error.what()};
         }
@@ -298,7 +370,7 @@ int run(const std::vector<std::string>& args) {
 } // namespace
 
 int main(int argc, char** argv) {
-    QCoreApplication app(argc, argv);
+    const auto application = devsurf::app::makeCliApplication(argc, argv);
     std::vector<std::string> args(argv + 1, argv + argc);
     try {
         return run(args);

@@ -24,7 +24,7 @@ QString description(const std::string& name) {
     if (name == "cylinder") {
         return ExampleDialog::tr("A closed cylinder of strips, size sectors around.");
     }
-    return ExampleDialog::tr("A strip, a pointed strip, a cone and a planar face; size "
+    return ExampleDialog::tr("A strip, a pointed strip, a cone and a planar patch; size "
                              "intervals per curve.");
 }
 

@@ -13,7 +13,7 @@ QString faceTypeText(model::FaceType type) {
     case model::FaceType::ConeSRR:
         return QCoreApplication::translate("FaceType", "cone (SRR)");
     case model::FaceType::Planar:
-        return QCoreApplication::translate("FaceType", "planar face");
+        return QCoreApplication::translate("FaceType", "planar patch");
     case model::FaceType::Invalid:
         break;
     }

@@ -1,6 +1,7 @@
 // DevSurf desktop application.
 
 #include "main_window.h"
+#include "translations.h"
 #include "views/vtk_opengl_widget.h"
 #include "workspace.h"
 
@@ -8,10 +9,8 @@
 #include <QCommandLineParser>
 #include <QFileInfo>
 #include <QIcon>
-#include <QLibraryInfo>
 #include <QLocale>
 #include <QTimer>
-#include <QTranslator>
 
 int main(int argc, char** argv) {
     // The VTK views need their OpenGL format before the application exists.
@@ -22,16 +21,7 @@ int main(int argc, char** argv) {
     QApplication::setApplicationVersion(QStringLiteral(DEVSURF_VERSION));
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/devsurf.svg")));
 
-    QTranslator qtTranslator;
-    if (qtTranslator.load(QLocale(), QStringLiteral("qtbase"), QStringLiteral("_"),
-                          QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
-        QApplication::installTranslator(&qtTranslator);
-    }
-    QTranslator translator;
-    if (translator.load(QLocale(), QStringLiteral("devsurf"), QStringLiteral("_"),
-                        QStringLiteral(":/i18n"))) {
-        QApplication::installTranslator(&translator);
-    }
+    devsurf::app::installTranslations(QLocale());
 
     QCommandLineParser parser;
     parser.setApplicationDescription(

@@ -1,12 +1,15 @@
 #include "main_window.h"
 
 #include "autosaver.h"
+#include "camera_actions.h"
+#include "help_dialogs.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "panels/patch_panel.h"
 #include "panels/properties_panel.h"
 #include "reactions/edit_reactions.h"
 #include "reactions/file_reactions.h"
+#include "reactions/pattern_reactions.h"
 #include "reactions/tool_reactions.h"
 #include "reactions/view_reactions.h"
 #include "views/development_view.h"
@@ -69,6 +72,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_workspace(new W
     updateTitle();
     updateCounts();
 
+    // What View ▸ Reset Layout returns to.
+    m_defaultLayout = saveState();
     QSettings settings;
     if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray())) {
         resize(1400, 860);
@@ -113,7 +118,9 @@ void MainWindow::createDocks() {
 void MainWindow::createMenus() {
     QToolBar* toolbar = addToolBar(tr("Main"));
     toolbar->setObjectName(QStringLiteral("MainToolBar"));
-    toolbar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    // Icons only: buttons keep their width when a text changes (Undo Move 3 vertices), and
+    // the whole bar fits a 1280 px wide window; the texts are in the tooltips.
+    toolbar->setToolButtonStyle(Qt::ToolButtonIconOnly);
 
     // File
     QMenu* file = menuBar()->addMenu(tr("&File"));
@@ -135,6 +142,7 @@ void MainWindow::createMenus() {
     QAction* exportJson = addAction(file, QStringLiteral("actionExportJson"),
                                     tr("&Export Interchange JSON…"), QKeySequence(tr("Ctrl+E")));
     new ExportJsonReaction(exportJson, m_workspace);
+    addCuttingPatternActions(file, m_workspace);
     file->addSeparator();
     QAction* quit = addAction(file, QStringLiteral("actionQuit"), tr("&Quit"), QKeySequence::Quit);
     connect(quit, &QAction::triggered, this, &QWidget::close);
@@ -178,20 +186,25 @@ void MainWindow::createMenus() {
         addAction(view, QStringLiteral("actionFitAll"), tr("&Fit All"), QKeySequence(tr("F")));
     connect(fit, &QAction::triggered, m_surfaceView, &views::SurfaceView::fitAll);
     connect(fit, &QAction::triggered, m_developmentView, &views::DevelopmentView::fitAll);
+    auto* camera = new CameraActions(view, m_surfaceView, m_developmentView, this);
+    view->addSeparator();
+    QAction* resetLayout =
+        addAction(view, QStringLiteral("actionResetLayout"), tr("Reset &Layout"));
+    connect(resetLayout, &QAction::triggered, this, &MainWindow::resetLayout);
     view->addSeparator();
 
     // Tools
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
+    tools->setToolTipsVisible(true);
     QAction* relabel = addAction(tools, QStringLiteral("actionRelabel"),
                                  tr("&Relabel Edge (R ↔ S)"), QKeySequence(tr("Ctrl+L")));
     new RelabelEdgeReaction(relabel, m_workspace);
-    QAction* subdivide =
-        addAction(tools, QStringLiteral("actionSubdivide"), tr("&Subdivide Strip with a Crease…"),
-                  QKeySequence(tr("Ctrl+D")));
-    new SubdivideStripReaction(subdivide, m_workspace);
-    QAction* split = addAction(tools, QStringLiteral("actionSplitAtRuling"),
-                               tr("Split at &Ruling…"), QKeySequence(tr("Ctrl+R")));
-    new SplitAtRulingReaction(split, m_workspace);
+    QAction* subdivide = addAction(tools, QStringLiteral("actionSubdivide"), tr("Add &Crease…"),
+                                   QKeySequence(tr("Ctrl+D")));
+    new SubdivideStripReaction(subdivide, m_workspace, m_surfaceView);
+    QAction* split = addAction(tools, QStringLiteral("actionSplitAtRuling"), tr("Add R&uling…"),
+                               QKeySequence(tr("Ctrl+R")));
+    new SplitAtRulingReaction(split, m_workspace, m_surfaceView);
     QAction* refine = addAction(tools, QStringLiteral("actionRefine"), tr("Re&fine Curves"),
                                 QKeySequence(tr("Ctrl+Shift+R")));
     new RefineCurvesReaction(refine, m_workspace);
@@ -202,6 +215,19 @@ void MainWindow::createMenus() {
 
     // Help
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    QAction* manual = addAction(help, QStringLiteral("actionManual"), tr("&User Manual"),
+                                QKeySequence::HelpContents);
+    connect(manual, &QAction::triggered, this, [this] {
+        auto* window = new ManualWindow(this);
+        window->show();
+    });
+    QAction* shortcuts =
+        addAction(help, QStringLiteral("actionShortcuts"), tr("&Keyboard Shortcuts"));
+    connect(shortcuts, &QAction::triggered, this, [this] {
+        auto* dialog = new ShortcutsDialog(this);
+        dialog->show();
+    });
+    help->addSeparator();
     QAction* about = addAction(help, QStringLiteral("actionAbout"), tr("&About DevSurf"));
     connect(about, &QAction::triggered, this, [this] {
         QMessageBox::about(this, tr("About DevSurf"),
@@ -216,6 +242,21 @@ void MainWindow::createMenus() {
         view->addAction(dock->toggleViewAction());
     }
 
+    const std::pair<QAction*, const char*> icons[] = {{newAction, "new"},
+                                                      {open, "open"},
+                                                      {save, "save"},
+                                                      {undo, "undo"},
+                                                      {redo, "redo"},
+                                                      {relabel, "relabel"},
+                                                      {subdivide, "subdivide"},
+                                                      {split, "split"},
+                                                      {refine, "refine"},
+                                                      {move, "move"},
+                                                      {polygons, "control-polygon"},
+                                                      {fit, "fit-all"}};
+    for (const auto& [action, icon] : icons) {
+        action->setIcon(actionIcon(QString::fromLatin1(icon)));
+    }
     for (QAction* a : {newAction, open, save}) {
         toolbar->addAction(a);
     }
@@ -223,12 +264,38 @@ void MainWindow::createMenus() {
     toolbar->addAction(undo);
     toolbar->addAction(redo);
     toolbar->addSeparator();
-    for (QAction* a : {relabel, subdivide, split, move}) {
+    for (QAction* a : {relabel, subdivide, split, refine, move}) {
         toolbar->addAction(a);
     }
     toolbar->addSeparator();
     toolbar->addAction(polygons);
+    toolbar->addAction(camera->patchLabelsAction());
+    toolbar->addSeparator();
     toolbar->addAction(fit);
+    toolbar->addActions(camera->toolbarActions());
+    // A tooltip names the command and its key; those of the tools explain themselves.
+    for (QAction* a : toolbar->actions()) {
+        if (!a->isSeparator() && !a->shortcut().isEmpty() &&
+            a->toolTip() == QString(a->text()).remove(QLatin1Char('&')).remove(QChar(0x2026))) {
+            a->setToolTip(
+                tr("%1 (%2)").arg(a->toolTip(), a->shortcut().toString(QKeySequence::NativeText)));
+        }
+    }
+}
+
+void MainWindow::resetLayout() {
+    restoreState(m_defaultLayout);
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) {
+        dock->show();
+    }
+    for (QToolBar* bar : findChildren<QToolBar*>()) {
+        bar->show();
+    }
+    if (QAction* both = action(QStringLiteral("actionViewBoth"))) {
+        both->trigger();
+    }
+    const int width = m_splitter->width();
+    m_splitter->setSizes({width * 3 / 5, width - width * 3 / 5});
 }
 
 void MainWindow::updateTitle() {
@@ -247,11 +314,12 @@ void MainWindow::updateCounts() {
         controlPoints += surface.controlPointCount();
     }
     const auto selected = m_workspace->selection()->picks().size();
-    m_countsLabel->setText(tr("%1 surfaces · %2 patches · %3 control points · %4 selected")
-                               .arg(surfaces.size())
-                               .arg(faces)
-                               .arg(controlPoints)
-                               .arg(selected));
+    m_countsLabel->setText(
+        QStringList{tr("%n surface(s)", nullptr, static_cast<int>(surfaces.size())),
+                    tr("%n patch(es)", nullptr, static_cast<int>(faces)),
+                    tr("%n control point(s)", nullptr, static_cast<int>(controlPoints)),
+                    tr("%n selected", nullptr, static_cast<int>(selected))}
+            .join(QStringLiteral(" · ")));
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

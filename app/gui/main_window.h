@@ -43,6 +43,8 @@ private:
     void createDocks();
     void updateTitle();
     void updateCounts();
+    // View ▸ Reset Layout: docks, toolbar and both views as at the first start.
+    void resetLayout();
     QAction* addAction(QMenu* menu, const QString& name, const QString& text,
                        const QKeySequence& shortcut = {});
 
@@ -54,6 +56,7 @@ private:
     PropertiesPanel* m_propertiesPanel = nullptr;
     QLabel* m_countsLabel = nullptr;
     QLabel* m_hoverLabel = nullptr;
+    QByteArray m_defaultLayout;
 };
 
 } // namespace devsurf::app

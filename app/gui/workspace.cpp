@@ -17,6 +17,8 @@
 #include <QSettings>
 #include <QUndoStack>
 
+#include <algorithm>
+
 namespace devsurf::app {
 
 namespace {
@@ -63,8 +65,26 @@ bool Workspace::apply(document::CommandOrError edit, const QString& failureTitle
 
 Workspace::~Workspace() = default;
 
-void Workspace::showError(const QString& title, const QString& sentence) const {
-    QMessageBox::warning(m_window, title, sentence);
+void Workspace::showError(const QString& title, const QString& sentence,
+                          const QStringList& details) const {
+    if (details.isEmpty()) {
+        QMessageBox::warning(m_window, title, sentence);
+        return;
+    }
+    // The first problems in the message itself, every one of them under "Show Details".
+    constexpr int kShown = 8;
+    QString text = sentence + QStringLiteral("\n");
+    for (int i = 0; i < std::min<int>(kShown, static_cast<int>(details.size())); ++i) {
+        text += QStringLiteral("\n• ") + details[i];
+    }
+    if (details.size() > kShown) {
+        text += QStringLiteral("\n") +
+                tr("… and %n more problem(s).", nullptr, static_cast<int>(details.size()) - kShown);
+    }
+    QMessageBox box(QMessageBox::Warning, title, text, QMessageBox::Ok, m_window);
+    box.setObjectName(QStringLiteral("errorBox"));
+    box.setDetailedText(details.join(QLatin1Char('\n')));
+    box.exec();
 }
 
 QString Workspace::fileDialogDirectory() const {
@@ -100,7 +120,11 @@ bool Workspace::open(const QString& path) {
         emit statusMessage(tr("Opened %1").arg(QFileInfo(absolute).fileName()));
         return true;
     } catch (const io::FileError& error) {
-        showError(tr("Cannot open file"), QString::fromStdString(error.what()));
+        QStringList details;
+        for (const std::string& problem : error.details()) {
+            details << QString::fromStdString(problem);
+        }
+        showError(tr("Cannot open file"), QString::fromStdString(error.what()), details);
         return false;
     }
 }

@@ -37,7 +37,10 @@ public:
     bool saveAs();
     bool saveTo(const QString& path); // shows an error dialog and returns false on failure
     void newFromExample(const QString& name, int size);
-    void showError(const QString& title, const QString& sentence) const;
+    // A message box with the sentence; details (e.g. every problem of a refused file) are
+    // listed below it.
+    void showError(const QString& title, const QString& sentence,
+                   const QStringList& details = {}) const;
     // Pushes an edit, or tells the user in a dialog why it was refused. Returns whether it was
     // applied.
     bool apply(document::CommandOrError edit, const QString& failureTitle);

@@ -3,11 +3,14 @@
 #include "test_registry.h"
 
 #include <QFile>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <set>
 
 using namespace devsurf;
 
@@ -50,6 +53,59 @@ private slots:
         run = cli({"--version"});
         QCOMPARE(run.exitCode, 0);
         QVERIFY(run.out.startsWith("devsurf-cli "));
+    }
+
+    void pinAndListVertices() {
+        const QString file = path("pin.devsurf");
+        QCOMPARE(cli({"example", "sheet", "-o", file}).exitCode, 0);
+        const QString pinned = path("pinned.devsurf");
+        Run run = cli({"pin", file, "--vertices", "0,3,12", "-o", pinned});
+        QCOMPARE(run.exitCode, 0);
+        QCOMPARE(io::loadProjectFile(pinned).surfaces[0].pinnedVertices(),
+                 (std::set<model::VertexId>{0, 3, 12}));
+        run = cli({"pin", pinned, "--vertices", "3", "--unpin", "-o", pinned});
+        QCOMPARE(run.exitCode, 0);
+        QCOMPARE(io::loadProjectFile(pinned).surfaces[0].pinnedVertices(),
+                 (std::set<model::VertexId>{0, 12}));
+
+        // The listing as JSON: every vertex with its position, pin and boundary flag.
+        run = cli({"info", pinned, "--vertices", "--edges", "--json"});
+        QCOMPARE(run.exitCode, 0);
+        const QJsonObject surface =
+            QJsonDocument::fromJson(run.out.toUtf8()).object()["surfaces"].toArray()[0].toObject();
+        const QJsonArray vertices = surface["vertices"].toArray();
+        QCOMPARE(vertices.size(), 16);
+        int pins = 0;
+        int interior = 0;
+        for (const QJsonValue& v : vertices) {
+            pins += v["pinned"].toBool() ? 1 : 0;
+            interior += v["boundary"].toBool() ? 0 : 1;
+        }
+        QCOMPARE(pins, 2);
+        QCOMPARE(interior, 4); // the 3 × 3 sheet has a 2 × 2 block of interior vertices
+        QCOMPARE(vertices[15]["position"].toArray()[0].toDouble(), 300.0);
+        const QJsonArray edges = surface["edges"].toArray();
+        QCOMPARE(edges.size(), 24);
+        int creases = 0;
+        for (const QJsonValue& e : edges) {
+            creases += e["kind"].toString() == "crease" ? 1 : 0;
+        }
+        QCOMPARE(creases, 6); // two interior curves of three S-edges each
+        run = cli({"info", pinned, "--vertices"});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY(run.out.contains("    0 0 0 0 pinned boundary\n"));
+        QVERIFY(run.out.contains("    5 100 100 0 free interior\n"));
+
+        // Bad ids: one sentence naming them, the output untouched.
+        run = cli({"pin", file, "--vertices", "0,99", "-o", path("never.devsurf")});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY(run.err.contains("99"));
+        QCOMPARE(run.err.count('\n'), 1);
+        QVERIFY(!QFile::exists(path("never.devsurf")));
+        run = cli({"pin", file, "--vertices", "a,b", "-o", path("never.devsurf")});
+        QCOMPARE(run.exitCode, 1);
+        QCOMPARE(cli({"pin", file, "-o", path("never.devsurf")}).exitCode, 1);
+        QCOMPARE(cli({"info", file, "--json"}).exitCode, 1);
     }
 
     void badUsageExitsWithOne() {
@@ -148,6 +204,38 @@ private slots:
         QVERIFY(run.err.contains("face 0 is labelled RRSR"));
         QVERIFY(run.err.contains("face 3 is labelled"));
         QCOMPARE(cli({"info", file}).exitCode, 2);
+    }
+
+    void allZeroCoordinatesAreRefusedEverywhere() {
+        // A sound archive and checksum around a design whose every coordinate is zero.
+        model::Project project = model::makeExample("sheet", 2);
+        model::CompositeSurface& surface = project.surfaces[0];
+        const model::CompositeSurface original = surface;
+        for (const auto& [id, p] : original.vertices()) {
+            surface.moveVertex(id, {0, 0, 0});
+        }
+        for (const auto& [id, record] : original.edges()) {
+            if (record.isSpline()) {
+                surface.setControlPoints(
+                    id, std::vector<model::Vec3>(record.controlPoints.size(), model::Vec3{}));
+            }
+        }
+        const QString file = path("zero.devsurf");
+        QFile f(file);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        const std::string bytes = io::encodeProject(project);
+        f.write(bytes.data(), static_cast<qint64>(bytes.size()));
+        f.close();
+        const Run run = cli({"validate", file});
+        QCOMPARE(run.exitCode, 2);
+        const QString first = run.err.section('\n', 0, 0);
+        QVERIFY2(first.contains("zero.devsurf"), qPrintable(first));
+        QVERIFY(run.err.contains("face 0 has zero area."));
+        QVERIFY(run.err.contains("has zero length."));
+        const Run solve = cli({"solve", file, "-o", path("zero-solved.devsurf")});
+        QCOMPARE(solve.exitCode, 2);
+        QVERIFY(solve.err.contains("zero.devsurf"));
+        QVERIFY(!QFile::exists(path("zero-solved.devsurf")));
     }
 };
 

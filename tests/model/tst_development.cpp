@@ -103,6 +103,27 @@ private slots:
         const Development dev = unfoldSampledMesh(mesh);
         QVERIFY(dev.closureError > 1e-3);
     }
+
+    void liftedAnnulusHasNoPeriod() {
+        // One vertex 1 mm out of the plane: the ring no longer closes exactly, but what is left
+        // over varies along the seam; it is no translation to read the development modulo.
+        for (const VertexId lifted : {VertexId(0), VertexId(20)}) {
+            CompositeSurface annulus = makeExample("annulus").surfaces[0];
+            annulus.moveVertex(lifted, annulus.position(lifted) + Vec3(0, 0, 1));
+            const Development dev = unfoldSampledMesh(sampleSurface(annulus, 8));
+            QVERIFY(!dev.period.has_value());
+            double minX = 1e300, maxX = -1e300, minY = 1e300, maxY = -1e300;
+            for (const Vec2& p : dev.vertices) {
+                minX = std::min(minX, p.x);
+                maxX = std::max(maxX, p.x);
+                minY = std::min(minY, p.y);
+                maxY = std::max(maxY, p.y);
+            }
+            QVERIFY(maxX - minX > 450 && maxY - minY > 450);
+        }
+        // The cylinder keeps its period.
+        QVERIFY(unfoldSampledMesh(sampleSurface(makeExample("cylinder").surfaces[0], 8)).period);
+    }
 };
 
 DEVSURF_REGISTER_TEST(TstDevelopment);

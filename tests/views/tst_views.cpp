@@ -332,9 +332,14 @@ private slots:
         QCOMPARE(views.spatial->targetPointCloud().size(), cloud.size());
         QVERIFY(views.spatial->grabImage() != base);
 
-        // The palette is fixed and distinguishes neighbouring ids.
-        QCOMPARE(SurfaceView::patchColor(3), SurfaceView::patchColor(3));
-        QVERIFY(SurfaceView::patchColor(0) != SurfaceView::patchColor(1));
+        // The palette distinguishes every pair among the first ids, which neighbouring patches
+        // of the examples carry.
+        for (devsurf::model::FaceId a = 0; a < 6; ++a) {
+            for (devsurf::model::FaceId b = a + 1; b < 6; ++b) {
+                QVERIFY2(SurfaceView::patchColor(a) != SurfaceView::patchColor(b),
+                         qPrintable(QStringLiteral("patches %1 and %2").arg(a).arg(b)));
+            }
+        }
     }
 
     void geometryChangeUpdatesImage() {

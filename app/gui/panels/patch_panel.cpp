@@ -5,8 +5,11 @@
 
 #include <QHeaderView>
 #include <QItemSelectionModel>
+#include <QScrollBar>
 #include <QTreeView>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace devsurf::app {
 
@@ -18,6 +21,8 @@ PatchPanel::PatchPanel(document::Document* document, document::Selection* select
     m_tree->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_tree->setUniformRowHeights(true);
     m_tree->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_tree->header()->setStretchLastSection(false);
+    m_tree->setTextElideMode(Qt::ElideNone);
     m_tree->expandAll();
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -30,6 +35,17 @@ PatchPanel::PatchPanel(document::Document* document, document::Selection* select
             &PatchPanel::treeSelectionChanged);
     connect(selection, &document::Selection::selectionChanged, this,
             &PatchPanel::documentSelectionChanged);
+}
+
+QSize PatchPanel::sizeHint() const {
+    int width = 0;
+    for (int column = 0; column < m_model->columnCount(); ++column) {
+        width += std::max(static_cast<const QAbstractItemView*>(m_tree)->sizeHintForColumn(column),
+                          m_tree->header()->sectionSizeHint(column));
+    }
+    width += m_tree->indentation() + 2 * m_tree->frameWidth() +
+             m_tree->verticalScrollBar()->sizeHint().width();
+    return {std::max(width, QWidget::sizeHint().width()), QWidget::sizeHint().height()};
 }
 
 void PatchPanel::treeSelectionChanged() {

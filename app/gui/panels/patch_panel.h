@@ -22,6 +22,9 @@ public:
 
     QTreeView* treeView() const { return m_tree; }
     PatchTreeModel* model() const { return m_model; }
+    // Wide enough for every column's full text (the dock starts at this width), so that no
+    // language's patch names or types are cut off.
+    QSize sizeHint() const override;
 
 private:
     void treeSelectionChanged();

@@ -117,7 +117,7 @@ QVariant PatchTreeModel::data(const QModelIndex& index, int role) const {
         if (role == Qt::DisplayRole) {
             return index.column() == 0
                        ? QString::fromStdString(surface.name())
-                       : tr("%n patches", nullptr, static_cast<int>(surface.faces().size()));
+                       : tr("%n patch(es)", nullptr, static_cast<int>(surface.faces().size()));
         }
         return {};
     }

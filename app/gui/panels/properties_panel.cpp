@@ -73,19 +73,19 @@ void PropertiesPanel::refresh() {
             faces += surface.faces().size();
             points += surface.controlPointCount();
         }
-        text = tr("Nothing selected.<br>%1 patches, %2 control points.<br><i>Click a vertex, "
-                  "edge or patch to select it; Shift-click adds to the selection.</i>")
-                   .arg(faces)
-                   .arg(points);
+        text = tr("Nothing selected.<br>%1, %2.<br><i>Click a vertex, edge or patch to select "
+                  "it; Shift-click adds to the selection.</i>")
+                   .arg(tr("%n patch(es)", nullptr, static_cast<int>(faces)),
+                        tr("%n control point(s)", nullptr, static_cast<int>(points)));
     } else if (picks.size() > 1) {
         int counts[3] = {0, 0, 0};
         for (const auto& pick : picks) {
             ++counts[static_cast<int>(pick.kind)];
         }
-        text = tr("%1 vertices, %2 edges, %3 patches selected.")
-                   .arg(counts[0])
-                   .arg(counts[1])
-                   .arg(counts[2]);
+        text =
+            tr("Selected: %1, %2, %3.")
+                .arg(tr("%n vertex(es)", nullptr, counts[0]), tr("%n edge(s)", nullptr, counts[1]),
+                     tr("%n patch(es)", nullptr, counts[2]));
     } else {
         const document::Pick pick = *picks.begin();
         if (pick.surface < 0 || pick.surface >= static_cast<int>(surfaces.size())) {
@@ -114,9 +114,9 @@ void PropertiesPanel::refresh() {
                            .arg(edge.from)
                            .arg(edge.to);
                 if (edge.isSpline()) {
-                    text += tr("Spline curve (S), %1, %2 control points.<br>")
-                                .arg(spaceText(edge.space))
-                                .arg(edge.controlPoints.size());
+                    text += tr("Spline curve (S), %1, %n control point(s).<br>", nullptr,
+                               static_cast<int>(edge.controlPoints.size()))
+                                .arg(spaceText(edge.space));
                     text += faces.size() == 2 ? tr("A crease between patches %1 and %2; "
                                                    "condition: %3.")
                                                     .arg(faces[0])
@@ -135,11 +135,12 @@ void PropertiesPanel::refresh() {
             break;
         case document::Pick::Kind::Face:
             if (surface.hasFace(pick.id)) {
-                text = tr("<b>Patch %1</b>: %2<br>Edge labels along the patch: %3<br>%4 corners.")
+                text = tr("<b>Patch %1</b>: %2<br>Edge labels along the patch: %3<br>%n "
+                          "corner(s).",
+                          nullptr, static_cast<int>(surface.faceLoop(pick.id).size()))
                            .arg(pick.id)
                            .arg(faceTypeText(surface.faceType(pick.id)))
-                           .arg(QString::fromStdString(surface.labelString(pick.id)))
-                           .arg(surface.faceLoop(pick.id).size());
+                           .arg(QString::fromStdString(surface.labelString(pick.id)));
             }
             break;
         }

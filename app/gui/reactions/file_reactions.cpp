@@ -12,6 +12,8 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMenu>
+#include <QMessageBox>
+#include <QPushButton>
 
 namespace devsurf::app {
 
@@ -74,6 +76,33 @@ void SaveAsReaction::onTriggered() {
     workspace()->saveAs();
 }
 
+QString ExportJsonReaction::jsonPathFor(const QString& chosen, QWidget* window) {
+    if (chosen.isEmpty()) {
+        return {};
+    }
+    const QFileInfo info(chosen);
+    const QString suffix = info.suffix();
+    if (suffix.compare(QStringLiteral("json"), Qt::CaseInsensitive) == 0) {
+        return chosen;
+    }
+    if (suffix.isEmpty()) {
+        return chosen + QStringLiteral(".json");
+    }
+    // Another format's extension: JSON written into "pattern.svg" would fool every program
+    // that opens it, so the name is changed only with the user's consent.
+    const QString renamed = info.dir().filePath(info.completeBaseName() + QStringLiteral(".json"));
+    QMessageBox box(QMessageBox::Question, tr("Export Interchange JSON"),
+                    tr("“%1” ends in .%2, but this command writes interchange JSON. Export to "
+                       "“%3” instead?")
+                        .arg(info.fileName(), suffix, QFileInfo(renamed).fileName()),
+                    QMessageBox::Cancel, window);
+    box.setObjectName(QStringLiteral("jsonExtensionBox"));
+    QPushButton* rename = box.addButton(tr("Export as .json"), QMessageBox::AcceptRole);
+    box.setDefaultButton(rename);
+    box.exec();
+    return box.clickedButton() == rename ? renamed : QString();
+}
+
 void ExportJsonReaction::onTriggered() {
     const document::Document* doc = workspace()->document();
     const QString base =
@@ -82,6 +111,7 @@ void ExportJsonReaction::onTriggered() {
         workspace()->window(), tr("Export Interchange JSON"),
         QDir(workspace()->fileDialogDirectory()).filePath(base + QStringLiteral(".json")),
         tr("Interchange JSON (*.json)"));
+    path = jsonPathFor(path, workspace()->window());
     if (path.isEmpty()) {
         return;
     }

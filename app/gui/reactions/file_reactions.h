@@ -2,6 +2,8 @@
 
 #include "reaction.h"
 
+#include <QString>
+
 class QMenu;
 
 namespace devsurf::app {
@@ -59,6 +61,11 @@ class ExportJsonReaction : public Reaction {
     Q_OBJECT
 public:
     using Reaction::Reaction;
+
+    // The file the interchange JSON goes to for a name the user chose: without an extension
+    // .json is added; under another extension (.svg, .dxf, ...) the user is asked whether to
+    // write NAME.json instead. Empty when the user cancels.
+    static QString jsonPathFor(const QString& chosen, QWidget* window);
 
 protected:
     void onTriggered() override;

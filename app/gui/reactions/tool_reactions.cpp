@@ -1,6 +1,8 @@
 #include "tool_reactions.h"
 
+#include "../edit_preview.h"
 #include "../move_dialog.h"
+#include "../position_dialog.h"
 #include "../workspace.h"
 #include "model/document/commands/command_or_error.h"
 #include "model/document/commands/move_vertices_command.h"
@@ -10,10 +12,12 @@
 #include "model/document/commands/subdivide_strip_command.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
+#include "model/model_error.h"
 #include "model/strip.h"
+#include "model/topology_edits.h"
+#include "views/scene_view.h"
 
 #include <QAction>
-#include <QInputDialog>
 #include <QMessageBox>
 
 namespace devsurf::app {
@@ -79,19 +83,14 @@ RelabelEdgeReaction::RelabelEdgeReaction(QAction* action, Workspace* workspace)
     followDocumentAndSelection();
 }
 
-void RelabelEdgeReaction::updateEnableState() {
-    const auto edges = selected(workspace(), Pick::Kind::Edge);
-    explainDisabled(action(), edges.has_value(),
-                    tr("Turn the selected edges from rulings (R) into spline curves (S) or back. "
-                       "Select edges of one surface first."));
-}
+namespace {
 
-void RelabelEdgeReaction::onTriggered() {
-    const auto edges = selected(workspace(), Pick::Kind::Edge);
-    const model::CompositeSurface* surface =
-        edges ? surfaceOf(workspace(), edges->surface) : nullptr;
+// The relabelling of the selected edges (each R ↔ S), if edges of one surface are selected.
+std::optional<document::CommandOrError> relabelSelection(Workspace* workspace) {
+    const auto edges = selected(workspace, Pick::Kind::Edge);
+    const model::CompositeSurface* surface = edges ? surfaceOf(workspace, edges->surface) : nullptr;
     if (surface == nullptr) {
-        return;
+        return std::nullopt;
     }
     std::vector<std::pair<model::EdgeId, model::EdgeLabel>> changes;
     for (model::EdgeId edge : edges->ids) {
@@ -100,20 +99,41 @@ void RelabelEdgeReaction::onTriggered() {
                                                                       : model::EdgeLabel::Spline);
         }
     }
-    workspace()->apply(
-        document::RelabelEdgeCommand::create(*workspace()->document(), edges->surface, changes),
-        tr("Cannot relabel"));
+    return document::RelabelEdgeCommand::create(*workspace->document(), edges->surface, changes);
 }
 
-SubdivideStripReaction::SubdivideStripReaction(QAction* action, Workspace* workspace)
-    : Reaction(action, workspace) {
+} // namespace
+
+void RelabelEdgeReaction::updateEnableState() {
+    // The edit is tried on a copy: an edge whose relabelling would leave a patch that is
+    // neither strip, cone nor planar polygon (every edge of the cylinder) is not offered.
+    const std::optional<document::CommandOrError> edit = relabelSelection(workspace());
+    if (edit && edit->isRefused()) {
+        explainDisabled(action(), false, tr("Cannot relabel: %1").arg(edit->error()));
+        return;
+    }
+    explainDisabled(action(), edit.has_value(),
+                    tr("Turn the selected edges from rulings (R) into spline curves (S) or back. "
+                       "Select edges of one surface first."));
+}
+
+void RelabelEdgeReaction::onTriggered() {
+    std::optional<document::CommandOrError> edit = relabelSelection(workspace());
+    if (edit) {
+        workspace()->apply(std::move(*edit), tr("Cannot relabel"));
+    }
+}
+
+SubdivideStripReaction::SubdivideStripReaction(QAction* action, Workspace* workspace,
+                                               views::SceneView* preview)
+    : Reaction(action, workspace), m_preview(preview) {
     followDocumentAndSelection();
 }
 
 void SubdivideStripReaction::updateEnableState() {
     explainDisabled(action(), singleFace(workspace(), {model::FaceType::StripSRSR}).has_value(),
                     tr("Add a crease across the selected strip and the row of strips it belongs "
-                       "to. Select one SRSR strip first."));
+                       "to. Select one patch of type strip (SRSR) first."));
 }
 
 void SubdivideStripReaction::onTriggered() {
@@ -121,21 +141,44 @@ void SubdivideStripReaction::onTriggered() {
     if (!face) {
         return;
     }
-    bool ok = false;
-    const double t = QInputDialog::getDouble(
-        workspace()->window(), tr("Subdivide Strip"),
-        tr("Position of the new crease between the strip's curve a (0) and curve b (1):"), 0.5,
-        0.01, 0.99, 3, &ok);
+    const model::CompositeSurface surface =
+        workspace()->document()->project().surfaces[static_cast<std::size_t>(face->first)];
+    PositionDialog dialog(tr("Add Crease"),
+                          tr("Where the new crease crosses patch %1 and the strips of its row "
+                             "(green in the 3D view): per cent of the way from one curve of the "
+                             "strip to the other.")
+                              .arg(face->second),
+                          workspace()->window());
+    auto preview = [this, &surface, face](double t) {
+        if (m_preview == nullptr) {
+            return;
+        }
+        try {
+            m_preview->setPreviewLines(
+                addedEdgeLines(surface, model::subdivideStrip(surface, face->second, t),
+                               model::EdgeLabel::Spline));
+        } catch (const model::ModelError&) {
+            m_preview->setPreviewLines({}); // the dialog's OK then says why
+        }
+    };
+    connect(&dialog, &PositionDialog::fractionChanged, this, preview);
+    dialog.setRange(1.0, 99.0, 50.0);
+    const bool ok = dialog.exec() == QDialog::Accepted;
+    if (m_preview != nullptr) {
+        m_preview->setPreviewLines({});
+    }
     if (!ok) {
         return;
     }
+    const double t = dialog.fraction();
     workspace()->apply(document::SubdivideStripCommand::create(*workspace()->document(),
                                                                face->first, face->second, t),
-                       tr("Cannot subdivide"));
+                       tr("Cannot add the crease"));
 }
 
-SplitAtRulingReaction::SplitAtRulingReaction(QAction* action, Workspace* workspace)
-    : Reaction(action, workspace) {
+SplitAtRulingReaction::SplitAtRulingReaction(QAction* action, Workspace* workspace,
+                                             views::SceneView* preview)
+    : Reaction(action, workspace), m_preview(preview) {
     followDocumentAndSelection();
 }
 
@@ -145,7 +188,7 @@ void SplitAtRulingReaction::updateEnableState() {
                                              model::FaceType::ConeSRR})
                         .has_value(),
                     tr("Add a ruling across the selected strip and the strips that share its "
-                       "curves. Select one strip or cone first."));
+                       "curves. Select one strip or cone patch first."));
 }
 
 void SplitAtRulingReaction::onTriggered() {
@@ -163,7 +206,7 @@ void SplitAtRulingReaction::onTriggered() {
     const model::EdgeId curveA = model::stripOfFace(surface(), face->second).aSide.edge;
     if (surface().edge(curveA).space.intervals < 2) {
         const auto answer = QMessageBox::question(
-            workspace()->window(), tr("Split at Ruling"),
+            workspace()->window(), tr("Add Ruling"),
             tr("The curves of this strip have a single spline interval, so a ruling can only be "
                "added after refining them (the shape stays the same). Refine now?"));
         if (answer != QMessageBox::Yes ||
@@ -174,19 +217,45 @@ void SplitAtRulingReaction::onTriggered() {
         }
     }
     const int n = surface().edge(curveA).space.intervals;
-    bool ok = false;
-    const int breakpoint = QInputDialog::getInt(
-        workspace()->window(), tr("Split at Ruling"),
-        tr("The new ruling goes through breakpoint i of the strip's %1 spline intervals "
-           "(u = i/%1). Breakpoint i:")
-            .arg(n),
-        n / 2, 1, n - 1, 1, &ok);
+    // A ruling can go through the curves' breakpoints only: offer those, in per cent along.
+    std::vector<double> positions;
+    for (int i = 1; i < n; ++i) {
+        positions.push_back(static_cast<double>(i) / n);
+    }
+    const model::CompositeSurface before = surface();
+    PositionDialog dialog(tr("Add Ruling"),
+                          tr("Where the new ruling crosses patch %1 and the strips that share "
+                             "its curves (green in the 3D view): per cent of the way along the "
+                             "strip. Rulings can go through the %n breakpoint(s) of the curves; "
+                             "refine the curves (Ctrl+Shift+R) for more.",
+                             nullptr, n - 1)
+                              .arg(face->second),
+                          workspace()->window());
+    auto preview = [this, &before, face, &dialog](double) {
+        if (m_preview == nullptr) {
+            return;
+        }
+        try {
+            m_preview->setPreviewLines(addedEdgeLines(
+                before, model::splitAtRuling(before, face->second, dialog.choice() + 1),
+                model::EdgeLabel::Ruling));
+        } catch (const model::ModelError&) {
+            m_preview->setPreviewLines({});
+        }
+    };
+    connect(&dialog, &PositionDialog::fractionChanged, this, preview);
+    dialog.setChoices(positions, (n - 1) / 2);
+    const bool ok = dialog.exec() == QDialog::Accepted;
+    if (m_preview != nullptr) {
+        m_preview->setPreviewLines({});
+    }
     if (!ok) {
         return;
     }
+    const int breakpoint = dialog.choice() + 1;
     workspace()->apply(
         document::SplitAtRulingCommand::create(doc, face->first, face->second, breakpoint),
-        tr("Cannot split"));
+        tr("Cannot add the ruling"));
 }
 
 RefineCurvesReaction::RefineCurvesReaction(QAction* action, Workspace* workspace)

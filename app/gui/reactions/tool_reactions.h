@@ -7,6 +7,10 @@
 #include <optional>
 #include <set>
 
+namespace devsurf::views {
+class SceneView;
+} // namespace devsurf::views
+
 namespace devsurf::app {
 
 // The single surface all picks of one kind belong to, with their ids; nullopt when the
@@ -27,26 +31,36 @@ protected:
     void updateEnableState() override;
 };
 
-// Tools ▸ Subdivide Strip: a new crease across the selected strip (and its row).
+// Tools ▸ Add Crease: a new crease across the selected strip (and its row), at a position
+// across the strip in per cent, previewed in the given view while the dialog is open.
 class SubdivideStripReaction : public Reaction {
     Q_OBJECT
 public:
-    SubdivideStripReaction(QAction* action, Workspace* workspace);
+    SubdivideStripReaction(QAction* action, Workspace* workspace,
+                           views::SceneView* preview = nullptr);
 
 protected:
     void onTriggered() override;
     void updateEnableState() override;
+
+private:
+    views::SceneView* m_preview;
 };
 
-// Tools ▸ Split at Ruling: a new ruling across the selected strip (and its spline class).
+// Tools ▸ Add Ruling: a new ruling across the selected strip (and the strips sharing its
+// curves), at a position along the strip in per cent, previewed like a crease.
 class SplitAtRulingReaction : public Reaction {
     Q_OBJECT
 public:
-    SplitAtRulingReaction(QAction* action, Workspace* workspace);
+    SplitAtRulingReaction(QAction* action, Workspace* workspace,
+                          views::SceneView* preview = nullptr);
 
 protected:
     void onTriggered() override;
     void updateEnableState() override;
+
+private:
+    views::SceneView* m_preview;
 };
 
 // Tools ▸ Refine Curves: doubles the intervals of the selected curve's spline class.

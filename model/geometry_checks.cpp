@@ -1,0 +1,223 @@
+#include "geometry_checks.h"
+
+#include "composite_surface.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace devsurf::model {
+
+namespace {
+
+std::string str(std::uint32_t id) {
+    return std::to_string(id);
+}
+
+// "face 3" or "faces 3 and 4" or "faces 1, 2 and 5".
+std::string facesPhrase(const std::vector<FaceId>& faces) {
+    if (faces.empty()) {
+        return "no face";
+    }
+    std::string text = faces.size() == 1 ? "face " : "faces ";
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+        if (i > 0) {
+            text += i + 1 == faces.size() ? " and " : ", ";
+        }
+        text += str(faces[i]);
+    }
+    return text;
+}
+
+bool isHuge(const Vec3& p) {
+    return std::abs(p.x) > kMaxCoordinate || std::abs(p.y) > kMaxCoordinate ||
+           std::abs(p.z) > kMaxCoordinate;
+}
+
+// An S-edge whose control data validate() accepts structurally.
+bool usableSpline(const EdgeRecord& record) {
+    return record.isSpline() && record.space.isValid() &&
+           record.controlPoints.size() ==
+               static_cast<std::size_t>(record.space.controlPointCount(false)) &&
+           record.controlPoints.size() >= 2;
+}
+
+bool allUsable(const std::vector<Vec3>& points) {
+    return std::all_of(points.begin(), points.end(),
+                       [](const Vec3& p) { return p.isFinite() && !isHuge(p); });
+}
+
+// The face's boundary as a closed polygon: its vertices, with the interior control points of
+// its S-sides in between (a curve lies in the convex hull of its control points).
+std::vector<Vec3> boundaryPolygon(const CompositeSurface& surface, FaceId face) {
+    const std::vector<VertexId>& loop = surface.faceLoop(face);
+    std::vector<Vec3> polygon;
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+        const VertexId a = loop[i];
+        const VertexId b = loop[(i + 1) % loop.size()];
+        polygon.push_back(surface.position(a));
+        const EdgeId e = surface.edgeBetween(a, b);
+        if (e != kInvalidId && usableSpline(surface.edge(e))) {
+            const std::vector<Vec3> points = surface.controlPointsFrom(a, b);
+            polygon.insert(polygon.end(), points.begin() + 1, points.end() - 1);
+        }
+    }
+    return polygon;
+}
+
+// Triangle fan from the centroid: zero exactly when every boundary point lies on one line
+// through the centroid, i.e. when the face encloses nothing.
+double fanArea(const std::vector<Vec3>& polygon, double* perimeter) {
+    Vec3 centroid;
+    for (const Vec3& p : polygon) {
+        centroid += p;
+    }
+    centroid = centroid / static_cast<double>(polygon.size());
+    double area = 0.0;
+    *perimeter = 0.0;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        const Vec3& p = polygon[i];
+        const Vec3& q = polygon[(i + 1) % polygon.size()];
+        area += 0.5 * cross(p - centroid, q - centroid).norm();
+        *perimeter += distance(p, q);
+    }
+    return area;
+}
+
+std::string millimetres(double value) {
+    std::ostringstream out;
+    out.precision(3);
+    out << value << " mm";
+    return out.str();
+}
+
+} // namespace
+
+std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surface) {
+    std::vector<std::string> problems;
+
+    // Faces around each vertex, for naming.
+    std::map<VertexId, std::vector<FaceId>> facesOfVertex;
+    for (const auto& [face, loop] : surface.faces()) {
+        for (VertexId v : loop) {
+            auto& list = facesOfVertex[v];
+            if (std::find(list.begin(), list.end(), face) == list.end()) {
+                list.push_back(face);
+            }
+        }
+    }
+
+    // Lengths below this count as zero: a billionth of the design's size (at least 1e-9 mm),
+    // far below anything that can be cut or folded, far above rounding.
+    double lo[3] = {std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity()};
+    double hi[3] = {-lo[0], -lo[1], -lo[2]};
+    std::set<VertexId> badVertices;
+    for (const auto& [id, p] : surface.vertices()) {
+        const std::string where = " (of " + facesPhrase(facesOfVertex[id]) + ")";
+        if (!p.isFinite()) {
+            problems.push_back("vertex " + str(id) + where +
+                               " has a position that is not a finite number.");
+            badVertices.insert(id);
+            continue;
+        }
+        if (isHuge(p)) {
+            problems.push_back("vertex " + str(id) + where + " lies " + millimetres(p.norm()) +
+                               " from the origin; coordinates beyond " +
+                               millimetres(kMaxCoordinate) + " (1 km) are not accepted.");
+            badVertices.insert(id);
+            continue;
+        }
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], p[k]);
+            hi[k] = std::max(hi[k], p[k]);
+        }
+    }
+    const double size = badVertices.size() == surface.vertices().size()
+                            ? 0.0
+                            : std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    const double tolerance = 1.0e-9 * std::max(size, 1.0);
+
+    std::set<std::pair<VertexId, VertexId>> zeroEdges;
+    std::set<EdgeId> badEdges;
+    for (const auto& [id, record] : surface.edges()) {
+        const std::vector<FaceId> faces = surface.facesOfEdge(id);
+        if (record.isSpline()) {
+            if (!usableSpline(record)) {
+                continue;
+            }
+            if (!allUsable(record.controlPoints)) {
+                // Non-finite control points are reported by validate() itself.
+                if (std::all_of(record.controlPoints.begin(), record.controlPoints.end(),
+                                [](const Vec3& p) { return p.isFinite(); })) {
+                    problems.push_back("edge " + str(id) + " (a spline curve of " +
+                                       facesPhrase(faces) + ") has a control point beyond " +
+                                       millimetres(kMaxCoordinate) + " from the origin.");
+                }
+                badEdges.insert(id);
+                continue;
+            }
+            double length = 0.0;
+            for (std::size_t i = 0; i + 1 < record.controlPoints.size(); ++i) {
+                length += distance(record.controlPoints[i], record.controlPoints[i + 1]);
+            }
+            // The curve lies in the hull of its control points: a control polygon of zero
+            // length is a curve of zero length.
+            if (length <= tolerance) {
+                problems.push_back("edge " + str(id) + " (a spline curve of " + facesPhrase(faces) +
+                                   ") has zero length.");
+                zeroEdges.insert(std::minmax(record.from, record.to));
+            }
+            continue;
+        }
+        if (badVertices.count(record.from) != 0 || badVertices.count(record.to) != 0 ||
+            !surface.hasVertex(record.from) || !surface.hasVertex(record.to)) {
+            continue;
+        }
+        if (distance(surface.position(record.from), surface.position(record.to)) <= tolerance) {
+            problems.push_back("edge " + str(id) + " (a ruling of " + facesPhrase(faces) +
+                               ") has zero length.");
+            zeroEdges.insert(std::minmax(record.from, record.to));
+        }
+    }
+
+    for (const auto& [face, loop] : surface.faces()) {
+        bool usable = true;
+        for (std::size_t i = 0; i < loop.size() && usable; ++i) {
+            const VertexId a = loop[i];
+            const VertexId b = loop[(i + 1) % loop.size()];
+            const EdgeId e = surface.edgeBetween(a, b);
+            usable = badVertices.count(a) == 0 && surface.hasVertex(a) && e != kInvalidId &&
+                     badEdges.count(e) == 0 &&
+                     (!surface.edge(e).isSpline() || usableSpline(surface.edge(e)));
+        }
+        if (!usable) {
+            continue;
+        }
+        // Coincident corners not already reported as a zero-length side.
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            for (std::size_t j = i + 1; j < loop.size(); ++j) {
+                const auto pair = std::minmax(loop[i], loop[j]);
+                if (zeroEdges.count(pair) != 0) {
+                    continue;
+                }
+                if (distance(surface.position(loop[i]), surface.position(loop[j])) <= tolerance) {
+                    problems.push_back("face " + str(face) + " has coincident vertices " +
+                                       str(loop[i]) + " and " + str(loop[j]) + ".");
+                }
+            }
+        }
+        double perimeter = 0.0;
+        const double area = fanArea(boundaryPolygon(surface, face), &perimeter);
+        if (area <= tolerance * std::max(perimeter, tolerance)) {
+            problems.push_back("face " + str(face) + " has zero area.");
+        }
+    }
+    return problems;
+}
+
+} // namespace devsurf::model

@@ -1,0 +1,250 @@
+#include "model/bspline_curve.h"
+#include "model/document/document.h"
+#include "model/document/selection.h"
+#include "model/examples.h"
+#include "straight_control_points.h"
+#include "test_registry.h"
+#include "views/development_view.h"
+#include "views/surface_view.h"
+
+#include <QHBoxLayout>
+#include <QTest>
+
+#include <cmath>
+#include <limits>
+#include <optional>
+
+using devsurf::document::Change;
+using devsurf::document::Document;
+using devsurf::document::Selection;
+using devsurf::model::CompositeSurface;
+using devsurf::model::Vec3;
+using devsurf::model::VertexId;
+using devsurf::views::DevelopmentView;
+using devsurf::views::SurfaceView;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Views {
+    Document document;
+    Selection selection;
+    QWidget window;
+    SurfaceView* spatial = nullptr;
+    DevelopmentView* development = nullptr;
+
+    explicit Views(devsurf::model::Project project) {
+        document.resetProject(std::move(project));
+        auto* layout = new QHBoxLayout(&window);
+        spatial = new SurfaceView(&document, &selection);
+        development = new DevelopmentView(&document, &selection);
+        layout->addWidget(spatial);
+        layout->addWidget(development);
+        window.resize(900, 450);
+    }
+
+    bool show() {
+        window.show();
+        if (!QTest::qWaitForWindowExposed(&window)) {
+            return false;
+        }
+        spatial->grabImage();
+        development->grabImage();
+        return true;
+    }
+
+    const CompositeSurface& surface() const { return document.project().surfaces.at(0); }
+};
+
+// Extent {width, height} of the development's drawn vertices, in scene millimetres.
+std::pair<double, double> drawnExtent(const Views& views) {
+    double lo[2] = {std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity()};
+    double hi[2] = {-lo[0], -lo[1]};
+    for (const auto& [id, p] : views.surface().vertices()) {
+        const std::optional<Vec3> q = views.development->vertexScenePoint(0, id);
+        if (q) {
+            lo[0] = std::min(lo[0], q->x);
+            hi[0] = std::max(hi[0], q->x);
+            lo[1] = std::min(lo[1], q->y);
+            hi[1] = std::max(hi[1], q->y);
+        }
+    }
+    return {hi[0] - lo[0], hi[1] - lo[1]};
+}
+
+// Rows and columns of the image that hold something other than the background colour.
+std::pair<int, int> paintedExtent(const QImage& image) {
+    const QRgb background = image.pixel(1, 1);
+    int minX = image.width();
+    int maxX = -1;
+    int minY = image.height();
+    int maxY = -1;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            if (image.pixel(x, y) != background) {
+                minX = std::min(minX, x);
+                maxX = std::max(maxX, x);
+                minY = std::min(minY, y);
+                maxY = std::max(maxY, y);
+            }
+        }
+    }
+    return {maxX - minX, maxY - minY};
+}
+
+int redPixels(const QImage& image) {
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            count += c.red() > 180 && c.green() < 70 && c.blue() < 70 ? 1 : 0;
+        }
+    }
+    return count;
+}
+
+int darkPixelsAround(const QImage& image, const QPoint& widgetPos) {
+    const double dpr = image.devicePixelRatio();
+    int count = 0;
+    for (int dy = -3; dy <= 3; ++dy) {
+        for (int dx = -3; dx <= 3; ++dx) {
+            const QPoint p(static_cast<int>(std::lround((widgetPos.x() + dx) * dpr)),
+                           static_cast<int>(std::lround((widgetPos.y() + dy) * dpr)));
+            if (image.rect().contains(p)) {
+                const QColor c = image.pixelColor(p);
+                count += c.red() < 80 && c.green() < 80 && c.blue() < 80 ? 1 : 0;
+            }
+        }
+    }
+    return count;
+}
+
+// A band winding one and a half times around the z-axis while rising: its development
+// overlaps itself.
+CompositeSurface helicalBand() {
+    const int steps = 18;
+    const devsurf::model::SplineSpace space{3, 2, 1};
+    CompositeSurface s;
+    std::vector<VertexId> inner;
+    std::vector<VertexId> outer;
+    for (int i = 0; i <= steps; ++i) {
+        const double phi = 3.0 * kPi * i / steps;
+        inner.push_back(s.addVertex({100 * std::cos(phi), 100 * std::sin(phi), 2.0 * i}));
+        outer.push_back(s.addVertex({160 * std::cos(phi), 160 * std::sin(phi), 2.0 * i}));
+    }
+    for (int i = 0; i < steps; ++i) {
+        s.addFace({inner[i], outer[i], outer[i + 1], inner[i + 1]});
+    }
+    for (int i = 0; i < steps; ++i) {
+        for (const auto* chain : {&inner, &outer}) {
+            const VertexId a = (*chain)[i];
+            const VertexId b = (*chain)[i + 1];
+            s.setSpline(a, b, space,
+                        devsurf::test::straightControlPoints(space, s.position(a), s.position(b)));
+        }
+    }
+    return s;
+}
+
+} // namespace
+
+class TstDevelopmentView : public QObject {
+    Q_OBJECT
+private slots:
+    void liftingOneVertexKeepsTheDevelopmentTwoDimensional() {
+        // Lifting one vertex of a flat design by 1 mm used to fold the development onto a line.
+        for (const char* name : {"annulus", "sheet"}) {
+            Views views(devsurf::model::makeExample(name));
+            QVERIFY(views.show());
+            const auto [width, height] = drawnExtent(views);
+            QVERIFY(width > 250 && height > 250);
+            // A vertex from the middle of the surface's list.
+            const VertexId lifted =
+                std::next(views.surface().vertices().begin(),
+                          static_cast<long>(views.surface().vertices().size() / 2))
+                    ->first;
+            const Vec3 old = views.surface().position(lifted);
+            views.document.mutableProject().surfaces[0].moveVertex(lifted, old + Vec3(0, 0, 1));
+            views.document.notifyChanged(Change::Geometry);
+            views.development->fitAll();
+            const auto [newWidth, newHeight] = drawnExtent(views);
+            QVERIFY2(std::abs(newWidth - width) < 0.02 * width &&
+                         std::abs(newHeight - height) < 0.02 * height,
+                     qPrintable(QString("%1: %2 × %3 mm, was %4 × %5 mm")
+                                    .arg(name)
+                                    .arg(newWidth)
+                                    .arg(newHeight)
+                                    .arg(width)
+                                    .arg(height)));
+            // And on screen: the drawing fills the view in both directions.
+            const QImage image = views.development->grabImage();
+            const auto [painted, paintedHeight] = paintedExtent(image);
+            QVERIFY2(painted > image.width() / 3 && paintedHeight > image.height() / 3, name);
+            QVERIFY(views.development->problem().isEmpty());
+        }
+    }
+
+    void cylinderIsUprightAndItsSeamDrawnOnBothSides() {
+        Views views(devsurf::model::makeExample("cylinder", 6));
+        QVERIFY(views.show());
+        const CompositeSurface& surface = views.surface();
+        // Height in space is height in the development, and up on screen in both views.
+        for (const auto& [a, pa] : surface.vertices()) {
+            for (const auto& [b, pb] : surface.vertices()) {
+                if (pb.z - pa.z < 1.0) {
+                    continue;
+                }
+                const Vec3 qa = *views.development->vertexScenePoint(0, a);
+                const Vec3 qb = *views.development->vertexScenePoint(0, b);
+                QVERIFY(std::abs((qb.y - qa.y) - (pb.z - pa.z)) < 1e-6);
+                QVERIFY(views.development->projectToWidget(qb).y() <
+                        views.development->projectToWidget(qa).y());
+            }
+        }
+        // The cut runs along a ruling: its vertices are drawn on both sides, one
+        // circumference apart.
+        double circumference = 0;
+        for (const auto& [edge, record] : surface.edges()) {
+            if (record.isSpline() && record.controlPoints.front().z == 0.0) {
+                const auto curve =
+                    devsurf::model::BSplineCurve::uniform(record.space, record.controlPoints);
+                for (int i = 0; i < 1000; ++i) {
+                    circumference +=
+                        distance(curve.evaluate(i / 1000.0), curve.evaluate((i + 1) / 1000.0));
+                }
+            }
+        }
+        const auto [width, height] = drawnExtent(views);
+        QVERIFY(std::abs(height - 180.0) < 1e-6);
+        QVERIFY(width < circumference - 1.0); // the map holds one copy of every vertex
+        const QImage image = views.development->grabImage();
+        int seamVertices = 0;
+        for (const auto& [id, p] : surface.vertices()) {
+            const Vec3 q = *views.development->vertexScenePoint(0, id);
+            for (const double side : {-1.0, 1.0}) {
+                const QPoint other =
+                    views.development->projectToWidget(q + Vec3(side * circumference, 0, 0));
+                if (image.rect().contains(other) && darkPixelsAround(image, other) > 10) {
+                    ++seamVertices;
+                }
+            }
+        }
+        QCOMPARE(seamVertices, 4); // the 4 vertices of the cut ruling (3 rows)
+    }
+
+    void overlappingPiecesAreOutlinedInRed() {
+        devsurf::model::Project band;
+        band.surfaces.push_back(helicalBand());
+        Views views(std::move(band));
+        QVERIFY(views.show());
+        QVERIFY(redPixels(views.development->grabImage()) > 100);
+        views.document.resetProject(devsurf::model::makeExample("annulus"));
+        QCOMPARE(redPixels(views.development->grabImage()), 0);
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstDevelopmentView);
+
+#include "tst_development_view.moc"

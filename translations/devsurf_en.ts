@@ -1,0 +1,192 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en_US">
+<context>
+    <name>MoveVerticesCommand</name>
+    <message numerus="yes">
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="23"/>
+        <source>Move %n vertices</source>
+        <translation>
+            <numerusform>Move %n vertex</numerusform>
+            <numerusform>Move %n vertices</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="39"/>
+        <source>Rotate %n vertices</source>
+        <translation>
+            <numerusform>Rotate %n vertex</numerusform>
+            <numerusform>Rotate %n vertices</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>PinVerticesCommand</name>
+    <message numerus="yes">
+        <location filename="../model/document/commands/pin_vertices_command.cpp" line="29"/>
+        <source>Pin %n vertices</source>
+        <translation>
+            <numerusform>Pin %n vertex</numerusform>
+            <numerusform>Pin %n vertices</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/pin_vertices_command.cpp" line="29"/>
+        <source>Unpin %n vertices</source>
+        <translation>
+            <numerusform>Unpin %n vertex</numerusform>
+            <numerusform>Unpin %n vertices</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>RelabelEdgeCommand</name>
+    <message numerus="yes">
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="28"/>
+        <source>Relabel %n edges</source>
+        <translation>
+            <numerusform>Relabel %n edge</numerusform>
+            <numerusform>Relabel %n edges</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::MainWindow</name>
+    <message numerus="yes">
+        <location filename="../app/gui/main_window.cpp" line="318"/>
+        <source>%n surface(s)</source>
+        <translation>
+            <numerusform>%n surface</numerusform>
+            <numerusform>%n surfaces</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/main_window.cpp" line="319"/>
+        <source>%n patch(es)</source>
+        <translation>
+            <numerusform>%n patch</numerusform>
+            <numerusform>%n patches</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/main_window.cpp" line="320"/>
+        <source>%n control point(s)</source>
+        <translation>
+            <numerusform>%n control point</numerusform>
+            <numerusform>%n control points</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/main_window.cpp" line="321"/>
+        <source>%n selected</source>
+        <translation>
+            <numerusform>%n selected</numerusform>
+            <numerusform>%n selected</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::PatchTreeModel</name>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="120"/>
+        <source>%n patch(es)</source>
+        <translation>
+            <numerusform>%n patch</numerusform>
+            <numerusform>%n patches</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::PatternExportDialog</name>
+    <message numerus="yes">
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
+        <source>%n piece(s)</source>
+        <translation>
+            <numerusform>%n piece</numerusform>
+            <numerusform>%n pieces</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="310"/>
+        <source>%n sheet(s)</source>
+        <translation>
+            <numerusform>%n sheet</numerusform>
+            <numerusform>%n sheets</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::PropertiesPanel</name>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="78"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="88"/>
+        <source>%n patch(es)</source>
+        <translation>
+            <numerusform>%n patch</numerusform>
+            <numerusform>%n patches</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="79"/>
+        <source>%n control point(s)</source>
+        <translation>
+            <numerusform>%n control point</numerusform>
+            <numerusform>%n control points</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="87"/>
+        <source>%n vertex(es)</source>
+        <translation>
+            <numerusform>%n vertex</numerusform>
+            <numerusform>%n vertices</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="87"/>
+        <source>%n edge(s)</source>
+        <translation>
+            <numerusform>%n edge</numerusform>
+            <numerusform>%n edges</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="117"/>
+        <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
+        <translation>
+            <numerusform>Spline curve (S), %1, %n control point.&lt;br&gt;</numerusform>
+            <numerusform>Spline curve (S), %1, %n control points.&lt;br&gt;</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="138"/>
+        <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
+        <translation>
+            <numerusform>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner.</numerusform>
+            <numerusform>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corners.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::SplitAtRulingReaction</name>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="227"/>
+        <source>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoint(s) of the curves; refine the curves (Ctrl+Shift+R) for more.</source>
+        <translation>
+            <numerusform>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoint of the curves; refine the curves (Ctrl+Shift+R) for more.</numerusform>
+            <numerusform>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoints of the curves; refine the curves (Ctrl+Shift+R) for more.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::Workspace</name>
+    <message numerus="yes">
+        <location filename="../app/gui/workspace.cpp" line="82"/>
+        <source>… and %n more problem(s).</source>
+        <translation>
+            <numerusform>… and %n more problem.</numerusform>
+            <numerusform>… and %n more problems.</numerusform>
+        </translation>
+    </message>
+</context>
+</TS>

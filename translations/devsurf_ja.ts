@@ -1,0 +1,1661 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="ja_JP">
+<context>
+    <name>ApplySurfaceCommand</name>
+    <message>
+        <location filename="../model/document/commands/apply_surface_command.cpp" line="20"/>
+        <source>The new shape cannot be applied: %1</source>
+        <translation>新しい形状を適用できません: %1</translation>
+    </message>
+</context>
+<context>
+    <name>FaceType</name>
+    <message>
+        <location filename="../app/gui/face_type_text.cpp" line="10"/>
+        <source>strip (SRSR)</source>
+        <translation>ストリップ (SRSR)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/face_type_text.cpp" line="12"/>
+        <source>pointed strip (SRS)</source>
+        <translation>尖ったストリップ (SRS)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/face_type_text.cpp" line="14"/>
+        <source>cone (SRR)</source>
+        <translation>錐面 (SRR)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/face_type_text.cpp" line="16"/>
+        <source>planar patch</source>
+        <translation>平面パッチ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/face_type_text.cpp" line="20"/>
+        <source>invalid labelling</source>
+        <translation>無効なラベル付け</translation>
+    </message>
+</context>
+<context>
+    <name>MoveVerticesCommand</name>
+    <message>
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="20"/>
+        <source>The vertices cannot be moved by an offset that is not a finite number.</source>
+        <translation>有限の数でない移動量では頂点を移動できません。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="23"/>
+        <source>Move %n vertices</source>
+        <translation>
+            <numerusform>%n 個の頂点を移動</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="37"/>
+        <source>The vertices cannot be rotated: %1</source>
+        <translation>頂点を回転できません: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="39"/>
+        <source>Rotate %n vertices</source>
+        <translation>
+            <numerusform>%n 個の頂点を回転</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="47"/>
+        <source>The vertices cannot be moved</source>
+        <translation>頂点を移動できません</translation>
+    </message>
+</context>
+<context>
+    <name>PinVerticesCommand</name>
+    <message>
+        <location filename="../model/document/commands/pin_vertices_command.cpp" line="9"/>
+        <source>Select at least one vertex to pin.</source>
+        <translation>固定する頂点を少なくとも 1 つ選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/pin_vertices_command.cpp" line="10"/>
+        <source>Select at least one vertex to unpin.</source>
+        <translation>固定を解除する頂点を少なくとも 1 つ選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/pin_vertices_command.cpp" line="20"/>
+        <source>Vertex %1 does not exist.</source>
+        <translation>頂点 %1 は存在しません。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/pin_vertices_command.cpp" line="25"/>
+        <source>The selected vertices are already pinned.</source>
+        <translation>選択した頂点はすでに固定されています。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/pin_vertices_command.cpp" line="26"/>
+        <source>The selected vertices are not pinned.</source>
+        <translation>選択した頂点は固定されていません。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/pin_vertices_command.cpp" line="29"/>
+        <source>Pin %n vertices</source>
+        <translation>
+            <numerusform>%n 個の頂点を固定</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/pin_vertices_command.cpp" line="29"/>
+        <source>Unpin %n vertices</source>
+        <translation>
+            <numerusform>%n 個の頂点の固定を解除</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="33"/>
+        <source>Laser bed 600 × 400 mm</source>
+        <translation>レーザー加工機のベッド 600 × 400 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="34"/>
+        <source>A4 (210 × 297 mm)</source>
+        <translation>A4 (210 × 297 mm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="35"/>
+        <source>A3 (297 × 420 mm)</source>
+        <translation>A3 (297 × 420 mm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="36"/>
+        <source>Letter (8.5 × 11 in)</source>
+        <translation>レター (8.5 × 11 in)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
+        <source>Custom</source>
+        <translation>カスタム</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="34"/>
+        <source>Nothing to print</source>
+        <translation>印刷するものがありません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="36"/>
+        <source>The design has no surface to develop.</source>
+        <translation>デザインに展開できる曲面がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="52"/>
+        <source>Printing the cutting pattern…</source>
+        <translation>型紙を印刷しています…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="52"/>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="140"/>
+        <source>Export &amp;Cutting Pattern…</source>
+        <translation>型紙をエクスポート(&amp;C)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="142"/>
+        <source>&amp;Print…</source>
+        <translation>印刷(&amp;P)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="145"/>
+        <source>Print Pre&amp;view…</source>
+        <translation>印刷プレビュー(&amp;V)…</translation>
+    </message>
+</context>
+<context>
+    <name>RefineSplineClassCommand</name>
+    <message>
+        <location filename="../model/document/commands/refine_spline_class_command.cpp" line="9"/>
+        <source>Refine curves</source>
+        <translation>曲線を細分化</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/refine_spline_class_command.cpp" line="11"/>
+        <source>The curves of edge %1 cannot be refined</source>
+        <translation>辺 %1 の曲線を細分化できません</translation>
+    </message>
+</context>
+<context>
+    <name>RelabelEdgeCommand</name>
+    <message>
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="16"/>
+        <source>Select at least one edge to relabel.</source>
+        <translation>ラベルを変更する辺を少なくとも 1 本選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="23"/>
+        <source>Make edge %1 a spline curve</source>
+        <translation>辺 %1 をスプライン曲線にする</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="24"/>
+        <source>Make edge %1 a ruling</source>
+        <translation>辺 %1 を母線にする</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="25"/>
+        <source>Edge %1 cannot become a spline curve</source>
+        <translation>辺 %1 はスプライン曲線にできません</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="26"/>
+        <source>Edge %1 cannot become a ruling</source>
+        <translation>辺 %1 は母線にできません</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="28"/>
+        <source>Relabel %n edges</source>
+        <translation>
+            <numerusform>%n 本の辺のラベルを変更</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="29"/>
+        <source>The edges cannot be relabelled</source>
+        <translation>辺のラベルを変更できません</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="39"/>
+        <source>Edge %1 is already a spline curve.</source>
+        <translation>辺 %1 はすでにスプライン曲線です。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/relabel_edge_command.cpp" line="40"/>
+        <source>Edge %1 is already a ruling.</source>
+        <translation>辺 %1 はすでに母線です。</translation>
+    </message>
+</context>
+<context>
+    <name>SplitAtRulingCommand</name>
+    <message>
+        <location filename="../model/document/commands/split_at_ruling_command.cpp" line="12"/>
+        <source>Add a ruling across patch %1</source>
+        <translation>パッチ %1 を横切る母線を追加</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/split_at_ruling_command.cpp" line="14"/>
+        <source>No ruling can be added across patch %1</source>
+        <translation>パッチ %1 を横切る母線は追加できません</translation>
+    </message>
+</context>
+<context>
+    <name>SubdivideStripCommand</name>
+    <message>
+        <location filename="../model/document/commands/subdivide_strip_command.cpp" line="9"/>
+        <source>Add a crease across patch %1</source>
+        <translation>パッチ %1 を横切る折り線を追加</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/subdivide_strip_command.cpp" line="11"/>
+        <source>No crease can be added across patch %1</source>
+        <translation>パッチ %1 を横切る折り線は追加できません</translation>
+    </message>
+</context>
+<context>
+    <name>SurfaceEditCommand</name>
+    <message>
+        <location filename="../model/document/commands/surface_edit_command.cpp" line="38"/>
+        <source>There is no surface number %1 in the design.</source>
+        <translation>デザインに曲面 %1 はありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/surface_edit_command.cpp" line="56"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::CameraActions</name>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="23"/>
+        <source>&amp;Reset View</source>
+        <translation>ビューをリセット(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="26"/>
+        <source>Reset View (Home): the starting direction, the whole design in view</source>
+        <translation>ビューをリセット (Home): 初期の向きで、デザイン全体を表示</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="31"/>
+        <source>&amp;Standard Views</source>
+        <translation>標準ビュー(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="42"/>
+        <source>&amp;Isometric</source>
+        <translation>等角(&amp;I)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="43"/>
+        <source>Isometric view (0): from the front right and above</source>
+        <translation>等角ビュー (0): 右前上方から</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="45"/>
+        <source>&amp;Front</source>
+        <translation>正面(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="45"/>
+        <source>Front view (1): looking along +y</source>
+        <translation>正面ビュー (1): +y 方向を見る</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="47"/>
+        <source>&amp;Top</source>
+        <translation>上面(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="47"/>
+        <source>Top view (2): looking down along −z</source>
+        <translation>上面ビュー (2): −z 方向に見下ろす</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="49"/>
+        <source>&amp;Right</source>
+        <translation>右側面(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="49"/>
+        <source>Right view (3): looking along −x</source>
+        <translation>右側面ビュー (3): −x 方向を見る</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="51"/>
+        <source>R&amp;ear</source>
+        <translation>背面(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="51"/>
+        <source>Rear view (4): looking along −y</source>
+        <translation>背面ビュー (4): −y 方向を見る</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="53"/>
+        <source>&amp;Bottom</source>
+        <translation>下面(&amp;B)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="53"/>
+        <source>Bottom view (5): looking up along +z</source>
+        <translation>下面ビュー (5): +z 方向に見上げる</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="55"/>
+        <source>&amp;Left</source>
+        <translation>左側面(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="55"/>
+        <source>Left view (6): looking along +x</source>
+        <translation>左側面ビュー (6): +x 方向を見る</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="79"/>
+        <source>Patch &amp;Numbers</source>
+        <translation>パッチ番号(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="81"/>
+        <source>Ctrl+Shift+N</source>
+        <translation>Ctrl+Shift+N</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/camera_actions.cpp" line="82"/>
+        <source>Patch Numbers (Ctrl+Shift+N): write each patch&apos;s number on it</source>
+        <translation>パッチ番号 (Ctrl+Shift+N): 各パッチにその番号を表示</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::DeleteSelectionReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/edit_reactions.cpp" line="10"/>
+        <source>Deleting parts of a surface is not available yet: relabel an edge (Ctrl+L) or undo (Ctrl+Z) instead.</source>
+        <translation>曲面の一部の削除はまだできません。代わりに辺のラベルを変更する (Ctrl+L) か、元に戻して (Ctrl+Z) ください。</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::ExampleDialog</name>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="19"/>
+        <source>A flat rectangle of size × size strips.</source>
+        <translation>サイズ × サイズ個のストリップからなる平らな長方形。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="22"/>
+        <source>A flat annulus of size rings cut by radial rulings.</source>
+        <translation>放射状の母線で区切られた、サイズ個の環からなる平らな円環。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="25"/>
+        <source>A closed cylinder of strips, size sectors around.</source>
+        <translation>周方向にサイズ個の区画を持つ、ストリップからなる閉じた円柱。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="27"/>
+        <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
+        <translation>ストリップ、尖ったストリップ、錐面、平面パッチ。曲線ごとにサイズ個の区間。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="36"/>
+        <source>New from Example</source>
+        <translation>例から新規作成</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="42"/>
+        <source>&amp;Example:</source>
+        <translation>例(&amp;E):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="43"/>
+        <source>&amp;Size:</source>
+        <translation>サイズ(&amp;S):</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::ExportJsonReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="94"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="111"/>
+        <source>Export Interchange JSON</source>
+        <translation>交換用 JSON のエクスポート</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="95"/>
+        <source>“%1” ends in .%2, but this command writes interchange JSON. Export to “%3” instead?</source>
+        <translation>「%1」の拡張子は .%2 ですが、このコマンドは交換用 JSON を書き出します。代わりに「%3」にエクスポートしますか?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="100"/>
+        <source>Export as .json</source>
+        <translation>.json としてエクスポート</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="109"/>
+        <source>untitled</source>
+        <translation>無題</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="113"/>
+        <source>Interchange JSON (*.json)</source>
+        <translation>交換用 JSON (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="120"/>
+        <source>Exported %1</source>
+        <translation>%1 をエクスポートしました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="122"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="125"/>
+        <source>Export failed</source>
+        <translation>エクスポートに失敗しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="126"/>
+        <source>The design cannot be exported: %1</source>
+        <translation>デザインをエクスポートできません: %1</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::ExportPatternReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="73"/>
+        <source>untitled</source>
+        <translation>無題</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="77"/>
+        <source>Exported the cutting pattern</source>
+        <translation>型紙をエクスポートしました</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::MainWindow</name>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="106"/>
+        <source>Patches</source>
+        <translation>パッチ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="112"/>
+        <source>Properties</source>
+        <translation>プロパティ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="119"/>
+        <source>Main</source>
+        <translation>メイン</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="126"/>
+        <source>&amp;File</source>
+        <translation>ファイル(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="128"/>
+        <source>&amp;New from Example…</source>
+        <translation>例から新規作成(&amp;N)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="130"/>
+        <source>&amp;Open…</source>
+        <translation>開く(&amp;O)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="132"/>
+        <source>Open &amp;Recent</source>
+        <translation>最近使ったファイル(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="136"/>
+        <source>&amp;Save</source>
+        <translation>保存(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="139"/>
+        <source>Save &amp;As…</source>
+        <translation>名前を付けて保存(&amp;A)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="143"/>
+        <source>&amp;Export Interchange JSON…</source>
+        <translation>交換用 JSON をエクスポート(&amp;E)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="143"/>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="147"/>
+        <source>&amp;Quit</source>
+        <translation>終了(&amp;Q)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="151"/>
+        <source>&amp;Edit</source>
+        <translation>編集(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="154"/>
+        <source>&amp;Undo</source>
+        <translation>元に戻す(&amp;U)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="157"/>
+        <source>&amp;Redo</source>
+        <translation>やり直す(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="164"/>
+        <source>&amp;Delete</source>
+        <translation>削除(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="166"/>
+        <source>Select &amp;None</source>
+        <translation>選択を解除(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="167"/>
+        <source>Esc</source>
+        <translation>Esc</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="171"/>
+        <source>&amp;View</source>
+        <translation>表示(&amp;V)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="173"/>
+        <source>&amp;3D View</source>
+        <translation>3D ビュー(&amp;3)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="173"/>
+        <source>Ctrl+1</source>
+        <translation>Ctrl+1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <source>&amp;Development View</source>
+        <translation>展開図ビュー(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <source>Ctrl+2</source>
+        <translation>Ctrl+2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="176"/>
+        <source>3D &amp;and Development</source>
+        <translation>3D と展開図(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="177"/>
+        <source>Ctrl+3</source>
+        <translation>Ctrl+3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <source>&amp;Control Polygons</source>
+        <translation>制御多角形(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <source>Ctrl+Shift+P</source>
+        <translation>Ctrl+Shift+P</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="182"/>
+        <source>&amp;Vertices</source>
+        <translation>頂点(&amp;V)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="183"/>
+        <source>Ctrl+Shift+V</source>
+        <translation>Ctrl+Shift+V</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="186"/>
+        <source>&amp;Fit All</source>
+        <translation>全体を表示(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="186"/>
+        <source>F</source>
+        <translation>F</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="192"/>
+        <source>Reset &amp;Layout</source>
+        <translation>レイアウトをリセット(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <source>&amp;Tools</source>
+        <translation>ツール(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <source>&amp;Relabel Edge (R ↔ S)</source>
+        <translation>辺のラベルを変更 (R ↔ S)(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <source>Ctrl+L</source>
+        <translation>Ctrl+L</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="202"/>
+        <source>Add &amp;Crease…</source>
+        <translation>折り線を追加(&amp;C)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="203"/>
+        <source>Ctrl+D</source>
+        <translation>Ctrl+D</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="205"/>
+        <source>Add R&amp;uling…</source>
+        <translation>母線を追加(&amp;U)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="206"/>
+        <source>Ctrl+R</source>
+        <translation>Ctrl+R</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="208"/>
+        <source>Re&amp;fine Curves</source>
+        <translation>曲線を細分化(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="209"/>
+        <source>Ctrl+Shift+R</source>
+        <translation>Ctrl+Shift+R</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="213"/>
+        <source>&amp;Move or Rotate Vertices…</source>
+        <translation>頂点の移動・回転(&amp;M)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="213"/>
+        <source>Ctrl+M</source>
+        <translation>Ctrl+M</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <source>&amp;Help</source>
+        <translation>ヘルプ(&amp;H)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="218"/>
+        <source>&amp;User Manual</source>
+        <translation>ユーザーマニュアル(&amp;U)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>キーボードショートカット(&amp;K)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <source>&amp;About DevSurf</source>
+        <translation>DevSurf について(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="233"/>
+        <source>About DevSurf</source>
+        <translation>DevSurf について</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="234"/>
+        <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
+        <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;スプライン可展面による可展面と曲線折り折り紙の設計 (Tang, Bo, Wallner, Pottmann 2015)。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="281"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="303"/>
+        <source>Untitled</source>
+        <translation>無題</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="304"/>
+        <source>%1[*] — DevSurf</source>
+        <translation>%1[*] — DevSurf</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/main_window.cpp" line="318"/>
+        <source>%n surface(s)</source>
+        <translation>
+            <numerusform>曲面 %n 個</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/main_window.cpp" line="319"/>
+        <source>%n patch(es)</source>
+        <translation>
+            <numerusform>パッチ %n 個</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/main_window.cpp" line="320"/>
+        <source>%n control point(s)</source>
+        <translation>
+            <numerusform>制御点 %n 個</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/main_window.cpp" line="321"/>
+        <source>%n selected</source>
+        <translation>
+            <numerusform>%n 個選択</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::ManualWindow</name>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="56"/>
+        <source>DevSurf User Manual</source>
+        <translation>DevSurf ユーザーマニュアル</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::MoveDialog</name>
+    <message>
+        <location filename="../app/gui/move_dialog.cpp" line="37"/>
+        <source>&amp;Translate</source>
+        <translation>平行移動(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/move_dialog.cpp" line="38"/>
+        <source>&amp;Rotate</source>
+        <translation>回転(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/move_dialog.cpp" line="39"/>
+        <source>Move or Rotate Vertices</source>
+        <translation>頂点の移動・回転</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/move_dialog.cpp" line="42"/>
+        <source>Translation</source>
+        <translation>平行移動</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/move_dialog.cpp" line="44"/>
+        <source>Offset (x, y, z):</source>
+        <translation>移動量 (x, y, z):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/move_dialog.cpp" line="47"/>
+        <source>Rotation</source>
+        <translation>回転</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/move_dialog.cpp" line="49"/>
+        <source>Axis through (x, y, z):</source>
+        <translation>回転軸の通る点 (x, y, z):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/move_dialog.cpp" line="51"/>
+        <source>Axis direction:</source>
+        <translation>回転軸の方向:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/move_dialog.cpp" line="55"/>
+        <source>Angle:</source>
+        <translation>角度:</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::MoveVerticesReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="312"/>
+        <source>Translate or rotate the selected vertices with their neighbouring control points. Select vertices of one surface first.</source>
+        <translation>選択した頂点を隣接する制御点とともに平行移動または回転します。先に 1 つの曲面の頂点を選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="338"/>
+        <source>Cannot rotate</source>
+        <translation>回転できません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="342"/>
+        <source>Cannot move</source>
+        <translation>移動できません</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::OpenReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="32"/>
+        <source>Open Project</source>
+        <translation>プロジェクトを開く</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="34"/>
+        <source>DevSurf projects (*.devsurf)</source>
+        <translation>DevSurf プロジェクト (*.devsurf)</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::OpenRecentReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="62"/>
+        <source>No recent files</source>
+        <translation>最近使ったファイルはありません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="66"/>
+        <source>Clear Recent Files</source>
+        <translation>最近使ったファイルの一覧を消去</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::PatchTreeModel</name>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="120"/>
+        <source>%n patch(es)</source>
+        <translation>
+            <numerusform>パッチ %n 個</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="129"/>
+        <source>Patch %1</source>
+        <translation>パッチ %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="133"/>
+        <source>invalid labelling %1</source>
+        <translation>無効なラベル付け %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="142"/>
+        <source>Edge labels along the patch: %1</source>
+        <translation>パッチに沿った辺のラベル: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="152"/>
+        <source>Patch</source>
+        <translation>パッチ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/patch_tree_model.cpp" line="152"/>
+        <source>Type</source>
+        <translation>種類</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::PatternExportDialog</name>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="82"/>
+        <source>DXF drawing (*.dxf)</source>
+        <translation>DXF 図面 (*.dxf)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="84"/>
+        <source>SVG image (*.svg)</source>
+        <translation>SVG 画像 (*.svg)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="86"/>
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF 文書 (*.pdf)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="88"/>
+        <source>FOLD crease pattern (*.fold)</source>
+        <translation>FOLD 折り線図 (*.fold)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="96"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="330"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="339"/>
+        <source>Export Cutting Pattern</source>
+        <translation>型紙のエクスポート</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
+        <source>DXF (laser and plotter cutters)</source>
+        <translation>DXF (レーザー・プロッターカッター用)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
+        <source>SVG (vinyl and paper cutters)</source>
+        <translation>SVG (カッティングマシン用)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="101"/>
+        <source>PDF (print at 1:1, tiled)</source>
+        <translation>PDF (原寸で印刷、分割)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="101"/>
+        <source>FOLD (origami simulators)</source>
+        <translation>FOLD (折り紙シミュレーター用)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="102"/>
+        <source>&amp;Format:</source>
+        <translation>形式(&amp;F):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <source>&amp;Polylines</source>
+        <translation>ポリライン(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
+        <source>S&amp;plines</source>
+        <translation>スプライン(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="112"/>
+        <source>DXF &amp;R12 (for old cutter software)</source>
+        <translation>DXF &amp;R12 (古いカッターソフト用)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="114"/>
+        <source>Curves:</source>
+        <translation>曲線:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="120"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="138"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="154"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="121"/>
+        <source>&amp;Tolerance:</source>
+        <translation>許容誤差(&amp;T):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <source>Cut</source>
+        <translation>切断</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <source>Mountain</source>
+        <translation>山折り</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <source>Valley</source>
+        <translation>谷折り</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <source>Crease</source>
+        <translation>折り線</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <source>Rulings (score)</source>
+        <translation>母線 (筋付け)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <source>Seam</source>
+        <translation>継ぎ目</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
+        <source>Labels</source>
+        <translation>ラベル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="134"/>
+        <source>Layers:</source>
+        <translation>レイヤー:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="139"/>
+        <source>as &amp;glue tabs</source>
+        <translation>のりしろとして(&amp;G)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="143"/>
+        <source>&amp;Seam allowance:</source>
+        <translation>縫い代(&amp;S):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="161"/>
+        <source>S&amp;heet:</source>
+        <translation>シート(&amp;H):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <source>A4</source>
+        <translation>A4</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <source>A3</source>
+        <translation>A3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <source>Letter</source>
+        <translation>レター</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="165"/>
+        <source>P&amp;aper (PDF):</source>
+        <translation>用紙 (PDF)(&amp;A):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <source>Piece</source>
+        <translation>ピース</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <source>Sheet</source>
+        <translation>シート</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <source>Size (mm)</source>
+        <translation>サイズ (mm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="173"/>
+        <source>Area (mm²)</source>
+        <translation>面積 (mm²)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="173"/>
+        <source>Isometry error (mm)</source>
+        <translation>等長誤差 (mm)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <source>Fits sheet</source>
+        <translation>シートに収まる</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <source>Overlaps</source>
+        <translation>重なり</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
+        <source>Fabrication report</source>
+        <translation>製作レポート</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="185"/>
+        <source>&amp;Export…</source>
+        <translation>エクスポート(&amp;E)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="292"/>
+        <source>itself</source>
+        <translation>自身</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="299"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="304"/>
+        <source>none</source>
+        <translation>なし</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="300"/>
+        <source>%1 × %2</source>
+        <translation>%1 × %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
+        <source>yes</source>
+        <translation>はい</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
+        <source>no</source>
+        <translation>いいえ</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
+        <source>%n piece(s)</source>
+        <translation>
+            <numerusform>ピース %n 個</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="310"/>
+        <source>%n sheet(s)</source>
+        <translation>
+            <numerusform>シート %n 枚</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="312"/>
+        <source>largest isometry error %1 mm</source>
+        <translation>最大等長誤差 %1 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="328"/>
+        <source>Some pieces overlap and cannot be cut as laid out. Export anyway?</source>
+        <translation>重なっているピースがあり、この配置では切断できません。それでもエクスポートしますか?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="329"/>
+        <source>The pattern has problems (see the report). Export anyway?</source>
+        <translation>型紙に問題があります (レポートを参照)。それでもエクスポートしますか?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="358"/>
+        <source>Writing the cutting pattern…</source>
+        <translation>型紙を書き出しています…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="358"/>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="369"/>
+        <source>Export failed</source>
+        <translation>エクスポートに失敗しました</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::PrintPatternReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="97"/>
+        <source>Print Cutting Pattern</source>
+        <translation>型紙の印刷</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="102"/>
+        <source>Printing failed</source>
+        <translation>印刷に失敗しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="103"/>
+        <source>The pages could not be sent to the printer.</source>
+        <translation>ページをプリンターに送れませんでした。</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::PrintPreviewReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="123"/>
+        <source>Print Preview: Cutting Pattern</source>
+        <translation>印刷プレビュー: 型紙</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::PropertiesPanel</name>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="22"/>
+        <source>degree %1, C%2, %3 intervals</source>
+        <translation>次数 %1、C%2、区間数 %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="76"/>
+        <source>Nothing selected.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
+        <translation>何も選択されていません。&lt;br&gt;%1、%2。&lt;br&gt;&lt;i&gt;頂点・辺・パッチをクリックすると選択されます。Shift+クリックで選択に追加します。&lt;/i&gt;</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="78"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="88"/>
+        <source>%n patch(es)</source>
+        <translation>
+            <numerusform>パッチ %n 個</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="79"/>
+        <source>%n control point(s)</source>
+        <translation>
+            <numerusform>制御点 %n 個</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="86"/>
+        <source>Selected: %1, %2, %3.</source>
+        <translation>選択: %1、%2、%3。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="87"/>
+        <source>%n vertex(es)</source>
+        <translation>
+            <numerusform>頂点 %n 個</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="87"/>
+        <source>%n edge(s)</source>
+        <translation>
+            <numerusform>辺 %n 本</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="101"/>
+        <source>&lt;b&gt;Vertex %1&lt;/b&gt;</source>
+        <translation>&lt;b&gt;頂点 %1&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="112"/>
+        <source>&lt;b&gt;Edge %1&lt;/b&gt; from vertex %2 to vertex %3&lt;br&gt;</source>
+        <translation>&lt;b&gt;辺 %1&lt;/b&gt; 頂点 %2 から頂点 %3 まで&lt;br&gt;</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="117"/>
+        <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
+        <translation>
+            <numerusform>スプライン曲線 (S)、%1、制御点 %n 個。&lt;br&gt;</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="120"/>
+        <source>A crease between patches %1 and %2; condition: %3.</source>
+        <translation>パッチ %1 と %2 の間の折り線。条件: %3。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="126"/>
+        <source>A boundary curve of patch %1.</source>
+        <translation>パッチ %1 の境界曲線。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="129"/>
+        <source>Ruling (R), a straight segment of length %1 mm.</source>
+        <translation>母線 (R)、長さ %1 mm の線分。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="138"/>
+        <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
+        <translation>
+            <numerusform>&lt;b&gt;パッチ %1&lt;/b&gt;: %2&lt;br&gt;パッチに沿った辺のラベル: %3&lt;br&gt;角 %n 個。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="174"/>
+        <source>Cannot move</source>
+        <translation>移動できません</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::RefineCurvesReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="291"/>
+        <source>Double the spline intervals of the selected curve and of all curves joined to it through strips; the shape stays the same. Select one spline edge or strip first.</source>
+        <translation>選択した曲線と、ストリップを介してつながるすべての曲線のスプライン区間を 2 倍にします。形状は変わりません。先にスプライン辺またはストリップを 1 つ選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="301"/>
+        <source>Cannot refine</source>
+        <translation>細分化できません</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::RelabelEdgeReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="112"/>
+        <source>Cannot relabel: %1</source>
+        <translation>ラベルを変更できません: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="116"/>
+        <source>Turn the selected edges from rulings (R) into spline curves (S) or back. Select edges of one surface first.</source>
+        <translation>選択した辺を母線 (R) からスプライン曲線 (S) に、またはその逆に変更します。先に 1 つの曲面の辺を選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="123"/>
+        <source>Cannot relabel</source>
+        <translation>ラベルを変更できません</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::ShortcutsDialog</name>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="79"/>
+        <source>Keyboard Shortcuts</source>
+        <translation>キーボードショートカット</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="81"/>
+        <source>Keys</source>
+        <translation>キー</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="81"/>
+        <source>Command</source>
+        <translation>コマンド</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="92"/>
+        <source>Click</source>
+        <translation>クリック</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="92"/>
+        <source>Select a vertex, edge or patch (empty space clears)</source>
+        <translation>頂点・辺・パッチを選択 (何もない所で選択解除)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="93"/>
+        <source>Shift+Click</source>
+        <translation>Shift+クリック</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="93"/>
+        <source>Add to or remove from the selection</source>
+        <translation>選択に追加、または選択から除外</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="94"/>
+        <source>Ctrl+Drag</source>
+        <translation>Ctrl+ドラッグ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="94"/>
+        <source>Select the vertices in a rectangle (with Shift: add them)</source>
+        <translation>矩形内の頂点を選択 (Shift 併用で追加)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="95"/>
+        <source>Left drag</source>
+        <translation>左ドラッグ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="95"/>
+        <source>3D view: rotate; development view: pan</source>
+        <translation>3D ビュー: 回転、展開図ビュー: パン</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="96"/>
+        <source>Middle drag</source>
+        <translation>中ドラッグ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="96"/>
+        <source>Pan</source>
+        <translation>パン</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="97"/>
+        <source>Wheel or right drag</source>
+        <translation>ホイールまたは右ドラッグ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/help_dialogs.cpp" line="97"/>
+        <source>Zoom</source>
+        <translation>ズーム</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::SplitAtRulingReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="210"/>
+        <source>The curves of this strip have a single spline interval, so a ruling can only be added after refining them (the shape stays the same). Refine now?</source>
+        <translation>このストリップの曲線はスプライン区間が 1 つしかないため、母線は細分化した後でなければ追加できません (形状は変わりません)。今すぐ細分化しますか?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="215"/>
+        <source>Cannot refine</source>
+        <translation>細分化できません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="209"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="226"/>
+        <source>Add Ruling</source>
+        <translation>母線を追加</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="190"/>
+        <source>Add a ruling across the selected strip and the strips that share its curves. Select one strip or cone patch first.</source>
+        <translation>選択したストリップと同じ曲線を共有するストリップを横切る母線を追加します。先にストリップまたは錐面のパッチを 1 つ選択してください。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="227"/>
+        <source>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoint(s) of the curves; refine the curves (Ctrl+Shift+R) for more.</source>
+        <translation>
+            <numerusform>新しい母線がパッチ %1 と同じ曲線を共有するストリップを横切る位置 (3D ビューで緑): ストリップに沿った割合 (%)。母線は曲線の %n 個の区切り点を通ることができます。さらに増やすには曲線を細分化してください (Ctrl+Shift+R)。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="258"/>
+        <source>Cannot add the ruling</source>
+        <translation>母線を追加できません</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::SubdivideStripReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="135"/>
+        <source>Add a crease across the selected strip and the row of strips it belongs to. Select one patch of type strip (SRSR) first.</source>
+        <translation>選択したストリップとそれが属するストリップの列を横切る折り線を追加します。先に種類がストリップ (SRSR) のパッチを 1 つ選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="146"/>
+        <source>Add Crease</source>
+        <translation>折り線を追加</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="147"/>
+        <source>Where the new crease crosses patch %1 and the strips of its row (green in the 3D view): per cent of the way from one curve of the strip to the other.</source>
+        <translation>新しい折り線がパッチ %1 とその列のストリップを横切る位置 (3D ビューで緑): ストリップの一方の曲線からもう一方への割合 (%)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="176"/>
+        <source>Cannot add the crease</source>
+        <translation>折り線を追加できません</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::Workspace</name>
+    <message numerus="yes">
+        <location filename="../app/gui/workspace.cpp" line="82"/>
+        <source>… and %n more problem(s).</source>
+        <translation>
+            <numerusform>… ほかに %n 件の問題があります。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="102"/>
+        <source>Untitled</source>
+        <translation>無題</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="105"/>
+        <source>Unsaved changes</source>
+        <translation>未保存の変更</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="106"/>
+        <source>%1 has unsaved changes. Do you want to save them?</source>
+        <translation>%1 には未保存の変更があります。保存しますか?</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="120"/>
+        <source>Opened %1</source>
+        <translation>%1 を開きました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="127"/>
+        <source>Cannot open file</source>
+        <translation>ファイルを開けません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="141"/>
+        <source>Save Project As</source>
+        <translation>プロジェクトに名前を付けて保存</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="144"/>
+        <source>untitled.devsurf</source>
+        <translation>無題.devsurf</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="146"/>
+        <source>DevSurf projects (*.devsurf)</source>
+        <translation>DevSurf プロジェクト (*.devsurf)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="160"/>
+        <source>Cannot save file</source>
+        <translation>ファイルを保存できません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="167"/>
+        <source>Saved %1</source>
+        <translation>%1 を保存しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="174"/>
+        <source>New design from the example “%1”</source>
+        <translation>例「%1」から新しいデザインを作成しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="176"/>
+        <source>Cannot create the example</source>
+        <translation>例を作成できません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="187"/>
+        <source>Recovered unsaved work</source>
+        <translation>未保存の作業を復元しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="190"/>
+        <source>Cannot recover</source>
+        <translation>復元できません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="203"/>
+        <source>an untitled design</source>
+        <translation>無題のデザイン</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="205"/>
+        <source>Recover unsaved work</source>
+        <translation>未保存の作業の復元</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="206"/>
+        <source>DevSurf did not close properly last time. Recover the unsaved changes to %1 from %2?</source>
+        <translation>前回 DevSurf は正常に終了しませんでした。%1 への未保存の変更を %2 から復元しますか?</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::views::SceneView</name>
+    <message>
+        <location filename="../views/scene_view.cpp" line="60"/>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view.cpp" line="62"/>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view.cpp" line="475"/>
+        <location filename="../views/scene_view.cpp" line="484"/>
+        <source>Surface %1 is not valid and is not shown.</source>
+        <translation>曲面 %1 は有効でないため表示されません。</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view.cpp" line="507"/>
+        <source>vertex %1</source>
+        <translation>頂点 %1</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view.cpp" line="516"/>
+        <source>edge %1 (R)</source>
+        <translation>辺 %1 (R)</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view.cpp" line="518"/>
+        <source>edge %1 (S, crease)</source>
+        <translation>辺 %1 (S、折り線)</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view.cpp" line="520"/>
+        <source>edge %1 (S, boundary)</source>
+        <translation>辺 %1 (S、境界)</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view.cpp" line="531"/>
+        <source>strip (SRSR)</source>
+        <translation>ストリップ (SRSR)</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view.cpp" line="534"/>
+        <source>pointed strip (SRS)</source>
+        <translation>尖ったストリップ (SRS)</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view.cpp" line="537"/>
+        <source>cone (SRR)</source>
+        <translation>錐面 (SRR)</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view.cpp" line="540"/>
+        <source>planar patch</source>
+        <translation>平面パッチ</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view.cpp" line="543"/>
+        <source>invalid patch</source>
+        <translation>無効なパッチ</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view.cpp" line="546"/>
+        <source>patch %1 (%2)</source>
+        <translation>パッチ %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view.cpp" line="551"/>
+        <source>surface %1: %2</source>
+        <translation>曲面 %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <location filename="../app/gui/main.cpp" line="28"/>
+        <source>Design developable surfaces and curved-crease origami.</source>
+        <translation>可展面と曲線折り折り紙を設計します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="32"/>
+        <source>A project file to open.</source>
+        <translation>開くプロジェクトファイル。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main.cpp" line="35"/>
+        <source>Start with a built-in example.</source>
+        <translation>組み込みの例で開始します。</translation>
+    </message>
+</context>
+</TS>
