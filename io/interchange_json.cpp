@@ -1,6 +1,7 @@
 #include "interchange_json.h"
 
 #include "file_error.h"
+#include "model/creases.h"
 #include "model/development.h"
 #include "model/sampled_mesh.h"
 #include "model/strip.h"
@@ -103,10 +104,7 @@ void writeCurve(JsonWriter& w, const model::BSplineCurve& curve) {
 void writeSurface(JsonWriter& w, const model::CompositeSurface& surface, int samples) {
     using namespace model;
     const std::vector<Strip> strips = stripsOf(surface);
-    std::map<FaceId, std::size_t> stripIndex;
-    for (std::size_t i = 0; i < strips.size(); ++i) {
-        stripIndex[strips[i].face] = i;
-    }
+    const SampledMesh mesh = sampleSurface(surface, samples);
     w.text += "{\n      ";
     w.key("name");
     w.string(surface.name());
@@ -163,64 +161,53 @@ void writeSurface(JsonWriter& w, const model::CompositeSurface& surface, int sam
     w.key("creases");
     w.text += "[";
     first = true;
-    for (const auto& [edgeId, record] : surface.edges()) {
-        if (!record.isSpline()) {
+    for (const Crease& crease : creasesOf(surface, strips, mesh)) {
+        if (crease.left.strip == CreaseSide::kNoStrip ||
+            crease.right.strip == CreaseSide::kNoStrip) {
             continue;
         }
-        const auto faces = surface.facesOfEdge(edgeId);
-        if (faces.size() != 2 || stripIndex.count(faces[0]) == 0 ||
-            stripIndex.count(faces[1]) == 0) {
-            continue;
-        }
-        // The face whose loop runs along the edge's orientation lies on its left.
-        auto runsAlong = [&](FaceId face) {
-            const auto& loop = surface.faceLoop(face);
-            for (std::size_t i = 0; i < loop.size(); ++i) {
-                if (loop[i] == record.from && loop[(i + 1) % loop.size()] == record.to) {
-                    return true;
-                }
-            }
-            return false;
-        };
-        const FaceId left = runsAlong(faces[0]) ? faces[0] : faces[1];
-        const FaceId right = left == faces[0] ? faces[1] : faces[0];
-        auto writeSide = [&](FaceId face) {
-            const std::size_t index = stripIndex.at(face);
-            const Strip& s = strips[index];
-            const bool isA = s.aSide.edge == edgeId;
-            const bool reversed = isA ? s.aSide.reversed : s.bSide.reversed;
+        const EdgeRecord& record = surface.edge(crease.edge);
+        auto writeSide = [&w](const CreaseSide& side) {
             w.text += "{";
             w.key("strip");
-            w.integer(static_cast<long long>(index));
+            w.integer(static_cast<long long>(side.strip));
             w.text += ", ";
             w.key("side");
-            w.string(isA ? "a" : "b");
+            w.string(side.sideA ? "a" : "b");
             w.text += ", ";
             w.key("reversed");
-            w.text += reversed ? "true" : "false";
+            w.text += side.reversed ? "true" : "false";
+            w.text += ", ";
+            w.key("flipNormal");
+            w.text += side.flipNormal ? "true" : "false";
             w.text += "}";
         };
         w.text += first ? "\n        {" : ",\n        {";
         first = false;
         w.key("edge");
-        w.integer(edgeId);
+        w.integer(crease.edge);
         w.text += ", ";
         w.key("curve");
         writeCurve(w, BSplineCurve::uniform(record.space, record.controlPoints));
         w.text += ", ";
         w.key("left");
-        writeSide(left);
+        writeSide(crease.left);
         w.text += ", ";
         w.key("right");
-        writeSide(right);
+        writeSide(crease.right);
         w.text += ", ";
         w.key("condition");
         w.string(creaseConditionName(record.condition));
+        w.text += ", ";
+        w.key("assignment");
+        w.string(foldAssignmentLetter(crease.assignment));
+        w.text += ", ";
+        w.key("foldAngle");
+        w.number(crease.foldAngleDegrees);
         w.text += "}";
     }
     w.text += "],\n      ";
 
-    const SampledMesh mesh = sampleSurface(surface, samples);
     const Development development = unfoldSampledMesh(mesh);
     w.key("mesh");
     w.text += "{\n        ";

@@ -32,7 +32,7 @@ struct DeBoorPoints {
 };
 
 // For a fixed u, every de Boor point as a linear combination of m+1 control points; the solver
-// precomputes these once per parameter value (MATH.md §1).
+// precomputes these once per parameter value (docs/math.md §1).
 struct DeBoorRows {
     std::vector<int> indices;                // m+1 control point indices (wrapped mod N if closed)
     std::vector<double> point;               // m+1 coefficients

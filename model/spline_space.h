@@ -5,7 +5,7 @@
 
 namespace devsurf::model {
 
-// The uniform spline space S(n, m, k) on [0,1] (MATH.md §1): degree m, smoothness C^k,
+// The uniform spline space S(n, m, k) on [0,1] (docs/math.md §1): degree m, smoothness C^k,
 // n intervals of equal length. Interior breakpoints i/n carry knot multiplicity m - k.
 struct SplineSpace {
     int degree = 3;     // m >= 1

@@ -1,7 +1,7 @@
 #include "pattern_pieces.h"
 
-#include "crease_fold.h"
 #include "model/bspline_curve.h"
+#include "model/creases.h"
 #include "model/development.h"
 #include "model/sampled_mesh.h"
 #include "pattern_cut.h"
@@ -381,9 +381,9 @@ std::vector<PieceBuild> developSurface(const CompositeSurface& surface, int surf
                 mesh.coarseVertexIds[original], flat[v]);
         }
     }
-    std::map<EdgeId, CreaseFold> folds;
-    for (const CreaseFold& fold : creaseFolds(surface, mesh)) {
-        folds.emplace(fold.edge, fold);
+    std::map<EdgeId, Crease> folds;
+    for (const Crease& crease : creasesOf(surface, stripsOf(surface), mesh)) {
+        folds.emplace(crease.edge, crease);
     }
     std::map<EdgeId, std::vector<int>> sampled;
     for (const auto& line : mesh.splineEdges) {
@@ -417,11 +417,12 @@ std::vector<PieceBuild> developSurface(const CompositeSurface& surface, int surf
             const auto fold = folds.find(id);
             if (fold != folds.end() && !boundary) {
                 PatternPath crease = curve;
-                crease.face = fold->second.left;
+                crease.face = fold->second.left.face;
                 crease.foldAngleDegrees = fold->second.foldAngleDegrees;
-                if (std::abs(fold->second.foldAngleDegrees) >= kFlatFoldDegrees) {
-                    crease.layer = fold->second.foldAngleDegrees > 0 ? PatternLayer::Mountain
-                                                                     : PatternLayer::Valley;
+                if (fold->second.assignment != FoldAssignment::Flat) {
+                    crease.layer = fold->second.assignment == FoldAssignment::Mountain
+                                       ? PatternLayer::Mountain
+                                       : PatternLayer::Valley;
                 }
                 piece.paths.push_back(std::move(crease));
             }

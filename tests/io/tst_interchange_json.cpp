@@ -8,6 +8,9 @@
 #include <QJsonObject>
 #include <QTest>
 
+#include <cmath>
+#include <map>
+
 using namespace devsurf;
 
 namespace {
@@ -88,6 +91,92 @@ private slots:
                 }
             }
             QCOMPARE(development["period"].isNull(), info.name != "cylinder");
+        }
+    }
+
+    void creaseSidesNormalsAndFolds() {
+        // From the JSON alone: both strips' normals (a′ × (b − a), flipped where told) point to
+        // the same side, `left` lies on the left of the crease seen from there, and folding
+        // the sheet up beyond y = 100 makes valleys (down: mountains) with the fold angle.
+        auto mean = [](const QJsonArray& points) {
+            model::Vec3 sum;
+            for (const QJsonValue& p : points) {
+                sum += toVec3(p);
+            }
+            return sum / static_cast<double>(points.size());
+        };
+        for (const double degrees : {0.0, 30.0, -30.0}) {
+            for (const char* name : {"sheet", "annulus"}) {
+                model::Project project = model::makeExample(name);
+                if (degrees != 0.0) {
+                    if (std::string(name) != "sheet") {
+                        continue;
+                    }
+                    const double angle = degrees * M_PI / 180.0;
+                    auto fold = [angle](model::Vec3 p) {
+                        if (p.y > 100.0) {
+                            const double r = p.y - 100.0;
+                            p = {p.x, 100.0 + r * std::cos(angle), r * std::sin(angle)};
+                        }
+                        return p;
+                    };
+                    model::CompositeSurface& surface = project.surfaces.front();
+                    std::map<model::EdgeId, std::vector<model::Vec3>> controls;
+                    for (const auto& [id, record] : surface.edges()) {
+                        std::vector<model::Vec3> points;
+                        for (const model::Vec3& p : record.controlPoints) {
+                            points.push_back(fold(p));
+                        }
+                        controls.emplace(id, points);
+                    }
+                    for (const auto& [id, p] : std::map(surface.vertices())) {
+                        surface.moveVertex(id, fold(p));
+                    }
+                    for (const auto& [id, points] : controls) {
+                        if (surface.edge(id).isSpline()) {
+                            surface.setControlPoints(id, points);
+                        }
+                    }
+                    QVERIFY(surface.validate().empty());
+                }
+                const QJsonObject surface =
+                    parse(io::interchangeJson(project, 2))["surfaces"].toArray()[0].toObject();
+                const QJsonArray strips = surface["strips"].toArray();
+                int folded = 0;
+                for (const QJsonValue& value : surface["creases"].toArray()) {
+                    const QJsonObject crease = value.toObject();
+                    const QJsonArray curve = crease["curve"].toObject()["controlPoints"].toArray();
+                    const model::Vec3 t = toVec3(curve.last()) - toVec3(curve.first());
+                    model::Vec3 normals[2];
+                    model::Vec3 away[2]; // from the crease to the strip's other curve
+                    int k = 0;
+                    for (const char* which : {"left", "right"}) {
+                        const QJsonObject side = crease[which].toObject();
+                        const QJsonObject strip = strips[side["strip"].toInt()].toObject();
+                        const QJsonArray a = strip["a"].toObject()["controlPoints"].toArray();
+                        const QJsonArray b = strip["b"].toObject()["controlPoints"].toArray();
+                        model::Vec3 n =
+                            cross(toVec3(a.last()) - toVec3(a.first()), mean(b) - mean(a));
+                        normals[k] = side["flipNormal"].toBool() ? n * -1.0 : n;
+                        away[k] =
+                            side["side"].toString() == "a" ? mean(b) - mean(a) : mean(a) - mean(b);
+                        ++k;
+                    }
+                    QVERIFY(dot(normals[0], normals[1]) > 0.0 || degrees != 0.0);
+                    QVERIFY(dot(cross(normals[0], t), away[0]) > 0.0);
+                    QVERIFY(dot(cross(normals[1], t), away[1]) < 0.0);
+                    const QString assignment = crease["assignment"].toString();
+                    const double foldAngle = crease["foldAngle"].toDouble();
+                    if (assignment != "F") {
+                        ++folded;
+                        QVERIFY(std::abs(std::abs(foldAngle) - std::abs(degrees)) < 1e-6);
+                        QCOMPARE(assignment, QString(degrees > 0 ? "V" : "M"));
+                    } else {
+                        QVERIFY(std::abs(foldAngle) < 0.1);
+                    }
+                }
+                QCOMPARE(folded, degrees == 0.0 ? 0 : 3);
+            }
         }
     }
 
