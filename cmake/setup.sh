@@ -13,6 +13,7 @@ esac
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build"
 build_asan="$root/build-asan"
+build_tsan="$root/build-tsan"
 jobs="$(nproc 2>/dev/null || echo 2)"
 
 packages=(
@@ -89,5 +90,13 @@ case "$mode" in
     (cd "$build_asan" && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       xvfb-run -a ctest --output-on-failure -j "$jobs")
+    echo "== Building and running the worker and document tests under ThreadSanitizer in $build_tsan"
+    cmake -S "$root" -B "$build_tsan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDEVSURF_TSAN=ON \
+      -DDEVSURF_UNIT_TESTS_ONLY=ON >/dev/null
+    cmake --build "$build_tsan" -j "$jobs" --target tst_worker tst_document
+    # One BLAS/OpenMP thread: the threads under test are ours, not the uninstrumented libgomp's.
+    (cd "$build_tsan" && OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 \
+      TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$root/tests/tsan.supp" \
+      xvfb-run -a ctest --output-on-failure -j "$jobs" -R '^(tst_worker|tst_document)$')
     ;;
 esac

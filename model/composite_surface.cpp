@@ -55,8 +55,14 @@ struct CompositeSurface::Connectivity {
     std::map<VertexId, Mesh::VertexHandle> vertexHandle;
 
     Connectivity() {
-        // Our own messages name the entity; OpenMesh's log would only add noise on stderr.
-        omerr().disable();
+        // Our own messages name the entity; OpenMesh's log would only add noise on stderr. Its
+        // log is one global stream: switch it off once, not from every thread that builds a
+        // surface (the solver worker does, beside the GUI thread).
+        static const bool quiet = [] {
+            omerr().disable();
+            return true;
+        }();
+        (void)quiet;
         mesh.add_property(vertexId);
         mesh.add_property(edgeId);
         mesh.add_property(faceId);

@@ -2,6 +2,8 @@
 // Exit codes: 0 success, 1 bad usage, 2 invalid or unreadable input (or an output that
 // cannot be written), each failure explained in one sentence on stderr.
 
+#include "crease_command.h"
+#include "drag_command.h"
 #include "io/file_error.h"
 #include "io/interchange_json.h"
 #include "io/project_file.h"
@@ -43,6 +45,10 @@ Commands:
                       crease condition); --json prints those lists as JSON.
   pin FILE --vertices IDS [--unpin] [--surface K] -o OUT.devsurf
                       Pin vertices (the solver never moves them) or release them.
+  crease FILE --edges IDS --condition curved-fold|geodesic|none [--surface K] -o OUT.devsurf
+                      Set the condition the solver imposes on creases: a curved fold
+                      (the crease's osculating plane bisects the two patches) or a
+                      geodesic; none clears it.
   validate FILE       Check every invariant of the model; list all problems.
   export-json FILE -o OUT.json [--samples N]
                       Write the interchange JSON (docs/interchange-format.md);
@@ -54,8 +60,14 @@ Commands:
                       assembly / factorisation / solve, quality). --perturb adds Gaussian
                       noise of SIGMA times the surface's diameter first; --fix keeps the
                       vertices with the given ids (e.g. 0,4,7) where they are.
-  bench [--json]      Run the solver benchmark (about 80 seconds): timings, flops, quality,
-                      the rebuild baseline and Ceres on the paper's Fig. 17 models.
+  drag FILE --vertices IDS (--by DX,DY,DZ | --rotate PX,PY,PZ,AX,AY,AZ,DEGREES)
+       [--steps N] [--pin IDS] [--after K] [--surface K] -o OUT.devsurf
+                      Replay a drag as the desktop application runs it: the vertices are
+                      moved by DX,DY,DZ (or rotated by DEGREES about the axis AX,AY,AZ
+                      through PX,PY,PZ) in N evenly spaced steps (default 20) with one
+                      solver iteration each, then K more iterations (default 10). Pins in
+                      the file stay; --pin pins more vertices. One line per step
+                      (residual, time, quality).
   export FILE --format dxf|svg|pdf|fold [--sheet W,H | --paper A4|A3|Letter]
          [--tolerance MM] [--splines] [--r12] [--seam MM] [--rulings] -o OUT
                       Write the cutting pattern: pieces laid out on sheets of W x H mm
@@ -67,6 +79,8 @@ Commands:
   report FILE [--json] [--sheet W,H | --paper NAME] [--tolerance MM] [--seam MM]
                       Print the fabrication report: per piece its sheet, size, area,
                       largest isometry error, overlaps, and whether it fits the sheet.
+
+The solver benchmark is the separate program devsurf-bench [--json].
 
 Options:
   -h, --help          Show this help.
@@ -235,6 +249,15 @@ int commandInfo(const std::vector<std::string>& given) {
     return kExitOk;
 }
 
+int commandCrease(const std::vector<std::string>& given) {
+    const Arguments args = parse(given, {"-o", "--edges", "--condition", "--surface"});
+    try {
+        return app::runCreaseCommand(args.positional, {args.options.begin(), args.options.end()});
+    } catch (const std::invalid_argument& error) {
+        throw UsageError{error.what()};
+    }
+}
+
 int commandPin(const std::vector<std::string>& given) {
     bool unpin = false;
     std::vector<std::string> rest;
@@ -331,6 +354,9 @@ int run(const std::vector<std::string>& args) {
     if (command == "pin") {
         return commandPin(rest);
     }
+    if (command == "crease") {
+        return commandCrease(rest);
+    }
     if (command == "export-json") {
         return commandExportJson(rest);
     }
@@ -354,15 +380,18 @@ int run(const std::vector<std::string>& args) {
             throw UsageError{error.what()};
         }
     }
-    if (command == "bench") {
-        bool json = false;
-        for (const std::string& arg : rest) {
-            if (arg != "--json") {
-                throw UsageError{"unknown option '" + arg + "' for bench"};
-            }
-            json = true;
+    if (command == "drag") {
+        const Arguments args = parse(rest, {"-o", "--vertices", "--by", "--rotate", "--steps",
+                                            "--pin", "--after", "--surface"});
+        try {
+            return app::runDragCommand(args.positional, {args.options.begin(), args.options.end()});
+        } catch (const std::invalid_argument& error) {
+            throw UsageError{error.what()};
         }
-        return app::runBenchCommand(json);
+    }
+    if (command == "bench") {
+        throw UsageError{"the benchmark is the separate program 'devsurf-bench' (devsurf-bench "
+                         "[--json])"};
     }
     throw UsageError{"unknown command '" + command + "'"};
 }

@@ -2,10 +2,9 @@
 
 #include "io/project_file.h"
 #include "model/model_error.h"
-#include "solver/core/guided_projection.h"
 #include "solver/formulation/perturbation.h"
-#include "solver/formulation/surface_formulation.h"
 #include "solver/quality/quality_measures.h"
+#include "solver/session/solve_session.h"
 
 #include <QString>
 
@@ -60,8 +59,7 @@ std::vector<model::VertexId> parseIds(const std::string& text) {
 
 // Says whether the solve reached the tolerance and, if not, which faces are worst (their ids,
 // as the desktop application shows them).
-void reportTolerance(const solver::SurfaceFormulation& formulation, const std::vector<double>& x,
-                     const solver::Summary& summary) {
+void reportTolerance(const solver::SolveSession& session, const solver::Summary& summary) {
     char line[256];
     if (summary.toleranceReached) {
         std::snprintf(line, sizeof line, "Reached the tolerance %.1e (largest residual %.2e).\n",
@@ -73,7 +71,7 @@ void reportTolerance(const solver::SurfaceFormulation& formulation, const std::v
                   "Did not reach the tolerance %.1e (largest residual %.2e); worst faces:",
                   summary.tolerance, summary.finalMaxConstraintResidual);
     std::cout << line;
-    const auto faces = formulation.faceResiduals(x);
+    const auto faces = session.worstFaces();
     const std::size_t shown = std::min<std::size_t>(faces.size(), 5);
     for (std::size_t i = 0; i < shown; ++i) {
         std::snprintf(line, sizeof line, "%s face %u (%.2e)", i == 0 ? "" : ",", faces[i].face,
@@ -136,31 +134,25 @@ int runSolveCommand(const std::vector<std::string>& positional,
             solver::perturbSurface(surface, sigma * solver::surfaceDiameter(surface),
                                    seed + static_cast<unsigned>(s), fixed);
         }
-        solver::FormulationOptions formulationOptions;
+        solver::SessionOptions sessionOptions;
         for (model::VertexId v : fixed) {
-            formulationOptions.handles.push_back({v, true, {}});
+            sessionOptions.formulation.handles.push_back({v, true, {}});
         }
-        std::unique_ptr<solver::SurfaceFormulation> formulation;
+        std::unique_ptr<solver::SolveSession> session;
         try {
-            formulation = std::make_unique<solver::SurfaceFormulation>(surface, formulationOptions);
+            session = std::make_unique<solver::SolveSession>(
+                surface, std::vector<solver::VertexHandle>{}, sessionOptions);
         } catch (const std::invalid_argument& error) {
             throw model::ModelError("surface " + std::to_string(s + 1) + " of '" + path +
                                     "' cannot be solved: " + error.what());
         }
-        std::vector<double> x = formulation->initialState();
+        const solver::Problem& problem = session->formulation().problem();
         std::cout << "Surface " << s + 1 << " (" << surface.name()
-                  << "): " << formulation->problem().variableCount() << " variables, "
-                  << formulation->problem().rowCount() << " rows\n";
-        solver::GuidedProjection projection;
-        solver::Options solverOptions;
-        solverOptions.eps2 = 1e-3;
-        solverOptions.maxIterations = 1;
-        model::CompositeSurface current = surface;
+                  << "): " << problem.variableCount() << " variables, " << problem.rowCount()
+                  << " rows\n";
         solver::Summary last;
         for (int i = 0; i < iterations; ++i) {
-            solverOptions.scheduleOffset = i;
-            const solver::Summary summary =
-                projection.solve(formulation->problem(), x, solverOptions);
+            const solver::Summary summary = session->step(1);
             if (!summary.succeeded() || summary.iterations.empty()) {
                 throw model::ModelError("the solver stopped at iteration " + std::to_string(i + 1) +
                                         " (" + solver::toString(summary.status) +
@@ -169,11 +161,7 @@ int runSolveCommand(const std::vector<std::string>& positional,
             }
             last = summary;
             const solver::IterationStats& it = summary.iterations.front();
-            std::string error;
-            if (!formulation->writeBack(x, current, &error)) {
-                throw model::ModelError(error);
-            }
-            const solver::QualityMeasures quality = solver::measureQuality(current);
+            const solver::QualityMeasures quality = solver::measureQuality(session->surface());
             char line[512];
             std::snprintf(line, sizeof line,
                           "iteration %3d  residual %.3e  assembly %.3f ms  factorisation %.3f ms "
@@ -182,8 +170,8 @@ int runSolveCommand(const std::vector<std::string>& positional,
                           it.solveMs, quality.describe().c_str());
             std::cout << line;
         }
-        reportTolerance(*formulation, x, last);
-        surface = current;
+        reportTolerance(*session, last);
+        surface = session->surface();
     }
     io::saveProjectFile(project, QString::fromStdString(output));
     std::cout << "Wrote " << output << "\n";

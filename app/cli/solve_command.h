@@ -12,7 +12,4 @@ namespace devsurf::app {
 int runSolveCommand(const std::vector<std::string>& positional,
                     const std::vector<std::pair<std::string, std::string>>& options);
 
-// `devsurf-cli bench [--json]`.
-int runBenchCommand(bool json);
-
 } // namespace devsurf::app

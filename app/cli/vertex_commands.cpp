@@ -1,13 +1,18 @@
 #include "vertex_commands.h"
 
 #include "io/project_file.h"
+#include "model/creases.h"
+#include "model/sampled_mesh.h"
+#include "model/strip.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QString>
 
+#include <cstdio>
 #include <iostream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -35,6 +40,16 @@ const char* curveKind(const model::CompositeSurface& surface, model::EdgeId id) 
     return surface.facesOfEdge(id).size() == 2 ? "crease" : "boundary";
 }
 
+// Every crease of the surface by edge id (mountain/valley and fold angle from the sampled mesh).
+std::map<model::EdgeId, model::Crease> creasesById(const model::CompositeSurface& surface) {
+    std::map<model::EdgeId, model::Crease> creases;
+    for (const model::Crease& crease :
+         model::creasesOf(surface, model::stripsOf(surface), model::sampleSurface(surface, 8))) {
+        creases.emplace(crease.edge, crease);
+    }
+    return creases;
+}
+
 QJsonObject surfaceJson(const model::CompositeSurface& surface, const EntityListing& listing) {
     QJsonObject object;
     object["name"] = QString::fromStdString(surface.name());
@@ -51,6 +66,7 @@ QJsonObject surfaceJson(const model::CompositeSurface& surface, const EntityList
     }
     if (listing.edges) {
         QJsonArray edges;
+        const auto creases = creasesById(surface);
         for (const auto& [id, edge] : surface.edges()) {
             QJsonObject e{{"id", static_cast<qint64>(id)},
                           {"label", edge.isSpline() ? "S" : "R"},
@@ -59,6 +75,10 @@ QJsonObject surfaceJson(const model::CompositeSurface& surface, const EntityList
             if (edge.isSpline()) {
                 e["kind"] = curveKind(surface, id);
                 e["condition"] = model::creaseConditionName(edge.condition);
+            }
+            if (const auto crease = creases.find(id); crease != creases.end()) {
+                e["assignment"] = model::foldAssignmentLetter(crease->second.assignment);
+                e["foldAngle"] = crease->second.foldAngleDegrees;
             }
             edges.append(e);
         }
@@ -82,13 +102,22 @@ void printSurfaceText(const model::CompositeSurface& surface, std::size_t index,
         out.precision(precision);
     }
     if (listing.edges) {
-        out << "  Edges (id label from to, kind, condition):\n";
+        out << "  Edges (id label from to, kind, condition; creases: mountain M, valley V or flat "
+               "F, fold angle):\n";
+        const auto creases = creasesById(surface);
         for (const auto& [id, edge] : surface.edges()) {
             out << "    " << id << " " << (edge.isSpline() ? "S" : "R") << " " << edge.from << " "
                 << edge.to;
             if (edge.isSpline()) {
                 out << " " << curveKind(surface, id) << " "
                     << model::creaseConditionName(edge.condition);
+            }
+            if (const auto crease = creases.find(id); crease != creases.end()) {
+                char fold[64];
+                std::snprintf(fold, sizeof fold, " %s %.2f deg",
+                              model::foldAssignmentLetter(crease->second.assignment),
+                              crease->second.foldAngleDegrees);
+                out << fold;
             }
             out << "\n";
         }
@@ -123,8 +152,38 @@ void printEntities(const model::Project& project, const EntityListing& listing, 
     }
 }
 
+std::size_t surfaceOption(const std::vector<std::pair<std::string, std::string>>& options,
+                          const model::Project& project, const std::string& purpose) {
+    if (project.surfaces.empty()) {
+        throw std::invalid_argument("the project has no surface to " + purpose);
+    }
+    const std::string text = option(options, "--surface");
+    if (text.empty()) {
+        return 0;
+    }
+    std::size_t used = 0;
+    long value = 0;
+    try {
+        value = std::stol(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size() || value < 1 ||
+        static_cast<std::size_t>(value) > project.surfaces.size()) {
+        throw std::invalid_argument("option '--surface' needs a surface number from 1 to " +
+                                    std::to_string(project.surfaces.size()) + ", not '" + text +
+                                    "'");
+    }
+    return static_cast<std::size_t>(value - 1);
+}
+
 std::vector<model::VertexId> parseVertexIds(const std::string& text, const std::string& option) {
-    std::vector<model::VertexId> ids;
+    return parseIds(text, option, "vertex");
+}
+
+std::vector<std::uint32_t> parseIds(const std::string& text, const std::string& option,
+                                    const std::string& what) {
+    std::vector<std::uint32_t> ids;
     std::stringstream stream(text);
     std::string item;
     while (std::getline(stream, item, ',')) {
@@ -136,13 +195,13 @@ std::vector<model::VertexId> parseVertexIds(const std::string& text, const std::
             used = 0;
         }
         if (used == 0 || used != item.size() || value < 0 || value > 0xfffffffeL) {
-            throw std::invalid_argument("option '" + option +
-                                        "' needs vertex ids such as 0,4,7, not '" + text + "'");
+            throw std::invalid_argument("option '" + option + "' needs " + what +
+                                        " ids such as 0,4,7, not '" + text + "'");
         }
-        ids.push_back(static_cast<model::VertexId>(value));
+        ids.push_back(static_cast<std::uint32_t>(value));
     }
     if (ids.empty()) {
-        throw std::invalid_argument("option '" + option + "' needs vertex ids such as 0,4,7");
+        throw std::invalid_argument("option '" + option + "' needs " + what + " ids such as 0,4,7");
     }
     return ids;
 }
@@ -162,26 +221,7 @@ int runPinCommand(const std::vector<std::string>& positional,
     }
     const std::vector<model::VertexId> ids = parseVertexIds(idsText, "--vertices");
     model::Project project = io::loadProjectFile(QString::fromStdString(positional[0]));
-    std::size_t index = 0;
-    if (const std::string surfaceText = option(options, "--surface"); !surfaceText.empty()) {
-        std::size_t used = 0;
-        long value = 0;
-        try {
-            value = std::stol(surfaceText, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used != surfaceText.size() || value < 1 ||
-            static_cast<std::size_t>(value) > project.surfaces.size()) {
-            throw std::invalid_argument("option '--surface' needs a surface number from 1 to " +
-                                        std::to_string(project.surfaces.size()) + ", not '" +
-                                        surfaceText + "'");
-        }
-        index = static_cast<std::size_t>(value - 1);
-    }
-    if (project.surfaces.empty()) {
-        throw std::invalid_argument("the project has no surface to pin vertices of");
-    }
+    const std::size_t index = surfaceOption(options, project, "pin vertices of");
     model::CompositeSurface& surface = project.surfaces[index];
     std::string unknown;
     for (model::VertexId id : ids) {

@@ -2,6 +2,7 @@
 
 #include "model/project.h"
 
+#include <cstdint>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -24,6 +25,15 @@ void printEntities(const model::Project& project, const EntityListing& listing, 
 // Vertex ids such as "0,4,7" (option names the option in the error). Throws std::invalid_argument
 // (message without a final period) on anything else.
 std::vector<model::VertexId> parseVertexIds(const std::string& text, const std::string& option);
+// The same for any kind of id; `what` names it in the message ("edge").
+std::vector<std::uint32_t> parseIds(const std::string& text, const std::string& option,
+                                    const std::string& what);
+
+// The 0-based surface index of option --surface K (1-based; 0 without the option). Throws
+// std::invalid_argument if K is not a surface of the project or the project has none (`purpose`
+// completes "the project has no surface to …").
+std::size_t surfaceOption(const std::vector<std::pair<std::string, std::string>>& options,
+                          const model::Project& project, const std::string& purpose);
 
 // `devsurf-cli pin FILE --vertices IDS [--unpin] [--surface K] -o OUT`. Options are split by the
 // caller ("--unpin" arrives as a flag). Throws std::invalid_argument for bad usage and io/model

@@ -1,5 +1,6 @@
 #include "solver/core/guided_projection.h"
 
+#include "solver/core/analysis_cache.h"
 #include "solver/core/normal_equations.h"
 #include "solver/core/problem.h"
 #include "solver/core/sparse_cholesky.h"
@@ -38,6 +39,19 @@ double epsilon2(const Options& options, int iteration, double residual) {
         return std::clamp(residual, std::min(options.eps2Minimum, options.eps2), options.eps2);
     }
     return options.eps2;
+}
+
+double proximityWeight(const Options& options, double residual) {
+    if (options.proximityFactor <= 0.0) {
+        return 0.0;
+    }
+    double scaled = residual;
+    if (residual < options.proximityThreshold) {
+        // Below the threshold μ decays with the square of the residual (continuously), so the
+        // pull towards the start does not slow the final, fast convergence.
+        scaled *= residual / options.proximityThreshold;
+    }
+    return std::min(options.proximityMaximum, options.proximityFactor * scaled);
 }
 
 std::function<double(int, double)> residualEps2Schedule(double maximum, double minimum,
@@ -101,7 +115,8 @@ struct GuidedProjection::Impl {
             return std::numeric_limits<double>::infinity();
         }
         equations.fill(problem, epsilon1(options, options.scheduleOffset), options.eps2,
-                       cholesky.values(), rhs.data());
+                       cholesky.values(), rhs.data(),
+                       proximityWeight(options, equations.maxConstraintResidual()));
         std::vector<double> values(cholesky.values(),
                                    cholesky.values() + equations.normalNonZeros());
         double best = std::numeric_limits<double>::infinity();
@@ -121,7 +136,65 @@ struct GuidedProjection::Impl {
 
     // Ordering, choice of method and symbolic analysis for the cached mode. The equations
     // must be built and evaluated at the first iterate (Measured times factorisations of it).
+    // Takes the analysis of this structure from the process-wide cache (no ordering, no
+    // symbolic analysis, no timing); false if there is none. The equations must be in their
+    // original layout.
+    bool adoptCachedAnalysis(const Options& options) {
+        const auto cached =
+            AnalysisCache::instance().find(equations.variableCount(), equations.columnStart(),
+                                           equations.rowIndex(), options.factorization);
+        if (!cached) {
+            return false;
+        }
+        equations.setLayout(cached->permutation, cached->lowerTriangle
+                                                     ? NormalEquations::Triangle::Lower
+                                                     : NormalEquations::Triangle::Upper);
+        if (!cholesky.adoptAnalysis(*cached, equations.columnStart(), equations.rowIndex())) {
+            equations.setLayout({}, NormalEquations::Triangle::Upper);
+            return false;
+        }
+        return true;
+    }
+
+    // Puts the analysis just made into the cache (the pattern in its original order). If
+    // another solver cached this structure meanwhile, its decision is taken instead; false if
+    // that fails.
+    bool storeAnalysis(const Options& options, std::vector<int> colStart, std::vector<int> rowIndex,
+                       const std::vector<int>& permutation, bool supernodal) {
+        auto entry = std::make_shared<CachedAnalysis>();
+        entry->symbolic = cholesky.exportSymbolic();
+        if (!entry->symbolic) {
+            return true;
+        }
+        entry->variables = equations.variableCount();
+        entry->method = options.factorization;
+        entry->hash = patternHash(entry->variables, colStart, rowIndex, options.factorization);
+        entry->colStart = std::move(colStart);
+        entry->rowIndex = std::move(rowIndex);
+        entry->permutation = permutation;
+        entry->supernodal = supernodal;
+        entry->lowerTriangle = equations.triangle() == NormalEquations::Triangle::Lower;
+        const CachedAnalysis* mine = entry.get();
+        const auto kept = AnalysisCache::instance().insert(std::move(entry));
+        if (!kept || kept.get() == mine) {
+            return true;
+        }
+        equations.setLayout(kept->permutation, kept->lowerTriangle
+                                                   ? NormalEquations::Triangle::Lower
+                                                   : NormalEquations::Triangle::Upper);
+        return cholesky.adoptAnalysis(*kept, equations.columnStart(), equations.rowIndex());
+    }
+
     bool analyseCached(const Problem& problem, const Options& options, Summary& summary) {
+        // Decided once per structure: a structure seen before takes the same analysis and the
+        // same supernodal/simplicial choice.
+        if (adoptCachedAnalysis(options)) {
+            analysed = true;
+            method = options.factorization;
+            return true;
+        }
+        std::vector<int> originalColStart = equations.columnStart();
+        std::vector<int> originalRowIndex = equations.rowIndex();
         std::vector<int> permutation;
         bool supernodal = false;
         if (!cholesky.computeOrdering(equations.variableCount(), equations.columnStart(),
@@ -149,6 +222,12 @@ struct GuidedProjection::Impl {
         }
         analysed = true;
         method = options.factorization;
+        if (!storeAnalysis(options, std::move(originalColStart), std::move(originalRowIndex),
+                           permutation, supernodal)) {
+            summary.status = Status::FactorizationFailed;
+            summary.message = cholesky.error();
+            return false;
+        }
         return true;
     }
 
@@ -158,7 +237,7 @@ struct GuidedProjection::Impl {
         auto start = Clock::now();
         Eigen::SparseMatrix<double> upper;
         Eigen::VectorXd g;
-        equations.assembleFromScratch(problem, eps1, stats.eps2, upper, g);
+        equations.assembleFromScratch(problem, eps1, stats.eps2, upper, g, stats.proximity);
         const int n = equations.variableCount();
         std::vector<int> colStart(upper.outerIndexPtr(), upper.outerIndexPtr() + n + 1);
         std::vector<int> rowIndex(upper.innerIndexPtr(), upper.innerIndexPtr() + upper.nonZeros());
@@ -191,7 +270,7 @@ struct GuidedProjection::Impl {
 
     bool cachedStep(const Problem& problem, double eps1, IterationStats& stats, Summary& summary) {
         auto start = Clock::now();
-        equations.fill(problem, eps1, stats.eps2, cholesky.values(), rhs.data());
+        equations.fill(problem, eps1, stats.eps2, cholesky.values(), rhs.data(), stats.proximity);
         stats.assemblyMs += elapsedMs(start);
         start = Clock::now();
         if (!cholesky.factorize()) {
@@ -317,8 +396,11 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
                               d.equations.maxConstraintResidual());
         stats.eps2 = epsilon2(options, options.scheduleOffset + iteration,
                               d.equations.maxConstraintResidual());
+        stats.proximity = proximityWeight(options, d.equations.maxConstraintResidual());
         if (eps2Boost > 1.0) {
-            stats.eps2 = std::min(std::max(options.eps2, stats.eps2), eps2Boost * stats.eps2);
+            stats.eps2 = options.levenbergMarquardt
+                             ? eps2Boost * stats.eps2
+                             : std::min(std::max(options.eps2, stats.eps2), eps2Boost * stats.eps2);
         }
         stats.assemblyMs = pendingEvaluationMs;
         auto step = [&] {
@@ -355,8 +437,9 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         evaluationStart = Clock::now();
         const double meritBefore = d.equations.constraintMerit();
         const bool finite = allFinite(d.xNew) && d.equations.evaluate(problem, d.xNew.data());
-        if (finite && options.rejectWorseSteps && stats.eps1 == 0.0 &&
-            d.equations.constraintMerit() > meritBefore && stats.eps2 < options.eps2) {
+        const bool worse = finite && d.equations.constraintMerit() > meritBefore;
+        if ((worse && options.levenbergMarquardt) ||
+            (worse && options.rejectWorseSteps && stats.eps1 == 0.0 && stats.eps2 < options.eps2)) {
             // Keep x_k (evaluated again: the equations hold the rejected iterate) and damp more.
             stats.rejected = true;
             stats.stepNorm = 0.0;

@@ -10,9 +10,17 @@ namespace devsurf::solver {
 
 namespace {
 
-double termWeight(const Problem& problem, int term, double eps1) {
+double termWeight(const Problem& problem, int term, double eps1, double proximity) {
     const TermFamily& family = problem.family(problem.termFamily(term));
-    return family.role == TermRole::Energy ? family.weight * eps1 : family.weight;
+    switch (family.role) {
+    case TermRole::Energy:
+        return family.weight * eps1;
+    case TermRole::Proximity:
+        return family.weight * proximity;
+    case TermRole::Constraint:
+        break;
+    }
+    return family.weight;
 }
 
 // Builds a CSC pattern from sorted unique keys column * n + row.
@@ -266,7 +274,7 @@ bool NormalEquations::evaluate(const Problem& problem, const double* x) {
             if (family.role == TermRole::Constraint) {
                 maxResidual = std::max(maxResidual, std::abs(phi));
                 merit += w2 * phi * phi;
-            } else {
+            } else if (family.role == TermRole::Energy) {
                 energy += w2 * phi * phi;
             }
         }
@@ -277,18 +285,18 @@ bool NormalEquations::evaluate(const Problem& problem, const double* x) {
     return finite;
 }
 
-void NormalEquations::rowWeights(const Problem& problem, double eps1,
-                                 std::vector<double>& weights) const {
+void NormalEquations::rowWeights(const Problem& problem, double eps1, std::vector<double>& weights,
+                                 double proximity) const {
     weights.resize(static_cast<std::size_t>(m_rows));
     for (int t = 0; t < problem.termCount(); ++t) {
-        const double w = termWeight(problem, t, eps1);
+        const double w = termWeight(problem, t, eps1, proximity);
         std::fill(weights.begin() + m_termRowStart[t],
                   weights.begin() + m_termRowStart[static_cast<std::size_t>(t) + 1], w);
     }
 }
 
 void NormalEquations::fill(const Problem& problem, double eps1, double eps2, double* values,
-                           double* rhs) {
+                           double* rhs, double proximity) {
     std::fill(values, values + m_rowIndex.size(), 0.0);
     std::fill(rhs, rhs + m_variables, 0.0);
     const double* jac = m_jacValue.data();
@@ -296,7 +304,7 @@ void NormalEquations::fill(const Problem& problem, double eps1, double eps2, dou
     const int* target = m_pairTarget.data();
     std::size_t p = 0;
     for (int t = 0; t < problem.termCount(); ++t) {
-        const double w = termWeight(problem, t, eps1);
+        const double w = termWeight(problem, t, eps1, proximity);
         const double w2 = w * w;
         const int rowEnd = m_termRowStart[static_cast<std::size_t>(t) + 1];
         for (int r = m_termRowStart[t]; r < rowEnd; ++r) {
@@ -332,12 +340,12 @@ void NormalEquations::fill(const Problem& problem, double eps1, double eps2, dou
     }
 }
 
-Eigen::SparseMatrix<double> NormalEquations::weightedJacobian(const Problem& problem,
-                                                              double eps1) const {
+Eigen::SparseMatrix<double> NormalEquations::weightedJacobian(const Problem& problem, double eps1,
+                                                              double proximity) const {
     std::vector<Eigen::Triplet<double>> triplets;
     triplets.reserve(m_jacColumn.size());
     for (int t = 0; t < problem.termCount(); ++t) {
-        const double w = termWeight(problem, t, eps1);
+        const double w = termWeight(problem, t, eps1, proximity);
         for (int r = m_termRowStart[t]; r < m_termRowStart[static_cast<std::size_t>(t) + 1]; ++r) {
             for (int e = m_jacRowStart[r]; e < m_jacRowStart[r + 1]; ++e) {
                 const int c = m_jacColumn[static_cast<std::size_t>(e)];
@@ -353,11 +361,11 @@ Eigen::SparseMatrix<double> NormalEquations::weightedJacobian(const Problem& pro
 }
 
 void NormalEquations::assembleFromScratch(const Problem& problem, double eps1, double eps2,
-                                          Eigen::SparseMatrix<double>& upper,
-                                          Eigen::VectorXd& rhs) const {
-    const Eigen::SparseMatrix<double> h = weightedJacobian(problem, eps1);
+                                          Eigen::SparseMatrix<double>& upper, Eigen::VectorXd& rhs,
+                                          double proximity) const {
+    const Eigen::SparseMatrix<double> h = weightedJacobian(problem, eps1, proximity);
     std::vector<double> weights;
-    rowWeights(problem, eps1, weights);
+    rowWeights(problem, eps1, weights, proximity);
     Eigen::VectorXd weightedResidual(m_rows);
     for (int r = 0; r < m_rows; ++r) {
         weightedResidual[r] =

@@ -49,7 +49,9 @@ public:
 
     // Refills the stored triangle of N (current layout) and g (original order) in place from
     // the last evaluate(). Allocation-free.
-    void fill(const Problem& problem, double eps1, double eps2, double* values, double* rhs);
+    // `proximity` is μ, the multiplier of the proximity families' weights.
+    void fill(const Problem& problem, double eps1, double eps2, double* values, double* rhs,
+              double proximity = 0.0);
 
     int variableCount() const { return m_variables; }
     int rowCount() const { return m_rows; }
@@ -61,15 +63,18 @@ public:
     const std::vector<double>& jacobianValues() const { return m_jacValue; }
     const std::vector<int>& jacobianRowStart() const { return m_jacRowStart; }
     const std::vector<int>& jacobianColumns() const { return m_jacColumn; }
-    // Per-row weight w (family weight, times ε₁ for energy rows).
-    void rowWeights(const Problem& problem, double eps1, std::vector<double>& weights) const;
+    // Per-row weight w (family weight, times ε₁ for energy rows, times μ for proximity rows).
+    void rowWeights(const Problem& problem, double eps1, std::vector<double>& weights,
+                    double proximity = 0.0) const;
 
     // Reference assembly from scratch (used by the baseline mode and the tests): the weighted
     // Jacobian W̃ J (fixed columns zero) built from triplets.
-    Eigen::SparseMatrix<double> weightedJacobian(const Problem& problem, double eps1) const;
+    Eigen::SparseMatrix<double> weightedJacobian(const Problem& problem, double eps1,
+                                                 double proximity = 0.0) const;
     // N (upper triangle, original order) and g from scratch via Eigen sparse products.
     void assembleFromScratch(const Problem& problem, double eps1, double eps2,
-                             Eigen::SparseMatrix<double>& upper, Eigen::VectorXd& rhs) const;
+                             Eigen::SparseMatrix<double>& upper, Eigen::VectorXd& rhs,
+                             double proximity = 0.0) const;
     // Converts stored values in the current layout to an upper-triangular matrix in the
     // original order.
     Eigen::SparseMatrix<double> toOriginalUpper(const double* values) const;

@@ -50,6 +50,9 @@ struct Options {
     // reaches 1e-15 within 10 iterations there. If a factorisation fails with the smaller ε₂,
     // the iteration is repeated with ε₂ = eps2.
     bool adaptiveEps2 = true;
+    // (The rough-start configuration uses 3e-4: with the proximity to the start, a smaller
+    // floor let the normal splines' free scale drift in 10 iterations, measured det 3e-6
+    // against 6e-7 on the sheet from 1 % of the diameter and a collapse of one annulus seed.)
     double eps2Minimum = 1e-6;
     // If set, replaces the constant ε₂: a function of the iteration index and of the largest
     // constraint residual at the current iterate x_k. Shrinking ε₂ with the residual (as
@@ -63,6 +66,35 @@ struct Options {
     // default: measured from 0.1 % noise it changed nothing on the sheet, annulus and mixed
     // examples and made the cylinder worse (det 4.8e-6 against 1.8e-6).
     bool rejectWorseSteps = false;
+    // Levenberg–Marquardt step control in every iteration (also during the ε₁ phase): a step
+    // that increases Σ w² φ² of the constraint rows (guards included) is rejected and ε₂ is
+    // multiplied by 10 for the next step, beyond `eps2`; an accepted step divides that boost
+    // by 10 again. Rejected steps count as iterations. Off: measured (10 seeds, 10
+    // iterations, with the rough-start configuration) it rejected the long first steps but
+    // the rejections used up the iterations: det worst 0.27 instead of 5e-3 on the annulus
+    // from 1 % of the diameter, 7e-5 instead of 2e-5 on the cylinder; alone, on the paper's
+    // configuration, worse on every example (sheet 0.16 from 10 % edge noise).
+    bool levenbergMarquardt = false;
+
+    // Proximity to the start: families of role Proximity (the formulation's pull of every
+    // point towards the state the solve started from) are weighted by
+    // μ = min(proximityMaximum, proximityFactor · r), r the largest constraint residual of the
+    // current iterate. μ decays only as the constraints improve, so the iteration is led to a
+    // solution near the start instead of a distant, crumpled one, and vanishes on a design that
+    // already satisfies them. 0 disables (the default; see useRoughStartConfiguration in
+    // solver/formulation/surface_formulation.h for the configuration it belongs to and its
+    // measurements). Measured factors (with normalised rows, 10 seeds): 0.3 let the annulus
+    // from 1 % of the diameter crumple (det 0.18), 3 held the start too firmly (det 0.96), 1
+    // is best (5e-3); a maximum of 10 instead of 1 changed little (det 0.09 on that annulus).
+    double proximityFactor = 0.0;
+    double proximityMaximum = 1.0;
+    // Below this residual μ falls with r² instead of r (continuously), so the pull towards
+    // the start does not slow the final convergence. Measured with the rough-start
+    // configuration (det worst over 10 seeds): 0 (μ ∝ r throughout) ended at 1.9e-4 on the
+    // sheet from 1 % of the diameter and 3.4e-7 on the cylinder from 0.1 % (4 seeds); 1e-2 at
+    // 6.2e-7 and 3.0e-8; 0.1 lost the annulus from 1 % (1.3e-2 against 5.5e-3). (Switching μ
+    // off abruptly below the threshold was worse: μ flickered on and off between iterations.)
+    double proximityThreshold = 1e-2;
 
     // Stop early once the ε₁ phase is over and the largest constraint residual is at most
     // this (0 disables early stopping).
@@ -97,6 +129,10 @@ double epsilon1(const Options& options, int iteration, double residual);
 // ε₂ for iteration `iteration` (counted from 0, without scheduleOffset) at an iterate whose
 // largest constraint residual is `residual`.
 double epsilon2(const Options& options, int iteration, double residual);
+
+// μ, the weight multiplier of proximity families, at an iterate whose largest constraint
+// residual is `residual`.
+double proximityWeight(const Options& options, double residual);
 
 // The residual-driven ε₂ schedule: ε₂ = clamp(factor · residual, minimum, maximum).
 std::function<double(int, double)> residualEps2Schedule(double maximum = 0.01,

@@ -18,8 +18,10 @@ struct VariableBlock {
 };
 
 // Hard constraints enter the iteration (6) through W (weight w per family); soft energies
-// through ε₁ K (their rows are scaled by ε₁ · w).
-enum class TermRole { Constraint, Energy };
+// through ε₁ K (their rows are scaled by ε₁ · w); proximity rows (pulling towards the state a
+// solve started from) through μ (their rows are scaled by μ · w, where μ follows the
+// constraint residual, see Options::proximityFactor).
+enum class TermRole { Constraint, Energy, Proximity };
 
 struct TermFamily {
     std::string name;

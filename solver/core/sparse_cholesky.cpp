@@ -1,10 +1,29 @@
 #include "solver/core/sparse_cholesky.h"
 
+#include "solver/core/analysis_cache.h"
+
 #include <suitesparse/cholmod.h>
 
 #include <algorithm>
 
 namespace devsurf::solver {
+
+// A symbolic factorisation owned by the analysis cache, with its own CHOLMOD workspace (it
+// is only read, by cholmod_copy_factor, once made).
+class SymbolicFactor {
+public:
+    SymbolicFactor() { cholmod_start(&common); }
+    SymbolicFactor(const SymbolicFactor&) = delete;
+    SymbolicFactor& operator=(const SymbolicFactor&) = delete;
+    ~SymbolicFactor() {
+        cholmod_free_factor(&factor, &common);
+        cholmod_finish(&common);
+    }
+    cholmod_common common{};
+    cholmod_factor* factor = nullptr;
+    double flops = 0.0;
+    double lnz = 0.0;
+};
 
 struct SparseCholesky::Impl {
     cholmod_common common{};
@@ -100,6 +119,7 @@ bool SparseCholesky::computeOrdering(int n, const std::vector<int>& colStart,
     if (!pattern) {
         return d.fail("allocating the pattern failed");
     }
+    countSymbolicAnalysis();
     cholmod_factor* symbolic = cholmod_analyze(pattern, &d.common);
     d.defaultOrdering();
     cholmod_free_sparse(&pattern, &d.common);
@@ -126,6 +146,7 @@ bool SparseCholesky::analyzePermuted(int n, const std::vector<int>& colStart,
     d.common.method[0].ordering = CHOLMOD_NATURAL;
     d.common.postorder = 0;
     d.common.supernodal = supernodal ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
+    countSymbolicAnalysis();
     d.factor = cholmod_analyze(d.matrix, &d.common);
     d.defaultOrdering();
     if (!d.factor) {
@@ -152,12 +173,62 @@ bool SparseCholesky::analyzeGeneral(int n, const std::vector<int>& colStart,
     if (!d.matrix) {
         return d.fail("allocating the matrix failed");
     }
+    countSymbolicAnalysis();
     d.factor = cholmod_analyze(d.matrix, &d.common);
     if (!d.factor) {
         return d.fail("symbolic analysis failed");
     }
     d.flops = d.common.fl;
     d.lnz = d.common.lnz;
+    if (!d.allocateDense(n)) {
+        return d.fail("allocating the right-hand side failed");
+    }
+    return true;
+}
+
+std::shared_ptr<const SymbolicFactor> SparseCholesky::exportSymbolic() const {
+    const Impl& d = *m_impl;
+    if (!d.factor) {
+        return nullptr;
+    }
+    auto symbolic = std::make_shared<SymbolicFactor>();
+    symbolic->factor = cholmod_copy_factor(d.factor, &symbolic->common);
+    if (!symbolic->factor) {
+        return nullptr;
+    }
+    cholmod_factor* f = symbolic->factor;
+    if (f->xtype != CHOLMOD_PATTERN &&
+        !cholmod_change_factor(CHOLMOD_PATTERN, f->is_ll, f->is_super, true, true, f,
+                               &symbolic->common)) {
+        return nullptr;
+    }
+    symbolic->flops = d.flops;
+    symbolic->lnz = d.lnz;
+    return symbolic;
+}
+
+bool SparseCholesky::adoptAnalysis(const CachedAnalysis& analysis, const std::vector<int>& colStart,
+                                   const std::vector<int>& rowIndex) {
+    Impl& d = *m_impl;
+    d.release();
+    if (!analysis.symbolic || !analysis.symbolic->factor) {
+        d.error = "the cached analysis has no symbolic factorisation";
+        return false;
+    }
+    const int n = analysis.variables;
+    d.matrix = d.makeMatrix(n, colStart, rowIndex, analysis.lowerTriangle ? -1 : 1, CHOLMOD_REAL);
+    if (!d.matrix) {
+        return d.fail("allocating the matrix failed");
+    }
+    d.factor = cholmod_copy_factor(analysis.symbolic->factor, &d.common);
+    if (!d.factor) {
+        return d.fail("copying the cached symbolic factorisation failed");
+    }
+    d.flops = analysis.symbolic->flops;
+    d.lnz = analysis.symbolic->lnz;
+    d.permutation = analysis.permutation;
+    d.inPlace = d.factor->ordering == CHOLMOD_NATURAL &&
+                (d.factor->is_super ? analysis.lowerTriangle : !analysis.lowerTriangle);
     if (!d.allocateDense(n)) {
         return d.fail("allocating the right-hand side failed");
     }

@@ -8,6 +8,9 @@
 
 namespace devsurf::solver {
 
+class SymbolicFactor;
+struct CachedAnalysis;
+
 // CHOLMOD behind a small interface (pimpl: cholmod.h stays out of our headers).
 //
 // Cached use, once per structure: computeOrdering() on the pattern in the original order,
@@ -35,6 +38,13 @@ public:
     // Symbolic analysis of the upper triangle in the original order (baseline mode).
     bool analyzeGeneral(int n, const std::vector<int>& colStart, const std::vector<int>& rowIndex,
                         FactorizationMethod method);
+    // A copy of the current analysis as a symbolic factorisation (numeric values dropped), for
+    // the AnalysisCache; null before an analysis or if copying fails.
+    std::shared_ptr<const SymbolicFactor> exportSymbolic() const;
+    // Takes a cached analysis instead of running analyzePermuted(): the pattern (CSC) must be
+    // laid out as the analysis was made (its permutation and triangle). No symbolic analysis.
+    bool adoptAnalysis(const CachedAnalysis& analysis, const std::vector<int>& colStart,
+                       const std::vector<int>& rowIndex);
 
     // The value array of the analysed matrix (in the analysed layout), to be filled in place.
     double* values();

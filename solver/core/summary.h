@@ -20,6 +20,7 @@ struct IterationStats {
     int iteration = 0; // 0-based, within this solve()
     double eps1 = 0.0;
     double eps2 = 0.0;
+    double proximity = 0.0; // μ (Options::proximityFactor)
     // At the new iterate x_{k+1}: largest |φ| over constraint rows with non-zero weight and
     // Σ w² φ² over energy rows (without ε₁).
     double maxConstraintResidual = 0.0;

@@ -8,7 +8,9 @@
 #include "solver/core/minimum_length_term.h"
 #include "solver/core/target_term.h"
 #include "solver/core/unit_norm_term.h"
+#include "solver/formulation/crease_conditions.h"
 #include "solver/formulation/normal_spline_start.h"
+#include "solver/formulation/point_combinations.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,31 +27,6 @@ using model::Vec3;
 using model::VertexId;
 
 namespace {
-
-// Merges repeated offsets and drops zero coefficients, so that Jacobian rows stay short.
-PointCombination simplified(const PointCombination& in) {
-    PointCombination out;
-    for (const PointTerm& t : in) {
-        auto it = std::find_if(out.begin(), out.end(),
-                               [&t](const PointTerm& o) { return o.offset == t.offset; });
-        if (it == out.end()) {
-            out.push_back(t);
-        } else {
-            it->coefficient += t.coefficient;
-        }
-    }
-    out.erase(std::remove_if(out.begin(), out.end(),
-                             [](const PointTerm& t) { return t.coefficient == 0.0; }),
-              out.end());
-    return out;
-}
-
-PointCombination plus(PointCombination a, const PointCombination& b, double scale = 1.0) {
-    for (const PointTerm& t : b) {
-        a.push_back({t.offset, scale * t.coefficient});
-    }
-    return a;
-}
 
 std::string str(std::uint32_t id) {
     return std::to_string(id);
@@ -88,8 +65,12 @@ struct SurfaceFormulation::Builder {
     std::unique_ptr<UnitNormTerm> unitNormals = std::make_unique<UnitNormTerm>(3);
     std::unique_ptr<BilinearTerm> normalDefinitions = std::make_unique<BilinearTerm>(3);
     std::unique_ptr<BilinearTerm> planarity = std::make_unique<BilinearTerm>(3);
+    std::unique_ptr<BilinearTerm> creaseConditions = std::make_unique<BilinearTerm>(3);
+    std::map<FaceId, StripNormalSpline> stripNormals; // per strip, for the crease conditions
     std::unique_ptr<LinearTerm> smoothness = std::make_unique<LinearTerm>();
     std::unique_ptr<TargetTerm> handles = std::make_unique<TargetTerm>();
+    std::unique_ptr<TargetTerm> proximity = std::make_unique<TargetTerm>();
+    std::unique_ptr<TargetTerm> normalProximity = std::make_unique<TargetTerm>();
     std::unique_ptr<FairnessTerm> fairness = std::make_unique<FairnessTerm>(3);
     std::unique_ptr<FairnessTerm> normalFairness = std::make_unique<FairnessTerm>(3);
     std::unique_ptr<UnitNormTerm> unitControlNormals = std::make_unique<UnitNormTerm>(3);
@@ -296,6 +277,7 @@ struct SurfaceFormulation::Builder {
         normalControl += controls;
         const model::BSplineCurve normalCurve = model::BSplineCurve::uniform(
             space, std::vector<Vec3>(static_cast<std::size_t>(controls)));
+        stripNormals[strip.face] = {normalOffset, normalCurve};
 
         // (4) at 3m − 2 values per interval.
         const std::vector<double> values = collocationValues(intervals, valuesPerInterval(strip));
@@ -383,6 +365,21 @@ struct SurfaceFormulation::Builder {
         for (const model::Strip& strip : strips) {
             addStrip(strip, normalControl, coneNormal, derivativePoint);
         }
+    }
+
+    // (7) and (8) on the creases that carry such a condition (docs/math.md §5), at as many
+    // values per interval as (4) uses on a strip.
+    void addCreaseConditions() {
+        std::map<EdgeId, std::vector<int>> offsets;
+        for (const auto& [edge, points] : f.m_edgePoints) {
+            std::vector<int>& o = offsets[edge];
+            for (int point : points) {
+                o.push_back(f.pointOffset(point));
+            }
+        }
+        const int values = strips.empty() ? 7 : valuesPerInterval(strips.front());
+        solver::addCreaseConditions(surface, strips, stripNormals, offsets, values,
+                                    *creaseConditions, f.m_creaseFaces);
     }
 
     // RR…R faces: ⟨n_f, v_{i+1} − v_i⟩ = 0 for every edge, |n_f| = 1 (MATH.md §3).
@@ -473,6 +470,24 @@ struct SurfaceFormulation::Builder {
         f.m_speedCurveStart.push_back(speedGuard->rowCount());
     }
 
+    // Every point towards the reference state (targets set by setReferenceState).
+    void addProximity() {
+        if (options.proximityWeight <= 0.0) {
+            return;
+        }
+        const double zero[3] = {0.0, 0.0, 0.0};
+        for (int i = 0; i < f.m_pointCount; ++i) {
+            proximity->addPointTarget(f.pointOffset(i), 3, zero);
+        }
+        const VariableBlock& block = f.m_problem.block("normalControls");
+        f.m_normalControlsOffset = block.offset;
+        for (int i = 0; i < block.size; i += 3) {
+            if (options.normalProximityWeight > 0.0) {
+                normalProximity->addPointTarget(block.offset + i, 3, zero);
+            }
+        }
+    }
+
     void addFairness() {
         for (const auto& [edge, points] : f.m_edgePoints) {
             (void)edge;
@@ -510,6 +525,8 @@ struct SurfaceFormulation::Builder {
         add("coneNormals", TermRole::Constraint, options.normalWeight,
             std::move(normalDefinitions));
         add("planarity", TermRole::Constraint, options.planarityWeight, std::move(planarity));
+        add("creaseConditions", TermRole::Constraint, options.creaseWeight,
+            std::move(creaseConditions));
         add("smoothRulings", TermRole::Constraint, options.smoothnessWeight, std::move(smoothness));
         if (handles->rowCount() > 0) {
             f.m_handleTerm = handles.get();
@@ -521,6 +538,15 @@ struct SurfaceFormulation::Builder {
         if (speeds) {
             add("speedGuard", TermRole::Constraint, options.guardWeight, std::move(speedGuard));
         }
+        if (proximity->rowCount() > 0) {
+            f.m_proximity = proximity.get();
+        }
+        add("proximity", TermRole::Proximity, options.proximityWeight, std::move(proximity));
+        if (normalProximity->rowCount() > 0) {
+            f.m_normalProximity = normalProximity.get();
+        }
+        add("normalProximity", TermRole::Proximity, options.normalProximityWeight,
+            std::move(normalProximity));
         add("fairness", TermRole::Energy, options.fairnessWeight, std::move(fairness));
         add("normalFairness", TermRole::Energy, options.normalFairnessWeight,
             std::move(normalFairness));
@@ -528,6 +554,18 @@ struct SurfaceFormulation::Builder {
             std::move(unitControlNormals));
     }
 };
+
+void useRoughStartConfiguration(FormulationOptions& formulation, Options& solver) {
+    formulation.normalizedRows = true;
+    formulation.proximityWeight = 1.0;
+    formulation.rulingGuard = 0.3;
+    formulation.speedGuard = 0.15;
+    formulation.guardWeight = 0.1;
+    solver.proximityFactor = 1.0;
+    solver.proximityMaximum = 1.0;
+    solver.proximityThreshold = 1e-2;
+    solver.eps2Minimum = 3e-4;
+}
 
 SurfaceFormulation::SurfaceFormulation(const model::CompositeSurface& surface,
                                        const FormulationOptions& options)
@@ -537,10 +575,12 @@ SurfaceFormulation::SurfaceFormulation(const model::CompositeSurface& surface,
     builder.addPoints();
     builder.allocateNormals();
     builder.addStrips();
+    builder.addCreaseConditions();
     builder.addPlanarFaces();
     builder.addSmoothRulings();
     builder.addHandles();
     builder.addSpeedGuards();
+    builder.addProximity();
     builder.addFairness();
     builder.hand();
     setReferenceState(m_initialState);

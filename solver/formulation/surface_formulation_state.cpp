@@ -120,6 +120,18 @@ void SurfaceFormulation::setReferenceState(const std::vector<double>& x) {
             term->scaleRowsAt(scaleAt);
         }
     }
+    if (m_proximity) {
+        // Rows are created point by point, coordinate by coordinate, from the first point.
+        for (int row = 0; row < m_proximity->rowCount(); ++row) {
+            m_proximity->setTarget(row, x[static_cast<std::size_t>(m_pointsOffset + row)]);
+        }
+    }
+    if (m_normalProximity) {
+        for (int row = 0; row < m_normalProximity->rowCount(); ++row) {
+            m_normalProximity->setTarget(row,
+                                         x[static_cast<std::size_t>(m_normalControlsOffset + row)]);
+        }
+    }
     const double* reference = m_options.relativeFairness ? x.data() : nullptr;
     if (m_pointFairness) {
         m_pointFairness->setReference(reference);

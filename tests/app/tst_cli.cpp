@@ -7,9 +7,13 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+#include <cmath>
 
+#include <cmath>
+#include <cstring>
 #include <set>
 
 using namespace devsurf;
@@ -89,6 +93,9 @@ private slots:
         int creases = 0;
         for (const QJsonValue& e : edges) {
             creases += e["kind"].toString() == "crease" ? 1 : 0;
+            // The flat sheet's creases are unfolded; rulings and boundaries have no fold.
+            QCOMPARE(e["assignment"].toString(), QString(e["kind"] == "crease" ? "F" : ""));
+            QVERIFY(std::abs(e["foldAngle"].toDouble()) < 0.1);
         }
         QCOMPARE(creases, 6); // two interior curves of three S-edges each
         run = cli({"info", pinned, "--vertices"});
@@ -236,6 +243,100 @@ private slots:
         QCOMPARE(solve.exitCode, 2);
         QVERIFY(solve.err.contains("zero.devsurf"));
         QVERIFY(!QFile::exists(path("zero-solved.devsurf")));
+    }
+
+    void solvePrintsOneLinePerIteration() {
+        const QString file = path("solve.devsurf");
+        QCOMPARE(cli({"example", "annulus", "-o", file}).exitCode, 0);
+        const QString out = path("solved.devsurf");
+        const Run run = cli({"solve", file, "--perturb", "0.001", "--iterations", "3", "-o", out});
+        QCOMPARE(run.exitCode, 0);
+        const QStringList lines = run.out.split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 6);
+        QVERIFY2(QRegularExpression("^Surface 1 \\(annulus\\): \\d+ variables, \\d+ rows$")
+                     .match(lines[0])
+                     .hasMatch(),
+                 qPrintable(lines[0]));
+        for (int i = 1; i <= 3; ++i) {
+            const QRegularExpression line(
+                QStringLiteral("^iteration +%1  residual \\S+  assembly \\S+ ms  factorisation "
+                               "\\S+ ms  solve \\S+ ms  flatness mean \\S+ max \\S+, \\|K\\| mean "
+                               "\\S+ max \\S+, det mean \\S+ max \\S+$")
+                    .arg(i));
+            QVERIFY2(line.match(lines[i]).hasMatch(), qPrintable(lines[i]));
+        }
+        QVERIFY2(lines[4].startsWith("Reached the tolerance") ||
+                     lines[4].startsWith("Did not reach the tolerance"),
+                 qPrintable(lines[4]));
+        QCOMPARE(lines[5], "Wrote " + out);
+    }
+
+    void dragMovesTheVerticesAndKeepsThePins() {
+        const QString file = path("drag.devsurf");
+        QCOMPARE(cli({"example", "annulus", "-o", file}).exitCode, 0);
+        const model::CompositeSurface before = io::loadProjectFile(file).surfaces[0];
+        // The outer boundary of the annulus is pinned, an inner boundary vertex lifted 10 mm.
+        const QString out = path("dragged.devsurf");
+        Run run = cli({"drag", file, "--vertices", "0", "--by", "0,0,10", "--pin",
+                       "48,49,50,51,52,53,54,55", "--steps", "5", "--after", "3", "-o", out});
+        QCOMPARE(run.exitCode, 0);
+        QCOMPARE(run.out.count(QRegularExpression("^step +\\d+/5  residual \\S+  time \\S+ ms  ",
+                                                  QRegularExpression::MultilineOption)),
+                 5);
+        QCOMPARE(run.out.count(QRegularExpression("^after +\\d+/3  residual ",
+                                                  QRegularExpression::MultilineOption)),
+                 3);
+        const model::CompositeSurface after = io::loadProjectFile(out).surfaces[0];
+        const model::Vec3 moved = after.position(0) - before.position(0);
+        QVERIFY2(std::abs(moved.x) < 1.0 && std::abs(moved.y) < 1.0 &&
+                     std::abs(moved.z - 10.0) < 1.0,
+                 qPrintable(QString("%1 %2 %3").arg(moved.x).arg(moved.y).arg(moved.z)));
+        for (model::VertexId id = 48; id <= 55; ++id) {
+            QVERIFY(after.isPinned(id));
+            const model::Vec3 a = before.position(id);
+            const model::Vec3 b = after.position(id);
+            QVERIFY(std::memcmp(&a, &b, sizeof a) == 0);
+        }
+
+        // A rotation about the vertical axis through the centre.
+        run = cli({"drag", file, "--vertices", "0,1", "--rotate", "0,0,0,0,0,1,5", "--steps", "2",
+                   "--after", "1", "-o", path("rotated.devsurf")});
+        QCOMPARE(run.exitCode, 0);
+
+        // Bad ids and pinned vertices: exit 2, one sentence naming them, nothing written.
+        const QString never = path("never.devsurf");
+        run = cli({"drag", file, "--vertices", "0,999", "--by", "0,0,1", "-o", never});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY(run.err.contains("999"));
+        QCOMPARE(run.err.count('\n'), 1);
+        run = cli({"drag", out, "--vertices", "48", "--by", "0,0,1", "-o", never});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY(run.err.contains("pinned"));
+        QVERIFY(!QFile::exists(never));
+
+        // Bad usage: exit 1.
+        for (const QStringList& args : QList<QStringList>{
+                 {"drag", file, "--vertices", "0", "-o", never},
+                 {"drag", file, "--vertices", "0", "--by", "0,0,1", "--rotate", "0,0,0,0,0,1,5",
+                  "-o", never},
+                 {"drag", file, "--vertices", "0", "--by", "1,2", "-o", never},
+                 {"drag", file, "--vertices", "0", "--rotate", "0,0,0,0,0,0,5", "-o", never},
+                 {"drag", file, "--vertices", "0", "--by", "0,0,1", "--steps", "0", "-o", never},
+                 {"drag", file, "--vertices", "a", "--by", "0,0,1", "-o", never},
+                 {"drag", file, "--vertices", "0", "--by", "0,0,1", "--surface", "2", "-o", never},
+                 {"drag", file, "--vertices", "0", "--by", "0,0,1", "--pin", "0", "-o", never},
+                 {"drag", file, "--vertices", "0", "--by", "0,0,1"}}) {
+            run = cli(args);
+            QVERIFY2(run.exitCode == 1, qPrintable(args.join(' ')));
+            QCOMPARE(run.err.count('\n'), 1);
+        }
+        QVERIFY(!QFile::exists(never));
+    }
+
+    void benchIsTheSeparateProgram() {
+        const Run run = cli({"bench"});
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY(run.err.contains("devsurf-bench"));
     }
 };
 

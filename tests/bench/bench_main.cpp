@@ -1,7 +1,8 @@
-// devsurf-bench: the solver benchmark (the same code as `devsurf-cli bench`), and a quality
+// devsurf-bench: the solver benchmark (`devsurf-cli` no longer links it), and a quality
 // study of one model over seeds with adjustable options (for measuring solver choices).
 #include "bench_models.h"
 #include "benchmark.h"
+#include "drag_bench.h"
 #include "quality_study.h"
 
 #include "model/examples.h"
@@ -54,6 +55,20 @@ bool setOption(bench::StudyOptions& o, const std::string& name, double v) {
         s.rejectWorseSteps = v != 0.0;
     else if (name == "adaptiveEps2")
         s.adaptiveEps2 = v != 0.0;
+    else if (name == "roughStart")
+        solver::useRoughStartConfiguration(f, s);
+    else if (name == "proximityWeight")
+        f.proximityWeight = v;
+    else if (name == "proximityThreshold")
+        s.proximityThreshold = v;
+    else if (name == "levenbergMarquardt")
+        s.levenbergMarquardt = v != 0.0;
+    else if (name == "normalProximityWeight")
+        f.normalProximityWeight = v;
+    else if (name == "proximityFactor")
+        s.proximityFactor = v;
+    else if (name == "proximityMaximum")
+        s.proximityMaximum = v;
     else if (name == "fixed")
         o.fixedVertices = static_cast<int>(v);
     else
@@ -62,7 +77,7 @@ bool setOption(bench::StudyOptions& o, const std::string& name, double v) {
 }
 
 int runStudy(const std::string& name, const bench::StudyStart& start,
-             const bench::StudyOptions& options) {
+             const bench::StudyOptions& options, bool trace) {
     model::CompositeSurface surface;
     const auto models = bench::benchModels({name});
     if (!models.empty()) {
@@ -77,6 +92,12 @@ int runStudy(const std::string& name, const bench::StudyStart& start,
     }
     const auto runs = bench::runStudy(surface, start, options);
     for (const auto& r : runs) {
+        for (const solver::IterationStats& it :
+             trace ? r.iterations : std::vector<solver::IterationStats>{}) {
+            std::printf("  it %d eps1 %.1e eps2 %.1e mu %.1e res %.2e energy %.2e step %.2e%s\n",
+                        it.iteration, it.eps1, it.eps2, it.proximity, it.maxConstraintResidual,
+                        it.energy, it.stepNorm, it.rejected ? " rejected" : "");
+        }
         std::printf("seed %u %-16s res %.2e det %.2e flat %.2e ruling %.3f speed %.3f fold %.2f "
                     "start %.2f deg move %.1e  %.2f ms/it\n",
                     r.seed, r.status.c_str(), r.residual, r.detMax, r.flatnessMean,
@@ -98,14 +119,18 @@ int runStudy(const std::string& name, const bench::StudyStart& start,
 int main(int argc, char** argv) {
     devsurf::bench::BenchmarkOptions options;
     std::string study;
+    bool drag = false;
     devsurf::bench::StudyStart start;
     devsurf::bench::StudyOptions studyOptions;
+    bool trace = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--json") {
             options.json = true;
         } else if (arg == "--model" && i + 1 < argc) {
             options.models.push_back(argv[++i]);
+        } else if (arg == "--drag") {
+            drag = true;
         } else if (arg == "--no-ceres") {
             options.runCeres = false;
         } else if (arg == "--study" && i + 1 < argc) {
@@ -114,6 +139,8 @@ int main(int argc, char** argv) {
             start = {devsurf::bench::NoiseScale::EdgeLength, std::atof(argv[++i])};
         } else if (arg == "--diameter-noise" && i + 1 < argc) {
             start = {devsurf::bench::NoiseScale::Diameter, std::atof(argv[++i])};
+        } else if (arg == "--trace") {
+            trace = true;
         } else if (arg == "--seeds" && i + 1 < argc) {
             studyOptions.seeds = std::atoi(argv[++i]);
         } else if (arg == "--iterations" && i + 1 < argc) {
@@ -129,13 +156,21 @@ int main(int argc, char** argv) {
             }
         } else {
             std::cerr << "usage: devsurf-bench [--json] [--model NAME]... [--no-ceres]\n"
+                         "       devsurf-bench --drag [--json]\n"
                          "       devsurf-bench --study MODEL [--edge-noise F | --diameter-noise F]"
-                         " [--seeds N] [--iterations N] [--set NAME=VALUE]...\n";
+                         " [--seeds N] [--iterations N] [--set NAME=VALUE]... [--trace]\n";
             return 1;
         }
     }
+    if (drag) {
+        devsurf::bench::DragBenchOptions dragOptions;
+        dragOptions.log = [](const std::string& line) { std::cerr << line << "\n"; };
+        devsurf::bench::printDragBench(devsurf::bench::runDragBench(dragOptions), options.json,
+                                       std::cout);
+        return 0;
+    }
     if (!study.empty()) {
-        return runStudy(study, start, studyOptions);
+        return runStudy(study, start, studyOptions, trace);
     }
     options.log = [](const std::string& line) { std::cerr << line << "\n"; };
     const int code = devsurf::bench::runBenchmark(options, std::cout);

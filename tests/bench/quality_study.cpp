@@ -54,6 +54,7 @@ std::vector<StudyRun> runStudy(const model::CompositeSurface& surface, const Stu
         const solver::Summary summary = projection.solve(formulation.problem(), x, solverOptions);
         run.status = solver::toString(summary.status);
         run.residual = summary.finalMaxConstraintResidual;
+        run.iterations = summary.iterations;
         double iterationMs = 0.0;
         for (const solver::IterationStats& it : summary.iterations) {
             iterationMs += it.assemblyMs + it.factorizationMs + it.solveMs;

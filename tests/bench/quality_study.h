@@ -2,6 +2,7 @@
 
 #include "model/composite_surface.h"
 #include "solver/core/options.h"
+#include "solver/core/summary.h"
 #include "solver/formulation/surface_formulation.h"
 #include "solver/quality/shape_change.h"
 
@@ -37,6 +38,7 @@ struct StudyRun {
     double flatnessMean = 0.0;
     solver::ShapeChange change;
     double msPerIteration = 0.0;
+    std::vector<solver::IterationStats> iterations; // the solver's per-iteration statistics
 };
 
 // Worst and median over the seeds ("worst" is the largest residual, the shortest ruling, …).

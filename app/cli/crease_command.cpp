@@ -1,0 +1,93 @@
+#include "crease_command.h"
+
+#include "io/project_file.h"
+#include "vertex_commands.h"
+
+#include <QString>
+
+#include <iostream>
+#include <stdexcept>
+
+namespace devsurf::app {
+
+namespace {
+
+std::string option(const std::vector<std::pair<std::string, std::string>>& options,
+                   const std::string& name) {
+    for (const auto& [key, value] : options) {
+        if (key == name) {
+            return value;
+        }
+    }
+    return {};
+}
+
+model::CreaseCondition parseCondition(const std::string& text) {
+    if (text == "curved-fold") {
+        return model::CreaseCondition::CurvedFold;
+    }
+    if (text == "geodesic") {
+        return model::CreaseCondition::Geodesic;
+    }
+    if (text == "none") {
+        return model::CreaseCondition::None;
+    }
+    if (text == "straight") {
+        throw std::invalid_argument("the condition 'straight' (straight when unfolded) is not "
+                                    "available yet; use curved-fold, geodesic or none");
+    }
+    throw std::invalid_argument("option '--condition' needs curved-fold, geodesic or none, not '" +
+                                text + "'");
+}
+
+} // namespace
+
+int runCreaseCommand(const std::vector<std::string>& positional,
+                     const std::vector<std::pair<std::string, std::string>>& options) {
+    if (positional.size() != 1) {
+        throw std::invalid_argument("expected one project file");
+    }
+    const std::string idsText = option(options, "--edges");
+    if (idsText.empty()) {
+        throw std::invalid_argument("the creases are missing (use --edges IDS)");
+    }
+    const std::string conditionText = option(options, "--condition");
+    if (conditionText.empty()) {
+        throw std::invalid_argument(
+            "the condition is missing (use --condition curved-fold|geodesic|none)");
+    }
+    const std::string output = option(options, "-o");
+    if (output.empty()) {
+        throw std::invalid_argument("the output file is missing (use -o FILE)");
+    }
+    const std::vector<std::uint32_t> ids = parseIds(idsText, "--edges", "edge");
+    const model::CreaseCondition condition = parseCondition(conditionText);
+    model::Project project = io::loadProjectFile(QString::fromStdString(positional[0]));
+    const std::size_t index = surfaceOption(options, project, "set crease conditions on");
+    model::CompositeSurface& surface = project.surfaces[index];
+    for (model::EdgeId id : ids) {
+        std::string problem;
+        if (!surface.hasEdge(id)) {
+            problem = "has no edge " + std::to_string(id);
+        } else if (!surface.edge(id).isSpline()) {
+            problem = "edge " + std::to_string(id) + " is a ruling, not a crease";
+        } else if (surface.facesOfEdge(id).size() != 2) {
+            problem = "edge " + std::to_string(id) + " is a curve on the boundary, not a crease";
+        }
+        if (!problem.empty()) {
+            std::cerr << "devsurf-cli: surface '" << surface.name() << "' " << problem
+                      << " (list the edges with 'devsurf-cli info FILE --edges').\n";
+            return 2;
+        }
+    }
+    for (model::EdgeId id : ids) {
+        surface.setCreaseCondition(id, condition);
+    }
+    io::saveProjectFile(project, QString::fromStdString(output));
+    std::cout << "Wrote " << output << " (" << ids.size() << " crease"
+              << (ids.size() == 1 ? "" : "s") << " set to " << model::creaseConditionName(condition)
+              << " in '" << surface.name() << "')\n";
+    return 0;
+}
+
+} // namespace devsurf::app

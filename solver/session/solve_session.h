@@ -1,0 +1,80 @@
+#pragma once
+
+#include "solver/core/guided_projection.h"
+#include "solver/core/options.h"
+#include "solver/core/summary.h"
+#include "solver/formulation/surface_formulation.h"
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace devsurf::solver {
+
+// The damping ε₂ of interactive solving and of the command line (one iteration per call).
+Options defaultSessionSolverOptions();
+
+struct SessionOptions {
+    // Its `handles` are extended by the session: every pinned vertex becomes a fixed handle,
+    // every pulled vertex a pulled one.
+    FormulationOptions formulation;
+    // maxIterations, scheduleOffset, cancel and progress are ignored: step(n) decides.
+    Options solver = defaultSessionSolverOptions();
+};
+
+// One surface being solved across calls: the formulation, the state vector and the
+// GuidedProjection (with its cached structure and factorisation choice) stay alive between
+// step() calls, so a drag's mouse moves and the iterations after release continue one solve.
+// This is the one solve loop of the product: the command line's `solve` and `drag` and the
+// desktop application's worker all run it.
+//
+// Not thread-safe; one thread at a time.
+class SolveSession {
+public:
+    // Every pinned vertex of `surface` (CompositeSurface::pinnedVertices()) becomes a fixed
+    // handle; `pulled` adds handles pulled towards a target (VertexHandle{v, false, target}).
+    // A pinned vertex stays fixed even if it is also pulled. Throws std::invalid_argument with
+    // a sentence if the surface cannot be solved (invalid, a non-finite coordinate, an unknown
+    // or non-finite handle).
+    SolveSession(const model::CompositeSurface& surface, const std::vector<VertexHandle>& pulled,
+                 const SessionOptions& options = {});
+    SolveSession(const SolveSession&) = delete;
+    SolveSession& operator=(const SolveSession&) = delete;
+    ~SolveSession();
+
+    // Moves a pulled handle's target (model coordinates); false if the vertex is not pulled
+    // or the target is not finite.
+    bool setHandleTarget(model::VertexId vertex, const model::Vec3& target);
+
+    // Runs n iterations continuing the ε₁ schedule where the last call stopped; writes the
+    // result into surface(). step(1) ten times equals step(10) bit for bit. `cancel` is
+    // checked between iterations; `perIteration` is called after each (on this thread, with
+    // IterationStats::iteration counted within this call). A failed or cancelled iteration
+    // leaves surface() at the last good state.
+    Summary step(int n, const std::atomic<bool>* cancel = nullptr,
+                 const std::function<void(const IterationStats&)>& perIteration = {});
+
+    const model::CompositeSurface& surface() const { return m_surface; }
+    const SurfaceFormulation& formulation() const { return *m_formulation; }
+    // The solver's state (normalised coordinates, see SurfaceFormulation).
+    const std::vector<double>& state() const { return m_x; }
+    // Iterations completed over all step() calls (the position in the ε₁ schedule).
+    int iterationsDone() const { return m_iterationsDone; }
+    // The pulled vertices (pinned ones excluded).
+    const std::vector<model::VertexId>& pulledVertices() const { return m_pulled; }
+
+    // Faces worst first at the current state (SurfaceFormulation::faceResiduals).
+    std::vector<SurfaceFormulation::FaceResidual> worstFaces() const;
+
+private:
+    SessionOptions m_options;
+    model::CompositeSurface m_surface;
+    std::unique_ptr<SurfaceFormulation> m_formulation;
+    GuidedProjection m_projection;
+    std::vector<double> m_x;
+    std::vector<model::VertexId> m_pulled;
+    int m_iterationsDone = 0;
+};
+
+} // namespace devsurf::solver

@@ -1,0 +1,82 @@
+#pragma once
+
+#include "solver/session/solve_session.h"
+
+#include <QMetaType>
+#include <QObject>
+#include <QString>
+
+#include <map>
+#include <memory>
+#include <thread>
+#include <vector>
+
+namespace devsurf::solver {
+
+// An immutable snapshot of what to solve.
+struct SolveRequest {
+    quint64 revision = 0;                            // Document::revision() of the snapshot
+    std::vector<model::CompositeSurface> surfaces;   // the whole project's surfaces (pins inside)
+    std::map<int, std::vector<VertexHandle>> pulled; // per surface index: drag targets
+    int iterations = 10;
+    // Non-zero: a drag. Requests with the same key reuse the worker's sessions of the previous
+    // request when the surfaces' structure is unchanged, only moving the handle targets and
+    // continuing from the session's own last state (the snapshot's geometry is then ignored
+    // except for surfaces without a session). Surfaces without pulled handles are returned
+    // as they are in a drag (with an empty summary). 0: fresh sessions from the snapshot for
+    // every surface (Solve).
+    quint64 sessionKey = 0;
+};
+
+struct SolveResult {
+    quint64 revision = 0;
+    quint64 sessionKey = 0;
+    bool ok = false;        // false: error says why (one sentence), surfaces is empty
+    bool cancelled = false; // cancelled results are still emitted, with ok == false
+    QString error;
+    std::vector<model::CompositeSurface> surfaces; // every surface, solved (finite values only)
+    std::vector<Summary> summaries;                // per surface
+    double elapsedMs = 0.0;
+};
+
+// The solver on its own thread. submit() hands over a snapshot; the worker reports progress
+// per iteration and one result per request it ran, by signals queued to the receiver's
+// thread. A request submitted while another one waits replaces it (only the newest is
+// solved, the replaced one gets no result); cancellation is an atomic flag checked between
+// iterations. The caller never waits on the worker.
+class SolverWorker : public QObject {
+    Q_OBJECT
+public:
+    explicit SolverWorker(QObject* parent = nullptr); // starts its own thread
+    ~SolverWorker() override;                         // cancels, quits and joins the thread
+
+    // Thread-safe. Replaces any request not yet started (coalescing); a request already
+    // running finishes its current iteration(s) unless cancel() is called.
+    void submit(SolveRequest request);
+    // Raises the cancel flag of the running request and drops the pending one.
+    void cancel();
+    // A request is running or waiting.
+    bool isBusy() const;
+    // Requests actually solved since construction (the others were coalesced away).
+    quint64 solvedCount() const;
+
+signals:
+    // Both are emitted on the thread this object lives in (normally the GUI thread), from
+    // records the worker thread hands over under a mutex.
+    void progress(quint64 revision, int iteration, int iterations, double residual);
+    void finished(const devsurf::solver::SolveResult& result);
+
+private:
+    struct Impl;
+    void run();
+    // On the thread this object lives in: progress, then results. Posted by name, so that the
+    // worker thread hands over no data but what deliverResults() takes under the mutex.
+    Q_INVOKABLE void deliverResults();
+    SolveResult solve(const SolveRequest& request);
+    std::unique_ptr<Impl> m_impl;
+    std::thread m_thread;
+};
+
+} // namespace devsurf::solver
+
+Q_DECLARE_METATYPE(devsurf::solver::SolveResult)

@@ -1,0 +1,299 @@
+#include "drag_bench.h"
+
+#include "bench_models.h"
+#include "model/document/commands/apply_surface_command.h"
+#include "model/document/commands/command_or_error.h"
+#include "model/document/document.h"
+#include "model/examples.h"
+#include "solver/formulation/perturbation.h"
+#include "solver/worker/solver_worker.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QTimer>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+
+namespace devsurf::bench {
+
+namespace {
+
+// Watches the event loop of the calling thread: the largest gap between ticks of a 1 ms timer.
+class StallWatch {
+public:
+    StallWatch() {
+        m_timer.setTimerType(Qt::PreciseTimer);
+        m_timer.setInterval(1);
+        QObject::connect(&m_timer, &QTimer::timeout, [this] {
+            const double now = m_clock.nsecsElapsed() / 1e6;
+            m_largest = std::max(m_largest, now - m_last);
+            m_last = now;
+        });
+        m_clock.start();
+        m_timer.start();
+    }
+    double largestGapMs() const { return m_largest; }
+
+private:
+    QTimer m_timer;
+    QElapsedTimer m_clock;
+    double m_last = 0.0;
+    double m_largest = 0.0;
+};
+
+double percentile(std::vector<double> values, double p) {
+    if (values.empty()) {
+        return 0.0;
+    }
+    std::sort(values.begin(), values.end());
+    const auto index = static_cast<std::size_t>(std::ceil(p * static_cast<double>(values.size())));
+    return values[std::min(values.size() - 1, index == 0 ? 0 : index - 1)];
+}
+
+// The vertex dragged: the one nearest the centre of the bounding box that is not pinned.
+model::VertexId draggedVertex(const model::CompositeSurface& surface) {
+    model::Vec3 low{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+                    std::numeric_limits<double>::max()};
+    model::Vec3 high = -low;
+    for (const auto& [id, p] : surface.vertices()) {
+        low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+    }
+    const model::Vec3 centre = (low + high) * 0.5;
+    model::VertexId best = model::kInvalidId;
+    double bestDistance = std::numeric_limits<double>::max();
+    for (const auto& [id, p] : surface.vertices()) {
+        if (!surface.isPinned(id) && model::distance(p, centre) < bestDistance) {
+            bestDistance = model::distance(p, centre);
+            best = id;
+        }
+    }
+    return best;
+}
+
+DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
+                     const DragBenchOptions& options) {
+    DragBenchRow row;
+    row.model = name;
+    row.moves = options.moves;
+    for (model::VertexId id : solver::spreadBoundaryVertices(surface, 6)) {
+        surface.setPinned(id, true);
+    }
+    const model::VertexId dragged = draggedVertex(surface);
+    const model::Vec3 from = surface.position(dragged);
+    const model::Vec3 lift{0.0, 0.0, options.liftFraction * solver::surfaceDiameter(surface)};
+    document::Document document;
+    model::Project project;
+    project.surfaces = {surface};
+    document.resetProject(project);
+
+    solver::SolverWorker worker;
+    QEventLoop loop;
+    QElapsedTimer clock;
+    StallWatch stalls;
+    std::vector<double> movedAt(static_cast<std::size_t>(options.moves) + 1, 0.0);
+    std::vector<double> latency;
+    int covered = 0; // moves 1..covered have had a result applied
+    double releasedAt = 0.0;
+    const quint64 release = static_cast<quint64>(options.moves) + 1;
+    constexpr quint64 kDragKey = 1;
+
+    auto request = [&](quint64 tag, double t, int iterations) {
+        solver::SolveRequest r;
+        // The bench tags each request with its move number (the application sends the
+        // document's revision at the press and tracks the revisions it produced itself).
+        r.revision = tag;
+        r.sessionKey = kDragKey;
+        r.iterations = iterations;
+        r.surfaces = {document.surface(0)};
+        r.pulled[0] = {{dragged, false, from + lift * t}};
+        worker.submit(std::move(r));
+    };
+    QObject::connect(
+        &worker, &solver::SolverWorker::finished, &loop, [&](const solver::SolveResult& result) {
+            if (!result.ok) {
+                row.error = result.error.toStdString();
+                loop.quit();
+                return;
+            }
+            const QString refused = document::pushOrExplain(
+                document, document::ApplySurfaceCommand::create(
+                              document, 0, result.surfaces.front(), QStringLiteral("Drag vertex"),
+                              document::Change::Geometry, static_cast<int>(kDragKey)));
+            if (!refused.isEmpty()) {
+                row.error = refused.toStdString();
+                loop.quit();
+                return;
+            }
+            const double now = clock.nsecsElapsed() / 1e6;
+            row.variables = result.summaries.front().variables;
+            if (result.revision == release) {
+                row.releaseMs = now - releasedAt;
+                row.residualAfter = result.summaries.front().finalMaxConstraintResidual;
+                loop.quit();
+                return;
+            }
+            ++row.applied;
+            for (int m = covered + 1; m <= static_cast<int>(result.revision); ++m) {
+                latency.push_back(now - movedAt[static_cast<std::size_t>(m)]);
+            }
+            covered = std::max(covered, static_cast<int>(result.revision));
+            if (covered == options.moves) {
+                releasedAt = now;
+                request(release, 1.0, options.afterIterations);
+            }
+        });
+    QTimer mouse;
+    mouse.setTimerType(Qt::PreciseTimer);
+    mouse.setInterval(static_cast<int>(std::lround(options.moveIntervalMs)));
+    int moved = 0;
+    QObject::connect(&mouse, &QTimer::timeout, [&] {
+        ++moved;
+        movedAt[static_cast<std::size_t>(moved)] = clock.nsecsElapsed() / 1e6;
+        request(static_cast<quint64>(moved), static_cast<double>(moved) / options.moves, 1);
+        if (moved == options.moves) {
+            mouse.stop();
+        }
+    });
+    clock.start();
+    mouse.start();
+    loop.exec();
+    mouse.stop();
+    worker.cancel();
+    row.largestStallMs = stalls.largestGapMs();
+    row.solved = static_cast<int>(worker.solvedCount());
+    if (!latency.empty()) {
+        row.firstResultMs = latency.front();
+        row.medianMs = percentile(latency, 0.5);
+        row.p95Ms = percentile(latency, 0.95);
+        const double span = releasedAt - movedAt[1];
+        row.appliedPerSecond = span > 0.0 ? 1000.0 * row.applied / span : 0.0;
+    }
+    return row;
+}
+
+SolveStallRow runSolve(const std::string& name, model::CompositeSurface surface,
+                       const DragBenchOptions& options) {
+    SolveStallRow row;
+    row.model = name;
+    row.iterations = options.solveIterations;
+    solver::perturbSurface(surface, 1e-3 * solver::surfaceDiameter(surface), 20150801u);
+    document::Document document;
+    model::Project project;
+    project.surfaces = {surface};
+    document.resetProject(project);
+    solver::SolverWorker worker;
+    QEventLoop loop;
+    QElapsedTimer clock;
+    StallWatch stalls;
+    QObject::connect(
+        &worker, &solver::SolverWorker::finished, &loop, [&](const solver::SolveResult& result) {
+            if (!result.ok) {
+                row.error = result.error.toStdString();
+            } else {
+                row.variables = result.summaries.front().variables;
+                const QString refused = document::pushOrExplain(
+                    document, document::ApplySurfaceCommand::create(
+                                  document, 0, result.surfaces.front(), QStringLiteral("Solve")));
+                row.error = refused.toStdString();
+            }
+            row.solveMs = clock.nsecsElapsed() / 1e6;
+            loop.quit();
+        });
+    solver::SolveRequest request;
+    request.revision = document.revision();
+    request.iterations = options.solveIterations;
+    request.surfaces = {document.surface(0)};
+    clock.start();
+    worker.submit(std::move(request));
+    loop.exec();
+    row.largestStallMs = stalls.largestGapMs();
+    return row;
+}
+
+} // namespace
+
+DragBenchReport runDragBench(const DragBenchOptions& options) {
+    std::unique_ptr<QCoreApplication> application;
+    if (!QCoreApplication::instance()) {
+        static int argc = 1;
+        static char name[] = "devsurf-bench";
+        static char* argv[] = {name, nullptr};
+        application = std::make_unique<QCoreApplication>(argc, argv);
+    }
+    auto log = [&options](const std::string& line) {
+        if (options.log) {
+            options.log(line);
+        }
+    };
+    DragBenchReport report;
+    const std::vector<std::pair<std::string, model::CompositeSurface>> drags = {
+        {"fig12-annulus", model::makeExample("annulus", 6).surfaces.front()},
+        {"annulus-14", model::makeExample("annulus", 14).surfaces.front()},
+    };
+    for (const auto& [name, surface] : drags) {
+        log("drag: " + name);
+        report.drags.push_back(runDrag(name, surface, options));
+    }
+    const std::vector<BenchModel> largest = benchModels({"large-annulus"});
+    if (!largest.empty()) {
+        log("drag: solve stall on " + largest.front().name);
+        report.solve = runSolve(largest.front().name, largest.front().surface, options);
+    }
+    return report;
+}
+
+void printDragBench(const DragBenchReport& report, bool json, std::ostream& out) {
+    char line[512];
+    if (json) {
+        out << "{\"drag\": {\"drags\": [";
+        for (std::size_t i = 0; i < report.drags.size(); ++i) {
+            const DragBenchRow& r = report.drags[i];
+            std::snprintf(line, sizeof line,
+                          "%s{\"model\": \"%s\", \"variables\": %d, \"moves\": %d, \"solved\": %d, "
+                          "\"applied\": %d, \"first_result_ms\": %.3f, \"median_ms\": %.3f, "
+                          "\"p95_ms\": %.3f, \"applied_per_second\": %.2f, "
+                          "\"largest_stall_ms\": %.3f, \"release_ms\": %.3f, "
+                          "\"residual_after\": %.3e, \"error\": \"%s\"}",
+                          i == 0 ? "" : ", ", r.model.c_str(), r.variables, r.moves, r.solved,
+                          r.applied, r.firstResultMs, r.medianMs, r.p95Ms, r.appliedPerSecond,
+                          r.largestStallMs, r.releaseMs, r.residualAfter, r.error.c_str());
+            out << line;
+        }
+        const SolveStallRow& s = report.solve;
+        std::snprintf(line, sizeof line,
+                      "], \"solve\": {\"model\": \"%s\", \"variables\": %d, \"iterations\": %d, "
+                      "\"solve_ms\": %.3f, \"largest_stall_ms\": %.3f, \"error\": \"%s\"}}}\n",
+                      s.model.c_str(), s.variables, s.iterations, s.solveMs, s.largestStallMs,
+                      s.error.c_str());
+        out << line;
+        return;
+    }
+    out << "Drag through the worker (move to result applied; targets: median <= 16 ms, stall "
+           "<= 20 ms)\n";
+    std::snprintf(line, sizeof line, "%-14s %9s %6s %6s %7s %9s %9s %9s %9s %9s %10s %9s\n",
+                  "model", "variables", "moves", "solved", "applied", "first ms", "median ms",
+                  "p95 ms", "applied/s", "stall ms", "release ms", "residual");
+    out << line;
+    for (const DragBenchRow& r : report.drags) {
+        std::snprintf(line, sizeof line,
+                      "%-14s %9d %6d %6d %7d %9.1f %9.1f %9.1f %9.1f %9.1f %10.1f %9.2e%s%s\n",
+                      r.model.c_str(), r.variables, r.moves, r.solved, r.applied, r.firstResultMs,
+                      r.medianMs, r.p95Ms, r.appliedPerSecond, r.largestStallMs, r.releaseMs,
+                      r.residualAfter, r.error.empty() ? "" : "  failed: ", r.error.c_str());
+        out << line;
+    }
+    const SolveStallRow& s = report.solve;
+    std::snprintf(line, sizeof line,
+                  "Solve of %s (%d variables, %d iterations): %.1f ms, largest stall %.1f ms%s%s\n",
+                  s.model.c_str(), s.variables, s.iterations, s.solveMs, s.largestStallMs,
+                  s.error.empty() ? "" : "; failed: ", s.error.c_str());
+    out << line;
+}
+
+} // namespace devsurf::bench

@@ -1,0 +1,57 @@
+#pragma once
+
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace devsurf::bench {
+
+// The interactive benchmark (`devsurf-bench --drag`): a scripted drag through the solver worker
+// with the coalescing of the desktop application, results applied to a Document as the drag's
+// one merging undo command, and the event loop of the thread that owns the document watched for
+// stalls; then the same watch during a Solve of the largest model.
+struct DragBenchOptions {
+    int moves = 200;
+    double moveIntervalMs = 8.0; // mouse events at 125 Hz
+    double liftFraction = 0.1;   // the whole drag lifts the vertex by this times the diameter
+    int afterIterations = 10;    // after the release
+    int solveIterations = 10;
+    std::function<void(const std::string&)> log;
+};
+
+struct DragBenchRow {
+    std::string model;
+    int variables = 0;
+    int moves = 0;
+    int solved = 0;             // requests the worker ran (the others were coalesced away)
+    int applied = 0;            // results pushed to the document during the moves
+    double firstResultMs = 0.0; // first move to its result applied (includes the analysis)
+    double medianMs = 0.0;      // move event to a result covering it applied to the document
+    double p95Ms = 0.0;
+    double appliedPerSecond = 0.0;
+    double largestStallMs = 0.0; // largest gap between ticks of a 1 ms timer
+    double releaseMs = 0.0;      // release to the last iterations applied
+    double residualAfter = 0.0;  // largest constraint residual after the release iterations
+    std::string error;           // empty unless the drag failed
+};
+
+struct SolveStallRow {
+    std::string model;
+    int variables = 0;
+    int iterations = 0;
+    double solveMs = 0.0;        // submit to the result applied
+    double largestStallMs = 0.0; // largest gap between ticks of a 1 ms timer
+    std::string error;
+};
+
+struct DragBenchReport {
+    std::vector<DragBenchRow> drags;
+    SolveStallRow solve;
+};
+
+// Runs on the calling thread's event loop (a QCoreApplication is made if there is none).
+DragBenchReport runDragBench(const DragBenchOptions& options);
+void printDragBench(const DragBenchReport& report, bool json, std::ostream& out);
+
+} // namespace devsurf::bench

@@ -1,0 +1,194 @@
+// Crease conditions (docs/math.md §5): a curved fold built by reflection satisfies (7) and stays
+// put under it; perturbed, the solver restores (7), measured from the geometry alone.
+
+#include "model/bspline_curve.h"
+#include "model/composite_surface.h"
+#include "solver/formulation/perturbation.h"
+#include "solver/formulation/surface_formulation.h"
+#include "solver/quality/crease_quality.h"
+#include "solver/quality/quality_measures.h"
+#include "solver/session/solve_session.h"
+#include "solver_test_problems.h"
+#include "test_registry.h"
+
+#include <QtTest>
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <random>
+
+using namespace devsurf;
+using model::Vec3;
+
+namespace {
+
+// The parabolic cylinder z = y² / 200 (rulings along x), cut by the plane x − z = 0 (normal
+// m = (1, 0, −1)/√2): the crease c(y) = (y²/200, y, y²/200), y ∈ [−50, 50], lies in the plane.
+// The left strip runs from the crease 50 mm towards −x along the rulings; the right strip is
+// the part that continued towards +x, reflected in the plane. Reflecting one side of a surface
+// in a plane through the crease folds it along that (planar) curve: the plane is the crease's
+// osculating plane and bisects the two tangent planes, which is (7). Cubic Bézier curves
+// (degree 3, one interval) represent the parabolas exactly.
+Vec3 crease(double y) {
+    return {y * y / 200.0, y, y * y / 200.0};
+}
+
+Vec3 reflect(const Vec3& p) {
+    const Vec3 m = Vec3(1, 0, -1) / std::sqrt(2.0);
+    return p - m * (2.0 * dot(p, m));
+}
+
+// Cubic Bézier control points of a quadratic curve given at t = 0, ½, 1.
+std::vector<Vec3> cubicOfQuadratic(const Vec3& p0, const Vec3& pm, const Vec3& p1) {
+    const Vec3 q = pm * 2.0 - (p0 + p1) * 0.5; // the quadratic's middle control point
+    return {p0, p0 / 3.0 + q * (2.0 / 3.0), q * (2.0 / 3.0) + p1 / 3.0, p1};
+}
+
+model::CompositeSurface curvedFold(model::CreaseCondition condition) {
+    model::CompositeSurface s;
+    s.setName("curved fold");
+    const Vec3 away(50, 0, 0);
+    auto curve = [&](const std::function<Vec3(const Vec3&)>& f) {
+        return cubicOfQuadratic(f(crease(-50)), f(crease(0)), f(crease(50)));
+    };
+    const std::vector<Vec3> c = curve([](const Vec3& p) { return p; });
+    const std::vector<Vec3> a = curve([&](const Vec3& p) { return p - away; });
+    const std::vector<Vec3> b = curve([&](const Vec3& p) { return reflect(p + away); });
+    const model::VertexId c0 = s.addVertex(c.front());
+    const model::VertexId c1 = s.addVertex(c.back());
+    const model::VertexId a0 = s.addVertex(a.front());
+    const model::VertexId a1 = s.addVertex(a.back());
+    const model::VertexId b0 = s.addVertex(b.front());
+    const model::VertexId b1 = s.addVertex(b.back());
+    s.addFace({a0, c0, c1, a1});
+    s.addFace({c1, c0, b0, b1});
+    const model::SplineSpace space{3, 2, 1};
+    const model::EdgeId edge = s.setSpline(c0, c1, space, c);
+    s.setSpline(a0, a1, space, a);
+    s.setSpline(b0, b1, space, b);
+    s.setCreaseCondition(edge, condition);
+    return s;
+}
+
+double diameterOf(const model::CompositeSurface& s) {
+    return solver::surfaceDiameter(s);
+}
+
+double largestMove(const model::CompositeSurface& from, const model::CompositeSurface& to) {
+    double move = 0.0;
+    for (const auto& [id, p] : from.vertices()) {
+        move = std::max(move, (to.position(id) - p).norm());
+    }
+    for (const auto& [id, record] : from.edges()) {
+        for (std::size_t i = 0; i < record.controlPoints.size(); ++i) {
+            move = std::max(move, (to.edge(id).controlPoints[i] - record.controlPoints[i]).norm());
+        }
+    }
+    return move;
+}
+
+} // namespace
+
+class TstCreaseConditions : public QObject {
+    Q_OBJECT
+
+private slots:
+    void reflectedFoldSatisfiesTheCurvedFoldCondition() {
+        const model::CompositeSurface fold = curvedFold(model::CreaseCondition::CurvedFold);
+        QVERIFY(fold.validate().empty());
+        // Developable as built (both strips are pieces of a cylinder) and really folded.
+        QVERIFY(solver::measureQuality(fold).developabilityMax < 1e-12);
+        const solver::CreaseQuality quality = solver::measureCreaseQuality(fold);
+        QCOMPARE(quality.creases, 1);
+        QVERIFY2(quality.residualMax < 1e-12, qPrintable(QString::number(quality.residualMax)));
+        QVERIFY(quality.meanFoldDegrees > 10.0);
+        // The same shape is no geodesic: the measure can fail.
+        const solver::CreaseQuality geodesic =
+            solver::measureCreaseQuality(curvedFold(model::CreaseCondition::Geodesic));
+        QVERIFY(geodesic.residualMax > 0.1);
+    }
+
+    void everyTermsJacobianMatchesFiniteDifferences_data() {
+        QTest::addColumn<int>("condition");
+        QTest::newRow("curved fold") << static_cast<int>(model::CreaseCondition::CurvedFold);
+        QTest::newRow("geodesic") << static_cast<int>(model::CreaseCondition::Geodesic);
+    }
+
+    void everyTermsJacobianMatchesFiniteDifferences() {
+        QFETCH(int, condition);
+        const solver::SurfaceFormulation f(
+            curvedFold(static_cast<model::CreaseCondition>(condition)), {});
+        const solver::Problem& problem = f.problem();
+        std::mt19937 rng(11);
+        const std::vector<double> x = solver::testing::randomVector(rng, problem.variableCount());
+        QVERIFY(problem.findFamily("creaseConditions") >= 0);
+        for (int t = 0; t < problem.termCount(); ++t) {
+            const solver::Term& term = problem.term(t);
+            const double error = solver::testing::jacobianError(
+                solver::testing::analyticJacobian(term, x),
+                solver::testing::finiteDifferenceJacobian(term, x, 1e-6));
+            QVERIFY2(error < 1e-6, term.typeName());
+        }
+    }
+
+    void curvedFoldStaysPutWithoutPins() {
+        const model::CompositeSurface fold = curvedFold(model::CreaseCondition::CurvedFold);
+        solver::SolveSession session(fold, {});
+        QVERIFY(session.step(10).succeeded());
+        const double move = largestMove(fold, session.surface());
+        QVERIFY2(move <= 1e-6 * diameterOf(fold), qPrintable(QString::number(move)));
+    }
+
+    void perturbedFoldIsRestored() {
+        // Noise breaks (7); ten iterations with the condition restore it (three vertices
+        // pinned), while the same solve without the condition leaves the crease as it is.
+        double withCondition = 0.0;
+        double without = 0.0;
+        for (const model::CreaseCondition condition :
+             {model::CreaseCondition::CurvedFold, model::CreaseCondition::None}) {
+            model::CompositeSurface fold = curvedFold(condition);
+            const std::vector<model::VertexId> pins{0, 2, 3};
+            solver::perturbSurface(fold, 0.002 * diameterOf(fold), 7, pins);
+            for (model::VertexId v : pins) {
+                fold.setPinned(v, true);
+            }
+            solver::SolveSession session(fold, {});
+            QVERIFY(session.step(10).succeeded());
+            const model::CompositeSurface solved = session.surface();
+            QVERIFY(solver::measureQuality(solved).developabilityMax < 1e-8);
+            model::CompositeSurface measured = solved;
+            measured.setCreaseCondition(measured.edgeBetween(0, 1),
+                                        model::CreaseCondition::CurvedFold);
+            const double residual = solver::measureCreaseQuality(measured).residualMax;
+            (condition == model::CreaseCondition::None ? without : withCondition) = residual;
+        }
+        qInfo("curved-fold residual after 10 iterations: %.2e with the condition, %.2e without",
+              withCondition, without);
+        QVERIFY(withCondition < 1e-6);
+        QVERIFY(without > 100.0 * withCondition);
+    }
+
+    void conditionsWhereTheyCannotApplyAreRefused() {
+        // A boundary curve is not a crease (the model refuses it), and "straight when
+        // unfolded" is not solved yet: each with a sentence naming the edge.
+        model::CompositeSurface boundary = curvedFold(model::CreaseCondition::None);
+        const model::EdgeId edge = boundary.edgeBetween(2, 3);
+        boundary.setCreaseCondition(edge, model::CreaseCondition::CurvedFold);
+        model::CompositeSurface straight = curvedFold(model::CreaseCondition::Straight);
+        for (const auto* surface : {&boundary, &straight}) {
+            try {
+                solver::SolveSession session(*surface, {});
+                QFAIL("a condition that cannot be imposed was accepted");
+            } catch (const std::invalid_argument& error) {
+                const QString text = error.what();
+                QVERIFY2(text.contains("edge") &&
+                             (text.contains("crease condition") || text.contains("straight")),
+                         error.what());
+            }
+        }
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstCreaseConditions);
+#include "tst_crease_conditions.moc"

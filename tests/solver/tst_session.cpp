@@ -1,0 +1,169 @@
+#include "model/examples.h"
+#include "solver/core/analysis_cache.h"
+#include "solver/formulation/perturbation.h"
+#include "solver/session/solve_session.h"
+
+#include "test_registry.h"
+
+#include <QTest>
+
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+using namespace devsurf;
+using namespace devsurf::solver;
+
+namespace {
+
+// The annulus of the paper's Fig. 12, shaken by 0.1 % of its diameter (a rough start).
+model::CompositeSurface roughAnnulus(unsigned seed = 3) {
+    model::CompositeSurface surface = model::makeExample("annulus").surfaces.front();
+    perturbSurface(surface, 1e-3 * surfaceDiameter(surface), seed, {});
+    return surface;
+}
+
+bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
+}
+
+} // namespace
+
+class TstSolveSession : public QObject {
+    Q_OBJECT
+
+private slots:
+    void stepOneTenTimesEqualsStepTen() {
+        const model::CompositeSurface start = roughAnnulus();
+        SolveSession one(start, {});
+        SolveSession ten(start, {});
+        for (int i = 0; i < 10; ++i) {
+            const Summary summary = one.step(1);
+            QVERIFY(summary.succeeded());
+            QCOMPARE(summary.iterationsCompleted, 1);
+        }
+        const Summary summary = ten.step(10);
+        QVERIFY(summary.succeeded());
+        QCOMPARE(summary.iterationsCompleted, 10);
+        QCOMPARE(one.iterationsDone(), 10);
+        QVERIFY(sameBits(one.state(), ten.state()));
+        QVERIFY(one.surface() == ten.surface());
+        QVERIFY(!(one.surface() == start));
+        QVERIFY(summary.finalMaxConstraintResidual < summary.initialMaxConstraintResidual);
+    }
+
+    void secondSessionOnSameStructureDoesNoSymbolicAnalysis() {
+        const model::CompositeSurface first = roughAnnulus(11);
+        SolveSession a(first, {});
+        QVERIFY(a.step(2).succeeded());
+        const long long analyses = symbolicAnalysisCount();
+        const long long hits = AnalysisCache::instance().hits();
+        // Another session on other coordinates of the same structure: no ordering, no
+        // analysis, no timing of the factorisations.
+        SolveSession b(roughAnnulus(12), {});
+        const Summary summary = b.step(3);
+        QVERIFY(summary.succeeded());
+        QCOMPARE(symbolicAnalysisCount(), analyses);
+        QVERIFY(AnalysisCache::instance().hits() > hits);
+        // The same input gives the same bits in a new session.
+        SolveSession c(first, {});
+        QVERIFY(c.step(2).succeeded());
+        QCOMPARE(symbolicAnalysisCount(), analyses);
+        QVERIFY(sameBits(a.state(), c.state()));
+    }
+
+    void otherStructureIsAnalysed() {
+        AnalysisCache::instance().clear();
+        long long analyses = symbolicAnalysisCount();
+        SolveSession a(roughAnnulus(), {});
+        QVERIFY(a.step(1).succeeded());
+        QVERIFY(symbolicAnalysisCount() > analyses);
+        analyses = symbolicAnalysisCount();
+        SolveSession b(model::makeExample("sheet").surfaces.front(), {});
+        QVERIFY(b.step(1).succeeded());
+        QVERIFY(symbolicAnalysisCount() > analyses);
+        analyses = symbolicAnalysisCount();
+        SolveSession c(roughAnnulus(4), {});
+        QVERIFY(c.step(1).succeeded());
+        QCOMPARE(symbolicAnalysisCount(), analyses);
+        QCOMPARE(AnalysisCache::instance().size(), std::size_t{2});
+    }
+
+    void pinnedVerticesStayBitIdentical() {
+        model::CompositeSurface surface = roughAnnulus();
+        std::vector<model::VertexId> ids;
+        for (const auto& [id, position] : surface.vertices()) {
+            ids.push_back(id);
+        }
+        QVERIFY(ids.size() > 8);
+        const std::vector<model::VertexId> pinned(ids.begin(), ids.begin() + 4);
+        for (model::VertexId id : pinned) {
+            surface.setPinned(id, true);
+        }
+        const model::VertexId pulledVertex = ids[ids.size() / 2];
+        const model::Vec3 from = surface.position(pulledVertex);
+        const double diameter = surfaceDiameter(surface);
+        // A pinned vertex stays fixed even when asked to be pulled.
+        SolveSession session(surface, {{pulledVertex, false, from},
+                                       {pinned.front(), false, surface.position(pinned.front())}});
+        QCOMPARE(session.pulledVertices().size(), std::size_t{1});
+        QVERIFY(!session.setHandleTarget(pinned.front(), from));
+        const model::Vec3 to = from + model::Vec3{0.0, 0.0, 0.05 * diameter};
+        for (int k = 1; k <= 5; ++k) {
+            QVERIFY(session.setHandleTarget(pulledVertex,
+                                            from + (to - from) * (static_cast<double>(k) / 5)));
+            QVERIFY(session.step(1).succeeded());
+        }
+        QVERIFY(session.step(5).succeeded());
+        for (model::VertexId id : pinned) {
+            const model::Vec3 before = surface.position(id);
+            const model::Vec3 after = session.surface().position(id);
+            QVERIFY(std::memcmp(&before, &after, sizeof before) == 0);
+            QVERIFY(session.surface().isPinned(id));
+        }
+        // The pulled vertex followed most of the way.
+        const double moved = model::distance(session.surface().position(pulledVertex), from);
+        QVERIFY2(moved > 0.5 * model::distance(to, from), qPrintable(QString::number(moved)));
+    }
+
+    void cancelledStepLeavesSurfaceUntouched() {
+        const model::CompositeSurface start = roughAnnulus();
+        SolveSession session(start, {});
+        std::atomic<bool> cancel{true};
+        const Summary summary = session.step(5, &cancel);
+        QCOMPARE(summary.status, Status::Cancelled);
+        QCOMPARE(summary.iterationsCompleted, 0);
+        QVERIFY(session.surface() == start);
+        QCOMPARE(session.iterationsDone(), 0);
+
+        // Cancelled after the second iteration: the surface is the state after two.
+        cancel = false;
+        int seen = 0;
+        const Summary partial = session.step(5, &cancel, [&](const IterationStats& stats) {
+            QCOMPARE(stats.iteration, seen);
+            if (++seen == 2) {
+                cancel = true;
+            }
+        });
+        QCOMPARE(partial.status, Status::Cancelled);
+        QCOMPARE(partial.iterationsCompleted, 2);
+        SolveSession reference(start, {});
+        QVERIFY(reference.step(2).succeeded());
+        QVERIFY(session.surface() == reference.surface());
+    }
+
+    void rejectsWhatCannotBeSolved() {
+        model::CompositeSurface surface = roughAnnulus();
+        const model::VertexId id = surface.vertices().begin()->first;
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 SolveSession(surface, {{99999, false, {}}}));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 SolveSession(surface, {{id, false, {std::nan(""), 0.0, 0.0}}}));
+        surface.moveVertex(id, {std::nan(""), 0.0, 0.0});
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, SolveSession(surface, {}));
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstSolveSession);
+#include "tst_session.moc"

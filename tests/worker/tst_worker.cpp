@@ -1,0 +1,231 @@
+#include "model/examples.h"
+#include "solver/core/analysis_cache.h"
+#include "solver/formulation/perturbation.h"
+#include "solver/worker/solver_worker.h"
+
+#include "test_registry.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+#include <cmath>
+#include <cstring>
+
+using namespace devsurf;
+using namespace devsurf::solver;
+
+namespace {
+
+model::CompositeSurface roughAnnulus(unsigned seed = 5) {
+    model::CompositeSurface surface = model::makeExample("annulus").surfaces.front();
+    perturbSurface(surface, 1e-3 * surfaceDiameter(surface), seed, {});
+    return surface;
+}
+
+SolveResult resultAt(const QSignalSpy& spy, int index) {
+    return spy.at(index).at(0).value<SolveResult>();
+}
+
+// Waits until a result arrives (or the spy's wait times out, which fails the test).
+bool waitForResults(QSignalSpy& spy, int count) {
+    while (spy.count() < count) {
+        if (!spy.wait(60000)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool allFinite(const model::CompositeSurface& surface) {
+    for (const auto& [id, p] : surface.vertices()) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+            return false;
+        }
+    }
+    for (const auto& [id, edge] : surface.edges()) {
+        for (const model::Vec3& p : edge.controlPoints) {
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+} // namespace
+
+class TstSolverWorker : public QObject {
+    Q_OBJECT
+
+private slots:
+    void requestYieldsProgressAndResult() {
+        SolverWorker worker;
+        QSignalSpy progress(&worker, &SolverWorker::progress);
+        QSignalSpy finished(&worker, &SolverWorker::finished);
+        SolveRequest request;
+        request.revision = 42;
+        request.surfaces = {roughAnnulus(), model::makeExample("sheet").surfaces.front()};
+        request.iterations = 3;
+        worker.submit(request);
+        QVERIFY(waitForResults(finished, 1));
+        const SolveResult result = resultAt(finished, 0);
+        QVERIFY2(result.ok, qPrintable(result.error));
+        QVERIFY(!result.cancelled);
+        QCOMPARE(result.revision, quint64{42});
+        QCOMPARE(result.surfaces.size(), std::size_t{2});
+        QCOMPARE(result.summaries.size(), std::size_t{2});
+        QCOMPARE(result.summaries[0].iterationsCompleted, 3);
+        QVERIFY(!(result.surfaces[0] == request.surfaces[0]));
+        QVERIFY(allFinite(result.surfaces[0]));
+        // Progress: one per iteration of every surface, queued before the result.
+        QCOMPARE(progress.count(), 6);
+        const QList<QVariant> last = progress.last();
+        QCOMPARE(last.at(0).value<quint64>(), quint64{42});
+        QCOMPARE(last.at(1).toInt(), 6);
+        QCOMPARE(last.at(2).toInt(), 6);
+        QVERIFY(std::isfinite(last.at(3).toDouble()));
+        QVERIFY(!worker.isBusy());
+    }
+
+    void rapidRequestsAreCoalesced() {
+        const model::CompositeSurface surface = roughAnnulus();
+        const model::VertexId dragged = surface.vertices().rbegin()->first;
+        const model::Vec3 from = surface.position(dragged);
+        const double diameter = surfaceDiameter(surface);
+        std::vector<SolveRequest> requests(100);
+        for (int i = 0; i < 100; ++i) {
+            SolveRequest& request = requests[static_cast<std::size_t>(i)];
+            request.revision = static_cast<quint64>(i + 1);
+            request.sessionKey = 7;
+            request.iterations = 1;
+            request.surfaces = {surface};
+            request.pulled[0] = {
+                {dragged, false, from + model::Vec3{0.0, 0.0, 1e-3 * diameter * (i + 1)}}};
+        }
+        SolverWorker worker;
+        QSignalSpy finished(&worker, &SolverWorker::finished);
+        for (SolveRequest& request : requests) {
+            worker.submit(std::move(request));
+        }
+        // Results arrive in order; the last one is the newest request.
+        while (finished.isEmpty() || resultAt(finished, finished.count() - 1).revision != 100) {
+            QVERIFY(finished.wait(60000));
+        }
+        QVERIFY(!worker.isBusy());
+        quint64 previous = 0;
+        for (int i = 0; i < finished.count(); ++i) {
+            const SolveResult result = resultAt(finished, i);
+            QVERIFY2(result.ok, qPrintable(result.error));
+            QVERIFY(result.revision > previous);
+            previous = result.revision;
+        }
+        // Only a few of the 100 were solved: the others were replaced while waiting.
+        QCOMPARE(static_cast<quint64>(finished.count()), worker.solvedCount());
+        QVERIFY2(finished.count() <= 5, qPrintable(QString::number(finished.count())));
+    }
+
+    void dragContinuesTheSession() {
+        // Two requests of one drag give the same bits as one session stepped twice.
+        const model::CompositeSurface surface = roughAnnulus(9);
+        const model::VertexId dragged = surface.vertices().begin()->first;
+        const model::Vec3 from = surface.position(dragged);
+        const model::Vec3 first = from + model::Vec3{0.0, 0.0, 1.0};
+        const model::Vec3 second = from + model::Vec3{0.0, 0.0, 2.0};
+        SolverWorker worker;
+        QSignalSpy finished(&worker, &SolverWorker::finished);
+        SolveRequest request;
+        request.sessionKey = 3;
+        request.iterations = 1;
+        request.surfaces = {surface};
+        request.pulled[0] = {{dragged, false, first}};
+        request.revision = 1;
+        worker.submit(request);
+        QVERIFY(waitForResults(finished, 1));
+        request.pulled[0] = {{dragged, false, second}};
+        request.revision = 2;
+        worker.submit(request);
+        QVERIFY(waitForResults(finished, 2));
+
+        SolveSession session(surface, {{dragged, false, first}});
+        QVERIFY(session.step(1).succeeded());
+        QVERIFY(session.setHandleTarget(dragged, second));
+        QVERIFY(session.step(1).succeeded());
+        const SolveResult result = resultAt(finished, 1);
+        QVERIFY2(result.ok, qPrintable(result.error));
+        QVERIFY(result.surfaces.front() == session.surface());
+    }
+
+    void cancelMidSolveGivesCancelledResult() {
+        SolverWorker worker;
+        QSignalSpy progress(&worker, &SolverWorker::progress);
+        QSignalSpy finished(&worker, &SolverWorker::finished);
+        SolveRequest request;
+        request.revision = 5;
+        request.surfaces = {roughAnnulus()};
+        request.iterations = 10000;
+        worker.submit(request);
+        QVERIFY(progress.wait(60000));
+        QVERIFY(worker.isBusy());
+        worker.cancel();
+        QVERIFY(waitForResults(finished, 1));
+        const SolveResult result = resultAt(finished, 0);
+        QVERIFY(result.cancelled);
+        QVERIFY(!result.ok);
+        QVERIFY(!result.error.isEmpty());
+        QVERIFY(result.surfaces.empty());
+        QCOMPARE(result.revision, quint64{5});
+        QVERIFY(progress.count() < 10000);
+    }
+
+    void twoWorkersOnOneStructureAgree() {
+        // Two threads analyse or share the same structure at once; the results are the same bits.
+        AnalysisCache::instance().clear();
+        const model::CompositeSurface surface = roughAnnulus(21);
+        SolverWorker first;
+        SolverWorker second;
+        QSignalSpy firstDone(&first, &SolverWorker::finished);
+        QSignalSpy secondDone(&second, &SolverWorker::finished);
+        SolveRequest request;
+        request.surfaces = {surface};
+        request.iterations = 4;
+        first.submit(request);
+        second.submit(request);
+        QVERIFY(waitForResults(firstDone, 1));
+        QVERIFY(waitForResults(secondDone, 1));
+        const SolveResult a = resultAt(firstDone, 0);
+        const SolveResult b = resultAt(secondDone, 0);
+        QVERIFY(a.ok && b.ok);
+        QVERIFY(a.surfaces.front() == b.surfaces.front());
+    }
+
+    void nanInTheInputIsRefused() {
+        model::CompositeSurface surface = roughAnnulus();
+        const model::VertexId id = surface.vertices().begin()->first;
+        surface.moveVertex(id, {std::nan(""), 0.0, 0.0});
+        SolverWorker worker;
+        QSignalSpy finished(&worker, &SolverWorker::finished);
+        SolveRequest request;
+        request.revision = 9;
+        request.surfaces = {surface};
+        worker.submit(request);
+        QVERIFY(waitForResults(finished, 1));
+        const SolveResult result = resultAt(finished, 0);
+        QVERIFY(!result.ok);
+        QVERIFY(!result.cancelled);
+        QVERIFY(result.surfaces.empty());
+        QVERIFY2(result.error.endsWith('.') && result.error.contains("not a finite number"),
+                 qPrintable(result.error));
+
+        // A NaN drag target is refused the same way.
+        request.surfaces = {roughAnnulus()};
+        request.sessionKey = 1;
+        request.pulled[0] = {{id, false, {0.0, std::nan(""), 0.0}}};
+        worker.submit(request);
+        QVERIFY(waitForResults(finished, 2));
+        QVERIFY(!resultAt(finished, 1).ok);
+        QVERIFY(resultAt(finished, 1).surfaces.empty());
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstSolverWorker);
+#include "tst_worker.moc"
