@@ -1,5 +1,6 @@
 #include "document_test_support.h"
 #include "model/document/commands/apply_surface_command.h"
+#include "model/document/commands/crease_condition_command.h"
 #include "model/document/commands/move_vertices_command.h"
 #include "model/document/commands/pin_vertices_command.h"
 #include "model/document/commands/refine_spline_class_command.h"
@@ -144,6 +145,22 @@ private slots:
             const VertexId first = s.vertices().begin()->first;
             redoUndoRedo(doc, PinVerticesCommand::create(doc, 0, {first, first + 1}, true), "pin");
             redoUndoRedo(doc, PinVerticesCommand::create(doc, 0, {first + 1}, false), "unpin");
+            // A curved fold on the first crease, where the example has one, then cleared.
+            EdgeId crease = kInvalidId;
+            for (const auto& [edge, record] : s.edges()) {
+                if (crease == kInvalidId && record.isSpline() && s.facesOfEdge(edge).size() == 2) {
+                    crease = edge;
+                }
+            }
+            if (crease != kInvalidId) {
+                redoUndoRedo(
+                    doc,
+                    CreaseConditionCommand::create(doc, 0, {crease}, CreaseCondition::CurvedFold),
+                    "curved fold");
+                redoUndoRedo(
+                    doc, CreaseConditionCommand::create(doc, 0, {crease}, CreaseCondition::None),
+                    "clear condition");
+            }
             redoUndoRedo(doc, someRelabel(doc), "relabel");
             redoUndoRedo(
                 doc,
@@ -319,6 +336,37 @@ private slots:
                  QString("Pin 2 vertices"));
         doc.undoStack()->undo();
         QVERIFY(bytesOf(doc) == original);
+    }
+
+    void creaseConditionRefusals() {
+        Document doc;
+        doc.resetProject(makeExample("sheet"));
+        const CompositeSurface& s = doc.surface(0);
+        const std::string original = bytesOf(doc);
+        EdgeId crease = kInvalidId;
+        EdgeId boundary = kInvalidId;
+        EdgeId ruling = kInvalidId;
+        for (const auto& [edge, record] : s.edges()) {
+            const bool shared = s.facesOfEdge(edge).size() == 2;
+            (record.isSpline() ? (shared ? crease : boundary) : ruling) = edge;
+        }
+        QVERIFY(crease != kInvalidId && boundary != kInvalidId && ruling != kInvalidId);
+        QVERIFY(
+            CreaseConditionCommand::create(doc, 0, {}, CreaseCondition::CurvedFold).isRefused());
+        for (const EdgeId edge : {boundary, ruling, EdgeId(9999)}) {
+            const CommandOrError refused =
+                CreaseConditionCommand::create(doc, 0, {crease, edge}, CreaseCondition::Geodesic);
+            QVERIFY(refused.isRefused());
+            QVERIFY2(refused.error().contains(QString::number(edge)), qPrintable(refused.error()));
+        }
+        QVERIFY(CreaseConditionCommand::create(doc, 0, {crease}, CreaseCondition::Straight)
+                    .isRefused());
+        QVERIFY(CreaseConditionCommand::create(doc, 0, {crease}, CreaseCondition::None)
+                    .isRefused()); // already none
+        QVERIFY(bytesOf(doc) == original);
+        const CommandOrError set =
+            CreaseConditionCommand::create(doc, 0, {crease}, CreaseCondition::CurvedFold);
+        QVERIFY(set.command()->text().startsWith("Curved fold on 1 "));
     }
 };
 

@@ -9,6 +9,7 @@
 #include "model/examples.h"
 #include "model/strip.h"
 #include "model/topology_edits.h"
+#include "solver/session/solve_session.h"
 #include "test_registry.h"
 
 #include <QSignalSpy>
@@ -23,6 +24,16 @@ using devsurf::test::bytesOf;
 using devsurf::test::firstProblem;
 
 namespace {
+
+// Pinned vertices never move, bit for bit.
+bool pinsKept(const CompositeSurface& before, const CompositeSurface& after) {
+    for (VertexId v : before.pinnedVertices()) {
+        if (!after.isPinned(v) || !(after.position(v) == before.position(v))) {
+            return false;
+        }
+    }
+    return true;
+}
 
 template <class Map> auto randomKey(const Map& map, std::mt19937& rng) {
     std::uniform_int_distribution<std::size_t> pick(0, map.size() - 1);
@@ -55,6 +66,7 @@ private slots:
         int refused = 0;
         int total = 0;
         int lastSurface = -1;
+        int dragCount = 0;
         std::set<VertexId> lastVertices;
         const std::size_t maxFaces = 60;
 
@@ -148,6 +160,50 @@ private slots:
                     vertices.insert(randomKey(s.vertices(), rng));
                 }
                 result = PinVerticesCommand::create(doc, index, vertices, unit(rng) < 0.7);
+            } else if (kind < 0.965) {
+                // Solve, as the application's Solve does it: a few iterations on the whole
+                // surface, pins kept, applied as one command.
+                type = "solve";
+                try {
+                    devsurf::solver::SolveSession session(s, {});
+                    if (session.step(2).succeeded()) {
+                        QVERIFY(pinsKept(s, session.surface()));
+                        result =
+                            ApplySurfaceCommand::create(doc, index, session.surface(), "Solve");
+                    }
+                } catch (const std::invalid_argument&) {
+                    // A random edit can leave a surface the solver refuses: nothing happens.
+                }
+            } else if (kind < 0.98) {
+                // A drag: one vertex pulled along three mouse positions, one iteration each,
+                // every result merged into one undo step.
+                type = "drag";
+                const VertexId v = randomKey(s.vertices(), rng);
+                const Vec3 by(symmetric(rng), symmetric(rng), symmetric(rng));
+                std::vector<CompositeSurface> moves;
+                try {
+                    devsurf::solver::SolveSession session(s, {{v, false, s.position(v)}});
+                    for (int step = 1; step <= 3; ++step) {
+                        session.setHandleTarget(v, s.position(v) + by * (step / 3.0));
+                        if (!session.step(1).succeeded()) {
+                            break;
+                        }
+                        QVERIFY(pinsKept(s, session.surface()));
+                        moves.push_back(session.surface());
+                    }
+                } catch (const std::invalid_argument&) {
+                }
+                if (moves.size() == 3) {
+                    const int key = 100 + dragCount++;
+                    for (int step = 0; step < 2; ++step) {
+                        QVERIFY(pushOrExplain(
+                                    doc, ApplySurfaceCommand::create(doc, index, moves[step],
+                                                                     "Drag", Change::Geometry, key))
+                                    .isEmpty());
+                    }
+                    result = ApplySurfaceCommand::create(doc, index, moves[2], "Drag",
+                                                         Change::Geometry, key);
+                }
             } else {
                 type = "apply";
                 CompositeSurface solved = s;
@@ -171,8 +227,8 @@ private slots:
             ++pushed[type];
             ++total;
         }
-        for (const char* type :
-             {"translate", "rotate", "relabel", "subdivide", "split", "refine", "pin", "apply"}) {
+        for (const char* type : {"translate", "rotate", "relabel", "subdivide", "split", "refine",
+                                 "pin", "solve", "drag", "apply"}) {
             qInfo("%s: %d", type, pushed[type]);
             QVERIFY2(pushed[type] >= 10, type);
         }
