@@ -110,8 +110,8 @@
         <location filename="../model/document/commands/pin_vertices_command.cpp" line="29"/>
         <source>Unpin %n vertices</source>
         <translation>
-            <numerusform>%n Ecke lösen</numerusform>
-            <numerusform>%n Ecken lösen</numerusform>
+            <numerusform>%n Ecke freigeben</numerusform>
+            <numerusform>%n Ecken freigeben</numerusform>
         </translation>
     </message>
 </context>

@@ -2,6 +2,25 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
 <context>
+    <name>CreaseConditionCommand</name>
+    <message numerus="yes">
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="59"/>
+        <source>Clear the condition of %n creases</source>
+        <translation>
+            <numerusform>Clear the condition of %n crease</numerusform>
+            <numerusform>Clear the condition of %n creases</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="60"/>
+        <source>%1 on %n creases</source>
+        <translation>
+            <numerusform>%1 on %n crease</numerusform>
+            <numerusform>%1 on %n creases</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>MoveVerticesCommand</name>
     <message numerus="yes">
         <location filename="../model/document/commands/move_vertices_command.cpp" line="23"/>
@@ -51,9 +70,20 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::DragTool</name>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="69"/>
+        <source>Drag %n vertices</source>
+        <translation>
+            <numerusform>Drag %n vertex</numerusform>
+            <numerusform>Drag %n vertices</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="318"/>
+        <location filename="../app/gui/main_window.cpp" line="353"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n surface</numerusform>
@@ -61,7 +91,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="319"/>
+        <location filename="../app/gui/main_window.cpp" line="354"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n patch</numerusform>
@@ -69,7 +99,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="320"/>
+        <location filename="../app/gui/main_window.cpp" line="355"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n control point</numerusform>
@@ -77,11 +107,19 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="321"/>
+        <location filename="../app/gui/main_window.cpp" line="356"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n selected</numerusform>
             <numerusform>%n selected</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/main_window_solver.cpp" line="27"/>
+        <source>Make every surface developable again: %n iteration(s) of the solver, one undo step. Pinned vertices stay where they are.</source>
+        <translation>
+            <numerusform>Make every surface developable again: %n iteration of the solver, one undo step. Pinned vertices stay where they are.</numerusform>
+            <numerusform>Make every surface developable again: %n iterations of the solver, one undo step. Pinned vertices stay where they are.</numerusform>
         </translation>
     </message>
 </context>
@@ -164,6 +202,28 @@
         <translation>
             <numerusform>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner.</numerusform>
             <numerusform>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corners.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::SolveController</name>
+    <message numerus="yes">
+        <location filename="../app/gui/solve_controller.cpp" line="176"/>
+        <source>Solved: %n iteration(s), largest constraint residual %1.</source>
+        <translation>
+            <numerusform>Solved: %n iteration, largest constraint residual %1.</numerusform>
+            <numerusform>Solved: %n iterations, largest constraint residual %1.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::SolverPanel</name>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/solver_panel.cpp" line="45"/>
+        <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
+        <translation>
+            <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration in %3 ms.</numerusform>
+            <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iterations in %3 ms.</numerusform>
         </translation>
     </message>
 </context>

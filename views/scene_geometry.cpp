@@ -81,6 +81,7 @@ SurfaceScene buildSpatialScene(const model::CompositeSurface& surface, int surfa
                 it->second = static_cast<int>(scene.points.size());
                 scene.points.push_back(mesh.vertices[static_cast<std::size_t>(v)]);
                 scene.normals.emplace_back();
+                scene.pointOrigin.push_back(v);
             }
             polygon.push_back(it->second);
         }
@@ -118,6 +119,8 @@ SurfaceScene buildSpatialScene(const model::CompositeSurface& surface, int surfa
         scene.edges.push_back(std::move(curve));
     }
     scene.vertices = surface.vertices();
+    const auto pinned = surface.pinnedVertices();
+    scene.pinned.insert(pinned.begin(), pinned.end());
     return scene;
 }
 
@@ -185,6 +188,9 @@ DevelopmentScenes buildDevelopmentScenes(const model::Project& project) {
             }
         }
         for (const auto& [id, position] : piece.vertices) {
+            if (surface.isPinned(id)) {
+                scene.pinned.insert(id);
+            }
             if (!scene.vertices.emplace(id, toScene(position)).second) {
                 scene.seamVertices.push_back(toScene(position));
             }

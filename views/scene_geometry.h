@@ -9,6 +9,7 @@
 
 #include <array>
 #include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -31,6 +32,7 @@ struct SurfaceScene {
     // (3D) and a development with a period can be cut open (2D).
     std::vector<model::Vec3> points;
     std::vector<model::Vec3> normals; // per point, 3D only
+    std::vector<int> pointOrigin;     // per point, 3D only: its vertex of the sampled mesh
     std::vector<std::vector<int>> polygons;
     std::vector<model::FaceId> polygonFace;
     std::vector<EdgeCurve> edges;
@@ -39,6 +41,8 @@ struct SurfaceScene {
     std::vector<std::vector<model::Vec3>> controlPolygons;    // 3D only
     std::vector<model::Vec3> controlPoints;                   // interior ones, 3D only
     std::map<model::VertexId, model::Vec3> vertices;
+    // The pinned vertices among them (the solver never moves them; drawn red).
+    std::set<model::VertexId> pinned;
     // Development only: the second copy of every vertex on a cut-open seam (drawn, not picked)
     // and the outline of every piece that overlaps itself or another one (drawn in red).
     std::vector<model::Vec3> seamVertices;

@@ -1,5 +1,8 @@
 #include "scene_renderer.h"
 
+#include "poly_data_builders.h"
+#include "quality_colours.h"
+
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
@@ -28,56 +31,6 @@ namespace {
 
 // Orange: the selection, in both views.
 constexpr double kSelectionRgb[3] = {1.0, 0.45, 0.0};
-
-vtkSmartPointer<vtkPoints> makePoints(const std::vector<Vec3>& points) {
-    auto result = vtkSmartPointer<vtkPoints>::New();
-    result->SetDataTypeToDouble();
-    result->SetNumberOfPoints(static_cast<vtkIdType>(points.size()));
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        result->SetPoint(static_cast<vtkIdType>(i), points[i].x, points[i].y, points[i].z);
-    }
-    return result;
-}
-
-vtkSmartPointer<vtkPolyData> polylineData(const std::vector<std::vector<Vec3>>& lines) {
-    std::vector<Vec3> points;
-    auto cells = vtkSmartPointer<vtkCellArray>::New();
-    for (const auto& line : lines) {
-        if (line.size() < 2) {
-            continue;
-        }
-        cells->InsertNextCell(static_cast<vtkIdType>(line.size()));
-        for (const Vec3& p : line) {
-            cells->InsertCellPoint(static_cast<vtkIdType>(points.size()));
-            points.push_back(p);
-        }
-    }
-    auto data = vtkSmartPointer<vtkPolyData>::New();
-    data->SetPoints(makePoints(points));
-    data->SetLines(cells);
-    return data;
-}
-
-vtkSmartPointer<vtkPolyData> segmentData(const std::vector<std::pair<Vec3, Vec3>>& segments) {
-    std::vector<std::vector<Vec3>> lines;
-    lines.reserve(segments.size());
-    for (const auto& [a, b] : segments) {
-        lines.push_back({a, b});
-    }
-    return polylineData(lines);
-}
-
-vtkSmartPointer<vtkPolyData> pointData(const std::vector<Vec3>& points) {
-    auto cells = vtkSmartPointer<vtkCellArray>::New();
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const vtkIdType id = static_cast<vtkIdType>(i);
-        cells->InsertNextCell(1, &id);
-    }
-    auto data = vtkSmartPointer<vtkPolyData>::New();
-    data->SetPoints(makePoints(points));
-    data->SetVerts(cells);
-    return data;
-}
 
 double distanceToSegment(double px, double py, const Vec3& a, const Vec3& b, double* t) {
     const double ux = b.x - a.x;
@@ -173,6 +126,9 @@ SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
     pointStyle(*m_controlPoints, 0.1, 0.3, 0.95, 6.0);
     m_vertices = &addLayer();
     pointStyle(*m_vertices, 0.1, 0.1, 0.1, 9.0);
+    // Pinned vertices: red, as the paper draws fixed vertices.
+    m_pinned = &addLayer();
+    pointStyle(*m_pinned, 0.85, 0.05, 0.05, 13.0);
     m_target = &addLayer();
     pointStyle(*m_target, 0.1, 0.7, 0.2, 4.0);
     m_selectedEdges = &addLayer();
@@ -187,6 +143,9 @@ SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
 
     m_controlPolygons->actor->SetVisibility(false);
     m_controlPoints->actor->SetVisibility(false);
+    if (spatial) {
+        m_quality = std::make_unique<QualityColouring>(renderer);
+    }
 
     m_picker->SetTolerance(0.0005);
     m_picker->PickFromListOn();
@@ -272,7 +231,16 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
     std::vector<std::vector<Vec3>> controlPolygons;
     std::vector<Vec3> controlPoints;
     std::vector<Vec3> vertices;
+    std::vector<Vec3> pinned;
+    m_pinnedDrawn.clear();
     for (const SurfaceScene& scene : m_scenes) {
+        for (model::VertexId id : scene.pinned) {
+            auto it = scene.vertices.find(id);
+            if (it != scene.vertices.end()) {
+                pinned.push_back(it->second);
+                m_pinnedDrawn.insert(Pick{Pick::Kind::Vertex, scene.surface, id});
+            }
+        }
         for (const EdgeCurve& edge : scene.edges) {
             (edge.crease ? creases : (edge.spline ? splineEdges : rulingEdges))
                 .push_back(edge.points);
@@ -299,6 +267,7 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
     m_controlPolygons->assign(polylineData(controlPolygons), geometryOnly);
     m_controlPoints->assign(pointData(controlPoints), geometryOnly);
     m_vertices->assign(pointData(vertices), geometryOnly);
+    m_pinned->assign(pointData(pinned), false);
 
     double diagonal = 0.0;
     if (!points.empty()) {
@@ -316,6 +285,9 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
     }
     m_sceneSize = diagonal > 0.0 ? diagonal : 1.0;
 
+    if (m_quality) {
+        m_quality->update(m_scenes);
+    }
     rebuildHighlight();
 }
 
@@ -324,8 +296,19 @@ void SceneRenderer::setSelection(const std::set<Pick>& picks) {
     rebuildHighlight();
 }
 
+void SceneRenderer::setColourBy(ColourBy by) {
+    if (m_quality) {
+        m_quality->setMode(by);
+        m_quality->update(m_scenes);
+        rebuildHighlight();
+    }
+}
+
 void SceneRenderer::rebuildHighlight() {
     m_highlighted.clear();
+    const ColourBy by = m_quality ? m_quality->mode() : ColourBy::Patch;
+    const bool perCellQuality =
+        by != ColourBy::Patch && !isPerPoint(by) && m_quality->values().size() == m_cellFace.size();
 
     // Selected faces: their patch colour pulled towards the selection colour.
     auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
@@ -334,7 +317,8 @@ void SceneRenderer::rebuildHighlight() {
     colours->SetNumberOfTuples(static_cast<vtkIdType>(m_cellFace.size()));
     for (std::size_t c = 0; c < m_cellFace.size(); ++c) {
         const auto& [surface, face] = m_cellFace[c];
-        std::array<double, 3> rgb = patchRgb(face);
+        std::array<double, 3> rgb =
+            perCellQuality ? m_quality->colour(m_quality->values()[c]) : patchRgb(face);
         const Pick pick{Pick::Kind::Face, surface, face};
         if (m_selection.count(pick) != 0) {
             m_highlighted.insert(pick);
@@ -352,6 +336,15 @@ void SceneRenderer::rebuildHighlight() {
     }
     if (m_faces->data->GetNumberOfCells() == static_cast<vtkIdType>(m_cellFace.size())) {
         m_faces->data->GetCellData()->SetScalars(colours);
+        const bool perPoint = by != ColourBy::Patch && isPerPoint(by) &&
+                              static_cast<vtkIdType>(m_quality->values().size()) ==
+                                  m_faces->data->GetNumberOfPoints();
+        m_faces->data->GetPointData()->SetScalars(perPoint ? m_quality->pointColours() : nullptr);
+        if (perPoint) {
+            m_faces->mapper->SetScalarModeToUsePointData();
+        } else {
+            m_faces->mapper->SetScalarModeToUseCellData();
+        }
         m_faces->data->Modified();
     }
 
@@ -384,6 +377,29 @@ void SceneRenderer::setShowControlPolygons(bool show) {
 
 void SceneRenderer::setShowVertices(bool show) {
     m_vertices->actor->SetVisibility(show);
+}
+
+std::optional<Vec3> SceneRenderer::displayToPlane(double displayX, double displayY,
+                                                  const Vec3& planePoint,
+                                                  const Vec3& planeNormal) const {
+    // The ray through the display point, from the near to the far clipping plane.
+    Vec3 ends[2];
+    for (int k = 0; k < 2; ++k) {
+        m_renderer->SetDisplayPoint(displayX, displayY, k == 0 ? 0.0 : 1.0);
+        m_renderer->DisplayToWorld();
+        const double* w = m_renderer->GetWorldPoint();
+        if (w[3] == 0.0) {
+            return std::nullopt;
+        }
+        ends[k] = Vec3(w[0] / w[3], w[1] / w[3], w[2] / w[3]);
+    }
+    const Vec3 direction = ends[1] - ends[0];
+    const double denominator = dot(direction, planeNormal);
+    if (std::abs(denominator) < 1e-12 * direction.norm() * planeNormal.norm()) {
+        return std::nullopt;
+    }
+    const double t = dot(planePoint - ends[0], planeNormal) / denominator;
+    return ends[0] + direction * t;
 }
 
 void SceneRenderer::setTargetPoints(const std::vector<Vec3>& points) {

@@ -3,6 +3,7 @@
 // Internal to views/: includes VTK.
 
 #include "model/document/selection.h"
+#include "quality_colours.h"
 #include "scene_geometry.h"
 
 #include <vtkSmartPointer.h>
@@ -36,6 +37,13 @@ public:
     // The selected picks that are drawn highlighted (those that exist in the scenes).
     const std::set<document::Pick>& highlighted() const { return m_highlighted; }
 
+    // The pinned vertices drawn (red).
+    const std::set<document::Pick>& pinnedDrawn() const { return m_pinnedDrawn; }
+
+    // Patch colours, or a quality measure with its legend (3D view only).
+    void setColourBy(ColourBy by);
+    const QualityColouring* quality() const { return m_quality.get(); }
+
     void setShowControlPolygons(bool show);
     void setShowVertices(bool show);
     void setTargetPoints(const std::vector<model::Vec3>& points);
@@ -47,6 +55,11 @@ public:
     std::optional<document::Pick> pick(double displayX, double displayY, double radius) const;
     // The patch drawn at a display position, if any (nothing hides it).
     std::optional<document::Pick> faceAt(double displayX, double displayY) const;
+    // Where the ray through a display point meets a plane (scene coordinates); nullopt if the
+    // ray runs parallel to it.
+    std::optional<model::Vec3> displayToPlane(double displayX, double displayY,
+                                              const model::Vec3& planePoint,
+                                              const model::Vec3& planeNormal) const;
     // Scene point → display coordinates {x, y, depth}.
     model::Vec3 toDisplay(const model::Vec3& point) const;
     // Unit vector along which the camera looks.
@@ -85,15 +98,18 @@ private:
     Layer* m_controlPolygons = nullptr;
     Layer* m_controlPoints = nullptr;
     Layer* m_vertices = nullptr;
+    Layer* m_pinned = nullptr;
     Layer* m_target = nullptr;
     Layer* m_selectedEdges = nullptr;
     Layer* m_selectedVertices = nullptr;
     Layer* m_preview = nullptr;
 
+    std::unique_ptr<QualityColouring> m_quality; // 3D only
     std::vector<SurfaceScene> m_scenes;
     std::vector<std::pair<int, model::FaceId>> m_cellFace; // faces layer cell -> (surface, face)
     std::set<document::Pick> m_selection;
     std::set<document::Pick> m_highlighted;
+    std::set<document::Pick> m_pinnedDrawn;
     double m_sceneSize = 1.0;
 };
 

@@ -1,11 +1,8 @@
 #include "scene_view.h"
 
-#include "model/document/document.h"
 #include "model/model_error.h"
-#include "scene_renderer.h"
-#include "view_overlay.h"
+#include "scene_view_private.h"
 #include "vtk_interactor_styles.h"
-#include "vtk_opengl_widget.h"
 
 #include <vtkAxesActor.h>
 #include <vtkCallbackCommand.h>
@@ -18,9 +15,6 @@
 #include <vtkTextProperty.h>
 
 #include <QLocale>
-#include <QMouseEvent>
-#include <QPointer>
-#include <QRubberBand>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -35,10 +29,6 @@ using document::Pick;
 
 namespace {
 
-// Pointer travel (logical pixels) below which a press and release count as a click.
-constexpr int kClickSlop = 3;
-// Vertices are picked within this many logical pixels of the cursor.
-constexpr double kPickRadius = 9.0;
 // The scale bar is at most this long (logical pixels); the orientation triad this wide.
 constexpr double kMaxScaleBar = 120.0;
 constexpr double kTriadSize = 110.0;
@@ -61,14 +51,6 @@ QString lengthText(double millimetres) {
     }
     return SceneView::tr("%1 mm").arg(QLocale().toString(millimetres, 'g', 6));
 }
-
-// Where a patch's number is written: the centre of the patch's drawn polygon nearest the
-// mean of all its points, so that the number sits on the patch, not in a hole or off a curve.
-struct LabelAnchor {
-    int surface = 0;
-    model::FaceId face = model::kInvalidId;
-    model::Vec3 point;
-};
 
 std::vector<LabelAnchor> labelAnchors(const std::vector<SurfaceScene>& scenes) {
     std::vector<LabelAnchor> anchors;
@@ -101,44 +83,6 @@ std::vector<LabelAnchor> labelAnchors(const std::vector<SurfaceScene>& scenes) {
 }
 
 } // namespace
-
-struct SceneView::Private {
-    Kind kind = Kind::Spatial;
-    QPointer<document::Document> document;
-    QPointer<document::Selection> selection;
-    VtkOpenGLWidget* gl = nullptr;
-    vtkSmartPointer<vtkRenderer> renderer;
-    std::unique_ptr<SceneRenderer> scene;
-    quint64 builtRevision = std::numeric_limits<quint64>::max();
-    QString problem;
-    QString hover;
-
-    QPoint pressPos;
-    bool pressed = false;
-    QRubberBand* band = nullptr;
-    bool banding = false;
-
-    ViewOverlay* overlay = nullptr;
-    vtkSmartPointer<vtkRenderer> triad; // 3D view only
-    vtkSmartPointer<vtkCallbackCommand> startObserver;
-    vtkSmartPointer<vtkCallbackCommand> endObserver;
-    unsigned long startTag = 0;
-    unsigned long endTag = 0;
-    bool showLabels = false;
-    std::vector<LabelAnchor> anchors;
-    double barLength = 0.0;
-    int previewLines = 0;
-
-    double displayX(double widgetX) const { return widgetX * gl->effectiveDevicePixelRatio(); }
-    double displayY(double widgetY) const {
-        const double dpr = gl->effectiveDevicePixelRatio();
-        return deviceHeight() - 1.0 - widgetY * dpr;
-    }
-    double deviceHeight() const {
-        const int* size = gl->renderWindow()->GetSize();
-        return size[1] > 0 ? size[1] : std::lround(gl->height() * gl->effectiveDevicePixelRatio());
-    }
-};
 
 SceneView::SceneView(Kind kind, document::Document* document, document::Selection* selection,
                      QWidget* parent)
@@ -235,15 +179,6 @@ VtkOpenGLWidget* SceneView::glWidget() const {
     return d->gl;
 }
 
-std::optional<Pick> SceneView::pickAt(const QPoint& widgetPos) const {
-    if (!d->gl->rect().contains(widgetPos)) {
-        return std::nullopt;
-    }
-    const double dpr = d->gl->effectiveDevicePixelRatio();
-    return d->scene->pick(d->displayX(widgetPos.x()), d->displayY(widgetPos.y()),
-                          kPickRadius * dpr);
-}
-
 QPoint SceneView::projectToWidget(const model::Vec3& scenePoint) const {
     const model::Vec3 display = d->scene->toDisplay(scenePoint);
     const double dpr = d->gl->effectiveDevicePixelRatio();
@@ -271,6 +206,17 @@ QImage SceneView::grabImage() {
 
 std::set<Pick> SceneView::highlightedPicks() const {
     return d->scene->highlighted();
+}
+
+std::set<Pick> SceneView::pinnedPicks() const {
+    return d->scene->pinnedDrawn();
+}
+
+std::optional<model::Vec3> SceneView::widgetToPlane(const QPoint& widgetPos,
+                                                    const model::Vec3& planePoint,
+                                                    const model::Vec3& planeNormal) const {
+    return d->scene->displayToPlane(d->displayX(widgetPos.x()), d->displayY(widgetPos.y()),
+                                    planePoint, planeNormal);
 }
 
 QString SceneView::problem() const {
@@ -366,6 +312,24 @@ void SceneView::setPreviewLines(const std::vector<std::vector<model::Vec3>>& lin
     }
     d->previewLines = static_cast<int>(lines.size());
     d->scene->setPreviewLines(lines);
+    rerender();
+}
+
+ColourBy SceneView::colourBy() const {
+    return d->scene->quality() ? d->scene->quality()->mode() : ColourBy::Patch;
+}
+
+QString SceneView::legendTitle() const {
+    return d->scene->quality() ? d->scene->quality()->title() : QString();
+}
+
+std::pair<double, double> SceneView::legendRange() const {
+    const QualityColouring* quality = d->scene->quality();
+    return quality ? std::make_pair(quality->low(), quality->high()) : std::make_pair(0.0, 0.0);
+}
+
+void SceneView::setColourBy(ColourBy by) {
+    d->scene->setColourBy(by);
     rerender();
 }
 
@@ -490,169 +454,6 @@ void SceneView::rebuild(bool geometryOnly) {
     d->scene->setScenes(std::move(scenes), geometryOnly);
     d->scene->setSelection(d->selection ? d->selection->picks() : std::set<Pick>{});
     rerender();
-}
-
-QString SceneView::describe(const Pick& pick) const {
-    if (d->document == nullptr) {
-        return {};
-    }
-    const auto& surfaces = d->document->project().surfaces;
-    if (pick.surface < 0 || pick.surface >= static_cast<int>(surfaces.size())) {
-        return {};
-    }
-    const model::CompositeSurface& surface = surfaces[static_cast<std::size_t>(pick.surface)];
-    QString text;
-    switch (pick.kind) {
-    case Pick::Kind::Vertex:
-        text = tr("vertex %1").arg(pick.id);
-        break;
-    case Pick::Kind::Edge: {
-        if (!surface.hasEdge(pick.id)) {
-            return {};
-        }
-        const bool spline = surface.edge(pick.id).isSpline();
-        const std::size_t faces = surface.facesOfEdge(pick.id).size();
-        if (!spline) {
-            text = tr("edge %1 (R)").arg(pick.id);
-        } else if (faces == 2) {
-            text = tr("edge %1 (S, crease)").arg(pick.id);
-        } else {
-            text = tr("edge %1 (S, boundary)").arg(pick.id);
-        }
-        break;
-    }
-    case Pick::Kind::Face: {
-        if (!surface.hasFace(pick.id)) {
-            return {};
-        }
-        QString type;
-        switch (surface.faceType(pick.id)) {
-        case model::FaceType::StripSRSR:
-            type = tr("strip (SRSR)");
-            break;
-        case model::FaceType::StripSRS:
-            type = tr("pointed strip (SRS)");
-            break;
-        case model::FaceType::ConeSRR:
-            type = tr("cone (SRR)");
-            break;
-        case model::FaceType::Planar:
-            type = tr("planar patch");
-            break;
-        case model::FaceType::Invalid:
-            type = tr("invalid patch");
-            break;
-        }
-        text = tr("patch %1 (%2)").arg(pick.id).arg(type);
-        break;
-    }
-    }
-    if (surfaces.size() > 1) {
-        text = tr("surface %1: %2").arg(pick.surface + 1).arg(text);
-    }
-    return text;
-}
-
-void SceneView::selectInRectangle(const QRect& rect, bool add) {
-    if (d->selection == nullptr) {
-        return;
-    }
-    std::set<Pick> picks = add ? d->selection->picks() : std::set<Pick>{};
-    for (const SurfaceScene& scene : d->scene->scenes()) {
-        for (const auto& [id, position] : scene.vertices) {
-            if (rect.contains(projectToWidget(position))) {
-                picks.insert(Pick{Pick::Kind::Vertex, scene.surface, id});
-            }
-        }
-    }
-    d->selection->set(std::move(picks));
-}
-
-bool SceneView::eventFilter(QObject* watched, QEvent* event) {
-    if (watched != d->gl) {
-        return QWidget::eventFilter(watched, event);
-    }
-    switch (event->type()) {
-    case QEvent::Resize:
-        d->overlay->setGeometry(d->gl->rect());
-        break;
-    case QEvent::MouseButtonPress: {
-        auto* me = static_cast<QMouseEvent*>(event);
-        if (me->button() != Qt::LeftButton) {
-            break;
-        }
-        d->pressPos = me->position().toPoint();
-        d->pressed = true;
-        if (me->modifiers() & Qt::ControlModifier) {
-            // Rectangle selection instead of the camera's spin.
-            d->banding = true;
-            d->band->setGeometry(QRect(d->pressPos, QSize()));
-            d->band->show();
-            return true;
-        }
-        break;
-    }
-    case QEvent::MouseMove: {
-        auto* me = static_cast<QMouseEvent*>(event);
-        if (d->banding) {
-            d->band->setGeometry(QRect(d->pressPos, me->position().toPoint()).normalized());
-            return true;
-        }
-        if (me->buttons() == Qt::NoButton) {
-            const std::optional<Pick> pick = pickAt(me->position().toPoint());
-            const QString text = pick ? describe(*pick) : QString();
-            if (text != d->hover) {
-                d->hover = text;
-                emit hoverChanged(text);
-            }
-        }
-        break;
-    }
-    case QEvent::MouseButtonRelease: {
-        auto* me = static_cast<QMouseEvent*>(event);
-        if (me->button() != Qt::LeftButton || !d->pressed) {
-            break;
-        }
-        d->pressed = false;
-        const QPoint pos = me->position().toPoint();
-        const bool click = (pos - d->pressPos).manhattanLength() <= kClickSlop;
-        const bool shift = me->modifiers() & Qt::ShiftModifier;
-        const bool wasBanding = d->banding;
-        if (d->banding) {
-            d->banding = false;
-            d->band->hide();
-            if (!click) {
-                selectInRectangle(QRect(d->pressPos, pos).normalized(), shift);
-                return true;
-            }
-        }
-        if (click && d->selection != nullptr) {
-            const std::optional<Pick> pick = pickAt(pos);
-            if (shift) {
-                if (pick) {
-                    d->selection->toggle(*pick);
-                }
-            } else if (pick) {
-                d->selection->set({*pick});
-            } else {
-                d->selection->clear();
-            }
-        }
-        if (wasBanding) {
-            return true; // the press never reached VTK either
-        }
-        break;
-    }
-    case QEvent::Leave:
-        if (!d->hover.isEmpty()) {
-            d->hover.clear();
-            emit hoverChanged(QString());
-        }
-        break;
-    default:
-        break;
-    }
-    return QWidget::eventFilter(watched, event);
 }
 
 } // namespace devsurf::views

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "colour_by.h"
 #include "model/document/selection.h"
 #include "model/ids.h"
 #include "model/vec3.h"
@@ -57,6 +58,12 @@ public:
     QImage grabImage();
     // The selected entities this view currently draws highlighted.
     std::set<document::Pick> highlightedPicks() const;
+    // The pinned vertices this view currently draws (red).
+    std::set<document::Pick> pinnedPicks() const;
+    // Where the line of sight through a widget position meets the plane through planePoint
+    // with the given normal (scene coordinates); nullopt if it runs parallel to the plane.
+    std::optional<model::Vec3> widgetToPlane(const QPoint& widgetPos, const model::Vec3& planePoint,
+                                             const model::Vec3& planeNormal) const;
     // A one-sentence problem with the current project that this view could not draw (e.g. an
     // invalid surface), or empty.
     QString problem() const;
@@ -77,6 +84,12 @@ public:
     bool showPatchLabels() const;
     // The patch numbers drawn (the visible ones), in the order of the patches.
     QStringList patchLabelTexts() const;
+    // The 3D view colours its surfaces by patch (the default) or by a quality measure on a
+    // logarithmic scale with a legend; the development view always shows patches.
+    ColourBy colourBy() const;
+    // The legend's title (empty when colouring by patch) and its range.
+    QString legendTitle() const;
+    std::pair<double, double> legendRange() const;
     // The number of preview lines shown.
     int previewLineCount() const;
 
@@ -85,6 +98,7 @@ public slots:
     // The starting camera (3D: from the front right and above), fitted to the design.
     void resetView();
     void setShowPatchLabels(bool show);
+    void setColourBy(devsurf::views::ColourBy by);
     // Shows the lines an edit would add before it is made (3D scene coordinates; the
     // development view ignores them). An empty list removes the preview.
     void setPreviewLines(const std::vector<std::vector<model::Vec3>>& lines);
@@ -93,6 +107,9 @@ signals:
     // What the mouse is over, e.g. "vertex 12", "edge 7 (S, crease)", "patch 3 (strip (SRSR))";
     // empty over nothing.
     void hoverChanged(const QString& text);
+    // A right click (press and release without moving) at a widget position of glWidget(),
+    // after the entity under it was selected (unless it already was).
+    void contextMenuRequested(const QPoint& widgetPos);
 
 protected:
     enum class Kind { Spatial, Development };

@@ -3,17 +3,23 @@
 #include "autosaver.h"
 #include "camera_actions.h"
 #include "help_dialogs.h"
+#include "model/document/commands/crease_condition_command.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "panels/patch_panel.h"
 #include "panels/properties_panel.h"
+#include "panels/solver_panel.h"
+#include "reactions/crease_reactions.h"
 #include "reactions/edit_reactions.h"
 #include "reactions/file_reactions.h"
 #include "reactions/pattern_reactions.h"
+#include "reactions/pin_reactions.h"
 #include "reactions/tool_reactions.h"
 #include "reactions/view_reactions.h"
+#include "solve_controller.h"
 #include "views/development_view.h"
 #include "views/surface_view.h"
+#include "views/vtk_opengl_widget.h"
 #include "workspace.h"
 
 #include <QAction>
@@ -22,6 +28,7 @@
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QLabel>
+#include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -113,6 +120,15 @@ void MainWindow::createDocks() {
     properties->setObjectName(QStringLiteral("PropertiesDock"));
     properties->setWidget(m_propertiesPanel);
     addDockWidget(Qt::LeftDockWidgetArea, properties);
+
+    m_solveController = new SolveController(m_workspace, this);
+    m_solverPanel = new SolverPanel(this);
+    auto* solverDock = new QDockWidget(tr("Solver"), this);
+    solverDock->setObjectName(QStringLiteral("SolverDock"));
+    solverDock->setWidget(m_solverPanel);
+    addDockWidget(Qt::LeftDockWidgetArea, solverDock);
+    connect(m_solveController, &SolveController::reportReady, m_solverPanel,
+            &SolverPanel::showReport);
 }
 
 void MainWindow::createMenus() {
@@ -182,6 +198,7 @@ void MainWindow::createMenus() {
     QAction* vertices = addAction(view, QStringLiteral("actionVertices"), tr("&Vertices"),
                                   QKeySequence(tr("Ctrl+Shift+V")));
     new ToggleDisplayReaction(polygons, vertices, m_surfaceView);
+    createColourActions(view);
     QAction* fit =
         addAction(view, QStringLiteral("actionFitAll"), tr("&Fit All"), QKeySequence(tr("F")));
     connect(fit, &QAction::triggered, m_surfaceView, &views::SurfaceView::fitAll);
@@ -208,10 +225,46 @@ void MainWindow::createMenus() {
     QAction* refine = addAction(tools, QStringLiteral("actionRefine"), tr("Re&fine Curves"),
                                 QKeySequence(tr("Ctrl+Shift+R")));
     new RefineCurvesReaction(refine, m_workspace);
+    QMenu* creaseMenu = tools->addMenu(tr("Crease &Condition"));
+    creaseMenu->setToolTipsVisible(true);
+    const std::pair<const char*, model::CreaseCondition> creaseConditions[] = {
+        {"actionCurvedFold", model::CreaseCondition::CurvedFold},
+        {"actionGeodesic", model::CreaseCondition::Geodesic},
+        {"actionNoCondition", model::CreaseCondition::None}};
+    for (const auto& [name, condition] : creaseConditions) {
+        QAction* action =
+            creaseMenu->addAction(document::CreaseConditionCommand::conditionText(condition));
+        action->setObjectName(QString::fromLatin1(name));
+        new CreaseConditionReaction(action, m_workspace, condition);
+    }
     tools->addSeparator();
     QAction* move = addAction(tools, QStringLiteral("actionMoveRotate"),
                               tr("&Move or Rotate Vertices…"), QKeySequence(tr("Ctrl+M")));
     new MoveVerticesReaction(move, m_workspace);
+    tools->addSeparator();
+    QAction* pin = addAction(tools, QStringLiteral("actionPinVertices"), tr("&Pin Vertices"),
+                             QKeySequence(tr("Ctrl+K")));
+    new PinVerticesReaction(pin, m_workspace, true);
+    QAction* unpin = addAction(tools, QStringLiteral("actionUnpinVertices"), tr("U&npin Vertices"),
+                               QKeySequence(tr("Ctrl+Shift+K")));
+    new PinVerticesReaction(unpin, m_workspace, false);
+    tools->addSeparator();
+    const QList<QAction*> solverActions = createSolverActions(tools, selectNone);
+    // A right click in either view offers what applies to the entity under the cursor.
+    for (views::SceneView* sceneView : {static_cast<views::SceneView*>(m_surfaceView),
+                                        static_cast<views::SceneView*>(m_developmentView)}) {
+        connect(sceneView, &views::SceneView::contextMenuRequested, this,
+                [sceneView, pin, unpin, move](const QPoint& pos) {
+                    QMenu menu(sceneView);
+                    menu.setObjectName(QStringLiteral("viewContextMenu"));
+                    menu.setToolTipsVisible(true);
+                    menu.addAction(pin);
+                    menu.addAction(unpin);
+                    menu.addSeparator();
+                    menu.addAction(move);
+                    menu.exec(sceneView->glWidget()->mapToGlobal(pos));
+                });
+    }
 
     // Help
     QMenu* help = menuBar()->addMenu(tr("&Help"));
@@ -242,18 +295,12 @@ void MainWindow::createMenus() {
         view->addAction(dock->toggleViewAction());
     }
 
-    const std::pair<QAction*, const char*> icons[] = {{newAction, "new"},
-                                                      {open, "open"},
-                                                      {save, "save"},
-                                                      {undo, "undo"},
-                                                      {redo, "redo"},
-                                                      {relabel, "relabel"},
-                                                      {subdivide, "subdivide"},
-                                                      {split, "split"},
-                                                      {refine, "refine"},
-                                                      {move, "move"},
-                                                      {polygons, "control-polygon"},
-                                                      {fit, "fit-all"}};
+    const std::pair<QAction*, const char*> icons[] = {
+        {newAction, "new"},       {open, "open"},   {save, "save"},
+        {undo, "undo"},           {redo, "redo"},   {relabel, "relabel"},
+        {subdivide, "subdivide"}, {split, "split"}, {refine, "refine"},
+        {move, "move"},           {pin, "pin"},     {polygons, "control-polygon"},
+        {fit, "fit-all"}};
     for (const auto& [action, icon] : icons) {
         action->setIcon(actionIcon(QString::fromLatin1(icon)));
     }
@@ -264,9 +311,11 @@ void MainWindow::createMenus() {
     toolbar->addAction(undo);
     toolbar->addAction(redo);
     toolbar->addSeparator();
-    for (QAction* a : {relabel, subdivide, split, refine, move}) {
+    for (QAction* a : {relabel, subdivide, split, refine, move, pin}) {
         toolbar->addAction(a);
     }
+    toolbar->addSeparator();
+    toolbar->addActions(solverActions);
     toolbar->addSeparator();
     toolbar->addAction(polygons);
     toolbar->addAction(camera->patchLabelsAction());

@@ -16,6 +16,9 @@ namespace devsurf::app {
 class Workspace;
 class PatchPanel;
 class PropertiesPanel;
+class SolveController;
+class SolverPanel;
+class DragTool;
 
 // The main window builds menus, toolbar, docks and the status bar; what each action does lives
 // in its reaction (reactions/).
@@ -30,6 +33,9 @@ public:
     views::DevelopmentView* developmentView() const { return m_developmentView; }
     PatchPanel* patchPanel() const { return m_patchPanel; }
     PropertiesPanel* propertiesPanel() const { return m_propertiesPanel; }
+    SolverPanel* solverPanel() const { return m_solverPanel; }
+    SolveController* solveController() const { return m_solveController; }
+    DragTool* dragTool() const { return m_dragTool; }
     // The action with the given object name (tests and the toolbar find actions by name).
     QAction* action(const QString& name) const;
 
@@ -41,6 +47,11 @@ protected:
 private:
     void createMenus();
     void createDocks();
+    // Tools ▸ Solve, the Drag tool and the solve progress in the status bar
+    // (main_window_solver.cpp). Returns the actions for the toolbar.
+    QList<QAction*> createSolverActions(QMenu* tools, QAction* selectNone);
+    // View ▸ Colour By: patch, developability, flatness, angle defect.
+    void createColourActions(QMenu* view);
     void updateTitle();
     void updateCounts();
     // View ▸ Reset Layout: docks, toolbar and both views as at the first start.
@@ -54,6 +65,9 @@ private:
     views::DevelopmentView* m_developmentView = nullptr;
     PatchPanel* m_patchPanel = nullptr;
     PropertiesPanel* m_propertiesPanel = nullptr;
+    SolverPanel* m_solverPanel = nullptr;
+    SolveController* m_solveController = nullptr;
+    DragTool* m_dragTool = nullptr;
     QLabel* m_countsLabel = nullptr;
     QLabel* m_hoverLabel = nullptr;
     QByteArray m_defaultLayout;

@@ -1,0 +1,315 @@
+#include "drag_tool.h"
+
+#include "model/document/commands/apply_surface_command.h"
+#include "model/document/document.h"
+#include "model/document/selection.h"
+#include "solve_controller.h"
+#include "solver/worker/solver_worker.h"
+#include "views/surface_view.h"
+#include "views/vtk_opengl_widget.h"
+#include "workspace.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QUndoStack>
+
+#include <algorithm>
+
+namespace devsurf::app {
+
+using document::Pick;
+
+namespace {
+
+// Pointer travel (logical pixels) below which a press and release on a vertex is a click.
+constexpr int kClickSlop = 3;
+
+// Drags get session keys of their own, so that no drag continues another one's solver state.
+quint64 nextSessionKey() {
+    static quint64 key = 0x44524147'00000000ULL; // never 0 (0 is Solve)
+    return ++key;
+}
+
+} // namespace
+
+DragTool::DragTool(QAction* action, Workspace* workspace, views::SurfaceView* view,
+                   SolveController* solver)
+    : QObject(action), m_action(action), m_workspace(workspace), m_view(view), m_solver(solver) {
+    m_action->setCheckable(true);
+    connect(solver->worker(), &solver::SolverWorker::finished, this, &DragTool::onResult);
+    // While the tool is on, an application event filter sees the view's mouse events before
+    // the view does, and the axis keys wherever the keyboard focus is.
+    connect(m_action, &QAction::toggled, this, [this](bool on) {
+        if (on) {
+            qApp->installEventFilter(this);
+        } else {
+            if (m_state == State::Dragging) {
+                abort(tr("Drag cancelled; the design is as it was."));
+            }
+            qApp->removeEventFilter(this);
+            m_axis = Axis::Free;
+        }
+    });
+    connect(workspace->document(), &document::Document::projectReset, this, [this] {
+        if (m_state != State::Idle) {
+            m_solver->worker()->cancel();
+            m_state = State::Idle;
+            emit dragFinished(false);
+        }
+    });
+}
+
+DragTool::~DragTool() {
+    qApp->removeEventFilter(this);
+}
+
+QString DragTool::undoText() const {
+    return tr("Drag %n vertices", nullptr, static_cast<int>(m_vertices.size()));
+}
+
+bool DragTool::handleKey(QEvent* event) {
+    auto* key = static_cast<QKeyEvent*>(event);
+    if (event->type() == QEvent::ShortcutOverride) {
+        // Esc during a drag belongs to the drag, not to Select None.
+        if (m_state == State::Dragging && key->key() == Qt::Key_Escape) {
+            event->accept();
+            return true;
+        }
+        return false;
+    }
+    if (key->isAutoRepeat()) {
+        return m_state == State::Dragging;
+    }
+    Axis axis = Axis::Free;
+    switch (key->key()) {
+    case Qt::Key_X:
+        axis = Axis::X;
+        break;
+    case Qt::Key_Y:
+        axis = Axis::Y;
+        break;
+    case Qt::Key_Z:
+        axis = Axis::Z;
+        break;
+    case Qt::Key_Escape:
+        if (event->type() == QEvent::KeyPress && m_state == State::Dragging) {
+            abort(tr("Drag cancelled; the design is as it was."));
+            return true;
+        }
+        return false;
+    default:
+        return false;
+    }
+    if (event->type() == QEvent::KeyPress) {
+        m_axis = axis;
+    } else if (m_axis == axis) {
+        m_axis = Axis::Free;
+    }
+    return m_state == State::Dragging;
+}
+
+bool DragTool::eventFilter(QObject* watched, QEvent* event) {
+    const QEvent::Type type = event->type();
+    if (type == QEvent::KeyPress || type == QEvent::KeyRelease ||
+        type == QEvent::ShortcutOverride) {
+        return m_action->isChecked() && handleKey(event);
+    }
+    if (watched != m_view->glWidget() || !m_action->isChecked()) {
+        return false;
+    }
+    switch (type) {
+    case QEvent::MouseButtonPress: {
+        auto* me = static_cast<QMouseEvent*>(event);
+        if (me->button() == Qt::LeftButton && m_state == State::Idle &&
+            !(me->modifiers() & Qt::ControlModifier)) {
+            return press(me->position().toPoint());
+        }
+        return m_state == State::Dragging;
+    }
+    case QEvent::MouseMove:
+        if (m_state == State::Dragging) {
+            move(static_cast<QMouseEvent*>(event)->position().toPoint());
+            return true;
+        }
+        return false;
+    case QEvent::MouseButtonRelease: {
+        auto* me = static_cast<QMouseEvent*>(event);
+        if (m_state == State::Dragging && me->button() == Qt::LeftButton) {
+            release(me->position().toPoint(), me->modifiers());
+            return true;
+        }
+        return false;
+    }
+    default:
+        return false;
+    }
+}
+
+bool DragTool::press(const QPoint& pos) {
+    const std::optional<Pick> pick = m_view->pickAt(pos);
+    document::Document* doc = m_workspace->document();
+    if (!pick || pick->kind != Pick::Kind::Vertex || pick->surface < 0 ||
+        pick->surface >= doc->surfaceCount()) {
+        return false; // the camera turns as usual
+    }
+    const model::CompositeSurface& surface = doc->surface(pick->surface);
+    if (surface.isPinned(pick->id)) {
+        emit statusMessage(
+            tr("Vertex %1 is pinned and cannot be dragged; unpin it first.").arg(pick->id));
+        return true;
+    }
+    // The pressed vertex with the other selected vertices of its surface, if it is selected.
+    document::Selection* selection = m_workspace->selection();
+    m_vertices.clear();
+    if (selection->contains(*pick)) {
+        for (const Pick& p : selection->picks()) {
+            if (p.kind == Pick::Kind::Vertex && p.surface == pick->surface &&
+                surface.hasVertex(p.id) && !surface.isPinned(p.id)) {
+                m_vertices.push_back(p.id);
+            }
+        }
+    } else {
+        selection->set({*pick});
+        m_vertices.push_back(pick->id);
+    }
+    if (m_solver->isSolving()) {
+        m_solver->cancel(tr("a drag started"));
+    }
+    m_surface = pick->surface;
+    m_start.clear();
+    for (model::VertexId v : m_vertices) {
+        m_start.push_back(surface.position(v));
+    }
+    m_anchor = surface.position(pick->id);
+    m_normal = m_view->viewDirection();
+    m_delta = model::Vec3();
+    m_pressPos = pos;
+    m_moved = false;
+    m_pressSurfaces = doc->project().surfaces;
+    m_sessionKey = nextSessionKey();
+    m_mergeKey = static_cast<int>(m_sessionKey & 0x3fffffff);
+    m_pressRevision = doc->revision();
+    m_ownRevision = m_pressRevision;
+    m_stackCountAtPress = doc->undoStack()->count();
+    m_applied = false;
+    m_state = State::Dragging;
+    return true;
+}
+
+void DragTool::move(const QPoint& pos) {
+    if ((pos - m_pressPos).manhattanLength() <= kClickSlop && !m_moved) {
+        return;
+    }
+    const std::optional<model::Vec3> hit = m_view->widgetToPlane(pos, m_anchor, m_normal);
+    if (!hit) {
+        return;
+    }
+    model::Vec3 delta = *hit - m_anchor;
+    if (m_axis != Axis::Free) {
+        model::Vec3 axis;
+        axis[m_axis == Axis::X ? 0 : (m_axis == Axis::Y ? 1 : 2)] = 1.0;
+        delta = axis * dot(delta, axis);
+    }
+    m_delta = delta;
+    m_moved = true;
+    submit(1);
+}
+
+void DragTool::submit(int iterations) {
+    solver::SolveRequest request;
+    request.revision = m_pressRevision;
+    request.surfaces = m_pressSurfaces;
+    std::vector<solver::VertexHandle>& handles = request.pulled[m_surface];
+    for (std::size_t i = 0; i < m_vertices.size(); ++i) {
+        handles.push_back({m_vertices[i], false, m_start[i] + m_delta});
+    }
+    request.iterations = iterations;
+    request.sessionKey = m_sessionKey;
+    m_solver->worker()->submit(std::move(request));
+}
+
+void DragTool::release(const QPoint& pos, Qt::KeyboardModifiers modifiers) {
+    if (!m_moved) {
+        // A click on a vertex selects as it does without the tool.
+        m_state = State::Idle;
+        const std::optional<Pick> pick = m_view->pickAt(pos);
+        if (pick && (modifiers & Qt::ShiftModifier)) {
+            m_workspace->selection()->toggle(*pick);
+        }
+        emit dragFinished(false);
+        return;
+    }
+    // The move being solved finishes and is applied; the final iterations continue from the
+    // session's state with the handles at the release position.
+    m_state = State::Finishing;
+    submit(kFinalIterations);
+}
+
+void DragTool::abort(const QString& sentence) {
+    m_solver->worker()->cancel();
+    QUndoStack* stack = m_workspace->document()->undoStack();
+    if (m_applied && stack->count() == m_stackCountAtPress + 1 &&
+        stack->index() == stack->count()) {
+        // Undo the drag's command, then drop it from the history: no undo step remains.
+        stack->undo();
+        const_cast<QUndoCommand*>(stack->command(stack->index()))->setObsolete(true);
+        stack->redo();
+    }
+    m_applied = false;
+    end(false, sentence);
+}
+
+void DragTool::end(bool applied, const QString& sentence) {
+    m_state = State::Idle;
+    if (!sentence.isEmpty()) {
+        emit statusMessage(sentence);
+    }
+    emit dragFinished(applied);
+}
+
+void DragTool::onResult(const solver::SolveResult& result) {
+    if (m_state == State::Idle || result.sessionKey != m_sessionKey || result.cancelled) {
+        return;
+    }
+    document::Document* doc = m_workspace->document();
+    if (!result.ok) {
+        if (m_state == State::Finishing) {
+            emit reportReady(m_solver->reportOf(result, undoText()));
+        }
+        abort(tr("Drag stopped: %1 The design is as it was.").arg(result.error));
+        return;
+    }
+    if (doc->revision() != m_ownRevision) {
+        m_solver->worker()->cancel();
+        end(m_applied, tr("Drag stopped: the design changed during the drag."));
+        return;
+    }
+    if (static_cast<std::size_t>(m_surface) >= result.surfaces.size() ||
+        static_cast<std::size_t>(m_surface) >= result.summaries.size()) {
+        return;
+    }
+    document::CommandOrError edit = document::ApplySurfaceCommand::create(
+        *doc, m_surface, result.surfaces[static_cast<std::size_t>(m_surface)], undoText(),
+        document::Change::Geometry, m_mergeKey);
+    if (edit.isRefused()) {
+        abort(tr("Drag stopped: %1 The design is as it was.").arg(edit.error()));
+        return;
+    }
+    doc->undoStack()->push(edit.takeCommand().release());
+    m_applied = true;
+    m_ownRevision = doc->revision();
+    // The final request is the one that ran more than a move's single iteration or stopped
+    // for another reason than its iteration limit (converged, failed).
+    const solver::Summary& summary = result.summaries.at(static_cast<std::size_t>(m_surface));
+    const bool final = summary.iterationsCompleted >= kFinalIterations ||
+                       summary.status != solver::Status::IterationLimit;
+    if (m_state == State::Finishing && final) {
+        const SolveReport report = m_solver->reportOf(result, undoText());
+        emit reportReady(report);
+        end(true, tr("%1: %2").arg(undoText(), report.status));
+    }
+}
+
+} // namespace devsurf::app

@@ -1,0 +1,85 @@
+#include "solver_panel.h"
+
+#include <QHeaderView>
+#include <QLabel>
+#include <QLocale>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace devsurf::app {
+
+SolverPanel::SolverPanel(QWidget* parent)
+    : QWidget(parent), m_status(new QLabel(this)), m_table(new QTableWidget(this)) {
+    setObjectName(QStringLiteral("SolverPanel"));
+    auto* layout = new QVBoxLayout(this);
+    m_status->setWordWrap(true);
+    m_status->setText(tr("No solve yet. Tools ▸ Solve (Ctrl+Return) makes the design "
+                         "developable; the Drag tool keeps it developable while you pull "
+                         "vertices."));
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_table->setColumnCount(4);
+    // Short headers: the dock is narrow. Their tooltips say what the columns are.
+    const QStringList headers{tr("Surf."), tr("Iter."), tr("Residual"), tr("ms")};
+    const QStringList tips{tr("Surface"), tr("Iteration"),
+                           tr("Largest constraint residual after the iteration"),
+                           tr("Time of the iteration in milliseconds")};
+    m_table->setHorizontalHeaderLabels(headers);
+    for (int c = 0; c < headers.size(); ++c) {
+        m_table->horizontalHeaderItem(c)->setToolTip(tips[c]);
+    }
+    m_table->verticalHeader()->hide();
+    m_table->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    layout->addWidget(m_status);
+    layout->addWidget(m_table, 1);
+}
+
+void SolverPanel::showReport(const SolveReport& report) {
+    int iterations = 0;
+    for (const solver::Summary& summary : report.summaries) {
+        iterations += static_cast<int>(summary.iterations.size());
+    }
+    const QLocale locale;
+    m_status->setText(tr("<b>%1</b>: %2<br>%n iteration(s) in %3 ms.", nullptr, iterations)
+                          .arg(report.title.toHtmlEscaped(), report.status.toHtmlEscaped(),
+                               locale.toString(report.elapsedMs, 'f', 1)));
+    m_table->setRowCount(iterations);
+    int row = 0;
+    for (std::size_t s = 0; s < report.summaries.size(); ++s) {
+        for (const solver::IterationStats& stats : report.summaries[s].iterations) {
+            const double ms = stats.assemblyMs + stats.factorizationMs + stats.solveMs;
+            const QStringList cells{QString::number(s + 1), QString::number(stats.iteration + 1),
+                                    QString::number(stats.maxConstraintResidual, 'e', 2),
+                                    locale.toString(ms, 'f', 2)};
+            for (int c = 0; c < cells.size(); ++c) {
+                auto* item = new QTableWidgetItem(cells[c]);
+                item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+                m_table->setItem(row, c, item);
+            }
+            ++row;
+        }
+    }
+    m_worst = report.worstFaces.join(QStringLiteral(", "));
+    if (!m_worst.isEmpty()) {
+        m_status->setText(m_status->text() +
+                          tr("<br>Tolerance not reached. Least developable patches "
+                             "(normalised residual): %1")
+                              .arg(m_worst.toHtmlEscaped()));
+    }
+}
+
+QString SolverPanel::statusText() const {
+    return m_status->text();
+}
+
+int SolverPanel::iterationRows() const {
+    return m_table->rowCount();
+}
+
+QString SolverPanel::worstFacesText() const {
+    return m_worst;
+}
+
+} // namespace devsurf::app

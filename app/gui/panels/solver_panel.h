@@ -1,0 +1,43 @@
+#pragma once
+
+#include "solver/core/summary.h"
+
+#include <QStringList>
+#include <QWidget>
+
+#include <vector>
+
+class QLabel;
+class QTableWidget;
+
+namespace devsurf::app {
+
+// What the Solver panel shows about the last solve or drag.
+struct SolveReport {
+    QString title;  // what ran: "Solve", "Drag 3 vertices"
+    QString status; // one sentence: converged, iteration limit, cancelled, failed (and why)
+    std::vector<solver::Summary> summaries; // per surface (empty summaries are skipped)
+    QStringList worstFaces;                 // filled when the tolerance was not reached
+    double elapsedMs = 0.0;
+};
+
+// The dock "Solver": iterations, constraint residual and time of every iteration of the last
+// solve, its status sentence, and the worst patches when the tolerance was not reached.
+class SolverPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit SolverPanel(QWidget* parent = nullptr);
+
+    void showReport(const SolveReport& report);
+    QString statusText() const;
+    // Rows of the iteration table (one per iteration of every solved surface).
+    int iterationRows() const;
+    QString worstFacesText() const;
+
+private:
+    QLabel* m_status;
+    QTableWidget* m_table;
+    QString m_worst;
+};
+
+} // namespace devsurf::app

@@ -1,0 +1,180 @@
+#include "solve_controller.h"
+
+#include "face_quality.h"
+#include "model/document/commands/apply_surface_command.h"
+#include "model/document/document.h"
+#include "solver/worker/solver_worker.h"
+#include "workspace.h"
+
+#include <QSettings>
+#include <QUndoStack>
+
+#include <algorithm>
+
+namespace devsurf::app {
+
+SolveController::SolveController(Workspace* workspace, QObject* parent)
+    : QObject(parent), m_workspace(workspace), m_worker(new solver::SolverWorker(this)) {
+    connect(m_worker, &solver::SolverWorker::finished, this, &SolveController::onResult);
+    connect(m_worker, &solver::SolverWorker::progress, this,
+            [this](quint64 revision, int iteration, int iterations, double residual) {
+                if (m_solving && revision == m_revision) {
+                    emit progress(iteration, iterations, residual);
+                }
+            });
+    connect(workspace->document(), &document::Document::changed, this,
+            &SolveController::onDocumentChanged);
+}
+
+SolveController::~SolveController() = default;
+
+int SolveController::iterationsSetting() {
+    return std::clamp(QSettings().value(QStringLiteral("solver/iterations"), 10).toInt(), 1, 1000);
+}
+
+void SolveController::solve() {
+    const document::Document* doc = m_workspace->document();
+    if (doc->surfaceCount() == 0) {
+        emit finished(tr("There is nothing to solve."));
+        return;
+    }
+    solver::SolveRequest request;
+    request.revision = doc->revision();
+    request.surfaces = doc->project().surfaces;
+    request.iterations = iterationsSetting();
+    request.sessionKey = 0;
+    m_revision = request.revision;
+    m_worker->submit(std::move(request));
+    if (!m_solving) {
+        m_solving = true;
+        emit busyChanged(true);
+    }
+}
+
+void SolveController::cancel(const QString& reason) {
+    if (!m_solving) {
+        return;
+    }
+    m_worker->cancel();
+    stop(reason.isEmpty() ? tr("Solve cancelled; the design is unchanged.")
+                          : tr("Solve cancelled: %1; the design is unchanged.").arg(reason));
+}
+
+void SolveController::stop(const QString& sentence) {
+    m_solving = false;
+    emit busyChanged(false);
+    emit finished(sentence);
+}
+
+void SolveController::onDocumentChanged() {
+    if (m_solving && !m_applying && m_workspace->document()->revision() != m_revision) {
+        cancel(tr("the design changed"));
+    }
+}
+
+SolveReport SolveController::reportOf(const solver::SolveResult& result,
+                                      const QString& title) const {
+    SolveReport report;
+    report.title = title;
+    report.elapsedMs = result.elapsedMs;
+    report.summaries = result.summaries;
+    if (result.cancelled) {
+        report.status = tr("Cancelled; the design is unchanged.");
+        return report;
+    }
+    if (!result.ok) {
+        report.status = tr("Failed: %1").arg(result.error);
+        return report;
+    }
+    QStringList statuses;
+    for (std::size_t s = 0; s < result.summaries.size(); ++s) {
+        const solver::Summary& summary = result.summaries[s];
+        if (summary.iterations.empty() && summary.message.empty()) {
+            continue; // not solved (a drag leaves surfaces without handles alone)
+        }
+        QString status;
+        switch (summary.status) {
+        case solver::Status::Converged:
+            status = tr("converged");
+            break;
+        case solver::Status::IterationLimit:
+            status =
+                summary.toleranceReached ? tr("tolerance reached") : tr("iteration limit reached");
+            break;
+        case solver::Status::Cancelled:
+            status = tr("cancelled");
+            break;
+        default:
+            status = tr("failed");
+            break;
+        }
+        if (!summary.message.empty()) {
+            status += tr(" (%1)").arg(QString::fromStdString(summary.message));
+        }
+        statuses << (result.summaries.size() > 1 ? tr("surface %1 %2").arg(s + 1).arg(status)
+                                                 : status);
+        if (!summary.toleranceReached && s < result.surfaces.size()) {
+            const auto faces = faceDevelopability(result.surfaces[s]);
+            for (std::size_t i = 0; i < std::min<std::size_t>(3, faces.size()); ++i) {
+                report.worstFaces << tr("patch %1: %2")
+                                         .arg(faces[i].first)
+                                         .arg(QString::number(faces[i].second, 'e', 1));
+            }
+        }
+    }
+    report.status = statuses.isEmpty() ? tr("nothing was solved.")
+                                       : statuses.join(QStringLiteral("; ")) + QLatin1Char('.');
+    return report;
+}
+
+void SolveController::onResult(const solver::SolveResult& result) {
+    if (result.sessionKey != 0 || !m_solving || result.revision != m_revision) {
+        return; // a drag's result, or one of a solve that was cancelled or superseded
+    }
+    const QString title = tr("Solve");
+    emit reportReady(reportOf(result, title));
+    if (result.cancelled) {
+        stop(tr("Solve cancelled; the design is unchanged."));
+        return;
+    }
+    if (!result.ok) {
+        stop(tr("Solve failed: %1 The design is unchanged.").arg(result.error));
+        return;
+    }
+    document::Document* doc = m_workspace->document();
+    if (doc->revision() != result.revision ||
+        result.surfaces.size() != static_cast<std::size_t>(doc->surfaceCount())) {
+        stop(tr("Solve result discarded: the design changed while solving."));
+        return;
+    }
+    // Every surface's command is made before any is pushed: one refused (the solved shape
+    // does not validate) leaves the design as it was.
+    std::vector<std::unique_ptr<QUndoCommand>> commands;
+    for (std::size_t s = 0; s < result.surfaces.size(); ++s) {
+        document::CommandOrError edit = document::ApplySurfaceCommand::create(
+            *doc, static_cast<int>(s), result.surfaces[s], title);
+        if (edit.isRefused()) {
+            stop(tr("Solve failed: %1 The design is unchanged.").arg(edit.error()));
+            return;
+        }
+        commands.push_back(edit.takeCommand());
+    }
+    m_applying = true;
+    QUndoStack* stack = doc->undoStack();
+    stack->beginMacro(title);
+    for (auto& command : commands) {
+        stack->push(command.release());
+    }
+    stack->endMacro();
+    m_applying = false;
+    double residual = 0.0;
+    int iterations = 0;
+    for (const solver::Summary& summary : result.summaries) {
+        residual = std::max(residual, summary.finalMaxConstraintResidual);
+        iterations = std::max(iterations, summary.iterationsCompleted);
+    }
+    stop(tr("Solved: %n iteration(s), largest constraint residual %1.", nullptr, iterations)
+             .arg(QString::number(residual, 'e', 2)));
+}
+
+} // namespace devsurf::app

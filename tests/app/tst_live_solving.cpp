@@ -1,0 +1,490 @@
+#include "drag_tool.h"
+#include "io/project_file.h"
+#include "main_window.h"
+#include "model/document/commands/move_vertices_command.h"
+#include "model/document/commands/pin_vertices_command.h"
+#include "model/document/document.h"
+#include "model/document/selection.h"
+#include "panels/solver_panel.h"
+#include "solve_controller.h"
+#include "solver/quality/quality_measures.h"
+#include "solver/worker/solver_worker.h"
+#include "test_registry.h"
+#include "views/development_view.h"
+#include "views/surface_view.h"
+#include "views/vtk_opengl_widget.h"
+#include "workspace.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QMenu>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTest>
+#include <QTimer>
+#include <QUndoStack>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+using namespace devsurf;
+using document::Pick;
+
+namespace {
+
+std::string bytesOf(const app::MainWindow& window) {
+    return io::encodeProject(window.workspace()->document()->project());
+}
+
+// Every coarse vertex and S-edge control point of every surface, in a fixed order.
+std::vector<model::Vec3> allPoints(const document::Document& doc) {
+    std::vector<model::Vec3> points;
+    for (const auto& surface : doc.project().surfaces) {
+        for (const auto& [id, p] : surface.vertices()) {
+            points.push_back(p);
+        }
+        for (const auto& [id, edge] : surface.edges()) {
+            points.insert(points.end(), edge.controlPoints.begin(), edge.controlPoints.end());
+        }
+    }
+    return points;
+}
+
+double diameter(const std::vector<model::Vec3>& points) {
+    model::Vec3 lo(1e300, 1e300, 1e300);
+    model::Vec3 hi(-1e300, -1e300, -1e300);
+    for (const model::Vec3& p : points) {
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], p[k]);
+            hi[k] = std::max(hi[k], p[k]);
+        }
+    }
+    return (hi - lo).norm();
+}
+
+// Waits (on the signal, never by sleeping) until the controller's solve has ended.
+QString waitForSolve(app::MainWindow& window) {
+    QSignalSpy finished(window.solveController(), &app::SolveController::finished);
+    if (!window.solveController()->isSolving()) {
+        return QStringLiteral("not solving");
+    }
+    if (!finished.wait(120000)) {
+        return QStringLiteral("timeout");
+    }
+    return finished.front().front().toString();
+}
+
+} // namespace
+
+// Pins in the desktop application.
+class TstPins : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init() { QSettings().clear(); }
+
+    void pinActionsExplainWhyTheyAreDisabled() {
+        app::MainWindow window;
+        window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
+        QAction* pin = window.action(QStringLiteral("actionPinVertices"));
+        QAction* unpin = window.action(QStringLiteral("actionUnpinVertices"));
+        QVERIFY(pin != nullptr && unpin != nullptr);
+        QVERIFY(!pin->isEnabled());
+        QVERIFY(pin->toolTip().contains(QStringLiteral("Select vertices")));
+        QVERIFY(!unpin->isEnabled());
+        window.workspace()->selection()->set({{Pick::Kind::Vertex, 0, 1}});
+        QVERIFY(pin->isEnabled());
+        QVERIFY(!unpin->isEnabled()); // nothing selected is pinned
+        QVERIFY(unpin->toolTip().contains(QStringLiteral("not pinned")));
+        QCOMPARE(pin->shortcut(), QKeySequence(QStringLiteral("Ctrl+K")));
+    }
+
+    void theViewsContextMenuOffersPins() {
+        app::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
+        window.surfaceView()->grabImage();
+        QStringList offered;
+        // The menu runs its own event loop: a timer looks for it there and closes it.
+        QTimer poll;
+        connect(&poll, &QTimer::timeout, &poll, [&] {
+            if (auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget())) {
+                for (QAction* a : menu->actions()) {
+                    if (a->isEnabled()) {
+                        offered << a->objectName();
+                    }
+                }
+                menu->close();
+            }
+        });
+        poll.start(10);
+        const QPoint at = window.surfaceView()->projectVertexToWidget(0, 3);
+        QTest::mouseClick(window.surfaceView()->glWidget(), Qt::RightButton, {}, at);
+        poll.stop();
+        QVERIFY(window.workspace()->selection()->contains({Pick::Kind::Vertex, 0, 3}));
+        QVERIFY2(offered.contains(QStringLiteral("actionPinVertices")),
+                 qPrintable(offered.join(',')));
+        QVERIFY(!offered.contains(QStringLiteral("actionUnpinVertices")));
+    }
+
+    void pinningIsUndoableAndDrawnInBothViews() {
+        app::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
+        document::Document* doc = window.workspace()->document();
+        const std::string before = bytesOf(window);
+        const std::set<Pick> picks{{Pick::Kind::Vertex, 0, 0}, {Pick::Kind::Vertex, 0, 2}};
+        window.workspace()->selection()->set(picks);
+        window.action(QStringLiteral("actionPinVertices"))->trigger();
+        QVERIFY(doc->surface(0).isPinned(0));
+        QVERIFY(doc->surface(0).isPinned(2));
+        QCOMPARE(doc->undoStack()->count(), 1);
+        QCOMPARE(doc->undoStack()->undoText(), QStringLiteral("Pin 2 vertices"));
+        QCOMPARE(window.surfaceView()->pinnedPicks(), picks);
+        QCOMPARE(window.developmentView()->pinnedPicks(), picks);
+        const std::string after = bytesOf(window);
+        QVERIFY(after != before);
+
+        // Drawn red where the vertex is (the selection, orange, is cleared first).
+        window.workspace()->selection()->clear();
+        const QImage image = window.surfaceView()->grabImage();
+        const qreal dpr = image.devicePixelRatio();
+        const QPoint at = window.surfaceView()->projectVertexToWidget(0, 0);
+        const QColor colour = image.pixelColor(at * dpr);
+        QVERIFY2(colour.red() > 150 && colour.green() < 90 && colour.blue() < 90,
+                 qPrintable(colour.name()));
+
+        doc->undoStack()->undo();
+        QCOMPARE(bytesOf(window), before);
+        QVERIFY(window.surfaceView()->pinnedPicks().empty());
+        QVERIFY(window.developmentView()->pinnedPicks().empty());
+        doc->undoStack()->redo();
+        QCOMPARE(bytesOf(window), after);
+
+        window.workspace()->selection()->set({{Pick::Kind::Vertex, 0, 2}});
+        QAction* unpin = window.action(QStringLiteral("actionUnpinVertices"));
+        QVERIFY(unpin->isEnabled());
+        unpin->trigger();
+        QVERIFY(!doc->surface(0).isPinned(2));
+        QCOMPARE(window.surfaceView()->pinnedPicks(), (std::set<Pick>{{Pick::Kind::Vertex, 0, 0}}));
+        doc->undoStack()->undo();
+        QCOMPARE(bytesOf(window), after);
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstPins);
+
+// Tools ▸ Solve.
+class TstSolve : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init() { QSettings().clear(); }
+
+    void solveOnAnUnchangedExampleChangesNothingAndIsOneUndoStep() {
+        app::MainWindow window;
+        window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
+        document::Document* doc = window.workspace()->document();
+        const std::string before = bytesOf(window);
+        const std::vector<model::Vec3> start = allPoints(*doc);
+        QAction* solve = window.action(QStringLiteral("actionSolve"));
+        QVERIFY(solve != nullptr);
+        QCOMPARE(solve->shortcut(), QKeySequence(QStringLiteral("Ctrl+Return")));
+        solve->trigger();
+        QVERIFY(window.solveController()->isSolving());
+        const QString sentence = waitForSolve(window);
+        QVERIFY2(sentence.startsWith(QStringLiteral("Solved")), qPrintable(sentence));
+        QCOMPARE(doc->undoStack()->count(), 1);
+        QCOMPARE(doc->undoStack()->undoText(), QStringLiteral("Solve"));
+        const std::vector<model::Vec3> end = allPoints(*doc);
+        QCOMPARE(end.size(), start.size());
+        const double size = diameter(start);
+        double moved = 0.0;
+        for (std::size_t i = 0; i < end.size(); ++i) {
+            moved = std::max(moved, (end[i] - start[i]).norm());
+        }
+        QVERIFY2(moved <= 1e-6 * size, qPrintable(QString::number(moved / size)));
+        QVERIFY(window.solverPanel()->iterationRows() > 0);
+        QVERIFY(window.solverPanel()->statusText().contains(QStringLiteral("Solve")));
+
+        const std::string after = bytesOf(window);
+        doc->undoStack()->undo();
+        QCOMPARE(bytesOf(window), before);
+        doc->undoStack()->redo();
+        QCOMPARE(bytesOf(window), after);
+    }
+
+    void solveMakesALiftedDesignDevelopableAndKeepsPinsBitForBit() {
+        app::MainWindow window;
+        window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
+        document::Document* doc = window.workspace()->document();
+        doc->undoStack()->push(
+            document::PinVerticesCommand::create(*doc, 0, {0, 20}, true).takeCommand().release());
+        doc->undoStack()->push(document::MoveVerticesCommand::createTranslation(
+                                   *doc, 0, {21}, model::Vec3(0.0, 0.0, 5.0))
+                                   .takeCommand()
+                                   .release());
+        const double before = solver::measureQuality(doc->surface(0)).developabilityMax;
+        const model::Vec3 pinned0 = doc->surface(0).position(0);
+        const model::Vec3 pinned20 = doc->surface(0).position(20);
+        window.action(QStringLiteral("actionSolve"))->trigger();
+        const QString sentence = waitForSolve(window);
+        QVERIFY2(sentence.startsWith(QStringLiteral("Solved")), qPrintable(sentence));
+        const double after = solver::measureQuality(doc->surface(0)).developabilityMax;
+        qInfo("developability max before %.3g, after the solve %.3g", before, after);
+        QVERIFY(after < before);
+        const model::Vec3 now0 = doc->surface(0).position(0);
+        const model::Vec3 now20 = doc->surface(0).position(20);
+        QVERIFY(now0.x == pinned0.x && now0.y == pinned0.y && now0.z == pinned0.z);
+        QVERIFY(now20.x == pinned20.x && now20.y == pinned20.y && now20.z == pinned20.z);
+        QCOMPARE(doc->undoStack()->count(), 3);
+    }
+
+    void theIterationsComeFromTheSetting() {
+        QSettings().setValue(QStringLiteral("solver/iterations"), 3);
+        app::MainWindow window;
+        window.workspace()->newFromExample(QStringLiteral("sheet"), 0);
+        QVERIFY(window.action(QStringLiteral("actionSolve"))->toolTip().contains("3 iteration"));
+        window.action(QStringLiteral("actionSolve"))->trigger();
+        const QString sentence = waitForSolve(window);
+        QVERIFY2(sentence.startsWith(QStringLiteral("Solved")), qPrintable(sentence));
+        QVERIFY(window.solverPanel()->iterationRows() >= 1);
+        QVERIFY(window.solverPanel()->iterationRows() <= 3);
+    }
+
+    void cancelledSolveChangesNothing() {
+        app::MainWindow window;
+        window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
+        document::Document* doc = window.workspace()->document();
+        const std::string before = bytesOf(window);
+        QAction* cancel = window.action(QStringLiteral("actionCancelSolve"));
+        QVERIFY(!cancel->isEnabled());
+        QSignalSpy finished(window.solveController(), &app::SolveController::finished);
+        window.action(QStringLiteral("actionSolve"))->trigger();
+        QVERIFY(cancel->isEnabled());
+        QVERIFY(!window.action(QStringLiteral("actionSelectNone"))->isEnabled());
+        cancel->trigger();
+        QCOMPARE(finished.size(), 1);
+        QVERIFY(finished.front().front().toString().contains(QStringLiteral("cancelled")));
+        QVERIFY(!window.solveController()->isSolving());
+        QVERIFY(window.action(QStringLiteral("actionSelectNone"))->isEnabled());
+        // Whatever the worker still reports for the cancelled request is never applied.
+        QSignalSpy results(window.solveController()->worker(), &solver::SolverWorker::finished);
+        if (window.solveController()->worker()->isBusy()) {
+            QVERIFY(results.wait(120000));
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(doc->undoStack()->count(), 0);
+        QCOMPARE(bytesOf(window), before);
+    }
+
+    void escapeCancelsTheSolve() {
+        app::MainWindow window;
+        window.show();
+        window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&window));
+        window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
+        const std::string before = bytesOf(window);
+        QSignalSpy finished(window.solveController(), &app::SolveController::finished);
+        QTest::keyClick(&window, Qt::Key_Return, Qt::ControlModifier);
+        QVERIFY(window.solveController()->isSolving());
+        QTest::keyClick(&window, Qt::Key_Escape);
+        QCOMPARE(finished.size(), 1);
+        QVERIFY(finished.front().front().toString().contains(QStringLiteral("cancelled")));
+        QCOMPARE(bytesOf(window), before);
+    }
+
+    void anEditWhileSolvingCancelsTheSolve() {
+        app::MainWindow window;
+        window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
+        document::Document* doc = window.workspace()->document();
+        QSignalSpy finished(window.solveController(), &app::SolveController::finished);
+        window.action(QStringLiteral("actionSolve"))->trigger();
+        doc->undoStack()->push(
+            document::PinVerticesCommand::create(*doc, 0, {1}, true).takeCommand().release());
+        QCOMPARE(finished.size(), 1);
+        QVERIFY(finished.front().front().toString().contains(QStringLiteral("design changed")));
+        const std::string pinned = bytesOf(window);
+        QSignalSpy results(window.solveController()->worker(), &solver::SolverWorker::finished);
+        if (window.solveController()->worker()->isBusy()) {
+            QVERIFY(results.wait(120000));
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(doc->undoStack()->count(), 1);
+        QCOMPARE(bytesOf(window), pinned);
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstSolve);
+// The Drag tool, driven by synthesized mouse events in the 3D view.
+class TstDrag : public QObject {
+    Q_OBJECT
+
+    // A shown window with the annulus, vertex `dragged` and `other` selected, `pinned` pinned,
+    // and the Drag tool on.
+    struct Setup {
+        app::MainWindow window;
+        document::Document* doc = nullptr;
+        QWidget* gl = nullptr;
+        QPoint at;
+    };
+    static constexpr model::VertexId kDragged = 20;
+    static constexpr model::VertexId kOther = 21;
+    static constexpr model::VertexId kPinned = 0;
+
+    static bool prepare(Setup& s) {
+        s.window.show();
+        s.window.activateWindow();
+        if (!QTest::qWaitForWindowActive(&s.window)) {
+            return false;
+        }
+        s.window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
+        s.doc = s.window.workspace()->document();
+        s.doc->undoStack()->push(document::PinVerticesCommand::create(*s.doc, 0, {kPinned}, true)
+                                     .takeCommand()
+                                     .release());
+        s.window.workspace()->selection()->set(
+            {{Pick::Kind::Vertex, 0, kDragged}, {Pick::Kind::Vertex, 0, kOther}});
+        s.window.action(QStringLiteral("actionDragTool"))->setChecked(true);
+        s.gl = s.window.surfaceView()->glWidget();
+        s.window.surfaceView()->grabImage();
+        s.at = s.window.surfaceView()->projectVertexToWidget(0, kDragged);
+        const auto pick = s.window.surfaceView()->pickAt(s.at);
+        return pick && pick->kind == Pick::Kind::Vertex && pick->id == kDragged;
+    }
+
+private slots:
+    void init() { QSettings().clear(); }
+
+    void dragIsOneUndoStepAndUndoGivesTheStateAtPress() {
+        Setup s;
+        QVERIFY(prepare(s));
+        const int stackAtPress = s.doc->undoStack()->count();
+        const std::string atPress = bytesOf(s.window);
+        const model::Vec3 pinnedAt = s.doc->surface(0).position(kPinned);
+        const model::Vec3 start = s.doc->surface(0).position(kDragged);
+        QSignalSpy finished(s.window.dragTool(), &app::DragTool::dragFinished);
+        QSignalSpy changed(s.doc, &document::Document::changed);
+        QTest::mousePress(s.gl, Qt::LeftButton, {}, s.at);
+        QVERIFY(s.window.dragTool()->isDragging());
+        for (int i = 1; i <= 6; ++i) {
+            QTest::mouseMove(s.gl, s.at + QPoint(0, -6 * i));
+            if (i == 3) {
+                QVERIFY(changed.wait(60000)); // the surface follows during the drag
+            }
+        }
+        QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(0, -36));
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(finished.front().front().toBool(), true);
+        QCOMPARE(s.doc->undoStack()->count(), stackAtPress + 1);
+        QCOMPARE(s.doc->undoStack()->undoText(), QStringLiteral("Drag 2 vertices"));
+        const model::Vec3 end = s.doc->surface(0).position(kDragged);
+        QVERIFY2((end - start).norm() > 1.0, qPrintable(QString::number((end - start).norm())));
+        const model::Vec3 pinnedNow = s.doc->surface(0).position(kPinned);
+        QVERIFY(pinnedNow.x == pinnedAt.x && pinnedNow.y == pinnedAt.y &&
+                pinnedNow.z == pinnedAt.z);
+        const QString report = window(s)->solverPanel()->statusText();
+        QVERIFY(report.contains(QStringLiteral("Drag 2")));
+        // The report is the one of the ten iterations after the release.
+        QVERIFY2(window(s)->solverPanel()->iterationRows() == app::DragTool::kFinalIterations ||
+                     report.contains(QStringLiteral("converged")),
+                 qPrintable(report));
+        const solver::QualityMeasures quality = solver::measureQuality(s.doc->surface(0));
+        qInfo("after the drag: developability max %.3g, mean %.3g", quality.developabilityMax,
+              quality.developabilityMean);
+        QVERIFY(std::isfinite(quality.developabilityMax));
+
+        const std::string after = bytesOf(s.window);
+        s.doc->undoStack()->undo();
+        QCOMPARE(bytesOf(s.window), atPress);
+        s.doc->undoStack()->redo();
+        QCOMPARE(bytesOf(s.window), after);
+    }
+
+    void escapeDuringADragRestoresTheStateAtPress() {
+        Setup s;
+        QVERIFY(prepare(s));
+        const int stackAtPress = s.doc->undoStack()->count();
+        const std::string atPress = bytesOf(s.window);
+        QSignalSpy finished(s.window.dragTool(), &app::DragTool::dragFinished);
+        QSignalSpy changed(s.doc, &document::Document::changed);
+        QTest::mousePress(s.gl, Qt::LeftButton, {}, s.at);
+        QTest::mouseMove(s.gl, s.at + QPoint(0, -20));
+        QVERIFY(changed.wait(60000));
+        QVERIFY(bytesOf(s.window) != atPress);
+        QTest::keyClick(s.gl, Qt::Key_Escape);
+        QCOMPARE(finished.size(), 1);
+        QCOMPARE(finished.front().front().toBool(), false);
+        QVERIFY(!s.window.dragTool()->isDragging());
+        QCOMPARE(bytesOf(s.window), atPress);
+        QCOMPARE(s.doc->undoStack()->count(), stackAtPress);
+        QVERIFY(!s.window.workspace()->selection()->isEmpty()); // Esc did not select nothing
+        // The release after Esc is an ordinary release; nothing of the drag comes back.
+        QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(0, -20));
+        QSignalSpy results(s.window.solveController()->worker(), &solver::SolverWorker::finished);
+        if (s.window.solveController()->worker()->isBusy()) {
+            QVERIFY(results.wait(60000));
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(bytesOf(s.window), atPress);
+    }
+
+    void qualityColoursFollowTheDrag() {
+        Setup s;
+        QVERIFY(prepare(s));
+        app::MainWindow& w = s.window;
+        QAction* developability = w.action(QStringLiteral("actionColourDevelopability"));
+        QVERIFY(developability != nullptr);
+        developability->trigger();
+        QCOMPARE(w.surfaceView()->colourBy(), views::ColourBy::Developability);
+        QVERIFY(w.surfaceView()->legendTitle().contains(QStringLiteral("Developability")));
+        const double flatHigh = w.surfaceView()->legendRange().second;
+        QSignalSpy finished(w.dragTool(), &app::DragTool::dragFinished);
+        QSignalSpy changed(s.doc, &document::Document::changed);
+        QTest::keyPress(s.gl, Qt::Key_Z); // lift along z
+        QTest::mousePress(s.gl, Qt::LeftButton, {}, s.at);
+        for (int i = 1; i <= 15; ++i) {
+            QTest::mouseMove(s.gl, s.at + QPoint(0, -2 * i));
+            if (i == 8) {
+                QVERIFY(changed.wait(60000));
+            }
+        }
+        QCOMPARE(w.dragTool()->axis(), app::DragTool::Axis::Z);
+        QVERIFY(changed.wait(60000));
+        // The legend is refitted to the surface being dragged.
+        QVERIFY(w.surfaceView()->legendRange().second != flatHigh);
+        QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(0, -30));
+        QTest::keyRelease(s.gl, Qt::Key_Z);
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(w.dragTool()->axis(), app::DragTool::Axis::Free);
+        // A picture of the result for the documentation, on request.
+        const QString shot = qEnvironmentVariable("DEVSURF_DRAG_SCREENSHOT");
+        if (!shot.isEmpty()) {
+            QVERIFY(w.grab().save(shot));
+        }
+        const model::Vec3 moved = s.doc->surface(0).position(kDragged);
+        QVERIFY(moved.z > 1.0);
+        w.action(QStringLiteral("actionColourAngleDefect"))->trigger();
+        QVERIFY(w.surfaceView()->legendTitle().contains(QStringLiteral("Angle defect")));
+        w.action(QStringLiteral("actionColourPatch"))->trigger();
+        QVERIFY(w.surfaceView()->legendTitle().isEmpty());
+    }
+
+    void pressingAwayFromVerticesStillTurnsTheCamera() {
+        Setup s;
+        QVERIFY(prepare(s));
+        QTest::mousePress(s.gl, Qt::LeftButton, {}, QPoint(5, 5));
+        QVERIFY(!s.window.dragTool()->isDragging());
+        QTest::mouseRelease(s.gl, Qt::LeftButton, {}, QPoint(5, 5));
+    }
+
+private:
+    static app::MainWindow* window(Setup& s) { return &s.window; }
+};
+
+DEVSURF_REGISTER_TEST(TstDrag);
+#include "tst_live_solving.moc"
