@@ -10,6 +10,75 @@
     </message>
 </context>
 <context>
+    <name>CreaseConditionCommand</name>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="8"/>
+        <source>Curved fold</source>
+        <translation>Gekrümmte Faltung</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="10"/>
+        <source>Geodesic</source>
+        <translation>Geodätische</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="12"/>
+        <source>Straight when unfolded</source>
+        <translation>Gerade in der Abwicklung</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="16"/>
+        <source>No condition</source>
+        <translation>Keine Bedingung</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="24"/>
+        <source>Select at least one crease.</source>
+        <translation>Wählen Sie mindestens einen Falz.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="27"/>
+        <source>The condition &quot;Straight when unfolded&quot; is not available yet; use Curved fold or Geodesic.</source>
+        <translation>Die Bedingung „Gerade in der Abwicklung“ gibt es noch nicht; verwenden Sie Gekrümmte Faltung oder Geodätische.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="38"/>
+        <source>Edge %1 does not exist.</source>
+        <translation>Kante %1 gibt es nicht.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="42"/>
+        <source>Edge %1 is a ruling; conditions apply to creases (curves between two patches).</source>
+        <translation>Kante %1 ist eine Erzeugende; Bedingungen gelten für Falze (Kurven zwischen zwei Flächenstücken).</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="48"/>
+        <source>Edge %1 is a curve on the boundary, not a crease; conditions apply to curves between two patches.</source>
+        <translation>Kante %1 ist eine Randkurve, kein Falz; Bedingungen gelten für Kurven zwischen zwei Flächenstücken.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="55"/>
+        <source>The selected creases already have the condition &quot;%1&quot;.</source>
+        <translation>Die gewählten Falze haben bereits die Bedingung „%1“.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="59"/>
+        <source>Clear the condition of %n creases</source>
+        <translation>
+            <numerusform>Bedingung von %n Falz entfernen</numerusform>
+            <numerusform>Bedingung von %n Falzen entfernen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="60"/>
+        <source>%1 on %n creases</source>
+        <translation>
+            <numerusform>%1 auf %n Falz</numerusform>
+            <numerusform>%1 auf %n Falzen</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>FaceType</name>
     <message>
         <location filename="../app/gui/face_type_text.cpp" line="10"/>
@@ -243,6 +312,32 @@
     </message>
 </context>
 <context>
+    <name>SceneView</name>
+    <message>
+        <location filename="../views/quality_colours.cpp" line="144"/>
+        <source>Developability
+|det(a-b, a&apos;, b&apos;)|
+(ratio)</source>
+        <translation>Abwickelbarkeit
+|det(a-b, a', b')|
+(Verhältnis)</translation>
+    </message>
+    <message>
+        <location filename="../views/quality_colours.cpp" line="147"/>
+        <source>Flatness δ
+(ratio)</source>
+        <translation>Ebenheit δ
+(Verhältnis)</translation>
+    </message>
+    <message>
+        <location filename="../views/quality_colours.cpp" line="149"/>
+        <source>Angle defect |K|
+(rad)</source>
+        <translation>Winkeldefekt |K|
+(rad)</translation>
+    </message>
+</context>
+<context>
     <name>SplitAtRulingCommand</name>
     <message>
         <location filename="../model/document/commands/split_at_ruling_command.cpp" line="12"/>
@@ -385,11 +480,82 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::CreaseConditionReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="44"/>
+        <source>Curved fold: the solver keeps the crease&apos;s osculating plane halfway between the two patches, so that the design folds from one flat sheet.</source>
+        <translation>Gekrümmte Faltung: Der Löser hält die Schmiegebene des Falzes in der Mitte zwischen den beiden Flächenstücken, damit sich der Entwurf aus einem ebenen Blatt falten lässt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="48"/>
+        <source>Geodesic: the solver keeps the crease a geodesic of both patches.</source>
+        <translation>Geodätische: Der Löser hält den Falz als Geodätische beider Flächenstücke.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="54"/>
+        <source>No condition: the solver treats the crease freely.</source>
+        <translation>Keine Bedingung: Der Löser behandelt den Falz frei.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="70"/>
+        <source>Select creases (curves between two patches) of one surface first.</source>
+        <translation>Wählen Sie zuerst Falze (Kurven zwischen zwei Flächenstücken) einer Fläche.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="83"/>
+        <source>Cannot set the crease condition</source>
+        <translation>Die Falzbedingung kann nicht gesetzt werden</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::DeleteSelectionReaction</name>
     <message>
         <location filename="../app/gui/reactions/edit_reactions.cpp" line="10"/>
         <source>Deleting parts of a surface is not available yet: relabel an edge (Ctrl+L) or undo (Ctrl+Z) instead.</source>
         <translation>Teile einer Fläche zu löschen ist noch nicht möglich: Benennen Sie stattdessen eine Kante um (Strg+L) oder machen Sie rückgängig (Strg+Z).</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::DragTool</name>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="49"/>
+        <location filename="../app/gui/drag_tool.cpp" line="98"/>
+        <source>Drag cancelled; the design is as it was.</source>
+        <translation>Ziehen abgebrochen; der Entwurf ist wie zuvor.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="69"/>
+        <source>Drag %n vertices</source>
+        <translation>
+            <numerusform>%n Ecke ziehen</numerusform>
+            <numerusform>%n Ecken ziehen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="160"/>
+        <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
+        <translation>Ecke %1 ist festgehalten und kann nicht gezogen werden; geben Sie sie zuerst frei.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="178"/>
+        <source>a drag started</source>
+        <translation>ein Ziehen hat begonnen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="281"/>
+        <location filename="../app/gui/drag_tool.cpp" line="297"/>
+        <source>Drag stopped: %1 The design is as it was.</source>
+        <translation>Ziehen beendet: %1 Der Entwurf ist wie zuvor.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="286"/>
+        <source>Drag stopped: the design changed during the drag.</source>
+        <translation>Ziehen beendet: Der Entwurf hat sich während des Ziehens geändert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="311"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -491,192 +657,223 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="106"/>
+        <location filename="../app/gui/main_window.cpp" line="113"/>
         <source>Patches</source>
         <translation>Flächenstücke</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="112"/>
+        <location filename="../app/gui/main_window.cpp" line="119"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="119"/>
+        <location filename="../app/gui/main_window.cpp" line="126"/>
+        <source>Solver</source>
+        <translation>Löser</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="135"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="126"/>
+        <location filename="../app/gui/main_window.cpp" line="142"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="128"/>
+        <location filename="../app/gui/main_window.cpp" line="144"/>
         <source>&amp;New from Example…</source>
         <translation>&amp;Neu aus Beispiel…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="130"/>
+        <location filename="../app/gui/main_window.cpp" line="146"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="132"/>
+        <location filename="../app/gui/main_window.cpp" line="148"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="136"/>
+        <location filename="../app/gui/main_window.cpp" line="152"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="139"/>
+        <location filename="../app/gui/main_window.cpp" line="155"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="143"/>
+        <location filename="../app/gui/main_window.cpp" line="159"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>Austausch-JSON &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="143"/>
+        <location filename="../app/gui/main_window.cpp" line="159"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="147"/>
+        <location filename="../app/gui/main_window.cpp" line="163"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="151"/>
+        <location filename="../app/gui/main_window.cpp" line="167"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="154"/>
+        <location filename="../app/gui/main_window.cpp" line="170"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="157"/>
+        <location filename="../app/gui/main_window.cpp" line="173"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="164"/>
+        <location filename="../app/gui/main_window.cpp" line="180"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="166"/>
+        <location filename="../app/gui/main_window.cpp" line="182"/>
         <source>Select &amp;None</source>
         <translation>Auswahl &amp;aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="167"/>
+        <location filename="../app/gui/main_window.cpp" line="183"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="70"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="171"/>
+        <location filename="../app/gui/main_window.cpp" line="187"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="173"/>
+        <location filename="../app/gui/main_window.cpp" line="189"/>
         <source>&amp;3D View</source>
         <translation>&amp;3D-Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="173"/>
+        <location filename="../app/gui/main_window.cpp" line="189"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <location filename="../app/gui/main_window.cpp" line="191"/>
         <source>&amp;Development View</source>
         <translation>&amp;Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <location filename="../app/gui/main_window.cpp" line="191"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="176"/>
+        <location filename="../app/gui/main_window.cpp" line="192"/>
         <source>3D &amp;and Development</source>
         <translation>3D &amp;und Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="177"/>
+        <location filename="../app/gui/main_window.cpp" line="193"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <location filename="../app/gui/main_window.cpp" line="197"/>
         <source>&amp;Control Polygons</source>
         <translation>&amp;Kontrollpolygone</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <location filename="../app/gui/main_window.cpp" line="197"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="182"/>
+        <location filename="../app/gui/main_window.cpp" line="198"/>
         <source>&amp;Vertices</source>
         <translation>&amp;Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="183"/>
+        <location filename="../app/gui/main_window.cpp" line="199"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="186"/>
+        <location filename="../app/gui/main_window.cpp" line="203"/>
         <source>&amp;Fit All</source>
         <translation>&amp;Alles zeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="186"/>
+        <location filename="../app/gui/main_window.cpp" line="203"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="192"/>
+        <location filename="../app/gui/main_window.cpp" line="209"/>
         <source>Reset &amp;Layout</source>
         <translation>&amp;Layout zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <location filename="../app/gui/main_window.cpp" line="214"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>Kante &amp;umbenennen (R ↔ S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="202"/>
+        <location filename="../app/gui/main_window.cpp" line="219"/>
         <source>Add &amp;Crease…</source>
         <translation>&amp;Falz einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="205"/>
+        <location filename="../app/gui/main_window.cpp" line="222"/>
         <source>Add R&amp;uling…</source>
         <translation>&amp;Erzeugende einfügen…</translation>
     </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="228"/>
+        <source>Crease &amp;Condition</source>
+        <translation>&amp;Falzbedingung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="245"/>
+        <source>&amp;Pin Vertices</source>
+        <translation>Ecken &amp;festhalten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="246"/>
+        <source>Ctrl+K</source>
+        <translation>Ctrl+K</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="248"/>
+        <source>U&amp;npin Vertices</source>
+        <translation>Ecken &amp;freigeben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="249"/>
+        <source>Ctrl+Shift+K</source>
+        <translation>Ctrl+Shift+K</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="318"/>
+        <location filename="../app/gui/main_window.cpp" line="367"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n Fläche</numerusform>
@@ -684,7 +881,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="319"/>
+        <location filename="../app/gui/main_window.cpp" line="368"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -692,7 +889,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="320"/>
+        <location filename="../app/gui/main_window.cpp" line="369"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -700,7 +897,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="321"/>
+        <location filename="../app/gui/main_window.cpp" line="370"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n ausgewählt</numerusform>
@@ -708,79 +905,197 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="203"/>
+        <location filename="../app/gui/main_window.cpp" line="220"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="206"/>
+        <location filename="../app/gui/main_window.cpp" line="223"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="208"/>
+        <location filename="../app/gui/main_window.cpp" line="225"/>
         <source>Re&amp;fine Curves</source>
         <translation>Kurven &amp;verfeinern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="209"/>
+        <location filename="../app/gui/main_window.cpp" line="226"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="213"/>
+        <location filename="../app/gui/main_window.cpp" line="242"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>Ecken &amp;verschieben oder drehen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="213"/>
+        <location filename="../app/gui/main_window.cpp" line="242"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="270"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="218"/>
+        <location filename="../app/gui/main_window.cpp" line="271"/>
         <source>&amp;User Manual</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <location filename="../app/gui/main_window.cpp" line="278"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="284"/>
         <source>&amp;About DevSurf</source>
         <translation>&amp;Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="233"/>
+        <location filename="../app/gui/main_window.cpp" line="286"/>
         <source>About DevSurf</source>
         <translation>Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="234"/>
+        <location filename="../app/gui/main_window.cpp" line="287"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen mit Spline-Torsen (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="281"/>
+        <location filename="../app/gui/main_window.cpp" line="330"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="303"/>
+        <location filename="../app/gui/main_window.cpp" line="352"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="304"/>
+        <location filename="../app/gui/main_window.cpp" line="353"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="23"/>
+        <source>&amp;Solve</source>
+        <translation>&amp;Lösen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="24"/>
+        <source>Ctrl+Return</source>
+        <translation>Ctrl+Return</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/main_window_solver.cpp" line="27"/>
+        <source>Make every surface developable again: %n iteration(s) of the solver, one undo step. Pinned vertices stay where they are.</source>
+        <translation>
+            <numerusform>Macht jede Fläche wieder abwickelbar: %n Iteration des Lösers, ein Rückgängig-Schritt. Festgehaltene Ecken bleiben, wo sie sind.</numerusform>
+            <numerusform>Macht jede Fläche wieder abwickelbar: %n Iterationen des Lösers, ein Rückgängig-Schritt. Festgehaltene Ecken bleiben, wo sie sind.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="35"/>
+        <source>Solver &amp;Iterations…</source>
+        <translation>Löser-&amp;Iterationen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="36"/>
+        <source>How many solver iterations Tools ▸ Solve runs.</source>
+        <translation>Wie viele Iterationen Werkzeuge ▸ Lösen ausführt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
+        <source>Solver Iterations</source>
+        <translation>Löser-Iterationen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
+        <source>Iterations of Tools ▸ Solve:</source>
+        <translation>Iterationen von Werkzeuge ▸ Lösen:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="49"/>
+        <source>Finish the drag first; it solves as it goes.</source>
+        <translation>Beenden Sie zuerst das Ziehen; es löst bereits während der Bewegung.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="55"/>
+        <source>&amp;Drag Vertices</source>
+        <translation>Ecken &amp;ziehen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
+        <source>G</source>
+        <translation>G</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="59"/>
+        <source>Drag tool: press on a vertex in the 3D view and move it, the surface follows and stays developable. Hold X, Y or Z to move along that axis; Esc cancels the drag.</source>
+        <translation>Ziehwerkzeug: Eine Ecke in der 3D-Ansicht anklicken und bewegen; die Fläche folgt und bleibt abwickelbar. X, Y oder Z gedrückt halten, um entlang dieser Achse zu bewegen; Esc bricht das Ziehen ab.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="69"/>
+        <source>&amp;Cancel Solve</source>
+        <translation>Lösen &amp;abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="72"/>
+        <source>Stop the running solve; the design stays as it is (Esc).</source>
+        <translation>Das laufende Lösen beenden; der Entwurf bleibt, wie er ist (Esc).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="96"/>
+        <source>Solving: iteration %1 of %2, residual %3</source>
+        <translation>Lösen: Iteration %1 von %2, Residuum %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="107"/>
+        <source>Colour &amp;By</source>
+        <translation>&amp;Färben nach</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="115"/>
+        <source>&amp;Patch</source>
+        <translation>&amp;Flächenstück</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="115"/>
+        <source>&amp;Developability</source>
+        <translation>&amp;Abwickelbarkeit</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="115"/>
+        <source>&amp;Flatness</source>
+        <translation>&amp;Ebenheit</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="116"/>
+        <source>&amp;Angle Defect</source>
+        <translation>&amp;Winkeldefekt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="118"/>
+        <source>Every patch in its own colour.</source>
+        <translation>Jedes Flächenstück in seiner eigenen Farbe.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="119"/>
+        <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
+        <translation>Wie weit jedes abgetastete Streifenviereck von abwickelbar entfernt ist: das normierte |det(a−b, a′, b′)|, logarithmisch skaliert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="121"/>
+        <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
+        <translation>Ebenheit δ jedes abgetasteten Vierecks: der Abstand seiner Diagonalen durch das Mittel seiner zwei kürzesten Kanten, logarithmisch skaliert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="123"/>
+        <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
+        <translation>Winkeldefekt |K| = |2π − Σ Winkel| an den inneren Ecken des abgetasteten Netzes, im Bogenmaß, logarithmisch skaliert.</translation>
     </message>
 </context>
 <context>
@@ -1199,6 +1514,39 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::PinVerticesReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="50"/>
+        <source>Pin the selected vertices: the solver never moves them. Select vertices of one surface first.</source>
+        <translation>Die gewählten Ecken festhalten: Der Löser bewegt sie nie. Wählen Sie zuerst Ecken einer Fläche.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="52"/>
+        <source>Release the selected pinned vertices. Select vertices of one surface first.</source>
+        <translation>Die gewählten festgehaltenen Ecken freigeben. Wählen Sie zuerst Ecken einer Fläche.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="57"/>
+        <source>Pin the selected vertices: the solver never moves them.</source>
+        <translation>Die gewählten Ecken festhalten: Der Löser bewegt sie nie.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="58"/>
+        <source>Release the selected pinned vertices.</source>
+        <translation>Die gewählten festgehaltenen Ecken freigeben.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="69"/>
+        <source>Cannot pin the vertices</source>
+        <translation>Die Ecken können nicht festgehalten werden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="69"/>
+        <source>Cannot unpin the vertices</source>
+        <translation>Die Ecken können nicht freigegeben werden</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::PrintPatternReaction</name>
     <message>
         <location filename="../app/gui/reactions/pattern_reactions.cpp" line="97"/>
@@ -1431,6 +1779,170 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::SolveController</name>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="38"/>
+        <source>There is nothing to solve.</source>
+        <translation>Es gibt nichts zu lösen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="59"/>
+        <location filename="../app/gui/solve_controller.cpp" line="137"/>
+        <source>Solve cancelled; the design is unchanged.</source>
+        <translation>Lösen abgebrochen; der Entwurf ist unverändert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="60"/>
+        <source>Solve cancelled: %1; the design is unchanged.</source>
+        <translation>Lösen abgebrochen: %1; der Entwurf ist unverändert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="71"/>
+        <source>the design changed</source>
+        <translation>der Entwurf hat sich geändert</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="82"/>
+        <source>Cancelled; the design is unchanged.</source>
+        <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="86"/>
+        <source>Failed: %1</source>
+        <translation>Fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="98"/>
+        <source>converged</source>
+        <translation>konvergiert</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="102"/>
+        <source>tolerance reached</source>
+        <translation>Toleranz erreicht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="102"/>
+        <source>iteration limit reached</source>
+        <translation>Iterationsgrenze erreicht</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="105"/>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="108"/>
+        <source>failed</source>
+        <translation>fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="112"/>
+        <source> (%1)</source>
+        <translation> (%1)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="114"/>
+        <source>surface %1 %2</source>
+        <translation>Fläche %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="119"/>
+        <source>patch %1: %2</source>
+        <translation>Flächenstück %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="125"/>
+        <source>nothing was solved.</source>
+        <translation>es wurde nichts gelöst.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="134"/>
+        <source>Solve</source>
+        <translation>Lösen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="141"/>
+        <location filename="../app/gui/solve_controller.cpp" line="157"/>
+        <source>Solve failed: %1 The design is unchanged.</source>
+        <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="147"/>
+        <source>Solve result discarded: the design changed while solving.</source>
+        <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/solve_controller.cpp" line="176"/>
+        <source>Solved: %n iteration(s), largest constraint residual %1.</source>
+        <translation>
+            <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>
+            <numerusform>Gelöst: %n Iterationen, größtes Residuum der Bedingungen %1.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::SolverPanel</name>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="16"/>
+        <source>No solve yet. Tools ▸ Solve (Ctrl+Return) makes the design developable; the Drag tool keeps it developable while you pull vertices.</source>
+        <translation>Noch nicht gelöst. Werkzeuge ▸ Lösen (Ctrl+Return) macht den Entwurf abwickelbar; das Ziehwerkzeug hält ihn abwickelbar, während Sie Ecken ziehen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="22"/>
+        <source>Surf.</source>
+        <translation>Fl.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="22"/>
+        <source>Iter.</source>
+        <translation>It.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="22"/>
+        <source>Residual</source>
+        <translation>Residuum</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="22"/>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="23"/>
+        <source>Surface</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="23"/>
+        <source>Iteration</source>
+        <translation>Iteration</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="24"/>
+        <source>Largest constraint residual after the iteration</source>
+        <translation>Größtes Residuum der Bedingungen nach der Iteration</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="25"/>
+        <source>Time of the iteration in milliseconds</source>
+        <translation>Dauer der Iteration in Millisekunden</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/solver_panel.cpp" line="45"/>
+        <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
+        <translation>
+            <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n Iteration in %3 ms.</numerusform>
+            <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n Iterationen in %3 ms.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="67"/>
+        <source>&lt;br&gt;Tolerance not reached. Least developable patches (normalised residual): %1</source>
+        <translation>&lt;br&gt;Toleranz nicht erreicht. Am wenigsten abwickelbare Flächenstücke (normiertes Residuum): %1</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::SplitAtRulingReaction</name>
     <message>
         <location filename="../app/gui/reactions/tool_reactions.cpp" line="210"/>
@@ -1589,73 +2101,73 @@
 <context>
     <name>devsurf::views::SceneView</name>
     <message>
-        <location filename="../views/scene_view.cpp" line="60"/>
+        <location filename="../views/scene_view.cpp" line="50"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="62"/>
+        <location filename="../views/scene_view.cpp" line="52"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="475"/>
-        <location filename="../views/scene_view.cpp" line="484"/>
+        <location filename="../views/scene_view.cpp" line="439"/>
+        <location filename="../views/scene_view.cpp" line="448"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>Fläche %1 ist ungültig und wird nicht angezeigt.</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="507"/>
+        <location filename="../views/scene_view_input.cpp" line="30"/>
         <source>vertex %1</source>
         <translation>Ecke %1</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="516"/>
+        <location filename="../views/scene_view_input.cpp" line="39"/>
         <source>edge %1 (R)</source>
         <translation>Kante %1 (R)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="518"/>
+        <location filename="../views/scene_view_input.cpp" line="41"/>
         <source>edge %1 (S, crease)</source>
         <translation>Kante %1 (S, Falz)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="520"/>
+        <location filename="../views/scene_view_input.cpp" line="43"/>
         <source>edge %1 (S, boundary)</source>
         <translation>Kante %1 (S, Rand)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="531"/>
+        <location filename="../views/scene_view_input.cpp" line="54"/>
         <source>strip (SRSR)</source>
         <translation>Streifen (SRSR)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="534"/>
+        <location filename="../views/scene_view_input.cpp" line="57"/>
         <source>pointed strip (SRS)</source>
         <translation>spitzer Streifen (SRS)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="537"/>
+        <location filename="../views/scene_view_input.cpp" line="60"/>
         <source>cone (SRR)</source>
         <translation>Kegel (SRR)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="540"/>
+        <location filename="../views/scene_view_input.cpp" line="63"/>
         <source>planar patch</source>
         <translation>ebenes Flächenstück</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="543"/>
+        <location filename="../views/scene_view_input.cpp" line="66"/>
         <source>invalid patch</source>
         <translation>ungültiges Flächenstück</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="546"/>
+        <location filename="../views/scene_view_input.cpp" line="69"/>
         <source>patch %1 (%2)</source>
         <translation>Flächenstück %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="551"/>
+        <location filename="../views/scene_view_input.cpp" line="74"/>
         <source>surface %1: %2</source>
         <translation>Fläche %1: %2</translation>
     </message>

@@ -10,6 +10,73 @@
     </message>
 </context>
 <context>
+    <name>CreaseConditionCommand</name>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="8"/>
+        <source>Curved fold</source>
+        <translation>曲線折り</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="10"/>
+        <source>Geodesic</source>
+        <translation>測地線</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="12"/>
+        <source>Straight when unfolded</source>
+        <translation>展開時に直線</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="16"/>
+        <source>No condition</source>
+        <translation>条件なし</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="24"/>
+        <source>Select at least one crease.</source>
+        <translation>折り線を 1 本以上選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="27"/>
+        <source>The condition &quot;Straight when unfolded&quot; is not available yet; use Curved fold or Geodesic.</source>
+        <translation>「展開時に直線」の条件はまだ使えません。曲線折りか測地線を使ってください。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="38"/>
+        <source>Edge %1 does not exist.</source>
+        <translation>辺 %1 は存在しません。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="42"/>
+        <source>Edge %1 is a ruling; conditions apply to creases (curves between two patches).</source>
+        <translation>辺 %1 は母線です。条件は折り線 (2 つのパッチの間の曲線) に設定します。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="48"/>
+        <source>Edge %1 is a curve on the boundary, not a crease; conditions apply to curves between two patches.</source>
+        <translation>辺 %1 は境界の曲線で、折り線ではありません。条件は 2 つのパッチの間の曲線に設定します。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="55"/>
+        <source>The selected creases already have the condition &quot;%1&quot;.</source>
+        <translation>選択した折り線にはすでに条件「%1」が設定されています。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="59"/>
+        <source>Clear the condition of %n creases</source>
+        <translation>
+            <numerusform>%n 本の折り線の条件を解除</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="60"/>
+        <source>%1 on %n creases</source>
+        <translation>
+            <numerusform>%n 本の折り線に%1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>FaceType</name>
     <message>
         <location filename="../app/gui/face_type_text.cpp" line="10"/>
@@ -238,6 +305,32 @@
     </message>
 </context>
 <context>
+    <name>SceneView</name>
+    <message>
+        <location filename="../views/quality_colours.cpp" line="144"/>
+        <source>Developability
+|det(a-b, a&apos;, b&apos;)|
+(ratio)</source>
+        <translation>可展性
+|det(a-b, a', b')|
+(比)</translation>
+    </message>
+    <message>
+        <location filename="../views/quality_colours.cpp" line="147"/>
+        <source>Flatness δ
+(ratio)</source>
+        <translation>平面性 δ
+(比)</translation>
+    </message>
+    <message>
+        <location filename="../views/quality_colours.cpp" line="149"/>
+        <source>Angle defect |K|
+(rad)</source>
+        <translation>角度欠損 |K|
+(rad)</translation>
+    </message>
+</context>
+<context>
     <name>SplitAtRulingCommand</name>
     <message>
         <location filename="../model/document/commands/split_at_ruling_command.cpp" line="12"/>
@@ -380,11 +473,81 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::CreaseConditionReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="44"/>
+        <source>Curved fold: the solver keeps the crease&apos;s osculating plane halfway between the two patches, so that the design folds from one flat sheet.</source>
+        <translation>曲線折り: ソルバーは折り線の接触平面を 2 つのパッチの中間に保ち、デザインが 1 枚の平らなシートから折れるようにします。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="48"/>
+        <source>Geodesic: the solver keeps the crease a geodesic of both patches.</source>
+        <translation>測地線: ソルバーは折り線を両方のパッチの測地線に保ちます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="54"/>
+        <source>No condition: the solver treats the crease freely.</source>
+        <translation>条件なし: ソルバーは折り線を自由に扱います。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="70"/>
+        <source>Select creases (curves between two patches) of one surface first.</source>
+        <translation>先に 1 つの曲面の折り線 (2 つのパッチの間の曲線) を選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="83"/>
+        <source>Cannot set the crease condition</source>
+        <translation>折り線の条件を設定できません</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::DeleteSelectionReaction</name>
     <message>
         <location filename="../app/gui/reactions/edit_reactions.cpp" line="10"/>
         <source>Deleting parts of a surface is not available yet: relabel an edge (Ctrl+L) or undo (Ctrl+Z) instead.</source>
         <translation>曲面の一部の削除はまだできません。代わりに辺のラベルを変更する (Ctrl+L) か、元に戻して (Ctrl+Z) ください。</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::DragTool</name>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="49"/>
+        <location filename="../app/gui/drag_tool.cpp" line="98"/>
+        <source>Drag cancelled; the design is as it was.</source>
+        <translation>ドラッグを取り消しました。デザインは元のままです。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="69"/>
+        <source>Drag %n vertices</source>
+        <translation>
+            <numerusform>%n 個の頂点をドラッグ</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="160"/>
+        <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
+        <translation>頂点 %1 は固定されているためドラッグできません。先に固定を解除してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="178"/>
+        <source>a drag started</source>
+        <translation>ドラッグが始まりました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="281"/>
+        <location filename="../app/gui/drag_tool.cpp" line="297"/>
+        <source>Drag stopped: %1 The design is as it was.</source>
+        <translation>ドラッグを中止しました: %1 デザインは元のままです。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="286"/>
+        <source>Drag stopped: the design changed during the drag.</source>
+        <translation>ドラッグを中止しました: ドラッグ中にデザインが変更されました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="311"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -486,292 +649,440 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="106"/>
+        <location filename="../app/gui/main_window.cpp" line="113"/>
         <source>Patches</source>
         <translation>パッチ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="112"/>
+        <location filename="../app/gui/main_window.cpp" line="119"/>
         <source>Properties</source>
         <translation>プロパティ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="119"/>
+        <location filename="../app/gui/main_window.cpp" line="126"/>
+        <source>Solver</source>
+        <translation>ソルバー</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="135"/>
         <source>Main</source>
         <translation>メイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="126"/>
+        <location filename="../app/gui/main_window.cpp" line="142"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="128"/>
+        <location filename="../app/gui/main_window.cpp" line="144"/>
         <source>&amp;New from Example…</source>
         <translation>例から新規作成(&amp;N)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="130"/>
+        <location filename="../app/gui/main_window.cpp" line="146"/>
         <source>&amp;Open…</source>
         <translation>開く(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="132"/>
+        <location filename="../app/gui/main_window.cpp" line="148"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="136"/>
+        <location filename="../app/gui/main_window.cpp" line="152"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="139"/>
+        <location filename="../app/gui/main_window.cpp" line="155"/>
         <source>Save &amp;As…</source>
         <translation>名前を付けて保存(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="143"/>
+        <location filename="../app/gui/main_window.cpp" line="159"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>交換用 JSON をエクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="143"/>
+        <location filename="../app/gui/main_window.cpp" line="159"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="147"/>
+        <location filename="../app/gui/main_window.cpp" line="163"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="151"/>
+        <location filename="../app/gui/main_window.cpp" line="167"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="154"/>
+        <location filename="../app/gui/main_window.cpp" line="170"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="157"/>
+        <location filename="../app/gui/main_window.cpp" line="173"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="164"/>
+        <location filename="../app/gui/main_window.cpp" line="180"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="166"/>
+        <location filename="../app/gui/main_window.cpp" line="182"/>
         <source>Select &amp;None</source>
         <translation>選択を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="167"/>
+        <location filename="../app/gui/main_window.cpp" line="183"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="70"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="171"/>
+        <location filename="../app/gui/main_window.cpp" line="187"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="173"/>
+        <location filename="../app/gui/main_window.cpp" line="189"/>
         <source>&amp;3D View</source>
         <translation>3D ビュー(&amp;3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="173"/>
+        <location filename="../app/gui/main_window.cpp" line="189"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <location filename="../app/gui/main_window.cpp" line="191"/>
         <source>&amp;Development View</source>
         <translation>展開図ビュー(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <location filename="../app/gui/main_window.cpp" line="191"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="176"/>
+        <location filename="../app/gui/main_window.cpp" line="192"/>
         <source>3D &amp;and Development</source>
         <translation>3D と展開図(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="177"/>
+        <location filename="../app/gui/main_window.cpp" line="193"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <location filename="../app/gui/main_window.cpp" line="197"/>
         <source>&amp;Control Polygons</source>
         <translation>制御多角形(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <location filename="../app/gui/main_window.cpp" line="197"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="182"/>
+        <location filename="../app/gui/main_window.cpp" line="198"/>
         <source>&amp;Vertices</source>
         <translation>頂点(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="183"/>
+        <location filename="../app/gui/main_window.cpp" line="199"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="186"/>
+        <location filename="../app/gui/main_window.cpp" line="203"/>
         <source>&amp;Fit All</source>
         <translation>全体を表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="186"/>
+        <location filename="../app/gui/main_window.cpp" line="203"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="192"/>
+        <location filename="../app/gui/main_window.cpp" line="209"/>
         <source>Reset &amp;Layout</source>
         <translation>レイアウトをリセット(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <location filename="../app/gui/main_window.cpp" line="214"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>辺のラベルを変更 (R ↔ S)(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="202"/>
+        <location filename="../app/gui/main_window.cpp" line="219"/>
         <source>Add &amp;Crease…</source>
         <translation>折り線を追加(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="203"/>
+        <location filename="../app/gui/main_window.cpp" line="220"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="205"/>
+        <location filename="../app/gui/main_window.cpp" line="222"/>
         <source>Add R&amp;uling…</source>
         <translation>母線を追加(&amp;U)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="206"/>
+        <location filename="../app/gui/main_window.cpp" line="223"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="208"/>
+        <location filename="../app/gui/main_window.cpp" line="225"/>
         <source>Re&amp;fine Curves</source>
         <translation>曲線を細分化(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="209"/>
+        <location filename="../app/gui/main_window.cpp" line="226"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="213"/>
+        <location filename="../app/gui/main_window.cpp" line="228"/>
+        <source>Crease &amp;Condition</source>
+        <translation>折り線の条件(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="242"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>頂点の移動・回転(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="213"/>
+        <location filename="../app/gui/main_window.cpp" line="242"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="245"/>
+        <source>&amp;Pin Vertices</source>
+        <translation>頂点を固定(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="246"/>
+        <source>Ctrl+K</source>
+        <translation>Ctrl+K</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="248"/>
+        <source>U&amp;npin Vertices</source>
+        <translation>頂点の固定を解除(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="249"/>
+        <source>Ctrl+Shift+K</source>
+        <translation>Ctrl+Shift+K</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="270"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="218"/>
+        <location filename="../app/gui/main_window.cpp" line="271"/>
         <source>&amp;User Manual</source>
         <translation>ユーザーマニュアル(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <location filename="../app/gui/main_window.cpp" line="278"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="284"/>
         <source>&amp;About DevSurf</source>
         <translation>DevSurf について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="233"/>
+        <location filename="../app/gui/main_window.cpp" line="286"/>
         <source>About DevSurf</source>
         <translation>DevSurf について</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="234"/>
+        <location filename="../app/gui/main_window.cpp" line="287"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;スプライン可展面による可展面と曲線折り折り紙の設計 (Tang, Bo, Wallner, Pottmann 2015)。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="281"/>
+        <location filename="../app/gui/main_window.cpp" line="330"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="303"/>
+        <location filename="../app/gui/main_window.cpp" line="352"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="304"/>
+        <location filename="../app/gui/main_window.cpp" line="353"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="318"/>
+        <location filename="../app/gui/main_window.cpp" line="367"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>曲面 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="319"/>
+        <location filename="../app/gui/main_window.cpp" line="368"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="320"/>
+        <location filename="../app/gui/main_window.cpp" line="369"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="321"/>
+        <location filename="../app/gui/main_window.cpp" line="370"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n 個選択</numerusform>
         </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="23"/>
+        <source>&amp;Solve</source>
+        <translation>ソルブ(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="24"/>
+        <source>Ctrl+Return</source>
+        <translation>Ctrl+Return</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/main_window_solver.cpp" line="27"/>
+        <source>Make every surface developable again: %n iteration(s) of the solver, one undo step. Pinned vertices stay where they are.</source>
+        <translation>
+            <numerusform>すべての曲面を可展面に戻します: ソルバーを %n 回反復し、1 回の取り消し操作にまとめます。固定した頂点は動きません。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="35"/>
+        <source>Solver &amp;Iterations…</source>
+        <translation>ソルバーの反復回数(&amp;I)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="36"/>
+        <source>How many solver iterations Tools ▸ Solve runs.</source>
+        <translation>ツール ▸ ソルブで実行する反復回数。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
+        <source>Solver Iterations</source>
+        <translation>ソルバーの反復回数</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
+        <source>Iterations of Tools ▸ Solve:</source>
+        <translation>ツール ▸ ソルブの反復回数:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="49"/>
+        <source>Finish the drag first; it solves as it goes.</source>
+        <translation>先にドラッグを終えてください。ドラッグ中も随時ソルブしています。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="55"/>
+        <source>&amp;Drag Vertices</source>
+        <translation>頂点をドラッグ(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
+        <source>G</source>
+        <translation>G</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="59"/>
+        <source>Drag tool: press on a vertex in the 3D view and move it, the surface follows and stays developable. Hold X, Y or Z to move along that axis; Esc cancels the drag.</source>
+        <translation>ドラッグツール: 3D ビューで頂点を押して動かすと、曲面が追従し可展性を保ちます。X、Y、Z キーを押したままにするとその軸に沿って動きます。Esc でドラッグを取り消します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="69"/>
+        <source>&amp;Cancel Solve</source>
+        <translation>ソルブを中止(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="72"/>
+        <source>Stop the running solve; the design stays as it is (Esc).</source>
+        <translation>実行中のソルブを中止します。デザインはそのままです (Esc)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="96"/>
+        <source>Solving: iteration %1 of %2, residual %3</source>
+        <translation>ソルブ中: 反復 %1 / %2、残差 %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="107"/>
+        <source>Colour &amp;By</source>
+        <translation>色分け(&amp;B)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="115"/>
+        <source>&amp;Patch</source>
+        <translation>パッチ(&amp;P)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="115"/>
+        <source>&amp;Developability</source>
+        <translation>可展性(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="115"/>
+        <source>&amp;Flatness</source>
+        <translation>平面性(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="116"/>
+        <source>&amp;Angle Defect</source>
+        <translation>角度欠損(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="118"/>
+        <source>Every patch in its own colour.</source>
+        <translation>パッチごとに色分けします。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="119"/>
+        <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
+        <translation>サンプルした各帯の四角形が可展からどれだけ離れているか: 正規化した |det(a−b, a′, b′)| を対数スケールで表示します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="121"/>
+        <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
+        <translation>サンプルした各四角形の平面性 δ: 対角線間の距離を最も短い 2 辺の平均で割った値を対数スケールで表示します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="123"/>
+        <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
+        <translation>サンプルしたメッシュの内部頂点での角度欠損 |K| = |2π − Σ 角度| (ラジアン) を対数スケールで表示します。</translation>
     </message>
 </context>
 <context>
@@ -1187,6 +1498,39 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::PinVerticesReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="50"/>
+        <source>Pin the selected vertices: the solver never moves them. Select vertices of one surface first.</source>
+        <translation>選択した頂点を固定します。ソルバーはこれらを動かしません。先に 1 つの曲面の頂点を選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="52"/>
+        <source>Release the selected pinned vertices. Select vertices of one surface first.</source>
+        <translation>選択した頂点の固定を解除します。先に 1 つの曲面の頂点を選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="57"/>
+        <source>Pin the selected vertices: the solver never moves them.</source>
+        <translation>選択した頂点を固定します。ソルバーはこれらを動かしません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="58"/>
+        <source>Release the selected pinned vertices.</source>
+        <translation>選択した頂点の固定を解除します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="69"/>
+        <source>Cannot pin the vertices</source>
+        <translation>頂点を固定できません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="69"/>
+        <source>Cannot unpin the vertices</source>
+        <translation>頂点の固定を解除できません</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::PrintPatternReaction</name>
     <message>
         <location filename="../app/gui/reactions/pattern_reactions.cpp" line="97"/>
@@ -1413,6 +1757,168 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::SolveController</name>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="38"/>
+        <source>There is nothing to solve.</source>
+        <translation>ソルブする対象がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="59"/>
+        <location filename="../app/gui/solve_controller.cpp" line="137"/>
+        <source>Solve cancelled; the design is unchanged.</source>
+        <translation>ソルブを中止しました。デザインは変更されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="60"/>
+        <source>Solve cancelled: %1; the design is unchanged.</source>
+        <translation>ソルブを中止しました: %1。デザインは変更されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="71"/>
+        <source>the design changed</source>
+        <translation>デザインが変更されました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="82"/>
+        <source>Cancelled; the design is unchanged.</source>
+        <translation>中止しました。デザインは変更されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="86"/>
+        <source>Failed: %1</source>
+        <translation>失敗: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="98"/>
+        <source>converged</source>
+        <translation>収束</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="102"/>
+        <source>tolerance reached</source>
+        <translation>許容値に到達</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="102"/>
+        <source>iteration limit reached</source>
+        <translation>反復回数の上限に到達</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="105"/>
+        <source>cancelled</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="108"/>
+        <source>failed</source>
+        <translation>失敗</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="112"/>
+        <source> (%1)</source>
+        <translation> (%1)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="114"/>
+        <source>surface %1 %2</source>
+        <translation>曲面 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="119"/>
+        <source>patch %1: %2</source>
+        <translation>パッチ %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="125"/>
+        <source>nothing was solved.</source>
+        <translation>何もソルブされませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="134"/>
+        <source>Solve</source>
+        <translation>ソルブ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="141"/>
+        <location filename="../app/gui/solve_controller.cpp" line="157"/>
+        <source>Solve failed: %1 The design is unchanged.</source>
+        <translation>ソルブに失敗しました: %1 デザインは変更されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="147"/>
+        <source>Solve result discarded: the design changed while solving.</source>
+        <translation>ソルブ中にデザインが変更されたため、結果を破棄しました。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/solve_controller.cpp" line="176"/>
+        <source>Solved: %n iteration(s), largest constraint residual %1.</source>
+        <translation>
+            <numerusform>ソルブ完了: %n 回反復、制約残差の最大値 %1。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::SolverPanel</name>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="16"/>
+        <source>No solve yet. Tools ▸ Solve (Ctrl+Return) makes the design developable; the Drag tool keeps it developable while you pull vertices.</source>
+        <translation>まだソルブしていません。ツール ▸ ソルブ (Ctrl+Return) でデザインを可展面にします。ドラッグツールは頂点を引っ張る間も可展性を保ちます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="22"/>
+        <source>Surf.</source>
+        <translation>曲面</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="22"/>
+        <source>Iter.</source>
+        <translation>反復</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="22"/>
+        <source>Residual</source>
+        <translation>残差</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="22"/>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="23"/>
+        <source>Surface</source>
+        <translation>曲面</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="23"/>
+        <source>Iteration</source>
+        <translation>反復</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="24"/>
+        <source>Largest constraint residual after the iteration</source>
+        <translation>反復後の制約残差の最大値</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="25"/>
+        <source>Time of the iteration in milliseconds</source>
+        <translation>反復の所要時間 (ミリ秒)</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/solver_panel.cpp" line="45"/>
+        <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
+        <translation>
+            <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n 回反復、%3 ms。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="67"/>
+        <source>&lt;br&gt;Tolerance not reached. Least developable patches (normalised residual): %1</source>
+        <translation>&lt;br&gt;許容値に達しませんでした。可展性の最も低いパッチ (正規化残差): %1</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::SplitAtRulingReaction</name>
     <message>
         <location filename="../app/gui/reactions/tool_reactions.cpp" line="210"/>
@@ -1569,73 +2075,73 @@
 <context>
     <name>devsurf::views::SceneView</name>
     <message>
-        <location filename="../views/scene_view.cpp" line="60"/>
+        <location filename="../views/scene_view.cpp" line="50"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="62"/>
+        <location filename="../views/scene_view.cpp" line="52"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="475"/>
-        <location filename="../views/scene_view.cpp" line="484"/>
+        <location filename="../views/scene_view.cpp" line="439"/>
+        <location filename="../views/scene_view.cpp" line="448"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>曲面 %1 は有効でないため表示されません。</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="507"/>
+        <location filename="../views/scene_view_input.cpp" line="30"/>
         <source>vertex %1</source>
         <translation>頂点 %1</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="516"/>
+        <location filename="../views/scene_view_input.cpp" line="39"/>
         <source>edge %1 (R)</source>
         <translation>辺 %1 (R)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="518"/>
+        <location filename="../views/scene_view_input.cpp" line="41"/>
         <source>edge %1 (S, crease)</source>
         <translation>辺 %1 (S、折り線)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="520"/>
+        <location filename="../views/scene_view_input.cpp" line="43"/>
         <source>edge %1 (S, boundary)</source>
         <translation>辺 %1 (S、境界)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="531"/>
+        <location filename="../views/scene_view_input.cpp" line="54"/>
         <source>strip (SRSR)</source>
         <translation>ストリップ (SRSR)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="534"/>
+        <location filename="../views/scene_view_input.cpp" line="57"/>
         <source>pointed strip (SRS)</source>
         <translation>尖ったストリップ (SRS)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="537"/>
+        <location filename="../views/scene_view_input.cpp" line="60"/>
         <source>cone (SRR)</source>
         <translation>錐面 (SRR)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="540"/>
+        <location filename="../views/scene_view_input.cpp" line="63"/>
         <source>planar patch</source>
         <translation>平面パッチ</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="543"/>
+        <location filename="../views/scene_view_input.cpp" line="66"/>
         <source>invalid patch</source>
         <translation>無効なパッチ</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="546"/>
+        <location filename="../views/scene_view_input.cpp" line="69"/>
         <source>patch %1 (%2)</source>
         <translation>パッチ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="551"/>
+        <location filename="../views/scene_view_input.cpp" line="74"/>
         <source>surface %1: %2</source>
         <translation>曲面 %1: %2</translation>
     </message>
