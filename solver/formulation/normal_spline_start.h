@@ -9,7 +9,7 @@ namespace devsurf::solver {
 
 // An initial unit normal of a strip at u: a′ × (b − a), which points to the side the face
 // loop orients (stripOfFace runs a along the loop and b against it), so neighbouring strips
-// start consistently oriented (MATH.md §2, §5). A collapsed ruling (SRS end) uses a′ × b′.
+// start consistently oriented (docs/math.md §2, §5). A collapsed ruling (SRS end) uses a′ × b′.
 model::Vec3 initialStripNormal(const model::Strip& strip, double u);
 
 // True if the strip's normalised det(a − b, a′, b′) is at most 1e-9 at 50 values per knot interval

@@ -7,7 +7,7 @@
 namespace devsurf::solver {
 
 // Diagonal of the bounding box of all vertices and control points (the "diameter" the
-// benchmark and MATH.md §8 scale by).
+// benchmark and docs/math.md §8 scale by).
 double surfaceDiameter(const model::CompositeSurface& surface);
 
 // Adds independent Gaussian noise of standard deviation `sigma` (model units) to every

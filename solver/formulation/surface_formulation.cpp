@@ -382,7 +382,7 @@ struct SurfaceFormulation::Builder {
                                     *creaseConditions, f.m_creaseFaces);
     }
 
-    // RR…R faces: ⟨n_f, v_{i+1} − v_i⟩ = 0 for every edge, |n_f| = 1 (MATH.md §3).
+    // RR…R faces: ⟨n_f, v_{i+1} − v_i⟩ = 0 for every edge, |n_f| = 1 (docs/math.md §3).
     void addPlanarFaces() {
         for (std::size_t i = 0; i < planarFaces.size(); ++i) {
             const FaceId face = planarFaces[i];

@@ -30,7 +30,7 @@ struct FormulationOptions {
     // the benchmark), so off by default.
     bool auxiliaryDerivativePoints = false;
     // Collocation values of (4) per interval; 0 means 3m − 2, which makes the strip exactly
-    // developable (det(a−b, a′, b′) has degree 3m − 3 per interval, MATH.md §2).
+    // developable (det(a−b, a′, b′) has degree 3m − 3 per interval, docs/math.md §2).
     int developabilityValuesPerInterval = 0;
 
     // Scale every row of (4), of planar faces and of cone normals by 1/(|n| |d|) of its two

@@ -9,11 +9,11 @@ namespace devsurf::solver {
 struct QualityOptions {
     // Samples per spline interval of the mesh (V,E,F) for flatness and curvature.
     int meshSamplesPerInterval = 8;
-    // Parameter values per interval for the developability residual (≥ 50, MATH.md §8).
+    // Parameter values per interval for the developability residual (≥ 50, docs/math.md §8).
     int developabilitySamplesPerInterval = 50;
 };
 
-// The quality measures of MATH.md §8, computed from the geometry alone (never from a solver's
+// The quality measures of docs/math.md §8, computed from the geometry alone (never from a solver's
 // residuals). All are scale-invariant ratios or angles.
 struct QualityMeasures {
     // δ = dist(diagonal₁, diagonal₂) / mean(two shortest edge lengths) over the quads of (V,E,F).
@@ -36,7 +36,7 @@ struct QualityMeasures {
 QualityMeasures measureQuality(const model::CompositeSurface& surface,
                                const QualityOptions& options = {});
 
-// The normalised developability residual of one ruled surface at u (MATH.md §8, from (2)); 0 if
+// The normalised developability residual of one ruled surface at u (docs/math.md §8, from (2)); 0 if
 // a factor vanishes.
 double normalizedDevelopabilityResidual(const model::Vec3& aMinusB, const model::Vec3& aPrime,
                                         const model::Vec3& bPrime);
