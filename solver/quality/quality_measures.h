@@ -36,8 +36,8 @@ struct QualityMeasures {
 QualityMeasures measureQuality(const model::CompositeSurface& surface,
                                const QualityOptions& options = {});
 
-// The normalised developability residual of one ruled surface at u (docs/math.md §8, from (2)); 0 if
-// a factor vanishes.
+// The normalised developability residual of one ruled surface at u (docs/math.md §8, from (2)); 0
+// if a factor vanishes.
 double normalizedDevelopabilityResidual(const model::Vec3& aMinusB, const model::Vec3& aPrime,
                                         const model::Vec3& bPrime);
 
