@@ -12,16 +12,6 @@ namespace devsurf::app {
 
 namespace {
 
-std::string option(const std::vector<std::pair<std::string, std::string>>& options,
-                   const std::string& name) {
-    for (const auto& [key, value] : options) {
-        if (key == name) {
-            return value;
-        }
-    }
-    return {};
-}
-
 model::CreaseCondition parseCondition(const std::string& text) {
     if (text == "curved-fold") {
         return model::CreaseCondition::CurvedFold;
@@ -47,19 +37,13 @@ int runCreaseCommand(const std::vector<std::string>& positional,
     if (positional.size() != 1) {
         throw std::invalid_argument("expected one project file");
     }
-    const std::string idsText = option(options, "--edges");
-    if (idsText.empty()) {
-        throw std::invalid_argument("the creases are missing (use --edges IDS)");
-    }
-    const std::string conditionText = option(options, "--condition");
-    if (conditionText.empty()) {
-        throw std::invalid_argument(
-            "the condition is missing (use --condition curved-fold|geodesic|none)");
-    }
-    const std::string output = option(options, "-o");
-    if (output.empty()) {
-        throw std::invalid_argument("the output file is missing (use -o FILE)");
-    }
+    const std::string idsText =
+        requiredOption(options, "--edges", "the creases are missing (use --edges IDS)");
+    const std::string conditionText =
+        requiredOption(options, "--condition",
+                       "the condition is missing (use --condition curved-fold|geodesic|none)");
+    const std::string output =
+        requiredOption(options, "-o", "the output file is missing (use -o FILE)");
     const std::vector<std::uint32_t> ids = parseIds(idsText, "--edges", "edge");
     const model::CreaseCondition condition = parseCondition(conditionText);
     model::Project project = io::loadProjectFile(QString::fromStdString(positional[0]));

@@ -152,6 +152,15 @@ void printEntities(const model::Project& project, const EntityListing& listing, 
     }
 }
 
+std::string requiredOption(const std::vector<std::pair<std::string, std::string>>& options,
+                           const std::string& name, const std::string& missing) {
+    std::string value = option(options, name);
+    if (value.empty()) {
+        throw std::invalid_argument(missing);
+    }
+    return value;
+}
+
 std::size_t surfaceOption(const std::vector<std::pair<std::string, std::string>>& options,
                           const model::Project& project, const std::string& purpose) {
     if (project.surfaces.empty()) {
@@ -211,14 +220,10 @@ int runPinCommand(const std::vector<std::string>& positional,
     if (positional.size() != 1) {
         throw std::invalid_argument("expected one project file");
     }
-    const std::string idsText = option(options, "--vertices");
-    if (idsText.empty()) {
-        throw std::invalid_argument("the vertices are missing (use --vertices IDS)");
-    }
-    const std::string output = option(options, "-o");
-    if (output.empty()) {
-        throw std::invalid_argument("the output file is missing (use -o FILE)");
-    }
+    const std::string idsText =
+        requiredOption(options, "--vertices", "the vertices are missing (use --vertices IDS)");
+    const std::string output =
+        requiredOption(options, "-o", "the output file is missing (use -o FILE)");
     const std::vector<model::VertexId> ids = parseVertexIds(idsText, "--vertices");
     model::Project project = io::loadProjectFile(QString::fromStdString(positional[0]));
     const std::size_t index = surfaceOption(options, project, "pin vertices of");

@@ -29,6 +29,11 @@ std::vector<model::VertexId> parseVertexIds(const std::string& text, const std::
 std::vector<std::uint32_t> parseIds(const std::string& text, const std::string& option,
                                     const std::string& what);
 
+// The value of a required option; throws std::invalid_argument(missing) when it is absent or
+// empty.
+std::string requiredOption(const std::vector<std::pair<std::string, std::string>>& options,
+                           const std::string& name, const std::string& missing);
+
 // The 0-based surface index of option --surface K (1-based; 0 without the option). Throws
 // std::invalid_argument if K is not a surface of the project or the project has none (`purpose`
 // completes "the project has no surface to …").

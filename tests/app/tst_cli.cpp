@@ -271,6 +271,46 @@ private slots:
         QCOMPARE(lines[5], "Wrote " + out);
     }
 
+    void creaseConditionsAreSetListedAndSolved() {
+        const QString file = path("annulus-crease.devsurf");
+        QCOMPARE(cli({"example", "annulus", "-o", file}).exitCode, 0);
+        const model::CompositeSurface surface = io::loadProjectFile(file).surfaces[0];
+        model::EdgeId crease = model::kInvalidId;
+        model::EdgeId boundary = model::kInvalidId;
+        for (const auto& [id, record] : surface.edges()) {
+            if (record.isSpline()) {
+                (surface.facesOfEdge(id).size() == 2 ? crease : boundary) = id;
+            }
+        }
+        const QString out = path("creased.devsurf");
+        Run run = cli({"crease", file, "--edges", QString::number(crease), "--condition",
+                       "curved-fold", "-o", out});
+        QCOMPARE(run.exitCode, 0);
+        QCOMPARE(io::loadProjectFile(out).surfaces[0].edge(crease).condition,
+                 model::CreaseCondition::CurvedFold);
+        run = cli({"info", out, "--edges"});
+        QVERIFY(run.out.contains(QString("    %1 S ").arg(crease)));
+        QVERIFY(run.out.contains("crease curved-fold F "));
+        // The flat annulus satisfies the condition: solving keeps it as it is.
+        QCOMPARE(cli({"solve", out, "-o", path("creased-solved.devsurf")}).exitCode, 0);
+        // A boundary curve is no crease (input error, exit 2); a bad or unsolved condition and
+        // missing options are usage errors (exit 1); nothing is written.
+        const QString never = path("never-creased.devsurf");
+        run = cli({"crease", file, "--edges", QString::number(boundary), "--condition", "geodesic",
+                   "-o", never});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY(run.err.contains(QString::number(boundary)));
+        QCOMPARE(run.err.count('\n'), 1);
+        for (const QString& condition : {QString("folded"), QString("straight")}) {
+            QCOMPARE(cli({"crease", file, "--edges", QString::number(crease), "--condition",
+                          condition, "-o", never})
+                         .exitCode,
+                     1);
+        }
+        QCOMPARE(cli({"crease", file, "--condition", "none", "-o", never}).exitCode, 1);
+        QVERIFY(!QFile::exists(never));
+    }
+
     void dragMovesTheVerticesAndKeepsThePins() {
         const QString file = path("drag.devsurf");
         QCOMPARE(cli({"example", "annulus", "-o", file}).exitCode, 0);
