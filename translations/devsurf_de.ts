@@ -319,7 +319,7 @@
 |det(a-b, a&apos;, b&apos;)|
 (ratio)</source>
         <translation>Abwickelbarkeit
-|det(a-b, a', b')|
+|det(a-b, a&apos;, b&apos;)|
 (Verhältnis)</translation>
     </message>
     <message>
@@ -2111,8 +2111,8 @@
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="439"/>
-        <location filename="../views/scene_view.cpp" line="448"/>
+        <location filename="../views/scene_view.cpp" line="449"/>
+        <location filename="../views/scene_view.cpp" line="458"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>Fläche %1 ist ungültig und wird nicht angezeigt.</translation>
     </message>
@@ -2170,6 +2170,19 @@
         <location filename="../views/scene_view_input.cpp" line="74"/>
         <source>surface %1: %2</source>
         <translation>Fläche %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::views::ViewOverlay</name>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="78"/>
+        <source>Mountain fold</source>
+        <translation>Bergfalte</translation>
+    </message>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="81"/>
+        <source>Valley fold</source>
+        <translation>Talfalte</translation>
     </message>
 </context>
 <context>

@@ -312,7 +312,7 @@
 |det(a-b, a&apos;, b&apos;)|
 (ratio)</source>
         <translation>可展性
-|det(a-b, a', b')|
+|det(a-b, a&apos;, b&apos;)|
 (比)</translation>
     </message>
     <message>
@@ -2085,8 +2085,8 @@
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="439"/>
-        <location filename="../views/scene_view.cpp" line="448"/>
+        <location filename="../views/scene_view.cpp" line="449"/>
+        <location filename="../views/scene_view.cpp" line="458"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>曲面 %1 は有効でないため表示されません。</translation>
     </message>
@@ -2144,6 +2144,19 @@
         <location filename="../views/scene_view_input.cpp" line="74"/>
         <source>surface %1: %2</source>
         <translation>曲面 %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::views::ViewOverlay</name>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="78"/>
+        <source>Mountain fold</source>
+        <translation>山折り</translation>
+    </message>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="81"/>
+        <source>Valley fold</source>
+        <translation>谷折り</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,7 @@
 
 #include "model/pattern/cutting_pattern.h"
 #include "model/sampled_mesh.h"
+#include "model/strip.h"
 
 #include <algorithm>
 #include <cmath>
@@ -104,8 +105,15 @@ SurfaceScene buildSpatialScene(const model::CompositeSurface& surface, int surfa
         n = len > 0.0 ? n / len : Vec3(0.0, 0.0, 1.0);
     }
 
+    std::map<EdgeId, model::FoldAssignment> folds;
+    for (const model::Crease& crease : model::creasesOf(surface, model::stripsOf(surface), mesh)) {
+        folds[crease.edge] = crease.assignment;
+    }
     for (const auto& [id, indices] : edgePolylines(surface, mesh)) {
         EdgeCurve curve = makeCurve(surface, id);
+        if (const auto fold = folds.find(id); fold != folds.end()) {
+            curve.fold = fold->second;
+        }
         for (int v : indices) {
             curve.points.push_back(mesh.vertices[static_cast<std::size_t>(v)]);
         }
@@ -160,11 +168,23 @@ DevelopmentScenes buildDevelopmentScenes(const model::Project& project) {
             scene.polygons.push_back(std::move(polygon));
             scene.polygonFace.push_back(piece.mesh.faceOrigin[f]);
         }
+        // The pattern's mountain and valley paths say how each crease is folded.
+        std::map<EdgeId, model::FoldAssignment> folds;
+        for (const model::PatternPath& path : piece.paths) {
+            if (path.layer == model::PatternLayer::Mountain) {
+                folds[path.edge] = model::FoldAssignment::Mountain;
+            } else if (path.layer == model::PatternLayer::Valley) {
+                folds[path.edge] = model::FoldAssignment::Valley;
+            }
+        }
         for (const model::PatternPath& path : piece.edgeCurves) {
             if (!surface.hasEdge(path.edge)) {
                 continue;
             }
             EdgeCurve curve = makeCurve(surface, path.edge);
+            if (const auto fold = folds.find(path.edge); fold != folds.end() && curve.crease) {
+                curve.fold = fold->second;
+            }
             for (const Vec2& p2 : path.points) {
                 curve.points.push_back(toScene(p2));
             }

@@ -4,6 +4,7 @@
 // VTK), built from the model's sampled mesh and development.
 
 #include "model/composite_surface.h"
+#include "model/creases.h"
 #include "model/project.h"
 #include "model/vec3.h"
 
@@ -20,6 +21,8 @@ struct EdgeCurve {
     model::EdgeId id = model::kInvalidId;
     bool spline = false;
     bool crease = false; // an S-edge shared by two faces
+    // How a crease is folded (model::creasesOf), drawn in the origami colours.
+    model::FoldAssignment fold = model::FoldAssignment::Flat;
     bool boundary = false;
     std::vector<model::Vec3> points;
 };

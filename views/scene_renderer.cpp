@@ -120,6 +120,11 @@ SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
     // Creases: the folds the design is about, thicker and darker than everything else.
     m_creases = &addLayer();
     lineStyle(*m_creases, 0.55, 0.0, 0.1, 4.0, spatial);
+    // Folded creases in the origami colours: mountain red, valley blue.
+    m_mountains = &addLayer();
+    lineStyle(*m_mountains, 0.9, 0.1, 0.1, 4.0, spatial);
+    m_valleys = &addLayer();
+    lineStyle(*m_valleys, 0.1, 0.35, 0.95, 4.0, spatial);
     m_controlPolygons = &addLayer();
     lineStyle(*m_controlPolygons, 0.1, 0.3, 0.95, 1.5, false);
     m_controlPoints = &addLayer();
@@ -225,6 +230,8 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
     std::vector<std::vector<Vec3>> rulingEdges;
     std::vector<std::vector<Vec3>> splineEdges;
     std::vector<std::vector<Vec3>> creases;
+    std::vector<std::vector<Vec3>> mountains;
+    std::vector<std::vector<Vec3>> valleys;
     std::vector<std::pair<Vec3, Vec3>> rulings;
     std::vector<std::pair<Vec3, Vec3>> outline;
     std::vector<std::pair<Vec3, Vec3>> overlapOutline;
@@ -242,8 +249,14 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
             }
         }
         for (const EdgeCurve& edge : scene.edges) {
-            (edge.crease ? creases : (edge.spline ? splineEdges : rulingEdges))
-                .push_back(edge.points);
+            if (edge.crease && edge.fold == model::FoldAssignment::Mountain) {
+                mountains.push_back(edge.points);
+            } else if (edge.crease && edge.fold == model::FoldAssignment::Valley) {
+                valleys.push_back(edge.points);
+            } else {
+                (edge.crease ? creases : (edge.spline ? splineEdges : rulingEdges))
+                    .push_back(edge.points);
+            }
         }
         rulings.insert(rulings.end(), scene.rulings.begin(), scene.rulings.end());
         outline.insert(outline.end(), scene.outline.begin(), scene.outline.end());
@@ -261,6 +274,9 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
     m_rulingEdges->assign(polylineData(rulingEdges), geometryOnly);
     m_splineEdges->assign(polylineData(splineEdges), geometryOnly);
     m_creases->assign(polylineData(creases), geometryOnly);
+    m_mountains->assign(polylineData(mountains), geometryOnly);
+    m_valleys->assign(polylineData(valleys), geometryOnly);
+    m_foldCounts = {static_cast<int>(mountains.size()), static_cast<int>(valleys.size())};
     m_rulings->assign(segmentData(rulings), geometryOnly);
     m_outline->assign(segmentData(outline), geometryOnly);
     m_overlapOutline->assign(segmentData(overlapOutline), geometryOnly);

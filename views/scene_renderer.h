@@ -39,6 +39,8 @@ public:
 
     // The pinned vertices drawn (red).
     const std::set<document::Pick>& pinnedDrawn() const { return m_pinnedDrawn; }
+    // Mountain and valley creases drawn (for the fold legend and tests).
+    std::pair<int, int> foldCounts() const { return m_foldCounts; }
 
     // Patch colours, or a quality measure with its legend (3D view only).
     void setColourBy(ColourBy by);
@@ -92,6 +94,9 @@ private:
     Layer* m_rulingEdges = nullptr;
     Layer* m_splineEdges = nullptr;
     Layer* m_creases = nullptr;
+    Layer* m_mountains = nullptr;
+    Layer* m_valleys = nullptr;
+    std::pair<int, int> m_foldCounts; // mountain and valley creases drawn
     Layer* m_rulings = nullptr;
     Layer* m_outline = nullptr;
     Layer* m_overlapOutline = nullptr; // development: pieces that overlap, in red

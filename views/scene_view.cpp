@@ -278,6 +278,14 @@ double SceneView::scaleBarPixels() const {
     return d->overlay->scaleBarPixels();
 }
 
+std::pair<int, int> SceneView::foldsDrawn() const {
+    return d->scene->foldCounts();
+}
+
+std::pair<bool, bool> SceneView::foldLegend() const {
+    return {d->overlay->showsMountainLegend(), d->overlay->showsValleyLegend()};
+}
+
 QString SceneView::scaleBarText() const {
     return d->overlay->scaleBarText();
 }
@@ -364,6 +372,8 @@ void SceneView::updateOverlay() {
         d->barLength = 0.0;
         d->overlay->setScaleBar(0.0, QString());
     }
+    const auto [mountains, valleys] = d->scene->foldCounts();
+    d->overlay->setFoldLegend(mountains > 0, valleys > 0);
     std::vector<ViewOverlay::Label> labels;
     if (d->showLabels) {
         for (const LabelAnchor& anchor : d->anchors) {

@@ -79,6 +79,9 @@ public:
     double scaleBarLength() const;
     double scaleBarPixels() const;
     QString scaleBarText() const;
+    // Mountain and valley creases drawn, and whether the fold legend shows each.
+    std::pair<int, int> foldsDrawn() const;
+    std::pair<bool, bool> foldLegend() const;
     // The 3D view draws an orientation triad (x red, y green, z blue) in its lower left.
     bool hasOrientationTriad() const;
     bool showPatchLabels() const;

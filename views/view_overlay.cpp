@@ -4,6 +4,7 @@
 #include <QPaintEvent>
 #include <QPainter>
 #include <QPainterPath>
+#include <QPen>
 
 #include <cmath>
 
@@ -38,6 +39,14 @@ void ViewOverlay::setLabels(std::vector<Label> labels) {
     }
 }
 
+void ViewOverlay::setFoldLegend(bool mountains, bool valleys) {
+    if (mountains != m_mountains || valleys != m_valleys) {
+        m_mountains = mountains;
+        m_valleys = valleys;
+        update();
+    }
+}
+
 void ViewOverlay::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     painter.setRenderHint(QPainter::Antialiasing);
@@ -61,6 +70,29 @@ void ViewOverlay::paintEvent(QPaintEvent*) {
         painter.drawRoundedRect(box, 3, 3);
         painter.setPen(ink);
         painter.drawText(box, Qt::AlignCenter, label.text);
+    }
+
+    // Fold legend: the origami colours of the creases, upper left.
+    std::vector<std::pair<QColor, QString>> folds;
+    if (m_mountains) {
+        folds.emplace_back(QColor(230, 25, 25), tr("Mountain fold"));
+    }
+    if (m_valleys) {
+        folds.emplace_back(QColor(25, 90, 240), tr("Valley fold"));
+    }
+    double top = 10.0;
+    for (const auto& [colour, text] : folds) {
+        const QRectF box(10.0, top, 40.0 + metrics.horizontalAdvance(text) + 12.0,
+                         metrics.height() + 6.0);
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(halo);
+        painter.drawRoundedRect(box, 3, 3);
+        painter.setPen(QPen(colour, 4.0));
+        painter.drawLine(QPointF(box.left() + 6.0, box.center().y()),
+                         QPointF(box.left() + 34.0, box.center().y()));
+        painter.setPen(ink);
+        painter.drawText(box.adjusted(40.0, 0, 0, 0), Qt::AlignVCenter | Qt::AlignLeft, text);
+        top += box.height() + 4.0;
     }
 
     if (m_barPixels <= 0.0) {

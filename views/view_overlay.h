@@ -25,6 +25,11 @@ public:
     // none when pixels is not positive.
     void setScaleBar(double pixels, const QString& text);
     void setLabels(std::vector<Label> labels);
+    // The fold legend in the upper left corner: a red line "Mountain fold" and a blue line
+    // "Valley fold", for those present.
+    void setFoldLegend(bool mountains, bool valleys);
+    bool showsMountainLegend() const { return m_mountains; }
+    bool showsValleyLegend() const { return m_valleys; }
 
     double scaleBarPixels() const { return m_barPixels; }
     QString scaleBarText() const { return m_barText; }
@@ -37,6 +42,8 @@ private:
     double m_barPixels = 0.0;
     QString m_barText;
     std::vector<Label> m_labels;
+    bool m_mountains = false;
+    bool m_valleys = false;
 };
 
 } // namespace devsurf::views

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 
 using devsurf::document::Change;
@@ -183,6 +184,58 @@ private slots:
             const auto [painted, paintedHeight] = paintedExtent(image);
             QVERIFY2(painted > image.width() / 3 && paintedHeight > image.height() / 3, name);
             QVERIFY(views.development->problem().isEmpty());
+        }
+    }
+
+    void mountainsAndValleysInBothViewsWithALegend() {
+        // The 3 × 3 sheet folded along its crease y = 100: the part beyond it rising towards
+        // the normal side (+z) makes that crease a valley, sinking a mountain; flat: neither.
+        for (const double degrees : {30.0, -30.0, 0.0}) {
+            devsurf::model::Project project = devsurf::model::makeExample("sheet", 3);
+            CompositeSurface& surface = project.surfaces.front();
+            const double angle = degrees * kPi / 180.0;
+            auto fold = [angle](Vec3 p) {
+                if (p.y > 100.0) {
+                    const double r = p.y - 100.0;
+                    p = Vec3(p.x, 100.0 + r * std::cos(angle), r * std::sin(angle));
+                }
+                return p;
+            };
+            std::map<devsurf::model::EdgeId, std::vector<Vec3>> controls;
+            for (const auto& [id, record] : surface.edges()) {
+                std::vector<Vec3> points;
+                for (const Vec3& p : record.controlPoints) {
+                    points.push_back(fold(p));
+                }
+                controls.emplace(id, points);
+            }
+            for (const auto& [id, p] : std::map(surface.vertices())) {
+                surface.moveVertex(id, fold(p));
+            }
+            for (const auto& [id, points] : controls) {
+                if (surface.edge(id).isSpline()) {
+                    surface.setControlPoints(id, points);
+                }
+            }
+            Views views(std::move(project));
+            QVERIFY(views.show());
+            const std::pair<int, int> expected =
+                degrees > 0 ? std::pair(0, 3) : (degrees < 0 ? std::pair(3, 0) : std::pair(0, 0));
+            QCOMPARE(views.spatial->foldsDrawn(), expected);
+            QCOMPARE(views.development->foldsDrawn(), expected);
+            const std::pair<bool, bool> legend(expected.first > 0, expected.second > 0);
+            QCOMPARE(views.spatial->foldLegend(), legend);
+            QCOMPARE(views.development->foldLegend(), legend);
+            // The valley blue is really on screen in the development (and not when flat).
+            const QImage image = views.development->grabImage();
+            int blue = 0;
+            for (int y = 0; y < image.height(); ++y) {
+                for (int x = 0; x < image.width(); ++x) {
+                    const QColor c = image.pixelColor(x, y);
+                    blue += c.blue() > 180 && c.red() < 90 && c.green() < 140 ? 1 : 0;
+                }
+            }
+            QVERIFY2((blue > 50) == (expected.second > 0), qPrintable(QString::number(blue)));
         }
     }
 
