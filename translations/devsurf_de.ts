@@ -1575,28 +1575,48 @@
 <context>
     <name>devsurf::app::PropertiesPanel</name>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="22"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="26"/>
         <source>degree %1, C%2, %3 intervals</source>
         <translation>Grad %1, C%2, %3 Intervalle</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="101"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="137"/>
         <source>&lt;b&gt;Vertex %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;Ecke %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="112"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="148"/>
         <source>&lt;b&gt;Edge %1&lt;/b&gt; from vertex %2 to vertex %3&lt;br&gt;</source>
         <translation>&lt;b&gt;Kante %1&lt;/b&gt; von Ecke %2 zu Ecke %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="76"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="112"/>
         <source>Nothing selected.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
         <translation>Nichts ausgewählt.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Klicken Sie auf eine Ecke, Kante oder ein Flächenstück, um es auszuwählen; Umschalt-Klick erweitert die Auswahl.&lt;/i&gt;</translation>
     </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="36"/>
+        <source>A crease between patches %1 (left) and %2 (right); condition: %3.&lt;br&gt;</source>
+        <translation>Ein Falz zwischen den Flächenstücken %1 (links) und %2 (rechts); Bedingung: %3.&lt;br&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="48"/>
+        <source>Mountain fold of %1° (up to %2°).</source>
+        <translation>Bergfalte um %1° (bis %2°).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="52"/>
+        <source>Valley fold of %1° (up to %2°).</source>
+        <translation>Talfalte um %1° (bis %2°).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="56"/>
+        <source>Not folded.</source>
+        <translation>Nicht gefaltet.</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="78"/>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="88"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="114"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -1604,7 +1624,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="79"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="115"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -1612,12 +1632,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="86"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="122"/>
         <source>Selected: %1, %2, %3.</source>
         <translation>Ausgewählt: %1, %2, %3.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="87"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="123"/>
         <source>%n vertex(es)</source>
         <translation>
             <numerusform>%n Ecke</numerusform>
@@ -1625,7 +1645,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="87"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="123"/>
         <source>%n edge(s)</source>
         <translation>
             <numerusform>%n Kante</numerusform>
@@ -1633,7 +1653,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="117"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="153"/>
         <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
         <translation>
             <numerusform>Spline-Kurve (S), %1, %n Kontrollpunkt.&lt;br&gt;</numerusform>
@@ -1641,22 +1661,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="120"/>
-        <source>A crease between patches %1 and %2; condition: %3.</source>
-        <translation>Ein Falz zwischen den Flächenstücken %1 und %2; Bedingung: %3.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="126"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="159"/>
         <source>A boundary curve of patch %1.</source>
         <translation>Eine Randkurve des Flächenstücks %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="129"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="163"/>
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>Erzeugende (R), eine Strecke der Länge %1 mm.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="138"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="172"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;Flächenstück %1&lt;/b&gt;: %2&lt;br&gt;Kantenbeschriftung entlang des Flächenstücks: %3&lt;br&gt;%n Ecke.</numerusform>
@@ -1664,7 +1679,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="174"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="208"/>
         <source>Cannot move</source>
         <translation>Verschieben nicht möglich</translation>
     </message>

@@ -156,8 +156,8 @@
 <context>
     <name>devsurf::app::PropertiesPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="78"/>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="88"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="114"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n patch</numerusform>
@@ -165,7 +165,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="79"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="115"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n control point</numerusform>
@@ -173,7 +173,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="87"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="123"/>
         <source>%n vertex(es)</source>
         <translation>
             <numerusform>%n vertex</numerusform>
@@ -181,7 +181,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="87"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="123"/>
         <source>%n edge(s)</source>
         <translation>
             <numerusform>%n edge</numerusform>
@@ -189,7 +189,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="117"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="153"/>
         <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
         <translation>
             <numerusform>Spline curve (S), %1, %n control point.&lt;br&gt;</numerusform>
@@ -197,7 +197,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="138"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="172"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner.</numerusform>

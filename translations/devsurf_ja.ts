@@ -1559,90 +1559,105 @@
 <context>
     <name>devsurf::app::PropertiesPanel</name>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="22"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="26"/>
         <source>degree %1, C%2, %3 intervals</source>
         <translation>次数 %1、C%2、区間数 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="76"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="36"/>
+        <source>A crease between patches %1 (left) and %2 (right); condition: %3.&lt;br&gt;</source>
+        <translation>パッチ %1 (左) と %2 (右) の間の折り線。条件: %3。&lt;br&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="48"/>
+        <source>Mountain fold of %1° (up to %2°).</source>
+        <translation>山折り %1° (最大 %2°)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="52"/>
+        <source>Valley fold of %1° (up to %2°).</source>
+        <translation>谷折り %1° (最大 %2°)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="56"/>
+        <source>Not folded.</source>
+        <translation>折れていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="112"/>
         <source>Nothing selected.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
         <translation>何も選択されていません。&lt;br&gt;%1、%2。&lt;br&gt;&lt;i&gt;頂点・辺・パッチをクリックすると選択されます。Shift+クリックで選択に追加します。&lt;/i&gt;</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="78"/>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="88"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="114"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="79"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="115"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="86"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="122"/>
         <source>Selected: %1, %2, %3.</source>
         <translation>選択: %1、%2、%3。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="87"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="123"/>
         <source>%n vertex(es)</source>
         <translation>
             <numerusform>頂点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="87"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="123"/>
         <source>%n edge(s)</source>
         <translation>
             <numerusform>辺 %n 本</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="101"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="137"/>
         <source>&lt;b&gt;Vertex %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;頂点 %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="112"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="148"/>
         <source>&lt;b&gt;Edge %1&lt;/b&gt; from vertex %2 to vertex %3&lt;br&gt;</source>
         <translation>&lt;b&gt;辺 %1&lt;/b&gt; 頂点 %2 から頂点 %3 まで&lt;br&gt;</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="117"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="153"/>
         <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
         <translation>
             <numerusform>スプライン曲線 (S)、%1、制御点 %n 個。&lt;br&gt;</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="120"/>
-        <source>A crease between patches %1 and %2; condition: %3.</source>
-        <translation>パッチ %1 と %2 の間の折り線。条件: %3。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="126"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="159"/>
         <source>A boundary curve of patch %1.</source>
         <translation>パッチ %1 の境界曲線。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="129"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="163"/>
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>母線 (R)、長さ %1 mm の線分。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="138"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="172"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;パッチ %1&lt;/b&gt;: %2&lt;br&gt;パッチに沿った辺のラベル: %3&lt;br&gt;角 %n 個。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="174"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="208"/>
         <source>Cannot move</source>
         <translation>移動できません</translation>
     </message>

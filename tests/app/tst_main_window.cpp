@@ -28,10 +28,14 @@
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
+
 #include <QTimer>
 #include <QTranslator>
 #include <QTreeView>
 #include <QUndoStack>
+#include <cmath>
+#include <map>
+#include <set>
 
 #include <set>
 
@@ -98,6 +102,54 @@ private slots:
         QVERIFY(window.developmentView()->highlightedPicks().count(expected) == 1);
         QVERIFY(window.propertiesPanel()->summaryText().contains("Vertex 5"));
         QCOMPARE(window.propertiesPanel()->coordinateEditor(0)->value(), 100.0);
+    }
+
+    void aSelectedCreaseShowsItsSidesConditionAndFold() {
+        app::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.workspace()->newFromExample(QStringLiteral("sheet"), 3);
+        document::Document& doc = *window.workspace()->document();
+        // Fold the part beyond y = 100 up by 30° (vertices and every control point): the
+        // crease y = 100 becomes a valley.
+        model::Project project = doc.project();
+        model::CompositeSurface& surface = project.surfaces.front();
+        const double angle = 30.0 * M_PI / 180.0;
+        auto fold = [angle](model::Vec3 p) {
+            if (p.y > 100.0) {
+                const double r = p.y - 100.0;
+                p = model::Vec3(p.x, 100.0 + r * std::cos(angle), r * std::sin(angle));
+            }
+            return p;
+        };
+        std::map<model::EdgeId, std::vector<model::Vec3>> controls;
+        for (const auto& [id, record] : surface.edges()) {
+            std::vector<model::Vec3> points;
+            for (const model::Vec3& p : record.controlPoints) {
+                points.push_back(fold(p));
+            }
+            controls.emplace(id, points);
+        }
+        for (const auto& [id, p] : std::map(surface.vertices())) {
+            surface.moveVertex(id, fold(p));
+        }
+        for (const auto& [id, points] : controls) {
+            if (surface.edge(id).isSpline()) {
+                surface.setControlPoints(id, points);
+            }
+        }
+        doc.resetProject(project);
+        const model::EdgeId crease = doc.surface(0).edgeBetween(4, 5);
+        QVERIFY(crease != model::kInvalidId);
+        window.workspace()->selection()->add({document::Pick::Kind::Edge, 0, crease});
+        const QString text = window.propertiesPanel()->summaryText();
+        QVERIFY2(text.contains("Valley fold of 30.0°"), qPrintable(text));
+        QVERIFY2(text.contains("condition: No condition"), qPrintable(text));
+        // A boundary curve says so, with no fold.
+        window.workspace()->selection()->clear();
+        window.workspace()->selection()->add(
+            {document::Pick::Kind::Edge, 0, doc.surface(0).edgeBetween(0, 1)});
+        QVERIFY(window.propertiesPanel()->summaryText().contains("boundary curve"));
     }
 
     void patchTreeAndViewsShareTheSelection() {

@@ -1,10 +1,14 @@
 #include "properties_panel.h"
 
 #include "../face_type_text.h"
+#include "model/creases.h"
 #include "model/document/commands/command_or_error.h"
+#include "model/document/commands/crease_condition_command.h"
 #include "model/document/commands/move_vertices_command.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
+#include "model/sampled_mesh.h"
+#include "model/strip.h"
 #include "model/surface_statistics.h"
 
 #include <QDoubleSpinBox>
@@ -23,6 +27,38 @@ QString spaceText(const model::SplineSpace& space) {
         .arg(space.degree)
         .arg(space.smoothness)
         .arg(space.intervals);
+}
+
+// A crease: its two patches (left and right of the edge's direction, seen from the normal
+// side), its condition and how it is folded.
+QString creaseText(const model::CompositeSurface& surface, model::EdgeId edge) {
+    const model::EdgeRecord& record = surface.edge(edge);
+    QString text = PropertiesPanel::tr("A crease between patches %1 (left) and %2 (right); "
+                                       "condition: %3.<br>");
+    for (const model::Crease& crease :
+         model::creasesOf(surface, model::stripsOf(surface), model::sampleSurface(surface, 8))) {
+        if (crease.edge != edge) {
+            continue;
+        }
+        text = text.arg(crease.left.face)
+                   .arg(crease.right.face)
+                   .arg(document::CreaseConditionCommand::conditionText(record.condition));
+        switch (crease.assignment) {
+        case model::FoldAssignment::Mountain:
+            return text + PropertiesPanel::tr("Mountain fold of %1° (up to %2°).")
+                              .arg(crease.foldAngleDegrees, 0, 'f', 1)
+                              .arg(crease.maxFoldAngleDegrees, 0, 'f', 1);
+        case model::FoldAssignment::Valley:
+            return text + PropertiesPanel::tr("Valley fold of %1° (up to %2°).")
+                              .arg(-crease.foldAngleDegrees, 0, 'f', 1)
+                              .arg(crease.maxFoldAngleDegrees, 0, 'f', 1);
+        case model::FoldAssignment::Flat:
+            return text + PropertiesPanel::tr("Not folded.");
+        }
+    }
+    const auto faces = surface.facesOfEdge(edge);
+    return text.arg(faces[0]).arg(faces[1]).arg(
+        document::CreaseConditionCommand::conditionText(record.condition));
 }
 
 } // namespace
@@ -117,14 +153,12 @@ void PropertiesPanel::refresh() {
                     text += tr("Spline curve (S), %1, %n control point(s).<br>", nullptr,
                                static_cast<int>(edge.controlPoints.size()))
                                 .arg(spaceText(edge.space));
-                    text += faces.size() == 2 ? tr("A crease between patches %1 and %2; "
-                                                   "condition: %3.")
-                                                    .arg(faces[0])
-                                                    .arg(faces[1])
-                                                    .arg(QString::fromLatin1(
-                                                        model::creaseConditionName(edge.condition)))
-                                              : tr("A boundary curve of patch %1.")
-                                                    .arg(faces.empty() ? 0u : faces.front());
+                    if (faces.size() == 2) {
+                        text += creaseText(surface, pick.id);
+                    } else {
+                        text += tr("A boundary curve of patch %1.")
+                                    .arg(faces.empty() ? 0u : faces.front());
+                    }
                 } else {
                     text += tr("Ruling (R), a straight segment of length %1 mm.")
                                 .arg(model::distance(surface.position(edge.from),
