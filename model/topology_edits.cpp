@@ -547,6 +547,14 @@ CompositeSurface moveVertices(const CompositeSurface& surface, const std::set<Ve
         }
         std::vector<Vec3> points = record.controlPoints;
         const std::size_t last = points.size() - 1;
+        if (fromMoves && toMoves) {
+            // Both ends move alike: the whole curve moves rigidly with them.
+            for (Vec3& p : points) {
+                p = motion.apply(p);
+            }
+            result.setControlPoints(id, std::move(points));
+            continue;
+        }
         // The neighbours of the ends keep the end tangents attached to the moved vertices.
         if (fromMoves) {
             points[1] = motion.apply(record.controlPoints[1]);

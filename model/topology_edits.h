@@ -66,9 +66,10 @@ CompositeSurface refineSplineClass(const CompositeSurface& surface, EdgeId edge,
 // The S-edges of the spline class that contains `edge` (an S-edge), in id order.
 std::vector<EdgeId> splineClassOf(const CompositeSurface& surface, EdgeId edge);
 
-// Moves the given vertices by `motion`; the control points next to a moved vertex (index 1 and
-// N−2 of the S-edges starting or ending there) move rigidly with it, and the end control points
-// follow their vertices. Throws for an empty set or an unknown vertex.
+// Moves the given vertices by `motion`. An S-edge with both ends moved moves rigidly as a whole;
+// on one with a single moved end, the control point next to it (index 1 or N−2) moves rigidly
+// with it and the end control point follows the vertex. Throws for an empty set or an unknown
+// vertex.
 CompositeSurface moveVertices(const CompositeSurface& surface, const std::set<VertexId>& vertices,
                               const RigidMotion& motion);
 

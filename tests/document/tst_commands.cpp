@@ -211,6 +211,37 @@ private slots:
         QCOMPARE(doc.undoStack()->count(), 2);
     }
 
+    void rotatingARegionMovesItsCurvesRigidly() {
+        // Every vertex of the sheet beyond y = 100 turned by 30° about that line: the curves with
+        // both ends turned move as a whole, so each control point is exactly the turned one and
+        // the part beyond the crease stays flat (a clean fold).
+        Document doc;
+        doc.resetProject(makeExample("sheet", 3));
+        const CompositeSurface before = doc.surface(0);
+        std::set<VertexId> beyond;
+        for (const auto& [id, p] : before.vertices()) {
+            if (p.y > 100.0) {
+                beyond.insert(id);
+            }
+        }
+        const double angle = 30.0 * M_PI / 180.0;
+        QVERIFY(pushOrExplain(doc, MoveVerticesCommand::createRotation(doc, 0, beyond, {0, 100, 0},
+                                                                       {1, 0, 0}, angle))
+                    .isEmpty());
+        const CompositeSurface& after = doc.surface(0);
+        for (const auto& [id, record] : before.edges()) {
+            if (!record.isSpline() || record.controlPoints.front().y <= 100.0) {
+                continue;
+            }
+            for (std::size_t i = 0; i < record.controlPoints.size(); ++i) {
+                const Vec3& p = record.controlPoints[i];
+                const double r = p.y - 100.0;
+                const Vec3 turned(p.x, 100.0 + r * std::cos(angle), r * std::sin(angle));
+                QVERIFY(distance(after.edge(id).controlPoints[i], turned) < 1e-9);
+            }
+        }
+    }
+
     void consecutiveMovesMerge() {
         Document doc;
         doc.resetProject(makeExample("annulus", 2));
