@@ -1,8 +1,8 @@
 #include "solve_controller.h"
 
-#include "face_quality.h"
 #include "model/document/commands/apply_surface_command.h"
 #include "model/document/document.h"
+#include "solver/quality/quality_measures.h"
 #include "solver/worker/solver_worker.h"
 #include "workspace.h"
 
@@ -114,7 +114,7 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result,
         statuses << (result.summaries.size() > 1 ? tr("surface %1 %2").arg(s + 1).arg(status)
                                                  : status);
         if (!summary.toleranceReached && s < result.surfaces.size()) {
-            const auto faces = faceDevelopability(result.surfaces[s]);
+            const auto faces = solver::developabilityByFace(result.surfaces[s]);
             for (std::size_t i = 0; i < std::min<std::size_t>(3, faces.size()); ++i) {
                 report.worstFaces << tr("patch %1: %2")
                                          .arg(faces[i].first)

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <map>
 #include <utility>
 #include <vector>
@@ -130,6 +131,35 @@ QualityMeasures measureQuality(const model::CompositeSurface& surface,
     q.developabilityMean =
         q.developabilitySamples > 0 ? developabilitySum / q.developabilitySamples : 0.0;
     return q;
+}
+
+std::vector<std::pair<model::FaceId, double>>
+developabilityByFace(const model::CompositeSurface& surface, int samplesPerInterval) {
+    std::vector<std::pair<model::FaceId, double>> result;
+    std::vector<model::Strip> strips;
+    try {
+        strips = model::stripsOf(surface);
+    } catch (const std::exception&) {
+        return result; // an invalid surface has no strips to measure
+    }
+    const int samples = std::max(1, samplesPerInterval);
+    for (const model::Strip& strip : strips) {
+        if (strip.isCone()) {
+            continue;
+        }
+        const int intervals = std::max(1, surface.edge(strip.aSide.edge).space.intervals);
+        double worst = 0.0;
+        for (int i = 0; i < intervals * samples; ++i) {
+            const double u = (i + 0.5) / (intervals * samples);
+            worst = std::max(worst, normalizedDevelopabilityResidual(
+                                        strip.a.evaluate(u) - strip.b.evaluate(u),
+                                        strip.a.derivative(u, 1), strip.b.derivative(u, 1)));
+        }
+        result.emplace_back(strip.face, worst);
+    }
+    std::sort(result.begin(), result.end(),
+              [](const auto& a, const auto& b) { return a.second > b.second; });
+    return result;
 }
 
 std::string QualityMeasures::describe() const {

@@ -3,6 +3,8 @@
 #include "model/composite_surface.h"
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace devsurf::solver {
 
@@ -35,6 +37,12 @@ struct QualityMeasures {
 // Throws model::ModelError if the surface is not valid.
 QualityMeasures measureQuality(const model::CompositeSurface& surface,
                                const QualityOptions& options = {});
+
+// The largest normalised developability residual of every strip patch, sampled as
+// measureQuality does (samplesPerInterval midpoints per interval), worst first; cones and planar
+// patches are developable by construction and are not listed. Empty for an invalid surface.
+std::vector<std::pair<model::FaceId, double>>
+developabilityByFace(const model::CompositeSurface& surface, int samplesPerInterval = 20);
 
 // The normalised developability residual of one ruled surface at u (docs/math.md §8, from (2)); 0
 // if a factor vanishes.

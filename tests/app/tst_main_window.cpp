@@ -9,6 +9,7 @@
 #include "panels/patch_panel.h"
 #include "panels/patch_tree_model.h"
 #include "panels/properties_panel.h"
+#include "surface_transform.h"
 #include "test_registry.h"
 #include "views/development_view.h"
 #include "views/surface_view.h"
@@ -34,7 +35,6 @@
 #include <QTreeView>
 #include <QUndoStack>
 #include <cmath>
-#include <map>
 #include <set>
 
 #include <set>
@@ -114,30 +114,7 @@ private slots:
         // crease y = 100 becomes a valley.
         model::Project project = doc.project();
         model::CompositeSurface& surface = project.surfaces.front();
-        const double angle = 30.0 * M_PI / 180.0;
-        auto fold = [angle](model::Vec3 p) {
-            if (p.y > 100.0) {
-                const double r = p.y - 100.0;
-                p = model::Vec3(p.x, 100.0 + r * std::cos(angle), r * std::sin(angle));
-            }
-            return p;
-        };
-        std::map<model::EdgeId, std::vector<model::Vec3>> controls;
-        for (const auto& [id, record] : surface.edges()) {
-            std::vector<model::Vec3> points;
-            for (const model::Vec3& p : record.controlPoints) {
-                points.push_back(fold(p));
-            }
-            controls.emplace(id, points);
-        }
-        for (const auto& [id, p] : std::map(surface.vertices())) {
-            surface.moveVertex(id, fold(p));
-        }
-        for (const auto& [id, points] : controls) {
-            if (surface.edge(id).isSpline()) {
-                surface.setControlPoints(id, points);
-            }
-        }
+        devsurf::test::foldBeyond(surface, 100.0, 30.0 * M_PI / 180.0);
         doc.resetProject(project);
         const model::EdgeId crease = doc.surface(0).edgeBetween(4, 5);
         QVERIFY(crease != model::kInvalidId);

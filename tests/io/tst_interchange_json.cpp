@@ -1,6 +1,7 @@
 #include "io/interchange_json.h"
 #include "model/examples.h"
 #include "model/strip.h"
+#include "surface_transform.h"
 #include "test_registry.h"
 
 #include <QJsonArray>
@@ -9,7 +10,6 @@
 #include <QTest>
 
 #include <cmath>
-#include <map>
 
 using namespace devsurf;
 
@@ -112,31 +112,8 @@ private slots:
                     if (std::string(name) != "sheet") {
                         continue;
                     }
-                    const double angle = degrees * M_PI / 180.0;
-                    auto fold = [angle](model::Vec3 p) {
-                        if (p.y > 100.0) {
-                            const double r = p.y - 100.0;
-                            p = {p.x, 100.0 + r * std::cos(angle), r * std::sin(angle)};
-                        }
-                        return p;
-                    };
                     model::CompositeSurface& surface = project.surfaces.front();
-                    std::map<model::EdgeId, std::vector<model::Vec3>> controls;
-                    for (const auto& [id, record] : surface.edges()) {
-                        std::vector<model::Vec3> points;
-                        for (const model::Vec3& p : record.controlPoints) {
-                            points.push_back(fold(p));
-                        }
-                        controls.emplace(id, points);
-                    }
-                    for (const auto& [id, p] : std::map(surface.vertices())) {
-                        surface.moveVertex(id, fold(p));
-                    }
-                    for (const auto& [id, points] : controls) {
-                        if (surface.edge(id).isSpline()) {
-                            surface.setControlPoints(id, points);
-                        }
-                    }
+                    devsurf::test::foldBeyond(surface, 100.0, degrees * M_PI / 180.0);
                     QVERIFY(surface.validate().empty());
                 }
                 const QJsonObject surface =

@@ -3,13 +3,13 @@
 #include "model/pattern/cutting_pattern.h"
 #include "model/sampled_mesh.h"
 #include "straight_control_points.h"
+#include "surface_transform.h"
 #include "test_registry.h"
 
 #include <QTest>
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <map>
 
 using namespace devsurf::model;
@@ -58,26 +58,6 @@ double spatialArea(const CompositeSurface& surface) {
         }
     }
     return area;
-}
-
-// Moves every vertex and control point of a surface by f.
-void transform(CompositeSurface& surface, const std::function<Vec3(const Vec3&)>& f) {
-    std::map<EdgeId, std::vector<Vec3>> controls;
-    for (const auto& [id, record] : surface.edges()) {
-        if (record.isSpline()) {
-            std::vector<Vec3> points;
-            for (const Vec3& p : record.controlPoints) {
-                points.push_back(f(p));
-            }
-            controls.emplace(id, points);
-        }
-    }
-    for (const auto& [id, position] : std::map<VertexId, Vec3>(surface.vertices())) {
-        surface.moveVertex(id, f(position));
-    }
-    for (auto& [id, points] : controls) {
-        surface.setControlPoints(id, points);
-    }
 }
 
 // A band of strips winding one and a half times around the z-axis while rising: it does not
@@ -284,13 +264,7 @@ private slots:
         for (const double degrees : {30.0, -30.0}) {
             Project project = makeExample("sheet", 3);
             const double angle = degrees * kPi / 180;
-            transform(project.surfaces.front(), [angle](const Vec3& p) {
-                if (p.y <= 100.0) {
-                    return p;
-                }
-                const double r = p.y - 100.0;
-                return Vec3(p.x, 100.0 + r * std::cos(angle), r * std::sin(angle));
-            });
+            devsurf::test::foldBeyond(project.surfaces.front(), 100.0, angle);
             PatternOptions options = sideBySide();
             options.rulings = true;
             const CuttingPattern pattern = buildCuttingPattern(project, options);
@@ -339,7 +313,7 @@ private slots:
         }
         // A sheet turned by 30° in space: the layout turns it back to save material.
         const double turn = 30.0 * kPi / 180;
-        transform(project.surfaces[3], [turn](const Vec3& p) {
+        devsurf::test::transformSurface(project.surfaces[3], [turn](const Vec3& p) {
             return Vec3(std::cos(turn) * p.x - std::sin(turn) * p.y,
                         std::sin(turn) * p.x + std::cos(turn) * p.y, p.z);
         });

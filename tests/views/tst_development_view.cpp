@@ -3,6 +3,7 @@
 #include "model/document/selection.h"
 #include "model/examples.h"
 #include "straight_control_points.h"
+#include "surface_transform.h"
 #include "test_registry.h"
 #include "views/development_view.h"
 #include "views/surface_view.h"
@@ -12,7 +13,6 @@
 
 #include <cmath>
 #include <limits>
-#include <map>
 #include <optional>
 
 using devsurf::document::Change;
@@ -193,30 +193,7 @@ private slots:
         for (const double degrees : {30.0, -30.0, 0.0}) {
             devsurf::model::Project project = devsurf::model::makeExample("sheet", 3);
             CompositeSurface& surface = project.surfaces.front();
-            const double angle = degrees * kPi / 180.0;
-            auto fold = [angle](Vec3 p) {
-                if (p.y > 100.0) {
-                    const double r = p.y - 100.0;
-                    p = Vec3(p.x, 100.0 + r * std::cos(angle), r * std::sin(angle));
-                }
-                return p;
-            };
-            std::map<devsurf::model::EdgeId, std::vector<Vec3>> controls;
-            for (const auto& [id, record] : surface.edges()) {
-                std::vector<Vec3> points;
-                for (const Vec3& p : record.controlPoints) {
-                    points.push_back(fold(p));
-                }
-                controls.emplace(id, points);
-            }
-            for (const auto& [id, p] : std::map(surface.vertices())) {
-                surface.moveVertex(id, fold(p));
-            }
-            for (const auto& [id, points] : controls) {
-                if (surface.edge(id).isSpline()) {
-                    surface.setControlPoints(id, points);
-                }
-            }
+            devsurf::test::foldBeyond(surface, 100.0, degrees * kPi / 180.0);
             Views views(std::move(project));
             QVERIFY(views.show());
             const std::pair<int, int> expected =
