@@ -208,6 +208,30 @@ void writeSurface(JsonWriter& w, const model::CompositeSurface& surface, int sam
     }
     w.text += "],\n      ";
 
+    w.key("rulings");
+    w.text += "[";
+    first = true;
+    for (const auto& [edgeId, record] : surface.edges()) {
+        if (record.isSpline() || surface.facesOfEdge(edgeId).size() != 2) {
+            continue;
+        }
+        w.text += first ? "\n        {" : ",\n        {";
+        first = false;
+        w.key("edge");
+        w.integer(edgeId);
+        w.text += ", ";
+        w.key("from");
+        w.point(surface.position(record.from));
+        w.text += ", ";
+        w.key("to");
+        w.point(surface.position(record.to));
+        w.text += ", ";
+        w.key("smooth");
+        w.text += record.smooth ? "true" : "false";
+        w.text += "}";
+    }
+    w.text += "],\n      ";
+
     const Development development = unfoldSampledMesh(mesh);
     w.key("mesh");
     w.text += "{\n        ";

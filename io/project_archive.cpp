@@ -19,7 +19,8 @@ namespace devsurf::io::versions {
 inline constexpr unsigned kProject = 1;
 // 2: pinned vertices (project file format 2).
 inline constexpr unsigned kSurface = 2;
-inline constexpr unsigned kEdge = 1;
+// 2: the smooth flag of rulings (project file format 3).
+inline constexpr unsigned kEdge = 2;
 } // namespace devsurf::io::versions
 
 BOOST_SERIALIZATION_SPLIT_FREE(devsurf::model::Project)
@@ -118,6 +119,8 @@ template <class Archive> void save(Archive& ar, const EdgeRecord& e, unsigned /*
     const int label = static_cast<int>(e.label);
     ar << e.from << e.to << label;
     if (!e.isSpline()) {
+        const int smooth = e.smooth ? 1 : 0;
+        ar << smooth;
         return;
     }
     const int condition = static_cast<int>(e.condition);
@@ -138,6 +141,14 @@ template <class Archive> void load(Archive& ar, EdgeRecord& e, unsigned version)
     }
     e.label = static_cast<EdgeLabel>(label);
     if (!e.isSpline()) {
+        if (version >= 2) {
+            int smooth = 0;
+            ar >> smooth;
+            if (smooth != 0 && smooth != 1) {
+                throw FileError("it holds a ruling with an invalid smooth flag");
+            }
+            e.smooth = smooth == 1;
+        }
         return;
     }
     int condition = 0;

@@ -233,6 +233,7 @@ EdgeId CompositeSurface::setSpline(VertexId a, VertexId b, const SplineSpace& sp
     record.label = EdgeLabel::Spline;
     record.space = space;
     record.controlPoints = std::move(controlPoints);
+    record.smooth = false;
     return id;
 }
 
@@ -242,10 +243,19 @@ void CompositeSurface::setRuling(EdgeId edge) {
     record.space = SplineSpace{};
     record.controlPoints.clear();
     record.condition = CreaseCondition::None;
+    record.smooth = false;
 }
 
 void CompositeSurface::setCreaseCondition(EdgeId edge, CreaseCondition condition) {
     mutableEdge(edge).condition = condition;
+}
+
+void CompositeSurface::setSmooth(EdgeId edge, bool smooth) {
+    EdgeRecord& record = mutableEdge(edge);
+    if (record.isSpline() && smooth) {
+        throw ModelError("edge " + str(edge) + " is a curve; only rulings are smooth or sharp.");
+    }
+    record.smooth = smooth;
 }
 
 void CompositeSurface::reverseEdge(EdgeId edge) {
@@ -465,7 +475,13 @@ std::vector<std::string> CompositeSurface::validate() const {
             if (!record.controlPoints.empty() || record.condition != CreaseCondition::None) {
                 problems.push_back(name + " is a ruling but carries spline data.");
             }
+            if (record.smooth && facesOfEdge(id).size() != 2) {
+                problems.push_back(name + " is marked smooth but is not shared by two faces.");
+            }
             continue;
+        }
+        if (record.smooth) {
+            problems.push_back(name + " is a curve but is marked smooth (only rulings are).");
         }
         if (!record.space.isValid()) {
             problems.push_back(name + " has an invalid spline space (" + record.space.describe() +
@@ -543,7 +559,8 @@ std::size_t CompositeSurface::controlPointCount() const {
 bool CompositeSurface::operator==(const CompositeSurface& other) const {
     auto sameEdges = [](const EdgeRecord& a, const EdgeRecord& b) {
         return a.from == b.from && a.to == b.to && a.label == b.label && a.space == b.space &&
-               a.controlPoints == b.controlPoints && a.condition == b.condition;
+               a.controlPoints == b.controlPoints && a.condition == b.condition &&
+               a.smooth == b.smooth;
     };
     return m_name == other.m_name && m_vertices == other.m_vertices && m_faces == other.m_faces &&
            m_nextVertexId == other.m_nextVertexId && m_nextEdgeId == other.m_nextEdgeId &&

@@ -40,6 +40,9 @@ struct EdgeRecord {
     SplineSpace space;
     std::vector<Vec3> controlPoints; // clamped open curve; front() == from, back() == to
     CreaseCondition condition = CreaseCondition::None;
+    // Only meaningful for R-edges shared by two faces: the surface is smooth across the ruling
+    // (both faces have the same unit normal along it). Otherwise it may form a straight fold.
+    bool smooth = false;
 
     bool isSpline() const { return label == EdgeLabel::Spline; }
 };
@@ -73,6 +76,9 @@ public:
     // Labels an edge R and drops its control points.
     void setRuling(EdgeId edge);
     void setCreaseCondition(EdgeId edge, CreaseCondition condition);
+    // Marks an R-edge smooth (see EdgeRecord::smooth) or sharp. Throws ModelError for an
+    // unknown edge or an S-edge.
+    void setSmooth(EdgeId edge, bool smooth);
     // Reverses the stored orientation of an edge (and so its control sequence); the geometry
     // is unchanged.
     void reverseEdge(EdgeId edge);

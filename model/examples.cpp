@@ -206,6 +206,89 @@ CompositeSurface makeMixed(int intervals) {
     return s;
 }
 
+// The flat composite developable of the paper's Fig. 8: a 300 mm square of size rows of size
+// strips each. The rows are bounded by creases that bow 25 mm towards +y (the top and bottom
+// boundaries are straight) and split by straight rulings. Every interior crease carries the
+// curved-fold condition, and the two corners of the bottom edge are pinned, so that dragging
+// interior vertices up folds the sheet along curved creases. (Pinning all four corners would
+// make the sheet rigid: the distance between two pinned corners equals the length of the
+// straight line joining them in the flat sheet, so an isometric fold must keep that line
+// straight and in place, and the lines between four corners hold the whole square.)
+CompositeSurface makeFig8(int size) {
+    const double width = 300.0;
+    const double height = 300.0;
+    const double bow = 25.0;
+    const SplineSpace space{3, 2, 3};
+    CompositeSurface s;
+    s.setName("fig8");
+    auto crease = [&](int j, double x) {
+        const double amount = (j == 0 || j == size) ? 0.0 : bow;
+        return Vec3(x, height * j / size + amount * std::sin(kPi * x / width), 0.0);
+    };
+    std::vector<std::vector<VertexId>> grid(size + 1, std::vector<VertexId>(size + 1));
+    for (int j = 0; j <= size; ++j) {
+        for (int i = 0; i <= size; ++i) {
+            grid[j][i] = s.addVertex(crease(j, width * i / size));
+        }
+    }
+    for (int j = 0; j < size; ++j) {
+        for (int i = 0; i < size; ++i) {
+            s.addFace({grid[j][i], grid[j][i + 1], grid[j + 1][i + 1], grid[j + 1][i]});
+        }
+    }
+    for (int j = 0; j <= size; ++j) {
+        for (int i = 0; i < size; ++i) {
+            const double x0 = width * i / size;
+            const double x1 = width * (i + 1) / size;
+            const EdgeId edge = s.setSpline(
+                grid[j][i], grid[j][i + 1], space,
+                controlPointsAlong(space, s.position(grid[j][i]), s.position(grid[j][i + 1]),
+                                   [&](double t) { return crease(j, x0 + t * (x1 - x0)); }));
+            if (j > 0 && j < size) {
+                s.setCreaseCondition(edge, CreaseCondition::CurvedFold);
+            }
+        }
+    }
+    s.setPinned(grid[0][0], true);
+    s.setPinned(grid[0][size], true);
+    return s;
+}
+
+// A single curved crease in the spirit of the paper's Fig. 6: a 300 × 200 mm rectangle cut by
+// a crease that bows 30 mm towards +y into two strips, with the curved-fold condition on the
+// crease and the two bottom corners pinned. Lifting the top corners folds it. size is the
+// number of spline intervals per curve.
+CompositeSurface makeFig6(int intervals) {
+    const double width = 300.0;
+    const double bow = 30.0;
+    const SplineSpace space{3, 2, intervals};
+    CompositeSurface s;
+    s.setName("fig6");
+    auto curve = [&](int row, double x) {
+        const double y = 100.0 * row + (row == 1 ? bow * std::sin(kPi * x / width) : 0.0);
+        return Vec3(x, y, 0.0);
+    };
+    VertexId v[3][2];
+    for (int row = 0; row < 3; ++row) {
+        v[row][0] = s.addVertex(curve(row, 0.0));
+        v[row][1] = s.addVertex(curve(row, width));
+    }
+    s.addFace({v[0][0], v[0][1], v[1][1], v[1][0]});
+    s.addFace({v[1][0], v[1][1], v[2][1], v[2][0]});
+    for (int row = 0; row < 3; ++row) {
+        const EdgeId edge =
+            s.setSpline(v[row][0], v[row][1], space,
+                        controlPointsAlong(space, s.position(v[row][0]), s.position(v[row][1]),
+                                           [&](double t) { return curve(row, t * width); }));
+        if (row == 1) {
+            s.setCreaseCondition(edge, CreaseCondition::CurvedFold);
+        }
+    }
+    s.setPinned(v[0][0], true);
+    s.setPinned(v[0][1], true);
+    return s;
+}
+
 } // namespace
 
 const std::vector<ExampleInfo>& builtInExamples() {
@@ -215,6 +298,14 @@ const std::vector<ExampleInfo>& builtInExamples() {
         {"cylinder", "a closed cylinder of strips, size sectors around (Fig. 14)", 6, 3, 120},
         {"mixed", "strips, a pointed strip, a cone and a planar face; size intervals per curve", 2,
          1, 50},
+        {"fig8",
+         "a flat square of size × size strips with curved creases, curved-fold conditions and "
+         "the bottom corners pinned (Fig. 8)",
+         3, 2, 30},
+        {"fig6",
+         "two strips joined by one curved crease with the curved-fold condition; size "
+         "intervals per curve (Fig. 6)",
+         4, 1, 40},
     };
     return examples;
 }
@@ -239,8 +330,12 @@ Project makeExample(const std::string& name, int size) {
             project.surfaces.push_back(makeAnnulus(size));
         } else if (name == "cylinder") {
             project.surfaces.push_back(makeCylinder(size));
-        } else {
+        } else if (name == "mixed") {
             project.surfaces.push_back(makeMixed(size));
+        } else if (name == "fig8") {
+            project.surfaces.push_back(makeFig8(size));
+        } else {
+            project.surfaces.push_back(makeFig6(size));
         }
         return project;
     }

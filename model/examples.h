@@ -15,7 +15,8 @@ struct ExampleInfo {
     int maxSize;
 };
 
-// The built-in examples: sheet, annulus, cylinder, mixed. Each is exactly developable as built.
+// The built-in examples: sheet, annulus, cylinder, mixed, fig8, fig6. Each is exactly
+// developable as built; fig8 and fig6 carry curved-fold conditions and pinned vertices.
 const std::vector<ExampleInfo>& builtInExamples();
 
 // Builds an example; size is its resolution (see builtInExamples()), 0 means the default.

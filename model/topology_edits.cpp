@@ -334,6 +334,7 @@ CompositeSurface subdivideStrip(const CompositeSurface& surface, FaceId face, do
         EdgeRecord rest;
         rest.from = m;
         rest.to = original.to;
+        rest.smooth = original.smooth; // both halves of a smooth ruling stay smooth
         data.addEdge(rest);
         // Planar neighbours take the new vertex into their loop and stay planar.
         for (FaceId other : surface.facesOfEdge(ruling)) {

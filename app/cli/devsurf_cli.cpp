@@ -42,13 +42,19 @@ Commands:
                       Print surfaces, faces per type, spline spaces, control points,
                       vertices and edges; --vertices lists every vertex (id, x y z,
                       pinned, boundary), --edges every edge (id, R or S, its vertices,
-                      crease condition); --json prints those lists as JSON.
+                      crease condition, smooth or sharp); --json prints those lists
+                      as JSON.
   pin FILE --vertices IDS [--unpin] [--surface K] -o OUT.devsurf
                       Pin vertices (the solver never moves them) or release them.
-  crease FILE --edges IDS --condition curved-fold|geodesic|none [--surface K] -o OUT.devsurf
+  crease FILE --edges IDS --condition curved-fold|geodesic|straight|none [--surface K]
+        -o OUT.devsurf
                       Set the condition the solver imposes on creases: a curved fold
-                      (the crease's osculating plane bisects the two patches) or a
-                      geodesic; none clears it.
+                      (the crease's osculating plane bisects the two patches), a
+                      geodesic, or straight when unfolded (in its left patch); none
+                      clears it.
+  smooth FILE --edges IDS [--off] [--surface K] -o OUT.devsurf
+                      Mark rulings between two patches smooth (the solver keeps the
+                      surface smooth across them); --off makes them sharp again.
   validate FILE       Check every invariant of the model; list all problems.
   export-json FILE -o OUT.json [--samples N]
                       Write the interchange JSON (docs/interchange-format.md);
@@ -258,6 +264,25 @@ int commandCrease(const std::vector<std::string>& given) {
     }
 }
 
+int commandSmooth(const std::vector<std::string>& given) {
+    bool sharp = false;
+    std::vector<std::string> rest;
+    for (const std::string& arg : given) {
+        if (arg == "--off") {
+            sharp = true;
+        } else {
+            rest.push_back(arg);
+        }
+    }
+    const Arguments args = parse(rest, {"-o", "--edges", "--surface"});
+    try {
+        return app::runSmoothCommand(args.positional, {args.options.begin(), args.options.end()},
+                                     sharp);
+    } catch (const std::invalid_argument& error) {
+        throw UsageError{error.what()};
+    }
+}
+
 int commandPin(const std::vector<std::string>& given) {
     bool unpin = false;
     std::vector<std::string> rest;
@@ -356,6 +381,9 @@ int run(const std::vector<std::string>& args) {
     }
     if (command == "crease") {
         return commandCrease(rest);
+    }
+    if (command == "smooth") {
+        return commandSmooth(rest);
     }
     if (command == "export-json") {
         return commandExportJson(rest);

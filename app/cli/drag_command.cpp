@@ -2,7 +2,10 @@
 
 #include "io/project_file.h"
 #include "model/model_error.h"
+#include "solver/quality/crease_quality.h"
 #include "solver/quality/quality_measures.h"
+#include "solver/quality/shape_change.h"
+#include "solver/quality/vertex_stars.h"
 #include "solver/session/solve_session.h"
 #include "vertex_commands.h"
 
@@ -153,6 +156,28 @@ void printStep(const char* label, int index, int count, const solver::Summary& s
     std::cout << line;
 }
 
+// What a designer checks after a drag: how well the crease conditions hold and how far the
+// creases fold (measured from the geometry), and whether a strip degenerated.
+void printFoldAndShape(const model::CompositeSurface& start,
+                       const model::CompositeSurface& result) {
+    const solver::CreaseQuality creases = solver::measureCreaseQuality(result);
+    const solver::ShapeChange change = solver::measureShapeChange(start, result);
+    double defect = 0.0;
+    const auto defects = solver::vertexAngleDefects(result);
+    for (const solver::VertexAngleDefect& d : defects) {
+        defect = std::max(defect, d.defect);
+    }
+    char line[640];
+    std::snprintf(line, sizeof line,
+                  "Creases: %d with a condition, residual max %.2e mean %.2e; mean |fold angle| "
+                  "%.2f deg; angle defect at %zu interior crease vertices max %.2e rad. Shortest "
+                  "ruling %.2f of its start length, slowest curve speed %.2f of its mean.\n",
+                  creases.creases, creases.residualMax, creases.residualMean,
+                  creases.meanFoldDegrees, defects.size(), defect, change.shortestRuling,
+                  change.slowestSpeed);
+    std::cout << line;
+}
+
 } // namespace
 
 int runDragCommand(const std::vector<std::string>& positional,
@@ -284,6 +309,7 @@ int runDragCommand(const std::vector<std::string>& positional,
                   last.finalMaxConstraintResidual, last.tolerance,
                   last.toleranceReached ? "reached" : "not reached", largestMiss);
     std::cout << line;
+    printFoldAndShape(surface, session->surface());
     surface = session->surface();
     io::saveProjectFile(project, QString::fromStdString(output));
     std::cout << "Wrote " << output << "\n";

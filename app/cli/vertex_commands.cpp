@@ -75,6 +75,8 @@ QJsonObject surfaceJson(const model::CompositeSurface& surface, const EntityList
             if (edge.isSpline()) {
                 e["kind"] = curveKind(surface, id);
                 e["condition"] = model::creaseConditionName(edge.condition);
+            } else if (surface.facesOfEdge(id).size() == 2) {
+                e["smooth"] = edge.smooth;
             }
             if (const auto crease = creases.find(id); crease != creases.end()) {
                 e["assignment"] = model::foldAssignmentLetter(crease->second.assignment);
@@ -102,8 +104,8 @@ void printSurfaceText(const model::CompositeSurface& surface, std::size_t index,
         out.precision(precision);
     }
     if (listing.edges) {
-        out << "  Edges (id label from to, kind, condition; creases: mountain M, valley V or flat "
-               "F, fold angle):\n";
+        out << "  Edges (id label from to; curves: kind, condition; rulings between two patches: "
+               "smooth or sharp; creases: mountain M, valley V or flat F, fold angle):\n";
         const auto creases = creasesById(surface);
         for (const auto& [id, edge] : surface.edges()) {
             out << "    " << id << " " << (edge.isSpline() ? "S" : "R") << " " << edge.from << " "
@@ -111,6 +113,8 @@ void printSurfaceText(const model::CompositeSurface& surface, std::size_t index,
             if (edge.isSpline()) {
                 out << " " << curveKind(surface, id) << " "
                     << model::creaseConditionName(edge.condition);
+            } else if (surface.facesOfEdge(id).size() == 2) {
+                out << (edge.smooth ? " smooth" : " sharp");
             }
             if (const auto crease = creases.find(id); crease != creases.end()) {
                 char fold[64];

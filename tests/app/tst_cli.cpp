@@ -301,13 +301,59 @@ private slots:
         QCOMPARE(run.exitCode, 2);
         QVERIFY(run.err.contains(QString::number(boundary)));
         QCOMPARE(run.err.count('\n'), 1);
-        for (const QString& condition : {QString("folded"), QString("straight")}) {
-            QCOMPARE(cli({"crease", file, "--edges", QString::number(crease), "--condition",
-                          condition, "-o", never})
-                         .exitCode,
-                     1);
-        }
+        QCOMPARE(cli({"crease", file, "--edges", QString::number(crease), "--condition", "folded",
+                      "-o", never})
+                     .exitCode,
+                 1);
         QCOMPARE(cli({"crease", file, "--condition", "none", "-o", never}).exitCode, 1);
+        QVERIFY(!QFile::exists(never));
+    }
+
+    void straightConditionAndSmoothRulingsAreSetAndListed() {
+        const QString file = path("sheet-smooth.devsurf");
+        QCOMPARE(cli({"example", "sheet", "-o", file}).exitCode, 0);
+        const model::CompositeSurface surface = io::loadProjectFile(file).surfaces[0];
+        model::EdgeId crease = model::kInvalidId;
+        model::EdgeId inner = model::kInvalidId;
+        model::EdgeId outer = model::kInvalidId;
+        for (const auto& [id, record] : surface.edges()) {
+            const bool shared = surface.facesOfEdge(id).size() == 2;
+            if (record.isSpline()) {
+                crease = shared ? id : crease;
+            } else {
+                (shared ? inner : outer) = id;
+            }
+        }
+        const QString straight = path("sheet-straight.devsurf");
+        QCOMPARE(cli({"crease", file, "--edges", QString::number(crease), "--condition", "straight",
+                      "-o", straight})
+                     .exitCode,
+                 0);
+        QCOMPARE(io::loadProjectFile(straight).surfaces[0].edge(crease).condition,
+                 model::CreaseCondition::Straight);
+        const QString smooth = path("sheet-smooth-on.devsurf");
+        Run run = cli({"smooth", straight, "--edges", QString::number(inner), "-o", smooth});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY(io::loadProjectFile(smooth).surfaces[0].edge(inner).smooth);
+        run = cli({"info", smooth, "--edges"});
+        QVERIFY2(run.out.contains(QString("    %1 R ").arg(inner)), qPrintable(run.out));
+        QVERIFY(run.out.contains(" smooth\n"));
+        run = cli({"info", smooth, "--edges", "--json"});
+        QVERIFY(run.out.contains("\"smooth\": true"));
+        const QString sharp = path("sheet-smooth-off.devsurf");
+        QCOMPARE(cli({"smooth", smooth, "--edges", QString::number(inner), "--off", "-o", sharp})
+                     .exitCode,
+                 0);
+        QVERIFY(io::loadProjectFile(sharp).surfaces[0] ==
+                io::loadProjectFile(straight).surfaces[0]);
+        // A boundary ruling and a curve are refused (input error, exit 2), nothing written.
+        const QString never = path("never-smooth.devsurf");
+        for (model::EdgeId edge : {outer, crease}) {
+            run = cli({"smooth", file, "--edges", QString::number(edge), "-o", never});
+            QCOMPARE(run.exitCode, 2);
+            QVERIFY(run.err.contains(QString::number(edge)));
+        }
+        QCOMPARE(cli({"smooth", file, "-o", never}).exitCode, 1);
         QVERIFY(!QFile::exists(never));
     }
 

@@ -5,6 +5,7 @@
 #include "model/document/commands/pin_vertices_command.h"
 #include "model/document/commands/refine_spline_class_command.h"
 #include "model/document/commands/relabel_edge_command.h"
+#include "model/document/commands/smooth_rulings_command.h"
 #include "model/document/commands/split_at_ruling_command.h"
 #include "model/document/commands/subdivide_strip_command.h"
 #include "model/document/selection.h"
@@ -390,14 +391,64 @@ private slots:
             QVERIFY(refused.isRefused());
             QVERIFY2(refused.error().contains(QString::number(edge)), qPrintable(refused.error()));
         }
-        QVERIFY(CreaseConditionCommand::create(doc, 0, {crease}, CreaseCondition::Straight)
-                    .isRefused());
         QVERIFY(CreaseConditionCommand::create(doc, 0, {crease}, CreaseCondition::None)
                     .isRefused()); // already none
         QVERIFY(bytesOf(doc) == original);
         const CommandOrError set =
             CreaseConditionCommand::create(doc, 0, {crease}, CreaseCondition::CurvedFold);
         QVERIFY(set.command()->text().startsWith("Curved fold on 1 "));
+        QVERIFY(CreaseConditionCommand::create(doc, 0, {crease}, CreaseCondition::Straight)
+                    .command()
+                    ->text()
+                    .startsWith("Straight when unfolded on 1 "));
+    }
+
+    void smoothRulingsUndoRedoAndRefusals() {
+        Document doc;
+        doc.resetProject(makeExample("sheet"));
+        const std::string original = bytesOf(doc);
+        std::set<EdgeId> inner;
+        EdgeId boundaryRuling = kInvalidId;
+        EdgeId curve = kInvalidId;
+        for (const auto& [edge, record] : doc.surface(0).edges()) {
+            const bool shared = doc.surface(0).facesOfEdge(edge).size() == 2;
+            if (record.isSpline()) {
+                curve = edge;
+            } else if (shared) {
+                inner.insert(edge);
+            } else {
+                boundaryRuling = edge;
+            }
+        }
+        QCOMPARE(inner.size(), std::size_t(6)); // 3 rows of 3 strips: 2 inner rulings per row
+        QVERIFY(SmoothRulingsCommand::create(doc, 0, {}, true).isRefused());
+        for (const EdgeId edge : {boundaryRuling, curve, EdgeId(9999)}) {
+            const CommandOrError refused =
+                SmoothRulingsCommand::create(doc, 0, {*inner.begin(), edge}, true);
+            QVERIFY(refused.isRefused());
+            QVERIFY2(refused.error().contains(QString::number(edge)), qPrintable(refused.error()));
+        }
+        QVERIFY(SmoothRulingsCommand::create(doc, 0, inner, false).isRefused()); // already sharp
+        QVERIFY(bytesOf(doc) == original);
+
+        const CommandOrError smooth = SmoothRulingsCommand::create(doc, 0, inner, true);
+        QCOMPARE(smooth.command()->text(), QString("Make 6 rulings smooth"));
+        QVERIFY(pushOrExplain(doc, SmoothRulingsCommand::create(doc, 0, inner, true)).isEmpty());
+        for (EdgeId edge : inner) {
+            QVERIFY(doc.surface(0).edge(edge).smooth);
+        }
+        const std::string after = bytesOf(doc);
+        QVERIFY(after != original);
+        doc.undoStack()->undo();
+        QVERIFY(bytesOf(doc) == original);
+        doc.undoStack()->redo();
+        QVERIFY(bytesOf(doc) == after);
+        QVERIFY(SmoothRulingsCommand::create(doc, 0, inner, true).isRefused()); // already smooth
+        QVERIFY(pushOrExplain(doc, SmoothRulingsCommand::create(doc, 0, {*inner.begin()}, false))
+                    .isEmpty());
+        QVERIFY(!doc.surface(0).edge(*inner.begin()).smooth);
+        doc.undoStack()->undo();
+        QVERIFY(bytesOf(doc) == after);
     }
 };
 

@@ -218,6 +218,29 @@ private slots:
         QVERIFY(assigned == copy);
         QVERIFY(assigned.validate().empty());
     }
+
+    void onlyRulingsAreSmooth() {
+        FaceId face = kInvalidId;
+        CompositeSurface s = polygonWithLabels("SRSR", &face);
+        const std::vector<EdgeId> edges = s.faceEdges(face);
+        // A curve cannot be smooth; a ruling on the boundary can be flagged but is reported.
+        QVERIFY_THROWS_EXCEPTION(ModelError, s.setSmooth(edges[0], true));
+        QVERIFY_THROWS_EXCEPTION(ModelError, s.setSmooth(9999, true));
+        s.setSmooth(edges[1], true);
+        QVERIFY(s.edge(edges[1]).smooth);
+        QVERIFY(mentions(s.validate(), "edge " + std::to_string(edges[1]) + " is marked smooth"));
+        CompositeSurface sharp = s;
+        sharp.setSmooth(edges[1], false);
+        QVERIFY(sharp != s);
+        QVERIFY(sharp.validate().empty());
+        // Relabelling a smooth ruling as a curve drops the flag.
+        const EdgeRecord& ruling = s.edge(edges[1]);
+        const SplineSpace space{3, 2, 2};
+        s.setSpline(ruling.from, ruling.to, space,
+                    devsurf::test::straightControlPoints(space, s.position(ruling.from),
+                                                         s.position(ruling.to)));
+        QVERIFY(!s.edge(edges[1]).smooth);
+    }
 };
 
 DEVSURF_REGISTER_TEST(TstCompositeSurface);

@@ -94,6 +94,48 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(ModelError, makeExample("cylinder", 2));
     }
 
+    void foldExamplesCarryConditionsAndPins() {
+        // fig8: 3 × 3 flat strips; the 2 interior rows of 3 creases carry the curved fold, the
+        // two corners of the bottom edge of the 300 mm square are pinned, the boundary curves
+        // carry nothing.
+        const CompositeSurface fig8 = makeExample("fig8").surfaces[0];
+        int folds = 0;
+        for (const auto& [id, record] : fig8.edges()) {
+            const bool crease = record.isSpline() && fig8.facesOfEdge(id).size() == 2;
+            QCOMPARE(record.condition == CreaseCondition::CurvedFold, crease);
+            folds += crease ? 1 : 0;
+        }
+        QCOMPARE(folds, 6);
+        QCOMPARE(fig8.pinnedVertices().size(), std::size_t(2));
+        for (VertexId pinned : fig8.pinnedVertices()) {
+            const Vec3 p = fig8.position(pinned);
+            QVERIFY((p.x == 0.0 || p.x == 300.0) && p.y == 0.0 && p.z == 0.0);
+        }
+        // The creases are curved in the plane (a straight crease could only fold straight).
+        for (const auto& [id, record] : fig8.edges()) {
+            if (record.condition != CreaseCondition::CurvedFold) {
+                continue;
+            }
+            const Vec3 from = record.controlPoints.front();
+            const Vec3 to = record.controlPoints.back();
+            double offLine = 0.0;
+            for (const Vec3& p : record.controlPoints) {
+                QCOMPARE(p.z, 0.0);
+                offLine = std::max(offLine, cross(to - from, p - from).norm() / (to - from).norm());
+            }
+            QVERIFY2(offLine > 1.0, qPrintable(QString::number(offLine)));
+        }
+        // fig6: one crease between two strips, curved fold, bottom corners pinned.
+        const CompositeSurface fig6 = makeExample("fig6").surfaces[0];
+        QCOMPARE(fig6.faces().size(), std::size_t(2));
+        int fig6Folds = 0;
+        for (const auto& [id, record] : fig6.edges()) {
+            fig6Folds += record.condition == CreaseCondition::CurvedFold ? 1 : 0;
+        }
+        QCOMPARE(fig6Folds, 1);
+        QCOMPARE(fig6.pinnedVertices().size(), std::size_t(2));
+    }
+
     void examplesScaleWithSize() {
         const SurfaceStatistics small = surfaceStatistics(makeExample("sheet", 2).surfaces[0]);
         const SurfaceStatistics large = surfaceStatistics(makeExample("sheet", 5).surfaces[0]);

@@ -23,10 +23,6 @@ CommandOrError CreaseConditionCommand::create(Document& document, int surfaceInd
     if (count == 0) {
         return CommandOrError(tr("Select at least one crease."));
     }
-    if (condition == model::CreaseCondition::Straight) {
-        return CommandOrError(tr("The condition \"Straight when unfolded\" is not available "
-                                 "yet; use Curved fold or Geodesic."));
-    }
     const QString indexError = checkSurfaceIndex(document, surfaceIndex);
     if (!indexError.isEmpty()) {
         return CommandOrError(indexError);

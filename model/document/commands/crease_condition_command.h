@@ -8,9 +8,8 @@ namespace devsurf::document {
 
 // Sets the condition of creases (curved fold, geodesic, straight when unfolded, or none),
 // which the solver then imposes. Refused, with a sentence naming the edge, when no edge is
-// given, an edge does not exist or is not a crease (a ruling, or a curve on the boundary),
-// every edge already has the condition, or the condition is "straight when unfolded" (which
-// the solver does not impose yet).
+// given, an edge does not exist or is not a crease (a ruling, or a curve on the boundary), or
+// every edge already has the condition.
 class CreaseConditionCommand : public SurfaceEditCommand {
     Q_DECLARE_TR_FUNCTIONS(CreaseConditionCommand)
 public:
