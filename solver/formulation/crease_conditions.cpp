@@ -5,6 +5,7 @@
 #include "solver/formulation/point_combinations.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -36,6 +37,32 @@ PointCombination sideNormal(const model::CreaseSide& side, const StripNormalSpli
     return c;
 }
 
+// The start value of n_o at crease parameter u: the unit normal of the osculating plane, or where
+// the crease is locally straight a unit vector normal to its tangent and to the left strip's
+// normal (docs/math.md §5).
+model::Vec3 startOsculatingNormal(const model::BSplineCurve& curve, const model::Strip& left,
+                                  const model::CreaseSide& side, double u) {
+    const model::DeBoorPoints points = curve.deBoorPoints(u);
+    const model::Vec3 d0 = points.secondDerivativePoints[0] - points.secondDerivativePoints[1];
+    const model::Vec3 d1 = points.secondDerivativePoints[1] - points.secondDerivativePoints[2];
+    const model::Vec3 o = cross(d0, d1);
+    if (o.norm() > 1e-8 * d0.norm() * d1.norm()) {
+        return o / o.norm();
+    }
+    model::Vec3 tangent = curve.derivative(u, 1);
+    const double s = side.reversed ? 1.0 - u : u;
+    const model::Vec3 normal = cross(left.a.derivative(s, 1), left.bPoint(s) - left.aPoint(s));
+    model::Vec3 candidate = cross(normal, tangent);
+    if (candidate.norm() <= 1e-12 * normal.norm() * tangent.norm()) {
+        // No usable strip normal: any unit vector normal to the tangent.
+        const model::Vec3 axis =
+            std::abs(tangent.x) < std::abs(tangent.y) ? model::Vec3(1, 0, 0) : model::Vec3(0, 1, 0);
+        candidate = cross(tangent, axis);
+    }
+    const double length = candidate.norm();
+    return length > 0.0 ? candidate / length : model::Vec3(0, 0, 1);
+}
+
 std::string edgeName(model::EdgeId edge) {
     return "edge " + std::to_string(edge);
 }
@@ -47,7 +74,7 @@ int addCreaseConditions(const model::CompositeSurface& surface,
                         const std::map<model::FaceId, StripNormalSpline>& normals,
                         const std::map<model::EdgeId, std::vector<int>>& edgePoints,
                         int valuesPerInterval, BilinearTerm& term,
-                        std::vector<model::FaceId>& rowFaces) {
+                        std::vector<model::FaceId>& rowFaces, const OsculatingNormals& osculating) {
     // Every edge with a condition must be a crease between two strips.
     std::map<model::EdgeId, model::Crease> creases;
     bool any = false;
@@ -61,6 +88,14 @@ int addCreaseConditions(const model::CompositeSurface& surface,
          model::creasesOf(surface, strips, model::sampleSurface(surface, 2))) {
         creases.emplace(crease.edge, crease);
     }
+    // Straight creases are formulated after the others, once their normals' block exists.
+    struct StraightRows {
+        model::EdgeId edge;
+        PointCombination normal; // n_L
+        PointCombination d[2];   // c²₀ − c²₁, c²₁ − c²₂
+        model::Vec3 start;       // n_o at the start
+    };
+    std::vector<StraightRows> straight;
     int added = 0;
     for (const auto& [id, record] : surface.edges()) {
         if (!record.isSpline() || record.condition == model::CreaseCondition::None) {
@@ -71,11 +106,6 @@ int addCreaseConditions(const model::CompositeSurface& surface,
         if (it == creases.end()) {
             throw std::invalid_argument(edgeName(id) + " has the condition '" + name +
                                         "' but is a boundary curve, not a crease.");
-        }
-        if (record.condition == model::CreaseCondition::Straight) {
-            throw std::invalid_argument(edgeName(id) +
-                                        ": the condition 'straight when unfolded' is not solved "
-                                        "yet; use curved-fold, geodesic or none.");
         }
         const model::Crease& crease = it->second;
         const auto left = normals.find(crease.left.face);
@@ -103,21 +133,55 @@ int addCreaseConditions(const model::CompositeSurface& surface,
             for (int j = 0; j < valuesPerInterval; ++j) {
                 const double u = (i + (j + 0.5) / valuesPerInterval) / intervals;
                 const model::DeBoorRows rows = curve.deBoorRows(u);
+                PointCombination d[2];
+                for (int k = 0; k < 2; ++k) {
+                    d[k] = simplified(
+                        plus(pointCombination(offsets, rows.indices, rows.secondDerivative[k]),
+                             pointCombination(offsets, rows.indices, rows.secondDerivative[k + 1]),
+                             -1.0));
+                }
+                if (record.condition == model::CreaseCondition::Straight) {
+                    straight.push_back(
+                        {id,
+                         simplified(sideNormal(crease.left, left->second, u, 1.0)),
+                         {d[0], d[1]},
+                         startOsculatingNormal(curve, strips[crease.left.strip], crease.left, u)});
+                    continue;
+                }
                 const PointCombination n =
                     simplified(plus(sideNormal(crease.left, left->second, u, 1.0),
                                     sideNormal(crease.right, right->second, u, sign)));
                 for (int k = 0; k < 2; ++k) {
-                    const PointCombination d = simplified(
-                        plus(pointCombination(offsets, rows.indices, rows.secondDerivative[k]),
-                             pointCombination(offsets, rows.indices, rows.secondDerivative[k + 1]),
-                             -1.0));
-                    if (d.empty() || n.empty()) {
+                    if (d[k].empty() || n.empty()) {
                         continue;
                     }
-                    term.addRow(n, d);
+                    term.addRow(n, d[k]);
                     rowFaces.push_back(crease.left.face);
                     ++added;
                 }
+            }
+        }
+    }
+    if (straight.empty()) {
+        return added;
+    }
+    const int first = osculating.problem.addVariableBlock("osculatingNormals",
+                                                          3 * static_cast<int>(straight.size()));
+    osculating.state.resize(static_cast<std::size_t>(osculating.problem.variableCount()), 0.0);
+    for (std::size_t i = 0; i < straight.size(); ++i) {
+        const StraightRows& r = straight[i];
+        const int offset = first + 3 * static_cast<int>(i);
+        const PointCombination no{{offset, 1.0}};
+        for (int k = 0; k < 3; ++k) {
+            osculating.state[static_cast<std::size_t>(offset + k)] = r.start[k];
+        }
+        osculating.unitNormals.addVector(offset);
+        const model::FaceId face = creases.at(r.edge).left.face;
+        for (const PointCombination* side : {&r.d[0], &r.d[1], &r.normal}) {
+            if (!side->empty()) {
+                term.addRow(no, *side);
+                rowFaces.push_back(face);
+                ++added;
             }
         }
     }

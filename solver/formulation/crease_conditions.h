@@ -7,6 +7,8 @@
 #include "model/composite_surface.h"
 #include "model/strip.h"
 #include "solver/core/bilinear_term.h"
+#include "solver/core/problem.h"
+#include "solver/core/unit_norm_term.h"
 
 #include <map>
 #include <vector>
@@ -21,9 +23,23 @@ struct StripNormalSpline {
     model::BSplineCurve curve;
 };
 
-// Adds the rows of every crease whose condition is a curved fold (7) or a geodesic (8):
+// The variables "straight when unfolded" needs: a unit normal n_o of the crease's osculating
+// plane per collocation value, a block "osculatingNormals" appended to `problem` (its start values
+// written into `state`, which is resized to the problem's variable count), |n_o| = 1 in
+// `unitNormals`.
+struct OsculatingNormals {
+    Problem& problem;
+    std::vector<double>& state;
+    UnitNormTerm& unitNormals;
+};
+
+// Adds the rows of every crease whose condition is a curved fold (7), a geodesic (8) or
+// "straight when unfolded" (docs/math.md §5):
 //   curved fold: ⟨c²₀ − c²₁, n_L + n_R⟩ = ⟨c²₁ − c²₂, n_L + n_R⟩ = 0,
 //   geodesic:    the same with n_L − n_R,
+//   straight:    ⟨c²₀ − c²₁, n_o⟩ = ⟨c²₁ − c²₂, n_o⟩ = ⟨n_L, n_o⟩ = 0, |n_o| = 1 (n_L lies in the
+//                osculating plane: the crease is a geodesic of its left strip, so it unfolds
+//                to a straight line),
 // with c²ₖ the second-derivative points of the crease at `valuesPerInterval` parameters per
 // spline interval and n_L, n_R the two strips' normal splines there, oriented to the same side
 // of the surface (model::creasesOf). `edgePoints` gives, for every S-edge, the state offsets of
@@ -32,13 +48,12 @@ struct StripNormalSpline {
 //
 // Throws std::invalid_argument with a sentence naming the edge when a condition cannot be
 // imposed: it is not on a crease between two strips (a boundary curve, a cone or a planar
-// face beside it), or the curve's degree is below 2 (no second derivative), or the condition is
-// "straight when unfolded", which the solver does not impose yet.
+// face beside it), or the curve's degree is below 2 (no second derivative).
 int addCreaseConditions(const model::CompositeSurface& surface,
                         const std::vector<model::Strip>& strips,
                         const std::map<model::FaceId, StripNormalSpline>& normals,
                         const std::map<model::EdgeId, std::vector<int>>& edgePoints,
                         int valuesPerInterval, BilinearTerm& term,
-                        std::vector<model::FaceId>& rowFaces);
+                        std::vector<model::FaceId>& rowFaces, const OsculatingNormals& osculating);
 
 } // namespace devsurf::solver

@@ -6,11 +6,14 @@
 #include "solver/core/fairness_term.h"
 #include "solver/core/linear_term.h"
 #include "solver/core/minimum_length_term.h"
+#include "solver/core/squared_distance_term.h"
 #include "solver/core/target_term.h"
 #include "solver/core/unit_norm_term.h"
 #include "solver/formulation/crease_conditions.h"
 #include "solver/formulation/normal_spline_start.h"
 #include "solver/formulation/point_combinations.h"
+#include "solver/formulation/smooth_rulings.h"
+#include "solver/formulation/vertex_developability.h"
 
 #include <algorithm>
 #include <cmath>
@@ -68,6 +71,8 @@ struct SurfaceFormulation::Builder {
     std::unique_ptr<BilinearTerm> creaseConditions = std::make_unique<BilinearTerm>(3);
     std::map<FaceId, StripNormalSpline> stripNormals; // per strip, for the crease conditions
     std::unique_ptr<LinearTerm> smoothness = std::make_unique<LinearTerm>();
+    std::unique_ptr<SquaredDistanceTerm> vertexStars = std::make_unique<SquaredDistanceTerm>(2, 3);
+    std::unique_ptr<MinimumLengthTerm> spokeGuard = std::make_unique<MinimumLengthTerm>(3);
     std::unique_ptr<TargetTerm> handles = std::make_unique<TargetTerm>();
     std::unique_ptr<TargetTerm> proximity = std::make_unique<TargetTerm>();
     std::unique_ptr<TargetTerm> normalProximity = std::make_unique<TargetTerm>();
@@ -227,16 +232,19 @@ struct SurfaceFormulation::Builder {
         }
     }
 
-    // The R-edges of a strip or cone face, each with the end (u = 0 or 1) it is the ruling of.
-    void registerRulingNormals(FaceId face, VertexId startVertex, const PointCombination& atStart,
-                               const PointCombination& atEnd) {
-        for (EdgeId edge : surface.faceEdges(face)) {
+    // The R-edges of a strip or cone face, each with the end (u = 0 or 1) it is the ruling of,
+    // its normal oriented like the face loop (the curve a runs into the face from u = 0).
+    void registerRulingNormals(const model::Strip& strip, VertexId startVertex,
+                               const PointCombination& atStart, const PointCombination& atEnd) {
+        for (EdgeId edge : surface.faceEdges(strip.face)) {
             const model::EdgeRecord& record = surface.edge(edge);
             if (record.isSpline()) {
                 continue;
             }
             const bool atU0 = record.from == startVertex || record.to == startVertex;
-            f.m_rulingNormals[{face, edge}] = atU0 ? atStart : atEnd;
+            const Vec3 inward = atU0 ? strip.a.derivative(0.0, 1) : -strip.a.derivative(1.0, 1);
+            f.m_rulingNormals[{strip.face, edge}] = orientedRulingNormal(
+                surface, strip.face, edge, atU0 ? atStart : atEnd, inward, f.m_initialState);
         }
     }
 
@@ -267,7 +275,7 @@ struct SurfaceFormulation::Builder {
                 setVector(offset, initialStripNormal(strip, u));
                 (i == 0 ? first : last) = n;
             }
-            registerRulingNormals(strip.face, a0, first, last);
+            registerRulingNormals(strip, a0, first, last);
             return;
         }
         const std::vector<int> bPoints = sidePoints(strip.bSide);
@@ -350,12 +358,12 @@ struct SurfaceFormulation::Builder {
         // Fairness of the normal spline's control sequence (its own family, see
         // FormulationOptions::normalFairnessWeight).
         normalFairness->addSequence(normalSequence);
-        registerRulingNormals(strip.face, a0, n0, n1);
 
         // Initial control normals (see fitStartNormals).
         for (int i = 0; i < controls; ++i) {
             setVector(normalOffset + 3 * i, fitted[static_cast<std::size_t>(i)]);
         }
+        registerRulingNormals(strip, a0, n0, n1);
     }
 
     void addStrips() {
@@ -367,9 +375,8 @@ struct SurfaceFormulation::Builder {
         }
     }
 
-    // (7) and (8) on the creases that carry such a condition (docs/math.md §5), at as many
-    // values per interval as (4) uses on a strip.
-    void addCreaseConditions() {
+    // State offsets of every S-edge's control points (stored orientation).
+    std::map<EdgeId, std::vector<int>> edgeOffsets() const {
         std::map<EdgeId, std::vector<int>> offsets;
         for (const auto& [edge, points] : f.m_edgePoints) {
             std::vector<int>& o = offsets[edge];
@@ -377,9 +384,30 @@ struct SurfaceFormulation::Builder {
                 o.push_back(f.pointOffset(point));
             }
         }
+        return offsets;
+    }
+
+    // (7), (8) and "straight when unfolded" on the creases that carry such a condition
+    // (docs/math.md §5), at as many values per interval as (4) uses on a strip.
+    void addCreaseConditions() {
         const int values = strips.empty() ? 7 : valuesPerInterval(strips.front());
-        solver::addCreaseConditions(surface, strips, stripNormals, offsets, values,
-                                    *creaseConditions, f.m_creaseFaces);
+        solver::addCreaseConditions(surface, strips, stripNormals, edgeOffsets(), values,
+                                    *creaseConditions, f.m_creaseFaces,
+                                    {f.m_problem, f.m_initialState, *unitNormals});
+    }
+
+    // Vertex developability at the interior vertices where creases meet (docs/math.md §7).
+    void addVertexDevelopability() {
+        if (!options.vertexDevelopability) {
+            return;
+        }
+        std::map<VertexId, int> vertexOffsets;
+        for (const auto& [vertex, point] : f.m_vertexPoint) {
+            vertexOffsets[vertex] = f.pointOffset(point);
+        }
+        solver::addVertexDevelopability(surface, vertexOffsets, edgeOffsets(), f.m_problem,
+                                        f.m_initialState, *vertexStars, *spokeGuard,
+                                        options.vertexSpokeGuard);
     }
 
     // RR…R faces: ⟨n_f, v_{i+1} − v_i⟩ = 0 for every edge, |n_f| = 1 (docs/math.md §3).
@@ -407,21 +435,7 @@ struct SurfaceFormulation::Builder {
     }
 
     void addSmoothRulings() {
-        for (EdgeId edge : options.smoothRulings) {
-            if (!surface.hasEdge(edge) || surface.edge(edge).isSpline()) {
-                throw std::invalid_argument("edge " + str(edge) +
-                                            " is not a ruling (R-edge) of the surface.");
-            }
-            const std::vector<FaceId> faces = surface.facesOfEdge(edge);
-            if (faces.size() != 2) {
-                throw std::invalid_argument("ruling " + str(edge) +
-                                            " is on the boundary; a smooth transition needs a "
-                                            "face on either side.");
-            }
-            const PointCombination& left = f.m_rulingNormals.at({faces[0], edge});
-            const PointCombination& right = f.m_rulingNormals.at({faces[1], edge});
-            smoothness->addPointRelation(3, simplified(plus(left, right, -1.0)));
-        }
+        solver::addSmoothRulings(surface, options.smoothRulings, f.m_rulingNormals, *smoothness);
     }
 
     void addHandles() {
@@ -504,6 +518,7 @@ struct SurfaceFormulation::Builder {
         f.m_developability = developability->rowCount() > 0 ? developability.get() : nullptr;
         f.m_planarity = planarity->rowCount() > 0 ? planarity.get() : nullptr;
         f.m_coneNormals = normalDefinitions->rowCount() > 0 ? normalDefinitions.get() : nullptr;
+        f.m_creaseConditions = creaseConditions->rowCount() > 0 ? creaseConditions.get() : nullptr;
         f.m_pointFairness = fairness->rowCount() > 0 ? fairness.get() : nullptr;
         f.m_normalFairness = normalFairness->rowCount() > 0 ? normalFairness.get() : nullptr;
         f.m_unitControlNormals =
@@ -528,6 +543,10 @@ struct SurfaceFormulation::Builder {
         add("creaseConditions", TermRole::Constraint, options.creaseWeight,
             std::move(creaseConditions));
         add("smoothRulings", TermRole::Constraint, options.smoothnessWeight, std::move(smoothness));
+        add("vertexDevelopability", TermRole::Constraint, options.vertexDevelopabilityWeight,
+            std::move(vertexStars));
+        add("vertexSpokeGuard", TermRole::Constraint, options.vertexDevelopabilityWeight,
+            std::move(spokeGuard));
         if (handles->rowCount() > 0) {
             f.m_handleTerm = handles.get();
         }
@@ -555,18 +574,6 @@ struct SurfaceFormulation::Builder {
     }
 };
 
-void useRoughStartConfiguration(FormulationOptions& formulation, Options& solver) {
-    formulation.normalizedRows = true;
-    formulation.proximityWeight = 1.0;
-    formulation.rulingGuard = 0.3;
-    formulation.speedGuard = 0.15;
-    formulation.guardWeight = 0.1;
-    solver.proximityFactor = 1.0;
-    solver.proximityMaximum = 1.0;
-    solver.proximityThreshold = 1e-2;
-    solver.eps2Minimum = 3e-4;
-}
-
 SurfaceFormulation::SurfaceFormulation(const model::CompositeSurface& surface,
                                        const FormulationOptions& options)
     : m_options(options) {
@@ -578,6 +585,7 @@ SurfaceFormulation::SurfaceFormulation(const model::CompositeSurface& surface,
     builder.addCreaseConditions();
     builder.addPlanarFaces();
     builder.addSmoothRulings();
+    builder.addVertexDevelopability();
     builder.addHandles();
     builder.addSpeedGuards();
     builder.addProximity();

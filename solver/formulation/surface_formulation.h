@@ -33,7 +33,8 @@ struct FormulationOptions {
     // developable (det(a−b, a′, b′) has degree 3m − 3 per interval, docs/math.md §2).
     int developabilityValuesPerInterval = 0;
 
-    // Scale every row of (4), of planar faces and of cone normals by 1/(|n| |d|) of its two
+    // Scale every row of (4), of planar faces, of cone normals and of the crease conditions
+    // (docs/math.md §5) by 1/(|n| |d|) of its two
     // sides at the reference state (BilinearTerm::scaleRowsAt): near it a row then measures
     // the cosine of an angle, so a residual of 1e-8 means the same on every strip whatever its
     // width, control spacing or the model's size. Off by default: measured from 0.1 % noise
@@ -90,7 +91,7 @@ struct FormulationOptions {
     double developabilityWeight = 1.0;
     double normalWeight = 1.0; // n(0)ᵀn(0) = 1, cone and plane normals, their definitions
     double planarityWeight = 1.0;
-    double creaseWeight = 1.0; // curved-fold and geodesic conditions on creases (7), (8)
+    double creaseWeight = 1.0; // crease conditions (7), (8), straight when unfolded (§5)
     double smoothnessWeight = 1.0;
     double handleWeight = 1.0;
     // Energy weights (multiplied by ε₁ in the iteration, so they act in the first iterations
@@ -103,8 +104,27 @@ struct FormulationOptions {
     double normalFairnessWeight = 10.0;
     double unitControlNormalWeight = 0.1;
 
-    // R-edges between two faces across which the unit normals must agree (smooth transition).
+    // R-edges between two faces across which the unit normals must agree (smooth transition),
+    // in addition to those the surface marks smooth (model::EdgeRecord::smooth).
     std::vector<model::EdgeId> smoothRulings;
+
+    // Vertex developability (docs/math.md §7): at every interior vertex where a crease meets,
+    // the angles between consecutive edges sum to 2π, through a flat copy of the star of its
+    // edges' tangent points (see addVertexDevelopability). The rows vanish on an exactly
+    // developable design, so valid designs stay put with it (tst_vertex_developability). Off by
+    // default: measured on the examples from 0.1 % noise (tst_formulation, ε₂ = 1e-3, 10
+    // iterations) it kept det at 1e-8 … 6e-4 instead of ≤ 1e-8 (weight 1; 0.1 and 0.01 did not
+    // help), the rough annulus ended at det 1.7e-2 instead of ≤ 1e-6, and a star lifted to an
+    // angle defect of 0.05 needs ε₂ = 1e-3 (10 iterations: defect 4e-12) or 30 iterations at
+    // ε₂ = 0.01 (4e-15; 10 iterations: 0.8).
+    bool vertexDevelopability = false;
+    double vertexDevelopabilityWeight = 1.0;
+    // Every spoke of such a star (from the vertex to its edge's tangent point) stays at least
+    // this fraction of its start length (a one-sided guard, inactive while satisfied; 0: none).
+    // Without it the iteration closed a lifted star by shrinking one spoke to a point (defect
+    // 1e-2 left, measured by the angles of the control points).
+    double vertexSpokeGuard = 0.5;
+
     std::vector<VertexHandle> handles;
 };
 
@@ -208,7 +228,8 @@ private:
     std::map<model::VertexId, int> m_vertexPoint;
     std::map<model::EdgeId, std::vector<int>> m_edgePoints; // stored orientation, ends included
     // The normal of a face at one of its R-edges, keyed by (face, edge): a combination of
-    // normal variables (filled while adding faces, used for smooth transitions).
+    // normal variables oriented like the face loop (filled while adding faces, used for smooth
+    // transitions).
     std::map<std::pair<model::FaceId, model::EdgeId>, PointCombination> m_rulingNormals;
     std::map<model::VertexId, int> m_handleRow; // first TargetTerm row of a pulled handle
     TargetTerm* m_handleTerm = nullptr;
@@ -226,6 +247,7 @@ private:
     BilinearTerm* m_developability = nullptr;
     BilinearTerm* m_planarity = nullptr;
     BilinearTerm* m_coneNormals = nullptr;
+    BilinearTerm* m_creaseConditions = nullptr;
     std::vector<model::FaceId> m_developabilityFaces;
     std::vector<model::FaceId> m_planarityFaces;
     std::vector<model::FaceId> m_creaseFaces;  // the left strip of every crease-condition row

@@ -28,6 +28,18 @@ std::string str(std::uint32_t id) {
 
 } // namespace
 
+void useRoughStartConfiguration(FormulationOptions& formulation, Options& solver) {
+    formulation.normalizedRows = true;
+    formulation.proximityWeight = 1.0;
+    formulation.rulingGuard = 0.3;
+    formulation.speedGuard = 0.15;
+    formulation.guardWeight = 0.1;
+    solver.proximityFactor = 1.0;
+    solver.proximityMaximum = 1.0;
+    solver.proximityThreshold = 1e-2;
+    solver.eps2Minimum = 3e-4;
+}
+
 bool SurfaceFormulation::setHandleTarget(VertexId vertex, const Vec3& target) {
     auto it = m_handleRow.find(vertex);
     if (it == m_handleRow.end() || !m_handleTerm) {
@@ -115,7 +127,7 @@ void SurfaceFormulation::setReferenceState(const std::vector<double>& x) {
                                     ".");
     }
     const double* scaleAt = m_options.normalizedRows ? x.data() : nullptr;
-    for (BilinearTerm* term : {m_developability, m_planarity, m_coneNormals}) {
+    for (BilinearTerm* term : {m_developability, m_planarity, m_coneNormals, m_creaseConditions}) {
         if (term) {
             term->scaleRowsAt(scaleAt);
         }
