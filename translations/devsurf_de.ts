@@ -37,32 +37,27 @@
         <translation>Wählen Sie mindestens einen Falz.</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/crease_condition_command.cpp" line="27"/>
-        <source>The condition &quot;Straight when unfolded&quot; is not available yet; use Curved fold or Geodesic.</source>
-        <translation>Die Bedingung „Gerade in der Abwicklung“ gibt es noch nicht; verwenden Sie Gekrümmte Faltung oder Geodätische.</translation>
-    </message>
-    <message>
-        <location filename="../model/document/commands/crease_condition_command.cpp" line="38"/>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="34"/>
         <source>Edge %1 does not exist.</source>
         <translation>Kante %1 gibt es nicht.</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/crease_condition_command.cpp" line="42"/>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="38"/>
         <source>Edge %1 is a ruling; conditions apply to creases (curves between two patches).</source>
         <translation>Kante %1 ist eine Erzeugende; Bedingungen gelten für Falze (Kurven zwischen zwei Flächenstücken).</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/crease_condition_command.cpp" line="48"/>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="44"/>
         <source>Edge %1 is a curve on the boundary, not a crease; conditions apply to curves between two patches.</source>
         <translation>Kante %1 ist eine Randkurve, kein Falz; Bedingungen gelten für Kurven zwischen zwei Flächenstücken.</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/crease_condition_command.cpp" line="55"/>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="51"/>
         <source>The selected creases already have the condition &quot;%1&quot;.</source>
         <translation>Die gewählten Falze haben bereits die Bedingung „%1“.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/document/commands/crease_condition_command.cpp" line="59"/>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="55"/>
         <source>Clear the condition of %n creases</source>
         <translation>
             <numerusform>Bedingung von %n Falz entfernen</numerusform>
@@ -70,7 +65,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/document/commands/crease_condition_command.cpp" line="60"/>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="56"/>
         <source>%1 on %n creases</source>
         <translation>
             <numerusform>%1 auf %n Falz</numerusform>
@@ -338,6 +333,55 @@
     </message>
 </context>
 <context>
+    <name>SmoothRulingsCommand</name>
+    <message>
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="9"/>
+        <source>Select at least one ruling between two patches.</source>
+        <translation>Wählen Sie mindestens eine Erzeugende zwischen zwei Flächenstücken aus.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="19"/>
+        <source>Edge %1 does not exist.</source>
+        <translation>Kante %1 existiert nicht.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="23"/>
+        <source>Edge %1 is a curve; only rulings between two patches are smooth or sharp (curves take a crease condition).</source>
+        <translation>Kante %1 ist eine Kurve; nur Erzeugende zwischen zwei Flächenstücken sind glatt oder scharf (Kurven erhalten eine Falzbedingung).</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="29"/>
+        <source>Edge %1 is a ruling on the boundary; only rulings between two patches are smooth or sharp.</source>
+        <translation>Kante %1 ist eine Erzeugende am Rand; nur Erzeugende zwischen zwei Flächenstücken sind glatt oder scharf.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="36"/>
+        <source>The selected rulings are already smooth.</source>
+        <translation>Die ausgewählten Erzeugenden sind bereits glatt.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="37"/>
+        <source>The selected rulings are already sharp.</source>
+        <translation>Die ausgewählten Erzeugenden sind bereits scharf.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="39"/>
+        <source>Make %n rulings smooth</source>
+        <translation>
+            <numerusform>%n Erzeugende glatt machen</numerusform>
+            <numerusform>%n Erzeugende glatt machen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="40"/>
+        <source>Make %n rulings sharp</source>
+        <translation>
+            <numerusform>%n Erzeugende scharf machen</numerusform>
+            <numerusform>%n Erzeugende scharf machen</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>SplitAtRulingCommand</name>
     <message>
         <location filename="../model/document/commands/split_at_ruling_command.cpp" line="12"/>
@@ -482,29 +526,34 @@
 <context>
     <name>devsurf::app::CreaseConditionReaction</name>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="44"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="69"/>
         <source>Curved fold: the solver keeps the crease&apos;s osculating plane halfway between the two patches, so that the design folds from one flat sheet.</source>
         <translation>Gekrümmte Faltung: Der Löser hält die Schmiegebene des Falzes in der Mitte zwischen den beiden Flächenstücken, damit sich der Entwurf aus einem ebenen Blatt falten lässt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="48"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="73"/>
         <source>Geodesic: the solver keeps the crease a geodesic of both patches.</source>
         <translation>Geodätische: Der Löser hält den Falz als Geodätische beider Flächenstücke.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="54"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="76"/>
+        <source>Straight when unfolded: the solver keeps the crease a straight line in the development.</source>
+        <translation>Gerade in der Abwicklung: Der Löser hält den Falz in der Abwicklung als gerade Linie.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="82"/>
         <source>No condition: the solver treats the crease freely.</source>
         <translation>Keine Bedingung: Der Löser behandelt den Falz frei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="70"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="103"/>
         <source>Select creases (curves between two patches) of one surface first.</source>
         <translation>Wählen Sie zuerst Falze (Kurven zwischen zwei Flächenstücken) einer Fläche.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="83"/>
-        <source>Cannot set the crease condition</source>
-        <translation>Die Falzbedingung kann nicht gesetzt werden</translation>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="162"/>
+        <source>Cr&amp;ease</source>
+        <translation>&amp;Falz</translation>
     </message>
 </context>
 <context>
@@ -518,13 +567,12 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="49"/>
-        <location filename="../app/gui/drag_tool.cpp" line="98"/>
+        <location filename="../app/gui/drag_tool.cpp" line="75"/>
         <source>Drag cancelled; the design is as it was.</source>
         <translation>Ziehen abgebrochen; der Entwurf ist wie zuvor.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="69"/>
+        <location filename="../app/gui/drag_tool.cpp" line="71"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>%n Ecke ziehen</numerusform>
@@ -532,28 +580,64 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="160"/>
+        <location filename="../app/gui/drag_tool.cpp" line="83"/>
+        <source>Drag tool: press on a vertex in the 3D view and move the mouse; the selected vertices of its surface follow. Esc cancels a drag.</source>
+        <translation>Ziehwerkzeug: Drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie die Maus; die ausgewählten Ecken ihrer Fläche folgen. Esc bricht das Ziehen ab.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="97"/>
+        <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
+        <translation>
+            <numerusform>%n Ecke wird %1 mm entlang X gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
+            <numerusform>%n Ecken werden %1 mm entlang X gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="100"/>
+        <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
+        <translation>
+            <numerusform>%n Ecke wird %1 mm entlang Y gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
+            <numerusform>%n Ecken werden %1 mm entlang Y gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="103"/>
+        <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
+        <translation>
+            <numerusform>%n Ecke wird %1 mm entlang Z gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
+            <numerusform>%n Ecken werden %1 mm entlang Z gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="108"/>
+        <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
+        <translation>
+            <numerusform>%n Ecke wird %1 mm in der Bildebene gezogen. Loslassen beendet, Esc bricht ab; X, Y oder Z gedrückt halten bewegt entlang dieser Achse.</numerusform>
+            <numerusform>%n Ecken werden %1 mm in der Bildebene gezogen. Loslassen beendet, Esc bricht ab; X, Y oder Z gedrückt halten bewegt entlang dieser Achse.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="208"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>Ecke %1 ist festgehalten und kann nicht gezogen werden; geben Sie sie zuerst frei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="178"/>
+        <location filename="../app/gui/drag_tool.cpp" line="226"/>
         <source>a drag started</source>
         <translation>ein Ziehen hat begonnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="281"/>
-        <location filename="../app/gui/drag_tool.cpp" line="297"/>
+        <location filename="../app/gui/drag_tool.cpp" line="79"/>
         <source>Drag stopped: %1 The design is as it was.</source>
         <translation>Ziehen beendet: %1 Der Entwurf ist wie zuvor.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="286"/>
+        <location filename="../app/gui/drag_tool.cpp" line="88"/>
         <source>Drag stopped: the design changed during the drag.</source>
         <translation>Ziehen beendet: Der Entwurf hat sich während des Ziehens geändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="311"/>
+        <location filename="../app/gui/drag_tool.cpp" line="374"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -576,22 +660,32 @@
         <translation>Ein geschlossener Zylinder aus Streifen, Größe Sektoren im Umfang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="27"/>
+        <location filename="../app/gui/example_dialog.cpp" line="28"/>
+        <source>A flat square of size × size strips with curved creases, ready to fold: every interior crease carries the curved-fold condition and the bottom corners are pinned. Drag the middle vertices up (Drag tool, G).</source>
+        <translation>Ein ebenes Quadrat aus Größe × Größe Streifen mit gekrümmten Falzen, bereit zum Falten: Jeder innere Falz trägt die Bedingung „Gekrümmte Faltung“, und die unteren Ecken sind festgehalten. Ziehen Sie die mittleren Ecken nach oben (Ziehwerkzeug, G).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="34"/>
+        <source>Two strips joined by one curved crease with the curved-fold condition, the bottom corners pinned; size intervals per curve. Drag a top corner up to fold it.</source>
+        <translation>Zwei Streifen, verbunden durch einen gekrümmten Falz mit der Bedingung „Gekrümmte Faltung“, die unteren Ecken festgehalten; Größe Intervalle je Kurve. Ziehen Sie eine obere Ecke nach oben, um ihn zu falten.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="38"/>
         <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
         <translation>Ein Streifen, ein spitzer Streifen, ein Kegel und ein ebenes Flächenstück; Größe Intervalle je Kurve.</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="36"/>
+        <location filename="../app/gui/example_dialog.cpp" line="47"/>
         <source>New from Example</source>
         <translation>Neu aus Beispiel</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="42"/>
+        <location filename="../app/gui/example_dialog.cpp" line="53"/>
         <source>&amp;Example:</source>
         <translation>&amp;Beispiel:</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="43"/>
+        <location filename="../app/gui/example_dialog.cpp" line="54"/>
         <source>&amp;Size:</source>
         <translation>&amp;Größe:</translation>
     </message>
@@ -657,223 +751,218 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="113"/>
+        <location filename="../app/gui/main_window.cpp" line="112"/>
         <source>Patches</source>
         <translation>Flächenstücke</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="119"/>
+        <location filename="../app/gui/main_window.cpp" line="118"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="126"/>
+        <location filename="../app/gui/main_window.cpp" line="125"/>
         <source>Solver</source>
         <translation>Löser</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="135"/>
+        <location filename="../app/gui/main_window.cpp" line="134"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="142"/>
+        <location filename="../app/gui/main_window.cpp" line="141"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="144"/>
+        <location filename="../app/gui/main_window.cpp" line="143"/>
         <source>&amp;New from Example…</source>
         <translation>&amp;Neu aus Beispiel…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="146"/>
+        <location filename="../app/gui/main_window.cpp" line="145"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="148"/>
+        <location filename="../app/gui/main_window.cpp" line="147"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="152"/>
+        <location filename="../app/gui/main_window.cpp" line="151"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="155"/>
+        <location filename="../app/gui/main_window.cpp" line="154"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="159"/>
+        <location filename="../app/gui/main_window.cpp" line="158"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>Austausch-JSON &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="159"/>
+        <location filename="../app/gui/main_window.cpp" line="158"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="163"/>
+        <location filename="../app/gui/main_window.cpp" line="162"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="167"/>
+        <location filename="../app/gui/main_window.cpp" line="166"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="170"/>
+        <location filename="../app/gui/main_window.cpp" line="169"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="173"/>
+        <location filename="../app/gui/main_window.cpp" line="172"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="180"/>
+        <location filename="../app/gui/main_window.cpp" line="179"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="182"/>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>Select &amp;None</source>
         <translation>Auswahl &amp;aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="183"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="70"/>
+        <location filename="../app/gui/main_window.cpp" line="182"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="94"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="187"/>
+        <location filename="../app/gui/main_window.cpp" line="186"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="189"/>
+        <location filename="../app/gui/main_window.cpp" line="188"/>
         <source>&amp;3D View</source>
         <translation>&amp;3D-Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="189"/>
+        <location filename="../app/gui/main_window.cpp" line="188"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="191"/>
+        <location filename="../app/gui/main_window.cpp" line="190"/>
         <source>&amp;Development View</source>
         <translation>&amp;Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="191"/>
+        <location filename="../app/gui/main_window.cpp" line="190"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="192"/>
+        <location filename="../app/gui/main_window.cpp" line="191"/>
         <source>3D &amp;and Development</source>
         <translation>3D &amp;und Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="193"/>
+        <location filename="../app/gui/main_window.cpp" line="192"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <location filename="../app/gui/main_window.cpp" line="196"/>
         <source>&amp;Control Polygons</source>
         <translation>&amp;Kontrollpolygone</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <location filename="../app/gui/main_window.cpp" line="196"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="198"/>
+        <location filename="../app/gui/main_window.cpp" line="197"/>
         <source>&amp;Vertices</source>
         <translation>&amp;Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="199"/>
+        <location filename="../app/gui/main_window.cpp" line="198"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="203"/>
+        <location filename="../app/gui/main_window.cpp" line="202"/>
         <source>&amp;Fit All</source>
         <translation>&amp;Alles zeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="203"/>
+        <location filename="../app/gui/main_window.cpp" line="202"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="209"/>
+        <location filename="../app/gui/main_window.cpp" line="208"/>
         <source>Reset &amp;Layout</source>
         <translation>&amp;Layout zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="214"/>
+        <location filename="../app/gui/main_window.cpp" line="213"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="216"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>Kante &amp;umbenennen (R ↔ S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="216"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="219"/>
+        <location filename="../app/gui/main_window.cpp" line="218"/>
         <source>Add &amp;Crease…</source>
         <translation>&amp;Falz einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="222"/>
+        <location filename="../app/gui/main_window.cpp" line="221"/>
         <source>Add R&amp;uling…</source>
         <translation>&amp;Erzeugende einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="228"/>
-        <source>Crease &amp;Condition</source>
-        <translation>&amp;Falzbedingung</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window.cpp" line="245"/>
+        <location filename="../app/gui/main_window.cpp" line="234"/>
         <source>&amp;Pin Vertices</source>
         <translation>Ecken &amp;festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="246"/>
+        <location filename="../app/gui/main_window.cpp" line="235"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="248"/>
+        <location filename="../app/gui/main_window.cpp" line="237"/>
         <source>U&amp;npin Vertices</source>
         <translation>Ecken &amp;freigeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="249"/>
+        <location filename="../app/gui/main_window.cpp" line="238"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="367"/>
+        <location filename="../app/gui/main_window.cpp" line="364"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n Fläche</numerusform>
@@ -881,7 +970,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="368"/>
+        <location filename="../app/gui/main_window.cpp" line="365"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -889,7 +978,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="369"/>
+        <location filename="../app/gui/main_window.cpp" line="366"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -897,7 +986,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="370"/>
+        <location filename="../app/gui/main_window.cpp" line="367"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n ausgewählt</numerusform>
@@ -905,92 +994,92 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="220"/>
+        <location filename="../app/gui/main_window.cpp" line="219"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="223"/>
+        <location filename="../app/gui/main_window.cpp" line="222"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <location filename="../app/gui/main_window.cpp" line="224"/>
         <source>Re&amp;fine Curves</source>
         <translation>Kurven &amp;verfeinern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="226"/>
+        <location filename="../app/gui/main_window.cpp" line="225"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="242"/>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>Ecken &amp;verschieben oder drehen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="242"/>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="270"/>
+        <location filename="../app/gui/main_window.cpp" line="267"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="271"/>
+        <location filename="../app/gui/main_window.cpp" line="268"/>
         <source>&amp;User Manual</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="278"/>
+        <location filename="../app/gui/main_window.cpp" line="275"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="284"/>
+        <location filename="../app/gui/main_window.cpp" line="281"/>
         <source>&amp;About DevSurf</source>
         <translation>&amp;Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="286"/>
+        <location filename="../app/gui/main_window.cpp" line="283"/>
         <source>About DevSurf</source>
         <translation>Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="287"/>
+        <location filename="../app/gui/main_window.cpp" line="284"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen mit Spline-Torsen (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="330"/>
+        <location filename="../app/gui/main_window.cpp" line="327"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="352"/>
+        <location filename="../app/gui/main_window.cpp" line="349"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="353"/>
+        <location filename="../app/gui/main_window.cpp" line="350"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="23"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="27"/>
         <source>&amp;Solve</source>
         <translation>&amp;Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="24"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="28"/>
         <source>Ctrl+Return</source>
         <translation>Ctrl+Return</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_solver.cpp" line="27"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="31"/>
         <source>Make every surface developable again: %n iteration(s) of the solver, one undo step. Pinned vertices stay where they are.</source>
         <translation>
             <numerusform>Macht jede Fläche wieder abwickelbar: %n Iteration des Lösers, ein Rückgängig-Schritt. Festgehaltene Ecken bleiben, wo sie sind.</numerusform>
@@ -998,102 +1087,172 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="35"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="39"/>
         <source>Solver &amp;Iterations…</source>
         <translation>Löser-&amp;Iterationen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="36"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
         <source>How many solver iterations Tools ▸ Solve runs.</source>
         <translation>Wie viele Iterationen Werkzeuge ▸ Lösen ausführt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="44"/>
         <source>Solver Iterations</source>
         <translation>Löser-Iterationen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="44"/>
         <source>Iterations of Tools ▸ Solve:</source>
         <translation>Iterationen von Werkzeuge ▸ Lösen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="49"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
+        <source>Drag tool: press on a vertex in the 3D view and move it, the surface follows and stays developable. The axis chosen in the toolbar, or holding X, Y or Z, moves it along that axis; Esc cancels the drag (G).</source>
+        <translation>Ziehwerkzeug: Drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie sie; die Fläche folgt und bleibt abwickelbar. Die in der Werkzeugleiste gewählte Achse oder gedrückt gehaltenes X, Y oder Z bewegt sie entlang dieser Achse; Esc bricht das Ziehen ab (G).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="63"/>
+        <source>R&amp;otate Vertices</source>
+        <translation>Ecken dr&amp;ehen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="64"/>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="67"/>
+        <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
+        <translation>Drehwerkzeug (R): Wählen Sie zwei oder mehr Ecken aus, drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie die Maus seitwärts; sie drehen sich um eine Achse durch ihren Schwerpunkt (senkrecht oder wie in der Werkzeugleiste gewählt), und die Fläche folgt. Esc bricht ab.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="85"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>Beenden Sie zuerst das Ziehen; es löst bereits während der Bewegung.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="55"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="52"/>
         <source>&amp;Drag Vertices</source>
         <translation>Ecken &amp;ziehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="53"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="59"/>
-        <source>Drag tool: press on a vertex in the 3D view and move it, the surface follows and stays developable. Hold X, Y or Z to move along that axis; Esc cancels the drag.</source>
-        <translation>Ziehwerkzeug: Eine Ecke in der 3D-Ansicht anklicken und bewegen; die Fläche folgt und bleibt abwickelbar. X, Y oder Z gedrückt halten, um entlang dieser Achse zu bewegen; Esc bricht das Ziehen ab.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="69"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="93"/>
         <source>&amp;Cancel Solve</source>
         <translation>Lösen &amp;abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="72"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="96"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>Das laufende Lösen beenden; der Entwurf bleibt, wie er ist (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="96"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="120"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>Lösen: Iteration %1 von %2, Residuum %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="107"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="133"/>
+        <source>Motion &amp;Axis</source>
+        <translation>Bewegungs&amp;achse</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="145"/>
+        <source>&amp;Free</source>
+        <translation>&amp;Frei</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="146"/>
+        <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
+        <translation>Freie Bewegung: Das Ziehwerkzeug bewegt Ecken in der Bildebene; das Drehwerkzeug dreht sie um die senkrechte Achse (Z) oder um die Blickachse, wenn Werkzeuge ▸ Bewegungsachse ▸ Um die Blickachse drehen eingeschaltet ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="149"/>
+        <source>&amp;X Axis</source>
+        <translation>&amp;X-Achse</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="150"/>
+        <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
+        <translation>X-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang X; das Drehwerkzeug dreht sie um eine zu X parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes Y oder Z hat Vorrang.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="152"/>
+        <source>&amp;Y Axis</source>
+        <translation>&amp;Y-Achse</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="153"/>
+        <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
+        <translation>Y-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Y; das Drehwerkzeug dreht sie um eine zu Y parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Z hat Vorrang.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="155"/>
+        <source>&amp;Z Axis</source>
+        <translation>&amp;Z-Achse</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="156"/>
+        <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
+        <translation>Z-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Z; das Drehwerkzeug dreht sie um eine zu Z parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Y hat Vorrang.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="180"/>
+        <source>Rotate About the &amp;View Axis</source>
+        <translation>Um die &amp;Blickachse drehen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="183"/>
+        <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
+        <translation>Bei der Achswahl „Frei“ dreht das Drehwerkzeug die Ecken um die Blickrichtung durch ihren Schwerpunkt statt um die senkrechte Achse.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="197"/>
         <source>Colour &amp;By</source>
         <translation>&amp;Färben nach</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="115"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="205"/>
         <source>&amp;Patch</source>
         <translation>&amp;Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="115"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="205"/>
         <source>&amp;Developability</source>
         <translation>&amp;Abwickelbarkeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="115"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="205"/>
         <source>&amp;Flatness</source>
         <translation>&amp;Ebenheit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="116"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="206"/>
         <source>&amp;Angle Defect</source>
         <translation>&amp;Winkeldefekt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="118"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="208"/>
         <source>Every patch in its own colour.</source>
         <translation>Jedes Flächenstück in seiner eigenen Farbe.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="119"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="209"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>Wie weit jedes abgetastete Streifenviereck von abwickelbar entfernt ist: das normierte |det(a−b, a′, b′)|, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="121"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="211"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>Ebenheit δ jedes abgetasteten Vierecks: der Abstand seiner Diagonalen durch das Mittel seiner zwei kürzesten Kanten, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="123"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="213"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>Winkeldefekt |K| = |2π − Σ Winkel| an den inneren Ecken des abgetasteten Netzes, im Bogenmaß, logarithmisch skaliert.</translation>
     </message>
@@ -1109,67 +1268,82 @@
 <context>
     <name>devsurf::app::MoveDialog</name>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="37"/>
+        <location filename="../app/gui/move_dialog.cpp" line="43"/>
         <source>&amp;Translate</source>
         <translation>&amp;Verschieben</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="38"/>
+        <location filename="../app/gui/move_dialog.cpp" line="44"/>
         <source>&amp;Rotate</source>
         <translation>&amp;Drehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="39"/>
+        <location filename="../app/gui/move_dialog.cpp" line="45"/>
+        <source>&amp;Keep developable</source>
+        <translation>&amp;Abwickelbar halten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/move_dialog.cpp" line="46"/>
         <source>Move or Rotate Vertices</source>
         <translation>Ecken verschieben oder drehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="42"/>
+        <location filename="../app/gui/move_dialog.cpp" line="52"/>
         <source>Translation</source>
         <translation>Verschiebung</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="44"/>
+        <location filename="../app/gui/move_dialog.cpp" line="55"/>
         <source>Offset (x, y, z):</source>
         <translation>Versatz (x, y, z):</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="47"/>
+        <location filename="../app/gui/move_dialog.cpp" line="58"/>
         <source>Rotation</source>
         <translation>Drehung</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="49"/>
+        <location filename="../app/gui/move_dialog.cpp" line="61"/>
         <source>Axis through (x, y, z):</source>
         <translation>Achse durch (x, y, z):</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="51"/>
+        <location filename="../app/gui/move_dialog.cpp" line="63"/>
         <source>Axis direction:</source>
         <translation>Achsrichtung:</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="55"/>
+        <location filename="../app/gui/move_dialog.cpp" line="68"/>
         <source>Angle:</source>
         <translation>Winkel:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/move_dialog.cpp" line="76"/>
+        <source>After the motion, run 10 solver iterations with the moved vertices held at their new positions and the pinned vertices where they are, so that the surface stays developable. The motion and the solve are one undo step; Esc cancels the solve and nothing moves. Off: only the exact motion.</source>
+        <translation>Nach der Bewegung 10 Iterationen des Lösers ausführen, mit den bewegten Ecken an ihren neuen Positionen und den festgehaltenen Ecken an ihrem Ort, damit die Fläche abwickelbar bleibt. Bewegung und Lösen sind ein Rückgängig-Schritt; Esc bricht das Lösen ab, und nichts bewegt sich. Aus: nur die exakte Bewegung.</translation>
     </message>
 </context>
 <context>
     <name>devsurf::app::MoveVerticesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="312"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="315"/>
         <source>Translate or rotate the selected vertices with their neighbouring control points. Select vertices of one surface first.</source>
         <translation>Verschiebt oder dreht die ausgewählten Ecken samt benachbarten Kontrollpunkten. Wählen Sie zuerst Ecken einer Fläche aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="338"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="343"/>
         <source>Cannot rotate</source>
         <translation>Drehen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="342"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="343"/>
         <source>Cannot move</source>
         <translation>Verschieben nicht möglich</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="352"/>
+        <source>the vertices are moved</source>
+        <translation>die Ecken werden bewegt</translation>
     </message>
 </context>
 <context>
@@ -1670,8 +1844,18 @@
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>Erzeugende (R), eine Strecke der Länge %1 mm.</translation>
     </message>
-    <message numerus="yes">
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="170"/>
+        <source>Smooth between patches %1 and %2: the surface stays smooth across it.</source>
+        <translation>Glatt zwischen den Flächenstücken %1 und %2: Die Fläche bleibt über sie hinweg glatt.</translation>
+    </message>
+    <message>
         <location filename="../app/gui/panels/properties_panel.cpp" line="172"/>
+        <source>Sharp between patches %1 and %2: the surface may fold along it.</source>
+        <translation>Scharf zwischen den Flächenstücken %1 und %2: Die Fläche darf entlang ihr falten.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="182"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;Flächenstück %1&lt;/b&gt;: %2&lt;br&gt;Kantenbeschriftung entlang des Flächenstücks: %3&lt;br&gt;%n Ecke.</numerusform>
@@ -1679,7 +1863,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="208"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="218"/>
         <source>Cannot move</source>
         <translation>Verschieben nicht möglich</translation>
     </message>
@@ -1687,12 +1871,12 @@
 <context>
     <name>devsurf::app::RefineCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="291"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="293"/>
         <source>Double the spline intervals of the selected curve and of all curves joined to it through strips; the shape stays the same. Select one spline edge or strip first.</source>
         <translation>Verdoppelt die Spline-Intervalle der ausgewählten Kurve und aller über Streifen mit ihr verbundenen Kurven; die Form bleibt gleich. Wählen Sie zuerst eine Splinekante oder einen Streifen aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="301"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="303"/>
         <source>Cannot refine</source>
         <translation>Verfeinern nicht möglich</translation>
     </message>
@@ -1700,19 +1884,96 @@
 <context>
     <name>devsurf::app::RelabelEdgeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="112"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="114"/>
         <source>Cannot relabel: %1</source>
         <translation>Umbenennen nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="116"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="118"/>
         <source>Turn the selected edges from rulings (R) into spline curves (S) or back. Select edges of one surface first.</source>
         <translation>Macht die ausgewählten Kanten von Erzeugenden (R) zu Splinekurven (S) oder umgekehrt. Wählen Sie zuerst Kanten einer Fläche aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="123"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="125"/>
         <source>Cannot relabel</source>
         <translation>Umbenennen nicht möglich</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::RotateTool</name>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="29"/>
+        <source>Rotate needs two or more vertices that are not pinned: select them, then press on one of them and move the mouse sideways.</source>
+        <translation>Drehen braucht zwei oder mehr nicht festgehaltene Ecken: Wählen Sie sie aus, drücken Sie dann auf eine von ihnen und bewegen Sie die Maus seitwärts.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/rotate_tool.cpp" line="49"/>
+        <source>Rotate %n vertices %1: move the mouse sideways, %2° per pixel.</source>
+        <translation>
+            <numerusform>%n Ecke %1 drehen: Maus seitwärts bewegen, %2° pro Pixel.</numerusform>
+            <numerusform>%n Ecken %1 drehen: Maus seitwärts bewegen, %2° pro Pixel.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="77"/>
+        <source>about the X axis through their centroid</source>
+        <translation>um die X-Achse durch ihren Schwerpunkt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="79"/>
+        <source>about the Y axis through their centroid</source>
+        <translation>um die Y-Achse durch ihren Schwerpunkt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="81"/>
+        <source>about the Z axis through their centroid</source>
+        <translation>um die Z-Achse durch ihren Schwerpunkt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="85"/>
+        <source>about the view axis through their centroid</source>
+        <translation>um die Blickachse durch ihren Schwerpunkt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="86"/>
+        <source>about the vertical axis (Z) through their centroid</source>
+        <translation>um die senkrechte Achse (Z) durch ihren Schwerpunkt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="90"/>
+        <source>Rotate tool: select two or more vertices, press on one of them in the 3D view and move the mouse sideways (%1° per pixel). Esc cancels a rotation.</source>
+        <translation>Drehwerkzeug: Wählen Sie zwei oder mehr Ecken aus, drücken Sie in der 3D-Ansicht auf eine von ihnen und bewegen Sie die Maus seitwärts (%1° pro Pixel). Esc bricht eine Drehung ab.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/rotate_tool.cpp" line="96"/>
+        <source>Rotating %n vertices by %1° %2. Release to finish, Esc cancels.</source>
+        <translation>
+            <numerusform>%n Ecke wird um %1° %2 gedreht. Loslassen beendet, Esc bricht ab.</numerusform>
+            <numerusform>%n Ecken werden um %1° %2 gedreht. Loslassen beendet, Esc bricht ab.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/rotate_tool.cpp" line="102"/>
+        <source>Rotate %n vertices</source>
+        <translation>
+            <numerusform>%n Ecke drehen</numerusform>
+            <numerusform>%n Ecken drehen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="106"/>
+        <source>Rotation cancelled; the design is as it was.</source>
+        <translation>Drehung abgebrochen; der Entwurf ist wie zuvor.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="110"/>
+        <source>Rotation stopped: %1 The design is as it was.</source>
+        <translation>Drehung angehalten: %1 Der Entwurf ist wie zuvor.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="114"/>
+        <source>Rotation stopped: the design changed during the rotation.</source>
+        <translation>Drehung angehalten: Der Entwurf hat sich während der Drehung geändert.</translation>
     </message>
 </context>
 <context>
@@ -1794,6 +2055,34 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::SmoothRulingsReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="135"/>
+        <source>Smooth: the solver keeps the surface smooth across the selected rulings (both patches share the tangent plane).</source>
+        <translation>Glatt: Der Löser hält die Fläche über die ausgewählten Erzeugenden hinweg glatt (beide Flächenstücke teilen die Tangentialebene).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="137"/>
+        <source>Sharp: the surface may fold along the selected rulings.</source>
+        <translation>Scharf: Die Fläche darf entlang der ausgewählten Erzeugenden falten.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="139"/>
+        <source>Select rulings between two patches of one surface first.</source>
+        <translation>Wählen Sie zuerst Erzeugende zwischen zwei Flächenstücken einer Fläche aus.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="177"/>
+        <source>&amp;Smooth Rulings</source>
+        <translation>&amp;Glatte Erzeugende</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="180"/>
+        <source>S&amp;harp Rulings</source>
+        <translation>&amp;Scharfe Erzeugende</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::SolveController</name>
     <message>
         <location filename="../app/gui/solve_controller.cpp" line="38"/>
@@ -1801,94 +2090,126 @@
         <translation>Es gibt nichts zu lösen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="59"/>
-        <location filename="../app/gui/solve_controller.cpp" line="137"/>
+        <location filename="../app/gui/solve_controller.cpp" line="61"/>
+        <source>%1: there is nothing to solve; nothing changed.</source>
+        <translation>%1: Es gibt nichts zu lösen; nichts wurde geändert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="98"/>
+        <source>%1 cancelled; nothing moved.</source>
+        <translation>%1 abgebrochen; nichts wurde bewegt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="99"/>
+        <source>%1 cancelled: %2; nothing moved.</source>
+        <translation>%1 abgebrochen: %2; nichts wurde bewegt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="101"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>Lösen abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="60"/>
+        <location filename="../app/gui/solve_controller.cpp" line="102"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>Lösen abgebrochen: %1; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="71"/>
+        <location filename="../app/gui/solve_controller.cpp" line="106"/>
+        <source>%1 failed: %2 Nothing moved.</source>
+        <translation>%1 fehlgeschlagen: %2 Nichts wurde bewegt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="126"/>
         <source>the design changed</source>
         <translation>der Entwurf hat sich geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="82"/>
+        <location filename="../app/gui/solve_controller.cpp" line="137"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="86"/>
+        <location filename="../app/gui/solve_controller.cpp" line="141"/>
         <source>Failed: %1</source>
         <translation>Fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="98"/>
+        <location filename="../app/gui/solve_controller.cpp" line="153"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="102"/>
+        <location filename="../app/gui/solve_controller.cpp" line="157"/>
         <source>tolerance reached</source>
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="102"/>
+        <location filename="../app/gui/solve_controller.cpp" line="157"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="105"/>
+        <location filename="../app/gui/solve_controller.cpp" line="160"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="108"/>
+        <location filename="../app/gui/solve_controller.cpp" line="163"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="112"/>
+        <location filename="../app/gui/solve_controller.cpp" line="167"/>
         <source> (%1)</source>
         <translation> (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="114"/>
+        <location filename="../app/gui/solve_controller.cpp" line="169"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="119"/>
+        <location filename="../app/gui/solve_controller.cpp" line="174"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="125"/>
+        <location filename="../app/gui/solve_controller.cpp" line="180"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="134"/>
+        <location filename="../app/gui/solve_controller.cpp" line="189"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="141"/>
-        <location filename="../app/gui/solve_controller.cpp" line="157"/>
+        <location filename="../app/gui/solve_controller.cpp" line="244"/>
+        <source>%1 discarded: the design changed while solving; nothing moved.</source>
+        <translation>%1 verworfen: Der Entwurf hat sich während des Lösens geändert; nichts wurde bewegt.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/solve_controller.cpp" line="261"/>
+        <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
+        <translation>
+            <numerusform>%1, abwickelbar gehalten: %n Iteration, größtes Bedingungsresiduum %2.</numerusform>
+            <numerusform>%1, abwickelbar gehalten: %n Iterationen, größtes Bedingungsresiduum %2.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="107"/>
+        <location filename="../app/gui/solve_controller.cpp" line="216"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="147"/>
+        <location filename="../app/gui/solve_controller.cpp" line="206"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="176"/>
+        <location filename="../app/gui/solve_controller.cpp" line="235"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>
@@ -1960,28 +2281,28 @@
 <context>
     <name>devsurf::app::SplitAtRulingReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="210"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="212"/>
         <source>The curves of this strip have a single spline interval, so a ruling can only be added after refining them (the shape stays the same). Refine now?</source>
         <translation>Die Kurven dieses Streifens haben nur ein Spline-Intervall; eine Erzeugende kann erst nach dem Verfeinern eingefügt werden (die Form bleibt gleich). Jetzt verfeinern?</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="215"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="217"/>
         <source>Cannot refine</source>
         <translation>Verfeinern nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="209"/>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="226"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="211"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="228"/>
         <source>Add Ruling</source>
         <translation>Erzeugende einfügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="190"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="192"/>
         <source>Add a ruling across the selected strip and the strips that share its curves. Select one strip or cone patch first.</source>
         <translation>Fügt eine Erzeugende quer über den ausgewählten Streifen und die Streifen mit denselben Kurven ein. Wählen Sie zuerst ein Streifen- oder Kegel-Flächenstück aus.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="227"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="229"/>
         <source>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoint(s) of the curves; refine the curves (Ctrl+Shift+R) for more.</source>
         <translation>
             <numerusform>Wo die neue Erzeugende Flächenstück %1 und die Streifen mit denselben Kurven kreuzt (grün in der 3D-Ansicht): Prozent des Wegs entlang des Streifens. Erzeugende können durch den %n Knoten der Kurven gehen; verfeinern Sie die Kurven (Strg+Umschalt+R) für mehr.</numerusform>
@@ -1989,7 +2310,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="258"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="260"/>
         <source>Cannot add the ruling</source>
         <translation>Erzeugende kann nicht eingefügt werden</translation>
     </message>
@@ -1997,22 +2318,22 @@
 <context>
     <name>devsurf::app::SubdivideStripReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="135"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="137"/>
         <source>Add a crease across the selected strip and the row of strips it belongs to. Select one patch of type strip (SRSR) first.</source>
         <translation>Fügt einen Falz quer über den ausgewählten Streifen und seine Streifenreihe ein. Wählen Sie zuerst ein Flächenstück vom Typ Streifen (SRSR) aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="146"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="148"/>
         <source>Add Crease</source>
         <translation>Falz einfügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="147"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="149"/>
         <source>Where the new crease crosses patch %1 and the strips of its row (green in the 3D view): per cent of the way from one curve of the strip to the other.</source>
         <translation>Wo der neue Falz Flächenstück %1 und die Streifen seiner Reihe kreuzt (grün in der 3D-Ansicht): Prozent des Wegs von einer Kurve des Streifens zur anderen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="176"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="178"/>
         <source>Cannot add the crease</source>
         <translation>Falz kann nicht eingefügt werden</translation>
     </message>
@@ -2116,18 +2437,18 @@
 <context>
     <name>devsurf::views::SceneView</name>
     <message>
-        <location filename="../views/scene_view.cpp" line="50"/>
+        <location filename="../views/scene_view.cpp" line="51"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="52"/>
+        <location filename="../views/scene_view.cpp" line="53"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="449"/>
-        <location filename="../views/scene_view.cpp" line="458"/>
+        <location filename="../views/scene_view.cpp" line="485"/>
+        <location filename="../views/scene_view.cpp" line="494"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>Fläche %1 ist ungültig und wird nicht angezeigt.</translation>
     </message>
@@ -2190,14 +2511,42 @@
 <context>
     <name>devsurf::views::ViewOverlay</name>
     <message>
-        <location filename="../views/view_overlay.cpp" line="78"/>
+        <location filename="../views/view_overlay.cpp" line="55"/>
+        <source>CF</source>
+        <comment>badge: curved fold</comment>
+        <translation>GF</translation>
+    </message>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="57"/>
+        <source>G</source>
+        <comment>badge: geodesic</comment>
+        <translation>G</translation>
+    </message>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="59"/>
+        <source>SU</source>
+        <comment>badge: straight when unfolded</comment>
+        <translation>GA</translation>
+    </message>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="115"/>
         <source>Mountain fold</source>
         <translation>Bergfalte</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="81"/>
+        <location filename="../views/view_overlay.cpp" line="118"/>
         <source>Valley fold</source>
         <translation>Talfalte</translation>
+    </message>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="125"/>
+        <source>Smooth ruling</source>
+        <translation>Glatte Erzeugende</translation>
+    </message>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="128"/>
+        <source>Sharp ruling</source>
+        <translation>Scharfe Erzeugende</translation>
     </message>
 </context>
 <context>

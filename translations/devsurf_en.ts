@@ -4,7 +4,7 @@
 <context>
     <name>CreaseConditionCommand</name>
     <message numerus="yes">
-        <location filename="../model/document/commands/crease_condition_command.cpp" line="59"/>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="55"/>
         <source>Clear the condition of %n creases</source>
         <translation>
             <numerusform>Clear the condition of %n crease</numerusform>
@@ -12,7 +12,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/document/commands/crease_condition_command.cpp" line="60"/>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="56"/>
         <source>%1 on %n creases</source>
         <translation>
             <numerusform>%1 on %n crease</numerusform>
@@ -70,20 +70,71 @@
     </message>
 </context>
 <context>
+    <name>SmoothRulingsCommand</name>
+    <message numerus="yes">
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="39"/>
+        <source>Make %n rulings smooth</source>
+        <translation>
+            <numerusform>Make %n ruling smooth</numerusform>
+            <numerusform>Make %n rulings smooth</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="40"/>
+        <source>Make %n rulings sharp</source>
+        <translation>
+            <numerusform>Make %n ruling sharp</numerusform>
+            <numerusform>Make %n rulings sharp</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::DragTool</name>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="69"/>
+        <location filename="../app/gui/drag_tool.cpp" line="71"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>Drag %n vertex</numerusform>
             <numerusform>Drag %n vertices</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="97"/>
+        <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
+        <translation>
+            <numerusform>Dragging %n vertex %1 mm along X. Release to finish, Esc cancels.</numerusform>
+            <numerusform>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="100"/>
+        <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
+        <translation>
+            <numerusform>Dragging %n vertex %1 mm along Y. Release to finish, Esc cancels.</numerusform>
+            <numerusform>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="103"/>
+        <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
+        <translation>
+            <numerusform>Dragging %n vertex %1 mm along Z. Release to finish, Esc cancels.</numerusform>
+            <numerusform>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="108"/>
+        <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
+        <translation>
+            <numerusform>Dragging %n vertex %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</numerusform>
+            <numerusform>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>devsurf::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="367"/>
+        <location filename="../app/gui/main_window.cpp" line="364"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n surface</numerusform>
@@ -91,7 +142,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="368"/>
+        <location filename="../app/gui/main_window.cpp" line="365"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n patch</numerusform>
@@ -99,7 +150,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="369"/>
+        <location filename="../app/gui/main_window.cpp" line="366"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n control point</numerusform>
@@ -107,7 +158,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="370"/>
+        <location filename="../app/gui/main_window.cpp" line="367"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n selected</numerusform>
@@ -115,7 +166,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_solver.cpp" line="27"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="31"/>
         <source>Make every surface developable again: %n iteration(s) of the solver, one undo step. Pinned vertices stay where they are.</source>
         <translation>
             <numerusform>Make every surface developable again: %n iteration of the solver, one undo step. Pinned vertices stay where they are.</numerusform>
@@ -197,7 +248,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="172"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="182"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner.</numerusform>
@@ -206,13 +257,48 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::RotateTool</name>
+    <message numerus="yes">
+        <location filename="../app/gui/rotate_tool.cpp" line="49"/>
+        <source>Rotate %n vertices %1: move the mouse sideways, %2° per pixel.</source>
+        <translation>
+            <numerusform>Rotate %n vertex %1: move the mouse sideways, %2° per pixel.</numerusform>
+            <numerusform>Rotate %n vertices %1: move the mouse sideways, %2° per pixel.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/rotate_tool.cpp" line="96"/>
+        <source>Rotating %n vertices by %1° %2. Release to finish, Esc cancels.</source>
+        <translation>
+            <numerusform>Rotating %n vertex by %1° %2. Release to finish, Esc cancels.</numerusform>
+            <numerusform>Rotating %n vertices by %1° %2. Release to finish, Esc cancels.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/rotate_tool.cpp" line="102"/>
+        <source>Rotate %n vertices</source>
+        <translation>
+            <numerusform>Rotate %n vertex</numerusform>
+            <numerusform>Rotate %n vertices</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::SolveController</name>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="176"/>
+        <location filename="../app/gui/solve_controller.cpp" line="235"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Solved: %n iteration, largest constraint residual %1.</numerusform>
             <numerusform>Solved: %n iterations, largest constraint residual %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/solve_controller.cpp" line="261"/>
+        <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
+        <translation>
+            <numerusform>%1, kept developable: %n iteration, largest constraint residual %2.</numerusform>
+            <numerusform>%1, kept developable: %n iterations, largest constraint residual %2.</numerusform>
         </translation>
     </message>
 </context>
@@ -230,7 +316,7 @@
 <context>
     <name>devsurf::app::SplitAtRulingReaction</name>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="227"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="229"/>
         <source>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoint(s) of the curves; refine the curves (Ctrl+Shift+R) for more.</source>
         <translation>
             <numerusform>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoint of the curves; refine the curves (Ctrl+Shift+R) for more.</numerusform>

@@ -37,39 +37,34 @@
         <translation>折り線を 1 本以上選択してください。</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/crease_condition_command.cpp" line="27"/>
-        <source>The condition &quot;Straight when unfolded&quot; is not available yet; use Curved fold or Geodesic.</source>
-        <translation>「展開時に直線」の条件はまだ使えません。曲線折りか測地線を使ってください。</translation>
-    </message>
-    <message>
-        <location filename="../model/document/commands/crease_condition_command.cpp" line="38"/>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="34"/>
         <source>Edge %1 does not exist.</source>
         <translation>辺 %1 は存在しません。</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/crease_condition_command.cpp" line="42"/>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="38"/>
         <source>Edge %1 is a ruling; conditions apply to creases (curves between two patches).</source>
         <translation>辺 %1 は母線です。条件は折り線 (2 つのパッチの間の曲線) に設定します。</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/crease_condition_command.cpp" line="48"/>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="44"/>
         <source>Edge %1 is a curve on the boundary, not a crease; conditions apply to curves between two patches.</source>
         <translation>辺 %1 は境界の曲線で、折り線ではありません。条件は 2 つのパッチの間の曲線に設定します。</translation>
     </message>
     <message>
-        <location filename="../model/document/commands/crease_condition_command.cpp" line="55"/>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="51"/>
         <source>The selected creases already have the condition &quot;%1&quot;.</source>
         <translation>選択した折り線にはすでに条件「%1」が設定されています。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/document/commands/crease_condition_command.cpp" line="59"/>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="55"/>
         <source>Clear the condition of %n creases</source>
         <translation>
             <numerusform>%n 本の折り線の条件を解除</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/document/commands/crease_condition_command.cpp" line="60"/>
+        <location filename="../model/document/commands/crease_condition_command.cpp" line="56"/>
         <source>%1 on %n creases</source>
         <translation>
             <numerusform>%n 本の折り線に%1</numerusform>
@@ -331,6 +326,53 @@
     </message>
 </context>
 <context>
+    <name>SmoothRulingsCommand</name>
+    <message>
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="9"/>
+        <source>Select at least one ruling between two patches.</source>
+        <translation>2 つのパッチの間の母線を 1 本以上選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="19"/>
+        <source>Edge %1 does not exist.</source>
+        <translation>辺 %1 は存在しません。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="23"/>
+        <source>Edge %1 is a curve; only rulings between two patches are smooth or sharp (curves take a crease condition).</source>
+        <translation>辺 %1 は曲線です。滑らか・鋭角を設定できるのは 2 つのパッチの間の母線だけです (曲線には折り線の条件を設定します)。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="29"/>
+        <source>Edge %1 is a ruling on the boundary; only rulings between two patches are smooth or sharp.</source>
+        <translation>辺 %1 は境界上の母線です。滑らか・鋭角を設定できるのは 2 つのパッチの間の母線だけです。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="36"/>
+        <source>The selected rulings are already smooth.</source>
+        <translation>選択した母線はすでに滑らかです。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="37"/>
+        <source>The selected rulings are already sharp.</source>
+        <translation>選択した母線はすでに鋭角です。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="39"/>
+        <source>Make %n rulings smooth</source>
+        <translation>
+            <numerusform>%n 本の母線を滑らかにする</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../model/document/commands/smooth_rulings_command.cpp" line="40"/>
+        <source>Make %n rulings sharp</source>
+        <translation>
+            <numerusform>%n 本の母線を鋭角にする</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>SplitAtRulingCommand</name>
     <message>
         <location filename="../model/document/commands/split_at_ruling_command.cpp" line="12"/>
@@ -475,29 +517,34 @@
 <context>
     <name>devsurf::app::CreaseConditionReaction</name>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="44"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="69"/>
         <source>Curved fold: the solver keeps the crease&apos;s osculating plane halfway between the two patches, so that the design folds from one flat sheet.</source>
         <translation>曲線折り: ソルバーは折り線の接触平面を 2 つのパッチの中間に保ち、デザインが 1 枚の平らなシートから折れるようにします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="48"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="73"/>
         <source>Geodesic: the solver keeps the crease a geodesic of both patches.</source>
         <translation>測地線: ソルバーは折り線を両方のパッチの測地線に保ちます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="54"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="76"/>
+        <source>Straight when unfolded: the solver keeps the crease a straight line in the development.</source>
+        <translation>展開で直線: ソルバーは折り線を展開図の上で直線に保ちます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="82"/>
         <source>No condition: the solver treats the crease freely.</source>
         <translation>条件なし: ソルバーは折り線を自由に扱います。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="70"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="103"/>
         <source>Select creases (curves between two patches) of one surface first.</source>
         <translation>先に 1 つの曲面の折り線 (2 つのパッチの間の曲線) を選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="83"/>
-        <source>Cannot set the crease condition</source>
-        <translation>折り線の条件を設定できません</translation>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="162"/>
+        <source>Cr&amp;ease</source>
+        <translation>折り線(&amp;E)</translation>
     </message>
 </context>
 <context>
@@ -511,41 +558,72 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="49"/>
-        <location filename="../app/gui/drag_tool.cpp" line="98"/>
+        <location filename="../app/gui/drag_tool.cpp" line="75"/>
         <source>Drag cancelled; the design is as it was.</source>
         <translation>ドラッグを取り消しました。デザインは元のままです。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="69"/>
+        <location filename="../app/gui/drag_tool.cpp" line="71"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>%n 個の頂点をドラッグ</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="160"/>
+        <location filename="../app/gui/drag_tool.cpp" line="83"/>
+        <source>Drag tool: press on a vertex in the 3D view and move the mouse; the selected vertices of its surface follow. Esc cancels a drag.</source>
+        <translation>ドラッグツール: 3D ビューで頂点を押してマウスを動かすと、その曲面の選択した頂点が追従します。Esc でドラッグを取り消します。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="97"/>
+        <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
+        <translation>
+            <numerusform>%n 個の頂点を X 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="100"/>
+        <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
+        <translation>
+            <numerusform>%n 個の頂点を Y 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="103"/>
+        <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
+        <translation>
+            <numerusform>%n 個の頂点を Z 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="108"/>
+        <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
+        <translation>
+            <numerusform>%n 個の頂点を視平面内で %1 mm ドラッグ中。離すと確定、Esc で取り消し。X、Y、Z を押し続けるとその軸に沿って動きます。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="208"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>頂点 %1 は固定されているためドラッグできません。先に固定を解除してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="178"/>
+        <location filename="../app/gui/drag_tool.cpp" line="226"/>
         <source>a drag started</source>
         <translation>ドラッグが始まりました</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="281"/>
-        <location filename="../app/gui/drag_tool.cpp" line="297"/>
+        <location filename="../app/gui/drag_tool.cpp" line="79"/>
         <source>Drag stopped: %1 The design is as it was.</source>
         <translation>ドラッグを中止しました: %1 デザインは元のままです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="286"/>
+        <location filename="../app/gui/drag_tool.cpp" line="88"/>
         <source>Drag stopped: the design changed during the drag.</source>
         <translation>ドラッグを中止しました: ドラッグ中にデザインが変更されました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="311"/>
+        <location filename="../app/gui/drag_tool.cpp" line="374"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -568,22 +646,32 @@
         <translation>周方向にサイズ個の区画を持つ、ストリップからなる閉じた円柱。</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="27"/>
+        <location filename="../app/gui/example_dialog.cpp" line="28"/>
+        <source>A flat square of size × size strips with curved creases, ready to fold: every interior crease carries the curved-fold condition and the bottom corners are pinned. Drag the middle vertices up (Drag tool, G).</source>
+        <translation>曲がった折り線をもつ サイズ × サイズ 個のストリップからなる平らな正方形で、すぐに折れます: 内部の折り線にはすべて曲線折りの条件があり、下の角は固定されています。中央の頂点を上へドラッグしてください (ドラッグツール、G)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="34"/>
+        <source>Two strips joined by one curved crease with the curved-fold condition, the bottom corners pinned; size intervals per curve. Drag a top corner up to fold it.</source>
+        <translation>曲線折りの条件をもつ 1 本の曲がった折り線でつながった 2 つのストリップ。下の角は固定、曲線ごとに サイズ 個の区間。上の角を上へドラッグすると折れます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="38"/>
         <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
         <translation>ストリップ、尖ったストリップ、錐面、平面パッチ。曲線ごとにサイズ個の区間。</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="36"/>
+        <location filename="../app/gui/example_dialog.cpp" line="47"/>
         <source>New from Example</source>
         <translation>例から新規作成</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="42"/>
+        <location filename="../app/gui/example_dialog.cpp" line="53"/>
         <source>&amp;Example:</source>
         <translation>例(&amp;E):</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="43"/>
+        <location filename="../app/gui/example_dialog.cpp" line="54"/>
         <source>&amp;Size:</source>
         <translation>サイズ(&amp;S):</translation>
     </message>
@@ -649,438 +737,503 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="113"/>
+        <location filename="../app/gui/main_window.cpp" line="112"/>
         <source>Patches</source>
         <translation>パッチ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="119"/>
+        <location filename="../app/gui/main_window.cpp" line="118"/>
         <source>Properties</source>
         <translation>プロパティ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="126"/>
+        <location filename="../app/gui/main_window.cpp" line="125"/>
         <source>Solver</source>
         <translation>ソルバー</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="135"/>
+        <location filename="../app/gui/main_window.cpp" line="134"/>
         <source>Main</source>
         <translation>メイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="142"/>
+        <location filename="../app/gui/main_window.cpp" line="141"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="144"/>
+        <location filename="../app/gui/main_window.cpp" line="143"/>
         <source>&amp;New from Example…</source>
         <translation>例から新規作成(&amp;N)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="146"/>
+        <location filename="../app/gui/main_window.cpp" line="145"/>
         <source>&amp;Open…</source>
         <translation>開く(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="148"/>
+        <location filename="../app/gui/main_window.cpp" line="147"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="152"/>
+        <location filename="../app/gui/main_window.cpp" line="151"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="155"/>
+        <location filename="../app/gui/main_window.cpp" line="154"/>
         <source>Save &amp;As…</source>
         <translation>名前を付けて保存(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="159"/>
+        <location filename="../app/gui/main_window.cpp" line="158"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>交換用 JSON をエクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="159"/>
+        <location filename="../app/gui/main_window.cpp" line="158"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="163"/>
+        <location filename="../app/gui/main_window.cpp" line="162"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="167"/>
+        <location filename="../app/gui/main_window.cpp" line="166"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="170"/>
+        <location filename="../app/gui/main_window.cpp" line="169"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="173"/>
+        <location filename="../app/gui/main_window.cpp" line="172"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="180"/>
+        <location filename="../app/gui/main_window.cpp" line="179"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="182"/>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>Select &amp;None</source>
         <translation>選択を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="183"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="70"/>
+        <location filename="../app/gui/main_window.cpp" line="182"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="94"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="187"/>
+        <location filename="../app/gui/main_window.cpp" line="186"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="189"/>
+        <location filename="../app/gui/main_window.cpp" line="188"/>
         <source>&amp;3D View</source>
         <translation>3D ビュー(&amp;3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="189"/>
+        <location filename="../app/gui/main_window.cpp" line="188"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="191"/>
+        <location filename="../app/gui/main_window.cpp" line="190"/>
         <source>&amp;Development View</source>
         <translation>展開図ビュー(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="191"/>
+        <location filename="../app/gui/main_window.cpp" line="190"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="192"/>
+        <location filename="../app/gui/main_window.cpp" line="191"/>
         <source>3D &amp;and Development</source>
         <translation>3D と展開図(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="193"/>
+        <location filename="../app/gui/main_window.cpp" line="192"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <location filename="../app/gui/main_window.cpp" line="196"/>
         <source>&amp;Control Polygons</source>
         <translation>制御多角形(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <location filename="../app/gui/main_window.cpp" line="196"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="198"/>
+        <location filename="../app/gui/main_window.cpp" line="197"/>
         <source>&amp;Vertices</source>
         <translation>頂点(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="199"/>
+        <location filename="../app/gui/main_window.cpp" line="198"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="203"/>
+        <location filename="../app/gui/main_window.cpp" line="202"/>
         <source>&amp;Fit All</source>
         <translation>全体を表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="203"/>
+        <location filename="../app/gui/main_window.cpp" line="202"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="209"/>
+        <location filename="../app/gui/main_window.cpp" line="208"/>
         <source>Reset &amp;Layout</source>
         <translation>レイアウトをリセット(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="214"/>
+        <location filename="../app/gui/main_window.cpp" line="213"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="216"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>辺のラベルを変更 (R ↔ S)(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="216"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="219"/>
+        <location filename="../app/gui/main_window.cpp" line="218"/>
         <source>Add &amp;Crease…</source>
         <translation>折り線を追加(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="220"/>
+        <location filename="../app/gui/main_window.cpp" line="219"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="222"/>
+        <location filename="../app/gui/main_window.cpp" line="221"/>
         <source>Add R&amp;uling…</source>
         <translation>母線を追加(&amp;U)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="223"/>
+        <location filename="../app/gui/main_window.cpp" line="222"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <location filename="../app/gui/main_window.cpp" line="224"/>
         <source>Re&amp;fine Curves</source>
         <translation>曲線を細分化(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="226"/>
+        <location filename="../app/gui/main_window.cpp" line="225"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="228"/>
-        <source>Crease &amp;Condition</source>
-        <translation>折り線の条件(&amp;C)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window.cpp" line="242"/>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>頂点の移動・回転(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="242"/>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="245"/>
+        <location filename="../app/gui/main_window.cpp" line="234"/>
         <source>&amp;Pin Vertices</source>
         <translation>頂点を固定(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="246"/>
+        <location filename="../app/gui/main_window.cpp" line="235"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="248"/>
+        <location filename="../app/gui/main_window.cpp" line="237"/>
         <source>U&amp;npin Vertices</source>
         <translation>頂点の固定を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="249"/>
+        <location filename="../app/gui/main_window.cpp" line="238"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="270"/>
+        <location filename="../app/gui/main_window.cpp" line="267"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="271"/>
+        <location filename="../app/gui/main_window.cpp" line="268"/>
         <source>&amp;User Manual</source>
         <translation>ユーザーマニュアル(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="278"/>
+        <location filename="../app/gui/main_window.cpp" line="275"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="284"/>
+        <location filename="../app/gui/main_window.cpp" line="281"/>
         <source>&amp;About DevSurf</source>
         <translation>DevSurf について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="286"/>
+        <location filename="../app/gui/main_window.cpp" line="283"/>
         <source>About DevSurf</source>
         <translation>DevSurf について</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="287"/>
+        <location filename="../app/gui/main_window.cpp" line="284"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;スプライン可展面による可展面と曲線折り折り紙の設計 (Tang, Bo, Wallner, Pottmann 2015)。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="330"/>
+        <location filename="../app/gui/main_window.cpp" line="327"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="352"/>
+        <location filename="../app/gui/main_window.cpp" line="349"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="353"/>
+        <location filename="../app/gui/main_window.cpp" line="350"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="367"/>
+        <location filename="../app/gui/main_window.cpp" line="364"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>曲面 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="368"/>
+        <location filename="../app/gui/main_window.cpp" line="365"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="369"/>
+        <location filename="../app/gui/main_window.cpp" line="366"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="370"/>
+        <location filename="../app/gui/main_window.cpp" line="367"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n 個選択</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="23"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="27"/>
         <source>&amp;Solve</source>
         <translation>ソルブ(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="24"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="28"/>
         <source>Ctrl+Return</source>
         <translation>Ctrl+Return</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_solver.cpp" line="27"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="31"/>
         <source>Make every surface developable again: %n iteration(s) of the solver, one undo step. Pinned vertices stay where they are.</source>
         <translation>
             <numerusform>すべての曲面を可展面に戻します: ソルバーを %n 回反復し、1 回の取り消し操作にまとめます。固定した頂点は動きません。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="35"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="39"/>
         <source>Solver &amp;Iterations…</source>
         <translation>ソルバーの反復回数(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="36"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
         <source>How many solver iterations Tools ▸ Solve runs.</source>
         <translation>ツール ▸ ソルブで実行する反復回数。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="44"/>
         <source>Solver Iterations</source>
         <translation>ソルバーの反復回数</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="44"/>
         <source>Iterations of Tools ▸ Solve:</source>
         <translation>ツール ▸ ソルブの反復回数:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="49"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
+        <source>Drag tool: press on a vertex in the 3D view and move it, the surface follows and stays developable. The axis chosen in the toolbar, or holding X, Y or Z, moves it along that axis; Esc cancels the drag (G).</source>
+        <translation>ドラッグツール: 3D ビューで頂点を押して動かすと、曲面が追従して可展のまま保たれます。ツールバーで選んだ軸、または X、Y、Z を押し続けるとその軸に沿って動きます。Esc でドラッグを取り消します (G)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="63"/>
+        <source>R&amp;otate Vertices</source>
+        <translation>頂点を回転(&amp;O)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="64"/>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="67"/>
+        <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
+        <translation>回転ツール (R): 2 個以上の頂点を選択し、3D ビューで頂点を押してマウスを横に動かすと、頂点が重心を通る軸 (鉛直、またはツールバーで選んだ軸) の周りに回転し、曲面が追従します。Esc で取り消します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="85"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>先にドラッグを終えてください。ドラッグ中も随時ソルブしています。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="55"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="52"/>
         <source>&amp;Drag Vertices</source>
         <translation>頂点をドラッグ(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="53"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="59"/>
-        <source>Drag tool: press on a vertex in the 3D view and move it, the surface follows and stays developable. Hold X, Y or Z to move along that axis; Esc cancels the drag.</source>
-        <translation>ドラッグツール: 3D ビューで頂点を押して動かすと、曲面が追従し可展性を保ちます。X、Y、Z キーを押したままにするとその軸に沿って動きます。Esc でドラッグを取り消します。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="69"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="93"/>
         <source>&amp;Cancel Solve</source>
         <translation>ソルブを中止(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="72"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="96"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>実行中のソルブを中止します。デザインはそのままです (Esc)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="96"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="120"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>ソルブ中: 反復 %1 / %2、残差 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="107"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="133"/>
+        <source>Motion &amp;Axis</source>
+        <translation>移動の軸(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="145"/>
+        <source>&amp;Free</source>
+        <translation>自由(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="146"/>
+        <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
+        <translation>自由な移動: ドラッグツールは頂点を視平面内で動かし、回転ツールは鉛直軸 (Z) の周り、または ツール ▸ 移動の軸 ▸ 視線軸の周りに回転 がオンのときは視線軸の周りに回転させます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="149"/>
+        <source>&amp;X Axis</source>
+        <translation>X 軸(&amp;X)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="150"/>
+        <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
+        <translation>X 軸: ドラッグツールは頂点を X 方向にだけ動かし、回転ツールは重心を通る X に平行な軸の周りに回転させます。Y または Z を押し続けるとそちらが優先されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="152"/>
+        <source>&amp;Y Axis</source>
+        <translation>Y 軸(&amp;Y)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="153"/>
+        <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
+        <translation>Y 軸: ドラッグツールは頂点を Y 方向にだけ動かし、回転ツールは重心を通る Y に平行な軸の周りに回転させます。X または Z を押し続けるとそちらが優先されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="155"/>
+        <source>&amp;Z Axis</source>
+        <translation>Z 軸(&amp;Z)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="156"/>
+        <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
+        <translation>Z 軸: ドラッグツールは頂点を Z 方向にだけ動かし、回転ツールは重心を通る Z に平行な軸の周りに回転させます。X または Y を押し続けるとそちらが優先されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="180"/>
+        <source>Rotate About the &amp;View Axis</source>
+        <translation>視線軸の周りに回転(&amp;V)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="183"/>
+        <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
+        <translation>軸が「自由」のとき、回転ツールは頂点を鉛直軸ではなく重心を通る視線方向の周りに回転させます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="197"/>
         <source>Colour &amp;By</source>
         <translation>色分け(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="115"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="205"/>
         <source>&amp;Patch</source>
         <translation>パッチ(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="115"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="205"/>
         <source>&amp;Developability</source>
         <translation>可展性(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="115"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="205"/>
         <source>&amp;Flatness</source>
         <translation>平面性(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="116"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="206"/>
         <source>&amp;Angle Defect</source>
         <translation>角度欠損(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="118"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="208"/>
         <source>Every patch in its own colour.</source>
         <translation>パッチごとに色分けします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="119"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="209"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>サンプルした各帯の四角形が可展からどれだけ離れているか: 正規化した |det(a−b, a′, b′)| を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="121"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="211"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>サンプルした各四角形の平面性 δ: 対角線間の距離を最も短い 2 辺の平均で割った値を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="123"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="213"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>サンプルしたメッシュの内部頂点での角度欠損 |K| = |2π − Σ 角度| (ラジアン) を対数スケールで表示します。</translation>
     </message>
@@ -1096,67 +1249,82 @@
 <context>
     <name>devsurf::app::MoveDialog</name>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="37"/>
+        <location filename="../app/gui/move_dialog.cpp" line="43"/>
         <source>&amp;Translate</source>
         <translation>平行移動(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="38"/>
+        <location filename="../app/gui/move_dialog.cpp" line="44"/>
         <source>&amp;Rotate</source>
         <translation>回転(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="39"/>
+        <location filename="../app/gui/move_dialog.cpp" line="45"/>
+        <source>&amp;Keep developable</source>
+        <translation>可展を保つ(&amp;K)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/move_dialog.cpp" line="46"/>
         <source>Move or Rotate Vertices</source>
         <translation>頂点の移動・回転</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="42"/>
+        <location filename="../app/gui/move_dialog.cpp" line="52"/>
         <source>Translation</source>
         <translation>平行移動</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="44"/>
+        <location filename="../app/gui/move_dialog.cpp" line="55"/>
         <source>Offset (x, y, z):</source>
         <translation>移動量 (x, y, z):</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="47"/>
+        <location filename="../app/gui/move_dialog.cpp" line="58"/>
         <source>Rotation</source>
         <translation>回転</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="49"/>
+        <location filename="../app/gui/move_dialog.cpp" line="61"/>
         <source>Axis through (x, y, z):</source>
         <translation>回転軸の通る点 (x, y, z):</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="51"/>
+        <location filename="../app/gui/move_dialog.cpp" line="63"/>
         <source>Axis direction:</source>
         <translation>回転軸の方向:</translation>
     </message>
     <message>
-        <location filename="../app/gui/move_dialog.cpp" line="55"/>
+        <location filename="../app/gui/move_dialog.cpp" line="68"/>
         <source>Angle:</source>
         <translation>角度:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/move_dialog.cpp" line="76"/>
+        <source>After the motion, run 10 solver iterations with the moved vertices held at their new positions and the pinned vertices where they are, so that the surface stays developable. The motion and the solve are one undo step; Esc cancels the solve and nothing moves. Off: only the exact motion.</source>
+        <translation>移動の後、動かした頂点を新しい位置に、固定した頂点をその場所に保ったままソルバーを 10 回反復し、曲面を可展に保ちます。移動とソルブは 1 回の元に戻す操作になります。Esc でソルブを取り消すと何も動きません。オフ: 正確な移動のみ。</translation>
     </message>
 </context>
 <context>
     <name>devsurf::app::MoveVerticesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="312"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="315"/>
         <source>Translate or rotate the selected vertices with their neighbouring control points. Select vertices of one surface first.</source>
         <translation>選択した頂点を隣接する制御点とともに平行移動または回転します。先に 1 つの曲面の頂点を選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="338"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="343"/>
         <source>Cannot rotate</source>
         <translation>回転できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="342"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="343"/>
         <source>Cannot move</source>
         <translation>移動できません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="352"/>
+        <source>the vertices are moved</source>
+        <translation>頂点が移動されます</translation>
     </message>
 </context>
 <context>
@@ -1649,15 +1817,25 @@
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>母線 (R)、長さ %1 mm の線分。</translation>
     </message>
-    <message numerus="yes">
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="170"/>
+        <source>Smooth between patches %1 and %2: the surface stays smooth across it.</source>
+        <translation>パッチ %1 と %2 の間で滑らか: 曲面はこの母線をまたいで滑らかに保たれます。</translation>
+    </message>
+    <message>
         <location filename="../app/gui/panels/properties_panel.cpp" line="172"/>
+        <source>Sharp between patches %1 and %2: the surface may fold along it.</source>
+        <translation>パッチ %1 と %2 の間で鋭角: 曲面はこの母線に沿って折れてもかまいません。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/panels/properties_panel.cpp" line="182"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;パッチ %1&lt;/b&gt;: %2&lt;br&gt;パッチに沿った辺のラベル: %3&lt;br&gt;角 %n 個。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="208"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="218"/>
         <source>Cannot move</source>
         <translation>移動できません</translation>
     </message>
@@ -1665,12 +1843,12 @@
 <context>
     <name>devsurf::app::RefineCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="291"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="293"/>
         <source>Double the spline intervals of the selected curve and of all curves joined to it through strips; the shape stays the same. Select one spline edge or strip first.</source>
         <translation>選択した曲線と、ストリップを介してつながるすべての曲線のスプライン区間を 2 倍にします。形状は変わりません。先にスプライン辺またはストリップを 1 つ選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="301"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="303"/>
         <source>Cannot refine</source>
         <translation>細分化できません</translation>
     </message>
@@ -1678,19 +1856,93 @@
 <context>
     <name>devsurf::app::RelabelEdgeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="112"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="114"/>
         <source>Cannot relabel: %1</source>
         <translation>ラベルを変更できません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="116"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="118"/>
         <source>Turn the selected edges from rulings (R) into spline curves (S) or back. Select edges of one surface first.</source>
         <translation>選択した辺を母線 (R) からスプライン曲線 (S) に、またはその逆に変更します。先に 1 つの曲面の辺を選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="123"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="125"/>
         <source>Cannot relabel</source>
         <translation>ラベルを変更できません</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::RotateTool</name>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="29"/>
+        <source>Rotate needs two or more vertices that are not pinned: select them, then press on one of them and move the mouse sideways.</source>
+        <translation>回転には固定されていない頂点が 2 個以上必要です: それらを選択し、そのうちの 1 つを押してマウスを横に動かしてください。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/rotate_tool.cpp" line="49"/>
+        <source>Rotate %n vertices %1: move the mouse sideways, %2° per pixel.</source>
+        <translation>
+            <numerusform>%n 個の頂点を%1回転: マウスを横に動かします (1 ピクセルあたり %2°)。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="77"/>
+        <source>about the X axis through their centroid</source>
+        <translation>重心を通る X 軸の周りに</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="79"/>
+        <source>about the Y axis through their centroid</source>
+        <translation>重心を通る Y 軸の周りに</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="81"/>
+        <source>about the Z axis through their centroid</source>
+        <translation>重心を通る Z 軸の周りに</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="85"/>
+        <source>about the view axis through their centroid</source>
+        <translation>重心を通る視線軸の周りに</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="86"/>
+        <source>about the vertical axis (Z) through their centroid</source>
+        <translation>重心を通る鉛直軸 (Z) の周りに</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="90"/>
+        <source>Rotate tool: select two or more vertices, press on one of them in the 3D view and move the mouse sideways (%1° per pixel). Esc cancels a rotation.</source>
+        <translation>回転ツール: 2 個以上の頂点を選択し、3D ビューでそのうちの 1 つを押してマウスを横に動かします (1 ピクセルあたり %1°)。Esc で回転を取り消します。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/rotate_tool.cpp" line="96"/>
+        <source>Rotating %n vertices by %1° %2. Release to finish, Esc cancels.</source>
+        <translation>
+            <numerusform>%n 個の頂点を%2 %1° 回転中。離すと確定、Esc で取り消し。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/rotate_tool.cpp" line="102"/>
+        <source>Rotate %n vertices</source>
+        <translation>
+            <numerusform>%n 個の頂点を回転</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="106"/>
+        <source>Rotation cancelled; the design is as it was.</source>
+        <translation>回転を取り消しました。デザインは元のままです。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="110"/>
+        <source>Rotation stopped: %1 The design is as it was.</source>
+        <translation>回転を中止しました: %1 デザインは元のままです。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/rotate_tool.cpp" line="114"/>
+        <source>Rotation stopped: the design changed during the rotation.</source>
+        <translation>回転を中止しました: 回転中にデザインが変更されました。</translation>
     </message>
 </context>
 <context>
@@ -1772,6 +2024,34 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::SmoothRulingsReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="135"/>
+        <source>Smooth: the solver keeps the surface smooth across the selected rulings (both patches share the tangent plane).</source>
+        <translation>滑らか: ソルバーは選択した母線をまたいで曲面を滑らかに保ちます (両方のパッチが接平面を共有します)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="137"/>
+        <source>Sharp: the surface may fold along the selected rulings.</source>
+        <translation>鋭角: 曲面は選択した母線に沿って折れてもかまいません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="139"/>
+        <source>Select rulings between two patches of one surface first.</source>
+        <translation>先に 1 つの曲面の 2 つのパッチの間の母線を選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="177"/>
+        <source>&amp;Smooth Rulings</source>
+        <translation>滑らかな母線(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="180"/>
+        <source>S&amp;harp Rulings</source>
+        <translation>鋭角の母線(&amp;H)</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::SolveController</name>
     <message>
         <location filename="../app/gui/solve_controller.cpp" line="38"/>
@@ -1779,94 +2059,125 @@
         <translation>ソルブする対象がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="59"/>
-        <location filename="../app/gui/solve_controller.cpp" line="137"/>
+        <location filename="../app/gui/solve_controller.cpp" line="61"/>
+        <source>%1: there is nothing to solve; nothing changed.</source>
+        <translation>%1: ソルブするものがありません。何も変更されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="98"/>
+        <source>%1 cancelled; nothing moved.</source>
+        <translation>%1 を取り消しました。何も動いていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="99"/>
+        <source>%1 cancelled: %2; nothing moved.</source>
+        <translation>%1 を取り消しました: %2。何も動いていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="101"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>ソルブを中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="60"/>
+        <location filename="../app/gui/solve_controller.cpp" line="102"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>ソルブを中止しました: %1。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="71"/>
+        <location filename="../app/gui/solve_controller.cpp" line="106"/>
+        <source>%1 failed: %2 Nothing moved.</source>
+        <translation>%1 に失敗しました: %2 何も動いていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="126"/>
         <source>the design changed</source>
         <translation>デザインが変更されました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="82"/>
+        <location filename="../app/gui/solve_controller.cpp" line="137"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="86"/>
+        <location filename="../app/gui/solve_controller.cpp" line="141"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="98"/>
+        <location filename="../app/gui/solve_controller.cpp" line="153"/>
         <source>converged</source>
         <translation>収束</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="102"/>
+        <location filename="../app/gui/solve_controller.cpp" line="157"/>
         <source>tolerance reached</source>
         <translation>許容値に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="102"/>
+        <location filename="../app/gui/solve_controller.cpp" line="157"/>
         <source>iteration limit reached</source>
         <translation>反復回数の上限に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="105"/>
+        <location filename="../app/gui/solve_controller.cpp" line="160"/>
         <source>cancelled</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="108"/>
+        <location filename="../app/gui/solve_controller.cpp" line="163"/>
         <source>failed</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="112"/>
+        <location filename="../app/gui/solve_controller.cpp" line="167"/>
         <source> (%1)</source>
         <translation> (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="114"/>
+        <location filename="../app/gui/solve_controller.cpp" line="169"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="119"/>
+        <location filename="../app/gui/solve_controller.cpp" line="174"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="125"/>
+        <location filename="../app/gui/solve_controller.cpp" line="180"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="134"/>
+        <location filename="../app/gui/solve_controller.cpp" line="189"/>
         <source>Solve</source>
         <translation>ソルブ</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="141"/>
-        <location filename="../app/gui/solve_controller.cpp" line="157"/>
+        <location filename="../app/gui/solve_controller.cpp" line="244"/>
+        <source>%1 discarded: the design changed while solving; nothing moved.</source>
+        <translation>%1 を破棄しました: ソルブ中にデザインが変更されました。何も動いていません。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/solve_controller.cpp" line="261"/>
+        <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
+        <translation>
+            <numerusform>%1、可展を維持: %n 回反復、最大の制約残差 %2。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="107"/>
+        <location filename="../app/gui/solve_controller.cpp" line="216"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>ソルブに失敗しました: %1 デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="147"/>
+        <location filename="../app/gui/solve_controller.cpp" line="206"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>ソルブ中にデザインが変更されたため、結果を破棄しました。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="176"/>
+        <location filename="../app/gui/solve_controller.cpp" line="235"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>ソルブ完了: %n 回反復、制約残差の最大値 %1。</numerusform>
@@ -1936,35 +2247,35 @@
 <context>
     <name>devsurf::app::SplitAtRulingReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="210"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="212"/>
         <source>The curves of this strip have a single spline interval, so a ruling can only be added after refining them (the shape stays the same). Refine now?</source>
         <translation>このストリップの曲線はスプライン区間が 1 つしかないため、母線は細分化した後でなければ追加できません (形状は変わりません)。今すぐ細分化しますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="215"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="217"/>
         <source>Cannot refine</source>
         <translation>細分化できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="209"/>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="226"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="211"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="228"/>
         <source>Add Ruling</source>
         <translation>母線を追加</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="190"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="192"/>
         <source>Add a ruling across the selected strip and the strips that share its curves. Select one strip or cone patch first.</source>
         <translation>選択したストリップと同じ曲線を共有するストリップを横切る母線を追加します。先にストリップまたは錐面のパッチを 1 つ選択してください。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="227"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="229"/>
         <source>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoint(s) of the curves; refine the curves (Ctrl+Shift+R) for more.</source>
         <translation>
             <numerusform>新しい母線がパッチ %1 と同じ曲線を共有するストリップを横切る位置 (3D ビューで緑): ストリップに沿った割合 (%)。母線は曲線の %n 個の区切り点を通ることができます。さらに増やすには曲線を細分化してください (Ctrl+Shift+R)。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="258"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="260"/>
         <source>Cannot add the ruling</source>
         <translation>母線を追加できません</translation>
     </message>
@@ -1972,22 +2283,22 @@
 <context>
     <name>devsurf::app::SubdivideStripReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="135"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="137"/>
         <source>Add a crease across the selected strip and the row of strips it belongs to. Select one patch of type strip (SRSR) first.</source>
         <translation>選択したストリップとそれが属するストリップの列を横切る折り線を追加します。先に種類がストリップ (SRSR) のパッチを 1 つ選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="146"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="148"/>
         <source>Add Crease</source>
         <translation>折り線を追加</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="147"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="149"/>
         <source>Where the new crease crosses patch %1 and the strips of its row (green in the 3D view): per cent of the way from one curve of the strip to the other.</source>
         <translation>新しい折り線がパッチ %1 とその列のストリップを横切る位置 (3D ビューで緑): ストリップの一方の曲線からもう一方への割合 (%)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="176"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="178"/>
         <source>Cannot add the crease</source>
         <translation>折り線を追加できません</translation>
     </message>
@@ -2090,18 +2401,18 @@
 <context>
     <name>devsurf::views::SceneView</name>
     <message>
-        <location filename="../views/scene_view.cpp" line="50"/>
+        <location filename="../views/scene_view.cpp" line="51"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="52"/>
+        <location filename="../views/scene_view.cpp" line="53"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="449"/>
-        <location filename="../views/scene_view.cpp" line="458"/>
+        <location filename="../views/scene_view.cpp" line="485"/>
+        <location filename="../views/scene_view.cpp" line="494"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>曲面 %1 は有効でないため表示されません。</translation>
     </message>
@@ -2164,14 +2475,42 @@
 <context>
     <name>devsurf::views::ViewOverlay</name>
     <message>
-        <location filename="../views/view_overlay.cpp" line="78"/>
+        <location filename="../views/view_overlay.cpp" line="55"/>
+        <source>CF</source>
+        <comment>badge: curved fold</comment>
+        <translation>曲</translation>
+    </message>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="57"/>
+        <source>G</source>
+        <comment>badge: geodesic</comment>
+        <translation>測</translation>
+    </message>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="59"/>
+        <source>SU</source>
+        <comment>badge: straight when unfolded</comment>
+        <translation>直</translation>
+    </message>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="115"/>
         <source>Mountain fold</source>
         <translation>山折り</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="81"/>
+        <location filename="../views/view_overlay.cpp" line="118"/>
         <source>Valley fold</source>
         <translation>谷折り</translation>
+    </message>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="125"/>
+        <source>Smooth ruling</source>
+        <translation>滑らかな母線</translation>
+    </message>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="128"/>
+        <source>Sharp ruling</source>
+        <translation>鋭角の母線</translation>
     </message>
 </context>
 <context>

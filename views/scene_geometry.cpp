@@ -56,6 +56,10 @@ EdgeCurve makeCurve(const model::CompositeSurface& surface, EdgeId id) {
     const std::size_t faces = surface.facesOfEdge(id).size();
     curve.crease = curve.spline && faces == 2;
     curve.boundary = faces == 1;
+    if (curve.crease) {
+        curve.condition = surface.edge(id).condition;
+    }
+    curve.smooth = !curve.spline && faces == 2 && surface.edge(id).smooth;
     return curve;
 }
 

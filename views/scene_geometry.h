@@ -23,6 +23,11 @@ struct EdgeCurve {
     bool crease = false; // an S-edge shared by two faces
     // How a crease is folded (model::creasesOf), drawn in the origami colours.
     model::FoldAssignment fold = model::FoldAssignment::Flat;
+    // What the solver imposes on a crease (creases only; None otherwise).
+    model::CreaseCondition condition = model::CreaseCondition::None;
+    // A ruling between two patches that the surface stays smooth across (false: sharp, or not
+    // such a ruling).
+    bool smooth = false;
     bool boundary = false;
     std::vector<model::Vec3> points;
 };

@@ -2,6 +2,7 @@
 
 #include "poly_data_builders.h"
 #include "quality_colours.h"
+#include "view_overlay.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -115,6 +116,10 @@ SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
     lineStyle(*m_overlapOutline, 0.9, 0.05, 0.05, 4.0, false);
     m_rulingEdges = &addLayer();
     lineStyle(*m_rulingEdges, 0.35, 0.35, 0.35, 1.5, false);
+    // Rulings the surface stays smooth across: light and wider, unlike the dark sharp ones.
+    m_smoothRulings = &addLayer();
+    const QColor smooth = ViewOverlay::smoothRulingColour();
+    lineStyle(*m_smoothRulings, smooth.redF(), smooth.greenF(), smooth.blueF(), 3.0, false);
     m_splineEdges = &addLayer();
     lineStyle(*m_splineEdges, 0.15, 0.15, 0.15, 2.5, false);
     // Creases: the folds the design is about, thicker and darker than everything else.
@@ -228,6 +233,7 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
     m_faces->actor->SetPickable(true);
 
     std::vector<std::vector<Vec3>> rulingEdges;
+    std::vector<std::vector<Vec3>> smoothRulings;
     std::vector<std::vector<Vec3>> splineEdges;
     std::vector<std::vector<Vec3>> creases;
     std::vector<std::vector<Vec3>> mountains;
@@ -240,6 +246,7 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
     std::vector<Vec3> vertices;
     std::vector<Vec3> pinned;
     m_pinnedDrawn.clear();
+    int sharpRulings = 0;
     for (const SurfaceScene& scene : m_scenes) {
         for (model::VertexId id : scene.pinned) {
             auto it = scene.vertices.find(id);
@@ -253,9 +260,12 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
                 mountains.push_back(edge.points);
             } else if (edge.crease && edge.fold == model::FoldAssignment::Valley) {
                 valleys.push_back(edge.points);
+            } else if (edge.smooth) {
+                smoothRulings.push_back(edge.points);
             } else {
                 (edge.crease ? creases : (edge.spline ? splineEdges : rulingEdges))
                     .push_back(edge.points);
+                sharpRulings += !edge.spline && !edge.boundary ? 1 : 0;
             }
         }
         rulings.insert(rulings.end(), scene.rulings.begin(), scene.rulings.end());
@@ -272,6 +282,9 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
         }
     }
     m_rulingEdges->assign(polylineData(rulingEdges), geometryOnly);
+    m_smoothRulings->assign(polylineData(smoothRulings), geometryOnly);
+    m_rulingCounts = {static_cast<int>(smoothRulings.size()), sharpRulings};
+    m_conditionMarks = views::conditionMarks(m_scenes);
     m_splineEdges->assign(polylineData(splineEdges), geometryOnly);
     m_creases->assign(polylineData(creases), geometryOnly);
     m_mountains->assign(polylineData(mountains), geometryOnly);
@@ -395,48 +408,12 @@ void SceneRenderer::setShowVertices(bool show) {
     m_vertices->actor->SetVisibility(show);
 }
 
-std::optional<Vec3> SceneRenderer::displayToPlane(double displayX, double displayY,
-                                                  const Vec3& planePoint,
-                                                  const Vec3& planeNormal) const {
-    // The ray through the display point, from the near to the far clipping plane.
-    Vec3 ends[2];
-    for (int k = 0; k < 2; ++k) {
-        m_renderer->SetDisplayPoint(displayX, displayY, k == 0 ? 0.0 : 1.0);
-        m_renderer->DisplayToWorld();
-        const double* w = m_renderer->GetWorldPoint();
-        if (w[3] == 0.0) {
-            return std::nullopt;
-        }
-        ends[k] = Vec3(w[0] / w[3], w[1] / w[3], w[2] / w[3]);
-    }
-    const Vec3 direction = ends[1] - ends[0];
-    const double denominator = dot(direction, planeNormal);
-    if (std::abs(denominator) < 1e-12 * direction.norm() * planeNormal.norm()) {
-        return std::nullopt;
-    }
-    const double t = dot(planePoint - ends[0], planeNormal) / denominator;
-    return ends[0] + direction * t;
-}
-
 void SceneRenderer::setTargetPoints(const std::vector<Vec3>& points) {
     m_target->assign(pointData(points), false);
 }
 
 void SceneRenderer::setPreviewLines(const std::vector<std::vector<Vec3>>& lines) {
     m_preview->assign(polylineData(lines), false);
-}
-
-Vec3 SceneRenderer::viewDirection() const {
-    double direction[3];
-    m_renderer->GetActiveCamera()->GetDirectionOfProjection(direction);
-    return {direction[0], direction[1], direction[2]};
-}
-
-Vec3 SceneRenderer::toDisplay(const Vec3& point) const {
-    m_renderer->SetWorldPoint(point.x, point.y, point.z, 1.0);
-    m_renderer->WorldToDisplay();
-    const double* d = m_renderer->GetDisplayPoint();
-    return {d[0], d[1], d[2]};
 }
 
 const Vec3* SceneRenderer::vertexPosition(int surface, model::VertexId vertex) const {
@@ -528,51 +505,6 @@ std::optional<Pick> SceneRenderer::pick(double displayX, double displayY, double
         return best;
     }
     return face;
-}
-
-Vec3 SceneRenderer::defaultDirection() {
-    const Vec3 eye(1.0, -1.6, 1.2);
-    return -eye / eye.norm();
-}
-
-void SceneRenderer::lookAlong(const Vec3& direction, const Vec3& up) {
-    if (m_mode != Mode::Spatial || direction.norm() == 0.0) {
-        return;
-    }
-    vtkCamera* camera = m_renderer->GetActiveCamera();
-    const Vec3 d = direction / direction.norm();
-    camera->SetFocalPoint(0.0, 0.0, 0.0);
-    camera->SetPosition(-d.x, -d.y, -d.z);
-    camera->SetViewUp(up.x, up.y, up.z);
-    camera->OrthogonalizeViewUp();
-    m_renderer->ResetCamera();
-}
-
-double SceneRenderer::pixelsPerUnit() const {
-    vtkCamera* camera = m_renderer->GetActiveCamera();
-    const int* size = m_renderer->GetSize();
-    if (size[1] <= 0) {
-        return 0.0;
-    }
-    // The height of the scene seen at the focal point, in scene units.
-    double visible = 0.0;
-    if (camera->GetParallelProjection() != 0) {
-        visible = 2.0 * camera->GetParallelScale();
-    } else {
-        constexpr double kDegree = 3.14159265358979323846 / 180.0;
-        visible = 2.0 * camera->GetDistance() * std::tan(0.5 * camera->GetViewAngle() * kDegree);
-    }
-    return visible > 0.0 && std::isfinite(visible) ? size[1] / visible : 0.0;
-}
-
-void SceneRenderer::resetCamera() {
-    if (m_mode == Mode::Development) {
-        vtkCamera* camera = m_renderer->GetActiveCamera();
-        camera->SetPosition(0.0, 0.0, 1.0);
-        camera->SetFocalPoint(0.0, 0.0, 0.0);
-        camera->SetViewUp(0.0, 1.0, 0.0);
-    }
-    m_renderer->ResetCamera();
 }
 
 } // namespace devsurf::views

@@ -2,6 +2,7 @@
 
 // Internal to views/: includes VTK.
 
+#include "crease_marks.h"
 #include "model/document/selection.h"
 #include "quality_colours.h"
 #include "scene_geometry.h"
@@ -41,6 +42,12 @@ public:
     const std::set<document::Pick>& pinnedDrawn() const { return m_pinnedDrawn; }
     // Mountain and valley creases drawn (for the fold legend and tests).
     std::pair<int, int> foldCounts() const { return m_foldCounts; }
+    // The creases with a condition (drawn as badges by the view's overlay).
+    const std::vector<ConditionMark>& conditionMarks() const { return m_conditionMarks; }
+    // Rulings between two patches drawn smooth (light) and sharp (dark).
+    std::pair<int, int> rulingCounts() const { return m_rulingCounts; }
+    // Whether the surface hides a scene point from the camera (3D; never in the development).
+    bool isHidden(const model::Vec3& point) const;
 
     // Patch colours, or a quality measure with its legend (3D view only).
     void setColourBy(ColourBy by);
@@ -92,6 +99,9 @@ private:
     std::vector<std::unique_ptr<Layer>> m_layers;
     Layer* m_faces = nullptr;
     Layer* m_rulingEdges = nullptr;
+    Layer* m_smoothRulings = nullptr;
+    std::pair<int, int> m_rulingCounts; // smooth and sharp rulings between two patches
+    std::vector<ConditionMark> m_conditionMarks;
     Layer* m_splineEdges = nullptr;
     Layer* m_creases = nullptr;
     Layer* m_mountains = nullptr;

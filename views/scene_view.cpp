@@ -22,6 +22,7 @@
 #include <exception>
 #include <limits>
 #include <map>
+#include <set>
 
 namespace devsurf::views {
 
@@ -286,6 +287,22 @@ std::pair<bool, bool> SceneView::foldLegend() const {
     return {d->overlay->showsMountainLegend(), d->overlay->showsValleyLegend()};
 }
 
+std::vector<ViewOverlay::Badge> SceneView::conditionBadges() const {
+    return d->overlay->badges();
+}
+
+std::pair<int, int> SceneView::rulingsDrawn() const {
+    return d->scene->rulingCounts();
+}
+
+QStringList SceneView::legendEntries() const {
+    return d->overlay->legendEntries();
+}
+
+QImage SceneView::grabOverlay() const {
+    return d->overlay->grab().toImage();
+}
+
 QString SceneView::scaleBarText() const {
     return d->overlay->scaleBarText();
 }
@@ -374,6 +391,7 @@ void SceneView::updateOverlay() {
     }
     const auto [mountains, valleys] = d->scene->foldCounts();
     d->overlay->setFoldLegend(mountains > 0, valleys > 0);
+    updateBadges();
     std::vector<ViewOverlay::Label> labels;
     if (d->showLabels) {
         for (const LabelAnchor& anchor : d->anchors) {
@@ -390,6 +408,24 @@ void SceneView::updateOverlay() {
         }
     }
     d->overlay->setLabels(std::move(labels));
+}
+
+void SceneView::updateBadges() {
+    const double dpr = d->gl->effectiveDevicePixelRatio();
+    std::vector<ViewOverlay::Badge> badges;
+    std::set<model::CreaseCondition> present;
+    for (const ConditionMark& mark : d->scene->conditionMarks()) {
+        present.insert(mark.condition);
+        if (d->scene->isHidden(mark.point)) {
+            continue;
+        }
+        const model::Vec3 display = d->scene->toDisplay(mark.point);
+        badges.push_back({QPointF(display.x / dpr, (d->deviceHeight() - 1.0 - display.y) / dpr),
+                          mark.condition, mark.surface, mark.edge});
+    }
+    const auto [smooth, sharp] = d->scene->rulingCounts();
+    d->overlay->setMarkLegend({present.begin(), present.end()}, smooth > 0, sharp > 0);
+    d->overlay->setBadges(std::move(badges));
 }
 
 void SceneView::rerender() {

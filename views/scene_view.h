@@ -4,6 +4,7 @@
 #include "model/document/selection.h"
 #include "model/ids.h"
 #include "model/vec3.h"
+#include "view_overlay.h"
 
 #include <QImage>
 #include <QPoint>
@@ -82,6 +83,15 @@ public:
     // Mountain and valley creases drawn, and whether the fold legend shows each.
     std::pair<int, int> foldsDrawn() const;
     std::pair<bool, bool> foldLegend() const;
+    // The badges drawn at the creases that carry a condition ("CF", "G", "SU"), those in view
+    // (in 3D not where the surface hides them), at widget positions.
+    std::vector<ViewOverlay::Badge> conditionBadges() const;
+    // Rulings between two patches drawn smooth (light) and sharp (dark).
+    std::pair<int, int> rulingsDrawn() const;
+    // The legend's entries, top to bottom: "Mountain fold", "CF Curved fold", "Smooth ruling"…
+    QStringList legendEntries() const;
+    // What the overlay paints over the rendering (legend, badges, labels, scale bar).
+    QImage grabOverlay() const;
     // The 3D view draws an orientation triad (x red, y green, z blue) in its lower left.
     bool hasOrientationTriad() const;
     bool showPatchLabels() const;
@@ -135,6 +145,8 @@ private:
     void selectInRectangle(const QRect& rect, bool add);
     // After each render: scale bar and patch labels for the camera just drawn.
     void updateOverlay();
+    // The condition badges and the legend entries of conditions and rulings.
+    void updateBadges();
     void syncTriadCamera();
 
     struct Private;

@@ -1,5 +1,7 @@
 #include "view_overlay.h"
 
+#include "model/document/commands/crease_condition_command.h"
+
 #include <QFontMetricsF>
 #include <QPaintEvent>
 #include <QPainter>
@@ -47,6 +49,95 @@ void ViewOverlay::setFoldLegend(bool mountains, bool valleys) {
     }
 }
 
+QString ViewOverlay::badgeText(model::CreaseCondition condition) {
+    switch (condition) {
+    case model::CreaseCondition::CurvedFold:
+        return tr("CF", "badge: curved fold");
+    case model::CreaseCondition::Geodesic:
+        return tr("G", "badge: geodesic");
+    case model::CreaseCondition::Straight:
+        return tr("SU", "badge: straight when unfolded");
+    case model::CreaseCondition::None:
+        break;
+    }
+    return QString();
+}
+
+QColor ViewOverlay::badgeColour(model::CreaseCondition condition) {
+    switch (condition) {
+    case model::CreaseCondition::CurvedFold:
+        return {125, 45, 170};
+    case model::CreaseCondition::Geodesic:
+        return {0, 115, 120};
+    case model::CreaseCondition::Straight:
+        return {150, 85, 10};
+    case model::CreaseCondition::None:
+        break;
+    }
+    return {90, 90, 90};
+}
+
+QColor ViewOverlay::smoothRulingColour() {
+    return {255, 255, 255};
+}
+
+QColor ViewOverlay::sharpRulingColour() {
+    return {89, 89, 89};
+}
+
+void ViewOverlay::setMarkLegend(std::vector<model::CreaseCondition> conditions, bool smoothRulings,
+                                bool sharpRulings) {
+    sharpRulings = sharpRulings && smoothRulings;
+    if (conditions != m_conditions || smoothRulings != m_smoothRulings ||
+        sharpRulings != m_sharpRulings) {
+        m_conditions = std::move(conditions);
+        m_smoothRulings = smoothRulings;
+        m_sharpRulings = sharpRulings;
+        update();
+    }
+}
+
+void ViewOverlay::setBadges(std::vector<Badge> badges) {
+    bool same = badges.size() == m_badges.size();
+    for (std::size_t i = 0; same && i < badges.size(); ++i) {
+        same = badges[i].condition == m_badges[i].condition &&
+               (badges[i].position - m_badges[i].position).manhattanLength() < 0.5;
+    }
+    if (!same) {
+        m_badges = std::move(badges);
+        update();
+    }
+}
+
+std::vector<ViewOverlay::LegendEntry> ViewOverlay::legend() const {
+    std::vector<LegendEntry> entries;
+    if (m_mountains) {
+        entries.push_back({QColor(230, 25, 25), QString(), tr("Mountain fold")});
+    }
+    if (m_valleys) {
+        entries.push_back({QColor(25, 90, 240), QString(), tr("Valley fold")});
+    }
+    for (model::CreaseCondition condition : m_conditions) {
+        entries.push_back({badgeColour(condition), badgeText(condition),
+                           document::CreaseConditionCommand::conditionText(condition)});
+    }
+    if (m_smoothRulings) {
+        entries.push_back({smoothRulingColour(), QString(), tr("Smooth ruling")});
+    }
+    if (m_sharpRulings) {
+        entries.push_back({sharpRulingColour(), QString(), tr("Sharp ruling")});
+    }
+    return entries;
+}
+
+QStringList ViewOverlay::legendEntries() const {
+    QStringList texts;
+    for (const LegendEntry& entry : legend()) {
+        texts << (entry.badge.isEmpty() ? entry.text : entry.badge + QLatin1Char(' ') + entry.text);
+    }
+    return texts;
+}
+
 void ViewOverlay::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     painter.setRenderHint(QPainter::Antialiasing);
@@ -72,26 +163,51 @@ void ViewOverlay::paintEvent(QPaintEvent*) {
         painter.drawText(box, Qt::AlignCenter, label.text);
     }
 
-    // Fold legend: the origami colours of the creases, upper left.
-    std::vector<std::pair<QColor, QString>> folds;
-    if (m_mountains) {
-        folds.emplace_back(QColor(230, 25, 25), tr("Mountain fold"));
+    // Crease conditions: white letters on a box in the condition's colour, at the midpoints.
+    QFont bold = font;
+    bold.setBold(true);
+    bold.setPointSizeF(font.pointSizeF() * 0.85);
+    const QFontMetricsF boldMetrics(bold);
+    auto drawBadge = [&](const QPointF& centre, const QString& text, const QColor& colour) {
+        QRectF box = boldMetrics.boundingRect(text).adjusted(-3, -1, 3, 1);
+        box.moveCenter(centre);
+        painter.setPen(QPen(QColor(255, 255, 255, 230), 1.5));
+        painter.setBrush(colour);
+        painter.drawRoundedRect(box, 3, 3);
+        painter.setPen(Qt::white);
+        painter.setFont(bold);
+        painter.drawText(box, Qt::AlignCenter, text);
+        painter.setFont(font);
+    };
+    for (const Badge& badge : m_badges) {
+        if (rect().contains(badge.position.toPoint())) {
+            drawBadge(badge.position, badgeText(badge.condition), badgeColour(badge.condition));
+        }
     }
-    if (m_valleys) {
-        folds.emplace_back(QColor(25, 90, 240), tr("Valley fold"));
-    }
+
+    // Legend, upper left: the origami colours of the creases, the condition badges and the
+    // smooth and sharp rulings.
     double top = 10.0;
-    for (const auto& [colour, text] : folds) {
-        const QRectF box(10.0, top, 40.0 + metrics.horizontalAdvance(text) + 12.0,
+    for (const LegendEntry& entry : legend()) {
+        const QRectF box(10.0, top, 40.0 + metrics.horizontalAdvance(entry.text) + 12.0,
                          metrics.height() + 6.0);
         painter.setPen(Qt::NoPen);
         painter.setBrush(halo);
         painter.drawRoundedRect(box, 3, 3);
-        painter.setPen(QPen(colour, 4.0));
-        painter.drawLine(QPointF(box.left() + 6.0, box.center().y()),
-                         QPointF(box.left() + 34.0, box.center().y()));
+        const QPointF swatch(box.left() + 20.0, box.center().y());
+        if (!entry.badge.isEmpty()) {
+            drawBadge(swatch, entry.badge, entry.colour);
+        } else {
+            // A line as the views draw it, on a grey ground so that a light line shows.
+            painter.setBrush(QColor(170, 175, 185));
+            painter.drawRect(QRectF(swatch.x() - 15.0, swatch.y() - 4.0, 30.0, 8.0));
+            QPen pen(entry.colour, 4.0);
+            pen.setCapStyle(Qt::FlatCap);
+            painter.setPen(pen);
+            painter.drawLine(swatch - QPointF(14.0, 0.0), swatch + QPointF(14.0, 0.0));
+        }
         painter.setPen(ink);
-        painter.drawText(box.adjusted(40.0, 0, 0, 0), Qt::AlignVCenter | Qt::AlignLeft, text);
+        painter.drawText(box.adjusted(40.0, 0, 0, 0), Qt::AlignVCenter | Qt::AlignLeft, entry.text);
         top += box.height() + 4.0;
     }
 

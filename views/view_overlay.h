@@ -1,7 +1,11 @@
 #pragma once
 
+#include "model/composite_surface.h"
+
+#include <QColor>
 #include <QPointF>
 #include <QString>
+#include <QStringList>
 #include <QWidget>
 
 #include <vector>
@@ -19,7 +23,22 @@ public:
         QString text;
     };
 
+    // A crease's condition, written in a small coloured box at the crease's midpoint.
+    struct Badge {
+        QPointF position; // widget coordinates
+        model::CreaseCondition condition = model::CreaseCondition::None;
+        int surface = 0;
+        model::EdgeId edge = model::kInvalidId;
+    };
+
     explicit ViewOverlay(QWidget* parent);
+
+    // The badge's text ("CF", "G", "SU") and colour for a condition.
+    static QString badgeText(model::CreaseCondition condition);
+    static QColor badgeColour(model::CreaseCondition condition);
+    // How the views draw rulings between two patches: smooth ones light, sharp ones dark.
+    static QColor smoothRulingColour();
+    static QColor sharpRulingColour();
 
     // Scale bar of the given length on screen (logical pixels) and its text, e.g. "50 mm";
     // none when pixels is not positive.
@@ -28,6 +47,15 @@ public:
     // The fold legend in the upper left corner: a red line "Mountain fold" and a blue line
     // "Valley fold", for those present.
     void setFoldLegend(bool mountains, bool valleys);
+    // The rest of the legend, below the folds: a badge with its condition for every condition
+    // among conditions, and, when smooth rulings are drawn, a light line "Smooth ruling" and
+    // (if any) a dark line "Sharp ruling".
+    void setMarkLegend(std::vector<model::CreaseCondition> conditions, bool smoothRulings,
+                       bool sharpRulings);
+    void setBadges(std::vector<Badge> badges);
+    const std::vector<Badge>& badges() const { return m_badges; }
+    // The legend's entries as written, top to bottom.
+    QStringList legendEntries() const;
     bool showsMountainLegend() const { return m_mountains; }
     bool showsValleyLegend() const { return m_valleys; }
 
@@ -42,8 +70,19 @@ private:
     double m_barPixels = 0.0;
     QString m_barText;
     std::vector<Label> m_labels;
+    struct LegendEntry {
+        QColor colour;
+        QString badge; // a badge swatch; a line swatch when empty
+        QString text;
+    };
+    std::vector<LegendEntry> legend() const;
+
     bool m_mountains = false;
     bool m_valleys = false;
+    std::vector<model::CreaseCondition> m_conditions;
+    bool m_smoothRulings = false;
+    bool m_sharpRulings = false;
+    std::vector<Badge> m_badges;
 };
 
 } // namespace devsurf::views

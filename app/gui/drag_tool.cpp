@@ -44,18 +44,20 @@ DragTool::DragTool(QAction* action, Workspace* workspace, views::SurfaceView* vi
     connect(m_action, &QAction::toggled, this, [this](bool on) {
         if (on) {
             qApp->installEventFilter(this);
+            emit statusMessage(hintText());
         } else {
             if (m_state == State::Dragging) {
-                abort(tr("Drag cancelled; the design is as it was."));
+                abort(cancelledText());
             }
             qApp->removeEventFilter(this);
-            m_axis = Axis::Free;
+            m_heldAxis = Axis::Free;
         }
     });
     connect(workspace->document(), &document::Document::projectReset, this, [this] {
         if (m_state != State::Idle) {
             m_solver->worker()->cancel();
             m_state = State::Idle;
+            finish();
             emit dragFinished(false);
         }
     });
@@ -67,6 +69,52 @@ DragTool::~DragTool() {
 
 QString DragTool::undoText() const {
     return tr("Drag %n vertices", nullptr, static_cast<int>(m_vertices.size()));
+}
+
+QString DragTool::cancelledText() const {
+    return tr("Drag cancelled; the design is as it was.");
+}
+
+QString DragTool::stoppedText(const QString& reason) const {
+    return tr("Drag stopped: %1 The design is as it was.").arg(reason);
+}
+
+QString DragTool::hintText() const {
+    return tr("Drag tool: press on a vertex in the 3D view and move the mouse; the selected "
+              "vertices of its surface follow. Esc cancels a drag.");
+}
+
+QString DragTool::changedText() const {
+    return tr("Drag stopped: the design changed during the drag.");
+}
+
+QString DragTool::motionText() const {
+    const double distance = m_targets.empty() ? 0.0 : (m_targets.front() - m_start.front()).norm();
+    const QString length = QString::number(distance, 'f', 2);
+    const int n = static_cast<int>(m_vertices.size());
+    switch (axis()) {
+    case Axis::X:
+        return tr("Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.", nullptr, n)
+            .arg(length);
+    case Axis::Y:
+        return tr("Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.", nullptr, n)
+            .arg(length);
+    case Axis::Z:
+        return tr("Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.", nullptr, n)
+            .arg(length);
+    case Axis::Free:
+        break;
+    }
+    return tr("Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; "
+              "hold X, Y or Z to move along that axis.",
+              nullptr, n)
+        .arg(length);
+}
+
+model::Vec3 DragTool::unitVector(Axis axis) {
+    model::Vec3 unit;
+    unit[axis == Axis::X ? 0 : (axis == Axis::Y ? 1 : 2)] = 1.0;
+    return unit;
 }
 
 bool DragTool::handleKey(QEvent* event) {
@@ -95,7 +143,7 @@ bool DragTool::handleKey(QEvent* event) {
         break;
     case Qt::Key_Escape:
         if (event->type() == QEvent::KeyPress && m_state == State::Dragging) {
-            abort(tr("Drag cancelled; the design is as it was."));
+            abort(cancelledText());
             return true;
         }
         return false;
@@ -103,9 +151,9 @@ bool DragTool::handleKey(QEvent* event) {
         return false;
     }
     if (event->type() == QEvent::KeyPress) {
-        m_axis = axis;
-    } else if (m_axis == axis) {
-        m_axis = Axis::Free;
+        m_heldAxis = axis;
+    } else if (m_heldAxis == axis) {
+        m_heldAxis = Axis::Free;
     }
     return m_state == State::Dragging;
 }
@@ -160,19 +208,19 @@ bool DragTool::press(const QPoint& pos) {
             tr("Vertex %1 is pinned and cannot be dragged; unpin it first.").arg(pick->id));
         return true;
     }
-    // The pressed vertex with the other selected vertices of its surface, if it is selected.
+    // The pressed vertex with the other selected vertices of its surface, if it is selected
+    // (a tool that moves the selection as a whole takes them from a press on any vertex).
     document::Selection* selection = m_workspace->selection();
     m_vertices.clear();
-    if (selection->contains(*pick)) {
-        for (const Pick& p : selection->picks()) {
-            if (p.kind == Pick::Kind::Vertex && p.surface == pick->surface &&
-                surface.hasVertex(p.id) && !surface.isPinned(p.id)) {
-                m_vertices.push_back(p.id);
-            }
+    for (const Pick& p : selection->picks()) {
+        if (p.kind == Pick::Kind::Vertex && p.surface == pick->surface && surface.hasVertex(p.id) &&
+            !surface.isPinned(p.id)) {
+            m_vertices.push_back(p.id);
         }
-    } else {
+    }
+    if (!selection->contains(*pick) && (!movesWholeSelection() || m_vertices.size() < 2)) {
         selection->set({*pick});
-        m_vertices.push_back(pick->id);
+        m_vertices.assign(1, pick->id);
     }
     if (m_solver->isSolving()) {
         m_solver->cancel(tr("a drag started"));
@@ -184,10 +232,13 @@ bool DragTool::press(const QPoint& pos) {
     }
     m_anchor = surface.position(pick->id);
     m_normal = m_view->viewDirection();
-    m_delta = model::Vec3();
     m_pressPos = pos;
     m_moved = false;
     m_pressSurfaces = doc->project().surfaces;
+    m_targets = m_start;
+    if (!begin()) {
+        return true;
+    }
     m_sessionKey = nextSessionKey();
     m_mergeKey = static_cast<int>(m_sessionKey & 0x3fffffff);
     m_pressRevision = doc->revision();
@@ -202,19 +253,29 @@ void DragTool::move(const QPoint& pos) {
     if ((pos - m_pressPos).manhattanLength() <= kClickSlop && !m_moved) {
         return;
     }
-    const std::optional<model::Vec3> hit = m_view->widgetToPlane(pos, m_anchor, m_normal);
-    if (!hit) {
+    if (!targetsAt(pos, m_targets)) {
         return;
     }
-    model::Vec3 delta = *hit - m_anchor;
-    if (m_axis != Axis::Free) {
-        model::Vec3 axis;
-        axis[m_axis == Axis::X ? 0 : (m_axis == Axis::Y ? 1 : 2)] = 1.0;
-        delta = axis * dot(delta, axis);
-    }
-    m_delta = delta;
     m_moved = true;
+    emit statusMessage(motionText());
     submit(1);
+}
+
+bool DragTool::targetsAt(const QPoint& pos, std::vector<model::Vec3>& targets) {
+    const std::optional<model::Vec3> hit = m_view->widgetToPlane(pos, m_anchor, m_normal);
+    if (!hit) {
+        return false;
+    }
+    model::Vec3 delta = *hit - m_anchor;
+    if (axis() != Axis::Free) {
+        const model::Vec3 unit = unitVector(axis());
+        delta = unit * dot(delta, unit);
+    }
+    targets.resize(m_start.size());
+    for (std::size_t i = 0; i < m_start.size(); ++i) {
+        targets[i] = m_start[i] + delta;
+    }
+    return true;
 }
 
 void DragTool::submit(int iterations) {
@@ -223,7 +284,7 @@ void DragTool::submit(int iterations) {
     request.surfaces = m_pressSurfaces;
     std::vector<solver::VertexHandle>& handles = request.pulled[m_surface];
     for (std::size_t i = 0; i < m_vertices.size(); ++i) {
-        handles.push_back({m_vertices[i], false, m_start[i] + m_delta});
+        handles.push_back({m_vertices[i], false, m_targets[i]});
     }
     request.iterations = iterations;
     request.sessionKey = m_sessionKey;
@@ -234,6 +295,7 @@ void DragTool::release(const QPoint& pos, Qt::KeyboardModifiers modifiers) {
     if (!m_moved) {
         // A click on a vertex selects as it does without the tool.
         m_state = State::Idle;
+        finish();
         const std::optional<Pick> pick = m_view->pickAt(pos);
         if (pick && (modifiers & Qt::ShiftModifier)) {
             m_workspace->selection()->toggle(*pick);
@@ -263,6 +325,7 @@ void DragTool::abort(const QString& sentence) {
 
 void DragTool::end(bool applied, const QString& sentence) {
     m_state = State::Idle;
+    finish();
     if (!sentence.isEmpty()) {
         emit statusMessage(sentence);
     }
@@ -278,12 +341,12 @@ void DragTool::onResult(const solver::SolveResult& result) {
         if (m_state == State::Finishing) {
             emit reportReady(m_solver->reportOf(result, undoText()));
         }
-        abort(tr("Drag stopped: %1 The design is as it was.").arg(result.error));
+        abort(stoppedText(result.error));
         return;
     }
     if (doc->revision() != m_ownRevision) {
         m_solver->worker()->cancel();
-        end(m_applied, tr("Drag stopped: the design changed during the drag."));
+        end(m_applied, changedText());
         return;
     }
     if (static_cast<std::size_t>(m_surface) >= result.surfaces.size() ||
@@ -294,7 +357,7 @@ void DragTool::onResult(const solver::SolveResult& result) {
         *doc, m_surface, result.surfaces[static_cast<std::size_t>(m_surface)], undoText(),
         document::Change::Geometry, m_mergeKey);
     if (edit.isRefused()) {
-        abort(tr("Drag stopped: %1 The design is as it was.").arg(edit.error()));
+        abort(stoppedText(edit.error()));
         return;
     }
     doc->undoStack()->push(edit.takeCommand().release());

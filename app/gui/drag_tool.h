@@ -25,11 +25,13 @@ class Workspace;
 
 // The Drag tool (a checkable action): press on a vertex in the 3D view (or on one of several
 // selected vertices of one surface) and move. The vertices move in the view plane through the
-// pressed vertex (holding X, Y or Z constrains the motion to that axis) and the surface
-// follows: every move runs one solver iteration with the dragged vertices pulled to the
-// mouse as handles (pinned vertices stay); the release runs ten more. The whole drag is one
-// undo step whose undo returns the exact state at press; Esc during the drag returns to the
-// state at press without an undo step. Presses away from vertices still turn the camera.
+// pressed vertex (the axis chosen in the toolbar, or holding X, Y or Z, constrains the motion
+// to that axis) and the surface follows: every move runs one solver iteration with the dragged
+// vertices pulled to the mouse as handles (pinned vertices stay); the release runs ten more.
+// The whole drag is one undo step whose undo returns the exact state at press; Esc during the
+// drag returns to the state at press without an undo step. Presses away from vertices still
+// turn the camera. Other motions of the pressed vertices (RotateTool) override the hooks
+// begin(), targetsAt(), undoText() and the sentences.
 class DragTool : public QObject {
     Q_OBJECT
 public:
@@ -39,7 +41,13 @@ public:
 
     enum class Axis { Free, X, Y, Z };
     bool isDragging() const { return m_state != State::Idle; }
-    Axis axis() const { return m_axis; }
+    // The axis in effect: the one of a held X, Y or Z key, else the chosen one.
+    Axis axis() const { return m_heldAxis != Axis::Free ? m_heldAxis : m_chosenAxis; }
+    Axis chosenAxis() const { return m_chosenAxis; }
+    // The axis chosen in the toolbar (Free: the tool's own default).
+    void setChosenAxis(Axis axis) { m_chosenAxis = axis; }
+    // The unit vector of an axis other than Free.
+    static model::Vec3 unitVector(Axis axis);
     // Iterations run after the release.
     static constexpr int kFinalIterations = 10;
 
@@ -52,6 +60,38 @@ signals:
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
+    // Called at press with the vertices to move (m_vertices, m_start) and the pressed vertex
+    // (m_anchor); returns false (after saying why) to refuse the press.
+    virtual bool begin() { return true; }
+    // The targets of m_vertices for the mouse at pos; false: no motion for this position.
+    virtual bool targetsAt(const QPoint& pos, std::vector<model::Vec3>& targets);
+    // True: a press on any vertex moves the selected vertices of its surface (two or more),
+    // whether the pressed one is selected or not; false: only a press on a selected vertex.
+    virtual bool movesWholeSelection() const { return false; }
+    // The status bar sentence when the tool is turned on.
+    virtual QString hintText() const;
+    // The status bar sentence while the vertices follow the mouse.
+    virtual QString motionText() const;
+    // Called when the motion ends (applied or not).
+    virtual void finish() {}
+    virtual QString undoText() const;
+    virtual QString cancelledText() const;
+    // "… stopped: reason The design is as it was."
+    virtual QString stoppedText(const QString& reason) const;
+    // The motion stopped because the design changed by another edit meanwhile.
+    virtual QString changedText() const;
+
+    views::SurfaceView* view() const { return m_view; }
+    const model::CompositeSurface& pressSurface() const {
+        return m_pressSurfaces.at(static_cast<std::size_t>(m_surface));
+    }
+
+    std::vector<model::VertexId> m_vertices;
+    std::vector<model::Vec3> m_start;
+    model::Vec3 m_anchor;
+    model::Vec3 m_normal; // the view direction at press
+    QPoint m_pressPos;
+
 private:
     enum class State { Idle, Dragging, Finishing };
     bool press(const QPoint& pos);
@@ -63,7 +103,6 @@ private:
     void onResult(const solver::SolveResult& result);
     void end(bool applied, const QString& sentence);
     bool handleKey(QEvent* event);
-    QString undoText() const;
 
     QAction* m_action;
     Workspace* m_workspace;
@@ -71,15 +110,11 @@ private:
     SolveController* m_solver;
 
     State m_state = State::Idle;
-    Axis m_axis = Axis::Free;
+    Axis m_heldAxis = Axis::Free;
+    Axis m_chosenAxis = Axis::Free;
     int m_surface = 0;
-    std::vector<model::VertexId> m_vertices;
-    std::vector<model::Vec3> m_start;
     std::vector<model::CompositeSurface> m_pressSurfaces;
-    model::Vec3 m_anchor;
-    model::Vec3 m_normal;
-    model::Vec3 m_delta;
-    QPoint m_pressPos;
+    std::vector<model::Vec3> m_targets;
     bool m_moved = false;
     quint64 m_sessionKey = 0;
     int m_mergeKey = 0;

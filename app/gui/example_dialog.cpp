@@ -24,6 +24,17 @@ QString description(const std::string& name) {
     if (name == "cylinder") {
         return ExampleDialog::tr("A closed cylinder of strips, size sectors around.");
     }
+    if (name == "fig8") {
+        return ExampleDialog::tr(
+            "A flat square of size × size strips with curved creases, ready to fold: every "
+            "interior crease carries the curved-fold condition and the bottom corners are "
+            "pinned. Drag the middle vertices up (Drag tool, G).");
+    }
+    if (name == "fig6") {
+        return ExampleDialog::tr(
+            "Two strips joined by one curved crease with the curved-fold condition, the bottom "
+            "corners pinned; size intervals per curve. Drag a top corner up to fold it.");
+    }
     return ExampleDialog::tr("A strip, a pointed strip, a cone and a planar patch; size "
                              "intervals per curve.");
 }

@@ -3,7 +3,6 @@
 #include "autosaver.h"
 #include "camera_actions.h"
 #include "help_dialogs.h"
-#include "model/document/commands/crease_condition_command.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "panels/patch_panel.h"
@@ -225,22 +224,12 @@ void MainWindow::createMenus() {
     QAction* refine = addAction(tools, QStringLiteral("actionRefine"), tr("Re&fine Curves"),
                                 QKeySequence(tr("Ctrl+Shift+R")));
     new RefineCurvesReaction(refine, m_workspace);
-    QMenu* creaseMenu = tools->addMenu(tr("Crease &Condition"));
-    creaseMenu->setToolTipsVisible(true);
-    const std::pair<const char*, model::CreaseCondition> creaseConditions[] = {
-        {"actionCurvedFold", model::CreaseCondition::CurvedFold},
-        {"actionGeodesic", model::CreaseCondition::Geodesic},
-        {"actionNoCondition", model::CreaseCondition::None}};
-    for (const auto& [name, condition] : creaseConditions) {
-        QAction* action =
-            creaseMenu->addAction(document::CreaseConditionCommand::conditionText(condition));
-        action->setObjectName(QString::fromLatin1(name));
-        new CreaseConditionReaction(action, m_workspace, condition);
-    }
+    QMenu* creaseMenu = createCreaseMenu(tools, m_workspace);
+    tools->addMenu(creaseMenu);
     tools->addSeparator();
     QAction* move = addAction(tools, QStringLiteral("actionMoveRotate"),
                               tr("&Move or Rotate Vertices…"), QKeySequence(tr("Ctrl+M")));
-    new MoveVerticesReaction(move, m_workspace);
+    new MoveVerticesReaction(move, m_workspace, m_solveController);
     tools->addSeparator();
     QAction* pin = addAction(tools, QStringLiteral("actionPinVertices"), tr("&Pin Vertices"),
                              QKeySequence(tr("Ctrl+K")));
@@ -254,12 +243,20 @@ void MainWindow::createMenus() {
     for (views::SceneView* sceneView : {static_cast<views::SceneView*>(m_surfaceView),
                                         static_cast<views::SceneView*>(m_developmentView)}) {
         connect(sceneView, &views::SceneView::contextMenuRequested, this,
-                [sceneView, pin, unpin, move](const QPoint& pos) {
+                [this, sceneView, pin, unpin, move, creaseMenu](const QPoint& pos) {
                     QMenu menu(sceneView);
                     menu.setObjectName(QStringLiteral("viewContextMenu"));
                     menu.setToolTipsVisible(true);
                     menu.addAction(pin);
                     menu.addAction(unpin);
+                    // Over an edge: its crease condition, or smooth / sharp for a ruling.
+                    for (const document::Pick& pick : m_workspace->selection()->picks()) {
+                        if (pick.kind == document::Pick::Kind::Edge) {
+                            menu.addSeparator();
+                            menu.addMenu(creaseMenu);
+                            break;
+                        }
+                    }
                     menu.addSeparator();
                     menu.addAction(move);
                     menu.exec(sceneView->glWidget()->mapToGlobal(pos));

@@ -19,6 +19,7 @@ class PropertiesPanel;
 class SolveController;
 class SolverPanel;
 class DragTool;
+class RotateTool;
 
 // The main window builds menus, toolbar, docks and the status bar; what each action does lives
 // in its reaction (reactions/).
@@ -50,6 +51,8 @@ private:
     // Tools ▸ Solve, the Drag tool and the solve progress in the status bar
     // (main_window_solver.cpp). Returns the actions for the toolbar.
     QList<QAction*> createSolverActions(QMenu* tools, QAction* selectNone);
+    // Tools ▸ Motion Axis (Free / X / Y / Z) for the Drag and Rotate tools; returns its actions.
+    QList<QAction*> createAxisActions(QMenu* tools, RotateTool* rotateTool);
     // View ▸ Colour By: patch, developability, flatness, angle defect.
     void createColourActions(QMenu* view);
     void updateTitle();

@@ -1,10 +1,12 @@
-// The main window's live-solving parts: Tools ▸ Solve, the Drag tool, the solve progress in
-// the status bar, the Solver panel's updates, and View ▸ Colour By.
+// The main window's live-solving parts: Tools ▸ Solve, the Drag and Rotate tools with their
+// axis choice, the solve progress in the status bar, the Solver panel's updates, and View ▸
+// Colour By.
 
 #include "camera_actions.h"
 #include "drag_tool.h"
 #include "main_window.h"
 #include "panels/solver_panel.h"
+#include "rotate_tool.h"
 #include "solve_controller.h"
 #include "views/surface_view.h"
 
@@ -16,6 +18,8 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolButton>
+
+#include <algorithm>
 
 namespace devsurf::app {
 
@@ -44,26 +48,46 @@ QList<QAction*> MainWindow::createSolverActions(QMenu* tools, QAction* selectNon
             explainSolve();
         }
     });
-    connect(solve, &QAction::triggered, this, [this] {
-        if (m_dragTool->isDragging()) {
-            statusBar()->showMessage(tr("Finish the drag first; it solves as it goes."), 5000);
-            return;
-        }
-        m_solveController->solve();
-    });
 
     QAction* drag = addAction(tools, QStringLiteral("actionDragTool"), tr("&Drag Vertices"),
                               QKeySequence(tr("G")));
     drag->setIcon(actionIcon(QStringLiteral("drag")));
     const QString dragTip =
         tr("Drag tool: press on a vertex in the 3D view and move it, the surface follows and "
-           "stays developable. Hold X, Y or Z to move along that axis; Esc cancels the drag.");
+           "stays developable. The axis chosen in the toolbar, or holding X, Y or Z, moves it "
+           "along that axis; Esc cancels the drag (G).");
     drag->setToolTip(dragTip);
     drag->setStatusTip(dragTip);
     m_dragTool = new DragTool(drag, m_workspace, m_surfaceView, m_solveController);
-    connect(m_dragTool, &DragTool::reportReady, m_solverPanel, &SolverPanel::showReport);
-    connect(m_dragTool, &DragTool::statusMessage, this,
-            [this](const QString& text) { statusBar()->showMessage(text, 8000); });
+
+    QAction* rotate = addAction(tools, QStringLiteral("actionRotateTool"), tr("R&otate Vertices"),
+                                QKeySequence(tr("R")));
+    rotate->setIcon(actionIcon(QStringLiteral("rotate")));
+    const QString rotateTip =
+        tr("Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and "
+           "move the mouse sideways; they turn about an axis through their centroid (vertical, "
+           "or as chosen in the toolbar) and the surface follows. Esc cancels.");
+    rotate->setToolTip(rotateTip);
+    rotate->setStatusTip(rotateTip);
+    auto* rotateTool = new RotateTool(rotate, m_workspace, m_surfaceView, m_solveController);
+    // One tool at a time, or none (the plain view).
+    auto* toolGroup = new QActionGroup(this);
+    toolGroup->setExclusionPolicy(QActionGroup::ExclusionPolicy::ExclusiveOptional);
+    toolGroup->addAction(drag);
+    toolGroup->addAction(rotate);
+    for (DragTool* tool : {m_dragTool, static_cast<DragTool*>(rotateTool)}) {
+        connect(tool, &DragTool::reportReady, m_solverPanel, &SolverPanel::showReport);
+        connect(tool, &DragTool::statusMessage, this,
+                [this](const QString& text) { statusBar()->showMessage(text, 8000); });
+    }
+    connect(solve, &QAction::triggered, this, [this, rotateTool] {
+        if (m_dragTool->isDragging() || rotateTool->isDragging()) {
+            statusBar()->showMessage(tr("Finish the drag first; it solves as it goes."), 5000);
+            return;
+        }
+        m_solveController->solve();
+    });
+    const QList<QAction*> axisActions = createAxisActions(tools, rotateTool);
 
     // Progress of a solve, with its Cancel (Esc); Esc selects nothing when no solve runs.
     QAction* cancel = addAction(tools, QStringLiteral("actionCancelSolve"), tr("&Cancel Solve"),
@@ -100,7 +124,73 @@ QList<QAction*> MainWindow::createSolverActions(QMenu* tools, QAction* selectNon
             });
     connect(m_solveController, &SolveController::finished, this,
             [this](const QString& text) { statusBar()->showMessage(text, 8000); });
-    return {solve, drag};
+    auto* separator = new QAction(this);
+    separator->setSeparator(true);
+    return QList<QAction*>{solve, drag, rotate, separator} + axisActions;
+}
+
+QList<QAction*> MainWindow::createAxisActions(QMenu* tools, RotateTool* rotateTool) {
+    QMenu* menu = tools->addMenu(tr("Motion &Axis"));
+    menu->setObjectName(QStringLiteral("menuMotionAxis"));
+    menu->setToolTipsVisible(true);
+    auto* group = new QActionGroup(this);
+    struct Entry {
+        const char* name;
+        DragTool::Axis axis;
+        QString text;
+        const char* icon;
+        QString tip;
+    };
+    const Entry entries[] = {
+        {"actionAxisFree", DragTool::Axis::Free, tr("&Free"), "axis-free",
+         tr("Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns "
+            "them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ "
+            "Rotate About the View Axis is on.")},
+        {"actionAxisX", DragTool::Axis::X, tr("&X Axis"), "axis-x",
+         tr("X axis: the Drag tool moves vertices along X only; the Rotate tool turns them "
+            "about an X-parallel axis through their centroid. Holding Y or Z overrides.")},
+        {"actionAxisY", DragTool::Axis::Y, tr("&Y Axis"), "axis-y",
+         tr("Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them "
+            "about a Y-parallel axis through their centroid. Holding X or Z overrides.")},
+        {"actionAxisZ", DragTool::Axis::Z, tr("&Z Axis"), "axis-z",
+         tr("Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them "
+            "about a Z-parallel axis through their centroid. Holding X or Y overrides.")}};
+    const int saved = std::clamp(QSettings().value(QStringLiteral("tools/axis"), 0).toInt(), 0, 3);
+    QList<QAction*> actions;
+    for (const Entry& entry : entries) {
+        QAction* action = menu->addAction(entry.text);
+        action->setObjectName(QString::fromLatin1(entry.name));
+        action->setIcon(actionIcon(QString::fromLatin1(entry.icon)));
+        action->setCheckable(true);
+        action->setToolTip(entry.tip);
+        action->setStatusTip(entry.tip);
+        group->addAction(action);
+        actions << action;
+        const DragTool::Axis axis = entry.axis;
+        connect(action, &QAction::toggled, this, [this, rotateTool, axis](bool on) {
+            if (on) {
+                m_dragTool->setChosenAxis(axis);
+                rotateTool->setChosenAxis(axis);
+                QSettings().setValue(QStringLiteral("tools/axis"), static_cast<int>(axis));
+            }
+        });
+    }
+    actions[saved]->setChecked(true);
+    menu->addSeparator();
+    QAction* viewAxis = menu->addAction(tr("Rotate About the &View Axis"));
+    viewAxis->setObjectName(QStringLiteral("actionRotateViewAxis"));
+    viewAxis->setCheckable(true);
+    const QString viewTip = tr("With the axis choice Free, the Rotate tool turns the vertices "
+                               "about the viewing direction through their centroid instead of "
+                               "the vertical axis.");
+    viewAxis->setToolTip(viewTip);
+    viewAxis->setStatusTip(viewTip);
+    connect(viewAxis, &QAction::toggled, this, [rotateTool](bool on) {
+        rotateTool->setAboutViewAxis(on);
+        QSettings().setValue(QStringLiteral("tools/rotateViewAxis"), on);
+    });
+    viewAxis->setChecked(QSettings().value(QStringLiteral("tools/rotateViewAxis"), false).toBool());
+    return actions;
 }
 
 void MainWindow::createColourActions(QMenu* view) {

@@ -4,12 +4,14 @@
 
 #include <QDialog>
 
+class QCheckBox;
 class QDoubleSpinBox;
 class QRadioButton;
 
 namespace devsurf::app {
 
-// Exact numeric input for Tools ▸ Move or Rotate Vertices.
+// Exact numeric input for Tools ▸ Move or Rotate Vertices. "Keep developable" (remembered,
+// on by default) asks for a solve after the motion with the moved vertices held in place.
 class MoveDialog : public QDialog {
     Q_OBJECT
 public:
@@ -20,6 +22,11 @@ public:
     model::Vec3 axisPoint() const;
     model::Vec3 axisDirection() const;
     double angleRadians() const;
+    bool keepDevelopable() const;
+
+public slots:
+    // Refuses a rotation without an axis; remembers Keep developable.
+    void accept() override;
 
 private:
     QRadioButton* m_translate;
@@ -28,6 +35,7 @@ private:
     QDoubleSpinBox* m_point[3];
     QDoubleSpinBox* m_direction[3];
     QDoubleSpinBox* m_angle;
+    QCheckBox* m_keepDevelopable;
 };
 
 } // namespace devsurf::app

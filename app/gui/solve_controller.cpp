@@ -44,6 +44,8 @@ void SolveController::solve() {
     request.iterations = iterationsSetting();
     request.sessionKey = 0;
     m_revision = request.revision;
+    m_sessionKey = 0;
+    m_editSurface = -1;
     m_worker->submit(std::move(request));
     if (!m_solving) {
         m_solving = true;
@@ -51,13 +53,66 @@ void SolveController::solve() {
     }
 }
 
+void SolveController::solveEdit(int surfaceIndex, model::CompositeSurface edited,
+                                const std::set<model::VertexId>& held, const QString& title,
+                                int iterations) {
+    const document::Document* doc = m_workspace->document();
+    if (surfaceIndex < 0 || surfaceIndex >= doc->surfaceCount() || held.empty()) {
+        emit finished(tr("%1: there is nothing to solve; nothing changed.").arg(title));
+        return;
+    }
+    // The solve starts from the design before the edit, with the held vertices pulled to where
+    // the edit puts them, as a drag in one step does: started from the edited shape (the held
+    // vertices pinned there) the solver collapsed rulings next to them. The result then puts
+    // the held vertices exactly where the edit put them (they arrive within ~1e-13 mm).
+    m_heldTargets.clear();
+    std::vector<solver::VertexHandle> handles;
+    for (model::VertexId v : held) {
+        if (!edited.hasVertex(v) || edited.isPinned(v)) {
+            continue;
+        }
+        m_heldTargets[v] = edited.position(v);
+        handles.push_back({v, false, edited.position(v)});
+    }
+    // Edits get keys of their own: only the edited surface is solved, from the snapshot.
+    static quint64 editKey = 0x45444954'00000000ULL;
+    solver::SolveRequest request;
+    request.revision = doc->revision();
+    request.surfaces = doc->project().surfaces;
+    request.pulled[surfaceIndex] = handles;
+    request.iterations = iterations + 1; // the step to the targets, then `iterations` more
+    request.sessionKey = ++editKey;
+    m_revision = request.revision;
+    m_sessionKey = request.sessionKey;
+    m_editSurface = surfaceIndex;
+    m_editTitle = title;
+    m_worker->submit(std::move(request));
+    if (!m_solving) {
+        m_solving = true;
+        emit busyChanged(true);
+    }
+}
+
+QString SolveController::cancelledSentence(const QString& reason) const {
+    if (m_editSurface >= 0) {
+        return reason.isEmpty() ? tr("%1 cancelled; nothing moved.").arg(m_editTitle)
+                                : tr("%1 cancelled: %2; nothing moved.").arg(m_editTitle, reason);
+    }
+    return reason.isEmpty() ? tr("Solve cancelled; the design is unchanged.")
+                            : tr("Solve cancelled: %1; the design is unchanged.").arg(reason);
+}
+
+QString SolveController::failedSentence(const QString& error) const {
+    return m_editSurface >= 0 ? tr("%1 failed: %2 Nothing moved.").arg(m_editTitle, error)
+                              : tr("Solve failed: %1 The design is unchanged.").arg(error);
+}
+
 void SolveController::cancel(const QString& reason) {
     if (!m_solving) {
         return;
     }
     m_worker->cancel();
-    stop(reason.isEmpty() ? tr("Solve cancelled; the design is unchanged.")
-                          : tr("Solve cancelled: %1; the design is unchanged.").arg(reason));
+    stop(cancelledSentence(reason));
 }
 
 void SolveController::stop(const QString& sentence) {
@@ -128,17 +183,21 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result,
 }
 
 void SolveController::onResult(const solver::SolveResult& result) {
-    if (result.sessionKey != 0 || !m_solving || result.revision != m_revision) {
+    if (result.sessionKey != m_sessionKey || !m_solving || result.revision != m_revision) {
         return; // a drag's result, or one of a solve that was cancelled or superseded
     }
-    const QString title = tr("Solve");
+    const QString title = m_editSurface >= 0 ? m_editTitle : tr("Solve");
     emit reportReady(reportOf(result, title));
     if (result.cancelled) {
-        stop(tr("Solve cancelled; the design is unchanged."));
+        stop(cancelledSentence(QString()));
         return;
     }
     if (!result.ok) {
-        stop(tr("Solve failed: %1 The design is unchanged.").arg(result.error));
+        stop(failedSentence(result.error));
+        return;
+    }
+    if (m_editSurface >= 0) {
+        applyEdit(result);
         return;
     }
     document::Document* doc = m_workspace->document();
@@ -175,6 +234,33 @@ void SolveController::onResult(const solver::SolveResult& result) {
     }
     stop(tr("Solved: %n iteration(s), largest constraint residual %1.", nullptr, iterations)
              .arg(QString::number(residual, 'e', 2)));
+}
+
+void SolveController::applyEdit(const solver::SolveResult& result) {
+    document::Document* doc = m_workspace->document();
+    const auto s = static_cast<std::size_t>(m_editSurface);
+    if (doc->revision() != result.revision || s >= result.surfaces.size() ||
+        s >= result.summaries.size()) {
+        stop(tr("%1 discarded: the design changed while solving; nothing moved.").arg(m_editTitle));
+        return;
+    }
+    model::CompositeSurface solved = result.surfaces[s];
+    for (const auto& [v, target] : m_heldTargets) {
+        solved.moveVertex(v, target);
+    }
+    document::CommandOrError edit =
+        document::ApplySurfaceCommand::create(*doc, m_editSurface, solved, m_editTitle);
+    if (edit.isRefused()) {
+        stop(failedSentence(edit.error()));
+        return;
+    }
+    m_applying = true;
+    doc->undoStack()->push(edit.takeCommand().release());
+    m_applying = false;
+    const solver::Summary& summary = result.summaries[s];
+    stop(tr("%1, kept developable: %n iteration(s), largest constraint residual %2.", nullptr,
+            summary.iterationsCompleted)
+             .arg(m_editTitle, QString::number(summary.finalMaxConstraintResidual, 'e', 2)));
 }
 
 } // namespace devsurf::app

@@ -1,9 +1,13 @@
 #pragma once
 
+#include "model/composite_surface.h"
 #include "panels/solver_panel.h"
 
 #include <QObject>
 #include <QString>
+
+#include <map>
+#include <set>
 
 namespace devsurf::solver {
 class SolverWorker;
@@ -18,7 +22,9 @@ class Workspace;
 // takes a snapshot of every surface and runs the worker (iterations from the setting
 // "solver/iterations", default 10); the result becomes one undo step ("Solve") if the design
 // did not change meanwhile. Any edit while solving cancels the solve; a cancelled or failed
-// solve changes nothing and says why.
+// solve changes nothing and says why. solveEdit() does the same for an edit of one surface not
+// yet applied (Tools ▸ Move or Rotate Vertices with Keep developable): the edit and its solve
+// become one undo step, or nothing changes.
 class SolveController : public QObject {
     Q_OBJECT
 public:
@@ -34,6 +40,13 @@ public:
 
 public slots:
     void solve();
+    // Solves an edit of surface surfaceIndex not yet applied (`edited`): from the current
+    // surface, the held vertices are pulled to their positions in `edited` for one iteration
+    // and `iterations` more (pins respected), and the result, with the held vertices exactly
+    // where the edit put them, replaces the current surface as one undo step named title,
+    // whose undo returns the state before the edit.
+    void solveEdit(int surfaceIndex, model::CompositeSurface edited,
+                   const std::set<model::VertexId>& held, const QString& title, int iterations);
     // Stops a running solve; the design stays as it is. reason completes "Solve cancelled: …".
     void cancel(const QString& reason = QString());
 
@@ -48,12 +61,22 @@ private:
     void onResult(const solver::SolveResult& result);
     void onDocumentChanged();
     void stop(const QString& sentence);
+    void applyEdit(const solver::SolveResult& result);
+    // The sentences of a solve or of an edit's solve.
+    QString cancelledSentence(const QString& reason) const;
+    QString failedSentence(const QString& error) const;
 
     Workspace* m_workspace;
     solver::SolverWorker* m_worker;
     bool m_solving = false;
     bool m_applying = false;
     quint64 m_revision = 0;
+    // The running request: 0 and -1 for Solve, else an edit's own key and surface.
+    quint64 m_sessionKey = 0;
+    int m_editSurface = -1;
+    QString m_editTitle;
+    // The held vertices that the edit's snapshot pinned and its result must release.
+    std::map<model::VertexId, model::Vec3> m_heldTargets;
 };
 
 } // namespace devsurf::app

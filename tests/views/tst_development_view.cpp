@@ -2,6 +2,7 @@
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "model/examples.h"
+#include "side_by_side_views.h"
 #include "straight_control_points.h"
 #include "surface_transform.h"
 #include "test_registry.h"
@@ -28,34 +29,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-struct Views {
-    Document document;
-    Selection selection;
-    QWidget window;
-    SurfaceView* spatial = nullptr;
-    DevelopmentView* development = nullptr;
-
-    explicit Views(devsurf::model::Project project) {
-        document.resetProject(std::move(project));
-        auto* layout = new QHBoxLayout(&window);
-        spatial = new SurfaceView(&document, &selection);
-        development = new DevelopmentView(&document, &selection);
-        layout->addWidget(spatial);
-        layout->addWidget(development);
-        window.resize(900, 450);
-    }
-
-    bool show() {
-        window.show();
-        if (!QTest::qWaitForWindowExposed(&window)) {
-            return false;
-        }
-        spatial->grabImage();
-        development->grabImage();
-        return true;
-    }
-
-    const CompositeSurface& surface() const { return document.project().surfaces.at(0); }
+struct Views : devsurf::test::SideBySideViews {
+    explicit Views(devsurf::model::Project project)
+        : SideBySideViews(std::move(project), 900, 450) {}
 };
 
 // Extent {width, height} of the development's drawn vertices, in scene millimetres.

@@ -164,6 +164,16 @@ void PropertiesPanel::refresh() {
                                 .arg(model::distance(surface.position(edge.from),
                                                      surface.position(edge.to)),
                                      0, 'f', 3);
+                    if (faces.size() == 2) {
+                        text +=
+                            QStringLiteral("<br>") +
+                            (edge.smooth ? tr("Smooth between patches %1 and %2: the surface stays "
+                                              "smooth across it.")
+                                         : tr("Sharp between patches %1 and %2: the surface may "
+                                              "fold along it."))
+                                .arg(faces[0])
+                                .arg(faces[1]);
+                    }
                 }
             }
             break;

@@ -3,6 +3,7 @@
 #include "../edit_preview.h"
 #include "../move_dialog.h"
 #include "../position_dialog.h"
+#include "../solve_controller.h"
 #include "../workspace.h"
 #include "model/document/commands/command_or_error.h"
 #include "model/document/commands/move_vertices_command.h"
@@ -10,6 +11,7 @@
 #include "model/document/commands/relabel_edge_command.h"
 #include "model/document/commands/split_at_ruling_command.h"
 #include "model/document/commands/subdivide_strip_command.h"
+#include "model/document/commands/surface_edit_command.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "model/model_error.h"
@@ -302,8 +304,9 @@ void RefineCurvesReaction::onTriggered() {
     }
 }
 
-MoveVerticesReaction::MoveVerticesReaction(QAction* action, Workspace* workspace)
-    : Reaction(action, workspace) {
+MoveVerticesReaction::MoveVerticesReaction(QAction* action, Workspace* workspace,
+                                           SolveController* solver)
+    : Reaction(action, workspace), m_solver(solver) {
     followDocumentAndSelection();
 }
 
@@ -331,16 +334,24 @@ void MoveVerticesReaction::onTriggered() {
     }
     document::Document& doc = *workspace()->document();
     const std::set<model::VertexId> ids(vertices->ids.begin(), vertices->ids.end());
-    if (dialog.isRotation()) {
-        workspace()->apply(document::MoveVerticesCommand::createRotation(
-                               doc, vertices->surface, ids, dialog.axisPoint(),
-                               dialog.axisDirection(), dialog.angleRadians()),
-                           tr("Cannot rotate"));
-    } else {
-        workspace()->apply(document::MoveVerticesCommand::createTranslation(
-                               doc, vertices->surface, ids, dialog.translation()),
-                           tr("Cannot move"));
+    document::CommandOrError edit = dialog.isRotation()
+                                        ? document::MoveVerticesCommand::createRotation(
+                                              doc, vertices->surface, ids, dialog.axisPoint(),
+                                              dialog.axisDirection(), dialog.angleRadians())
+                                        : document::MoveVerticesCommand::createTranslation(
+                                              doc, vertices->surface, ids, dialog.translation());
+    const QString refusal = dialog.isRotation() ? tr("Cannot rotate") : tr("Cannot move");
+    const auto* motion = dynamic_cast<const document::SurfaceEditCommand*>(edit.command());
+    if (!dialog.keepDevelopable() || m_solver == nullptr || motion == nullptr) {
+        workspace()->apply(std::move(edit), refusal);
+        return;
     }
+    // The motion is not applied yet: the solver starts from the moved surface, holding the
+    // moved vertices where the motion put them; its result, if any, is the one undo step.
+    if (m_solver->isSolving()) {
+        m_solver->cancel(tr("the vertices are moved"));
+    }
+    m_solver->solveEdit(vertices->surface, motion->after(), ids, motion->text(), kIterations);
 }
 
 } // namespace devsurf::app

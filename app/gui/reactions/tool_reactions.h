@@ -13,6 +13,8 @@ class SceneView;
 
 namespace devsurf::app {
 
+class SolveController;
+
 // The single surface all picks of one kind belong to, with their ids; nullopt when the
 // selection has none of that kind or spans several surfaces.
 struct SelectedIds {
@@ -74,15 +76,22 @@ protected:
     void updateEnableState() override;
 };
 
-// Tools ▸ Move or Rotate Vertices: exact translation or rotation of the selected vertices.
+// Tools ▸ Move or Rotate Vertices: exact translation or rotation of the selected vertices; with
+// "Keep developable" (and a solver) the motion is followed by kIterations solver iterations
+// with the moved vertices held, the two together one undo step.
 class MoveVerticesReaction : public Reaction {
     Q_OBJECT
 public:
-    MoveVerticesReaction(QAction* action, Workspace* workspace);
+    MoveVerticesReaction(QAction* action, Workspace* workspace, SolveController* solver = nullptr);
+
+    static constexpr int kIterations = 10;
 
 protected:
     void onTriggered() override;
     void updateEnableState() override;
+
+private:
+    SolveController* m_solver;
 };
 
 } // namespace devsurf::app

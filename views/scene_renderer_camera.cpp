@@ -1,0 +1,113 @@
+#include "scene_renderer.h"
+
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
+
+#include <cmath>
+#include <limits>
+
+// The camera side of a SceneRenderer: projections between the scene and the display, standard
+// directions, fitting, and whether the surface hides a point.
+
+namespace devsurf::views {
+
+using model::Vec3;
+
+std::optional<Vec3> SceneRenderer::displayToPlane(double displayX, double displayY,
+                                                  const Vec3& planePoint,
+                                                  const Vec3& planeNormal) const {
+    // The ray through the display point, from the near to the far clipping plane.
+    Vec3 ends[2];
+    for (int k = 0; k < 2; ++k) {
+        m_renderer->SetDisplayPoint(displayX, displayY, k == 0 ? 0.0 : 1.0);
+        m_renderer->DisplayToWorld();
+        const double* w = m_renderer->GetWorldPoint();
+        if (w[3] == 0.0) {
+            return std::nullopt;
+        }
+        ends[k] = Vec3(w[0] / w[3], w[1] / w[3], w[2] / w[3]);
+    }
+    const Vec3 direction = ends[1] - ends[0];
+    const double denominator = dot(direction, planeNormal);
+    if (std::abs(denominator) < 1e-12 * direction.norm() * planeNormal.norm()) {
+        return std::nullopt;
+    }
+    const double t = dot(planePoint - ends[0], planeNormal) / denominator;
+    return ends[0] + direction * t;
+}
+
+Vec3 SceneRenderer::viewDirection() const {
+    double direction[3];
+    m_renderer->GetActiveCamera()->GetDirectionOfProjection(direction);
+    return {direction[0], direction[1], direction[2]};
+}
+
+Vec3 SceneRenderer::toDisplay(const Vec3& point) const {
+    m_renderer->SetWorldPoint(point.x, point.y, point.z, 1.0);
+    m_renderer->WorldToDisplay();
+    const double* d = m_renderer->GetDisplayPoint();
+    return {d[0], d[1], d[2]};
+}
+
+Vec3 SceneRenderer::defaultDirection() {
+    const Vec3 eye(1.0, -1.6, 1.2);
+    return -eye / eye.norm();
+}
+
+void SceneRenderer::lookAlong(const Vec3& direction, const Vec3& up) {
+    if (m_mode != Mode::Spatial || direction.norm() == 0.0) {
+        return;
+    }
+    vtkCamera* camera = m_renderer->GetActiveCamera();
+    const Vec3 d = direction / direction.norm();
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetPosition(-d.x, -d.y, -d.z);
+    camera->SetViewUp(up.x, up.y, up.z);
+    camera->OrthogonalizeViewUp();
+    m_renderer->ResetCamera();
+}
+
+double SceneRenderer::pixelsPerUnit() const {
+    vtkCamera* camera = m_renderer->GetActiveCamera();
+    const int* size = m_renderer->GetSize();
+    if (size[1] <= 0) {
+        return 0.0;
+    }
+    // The height of the scene seen at the focal point, in scene units.
+    double visible = 0.0;
+    if (camera->GetParallelProjection() != 0) {
+        visible = 2.0 * camera->GetParallelScale();
+    } else {
+        constexpr double kDegree = 3.14159265358979323846 / 180.0;
+        visible = 2.0 * camera->GetDistance() * std::tan(0.5 * camera->GetViewAngle() * kDegree);
+    }
+    return visible > 0.0 && std::isfinite(visible) ? size[1] / visible : 0.0;
+}
+
+void SceneRenderer::resetCamera() {
+    if (m_mode == Mode::Development) {
+        vtkCamera* camera = m_renderer->GetActiveCamera();
+        camera->SetPosition(0.0, 0.0, 1.0);
+        camera->SetFocalPoint(0.0, 0.0, 0.0);
+        camera->SetViewUp(0.0, 1.0, 0.0);
+    }
+    m_renderer->ResetCamera();
+}
+
+bool SceneRenderer::isHidden(const Vec3& point) const {
+    if (m_mode != Mode::Spatial) {
+        return false;
+    }
+    const Vec3 display = toDisplay(point);
+    std::optional<document::Pick> face;
+    const std::optional<Vec3> hit = surfaceHit(display.x, display.y, &face);
+    if (!hit) {
+        return false;
+    }
+    double eye[3];
+    m_renderer->GetActiveCamera()->GetPosition(eye);
+    const Vec3 eyePoint(eye[0], eye[1], eye[2]);
+    return distance(eyePoint, point) > distance(eyePoint, *hit) + 0.01 * m_sceneSize;
+}
+
+} // namespace devsurf::views
