@@ -17,9 +17,9 @@
 // passes any version through to the load functions.
 namespace devsurf::io::versions {
 inline constexpr unsigned kProject = 1;
-// 2: pinned vertices (project file format 2).
-inline constexpr unsigned kSurface = 2;
-// 2: the smooth flag of rulings (project file format 3).
+// 2: pinned vertices (project file format 2). 3: the surface id (project file format 3).
+inline constexpr unsigned kSurface = 3;
+// 2: the smooth flag of rulings (project file format 3, with the surface ids).
 inline constexpr unsigned kEdge = 2;
 } // namespace devsurf::io::versions
 
@@ -199,6 +199,8 @@ template <class Archive> void save(Archive& ar, const CompositeSurface& s, unsig
     for (VertexId v : s.pinnedVertices()) {
         ar << v;
     }
+    const SurfaceId id = s.id();
+    ar << id;
 }
 
 template <class Archive> void load(Archive& ar, CompositeSurface& s, unsigned version) {
@@ -254,6 +256,11 @@ template <class Archive> void load(Archive& ar, CompositeSurface& s, unsigned ve
             s.setPinned(v, true);
         }
     }
+    if (version >= 3) {
+        SurfaceId id = 0;
+        ar >> id;
+        s.setId(id);
+    }
 }
 
 template <class Archive> void save(Archive& ar, const Project& p, unsigned /*version*/) {
@@ -277,6 +284,8 @@ template <class Archive> void load(Archive& ar, Project& p, unsigned version) {
         ar >> s;
         p.surfaces.push_back(std::move(s));
     }
+    // Files before format 3 hold no surface ids; a damaged file may repeat one.
+    p.assignSurfaceIds();
 }
 
 } // namespace boost::serialization

@@ -73,7 +73,7 @@ CompositeSurface::CompositeSurface() : m_connectivity(std::make_unique<Connectiv
 CompositeSurface::~CompositeSurface() = default;
 
 CompositeSurface::CompositeSurface(const CompositeSurface& other)
-    : m_name(other.m_name), m_vertices(other.m_vertices), m_edges(other.m_edges),
+    : m_name(other.m_name), m_id(other.m_id), m_vertices(other.m_vertices), m_edges(other.m_edges),
       m_faces(other.m_faces), m_pinned(other.m_pinned), m_edgeByVertices(other.m_edgeByVertices),
       m_nextVertexId(other.m_nextVertexId), m_nextEdgeId(other.m_nextEdgeId),
       m_nextFaceId(other.m_nextFaceId),
@@ -562,9 +562,10 @@ bool CompositeSurface::operator==(const CompositeSurface& other) const {
                a.controlPoints == b.controlPoints && a.condition == b.condition &&
                a.smooth == b.smooth;
     };
-    return m_name == other.m_name && m_vertices == other.m_vertices && m_faces == other.m_faces &&
-           m_nextVertexId == other.m_nextVertexId && m_nextEdgeId == other.m_nextEdgeId &&
-           m_nextFaceId == other.m_nextFaceId && m_pinned == other.m_pinned &&
+    return m_name == other.m_name && m_id == other.m_id && m_vertices == other.m_vertices &&
+           m_faces == other.m_faces && m_nextVertexId == other.m_nextVertexId &&
+           m_nextEdgeId == other.m_nextEdgeId && m_nextFaceId == other.m_nextFaceId &&
+           m_pinned == other.m_pinned &&
            std::equal(m_edges.begin(), m_edges.end(), other.m_edges.begin(), other.m_edges.end(),
                       [&](const auto& a, const auto& b) {
                           return a.first == b.first && sameEdges(a.second, b.second);

@@ -61,6 +61,9 @@ public:
     CompositeSurface& operator=(CompositeSurface&& other) noexcept;
 
     const std::string& name() const { return m_name; }
+    // The surface's id in its project (see SurfaceId); part of the design.
+    SurfaceId id() const { return m_id; }
+    void setId(SurfaceId id) { m_id = id; }
     void setName(std::string name) { m_name = std::move(name); }
 
     // --- construction ---------------------------------------------------------------------
@@ -142,6 +145,7 @@ private:
     struct Connectivity;
 
     std::string m_name;
+    SurfaceId m_id = 0;
     std::map<VertexId, Vec3> m_vertices;
     std::map<EdgeId, EdgeRecord> m_edges;
     std::map<FaceId, std::vector<VertexId>> m_faces;

@@ -325,17 +325,17 @@ Project makeExample(const std::string& name, int size) {
         }
         Project project;
         if (name == "sheet") {
-            project.surfaces.push_back(makeSheet(size));
+            project.addSurface(makeSheet(size));
         } else if (name == "annulus") {
-            project.surfaces.push_back(makeAnnulus(size));
+            project.addSurface(makeAnnulus(size));
         } else if (name == "cylinder") {
-            project.surfaces.push_back(makeCylinder(size));
+            project.addSurface(makeCylinder(size));
         } else if (name == "mixed") {
-            project.surfaces.push_back(makeMixed(size));
+            project.addSurface(makeMixed(size));
         } else if (name == "fig8") {
-            project.surfaces.push_back(makeFig8(size));
+            project.addSurface(makeFig8(size));
         } else {
-            project.surfaces.push_back(makeFig6(size));
+            project.addSurface(makeFig6(size));
         }
         return project;
     }

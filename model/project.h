@@ -2,6 +2,8 @@
 
 #include "composite_surface.h"
 
+#include <algorithm>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -11,6 +13,41 @@ namespace devsurf::model {
 struct Project {
     std::string units = "mm"; // the length unit of all coordinates
     std::vector<CompositeSurface> surfaces;
+
+    // Appends a surface with a new id (one more than the largest in use) and returns the id.
+    SurfaceId addSurface(CompositeSurface surface) {
+        SurfaceId next = 1;
+        for (const CompositeSurface& s : surfaces) {
+            next = std::max<SurfaceId>(next, s.id() + 1);
+        }
+        surface.setId(next);
+        surfaces.push_back(std::move(surface));
+        return next;
+    }
+    // Gives every surface without an id (0) or with the id of an earlier surface a new one, in
+    // order; ids already unique are kept. Files of format 1 to 3 hold no ids.
+    void assignSurfaceIds() {
+        std::set<SurfaceId> used;
+        SurfaceId next = 1;
+        for (const CompositeSurface& s : surfaces) {
+            next = std::max<SurfaceId>(next, s.id() + 1);
+        }
+        for (CompositeSurface& s : surfaces) {
+            if (s.id() == 0 || !used.insert(s.id()).second) {
+                s.setId(next);
+                used.insert(next++);
+            }
+        }
+    }
+    // The index of the surface with this id, or -1.
+    int indexOf(SurfaceId id) const {
+        for (std::size_t i = 0; i < surfaces.size(); ++i) {
+            if (surfaces[i].id() == id) {
+                return static_cast<int>(i);
+            }
+        }
+        return -1;
+    }
 
     bool operator==(const Project& other) const {
         return units == other.units && surfaces == other.surfaces;

@@ -26,6 +26,7 @@ std::pair<VertexId, VertexId> key(VertexId a, VertexId b) {
 // faces in id order.
 struct SurfaceData {
     std::string name;
+    SurfaceId surfaceId = 0;
     std::map<VertexId, Vec3> vertices;
     std::map<EdgeId, EdgeRecord> edges;
     std::map<FaceId, std::vector<VertexId>> faces;
@@ -36,9 +37,9 @@ struct SurfaceData {
     FaceId nextFace = 0;
 
     explicit SurfaceData(const CompositeSurface& s)
-        : name(s.name()), vertices(s.vertices()), edges(s.edges()), faces(s.faces()),
-          pinned(s.pinnedVertices()), nextVertex(s.nextVertexId()), nextEdge(s.nextEdgeId()),
-          nextFace(s.nextFaceId()) {
+        : name(s.name()), surfaceId(s.id()), vertices(s.vertices()), edges(s.edges()),
+          faces(s.faces()), pinned(s.pinnedVertices()), nextVertex(s.nextVertexId()),
+          nextEdge(s.nextEdgeId()), nextFace(s.nextFaceId()) {
         for (const auto& [id, record] : edges) {
             edgeByVertices[key(record.from, record.to)] = id;
         }
@@ -86,6 +87,7 @@ struct SurfaceData {
     CompositeSurface build(const std::string& what) const {
         CompositeSurface s;
         s.setName(name);
+        s.setId(surfaceId);
         for (const auto& [id, p] : vertices) {
             s.addVertexWithId(id, p);
         }

@@ -29,6 +29,7 @@ void Document::markSaved() {
 void Document::resetProject(model::Project project, const QString& filePath) {
     m_undoStack->clear();
     m_project = std::move(project);
+    m_project.assignSurfaceIds(); // commands address surfaces by id
     ++m_revision;
     setFilePath(filePath);
     emit projectReset();

@@ -403,6 +403,27 @@ private slots:
                     .startsWith("Straight when unfolded on 1 "));
     }
 
+    void commandsFollowTheirSurfaceById() {
+        // A command keeps acting on its surface when the surfaces' order changes (adding and
+        // removing surfaces will shift indices): it addresses the surface by its id.
+        Project project = makeExample("sheet");
+        project.addSurface(makeExample("mixed").surfaces[0]);
+        Document doc;
+        doc.resetProject(project);
+        const SurfaceId mixed = doc.surface(1).id();
+        QVERIFY(pushOrExplain(doc, PinVerticesCommand::create(doc, 1, {0}, true)).isEmpty());
+        QVERIFY(doc.surface(1).isPinned(0));
+        std::swap(doc.mutableProject().surfaces[0], doc.mutableProject().surfaces[1]);
+        QCOMPARE(doc.surface(0).id(), mixed);
+        doc.undoStack()->undo();
+        QVERIFY(!doc.surface(0).isPinned(0)); // the mixed surface, now first
+        QVERIFY(!doc.surface(1).isPinned(0));
+        QCOMPARE(doc.surface(0).name(), std::string("mixed"));
+        doc.undoStack()->redo();
+        QVERIFY(doc.surface(0).isPinned(0));
+        QVERIFY(!doc.surface(1).isPinned(0));
+    }
+
     void smoothRulingsUndoRedoAndRefusals() {
         Document doc;
         doc.resetProject(makeExample("sheet"));

@@ -172,9 +172,9 @@ private slots:
     }
 
     void versionThreeSampleStaysLoadable() {
-        // Committed once with format version 3 (the sheet example with vertex 0 pinned, its
-        // inner rulings 1 and 5 smooth and its crease 9 a geodesic); it must load with every
-        // later version.
+        // Committed once with format version 3 (the sheet example, surface id 1, with vertex 0
+        // pinned, its inner rulings 1 and 5 smooth and its crease 9 a geodesic); it must load
+        // with every later version.
         const QString path = QStringLiteral(DEVSURF_TEST_DATA_DIR "/sample-v3.devsurf");
         const std::string bytes = readAll(path);
         QCOMPARE(bytes.substr(8, 4), std::string("\x03\x00\x00\x00", 4));
@@ -186,7 +186,35 @@ private slots:
         s.setSmooth(5, true);
         s.setCreaseCondition(9, model::CreaseCondition::Geodesic);
         QVERIFY(project.surfaces[0].edge(1).smooth && !project.surfaces[0].edge(10).smooth);
+        QCOMPARE(project.surfaces[0].id(), model::SurfaceId(1));
         QVERIFY(project == expected);
+    }
+
+    void surfaceIdsRoundTripAndOldFilesGetThem() {
+        model::Project project;
+        project.addSurface(model::makeExample("sheet", 2).surfaces[0]);
+        project.addSurface(model::makeExample("mixed", 1).surfaces[0]);
+        project.surfaces[0].setId(9);
+        project.surfaces[1].setId(4);
+        const model::Project loaded = io::decodeProject(io::encodeProject(project));
+        QCOMPARE(loaded.surfaces[0].id(), model::SurfaceId(9));
+        QCOMPARE(loaded.surfaces[1].id(), model::SurfaceId(4));
+        QVERIFY(loaded == project);
+        QCOMPARE(loaded.indexOf(4), 1);
+        QCOMPARE(loaded.indexOf(5), -1);
+        // Files of formats 1 and 2 hold no ids: their surfaces are numbered from 1 on loading.
+        const model::Project v2 =
+            io::loadProjectFile(QStringLiteral(DEVSURF_TEST_DATA_DIR "/sample-v2.devsurf"));
+        QCOMPARE(v2.surfaces[0].id(), model::SurfaceId(1));
+        // Missing or repeated ids get new ones; unique ones are kept.
+        model::Project repeated = project;
+        repeated.surfaces[1].setId(9);
+        repeated.addSurface(model::makeExample("sheet", 1).surfaces[0]);
+        repeated.surfaces[2].setId(0);
+        repeated.assignSurfaceIds();
+        QCOMPARE(repeated.surfaces[0].id(), model::SurfaceId(9));
+        QCOMPARE(repeated.surfaces[1].id(), model::SurfaceId(10));
+        QCOMPARE(repeated.surfaces[2].id(), model::SurfaceId(11));
     }
 
     void smoothRulingsRoundTrip() {

@@ -10,7 +10,8 @@ SurfaceEditCommand::SurfaceEditCommand(Document& document, int surfaceIndex,
                                        model::CompositeSurface before,
                                        model::CompositeSurface after, Changes changes,
                                        const QString& text)
-    : QUndoCommand(text), m_document(document), m_surfaceIndex(surfaceIndex),
+    : QUndoCommand(text), m_document(document),
+      m_surfaceId(document.project().surfaces.at(static_cast<std::size_t>(surfaceIndex)).id()),
       m_before(std::move(before)), m_after(std::move(after)), m_changes(changes) {}
 
 void SurfaceEditCommand::redo() {
@@ -21,9 +22,18 @@ void SurfaceEditCommand::undo() {
     apply(m_before);
 }
 
+int SurfaceEditCommand::surfaceIndex() const {
+    return m_document.project().indexOf(m_surfaceId);
+}
+
 void SurfaceEditCommand::apply(const model::CompositeSurface& surface) {
-    // The undo stack is cleared whenever the project is replaced, so the index stays valid.
-    m_document.mutableProject().surfaces.at(static_cast<std::size_t>(m_surfaceIndex)) = surface;
+    // The undo stack is cleared whenever the project is replaced, and a surface is only ever
+    // removed by a command on the same stack, so the surface exists when this runs.
+    const int index = surfaceIndex();
+    model::CompositeSurface& target =
+        m_document.mutableProject().surfaces.at(static_cast<std::size_t>(index));
+    target = surface;
+    target.setId(m_surfaceId);
     m_document.notifyChanged(m_changes);
 }
 

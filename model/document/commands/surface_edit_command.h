@@ -16,7 +16,8 @@ class Document;
 
 // The base of every edit of one surface: it holds the whole surface before and after the edit
 // (surfaces are small), so undo restores bit-identical state and redo applies the stored result
-// without recomputing anything. The surface is addressed by its index in the project.
+// without recomputing anything. The surface is addressed by its id (see model::SurfaceId), so
+// that adding or removing other surfaces does not redirect the command.
 class SurfaceEditCommand : public QUndoCommand {
     Q_DECLARE_TR_FUNCTIONS(SurfaceEditCommand)
 public:
@@ -26,7 +27,9 @@ public:
     void redo() override;
     void undo() override;
 
-    int surfaceIndex() const { return m_surfaceIndex; }
+    // The surface's current index in the project (-1 if it is gone).
+    int surfaceIndex() const;
+    model::SurfaceId surfaceId() const { return m_surfaceId; }
     const model::CompositeSurface& before() const { return m_before; }
     const model::CompositeSurface& after() const { return m_after; }
     Changes changes() const { return m_changes; }
@@ -50,7 +53,7 @@ protected:
 
 private:
     Document& m_document;
-    int m_surfaceIndex;
+    model::SurfaceId m_surfaceId;
     model::CompositeSurface m_before;
     model::CompositeSurface m_after;
     Changes m_changes;
