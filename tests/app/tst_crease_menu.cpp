@@ -7,6 +7,7 @@
 #include "views/development_view.h"
 #include "views/surface_view.h"
 #include "views/vtk_opengl_widget.h"
+#include "window_test_support.h"
 #include "workspace.h"
 
 #include <QAction>
@@ -22,12 +23,11 @@ using namespace devsurf;
 using document::Pick;
 using model::CreaseCondition;
 using model::EdgeId;
+using test::bytesOf;
+using test::waitForSolve;
+using test::waitForWorkerIdle;
 
 namespace {
-
-std::string bytesOf(const app::MainWindow& window) {
-    return io::encodeProject(window.workspace()->document()->project());
-}
 
 const model::CompositeSurface& surfaceOf(const app::MainWindow& window) {
     return window.workspace()->document()->project().surfaces.front();

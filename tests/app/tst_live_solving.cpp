@@ -13,6 +13,7 @@
 #include "views/development_view.h"
 #include "views/surface_view.h"
 #include "views/vtk_opengl_widget.h"
+#include "window_test_support.h"
 #include "workspace.h"
 
 #include <QAction>
@@ -31,12 +32,11 @@
 
 using namespace devsurf;
 using document::Pick;
+using test::bytesOf;
+using test::waitForSolve;
+using test::waitForWorkerIdle;
 
 namespace {
-
-std::string bytesOf(const app::MainWindow& window) {
-    return io::encodeProject(window.workspace()->document()->project());
-}
 
 // Every coarse vertex and S-edge control point of every surface, in a fixed order.
 std::vector<model::Vec3> allPoints(const document::Document& doc) {
@@ -62,18 +62,6 @@ double diameter(const std::vector<model::Vec3>& points) {
         }
     }
     return (hi - lo).norm();
-}
-
-// Waits (on the signal, never by sleeping) until the controller's solve has ended.
-QString waitForSolve(app::MainWindow& window) {
-    QSignalSpy finished(window.solveController(), &app::SolveController::finished);
-    if (!window.solveController()->isSolving()) {
-        return QStringLiteral("not solving");
-    }
-    if (!finished.wait(120000)) {
-        return QStringLiteral("timeout");
-    }
-    return finished.front().front().toString();
 }
 
 } // namespace
@@ -273,11 +261,7 @@ private slots:
         QVERIFY(!window.solveController()->isSolving());
         QVERIFY(window.action(QStringLiteral("actionSelectNone"))->isEnabled());
         // Whatever the worker still reports for the cancelled request is never applied.
-        QSignalSpy results(window.solveController()->worker(), &solver::SolverWorker::finished);
-        if (window.solveController()->worker()->isBusy()) {
-            QVERIFY(results.wait(120000));
-        }
-        QCoreApplication::processEvents();
+        QVERIFY(waitForWorkerIdle(window, 120000));
         QCOMPARE(doc->undoStack()->count(), 0);
         QCOMPARE(bytesOf(window), before);
     }
@@ -309,11 +293,7 @@ private slots:
         QCOMPARE(finished.size(), 1);
         QVERIFY(finished.front().front().toString().contains(QStringLiteral("design changed")));
         const std::string pinned = bytesOf(window);
-        QSignalSpy results(window.solveController()->worker(), &solver::SolverWorker::finished);
-        if (window.solveController()->worker()->isBusy()) {
-            QVERIFY(results.wait(120000));
-        }
-        QCoreApplication::processEvents();
+        QVERIFY(waitForWorkerIdle(window, 120000));
         QCOMPARE(doc->undoStack()->count(), 1);
         QCOMPARE(bytesOf(window), pinned);
     }
@@ -425,11 +405,7 @@ private slots:
         QVERIFY(!s.window.workspace()->selection()->isEmpty()); // Esc did not select nothing
         // The release after Esc is an ordinary release; nothing of the drag comes back.
         QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(0, -20));
-        QSignalSpy results(s.window.solveController()->worker(), &solver::SolverWorker::finished);
-        if (s.window.solveController()->worker()->isBusy()) {
-            QVERIFY(results.wait(60000));
-        }
-        QCoreApplication::processEvents();
+        QVERIFY(waitForWorkerIdle(s.window, 60000));
         QCOMPARE(bytesOf(s.window), atPress);
     }
 

@@ -13,6 +13,7 @@
 #include "test_registry.h"
 #include "views/surface_view.h"
 #include "views/vtk_opengl_widget.h"
+#include "window_test_support.h"
 #include "workspace.h"
 
 #include <QAction>
@@ -31,12 +32,11 @@
 
 using namespace devsurf;
 using document::Pick;
+using test::bytesOf;
+using test::waitForSolve;
+using test::waitForWorkerIdle;
 
 namespace {
-
-std::string bytesOf(const app::MainWindow& window) {
-    return io::encodeProject(window.workspace()->document()->project());
-}
 
 bool identical(const model::Vec3& a, const model::Vec3& b) {
     return a.x == b.x && a.y == b.y && a.z == b.z;
@@ -243,11 +243,7 @@ private slots:
         QCOMPARE(tool->axisDirection().y, 1.0);
         QTest::keyClick(s.gl, Qt::Key_Escape);
         QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(20, 0));
-        QSignalSpy results(s.window.solveController()->worker(), &solver::SolverWorker::finished);
-        if (s.window.solveController()->worker()->isBusy()) {
-            QVERIFY(results.wait(60000));
-        }
-        QCoreApplication::processEvents();
+        QVERIFY(waitForWorkerIdle(s.window, 60000));
         QCOMPARE(bytesOf(s.window), atPress);
     }
 
@@ -274,11 +270,7 @@ private slots:
         QCOMPARE(s.window.surfaceView()->previewLineCount(), 0);
         QVERIFY(!s.window.workspace()->selection()->isEmpty());
         QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(40, 0));
-        QSignalSpy results(s.window.solveController()->worker(), &solver::SolverWorker::finished);
-        if (s.window.solveController()->worker()->isBusy()) {
-            QVERIFY(results.wait(60000));
-        }
-        QCoreApplication::processEvents();
+        QVERIFY(waitForWorkerIdle(s.window, 60000));
         QCOMPARE(bytesOf(s.window), atPress);
         QCOMPARE(s.doc->undoStack()->count(), stackAtPress);
     }
@@ -354,17 +346,6 @@ DEVSURF_REGISTER_TEST(TstRotateTool);
 class TstKeepDevelopable : public QObject {
     Q_OBJECT
 
-    static QString waitForSolve(app::MainWindow& window) {
-        QSignalSpy finished(window.solveController(), &app::SolveController::finished);
-        if (!window.solveController()->isSolving()) {
-            return QStringLiteral("not solving");
-        }
-        if (!finished.wait(120000)) {
-            return QStringLiteral("timeout");
-        }
-        return finished.front().front().toString();
-    }
-
 private slots:
     void init() { QSettings().clear(); }
 
@@ -435,11 +416,7 @@ private slots:
         QVERIFY2(sentence.contains(QStringLiteral("cancelled")) &&
                      sentence.contains(QStringLiteral("nothing moved")),
                  qPrintable(sentence));
-        QSignalSpy results(s.window.solveController()->worker(), &solver::SolverWorker::finished);
-        if (s.window.solveController()->worker()->isBusy()) {
-            QVERIFY(results.wait(120000));
-        }
-        QCoreApplication::processEvents();
+        QVERIFY(waitForWorkerIdle(s.window, 120000));
         QCOMPARE(s.doc->undoStack()->count(), stack);
         QCOMPARE(bytesOf(s.window), before);
         QVERIFY(!s.window.workspace()->selection()->isEmpty());
@@ -462,11 +439,7 @@ private slots:
                  qPrintable(sentence));
         const std::string pinned = bytesOf(s.window);
         const int stack = s.doc->undoStack()->count();
-        QSignalSpy results(s.window.solveController()->worker(), &solver::SolverWorker::finished);
-        if (s.window.solveController()->worker()->isBusy()) {
-            QVERIFY(results.wait(120000));
-        }
-        QCoreApplication::processEvents();
+        QVERIFY(waitForWorkerIdle(s.window, 120000));
         QCOMPARE(s.doc->undoStack()->count(), stack);
         QCOMPARE(bytesOf(s.window), pinned);
     }

@@ -9,6 +9,7 @@
 #include "solver/core/squared_distance_term.h"
 #include "solver/core/target_term.h"
 #include "solver/core/unit_norm_term.h"
+#include "solver/quality/shape_change.h"
 
 #include <cmath>
 #include <map>
@@ -149,6 +150,23 @@ inline std::unique_ptr<CircleProblem> makeCircleProblem(int points, unsigned see
         c->start[static_cast<std::size_t>(2 * i + 1)] = radius * std::sin(angle);
     }
     return c;
+}
+
+// The largest distance of a vertex or control point between two states of one surface.
+inline double largestMove(const model::CompositeSurface& a, const model::CompositeSurface& b) {
+    return measureShapeChange(a, b).largestMove;
+}
+
+// The rows of every term of the named family (0 if there is no such family).
+inline int familyRows(const Problem& problem, const char* name) {
+    const int family = problem.findFamily(name);
+    int rows = 0;
+    for (int t = 0; t < problem.termCount(); ++t) {
+        if (family >= 0 && problem.termFamily(t) == family) {
+            rows += problem.term(t).rowCount();
+        }
+    }
+    return rows;
 }
 
 } // namespace devsurf::solver::testing

@@ -22,6 +22,8 @@
 
 using namespace devsurf;
 using model::Vec3;
+using solver::testing::familyRows;
+using solver::testing::largestMove;
 
 namespace {
 
@@ -75,19 +77,6 @@ model::CompositeSurface curvedFold(model::CreaseCondition condition) {
 
 double diameterOf(const model::CompositeSurface& s) {
     return solver::surfaceDiameter(s);
-}
-
-double largestMove(const model::CompositeSurface& from, const model::CompositeSurface& to) {
-    double move = 0.0;
-    for (const auto& [id, p] : from.vertices()) {
-        move = std::max(move, (to.position(id) - p).norm());
-    }
-    for (const auto& [id, record] : from.edges()) {
-        for (std::size_t i = 0; i < record.controlPoints.size(); ++i) {
-            move = std::max(move, (to.edge(id).controlPoints[i] - record.controlPoints[i]).norm());
-        }
-    }
-    return move;
 }
 
 } // namespace

@@ -40,10 +40,6 @@ FormulationOptions roughStartFormulation() {
     return options;
 }
 
-double largestMove(const model::CompositeSurface& a, const model::CompositeSurface& b) {
-    return measureShapeChange(a, b).largestMove;
-}
-
 } // namespace
 
 class TstRoughStart : public QObject {

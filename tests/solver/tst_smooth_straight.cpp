@@ -20,6 +20,8 @@
 
 using namespace devsurf;
 using model::Vec3;
+using solver::testing::familyRows;
+using solver::testing::largestMove;
 
 namespace {
 
@@ -75,17 +77,6 @@ double foldAtRuling(const model::CompositeSurface& s) {
     return std::atan2(cross(nl, nr).norm(), dot(nl, nr));
 }
 
-int familyRows(const solver::Problem& problem, const char* name) {
-    const int family = problem.findFamily(name);
-    int rows = 0;
-    for (int t = 0; t < problem.termCount(); ++t) {
-        if (family >= 0 && problem.termFamily(t) == family) {
-            rows += problem.term(t).rowCount();
-        }
-    }
-    return rows;
-}
-
 model::CompositeSurface solved(const model::CompositeSurface& start,
                                const std::vector<model::VertexId>& fixed, int iterations,
                                double* residual = nullptr) {
@@ -107,19 +98,6 @@ model::CompositeSurface solved(const model::CompositeSurface& start,
         *residual = summary.finalMaxConstraintResidual;
     }
     return out;
-}
-
-double largestMove(const model::CompositeSurface& a, const model::CompositeSurface& b) {
-    double move = 0.0;
-    for (const auto& [id, p] : a.vertices()) {
-        move = std::max(move, (b.position(id) - p).norm());
-    }
-    for (const auto& [id, record] : a.edges()) {
-        for (std::size_t i = 0; i < record.controlPoints.size(); ++i) {
-            move = std::max(move, (b.edge(id).controlPoints[i] - record.controlPoints[i]).norm());
-        }
-    }
-    return move;
 }
 
 // A generalised cylinder over the cubic curve c(t) (in the plane z = z(t)) split along c: three

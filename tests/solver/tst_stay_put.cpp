@@ -6,6 +6,7 @@
 #include "solver/quality/quality_measures.h"
 #include "solver_test_models.h"
 
+#include "solver_test_problems.h"
 #include "test_registry.h"
 
 #include <QTest>
@@ -38,20 +39,6 @@ model::CompositeSurface scaledCopy(const model::CompositeSurface& surface, doubl
 
 // Largest distance of a vertex or control point between two surfaces of the same
 // combinatorics.
-double largestMove(const model::CompositeSurface& a, const model::CompositeSurface& b) {
-    double move = 0.0;
-    for (const auto& [id, position] : a.vertices()) {
-        move = std::max(move, model::distance(position, b.position(id)));
-    }
-    for (const auto& [id, record] : a.edges()) {
-        for (std::size_t i = 0; i < record.controlPoints.size(); ++i) {
-            move = std::max(move,
-                            model::distance(record.controlPoints[i], b.edge(id).controlPoints[i]));
-        }
-    }
-    return move;
-}
-
 model::CompositeSurface namedSurface(const QString& name) {
     if (name == "cone") {
         return makeCone();

@@ -19,6 +19,8 @@
 
 using namespace devsurf;
 using model::Vec3;
+using solver::testing::familyRows;
+using solver::testing::largestMove;
 
 namespace {
 
@@ -111,17 +113,6 @@ solver::FormulationOptions withVertexDevelopability() {
     solver::FormulationOptions options;
     options.vertexDevelopability = true;
     return options;
-}
-
-int familyRows(const solver::Problem& problem, const char* name) {
-    const int family = problem.findFamily(name);
-    int rows = 0;
-    for (int t = 0; t < problem.termCount(); ++t) {
-        if (family >= 0 && problem.termFamily(t) == family) {
-            rows += problem.term(t).rowCount();
-        }
-    }
-    return rows;
 }
 
 } // namespace

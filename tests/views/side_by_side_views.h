@@ -37,6 +37,7 @@ struct SideBySideViews {
         if (!QTest::qWaitForWindowExposed(&window)) {
             return false;
         }
+        // The first grab initialises the GL widgets (context, VTK window size).
         spatial->grabImage();
         development->grabImage();
         return true;

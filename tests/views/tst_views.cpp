@@ -1,6 +1,7 @@
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "model/examples.h"
+#include "side_by_side_views.h"
 #include "test_registry.h"
 #include "views/development_view.h"
 #include "views/surface_view.h"
@@ -33,35 +34,9 @@ namespace {
 const char* const kExamples[] = {"sheet", "annulus", "cylinder", "mixed"};
 
 // Both views side by side in one top-level window.
-struct Views {
-    Document document;
-    Selection selection;
-    QWidget window;
-    SurfaceView* spatial = nullptr;
-    DevelopmentView* development = nullptr;
-
-    explicit Views(const QString& example) {
-        document.resetProject(devsurf::model::makeExample(example.toStdString()));
-        auto* layout = new QHBoxLayout(&window);
-        spatial = new SurfaceView(&document, &selection);
-        development = new DevelopmentView(&document, &selection);
-        layout->addWidget(spatial);
-        layout->addWidget(development);
-        window.resize(900, 450);
-    }
-
-    bool show() {
-        window.show();
-        if (!QTest::qWaitForWindowExposed(&window)) {
-            return false;
-        }
-        // The first grab initialises the GL widgets (context, VTK window size).
-        spatial->grabImage();
-        development->grabImage();
-        return true;
-    }
-
-    const CompositeSurface& surface() const { return document.project().surfaces.at(0); }
+struct Views : devsurf::test::SideBySideViews {
+    explicit Views(const QString& example)
+        : SideBySideViews(devsurf::model::makeExample(example.toStdString()), 900, 450) {}
 };
 
 bool isDarkColour(const QColor& c) {

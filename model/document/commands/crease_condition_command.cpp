@@ -56,13 +56,8 @@ CommandOrError CreaseConditionCommand::create(Document& document, int surfaceInd
                              : tr("%1 on %n creases", nullptr, count).arg(conditionText(condition));
     return attempt(
         document, surfaceIndex, text,
-        [&edges, condition](const model::CompositeSurface& s) {
-            model::CompositeSurface result = s;
-            for (model::EdgeId edge : edges) {
-                result.setCreaseCondition(edge, condition);
-            }
-            return result;
-        },
+        forEach(edges, [condition](model::CompositeSurface& s,
+                                   model::EdgeId edge) { s.setCreaseCondition(edge, condition); }),
         [&](model::CompositeSurface before, model::CompositeSurface after) {
             return std::unique_ptr<QUndoCommand>(new CreaseConditionCommand(
                 document, surfaceIndex, std::move(before), std::move(after), Change::Labels, text));

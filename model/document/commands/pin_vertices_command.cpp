@@ -27,19 +27,14 @@ CommandOrError PinVerticesCommand::create(Document& document, int surfaceIndex,
     }
     const QString text =
         pin ? tr("Pin %n vertices", nullptr, count) : tr("Unpin %n vertices", nullptr, count);
-    return attempt(
-        document, surfaceIndex, text,
-        [&vertices, pin](const model::CompositeSurface& s) {
-            model::CompositeSurface result = s;
-            for (model::VertexId vertex : vertices) {
-                result.setPinned(vertex, pin);
-            }
-            return result;
-        },
-        [&](model::CompositeSurface before, model::CompositeSurface after) {
-            return std::unique_ptr<QUndoCommand>(new PinVerticesCommand(
-                document, surfaceIndex, std::move(before), std::move(after), Change::Pins, text));
-        });
+    return attempt(document, surfaceIndex, text,
+                   forEach(vertices, [pin](model::CompositeSurface& s,
+                                           model::VertexId vertex) { s.setPinned(vertex, pin); }),
+                   [&](model::CompositeSurface before, model::CompositeSurface after) {
+                       return std::unique_ptr<QUndoCommand>(
+                           new PinVerticesCommand(document, surfaceIndex, std::move(before),
+                                                  std::move(after), Change::Pins, text));
+                   });
 }
 
 } // namespace devsurf::document

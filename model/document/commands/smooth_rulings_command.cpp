@@ -38,19 +38,14 @@ CommandOrError SmoothRulingsCommand::create(Document& document, int surfaceIndex
     }
     const QString text = smooth ? tr("Make %n rulings smooth", nullptr, count)
                                 : tr("Make %n rulings sharp", nullptr, count);
-    return attempt(
-        document, surfaceIndex, text,
-        [&edges, smooth](const model::CompositeSurface& s) {
-            model::CompositeSurface result = s;
-            for (model::EdgeId edge : edges) {
-                result.setSmooth(edge, smooth);
-            }
-            return result;
-        },
-        [&](model::CompositeSurface before, model::CompositeSurface after) {
-            return std::unique_ptr<QUndoCommand>(new SmoothRulingsCommand(
-                document, surfaceIndex, std::move(before), std::move(after), Change::Labels, text));
-        });
+    return attempt(document, surfaceIndex, text,
+                   forEach(edges, [smooth](model::CompositeSurface& s,
+                                           model::EdgeId edge) { s.setSmooth(edge, smooth); }),
+                   [&](model::CompositeSurface before, model::CompositeSurface after) {
+                       return std::unique_ptr<QUndoCommand>(
+                           new SmoothRulingsCommand(document, surfaceIndex, std::move(before),
+                                                    std::move(after), Change::Labels, text));
+                   });
 }
 
 } // namespace devsurf::document

@@ -45,6 +45,17 @@ public:
     // refusal "refusal: reason".
     static CommandOrError attempt(const Document& document, int surfaceIndex,
                                   const QString& refusal, const Edit& edit, const Factory& make);
+    // The edit that calls set(surface, id) for every id on a copy of the surface (for the
+    // commands that set one property of many entities). `ids` must outlive the edit.
+    template <class Ids, class Set> static Edit forEach(const Ids& ids, Set set) {
+        return [&ids, set](const model::CompositeSurface& surface) {
+            model::CompositeSurface result = surface;
+            for (const auto& id : ids) {
+                set(result, id);
+            }
+            return result;
+        };
+    }
 
 protected:
     // For mergeWith(): the merged command ends where the later one ended.
