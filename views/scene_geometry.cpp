@@ -1,11 +1,16 @@
 #include "scene_geometry.h"
 
 #include "model/pattern/cutting_pattern.h"
+#include "model/pattern/pattern_layout.h"
+#include "model/pattern/pattern_overlaps.h"
+#include "model/pattern/pattern_pieces.h"
+#include "model/pattern/pattern_seams.h"
 #include "model/sampled_mesh.h"
 #include "model/strip.h"
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <optional>
 #include <set>
@@ -136,22 +141,94 @@ SurfaceScene buildSpatialScene(const model::CompositeSurface& surface, int surfa
     return scene;
 }
 
-DevelopmentScenes buildDevelopmentScenes(const model::Project& project) {
+namespace {
+
+model::PatternOptions viewPatternOptions() {
     model::PatternOptions options;
     options.layout = false;                           // the pieces side by side, no sheets
     options.gap = 20.0;                               // mm between the pieces
     options.samplesPerInterval = kSamplesPerInterval; // as the 3D view samples the curves
-    const model::CuttingPattern pattern = model::buildCuttingPattern(project, options);
+    return options;
+}
 
+// The scenes of laid-out pieces; overlapping lists the pieces drawn outlined in red.
+DevelopmentScenes scenesOfPieces(const model::Project& project,
+                                 const std::vector<model::PatternPiece>& pieces,
+                                 const std::set<std::size_t>& overlapping);
+
+} // namespace
+
+DevelopmentScenes buildDevelopmentScenes(const model::Project& project) {
+    const model::CuttingPattern pattern = model::buildCuttingPattern(project, viewPatternOptions());
     std::set<std::size_t> overlapping;
     for (const model::PatternOverlap& overlap : pattern.overlaps) {
         overlapping.insert(static_cast<std::size_t>(overlap.first));
         overlapping.insert(static_cast<std::size_t>(overlap.second));
     }
+    return scenesOfPieces(project, pattern.pieces, overlapping);
+}
+
+SurfaceDevelopment developSurfaceForView(const model::CompositeSurface& surface, int surfaceIndex) {
+    // As model::buildCuttingPattern does it for each surface.
+    SurfaceDevelopment result;
+    if (!surface.validate().empty()) {
+        result.invalid = true;
+        return result;
+    }
+    const model::PatternOptions options = viewPatternOptions();
+    int nameIndex = 0;
+    try {
+        for (model::pattern::PieceBuild& build :
+             model::pattern::developSurface(surface, surfaceIndex, options, nameIndex)) {
+            std::vector<FaceId> faces;
+            if (model::pattern::selfOverlaps(build.piece, faces)) {
+                build.piece.selfOverlapping = true;
+            }
+            model::pattern::addSeamAllowances(build, options);
+            result.pieces.push_back(std::move(build.piece));
+        }
+    } catch (const std::exception&) {
+        result.pieces.clear(); // not developed: neither drawn nor reported as invalid
+    }
+    return result;
+}
+
+DevelopmentScenes layOutDevelopments(const model::Project& project,
+                                     const std::vector<const SurfaceDevelopment*>& developments) {
+    const model::PatternOptions options = viewPatternOptions();
+    std::vector<model::PatternPiece> pieces;
+    std::vector<std::string> surfaceNames;
+    for (std::size_t s = 0; s < developments.size(); ++s) {
+        surfaceNames.push_back("surface " + std::to_string(s + 1));
+        for (const model::PatternPiece& piece : developments[s]->pieces) {
+            pieces.push_back(piece);
+            pieces.back().surface = static_cast<int>(s);
+        }
+    }
+    std::vector<std::string> problems;
+    model::pattern::layoutPieces(pieces, options, surfaceNames, problems);
+    std::set<std::size_t> overlapping;
+    for (std::size_t p = 0; p < pieces.size(); ++p) {
+        if (pieces[p].selfOverlapping) {
+            overlapping.insert(p);
+        }
+    }
+    for (const model::PatternOverlap& overlap : model::pattern::overlapsBetweenPieces(pieces)) {
+        overlapping.insert(static_cast<std::size_t>(overlap.first));
+        overlapping.insert(static_cast<std::size_t>(overlap.second));
+    }
+    return scenesOfPieces(project, pieces, overlapping);
+}
+
+namespace {
+
+DevelopmentScenes scenesOfPieces(const model::Project& project,
+                                 const std::vector<model::PatternPiece>& pieces,
+                                 const std::set<std::size_t>& overlapping) {
     DevelopmentScenes result;
     std::map<int, std::size_t> sceneOf;
-    for (std::size_t p = 0; p < pattern.pieces.size(); ++p) {
-        const model::PatternPiece& piece = pattern.pieces[p];
+    for (std::size_t p = 0; p < pieces.size(); ++p) {
+        const model::PatternPiece& piece = pieces[p];
         const model::CompositeSurface& surface =
             project.surfaces[static_cast<std::size_t>(piece.surface)];
         auto [it, inserted] = sceneOf.emplace(piece.surface, result.scenes.size());
@@ -227,6 +304,8 @@ DevelopmentScenes buildDevelopmentScenes(const model::Project& project) {
     }
     return result;
 }
+
+} // namespace
 
 std::pair<Vec3, Vec3> sceneBounds(const SurfaceScene& scene) {
     const double inf = std::numeric_limits<double>::infinity();

@@ -5,6 +5,7 @@
 
 #include "model/composite_surface.h"
 #include "model/creases.h"
+#include "model/pattern/cutting_pattern.h"
 #include "model/project.h"
 #include "model/vec3.h"
 
@@ -63,15 +64,31 @@ inline constexpr int kSamplesPerInterval = 8;
 // The surface in space. Throws model::ModelError if the surface is not valid.
 SurfaceScene buildSpatialScene(const model::CompositeSurface& surface, int surfaceIndex);
 
+// What a view draws: one scene per surface it could build, and the indices of the surfaces it
+// could not (not valid).
+struct SceneSet {
+    std::vector<SurfaceScene> scenes;
+    std::vector<int> invalidSurfaces;
+};
+using DevelopmentScenes = SceneSet;
+
 // The development of every surface as the cutting pattern (model::buildCuttingPattern) lays it
 // out without sheets: every surface's pieces side by side in the plane z = 0, cut open where a
 // surface does not close up, oriented as the 3D view shows the surface. One scene per surface
 // that could be developed; invalidSurfaces lists the indices of those that are not valid.
-struct DevelopmentScenes {
-    std::vector<SurfaceScene> scenes;
-    std::vector<int> invalidSurfaces;
-};
 DevelopmentScenes buildDevelopmentScenes(const model::Project& project);
+
+// The same in two steps, so that the first can be kept per surface revision (SceneCache): the
+// pieces of one surface as the cutting pattern develops them (before the layout), ...
+struct SurfaceDevelopment {
+    bool invalid = false;                    // the surface is not valid
+    std::vector<model::PatternPiece> pieces; // none if it could not be developed
+};
+SurfaceDevelopment developSurfaceForView(const model::CompositeSurface& surface, int surfaceIndex);
+// ... then the pieces of every surface (one development per surface of the project, in order)
+// laid out side by side. Equals buildDevelopmentScenes(project).
+DevelopmentScenes layOutDevelopments(const model::Project& project,
+                                     const std::vector<const SurfaceDevelopment*>& developments);
 
 // Axis-aligned bounds of a scene's polygons: {min, max}.
 std::pair<model::Vec3, model::Vec3> sceneBounds(const SurfaceScene& scene);

@@ -17,6 +17,7 @@
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkStaticCellLocator.h>
 #include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
@@ -160,6 +161,9 @@ SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
     m_picker->SetTolerance(0.0005);
     m_picker->PickFromListOn();
     m_picker->AddPickList(m_faces->actor);
+    m_locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+    m_locator->SetDataSet(m_faces->data);
+    m_picker->AddLocator(m_locator);
 
     if (spatial) {
         m_renderer->GradientBackgroundOn();
@@ -197,15 +201,15 @@ SceneRenderer::Layer& SceneRenderer::addLayer() {
     return layer;
 }
 
-void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnly) {
-    m_scenes = std::move(scenes);
+void SceneRenderer::setScenes(std::shared_ptr<const SceneSet> scenes, bool geometryOnly) {
+    m_set = scenes != nullptr ? std::move(scenes) : std::make_shared<const SceneSet>();
 
     // Faces: one polydata for every surface, colour per patch as cell data.
     std::vector<Vec3> points;
     std::vector<Vec3> normals;
     auto polys = vtkSmartPointer<vtkCellArray>::New();
     m_cellFace.clear();
-    for (const SurfaceScene& scene : m_scenes) {
+    for (const SurfaceScene& scene : m_set->scenes) {
         const vtkIdType base = static_cast<vtkIdType>(points.size());
         points.insert(points.end(), scene.points.begin(), scene.points.end());
         normals.insert(normals.end(), scene.normals.begin(), scene.normals.end());
@@ -230,6 +234,7 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
         faces->GetPointData()->SetNormals(array);
     }
     m_faces->assign(faces, geometryOnly);
+    m_locatorStale = true;
     m_faces->actor->SetPickable(true);
 
     std::vector<std::vector<Vec3>> rulingEdges;
@@ -247,7 +252,7 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
     std::vector<Vec3> pinned;
     m_pinnedDrawn.clear();
     int sharpRulings = 0;
-    for (const SurfaceScene& scene : m_scenes) {
+    for (const SurfaceScene& scene : m_set->scenes) {
         for (model::VertexId id : scene.pinned) {
             auto it = scene.vertices.find(id);
             if (it != scene.vertices.end()) {
@@ -284,7 +289,7 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
     m_rulingEdges->assign(polylineData(rulingEdges), geometryOnly);
     m_smoothRulings->assign(polylineData(smoothRulings), geometryOnly);
     m_rulingCounts = {static_cast<int>(smoothRulings.size()), sharpRulings};
-    m_conditionMarks = views::conditionMarks(m_scenes);
+    m_conditionMarks = views::conditionMarks(m_set->scenes);
     m_splineEdges->assign(polylineData(splineEdges), geometryOnly);
     m_creases->assign(polylineData(creases), geometryOnly);
     m_mountains->assign(polylineData(mountains), geometryOnly);
@@ -315,7 +320,7 @@ void SceneRenderer::setScenes(std::vector<SurfaceScene> scenes, bool geometryOnl
     m_sceneSize = diagonal > 0.0 ? diagonal : 1.0;
 
     if (m_quality) {
-        m_quality->update(m_scenes);
+        m_quality->update(m_set->scenes);
     }
     rebuildHighlight();
 }
@@ -328,7 +333,7 @@ void SceneRenderer::setSelection(const std::set<Pick>& picks) {
 void SceneRenderer::setColourBy(ColourBy by) {
     if (m_quality) {
         m_quality->setMode(by);
-        m_quality->update(m_scenes);
+        m_quality->update(m_set->scenes);
         rebuildHighlight();
     }
 }
@@ -379,7 +384,7 @@ void SceneRenderer::rebuildHighlight() {
 
     std::vector<std::vector<Vec3>> edges;
     std::vector<Vec3> vertices;
-    for (const SurfaceScene& scene : m_scenes) {
+    for (const SurfaceScene& scene : m_set->scenes) {
         for (const EdgeCurve& edge : scene.edges) {
             const Pick pick{Pick::Kind::Edge, scene.surface, edge.id};
             if (m_selection.count(pick) != 0) {
@@ -417,7 +422,7 @@ void SceneRenderer::setPreviewLines(const std::vector<std::vector<Vec3>>& lines)
 }
 
 const Vec3* SceneRenderer::vertexPosition(int surface, model::VertexId vertex) const {
-    for (const SurfaceScene& scene : m_scenes) {
+    for (const SurfaceScene& scene : m_set->scenes) {
         if (scene.surface == surface) {
             auto it = scene.vertices.find(vertex);
             return it == scene.vertices.end() ? nullptr : &it->second;
@@ -428,7 +433,15 @@ const Vec3* SceneRenderer::vertexPosition(int surface, model::VertexId vertex) c
 
 std::optional<Vec3> SceneRenderer::surfaceHit(double displayX, double displayY,
                                               std::optional<Pick>* face) const {
-    if (m_cellFace.empty() || m_picker->Pick(displayX, displayY, 0.0, m_renderer) == 0) {
+    if (m_cellFace.empty()) {
+        return std::nullopt;
+    }
+    if (m_locatorStale) {
+        m_locator->Modified();
+        m_locator->BuildLocator();
+        m_locatorStale = false;
+    }
+    if (m_picker->Pick(displayX, displayY, 0.0, m_renderer) == 0) {
         return std::nullopt;
     }
     const vtkIdType cell = m_picker->GetCellId();
@@ -465,7 +478,7 @@ std::optional<Pick> SceneRenderer::pick(double displayX, double displayY, double
 
     std::optional<Pick> best;
     double bestDistance = radius;
-    for (const SurfaceScene& scene : m_scenes) {
+    for (const SurfaceScene& scene : m_set->scenes) {
         for (const auto& [id, position] : scene.vertices) {
             const Vec3 d = toDisplay(position);
             const double dist = std::hypot(d.x - displayX, d.y - displayY);
@@ -480,7 +493,7 @@ std::optional<Pick> SceneRenderer::pick(double displayX, double displayY, double
     }
 
     bestDistance = 0.6 * radius;
-    for (const SurfaceScene& scene : m_scenes) {
+    for (const SurfaceScene& scene : m_set->scenes) {
         for (const EdgeCurve& edge : scene.edges) {
             std::vector<Vec3> display;
             display.reserve(edge.points.size());

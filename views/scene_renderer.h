@@ -9,12 +9,14 @@
 
 #include <vtkSmartPointer.h>
 
+#include <memory>
 #include <optional>
 #include <set>
 #include <vector>
 
 class vtkActor;
 class vtkCellPicker;
+class vtkStaticCellLocator;
 class vtkPolyData;
 class vtkRenderer;
 
@@ -31,8 +33,9 @@ public:
 
     // Replaces what is drawn. With geometryOnly (the combinatorics are unchanged) the layers
     // whose structure still matches keep their cells and colours and only take new points.
-    void setScenes(std::vector<SurfaceScene> scenes, bool geometryOnly);
-    const std::vector<SurfaceScene>& scenes() const { return m_scenes; }
+    // The scenes are shared (SceneCache), never copied.
+    void setScenes(std::shared_ptr<const SceneSet> scenes, bool geometryOnly);
+    const std::vector<SurfaceScene>& scenes() const { return m_set->scenes; }
 
     void setSelection(const std::set<document::Pick>& picks);
     // The selected picks that are drawn highlighted (those that exist in the scenes).
@@ -96,6 +99,10 @@ private:
     Mode m_mode;
     vtkSmartPointer<vtkRenderer> m_renderer;
     vtkSmartPointer<vtkCellPicker> m_picker;
+    // The faces' cells binned for picking: a pick (one per badge and label in every overlay
+    // update) costs a few cells instead of all of them. Built on the first pick after a change.
+    vtkSmartPointer<vtkStaticCellLocator> m_locator;
+    mutable bool m_locatorStale = true;
     std::vector<std::unique_ptr<Layer>> m_layers;
     Layer* m_faces = nullptr;
     Layer* m_rulingEdges = nullptr;
@@ -120,7 +127,7 @@ private:
     Layer* m_preview = nullptr;
 
     std::unique_ptr<QualityColouring> m_quality; // 3D only
-    std::vector<SurfaceScene> m_scenes;
+    std::shared_ptr<const SceneSet> m_set = std::make_shared<const SceneSet>();
     std::vector<std::pair<int, model::FaceId>> m_cellFace; // faces layer cell -> (surface, face)
     std::set<document::Pick> m_selection;
     std::set<document::Pick> m_highlighted;

@@ -1,6 +1,7 @@
 #include "scene_view.h"
 
 #include "model/model_error.h"
+#include "scene_cache.h"
 #include "scene_view_private.h"
 #include "vtk_interactor_styles.h"
 
@@ -15,9 +16,11 @@
 #include <vtkTextProperty.h>
 
 #include <QLocale>
+#include <QUndoStack>
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -155,6 +158,15 @@ SceneView::SceneView(Kind kind, document::Document* document, document::Selectio
                 &SceneView::onSelectionChanged);
     }
     onProjectReset();
+    if (SceneCache* cache = SceneCache::of(document);
+        cache != nullptr && kind == Kind::Development) {
+        connect(cache, &SceneCache::developmentReady, this, [this] {
+            if (d->followDevelopment) {
+                rebuild(true);
+                d->followDevelopment = SceneCache::of(d->document)->developmentPending();
+            }
+        });
+    }
 }
 
 SceneView::~SceneView() {
@@ -394,6 +406,10 @@ void SceneView::updateOverlay() {
     updateBadges();
     std::vector<ViewOverlay::Label> labels;
     if (d->showLabels) {
+        if (!d->anchorsValid) {
+            d->anchors = labelAnchors(d->scene->scenes());
+            d->anchorsValid = true;
+        }
         for (const LabelAnchor& anchor : d->anchors) {
             const model::Vec3 display = d->scene->toDisplay(anchor.point);
             if (d->kind == Kind::Spatial) {
@@ -452,12 +468,42 @@ void SceneView::onDocumentChanged(unsigned changes) {
     if (d->document == nullptr || d->document->revision() == d->builtRevision) {
         return;
     }
+    if (!isVisible() && window()->isVisible()) {
+        d->staleWhileHidden = true;
+        return;
+    }
     const unsigned structural = static_cast<unsigned>(document::Change::Labels) |
                                 static_cast<unsigned>(document::Change::Topology);
     const bool firstBuild = d->scene->scenes().empty();
+    // A run of geometry changes of one surface that merge into one undo step (a drag: a solver
+    // result per mouse move) is developed in the background, so that the GUI thread only
+    // resamples it for the 3D view; the development view follows as developments arrive.
+    const QUndoStack* stack = d->document->undoStack();
+    const std::array<int, 3> state = {stack->count(), stack->index(),
+                                      d->document->changedSurface()};
+    const bool continued = changes == static_cast<unsigned>(document::Change::Geometry) &&
+                           state == d->lastChange && state[2] >= 0;
+    d->lastChange = state;
+    if (d->kind == Kind::Development && continued && !firstBuild && d->problem.isEmpty()) {
+        d->builtRevision = d->document->revision();
+        d->followDevelopment = true;
+        SceneCache::of(d->document)->developInBackground(state[2]);
+        return;
+    }
+    d->followDevelopment = false;
     rebuild((changes & structural) == 0);
     if (firstBuild) {
         fitAll();
+    }
+}
+
+void SceneView::showEvent(QShowEvent* event) {
+    QWidget::showEvent(event);
+    if (d->staleWhileHidden) {
+        d->staleWhileHidden = false;
+        if (d->document != nullptr && d->document->revision() != d->builtRevision) {
+            rebuild(false);
+        }
     }
 }
 
@@ -473,30 +519,24 @@ void SceneView::onSelectionChanged() {
 
 void SceneView::rebuild(bool geometryOnly) {
     d->problem.clear();
-    std::vector<SurfaceScene> scenes;
-    if (d->document != nullptr) {
+    std::shared_ptr<const SceneSet> scenes;
+    if (SceneCache* cache = SceneCache::of(d->document)) {
         d->builtRevision = d->document->revision();
-        const auto& surfaces = d->document->project().surfaces;
-        if (d->kind == Kind::Development) {
-            // The cutting pattern lays out every surface's pieces at once.
-            DevelopmentScenes development = buildDevelopmentScenes(d->document->project());
-            scenes = std::move(development.scenes);
-            for (int i : development.invalidSurfaces) {
-                d->problem = tr("Surface %1 is not valid and is not shown.").arg(i + 1);
-                geometryOnly = false;
-            }
+        // Shared with the other views of the document: built once per surface revision.
+        if (d->kind == Kind::Spatial) {
+            scenes = cache->spatialScenes();
+        } else {
+            scenes = d->followDevelopment ? cache->latestDevelopmentScenes()
+                                          : cache->developmentScenes();
         }
-        for (std::size_t i = 0; i < surfaces.size() && d->kind == Kind::Spatial; ++i) {
-            try {
-                scenes.push_back(buildSpatialScene(surfaces[i], static_cast<int>(i)));
-            } catch (const std::exception&) {
-                // An invalid surface (e.g. mid-way through an edit) is skipped, not fatal.
-                d->problem = tr("Surface %1 is not valid and is not shown.").arg(i + 1);
-                geometryOnly = false;
-            }
+        for (int i : scenes->invalidSurfaces) {
+            // An invalid surface (e.g. mid-way through an edit) is skipped, not fatal.
+            d->problem = tr("Surface %1 is not valid and is not shown.").arg(i + 1);
+            geometryOnly = false;
         }
     }
-    d->anchors = labelAnchors(scenes);
+    d->anchors.clear();
+    d->anchorsValid = false;
     d->scene->setScenes(std::move(scenes), geometryOnly);
     d->scene->setSelection(d->selection ? d->selection->picks() : std::set<Pick>{});
     rerender();

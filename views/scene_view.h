@@ -130,6 +130,9 @@ protected:
               QWidget* parent);
 
     bool eventFilter(QObject* watched, QEvent* event) override;
+    // A view hidden in a shown window (e.g. the development view switched off) skips rebuilds
+    // and catches up when it is shown again.
+    void showEvent(QShowEvent* event) override;
 
     void setShowControlPolygonsImpl(bool show);
     void setShowVerticesImpl(bool show);

@@ -17,6 +17,7 @@
 #include <QPointer>
 #include <QRubberBand>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -44,6 +45,13 @@ struct SceneView::Private {
     vtkSmartPointer<vtkRenderer> renderer;
     std::unique_ptr<SceneRenderer> scene;
     quint64 builtRevision = std::numeric_limits<quint64>::max();
+    bool staleWhileHidden = false; // a change arrived while the view was hidden
+    // The undo stack (count, index) and the surface changed at the last change: the same again
+    // means the last change merged into the undo step before it (a drag goes on).
+    std::array<int, 3> lastChange = {-1, -1, -1};
+    // The development view draws the latest background development (SceneCache) while a drag
+    // goes on.
+    bool followDevelopment = false;
     QString problem;
     QString hover;
 
@@ -61,7 +69,8 @@ struct SceneView::Private {
     unsigned long startTag = 0;
     unsigned long endTag = 0;
     bool showLabels = false;
-    std::vector<LabelAnchor> anchors;
+    std::vector<LabelAnchor> anchors; // computed when labels are first drawn after a rebuild
+    bool anchorsValid = false;
     double barLength = 0.0;
     int previewLines = 0;
 

@@ -2,6 +2,8 @@
 
 #include <QUndoStack>
 
+#include <algorithm>
+
 namespace devsurf::document {
 
 Document::Document(QObject* parent) : QObject(parent), m_undoStack(new QUndoStack(this)) {
@@ -31,14 +33,31 @@ void Document::resetProject(model::Project project, const QString& filePath) {
     m_project = std::move(project);
     m_project.assignSurfaceIds(); // commands address surfaces by id
     ++m_revision;
+    m_allSurfacesRevision = m_revision;
+    m_surfaceRevisions.clear();
+    m_changedSurface = -1;
     setFilePath(filePath);
     emit projectReset();
     emit changed(Change::Everything);
     emit modifiedChanged(false);
 }
 
-void Document::notifyChanged(Changes changes) {
+quint64 Document::surfaceRevision(int index) const {
+    const auto it = m_surfaceRevisions.find(surface(index).id());
+    return it == m_surfaceRevisions.end() ? m_allSurfacesRevision
+                                          : std::max(it->second, m_allSurfacesRevision);
+}
+
+void Document::notifyChanged(Changes changes, int surfaceIndex) {
     ++m_revision;
+    if (surfaceIndex >= 0 && surfaceIndex < surfaceCount()) {
+        m_surfaceRevisions[surface(surfaceIndex).id()] = m_revision;
+        m_changedSurface = surfaceIndex;
+    } else {
+        m_allSurfacesRevision = m_revision;
+        m_surfaceRevisions.clear();
+        m_changedSurface = -1;
+    }
     emit changed(changes);
 }
 

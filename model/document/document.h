@@ -6,6 +6,8 @@
 #include <QObject>
 #include <QString>
 
+#include <map>
+
 class QUndoStack;
 
 namespace devsurf::document {
@@ -29,6 +31,12 @@ public:
     // Increases with every change, undo and redo included; solver results carry the revision
     // they were computed from and are dropped when it no longer matches.
     quint64 revision() const { return m_revision; }
+    // The revision at which the surface at index last changed (what the views' caches of
+    // derived geometry are keyed by); index must be in [0, surfaceCount()).
+    quint64 surfaceRevision(int index) const;
+    // The surface the latest change was made to, or -1 if it may have touched every surface
+    // (a new project, a change not about one surface). Valid while changed() is emitted.
+    int changedSurface() const { return m_changedSurface; }
 
     QString filePath() const { return m_filePath; }
     void setFilePath(const QString& path);
@@ -40,7 +48,8 @@ public:
 
     // For commands only: the project to change, then notifyChanged() once the change is done.
     model::Project& mutableProject() { return m_project; }
-    void notifyChanged(Changes changes);
+    // surfaceIndex: the only surface changed, or -1 for any number of them.
+    void notifyChanged(Changes changes, int surfaceIndex = -1);
 
 signals:
     void changed(devsurf::document::Changes changes);
@@ -52,6 +61,10 @@ private:
     model::Project m_project;
     QUndoStack* m_undoStack = nullptr;
     quint64 m_revision = 0;
+    // Revision of the last change to all surfaces, and of later changes to single surfaces.
+    quint64 m_allSurfacesRevision = 0;
+    std::map<model::SurfaceId, quint64> m_surfaceRevisions;
+    int m_changedSurface = -1;
     QString m_filePath;
 };
 

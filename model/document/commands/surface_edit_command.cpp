@@ -34,7 +34,7 @@ void SurfaceEditCommand::apply(const model::CompositeSurface& surface) {
         m_document.mutableProject().surfaces.at(static_cast<std::size_t>(index));
     target = surface;
     target.setId(m_surfaceId);
-    m_document.notifyChanged(m_changes);
+    m_document.notifyChanged(m_changes, index);
 }
 
 void SurfaceEditCommand::setAfter(model::CompositeSurface after, Changes changes) {
