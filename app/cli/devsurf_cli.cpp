@@ -66,14 +66,17 @@ Commands:
                       assembly / factorisation / solve, quality). --perturb adds Gaussian
                       noise of SIGMA times the surface's diameter first; --fix keeps the
                       vertices with the given ids (e.g. 0,4,7) where they are.
-  drag FILE --vertices IDS (--by DX,DY,DZ | --rotate PX,PY,PZ,AX,AY,AZ,DEGREES)
+  drag FILE (--vertices IDS | --crease EDGE) (--by DX,DY,DZ | --rotate PX,PY,PZ,AX,AY,AZ,DEGREES)
        [--steps N] [--pin IDS] [--after K] [--surface K] -o OUT.devsurf
                       Replay a drag as the desktop application runs it: the vertices are
                       moved by DX,DY,DZ (or rotated by DEGREES about the axis AX,AY,AZ
                       through PX,PY,PZ) in N evenly spaced steps (default 20) with one
                       solver iteration each, then K more iterations (default 10). Pins in
                       the file stay; --pin pins more vertices. One line per step
-                      (residual, time, quality).
+                      (residual, time, quality). --crease EDGE instead of --vertices
+                      drags a crease by DX,DY,DZ: its control points and unpinned ends
+                      slide within the surface (the component along its normal is
+                      dropped) and the strips on both sides change size.
   export FILE --format dxf|svg|pdf|fold [--sheet W,H | --paper A4|A3|Letter]
          [--tolerance MM] [--splines] [--r12] [--seam MM] [--rulings] -o OUT
                       Write the cutting pattern: pieces laid out on sheets of W x H mm
@@ -409,8 +412,8 @@ int run(const std::vector<std::string>& args) {
         }
     }
     if (command == "drag") {
-        const Arguments args = parse(rest, {"-o", "--vertices", "--by", "--rotate", "--steps",
-                                            "--pin", "--after", "--surface"});
+        const Arguments args = parse(rest, {"-o", "--vertices", "--crease", "--by", "--rotate",
+                                            "--steps", "--pin", "--after", "--surface"});
         try {
             return app::runDragCommand(args.positional, {args.options.begin(), args.options.end()});
         } catch (const std::invalid_argument& error) {

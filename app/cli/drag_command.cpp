@@ -6,6 +6,7 @@
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
 #include "solver/quality/vertex_stars.h"
+#include "solver/session/crease_drag.h"
 #include "solver/session/solve_session.h"
 #include "vertex_commands.h"
 
@@ -185,11 +186,28 @@ int runDragCommand(const std::vector<std::string>& positional,
     if (positional.size() != 1) {
         throw std::invalid_argument("expected one project file");
     }
+    const bool crease = hasOption(options, "--crease");
     const std::string idsText = findOption(options, "--vertices");
-    if (idsText.empty()) {
-        throw std::invalid_argument("the vertices to drag are missing (use --vertices IDS)");
+    if (crease == !idsText.empty()) {
+        throw std::invalid_argument(crease ? "give either --vertices IDS or --crease EDGE, not both"
+                                           : "the vertices to drag are missing (use --vertices "
+                                             "IDS, or --crease EDGE to drag a crease)");
     }
-    const std::vector<model::VertexId> dragged = parseVertexIds(idsText, "--vertices");
+    std::vector<model::VertexId> dragged;
+    model::EdgeId creaseEdge = model::kInvalidId;
+    if (crease) {
+        const std::vector<model::EdgeId> edges =
+            parseVertexIds(findOption(options, "--crease"), "--crease");
+        if (edges.size() != 1) {
+            throw std::invalid_argument("option '--crease' needs one edge id");
+        }
+        creaseEdge = edges.front();
+        if (hasOption(options, "--rotate")) {
+            throw std::invalid_argument("a crease is dragged with --by DX,DY,DZ, not rotated");
+        }
+    } else {
+        dragged = parseVertexIds(idsText, "--vertices");
+    }
     const Motion motion = parseMotion(options);
     std::vector<model::VertexId> pins;
     if (hasOption(options, "--pin")) {
@@ -252,23 +270,52 @@ int runDragCommand(const std::vector<std::string>& positional,
         surface.setPinned(id, true);
     }
 
-    // The vertices' positions at the press, and a handle on each pulled there.
+    // The vertices' positions at the press, and a handle on each pulled there (for a crease:
+    // its unpinned ends and interior control points, sliding within the surface).
     std::map<model::VertexId, model::Vec3> start;
     std::vector<solver::VertexHandle> pulled;
-    for (model::VertexId id : std::set<model::VertexId>(dragged.begin(), dragged.end())) {
-        start[id] = surface.position(id);
-        pulled.push_back({id, false, surface.position(id)});
-    }
+    std::vector<solver::ControlPointHandle> points;
+    std::unique_ptr<solver::CreaseDrag> creaseDrag;
     std::unique_ptr<solver::SolveSession> session;
     try {
-        session = std::make_unique<solver::SolveSession>(surface, pulled);
+        if (crease) {
+            creaseDrag = std::make_unique<solver::CreaseDrag>(surface, creaseEdge);
+            pulled = creaseDrag->vertexHandles({}, true);
+            points = creaseDrag->controlPointHandles({}, true);
+            for (const solver::VertexHandle& handle : pulled) {
+                start[handle.vertex] = handle.target;
+            }
+        }
+        for (model::VertexId id : std::set<model::VertexId>(dragged.begin(), dragged.end())) {
+            start[id] = surface.position(id);
+            pulled.push_back({id, false, surface.position(id)});
+        }
+        session = std::make_unique<solver::SolveSession>(surface, pulled, points);
     } catch (const std::invalid_argument& error) {
         throw model::ModelError("surface " + std::to_string(index + 1) + " of '" + path +
-                                "' cannot be solved: " + error.what());
+                                "' cannot be " + (crease ? "dragged: " : "solved: ") +
+                                error.what());
     }
-    std::cout << "Surface " << index + 1 << " (" << surface.name() << "): dragging " << start.size()
-              << (start.size() == 1 ? " vertex" : " vertices") << " in " << steps << " steps, then "
-              << after << " iterations; " << surface.pinnedVertices().size() << " pinned\n";
+    // Where the handles are at parameter t of the motion.
+    auto targetAt = [&](const model::Vec3& position, double t) {
+        return creaseDrag ? position + creaseDrag->displacement(motion.by, true) * t
+                          : motion.apply(position, t);
+    };
+    if (creaseDrag) {
+        const model::Vec3 d = creaseDrag->displacement(motion.by, true);
+        char line[200];
+        std::snprintf(line, sizeof line,
+                      "Crease %u slides by %.3f,%.3f,%.3f within the surface (%zu control points "
+                      "and %zu end vertices pulled).\n",
+                      creaseEdge, d.x, d.y, d.z, points.size(), pulled.size());
+        std::cout << line;
+    }
+    std::cout << "Surface " << index + 1 << " (" << surface.name() << "): dragging "
+              << (crease ? "crease " + std::to_string(creaseEdge)
+                         : std::to_string(start.size()) +
+                               (start.size() == 1 ? " vertex" : " vertices"))
+              << " in " << steps << " steps, then " << after << " iterations; "
+              << surface.pinnedVertices().size() << " pinned\n";
 
     auto runIteration = [&](const char* label, int i, int count) {
         const auto begin = std::chrono::steady_clock::now();
@@ -288,7 +335,10 @@ int runDragCommand(const std::vector<std::string>& positional,
     for (int k = 1; k <= steps; ++k) {
         const double t = static_cast<double>(k) / steps;
         for (const auto& [id, position] : start) {
-            session->setHandleTarget(id, motion.apply(position, t));
+            session->setHandleTarget(id, targetAt(position, t));
+        }
+        for (const solver::ControlPointHandle& point : points) {
+            session->setControlPointTarget(point.edge, point.index, targetAt(point.target, t));
         }
         last = runIteration("step", k, steps);
     }
@@ -298,13 +348,18 @@ int runDragCommand(const std::vector<std::string>& positional,
 
     double largestMiss = 0.0;
     for (const auto& [id, position] : start) {
-        const model::Vec3 miss = session->surface().position(id) - motion.apply(position, 1.0);
-        largestMiss =
-            std::max(largestMiss, std::sqrt(miss.x * miss.x + miss.y * miss.y + miss.z * miss.z));
+        largestMiss = std::max(largestMiss,
+                               (session->surface().position(id) - targetAt(position, 1.0)).norm());
+    }
+    for (const solver::ControlPointHandle& point : points) {
+        const model::Vec3& reached = session->surface()
+                                         .edge(point.edge)
+                                         .controlPoints[static_cast<std::size_t>(point.index)];
+        largestMiss = std::max(largestMiss, (reached - targetAt(point.target, 1.0)).norm());
     }
     char line[256];
     std::snprintf(line, sizeof line,
-                  "Largest residual %.2e (tolerance %.1e %s); dragged vertices within %.3g of "
+                  "Largest residual %.2e (tolerance %.1e %s); dragged points within %.3g of "
                   "their targets.\n",
                   last.finalMaxConstraintResidual, last.tolerance,
                   last.toleranceReached ? "reached" : "not reached", largestMiss);

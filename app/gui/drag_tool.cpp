@@ -1,5 +1,6 @@
 #include "drag_tool.h"
 
+#include "model/bspline_curve.h"
 #include "model/document/commands/apply_surface_command.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
@@ -16,6 +17,8 @@
 #include <QUndoStack>
 
 #include <algorithm>
+#include <limits>
+#include <stdexcept>
 
 namespace devsurf::app {
 
@@ -68,6 +71,9 @@ DragTool::~DragTool() {
 }
 
 QString DragTool::undoText() const {
+    if (m_crease) {
+        return tr("Drag crease %1").arg(m_crease->edge());
+    }
     return tr("Drag %n vertices", nullptr, static_cast<int>(m_vertices.size()));
 }
 
@@ -81,7 +87,8 @@ QString DragTool::stoppedText(const QString& reason) const {
 
 QString DragTool::hintText() const {
     return tr("Drag tool: press on a vertex in the 3D view and move the mouse; the selected "
-              "vertices of its surface follow. Esc cancels a drag.");
+              "vertices of its surface follow. Press on a crease to slide it within its patches. "
+              "Esc cancels a drag.");
 }
 
 QString DragTool::changedText() const {
@@ -89,6 +96,18 @@ QString DragTool::changedText() const {
 }
 
 QString DragTool::motionText() const {
+    if (m_crease) {
+        const QString shift = QString::number(m_creaseShift.norm(), 'f', 2);
+        return axis() == Axis::Free
+                   ? tr("Sliding crease %1 by %2 mm within the surface. Release to finish, Esc "
+                        "cancels; hold X, Y or Z to move along that axis.")
+                         .arg(m_crease->edge())
+                         .arg(shift)
+                   : tr("Moving crease %1 by %2 mm along the axis. Release to finish, Esc "
+                        "cancels.")
+                         .arg(m_crease->edge())
+                         .arg(shift);
+    }
     const double distance = m_targets.empty() ? 0.0 : (m_targets.front() - m_start.front()).norm();
     const QString length = QString::number(distance, 'f', 2);
     const int n = static_cast<int>(m_vertices.size());
@@ -198,6 +217,11 @@ bool DragTool::eventFilter(QObject* watched, QEvent* event) {
 bool DragTool::press(const QPoint& pos) {
     const std::optional<Pick> pick = m_view->pickAt(pos);
     document::Document* doc = m_workspace->document();
+    m_crease.reset();
+    if (pick && pick->kind == Pick::Kind::Edge && dragsCreases() && pick->surface >= 0 &&
+        pick->surface < doc->surfaceCount()) {
+        return pressCrease(pos, *pick);
+    }
     if (!pick || pick->kind != Pick::Kind::Vertex || pick->surface < 0 ||
         pick->surface >= doc->surfaceCount()) {
         return false; // the camera turns as usual
@@ -230,13 +254,57 @@ bool DragTool::press(const QPoint& pos) {
     for (model::VertexId v : m_vertices) {
         m_start.push_back(surface.position(v));
     }
-    m_anchor = surface.position(pick->id);
+    return start(pos, surface.position(pick->id));
+}
+
+bool DragTool::pressCrease(const QPoint& pos, const Pick& pick) {
+    document::Document* doc = m_workspace->document();
+    const model::CompositeSurface& surface = doc->surface(pick.surface);
+    try {
+        m_crease = std::make_unique<solver::CreaseDrag>(surface, pick.id);
+    } catch (const std::invalid_argument& error) {
+        // Not a crease (or nothing of it may move): say so, and the camera turns as usual.
+        emit statusMessage(QString::fromStdString(error.what()));
+        return false;
+    }
+    m_workspace->selection()->set({pick});
+    if (m_solver->isSolving()) {
+        m_solver->cancel(tr("a drag started"));
+    }
+    m_surface = pick.surface;
+    m_vertices = m_crease->vertices();
+    m_start = m_crease->vertexStart();
+    m_creaseShift = {};
+    // The plane of the motion passes through the point of the crease nearest the press.
+    const model::EdgeRecord& record = surface.edge(pick.id);
+    const model::BSplineCurve curve =
+        model::BSplineCurve::uniform(record.space, record.controlPoints);
+    model::Vec3 anchor = record.controlPoints.front();
+    double nearest = std::numeric_limits<double>::infinity();
+    constexpr int kSamples = 64;
+    for (int i = 0; i <= kSamples; ++i) {
+        const double u =
+            curve.domainBegin() + (curve.domainEnd() - curve.domainBegin()) * i / kSamples;
+        const model::Vec3 p = curve.evaluate(u);
+        const double d = (m_view->projectToWidget(p) - pos).manhattanLength();
+        if (d < nearest) {
+            nearest = d;
+            anchor = p;
+        }
+    }
+    return start(pos, anchor);
+}
+
+bool DragTool::start(const QPoint& pos, const model::Vec3& anchor) {
+    document::Document* doc = m_workspace->document();
+    m_anchor = anchor;
     m_normal = m_view->viewDirection();
     m_pressPos = pos;
     m_moved = false;
     m_pressSurfaces = doc->project().surfaces;
     m_targets = m_start;
     if (!begin()) {
+        m_crease.reset();
         return true;
     }
     m_sessionKey = nextSessionKey();
@@ -271,6 +339,9 @@ bool DragTool::targetsAt(const QPoint& pos, std::vector<model::Vec3>& targets) {
         const model::Vec3 unit = unitVector(axis());
         delta = unit * dot(delta, unit);
     }
+    if (m_crease) {
+        delta = m_creaseShift = m_crease->displacement(delta, axis() == Axis::Free);
+    }
     targets.resize(m_start.size());
     for (std::size_t i = 0; i < m_start.size(); ++i) {
         targets[i] = m_start[i] + delta;
@@ -285,6 +356,11 @@ void DragTool::submit(int iterations) {
     std::vector<solver::VertexHandle>& handles = request.pulled[m_surface];
     for (std::size_t i = 0; i < m_vertices.size(); ++i) {
         handles.push_back({m_vertices[i], false, m_targets[i]});
+    }
+    if (m_crease) {
+        // The axis (if any) was applied to the shift already.
+        request.pulledControlPoints[m_surface] =
+            m_crease->controlPointHandles(m_creaseShift, false);
     }
     request.iterations = iterations;
     request.sessionKey = m_sessionKey;

@@ -1,11 +1,14 @@
 #pragma once
 
 #include "model/composite_surface.h"
+#include "model/document/selection.h"
 #include "panels/solver_panel.h"
+#include "solver/session/crease_drag.h"
 
 #include <QObject>
 #include <QPoint>
 
+#include <memory>
 #include <vector>
 
 class QAction;
@@ -29,9 +32,12 @@ class Workspace;
 // to that axis) and the surface follows: every move runs one solver iteration with the dragged
 // vertices pulled to the mouse as handles (pinned vertices stay); the release runs ten more.
 // The whole drag is one undo step whose undo returns the exact state at press; Esc during the
-// drag returns to the state at press without an undo step. Presses away from vertices still
-// turn the camera. Other motions of the pressed vertices (RotateTool) override the hooks
-// begin(), targetsAt(), undoText() and the sentences.
+// drag returns to the state at press without an undo step. A press on a crease drags the crease
+// instead (solver::CreaseDrag): it slides within its two strips, its control points and
+// unpinned ends pulled by the mouse's motion (without its component along the surface normal,
+// unless an axis is chosen). Presses away from vertices and creases still turn the camera. Other
+// motions of the pressed vertices (RotateTool) override the hooks begin(), targetsAt(), undoText()
+// and the sentences.
 class DragTool : public QObject {
     Q_OBJECT
 public:
@@ -68,6 +74,8 @@ protected:
     // True: a press on any vertex moves the selected vertices of its surface (two or more),
     // whether the pressed one is selected or not; false: only a press on a selected vertex.
     virtual bool movesWholeSelection() const { return false; }
+    // True: a press on a crease drags the crease.
+    virtual bool dragsCreases() const { return true; }
     // The status bar sentence when the tool is turned on.
     virtual QString hintText() const;
     // The status bar sentence while the vertices follow the mouse.
@@ -95,6 +103,11 @@ protected:
 private:
     enum class State { Idle, Dragging, Finishing };
     bool press(const QPoint& pos);
+    // A press on edge `pick` (which may or may not be a crease).
+    bool pressCrease(const QPoint& pos, const document::Pick& pick);
+    // The rest of a press once m_surface, m_vertices and m_start are set: the motion's plane
+    // passes through `anchor`.
+    bool start(const QPoint& pos, const model::Vec3& anchor);
     void move(const QPoint& pos);
     void release(const QPoint& pos, Qt::KeyboardModifiers modifiers);
     // Returns to the state at press (no undo step); says why in the status bar.
@@ -122,6 +135,9 @@ private:
     quint64 m_ownRevision = 0;
     int m_stackCountAtPress = 0;
     bool m_applied = false;
+    // The crease being dragged (null for vertices) and its displacement for the mouse now.
+    std::unique_ptr<solver::CreaseDrag> m_crease;
+    model::Vec3 m_creaseShift;
 };
 
 } // namespace devsurf::app

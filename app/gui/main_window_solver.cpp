@@ -49,13 +49,14 @@ QList<QAction*> MainWindow::createSolverActions(QMenu* tools, QAction* selectNon
         }
     });
 
-    QAction* drag = addAction(tools, QStringLiteral("actionDragTool"), tr("&Drag Vertices"),
-                              QKeySequence(tr("G")));
+    QAction* drag = addAction(tools, QStringLiteral("actionDragTool"),
+                              tr("&Drag Vertices and Creases"), QKeySequence(tr("G")));
     drag->setIcon(actionIcon(QStringLiteral("drag")));
     const QString dragTip =
         tr("Drag tool: press on a vertex in the 3D view and move it, the surface follows and "
-           "stays developable. The axis chosen in the toolbar, or holding X, Y or Z, moves it "
-           "along that axis; Esc cancels the drag (G).");
+           "stays developable; press on a crease to slide it within its patches. The axis "
+           "chosen in the toolbar, or holding X, Y or Z, moves along that axis; Esc cancels the "
+           "drag (G).");
     drag->setToolTip(dragTip);
     drag->setStatusTip(dragTip);
     m_dragTool = new DragTool(drag, m_workspace, m_surfaceView, m_solveController);

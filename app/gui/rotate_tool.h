@@ -30,6 +30,7 @@ public:
 protected:
     bool begin() override;
     bool movesWholeSelection() const override { return true; }
+    bool dragsCreases() const override { return false; }
     bool targetsAt(const QPoint& pos, std::vector<model::Vec3>& targets) override;
     QString hintText() const override;
     QString motionText() const override;

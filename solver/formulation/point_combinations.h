@@ -6,8 +6,20 @@
 #include "solver/core/term.h"
 
 #include <algorithm>
+#include <vector>
 
 namespace devsurf::solver {
+
+// The u values of the collocation of (4): `count` distinct interior values per interval.
+inline std::vector<double> collocationValues(int intervals, int count) {
+    std::vector<double> values;
+    for (int i = 0; i < intervals; ++i) {
+        for (int j = 0; j < count; ++j) {
+            values.push_back((i + (j + 0.5) / count) / intervals);
+        }
+    }
+    return values;
+}
 
 // Merges repeated offsets and drops zero coefficients, so that Jacobian rows stay short.
 inline PointCombination simplified(const PointCombination& in) {

@@ -35,17 +35,6 @@ std::string str(std::uint32_t id) {
     return std::to_string(id);
 }
 
-// The u values of the collocation of (4): `count` distinct interior values per interval.
-std::vector<double> collocationValues(int intervals, int count) {
-    std::vector<double> values;
-    for (int i = 0; i < intervals; ++i) {
-        for (int j = 0; j < count; ++j) {
-            values.push_back((i + (j + 0.5) / count) / intervals);
-        }
-    }
-    return values;
-}
-
 Vec3 normalised(const Vec3& v) {
     const double length = v.norm();
     return length > 0.0 ? v / length : v;
@@ -406,8 +395,7 @@ struct SurfaceFormulation::Builder {
             vertexOffsets[vertex] = f.pointOffset(point);
         }
         solver::addVertexDevelopability(surface, vertexOffsets, edgeOffsets(), f.m_problem,
-                                        f.m_initialState, *vertexStars, *spokeGuard,
-                                        options.vertexSpokeGuard);
+                                        f.m_initialState, *vertexStars, *spokeGuard, options);
     }
 
     // RR…R faces: ⟨n_f, v_{i+1} − v_i⟩ = 0 for every edge, |n_f| = 1 (docs/math.md §3).
@@ -457,6 +445,20 @@ struct SurfaceFormulation::Builder {
                 target[k] = (handle.target[k] - f.m_centre[k]) / f.m_scale;
             }
             f.m_handleRow[handle.vertex] = handles->addPointTarget(offset, 3, target);
+        }
+        for (const ControlPointHandle& handle : options.controlPointHandles) {
+            const auto it = f.m_edgePoints.find(handle.edge);
+            if (it == f.m_edgePoints.end() || handle.index < 1 ||
+                handle.index + 1 >= static_cast<int>(it->second.size())) {
+                throw std::invalid_argument("edge " + str(handle.edge) +
+                                            " has no interior "
+                                            "control point " +
+                                            std::to_string(handle.index) + ".");
+            }
+            const Vec3 t = (handle.target - f.m_centre) / f.m_scale;
+            const double target[3] = {t.x, t.y, t.z};
+            f.m_controlHandleRow[{handle.edge, handle.index}] = handles->addPointTarget(
+                f.pointOffset(it->second[static_cast<std::size_t>(handle.index)]), 3, target);
         }
     }
 

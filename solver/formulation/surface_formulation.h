@@ -23,6 +23,14 @@ struct VertexHandle {
     model::Vec3 target; // only used when !fixed, in model coordinates
 };
 
+// A user handle on an interior control point of an S-edge (a dragged crease): pulled towards
+// a target with the weight of the vertex handles.
+struct ControlPointHandle {
+    model::EdgeId edge = model::kInvalidId;
+    int index = 1;      // among the edge's control points, 1 … n − 2 (its ends are vertices)
+    model::Vec3 target; // model coordinates
+};
+
 struct FormulationOptions {
     // (4) with the first-derivative points a¹₀, a¹₁, b¹₀, b¹₁ of every collocation value as
     // auxiliary variables tied to the control points by linear relations (as the paper does),
@@ -116,7 +124,8 @@ struct FormulationOptions {
     // iterations) it kept det at 1e-8 … 6e-4 instead of ≤ 1e-8 (weight 1; 0.1 and 0.01 did not
     // help), the rough annulus ended at det 1.7e-2 instead of ≤ 1e-6, and a star lifted to an
     // angle defect of 0.05 needs ε₂ = 1e-3 (10 iterations: defect 4e-12) or 30 iterations at
-    // ε₂ = 0.01 (4e-15; 10 iterations: 0.8).
+    // ε₂ = 0.01 (4e-15; 10 iterations: 0.8). SolveSession turns it on (with the limits below,
+    // see defaultSessionFormulationOptions).
     bool vertexDevelopability = false;
     double vertexDevelopabilityWeight = 1.0;
     // Every spoke of such a star (from the vertex to its edge's tangent point) stays at least
@@ -124,8 +133,26 @@ struct FormulationOptions {
     // Without it the iteration closed a lifted star by shrinking one spoke to a point (defect
     // 1e-2 left, measured by the angles of the control points).
     double vertexSpokeGuard = 0.5;
+    // Where a crease passes through such a star almost straight (a four-spoke star whose two
+    // S-edge spokes leave the vertex within this angle, in radians, of opposite directions at
+    // the start), the crease is made tangent-continuous there (G¹, see
+    // addVertexDevelopability) instead of the star's flat copy; that implies the angle sum 2π.
+    // Measured on the scripted Fig. 8 lift (SolveSession, 20 moves + 10 iterations; the
+    // example's creases kink by 0.026 rad at its four crease vertices): with flat copies the
+    // drag did not converge (residual 0.36, defect 2.5e-2 … 2.5 rad; with the session's final
+    // ε₁ det 3e-14, defect 1e-13, but rulings at 3 % of their start length); with tangent
+    // continuity det 5e-15, defect 0, rulings 0.78. 0.05 stays below the annulus example's
+    // kinks (0.087 rad; the cylinder's are 0.175), which it keeps through flat copies: valid
+    // designs stay put. 0: flat copies everywhere.
+    double vertexSmoothCreaseAngle = 0.05;
+    // Only stars whose angle defect at the start is at most this (radians) get rows (the
+    // others keep rows scaled to zero): vertex developability is then kept where it holds
+    // rather than imposed on a rough start. See defaultSessionFormulationOptions for measured
+    // values; the default imposes it everywhere.
+    double vertexStartDefectLimit = 1e9;
 
     std::vector<VertexHandle> handles;
+    std::vector<ControlPointHandle> controlPointHandles;
 };
 
 // The configuration for rough starts (a design dragged far, a noisy import): proximity to the
@@ -193,6 +220,8 @@ public:
     // Moves the target of a pulled handle (model coordinates). Returns false if the vertex has
     // no pulled handle.
     bool setHandleTarget(model::VertexId vertex, const model::Vec3& target);
+    // The same for a pulled control point (false if it has no handle).
+    bool setControlPointTarget(model::EdgeId edge, int index, const model::Vec3& target);
 
     // Writes the vertices and control points of state x into `surface` (which must have the
     // combinatorics of the formulated surface). Refuses a state of the wrong size or with a
@@ -232,6 +261,7 @@ private:
     // transitions).
     std::map<std::pair<model::FaceId, model::EdgeId>, PointCombination> m_rulingNormals;
     std::map<model::VertexId, int> m_handleRow; // first TargetTerm row of a pulled handle
+    std::map<std::pair<model::EdgeId, int>, int> m_controlHandleRow; // the same per point
     TargetTerm* m_handleTerm = nullptr;
     TargetTerm* m_proximity = nullptr;       // every point towards the reference state
     TargetTerm* m_normalProximity = nullptr; // every control normal towards the reference state

@@ -51,6 +51,17 @@ bool SurfaceFormulation::setHandleTarget(VertexId vertex, const Vec3& target) {
     return true;
 }
 
+bool SurfaceFormulation::setControlPointTarget(model::EdgeId edge, int index, const Vec3& target) {
+    auto it = m_controlHandleRow.find({edge, index});
+    if (it == m_controlHandleRow.end() || !m_handleTerm) {
+        return false;
+    }
+    for (int k = 0; k < 3; ++k) {
+        m_handleTerm->setTarget(it->second + k, (target[k] - m_centre[k]) / m_scale);
+    }
+    return true;
+}
+
 Vec3 SurfaceFormulation::toModel(const double* p) const {
     return Vec3(m_centre.x + m_scale * p[0], m_centre.y + m_scale * p[1],
                 m_centre.z + m_scale * p[2]);

@@ -14,11 +14,16 @@ namespace devsurf::solver {
 
 // The damping ε₂ of interactive solving and of the command line (one iteration per call).
 Options defaultSessionSolverOptions();
+// The formulation of interactive solving and of the command line: vertex developability on
+// (FormulationOptions::vertexDevelopability; with defaultSessionSolverOptions it takes the
+// scripted Fig. 8 lift to an angle defect of 0 at its crease vertices instead of 4e-2 rad) at
+// the stars where it holds at the start (vertexStartDefectLimit 1e-6 rad).
+FormulationOptions defaultSessionFormulationOptions();
 
 struct SessionOptions {
     // Its `handles` are extended by the session: every pinned vertex becomes a fixed handle,
     // every pulled vertex a pulled one.
-    FormulationOptions formulation;
+    FormulationOptions formulation = defaultSessionFormulationOptions();
     // maxIterations, scheduleOffset, cancel and progress are ignored: step(n) decides.
     Options solver = defaultSessionSolverOptions();
 };
@@ -39,6 +44,11 @@ public:
     // or non-finite handle).
     SolveSession(const model::CompositeSurface& surface, const std::vector<VertexHandle>& pulled,
                  const SessionOptions& options = {});
+    // The same with interior control points of S-edges pulled too (a dragged crease). Throws
+    // std::invalid_argument for a control point that does not exist or a non-finite target.
+    SolveSession(const model::CompositeSurface& surface, const std::vector<VertexHandle>& pulled,
+                 const std::vector<ControlPointHandle>& pulledControlPoints,
+                 const SessionOptions& options = {});
     SolveSession(const SolveSession&) = delete;
     SolveSession& operator=(const SolveSession&) = delete;
     ~SolveSession();
@@ -46,6 +56,8 @@ public:
     // Moves a pulled handle's target (model coordinates); false if the vertex is not pulled
     // or the target is not finite.
     bool setHandleTarget(model::VertexId vertex, const model::Vec3& target);
+    // The same for a pulled control point.
+    bool setControlPointTarget(model::EdgeId edge, int index, const model::Vec3& target);
 
     // Runs n iterations continuing the ε₁ schedule where the last call stopped; writes the
     // result into surface(). step(1) ten times equals step(10) bit for bit. `cancel` is

@@ -68,6 +68,14 @@ std::set<model::VertexId> vertexSet(const std::vector<VertexHandle>& handles) {
     return vertices;
 }
 
+std::set<std::pair<model::EdgeId, int>> pointSet(const std::vector<ControlPointHandle>& handles) {
+    std::set<std::pair<model::EdgeId, int>> points;
+    for (const ControlPointHandle& handle : handles) {
+        points.insert({handle.edge, handle.index});
+    }
+    return points;
+}
+
 QString surfaceLabel(const model::CompositeSurface& surface, std::size_t index) {
     QString label = QStringLiteral("Surface %1").arg(index + 1);
     if (!surface.name().empty()) {
@@ -117,12 +125,14 @@ struct SolverWorker::Impl {
     std::vector<std::unique_ptr<SolveSession>> sessions;
     std::vector<model::CompositeSurface> built;
     std::vector<std::set<model::VertexId>> pulled;
+    std::vector<std::set<std::pair<model::EdgeId, int>>> pulledPoints;
 
     void dropSessions() {
         sessionKey = 0;
         sessions.clear();
         built.clear();
         pulled.clear();
+        pulledPoints.clear();
     }
 };
 
@@ -225,6 +235,7 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
         d.sessions.resize(count);
         d.built.resize(count);
         d.pulled.resize(count);
+        d.pulledPoints.resize(count);
     }
     d.sessionKey = request.sessionKey;
 
@@ -245,9 +256,14 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
         const auto it = request.pulled.find(static_cast<int>(s));
         return it == request.pulled.end() ? std::vector<VertexHandle>{} : it->second;
     };
+    auto pointsOf = [&](std::size_t s) {
+        const auto it = request.pulledControlPoints.find(static_cast<int>(s));
+        return it == request.pulledControlPoints.end() ? std::vector<ControlPointHandle>{}
+                                                       : it->second;
+    };
     int solvedSurfaces = 0;
     for (std::size_t s = 0; s < count; ++s) {
-        if (!drag || !handlesOf(s).empty()) {
+        if (!drag || !handlesOf(s).empty() || !pointsOf(s).empty()) {
             ++solvedSurfaces;
         }
     }
@@ -257,7 +273,8 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
     for (std::size_t s = 0; s < count; ++s) {
         const model::CompositeSurface& snapshot = request.surfaces[s];
         const std::vector<VertexHandle> handles = handlesOf(s);
-        if (drag && handles.empty()) {
+        const std::vector<ControlPointHandle> points = pointsOf(s);
+        if (drag && handles.empty() && points.empty()) {
             // Not dragged: stays as it is.
             if (!allFinite(snapshot)) {
                 return fail(surfaceLabel(snapshot, s) + " has a coordinate that is not finite");
@@ -267,8 +284,9 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
             continue;
         }
         std::unique_ptr<SolveSession>& session = d.sessions[s];
-        const bool continues =
-            session && sameStructure(d.built[s], snapshot) && d.pulled[s] == vertexSet(handles);
+        const bool continues = session && sameStructure(d.built[s], snapshot) &&
+                               d.pulled[s] == vertexSet(handles) &&
+                               d.pulledPoints[s] == pointSet(points);
         if (continues) {
             for (const VertexHandle& handle : handles) {
                 if (!isFinite(handle.target)) {
@@ -277,15 +295,24 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
                 }
                 session->setHandleTarget(handle.vertex, handle.target);
             }
+            for (const ControlPointHandle& point : points) {
+                if (!session->setControlPointTarget(point.edge, point.index, point.target)) {
+                    return fail(QStringLiteral("the drag target of control point %1 of edge %2 "
+                                               "is not finite")
+                                    .arg(point.index)
+                                    .arg(point.edge));
+                }
+            }
         } else {
             try {
-                session = std::make_unique<SolveSession>(snapshot, handles);
+                session = std::make_unique<SolveSession>(snapshot, handles, points);
             } catch (const std::exception& error) {
                 return fail(surfaceLabel(snapshot, s) + QStringLiteral(" cannot be solved: ") +
                             QString::fromStdString(error.what()));
             }
             d.built[s] = snapshot;
             d.pulled[s] = vertexSet(handles);
+            d.pulledPoints[s] = pointSet(points);
         }
         const Summary summary =
             session->step(iterations, &d.cancel, [&](const IterationStats& stats) {

@@ -18,6 +18,8 @@ struct SolveRequest {
     quint64 revision = 0;                            // Document::revision() of the snapshot
     std::vector<model::CompositeSurface> surfaces;   // the whole project's surfaces (pins inside)
     std::map<int, std::vector<VertexHandle>> pulled; // per surface index: drag targets
+    // Per surface index: pulled interior control points of S-edges (a dragged crease).
+    std::map<int, std::vector<ControlPointHandle>> pulledControlPoints;
     int iterations = 10;
     // Non-zero: a drag. Requests with the same key reuse the worker's sessions of the previous
     // request when the surfaces' structure is unchanged, only moving the handle targets and

@@ -419,6 +419,42 @@ private slots:
         QVERIFY(!QFile::exists(never));
     }
 
+    void dragSlidesACrease() {
+        const QString file = path("fig6.devsurf");
+        QCOMPARE(cli({"example", "fig6", "-o", file}).exitCode, 0);
+        const model::CompositeSurface before = io::loadProjectFile(file).surfaces[0];
+        const QString out = path("slid.devsurf");
+        // Crease 2 slides 20 mm across the flat sheet; the 5 mm out of it are dropped.
+        Run run = cli({"drag", file, "--crease", "2", "--by", "0,20,5", "--steps", "5", "-o", out});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains("Crease 2 slides by 0.000,20.000,0.000"), qPrintable(run.out));
+        const model::CompositeSurface after = io::loadProjectFile(out).surfaces[0];
+        const auto& from = before.edge(2).controlPoints;
+        const auto& to = after.edge(2).controlPoints;
+        for (std::size_t i = 0; i < to.size(); ++i) {
+            const model::Vec3 miss = to[i] - (from[i] + model::Vec3{0.0, 20.0, 0.0});
+            QVERIFY2(miss.norm() < 1e-3, qPrintable(QString::number(miss.norm())));
+        }
+
+        // Not a crease, or an unknown edge: exit 2 with one sentence; bad usage: exit 1.
+        const QString never = path("never.devsurf");
+        for (const char* edge : {"0", "1", "999"}) {
+            run = cli({"drag", file, "--crease", edge, "--by", "0,1,0", "-o", never});
+            QCOMPARE(run.exitCode, 2);
+            QVERIFY2(run.err.contains(QStringLiteral("edge %1").arg(edge)), qPrintable(run.err));
+            QCOMPARE(run.err.count('\n'), 1);
+        }
+        for (const QStringList& args : QList<QStringList>{
+                 {"drag", file, "--crease", "2", "--vertices", "3", "--by", "0,1,0", "-o", never},
+                 {"drag", file, "--crease", "2", "--rotate", "0,0,0,0,0,1,5", "-o", never},
+                 {"drag", file, "--crease", "2,5", "--by", "0,1,0", "-o", never}}) {
+            run = cli(args);
+            QVERIFY2(run.exitCode == 1, qPrintable(args.join(' ')));
+            QCOMPARE(run.err.count('\n'), 1);
+        }
+        QVERIFY(!QFile::exists(never));
+    }
+
     void benchIsTheSeparateProgram() {
         const Run run = cli({"bench"});
         QCOMPARE(run.exitCode, 1);

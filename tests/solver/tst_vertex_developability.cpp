@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 
 using namespace devsurf;
 using model::Vec3;
@@ -161,6 +162,58 @@ private slots:
         QCOMPARE(familyRows(solver::SurfaceFormulation(makeStar(7.0), off).problem(),
                             "vertexDevelopability"),
                  0);
+    }
+
+    void almostStraightCreaseIsMadeTangentContinuous() {
+        // Lifted by h the crease E–O–W kinks at O by 2 atan(h / 100): 0.1 rad for h = 5, 0.02
+        // rad for h = 1 (below vertexSmoothCreaseAngle = 0.05), where the star gets the
+        // tangent-continuity rows instead of its flat copy (whose rows stay, scaled to zero).
+        for (const double h : {5.0, 1.0}) {
+            const solver::SurfaceFormulation f(makeStar(h), withVertexDevelopability());
+            const solver::Problem& problem = f.problem();
+            QCOMPARE(familyRows(problem, "smoothCreaseVertices"), 3);
+            QCOMPARE(familyRows(problem, "vertexDevelopability"), 8);
+            std::mt19937 rng(5);
+            const std::vector<double> x =
+                solver::testing::randomVector(rng, problem.variableCount());
+            for (int t = 0; t < problem.termCount(); ++t) {
+                const solver::Term& term = problem.term(t);
+                const auto analytic = solver::testing::analyticJacobian(term, x);
+                const double error = solver::testing::jacobianError(
+                    analytic, solver::testing::finiteDifferenceJacobian(term, x, 1e-6));
+                QVERIFY2(error < 1e-6, term.typeName());
+                if (std::string(term.typeName()) == "TangentContinuityTerm") {
+                    // Zero-scaled at h = 5, real rows at h = 1.
+                    double largest = 0.0;
+                    for (const auto& entry : analytic) {
+                        largest = std::max(largest, std::abs(entry.second));
+                    }
+                    QCOMPARE(largest > 0.0, h < 2.0);
+                }
+            }
+            // Pulling O up to 11 (a kink of 0.22 rad if the crease stayed straight on either
+            // side), with three corners fixed: the crease stays straight through O and the star
+            // developable.
+            if (h < 2.0) {
+                solver::FormulationOptions options = withVertexDevelopability();
+                for (model::VertexId v : {5u, 6u, 7u}) {
+                    options.handles.push_back({v, true, {}});
+                }
+                options.handles.push_back({0, false, Vec3(0, 0, 11.0)});
+                const solver::SurfaceFormulation pulled(makeStar(h), options);
+                std::vector<double> y = pulled.initialState();
+                solver::GuidedProjection projection;
+                solver::Options solverOptions;
+                solverOptions.maxIterations = 30;
+                solverOptions.eps2 = 1e-3;
+                QVERIFY(projection.solve(pulled.problem(), y, solverOptions).succeeded());
+                model::CompositeSurface out = makeStar(h);
+                QVERIFY(pulled.writeBack(y, out));
+                QVERIFY2(largestDefect(out) < 1e-8,
+                         qPrintable(QString::number(largestDefect(out))));
+                QVERIFY(out.position(0).z > 5.0);
+            }
+        }
     }
 
     void validDesignsStayPut() {

@@ -1,0 +1,149 @@
+#include "model/examples.h"
+#include "solver/formulation/perturbation.h"
+#include "solver/quality/quality_measures.h"
+#include "solver/quality/shape_change.h"
+#include "solver/session/crease_drag.h"
+#include "solver/session/solve_session.h"
+
+#include "test_registry.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+using namespace devsurf;
+using namespace devsurf::solver;
+
+namespace {
+
+using Points = std::vector<ControlPointHandle>;
+
+constexpr model::EdgeId kCrease = 2; // fig6: the curved crease from vertex 2 to vertex 3
+
+model::CompositeSurface fig6() {
+    return model::makeExample("fig6").surfaces.front();
+}
+
+// Replays a crease drag as the Drag tool does: `moves` evenly spaced handle positions with one
+// iteration each, then ten more.
+model::CompositeSurface dragCrease(const model::CompositeSurface& surface, model::EdgeId edge,
+                                   const model::Vec3& by, int moves = 20) {
+    const CreaseDrag drag(surface, edge);
+    SolveSession session(surface, drag.vertexHandles({}, true), drag.controlPointHandles({}, true));
+    for (int k = 1; k <= moves; ++k) {
+        const model::Vec3 delta = by * (static_cast<double>(k) / moves);
+        for (const VertexHandle& h : drag.vertexHandles(delta, true)) {
+            if (!session.setHandleTarget(h.vertex, h.target)) {
+                throw std::runtime_error("a vertex handle was not accepted");
+            }
+        }
+        for (const ControlPointHandle& h : drag.controlPointHandles(delta, true)) {
+            if (!session.setControlPointTarget(h.edge, h.index, h.target)) {
+                throw std::runtime_error("a control-point handle was not accepted");
+            }
+        }
+        if (!session.step(1).succeeded()) {
+            throw std::runtime_error("an iteration failed");
+        }
+    }
+    if (!session.step(10).succeeded()) {
+        throw std::runtime_error("the final iterations failed");
+    }
+    return session.surface();
+}
+
+} // namespace
+
+class TstCreaseDragSession : public QObject {
+    Q_OBJECT
+
+private slots:
+    void theCreaseSlidesWithinTheFlatSheet() {
+        const model::CompositeSurface surface = fig6();
+        const CreaseDrag drag(surface, kCrease);
+        // The sheet lies in z = 0: the normal is ±z and sliding drops the z component.
+        QVERIFY(std::abs(std::abs(drag.normal().z) - 1.0) < 1e-12);
+        const model::Vec3 slid = drag.displacement({1.0, 2.0, 3.0}, true);
+        QVERIFY((slid - model::Vec3{1.0, 2.0, 0.0}).norm() < 1e-12);
+        const model::Vec3 free = drag.displacement({1.0, 2.0, 3.0}, false);
+        QVERIFY((free - model::Vec3{1.0, 2.0, 3.0}).norm() == 0.0);
+        // Both ends (unpinned) and every interior control point are pulled.
+        QCOMPARE(drag.vertices().size(), std::size_t{2});
+        QCOMPARE(drag.controlPointHandles({}, true).size(),
+                 surface.edge(kCrease).controlPoints.size() - 2);
+    }
+
+    void aDraggedCreaseReachesItsTargetAndTheSurfaceStaysDevelopable() {
+        const model::CompositeSurface surface = fig6();
+        const model::Vec3 by{0.0, 30.0, 10.0}; // the 10 mm out of the sheet are dropped
+        const model::CompositeSurface result = dragCrease(surface, kCrease, by);
+        const auto& from = surface.edge(kCrease).controlPoints;
+        const auto& to = result.edge(kCrease).controlPoints;
+        for (std::size_t i = 0; i < to.size(); ++i) {
+            const model::Vec3 expected = from[i] + model::Vec3{0.0, 30.0, 0.0};
+            QVERIFY2((to[i] - expected).norm() < 1e-6,
+                     qPrintable(QString::number((to[i] - expected).norm())));
+        }
+        // Measured from the geometry: developable, flat, no strip collapsed.
+        const QualityMeasures quality = measureQuality(result);
+        QVERIFY2(quality.developabilityMax <= 1e-8,
+                 qPrintable(QString::number(quality.developabilityMax)));
+        for (const auto& [id, p] : result.vertices()) {
+            QVERIFY(std::abs(p.z) < 1e-6);
+        }
+        const ShapeChange change = measureShapeChange(surface, result);
+        QVERIFY2(change.shortestRuling >= 0.25, qPrintable(QString::number(change.shortestRuling)));
+        QVERIFY2(change.slowestSpeed >= 0.1, qPrintable(QString::number(change.slowestSpeed)));
+        // The pinned corners stay bit for bit.
+        QVERIFY(!surface.pinnedVertices().empty());
+        for (model::VertexId v : surface.pinnedVertices()) {
+            const model::Vec3 a = surface.position(v);
+            const model::Vec3 b = result.position(v);
+            QVERIFY(std::memcmp(&a, &b, sizeof a) == 0);
+        }
+    }
+
+    void aCreaseWithPinnedEndsStillMovesItsControlPoints() {
+        model::CompositeSurface surface = fig6();
+        const model::EdgeRecord& crease = surface.edge(kCrease);
+        surface.setPinned(crease.from, true);
+        surface.setPinned(crease.to, true);
+        const CreaseDrag drag(surface, kCrease);
+        QVERIFY(drag.vertices().empty());
+        const model::CompositeSurface result = dragCrease(surface, kCrease, {0.0, 10.0, 0.0});
+        QVERIFY(result.position(crease.from) == surface.position(crease.from));
+        const model::Vec3 middle = result.edge(kCrease).controlPoints[3];
+        QVERIFY((middle - surface.edge(kCrease).controlPoints[3]).norm() > 5.0);
+        QVERIFY(measureQuality(result).developabilityMax <= 1e-8);
+    }
+
+    void onlyCreasesCanBeDragged() {
+        const model::CompositeSurface surface = fig6();
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, CreaseDrag(surface, 0)); // boundary
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, CreaseDrag(surface, 1)); // a ruling
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, CreaseDrag(surface, 999));
+        try {
+            CreaseDrag(surface, 0);
+        } catch (const std::invalid_argument& error) {
+            QVERIFY(QString::fromUtf8(error.what()).contains(QStringLiteral("edge 0")));
+        }
+        // A control point that is not interior, or of an edge that has none, is refused.
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 SolveSession(surface, {}, Points{{kCrease, 0, {}}}));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 SolveSession(surface, {}, Points{{1, 1, {}}}));
+        QVERIFY_THROWS_EXCEPTION(
+            std::invalid_argument,
+            SolveSession(surface, {}, Points{{kCrease, 1, {std::nan(""), 0, 0}}}));
+        SolveSession session(surface, {},
+                             Points{{kCrease, 1, surface.edge(kCrease).controlPoints[1]}});
+        QVERIFY(!session.setControlPointTarget(kCrease, 2, {}));
+        QVERIFY(!session.setControlPointTarget(kCrease, 1, {std::nan(""), 0.0, 0.0}));
+        QVERIFY(session.setControlPointTarget(kCrease, 1, {}));
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstCreaseDragSession);
+#include "tst_crease_drag.moc"
