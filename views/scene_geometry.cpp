@@ -3,8 +3,6 @@
 #include "model/pattern/cutting_pattern.h"
 #include "model/pattern/pattern_layout.h"
 #include "model/pattern/pattern_overlaps.h"
-#include "model/pattern/pattern_pieces.h"
-#include "model/pattern/pattern_seams.h"
 #include "model/sampled_mesh.h"
 #include "model/strip.h"
 
@@ -169,24 +167,15 @@ DevelopmentScenes buildDevelopmentScenes(const model::Project& project) {
 }
 
 SurfaceDevelopment developSurfaceForView(const model::CompositeSurface& surface, int surfaceIndex) {
-    // As model::buildCuttingPattern does it for each surface.
     SurfaceDevelopment result;
     if (!surface.validate().empty()) {
         result.invalid = true;
         return result;
     }
-    const model::PatternOptions options = viewPatternOptions();
     int nameIndex = 0;
     try {
-        for (model::pattern::PieceBuild& build :
-             model::pattern::developSurface(surface, surfaceIndex, options, nameIndex)) {
-            std::vector<FaceId> faces;
-            if (model::pattern::selfOverlaps(build.piece, faces)) {
-                build.piece.selfOverlapping = true;
-            }
-            model::pattern::addSeamAllowances(build, options);
-            result.pieces.push_back(std::move(build.piece));
-        }
+        result.pieces =
+            model::developSurfacePieces(surface, surfaceIndex, viewPatternOptions(), nameIndex);
     } catch (const std::exception&) {
         result.pieces.clear(); // not developed: neither drawn nor reported as invalid
     }

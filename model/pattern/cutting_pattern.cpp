@@ -68,6 +68,23 @@ std::string facesText(const std::vector<FaceId>& faces) {
 
 } // namespace
 
+std::vector<PatternPiece> developSurfacePieces(const CompositeSurface& surface, int surfaceIndex,
+                                               const PatternOptions& options, int& nameIndex,
+                                               std::vector<std::vector<FaceId>>* selfOverlapFaces) {
+    std::vector<PatternPiece> pieces;
+    for (pattern::PieceBuild& build :
+         pattern::developSurface(surface, surfaceIndex, options, nameIndex)) {
+        std::vector<FaceId> faces;
+        build.piece.selfOverlapping = pattern::selfOverlaps(build.piece, faces);
+        if (selfOverlapFaces) {
+            selfOverlapFaces->push_back(std::move(faces));
+        }
+        pattern::addSeamAllowances(build, options);
+        pieces.push_back(std::move(build.piece));
+    }
+    return pieces;
+}
+
 CuttingPattern buildCuttingPattern(const Project& project, const PatternOptions& requested) {
     PatternOptions options = requested;
     if (!std::isfinite(options.tolerance) || options.tolerance <= 0.0) {
@@ -93,7 +110,6 @@ CuttingPattern buildCuttingPattern(const Project& project, const PatternOptions&
     }
 
     std::vector<std::string> surfaceNames;
-    std::vector<pattern::PieceBuild> builds;
     int nameIndex = 0;
     for (std::size_t s = 0; s < project.surfaces.size(); ++s) {
         const CompositeSurface& surface = project.surfaces[s];
@@ -106,29 +122,24 @@ CuttingPattern buildCuttingPattern(const Project& project, const PatternOptions&
                                        " is not valid and has no pattern: " + invalid.front());
             continue;
         }
+        std::vector<PatternPiece> pieces;
+        std::vector<std::vector<FaceId>> selfOverlapFaces;
         try {
-            auto pieces = pattern::developSurface(surface, static_cast<int>(s), options, nameIndex);
-            for (auto& piece : pieces) {
-                builds.push_back(std::move(piece));
-            }
+            pieces = developSurfacePieces(surface, static_cast<int>(s), options, nameIndex,
+                                          &selfOverlapFaces);
         } catch (const std::exception& error) {
             pattern.problems.push_back("The " + name + " could not be developed: " + error.what());
         }
-    }
-
-    for (pattern::PieceBuild& build : builds) {
-        const int index = static_cast<int>(pattern.pieces.size());
-        std::vector<FaceId> faces;
-        if (pattern::selfOverlaps(build.piece, faces)) {
-            build.piece.selfOverlapping = true;
-            pattern.overlaps.push_back({index, index, faces});
-            pattern.problems.push_back("Piece " + build.piece.name + " (" +
-                                       surfaceNames[static_cast<std::size_t>(build.piece.surface)] +
-                                       ") overlaps itself at patches " + facesText(faces) +
-                                       " and cannot be cut from one sheet.");
+        for (std::size_t p = 0; p < pieces.size(); ++p) {
+            const int index = static_cast<int>(pattern.pieces.size());
+            if (pieces[p].selfOverlapping) {
+                pattern.overlaps.push_back({index, index, selfOverlapFaces[p]});
+                pattern.problems.push_back(
+                    "Piece " + pieces[p].name + " (" + name + ") overlaps itself at patches " +
+                    facesText(selfOverlapFaces[p]) + " and cannot be cut from one sheet.");
+            }
+            pattern.pieces.push_back(std::move(pieces[p]));
         }
-        pattern::addSeamAllowances(build, options);
-        pattern.pieces.push_back(std::move(build.piece));
     }
 
     pattern.sheetCount =

@@ -17,6 +17,7 @@
 
 namespace devsurf::model {
 
+class CompositeSurface;
 struct Project;
 
 // The layers of a pattern. Names (patternLayerName) are the same in every file format.
@@ -129,6 +130,16 @@ struct CuttingPattern {
     // Bounding box of everything on one sheet (sheet < 0: of all pieces): {min, max}.
     std::pair<Vec2, Vec2> bounds(int sheet = -1) const;
 };
+
+// One valid surface developed into pieces not yet laid out (what buildCuttingPattern does per
+// surface): each piece checked for overlapping itself (PatternPiece::selfOverlapping, with the
+// patches involved in selfOverlapFaces, one entry per piece) and given its seam allowance. Pieces
+// are named from nameIndex on (A, B, …), which advances. Throws std::exception where the surface
+// cannot be developed.
+std::vector<PatternPiece>
+developSurfacePieces(const CompositeSurface& surface, int surfaceIndex,
+                     const PatternOptions& options, int& nameIndex,
+                     std::vector<std::vector<FaceId>>* selfOverlapFaces = nullptr);
 
 // Builds the pattern of every surface of the project. Invalid surfaces are skipped with a
 // problem sentence naming them; it never throws for bad geometry.
