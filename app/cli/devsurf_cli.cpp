@@ -67,7 +67,7 @@ Commands:
                       noise of SIGMA times the surface's diameter first; --fix keeps the
                       vertices with the given ids (e.g. 0,4,7) where they are.
   drag FILE (--vertices IDS | --crease EDGE) (--by DX,DY,DZ | --rotate PX,PY,PZ,AX,AY,AZ,DEGREES)
-       [--steps N] [--pin IDS] [--after K] [--surface K] -o OUT.devsurf
+       [--steps N] [--pin IDS] [--after K] [--keep-lengths] [--surface K] -o OUT.devsurf
                       Replay a drag as the desktop application runs it: the vertices are
                       moved by DX,DY,DZ (or rotated by DEGREES about the axis AX,AY,AZ
                       through PX,PY,PZ) in N evenly spaced steps (default 20) with one
@@ -76,7 +76,9 @@ Commands:
                       (residual, time, quality). --crease EDGE instead of --vertices
                       drags a crease by DX,DY,DZ: its control points and unpinned ends
                       slide within the surface (the component along its normal is
-                      dropped) and the strips on both sides change size.
+                      dropped) and the strips on both sides change size. --keep-lengths
+                      damps stretching of every strip's control net in each step, so the
+                      sheet bends rather than stretches (a vertex drag; see the manual).
   export FILE --format dxf|svg|pdf|fold [--sheet W,H | --paper A4|A3|Letter]
          [--tolerance MM] [--splines] [--r12] [--seam MM] [--rulings] -o OUT
                       Write the cutting pattern: pieces laid out on sheets of W x H mm
@@ -412,10 +414,24 @@ int run(const std::vector<std::string>& args) {
         }
     }
     if (command == "drag") {
-        const Arguments args = parse(rest, {"-o", "--vertices", "--crease", "--by", "--rotate",
-                                            "--steps", "--pin", "--after", "--surface"});
+        std::vector<std::string> valued;
+        bool keepLengths = false;
+        for (const std::string& arg : rest) {
+            if (arg == "--keep-lengths") {
+                keepLengths = true;
+            } else {
+                valued.push_back(arg);
+            }
+        }
+        const Arguments args = parse(valued, {"-o", "--vertices", "--crease", "--by", "--rotate",
+                                              "--steps", "--pin", "--after", "--surface"});
+        std::vector<std::pair<std::string, std::string>> options(args.options.begin(),
+                                                                 args.options.end());
+        if (keepLengths) {
+            options.emplace_back("--keep-lengths", "");
+        }
         try {
-            return app::runDragCommand(args.positional, {args.options.begin(), args.options.end()});
+            return app::runDragCommand(args.positional, options);
         } catch (const std::invalid_argument& error) {
             throw UsageError{error.what()};
         }

@@ -290,7 +290,11 @@ int runDragCommand(const std::vector<std::string>& positional,
             start[id] = surface.position(id);
             pulled.push_back({id, false, surface.position(id)});
         }
-        session = std::make_unique<solver::SolveSession>(surface, pulled, points);
+        solver::SessionOptions sessionOptions;
+        if (hasOption(options, "--keep-lengths")) {
+            sessionOptions.formulation.isometryWeight = solver::kKeepLengthsWeight;
+        }
+        session = std::make_unique<solver::SolveSession>(surface, pulled, points, sessionOptions);
     } catch (const std::invalid_argument& error) {
         throw model::ModelError("surface " + std::to_string(index + 1) + " of '" + path +
                                 "' cannot be " + (crease ? "dragged: " : "solved: ") +

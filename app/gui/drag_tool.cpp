@@ -363,6 +363,8 @@ void DragTool::submit(int iterations) {
             m_crease->controlPointHandles(m_creaseShift, false);
     }
     request.iterations = iterations;
+    // A dragged crease changes the sizes of its strips on purpose: it never keeps lengths.
+    request.keepLengths = !m_crease && SolveController::keepLengthsSetting();
     request.sessionKey = m_sessionKey;
     m_solver->worker()->submit(std::move(request));
 }

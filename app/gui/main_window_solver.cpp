@@ -60,6 +60,18 @@ QList<QAction*> MainWindow::createSolverActions(QMenu* tools, QAction* selectNon
     drag->setToolTip(dragTip);
     drag->setStatusTip(dragTip);
     m_dragTool = new DragTool(drag, m_workspace, m_surfaceView, m_solveController);
+    QAction* keepLengths =
+        addAction(tools, QStringLiteral("actionKeepLengths"), tr("Keep &Lengths While Dragging"));
+    keepLengths->setCheckable(true);
+    keepLengths->setChecked(SolveController::keepLengthsSetting());
+    const QString keepTip =
+        tr("While dragging or rotating vertices, the sheet bends instead of stretching: far "
+           "parts stay in place and curved creases keep their shape. Folding along creases "
+           "then may not converge fully; dragged creases always resize their patches.");
+    keepLengths->setToolTip(keepTip);
+    keepLengths->setStatusTip(keepTip);
+    connect(keepLengths, &QAction::toggled, this,
+            [](bool on) { QSettings().setValue(QStringLiteral("solver/keepLengths"), on); });
 
     QAction* rotate = addAction(tools, QStringLiteral("actionRotateTool"), tr("R&otate Vertices"),
                                 QKeySequence(tr("R")));

@@ -32,6 +32,10 @@ int SolveController::iterationsSetting() {
     return std::clamp(QSettings().value(QStringLiteral("solver/iterations"), 10).toInt(), 1, 1000);
 }
 
+bool SolveController::keepLengthsSetting() {
+    return QSettings().value(QStringLiteral("solver/keepLengths"), false).toBool();
+}
+
 void SolveController::solve() {
     const document::Document* doc = m_workspace->document();
     if (doc->surfaceCount() == 0) {

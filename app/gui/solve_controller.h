@@ -34,6 +34,8 @@ public:
     solver::SolverWorker* worker() const { return m_worker; }
     bool isSolving() const { return m_solving; }
     static int iterationsSetting();
+    // Tools ▸ Keep Lengths While Dragging (off by default): vertex drags damp stretching.
+    static bool keepLengthsSetting();
     // Builds a report of a result for the Solver panel (worst patches when the tolerance was
     // not reached).
     SolveReport reportOf(const solver::SolveResult& result, const QString& title) const;

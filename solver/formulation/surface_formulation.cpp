@@ -13,6 +13,7 @@
 #include "solver/formulation/normal_spline_start.h"
 #include "solver/formulation/point_combinations.h"
 #include "solver/formulation/smooth_rulings.h"
+#include "solver/formulation/strip_isometry.h"
 #include "solver/formulation/vertex_developability.h"
 
 #include <algorithm>
@@ -67,6 +68,7 @@ struct SurfaceFormulation::Builder {
     std::unique_ptr<TargetTerm> normalProximity = std::make_unique<TargetTerm>();
     std::unique_ptr<FairnessTerm> fairness = std::make_unique<FairnessTerm>(3);
     std::unique_ptr<FairnessTerm> normalFairness = std::make_unique<FairnessTerm>(3);
+    std::unique_ptr<SquaredDistanceTerm> isometry = std::make_unique<SquaredDistanceTerm>(3);
     std::unique_ptr<UnitNormTerm> unitControlNormals = std::make_unique<UnitNormTerm>(3);
     std::unique_ptr<MinimumLengthTerm> rulingGuard = std::make_unique<MinimumLengthTerm>(3);
     std::unique_ptr<MinimumLengthTerm> speedGuard = std::make_unique<MinimumLengthTerm>(3);
@@ -504,14 +506,25 @@ struct SurfaceFormulation::Builder {
         }
     }
 
+    std::vector<int> offsetsOf(const std::vector<int>& points) const {
+        std::vector<int> offsets;
+        for (int p : points) {
+            offsets.push_back(f.pointOffset(p));
+        }
+        return offsets;
+    }
+
+    // Fairness of every curve's control points; the strips' control nets for the isometry.
     void addFairness() {
         for (const auto& [edge, points] : f.m_edgePoints) {
-            (void)edge;
-            std::vector<int> offsets;
-            for (int p : points) {
-                offsets.push_back(f.pointOffset(p));
+            fairness->addSequence(offsetsOf(points));
+        }
+        for (const model::Strip& strip : strips) {
+            if (options.isometryWeight > 0.0 && !strip.isCone()) {
+                addStripIsometry(offsetsOf(sidePoints(strip.aSide)),
+                                 offsetsOf(sidePoints(strip.bSide)), f.m_initialState, 1e-9,
+                                 *isometry);
             }
-            fairness->addSequence(offsets);
         }
     }
 
@@ -569,6 +582,8 @@ struct SurfaceFormulation::Builder {
         add("normalProximity", TermRole::Proximity, options.normalProximityWeight,
             std::move(normalProximity));
         add("fairness", TermRole::Energy, options.fairnessWeight, std::move(fairness));
+        f.m_isometry = isometry->rowCount() > 0 ? isometry.get() : nullptr;
+        add("isometry", TermRole::Energy, options.isometryWeight, std::move(isometry));
         add("normalFairness", TermRole::Energy, options.normalFairnessWeight,
             std::move(normalFairness));
         add("unitControlNormals", TermRole::Energy, options.unitControlNormalWeight,

@@ -13,6 +13,7 @@ namespace devsurf::solver {
 class BilinearTerm;
 class FairnessTerm;
 class MinimumLengthTerm;
+class SquaredDistanceTerm;
 class TargetTerm;
 class UnitNormTerm;
 
@@ -109,6 +110,12 @@ struct FormulationOptions {
     // high: 10 × ε₁ = 1 → 0.59 keeps neighbouring control normals from flipping against each
     // other, a degenerate way of satisfying (4) where n(u) vanishes between them.
     double fairnessWeight = 0.1;
+    // Weight of the energy that keeps the lengths of every strip's control net (its two
+    // control polygons, the segments aᵢbᵢ and the diagonals aᵢbᵢ₊₁; see addStripIsometry)
+    // at their values before the iteration: SolveSession re-bases it before every iteration
+    // (rebaseIsometry), so it damps stretching of the net in each step and lets the net bend.
+    // 0 (the default) removes it. SolveSession's keepLengths option sets kKeepLengthsWeight.
+    double isometryWeight = 0.0;
     double normalFairnessWeight = 10.0;
     double unitControlNormalWeight = 0.1;
 
@@ -207,6 +214,9 @@ public:
     // initial state. Values only (the problem's structure is unchanged), so an interactive
     // caller can re-base between drags without a new symbolic analysis.
     void setReferenceState(const std::vector<double>& x);
+    // Sets the lengths the isometry energy (FormulationOptions::isometryWeight) keeps to
+    // those at x.
+    void rebaseIsometry(const std::vector<double>& x);
 
     // Developability (and planarity) residual of every face at state x: the largest |row|
     // of the face's rows, worst first. Where a solve did not reach its tolerance, these are the
@@ -269,6 +279,7 @@ private:
     FairnessTerm* m_pointFairness = nullptr;
     FairnessTerm* m_normalFairness = nullptr;
     UnitNormTerm* m_unitControlNormals = nullptr;
+    SquaredDistanceTerm* m_isometry = nullptr;
     MinimumLengthTerm* m_rulingGuard = nullptr;
     MinimumLengthTerm* m_speedGuard = nullptr;
     // Row ranges of m_speedGuard per curve (the mean speed is taken per curve).

@@ -6,6 +6,7 @@
 #include "solver/core/bilinear_term.h"
 #include "solver/core/fairness_term.h"
 #include "solver/core/minimum_length_term.h"
+#include "solver/core/squared_distance_term.h"
 #include "solver/core/target_term.h"
 #include "solver/core/unit_norm_term.h"
 
@@ -129,6 +130,16 @@ bool SurfaceFormulation::writeBack(const std::vector<double>& x, model::Composit
         surface.setControlPoints(edge, std::move(controls));
     }
     return true;
+}
+
+void SurfaceFormulation::rebaseIsometry(const std::vector<double>& x) {
+    if (!m_isometry) {
+        return;
+    }
+    for (int row = 0; row < m_isometry->rowCount(); ++row) {
+        const double length = m_isometry->leftLength(row, x.data());
+        m_isometry->setSquaredDistance(row, length * length);
+    }
 }
 
 void SurfaceFormulation::setReferenceState(const std::vector<double>& x) {

@@ -155,6 +155,8 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         // One iteration per solve() call, the schedule continued from the iterations done:
         // the same arithmetic whether the caller asks for one iteration or many.
         options.scheduleOffset = m_iterationsDone;
+        // The net's lengths before this step (a no-op without the isometry energy).
+        m_formulation->rebaseIsometry(m_x);
         const Summary summary = m_projection.solve(m_formulation->problem(), m_x, options);
         if (i == 0) {
             total.initialMaxConstraintResidual = summary.initialMaxConstraintResidual;

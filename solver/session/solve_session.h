@@ -20,6 +20,19 @@ Options defaultSessionSolverOptions();
 // the stars where it holds at the start (vertexStartDefectLimit 1e-6 rad).
 FormulationOptions defaultSessionFormulationOptions();
 
+// FormulationOptions::isometryWeight of a drag that keeps lengths (the desktop application's
+// Tools ▸ Keep Lengths While Dragging, `devsurf-cli drag --keep-lengths`): the sheet bends
+// instead of stretching. Measured (20 moves, 10 iterations after): lifting the annulus's
+// inner vertex 0 by 100 mm with its outer rim pinned ends at a constraint residual of 2e-6,
+// angle defects 6e-8 rad, rulings at 0.97 of their start length (without: 2.4, 3.4 rad,
+// 0.06); a 1 mm lift of fig6's vertex 2 turns the sheet about its pinned edge (the far
+// corners move 1.0 and 2.0 mm; without: 16–20 mm, the curved crease pulled straight). It
+// resists what changes the development on purpose: the lifted Fig. 8 folds along curved
+// creases (45°) but stalls at a residual of 1e-4 instead of folding along straightened
+// creases at 5e-15, and a dragged crease no longer reaches the mouse. 10: annulus residual
+// 3e-5; 100: 9e-5 and the handles 0.08 mm short.
+constexpr double kKeepLengthsWeight = 30.0;
+
 struct SessionOptions {
     // Its `handles` are extended by the session: every pinned vertex becomes a fixed handle,
     // every pulled vertex a pulled one.

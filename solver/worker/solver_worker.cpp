@@ -305,7 +305,11 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
             }
         } else {
             try {
-                session = std::make_unique<SolveSession>(snapshot, handles, points);
+                SessionOptions options;
+                if (request.keepLengths) {
+                    options.formulation.isometryWeight = kKeepLengthsWeight;
+                }
+                session = std::make_unique<SolveSession>(snapshot, handles, points, options);
             } catch (const std::exception& error) {
                 return fail(surfaceLabel(snapshot, s) + QStringLiteral(" cannot be solved: ") +
                             QString::fromStdString(error.what()));

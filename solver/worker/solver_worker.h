@@ -21,6 +21,8 @@ struct SolveRequest {
     // Per surface index: pulled interior control points of S-edges (a dragged crease).
     std::map<int, std::vector<ControlPointHandle>> pulledControlPoints;
     int iterations = 10;
+    // Damp stretching of every strip's control net (kKeepLengthsWeight): the sheet bends.
+    bool keepLengths = false;
     // Non-zero: a drag. Requests with the same key reuse the worker's sessions of the previous
     // request when the surfaces' structure is unchanged, only moving the handle targets and
     // continuing from the session's own last state (the snapshot's geometry is then ignored
