@@ -10,6 +10,7 @@
 #include "solver/core/target_term.h"
 #include "solver/core/unit_norm_term.h"
 #include "solver/formulation/crease_conditions.h"
+#include "solver/formulation/curve_guards.h"
 #include "solver/formulation/normal_spline_start.h"
 #include "solver/formulation/point_combinations.h"
 #include "solver/formulation/smooth_rulings.h"
@@ -79,6 +80,7 @@ struct SurfaceFormulation::Builder {
     int coneNormalsOffset = 0;
     int planeNormalsOffset = 0;
     int derivativePointsOffset = 0;
+    std::map<EdgeId, std::vector<int>> edgeOffsets; // collectEdgeOffsets
 
     int valuesPerInterval(const model::Strip& strip) const {
         return options.developabilityValuesPerInterval > 0 ? options.developabilityValuesPerInterval
@@ -366,23 +368,22 @@ struct SurfaceFormulation::Builder {
         }
     }
 
-    // State offsets of every S-edge's control points (stored orientation).
-    std::map<EdgeId, std::vector<int>> edgeOffsets() const {
-        std::map<EdgeId, std::vector<int>> offsets;
+    // State offsets of every S-edge's control points (stored orientation), once the points
+    // are placed.
+    void collectEdgeOffsets() {
         for (const auto& [edge, points] : f.m_edgePoints) {
-            std::vector<int>& o = offsets[edge];
+            std::vector<int>& o = edgeOffsets[edge];
             for (int point : points) {
                 o.push_back(f.pointOffset(point));
             }
         }
-        return offsets;
     }
 
     // (7), (8) and "straight when unfolded" on the creases that carry such a condition
     // (docs/math.md §5), at as many values per interval as (4) uses on a strip.
     void addCreaseConditions() {
         const int values = strips.empty() ? 7 : valuesPerInterval(strips.front());
-        solver::addCreaseConditions(surface, strips, stripNormals, edgeOffsets(), values,
+        solver::addCreaseConditions(surface, strips, stripNormals, edgeOffsets, values,
                                     *creaseConditions, f.m_creaseFaces,
                                     {f.m_problem, f.m_initialState, *unitNormals});
     }
@@ -396,7 +397,7 @@ struct SurfaceFormulation::Builder {
         for (const auto& [vertex, point] : f.m_vertexPoint) {
             vertexOffsets[vertex] = f.pointOffset(point);
         }
-        solver::addVertexDevelopability(surface, vertexOffsets, edgeOffsets(), f.m_problem,
+        solver::addVertexDevelopability(surface, vertexOffsets, edgeOffsets, f.m_problem,
                                         f.m_initialState, *vertexStars, *spokeGuard, options);
     }
 
@@ -464,30 +465,6 @@ struct SurfaceFormulation::Builder {
         }
     }
 
-    // Curve speeds |a¹₁ − a¹₀| of every S-edge at the collocation values of its intervals and
-    // at its ends, guarded against cusps (minimum set by setReferenceState).
-    void addSpeedGuards() {
-        for (const auto& [edge, points] : f.m_edgePoints) {
-            const model::EdgeRecord& record = surface.edge(edge);
-            const model::BSplineCurve curve =
-                model::BSplineCurve::uniform(record.space, record.controlPoints);
-            std::vector<double> samples =
-                collocationValues(record.space.intervals, 3 * record.space.degree - 2);
-            samples.push_back(0.0);
-            samples.push_back(1.0);
-            f.m_speedCurveStart.push_back(speedGuard->rowCount());
-            for (double u : samples) {
-                const model::DeBoorRows rows = curve.deBoorRows(u);
-                speedGuard->addRow(
-                    simplified(plus(combination(points, rows.indices, rows.firstDerivative[1]),
-                                    combination(points, rows.indices, rows.firstDerivative[0]),
-                                    -1.0)),
-                    0.0);
-            }
-        }
-        f.m_speedCurveStart.push_back(speedGuard->rowCount());
-    }
-
     // Every point towards the reference state (targets set by setReferenceState).
     void addProximity() {
         if (options.proximityWeight <= 0.0) {
@@ -506,25 +483,13 @@ struct SurfaceFormulation::Builder {
         }
     }
 
-    std::vector<int> offsetsOf(const std::vector<int>& points) const {
-        std::vector<int> offsets;
-        for (int p : points) {
-            offsets.push_back(f.pointOffset(p));
-        }
-        return offsets;
-    }
-
-    // Fairness of every curve's control points; the strips' control nets for the isometry.
+    // Fairness of every curve's control points; the isometry of every strip's control net.
     void addFairness() {
-        for (const auto& [edge, points] : f.m_edgePoints) {
-            fairness->addSequence(offsetsOf(points));
+        for (const auto& [edge, points] : edgeOffsets) {
+            fairness->addSequence(points);
         }
-        for (const model::Strip& strip : strips) {
-            if (options.isometryWeight > 0.0 && !strip.isCone()) {
-                addStripIsometry(offsetsOf(sidePoints(strip.aSide)),
-                                 offsetsOf(sidePoints(strip.bSide)), f.m_initialState, 1e-9,
-                                 *isometry);
-            }
+        if (options.isometryWeight > 0.0) {
+            addStripIsometry(strips, edgeOffsets, f.m_initialState, *isometry);
         }
     }
 
@@ -597,6 +562,7 @@ SurfaceFormulation::SurfaceFormulation(const model::CompositeSurface& surface,
     Builder builder(*this, surface, m_options);
     builder.collect();
     builder.addPoints();
+    builder.collectEdgeOffsets();
     builder.allocateNormals();
     builder.addStrips();
     builder.addCreaseConditions();
@@ -604,7 +570,7 @@ SurfaceFormulation::SurfaceFormulation(const model::CompositeSurface& surface,
     builder.addSmoothRulings();
     builder.addVertexDevelopability();
     builder.addHandles();
-    builder.addSpeedGuards();
+    addSpeedGuards(surface, builder.edgeOffsets, *builder.speedGuard, m_speedCurveStart);
     builder.addProximity();
     builder.addFairness();
     builder.hand();
