@@ -114,7 +114,7 @@ struct FormulationOptions {
     // control polygons, the segments aᵢbᵢ and the diagonals aᵢbᵢ₊₁; see addStripIsometry)
     // at their values before the iteration: SolveSession re-bases it before every iteration
     // (rebaseIsometry), so it damps stretching of the net in each step and lets the net bend.
-    // 0 (the default) removes it. SolveSession's keepLengths option sets kKeepLengthsWeight.
+    // 0 (the default) removes it; a drag that keeps lengths uses kKeepLengthsWeight.
     double isometryWeight = 0.0;
     double normalFairnessWeight = 10.0;
     double unitControlNormalWeight = 0.1;
