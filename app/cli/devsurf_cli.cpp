@@ -71,14 +71,17 @@ Commands:
                       Replay a drag as the desktop application runs it: the vertices are
                       moved by DX,DY,DZ (or rotated by DEGREES about the axis AX,AY,AZ
                       through PX,PY,PZ) in N evenly spaced steps (default 20) with one
-                      solver iteration each, then K more iterations (default 10). Pins in
-                      the file stay; --pin pins more vertices. One line per step
+                      solver iteration each, then K more iterations (default 10; 20
+                      with --keep-lengths). Pins in the file stay; --pin pins more
+                      vertices. One line per step
                       (residual, time, quality). --crease EDGE instead of --vertices
                       drags a crease by DX,DY,DZ: its control points and unpinned ends
                       slide within the surface (the component along its normal is
                       dropped) and the strips on both sides change size. --keep-lengths
                       damps stretching of every strip's control net in each step, so the
-                      sheet bends rather than stretches (a vertex drag; see the manual).
+                      sheet bends rather than stretches and curved creases fold without
+                      being pulled straight (a vertex drag; the damping fades over the K
+                      iterations after the moves; see the manual).
   export FILE --format dxf|svg|pdf|fold [--sheet W,H | --paper A4|A3|Letter]
          [--tolerance MM] [--splines] [--r12] [--seam MM] [--rulings] -o OUT
                       Write the cutting pattern: pieces laid out on sheets of W x H mm

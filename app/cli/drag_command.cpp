@@ -218,7 +218,7 @@ int runDragCommand(const std::vector<std::string>& positional,
                           : 20;
     const int after = hasOption(options, "--after")
                           ? parseCount(findOption(options, "--after"), "--after", 0, 10000)
-                          : 10;
+                          : (hasOption(options, "--keep-lengths") ? 20 : 10); // as DragTool
     const std::string output = findOption(options, "-o");
     if (output.empty()) {
         throw std::invalid_argument("the output file is missing (use -o FILE)");
@@ -290,11 +290,10 @@ int runDragCommand(const std::vector<std::string>& positional,
             start[id] = surface.position(id);
             pulled.push_back({id, false, surface.position(id)});
         }
-        solver::SessionOptions sessionOptions;
-        if (hasOption(options, "--keep-lengths")) {
-            sessionOptions.formulation.isometryWeight = solver::kKeepLengthsWeight;
-        }
-        session = std::make_unique<solver::SolveSession>(surface, pulled, points, sessionOptions);
+        session = std::make_unique<solver::SolveSession>(surface, pulled, points,
+                                                         hasOption(options, "--keep-lengths")
+                                                             ? solver::keepLengthsSessionOptions()
+                                                             : solver::SessionOptions{});
     } catch (const std::invalid_argument& error) {
         throw model::ModelError("surface " + std::to_string(index + 1) + " of '" + path +
                                 "' cannot be " + (crease ? "dragged: " : "solved: ") +
@@ -346,6 +345,7 @@ int runDragCommand(const std::vector<std::string>& positional,
         }
         last = runIteration("step", k, steps);
     }
+    session->settle();
     for (int k = 1; k <= after; ++k) {
         last = runIteration("after", k, after);
     }

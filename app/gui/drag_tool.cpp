@@ -349,7 +349,12 @@ bool DragTool::targetsAt(const QPoint& pos, std::vector<model::Vec3>& targets) {
     return true;
 }
 
-void DragTool::submit(int iterations) {
+bool DragTool::keepsLengths() const {
+    // A dragged crease changes the sizes of its strips on purpose: it never keeps lengths.
+    return !m_crease && SolveController::keepLengthsSetting();
+}
+
+void DragTool::submit(int iterations, bool settle) {
     solver::SolveRequest request;
     request.revision = m_pressRevision;
     request.surfaces = m_pressSurfaces;
@@ -363,8 +368,8 @@ void DragTool::submit(int iterations) {
             m_crease->controlPointHandles(m_creaseShift, false);
     }
     request.iterations = iterations;
-    // A dragged crease changes the sizes of its strips on purpose: it never keeps lengths.
-    request.keepLengths = !m_crease && SolveController::keepLengthsSetting();
+    request.keepLengths = keepsLengths();
+    request.settle = settle;
     request.sessionKey = m_sessionKey;
     m_solver->worker()->submit(std::move(request));
 }
@@ -384,7 +389,7 @@ void DragTool::release(const QPoint& pos, Qt::KeyboardModifiers modifiers) {
     // The move being solved finishes and is applied; the final iterations continue from the
     // session's state with the handles at the release position.
     m_state = State::Finishing;
-    submit(kFinalIterations);
+    submit(keepsLengths() ? kFinalIterationsKeepingLengths : kFinalIterations, true);
 }
 
 void DragTool::abort(const QString& sentence) {

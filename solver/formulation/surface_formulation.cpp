@@ -225,6 +225,16 @@ struct SurfaceFormulation::Builder {
         }
     }
 
+    bool touchesCreaseCondition(const model::Strip& strip) const {
+        for (const model::StripSide& side : {strip.aSide, strip.bSide}) {
+            if (side.edge != model::kInvalidId &&
+                surface.edge(side.edge).condition != model::CreaseCondition::None) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     // The R-edges of a strip or cone face, each with the end (u = 0 or 1) it is the ruling of,
     // its normal oriented like the face loop (the curve a runs into the face from u = 0).
     void registerRulingNormals(const model::Strip& strip, VertexId startVertex,
@@ -349,8 +359,10 @@ struct SurfaceFormulation::Builder {
             normalSequence.push_back(normalOffset + 3 * i);
         }
         // Fairness of the normal spline's control sequence (its own family, see
-        // FormulationOptions::normalFairnessWeight).
-        normalFairness->addSequence(normalSequence);
+        // FormulationOptions::normalFairnessWeight and normalFairnessAtCreaseConditions).
+        if (options.normalFairnessAtCreaseConditions || !touchesCreaseCondition(strip)) {
+            normalFairness->addSequence(normalSequence);
+        }
 
         // Initial control normals (see fitStartNormals).
         for (int i = 0; i < controls; ++i) {

@@ -117,6 +117,12 @@ struct FormulationOptions {
     // 0 (the default) removes it; a drag that keeps lengths uses kKeepLengthsWeight.
     double isometryWeight = 0.0;
     double normalFairnessWeight = 10.0;
+    // false: no normal fairness on the strips next to a crease with a condition. Fairness of
+    // the control normals pulls a strip towards a plane, and two planar strips meet in a
+    // straight line: a drag that keeps lengths (keepLengthsSessionOptions) then still pulled
+    // every curved fold straight as the isometry energy faded (fig6 lifted 60 mm: bow 0.0 mm
+    // with weight 0.1, 33 mm without).
+    bool normalFairnessAtCreaseConditions = true;
     double unitControlNormalWeight = 0.1;
 
     // R-edges between two faces across which the unit normals must agree (smooth transition),

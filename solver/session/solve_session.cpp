@@ -66,6 +66,14 @@ FormulationOptions defaultSessionFormulationOptions() {
     return options;
 }
 
+SessionOptions keepLengthsSessionOptions() {
+    SessionOptions options;
+    options.formulation.isometryWeight = kKeepLengthsWeight;
+    options.formulation.fairnessWeight = 0.0;
+    options.formulation.normalFairnessAtCreaseConditions = false;
+    return options;
+}
+
 SolveSession::SolveSession(const model::CompositeSurface& surface,
                            const std::vector<VertexHandle>& pulled, const SessionOptions& options)
     : SolveSession(surface, pulled, {}, options) {}
@@ -157,6 +165,14 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         options.scheduleOffset = m_iterationsDone;
         // The net's lengths before this step (a no-op without the isometry energy).
         m_formulation->rebaseIsometry(m_x);
+        if (m_settling) {
+            Problem& problem = m_formulation->problem();
+            const FamilyId isometry = problem.findFamily("isometry");
+            if (isometry >= 0) {
+                problem.setFamilyWeight(isometry,
+                                        problem.family(isometry).weight * kKeepLengthsFade);
+            }
+        }
         const Summary summary = m_projection.solve(m_formulation->problem(), m_x, options);
         if (i == 0) {
             total.initialMaxConstraintResidual = summary.initialMaxConstraintResidual;

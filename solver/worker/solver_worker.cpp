@@ -305,11 +305,9 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
             }
         } else {
             try {
-                SessionOptions options;
-                if (request.keepLengths) {
-                    options.formulation.isometryWeight = kKeepLengthsWeight;
-                }
-                session = std::make_unique<SolveSession>(snapshot, handles, points, options);
+                session = std::make_unique<SolveSession>(
+                    snapshot, handles, points,
+                    request.keepLengths ? keepLengthsSessionOptions() : SessionOptions{});
             } catch (const std::exception& error) {
                 return fail(surfaceLabel(snapshot, s) + QStringLiteral(" cannot be solved: ") +
                             QString::fromStdString(error.what()));
@@ -317,6 +315,9 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
             d.built[s] = snapshot;
             d.pulled[s] = vertexSet(handles);
             d.pulledPoints[s] = pointSet(points);
+        }
+        if (request.settle) {
+            session->settle();
         }
         const Summary summary =
             session->step(iterations, &d.cancel, [&](const IterationStats& stats) {

@@ -23,6 +23,8 @@ struct SolveRequest {
     int iterations = 10;
     // Damp stretching of every strip's control net (kKeepLengthsWeight): the sheet bends.
     bool keepLengths = false;
+    // The iterations after a drag's release (SolveSession::settle()).
+    bool settle = false;
     // Non-zero: a drag. Requests with the same key reuse the worker's sessions of the previous
     // request when the surfaces' structure is unchanged, only moving the handle targets and
     // continuing from the session's own last state (the snapshot's geometry is then ignored
