@@ -561,6 +561,7 @@ struct SurfaceFormulation::Builder {
         add("fairness", TermRole::Energy, options.fairnessWeight, std::move(fairness));
         f.m_isometry = isometry->rowCount() > 0 ? isometry.get() : nullptr;
         add("isometry", TermRole::Energy, options.isometryWeight, std::move(isometry));
+        f.m_isometryFamily = f.m_isometry ? p.findFamily("isometry") : -1;
         add("normalFairness", TermRole::Energy, options.normalFairnessWeight,
             std::move(normalFairness));
         add("unitControlNormals", TermRole::Energy, options.unitControlNormalWeight,

@@ -223,6 +223,8 @@ public:
     // Sets the lengths the isometry energy (FormulationOptions::isometryWeight) keeps to
     // those at x.
     void rebaseIsometry(const std::vector<double>& x);
+    // Multiplies the weight of that energy by `factor` (nothing without it).
+    void scaleIsometryWeight(double factor);
 
     // Developability (and planarity) residual of every face at state x: the largest |row|
     // of the face's rows, worst first. Where a solve did not reach its tolerance, these are the
@@ -286,6 +288,7 @@ private:
     FairnessTerm* m_normalFairness = nullptr;
     UnitNormTerm* m_unitControlNormals = nullptr;
     SquaredDistanceTerm* m_isometry = nullptr;
+    FamilyId m_isometryFamily = -1;
     MinimumLengthTerm* m_rulingGuard = nullptr;
     MinimumLengthTerm* m_speedGuard = nullptr;
     // Row ranges of m_speedGuard per curve (the mean speed is taken per curve).

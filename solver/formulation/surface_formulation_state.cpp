@@ -142,6 +142,13 @@ void SurfaceFormulation::rebaseIsometry(const std::vector<double>& x) {
     }
 }
 
+void SurfaceFormulation::scaleIsometryWeight(double factor) {
+    if (m_isometryFamily >= 0) {
+        m_problem.setFamilyWeight(m_isometryFamily,
+                                  m_problem.family(m_isometryFamily).weight * factor);
+    }
+}
+
 void SurfaceFormulation::setReferenceState(const std::vector<double>& x) {
     if (x.size() != m_initialState.size()) {
         throw std::invalid_argument("the reference state has " + std::to_string(x.size()) +

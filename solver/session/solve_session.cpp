@@ -166,12 +166,7 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         // The net's lengths before this step (a no-op without the isometry energy).
         m_formulation->rebaseIsometry(m_x);
         if (m_settling) {
-            Problem& problem = m_formulation->problem();
-            const FamilyId isometry = problem.findFamily("isometry");
-            if (isometry >= 0) {
-                problem.setFamilyWeight(isometry,
-                                        problem.family(isometry).weight * kKeepLengthsFade);
-            }
+            m_formulation->scaleIsometryWeight(kKeepLengthsFade);
         }
         const Summary summary = m_projection.solve(m_formulation->problem(), m_x, options);
         if (i == 0) {

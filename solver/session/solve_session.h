@@ -84,7 +84,6 @@ public:
     // The drag is released: from now on every iteration multiplies the weight of the
     // keep-lengths energy (if any) by kKeepLengthsFade. Idempotent.
     void settle() { m_settling = true; }
-    bool isSettling() const { return m_settling; }
 
     // Moves a pulled handle's target (model coordinates); false if the vertex is not pulled
     // or the target is not finite.
