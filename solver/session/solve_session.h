@@ -37,6 +37,20 @@ constexpr double kKeepLengthsWeight = 30.0;
 // a little. Measured (20 moves, then 10 and 20 iterations): the lifted Fig. 8 at a residual of
 // 1.7e-5 and 1.1e-7 with its creases still curved (0.3: 6e-4, 1e-5; no fade: 4e-4 for ever);
 // the annulus at 1e-14; fig6 folded 67° at 1e-11.
+//
+// What limits the lifted Fig. 8: after the release its residual alternates between iterates
+// some 1000× apart (2e-6, 8e-3, 4e-7, 5e-3, 5e-8, 5e-5, …). The large steps come where ε₂ has
+// followed a small residual down (clamp(r, 1e-6, 1e-3)); they are gone with vertex
+// developability off (2e-10 after 20, but the sheet does not fold: 1.5°) and remain with
+// ε₁ = 0 after the schedule. Measured and not better (after 10 / 20 iterations): a floor
+// under the faded weight (0.3 … 10: 1.4e-5 … 1.1e-4 / 1.3e-6 with 1); ε₂ floors of 1e-5 or
+// 1e-4, or ε₂ = 10 r or 100 r (still alternating, or linear at 5e-6 … 7e-6 after 20); ε₂ ≥
+// 10 r only while settling (residuals up to 0.9); Levenberg–Marquardt acceptance (stalls at
+// 4e-6) or halving a step that raises the residual (stalls at 3e-4); the crease-vertex
+// ratio λ frozen per iteration (still alternating); relative fairness (1e-3 and worse);
+// ε₁ ≤ r while settling (1.5e-8 / 1e-8, but the curved-fold residual between collocation
+// values rises to 1e-3 and curves slow to 0.35 of their mean speed); keeping the iterate of
+// smallest residual (after 20 det 2.6e-6 against 5e-7 for the last iterate).
 constexpr double kKeepLengthsFade = 0.5;
 
 struct SessionOptions {
