@@ -5,8 +5,23 @@
 #include <suitesparse/cholmod.h>
 
 #include <algorithm>
+#include <mutex>
 
 namespace devsurf::solver {
+
+namespace {
+
+// The supernodal factorisation and solve call the BLAS and LAPACK. The BLAS that setup.sh
+// selects (Debian's single-threaded OpenBLAS) is built without locking: two threads inside it
+// at once corrupt each other's buffers (two solver workers on the same structure failed with
+// "matrix not positive definite" about once in 300 runs). Every call that may reach the BLAS
+// holds this lock; one solver in the process never waits on it.
+std::mutex& blasMutex() {
+    static std::mutex mutex;
+    return mutex;
+}
+
+} // namespace
 
 // A symbolic factorisation owned by the analysis cache, with its own CHOLMOD workspace (it
 // is only read, by cholmod_copy_factor, once made).
@@ -245,7 +260,14 @@ bool SparseCholesky::factorize() {
         d.error = "factorize() before analysis";
         return false;
     }
-    const int ok = cholmod_factorize(d.matrix, d.factor, &d.common);
+    int ok = 0;
+    {
+        std::unique_lock<std::mutex> lock(blasMutex(), std::defer_lock);
+        if (d.factor->is_super) {
+            lock.lock();
+        }
+        ok = cholmod_factorize(d.matrix, d.factor, &d.common);
+    }
     if (!ok || d.common.status != CHOLMOD_OK) {
         if (d.common.status == CHOLMOD_NOT_POSDEF) {
             d.error =
@@ -269,8 +291,16 @@ bool SparseCholesky::solve(const double* b, double* x) {
     for (int k = 0; k < n; ++k) {
         bx[k] = b[permuted ? d.permutation[static_cast<std::size_t>(k)] : k];
     }
-    if (!cholmod_solve2(CHOLMOD_A, d.factor, d.rhs, nullptr, &d.solution, nullptr, &d.workY,
-                        &d.workE, &d.common)) {
+    bool solved = false;
+    {
+        std::unique_lock<std::mutex> lock(blasMutex(), std::defer_lock);
+        if (d.factor->is_super) {
+            lock.lock();
+        }
+        solved = cholmod_solve2(CHOLMOD_A, d.factor, d.rhs, nullptr, &d.solution, nullptr, &d.workY,
+                                &d.workE, &d.common) != 0;
+    }
+    if (!solved) {
         return d.fail("solve failed");
     }
     const auto* sx = static_cast<const double*>(d.solution->x);

@@ -241,7 +241,8 @@ private slots:
         QVERIFY(waitForResults(secondDone, 1));
         const SolveResult a = resultAt(firstDone, 0);
         const SolveResult b = resultAt(secondDone, 0);
-        QVERIFY(a.ok && b.ok);
+        QVERIFY2(a.ok, qPrintable(a.error));
+        QVERIFY2(b.ok, qPrintable(b.error));
         QVERIFY(a.surfaces.front() == b.surfaces.front());
     }
 
