@@ -653,7 +653,7 @@
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="452"/>
+        <location filename="../app/gui/drag_tool.cpp" line="457"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -858,7 +858,7 @@
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="182"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="108"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="107"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
@@ -1123,22 +1123,22 @@
         <translation>Iterationen von Werkzeuge ▸ Lösen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="77"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="76"/>
         <source>R&amp;otate Vertices</source>
         <translation>Ecken dr&amp;ehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="78"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="77"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="81"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="80"/>
         <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
         <translation>Drehwerkzeug (R): Wählen Sie zwei oder mehr Ecken aus, drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie die Maus seitwärts; sie drehen sich um eine Achse durch ihren Schwerpunkt (senkrecht oder wie in der Werkzeugleiste gewählt), und die Fläche folgt. Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="99"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>Beenden Sie zuerst das Ziehen; es löst bereits während der Bewegung.</translation>
     </message>
@@ -1168,117 +1168,117 @@
         <translation>Beim Ziehen oder Drehen von Ecken biegt sich das Blatt, statt sich zu dehnen: entfernte Teile bleiben an ihrem Platz und gekrümmte Falze behalten ihre Form. Das Falten entlang von Falzen konvergiert dann unter Umständen nicht vollständig; gezogene Falze ändern die Größe ihrer Flächenstücke immer.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="107"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="106"/>
         <source>&amp;Cancel Solve</source>
         <translation>Lösen &amp;abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="110"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="109"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>Das laufende Lösen beenden; der Entwurf bleibt, wie er ist (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="134"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="133"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>Lösen: Iteration %1 von %2, Residuum %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="147"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="146"/>
         <source>Motion &amp;Axis</source>
         <translation>Bewegungs&amp;achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="159"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="158"/>
         <source>&amp;Free</source>
         <translation>&amp;Frei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="160"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="159"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>Freie Bewegung: Das Ziehwerkzeug bewegt Ecken in der Bildebene; das Drehwerkzeug dreht sie um die senkrechte Achse (Z) oder um die Blickachse, wenn Werkzeuge ▸ Bewegungsachse ▸ Um die Blickachse drehen eingeschaltet ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="163"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="162"/>
         <source>&amp;X Axis</source>
         <translation>&amp;X-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="164"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="163"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang X; das Drehwerkzeug dreht sie um eine zu X parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes Y oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="166"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="165"/>
         <source>&amp;Y Axis</source>
         <translation>&amp;Y-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="167"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="166"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Y; das Drehwerkzeug dreht sie um eine zu Y parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="169"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="168"/>
         <source>&amp;Z Axis</source>
         <translation>&amp;Z-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="170"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="169"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Z; das Drehwerkzeug dreht sie um eine zu Z parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Y hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="194"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="193"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>Um die &amp;Blickachse drehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="197"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="196"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>Bei der Achswahl „Frei“ dreht das Drehwerkzeug die Ecken um die Blickrichtung durch ihren Schwerpunkt statt um die senkrechte Achse.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="211"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="210"/>
         <source>Colour &amp;By</source>
         <translation>&amp;Färben nach</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="219"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="218"/>
         <source>&amp;Patch</source>
         <translation>&amp;Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="219"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="218"/>
         <source>&amp;Developability</source>
         <translation>&amp;Abwickelbarkeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="219"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="218"/>
         <source>&amp;Flatness</source>
         <translation>&amp;Ebenheit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="220"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="219"/>
         <source>&amp;Angle Defect</source>
         <translation>&amp;Winkeldefekt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="222"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="221"/>
         <source>Every patch in its own colour.</source>
         <translation>Jedes Flächenstück in seiner eigenen Farbe.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="223"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="222"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>Wie weit jedes abgetastete Streifenviereck von abwickelbar entfernt ist: das normierte |det(a−b, a′, b′)|, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="225"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="224"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>Ebenheit δ jedes abgetasteten Vierecks: der Abstand seiner Diagonalen durch das Mittel seiner zwei kürzesten Kanten, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="227"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="226"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>Winkeldefekt |K| = |2π − Σ Winkel| an den inneren Ecken des abgetasteten Netzes, im Bogenmaß, logarithmisch skaliert.</translation>
     </message>
@@ -2191,32 +2191,50 @@
         <translation> (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="173"/>
+        <location filename="../app/gui/solve_controller.cpp" line="175"/>
+        <source>; left as it was, since solving made it less developable (%1 → %2)</source>
+        <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="181"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="178"/>
+        <location filename="../app/gui/solve_controller.cpp" line="186"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="184"/>
+        <location filename="../app/gui/solve_controller.cpp" line="192"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="193"/>
+        <location filename="../app/gui/solve_controller.cpp" line="201"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
         <location filename="../app/gui/solve_controller.cpp" line="248"/>
+        <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
+        <translation>Lösen hat den Entwurf unverändert gelassen: das Lösen machte ihn weniger abwickelbar (größtes Abwickelbarkeitsresiduum %1 → %2).</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/solve_controller.cpp" line="273"/>
+        <source>%n surface(s) left as they were: solving made them less developable.</source>
+        <translation>
+            <numerusform>%n Fläche unverändert gelassen: das Lösen machte sie weniger abwickelbar.</numerusform>
+            <numerusform>%n Flächen unverändert gelassen: das Lösen machte sie weniger abwickelbar.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="284"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 verworfen: Der Entwurf hat sich während des Lösens geändert; nichts wurde bewegt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="265"/>
+        <location filename="../app/gui/solve_controller.cpp" line="301"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, abwickelbar gehalten: %n Iteration, größtes Bedingungsresiduum %2.</numerusform>
@@ -2225,17 +2243,17 @@
     </message>
     <message>
         <location filename="../app/gui/solve_controller.cpp" line="111"/>
-        <location filename="../app/gui/solve_controller.cpp" line="220"/>
+        <location filename="../app/gui/solve_controller.cpp" line="235"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="210"/>
+        <location filename="../app/gui/solve_controller.cpp" line="218"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="239"/>
+        <location filename="../app/gui/solve_controller.cpp" line="269"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>

@@ -170,6 +170,14 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result,
         if (!summary.message.empty()) {
             status += tr(" (%1)").arg(QString::fromStdString(summary.message));
         }
+        for (const solver::SolveResult::Kept& kept : result.kept) {
+            if (kept.surface == static_cast<int>(s)) {
+                status += tr("; left as it was, since solving made it less developable "
+                             "(%1 → %2)")
+                              .arg(QString::number(kept.before, 'e', 1),
+                                   QString::number(kept.after, 'e', 1));
+            }
+        }
         statuses << (result.summaries.size() > 1 ? tr("surface %1 %2").arg(s + 1).arg(status)
                                                  : status);
         if (!summary.toleranceReached && s < result.surfaces.size()) {
@@ -213,7 +221,14 @@ void SolveController::onResult(const solver::SolveResult& result) {
     // Every surface's command is made before any is pushed: one refused (the solved shape
     // does not validate) leaves the design as it was.
     std::vector<std::unique_ptr<QUndoCommand>> commands;
+    auto isKept = [&result](std::size_t s) {
+        return std::any_of(result.kept.begin(), result.kept.end(),
+                           [s](const auto& kept) { return kept.surface == static_cast<int>(s); });
+    };
     for (std::size_t s = 0; s < result.surfaces.size(); ++s) {
+        if (isKept(s)) {
+            continue;
+        }
         document::CommandOrError edit = document::ApplySurfaceCommand::create(
             *doc, static_cast<int>(s), result.surfaces[s], title);
         if (edit.isRefused()) {
@@ -221,6 +236,20 @@ void SolveController::onResult(const solver::SolveResult& result) {
             return;
         }
         commands.push_back(edit.takeCommand());
+    }
+    if (!result.kept.empty()) {
+        double before = 0.0;
+        double after = 0.0;
+        for (const auto& kept : result.kept) {
+            before = std::max(before, kept.before);
+            after = std::max(after, kept.after);
+        }
+        if (commands.empty()) {
+            stop(tr("Solve left the design as it was: solving made it less developable (largest "
+                    "developability residual %1 → %2).")
+                     .arg(QString::number(before, 'e', 1), QString::number(after, 'e', 1)));
+            return;
+        }
     }
     m_applying = true;
     QUndoStack* stack = doc->undoStack();
@@ -236,8 +265,15 @@ void SolveController::onResult(const solver::SolveResult& result) {
         residual = std::max(residual, summary.finalMaxConstraintResidual);
         iterations = std::max(iterations, summary.iterationsCompleted);
     }
-    stop(tr("Solved: %n iteration(s), largest constraint residual %1.", nullptr, iterations)
-             .arg(QString::number(residual, 'e', 2)));
+    QString sentence =
+        tr("Solved: %n iteration(s), largest constraint residual %1.", nullptr, iterations)
+            .arg(QString::number(residual, 'e', 2));
+    if (!result.kept.empty()) {
+        sentence += QLatin1Char(' ') +
+                    tr("%n surface(s) left as they were: solving made them less developable.",
+                       nullptr, static_cast<int>(result.kept.size()));
+    }
+    stop(sentence);
 }
 
 void SolveController::applyEdit(const solver::SolveResult& result) {

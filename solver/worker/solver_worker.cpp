@@ -1,5 +1,7 @@
 #include "solver/worker/solver_worker.h"
 
+#include "solver/quality/quality_measures.h"
+
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -93,6 +95,13 @@ QString sentence(QString text) {
         }
     }
     return text;
+}
+
+// The largest normalised developability residual sampled over the surface's strips (0 for a
+// surface without strips).
+double worstDevelopability(const model::CompositeSurface& surface) {
+    const auto faces = developabilityByFace(surface);
+    return faces.empty() ? 0.0 : faces.front().second;
 }
 
 } // namespace
@@ -341,6 +350,20 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
             return fail(surfaceLabel(snapshot, s) +
                         QStringLiteral(" could not be solved: the solver produced a value "
                                        "that is not finite"));
+        }
+        if (!drag) {
+            // Solve must not spoil a design: measured on the curved fold a drag keeping
+            // lengths leaves on the lifted Fig. 8 (sampled residual 4e-7), the fairness of a
+            // fresh solve pulls it towards flat through a crumpled shape (0.1 after 10
+            // iterations).
+            const double before = worstDevelopability(snapshot);
+            const double after = worstDevelopability(session->surface());
+            if (after > std::max(kLessDevelopableFactor * before, kNegligibleDevelopability)) {
+                result.kept.push_back({static_cast<int>(s), before, after});
+                result.surfaces.push_back(snapshot);
+                result.summaries.push_back(summary);
+                continue;
+            }
         }
         result.surfaces.push_back(session->surface());
         result.summaries.push_back(summary);

@@ -42,8 +42,23 @@ struct SolveResult {
     QString error;
     std::vector<model::CompositeSurface> surfaces; // every surface, solved (finite values only)
     std::vector<Summary> summaries;                // per surface
+    // A Solve (not a drag or an edit) never returns a surface less developable than it was
+    // given: one whose solved shape samples a larger normalised developability residual than
+    // kLessDevelopableFactor times the start's (and above kNegligibleDevelopability) is
+    // returned as it was, and listed here with both residuals.
+    struct Kept {
+        int surface = 0;
+        double before = 0.0; // largest sampled |det(a−b, a′, b′)| / (|a−b| |a′| |b′|)
+        double after = 0.0;
+    };
+    std::vector<Kept> kept;
     double elapsedMs = 0.0;
 };
+
+// A solve whose result is this many times less developable than its start made it worse.
+inline constexpr double kLessDevelopableFactor = 10.0;
+// Below this normalised developability residual a surface counts as developable either way.
+inline constexpr double kNegligibleDevelopability = 1e-8;
 
 // The solver on its own thread. submit() hands over a snapshot; the worker reports progress
 // per iteration and one result per request it ran, by signals queued to the receiver's

@@ -1,6 +1,7 @@
 #include "model/examples.h"
 #include "solver/core/analysis_cache.h"
 #include "solver/formulation/perturbation.h"
+#include "solver/quality/quality_measures.h"
 #include "solver/worker/solver_worker.h"
 
 #include "test_registry.h"
@@ -200,6 +201,58 @@ private slots:
         QVERIFY(result.surfaces.front() == session.surface());
         QVERIFY2(result.summaries.front().finalMaxConstraintResidual < 1e-8,
                  qPrintable(QString::number(result.summaries.front().finalMaxConstraintResidual)));
+    }
+
+    void solveNeverLeavesADesignLessDevelopable() {
+        // The lifted Fig. 8 folded along curved creases by a drag that kept lengths (det about
+        // 5e-7). A fresh Solve's fairness pulls it towards flat through a crumpled shape
+        // (det about 0.15 after 10 iterations): the worker returns it as it was and says so.
+        const model::CompositeSurface start = model::makeExample("fig8").surfaces.front();
+        const std::vector<model::VertexId> dragged{5, 6, 9, 10};
+        std::vector<VertexHandle> pulled;
+        for (model::VertexId v : dragged) {
+            pulled.push_back({v, false, start.position(v)});
+        }
+        SolveSession drag(start, pulled, keepLengthsSessionOptions());
+        for (int k = 1; k <= 20; ++k) {
+            for (model::VertexId v : dragged) {
+                QVERIFY(drag.setHandleTarget(v, start.position(v) +
+                                                    model::Vec3{0.0, 0.0, 85.0 * k / 20.0}));
+            }
+            QVERIFY(drag.step(1).succeeded());
+        }
+        drag.settle();
+        QVERIFY(drag.step(20).succeeded());
+        const model::CompositeSurface folded = drag.surface();
+        const double before = measureQuality(folded).developabilityMax;
+        QVERIFY2(before < 1e-5, qPrintable(QString::number(before)));
+
+        SolverWorker worker;
+        QSignalSpy finished(&worker, &SolverWorker::finished);
+        SolveRequest request;
+        request.revision = 3;
+        request.surfaces = {folded};
+        request.iterations = 10;
+        worker.submit(request);
+        QVERIFY(waitForResults(finished, 1));
+        const SolveResult result = resultAt(finished, 0);
+        QVERIFY2(result.ok, qPrintable(result.error));
+        QCOMPARE(result.kept.size(), std::size_t{1});
+        QCOMPARE(result.kept.front().surface, 0);
+        QVERIFY(result.surfaces.front() == folded);
+        // The figures it reports are the geometry's, and the solved shape was indeed worse.
+        QVERIFY(result.kept.front().before <= before);
+        QVERIFY2(result.kept.front().after > kLessDevelopableFactor * result.kept.front().before,
+                 qPrintable(QString::number(result.kept.front().after)));
+
+        // A design Solve improves is solved as before: nothing is kept.
+        request.surfaces = {roughAnnulus()};
+        worker.submit(request);
+        QVERIFY(waitForResults(finished, 2));
+        const SolveResult rough = resultAt(finished, 1);
+        QVERIFY2(rough.ok, qPrintable(rough.error));
+        QVERIFY(rough.kept.empty());
+        QVERIFY(!(rough.surfaces.front() == request.surfaces.front()));
     }
 
     void cancelMidSolveGivesCancelledResult() {
