@@ -12,6 +12,7 @@
 #include "model/surface_statistics.h"
 #include "pattern_commands.h"
 #include "solve_command.h"
+#include "solver/session/solve_session.h"
 #include "vertex_commands.h"
 
 #include <QCoreApplication>
@@ -67,21 +68,24 @@ Commands:
                       noise of SIGMA times the surface's diameter first; --fix keeps the
                       vertices with the given ids (e.g. 0,4,7) where they are.
   drag FILE (--vertices IDS | --crease EDGE) (--by DX,DY,DZ | --rotate PX,PY,PZ,AX,AY,AZ,DEGREES)
-       [--steps N] [--pin IDS] [--after K] [--keep-lengths] [--surface K] -o OUT.devsurf
+       [--steps N] [--pin IDS] [--after K] [--stretch] [--surface K] -o OUT.devsurf
                       Replay a drag as the desktop application runs it: the vertices are
                       moved by DX,DY,DZ (or rotated by DEGREES about the axis AX,AY,AZ
                       through PX,PY,PZ) in N evenly spaced steps (default 20) with one
-                      solver iteration each, then K more iterations (default 10; 20
-                      with --keep-lengths). Pins in the file stay; --pin pins more
+                      solver iteration each, then K more iterations (default 20; 10
+                      with --stretch). Pins in the file stay; --pin pins more
                       vertices. One line per step
-                      (residual, time, quality). --crease EDGE instead of --vertices
-                      drags a crease by DX,DY,DZ: its control points and unpinned ends
-                      slide within the surface (the component along its normal is
-                      dropped) and the strips on both sides change size. --keep-lengths
-                      damps stretching of every strip's control net in each step, so the
-                      sheet bends rather than stretches and curved creases fold without
-                      being pulled straight (a vertex drag; the damping fades over the K
-                      iterations after the moves; see the manual).
+                      (residual, time, quality). A vertex drag keeps lengths: stretching
+                      of every strip's control net is damped in each step, so the sheet
+                      bends rather than stretches and curved creases fold without being
+                      pulled straight (the damping fades over the K iterations after the
+                      moves; see the manual). --stretch drags without that damping, as
+                      Tools > Keep Lengths While Dragging switched off does
+                      (--keep-lengths, the default, is still accepted). --crease EDGE
+                      instead of --vertices drags a crease by DX,DY,DZ: its control points
+                      and unpinned ends slide within the surface (the component along its
+                      normal is dropped) and the strips on both sides change size; a
+                      crease drag never keeps lengths.
   export FILE --format dxf|svg|pdf|fold [--sheet W,H | --paper A4|A3|Letter]
          [--tolerance MM] [--splines] [--r12] [--seam MM] [--rulings] -o OUT
                       Write the cutting pattern: pieces laid out on sheets of W x H mm
@@ -418,13 +422,21 @@ int run(const std::vector<std::string>& args) {
     }
     if (command == "drag") {
         std::vector<std::string> valued;
-        bool keepLengths = false;
+        bool keepLengths = solver::kKeepLengthsByDefault;
+        bool saidKeep = false;
+        bool saidStretch = false;
         for (const std::string& arg : rest) {
             if (arg == "--keep-lengths") {
-                keepLengths = true;
+                keepLengths = saidKeep = true;
+            } else if (arg == "--stretch") {
+                saidStretch = true;
+                keepLengths = false;
             } else {
                 valued.push_back(arg);
             }
+        }
+        if (saidKeep && saidStretch) {
+            throw UsageError{"--keep-lengths and --stretch exclude each other"};
         }
         const Arguments args = parse(valued, {"-o", "--vertices", "--crease", "--by", "--rotate",
                                               "--steps", "--pin", "--after", "--surface"});

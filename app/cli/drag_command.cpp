@@ -216,9 +216,12 @@ int runDragCommand(const std::vector<std::string>& positional,
     const int steps = hasOption(options, "--steps")
                           ? parseCount(findOption(options, "--steps"), "--steps", 1, 10000)
                           : 20;
+    // As DragTool: a dragged crease changes the sizes of its strips on purpose and never
+    // keeps lengths.
+    const bool keepLengths = !crease && hasOption(options, "--keep-lengths");
     const int after = hasOption(options, "--after")
                           ? parseCount(findOption(options, "--after"), "--after", 0, 10000)
-                          : (hasOption(options, "--keep-lengths") ? 20 : 10); // as DragTool
+                          : (keepLengths ? 20 : 10);
     const std::string output = findOption(options, "-o");
     if (output.empty()) {
         throw std::invalid_argument("the output file is missing (use -o FILE)");
@@ -290,10 +293,9 @@ int runDragCommand(const std::vector<std::string>& positional,
             start[id] = surface.position(id);
             pulled.push_back({id, false, surface.position(id)});
         }
-        session = std::make_unique<solver::SolveSession>(surface, pulled, points,
-                                                         hasOption(options, "--keep-lengths")
-                                                             ? solver::keepLengthsSessionOptions()
-                                                             : solver::SessionOptions{});
+        session = std::make_unique<solver::SolveSession>(
+            surface, pulled, points,
+            keepLengths ? solver::keepLengthsSessionOptions() : solver::SessionOptions{});
     } catch (const std::invalid_argument& error) {
         throw model::ModelError("surface " + std::to_string(index + 1) + " of '" + path +
                                 "' cannot be " + (crease ? "dragged: " : "solved: ") +
@@ -317,8 +319,8 @@ int runDragCommand(const std::vector<std::string>& positional,
               << (crease ? "crease " + std::to_string(creaseEdge)
                          : std::to_string(start.size()) +
                                (start.size() == 1 ? " vertex" : " vertices"))
-              << " in " << steps << " steps, then " << after << " iterations; "
-              << surface.pinnedVertices().size() << " pinned\n";
+              << (keepLengths ? " keeping lengths" : "") << " in " << steps << " steps, then "
+              << after << " iterations; " << surface.pinnedVertices().size() << " pinned\n";
 
     auto runIteration = [&](const char* label, int i, int count) {
         const auto begin = std::chrono::steady_clock::now();

@@ -66,8 +66,10 @@ QList<QAction*> MainWindow::createSolverActions(QMenu* tools, QAction* selectNon
     keepLengths->setChecked(SolveController::keepLengthsSetting());
     const QString keepTip =
         tr("While dragging or rotating vertices, the sheet bends instead of stretching: far "
-           "parts stay in place and curved creases keep their shape. Folding along creases "
-           "then may not converge fully; dragged creases always resize their patches.");
+           "parts stay in place and curved creases keep their shape (on by default). Folding "
+           "along curved creases then may not converge fully; switched off, the sheet may "
+           "stretch and creases are pulled straight. Dragged creases always resize their "
+           "patches.");
     keepLengths->setToolTip(keepTip);
     keepLengths->setStatusTip(keepTip);
     connect(keepLengths, &QAction::toggled, this,

@@ -33,7 +33,9 @@ int SolveController::iterationsSetting() {
 }
 
 bool SolveController::keepLengthsSetting() {
-    return QSettings().value(QStringLiteral("solver/keepLengths"), false).toBool();
+    return QSettings()
+        .value(QStringLiteral("solver/keepLengths"), solver::kKeepLengthsByDefault)
+        .toBool();
 }
 
 void SolveController::solve() {

@@ -52,6 +52,19 @@ constexpr double kKeepLengthsWeight = 30.0;
 // values rises to 1e-3 and curves slow to 0.35 of their mean speed); keeping the iterate of
 // smallest residual (after 20 det 2.6e-6 against 5e-7 for the last iterate).
 constexpr double kKeepLengthsFade = 0.5;
+// Whether vertex drags keep lengths unless the designer says otherwise (the desktop
+// application's Tools ▸ Keep Lengths While Dragging, `devsurf-cli drag` without --stretch,
+// the drag benchmark). Measured (20 moves, then 10 or 20 iterations; plain / keeping
+// lengths): the annulus with its outer rim pinned and vertex 0 lifted 100 mm ends crumpled at
+// a residual of 2.4 with angle defects of 3.4 rad and rulings at 0.06 of their length / 5e-15
+// with rulings at 0.98; lifted 25 mm 0.35 / 1e-14; a sheet corner lifted 100 mm and fig8's
+// corner lifted 80 mm end developable either way but with rulings shrunk to 0.29 and 0.23
+// (folded along straight creases) / 1.00; fig6 folds 9° with rulings at 0.20 / 67° at 1.00.
+// What it costs: the lifted Fig. 8 ends at 1e-7 with its creases curved and folded 46°
+// instead of 5e-15 folded 17.5° along straight creases; a cylinder's top rim pushed 40 mm
+// inwards keeps its length and dents sharply (slowest curve speed 0.03 of its mean, 0.47
+// when stretching).
+constexpr bool kKeepLengthsByDefault = true;
 
 struct SessionOptions {
     // Its `handles` are extended by the session: every pinned vertex becomes a fixed handle,

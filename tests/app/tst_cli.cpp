@@ -419,6 +419,59 @@ private slots:
         QVERIFY(!QFile::exists(never));
     }
 
+    void dragKeepsLengthsUnlessToldToStretch() {
+        // As the desktop application by default: the annulus with its outer rim pinned and an
+        // inner vertex lifted 100 mm bends without stretching its rulings. Measured from the
+        // vertices: the shortest R-edge keeps 0.98 of its length; with --stretch 0.07.
+        const QString file = path("keep.devsurf");
+        QCOMPARE(cli({"example", "annulus", "-o", file}).exitCode, 0);
+        const model::CompositeSurface before = io::loadProjectFile(file).surfaces[0];
+        const QStringList drag = {"drag", file,      "--vertices", "0",
+                                  "--by", "0,0,100", "--pin",      "48,49,50,51,52,53,54,55"};
+        const QString kept = path("kept.devsurf");
+        Run run = cli(drag + QStringList{"-o", kept});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains("keeping lengths in 20 steps, then 20 iterations"),
+                 qPrintable(run.out.left(200)));
+        const QString stretched = path("stretched.devsurf");
+        run = cli(drag + QStringList{"--stretch", "-o", stretched});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains("dragging 1 vertex in 20 steps, then 10 iterations"),
+                 qPrintable(run.out.left(200)));
+        // Naming the default explicitly is the default.
+        const QString named = path("named.devsurf");
+        QCOMPARE(cli(drag + QStringList{"--keep-lengths", "-o", named}).exitCode, 0);
+        QVERIFY(io::loadProjectFile(named).surfaces[0] == io::loadProjectFile(kept).surfaces[0]);
+
+        auto shortestRuling = [&](const model::CompositeSurface& after) {
+            double shortest = 1e9;
+            for (const auto& [id, edge] : before.edges()) {
+                if (!edge.isSpline()) {
+                    const double start =
+                        (before.position(edge.to) - before.position(edge.from)).norm();
+                    const double now = (after.position(edge.to) - after.position(edge.from)).norm();
+                    shortest = std::min(shortest, now / start);
+                }
+            }
+            return shortest;
+        };
+        const model::CompositeSurface keptSurface = io::loadProjectFile(kept).surfaces[0];
+        const double keptRuling = shortestRuling(keptSurface);
+        const double stretchedRuling = shortestRuling(io::loadProjectFile(stretched).surfaces[0]);
+        qInfo("shortest R-edge after the drag: %.3f keeping lengths, %.3f stretching", keptRuling,
+              stretchedRuling);
+        QVERIFY2(keptRuling > 0.9, qPrintable(QString::number(keptRuling)));
+        QVERIFY(!(io::loadProjectFile(stretched).surfaces[0] == keptSurface));
+        QVERIFY(std::abs(keptSurface.position(0).z - 100.0) < 1e-3);
+
+        // Both at once: bad usage (exit 1), nothing written.
+        const QString never = path("never-keep.devsurf");
+        run = cli(drag + QStringList{"--keep-lengths", "--stretch", "-o", never});
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY(run.err.contains("--stretch"));
+        QVERIFY(!QFile::exists(never));
+    }
+
     void dragSlidesACrease() {
         const QString file = path("fig6.devsurf");
         QCOMPARE(cli({"example", "fig6", "-o", file}).exitCode, 0);

@@ -369,8 +369,13 @@ private slots:
                 pinnedNow.z == pinnedAt.z);
         const QString report = window(s)->solverPanel()->statusText();
         QVERIFY(report.contains(QStringLiteral("Drag 2")));
-        // The report is the one of the ten iterations after the release.
-        QVERIFY2(window(s)->solverPanel()->iterationRows() == app::DragTool::kFinalIterations ||
+        // The report is the one of the iterations after the release: 20, since a drag keeps
+        // lengths by default (Tools ▸ Keep Lengths While Dragging is checked).
+        const QAction* keepLengths =
+            s.window.findChild<QAction*>(QStringLiteral("actionKeepLengths"));
+        QVERIFY(keepLengths && keepLengths->isChecked());
+        QVERIFY2(window(s)->solverPanel()->iterationRows() ==
+                         app::DragTool::kFinalIterationsKeepingLengths ||
                      report.contains(QStringLiteral("converged")),
                  qPrintable(report));
         const solver::QualityMeasures quality = solver::measureQuality(s.doc->surface(0));

@@ -103,13 +103,18 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
     const quint64 release = static_cast<quint64>(options.moves) + 1;
     constexpr quint64 kDragKey = 1;
 
-    auto request = [&](quint64 tag, double t, int iterations) {
+    const int after = options.afterIterations > 0 ? options.afterIterations
+                      : options.keepLengths       ? 20
+                                                  : 10;
+    auto request = [&](quint64 tag, double t, int iterations, bool settle) {
         solver::SolveRequest r;
         // The bench tags each request with its move number (the application sends the
         // document's revision at the press and tracks the revisions it produced itself).
         r.revision = tag;
         r.sessionKey = kDragKey;
         r.iterations = iterations;
+        r.keepLengths = options.keepLengths;
+        r.settle = settle;
         r.surfaces = {document.surface(0)};
         r.pulled[0] = {{dragged, false, from + lift * t}};
         worker.submit(std::move(r));
@@ -145,7 +150,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
             covered = std::max(covered, static_cast<int>(result.revision));
             if (covered == options.moves) {
                 releasedAt = now;
-                request(release, 1.0, options.afterIterations);
+                request(release, 1.0, after, true);
             }
         });
     QTimer mouse;
@@ -155,7 +160,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
     QObject::connect(&mouse, &QTimer::timeout, [&] {
         ++moved;
         movedAt[static_cast<std::size_t>(moved)] = clock.nsecsElapsed() / 1e6;
-        request(static_cast<quint64>(moved), static_cast<double>(moved) / options.moves, 1);
+        request(static_cast<quint64>(moved), static_cast<double>(moved) / options.moves, 1, false);
         if (moved == options.moves) {
             mouse.stop();
         }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "solver/session/solve_session.h"
+
 #include <functional>
 #include <ostream>
 #include <string>
@@ -15,7 +17,9 @@ struct DragBenchOptions {
     int moves = 200;
     double moveIntervalMs = 8.0; // mouse events at 125 Hz
     double liftFraction = 0.1;   // the whole drag lifts the vertex by this times the diameter
-    int afterIterations = 10;    // after the release
+    // As the desktop application's default (Tools ▸ Keep Lengths While Dragging).
+    bool keepLengths = solver::kKeepLengthsByDefault;
+    int afterIterations = 0; // after the release; 0: as the application (20 keeping lengths, 10)
     int solveIterations = 10;
     std::function<void(const std::string&)> log;
 };
