@@ -858,7 +858,7 @@
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="182"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="109"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="96"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
@@ -1123,27 +1123,22 @@
         <translation>Iterationen von Werkzeuge ▸ Lösen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
-        <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape (on by default). Folding along curved creases then may not converge fully; switched off, the sheet may stretch and creases are pulled straight. Dragged creases always resize their patches.</source>
-        <translation>Beim Ziehen oder Drehen von Ecken biegt sich das Blatt, statt sich zu dehnen: entfernte Teile bleiben an ihrem Platz und gekrümmte Falze behalten ihre Form (standardmäßig eingeschaltet). Das Falten entlang gekrümmter Falze konvergiert dann unter Umständen nicht vollständig; ausgeschaltet kann sich das Blatt dehnen, und Falze werden gerade gezogen. Gezogene Falze ändern die Größe ihrer Flächenstücke immer.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="78"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="65"/>
         <source>R&amp;otate Vertices</source>
         <translation>Ecken dr&amp;ehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="79"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="66"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="82"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="69"/>
         <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
         <translation>Drehwerkzeug (R): Wählen Sie zwei oder mehr Ecken aus, drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie die Maus seitwärts; sie drehen sich um eine Achse durch ihren Schwerpunkt (senkrecht oder wie in der Werkzeugleiste gewählt), und die Fläche folgt. Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="100"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="87"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>Beenden Sie zuerst das Ziehen; es löst bereits während der Bewegung.</translation>
     </message>
@@ -1163,122 +1158,152 @@
         <translation>Ziehwerkzeug: Drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie sie, die Fläche folgt und bleibt abwickelbar; drücken Sie auf einen Falz, um ihn innerhalb seiner Flächenstücke zu verschieben. Die in der Werkzeugleiste gewählte Achse oder gedrückt gehaltenes X, Y oder Z bewegt entlang dieser Achse; Esc bricht das Ziehen ab (G).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="64"/>
-        <source>Keep &amp;Lengths While Dragging</source>
-        <translation>&amp;Längen beim Ziehen erhalten</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="108"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="95"/>
         <source>&amp;Cancel Solve</source>
         <translation>Lösen &amp;abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="111"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>Das laufende Lösen beenden; der Entwurf bleibt, wie er ist (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="135"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="122"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>Lösen: Iteration %1 von %2, Residuum %3</translation>
     </message>
     <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="135"/>
+        <source>&amp;Lengths While Dragging</source>
+        <translation>&amp;Längen beim Ziehen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="147"/>
+        <source>&amp;Automatic</source>
+        <translation>&amp;Automatisch</translation>
+    </message>
+    <message>
         <location filename="../app/gui/main_window_solver.cpp" line="148"/>
+        <source>Vertex drags and rotations keep lengths on designs without crease conditions, and let the sheet stretch on designs with them, where a motion the flat sheet cannot make without stretching would otherwise stop the fold from converging.</source>
+        <translation>Das Ziehen und Drehen von Ecken behält die Längen bei Entwürfen ohne Falzbedingungen bei und lässt das Blatt bei Entwürfen mit Falzbedingungen dehnen, wo sonst eine Bewegung, die das flache Blatt nicht ohne Dehnen ausführen kann, die Faltung nicht konvergieren ließe.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="151"/>
+        <source>&amp;Keep Lengths</source>
+        <translation>Längen &amp;beibehalten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="152"/>
+        <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape and fold. A motion the sheet cannot make without stretching then may not converge. Dragged creases always resize their patches.</source>
+        <translation>Beim Ziehen oder Drehen von Ecken biegt sich das Blatt, statt sich zu dehnen: entfernte Teile bleiben an ihrem Platz, und gekrümmte Falze behalten ihre Form und falten sich. Eine Bewegung, die das Blatt nicht ohne Dehnen ausführen kann, konvergiert dann unter Umständen nicht. Gezogene Falze ändern die Größe ihrer Flächenstücke immer.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="156"/>
+        <source>Let &amp;Stretch</source>
+        <translation>&amp;Dehnen zulassen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="157"/>
+        <source>While dragging or rotating vertices, the sheet may stretch: it stays developable and its development changes, curved creases may be pulled straight and large drags may crumple it.</source>
+        <translation>Beim Ziehen oder Drehen von Ecken darf sich das Blatt dehnen: es bleibt abwickelbar und seine Abwicklung ändert sich, gekrümmte Falze können gerade gezogen werden, und große Bewegungen können es zerknittern.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="179"/>
         <source>Motion &amp;Axis</source>
         <translation>Bewegungs&amp;achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="160"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="191"/>
         <source>&amp;Free</source>
         <translation>&amp;Frei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="161"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="192"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>Freie Bewegung: Das Ziehwerkzeug bewegt Ecken in der Bildebene; das Drehwerkzeug dreht sie um die senkrechte Achse (Z) oder um die Blickachse, wenn Werkzeuge ▸ Bewegungsachse ▸ Um die Blickachse drehen eingeschaltet ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="164"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="195"/>
         <source>&amp;X Axis</source>
         <translation>&amp;X-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="165"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="196"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang X; das Drehwerkzeug dreht sie um eine zu X parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes Y oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="167"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="198"/>
         <source>&amp;Y Axis</source>
         <translation>&amp;Y-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="168"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="199"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Y; das Drehwerkzeug dreht sie um eine zu Y parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="170"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="201"/>
         <source>&amp;Z Axis</source>
         <translation>&amp;Z-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="171"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Z; das Drehwerkzeug dreht sie um eine zu Z parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Y hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="195"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="226"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>Um die &amp;Blickachse drehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="198"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="229"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>Bei der Achswahl „Frei“ dreht das Drehwerkzeug die Ecken um die Blickrichtung durch ihren Schwerpunkt statt um die senkrechte Achse.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="212"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="243"/>
         <source>Colour &amp;By</source>
         <translation>&amp;Färben nach</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="220"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="251"/>
         <source>&amp;Patch</source>
         <translation>&amp;Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="220"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="251"/>
         <source>&amp;Developability</source>
         <translation>&amp;Abwickelbarkeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="220"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="251"/>
         <source>&amp;Flatness</source>
         <translation>&amp;Ebenheit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="221"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="252"/>
         <source>&amp;Angle Defect</source>
         <translation>&amp;Winkeldefekt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="223"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
         <source>Every patch in its own colour.</source>
         <translation>Jedes Flächenstück in seiner eigenen Farbe.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="224"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="255"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>Wie weit jedes abgetastete Streifenviereck von abwickelbar entfernt ist: das normierte |det(a−b, a′, b′)|, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="226"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="257"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>Ebenheit δ jedes abgetasteten Vierecks: der Abstand seiner Diagonalen durch das Mittel seiner zwei kürzesten Kanten, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="228"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="259"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>Winkeldefekt |K| = |2π − Σ Winkel| an den inneren Ecken des abgetasteten Netzes, im Bogenmaß, logarithmisch skaliert.</translation>
     </message>
@@ -2111,117 +2136,117 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="42"/>
+        <location filename="../app/gui/solve_controller.cpp" line="70"/>
         <source>There is nothing to solve.</source>
         <translation>Es gibt nichts zu lösen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="65"/>
+        <location filename="../app/gui/solve_controller.cpp" line="93"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: Es gibt nichts zu lösen; nichts wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="102"/>
+        <location filename="../app/gui/solve_controller.cpp" line="130"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 abgebrochen; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="103"/>
+        <location filename="../app/gui/solve_controller.cpp" line="131"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 abgebrochen: %2; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="105"/>
+        <location filename="../app/gui/solve_controller.cpp" line="133"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>Lösen abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="106"/>
+        <location filename="../app/gui/solve_controller.cpp" line="134"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>Lösen abgebrochen: %1; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="110"/>
+        <location filename="../app/gui/solve_controller.cpp" line="138"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 fehlgeschlagen: %2 Nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="130"/>
+        <location filename="../app/gui/solve_controller.cpp" line="158"/>
         <source>the design changed</source>
         <translation>der Entwurf hat sich geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="141"/>
+        <location filename="../app/gui/solve_controller.cpp" line="169"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="145"/>
+        <location filename="../app/gui/solve_controller.cpp" line="173"/>
         <source>Failed: %1</source>
         <translation>Fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="157"/>
+        <location filename="../app/gui/solve_controller.cpp" line="185"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="161"/>
+        <location filename="../app/gui/solve_controller.cpp" line="189"/>
         <source>tolerance reached</source>
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="161"/>
+        <location filename="../app/gui/solve_controller.cpp" line="189"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="164"/>
+        <location filename="../app/gui/solve_controller.cpp" line="192"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="167"/>
+        <location filename="../app/gui/solve_controller.cpp" line="195"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="171"/>
+        <location filename="../app/gui/solve_controller.cpp" line="199"/>
         <source> (%1)</source>
         <translation> (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="175"/>
+        <location filename="../app/gui/solve_controller.cpp" line="203"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="181"/>
+        <location filename="../app/gui/solve_controller.cpp" line="209"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="186"/>
+        <location filename="../app/gui/solve_controller.cpp" line="214"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="192"/>
+        <location filename="../app/gui/solve_controller.cpp" line="220"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="201"/>
+        <location filename="../app/gui/solve_controller.cpp" line="229"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="248"/>
+        <location filename="../app/gui/solve_controller.cpp" line="276"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>Lösen hat den Entwurf unverändert gelassen: das Lösen machte ihn weniger abwickelbar (größtes Abwickelbarkeitsresiduum %1 → %2).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="273"/>
+        <location filename="../app/gui/solve_controller.cpp" line="301"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n Fläche unverändert gelassen: das Lösen machte sie weniger abwickelbar.</numerusform>
@@ -2229,12 +2254,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="284"/>
+        <location filename="../app/gui/solve_controller.cpp" line="312"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 verworfen: Der Entwurf hat sich während des Lösens geändert; nichts wurde bewegt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="301"/>
+        <location filename="../app/gui/solve_controller.cpp" line="329"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, abwickelbar gehalten: %n Iteration, größtes Bedingungsresiduum %2.</numerusform>
@@ -2242,18 +2267,18 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="111"/>
-        <location filename="../app/gui/solve_controller.cpp" line="235"/>
+        <location filename="../app/gui/solve_controller.cpp" line="139"/>
+        <location filename="../app/gui/solve_controller.cpp" line="263"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="218"/>
+        <location filename="../app/gui/solve_controller.cpp" line="246"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="269"/>
+        <location filename="../app/gui/solve_controller.cpp" line="297"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>

@@ -286,7 +286,7 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="269"/>
+        <location filename="../app/gui/solve_controller.cpp" line="297"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Solved: %n iteration, largest constraint residual %1.</numerusform>
@@ -294,7 +294,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="273"/>
+        <location filename="../app/gui/solve_controller.cpp" line="301"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n surface left as it was: solving made it less developable.</numerusform>
@@ -302,7 +302,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="301"/>
+        <location filename="../app/gui/solve_controller.cpp" line="329"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, kept developable: %n iteration, largest constraint residual %2.</numerusform>

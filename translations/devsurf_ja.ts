@@ -844,7 +844,7 @@
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="182"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="109"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="96"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
@@ -1104,27 +1104,22 @@
         <translation>ツール ▸ ソルブの反復回数:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
-        <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape (on by default). Folding along curved creases then may not converge fully; switched off, the sheet may stretch and creases are pulled straight. Dragged creases always resize their patches.</source>
-        <translation>頂点のドラッグや回転の間、シートは伸びずに曲がります。離れた部分はその場に留まり、曲がった折り線は形を保ちます (既定はオン)。そのため曲がった折り線に沿った折りは完全には収束しないことがあります。オフにするとシートは伸びることがあり、折り線はまっすぐに引き伸ばされます。ドラッグした折り線は常にパッチの大きさを変えます。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="78"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="65"/>
         <source>R&amp;otate Vertices</source>
         <translation>頂点を回転(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="79"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="66"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="82"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="69"/>
         <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
         <translation>回転ツール (R): 2 個以上の頂点を選択し、3D ビューで頂点を押してマウスを横に動かすと、頂点が重心を通る軸 (鉛直、またはツールバーで選んだ軸) の周りに回転し、曲面が追従します。Esc で取り消します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="100"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="87"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>先にドラッグを終えてください。ドラッグ中も随時ソルブしています。</translation>
     </message>
@@ -1144,122 +1139,152 @@
         <translation>ドラッグツール: 3D ビューで頂点を押して動かすと、曲面が追従して可展のまま保たれます。折り線を押すと、パッチの中で折り線を滑らせます。ツールバーで選んだ軸、または X、Y、Z を押したままにすると、その軸に沿って動きます。Esc でドラッグを取り消します (G)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="64"/>
-        <source>Keep &amp;Lengths While Dragging</source>
-        <translation>ドラッグ中に長さを保つ(&amp;L)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="108"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="95"/>
         <source>&amp;Cancel Solve</source>
         <translation>ソルブを中止(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="111"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>実行中のソルブを中止します。デザインはそのままです (Esc)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="135"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="122"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>ソルブ中: 反復 %1 / %2、残差 %3</translation>
     </message>
     <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="135"/>
+        <source>&amp;Lengths While Dragging</source>
+        <translation>ドラッグ中の長さ(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="147"/>
+        <source>&amp;Automatic</source>
+        <translation>自動(&amp;A)</translation>
+    </message>
+    <message>
         <location filename="../app/gui/main_window_solver.cpp" line="148"/>
+        <source>Vertex drags and rotations keep lengths on designs without crease conditions, and let the sheet stretch on designs with them, where a motion the flat sheet cannot make without stretching would otherwise stop the fold from converging.</source>
+        <translation>頂点のドラッグと回転は、折り線の条件のない設計では長さを保ち、条件のある設計ではシートの伸びを許します。そうしないと、平らなシートが伸びずにはできない動きで折りが収束しなくなるためです。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="151"/>
+        <source>&amp;Keep Lengths</source>
+        <translation>長さを保つ(&amp;K)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="152"/>
+        <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape and fold. A motion the sheet cannot make without stretching then may not converge. Dragged creases always resize their patches.</source>
+        <translation>頂点のドラッグや回転の間、シートは伸びずに曲がります。離れた部分はその場に留まり、曲がった折り線は形を保って折れます。シートが伸びずにはできない動きは収束しないことがあります。ドラッグした折り線は常にパッチの大きさを変えます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="156"/>
+        <source>Let &amp;Stretch</source>
+        <translation>伸びを許す(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="157"/>
+        <source>While dragging or rotating vertices, the sheet may stretch: it stays developable and its development changes, curved creases may be pulled straight and large drags may crumple it.</source>
+        <translation>頂点のドラッグや回転の間、シートは伸びることがあります。可展面のままで展開図が変わり、曲がった折り線はまっすぐに引き伸ばされることがあり、大きなドラッグではしわになることがあります。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="179"/>
         <source>Motion &amp;Axis</source>
         <translation>移動の軸(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="160"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="191"/>
         <source>&amp;Free</source>
         <translation>自由(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="161"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="192"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>自由な移動: ドラッグツールは頂点を視平面内で動かし、回転ツールは鉛直軸 (Z) の周り、または ツール ▸ 移動の軸 ▸ 視線軸の周りに回転 がオンのときは視線軸の周りに回転させます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="164"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="195"/>
         <source>&amp;X Axis</source>
         <translation>X 軸(&amp;X)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="165"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="196"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X 軸: ドラッグツールは頂点を X 方向にだけ動かし、回転ツールは重心を通る X に平行な軸の周りに回転させます。Y または Z を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="167"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="198"/>
         <source>&amp;Y Axis</source>
         <translation>Y 軸(&amp;Y)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="168"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="199"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y 軸: ドラッグツールは頂点を Y 方向にだけ動かし、回転ツールは重心を通る Y に平行な軸の周りに回転させます。X または Z を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="170"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="201"/>
         <source>&amp;Z Axis</source>
         <translation>Z 軸(&amp;Z)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="171"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z 軸: ドラッグツールは頂点を Z 方向にだけ動かし、回転ツールは重心を通る Z に平行な軸の周りに回転させます。X または Y を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="195"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="226"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>視線軸の周りに回転(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="198"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="229"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>軸が「自由」のとき、回転ツールは頂点を鉛直軸ではなく重心を通る視線方向の周りに回転させます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="212"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="243"/>
         <source>Colour &amp;By</source>
         <translation>色分け(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="220"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="251"/>
         <source>&amp;Patch</source>
         <translation>パッチ(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="220"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="251"/>
         <source>&amp;Developability</source>
         <translation>可展性(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="220"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="251"/>
         <source>&amp;Flatness</source>
         <translation>平面性(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="221"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="252"/>
         <source>&amp;Angle Defect</source>
         <translation>角度欠損(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="223"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
         <source>Every patch in its own colour.</source>
         <translation>パッチごとに色分けします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="224"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="255"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>サンプルした各帯の四角形が可展からどれだけ離れているか: 正規化した |det(a−b, a′, b′)| を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="226"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="257"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>サンプルした各四角形の平面性 δ: 対角線間の距離を最も短い 2 辺の平均で割った値を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="228"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="259"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>サンプルしたメッシュの内部頂点での角度欠損 |K| = |2π − Σ 角度| (ラジアン) を対数スケールで表示します。</translation>
     </message>
@@ -2080,147 +2105,147 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="42"/>
+        <location filename="../app/gui/solve_controller.cpp" line="70"/>
         <source>There is nothing to solve.</source>
         <translation>ソルブする対象がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="65"/>
+        <location filename="../app/gui/solve_controller.cpp" line="93"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: ソルブするものがありません。何も変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="102"/>
+        <location filename="../app/gui/solve_controller.cpp" line="130"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 を取り消しました。何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="103"/>
+        <location filename="../app/gui/solve_controller.cpp" line="131"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 を取り消しました: %2。何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="105"/>
+        <location filename="../app/gui/solve_controller.cpp" line="133"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>ソルブを中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="106"/>
+        <location filename="../app/gui/solve_controller.cpp" line="134"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>ソルブを中止しました: %1。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="110"/>
+        <location filename="../app/gui/solve_controller.cpp" line="138"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 に失敗しました: %2 何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="130"/>
+        <location filename="../app/gui/solve_controller.cpp" line="158"/>
         <source>the design changed</source>
         <translation>デザインが変更されました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="141"/>
+        <location filename="../app/gui/solve_controller.cpp" line="169"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="145"/>
+        <location filename="../app/gui/solve_controller.cpp" line="173"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="157"/>
+        <location filename="../app/gui/solve_controller.cpp" line="185"/>
         <source>converged</source>
         <translation>収束</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="161"/>
+        <location filename="../app/gui/solve_controller.cpp" line="189"/>
         <source>tolerance reached</source>
         <translation>許容値に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="161"/>
+        <location filename="../app/gui/solve_controller.cpp" line="189"/>
         <source>iteration limit reached</source>
         <translation>反復回数の上限に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="164"/>
+        <location filename="../app/gui/solve_controller.cpp" line="192"/>
         <source>cancelled</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="167"/>
+        <location filename="../app/gui/solve_controller.cpp" line="195"/>
         <source>failed</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="171"/>
+        <location filename="../app/gui/solve_controller.cpp" line="199"/>
         <source> (%1)</source>
         <translation> (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="175"/>
+        <location filename="../app/gui/solve_controller.cpp" line="203"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>。ソルブで可展性が悪化したため元のままにしました (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="181"/>
+        <location filename="../app/gui/solve_controller.cpp" line="209"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="186"/>
+        <location filename="../app/gui/solve_controller.cpp" line="214"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="192"/>
+        <location filename="../app/gui/solve_controller.cpp" line="220"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="201"/>
+        <location filename="../app/gui/solve_controller.cpp" line="229"/>
         <source>Solve</source>
         <translation>ソルブ</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="248"/>
+        <location filename="../app/gui/solve_controller.cpp" line="276"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>ソルブはデザインを元のままにしました。ソルブで可展性が悪化したためです (最大の可展性残差 %1 → %2)。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="273"/>
+        <location filename="../app/gui/solve_controller.cpp" line="301"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n 個のサーフェスを元のままにしました。ソルブで可展性が悪化したためです。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="284"/>
+        <location filename="../app/gui/solve_controller.cpp" line="312"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 を破棄しました: ソルブ中にデザインが変更されました。何も動いていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="301"/>
+        <location filename="../app/gui/solve_controller.cpp" line="329"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1、可展を維持: %n 回反復、最大の制約残差 %2。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="111"/>
-        <location filename="../app/gui/solve_controller.cpp" line="235"/>
+        <location filename="../app/gui/solve_controller.cpp" line="139"/>
+        <location filename="../app/gui/solve_controller.cpp" line="263"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>ソルブに失敗しました: %1 デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="218"/>
+        <location filename="../app/gui/solve_controller.cpp" line="246"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>ソルブ中にデザインが変更されたため、結果を破棄しました。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="269"/>
+        <location filename="../app/gui/solve_controller.cpp" line="297"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>ソルブ完了: %n 回反復、制約残差の最大値 %1。</numerusform>

@@ -12,7 +12,6 @@
 #include "model/surface_statistics.h"
 #include "pattern_commands.h"
 #include "solve_command.h"
-#include "solver/session/solve_session.h"
 #include "vertex_commands.h"
 
 #include <QCoreApplication>
@@ -68,20 +67,21 @@ Commands:
                       noise of SIGMA times the surface's diameter first; --fix keeps the
                       vertices with the given ids (e.g. 0,4,7) where they are.
   drag FILE (--vertices IDS | --crease EDGE) (--by DX,DY,DZ | --rotate PX,PY,PZ,AX,AY,AZ,DEGREES)
-       [--steps N] [--pin IDS] [--after K] [--stretch] [--surface K] -o OUT.devsurf
+       [--steps N] [--pin IDS] [--after K] [--keep-lengths | --stretch] [--surface K]
+       -o OUT.devsurf
                       Replay a drag as the desktop application runs it: the vertices are
                       moved by DX,DY,DZ (or rotated by DEGREES about the axis AX,AY,AZ
                       through PX,PY,PZ) in N evenly spaced steps (default 20) with one
-                      solver iteration each, then K more iterations (default 20; 10
-                      with --stretch). Pins in the file stay; --pin pins more
-                      vertices. One line per step
-                      (residual, time, quality). A vertex drag keeps lengths: stretching
-                      of every strip's control net is damped in each step, so the sheet
-                      bends rather than stretches and curved creases fold without being
-                      pulled straight (the damping fades over the K iterations after the
-                      moves; see the manual). --stretch drags without that damping, as
-                      Tools > Keep Lengths While Dragging switched off does
-                      (--keep-lengths, the default, is still accepted). --crease EDGE
+                      solver iteration each, then K more iterations (default 20 when
+                      keeping lengths, else 10). Pins in the file stay; --pin pins more
+                      vertices. One line per step (residual, time, quality). A vertex
+                      drag keeps lengths when no crease of the surface has a condition,
+                      as the desktop application does by default: stretching of every
+                      strip's control net is damped in each step, so the sheet bends
+                      rather than stretches (the damping fades over the K iterations
+                      after the moves; see the manual). --keep-lengths keeps lengths
+                      on any surface (curved creases then fold without being pulled
+                      straight, where the motion allows it); --stretch never. --crease EDGE
                       instead of --vertices drags a crease by DX,DY,DZ: its control points
                       and unpinned ends slide within the surface (the component along its
                       normal is dropped) and the strips on both sides change size; a
@@ -422,15 +422,13 @@ int run(const std::vector<std::string>& args) {
     }
     if (command == "drag") {
         std::vector<std::string> valued;
-        bool keepLengths = solver::kKeepLengthsByDefault;
         bool saidKeep = false;
         bool saidStretch = false;
         for (const std::string& arg : rest) {
             if (arg == "--keep-lengths") {
-                keepLengths = saidKeep = true;
+                saidKeep = true;
             } else if (arg == "--stretch") {
                 saidStretch = true;
-                keepLengths = false;
             } else {
                 valued.push_back(arg);
             }
@@ -442,8 +440,8 @@ int run(const std::vector<std::string>& args) {
                                               "--steps", "--pin", "--after", "--surface"});
         std::vector<std::pair<std::string, std::string>> options(args.options.begin(),
                                                                  args.options.end());
-        if (keepLengths) {
-            options.emplace_back("--keep-lengths", "");
+        if (saidKeep || saidStretch) {
+            options.emplace_back(saidKeep ? "--keep-lengths" : "--stretch", "");
         }
         try {
             return app::runDragCommand(args.positional, options);

@@ -216,12 +216,6 @@ int runDragCommand(const std::vector<std::string>& positional,
     const int steps = hasOption(options, "--steps")
                           ? parseCount(findOption(options, "--steps"), "--steps", 1, 10000)
                           : 20;
-    // As DragTool: a dragged crease changes the sizes of its strips on purpose and never
-    // keeps lengths.
-    const bool keepLengths = !crease && hasOption(options, "--keep-lengths");
-    const int after = hasOption(options, "--after")
-                          ? parseCount(findOption(options, "--after"), "--after", 0, 10000)
-                          : (keepLengths ? 20 : 10);
     const std::string output = findOption(options, "-o");
     if (output.empty()) {
         throw std::invalid_argument("the output file is missing (use -o FILE)");
@@ -245,6 +239,14 @@ int runDragCommand(const std::vector<std::string>& positional,
                                          1);
     }
     model::CompositeSurface& surface = project.surfaces[index];
+    // As DragTool: a dragged crease changes the sizes of its strips on purpose and never
+    // keeps lengths; a vertex drag does by default where no crease has a condition.
+    const bool keepLengths =
+        !crease && (hasOption(options, "--keep-lengths") ||
+                    (!hasOption(options, "--stretch") && solver::keepsLengthsByDefault(surface)));
+    const int after = hasOption(options, "--after")
+                          ? parseCount(findOption(options, "--after"), "--after", 0, 10000)
+                          : (keepLengths ? 20 : 10);
 
     std::vector<model::VertexId> unknown;
     std::vector<model::VertexId> mentioned = dragged;

@@ -351,7 +351,7 @@ bool DragTool::targetsAt(const QPoint& pos, std::vector<model::Vec3>& targets) {
 
 bool DragTool::keepsLengths() const {
     // A dragged crease changes the sizes of its strips on purpose: it never keeps lengths.
-    return !m_crease && SolveController::keepLengthsSetting();
+    return !m_crease && SolveController::keepsLengths(pressSurface());
 }
 
 void DragTool::submit(int iterations, bool settle) {

@@ -53,6 +53,8 @@ private:
     QList<QAction*> createSolverActions(QMenu* tools, QAction* selectNone);
     // Tools ▸ Motion Axis (Free / X / Y / Z) for the Drag and Rotate tools; returns its actions.
     QList<QAction*> createAxisActions(QMenu* tools, RotateTool* rotateTool);
+    // Tools ▸ Lengths While Dragging: Automatic, Keep Lengths, Let Stretch (remembered).
+    void createLengthsActions(QMenu* tools);
     // View ▸ Colour By: patch, developability, flatness, angle defect.
     void createColourActions(QMenu* view);
     void updateTitle();

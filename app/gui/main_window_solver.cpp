@@ -60,20 +60,7 @@ QList<QAction*> MainWindow::createSolverActions(QMenu* tools, QAction* selectNon
     drag->setToolTip(dragTip);
     drag->setStatusTip(dragTip);
     m_dragTool = new DragTool(drag, m_workspace, m_surfaceView, m_solveController);
-    QAction* keepLengths =
-        addAction(tools, QStringLiteral("actionKeepLengths"), tr("Keep &Lengths While Dragging"));
-    keepLengths->setCheckable(true);
-    keepLengths->setChecked(SolveController::keepLengthsSetting());
-    const QString keepTip =
-        tr("While dragging or rotating vertices, the sheet bends instead of stretching: far "
-           "parts stay in place and curved creases keep their shape (on by default). Folding "
-           "along curved creases then may not converge fully; switched off, the sheet may "
-           "stretch and creases are pulled straight. Dragged creases always resize their "
-           "patches.");
-    keepLengths->setToolTip(keepTip);
-    keepLengths->setStatusTip(keepTip);
-    connect(keepLengths, &QAction::toggled, this,
-            [](bool on) { QSettings().setValue(QStringLiteral("solver/keepLengths"), on); });
+    createLengthsActions(tools);
 
     QAction* rotate = addAction(tools, QStringLiteral("actionRotateTool"), tr("R&otate Vertices"),
                                 QKeySequence(tr("R")));
@@ -142,6 +129,50 @@ QList<QAction*> MainWindow::createSolverActions(QMenu* tools, QAction* selectNon
     auto* separator = new QAction(this);
     separator->setSeparator(true);
     return QList<QAction*>{solve, drag, rotate, separator} + axisActions;
+}
+
+void MainWindow::createLengthsActions(QMenu* tools) {
+    QMenu* menu = tools->addMenu(tr("&Lengths While Dragging"));
+    menu->setObjectName(QStringLiteral("menuLengthsWhileDragging"));
+    menu->setToolTipsVisible(true);
+    auto* group = new QActionGroup(this);
+    using Mode = SolveController::LengthsMode;
+    struct Entry {
+        const char* name;
+        Mode mode;
+        QString text;
+        QString tip;
+    };
+    const Entry entries[] = {
+        {"actionLengthsAutomatic", Mode::Automatic, tr("&Automatic"),
+         tr("Vertex drags and rotations keep lengths on designs without crease conditions, and "
+            "let the sheet stretch on designs with them, where a motion the flat sheet cannot "
+            "make without stretching would otherwise stop the fold from converging.")},
+        {"actionKeepLengths", Mode::Keep, tr("&Keep Lengths"),
+         tr("While dragging or rotating vertices, the sheet bends instead of stretching: far "
+            "parts stay in place and curved creases keep their shape and fold. A motion the "
+            "sheet cannot make without stretching then may not converge. Dragged creases "
+            "always resize their patches.")},
+        {"actionLetStretch", Mode::Stretch, tr("Let &Stretch"),
+         tr("While dragging or rotating vertices, the sheet may stretch: it stays developable "
+            "and its development changes, curved creases may be pulled straight and large drags "
+            "may crumple it.")}};
+    const Mode saved = SolveController::lengthsSetting();
+    for (const Entry& entry : entries) {
+        QAction* action = menu->addAction(entry.text);
+        action->setObjectName(QString::fromLatin1(entry.name));
+        action->setCheckable(true);
+        action->setToolTip(entry.tip);
+        action->setStatusTip(entry.tip);
+        group->addAction(action);
+        action->setChecked(entry.mode == saved);
+        const Mode mode = entry.mode;
+        connect(action, &QAction::toggled, this, [mode](bool on) {
+            if (on) {
+                SolveController::setLengthsSetting(mode);
+            }
+        });
+    }
 }
 
 QList<QAction*> MainWindow::createAxisActions(QMenu* tools, RotateTool* rotateTool) {

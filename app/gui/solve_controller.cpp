@@ -8,6 +8,7 @@
 
 #include <QSettings>
 #include <QUndoStack>
+#include <QVariant>
 
 #include <algorithm>
 
@@ -32,10 +33,37 @@ int SolveController::iterationsSetting() {
     return std::clamp(QSettings().value(QStringLiteral("solver/iterations"), 10).toInt(), 1, 1000);
 }
 
-bool SolveController::keepLengthsSetting() {
-    return QSettings()
-        .value(QStringLiteral("solver/keepLengths"), solver::kKeepLengthsByDefault)
-        .toBool();
+SolveController::LengthsMode SolveController::lengthsSetting() {
+    QSettings settings;
+    const QString key = QStringLiteral("solver/lengthsWhileDragging");
+    if (!settings.contains(key)) {
+        // The on/off choice of earlier versions, if one was made.
+        const QVariant old = settings.value(QStringLiteral("solver/keepLengths"));
+        if (old.isValid()) {
+            return old.toBool() ? LengthsMode::Keep : LengthsMode::Stretch;
+        }
+        return LengthsMode::Automatic;
+    }
+    const int mode = settings.value(key).toInt();
+    return mode == 1   ? LengthsMode::Keep
+           : mode == 2 ? LengthsMode::Stretch
+                       : LengthsMode::Automatic;
+}
+
+void SolveController::setLengthsSetting(LengthsMode mode) {
+    QSettings().setValue(QStringLiteral("solver/lengthsWhileDragging"), static_cast<int>(mode));
+}
+
+bool SolveController::keepsLengths(const model::CompositeSurface& surface) {
+    switch (lengthsSetting()) {
+    case LengthsMode::Keep:
+        return true;
+    case LengthsMode::Stretch:
+        return false;
+    case LengthsMode::Automatic:
+        break;
+    }
+    return solver::keepsLengthsByDefault(surface);
 }
 
 void SolveController::solve() {

@@ -34,8 +34,13 @@ public:
     solver::SolverWorker* worker() const { return m_worker; }
     bool isSolving() const { return m_solving; }
     static int iterationsSetting();
-    // Tools ▸ Keep Lengths While Dragging (off by default): vertex drags damp stretching.
-    static bool keepLengthsSetting();
+    // Tools ▸ Lengths While Dragging: whether vertex drags damp stretching of the sheet.
+    enum class LengthsMode { Automatic = 0, Keep = 1, Stretch = 2 };
+    static LengthsMode lengthsSetting();
+    static void setLengthsSetting(LengthsMode mode);
+    // Whether a vertex drag of `surface` keeps lengths under the setting (Automatic:
+    // solver::keepsLengthsByDefault, i.e. unless a crease has a condition).
+    static bool keepsLengths(const model::CompositeSurface& surface);
     // Builds a report of a result for the Solver panel (worst patches when the tolerance was
     // not reached).
     SolveReport reportOf(const solver::SolveResult& result, const QString& title) const;

@@ -21,8 +21,8 @@ Options defaultSessionSolverOptions();
 FormulationOptions defaultSessionFormulationOptions();
 
 // FormulationOptions::isometryWeight of a drag that keeps lengths (the desktop application's
-// Tools ▸ Keep Lengths While Dragging, `devsurf-cli drag --keep-lengths`): the sheet bends
-// instead of stretching. Measured (20 moves, 10 iterations after): lifting the annulus's
+// Tools ▸ Lengths While Dragging ▸ Keep Lengths, `devsurf-cli drag --keep-lengths`): the sheet
+// bends instead of stretching. Measured (20 moves, 10 iterations after): lifting the annulus's
 // inner vertex 0 by 100 mm with its outer rim pinned ends at a constraint residual of 2e-6,
 // angle defects 6e-8 rad, rulings at 0.97 of their start length (without: 2.4, 3.4 rad,
 // 0.06); a 1 mm lift of fig6's vertex 2 turns the sheet about its pinned edge (the far
@@ -52,19 +52,26 @@ constexpr double kKeepLengthsWeight = 30.0;
 // values rises to 1e-3 and curves slow to 0.35 of their mean speed); keeping the iterate of
 // smallest residual (after 20 det 2.6e-6 against 5e-7 for the last iterate).
 constexpr double kKeepLengthsFade = 0.5;
-// Whether vertex drags keep lengths unless the designer says otherwise (the desktop
-// application's Tools ▸ Keep Lengths While Dragging, `devsurf-cli drag` without --stretch,
-// the drag benchmark). Measured (20 moves, then 10 or 20 iterations; plain / keeping
-// lengths): the annulus with its outer rim pinned and vertex 0 lifted 100 mm ends crumpled at
-// a residual of 2.4 with angle defects of 3.4 rad and rulings at 0.06 of their length / 5e-15
-// with rulings at 0.98; lifted 25 mm 0.35 / 1e-14; a sheet corner lifted 100 mm and fig8's
-// corner lifted 80 mm end developable either way but with rulings shrunk to 0.29 and 0.23
-// (folded along straight creases) / 1.00; fig6 folds 9° with rulings at 0.20 / 67° at 1.00.
-// What it costs: the lifted Fig. 8 ends at 1e-7 with its creases curved and folded 46°
-// instead of 5e-15 folded 17.5° along straight creases; a cylinder's top rim pushed 40 mm
-// inwards keeps its length and dents sharply (slowest curve speed 0.03 of its mean, 0.47
-// when stretching).
-constexpr bool kKeepLengthsByDefault = true;
+// Whether a vertex drag of `surface` keeps lengths when the designer has not chosen (the
+// desktop application's Tools ▸ Lengths While Dragging ▸ Automatic, `devsurf-cli drag` without
+// --keep-lengths or --stretch, the drag benchmark): yes unless a crease of the surface has a
+// condition. Measured (20 moves, then 20 iterations keeping lengths or 10 stretching):
+// - Without conditions stretching crumples where keeping lengths bends: the annulus with its
+//   outer rim pinned and vertex 0 lifted 100 mm ends at a residual of 2.4 with angle defects
+//   of 3.4 rad and rulings at 0.06 of their length when stretching, at 5e-15 with rulings at
+//   0.98 keeping lengths (lifted 25 mm: 0.35 / 1e-14); a sheet corner lifted 100 mm ends
+//   developable either way, but with rulings shrunk to 0.29 when stretching.
+// - With conditions keeping lengths breaks down where the motion needs the sheet to stretch:
+//   fig8 with all four corners pinned and its middle lifted 20, 40, 60 or 85 mm (impossible
+//   without stretching: the corners' distances are those of the flat sheet) ends at residuals
+//   of 1e-11 … 0.98 with curve speeds of 0.00 … 0.03 of their mean, against 5e-16 … 1e-14
+//   folded 12° … 41° along straight creases when stretching; fig8 with its bottom corners
+//   pinned reaches only 1e-7 (5e-15 stretching, folded 17.5°). Switched on by the designer,
+//   keeping lengths folds curved creases where the motion allows it: fig6 67°, fig8 (bottom
+//   corners) 46°.
+// Keeping lengths damps stretching in every step; it does not keep the development: the
+// annulus lifted 100 mm gains 7 % of its area, fig8 lifted 85 mm 17 %.
+bool keepsLengthsByDefault(const model::CompositeSurface& surface);
 
 struct SessionOptions {
     // Its `handles` are extended by the session: every pinned vertex becomes a fixed handle,

@@ -419,7 +419,7 @@ private slots:
         QVERIFY(!QFile::exists(never));
     }
 
-    void dragKeepsLengthsUnlessToldToStretch() {
+    void dragKeepsLengthsWhereNoCreaseHasACondition() {
         // As the desktop application by default: the annulus with its outer rim pinned and an
         // inner vertex lifted 100 mm bends without stretching its rulings. Measured from the
         // vertices: the shortest R-edge keeps 0.98 of its length; with --stretch 0.07.
@@ -463,6 +463,19 @@ private slots:
         QVERIFY2(keptRuling > 0.9, qPrintable(QString::number(keptRuling)));
         QVERIFY(!(io::loadProjectFile(stretched).surfaces[0] == keptSurface));
         QVERIFY(std::abs(keptSurface.position(0).z - 100.0) < 1e-3);
+
+        // fig8's creases have conditions: its drags stretch unless told to keep lengths.
+        const QString fig8 = path("fig8.devsurf");
+        QCOMPARE(cli({"example", "fig8", "-o", fig8}).exitCode, 0);
+        const QStringList lift = {"drag",   fig8,      "--vertices", "5",       "--by",
+                                  "0,0,10", "--steps", "2",          "--after", "1"};
+        run = cli(lift + QStringList{"-o", path("fig8-plain.devsurf")});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains("dragging 1 vertex in 2 steps"), qPrintable(run.out.left(200)));
+        run = cli(lift + QStringList{"--keep-lengths", "-o", path("fig8-kept.devsurf")});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains("dragging 1 vertex keeping lengths in 2 steps"),
+                 qPrintable(run.out.left(200)));
 
         // Both at once: bad usage (exit 1), nothing written.
         const QString never = path("never-keep.devsurf");

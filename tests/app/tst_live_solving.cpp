@@ -5,6 +5,7 @@
 #include "model/document/commands/pin_vertices_command.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
+#include "model/examples.h"
 #include "panels/solver_panel.h"
 #include "solve_controller.h"
 #include "solver/quality/quality_measures.h"
@@ -340,6 +341,38 @@ class TstDrag : public QObject {
 private slots:
     void init() { QSettings().clear(); }
 
+    void lengthsWhileDraggingIsChosenInTheMenuAndRemembered() {
+        using Mode = app::SolveController::LengthsMode;
+        const model::CompositeSurface annulus = model::makeExample("annulus").surfaces[0];
+        const model::CompositeSurface fig8 = model::makeExample("fig8").surfaces[0];
+        {
+            app::MainWindow window;
+            QAction* automatic = window.action(QStringLiteral("actionLengthsAutomatic"));
+            QAction* keep = window.action(QStringLiteral("actionKeepLengths"));
+            QAction* stretch = window.action(QStringLiteral("actionLetStretch"));
+            QVERIFY(automatic && keep && stretch);
+            QVERIFY(automatic->isChecked() && !keep->isChecked() && !stretch->isChecked());
+            // Automatic: a design with crease conditions stretches, one without keeps lengths.
+            QVERIFY(app::SolveController::keepsLengths(annulus));
+            QVERIFY(!app::SolveController::keepsLengths(fig8));
+            keep->trigger();
+            QVERIFY(keep->isChecked() && !automatic->isChecked());
+            QCOMPARE(app::SolveController::lengthsSetting(), Mode::Keep);
+            QVERIFY(app::SolveController::keepsLengths(fig8));
+            stretch->trigger();
+            QVERIFY(!app::SolveController::keepsLengths(annulus));
+        }
+        // A new window shows the choice made.
+        app::MainWindow again;
+        QVERIFY(again.action(QStringLiteral("actionLetStretch"))->isChecked());
+        // The on/off choice of earlier versions is taken over while no new choice was made.
+        QSettings().clear();
+        QSettings().setValue(QStringLiteral("solver/keepLengths"), true);
+        QCOMPARE(app::SolveController::lengthsSetting(), Mode::Keep);
+        QSettings().setValue(QStringLiteral("solver/keepLengths"), false);
+        QCOMPARE(app::SolveController::lengthsSetting(), Mode::Stretch);
+    }
+
     void dragIsOneUndoStepAndUndoGivesTheStateAtPress() {
         Setup s;
         QVERIFY(prepare(s));
@@ -369,11 +402,13 @@ private slots:
                 pinnedNow.z == pinnedAt.z);
         const QString report = window(s)->solverPanel()->statusText();
         QVERIFY(report.contains(QStringLiteral("Drag 2")));
-        // The report is the one of the iterations after the release: 20, since a drag keeps
-        // lengths by default (Tools ▸ Keep Lengths While Dragging is checked).
-        const QAction* keepLengths =
-            s.window.findChild<QAction*>(QStringLiteral("actionKeepLengths"));
-        QVERIFY(keepLengths && keepLengths->isChecked());
+        // The report is the one of the iterations after the release: 20, since a drag of a
+        // design without crease conditions keeps lengths by default (Tools ▸ Lengths While
+        // Dragging ▸ Automatic).
+        const QAction* automatic =
+            s.window.findChild<QAction*>(QStringLiteral("actionLengthsAutomatic"));
+        QVERIFY(automatic && automatic->isChecked());
+        QVERIFY(app::SolveController::keepsLengths(s.doc->surface(0)));
         QVERIFY2(window(s)->solverPanel()->iterationRows() ==
                          app::DragTool::kFinalIterationsKeepingLengths ||
                      report.contains(QStringLiteral("converged")),

@@ -103,9 +103,9 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
     const quint64 release = static_cast<quint64>(options.moves) + 1;
     constexpr quint64 kDragKey = 1;
 
-    const int after = options.afterIterations > 0 ? options.afterIterations
-                      : options.keepLengths       ? 20
-                                                  : 10;
+    const bool keepLengths =
+        options.keepLengths.value_or(solver::keepsLengthsByDefault(document.surface(0)));
+    const int after = options.afterIterations > 0 ? options.afterIterations : keepLengths ? 20 : 10;
     auto request = [&](quint64 tag, double t, int iterations, bool settle) {
         solver::SolveRequest r;
         // The bench tags each request with its move number (the application sends the
@@ -113,7 +113,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
         r.revision = tag;
         r.sessionKey = kDragKey;
         r.iterations = iterations;
-        r.keepLengths = options.keepLengths;
+        r.keepLengths = keepLengths;
         r.settle = settle;
         r.surfaces = {document.surface(0)};
         r.pulled[0] = {{dragged, false, from + lift * t}};

@@ -3,6 +3,7 @@
 #include "solver/session/solve_session.h"
 
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -17,8 +18,8 @@ struct DragBenchOptions {
     int moves = 200;
     double moveIntervalMs = 8.0; // mouse events at 125 Hz
     double liftFraction = 0.1;   // the whole drag lifts the vertex by this times the diameter
-    // As the desktop application's default (Tools ▸ Keep Lengths While Dragging).
-    bool keepLengths = solver::kKeepLengthsByDefault;
+    // Unset: as the desktop application's default (solver::keepsLengthsByDefault).
+    std::optional<bool> keepLengths;
     int afterIterations = 0; // after the release; 0: as the application (20 keeping lengths, 10)
     int solveIterations = 10;
     std::function<void(const std::string&)> log;

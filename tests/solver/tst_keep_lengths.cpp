@@ -23,6 +23,27 @@ class TstKeepLengths : public QObject {
     Q_OBJECT
 
 private slots:
+    void dragsKeepLengthsByDefaultWhereNoCreaseHasACondition() {
+        for (const char* name : {"sheet", "annulus", "cylinder", "mixed"}) {
+            QVERIFY2(solver::keepsLengthsByDefault(model::makeExample(name).surfaces[0]), name);
+        }
+        for (const char* name : {"fig8", "fig6"}) {
+            QVERIFY2(!solver::keepsLengthsByDefault(model::makeExample(name).surfaces[0]), name);
+        }
+        model::CompositeSurface fig6 = model::makeExample("fig6").surfaces[0];
+        std::vector<model::EdgeId> conditioned;
+        for (const auto& [id, edge] : fig6.edges()) {
+            if (edge.condition != model::CreaseCondition::None) {
+                conditioned.push_back(id);
+            }
+        }
+        QVERIFY(!conditioned.empty());
+        for (model::EdgeId id : conditioned) {
+            fig6.setCreaseCondition(id, model::CreaseCondition::None);
+        }
+        QVERIFY(solver::keepsLengthsByDefault(fig6));
+    }
+
     void aValidDesignStaysPut() {
         // The rows are re-based before every step, so they vanish on an unmoved design.
         const model::CompositeSurface start = model::makeExample("fig6").surfaces[0];
