@@ -246,7 +246,7 @@ int runDragCommand(const std::vector<std::string>& positional,
                     (!hasOption(options, "--stretch") && solver::keepsLengthsByDefault(surface)));
     const int after = hasOption(options, "--after")
                           ? parseCount(findOption(options, "--after"), "--after", 0, 10000)
-                          : (keepLengths ? 20 : 10);
+                          : solver::iterationsAfterDrag(keepLengths);
 
     std::vector<model::VertexId> unknown;
     std::vector<model::VertexId> mentioned = dragged;

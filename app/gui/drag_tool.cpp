@@ -389,7 +389,7 @@ void DragTool::release(const QPoint& pos, Qt::KeyboardModifiers modifiers) {
     // The move being solved finishes and is applied; the final iterations continue from the
     // session's state with the handles at the release position.
     m_state = State::Finishing;
-    submit(keepsLengths() ? kFinalIterationsKeepingLengths : kFinalIterations, true);
+    submit(solver::iterationsAfterDrag(keepsLengths()), true);
 }
 
 void DragTool::abort(const QString& sentence) {

@@ -4,6 +4,7 @@
 #include "model/document/selection.h"
 #include "panels/solver_panel.h"
 #include "solver/session/crease_drag.h"
+#include "solver/session/solve_session.h"
 
 #include <QObject>
 #include <QPoint>
@@ -54,11 +55,10 @@ public:
     void setChosenAxis(Axis axis) { m_chosenAxis = axis; }
     // The unit vector of an axis other than Free.
     static model::Vec3 unitVector(Axis axis);
-    // Iterations run after the release.
-    static constexpr int kFinalIterations = 10;
-    // The same when keeping lengths, whose energy fades over them (solver::kKeepLengthsFade):
-    // the lifted Fig. 8 reaches a residual of 1e-7 after 20 of them, 2e-5 after 10.
-    static constexpr int kFinalIterationsKeepingLengths = 20;
+    // Iterations run after the release (solver::iterationsAfterDrag).
+    static constexpr int kFinalIterations = solver::kIterationsAfterDrag;
+    static constexpr int kFinalIterationsKeepingLengths =
+        solver::kIterationsAfterDragKeepingLengths;
 
 signals:
     // The drag ended: applied (one undo step), or not (cancelled, failed, or nothing moved).

@@ -105,7 +105,8 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
 
     const bool keepLengths =
         options.keepLengths.value_or(solver::keepsLengthsByDefault(document.surface(0)));
-    const int after = options.afterIterations > 0 ? options.afterIterations : keepLengths ? 20 : 10;
+    const int after = options.afterIterations > 0 ? options.afterIterations
+                                                  : solver::iterationsAfterDrag(keepLengths);
     auto request = [&](quint64 tag, double t, int iterations, bool settle) {
         solver::SolveRequest r;
         // The bench tags each request with its move number (the application sends the

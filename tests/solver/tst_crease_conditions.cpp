@@ -80,6 +80,22 @@ double diameterOf(const model::CompositeSurface& s) {
     return solver::surfaceDiameter(s);
 }
 
+// The centroid of the vertices' positions in `surface`.
+Vec3 centroidOf(const model::CompositeSurface& surface, const std::vector<model::VertexId>& ids) {
+    Vec3 centre(0, 0, 0);
+    for (model::VertexId v : ids) {
+        centre = centre + surface.position(v) * (1.0 / static_cast<double>(ids.size()));
+    }
+    return centre;
+}
+
+// p turned by `angle` (radians) about the vertical through `centre`.
+Vec3 turnedAboutVertical(const Vec3& p, const Vec3& centre, double angle) {
+    const Vec3 d = p - centre;
+    return centre + Vec3(d.x * std::cos(angle) - d.y * std::sin(angle),
+                         d.x * std::sin(angle) + d.y * std::cos(angle), d.z);
+}
+
 } // namespace
 
 class TstCreaseConditions : public QObject {
@@ -208,16 +224,10 @@ private slots:
         // det 0, defect 0, mean fold 2.1°, shortest ruling 0.45, slowest speed 0.64.)
         const model::CompositeSurface start = model::makeExample("fig8").surfaces[0];
         const std::vector<model::VertexId> turned{5, 6, 9, 10};
-        Vec3 centre(0, 0, 0);
-        for (model::VertexId v : turned) {
-            centre = centre + start.position(v) * 0.25;
-        }
+        const Vec3 centre = centroidOf(start, turned);
         const model::CompositeSurface result =
             dragFig8(start, turned, [&](model::VertexId v, double t) {
-                const double angle = t * std::acos(-1.0) / 6.0;
-                const Vec3 d = start.position(v) - centre;
-                return centre + Vec3(d.x * std::cos(angle) - d.y * std::sin(angle),
-                                     d.x * std::sin(angle) + d.y * std::cos(angle), d.z);
+                return turnedAboutVertical(start.position(v), centre, t * std::acos(-1.0) / 6.0);
             });
         checkFig8(start, result, 0.0);
     }
@@ -233,22 +243,14 @@ private slots:
             dragFig8(flat, moved, [&](model::VertexId v, double t) {
                 return flat.position(v) + Vec3(0, 0, 85.0 * t);
             });
-        Vec3 centre(0, 0, 0);
-        for (model::VertexId v : moved) {
-            centre = centre + lifted.position(v) * 0.25;
-        }
+        const Vec3 centre = centroidOf(lifted, moved);
         const model::CompositeSurface result =
             dragFig8(lifted, moved, [&](model::VertexId v, double t) {
-                const double angle = t * std::acos(-1.0) / 6.0;
-                const Vec3 d = lifted.position(v) - centre;
-                return centre + Vec3(d.x * std::cos(angle) - d.y * std::sin(angle),
-                                     d.x * std::sin(angle) + d.y * std::cos(angle), d.z);
+                return turnedAboutVertical(lifted.position(v), centre, t * std::acos(-1.0) / 6.0);
             });
         for (model::VertexId v : moved) {
-            const Vec3 d = lifted.position(v) - centre;
-            const double angle = std::acos(-1.0) / 6.0;
-            const Vec3 expected = centre + Vec3(d.x * std::cos(angle) - d.y * std::sin(angle),
-                                                d.x * std::sin(angle) + d.y * std::cos(angle), d.z);
+            const Vec3 expected =
+                turnedAboutVertical(lifted.position(v), centre, std::acos(-1.0) / 6.0);
             QVERIFY((result.position(v) - expected).norm() < 1e-3);
         }
         checkFig8(lifted, result, 10.0);
