@@ -225,6 +225,11 @@ CompositeSurface makeFig8(int size) {
         const double amount = (j == 0 || j == size) ? 0.0 : bow;
         return Vec3(x, height * j / size + amount * std::sin(kPi * x / width), 0.0);
     };
+    auto creaseTangent = [&](int j, double x) {
+        const double amount = (j == 0 || j == size) ? 0.0 : bow;
+        const Vec3 t(1.0, amount * kPi / width * std::cos(kPi * x / width), 0.0);
+        return t / t.norm();
+    };
     std::vector<std::vector<VertexId>> grid(size + 1, std::vector<VertexId>(size + 1));
     for (int j = 0; j <= size; ++j) {
         for (int i = 0; i <= size; ++i) {
@@ -240,10 +245,18 @@ CompositeSurface makeFig8(int size) {
         for (int i = 0; i < size; ++i) {
             const double x0 = width * i / size;
             const double x1 = width * (i + 1) / size;
-            const EdgeId edge = s.setSpline(
-                grid[j][i], grid[j][i + 1], space,
+            std::vector<Vec3> points =
                 controlPointsAlong(space, s.position(grid[j][i]), s.position(grid[j][i + 1]),
-                                   [&](double t) { return crease(j, x0 + t * (x1 - x0)); }));
+                                   [&](double t) { return crease(j, x0 + t * (x1 - x0)); });
+            // The second and the last-but-one control point on the crease's tangent at the
+            // ends (at their sampled distances), so that consecutive segments meet
+            // tangent-continuously: the crease is one smooth curve through each vertex, as the
+            // solver keeps it, and Solve leaves the sheet where it is.
+            const std::size_t last = points.size() - 1;
+            points[1] = points[0] + creaseTangent(j, x0) * (points[1] - points[0]).norm();
+            points[last - 1] =
+                points[last] - creaseTangent(j, x1) * (points[last] - points[last - 1]).norm();
+            const EdgeId edge = s.setSpline(grid[j][i], grid[j][i + 1], space, points);
             if (j > 0 && j < size) {
                 s.setCreaseCondition(edge, CreaseCondition::CurvedFold);
             }

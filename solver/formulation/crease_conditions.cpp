@@ -73,8 +73,8 @@ int addCreaseConditions(const model::CompositeSurface& surface,
                         const std::vector<model::Strip>& strips,
                         const std::map<model::FaceId, StripNormalSpline>& normals,
                         const std::map<model::EdgeId, std::vector<int>>& edgePoints,
-                        int valuesPerInterval, BilinearTerm& term,
-                        std::vector<model::FaceId>& rowFaces, const OsculatingNormals& osculating) {
+                        int valuesPerInterval, CreaseConditionTerms& terms,
+                        const OsculatingNormals& osculating) {
     // Every edge with a condition must be a crease between two strips.
     std::map<model::EdgeId, model::Crease> creases;
     bool any = false;
@@ -148,15 +148,14 @@ int addCreaseConditions(const model::CompositeSurface& surface,
                          startOsculatingNormal(curve, strips[crease.left.strip], crease.left, u)});
                     continue;
                 }
-                const PointCombination n =
-                    simplified(plus(sideNormal(crease.left, left->second, u, 1.0),
-                                    sideNormal(crease.right, right->second, u, sign)));
+                const PointCombination n = sideNormal(crease.left, left->second, u, 1.0);
+                const PointCombination m = sideNormal(crease.right, right->second, u, sign);
                 for (int k = 0; k < 2; ++k) {
-                    if (d[k].empty() || n.empty()) {
+                    if (d[k].empty()) {
                         continue;
                     }
-                    term.addRow(n, d[k]);
-                    rowFaces.push_back(crease.left.face);
+                    terms.bisector.addRow(n, m, d[k]);
+                    terms.bisectorFaces.push_back(crease.left.face);
                     ++added;
                 }
             }
@@ -179,8 +178,8 @@ int addCreaseConditions(const model::CompositeSurface& surface,
         const model::FaceId face = creases.at(r.edge).left.face;
         for (const PointCombination* side : {&r.d[0], &r.d[1], &r.normal}) {
             if (!side->empty()) {
-                term.addRow(no, *side);
-                rowFaces.push_back(face);
+                terms.straight.addRow(no, *side);
+                terms.straightFaces.push_back(face);
                 ++added;
             }
         }

@@ -3,6 +3,7 @@
 #include "model/bspline_curve.h"
 #include "model/strip.h"
 #include "solver/core/bilinear_term.h"
+#include "solver/core/bisector_term.h"
 #include "solver/core/fairness_term.h"
 #include "solver/core/linear_term.h"
 #include "solver/core/minimum_length_term.h"
@@ -59,7 +60,8 @@ struct SurfaceFormulation::Builder {
     std::unique_ptr<UnitNormTerm> unitNormals = std::make_unique<UnitNormTerm>(3);
     std::unique_ptr<BilinearTerm> normalDefinitions = std::make_unique<BilinearTerm>(3);
     std::unique_ptr<BilinearTerm> planarity = std::make_unique<BilinearTerm>(3);
-    std::unique_ptr<BilinearTerm> creaseConditions = std::make_unique<BilinearTerm>(3);
+    std::unique_ptr<BisectorTerm> creaseConditions = std::make_unique<BisectorTerm>();
+    std::unique_ptr<BilinearTerm> straightCreases = std::make_unique<BilinearTerm>(3);
     std::map<FaceId, StripNormalSpline> stripNormals; // per strip, for the crease conditions
     std::unique_ptr<LinearTerm> smoothness = std::make_unique<LinearTerm>();
     std::unique_ptr<SquaredDistanceTerm> vertexStars = std::make_unique<SquaredDistanceTerm>(2, 3);
@@ -395,8 +397,9 @@ struct SurfaceFormulation::Builder {
     // (docs/math.md §5), at as many values per interval as (4) uses on a strip.
     void addCreaseConditions() {
         const int values = strips.empty() ? 7 : valuesPerInterval(strips.front());
-        solver::addCreaseConditions(surface, strips, stripNormals, edgeOffsets, values,
-                                    *creaseConditions, f.m_creaseFaces,
+        CreaseConditionTerms terms{*creaseConditions, f.m_creaseFaces, *straightCreases,
+                                   f.m_straightCreaseFaces};
+        solver::addCreaseConditions(surface, strips, stripNormals, edgeOffsets, values, terms,
                                     {f.m_problem, f.m_initialState, *unitNormals});
     }
 
@@ -511,6 +514,7 @@ struct SurfaceFormulation::Builder {
         f.m_planarity = planarity->rowCount() > 0 ? planarity.get() : nullptr;
         f.m_coneNormals = normalDefinitions->rowCount() > 0 ? normalDefinitions.get() : nullptr;
         f.m_creaseConditions = creaseConditions->rowCount() > 0 ? creaseConditions.get() : nullptr;
+        f.m_straightCreases = straightCreases->rowCount() > 0 ? straightCreases.get() : nullptr;
         f.m_pointFairness = fairness->rowCount() > 0 ? fairness.get() : nullptr;
         f.m_normalFairness = normalFairness->rowCount() > 0 ? normalFairness.get() : nullptr;
         f.m_unitControlNormals =
@@ -532,8 +536,11 @@ struct SurfaceFormulation::Builder {
         add("coneNormals", TermRole::Constraint, options.normalWeight,
             std::move(normalDefinitions));
         add("planarity", TermRole::Constraint, options.planarityWeight, std::move(planarity));
-        add("creaseConditions", TermRole::Constraint, options.creaseWeight,
-            std::move(creaseConditions));
+        if (const double w = options.creaseWeight; f.m_creaseConditions || f.m_straightCreases) {
+            const FamilyId id = p.addFamily("creaseConditions", TermRole::Constraint, w); // both
+            p.add(id, std::move(creaseConditions));
+            p.add(id, std::move(straightCreases));
+        }
         add("smoothRulings", TermRole::Constraint, options.smoothnessWeight, std::move(smoothness));
         add("vertexDevelopability", TermRole::Constraint, options.vertexDevelopabilityWeight,
             std::move(vertexStars));

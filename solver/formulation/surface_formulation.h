@@ -11,6 +11,7 @@
 namespace devsurf::solver {
 
 class BilinearTerm;
+class BisectorTerm;
 class FairnessTerm;
 class MinimumLengthTerm;
 class SquaredDistanceTerm;
@@ -123,6 +124,18 @@ struct FormulationOptions {
     // every curved fold straight as the isometry energy faded (fig6 lifted 60 mm: bow 0.0 mm
     // with weight 0.1, 33 mm without).
     bool normalFairnessAtCreaseConditions = true;
+    // The normal splines of the two strips beside a curved fold or a geodesic have unit length
+    // at u = 0 only, so the bilinear rows ⟨d, n_L ± n_R⟩ state (7) and (8) only where the two
+    // have equal lengths. true: setReferenceState weighs the two normals of every row by their
+    // lengths at the reference state (BisectorTerm::weighSidesAt), so that there the rows are
+    // (7) and (8) with unit normals and a valid fold stays where it is (measured: Solve moved
+    // fig6, lifted 60 mm keeping lengths and saved, by 18 % of its diameter; now 5e-9). false:
+    // weights 1. SolveSession uses false while something is pulled: over a drag the lengths at
+    // its start go stale, and measured with them fig6 lifted keeping lengths lost its crease's
+    // bow (12 of 30 mm, against 33 with weights 1); weighed again before every iteration the
+    // weights feed back into the lengths, and a valid fold without pins drifted away
+    // (residual 3e-13, 1e-8, 1e-2 over five iterations).
+    bool weighCreaseNormals = true;
     double unitControlNormalWeight = 0.1;
 
     // R-edges between two faces across which the unit normals must agree (smooth transition),
@@ -151,7 +164,8 @@ struct FormulationOptions {
     // the start), the crease is made tangent-continuous there (G¹, see
     // addVertexDevelopability) instead of the star's flat copy; that implies the angle sum 2π.
     // Measured on the scripted Fig. 8 lift (SolveSession, 20 moves + 10 iterations; the
-    // example's creases kink by 0.026 rad at its four crease vertices): with flat copies the
+    // example's creases then kinked by 0.026 rad at its four crease vertices, now they are
+    // tangent-continuous there, so Solve leaves the flat example put): with flat copies the
     // drag did not converge (residual 0.36, defect 2.5e-2 … 2.5 rad; with the session's final
     // ε₁ det 3e-14, defect 1e-13, but rulings at 3 % of their start length); with tangent
     // continuity det 5e-15, defect 0, rulings 0.78. 0.05 stays below the annulus example's
@@ -214,7 +228,8 @@ public:
     // The state of the given surface (the one passed to the constructor).
     const std::vector<double>& initialState() const { return m_initialState; }
 
-    // Makes x the reference state: the row scales of (4) and the guards' minimum ruling
+    // Makes x the reference state: the row scales of (4), the weights of the crease
+    // conditions' normals (weighCreaseNormals) and the guards' minimum ruling
     // lengths and curve speeds are taken from x (and, with relativeFairness, fairness
     // measures the change from x). The constructor uses the
     // initial state. Values only (the problem's structure is unchanged), so an interactive
@@ -226,7 +241,8 @@ public:
     // Multiplies the weight of that energy by `factor` (nothing without it).
     void scaleIsometryWeight(double factor);
 
-    // Developability (and planarity) residual of every face at state x: the largest |row|
+    // Developability, planarity and crease-condition residual of every face at state x (a
+    // crease counts towards its left strip): the largest |row|
     // of the face's rows, worst first. Where a solve did not reach its tolerance, these are the
     // faces to show.
     struct FaceResidual {
@@ -297,10 +313,13 @@ private:
     BilinearTerm* m_developability = nullptr;
     BilinearTerm* m_planarity = nullptr;
     BilinearTerm* m_coneNormals = nullptr;
-    BilinearTerm* m_creaseConditions = nullptr;
+    BisectorTerm* m_creaseConditions = nullptr; // curved folds and geodesics
+    BilinearTerm* m_straightCreases = nullptr;  // straight when unfolded
     std::vector<model::FaceId> m_developabilityFaces;
     std::vector<model::FaceId> m_planarityFaces;
-    std::vector<model::FaceId> m_creaseFaces;  // the left strip of every crease-condition row
+    // The left strip of every row of m_creaseConditions and of m_straightCreases.
+    std::vector<model::FaceId> m_creaseFaces;
+    std::vector<model::FaceId> m_straightCreaseFaces;
     std::vector<model::Vec3> m_originalPoints; // model coordinates of the given surface
 };
 

@@ -4,6 +4,7 @@
 #include "solver/formulation/surface_formulation.h"
 
 #include "solver/core/bilinear_term.h"
+#include "solver/core/bisector_term.h"
 #include "solver/core/fairness_term.h"
 #include "solver/core/minimum_length_term.h"
 #include "solver/core/squared_distance_term.h"
@@ -155,11 +156,17 @@ void SurfaceFormulation::setReferenceState(const std::vector<double>& x) {
                                     " values, expected " + std::to_string(m_initialState.size()) +
                                     ".");
     }
+    if (m_creaseConditions && m_options.weighCreaseNormals) {
+        m_creaseConditions->weighSidesAt(x.data());
+    }
     const double* scaleAt = m_options.normalizedRows ? x.data() : nullptr;
-    for (BilinearTerm* term : {m_developability, m_planarity, m_coneNormals, m_creaseConditions}) {
+    for (BilinearTerm* term : {m_developability, m_planarity, m_coneNormals, m_straightCreases}) {
         if (term) {
             term->scaleRowsAt(scaleAt);
         }
+    }
+    if (m_creaseConditions) {
+        m_creaseConditions->scaleRowsAt(scaleAt);
     }
     if (m_proximity) {
         // Rows are created point by point, coordinate by coordinate, from the first point.
@@ -224,7 +231,7 @@ void SurfaceFormulation::setReferenceState(const std::vector<double>& x) {
 std::vector<SurfaceFormulation::FaceResidual>
 SurfaceFormulation::faceResiduals(const std::vector<double>& x) const {
     std::map<model::FaceId, double> worst;
-    auto collect = [&](const BilinearTerm* term, const std::vector<model::FaceId>& faces) {
+    auto collect = [&](const auto* term, const std::vector<model::FaceId>& faces) {
         if (!term || x.size() != m_initialState.size()) {
             return;
         }
@@ -236,6 +243,8 @@ SurfaceFormulation::faceResiduals(const std::vector<double>& x) const {
     };
     collect(m_developability, m_developabilityFaces);
     collect(m_planarity, m_planarityFaces);
+    collect(m_creaseConditions, m_creaseFaces);
+    collect(m_straightCreases, m_straightCreaseFaces);
     std::vector<FaceResidual> result;
     for (const auto& [face, residual] : worst) {
         result.push_back({face, residual});

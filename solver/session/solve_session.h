@@ -20,6 +20,13 @@ Options defaultSessionSolverOptions();
 // the stars where it holds at the start (vertexStartDefectLimit 1e-6 rad).
 FormulationOptions defaultSessionFormulationOptions();
 
+// A start whose sampled developability residual and crease-condition residual (measureQuality,
+// measureCreaseQuality) are at most kNearlyValidResidual: a design that satisfies its
+// conditions up to a small error, such as the end of a drag, not a rough start. Invalid
+// surfaces are not.
+constexpr double kNearlyValidResidual = 1e-6;
+bool nearlyValid(const model::CompositeSurface& surface);
+
 // FormulationOptions::isometryWeight of a drag that keeps lengths (the desktop application's
 // Tools ▸ Lengths While Dragging ▸ Keep Lengths, `devsurf-cli drag --keep-lengths`): the sheet
 // bends instead of stretching. Measured (20 moves, 10 iterations after): lifting the annulus's

@@ -3,11 +3,13 @@
 // instead of being pulled straight. Everything is measured from the geometry.
 #include "model/composite_surface.h"
 #include "model/examples.h"
+#include "solver/formulation/perturbation.h"
 #include "solver/quality/crease_quality.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
 #include "solver/quality/vertex_stars.h"
 #include "solver/session/solve_session.h"
+#include "solver_test_problems.h"
 #include "test_registry.h"
 
 #include <QtTest>
@@ -124,6 +126,30 @@ private slots:
         QVERIFY2(creases.meanFoldDegrees > 45.0,
                  qPrintable(QString::number(creases.meanFoldDegrees)));
         QVERIFY(solver::measureShapeChange(start, result).shortestRuling > 0.9);
+    }
+
+    void solveLeavesTheFoldedFig6WhereItIs() {
+        // The fold of fig6FoldsAlongItsCurvedCrease (its crease condition held to about 3e-7)
+        // solved again as Tools ▸ Solve does: a new session, its normal splines started afresh
+        // from the geometry, nothing pulled, 10 iterations. It only corrects that error.
+        // (Measured: the largest move 3.4e-6 of the diameter, crease residual 3.2e-7 → 6.4e-8;
+        // before, 18 % with the crease rows ⟨d, n_L + n_R⟩ of normals of unequal lengths, 37 %
+        // with absolute fairness, see SolveSession and FormulationOptions::weighCreaseNormals.)
+        const model::CompositeSurface start = model::makeExample("fig6").surfaces[0];
+        const model::CompositeSurface folded =
+            drag(start, {4, 5}, [&](model::VertexId v, double t) {
+                return start.position(v) + Vec3(0, -30.0 * t, 60.0 * t);
+            });
+        QVERIFY(solver::measureCreaseQuality(folded).meanFoldDegrees > 45.0);
+        QVERIFY(solver::nearlyValid(folded));
+        solver::SolveSession session(folded, {});
+        QVERIFY(session.step(10).succeeded());
+        const double move = solver::testing::largestMove(folded, session.surface());
+        const double diameter = solver::surfaceDiameter(folded);
+        QVERIFY2(move <= 1e-4 * diameter, qPrintable(QString::number(move / diameter)));
+        const double before = solver::measureCreaseQuality(folded).residualMax;
+        const double after = solver::measureCreaseQuality(session.surface()).residualMax;
+        QVERIFY2(after < 0.5 * before, qPrintable(QString("%1 → %2").arg(before).arg(after)));
     }
 
     void fig8LiftedFoldsAlongCurvedCreases() {

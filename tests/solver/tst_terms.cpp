@@ -1,5 +1,6 @@
 #include "solver_test_problems.h"
 
+#include "solver/core/bisector_term.h"
 #include "solver/core/minimum_length_term.h"
 #include "test_registry.h"
 
@@ -75,6 +76,39 @@ private slots:
         std::vector<double> j(9);
         term.evaluate(x.data(), &r, j.data());
         QCOMPARE(r, 5.0);
+    }
+
+    void bisectorTerm() {
+        std::mt19937 rng(3);
+        BisectorTerm term;
+        for (int row = 0; row < 5; ++row) {
+            term.addRow(randomCombination(rng, kPoints, 3, 2),
+                        randomCombination(rng, kPoints, 3, 3),
+                        randomCombination(rng, kPoints, 3, 4));
+        }
+        // One point in all three combinations, and twice in one.
+        term.addRow({{0, 1.0}, {3, 0.5}}, {{0, -0.5}, {6, 1.0}}, {{0, 1.0}, {0, -0.25}});
+        checkAgainstFiniteDifferences(term, 3 * kPoints, 31);
+        const std::vector<double> reference = randomVector(rng, 3 * kPoints, 1.5);
+        term.weighSidesAt(reference.data());
+        term.scaleRowsAt(reference.data());
+        checkAgainstFiniteDifferences(term, 3 * kPoints, 32);
+        // Values at n = (2,0,0), m = (0,0,3): with weights 1 the bilinear ⟨d, n + m⟩, which is
+        // not zero for d = (1,5,−1) normal to the bisector (1,0,1) of n and m (2 − 3 = −1).
+        BisectorTerm value;
+        value.addRow({{0, 1.0}}, {{3, 1.0}}, {{6, 1.0}});
+        value.addRow({{0, 1.0}}, {{3, 1.0}}, {{9, 1.0}});
+        const std::vector<double> x{2, 0, 0, 0, 0, 3, 1, 0, 1, 1, 5, -1};
+        QCOMPARE(value.rowResidual(0, x.data()), 5.0);
+        QCOMPARE(value.rowResidual(1, x.data()), -1.0);
+        // Weighed at x, (w_n, w_m) = 2 (3, 2) / 5: w_n n + w_m m = (2.4, 0, 2.4) lies on the
+        // bisector, and that d gives zero whatever the lengths of n and m.
+        value.weighSidesAt(x.data());
+        QVERIFY(std::abs(value.rowResidual(0, x.data()) - 4.8) < 1e-14);
+        QVERIFY(std::abs(value.rowResidual(1, x.data())) < 1e-15);
+        // Scaled at x: the first row is the cosine of d and the bisector, 1.
+        value.scaleRowsAt(x.data());
+        QVERIFY(std::abs(value.rowResidual(0, x.data()) - 1.0) < 1e-14);
     }
 
     void unitNormTerm() {
