@@ -129,7 +129,8 @@ struct FormulationOptions {
     // have equal lengths. true: setReferenceState weighs the two normals of every row by their
     // lengths at the reference state (BisectorTerm::weighSidesAt), so that there the rows are
     // (7) and (8) with unit normals and a valid fold stays where it is (measured: Solve moved
-    // fig6, lifted 60 mm keeping lengths and saved, by 18 % of its diameter; now 5e-9). false:
+    // fig6, lifted 60 mm keeping lengths and saved, by 18 % of its diameter; with SolveSession's
+    // relative fairness for nearly valid starts now 3.4e-6). false:
     // weights 1. SolveSession uses false while something is pulled: over a drag the lengths at
     // its start go stale, and measured with them fig6 lifted keeping lengths lost its crease's
     // bow (12 of 30 mm, against 33 with weights 1); weighed again before every iteration the
