@@ -286,7 +286,23 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="297"/>
+        <location filename="../app/gui/solve_controller.cpp" line="149"/>
+        <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
+        <translation>
+            <numerusform>Check the shape: %n patch folds over onto itself (%1); undo, or pin or move differently.</numerusform>
+            <numerusform>Check the shape: %n patches fold over onto themselves (%1); undo, or pin or move differently.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/solve_controller.cpp" line="237"/>
+        <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
+        <translation>
+            <numerusform>; %n patch folds over onto itself, where the surface overlaps itself: %1</numerusform>
+            <numerusform>; %n patches fold over onto themselves, where the surface overlaps itself: %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/solve_controller.cpp" line="332"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Solved: %n iteration, largest constraint residual %1.</numerusform>
@@ -294,7 +310,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="301"/>
+        <location filename="../app/gui/solve_controller.cpp" line="336"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n surface left as it was: solving made it less developable.</numerusform>
@@ -302,7 +318,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="329"/>
+        <location filename="../app/gui/solve_controller.cpp" line="364"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, kept developable: %n iteration, largest constraint residual %2.</numerusform>

@@ -4,6 +4,7 @@
 #include "model/model_error.h"
 #include "solver/formulation/perturbation.h"
 #include "solver/quality/quality_measures.h"
+#include "solver/quality/shape_change.h"
 #include "solver/session/solve_session.h"
 
 #include <QString>
@@ -172,6 +173,7 @@ int runSolveCommand(const std::vector<std::string>& positional,
         }
         reportTolerance(*session, last);
         surface = session->surface();
+        std::cout << solver::describeFoldOvers(solver::foldOvers(surface)) << "\n";
     }
     io::saveProjectFile(project, QString::fromStdString(output));
     std::cout << "Wrote " << output << "\n";

@@ -3,6 +3,7 @@
 #include "model/document/commands/apply_surface_command.h"
 #include "model/document/document.h"
 #include "solver/quality/quality_measures.h"
+#include "solver/quality/shape_change.h"
 #include "solver/worker/solver_worker.h"
 #include "workspace.h"
 
@@ -136,6 +137,21 @@ QString SolveController::cancelledSentence(const QString& reason) const {
                             : tr("Solve cancelled: %1; the design is unchanged.").arg(reason);
 }
 
+QString SolveController::foldedOverSentence(const SolveReport& report) const {
+    if (report.foldedOver.isEmpty()) {
+        return {};
+    }
+    QStringList patches;
+    for (int face : report.foldedOver) {
+        patches << QString::number(face);
+    }
+    return QLatin1Char(' ') +
+           tr("Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or "
+              "move differently.",
+              nullptr, static_cast<int>(patches.size()))
+               .arg(patches.join(QStringLiteral(", ")));
+}
+
 QString SolveController::failedSentence(const QString& error) const {
     return m_editSurface >= 0 ? tr("%1 failed: %2 Nothing moved.").arg(m_editTitle, error)
                               : tr("Solve failed: %1 The design is unchanged.").arg(error);
@@ -208,6 +224,22 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result,
                                    QString::number(kept.after, 'e', 1));
             }
         }
+        if (s < result.surfaces.size()) {
+            // A result that folds over onto itself satisfies the conditions but is no surface
+            // a sheet can take (e.g. a flat design pushed within its plane): said, not hidden.
+            QStringList patches;
+            for (const auto& [face, places] : solver::foldOvers(result.surfaces[s])) {
+                (void)places;
+                patches << QString::number(face);
+                report.foldedOver << static_cast<int>(face);
+            }
+            if (!patches.isEmpty()) {
+                status += tr("; %n patch(es) fold over onto themselves, where the surface "
+                             "overlaps itself: %1",
+                             nullptr, static_cast<int>(patches.size()))
+                              .arg(patches.join(QStringLiteral(", ")));
+            }
+        }
         statuses << (result.summaries.size() > 1 ? tr("surface %1 %2").arg(s + 1).arg(status)
                                                  : status);
         if (!summary.toleranceReached && s < result.surfaces.size()) {
@@ -229,7 +261,8 @@ void SolveController::onResult(const solver::SolveResult& result) {
         return; // a drag's result, or one of a solve that was cancelled or superseded
     }
     const QString title = m_editSurface >= 0 ? m_editTitle : tr("Solve");
-    emit reportReady(reportOf(result, title));
+    const SolveReport report = reportOf(result, title);
+    emit reportReady(report);
     if (result.cancelled) {
         stop(cancelledSentence(QString()));
         return;
@@ -239,7 +272,7 @@ void SolveController::onResult(const solver::SolveResult& result) {
         return;
     }
     if (m_editSurface >= 0) {
-        applyEdit(result);
+        applyEdit(result, report);
         return;
     }
     document::Document* doc = m_workspace->document();
@@ -303,10 +336,10 @@ void SolveController::onResult(const solver::SolveResult& result) {
                     tr("%n surface(s) left as they were: solving made them less developable.",
                        nullptr, static_cast<int>(result.kept.size()));
     }
-    stop(sentence);
+    stop(sentence + foldedOverSentence(report));
 }
 
-void SolveController::applyEdit(const solver::SolveResult& result) {
+void SolveController::applyEdit(const solver::SolveResult& result, const SolveReport& report) {
     document::Document* doc = m_workspace->document();
     const auto s = static_cast<std::size_t>(m_editSurface);
     if (doc->revision() != result.revision || s >= result.surfaces.size() ||
@@ -330,7 +363,8 @@ void SolveController::applyEdit(const solver::SolveResult& result) {
     const solver::Summary& summary = result.summaries[s];
     stop(tr("%1, kept developable: %n iteration(s), largest constraint residual %2.", nullptr,
             summary.iterationsCompleted)
-             .arg(m_editTitle, QString::number(summary.finalMaxConstraintResidual, 'e', 2)));
+             .arg(m_editTitle, QString::number(summary.finalMaxConstraintResidual, 'e', 2)) +
+         foldedOverSentence(report));
 }
 
 } // namespace devsurf::app

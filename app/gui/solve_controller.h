@@ -68,10 +68,12 @@ private:
     void onResult(const solver::SolveResult& result);
     void onDocumentChanged();
     void stop(const QString& sentence);
-    void applyEdit(const solver::SolveResult& result);
+    void applyEdit(const solver::SolveResult& result, const SolveReport& report);
     // The sentences of a solve or of an edit's solve.
     QString cancelledSentence(const QString& reason) const;
     QString failedSentence(const QString& error) const;
+    // Names the patches of `report` that fold over onto themselves (empty if none).
+    QString foldedOverSentence(const SolveReport& report) const;
 
     Workspace* m_workspace;
     solver::SolverWorker* m_worker;

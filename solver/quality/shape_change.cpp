@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -144,6 +146,47 @@ ShapeChange measureShapeChange(const model::CompositeSurface& start,
     }
     change.creaseFoldMean = count > 0 ? sum / count : 0.0;
     return change;
+}
+
+std::vector<std::pair<model::FaceId, int>> foldOvers(const model::CompositeSurface& surface,
+                                                     int samplesPerInterval) {
+    model::SampledMesh mesh;
+    try {
+        mesh = model::sampleSurface(surface, std::max(1, samplesPerInterval));
+    } catch (const std::exception&) {
+        return {}; // an invalid surface has no patches to measure
+    }
+    std::map<model::FaceId, int> places;
+    for (const auto& [edge, faces] : edgeFaces(mesh)) {
+        (void)edge;
+        if (faces.second < 0) {
+            continue;
+        }
+        const auto first = static_cast<std::size_t>(faces.first);
+        const auto second = static_cast<std::size_t>(faces.second);
+        // Turned by more than 90°: the normals point to opposite half-spaces.
+        if (mesh.faceOrigin[first] == mesh.faceOrigin[second] &&
+            dot(faceNormal(mesh, mesh.faces[first]), faceNormal(mesh, mesh.faces[second])) < 0.0) {
+            ++places[mesh.faceOrigin[first]];
+        }
+    }
+    std::vector<std::pair<model::FaceId, int>> result(places.begin(), places.end());
+    std::stable_sort(result.begin(), result.end(),
+                     [](const auto& a, const auto& b) { return a.second > b.second; });
+    return result;
+}
+
+std::string describeFoldOvers(const std::vector<std::pair<model::FaceId, int>>& foldOvers) {
+    if (foldOvers.empty()) {
+        return "No face folds over onto itself.";
+    }
+    std::string text = "Folded over onto itself:";
+    for (std::size_t i = 0; i < foldOvers.size(); ++i) {
+        text += (i == 0 ? " face " : ", face ") + std::to_string(foldOvers[i].first) + " (" +
+                std::to_string(foldOvers[i].second) +
+                (foldOvers[i].second == 1 ? " place)" : " places)");
+    }
+    return text + ".";
 }
 
 } // namespace devsurf::solver

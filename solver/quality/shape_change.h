@@ -2,6 +2,10 @@
 
 #include "model/composite_surface.h"
 
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace devsurf::solver {
 
 // How a solve changed a surface, from the geometry of the start and the result (same
@@ -25,5 +29,19 @@ struct ShapeChange {
 // Throws model::ModelError if a surface is not valid; the two must share their combinatorics.
 ShapeChange measureShapeChange(const model::CompositeSurface& start,
                                const model::CompositeSurface& result, int samplesPerInterval = 8);
+
+// Where a patch folds over onto itself: the number of pairs of neighbouring sampled faces of
+// the mesh (V,E,F) (samplesPerInterval per spline interval) that belong to the same face of
+// the surface and whose normals turn by more than 90°, per face, most first. A developable
+// patch's normal turns smoothly and never reverses between neighbouring samples; it does
+// where the patch is folded back onto itself, e.g. a flat sheet pushed within its own plane
+// until it overlaps itself. (Creases between two faces may fold by any angle and are not
+// counted.) Empty for an invalid surface.
+std::vector<std::pair<model::FaceId, int>> foldOvers(const model::CompositeSurface& surface,
+                                                     int samplesPerInterval = 8);
+
+// One sentence for the command line naming the faces of foldOvers(): "Folded over onto itself:
+// face 3 (2 places), face 5 (1 place)." or "No face folds over onto itself."
+std::string describeFoldOvers(const std::vector<std::pair<model::FaceId, int>>& foldOvers);
 
 } // namespace devsurf::solver

@@ -1,4 +1,5 @@
 #include "drag_tool.h"
+#include "folded_strip.h"
 #include "io/project_file.h"
 #include "main_window.h"
 #include "model/document/commands/move_vertices_command.h"
@@ -205,6 +206,26 @@ private slots:
         QCOMPARE(bytesOf(window), before);
         doc->undoStack()->redo();
         QCOMPARE(bytesOf(window), after);
+    }
+
+    void aResultThatFoldsOverOntoItselfIsReportedWithItsPatches() {
+        app::MainWindow window;
+        solver::SolveResult result;
+        result.ok = true;
+        result.summaries.resize(1);
+        result.summaries[0].iterations.resize(1);
+        result.summaries[0].iterationsCompleted = 1;
+        result.summaries[0].toleranceReached = true;
+        result.surfaces = {test::flatStrip(-150.0)};
+        const app::SolveReport folded = window.solveController()->reportOf(result, "Drag 1 vertex");
+        QCOMPARE(folded.foldedOver, QList<int>{0});
+        QVERIFY2(folded.status.contains(QStringLiteral("1 patch folds over onto itself")) &&
+                     folded.status.contains(QStringLiteral("overlaps itself: 0")),
+                 qPrintable(folded.status));
+        result.surfaces = {test::flatStrip(100.0)};
+        const app::SolveReport flat = window.solveController()->reportOf(result, "Drag 1 vertex");
+        QVERIFY(flat.foldedOver.isEmpty());
+        QVERIFY2(!flat.status.contains(QStringLiteral("fold over")), qPrintable(flat.status));
     }
 
     void solveMakesALiftedDesignDevelopableAndKeepsPinsBitForBit() {

@@ -1,7 +1,9 @@
+#include "folded_strip.h"
 #include "solver_test_models.h"
 
 #include "model/examples.h"
 #include "solver/quality/quality_measures.h"
+#include "solver/quality/shape_change.h"
 
 #include "test_registry.h"
 
@@ -62,6 +64,23 @@ private slots:
             QVERIFY(std::abs(q.developabilityMax - expected) < 1e-14);
             QCOMPARE(q.developabilitySamples, 50);
         }
+    }
+
+    void foldOversFindAPatchFoldedBackOntoItself() {
+        const auto folded = foldOvers(test::flatStrip(-150.0));
+        QCOMPARE(folded.size(), std::size_t{1});
+        QCOMPARE(folded.front().first, model::FaceId{0});
+        // b crosses a twice, between the samples u = 1/8 and 2/8 and between 6/8 and 7/8.
+        QCOMPARE(folded.front().second, 2);
+        QCOMPARE(describeFoldOvers(folded),
+                 std::string("Folded over onto itself: face 0 (2 places)."));
+        // Flat, bent or folded along creases, but never back onto itself.
+        QVERIFY(foldOvers(test::flatStrip(100.0)).empty());
+        QCOMPARE(describeFoldOvers({}), std::string("No face folds over onto itself."));
+        for (const char* name : {"sheet", "annulus", "cylinder", "mixed", "fig6", "fig8"}) {
+            QVERIFY2(foldOvers(model::makeExample(name).surfaces.front()).empty(), name);
+        }
+        QVERIFY(foldOvers(testing::makeGeneralizedCylinder(1.0)).empty());
     }
 
     void generalizedCylinderIsDevelopable() {

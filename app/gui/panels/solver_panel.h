@@ -18,6 +18,7 @@ struct SolveReport {
     QString status; // one sentence: converged, iteration limit, cancelled, failed (and why)
     std::vector<solver::Summary> summaries; // per surface (empty summaries are skipped)
     QStringList worstFaces;                 // filled when the tolerance was not reached
+    QList<int> foldedOver; // patches that fold over onto themselves (solver::foldOvers)
     double elapsedMs = 0.0;
 };
 
