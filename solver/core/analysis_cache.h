@@ -20,7 +20,7 @@ struct CachedAnalysis {
     // The key: the normal matrix's upper-triangle pattern in the original variable order
     // (CSC) and the requested method. Hits are confirmed on the whole pattern, not the hash.
     int variables = 0;
-    FactorizationMethod method = FactorizationMethod::Measured;
+    FactorizationMethod method = FactorizationMethod::Calibrated;
     std::uint64_t hash = 0;
     std::vector<int> colStart;
     std::vector<int> rowIndex;

@@ -10,12 +10,27 @@ struct IterationStats;
 enum class FactorizationMethod {
     Supernodal, // CHOLMOD supernodal LLᵀ (BLAS-3)
     Simplicial, // CHOLMOD simplicial LDLᵀ
-    Automatic,  // CHOLMOD's own choice from the flop count per nonzero of L
-    // Both, timed once per structure on the first iterate; the faster is kept. Measured:
-    // simplicial wins up to a few thousand variables (1.2 vs 3.0 ms on the 1,704-variable
-    // annulus, where CHOLMOD's own choice is supernodal), supernodal on 40,000 (89 vs 108 ms).
+    // CHOLMOD's own choice: supernodal once the factorisation's flops per non-zero of L reach
+    // 40 (its default switch).
+    Automatic,
+    // Both, timed once per structure (in a process) on the first iterate; the faster is kept.
+    // The timing costs four factorisations and, near a tie or under load, differs between runs,
+    // so that two runs of the same input can take different factorisations and end a few
+    // ulps apart (the annulus lifted 100 mm keeping lengths: 1.3e-7 of its diameter).
     Measured,
+    // The same rule as Automatic with the switch kCalibratedSupernodalSwitch that measurement
+    // on our stack gives: decided by the structure alone, so identical input gives
+    // bit-identical results in every run, with no timing at the first iterate. The default.
+    Calibrated,
 };
+
+// The flops per non-zero of L from which the supernodal factorisation is faster with the
+// single-threaded OpenBLAS that setup.sh selects. Measured per iteration (simplicial /
+// supernodal ms) on the annulus at sizes 6 … 28 (2,144 … 45,732 variables; flops / nnz(L)
+// 55 … 213): 2.3 / 5.8 at 55, 30 / 41 at 106, 55 / 74 at 129, 95 / 93 at 158, 175 / 144 at
+// 195, 267 / 195 at 213; the bench's models all lie below 115 (large-annulus, 40,200
+// variables: 203 / 271 ms on the first iterate) and take the simplicial one.
+inline constexpr double kCalibratedSupernodalSwitch = 155.0;
 
 // Options of GuidedProjection::solve (in the style of Ceres' Solver::Options).
 struct Options {
@@ -104,7 +119,7 @@ struct Options {
     // its report say whether it did (it does not stop the iteration, residualTolerance does).
     double reportTolerance = 1e-8;
 
-    FactorizationMethod factorization = FactorizationMethod::Measured;
+    FactorizationMethod factorization = FactorizationMethod::Calibrated;
 
     // Benchmark reference: rebuild the normal matrix from triplets and run a full symbolic and
     // numeric factorisation every iteration (same terms, no caching).

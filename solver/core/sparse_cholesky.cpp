@@ -11,6 +11,9 @@ namespace devsurf::solver {
 
 namespace {
 
+// CHOLMOD's default switch between simplicial and supernodal (flops per non-zero of L).
+constexpr double kCholmodSupernodalSwitch = 40.0;
+
 // The supernodal factorisation and solve call the BLAS and LAPACK. The BLAS that setup.sh
 // selects (Debian's single-threaded OpenBLAS) is built without locking: two threads inside it
 // at once corrupt each other's buffers (two solver workers on the same structure failed with
@@ -101,6 +104,11 @@ struct SparseCholesky::Impl {
         case FactorizationMethod::Automatic:
         case FactorizationMethod::Measured:
             common.supernodal = CHOLMOD_AUTO;
+            common.supernodal_switch = kCholmodSupernodalSwitch;
+            break;
+        case FactorizationMethod::Calibrated:
+            common.supernodal = CHOLMOD_AUTO;
+            common.supernodal_switch = kCalibratedSupernodalSwitch;
             break;
         }
     }

@@ -139,7 +139,7 @@ solver::Summary solveFrom(const solver::Problem& problem, std::vector<double>& x
     o.maxIterations = options.iterations;
     o.eps2 = options.eps2;
     o.baseline = baseline;
-    // Ours: supernodal or simplicial by measurement (the default); the baseline takes
+    // Ours: supernodal or simplicial by the calibrated switch (the default); the baseline takes
     // CHOLMOD's own choice, as a rebuild-everything implementation would.
     if (baseline) {
         o.factorization = solver::FactorizationMethod::Automatic;

@@ -203,6 +203,7 @@ private slots:
         QTest::newRow("simplicial") << static_cast<int>(FactorizationMethod::Simplicial);
         QTest::newRow("automatic") << static_cast<int>(FactorizationMethod::Automatic);
         QTest::newRow("measured") << static_cast<int>(FactorizationMethod::Measured);
+        QTest::newRow("calibrated") << static_cast<int>(FactorizationMethod::Calibrated);
     }
 
     void circleConverges() {
