@@ -54,6 +54,28 @@ std::map<std::pair<int, int>, std::pair<int, int>> edgeFaces(const model::Sample
     return result;
 }
 
+// Per face of the surface, the pairs of neighbouring sampled faces of it whose normals turn
+// by more than 90° (see foldOvers).
+std::map<model::FaceId, int>
+foldOverPlaces(const model::SampledMesh& mesh,
+               const std::map<std::pair<int, int>, std::pair<int, int>>& faces) {
+    std::map<model::FaceId, int> places;
+    for (const auto& [edge, pair] : faces) {
+        (void)edge;
+        if (pair.second < 0) {
+            continue;
+        }
+        const auto first = static_cast<std::size_t>(pair.first);
+        const auto second = static_cast<std::size_t>(pair.second);
+        // Turned by more than 90°: the normals point to opposite half-spaces.
+        if (mesh.faceOrigin[first] == mesh.faceOrigin[second] &&
+            dot(faceNormal(mesh, mesh.faces[first]), faceNormal(mesh, mesh.faces[second])) < 0.0) {
+            ++places[mesh.faceOrigin[first]];
+        }
+    }
+    return places;
+}
+
 } // namespace
 
 ShapeChange measureShapeChange(const model::CompositeSurface& start,
@@ -145,6 +167,10 @@ ShapeChange measureShapeChange(const model::CompositeSurface& start,
         }
     }
     change.creaseFoldMean = count > 0 ? sum / count : 0.0;
+    for (const auto& [face, places] : foldOverPlaces(after, afterEdges)) {
+        (void)face;
+        change.foldOverPlaces += places;
+    }
     return change;
 }
 
@@ -156,20 +182,7 @@ std::vector<std::pair<model::FaceId, int>> foldOvers(const model::CompositeSurfa
     } catch (const std::exception&) {
         return {}; // an invalid surface has no patches to measure
     }
-    std::map<model::FaceId, int> places;
-    for (const auto& [edge, faces] : edgeFaces(mesh)) {
-        (void)edge;
-        if (faces.second < 0) {
-            continue;
-        }
-        const auto first = static_cast<std::size_t>(faces.first);
-        const auto second = static_cast<std::size_t>(faces.second);
-        // Turned by more than 90°: the normals point to opposite half-spaces.
-        if (mesh.faceOrigin[first] == mesh.faceOrigin[second] &&
-            dot(faceNormal(mesh, mesh.faces[first]), faceNormal(mesh, mesh.faces[second])) < 0.0) {
-            ++places[mesh.faceOrigin[first]];
-        }
-    }
+    const std::map<model::FaceId, int> places = foldOverPlaces(mesh, edgeFaces(mesh));
     std::vector<std::pair<model::FaceId, int>> result(places.begin(), places.end());
     std::stable_sort(result.begin(), result.end(),
                      [](const auto& a, const auto& b) { return a.second > b.second; });

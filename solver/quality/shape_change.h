@@ -24,6 +24,8 @@ struct ShapeChange {
     double startNormalAngleMean = 0.0;
     // Largest distance of a vertex or control point from its start position.
     double largestMove = 0.0;
+    // Places where the result folds over onto itself (the sum over foldOvers(result)).
+    int foldOverPlaces = 0;
 };
 
 // Throws model::ModelError if a surface is not valid; the two must share their combinatorics.

@@ -377,6 +377,8 @@ void writeJson(const std::vector<ModelResult>& results, const solver::BlasInfo& 
                     << number(m.startAngleMedian * kDegrees)
                     << ", \"fold_over_start_angle_worst\": " << number(m.foldOverStartWorst)
                     << ", \"fold_over_start_angle_median\": " << number(m.foldOverStartMedian)
+                    << ", \"seeds_folded_over_onto_themselves\": " << m.foldedOverSeeds
+                    << ", \"fold_over_places_worst\": " << m.foldOverPlacesWorst
                     << ", \"ms_per_iter_median\": " << number(q.msPerIteration) << " }";
             }
             out << "\n      ]";

@@ -38,6 +38,7 @@ struct DragBenchRow {
     double largestStallMs = 0.0; // largest gap between ticks of a 1 ms timer
     double releaseMs = 0.0;      // release to the last iterations applied
     double residualAfter = 0.0;  // largest constraint residual after the release iterations
+    int foldOvers = 0;           // places where the result folds over onto itself (foldOvers)
     std::string error;           // empty unless the drag failed
 };
 

@@ -119,6 +119,10 @@ StudySummary summarize(const std::vector<StudyRun>& runs) {
     std::tie(s.foldWorst, s.foldMedian) = worstAndMedian(fold, true);
     s.startAngleMedian = worstAndMedian(startAngle, true).second;
     std::tie(s.foldOverStartWorst, s.foldOverStartMedian) = worstAndMedian(ratio, true);
+    for (const StudyRun& r : runs) {
+        s.foldedOverSeeds += r.change.foldOverPlaces > 0 ? 1 : 0;
+        s.foldOverPlacesWorst = std::max(s.foldOverPlacesWorst, r.change.foldOverPlaces);
+    }
     return s;
 }
 

@@ -50,6 +50,9 @@ struct StudySummary {
     double foldWorst = 0.0, foldMedian = 0.0; // radians
     double startAngleMedian = 0.0;            // radians
     double foldOverStartWorst = 0.0, foldOverStartMedian = 0.0;
+    // Seeds whose result folds over onto itself somewhere, and the most places in one result.
+    int foldedOverSeeds = 0;
+    int foldOverPlacesWorst = 0;
 };
 
 double meanControlEdgeLength(const model::CompositeSurface& surface);
