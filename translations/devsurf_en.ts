@@ -134,7 +134,7 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="364"/>
+        <location filename="../app/gui/main_window.cpp" line="368"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n surface</numerusform>
@@ -142,7 +142,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="365"/>
+        <location filename="../app/gui/main_window.cpp" line="369"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n patch</numerusform>
@@ -150,7 +150,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="366"/>
+        <location filename="../app/gui/main_window.cpp" line="370"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n control point</numerusform>
@@ -158,7 +158,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="367"/>
+        <location filename="../app/gui/main_window.cpp" line="371"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n selected</numerusform>
@@ -294,7 +294,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="237"/>
+        <location filename="../app/gui/solve_controller.cpp" line="239"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n patch folds over onto itself, where the surface overlaps itself: %1</numerusform>
@@ -302,7 +302,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="332"/>
+        <location filename="../app/gui/solve_controller.cpp" line="336"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Solved: %n iteration, largest constraint residual %1.</numerusform>
@@ -310,7 +310,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="336"/>
+        <location filename="../app/gui/solve_controller.cpp" line="340"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n surface left as it was: solving made it less developable.</numerusform>
@@ -318,7 +318,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="364"/>
+        <location filename="../app/gui/solve_controller.cpp" line="368"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, kept developable: %n iteration, largest constraint residual %2.</numerusform>
@@ -329,7 +329,7 @@
 <context>
     <name>devsurf::app::SolverPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="45"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="54"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration in %3 ms.</numerusform>

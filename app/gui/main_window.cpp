@@ -128,6 +128,10 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::LeftDockWidgetArea, solverDock);
     connect(m_solveController, &SolveController::reportReady, m_solverPanel,
             &SolverPanel::showReport);
+    connect(m_solverPanel, &SolverPanel::selectPatches, this,
+            [this](const std::set<document::Pick>& patches) {
+                m_workspace->selection()->set(patches);
+            });
 }
 
 void MainWindow::createMenus() {

@@ -232,6 +232,8 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result,
                 (void)places;
                 patches << QString::number(face);
                 report.foldedOver << static_cast<int>(face);
+                report.patchesToCheck.insert(
+                    {document::Pick::Kind::Face, static_cast<int>(s), face});
             }
             if (!patches.isEmpty()) {
                 status += tr("; %n patch(es) fold over onto themselves, where the surface "
@@ -248,6 +250,8 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result,
                 report.worstFaces << tr("patch %1: %2")
                                          .arg(faces[i].first)
                                          .arg(QString::number(faces[i].second, 'e', 1));
+                report.patchesToCheck.insert(
+                    {document::Pick::Kind::Face, static_cast<int>(s), faces[i].first});
             }
         }
     }

@@ -21,6 +21,8 @@
 #include <QAction>
 #include <QApplication>
 #include <QMenu>
+#include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTest>
@@ -219,13 +221,27 @@ private slots:
         result.surfaces = {test::flatStrip(-150.0)};
         const app::SolveReport folded = window.solveController()->reportOf(result, "Drag 1 vertex");
         QCOMPARE(folded.foldedOver, QList<int>{0});
-        QVERIFY2(folded.status.contains(QStringLiteral("1 patch folds over onto itself")) &&
+        // (English plural forms apply once the application's translators are installed.)
+        QVERIFY2(folded.status.contains(QRegularExpression(QStringLiteral(
+                     "1 patch(\\(es\\) fold over onto themselves| folds over onto itself)"))) &&
                      folded.status.contains(QStringLiteral("overlaps itself: 0")),
                  qPrintable(folded.status));
+        // The Solver panel's button selects the patch (face 0 of surface 0) in the views.
+        window.workspace()->newFromExample(QStringLiteral("sheet"), 0);
+        const std::set<document::Pick> patch{{document::Pick::Kind::Face, 0, 0}};
+        QVERIFY(folded.patchesToCheck == patch);
+        window.solverPanel()->showReport(folded);
+        QPushButton* select = window.solverPanel()->selectPatchesButton();
+        QVERIFY(select->isEnabled());
+        select->click();
+        QVERIFY(window.workspace()->selection()->picks() == patch);
+
         result.surfaces = {test::flatStrip(100.0)};
         const app::SolveReport flat = window.solveController()->reportOf(result, "Drag 1 vertex");
-        QVERIFY(flat.foldedOver.isEmpty());
+        QVERIFY(flat.foldedOver.isEmpty() && flat.patchesToCheck.empty());
         QVERIFY2(!flat.status.contains(QStringLiteral("fold over")), qPrintable(flat.status));
+        window.solverPanel()->showReport(flat);
+        QVERIFY(!select->isEnabled());
     }
 
     void solveMakesALiftedDesignDevelopableAndKeepsPinsBitForBit() {

@@ -3,13 +3,15 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
+#include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
 namespace devsurf::app {
 
 SolverPanel::SolverPanel(QWidget* parent)
-    : QWidget(parent), m_status(new QLabel(this)), m_table(new QTableWidget(this)) {
+    : QWidget(parent), m_status(new QLabel(this)), m_table(new QTableWidget(this)),
+      m_selectPatches(new QPushButton(tr("Select Patches to Check"), this)) {
     setObjectName(QStringLiteral("SolverPanel"));
     auto* layout = new QVBoxLayout(this);
     m_status->setWordWrap(true);
@@ -32,7 +34,14 @@ SolverPanel::SolverPanel(QWidget* parent)
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
+    m_selectPatches->setObjectName(QStringLiteral("SelectPatchesToCheck"));
+    m_selectPatches->setToolTip(tr("Selects the patches the last solve names: the least "
+                                   "developable ones and those that fold over onto themselves"));
+    m_selectPatches->setEnabled(false);
+    connect(m_selectPatches, &QPushButton::clicked, this,
+            [this] { emit selectPatches(m_patches); });
     layout->addWidget(m_status);
+    layout->addWidget(m_selectPatches);
     layout->addWidget(m_table, 1);
 }
 
@@ -61,6 +70,8 @@ void SolverPanel::showReport(const SolveReport& report) {
             ++row;
         }
     }
+    m_patches = report.patchesToCheck;
+    m_selectPatches->setEnabled(!m_patches.empty());
     m_worst = report.worstFaces.join(QStringLiteral(", "));
     if (!m_worst.isEmpty()) {
         m_status->setText(m_status->text() +

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "model/document/selection.h"
 #include "solver/core/summary.h"
 
 #include <QStringList>
@@ -8,6 +9,7 @@
 #include <vector>
 
 class QLabel;
+class QPushButton;
 class QTableWidget;
 
 namespace devsurf::app {
@@ -19,6 +21,8 @@ struct SolveReport {
     std::vector<solver::Summary> summaries; // per surface (empty summaries are skipped)
     QStringList worstFaces;                 // filled when the tolerance was not reached
     QList<int> foldedOver; // patches that fold over onto themselves (solver::foldOvers)
+    // Every patch named above (least developable, folded over), for selecting them.
+    std::set<document::Pick> patchesToCheck;
     double elapsedMs = 0.0;
 };
 
@@ -34,11 +38,19 @@ public:
     // Rows of the iteration table (one per iteration of every solved surface).
     int iterationRows() const;
     QString worstFacesText() const;
+    // The button that selects the patches the last report names (disabled if it names none).
+    QPushButton* selectPatchesButton() const { return m_selectPatches; }
+
+signals:
+    // The designer asked to select the patches the last report names.
+    void selectPatches(const std::set<devsurf::document::Pick>& patches);
 
 private:
     QLabel* m_status;
     QTableWidget* m_table;
+    QPushButton* m_selectPatches;
     QString m_worst;
+    std::set<document::Pick> m_patches;
 };
 
 } // namespace devsurf::app
