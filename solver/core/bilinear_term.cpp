@@ -1,5 +1,7 @@
 #include "solver/core/bilinear_term.h"
 
+#include "solver/core/row_scales.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -70,25 +72,7 @@ void BilinearTerm::scaleRowsAt(const double* reference) {
         const double product = std::sqrt(uu * vv);
         m_scale[r] = product > 0.0 && std::isfinite(1.0 / product) ? 1.0 / product : 0.0;
     }
-    // Scales stay within a factor 100 of the median: a side that nearly vanishes at the
-    // reference (a normal spline passing close to zero on a rough start) would otherwise make
-    // its row dominate every other.
-    std::vector<double> sorted;
-    for (double v : m_scale) {
-        if (v > 0.0) {
-            sorted.push_back(v);
-        }
-    }
-    if (sorted.empty()) {
-        std::fill(m_scale.begin(), m_scale.end(), 1.0);
-        return;
-    }
-    std::nth_element(sorted.begin(),
-                     sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
-    const double median = sorted[sorted.size() / 2];
-    for (double& v : m_scale) {
-        v = v > 0.0 ? std::clamp(v, median / 100.0, median * 100.0) : median;
-    }
+    clampScalesToMedian(m_scale);
 }
 
 int BilinearTerm::evaluateOne(std::size_t r, const double* x, double* residual,

@@ -1,5 +1,7 @@
 #include "solver/core/bisector_term.h"
 
+#include "solver/core/row_scales.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -73,7 +75,6 @@ void BisectorTerm::scaleRowsAt(const double* reference) {
     }
     const std::size_t rows = m_mStart.size();
     m_scale.resize(rows);
-    std::vector<double> positive;
     for (std::size_t r = 0; r < rows; ++r) {
         const Sides s = sides(r, reference);
         double bisector[3];
@@ -82,20 +83,8 @@ void BisectorTerm::scaleRowsAt(const double* reference) {
         }
         const double product = norm3(bisector) * norm3(s.d);
         m_scale[r] = product > 0.0 && std::isfinite(1.0 / product) ? 1.0 / product : 0.0;
-        if (m_scale[r] > 0.0) {
-            positive.push_back(m_scale[r]);
-        }
     }
-    if (positive.empty()) {
-        std::fill(m_scale.begin(), m_scale.end(), 1.0);
-        return;
-    }
-    const auto middle = positive.begin() + static_cast<std::ptrdiff_t>(positive.size() / 2);
-    std::nth_element(positive.begin(), middle, positive.end());
-    const double median = *middle;
-    for (double& v : m_scale) {
-        v = v > 0.0 ? std::clamp(v, median / 100.0, median * 100.0) : median;
-    }
+    clampScalesToMedian(m_scale);
 }
 
 int BisectorTerm::evaluateOne(std::size_t r, const double* x, double* residual,
