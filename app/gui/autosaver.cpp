@@ -46,6 +46,14 @@ Autosaver::Autosaver(document::Document* document, const QString& directory, int
     m_lock->tryLock(0);
     m_timer->setInterval(intervalMs);
     connect(m_timer, &QTimer::timeout, this, &Autosaver::saveNow);
+    // Once the work is saved (or undone back to the saved state) the recovery copy is older
+    // than the file on disk: remove it at once, not at the next interval, so that a crash in
+    // between does not offer to "recover" a state the designer has already replaced.
+    connect(m_document, &document::Document::modifiedChanged, this, [this](bool modified) {
+        if (!modified) {
+            saveNow();
+        }
+    });
     m_timer->start();
 }
 

@@ -284,11 +284,39 @@ private slots:
             QCOMPARE(io::encodeProject(io::loadProjectFile(recovery)), edited);
             // A crashed session leaves its file without a live lock: copy it as such a leftover.
             leftover = QFileInfo(recovery).dir().filePath("session-999999-1.devsurf");
+            app::Autosaver::removeRecoveryFile(leftover); // from an earlier run that failed
             QVERIFY(QFile::copy(recovery, leftover));
             QVERIFY(QFile::copy(recovery + ".origin", leftover + ".origin"));
             answerNextMessageBox(QMessageBox::Discard);
             QVERIFY(window.close());
             QVERIFY(!QFile::exists(recovery)); // a clean exit leaves nothing behind
+        }
+        {
+            // Saving removes the recovery copy at once: it is older than the saved file, and
+            // a crash before the next interval must not offer it as unsaved work.
+            app::MainWindow window;
+            app::Workspace* workspace = window.workspace();
+            QVERIFY(workspace->open(original));
+            document::Document* doc = workspace->document();
+            document::pushOrExplain(
+                *doc, document::MoveVerticesCommand::createTranslation(*doc, 0, {6}, {0, 0, 3}));
+            workspace->autosaver()->saveNow();
+            const QString recovery = workspace->autosaver()->recoveryFile();
+            QVERIFY(QFile::exists(recovery));
+            QVERIFY(workspace->save());
+            QVERIFY(!QFile::exists(recovery));
+            QVERIFY(!QFile::exists(recovery + ".origin"));
+            // Undoing back to the saved state after another edit removes it as well.
+            document::pushOrExplain(
+                *doc, document::MoveVerticesCommand::createTranslation(*doc, 0, {6}, {0, 0, 2}));
+            workspace->autosaver()->saveNow();
+            QVERIFY(QFile::exists(recovery));
+            doc->undoStack()->undo();
+            QVERIFY(!doc->isModified());
+            QVERIFY(!QFile::exists(recovery));
+            // The saved file is what the next start sees; put the file back as the crash left
+            // it for the recovery below.
+            QVERIFY(workspace->saveTo(original));
         }
         app::MainWindow next;
         next.show();
