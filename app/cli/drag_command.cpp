@@ -176,7 +176,7 @@ void printFoldAndShape(const model::CompositeSurface& start,
                   creases.creases, creases.residualMax, creases.residualMean,
                   creases.meanFoldDegrees, defects.size(), defect, change.shortestRuling,
                   change.slowestSpeed);
-    std::cout << line << solver::describeFoldOvers(solver::foldOvers(result)) << "\n";
+    std::cout << line << solver::describeFoldOvers(change.foldOvers) << "\n";
 }
 
 } // namespace

@@ -76,6 +76,17 @@ foldOverPlaces(const model::SampledMesh& mesh,
     return places;
 }
 
+// foldOverPlaces as (face, places), most places first (see foldOvers).
+std::vector<std::pair<model::FaceId, int>>
+sortedFoldOvers(const model::SampledMesh& mesh,
+                const std::map<std::pair<int, int>, std::pair<int, int>>& faces) {
+    const std::map<model::FaceId, int> places = foldOverPlaces(mesh, faces);
+    std::vector<std::pair<model::FaceId, int>> result(places.begin(), places.end());
+    std::stable_sort(result.begin(), result.end(),
+                     [](const auto& a, const auto& b) { return a.second > b.second; });
+    return result;
+}
+
 } // namespace
 
 ShapeChange measureShapeChange(const model::CompositeSurface& start,
@@ -167,10 +178,7 @@ ShapeChange measureShapeChange(const model::CompositeSurface& start,
         }
     }
     change.creaseFoldMean = count > 0 ? sum / count : 0.0;
-    for (const auto& [face, places] : foldOverPlaces(after, afterEdges)) {
-        (void)face;
-        change.foldOverPlaces += places;
-    }
+    change.foldOvers = sortedFoldOvers(after, afterEdges);
     return change;
 }
 
@@ -182,11 +190,16 @@ std::vector<std::pair<model::FaceId, int>> foldOvers(const model::CompositeSurfa
     } catch (const std::exception&) {
         return {}; // an invalid surface has no patches to measure
     }
-    const std::map<model::FaceId, int> places = foldOverPlaces(mesh, edgeFaces(mesh));
-    std::vector<std::pair<model::FaceId, int>> result(places.begin(), places.end());
-    std::stable_sort(result.begin(), result.end(),
-                     [](const auto& a, const auto& b) { return a.second > b.second; });
-    return result;
+    return sortedFoldOvers(mesh, edgeFaces(mesh));
+}
+
+int ShapeChange::foldOverPlaces() const {
+    int sum = 0;
+    for (const auto& [face, places] : foldOvers) {
+        (void)face;
+        sum += places;
+    }
+    return sum;
 }
 
 std::string describeFoldOvers(const std::vector<std::pair<model::FaceId, int>>& foldOvers) {

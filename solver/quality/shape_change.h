@@ -24,8 +24,10 @@ struct ShapeChange {
     double startNormalAngleMean = 0.0;
     // Largest distance of a vertex or control point from its start position.
     double largestMove = 0.0;
-    // Places where the result folds over onto itself (the sum over foldOvers(result)).
-    int foldOverPlaces = 0;
+    // Where the result folds over onto itself: foldOvers(result), from the same sampling.
+    std::vector<std::pair<model::FaceId, int>> foldOvers;
+    // The places of all of them.
+    int foldOverPlaces() const;
 };
 
 // Throws model::ModelError if a surface is not valid; the two must share their combinatorics.

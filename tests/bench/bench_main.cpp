@@ -104,7 +104,7 @@ int runStudy(const std::string& name, const bench::StudyStart& start,
                     r.change.shortestRuling, r.change.slowestSpeed,
                     r.change.creaseFoldMean * 57.2958, r.change.startNormalAngleMean * 57.2958,
                     r.change.largestMove / solver::surfaceDiameter(surface),
-                    r.change.foldOverPlaces, r.msPerIteration);
+                    r.change.foldOverPlaces(), r.msPerIteration);
     }
     const auto s = bench::summarize(runs);
     std::printf("%s: det worst %.2e median %.2e | flat worst %.2e | ruling worst %.3f median %.3f "

@@ -120,8 +120,8 @@ StudySummary summarize(const std::vector<StudyRun>& runs) {
     s.startAngleMedian = worstAndMedian(startAngle, true).second;
     std::tie(s.foldOverStartWorst, s.foldOverStartMedian) = worstAndMedian(ratio, true);
     for (const StudyRun& r : runs) {
-        s.foldedOverSeeds += r.change.foldOverPlaces > 0 ? 1 : 0;
-        s.foldOverPlacesWorst = std::max(s.foldOverPlacesWorst, r.change.foldOverPlaces);
+        s.foldedOverSeeds += r.change.foldOverPlaces() > 0 ? 1 : 0;
+        s.foldOverPlacesWorst = std::max(s.foldOverPlacesWorst, r.change.foldOverPlaces());
     }
     return s;
 }

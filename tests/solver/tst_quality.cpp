@@ -74,10 +74,12 @@ private slots:
         QCOMPARE(folded.front().second, 2);
         QCOMPARE(describeFoldOvers(folded),
                  std::string("Folded over onto itself: face 0 (2 places)."));
-        QCOMPARE(measureShapeChange(test::flatStrip(100.0), test::flatStrip(-150.0)).foldOverPlaces,
-                 2);
-        QCOMPARE(measureShapeChange(test::flatStrip(-150.0), test::flatStrip(100.0)).foldOverPlaces,
-                 0);
+        QCOMPARE(
+            measureShapeChange(test::flatStrip(100.0), test::flatStrip(-150.0)).foldOverPlaces(),
+            2);
+        QCOMPARE(
+            measureShapeChange(test::flatStrip(-150.0), test::flatStrip(100.0)).foldOverPlaces(),
+            0);
         // Flat, bent or folded along creases, but never back onto itself.
         QVERIFY(foldOvers(test::flatStrip(100.0)).empty());
         QCOMPARE(describeFoldOvers({}), std::string("No face folds over onto itself."));
