@@ -57,6 +57,12 @@ BisectorTerm::Sides BisectorTerm::sides(std::size_t r, const double* x) const {
     return s;
 }
 
+void BisectorTerm::bisector(std::size_t r, const Sides& s, double* out) const {
+    for (int k = 0; k < 3; ++k) {
+        out[k] = m_nWeight[r] * s.n[k] + m_mWeight[r] * s.m[k];
+    }
+}
+
 void BisectorTerm::weighSidesAt(const double* x) {
     for (std::size_t r = 0; r < m_mStart.size(); ++r) {
         const Sides s = sides(r, x);
@@ -77,11 +83,9 @@ void BisectorTerm::scaleRowsAt(const double* reference) {
     m_scale.resize(rows);
     for (std::size_t r = 0; r < rows; ++r) {
         const Sides s = sides(r, reference);
-        double bisector[3];
-        for (int k = 0; k < 3; ++k) {
-            bisector[k] = m_nWeight[r] * s.n[k] + m_mWeight[r] * s.m[k];
-        }
-        const double product = norm3(bisector) * norm3(s.d);
+        double b[3];
+        bisector(r, s, b);
+        const double product = norm3(b) * norm3(s.d);
         m_scale[r] = product > 0.0 && std::isfinite(1.0 / product) ? 1.0 / product : 0.0;
     }
     clampScalesToMedian(m_scale);
@@ -91,13 +95,9 @@ int BisectorTerm::evaluateOne(std::size_t r, const double* x, double* residual,
                               double* jacobian) const {
     const Sides s = sides(r, x);
     const double scale = m_scale.empty() ? 1.0 : m_scale[r];
-    const double wn = m_nWeight[r];
-    const double wm = m_mWeight[r];
-    double bisector[3];
-    for (int k = 0; k < 3; ++k) {
-        bisector[k] = wn * s.n[k] + wm * s.m[k];
-    }
-    *residual = scale * dot3(s.d, bisector);
+    double b[3];
+    bisector(r, s, b);
+    *residual = scale * dot3(s.d, b);
     // ∂/∂n = w_n d, ∂/∂m = w_m d, ∂/∂d = w_n n + w_m m.
     double* out = jacobian;
     auto write = [&](int begin, int end, double weight, const double* gradient) {
@@ -108,18 +108,19 @@ int BisectorTerm::evaluateOne(std::size_t r, const double* x, double* residual,
             }
         }
     };
-    write(m_rowStart[r], m_mStart[r], wn, s.d);
-    write(m_mStart[r], m_dStart[r], wm, s.d);
-    write(m_dStart[r], m_rowStart[r + 1], 1.0, bisector);
+    write(m_rowStart[r], m_mStart[r], m_nWeight[r], s.d);
+    write(m_mStart[r], m_dStart[r], m_mWeight[r], s.d);
+    write(m_dStart[r], m_rowStart[r + 1], 1.0, b);
     return static_cast<int>(out - jacobian);
 }
 
 double BisectorTerm::rowResidual(int row, const double* x) const {
+    // The residual of evaluateOne without its Jacobian.
     const auto r = static_cast<std::size_t>(row);
-    std::vector<double> jacobian(static_cast<std::size_t>(3 * (m_rowStart[r + 1] - m_rowStart[r])));
-    double residual = 0.0;
-    evaluateOne(r, x, &residual, jacobian.data());
-    return residual;
+    const Sides s = sides(r, x);
+    double b[3];
+    bisector(r, s, b);
+    return (m_scale.empty() ? 1.0 : m_scale[r]) * dot3(s.d, b);
 }
 
 void BisectorTerm::evaluate(const double* x, double* residuals, double* jacobian) const {

@@ -47,6 +47,8 @@ private:
         double d[3];
     };
     Sides sides(std::size_t r, const double* x) const;
+    // w_n n + w_m m of row r.
+    void bisector(std::size_t r, const Sides& s, double* out) const;
     int evaluateOne(std::size_t r, const double* x, double* residual, double* jacobian) const;
     // Row r uses m_points[m_rowStart[r] .. m_mStart[r]) for n, [m_mStart[r] .. m_dStart[r])
     // for m and [m_dStart[r] .. m_rowStart[r + 1]) for d.
