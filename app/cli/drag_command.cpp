@@ -2,6 +2,7 @@
 
 #include "io/project_file.h"
 #include "model/model_error.h"
+#include "model/pattern/cutting_pattern.h"
 #include "solver/quality/crease_quality.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
@@ -176,7 +177,8 @@ void printFoldAndShape(const model::CompositeSurface& start,
                   creases.creases, creases.residualMax, creases.residualMean,
                   creases.meanFoldDegrees, defects.size(), defect, change.shortestRuling,
                   change.slowestSpeed);
-    std::cout << line << solver::describeFoldOvers(change.foldOvers) << "\n";
+    std::cout << line << solver::describeFoldOvers(change.foldOvers) << "\n"
+              << model::describeSelfOverlap(model::selfOverlappingPatches(result)) << "\n";
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 
 #include "io/project_file.h"
 #include "model/model_error.h"
+#include "model/pattern/cutting_pattern.h"
 #include "solver/formulation/perturbation.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
@@ -173,7 +174,8 @@ int runSolveCommand(const std::vector<std::string>& positional,
         }
         reportTolerance(*session, last);
         surface = session->surface();
-        std::cout << solver::describeFoldOvers(solver::foldOvers(surface)) << "\n";
+        std::cout << solver::describeFoldOvers(solver::foldOvers(surface)) << "\n"
+                  << model::describeSelfOverlap(model::selfOverlappingPatches(surface)) << "\n";
     }
     io::saveProjectFile(project, QString::fromStdString(output));
     std::cout << "Wrote " << output << "\n";

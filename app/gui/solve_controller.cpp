@@ -137,19 +137,29 @@ QString SolveController::cancelledSentence(const QString& reason) const {
                             : tr("Solve cancelled: %1; the design is unchanged.").arg(reason);
 }
 
-QString SolveController::foldedOverSentence(const SolveReport& report) const {
-    if (report.foldedOver.isEmpty()) {
-        return {};
+QString SolveController::checkShapeSentence(const SolveReport& report) const {
+    auto listed = [](const QList<int>& faces) {
+        QStringList patches;
+        for (int face : faces) {
+            patches << QString::number(face);
+        }
+        return patches.join(QStringLiteral(", "));
+    };
+    if (!report.foldedOver.isEmpty()) {
+        return QLatin1Char(' ') +
+               tr("Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or "
+                  "move differently.",
+                  nullptr, static_cast<int>(report.foldedOver.size()))
+                   .arg(listed(report.foldedOver));
     }
-    QStringList patches;
-    for (int face : report.foldedOver) {
-        patches << QString::number(face);
+    if (!report.overlapping.isEmpty()) {
+        return QLatin1Char(' ') +
+               tr("Check the shape: the development overlaps itself at %n patch(es) (%1); undo, "
+                  "or pin or move differently.",
+                  nullptr, static_cast<int>(report.overlapping.size()))
+                   .arg(listed(report.overlapping));
     }
-    return QLatin1Char(' ') +
-           tr("Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or "
-              "move differently.",
-              nullptr, static_cast<int>(patches.size()))
-               .arg(patches.join(QStringLiteral(", ")));
+    return {};
 }
 
 QString SolveController::failedSentence(const QString& error) const {
@@ -241,6 +251,21 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result,
                              nullptr, static_cast<int>(patches.size()))
                               .arg(patches.join(QStringLiteral(", ")));
             }
+        }
+        if (s < result.selfOverlaps.size() && !result.selfOverlaps[s].empty()) {
+            // Every condition may hold and the development still overlap itself, e.g. where a
+            // patch was turned over in the plane: such a design cannot be cut from one sheet.
+            QStringList patches;
+            for (model::FaceId face : result.selfOverlaps[s]) {
+                patches << QString::number(face);
+                report.overlapping << static_cast<int>(face);
+                report.patchesToCheck.insert(
+                    {document::Pick::Kind::Face, static_cast<int>(s), face});
+            }
+            status += tr("; the development overlaps itself at %n patch(es) (%1) and cannot be "
+                         "cut from one sheet",
+                         nullptr, static_cast<int>(patches.size()))
+                          .arg(patches.join(QStringLiteral(", ")));
         }
         statuses << (result.summaries.size() > 1 ? tr("surface %1 %2").arg(s + 1).arg(status)
                                                  : status);
@@ -340,7 +365,7 @@ void SolveController::onResult(const solver::SolveResult& result) {
                     tr("%n surface(s) left as they were: solving made them less developable.",
                        nullptr, static_cast<int>(result.kept.size()));
     }
-    stop(sentence + foldedOverSentence(report));
+    stop(sentence + checkShapeSentence(report));
 }
 
 void SolveController::applyEdit(const solver::SolveResult& result, const SolveReport& report) {
@@ -368,7 +393,7 @@ void SolveController::applyEdit(const solver::SolveResult& result, const SolveRe
     stop(tr("%1, kept developable: %n iteration(s), largest constraint residual %2.", nullptr,
             summary.iterationsCompleted)
              .arg(m_editTitle, QString::number(summary.finalMaxConstraintResidual, 'e', 2)) +
-         foldedOverSentence(report));
+         checkShapeSentence(report));
 }
 
 } // namespace devsurf::app

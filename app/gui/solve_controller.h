@@ -72,8 +72,9 @@ private:
     // The sentences of a solve or of an edit's solve.
     QString cancelledSentence(const QString& reason) const;
     QString failedSentence(const QString& error) const;
-    // Names the patches of `report` that fold over onto themselves (empty if none).
-    QString foldedOverSentence(const SolveReport& report) const;
+    // Names the patches of `report` that fold over onto themselves or, if none does, those at
+    // which the development overlaps itself (empty if neither).
+    QString checkShapeSentence(const SolveReport& report) const;
 
     Workspace* m_workspace;
     solver::SolverWorker* m_worker;

@@ -85,6 +85,39 @@ std::vector<PatternPiece> developSurfacePieces(const CompositeSurface& surface, 
     return pieces;
 }
 
+std::vector<FaceId> selfOverlappingPatches(const CompositeSurface& surface,
+                                           int samplesPerInterval) {
+    std::vector<FaceId> patches;
+    if (!surface.validate().empty()) {
+        return patches;
+    }
+    PatternOptions options;
+    options.layout = false;
+    options.samplesPerInterval = std::max(1, samplesPerInterval);
+    int nameIndex = 0;
+    std::vector<std::vector<FaceId>> faces;
+    try {
+        developSurfacePieces(surface, 0, options, nameIndex, &faces);
+    } catch (const std::exception&) {
+        return patches;
+    }
+    for (const std::vector<FaceId>& pieceFaces : faces) {
+        patches.insert(patches.end(), pieceFaces.begin(), pieceFaces.end());
+    }
+    std::sort(patches.begin(), patches.end());
+    patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
+    return patches;
+}
+
+std::string describeSelfOverlap(const std::vector<FaceId>& patches) {
+    if (patches.empty()) {
+        return "The development does not overlap itself.";
+    }
+    return std::string("The development overlaps itself at ") +
+           (patches.size() == 1 ? "patch " : "patches ") + facesText(patches) +
+           " and cannot be cut from one sheet.";
+}
+
 CuttingPattern buildCuttingPattern(const Project& project, const PatternOptions& requested) {
     PatternOptions options = requested;
     if (!std::isfinite(options.tolerance) || options.tolerance <= 0.0) {

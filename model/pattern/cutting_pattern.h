@@ -141,6 +141,19 @@ developSurfacePieces(const CompositeSurface& surface, int surfaceIndex,
                      const PatternOptions& options, int& nameIndex,
                      std::vector<std::vector<FaceId>>* selfOverlapFaces = nullptr);
 
+// The patches at which the development of one surface overlaps itself, so that it cannot be
+// cut from one sheet (developSurfacePieces at samplesPerInterval samples per spline interval,
+// no layout), sorted and without repeats; empty where it does not overlap itself, and for an
+// invalid surface or one that cannot be developed. A result can satisfy every condition of the
+// solver and still overlap itself where it is unfolded, e.g. a patch turned over in the plane.
+std::vector<FaceId> selfOverlappingPatches(const CompositeSurface& surface,
+                                           int samplesPerInterval = 8);
+
+// One sentence for the command line about selfOverlappingPatches(): "The development overlaps
+// itself at patches 6, 7, 8 and cannot be cut from one sheet." or "The development does not
+// overlap itself."
+std::string describeSelfOverlap(const std::vector<FaceId>& patches);
+
 // Builds the pattern of every surface of the project. Invalid surfaces are skipped with a
 // problem sentence naming them; it never throws for bad geometry.
 CuttingPattern buildCuttingPattern(const Project& project, const PatternOptions& options = {});

@@ -74,16 +74,19 @@ bool selfOverlaps(const PatternPiece& piece, std::vector<FaceId>& faces) {
     for (std::size_t h = 0; h < piece.holes.size(); ++h) {
         addLoop(segments, piece.holes[h], static_cast<int>(h) + 1);
     }
-    // The patches at a point: those of the mesh faces with a vertex there.
+    // The patches at a point: those of the mesh faces with a vertex there (built at the first
+    // crossing: most pieces have none).
     std::multimap<std::pair<double, double>, FaceId> facesAt;
-    for (std::size_t f = 0; f < piece.mesh.faces.size(); ++f) {
-        for (int v : piece.mesh.faces[f]) {
-            const Vec2& p = piece.mesh.vertices[static_cast<std::size_t>(v)];
-            facesAt.emplace(std::make_pair(p.x, p.y), piece.mesh.faceOrigin[f]);
-        }
-    }
     bool found = false;
     auto record = [&](const Segment& s) {
+        if (facesAt.empty()) {
+            for (std::size_t f = 0; f < piece.mesh.faces.size(); ++f) {
+                for (int v : piece.mesh.faces[f]) {
+                    const Vec2& p = piece.mesh.vertices[static_cast<std::size_t>(v)];
+                    facesAt.emplace(std::make_pair(p.x, p.y), piece.mesh.faceOrigin[f]);
+                }
+            }
+        }
         for (const Vec2& p : {s.a, s.b}) {
             const auto range = facesAt.equal_range({p.x, p.y});
             for (auto it = range.first; it != range.second; ++it) {

@@ -1,5 +1,6 @@
 #include "solver/worker/solver_worker.h"
 
+#include "model/pattern/cutting_pattern.h"
 #include "solver/quality/quality_measures.h"
 
 #include <atomic>
@@ -367,6 +368,14 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
         }
         result.surfaces.push_back(session->surface());
         result.summaries.push_back(summary);
+    }
+    if (!drag || request.settle) {
+        result.selfOverlaps.resize(result.surfaces.size());
+        for (std::size_t s = 0; s < result.surfaces.size(); ++s) {
+            if (!result.summaries[s].iterations.empty()) {
+                result.selfOverlaps[s] = model::selfOverlappingPatches(result.surfaces[s]);
+            }
+        }
     }
     if (!drag) {
         d.dropSessions();

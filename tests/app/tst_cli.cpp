@@ -1,3 +1,4 @@
+#include "helical_band.h"
 #include "io/project_file.h"
 #include "model/examples.h"
 #include "test_registry.h"
@@ -252,7 +253,7 @@ private slots:
         const Run run = cli({"solve", file, "--perturb", "0.001", "--iterations", "3", "-o", out});
         QCOMPARE(run.exitCode, 0);
         const QStringList lines = run.out.split('\n', Qt::SkipEmptyParts);
-        QCOMPARE(lines.size(), 7);
+        QCOMPARE(lines.size(), 8);
         QVERIFY2(QRegularExpression("^Surface 1 \\(annulus\\): \\d+ variables, \\d+ rows$")
                      .match(lines[0])
                      .hasMatch(),
@@ -271,7 +272,45 @@ private slots:
         QVERIFY2(lines[5] == "No face folds over onto itself." ||
                      lines[5].startsWith("Folded over onto itself: face "),
                  qPrintable(lines[5]));
-        QCOMPARE(lines[6], "Wrote " + out);
+        // (This start solves to a developable annulus that no longer closes up flat: its
+        // development, cut open, overlaps itself near the cut.)
+        QVERIFY2(lines[6] == "The development does not overlap itself." ||
+                     lines[6].startsWith("The development overlaps itself at patch"),
+                 qPrintable(lines[6]));
+        QCOMPARE(lines[7], "Wrote " + out);
+    }
+
+    void solveAndDragSayWhereTheDevelopmentOverlapsItself() {
+        // A band winding one and a half times round the z-axis: whatever the solver makes of
+        // its strips, its development turns by more than a full turn and overlaps itself.
+        model::Project project;
+        project.surfaces.push_back(test::helicalBand());
+        const QString file = path("band.devsurf");
+        io::saveProjectFile(project, file);
+        auto namedPatches = [](const QString& out) {
+            const QRegularExpressionMatch match =
+                QRegularExpression(
+                    QStringLiteral("^The development overlaps itself at patch(es)? "
+                                   "([0-9, ]+?)(, …)? and cannot be cut from one sheet\\.$"),
+                    QRegularExpression::MultilineOption)
+                    .match(out);
+            std::set<int> patches;
+            for (const QString& id : match.captured(2).split(QStringLiteral(", "))) {
+                patches.insert(id.toInt());
+            }
+            return match.hasMatch() ? patches : std::set<int>{};
+        };
+        Run run = cli({"solve", file, "--iterations", "2", "-o", path("band-solved.devsurf")});
+        QCOMPARE(run.exitCode, 0);
+        std::set<int> patches = namedPatches(run.out);
+        QVERIFY2(!patches.empty(), qPrintable(run.out));
+        for (int face : patches) {
+            QVERIFY(project.surfaces.front().hasFace(static_cast<model::FaceId>(face)));
+        }
+        run = cli({"drag", file, "--vertices", "0", "--by", "0,0,5", "--steps", "2", "--after", "2",
+                   "-o", path("band-dragged.devsurf")});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(!namedPatches(run.out).empty(), qPrintable(run.out));
     }
 
     void creaseConditionsAreSetListedAndSolved() {

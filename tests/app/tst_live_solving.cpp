@@ -244,6 +244,42 @@ private slots:
         QVERIFY(!select->isEnabled());
     }
 
+    void aResultWhoseDevelopmentOverlapsItselfIsReportedWithItsPatches() {
+        // Every condition holds and no patch folds over, but the development overlaps itself
+        // at patches 1 and 2 (as the worker measures for a final result): said in the status
+        // and selectable, like a fold-over.
+        app::MainWindow window;
+        window.workspace()->newFromExample(QStringLiteral("sheet"), 0);
+        solver::SolveResult result;
+        result.ok = true;
+        result.summaries.resize(1);
+        result.summaries[0].iterations.resize(1);
+        result.summaries[0].iterationsCompleted = 1;
+        result.summaries[0].toleranceReached = true;
+        result.surfaces = {window.workspace()->document()->project().surfaces.front()};
+        result.selfOverlaps = {{1, 2}};
+        const app::SolveReport report = window.solveController()->reportOf(result, "Solve");
+        QVERIFY(report.foldedOver.isEmpty());
+        QCOMPARE(report.overlapping, (QList<int>{1, 2}));
+        QVERIFY2(report.status.contains(QStringLiteral("development overlaps itself")) &&
+                     report.status.contains(QStringLiteral("(1, 2)")) &&
+                     report.status.contains(QStringLiteral("cannot be cut from one sheet")),
+                 qPrintable(report.status));
+        const std::set<document::Pick> patches{{document::Pick::Kind::Face, 0, 1},
+                                               {document::Pick::Kind::Face, 0, 2}};
+        QVERIFY(report.patchesToCheck == patches);
+        window.solverPanel()->showReport(report);
+        QPushButton* select = window.solverPanel()->selectPatchesButton();
+        QVERIFY(select->isEnabled());
+        select->click();
+        QVERIFY(window.workspace()->selection()->picks() == patches);
+
+        result.selfOverlaps = {{}};
+        const app::SolveReport clean = window.solveController()->reportOf(result, "Solve");
+        QVERIFY(clean.overlapping.isEmpty() && clean.patchesToCheck.empty());
+        QVERIFY2(!clean.status.contains(QStringLiteral("overlaps")), qPrintable(clean.status));
+    }
+
     void solveMakesALiftedDesignDevelopableAndKeepsPinsBitForBit() {
         app::MainWindow window;
         window.workspace()->newFromExample(QStringLiteral("annulus"), 0);

@@ -98,21 +98,24 @@ int runStudy(const std::string& name, const bench::StudyStart& start,
                         it.iteration, it.eps1, it.eps2, it.proximity, it.maxConstraintResidual,
                         it.energy, it.stepNorm, it.rejected ? " rejected" : "");
         }
-        std::printf("seed %u %-16s res %.2e det %.2e flat %.2e ruling %.3f speed %.3f fold %.2f "
-                    "start %.2f deg move %.1e folded over %d  %.2f ms/it\n",
-                    r.seed, r.status.c_str(), r.residual, r.detMax, r.flatnessMean,
-                    r.change.shortestRuling, r.change.slowestSpeed,
-                    r.change.creaseFoldMean * 57.2958, r.change.startNormalAngleMean * 57.2958,
-                    r.change.largestMove / solver::surfaceDiameter(surface),
-                    r.change.foldOverPlaces(), r.msPerIteration);
+        std::printf(
+            "seed %u %-16s res %.2e det %.2e flat %.2e ruling %.3f speed %.3f fold %.2f "
+            "start %.2f deg move %.1e folded over %d development overlaps at %zu patches  %.2f "
+            "ms/it\n",
+            r.seed, r.status.c_str(), r.residual, r.detMax, r.flatnessMean, r.change.shortestRuling,
+            r.change.slowestSpeed, r.change.creaseFoldMean * 57.2958,
+            r.change.startNormalAngleMean * 57.2958,
+            r.change.largestMove / solver::surfaceDiameter(surface), r.change.foldOverPlaces(),
+            r.overlapping.size(), r.msPerIteration);
     }
     const auto s = bench::summarize(runs);
     std::printf("%s: det worst %.2e median %.2e | flat worst %.2e | ruling worst %.3f median %.3f "
                 "| speed worst %.3f median %.3f | fold/start worst %.2f median %.2f | folded over "
-                "in %d seeds (at most %d places)\n",
+                "in %d seeds (at most %d places) | development overlaps itself in %d seeds\n",
                 name.c_str(), s.detWorst, s.detMedian, s.flatnessWorst, s.rulingWorst,
                 s.rulingMedian, s.speedWorst, s.speedMedian, s.foldOverStartWorst,
-                s.foldOverStartMedian, s.foldedOverSeeds, s.foldOverPlacesWorst);
+                s.foldOverStartMedian, s.foldedOverSeeds, s.foldOverPlacesWorst,
+                s.overlappingSeeds);
     return 0;
 }
 

@@ -379,6 +379,7 @@ void writeJson(const std::vector<ModelResult>& results, const solver::BlasInfo& 
                     << ", \"fold_over_start_angle_median\": " << number(m.foldOverStartMedian)
                     << ", \"seeds_folded_over_onto_themselves\": " << m.foldedOverSeeds
                     << ", \"fold_over_places_worst\": " << m.foldOverPlacesWorst
+                    << ", \"seeds_whose_development_overlaps_itself\": " << m.overlappingSeeds
                     << ", \"ms_per_iter_median\": " << number(q.msPerIteration) << " }";
             }
             out << "\n      ]";

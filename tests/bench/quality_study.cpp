@@ -1,5 +1,6 @@
 #include "quality_study.h"
 
+#include "model/pattern/cutting_pattern.h"
 #include "solver/core/guided_projection.h"
 #include "solver/formulation/perturbation.h"
 #include "solver/quality/quality_measures.h"
@@ -70,6 +71,7 @@ std::vector<StudyRun> runStudy(const model::CompositeSurface& surface, const Stu
             run.detMax = quality.developabilityMax;
             run.flatnessMean = quality.flatnessMean;
             run.change = solver::measureShapeChange(perturbed, result);
+            run.overlapping = model::selfOverlappingPatches(result);
         } catch (const std::exception&) {
             // A result too degenerate to measure (a face of zero area) counts as the worst.
             run.status = "degenerate";
@@ -122,6 +124,7 @@ StudySummary summarize(const std::vector<StudyRun>& runs) {
     for (const StudyRun& r : runs) {
         s.foldedOverSeeds += r.change.foldOverPlaces() > 0 ? 1 : 0;
         s.foldOverPlacesWorst = std::max(s.foldOverPlacesWorst, r.change.foldOverPlaces());
+        s.overlappingSeeds += r.overlapping.empty() ? 0 : 1;
     }
     return s;
 }

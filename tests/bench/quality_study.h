@@ -37,6 +37,8 @@ struct StudyRun {
     double detMax = 0.0;   // normalised developability residual, max
     double flatnessMean = 0.0;
     solver::ShapeChange change;
+    // Patches at which the result's development overlaps itself (model::selfOverlappingPatches).
+    std::vector<model::FaceId> overlapping;
     double msPerIteration = 0.0;
     std::vector<solver::IterationStats> iterations; // the solver's per-iteration statistics
 };
@@ -53,6 +55,8 @@ struct StudySummary {
     // Seeds whose result folds over onto itself somewhere, and the most places in one result.
     int foldedOverSeeds = 0;
     int foldOverPlacesWorst = 0;
+    // Seeds whose result's development overlaps itself (it cannot be cut from one sheet).
+    int overlappingSeeds = 0;
 };
 
 double meanControlEdgeLength(const model::CompositeSurface& surface);

@@ -69,6 +69,8 @@ private slots:
                     study.value("shortest_ruling_over_start_median").toDouble());
             QVERIFY(study.value("start_normal_angle_deg_median").toDouble() > 0.0);
             QVERIFY(study.value("ms_per_iter_median").toDouble() > 0.0);
+            // Fig. 13's two strips from these starts unfold without overlapping themselves.
+            QCOMPARE(study.value("seeds_whose_development_overlaps_itself").toInt(-1), 0);
         }
         if (bench::ceresAvailable()) {
             QVERIFY(m.value("ceres_reached_residual").toBool());

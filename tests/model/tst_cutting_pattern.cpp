@@ -1,8 +1,9 @@
+#include "folded_strip.h"
+#include "helical_band.h"
 #include "model/bspline_curve.h"
 #include "model/examples.h"
 #include "model/pattern/cutting_pattern.h"
 #include "model/sampled_mesh.h"
-#include "straight_control_points.h"
 #include "surface_transform.h"
 #include "test_registry.h"
 
@@ -58,35 +59,6 @@ double spatialArea(const CompositeSurface& surface) {
         }
     }
     return area;
-}
-
-// A band of strips winding one and a half times around the z-axis while rising: it does not
-// meet itself in space, but its development (close to a flat ring) does.
-CompositeSurface helicalBand() {
-    const int steps = 18;
-    const SplineSpace space{3, 2, 1};
-    CompositeSurface s;
-    s.setName("helix");
-    std::vector<VertexId> inner;
-    std::vector<VertexId> outer;
-    for (int i = 0; i <= steps; ++i) {
-        const double phi = 3.0 * kPi * i / steps;
-        const double z = 2.0 * i;
-        inner.push_back(s.addVertex({100 * std::cos(phi), 100 * std::sin(phi), z}));
-        outer.push_back(s.addVertex({160 * std::cos(phi), 160 * std::sin(phi), z}));
-    }
-    for (int i = 0; i < steps; ++i) {
-        s.addFace({inner[i], outer[i], outer[i + 1], inner[i + 1]});
-    }
-    for (int i = 0; i < steps; ++i) {
-        for (const auto* chain : {&inner, &outer}) {
-            const VertexId a = (*chain)[i];
-            const VertexId b = (*chain)[i + 1];
-            s.setSpline(a, b, space,
-                        devsurf::test::straightControlPoints(space, s.position(a), s.position(b)));
-        }
-    }
-    return s;
 }
 
 PatternOptions sideBySide() {
@@ -287,7 +259,7 @@ private slots:
 
     void selfOverlapIsDetected() {
         Project project;
-        project.surfaces.push_back(helicalBand());
+        project.surfaces.push_back(devsurf::test::helicalBand());
         QVERIFY(project.surfaces.front().validate().empty());
         const CuttingPattern pattern = buildCuttingPattern(project, sideBySide());
         QCOMPARE(pattern.pieces.size(), std::size_t(1));
@@ -304,6 +276,36 @@ private slots:
                          .pieces.front()
                          .selfOverlapping);
         }
+    }
+
+    void selfOverlappingPatchesNameWhereTheDevelopmentOverlapsItself() {
+        // The band's development winds one and a half times round: some of its patches lie on
+        // top of others. Every patch named is one of the band's.
+        const CompositeSurface band = devsurf::test::helicalBand();
+        const std::vector<FaceId> patches = selfOverlappingPatches(band);
+        QVERIFY(!patches.empty());
+        QVERIFY(std::is_sorted(patches.begin(), patches.end()));
+        QVERIFY(std::adjacent_find(patches.begin(), patches.end()) == patches.end());
+        for (FaceId face : patches) {
+            QVERIFY(band.hasFace(face));
+        }
+        QVERIFY(describeSelfOverlap(patches).find("The development overlaps itself at patches ") ==
+                0);
+        QVERIFY(describeSelfOverlap(patches).find("cannot be cut from one sheet") !=
+                std::string::npos);
+        QCOMPARE(describeSelfOverlap({4}),
+                 std::string("The development overlaps itself at patch 4 and cannot be cut from "
+                             "one sheet."));
+        // A strip folded back onto itself within its plane unfolds into one that does not
+        // (the fold-over is a fold, solver::foldOvers names it).
+        QVERIFY(selfOverlappingPatches(devsurf::test::flatStrip(-150.0)).empty());
+        // No built-in example overlaps itself; an invalid surface has nothing to develop.
+        for (const ExampleInfo& info : builtInExamples()) {
+            QVERIFY2(selfOverlappingPatches(makeExample(info.name).surfaces.front()).empty(),
+                     info.name.c_str());
+        }
+        QVERIFY(selfOverlappingPatches(CompositeSurface()).empty());
+        QCOMPARE(describeSelfOverlap({}), std::string("The development does not overlap itself."));
     }
 
     void layoutKeepsTheGap() {

@@ -4,6 +4,7 @@
 #include "solver/quality/quality_measures.h"
 #include "solver/worker/solver_worker.h"
 
+#include "helical_band.h"
 #include "test_registry.h"
 
 #include <QSignalSpy>
@@ -201,6 +202,62 @@ private slots:
         QVERIFY(result.surfaces.front() == session.surface());
         QVERIFY2(result.summaries.front().finalMaxConstraintResidual < 1e-8,
                  qPrintable(QString::number(result.summaries.front().finalMaxConstraintResidual)));
+    }
+
+    void finalResultsSayWhereTheDevelopmentOverlapsItself() {
+        // A band winding one and a half times round: its development overlaps itself whatever
+        // the solver makes of its strips. A Solve's result and a drag's settling result say
+        // where; the results of a drag's moves, which nobody reports, are not measured.
+        const model::CompositeSurface band = test::helicalBand();
+        const model::VertexId end = band.vertices().begin()->first;
+        auto overlapsItself = [&band](const SolveResult& result) {
+            if (result.selfOverlaps.size() != 1 || result.selfOverlaps.front().empty()) {
+                return false;
+            }
+            return std::all_of(result.selfOverlaps.front().begin(),
+                               result.selfOverlaps.front().end(),
+                               [&band](model::FaceId face) { return band.hasFace(face); });
+        };
+        SolverWorker worker;
+        QSignalSpy finished(&worker, &SolverWorker::finished);
+        SolveRequest request;
+        request.surfaces = {band};
+        request.revision = 1;
+        worker.submit(request);
+        QVERIFY(waitForResults(finished, 1));
+        SolveResult result = resultAt(finished, 0);
+        QVERIFY2(result.ok, qPrintable(result.error));
+        QVERIFY(overlapsItself(result));
+
+        request.sessionKey = 7;
+        request.iterations = 1;
+        request.pulled[0] = {{end, false, band.position(end) + model::Vec3{0, 0, 1}}};
+        request.revision = 2;
+        worker.submit(request);
+        QVERIFY(waitForResults(finished, 2));
+        result = resultAt(finished, 1);
+        QVERIFY2(result.ok, qPrintable(result.error));
+        QVERIFY(result.selfOverlaps.empty());
+
+        request.settle = true;
+        request.iterations = 10;
+        request.revision = 3;
+        worker.submit(request);
+        QVERIFY(waitForResults(finished, 3));
+        result = resultAt(finished, 2);
+        QVERIFY2(result.ok, qPrintable(result.error));
+        QVERIFY(overlapsItself(result));
+
+        // A design whose development lies flat without overlapping.
+        request = SolveRequest();
+        request.surfaces = {model::makeExample("annulus").surfaces.front()};
+        request.revision = 4;
+        worker.submit(request);
+        QVERIFY(waitForResults(finished, 4));
+        result = resultAt(finished, 3);
+        QVERIFY2(result.ok, qPrintable(result.error));
+        QCOMPARE(result.selfOverlaps.size(), std::size_t(1));
+        QVERIFY(result.selfOverlaps.front().empty());
     }
 
     void solveNeverLeavesADesignLessDevelopable() {

@@ -21,6 +21,8 @@ struct SolveReport {
     std::vector<solver::Summary> summaries; // per surface (empty summaries are skipped)
     QStringList worstFaces;                 // filled when the tolerance was not reached
     QList<int> foldedOver; // patches that fold over onto themselves (solver::foldOvers)
+    // Patches at which the development overlaps itself (SolveResult::selfOverlaps).
+    QList<int> overlapping;
     // Every patch named above (least developable, folded over), for selecting them.
     std::set<document::Pick> patchesToCheck;
     double elapsedMs = 0.0;
