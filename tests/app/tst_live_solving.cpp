@@ -68,6 +68,18 @@ double diameter(const std::vector<model::Vec3>& points) {
     return (hi - lo).norm();
 }
 
+// A result of one iteration that reached the tolerance on `surface`, as the worker hands it over.
+solver::SolveResult solvedResult(const model::CompositeSurface& surface) {
+    solver::SolveResult result;
+    result.ok = true;
+    result.summaries.resize(1);
+    result.summaries[0].iterations.resize(1);
+    result.summaries[0].iterationsCompleted = 1;
+    result.summaries[0].toleranceReached = true;
+    result.surfaces = {surface};
+    return result;
+}
+
 } // namespace
 
 // Pins in the desktop application.
@@ -212,13 +224,7 @@ private slots:
 
     void aResultThatFoldsOverOntoItselfIsReportedWithItsPatches() {
         app::MainWindow window;
-        solver::SolveResult result;
-        result.ok = true;
-        result.summaries.resize(1);
-        result.summaries[0].iterations.resize(1);
-        result.summaries[0].iterationsCompleted = 1;
-        result.summaries[0].toleranceReached = true;
-        result.surfaces = {test::flatStrip(-150.0)};
+        solver::SolveResult result = solvedResult(test::flatStrip(-150.0));
         const app::SolveReport folded = window.solveController()->reportOf(result, "Drag 1 vertex");
         QCOMPARE(folded.foldedOver, QList<int>{0});
         // (English plural forms apply once the application's translators are installed.)
@@ -250,13 +256,8 @@ private slots:
         // and selectable, like a fold-over.
         app::MainWindow window;
         window.workspace()->newFromExample(QStringLiteral("sheet"), 0);
-        solver::SolveResult result;
-        result.ok = true;
-        result.summaries.resize(1);
-        result.summaries[0].iterations.resize(1);
-        result.summaries[0].iterationsCompleted = 1;
-        result.summaries[0].toleranceReached = true;
-        result.surfaces = {window.workspace()->document()->project().surfaces.front()};
+        solver::SolveResult result =
+            solvedResult(window.workspace()->document()->project().surfaces.front());
         result.selfOverlaps = {{1, 2}};
         const app::SolveReport report = window.solveController()->reportOf(result, "Solve");
         QVERIFY(report.foldedOver.isEmpty());
