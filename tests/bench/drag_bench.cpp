@@ -146,6 +146,9 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
                     (void)face;
                     row.foldOvers += places;
                 }
+                if (!result.selfOverlaps.empty()) {
+                    row.overlappingPatches = static_cast<int>(result.selfOverlaps.front().size());
+                }
                 loop.quit();
                 return;
             }
@@ -270,11 +273,12 @@ void printDragBench(const DragBenchReport& report, bool json, std::ostream& out)
                           "\"applied\": %d, \"first_result_ms\": %.3f, \"median_ms\": %.3f, "
                           "\"p95_ms\": %.3f, \"applied_per_second\": %.2f, "
                           "\"largest_stall_ms\": %.3f, \"release_ms\": %.3f, "
-                          "\"residual_after\": %.3e, \"fold_overs\": %d, \"error\": \"%s\"}",
+                          "\"residual_after\": %.3e, \"fold_overs\": %d, "
+                          "\"development_overlap_patches\": %d, \"error\": \"%s\"}",
                           i == 0 ? "" : ", ", r.model.c_str(), r.variables, r.moves, r.solved,
                           r.applied, r.firstResultMs, r.medianMs, r.p95Ms, r.appliedPerSecond,
                           r.largestStallMs, r.releaseMs, r.residualAfter, r.foldOvers,
-                          r.error.c_str());
+                          r.overlappingPatches, r.error.c_str());
             out << line;
         }
         const SolveStallRow& s = report.solve;
@@ -288,17 +292,18 @@ void printDragBench(const DragBenchReport& report, bool json, std::ostream& out)
     }
     out << "Drag through the worker (move to result applied; targets: median <= 16 ms, stall "
            "<= 20 ms)\n";
-    std::snprintf(line, sizeof line, "%-14s %9s %6s %6s %7s %9s %9s %9s %9s %9s %10s %9s %6s\n",
+    std::snprintf(line, sizeof line, "%-14s %9s %6s %6s %7s %9s %9s %9s %9s %9s %10s %9s %6s %8s\n",
                   "model", "variables", "moves", "solved", "applied", "first ms", "median ms",
-                  "p95 ms", "applied/s", "stall ms", "release ms", "residual", "folds");
+                  "p95 ms", "applied/s", "stall ms", "release ms", "residual", "folds", "overlaps");
     out << line;
     for (const DragBenchRow& r : report.drags) {
-        std::snprintf(line, sizeof line,
-                      "%-14s %9d %6d %6d %7d %9.1f %9.1f %9.1f %9.1f %9.1f %10.1f %9.2e %6d%s%s\n",
-                      r.model.c_str(), r.variables, r.moves, r.solved, r.applied, r.firstResultMs,
-                      r.medianMs, r.p95Ms, r.appliedPerSecond, r.largestStallMs, r.releaseMs,
-                      r.residualAfter, r.foldOvers,
-                      r.error.empty() ? "" : "  failed: ", r.error.c_str());
+        std::snprintf(
+            line, sizeof line,
+            "%-14s %9d %6d %6d %7d %9.1f %9.1f %9.1f %9.1f %9.1f %10.1f %9.2e %6d %8d%s%s\n",
+            r.model.c_str(), r.variables, r.moves, r.solved, r.applied, r.firstResultMs, r.medianMs,
+            r.p95Ms, r.appliedPerSecond, r.largestStallMs, r.releaseMs, r.residualAfter,
+            r.foldOvers, r.overlappingPatches,
+            r.error.empty() ? "" : "  failed: ", r.error.c_str());
         out << line;
     }
     const SolveStallRow& s = report.solve;

@@ -39,7 +39,9 @@ struct DragBenchRow {
     double releaseMs = 0.0;      // release to the last iterations applied
     double residualAfter = 0.0;  // largest constraint residual after the release iterations
     int foldOvers = 0;           // places where the result folds over onto itself (foldOvers)
-    std::string error;           // empty unless the drag failed
+    // Patches at which the result's development overlaps itself (SolveResult::selfOverlaps).
+    int overlappingPatches = 0;
+    std::string error; // empty unless the drag failed
 };
 
 struct SolveStallRow {
