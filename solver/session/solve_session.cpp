@@ -157,6 +157,10 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
         // designs stay put as before. A rough start keeps absolute fairness, which it needs
         // (see FormulationOptions::relativeFairness).
         m_options.formulation.relativeFairness = true;
+    } else if (m_options.solver.proximityFactor == 0.0) {
+        // Nothing pulled and a rough start (see kRoughSolveProximity).
+        m_options.solver.proximityFactor = kRoughSolveProximity;
+        m_options.solver.proximityThreshold = kRoughSolveProximityThreshold;
     }
     m_formulation = std::make_unique<SurfaceFormulation>(surface, m_options.formulation);
     m_x = m_formulation->initialState();

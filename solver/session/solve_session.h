@@ -27,6 +27,29 @@ FormulationOptions defaultSessionFormulationOptions();
 constexpr double kNearlyValidResidual = 1e-6;
 bool nearlyValid(const model::CompositeSurface& surface);
 
+// Options::proximityFactor and proximityThreshold of a session in which nothing is pulled and
+// whose start is not nearlyValid (a Solve after a vertex was moved by hand, of a noisy import):
+// the pull of every point towards the start, fading as the constraints converge, leads the
+// iteration to a developable surface near the start instead of a distant, crumpled one.
+// Measured with devsurf-cli solve (10 iterations, no pins, 10 seeds of Gaussian noise; det
+// worst, seeds whose development overlaps itself, seeds folding over), without → with it:
+//   sheet 1 % of the diameter   8.7e-4, 5, 4    → 3.1e-5, 0, 0
+//   annulus 0.1 %               1.0, 2, 2       → 1.0e-14, 0, 0
+//   annulus 1 %                 0.76, 10, 10    → 1.3e-3, 6, 6
+//   cylinder 0.1 %              2.8e-5, 2, 0    → 1.6e-15, 0, 0
+//   cylinder 1 %                1.6e-3, 8, 3    → 2.6e-8, 0, 0
+//   mixed 1 %                   2.7e-5, 5, 1    → 1.5e-5, 0, 0
+// (the sheet and mixed from 0.1 % reach 3e-16 … 1e-11 either way). An annulus vertex lifted
+// 30 mm by hand and solved: residual 1.8 with rulings at 0.05 of their length, 3 fold-overs,
+// the development overlapping itself and 112 mm moved → 3e-2 with rulings at 0.65, none of
+// those, 30 mm moved (the vertex goes most of the way back; a second Solve: 3e-8). Factors 0.5
+// and 1 (threshold 1e-2) left worse worst cases (det 7e-4 and 6e-3 on the annulus from 1 %),
+// 3 and 10 held the start too firmly (up to 0.95); with the threshold 1e-2 the pull slowed the
+// last iterations (a perturbed curved fold, tst_crease_conditions, ended at 3e-4 instead of
+// 2e-14 after 10).
+constexpr double kRoughSolveProximity = 0.3;
+constexpr double kRoughSolveProximityThreshold = 0.1;
+
 // FormulationOptions::isometryWeight of a drag that keeps lengths (the desktop application's
 // Tools ▸ Lengths While Dragging ▸ Keep Lengths, `devsurf-cli drag --keep-lengths`): the sheet
 // bends instead of stretching. Measured (20 moves, 10 iterations after): lifting the annulus's
