@@ -78,8 +78,9 @@ bool negligibleCrossing(const Segment& s, const Segment& t, double size) {
     const double lu = u.norm();
     const double lv = v.norm();
     const double allowed = kNegligibleOverlap * size;
-    if (!(lu > 0.0 && lv > 0.0) || std::abs(cross) / (lu * lv) * std::min(lu, lv) < allowed) {
-        return true;
+    if (cross == 0.0 || !(lu > 0.0 && lv > 0.0) ||
+        std::abs(cross) / (lu * lv) * std::min(lu, lv) < allowed) {
+        return true; // parallel (touching end to end or along a line), or a hair's opening
     }
     const Vec2 w = t.a - s.a;
     const Vec2 x = s.a + u * ((w.x * v.y - w.y * v.x) / cross); // where the lines cross
