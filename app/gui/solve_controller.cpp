@@ -15,6 +15,19 @@
 
 namespace devsurf::app {
 
+namespace {
+
+// "1, 2, 6" for the patches a report names.
+QString patchList(const QList<int>& faces) {
+    QStringList patches;
+    for (int face : faces) {
+        patches << QString::number(face);
+    }
+    return patches.join(QStringLiteral(", "));
+}
+
+} // namespace
+
 SolveController::SolveController(Workspace* workspace, QObject* parent)
     : QObject(parent), m_workspace(workspace), m_worker(new solver::SolverWorker(this)) {
     connect(m_worker, &solver::SolverWorker::finished, this, &SolveController::onResult);
@@ -138,26 +151,19 @@ QString SolveController::cancelledSentence(const QString& reason) const {
 }
 
 QString SolveController::checkShapeSentence(const SolveReport& report) const {
-    auto listed = [](const QList<int>& faces) {
-        QStringList patches;
-        for (int face : faces) {
-            patches << QString::number(face);
-        }
-        return patches.join(QStringLiteral(", "));
-    };
     if (!report.foldedOver.isEmpty()) {
         return QLatin1Char(' ') +
                tr("Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or "
                   "move differently.",
                   nullptr, static_cast<int>(report.foldedOver.size()))
-                   .arg(listed(report.foldedOver));
+                   .arg(patchList(report.foldedOver));
     }
     if (!report.overlapping.isEmpty()) {
         return QLatin1Char(' ') +
                tr("Check the shape: the development overlaps itself at %n patch(es) (%1); undo, "
                   "or pin or move differently.",
                   nullptr, static_cast<int>(report.overlapping.size()))
-                   .arg(listed(report.overlapping));
+                   .arg(patchList(report.overlapping));
     }
     return {};
 }
@@ -237,35 +243,35 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result,
         if (s < result.surfaces.size()) {
             // A result that folds over onto itself satisfies the conditions but is no surface
             // a sheet can take (e.g. a flat design pushed within its plane): said, not hidden.
-            QStringList patches;
+            QList<int> folded;
             for (const auto& [face, places] : solver::foldOvers(result.surfaces[s])) {
                 (void)places;
-                patches << QString::number(face);
-                report.foldedOver << static_cast<int>(face);
+                folded << static_cast<int>(face);
                 report.patchesToCheck.insert(
                     {document::Pick::Kind::Face, static_cast<int>(s), face});
             }
-            if (!patches.isEmpty()) {
+            if (!folded.isEmpty()) {
                 status += tr("; %n patch(es) fold over onto themselves, where the surface "
                              "overlaps itself: %1",
-                             nullptr, static_cast<int>(patches.size()))
-                              .arg(patches.join(QStringLiteral(", ")));
+                             nullptr, static_cast<int>(folded.size()))
+                              .arg(patchList(folded));
             }
+            report.foldedOver << folded;
         }
         if (s < result.selfOverlaps.size() && !result.selfOverlaps[s].empty()) {
             // Every condition may hold and the development still overlap itself, e.g. where a
             // patch was turned over in the plane: such a design cannot be cut from one sheet.
-            QStringList patches;
+            QList<int> overlapping;
             for (model::FaceId face : result.selfOverlaps[s]) {
-                patches << QString::number(face);
-                report.overlapping << static_cast<int>(face);
+                overlapping << static_cast<int>(face);
                 report.patchesToCheck.insert(
                     {document::Pick::Kind::Face, static_cast<int>(s), face});
             }
             status += tr("; the development overlaps itself at %n patch(es) (%1) and cannot be "
                          "cut from one sheet",
-                         nullptr, static_cast<int>(patches.size()))
-                          .arg(patches.join(QStringLiteral(", ")));
+                         nullptr, static_cast<int>(overlapping.size()))
+                          .arg(patchList(overlapping));
+            report.overlapping << overlapping;
         }
         statuses << (result.summaries.size() > 1 ? tr("surface %1 %2").arg(s + 1).arg(status)
                                                  : status);
