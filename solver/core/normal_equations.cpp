@@ -165,11 +165,168 @@ bool NormalEquations::build(const Problem& problem, std::string* error) {
         }
     }
 
+    formGroups(problem, pairBase);
+
     m_structureId = problem.structureId();
     m_fixedRevision = ~std::uint64_t{0};
     m_built = true;
     setLayout({}, Triangle::Upper);
     return true;
+}
+
+void NormalEquations::formGroups(const Problem& problem, const std::vector<std::size_t>& pairBase) {
+    // A group is grown row by row while each new row adds at most half as many block entries
+    // as it has products of its own, up to kMaxWidth columns: the rows of (4) at the values of
+    // one interval (all on the same control points) join, the next interval's (a shifted set)
+    // starts a new group, and rows that share nothing (fairness, unit norms) stay alone.
+    constexpr int kMaxWidth = 64;
+    const auto maxWidth = static_cast<std::size_t>(kMaxWidth);
+    m_groups.clear();
+    m_groupPairLocal.clear();
+    m_originalGroupPairTarget.clear();
+    m_entryLocal.assign(m_jacColumn.size(), -1);
+    std::vector<int> localOf(static_cast<std::size_t>(m_variables), -1);
+    std::vector<int> groupColumns;
+    std::vector<unsigned char> seen(maxWidth * maxWidth, 0);
+    std::vector<int> seenList;   // entries of `seen` set for the current group
+    std::vector<int> newColumns; // columns a candidate row would add
+    std::vector<int> candidate;  // entries of `seen` a candidate row would set
+    std::vector<int> rowLocal;   // a candidate row's entries' local indices
+    auto localIndex = [&](int column) {
+        const int known = localOf[static_cast<std::size_t>(column)];
+        if (known >= 0) {
+            return known;
+        }
+        const auto it = std::find(newColumns.begin(), newColumns.end(), column);
+        if (it == newColumns.end()) {
+            newColumns.push_back(column);
+            return static_cast<int>(groupColumns.size() + newColumns.size()) - 1;
+        }
+        return static_cast<int>(groupColumns.size()) + static_cast<int>(it - newColumns.begin());
+    };
+    // Tries to add row r to the current group; true if it joined.
+    auto tryJoin = [&](int r, bool first) {
+        newColumns.clear();
+        candidate.clear();
+        const int begin = m_jacRowStart[r];
+        const int end = m_jacRowStart[r + 1];
+        rowLocal.clear();
+        for (int i = begin; i < end; ++i) {
+            rowLocal.push_back(localIndex(m_jacColumn[static_cast<std::size_t>(i)]));
+        }
+        for (std::size_t i = 0; i < rowLocal.size(); ++i) {
+            const int li = rowLocal[i];
+            for (std::size_t j = i; j < rowLocal.size(); ++j) {
+                const int lj = rowLocal[j];
+                const int packed = std::min(li, lj) * kMaxWidth + std::max(li, lj);
+                if (std::max(li, lj) < kMaxWidth && seen[static_cast<std::size_t>(packed)] == 0) {
+                    seen[static_cast<std::size_t>(packed)] = 1;
+                    candidate.push_back(packed);
+                }
+            }
+        }
+        const auto m = static_cast<std::size_t>(end - begin);
+        const bool fits = groupColumns.size() + newColumns.size() <= maxWidth;
+        // A first row always starts a group unless it is wider than a block (then it is
+        // assembled alone); a further row joins if it adds few new block entries.
+        if (!fits || (!first && 2 * candidate.size() > m * (m + 1) / 2)) {
+            for (int packed : candidate) {
+                seen[static_cast<std::size_t>(packed)] = 0;
+            }
+            return false;
+        }
+        seenList.insert(seenList.end(), candidate.begin(), candidate.end());
+        for (int column : newColumns) {
+            localOf[static_cast<std::size_t>(column)] = static_cast<int>(groupColumns.size());
+            groupColumns.push_back(column);
+        }
+        return true;
+    };
+    auto closeGroup = [&](int firstRow, int rowEnd) {
+        const auto width = static_cast<int>(groupColumns.size());
+        if (rowEnd - firstRow >= 2) {
+            RowGroup group{firstRow, rowEnd, width, static_cast<int>(m_groupPairLocal.size()), 0};
+            std::vector<int> targetOf(static_cast<std::size_t>(width * width), -1);
+            for (int r = firstRow; r < rowEnd; ++r) {
+                const int begin = m_jacRowStart[r];
+                const int end = m_jacRowStart[r + 1];
+                std::size_t pair = pairBase[static_cast<std::size_t>(r)];
+                for (int i = begin; i < end; ++i) {
+                    const int li = localOf[static_cast<std::size_t>(m_jacColumn[i])];
+                    m_entryLocal[static_cast<std::size_t>(i)] = li;
+                    for (int j = i; j < end; ++j, ++pair) {
+                        const int lj = localOf[static_cast<std::size_t>(m_jacColumn[j])];
+                        const int packed = std::min(li, lj) * width + std::max(li, lj);
+                        if (targetOf[static_cast<std::size_t>(packed)] < 0) {
+                            targetOf[static_cast<std::size_t>(packed)] = m_originalPairTarget[pair];
+                            m_groupPairLocal.push_back(packed);
+                            m_originalGroupPairTarget.push_back(m_originalPairTarget[pair]);
+                        }
+                    }
+                }
+            }
+            group.pairEnd = static_cast<int>(m_groupPairLocal.size());
+            m_groups.push_back(group);
+        }
+        for (int column : groupColumns) {
+            localOf[static_cast<std::size_t>(column)] = -1;
+        }
+        groupColumns.clear();
+        for (int packed : seenList) {
+            seen[static_cast<std::size_t>(packed)] = 0;
+        }
+        seenList.clear();
+    };
+    for (int t = 0; t < problem.termCount(); ++t) {
+        const int rowEnd = m_termRowStart[static_cast<std::size_t>(t) + 1];
+        int r = m_termRowStart[t];
+        while (r < rowEnd) {
+            int q = r;
+            if (tryJoin(q, true)) {
+                ++q;
+                while (q < rowEnd && tryJoin(q, false)) {
+                    ++q;
+                }
+            } else {
+                ++q; // wider than a block
+            }
+            closeGroup(r, q);
+            r = q;
+        }
+    }
+
+    // Keep the per-pair targets and the repeated-column corrections of ungrouped rows only.
+    std::vector<char> grouped(static_cast<std::size_t>(m_rows), 0);
+    for (const RowGroup& group : m_groups) {
+        std::fill(grouped.begin() + group.firstRow, grouped.begin() + group.rowEnd, 1);
+    }
+    std::vector<int> singleTargets;
+    for (int r = 0; r < m_rows; ++r) {
+        if (grouped[static_cast<std::size_t>(r)] == 0) {
+            singleTargets.insert(
+                singleTargets.end(),
+                m_originalPairTarget.begin() +
+                    static_cast<std::ptrdiff_t>(pairBase[static_cast<std::size_t>(r)]),
+                m_originalPairTarget.begin() +
+                    static_cast<std::ptrdiff_t>(pairBase[static_cast<std::size_t>(r) + 1]));
+        }
+    }
+    m_originalPairTarget = std::move(singleTargets);
+    m_duplicates.erase(std::remove_if(m_duplicates.begin(), m_duplicates.end(),
+                                      [&grouped](const DuplicatePair& d) {
+                                          return grouped[static_cast<std::size_t>(d.row)] != 0;
+                                      }),
+                       m_duplicates.end());
+    m_groupRow.assign(maxWidth, 0.0);
+    m_groupBlock.assign(maxWidth * maxWidth, 0.0);
+}
+
+int NormalEquations::groupedRowCount() const {
+    int rows = 0;
+    for (const RowGroup& group : m_groups) {
+        rows += group.rowEnd - group.firstRow;
+    }
+    return rows;
 }
 
 bool NormalEquations::matches(const Problem& problem) const {
@@ -226,6 +383,10 @@ void NormalEquations::setLayout(const std::vector<int>& permutation, Triangle tr
     m_pairTarget.resize(m_originalPairTarget.size());
     for (std::size_t p = 0; p < m_pairTarget.size(); ++p) {
         m_pairTarget[p] = m_position[static_cast<std::size_t>(m_originalPairTarget[p])];
+    }
+    m_groupPairTarget.resize(m_originalGroupPairTarget.size());
+    for (std::size_t p = 0; p < m_groupPairTarget.size(); ++p) {
+        m_groupPairTarget[p] = m_position[static_cast<std::size_t>(m_originalGroupPairTarget[p])];
     }
     m_diagonal.resize(m_originalDiagonal.size());
     for (std::size_t v = 0; v < m_diagonal.size(); ++v) {
@@ -303,17 +464,31 @@ void NormalEquations::fill(const Problem& problem, double eps1, double eps2, dou
     const int* column = m_jacColumn.data();
     const int* target = m_pairTarget.data();
     std::size_t p = 0;
+    std::size_t nextGroup = 0;
     for (int t = 0; t < problem.termCount(); ++t) {
         const double w = termWeight(problem, t, eps1, proximity);
         const double w2 = w * w;
         const int rowEnd = m_termRowStart[static_cast<std::size_t>(t) + 1];
-        for (int r = m_termRowStart[t]; r < rowEnd; ++r) {
+        int r = m_termRowStart[t];
+        while (r < rowEnd) {
+            if (nextGroup < m_groups.size() && m_groups[nextGroup].firstRow == r) {
+                const RowGroup& group = m_groups[nextGroup++];
+                for (int q = group.firstRow; q < group.rowEnd; ++q) {
+                    m_rowWeight2[static_cast<std::size_t>(q)] = w2;
+                }
+                if (w2 != 0.0) {
+                    fillGroup(group, w2, values, rhs);
+                }
+                r = group.rowEnd;
+                continue;
+            }
             m_rowWeight2[static_cast<std::size_t>(r)] = w2;
             const int begin = m_jacRowStart[r];
             const int end = m_jacRowStart[r + 1];
             if (w2 == 0.0) {
                 const auto m = static_cast<std::size_t>(end - begin);
                 p += m * (m + 1) / 2;
+                ++r;
                 continue;
             }
             const double f = w2 * m_residual[static_cast<std::size_t>(r)];
@@ -324,6 +499,7 @@ void NormalEquations::fill(const Problem& problem, double eps1, double eps2, dou
                     values[target[p++]] += a * jac[j];
                 }
             }
+            ++r;
         }
     }
     for (const DuplicatePair& d : m_duplicates) {
@@ -337,6 +513,40 @@ void NormalEquations::fill(const Problem& problem, double eps1, double eps2, dou
     // Fixed variables: their rows and columns are zero; a unit diagonal keeps N definite.
     for (int v : problem.fixedVariables()) {
         values[m_diagonal[static_cast<std::size_t>(v)]] += 1.0;
+    }
+}
+
+void NormalEquations::fillGroup(const RowGroup& group, double w2, double* values, double* rhs) {
+    const int width = group.width;
+    const auto w = static_cast<std::size_t>(width);
+    double* row = m_groupRow.data();
+    double* block = m_groupBlock.data();
+    std::fill_n(block, w * w, 0.0);
+    const double* jac = m_jacValue.data();
+    for (int r = group.firstRow; r < group.rowEnd; ++r) {
+        const int begin = m_jacRowStart[r];
+        const int end = m_jacRowStart[r + 1];
+        const double f = w2 * m_residual[static_cast<std::size_t>(r)];
+        std::fill_n(row, w, 0.0);
+        for (int i = begin; i < end; ++i) {
+            rhs[m_jacColumn[static_cast<std::size_t>(i)]] -= f * jac[i];
+            row[m_entryLocal[static_cast<std::size_t>(i)]] += jac[i];
+        }
+        // The block's upper triangle in the group's column order: row rowᵀ, summed over rows.
+        for (int s = 0; s < width; ++s) {
+            const double a = row[s];
+            if (a == 0.0) {
+                continue;
+            }
+            double* out = block + static_cast<std::size_t>(s) * w;
+            for (int t = s; t < width; ++t) {
+                out[t] += a * row[t];
+            }
+        }
+    }
+    for (int k = group.pairStart; k < group.pairEnd; ++k) {
+        values[m_groupPairTarget[static_cast<std::size_t>(k)]] +=
+            w2 * block[m_groupPairLocal[static_cast<std::size_t>(k)]];
     }
 }
 

@@ -16,11 +16,16 @@ class Problem;
 //   N = HᵀW²H + ε₁²KᵀK + ε₂²I,   g = −(HᵀW²φ_H + ε₁²Kᵀ φ_K),   N δ = g,   x_{k+1} = x_k + δ
 //
 // (the step form of (6); identical to solving for x with right-hand side HᵀW²r + ε₁²Kᵀs +
-// ε₂²x_k). H and K are the Jacobians of the constraint and energy rows. For every pair of
-// Jacobian entries in the same row the index of the normal-matrix nonzero it contributes to is
-// precomputed, so fill() only runs a multiply-add per pair into the stored triangle. The
-// stored triangle can be laid out in a permuted order (setLayout) so that CHOLMOD factorises
-// it in place without permuting or transposing a copy.
+// ε₂²x_k). H and K are the Jacobians of the constraint and energy rows. The index of the
+// normal-matrix nonzero every product of two Jacobian entries contributes to is precomputed,
+// so fill() only runs multiply-adds into the stored triangle. Consecutive rows of one term
+// whose columns largely coincide (the three rows of (4) at the collocation values of one
+// interval share one set of control points) form a group: their products are summed in a
+// small dense block over the union of their columns, which is added to the stored triangle
+// once, instead of every row adding its own products (on the annulus of 52,000 variables 26
+// million scattered additions per fill became 2.6 million). The stored triangle can be laid
+// out in a permuted order (setLayout) so that CHOLMOD factorises it in place without
+// permuting or transposing a copy.
 class NormalEquations {
 public:
     enum class Triangle { Upper, Lower };
@@ -57,7 +62,14 @@ public:
     int rowCount() const { return m_rows; }
     long long jacobianNonZeros() const { return static_cast<long long>(m_jacColumn.size()); }
     long long normalNonZeros() const { return static_cast<long long>(m_rowIndex.size()); }
-    long long pairCount() const { return static_cast<long long>(m_pairTarget.size()); }
+    // Additions into the stored triangle per fill (products of single rows, and entries of
+    // the dense blocks of row groups).
+    long long pairCount() const {
+        return static_cast<long long>(m_pairTarget.size() + m_groupPairTarget.size());
+    }
+    // Groups of rows assembled through a dense block, and the rows in them.
+    int rowGroupCount() const { return static_cast<int>(m_groups.size()); }
+    int groupedRowCount() const;
 
     const std::vector<double>& residuals() const { return m_residual; }
     const std::vector<double>& jacobianValues() const { return m_jacValue; }
@@ -86,6 +98,21 @@ private:
         int row;
         int target; // normal-matrix nonzero in the original layout
     };
+    // Rows [firstRow, rowEnd) of one term, assembled through a dense block over the sorted
+    // union of their columns (width of them); the block's entries that some row of the group
+    // contributes to are m_groupPairLocal / m_groupPairTarget [pairStart, pairEnd).
+    struct RowGroup {
+        int firstRow;
+        int rowEnd;
+        int width;
+        int pairStart;
+        int pairEnd;
+    };
+    // Splits every term's rows into groups (formGroups) and keeps the per-pair targets of
+    // the rows outside groups only.
+    void formGroups(const Problem& problem, const std::vector<std::size_t>& pairBase);
+    // Adds group's rows (weight² w2) to the stored triangle and the right-hand side.
+    void fillGroup(const RowGroup& group, double w2, double* values, double* rhs);
 
     bool m_built = false;
     std::uint64_t m_structureId = 0;
@@ -108,10 +135,19 @@ private:
     Triangle m_triangle = Triangle::Upper;
     std::vector<int> m_colStart;
     std::vector<int> m_rowIndex;
-    std::vector<int> m_position; // original nonzero -> current nonzero
-    std::vector<int> m_pairTarget;
-    std::vector<int> m_diagonal; // per original variable
+    std::vector<int> m_position;   // original nonzero -> current nonzero
+    std::vector<int> m_pairTarget; // rows outside groups, in row order
+    std::vector<int> m_diagonal;   // per original variable
     std::vector<DuplicatePair> m_duplicates;
+    // Row groups: per Jacobian entry of a grouped row, its column's index in the group's
+    // union (-1 outside groups); per block entry, its index s·width + t (s <= t) and target.
+    std::vector<RowGroup> m_groups;
+    std::vector<int> m_entryLocal;
+    std::vector<int> m_groupPairLocal;
+    std::vector<int> m_originalGroupPairTarget;
+    std::vector<int> m_groupPairTarget;
+    std::vector<double> m_groupRow;   // scratch: one row of a group, dense over its union
+    std::vector<double> m_groupBlock; // scratch: width × width block
 
     // Fixed variables.
     std::uint64_t m_fixedRevision = ~std::uint64_t{0};

@@ -25,12 +25,14 @@ enum class FactorizationMethod {
 };
 
 // The flops per non-zero of L from which the supernodal factorisation is faster with the
-// single-threaded OpenBLAS that setup.sh selects. Measured per iteration (simplicial /
-// supernodal ms) on the annulus at sizes 6 … 28 (2,144 … 45,732 variables; flops / nnz(L)
-// 55 … 213): 2.3 / 5.8 at 55, 30 / 41 at 106, 55 / 74 at 129, 95 / 93 at 158, 175 / 144 at
-// 195, 267 / 195 at 213; the bench's models all lie below 115 (large-annulus, 40,200
-// variables: 203 / 271 ms on the first iterate) and take the simplicial one.
-inline constexpr double kCalibratedSupernodalSwitch = 155.0;
+// single-threaded OpenBLAS that setup.sh selects and CHOLMOD's parallel regions kept to one
+// thread (solver/core/sparse_cholesky.cpp). Measured per iteration (supernodal / simplicial
+// ms, devsurf-cli solve from 0.1 % noise): mixed 0.034 / 0.031 at 23 flops per non-zero,
+// sheet 0.21 / 0.24 at 33, cylinder 0.32 / 0.43 at 33, fig6 0.043 / 0.076 at 39, fig8
+// 0.22 / 0.34 at 42; the annulus at sizes 6 … 28 (2,144 … 45,732 variables) 1.6 / 2.4 at
+// 55, 8.1 / 18 at 95, 30 / 103 at 158, 67 / 313 at 213. (With CHOLMOD's four threads on our
+// two cores the supernodal factorisation was slower than the simplicial one up to 158.)
+inline constexpr double kCalibratedSupernodalSwitch = 30.0;
 
 // Options of GuidedProjection::solve (in the style of Ceres' Solver::Options).
 struct Options {

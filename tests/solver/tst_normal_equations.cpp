@@ -68,6 +68,68 @@ Problem makeMixedProblem(unsigned seed, int points) {
     return p;
 }
 
+// Rows shaped like the developability conditions (4): at several values per interval of a
+// cubic spline, ⟨n, b − a⟩, ⟨n, a′⟩ and ⟨n, b′⟩ with n, a, b combinations of the interval's
+// four control normals and points (the first side names one point twice), so consecutive rows
+// share their columns and are assembled in groups. Between the intervals, rows that share
+// nothing (unit norms, fairness) and a disabled family of the same shape; two fixed variables
+// inside the groups.
+Problem makeCollocationProblem(unsigned seed, int intervals) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> coefficient(-1.0, 1.0);
+    const int controls = intervals + 3;
+    Problem p;
+    const int aBlock = p.addVariableBlock("a", 3 * controls);
+    const int bBlock = p.addVariableBlock("b", 3 * controls);
+    const int normalBlock = p.addVariableBlock("normals", 3 * controls);
+    const FamilyId dev = p.addFamily("developability", TermRole::Constraint, 1.5);
+    const FamilyId off = p.addFamily("disabled", TermRole::Constraint, 0.0);
+    const FamilyId unit = p.addFamily("unit", TermRole::Constraint, 1.0);
+    const FamilyId fair = p.addFamily("fairness", TermRole::Energy, 0.3);
+    auto combination = [&](int block, int first) {
+        PointCombination c;
+        for (int k = 0; k < 4; ++k) {
+            c.push_back({block + 3 * (first + k), coefficient(rng)});
+        }
+        return c;
+    };
+    auto minus = [](PointCombination left, const PointCombination& right) {
+        for (const PointTerm& t : right) {
+            left.push_back({t.offset, -t.coefficient});
+        }
+        return left;
+    };
+    auto rows = std::make_unique<BilinearTerm>(3);
+    auto disabled = std::make_unique<BilinearTerm>(3);
+    for (int i = 0; i < intervals; ++i) {
+        for (int value = 0; value < 4; ++value) {
+            const PointCombination n = combination(normalBlock, i);
+            PointCombination side = minus(combination(bBlock, i), combination(aBlock, i));
+            side.push_back(side.front());
+            rows->addRow(n, side);
+            rows->addRow(n, combination(aBlock, i));
+            rows->addRow(n, combination(bBlock, i));
+            disabled->addRow(n, side);
+            disabled->addRow(n, combination(bBlock, i));
+        }
+    }
+    auto norms = std::make_unique<UnitNormTerm>(3);
+    std::vector<int> sequence;
+    for (int k = 0; k < controls; ++k) {
+        norms->addVector(normalBlock + 3 * k);
+        sequence.push_back(aBlock + 3 * k);
+    }
+    auto fairness = std::make_unique<FairnessTerm>(3);
+    fairness->addSequence(sequence);
+    p.add(dev, std::move(rows));
+    p.add(unit, std::move(norms));
+    p.add(off, std::move(disabled));
+    p.add(fair, std::move(fairness));
+    p.setFixed(aBlock + 4);
+    p.setFixed(normalBlock + 7);
+    return p;
+}
+
 double relativeDifference(const Eigen::SparseMatrix<double>& a,
                           const Eigen::SparseMatrix<double>& b) {
     return Eigen::SparseMatrix<double>(a - b).norm() / std::max(b.norm(), 1e-300);
@@ -108,14 +170,19 @@ private slots:
 
     void refillMatchesScratchAssembly_data() {
         QTest::addColumn<int>("layout");
-        QTest::newRow("identity upper") << 0;
-        QTest::newRow("permuted lower") << 1;
-        QTest::newRow("permuted upper") << 2;
+        QTest::addColumn<bool>("collocation");
+        QTest::newRow("identity upper") << 0 << false;
+        QTest::newRow("permuted lower") << 1 << false;
+        QTest::newRow("permuted upper") << 2 << false;
+        QTest::newRow("row groups, identity upper") << 0 << true;
+        QTest::newRow("row groups, permuted lower") << 1 << true;
+        QTest::newRow("row groups, permuted upper") << 2 << true;
     }
 
     void refillMatchesScratchAssembly() {
         QFETCH(int, layout);
-        Problem p = makeMixedProblem(7, 40);
+        QFETCH(bool, collocation);
+        Problem p = collocation ? makeCollocationProblem(7, 9) : makeMixedProblem(7, 40);
         NormalEquations equations;
         QVERIFY(equations.build(p, nullptr));
         const int n = equations.variableCount();
@@ -144,6 +211,30 @@ private slots:
             QVERIFY((refilledRhs - scratchRhs).norm() <= 1e-14 * scratchRhs.norm());
             QVERIFY(scratch.norm() > 1.0);
         }
+    }
+
+    void rowsSharingColumnsAreAssembledInGroups() {
+        // The rows of the two bilinear families (12 and 8 per interval) are assembled in groups
+        // of neighbouring intervals (up to a block's width); unit norms and fairness rows share
+        // too little and stay alone. Each group adds its block once: far fewer additions than
+        // every row adding its own products.
+        const int intervals = 9;
+        const Problem p = makeCollocationProblem(3, intervals);
+        NormalEquations equations;
+        QVERIFY(equations.build(p, nullptr));
+        QCOMPARE(equations.groupedRowCount(), 20 * intervals);
+        QVERIFY(equations.rowGroupCount() >= 4);
+        QVERIFY(equations.rowGroupCount() <= 2 * intervals);
+        const auto& start = equations.jacobianRowStart();
+        long long products = 0;
+        for (int r = 0; r < equations.rowCount(); ++r) {
+            const long long m = start[r + 1] - start[r];
+            products += m * (m + 1) / 2;
+        }
+        QVERIFY2(
+            equations.pairCount() * 4 < products,
+            qPrintable(
+                QString("%1 additions for %2 products").arg(equations.pairCount()).arg(products)));
     }
 
     void scratchAssemblyAgreesWithDenseProduct() {
