@@ -23,19 +23,6 @@ double termWeight(const Problem& problem, int term, double eps1, double proximit
     return family.weight;
 }
 
-// Builds a CSC pattern from sorted unique keys column * n + row.
-void keysToCsc(const std::vector<std::uint64_t>& keys, int n, std::vector<int>& colStart,
-               std::vector<int>& rowIndex) {
-    colStart.assign(static_cast<std::size_t>(n) + 1, 0);
-    rowIndex.resize(keys.size());
-    for (std::size_t k = 0; k < keys.size(); ++k) {
-        const auto column = static_cast<std::size_t>(keys[k] / static_cast<std::uint64_t>(n));
-        rowIndex[k] = static_cast<int>(keys[k] % static_cast<std::uint64_t>(n));
-        ++colStart[column + 1];
-    }
-    std::partial_sum(colStart.begin(), colStart.end(), colStart.begin());
-}
-
 } // namespace
 
 bool NormalEquations::build(const Problem& problem, std::string* error) {
@@ -78,37 +65,78 @@ bool NormalEquations::build(const Problem& problem, std::string* error) {
     m_residual.assign(static_cast<std::size_t>(m_rows), 0.0);
     m_rowWeight2.assign(static_cast<std::size_t>(m_rows), 0.0);
 
-    // Pattern of the upper triangle of JᵀJ + I, column by column through the transpose of J
-    // (a symbolic sparse product), and for every pair of Jacobian entries in a row the index
-    // of the nonzero it contributes to. Pairs of row r are enumerated as (i, j), i <= j, in
-    // row order, starting at pairBase[r].
-    std::vector<std::size_t> pairBase(static_cast<std::size_t>(m_rows) + 1, 0);
-    for (int r = 0; r < m_rows; ++r) {
-        const auto m = static_cast<std::size_t>(m_jacRowStart[r + 1] - m_jacRowStart[r]);
-        pairBase[static_cast<std::size_t>(r) + 1] =
-            pairBase[static_cast<std::size_t>(r)] + m * (m + 1) / 2;
+    formGroups(problem);
+
+    // Assembly units: a row outside groups (its entries, a column possibly repeated) or a
+    // group (the union of its rows' columns). Every unit adds the products of all pairs of its
+    // columns, so the pattern of the upper triangle of N is the union of the units' pairs and
+    // the diagonal. Units are numbered rows-outside-groups first (in row order), then groups.
+    std::vector<int> singleRows;
+    {
+        std::vector<char> grouped(static_cast<std::size_t>(m_rows), 0);
+        for (const RowGroup& group : m_groups) {
+            std::fill(grouped.begin() + group.firstRow, grouped.begin() + group.rowEnd, 1);
+        }
+        for (int r = 0; r < m_rows; ++r) {
+            if (grouped[static_cast<std::size_t>(r)] == 0) {
+                singleRows.push_back(r);
+            }
+        }
     }
-    // Transpose of J: for each column, the Jacobian entries in it.
+    const auto singles = static_cast<int>(singleRows.size());
+    const auto units = singles + static_cast<int>(m_groups.size());
+    auto unitBegin = [&](int u) {
+        return u < singles ? m_jacRowStart[singleRows[static_cast<std::size_t>(u)]]
+                           : m_groups[static_cast<std::size_t>(u - singles)].columnStart;
+    };
+    auto unitEnd = [&](int u) {
+        return u < singles ? m_jacRowStart[singleRows[static_cast<std::size_t>(u)] + 1]
+                           : m_groups[static_cast<std::size_t>(u - singles)].columnStart +
+                                 m_groups[static_cast<std::size_t>(u - singles)].width;
+    };
+    auto unitColumns = [&](int u) {
+        return u < singles ? m_jacColumn.data() : m_groupColumns.data();
+    };
+    // Per single row, its first pair index; pairs (i, j), i <= j, in row order.
+    std::vector<std::size_t> pairBase(static_cast<std::size_t>(singles) + 1, 0);
+    for (int u = 0; u < singles; ++u) {
+        const auto m = static_cast<std::size_t>(unitEnd(u) - unitBegin(u));
+        pairBase[static_cast<std::size_t>(u) + 1] =
+            pairBase[static_cast<std::size_t>(u)] + m * (m + 1) / 2;
+    }
+    // Per group, its block's targets (width × width, upper triangle used).
+    std::vector<std::size_t> blockBase(m_groups.size() + 1, 0);
+    for (std::size_t g = 0; g < m_groups.size(); ++g) {
+        const auto w = static_cast<std::size_t>(m_groups[g].width);
+        blockBase[g + 1] = blockBase[g] + w * w;
+    }
+    std::vector<int> blockTarget(blockBase.back(), -1);
+    // Transpose: for each column, the (unit, entry) places it occurs at.
     std::vector<int> transposeStart(static_cast<std::size_t>(n) + 1, 0);
-    for (int c : m_jacColumn) {
-        ++transposeStart[static_cast<std::size_t>(c) + 1];
+    for (int u = 0; u < units; ++u) {
+        const int* columns = unitColumns(u);
+        for (int e = unitBegin(u); e < unitEnd(u); ++e) {
+            ++transposeStart[static_cast<std::size_t>(columns[e]) + 1];
+        }
     }
     std::partial_sum(transposeStart.begin(), transposeStart.end(), transposeStart.begin());
-    std::vector<int> transposeEntry(m_jacColumn.size());
-    std::vector<int> transposeRow(m_jacColumn.size());
+    std::vector<int> transposeUnit(static_cast<std::size_t>(transposeStart.back()));
+    std::vector<int> transposeEntry(transposeUnit.size());
     {
         std::vector<int> next(transposeStart.begin(), transposeStart.end() - 1);
-        for (int r = 0; r < m_rows; ++r) {
-            for (int e = m_jacRowStart[r]; e < m_jacRowStart[r + 1]; ++e) {
-                const int k = next[static_cast<std::size_t>(m_jacColumn[e])]++;
+        for (int u = 0; u < units; ++u) {
+            const int* columns = unitColumns(u);
+            for (int e = unitBegin(u); e < unitEnd(u); ++e) {
+                const int k = next[static_cast<std::size_t>(columns[e])]++;
+                transposeUnit[static_cast<std::size_t>(k)] = u;
                 transposeEntry[static_cast<std::size_t>(k)] = e;
-                transposeRow[static_cast<std::size_t>(k)] = r;
             }
         }
     }
     m_originalColStart.assign(static_cast<std::size_t>(n) + 1, 0);
     m_originalRowIndex.clear();
-    m_originalRowIndex.reserve(m_jacColumn.size() * 4 + static_cast<std::size_t>(n));
+    m_originalRowIndex.reserve(static_cast<std::size_t>(transposeStart.back()) * 4 +
+                               static_cast<std::size_t>(n));
     m_originalPairTarget.assign(pairBase.back(), -1);
     m_originalDiagonal.resize(static_cast<std::size_t>(n));
     m_duplicates.clear();
@@ -120,9 +148,10 @@ bool NormalEquations::build(const Problem& problem, std::string* error) {
         rowsOfColumn.push_back(c);
         mark[static_cast<std::size_t>(c)] = c;
         for (int k = transposeStart[c]; k < transposeStart[static_cast<std::size_t>(c) + 1]; ++k) {
-            const int r = transposeRow[static_cast<std::size_t>(k)];
-            for (int e = m_jacRowStart[r]; e < m_jacRowStart[r + 1]; ++e) {
-                const int other = m_jacColumn[e];
+            const int u = transposeUnit[static_cast<std::size_t>(k)];
+            const int* columns = unitColumns(u);
+            for (int e = unitBegin(u); e < unitEnd(u); ++e) {
+                const int other = columns[e];
                 if (other < c && mark[static_cast<std::size_t>(other)] != c) {
                     mark[static_cast<std::size_t>(other)] = c;
                     rowsOfColumn.push_back(other);
@@ -140,32 +169,54 @@ bool NormalEquations::build(const Problem& problem, std::string* error) {
         m_originalDiagonal[static_cast<std::size_t>(c)] = position[static_cast<std::size_t>(c)];
         // Every pair whose larger column is c gets its target here, exactly once.
         for (int k = transposeStart[c]; k < transposeStart[static_cast<std::size_t>(c) + 1]; ++k) {
-            const int r = transposeRow[static_cast<std::size_t>(k)];
-            const int begin = m_jacRowStart[r];
-            const int m = m_jacRowStart[r + 1] - begin;
+            const int u = transposeUnit[static_cast<std::size_t>(k)];
+            const int begin = unitBegin(u);
+            const int m = unitEnd(u) - begin;
             const int j = transposeEntry[static_cast<std::size_t>(k)] - begin;
+            const int* columns = unitColumns(u);
             for (int i = 0; i < m; ++i) {
-                const int other = m_jacColumn[static_cast<std::size_t>(begin + i)];
+                const int other = columns[begin + i];
                 if (other > c || (other == c && i > j)) {
                     continue;
                 }
+                const int target = position[static_cast<std::size_t>(other)];
                 const auto a = static_cast<std::size_t>(std::min(i, j));
                 const auto b = static_cast<std::size_t>(std::max(i, j));
-                const std::size_t index = pairBase[static_cast<std::size_t>(r)] +
+                if (u >= singles) { // a group's columns are distinct
+                    const auto g = static_cast<std::size_t>(u - singles);
+                    blockTarget[blockBase[g] + a * static_cast<std::size_t>(m) + b] = target;
+                    continue;
+                }
+                const std::size_t index = pairBase[static_cast<std::size_t>(u)] +
                                           a * static_cast<std::size_t>(m) - a * (a - 1) / 2 +
                                           (b - a);
-                const int target = position[static_cast<std::size_t>(other)];
                 m_originalPairTarget[index] = target;
                 // A column repeated within a row: the cross product lands on the diagonal
                 // twice ((Jᵢ + Jⱼ)² = Jᵢ² + 2JᵢJⱼ + Jⱼ²).
                 if (other == c && i < j) {
-                    m_duplicates.push_back({begin + i, begin + j, r, target});
+                    m_duplicates.push_back(
+                        {begin + i, begin + j, singleRows[static_cast<std::size_t>(u)], target});
                 }
             }
         }
     }
-
-    formGroups(problem, pairBase);
+    // The blocks' upper triangles, entry by entry.
+    m_groupPairLocal.clear();
+    m_originalGroupPairTarget.clear();
+    for (std::size_t g = 0; g < m_groups.size(); ++g) {
+        RowGroup& group = m_groups[g];
+        const int w = group.width;
+        group.pairStart = static_cast<int>(m_groupPairLocal.size());
+        for (int a = 0; a < w; ++a) {
+            for (int b = a; b < w; ++b) {
+                const int packed = a * w + b;
+                m_groupPairLocal.push_back(packed);
+                m_originalGroupPairTarget.push_back(
+                    blockTarget[blockBase[g] + static_cast<std::size_t>(packed)]);
+            }
+        }
+        group.pairEnd = static_cast<int>(m_groupPairLocal.size());
+    }
 
     m_structureId = problem.structureId();
     m_fixedRevision = ~std::uint64_t{0};
@@ -174,68 +225,40 @@ bool NormalEquations::build(const Problem& problem, std::string* error) {
     return true;
 }
 
-void NormalEquations::formGroups(const Problem& problem, const std::vector<std::size_t>& pairBase) {
+void NormalEquations::formGroups(const Problem& problem) {
     // A group is grown row by row while each new row adds at most half as many block entries
     // as it has products of its own, up to kMaxWidth columns: the rows of (4) at the values of
     // one interval (all on the same control points) join, the next interval's (a shifted set)
     // starts a new group, and rows that share nothing (fairness, unit norms) stay alone.
-    constexpr int kMaxWidth = 64;
-    const auto maxWidth = static_cast<std::size_t>(kMaxWidth);
+    constexpr std::size_t kMaxWidth = 64;
     m_groups.clear();
-    m_groupPairLocal.clear();
-    m_originalGroupPairTarget.clear();
+    m_groupColumns.clear();
     m_entryLocal.assign(m_jacColumn.size(), -1);
     std::vector<int> localOf(static_cast<std::size_t>(m_variables), -1);
     std::vector<int> groupColumns;
-    std::vector<unsigned char> seen(maxWidth * maxWidth, 0);
-    std::vector<int> seenList;   // entries of `seen` set for the current group
     std::vector<int> newColumns; // columns a candidate row would add
-    std::vector<int> candidate;  // entries of `seen` a candidate row would set
-    std::vector<int> rowLocal;   // a candidate row's entries' local indices
-    auto localIndex = [&](int column) {
-        const int known = localOf[static_cast<std::size_t>(column)];
-        if (known >= 0) {
-            return known;
-        }
-        const auto it = std::find(newColumns.begin(), newColumns.end(), column);
-        if (it == newColumns.end()) {
-            newColumns.push_back(column);
-            return static_cast<int>(groupColumns.size() + newColumns.size()) - 1;
-        }
-        return static_cast<int>(groupColumns.size()) + static_cast<int>(it - newColumns.begin());
-    };
+    auto blockEntries = [](std::size_t w) { return w * (w + 1) / 2; };
     // Tries to add row r to the current group; true if it joined.
     auto tryJoin = [&](int r, bool first) {
         newColumns.clear();
-        candidate.clear();
         const int begin = m_jacRowStart[r];
         const int end = m_jacRowStart[r + 1];
-        rowLocal.clear();
         for (int i = begin; i < end; ++i) {
-            rowLocal.push_back(localIndex(m_jacColumn[static_cast<std::size_t>(i)]));
-        }
-        for (std::size_t i = 0; i < rowLocal.size(); ++i) {
-            const int li = rowLocal[i];
-            for (std::size_t j = i; j < rowLocal.size(); ++j) {
-                const int lj = rowLocal[j];
-                const int packed = std::min(li, lj) * kMaxWidth + std::max(li, lj);
-                if (std::max(li, lj) < kMaxWidth && seen[static_cast<std::size_t>(packed)] == 0) {
-                    seen[static_cast<std::size_t>(packed)] = 1;
-                    candidate.push_back(packed);
-                }
+            const int column = m_jacColumn[static_cast<std::size_t>(i)];
+            if (localOf[static_cast<std::size_t>(column)] < 0 &&
+                std::find(newColumns.begin(), newColumns.end(), column) == newColumns.end()) {
+                newColumns.push_back(column);
             }
         }
         const auto m = static_cast<std::size_t>(end - begin);
-        const bool fits = groupColumns.size() + newColumns.size() <= maxWidth;
-        // A first row always starts a group unless it is wider than a block (then it is
-        // assembled alone); a further row joins if it adds few new block entries.
-        if (!fits || (!first && 2 * candidate.size() > m * (m + 1) / 2)) {
-            for (int packed : candidate) {
-                seen[static_cast<std::size_t>(packed)] = 0;
-            }
+        const std::size_t width = groupColumns.size() + newColumns.size();
+        // A first row starts a group unless it is wider than a block (then it is assembled
+        // alone); a further row joins if it adds few block entries.
+        if (width > kMaxWidth ||
+            (!first &&
+             2 * (blockEntries(width) - blockEntries(groupColumns.size())) > blockEntries(m))) {
             return false;
         }
-        seenList.insert(seenList.end(), candidate.begin(), candidate.end());
         for (int column : newColumns) {
             localOf[static_cast<std::size_t>(column)] = static_cast<int>(groupColumns.size());
             groupColumns.push_back(column);
@@ -243,39 +266,19 @@ void NormalEquations::formGroups(const Problem& problem, const std::vector<std::
         return true;
     };
     auto closeGroup = [&](int firstRow, int rowEnd) {
-        const auto width = static_cast<int>(groupColumns.size());
         if (rowEnd - firstRow >= 2) {
-            RowGroup group{firstRow, rowEnd, width, static_cast<int>(m_groupPairLocal.size()), 0};
-            std::vector<int> targetOf(static_cast<std::size_t>(width * width), -1);
-            for (int r = firstRow; r < rowEnd; ++r) {
-                const int begin = m_jacRowStart[r];
-                const int end = m_jacRowStart[r + 1];
-                std::size_t pair = pairBase[static_cast<std::size_t>(r)];
-                for (int i = begin; i < end; ++i) {
-                    const int li = localOf[static_cast<std::size_t>(m_jacColumn[i])];
-                    m_entryLocal[static_cast<std::size_t>(i)] = li;
-                    for (int j = i; j < end; ++j, ++pair) {
-                        const int lj = localOf[static_cast<std::size_t>(m_jacColumn[j])];
-                        const int packed = std::min(li, lj) * width + std::max(li, lj);
-                        if (targetOf[static_cast<std::size_t>(packed)] < 0) {
-                            targetOf[static_cast<std::size_t>(packed)] = m_originalPairTarget[pair];
-                            m_groupPairLocal.push_back(packed);
-                            m_originalGroupPairTarget.push_back(m_originalPairTarget[pair]);
-                        }
-                    }
-                }
+            m_groups.push_back({firstRow, rowEnd, static_cast<int>(groupColumns.size()),
+                                static_cast<int>(m_groupColumns.size()), 0, 0});
+            m_groupColumns.insert(m_groupColumns.end(), groupColumns.begin(), groupColumns.end());
+            for (int e = m_jacRowStart[firstRow]; e < m_jacRowStart[rowEnd]; ++e) {
+                m_entryLocal[static_cast<std::size_t>(e)] =
+                    localOf[static_cast<std::size_t>(m_jacColumn[static_cast<std::size_t>(e)])];
             }
-            group.pairEnd = static_cast<int>(m_groupPairLocal.size());
-            m_groups.push_back(group);
         }
         for (int column : groupColumns) {
             localOf[static_cast<std::size_t>(column)] = -1;
         }
         groupColumns.clear();
-        for (int packed : seenList) {
-            seen[static_cast<std::size_t>(packed)] = 0;
-        }
-        seenList.clear();
     };
     for (int t = 0; t < problem.termCount(); ++t) {
         const int rowEnd = m_termRowStart[static_cast<std::size_t>(t) + 1];
@@ -294,31 +297,8 @@ void NormalEquations::formGroups(const Problem& problem, const std::vector<std::
             r = q;
         }
     }
-
-    // Keep the per-pair targets and the repeated-column corrections of ungrouped rows only.
-    std::vector<char> grouped(static_cast<std::size_t>(m_rows), 0);
-    for (const RowGroup& group : m_groups) {
-        std::fill(grouped.begin() + group.firstRow, grouped.begin() + group.rowEnd, 1);
-    }
-    std::vector<int> singleTargets;
-    for (int r = 0; r < m_rows; ++r) {
-        if (grouped[static_cast<std::size_t>(r)] == 0) {
-            singleTargets.insert(
-                singleTargets.end(),
-                m_originalPairTarget.begin() +
-                    static_cast<std::ptrdiff_t>(pairBase[static_cast<std::size_t>(r)]),
-                m_originalPairTarget.begin() +
-                    static_cast<std::ptrdiff_t>(pairBase[static_cast<std::size_t>(r) + 1]));
-        }
-    }
-    m_originalPairTarget = std::move(singleTargets);
-    m_duplicates.erase(std::remove_if(m_duplicates.begin(), m_duplicates.end(),
-                                      [&grouped](const DuplicatePair& d) {
-                                          return grouped[static_cast<std::size_t>(d.row)] != 0;
-                                      }),
-                       m_duplicates.end());
-    m_groupRow.assign(maxWidth, 0.0);
-    m_groupBlock.assign(maxWidth * maxWidth, 0.0);
+    m_groupRow.assign(kMaxWidth, 0.0);
+    m_groupBlock.assign(kMaxWidth * kMaxWidth, 0.0);
 }
 
 int NormalEquations::groupedRowCount() const {
@@ -346,7 +326,6 @@ bool NormalEquations::matches(const Problem& problem) const {
 
 void NormalEquations::setLayout(const std::vector<int>& permutation, Triangle triangle) {
     const int n = m_variables;
-    const auto un = static_cast<std::uint64_t>(n);
     std::vector<int> inverse(static_cast<std::size_t>(n));
     if (permutation.empty()) {
         std::iota(inverse.begin(), inverse.end(), 0);
@@ -355,31 +334,49 @@ void NormalEquations::setLayout(const std::vector<int>& permutation, Triangle tr
             inverse[static_cast<std::size_t>(permutation[static_cast<std::size_t>(k)])] = k;
         }
     }
+    // The stored entries in the new layout, ordered by column and then row with two counting
+    // passes (by row, then stably by column): linear in the number of entries.
     const std::size_t nnz = m_originalRowIndex.size();
-    std::vector<std::uint64_t> newKey(nnz);
+    std::vector<int> newRow(nnz);
+    std::vector<int> newColumn(nnz);
     for (int c = 0; c < n; ++c) {
         for (int k = m_originalColStart[c]; k < m_originalColStart[c + 1]; ++k) {
             const int a = inverse[static_cast<std::size_t>(m_originalRowIndex[k])];
             const int b = inverse[static_cast<std::size_t>(c)];
-            const auto lo = static_cast<std::uint64_t>(std::min(a, b));
-            const auto hi = static_cast<std::uint64_t>(std::max(a, b));
-            // Upper: column = hi, row = lo. Lower: column = lo, row = hi.
-            newKey[static_cast<std::size_t>(k)] =
-                triangle == Triangle::Upper ? hi * un + lo : lo * un + hi;
+            // Upper: column = the larger index, row = the smaller; lower: the other way.
+            const bool upper = triangle == Triangle::Upper;
+            newRow[static_cast<std::size_t>(k)] = upper ? std::min(a, b) : std::max(a, b);
+            newColumn[static_cast<std::size_t>(k)] = upper ? std::max(a, b) : std::min(a, b);
         }
     }
-    std::vector<int> order(nnz);
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&newKey](int a, int b) {
-        return newKey[static_cast<std::size_t>(a)] < newKey[static_cast<std::size_t>(b)];
-    });
-    m_position.resize(nnz);
-    std::vector<std::uint64_t> sortedKeys(nnz);
-    for (std::size_t k = 0; k < nnz; ++k) {
-        m_position[static_cast<std::size_t>(order[k])] = static_cast<int>(k);
-        sortedKeys[k] = newKey[static_cast<std::size_t>(order[k])];
+    std::vector<int> byRow(nnz);
+    {
+        std::vector<int> next(static_cast<std::size_t>(n) + 1, 0);
+        for (int row : newRow) {
+            ++next[static_cast<std::size_t>(row) + 1];
+        }
+        std::partial_sum(next.begin(), next.end(), next.begin());
+        for (std::size_t k = 0; k < nnz; ++k) {
+            byRow[static_cast<std::size_t>(next[static_cast<std::size_t>(newRow[k])]++)] =
+                static_cast<int>(k);
+        }
     }
-    keysToCsc(sortedKeys, n, m_colStart, m_rowIndex);
+    m_colStart.assign(static_cast<std::size_t>(n) + 1, 0);
+    for (int column : newColumn) {
+        ++m_colStart[static_cast<std::size_t>(column) + 1];
+    }
+    std::partial_sum(m_colStart.begin(), m_colStart.end(), m_colStart.begin());
+    m_rowIndex.resize(nnz);
+    m_position.resize(nnz);
+    {
+        std::vector<int> next(m_colStart.begin(), m_colStart.end() - 1);
+        for (int k : byRow) {
+            const auto entry = static_cast<std::size_t>(k);
+            const int at = next[static_cast<std::size_t>(newColumn[entry])]++;
+            m_position[entry] = at;
+            m_rowIndex[static_cast<std::size_t>(at)] = newRow[entry];
+        }
+    }
     m_pairTarget.resize(m_originalPairTarget.size());
     for (std::size_t p = 0; p < m_pairTarget.size(); ++p) {
         m_pairTarget[p] = m_position[static_cast<std::size_t>(m_originalPairTarget[p])];

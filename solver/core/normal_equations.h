@@ -23,8 +23,10 @@ class Problem;
 // interval share one set of control points) form a group: their products are summed in a
 // small dense block over the union of their columns, which is added to the stored triangle
 // once, instead of every row adding its own products (on the annulus of 52,000 variables 26
-// million scattered additions per fill became 2.6 million). The stored triangle can be laid
-// out in a permuted order (setLayout) so that CHOLMOD factorises it in place without
+// million scattered additions per fill became 2.6 million). The pattern is built from the
+// groups too (every pair of a group's columns is stored, a few explicit zeros where no row has
+// both), so build() costs one pass per group rather than per row. The stored triangle can be
+// laid out in a permuted order (setLayout) so that CHOLMOD factorises it in place without
 // permuting or transposing a copy.
 class NormalEquations {
 public:
@@ -98,19 +100,19 @@ private:
         int row;
         int target; // normal-matrix nonzero in the original layout
     };
-    // Rows [firstRow, rowEnd) of one term, assembled through a dense block over the sorted
-    // union of their columns (width of them); the block's entries that some row of the group
-    // contributes to are m_groupPairLocal / m_groupPairTarget [pairStart, pairEnd).
+    // Rows [firstRow, rowEnd) of one term, assembled through a dense block over the union of
+    // their columns (m_groupColumns [columnStart, columnStart + width)); the block's upper
+    // triangle is m_groupPairLocal / m_groupPairTarget [pairStart, pairEnd).
     struct RowGroup {
         int firstRow;
         int rowEnd;
         int width;
+        int columnStart;
         int pairStart;
         int pairEnd;
     };
-    // Splits every term's rows into groups (formGroups) and keeps the per-pair targets of
-    // the rows outside groups only.
-    void formGroups(const Problem& problem, const std::vector<std::size_t>& pairBase);
+    // Splits every term's rows into groups (from the Jacobian's pattern alone).
+    void formGroups(const Problem& problem);
     // Adds group's rows (weight² w2) to the stored triangle and the right-hand side.
     void fillGroup(const RowGroup& group, double w2, double* values, double* rhs);
 
@@ -142,6 +144,7 @@ private:
     // Row groups: per Jacobian entry of a grouped row, its column's index in the group's
     // union (-1 outside groups); per block entry, its index s·width + t (s <= t) and target.
     std::vector<RowGroup> m_groups;
+    std::vector<int> m_groupColumns;
     std::vector<int> m_entryLocal;
     std::vector<int> m_groupPairLocal;
     std::vector<int> m_originalGroupPairTarget;
