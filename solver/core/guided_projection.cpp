@@ -41,6 +41,17 @@ double epsilon2(const Options& options, int iteration, double residual) {
     return options.eps2;
 }
 
+double admissibleStep(const Problem& problem, const double* x, const double* step, double keep) {
+    double fraction = 1.0;
+    for (int t = 0; t < problem.termCount(); ++t) {
+        const TermFamily& family = problem.family(problem.termFamily(t));
+        if (family.role == TermRole::Constraint && family.weight > 0.0) {
+            fraction = std::min(fraction, problem.term(t).admissibleStep(x, step, keep));
+        }
+    }
+    return fraction;
+}
+
 double proximityWeight(const Options& options, double residual) {
     if (options.proximityFactor <= 0.0) {
         return 0.0;
@@ -426,6 +437,15 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
             summary.status = Status::NonFiniteValue;
             summary.message = "the linear solve produced a non-finite step";
             break;
+        }
+        if (options.guardShrinkLimit > 0.0) {
+            stats.stepFraction =
+                admissibleStep(problem, d.x.data(), d.step.data(), options.guardShrinkLimit);
+            if (stats.stepFraction < 1.0) {
+                for (double& v : d.step) {
+                    v *= stats.stepFraction;
+                }
+            }
         }
         double stepSquared = 0.0;
         for (int i = 0; i < n; ++i) {

@@ -86,3 +86,50 @@ bool MinimumLengthTerm::evaluateRow(int row, const double* x, double* residual,
 }
 
 } // namespace devsurf::solver
+
+namespace devsurf::solver {
+
+double MinimumLengthTerm::admissibleStep(const double* x, const double* step, double keep) const {
+    double alpha = 1.0;
+    for (std::size_t r = 0; r < m_minimum.size(); ++r) {
+        if (m_minimum[r] <= 0.0) {
+            continue;
+        }
+        std::array<double, kMaxDimension> u{};
+        std::array<double, kMaxDimension> w{};
+        for (int e = m_start[r]; e < m_start[r + 1]; ++e) {
+            const PointTerm& p = m_points[static_cast<std::size_t>(e)];
+            for (int k = 0; k < m_dimension; ++k) {
+                u[k] += p.coefficient * x[p.offset + k];
+                w[k] += p.coefficient * step[p.offset + k];
+            }
+        }
+        double uu = 0.0;
+        double uw = 0.0;
+        double ww = 0.0;
+        for (int k = 0; k < m_dimension; ++k) {
+            uu += u[k] * u[k];
+            uw += u[k] * w[k];
+            ww += w[k] * w[k];
+        }
+        // q(α) = |u + αw|² − keep²|u|² = ww α² + 2 uw α + c, positive at α = 0: its first
+        // root in (0, 1], if the length falls that far anywhere on the step (a ruling pushed
+        // through zero to the other side ends long again, but has collapsed on the way).
+        const double c = (1.0 - keep * keep) * uu;
+        if (ww <= 0.0 || uw >= 0.0) {
+            continue; // not shrinking
+        }
+        const double lowest = std::min(1.0, -uw / ww);
+        if (ww * lowest * lowest + 2.0 * uw * lowest + c >= 0.0) {
+            continue;
+        }
+        const double discriminant = std::max(0.0, uw * uw - ww * c);
+        const double root = (-uw - std::sqrt(discriminant)) / ww;
+        if (root > 0.0) {
+            alpha = std::min(alpha, root);
+        }
+    }
+    return alpha;
+}
+
+} // namespace devsurf::solver

@@ -29,6 +29,8 @@ public:
     void buildPattern(PatternBuilder& builder) const override;
     void evaluate(const double* x, double* residuals, double* jacobian) const override;
     bool evaluateRow(int row, const double* x, double* residual, double* jacobian) const override;
+    // No guarded length (a row of positive minimum) shrinks below `keep` times its length at x.
+    double admissibleStep(const double* x, const double* step, double keep) const override;
 
 private:
     int evaluateOne(std::size_t r, const double* x, double* residual, double* jacobian) const;

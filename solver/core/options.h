@@ -6,6 +6,7 @@
 namespace devsurf::solver {
 
 struct IterationStats;
+class Problem;
 
 enum class FactorizationMethod {
     Supernodal, // CHOLMOD supernodal LLᵀ (BLAS-3)
@@ -113,6 +114,25 @@ struct Options {
     // off abruptly below the threshold was worse: μ flickered on and off between iterations.)
     double proximityThreshold = 1e-2;
 
+    // Step length: a step that would shrink a guarded length (a MinimumLengthTerm row of a
+    // constraint family: rulings, curve speeds, the spokes of vertex stars) below this
+    // fraction of its current length anywhere along the step is shortened, as a whole, so that
+    // it does not (0 disables; the sessions of solver/session use 0.5). The guards are
+    // one-sided: while a length is above its minimum its row is zero and the linearised step
+    // does not see it, so one step took a ruling from its full length to a sixth of it (the
+    // annulus of size 14, an inner vertex lifted by a tenth of the diameter, stretching) and
+    // the guard, active only then, pulled it back in the next; the iteration alternated
+    // between the two and crumpled. Measured with devsurf-bench --drag on that annulus
+    // (residual after the drag, fold-over places, overlapping patches; the bench's timing makes
+    // single runs vary): 0 → 0.95 … 3.1, 146 … 195, 13 … 16; 0.5 → 0.50, 35, 17; 0.6 → 0.40,
+    // 12, 14; 0.7 → 0.16, 8, 13; 0.9 → 0.04, 7, 23. None converges: the drag still asks for a
+    // degenerate solution there. Above 0.5 the shortened steps slowed legitimate motions:
+    // Move/Rotate with Keep developable on the annulus ended at developability 3e-8 (0.6), 2e-7
+    // (0.7) and 5e-5 (0.9) against 5e-9 (0.5) and 2e-8 (without). Valid designs, Solve from
+    // rough starts (10 seeds of the sheet, annulus, cylinder from 1 % of the diameter) and the
+    // Fig. 8 drags are unchanged to the last digit (no step is shortened there).
+    double guardShrinkLimit = 0.0;
+
     // Stop early once the ε₁ phase is over and the largest constraint residual is at most
     // this (0 disables early stopping).
     double residualTolerance = 0.0;
@@ -146,6 +166,11 @@ double epsilon1(const Options& options, int iteration, double residual);
 // ε₂ for iteration `iteration` (counted from 0, without scheduleOffset) at an iterate whose
 // largest constraint residual is `residual`.
 double epsilon2(const Options& options, int iteration, double residual);
+
+// The largest fraction of `step` from x that no constraint family's guard refuses (see
+// Options::guardShrinkLimit): the minimum of Term::admissibleStep over the terms of
+// constraint families with non-zero weight.
+double admissibleStep(const Problem& problem, const double* x, const double* step, double keep);
 
 // μ, the weight multiplier of proximity families, at an iterate whose largest constraint
 // residual is `residual`.

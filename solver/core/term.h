@@ -65,6 +65,14 @@ public:
         (void)jacobian;
         return false;
     }
+    // The largest fraction α ∈ (0, 1] of the step δ from x that the term admits, given that no
+    // guarded quantity may fall below `keep` times its value at x in one step (1: no limit).
+    virtual double admissibleStep(const double* x, const double* step, double keep) const {
+        (void)x;
+        (void)step;
+        (void)keep;
+        return 1.0;
+    }
 };
 
 } // namespace devsurf::solver

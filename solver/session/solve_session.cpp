@@ -53,6 +53,9 @@ Options defaultSessionSolverOptions() {
     // instead of the residual-driven one: 4e-10 / 4e-10.
     options.eps1Final = 0.1;
     options.eps2Schedule = residualEps2Schedule(1e-3, 1e-6, 1.0);
+    // A step may not shrink a guarded length below half its current one (see
+    // Options::guardShrinkLimit for the measurements).
+    options.guardShrinkLimit = 0.5;
     return options;
 }
 

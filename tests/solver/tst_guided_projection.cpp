@@ -2,6 +2,7 @@
 
 #include "solver/core/blas_info.h"
 #include "solver/core/guided_projection.h"
+#include "solver/core/minimum_length_term.h"
 #include "solver/core/normal_equations.h"
 
 #include "test_registry.h"
@@ -320,6 +321,47 @@ private slots:
         s = solver.solve(p, x, options);
         QVERIFY(s.structureReused);
         QVERIFY(x[1] < -0.05);
+    }
+
+    void guardedLengthsShrinkAtMostByTheLimitPerStep() {
+        // p₀ pulled onto the origin by a hard target, its distance to the fixed p₁ = (-1, 0)
+        // guarded with minimum 0.5 (p₀ starts at (1, 0), 2 away): an undamped step lands on
+        // the origin at once (distance 1, inactive guard); with the limit 0.75 the distance
+        // shrinks by at most a quarter per step.
+        Problem p;
+        const int points = p.addVariableBlock("points", 4);
+        const FamilyId hard = p.addFamily("target", TermRole::Constraint, 1.0);
+        const FamilyId guards = p.addFamily("guard", TermRole::Constraint, 1.0);
+        auto target = std::make_unique<TargetTerm>();
+        target->addTarget(points, 0.0);
+        target->addTarget(points + 1, 0.0);
+        p.add(hard, std::move(target));
+        auto guard = std::make_unique<MinimumLengthTerm>(2);
+        guard->addRow({{points, 1.0}, {points + 2, -1.0}}, 0.5);
+        p.add(guards, std::move(guard));
+        p.setFixed(points + 2);
+        p.setFixed(points + 3);
+        const std::vector<double> start{1.0, 0.0, -1.0, 0.0};
+        Options options;
+        options.maxIterations = 1;
+        options.eps1Initial = 0.0;
+        options.eps2 = 1e-6;
+        std::vector<double> x = start;
+        GuidedProjection solver;
+        QVERIFY(solver.solve(p, x, options).succeeded());
+        QVERIFY(std::abs(x[0]) < 1e-6); // the full step
+        options.guardShrinkLimit = 0.75;
+        double distance = 2.0;
+        x = start;
+        for (int step = 0; step < 4; ++step) {
+            const Summary s = solver.solve(p, x, options);
+            QVERIFY(s.succeeded());
+            const double now = std::hypot(x[0] + 1.0, x[1]);
+            QVERIFY2(now >= 0.75 * distance - 1e-12, qPrintable(QString::number(now)));
+            QVERIFY(s.iterations.front().stepFraction < 1.0 || now <= 1.0 + 1e-6);
+            distance = now;
+        }
+        QVERIFY(std::abs(x[0]) < 0.1); // it gets there, in shorter steps
     }
 
     void hardConstraintWeightZeroIsIgnored() {

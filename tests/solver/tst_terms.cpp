@@ -239,6 +239,38 @@ private slots:
         QCOMPARE(j[6], 0.0);
     }
 
+    void minimumLengthTermLimitsTheStep() {
+        // u = p₀ − p₁ = (4, 0, 0), |u| = 4; each step is checked against |u + αw| on the line.
+        MinimumLengthTerm term(3);
+        term.addRow({{0, 1.0}, {3, -1.0}}, 2.0);
+        const std::vector<double> x{4, 0, 0, 0, 0, 0};
+        auto lengthAfter = [&x](const std::vector<double>& step, double alpha) {
+            return std::hypot(x[0] + alpha * step[0] - x[3] - alpha * step[3],
+                              x[1] + alpha * step[1] - x[4] - alpha * step[4]);
+        };
+        // Shrinking to 1: at most to half (2) of the length, reached at α = 2/3.
+        const std::vector<double> shrink{-3, 0, 0, 0, 0, 0};
+        double alpha = term.admissibleStep(x.data(), shrink.data(), 0.5);
+        QVERIFY(std::abs(alpha - 2.0 / 3.0) < 1e-14);
+        QVERIFY(std::abs(lengthAfter(shrink, alpha) - 2.0) < 1e-14);
+        // Through zero to the other side (−4): the first crossing, α = 1/4.
+        const std::vector<double> through{-8, 0, 0, 0, 0, 0};
+        alpha = term.admissibleStep(x.data(), through.data(), 0.5);
+        QVERIFY(std::abs(alpha - 0.25) < 1e-14);
+        QVERIFY(std::abs(lengthAfter(through, alpha) - 2.0) < 1e-14);
+        // Sideways, ending at 5 (the length never falls below 4): admitted.
+        const std::vector<double> sideways{-1, 3, 0, -1, 0, 0};
+        QCOMPARE(term.admissibleStep(x.data(), sideways.data(), 0.5), 1.0);
+        // Shrinking to 3, above half: admitted; the same step with keep 0.9 stops at 3.6.
+        const std::vector<double> small{-1, 0, 0, 0, 0, 0};
+        QCOMPARE(term.admissibleStep(x.data(), small.data(), 0.5), 1.0);
+        alpha = term.admissibleStep(x.data(), small.data(), 0.9);
+        QVERIFY(std::abs(lengthAfter(small, alpha) - 3.6) < 1e-14);
+        // A row of minimum 0 guards nothing.
+        term.setMinimum(0, 0.0);
+        QCOMPARE(term.admissibleStep(x.data(), through.data(), 0.5), 1.0);
+    }
+
     void fairnessOfTheChange() {
         // With a reference r the rows are Δ²(x − r): zero at the reference, whatever its shape.
         std::mt19937 rng(24);
