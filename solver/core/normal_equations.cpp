@@ -200,22 +200,18 @@ bool NormalEquations::build(const Problem& problem, std::string* error) {
             }
         }
     }
-    // The blocks' upper triangles, entry by entry.
-    m_groupPairLocal.clear();
+    // The blocks' upper triangles, row by row (the packed order fillGroup accumulates in).
     m_originalGroupPairTarget.clear();
     for (std::size_t g = 0; g < m_groups.size(); ++g) {
         RowGroup& group = m_groups[g];
-        const int w = group.width;
-        group.pairStart = static_cast<int>(m_groupPairLocal.size());
-        for (int a = 0; a < w; ++a) {
-            for (int b = a; b < w; ++b) {
-                const int packed = a * w + b;
-                m_groupPairLocal.push_back(packed);
-                m_originalGroupPairTarget.push_back(
-                    blockTarget[blockBase[g] + static_cast<std::size_t>(packed)]);
+        const auto w = static_cast<std::size_t>(group.width);
+        group.pairStart = static_cast<int>(m_originalGroupPairTarget.size());
+        for (std::size_t a = 0; a < w; ++a) {
+            for (std::size_t b = a; b < w; ++b) {
+                m_originalGroupPairTarget.push_back(blockTarget[blockBase[g] + a * w + b]);
             }
         }
-        group.pairEnd = static_cast<int>(m_groupPairLocal.size());
+        group.pairEnd = static_cast<int>(m_originalGroupPairTarget.size());
     }
 
     m_structureId = problem.structureId();
@@ -298,7 +294,7 @@ void NormalEquations::formGroups(const Problem& problem) {
         }
     }
     m_groupRow.assign(kMaxWidth, 0.0);
-    m_groupBlock.assign(kMaxWidth * kMaxWidth, 0.0);
+    m_groupBlock.assign(kMaxWidth * (kMaxWidth + 1) / 2, 0.0);
 }
 
 int NormalEquations::groupedRowCount() const {
@@ -517,8 +513,10 @@ void NormalEquations::fillGroup(const RowGroup& group, double w2, double* values
     const int width = group.width;
     const auto w = static_cast<std::size_t>(width);
     double* row = m_groupRow.data();
+    // The block's upper triangle, packed row by row: entry (s, t), s <= t, at
+    // start(s) + t with start(s) = s·width − s(s + 1)/2.
     double* block = m_groupBlock.data();
-    std::fill_n(block, w * w, 0.0);
+    std::fill_n(block, w * (w + 1) / 2, 0.0);
     const double* jac = m_jacValue.data();
     for (int r = group.firstRow; r < group.rowEnd; ++r) {
         const int begin = m_jacRowStart[r];
@@ -529,21 +527,22 @@ void NormalEquations::fillGroup(const RowGroup& group, double w2, double* values
             rhs[m_jacColumn[static_cast<std::size_t>(i)]] -= f * jac[i];
             row[m_entryLocal[static_cast<std::size_t>(i)]] += jac[i];
         }
-        // The block's upper triangle in the group's column order: row rowᵀ, summed over rows.
+        // row rowᵀ, summed over the group's rows.
+        double* out = block;
         for (int s = 0; s < width; ++s) {
             const double a = row[s];
-            if (a == 0.0) {
-                continue;
+            if (a != 0.0) {
+                for (int t = s; t < width; ++t) {
+                    out[t] += a * row[t];
+                }
             }
-            double* out = block + static_cast<std::size_t>(s) * w;
-            for (int t = s; t < width; ++t) {
-                out[t] += a * row[t];
-            }
+            out += width - s - 1; // start(s + 1) = start(s) + width − s − 1
         }
     }
-    for (int k = group.pairStart; k < group.pairEnd; ++k) {
-        values[m_groupPairTarget[static_cast<std::size_t>(k)]] +=
-            w2 * block[m_groupPairLocal[static_cast<std::size_t>(k)]];
+    const int* target = m_groupPairTarget.data() + group.pairStart;
+    const auto entries = static_cast<std::size_t>(group.pairEnd - group.pairStart);
+    for (std::size_t k = 0; k < entries; ++k) {
+        values[target[k]] += w2 * block[k];
     }
 }
 

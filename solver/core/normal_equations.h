@@ -101,8 +101,8 @@ private:
         int target; // normal-matrix nonzero in the original layout
     };
     // Rows [firstRow, rowEnd) of one term, assembled through a dense block over the union of
-    // their columns (m_groupColumns [columnStart, columnStart + width)); the block's upper
-    // triangle is m_groupPairLocal / m_groupPairTarget [pairStart, pairEnd).
+    // their columns (m_groupColumns [columnStart, columnStart + width)); the targets of the
+    // block's upper triangle, packed row by row, are m_groupPairTarget [pairStart, pairEnd).
     struct RowGroup {
         int firstRow;
         int rowEnd;
@@ -142,15 +142,14 @@ private:
     std::vector<int> m_diagonal;   // per original variable
     std::vector<DuplicatePair> m_duplicates;
     // Row groups: per Jacobian entry of a grouped row, its column's index in the group's
-    // union (-1 outside groups); per block entry, its index s·width + t (s <= t) and target.
+    // union (-1 outside groups); per entry of a block's packed upper triangle, its target.
     std::vector<RowGroup> m_groups;
     std::vector<int> m_groupColumns;
     std::vector<int> m_entryLocal;
-    std::vector<int> m_groupPairLocal;
     std::vector<int> m_originalGroupPairTarget;
     std::vector<int> m_groupPairTarget;
     std::vector<double> m_groupRow;   // scratch: one row of a group, dense over its union
-    std::vector<double> m_groupBlock; // scratch: width × width block
+    std::vector<double> m_groupBlock; // scratch: a block's packed upper triangle
 
     // Fixed variables.
     std::uint64_t m_fixedRevision = ~std::uint64_t{0};

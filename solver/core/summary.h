@@ -28,6 +28,7 @@ struct IterationStats {
     double stepNorm = 0.0;        // ‖x_{k+1} − x_k‖
     double stepFraction = 1.0;    // of the linear step taken (Options::guardShrinkLimit)
     bool rejected = false;        // the step raised the constraint merit; x_k was kept
+    bool repeated = false;        // factorised again with Options::eps2 after a failure
     double assemblyMs = 0.0;      // term evaluation + normal-equation fill
     double factorizationMs = 0.0; // numeric (plus symbolic in baseline mode)
     double solveMs = 0.0;         // triangular solves

@@ -11,6 +11,7 @@
 
 #include <suitesparse/SuiteSparse_config.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <new>
@@ -196,6 +197,14 @@ private slots:
         QCOMPARE(s.iterations.back().eps2, options.eps2); // 0 failed, repeated with ε₂
         QVERIFY(std::abs(x[0] - 1.0) < 1e-12 && std::abs(x[1] - 2.0) < 1e-12);
         QCOMPARE(x[2], 0.5);
+        // Once failed, the adaptive ε₂ is not tried that small again: one repeated
+        // factorisation, not one in every later iteration (nor in the next solve).
+        const auto repeated = std::count_if(s.iterations.begin(), s.iterations.end(),
+                                            [](const IterationStats& it) { return it.repeated; });
+        QCOMPARE(repeated, 1);
+        const Summary again = solver.solve(p, x, options);
+        QVERIFY(std::none_of(again.iterations.begin(), again.iterations.end(),
+                             [](const IterationStats& it) { return it.repeated; }));
     }
 
     void circleConverges_data() {
