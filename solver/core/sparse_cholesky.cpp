@@ -162,9 +162,12 @@ bool SparseCholesky::computeOrdering(int n, const std::vector<int>& colStart,
     d.release();
     d.defaultOrdering();
     // Once per structure, so trying three orderings is cheap on small problems: on the
-    // 1,704-variable annulus METIS or nested dissection gives 9 % less fill than AMD. On
-    // 40,000 variables AMD already wins and the other two cost about a third of a second.
-    if (n <= 20000) {
+    // 1,704-variable annulus METIS or nested dissection gives 9 % less fill than AMD. Larger,
+    // AMD wins or ties and the other two only delay the first iteration (the start of a drag):
+    // devsurf-cli solve, analysis ms with three / AMD alone (factorisation ms): annulus 3,296
+    // variables 11 / 5.9 (1.88 / 1.93), 5,772 variables 39 / 17 (6.91 / 6.91), 18,164
+    // variables 87 / 34 (13.9 / 14.0); 40,000 variables: a third of a second more.
+    if (n <= 5000) {
         d.common.nmethods = 3;
     }
     d.setMethod(method == FactorizationMethod::Measured ? FactorizationMethod::Automatic : method);
