@@ -358,6 +358,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
                           (options.baseline || (d.analysed && d.method == options.factorization));
     if (!reusable) {
         d.analysed = false;
+        d.eps2Floor = 0.0;
         std::string error;
         if (!d.equations.build(problem, &error)) {
             d.reset();
