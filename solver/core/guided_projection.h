@@ -43,4 +43,9 @@ private:
     std::unique_ptr<Impl> m_impl;
 };
 
+// The largest fraction of `step` from x that no constraint family's guard refuses (see
+// Options::guardShrinkLimit): the minimum of Term::admissibleStep over the terms of
+// constraint families with non-zero weight.
+double admissibleStep(const Problem& problem, const double* x, const double* step, double keep);
+
 } // namespace devsurf::solver

@@ -85,10 +85,6 @@ bool MinimumLengthTerm::evaluateRow(int row, const double* x, double* residual,
     return true;
 }
 
-} // namespace devsurf::solver
-
-namespace devsurf::solver {
-
 double MinimumLengthTerm::admissibleStep(const double* x, const double* step, double keep) const {
     double alpha = 1.0;
     for (std::size_t r = 0; r < m_minimum.size(); ++r) {

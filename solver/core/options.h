@@ -6,7 +6,6 @@
 namespace devsurf::solver {
 
 struct IterationStats;
-class Problem;
 
 enum class FactorizationMethod {
     Supernodal, // CHOLMOD supernodal LLᵀ (BLAS-3)
@@ -166,11 +165,6 @@ double epsilon1(const Options& options, int iteration, double residual);
 // ε₂ for iteration `iteration` (counted from 0, without scheduleOffset) at an iterate whose
 // largest constraint residual is `residual`.
 double epsilon2(const Options& options, int iteration, double residual);
-
-// The largest fraction of `step` from x that no constraint family's guard refuses (see
-// Options::guardShrinkLimit): the minimum of Term::admissibleStep over the terms of
-// constraint families with non-zero weight.
-double admissibleStep(const Problem& problem, const double* x, const double* step, double keep);
 
 // μ, the weight multiplier of proximity families, at an iterate whose largest constraint
 // residual is `residual`.
