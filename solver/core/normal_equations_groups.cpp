@@ -9,6 +9,10 @@
 
 namespace devsurf::solver {
 
+namespace {
+constexpr int kRowsAtOnce = 4;
+} // namespace
+
 void NormalEquations::formGroups(const Problem& problem) {
     // A group is grown row by row while each new row adds at most half as many block entries
     // as it has products of its own, up to kMaxWidth columns: the rows of (4) at the values of
@@ -81,7 +85,7 @@ void NormalEquations::formGroups(const Problem& problem) {
             r = q;
         }
     }
-    m_groupRow.assign(kMaxWidth, 0.0);
+    m_groupRow.assign(kRowsAtOnce * kMaxWidth, 0.0);
     m_groupBlock.assign(kMaxWidth * (kMaxWidth + 1) / 2, 0.0);
 }
 
@@ -96,28 +100,39 @@ int NormalEquations::groupedRowCount() const {
 void NormalEquations::fillGroup(const RowGroup& group, double w2, double* values, double* rhs) {
     const int width = group.width;
     const auto w = static_cast<std::size_t>(width);
-    double* row = m_groupRow.data();
+    // Four rows at a time, dense over the group's columns (zero where a row has none).
+    double* rows = m_groupRow.data();
     // The block's upper triangle, packed row by row: entry (s, t), s <= t, at
     // start(s) + t with start(s) = s·width − s(s + 1)/2.
     double* block = m_groupBlock.data();
     std::fill_n(block, w * (w + 1) / 2, 0.0);
     const double* jac = m_jacValue.data();
-    for (int r = group.firstRow; r < group.rowEnd; ++r) {
-        const int begin = m_jacRowStart[r];
-        const int end = m_jacRowStart[r + 1];
-        const double f = w2 * m_residual[static_cast<std::size_t>(r)];
-        std::fill_n(row, w, 0.0);
-        for (int i = begin; i < end; ++i) {
-            rhs[m_jacColumn[static_cast<std::size_t>(i)]] -= f * jac[i];
-            row[m_entryLocal[static_cast<std::size_t>(i)]] += jac[i];
+    for (int first = group.firstRow; first < group.rowEnd; first += kRowsAtOnce) {
+        std::fill_n(rows, kRowsAtOnce * w, 0.0);
+        const int last = std::min(group.rowEnd, first + kRowsAtOnce);
+        for (int r = first; r < last; ++r) {
+            const double f = w2 * m_residual[static_cast<std::size_t>(r)];
+            double* row = rows + static_cast<std::size_t>(r - first) * w;
+            for (int i = m_jacRowStart[r]; i < m_jacRowStart[r + 1]; ++i) {
+                rhs[m_jacColumn[static_cast<std::size_t>(i)]] -= f * jac[i];
+                row[m_entryLocal[static_cast<std::size_t>(i)]] += jac[i];
+            }
         }
-        // row rowᵀ, summed over the group's rows.
+        // Σ row rowᵀ over the four rows (rows past the group's end are zero): one pass over
+        // the block for four rows.
+        const double* r0 = rows;
+        const double* r1 = rows + w;
+        const double* r2 = rows + 2 * w;
+        const double* r3 = rows + 3 * w;
         double* out = block;
         for (int s = 0; s < width; ++s) {
-            const double a = row[s];
-            if (a != 0.0) {
+            const double a0 = r0[s];
+            const double a1 = r1[s];
+            const double a2 = r2[s];
+            const double a3 = r3[s];
+            if (a0 != 0.0 || a1 != 0.0 || a2 != 0.0 || a3 != 0.0) {
                 for (int t = s; t < width; ++t) {
-                    out[t] += a * row[t];
+                    out[t] += a0 * r0[t] + a1 * r1[t] + a2 * r2[t] + a3 * r3[t];
                 }
             }
             out += width - s - 1; // start(s + 1) = start(s) + width − s − 1
