@@ -61,4 +61,9 @@ BlasInfo detectBlas() {
     return info;
 }
 
+std::mutex& blasMutex() {
+    static std::mutex mutex;
+    return mutex;
+}
+
 } // namespace devsurf::solver

@@ -1,9 +1,11 @@
 #include "solver/core/normal_equations.h"
 
+#include "solver/core/blas_info.h"
 #include "solver/core/problem.h"
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <numeric>
 
 namespace devsurf::solver {
@@ -200,14 +202,14 @@ bool NormalEquations::build(const Problem& problem, std::string* error) {
             }
         }
     }
-    // The blocks' upper triangles, row by row (the packed order fillGroup accumulates in).
+    // The blocks' upper triangles, column by column (the order fillGroup scatters in).
     m_originalGroupPairTarget.clear();
     for (std::size_t g = 0; g < m_groups.size(); ++g) {
         RowGroup& group = m_groups[g];
         const auto w = static_cast<std::size_t>(group.width);
         group.pairStart = static_cast<int>(m_originalGroupPairTarget.size());
-        for (std::size_t a = 0; a < w; ++a) {
-            for (std::size_t b = a; b < w; ++b) {
+        for (std::size_t b = 0; b < w; ++b) {
+            for (std::size_t a = 0; a <= b; ++a) {
                 m_originalGroupPairTarget.push_back(blockTarget[blockBase[g] + a * w + b]);
             }
         }
@@ -369,6 +371,11 @@ void NormalEquations::fill(const Problem& problem, double eps1, double eps2, dou
                            double* rhs, double proximity) {
     std::fill(values, values + m_rowIndex.size(), 0.0);
     std::fill(rhs, rhs + m_variables, 0.0);
+    // The row groups call the BLAS (fillGroup).
+    std::unique_lock<std::mutex> blasLock(blasMutex(), std::defer_lock);
+    if (!m_groups.empty()) {
+        blasLock.lock();
+    }
     const double* jac = m_jacValue.data();
     const int* column = m_jacColumn.data();
     const int* target = m_pairTarget.data();

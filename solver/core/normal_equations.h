@@ -21,13 +21,13 @@ class Problem;
 // so fill() only runs multiply-adds into the stored triangle. Consecutive rows of one term
 // whose columns largely coincide (the three rows of (4) at the collocation values of one
 // interval share one set of control points) form a group: their products are summed in a
-// small dense block over the union of their columns, which is added to the stored triangle
-// once, instead of every row adding its own products (on the annulus of 52,000 variables 26
-// million scattered additions per fill became 2.6 million). The pattern is built from the
-// groups too (every pair of a group's columns is stored, a few explicit zeros where no row has
-// both), so build() costs one pass per group rather than per row. The stored triangle can be
-// laid out in a permuted order (setLayout) so that CHOLMOD factorises it in place without
-// permuting or transposing a copy.
+// small dense block over the union of their columns (RᵀR by BLAS dsyrk, R the group's rows,
+// dense), which is added to the stored triangle once, instead of every row adding its own products
+// (on the annulus of 52,000 variables 26 million scattered additions per fill became 2.6 million).
+// The pattern is built from the groups too (every pair of a group's columns is stored, a few
+// explicit zeros where no row has both), so build() costs one pass per group rather than per row.
+// The stored triangle can be laid out in a permuted order (setLayout) so that CHOLMOD factorises it
+// in place without permuting or transposing a copy.
 class NormalEquations {
 public:
     enum class Triangle { Upper, Lower };
@@ -102,7 +102,7 @@ private:
     };
     // Rows [firstRow, rowEnd) of one term, assembled through a dense block over the union of
     // their columns (m_groupColumns [columnStart, columnStart + width)); the targets of the
-    // block's upper triangle, packed row by row, are m_groupPairTarget [pairStart, pairEnd).
+    // block's upper triangle, column by column, are m_groupPairTarget [pairStart, pairEnd).
     struct RowGroup {
         int firstRow;
         int rowEnd;
@@ -142,14 +142,14 @@ private:
     std::vector<int> m_diagonal;   // per original variable
     std::vector<DuplicatePair> m_duplicates;
     // Row groups: per Jacobian entry of a grouped row, its column's index in the group's
-    // union (-1 outside groups); per entry of a block's packed upper triangle, its target.
+    // union (-1 outside groups); per entry of a block's upper triangle, its target.
     std::vector<RowGroup> m_groups;
     std::vector<int> m_groupColumns;
     std::vector<int> m_entryLocal;
     std::vector<int> m_originalGroupPairTarget;
     std::vector<int> m_groupPairTarget;
-    std::vector<double> m_groupRow;   // scratch: one row of a group, dense over its union
-    std::vector<double> m_groupBlock; // scratch: a block's packed upper triangle
+    std::vector<double> m_groupRow;   // scratch: a group's rows, dense over its union
+    std::vector<double> m_groupBlock; // scratch: a block (its upper triangle is used)
 
     // Fixed variables.
     std::uint64_t m_fixedRevision = ~std::uint64_t{0};

@@ -9,9 +9,10 @@
 
 namespace devsurf::solver {
 
-namespace {
-constexpr int kRowsAtOnce = 4;
-} // namespace
+// BLAS (the library CHOLMOD uses): C = α AᵀA + β C on C's upper triangle.
+extern "C" void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k,
+                       const double* alpha, const double* a, const int* lda, const double* beta,
+                       double* c, const int* ldc);
 
 void NormalEquations::formGroups(const Problem& problem) {
     // A group is grown row by row while each new row adds at most half as many block entries
@@ -85,8 +86,12 @@ void NormalEquations::formGroups(const Problem& problem) {
             r = q;
         }
     }
-    m_groupRow.assign(kRowsAtOnce * kMaxWidth, 0.0);
-    m_groupBlock.assign(kMaxWidth * (kMaxWidth + 1) / 2, 0.0);
+    std::size_t mostRows = 0;
+    for (const RowGroup& group : m_groups) {
+        mostRows = std::max(mostRows, static_cast<std::size_t>(group.rowEnd - group.firstRow));
+    }
+    m_groupRow.assign(mostRows * kMaxWidth, 0.0);
+    m_groupBlock.assign(kMaxWidth * kMaxWidth, 0.0);
 }
 
 int NormalEquations::groupedRowCount() const {
@@ -99,49 +104,36 @@ int NormalEquations::groupedRowCount() const {
 
 void NormalEquations::fillGroup(const RowGroup& group, double w2, double* values, double* rhs) {
     const int width = group.width;
+    const int rowCount = group.rowEnd - group.firstRow;
     const auto w = static_cast<std::size_t>(width);
-    // Four rows at a time, dense over the group's columns (zero where a row has none).
+    const auto k = static_cast<std::size_t>(rowCount);
+    // The group's rows as a dense k × width matrix R (column-major, zero where a row has no
+    // entry) and the right-hand side's share of them.
     double* rows = m_groupRow.data();
-    // The block's upper triangle, packed row by row: entry (s, t), s <= t, at
-    // start(s) + t with start(s) = s·width − s(s + 1)/2.
-    double* block = m_groupBlock.data();
-    std::fill_n(block, w * (w + 1) / 2, 0.0);
+    std::fill_n(rows, k * w, 0.0);
     const double* jac = m_jacValue.data();
-    for (int first = group.firstRow; first < group.rowEnd; first += kRowsAtOnce) {
-        std::fill_n(rows, kRowsAtOnce * w, 0.0);
-        const int last = std::min(group.rowEnd, first + kRowsAtOnce);
-        for (int r = first; r < last; ++r) {
-            const double f = w2 * m_residual[static_cast<std::size_t>(r)];
-            double* row = rows + static_cast<std::size_t>(r - first) * w;
-            for (int i = m_jacRowStart[r]; i < m_jacRowStart[r + 1]; ++i) {
-                rhs[m_jacColumn[static_cast<std::size_t>(i)]] -= f * jac[i];
-                row[m_entryLocal[static_cast<std::size_t>(i)]] += jac[i];
-            }
-        }
-        // Σ row rowᵀ over the four rows (rows past the group's end are zero): one pass over
-        // the block for four rows.
-        const double* r0 = rows;
-        const double* r1 = rows + w;
-        const double* r2 = rows + 2 * w;
-        const double* r3 = rows + 3 * w;
-        double* out = block;
-        for (int s = 0; s < width; ++s) {
-            const double a0 = r0[s];
-            const double a1 = r1[s];
-            const double a2 = r2[s];
-            const double a3 = r3[s];
-            if (a0 != 0.0 || a1 != 0.0 || a2 != 0.0 || a3 != 0.0) {
-                for (int t = s; t < width; ++t) {
-                    out[t] += a0 * r0[t] + a1 * r1[t] + a2 * r2[t] + a3 * r3[t];
-                }
-            }
-            out += width - s - 1; // start(s + 1) = start(s) + width − s − 1
+    for (int r = group.firstRow; r < group.rowEnd; ++r) {
+        const double f = w2 * m_residual[static_cast<std::size_t>(r)];
+        double* row = rows + static_cast<std::size_t>(r - group.firstRow);
+        for (int i = m_jacRowStart[r]; i < m_jacRowStart[r + 1]; ++i) {
+            rhs[m_jacColumn[static_cast<std::size_t>(i)]] -= f * jac[i];
+            row[static_cast<std::size_t>(m_entryLocal[static_cast<std::size_t>(i)]) * k] += jac[i];
         }
     }
+    // The block's upper triangle Rᵀ R (column-major, leading dimension width) by BLAS.
+    double* block = m_groupBlock.data();
+    const char upper = 'U';
+    const char transposed = 'T';
+    const double one = 1.0;
+    const double zero = 0.0;
+    dsyrk_(&upper, &transposed, &width, &rowCount, &one, rows, &rowCount, &zero, block, &width);
+    // Its targets run column by column, (0, b) … (b, b) for b = 0 … width − 1 (build()).
     const int* target = m_groupPairTarget.data() + group.pairStart;
-    const auto entries = static_cast<std::size_t>(group.pairEnd - group.pairStart);
-    for (std::size_t k = 0; k < entries; ++k) {
-        values[target[k]] += w2 * block[k];
+    for (std::size_t b = 0; b < w; ++b) {
+        const double* column = block + b * w;
+        for (std::size_t a = 0; a <= b; ++a) {
+            values[*target++] += w2 * column[a];
+        }
     }
 }
 

@@ -1,6 +1,7 @@
 #include "solver/core/sparse_cholesky.h"
 
 #include "solver/core/analysis_cache.h"
+#include "solver/core/blas_info.h"
 
 #include <suitesparse/cholmod.h>
 
@@ -15,16 +16,6 @@ namespace {
 
 // CHOLMOD's default switch between simplicial and supernodal (flops per non-zero of L).
 constexpr double kCholmodSupernodalSwitch = 40.0;
-
-// The supernodal factorisation and solve call the BLAS and LAPACK. The BLAS that setup.sh
-// selects (Debian's single-threaded OpenBLAS) is built without locking: two threads inside it
-// at once corrupt each other's buffers (two solver workers on the same structure failed with
-// "matrix not positive definite" about once in 300 runs). Every call that may reach the BLAS
-// holds this lock; one solver in the process never waits on it.
-std::mutex& blasMutex() {
-    static std::mutex mutex;
-    return mutex;
-}
 
 // Debian's CHOLMOD is built with OpenMP and runs parts of the supernodal factorisation in
 // parallel regions of a fixed four threads (CHOLMOD_OMP_NUM_THREADS), whatever the machine

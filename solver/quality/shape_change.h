@@ -2,6 +2,7 @@
 
 #include "model/composite_surface.h"
 
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -45,7 +46,10 @@ std::vector<std::pair<model::FaceId, int>> foldOvers(const model::CompositeSurfa
                                                      int samplesPerInterval = 8);
 
 // One sentence for the command line naming the faces of foldOvers(): "Folded over onto itself:
-// face 3 (2 places), face 5 (1 place)." or "No face folds over onto itself."
+// face 3 (2 places), face 5 (1 place)." or "No face folds over onto itself." At most
+// kFoldOversNamed faces are named (the first ones, which foldOvers() lists most places
+// first); the rest are counted ("… and 412 more faces (650 places).").
+inline constexpr std::size_t kFoldOversNamed = 10;
 std::string describeFoldOvers(const std::vector<std::pair<model::FaceId, int>>& foldOvers);
 
 } // namespace devsurf::solver

@@ -49,6 +49,12 @@ bool setOption(bench::StudyOptions& o, const std::string& name, double v) {
         s.eps1Decay = v;
     else if (name == "eps1Iterations")
         s.eps1Iterations = static_cast<int>(v);
+    else if (name == "eps1Final")
+        s.eps1Final = v;
+    else if (name == "guardShrinkLimit")
+        s.guardShrinkLimit = v;
+    else if (name == "residualEps2Maximum")
+        s.eps2Schedule = solver::residualEps2Schedule(v, s.eps2Minimum, 1.0);
     else if (name == "eps1ResidualFactor")
         s.eps1ResidualFactor = v;
     else if (name == "rejectWorseSteps")

@@ -83,6 +83,20 @@ private slots:
         // Flat, bent or folded along creases, but never back onto itself.
         QVERIFY(foldOvers(test::flatStrip(100.0)).empty());
         QCOMPARE(describeFoldOvers({}), std::string("No face folds over onto itself."));
+        // A crumpled result names the first faces and counts the rest.
+        std::vector<std::pair<model::FaceId, int>> many;
+        for (int f = 0; f < 14; ++f) {
+            many.push_back({model::FaceId(100 + f), f < 12 ? 3 : 1});
+        }
+        QCOMPARE(describeFoldOvers(many),
+                 std::string("Folded over onto itself: face 100 (3 places), face 101 (3 places), "
+                             "face 102 (3 places), face 103 (3 places), face 104 (3 places), "
+                             "face 105 (3 places), face 106 (3 places), face 107 (3 places), "
+                             "face 108 (3 places), face 109 (3 places) and 4 more faces (8 "
+                             "places)."));
+        many.resize(11);
+        QVERIFY(QString::fromStdString(describeFoldOvers(many))
+                    .endsWith("face 109 (3 places) and 1 more face (3 places)."));
         for (const char* name : {"sheet", "annulus", "cylinder", "mixed", "fig6", "fig8"}) {
             QVERIFY2(foldOvers(model::makeExample(name).surfaces.front()).empty(), name);
         }
