@@ -2,10 +2,9 @@
 
 #include "solver/core/analysis_cache.h"
 #include "solver/core/blas_info.h"
+#include "solver/core/serial_openmp.h"
 
 #include <suitesparse/cholmod.h>
-
-#include <omp.h>
 
 #include <algorithm>
 #include <mutex>
@@ -16,19 +15,6 @@ namespace {
 
 // CHOLMOD's default switch between simplicial and supernodal (flops per non-zero of L).
 constexpr double kCholmodSupernodalSwitch = 40.0;
-
-// Debian's CHOLMOD is built with OpenMP and runs parts of the supernodal factorisation in
-// parallel regions of a fixed four threads (CHOLMOD_OMP_NUM_THREADS), whatever the machine
-// has; the BLAS it calls is single-threaded. On our two cores those threads spent more time
-// waking each other than computing: the supernodal factorisation of the 40,200-variable
-// annulus took 135 ms with them and 50 ms without (simplicial: 127 ms). No parallel region
-// is made active on the calling thread (OpenMP's max-active-levels set to 0, so every region
-// runs on one thread); cheap, so it is done before every CHOLMOD call that may open one.
-void keepCholmodOnThisThread() {
-    if (omp_get_max_active_levels() != 0) {
-        omp_set_max_active_levels(0);
-    }
-}
 
 } // namespace
 
@@ -300,7 +286,7 @@ bool SparseCholesky::factorize() {
         if (d.factor->is_super) {
             lock.lock();
         }
-        keepCholmodOnThisThread();
+        const SerialOpenMpRegions serial;
         ok = cholmod_factorize(d.matrix, d.factor, &d.common);
     }
     if (!ok || d.common.status != CHOLMOD_OK) {
@@ -332,7 +318,7 @@ bool SparseCholesky::solve(const double* b, double* x) {
         if (d.factor->is_super) {
             lock.lock();
         }
-        keepCholmodOnThisThread();
+        const SerialOpenMpRegions serial;
         solved = cholmod_solve2(CHOLMOD_A, d.factor, d.rhs, nullptr, &d.solution, nullptr, &d.workY,
                                 &d.workE, &d.common) != 0;
     }
