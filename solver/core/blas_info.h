@@ -22,7 +22,7 @@ BlasInfo detectBlas();
 // The BLAS that setup.sh selects (Debian's single-threaded OpenBLAS) is built without locking:
 // two threads inside it at once corrupt each other's buffers (two solver workers on the same
 // structure failed with "matrix not positive definite" about once in 300 runs, and every time
-// once the normal equations' row groups called dsyrk). Every call that may reach the BLAS (the
+// once the normal equations' row groups called it). Every call that may reach the BLAS (the
 // supernodal factorisation and solve, the row groups' fill) holds this lock; one solver in
 // the process never waits on it.
 std::mutex& blasMutex();

@@ -21,7 +21,7 @@ class Problem;
 // so fill() only runs multiply-adds into the stored triangle. Consecutive rows of one term
 // whose columns largely coincide (the three rows of (4) at the collocation values of one
 // interval share one set of control points) form a group: their products are summed in a
-// small dense block over the union of their columns (RᵀR by BLAS dsyrk, R the group's rows,
+// small dense block over the union of their columns (RᵀR by BLAS dgemm, R the group's rows,
 // dense), which is added to the stored triangle once, instead of every row adding its own products
 // (on the annulus of 52,000 variables 26 million scattered additions per fill became 2.6 million).
 // The pattern is built from the groups too (every pair of a group's columns is stored, a few
