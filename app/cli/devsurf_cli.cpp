@@ -74,7 +74,9 @@ Commands:
                       through PX,PY,PZ) in N evenly spaced steps (default 20) with one
                       solver iteration each, then K more iterations (default 20 when
                       keeping lengths, else 10). Pins in the file stay; --pin pins more
-                      vertices. One line per step (residual, time, quality). A vertex
+                      vertices. One line per step (residual, time, quality; a step
+                      of a large model that reused the previous step's factorisation
+                      says so). A vertex
                       drag keeps lengths when no crease of the surface has a condition,
                       as the desktop application does by default: stretching of every
                       strip's control net is damped in each step, so the sheet bends

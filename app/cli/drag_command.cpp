@@ -153,8 +153,13 @@ void printStep(const char* label, int index, int count, const solver::Summary& s
                const model::CompositeSurface& surface) {
     const solver::QualityMeasures quality = solver::measureQuality(surface);
     char line[512];
-    std::snprintf(line, sizeof line, "%s %3d/%d  residual %.3e  time %.3f ms  %s\n", label, index,
-                  count, summary.finalMaxConstraintResidual, ms, quality.describe().c_str());
+    // A move of a large model may solve with the previous move's factorisation
+    // (solver::kDragFactorizationReuse).
+    const bool reused =
+        !summary.iterations.empty() && summary.iterations.front().factorizationReused;
+    std::snprintf(line, sizeof line, "%s %3d/%d  residual %.3e  time %.3f ms  %s%s\n", label, index,
+                  count, summary.finalMaxConstraintResidual, ms,
+                  reused ? "(factorisation reused)  " : "", quality.describe().c_str());
     std::cout << line;
 }
 

@@ -6,6 +6,7 @@
 #include "solver/core/sparse_cholesky.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -99,11 +100,46 @@ struct GuidedProjection::Impl {
     // whose factorisation failed (see the retry in solve()), so that a solve or a drag does not
     // factorise twice in every iteration.
     double eps2Floor = 0.0;
+    // The last factorisation, while it may be reused (Options::reuseFactorization): the
+    // Jacobian values it was made from, the fixed variables then, and how many steps in a row
+    // have reused it.
+    bool factorReusable = false;
+    std::vector<double> factorJacobian;
+    std::uint64_t factorFixedRevision = 0;
+    int reusesInARow = 0;
 
     void reset() {
         equations = NormalEquations();
         analysed = false;
         eps2Floor = 0.0;
+        factorReusable = false;
+    }
+
+    bool mayReuseFactorization(const Problem& problem, const Options& options) const {
+        return options.reuseFactorization > 0 && !options.baseline && factorReusable &&
+               reusesInARow < options.reuseFactorization &&
+               factorFixedRevision == problem.fixedRevision() &&
+               cholesky.flops() >= options.reuseFactorizationMinimumFlops;
+    }
+
+    // A step with the last factorisation: the right-hand side of this iterate's residuals and
+    // the factorised Jacobian.
+    bool reusedStep(const Problem& problem, double eps1, IterationStats& stats,
+                    Summary& summary) {
+        auto start = Clock::now();
+        equations.fillRightHandSide(problem, eps1, stats.proximity, factorJacobian, rhs.data());
+        stats.assemblyMs += elapsedMs(start);
+        start = Clock::now();
+        const bool solved = cholesky.solve(rhs.data(), step.data());
+        stats.solveMs = elapsedMs(start);
+        if (!solved) {
+            summary.status = Status::FactorizationFailed;
+            summary.message = cholesky.error();
+            return false;
+        }
+        stats.factorizationReused = true;
+        ++reusesInARow;
+        return true;
     }
 
     // Lays the normal matrix out for the chosen factorisation and analyses it.
@@ -284,17 +320,25 @@ struct GuidedProjection::Impl {
         return true;
     }
 
-    bool cachedStep(const Problem& problem, double eps1, IterationStats& stats, Summary& summary) {
+    bool cachedStep(const Problem& problem, double eps1, IterationStats& stats, Summary& summary,
+                    bool keepForReuse) {
         auto start = Clock::now();
         equations.fill(problem, eps1, stats.eps2, cholesky.values(), rhs.data(), stats.proximity);
         stats.assemblyMs += elapsedMs(start);
         start = Clock::now();
+        factorReusable = false;
         if (!cholesky.factorize()) {
             summary.status = Status::FactorizationFailed;
             summary.message = cholesky.error();
             return false;
         }
         stats.factorizationMs = elapsedMs(start);
+        if (keepForReuse) {
+            factorJacobian = equations.jacobianValues();
+            factorFixedRevision = problem.fixedRevision();
+            factorReusable = true;
+            reusesInARow = 0;
+        }
         start = Clock::now();
         const bool solved = cholesky.solve(rhs.data(), step.data());
         stats.solveMs = elapsedMs(start);
@@ -359,6 +403,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
     if (!reusable) {
         d.analysed = false;
         d.eps2Floor = 0.0;
+        d.factorReusable = false;
         std::string error;
         if (!d.equations.build(problem, &error)) {
             d.reset();
@@ -424,12 +469,16 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         }
         stats.assemblyMs = pendingEvaluationMs;
         auto step = [&] {
-            return options.baseline ? d.baselineStep(problem, stats.eps1, options, stats, summary)
-                                    : d.cachedStep(problem, stats.eps1, stats, summary);
+            return options.baseline
+                       ? d.baselineStep(problem, stats.eps1, options, stats, summary)
+                       : d.cachedStep(problem, stats.eps1, stats, summary,
+                                      options.reuseFactorization > 0);
         };
-        bool stepped = step();
+        bool stepped = d.mayReuseFactorization(problem, options)
+                           ? d.reusedStep(problem, stats.eps1, stats, summary)
+                           : step();
         if (!stepped && summary.status == Status::FactorizationFailed &&
-            stats.eps2 < options.eps2) {
+            !stats.factorizationReused && stats.eps2 < options.eps2) {
             // A smaller adaptive ε₂ can leave the matrix numerically singular (a degenerate
             // strip, or directions no row constrains, as the in-plane motion of a flat
             // design's points); repeat with the configured damping, and try no less than ten
@@ -446,8 +495,10 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         if (!stepped) {
             break;
         }
-        stats.factorFlops = d.cholesky.flops();
-        stats.factorNonZeros = d.cholesky.factorNonZeros();
+        if (!stats.factorizationReused) {
+            stats.factorFlops = d.cholesky.flops();
+            stats.factorNonZeros = d.cholesky.factorNonZeros();
+        }
         if (!allFinite(d.step)) {
             summary.status = Status::NonFiniteValue;
             summary.message = "the linear solve produced a non-finite step";

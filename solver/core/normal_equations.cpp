@@ -445,6 +445,25 @@ void NormalEquations::fill(const Problem& problem, double eps1, double eps2, dou
     }
 }
 
+void NormalEquations::fillRightHandSide(const Problem& problem, double eps1, double proximity,
+                                        const std::vector<double>& jacobian, double* rhs) const {
+    std::fill(rhs, rhs + m_variables, 0.0);
+    for (int t = 0; t < problem.termCount(); ++t) {
+        const double w = termWeight(problem, t, eps1, proximity);
+        const double w2 = w * w;
+        if (w2 == 0.0) {
+            continue;
+        }
+        for (int r = m_termRowStart[t]; r < m_termRowStart[static_cast<std::size_t>(t) + 1]; ++r) {
+            const double f = w2 * m_residual[static_cast<std::size_t>(r)];
+            for (int i = m_jacRowStart[r]; i < m_jacRowStart[r + 1]; ++i) {
+                rhs[m_jacColumn[static_cast<std::size_t>(i)]] -=
+                    f * jacobian[static_cast<std::size_t>(i)];
+            }
+        }
+    }
+}
+
 Eigen::SparseMatrix<double> NormalEquations::weightedJacobian(const Problem& problem, double eps1,
                                                               double proximity) const {
     std::vector<Eigen::Triplet<double>> triplets;

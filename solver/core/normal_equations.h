@@ -60,6 +60,12 @@ public:
     void fill(const Problem& problem, double eps1, double eps2, double* values, double* rhs,
               double proximity = 0.0);
 
+    // g alone (original order) from the residuals of the last evaluate() and the Jacobian
+    // values `jacobian` (in jacobianValues()' order: those of an earlier evaluate(), such as
+    // the one last factorised), for a step with an earlier factorisation.
+    void fillRightHandSide(const Problem& problem, double eps1, double proximity,
+                           const std::vector<double>& jacobian, double* rhs) const;
+
     int variableCount() const { return m_variables; }
     int rowCount() const { return m_rows; }
     long long jacobianNonZeros() const { return static_cast<long long>(m_jacColumn.size()); }

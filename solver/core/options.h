@@ -132,6 +132,19 @@ struct Options {
     // Fig. 8 drags are unchanged to the last digit (no step is shortened there).
     double guardShrinkLimit = 0.0;
 
+    // Iterations in a row that may reuse the last factorisation instead of factorising: the
+    // step solves the factorised matrix (of an earlier iterate's Jacobian, weights and ε₂) with
+    // the right-hand side of this iterate's residuals and that same Jacobian, a chord step of
+    // Newton's method. It costs the evaluation and the triangular solves, not the fill and the
+    // factorisation. 0 (the default) factorises in every iteration. A factorisation is reused
+    // only while the fixed variables are those it was made with, and never after one failed.
+    // The sessions of solver/session use 1 while a drag moves on a large model (see
+    // kDragFactorizationReuse).
+    int reuseFactorization = 0;
+    // ... and only a factorisation of at least this many flops (cholmod_common.fl), so that
+    // the choice depends on the structure alone.
+    double reuseFactorizationMinimumFlops = 0.0;
+
     // Stop early once the ε₁ phase is over and the largest constraint residual is at most
     // this (0 disables early stopping).
     double residualTolerance = 0.0;

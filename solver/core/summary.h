@@ -29,6 +29,9 @@ struct IterationStats {
     double stepFraction = 1.0;    // of the linear step taken (Options::guardShrinkLimit)
     bool rejected = false;        // the step raised the constraint merit; x_k was kept
     bool repeated = false;        // factorised again with Options::eps2 after a failure
+    // No factorisation: the step solved the last one with this iterate's right-hand side
+    // (Options::reuseFactorization).
+    bool factorizationReused = false;
     double assemblyMs = 0.0;      // term evaluation + normal-equation fill
     double factorizationMs = 0.0; // numeric (plus symbolic in baseline mode)
     double solveMs = 0.0;         // triangular solves

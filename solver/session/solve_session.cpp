@@ -147,7 +147,8 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
         }
         m_options.formulation.controlPointHandles.push_back(handle);
     }
-    if (!m_pulled.empty() || !pulledControlPoints.empty()) {
+    m_dragging = !m_pulled.empty() || !pulledControlPoints.empty();
+    if (m_dragging) {
         // See FormulationOptions::weighCreaseNormals: a drag keeps the bilinear crease rows.
         m_options.formulation.weighCreaseNormals = false;
     } else if (nearlyValid(surface)) {
@@ -204,6 +205,10 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         // One iteration per solve() call, the schedule continued from the iterations done:
         // the same arithmetic whether the caller asks for one iteration or many.
         options.scheduleOffset = m_iterationsDone;
+        if (m_dragging && !m_settling) {
+            options.reuseFactorization = kDragFactorizationReuse;
+            options.reuseFactorizationMinimumFlops = kDragFactorizationReuseFlops;
+        }
         // The net's lengths before this step (a no-op without the isometry energy).
         m_formulation->rebaseIsometry(m_x);
         if (m_settling) {
