@@ -96,19 +96,26 @@ std::string millimetres(double value) {
 
 } // namespace
 
-std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surface) {
+std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surface,
+                                                    GeometryChecks checks) {
     std::vector<std::string> problems;
 
-    // Faces around each vertex, for naming.
+    // Faces around each vertex, for naming; gathered at the first problem that needs them
+    // (the checks also run after every solver step, SolveSession::step, where there is none).
     std::map<VertexId, std::vector<FaceId>> facesOfVertex;
-    for (const auto& [face, loop] : surface.faces()) {
-        for (VertexId v : loop) {
-            auto& list = facesOfVertex[v];
-            if (std::find(list.begin(), list.end(), face) == list.end()) {
-                list.push_back(face);
+    auto facesAround = [&surface, &facesOfVertex](VertexId vertex) {
+        if (facesOfVertex.empty()) {
+            for (const auto& [face, loop] : surface.faces()) {
+                for (VertexId v : loop) {
+                    auto& list = facesOfVertex[v];
+                    if (std::find(list.begin(), list.end(), face) == list.end()) {
+                        list.push_back(face);
+                    }
+                }
             }
         }
-    }
+        return facesOfVertex[vertex];
+    };
 
     // Lengths below this count as zero: a billionth of the design's size (at least 1e-9 mm),
     // far below anything that can be cut or folded, far above rounding.
@@ -118,15 +125,17 @@ std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surf
     double hi[3] = {-lo[0], -lo[1], -lo[2]};
     std::set<VertexId> badVertices;
     for (const auto& [id, p] : surface.vertices()) {
-        const std::string where = " (of " + facesPhrase(facesOfVertex[id]) + ")";
+        auto where = [&facesAround, id = id] {
+            return " (of " + facesPhrase(facesAround(id)) + ")";
+        };
         if (!p.isFinite()) {
-            problems.push_back("vertex " + str(id) + where +
+            problems.push_back("vertex " + str(id) + where() +
                                " has a position that is not a finite number.");
             badVertices.insert(id);
             continue;
         }
         if (isHuge(p)) {
-            problems.push_back("vertex " + str(id) + where + " lies " + millimetres(p.norm()) +
+            problems.push_back("vertex " + str(id) + where() + " lies " + millimetres(p.norm()) +
                                " from the origin; coordinates beyond " +
                                millimetres(kMaxCoordinate) + " (1 km) are not accepted.");
             badVertices.insert(id);
@@ -145,7 +154,7 @@ std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surf
     std::set<std::pair<VertexId, VertexId>> zeroEdges;
     std::set<EdgeId> badEdges;
     for (const auto& [id, record] : surface.edges()) {
-        const std::vector<FaceId> faces = surface.facesOfEdge(id);
+        auto faces = [&surface, id = id] { return surface.facesOfEdge(id); };
         if (record.isSpline()) {
             if (!usableSpline(record)) {
                 continue;
@@ -155,7 +164,7 @@ std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surf
                 if (std::all_of(record.controlPoints.begin(), record.controlPoints.end(),
                                 [](const Vec3& p) { return p.isFinite(); })) {
                     problems.push_back("edge " + str(id) + " (a spline curve of " +
-                                       facesPhrase(faces) + ") has a control point beyond " +
+                                       facesPhrase(faces()) + ") has a control point beyond " +
                                        millimetres(kMaxCoordinate) + " from the origin.");
                 }
                 badEdges.insert(id);
@@ -168,8 +177,8 @@ std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surf
             // The curve lies in the hull of its control points: a control polygon of zero
             // length is a curve of zero length.
             if (length <= tolerance) {
-                problems.push_back("edge " + str(id) + " (a spline curve of " + facesPhrase(faces) +
-                                   ") has zero length.");
+                problems.push_back("edge " + str(id) + " (a spline curve of " +
+                                   facesPhrase(faces()) + ") has zero length.");
                 zeroEdges.insert(std::minmax(record.from, record.to));
             }
             continue;
@@ -179,12 +188,15 @@ std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surf
             continue;
         }
         if (distance(surface.position(record.from), surface.position(record.to)) <= tolerance) {
-            problems.push_back("edge " + str(id) + " (a ruling of " + facesPhrase(faces) +
+            problems.push_back("edge " + str(id) + " (a ruling of " + facesPhrase(faces()) +
                                ") has zero length.");
             zeroEdges.insert(std::minmax(record.from, record.to));
         }
     }
 
+    if (checks == GeometryChecks::VerticesAndEdges) {
+        return problems;
+    }
     for (const auto& [face, loop] : surface.faces()) {
         bool usable = true;
         for (std::size_t i = 0; i < loop.size() && usable; ++i) {

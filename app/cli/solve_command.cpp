@@ -155,6 +155,11 @@ int runSolveCommand(const std::vector<std::string>& positional,
         solver::Summary last;
         for (int i = 0; i < iterations; ++i) {
             const solver::Summary summary = session->step(1);
+            if (summary.succeeded() && summary.iterations.empty() && !summary.message.empty()) {
+                // The session refused a degenerate iterate and stays at the last valid one.
+                std::cout << "After iteration " << i << ": " << summary.message << "\n";
+                break;
+            }
             if (!summary.succeeded() || summary.iterations.empty()) {
                 throw model::ModelError("the solver stopped at iteration " + std::to_string(i + 1) +
                                         " (" + solver::toString(summary.status) +

@@ -279,6 +279,24 @@ private slots:
         QCOMPARE(lines[7], "Wrote " + out);
     }
 
+    void solveStopsAtTheLastValidState() {
+        // Shaken by 1 % of its diameter (seed 7), the annulus converges towards cones: the
+        // 13th iteration collapses a ruling. The command says so and writes the 12th.
+        const QString file = path("collapse.devsurf");
+        QCOMPARE(cli({"example", "annulus", "-o", file}).exitCode, 0);
+        const QString out = path("collapse-solved.devsurf");
+        const Run run = cli(
+            {"solve", file, "--perturb", "0.01", "--seed", "7", "--iterations", "30", "-o", out});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains(QRegularExpression(
+                     "\\nAfter iteration \\d+: stopped at the last valid state: the next "
+                     "iteration gave a degenerate surface, edge \\d+ \\(a ruling of faces \\d+ "
+                     "and \\d+\\) has zero length\\.\\n")),
+                 qPrintable(run.out));
+        QVERIFY(!run.out.contains("iteration  30 "));
+        QCOMPARE(cli({"validate", out}).exitCode, 0);
+    }
+
     void solveAndDragSayWhereTheDevelopmentOverlapsItself() {
         // A band winding one and a half times round the z-axis: whatever the solver makes of
         // its strips, its development turns by more than a full turn and overlaps itself.

@@ -88,6 +88,34 @@ private slots:
         }
     }
 
+    void solveStopsBeforeADegenerateSurface() {
+        // The annulus shaken by 1 % of its diameter (devsurf-cli solve --perturb 0.01 --seed 7):
+        // Solve converges towards a surface with a ruling of zero length (faces 42 and 43 turn
+        // into cones) and reaches it in the 13th iteration. The session refuses that iterate
+        // and stays at the valid one before it.
+        model::CompositeSurface start = model::makeExample("annulus").surfaces.front();
+        perturbSurface(start, 0.01 * surfaceDiameter(start), 7, {});
+        SolveSession session(start, {});
+        bool stopped = false;
+        for (int i = 0; i < 30 && !stopped; ++i) {
+            const std::vector<double> before = session.state();
+            const int done = session.iterationsDone();
+            const Summary summary = session.step(1);
+            QVERIFY2(summary.succeeded(), summary.briefReport().c_str());
+            const std::vector<std::string> problems = session.surface().validate();
+            QVERIFY2(problems.empty(), problems.empty() ? "" : problems.front().c_str());
+            if (summary.iterations.empty()) {
+                stopped = true;
+                QVERIFY(summary.message.find("degenerate surface, edge") != std::string::npos);
+                QVERIFY(sameBits(session.state(), before));
+                QCOMPARE(session.iterationsDone(), done);
+            }
+        }
+        QVERIFY(stopped);
+        QVERIFY(session.iterationsDone() >= 10);
+        QVERIFY(measureQuality(session.surface()).developabilityMax < 1e-6);
+    }
+
     void secondSessionOnSameStructureDoesNoSymbolicAnalysis() {
         const model::CompositeSurface first = roughAnnulus(11);
         SolveSession a(first, {});
