@@ -259,6 +259,19 @@ bool NormalEquations::matches(const Problem& problem) const {
 
 void NormalEquations::setLayout(const std::vector<int>& permutation, Triangle triangle) {
     const int n = m_variables;
+    if (permutation.empty() && triangle == Triangle::Upper) {
+        // The original layout itself: build() stores the upper triangle with the rows of each
+        // column in increasing order, which is what the counting passes below would give.
+        m_colStart = m_originalColStart;
+        m_rowIndex = m_originalRowIndex;
+        m_position.resize(m_originalRowIndex.size());
+        std::iota(m_position.begin(), m_position.end(), 0);
+        m_pairTarget = m_originalPairTarget;
+        m_groupPairTarget = m_originalGroupPairTarget;
+        m_diagonal = m_originalDiagonal;
+        m_triangle = triangle;
+        return;
+    }
     std::vector<int> inverse(static_cast<std::size_t>(n));
     if (permutation.empty()) {
         std::iota(inverse.begin(), inverse.end(), 0);
