@@ -169,4 +169,14 @@ inline int familyRows(const Problem& problem, const char* name) {
     return rows;
 }
 
+// Three variables; hard targets x₀ = 1 and x₁ = 2; no row touches x₂, so N is singular
+// without damping.
+inline void addTwoTargetsOfThree(Problem& p) {
+    p.addVariableBlock("x", 3);
+    auto target = std::make_unique<TargetTerm>();
+    target->addTarget(0, 1.0);
+    target->addTarget(1, 2.0);
+    p.add(p.addFamily("t", TermRole::Constraint), std::move(target));
+}
+
 } // namespace devsurf::solver::testing
