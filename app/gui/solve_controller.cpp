@@ -4,6 +4,7 @@
 #include "model/document/document.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
+#include "solver/session/solve_session.h"
 #include "solver/worker/solver_worker.h"
 #include "workspace.h"
 
@@ -44,7 +45,9 @@ SolveController::SolveController(Workspace* workspace, QObject* parent)
 SolveController::~SolveController() = default;
 
 int SolveController::iterationsSetting() {
-    return std::clamp(QSettings().value(QStringLiteral("solver/iterations"), 10).toInt(), 1, 1000);
+    return std::clamp(
+        QSettings().value(QStringLiteral("solver/iterations"), solver::kSolveIterations).toInt(), 1,
+        1000);
 }
 
 SolveController::LengthsMode SolveController::lengthsSetting() {

@@ -269,6 +269,11 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         if (perIteration) {
             perIteration(stats);
         }
+        if (m_options.stopResidual > 0.0 &&
+            summary.finalMaxConstraintResidual <= m_options.stopResidual) {
+            total.status = Status::Converged;
+            break;
+        }
     }
     // m_surface holds the last iterate written (each is checked above); the state it ends at.
     std::string error;

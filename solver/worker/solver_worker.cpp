@@ -105,6 +105,15 @@ double worstDevelopability(const model::CompositeSurface& surface) {
     return faces.empty() ? 0.0 : faces.front().second;
 }
 
+// The options of a session: a drag's, or Tools ▸ Solve's, which stops once converged.
+SessionOptions sessionOptions(bool keepLengths, bool drag) {
+    SessionOptions options = keepLengths ? keepLengthsSessionOptions() : SessionOptions{};
+    if (!drag) {
+        options.stopResidual = kSolveStopResidual;
+    }
+    return options;
+}
+
 } // namespace
 
 struct SolverWorker::Impl {
@@ -315,9 +324,8 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
             }
         } else {
             try {
-                session = std::make_unique<SolveSession>(
-                    snapshot, handles, points,
-                    request.keepLengths ? keepLengthsSessionOptions() : SessionOptions{});
+                session = std::make_unique<SolveSession>(snapshot, handles, points,
+                                                         sessionOptions(request.keepLengths, drag));
             } catch (const std::exception& error) {
                 return fail(surfaceLabel(snapshot, s) + QStringLiteral(" cannot be solved: ") +
                             QString::fromStdString(error.what()));

@@ -116,6 +116,28 @@ private slots:
         QVERIFY(measureQuality(session.surface()).developabilityMax < 1e-6);
     }
 
+    void solveStopsOnceConverged() {
+        // SessionOptions::stopResidual (Tools ▸ Solve): the iterations are a limit; the
+        // iterations done are those of a session without it, bit for bit.
+        const model::CompositeSurface start = roughAnnulus();
+        SessionOptions stopping;
+        stopping.stopResidual = kSolveStopResidual;
+        SolveSession solve(start, {}, stopping);
+        const Summary summary = solve.step(kSolveIterations);
+        QVERIFY2(summary.succeeded(), summary.briefReport().c_str());
+        QCOMPARE(summary.status, Status::Converged);
+        QVERIFY(summary.iterationsCompleted < kSolveIterations);
+        QVERIFY(summary.finalMaxConstraintResidual <= kSolveStopResidual);
+        QVERIFY(summary.iterations[summary.iterations.size() - 2].maxConstraintResidual >
+                kSolveStopResidual);
+        SolveSession counted(start, {});
+        QCOMPARE(counted.step(summary.iterationsCompleted).status, Status::IterationLimit);
+        QVERIFY(sameBits(solve.state(), counted.state()));
+        // A valid design: one iteration.
+        SolveSession again(solve.surface(), {}, stopping);
+        QCOMPARE(again.step(kSolveIterations).iterationsCompleted, 1);
+    }
+
     void secondSessionOnSameStructureDoesNoSymbolicAnalysis() {
         const model::CompositeSurface first = roughAnnulus(11);
         SolveSession a(first, {});
