@@ -1109,8 +1109,8 @@
     </message>
     <message>
         <location filename="../app/gui/main_window_solver.cpp" line="40"/>
-        <source>How many solver iterations Tools ▸ Solve runs.</source>
-        <translation>Wie viele Iterationen Werkzeuge ▸ Lösen ausführt.</translation>
+        <source>The most solver iterations Tools ▸ Solve runs; it stops earlier once the surface has converged.</source>
+        <translation>Höchstzahl der Iterationen von Werkzeuge ▸ Lösen; es endet früher, sobald die Fläche konvergiert ist.</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_solver.cpp" line="44"/>
@@ -1119,8 +1119,8 @@
     </message>
     <message>
         <location filename="../app/gui/main_window_solver.cpp" line="44"/>
-        <source>Iterations of Tools ▸ Solve:</source>
-        <translation>Iterationen von Werkzeuge ▸ Lösen:</translation>
+        <source>Most iterations of Tools ▸ Solve:</source>
+        <translation>Höchstzahl der Iterationen von Werkzeuge ▸ Lösen:</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_solver.cpp" line="65"/>

@@ -1090,8 +1090,8 @@
     </message>
     <message>
         <location filename="../app/gui/main_window_solver.cpp" line="40"/>
-        <source>How many solver iterations Tools ▸ Solve runs.</source>
-        <translation>ツール ▸ ソルブで実行する反復回数。</translation>
+        <source>The most solver iterations Tools ▸ Solve runs; it stops earlier once the surface has converged.</source>
+        <translation>ツール ▸ ソルブで実行する反復回数の上限。曲面が収束すればそれより前に終わります。</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_solver.cpp" line="44"/>
@@ -1100,8 +1100,8 @@
     </message>
     <message>
         <location filename="../app/gui/main_window_solver.cpp" line="44"/>
-        <source>Iterations of Tools ▸ Solve:</source>
-        <translation>ツール ▸ ソルブの反復回数:</translation>
+        <source>Most iterations of Tools ▸ Solve:</source>
+        <translation>ツール ▸ ソルブの反復回数の上限:</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_solver.cpp" line="65"/>

@@ -37,12 +37,14 @@ QList<QAction*> MainWindow::createSolverActions(QMenu* tools, QAction* selectNon
     explainSolve();
     QAction* iterations =
         addAction(tools, QStringLiteral("actionSolverIterations"), tr("Solver &Iterations…"));
-    iterations->setToolTip(tr("How many solver iterations Tools ▸ Solve runs."));
+    iterations->setToolTip(
+        tr("The most solver iterations Tools ▸ Solve runs; it stops earlier once the "
+           "surface has converged."));
     connect(iterations, &QAction::triggered, this, [this, explainSolve] {
         bool ok = false;
-        const int value =
-            QInputDialog::getInt(this, tr("Solver Iterations"), tr("Iterations of Tools ▸ Solve:"),
-                                 SolveController::iterationsSetting(), 1, 1000, 1, &ok);
+        const int value = QInputDialog::getInt(
+            this, tr("Solver Iterations"), tr("Most iterations of Tools ▸ Solve:"),
+            SolveController::iterationsSetting(), 1, 1000, 1, &ok);
         if (ok) {
             QSettings().setValue(QStringLiteral("solver/iterations"), value);
             explainSolve();
