@@ -77,10 +77,30 @@ void BilinearTerm::scaleRowsAt(const double* reference) {
 
 int BilinearTerm::evaluateOne(std::size_t r, const double* x, double* residual,
                               double* jacobian) const {
-    const int d = m_dimension;
+    return m_dimension == 3 ? evaluateOneOf<3>(r, x, residual, jacobian)
+                            : evaluateOneOf<0>(r, x, residual, jacobian);
+}
+
+template <int D>
+int BilinearTerm::evaluateOneOf(std::size_t r, const double* x, double* residual,
+                                double* jacobian) const {
+    const int d = D > 0 ? D : m_dimension;
     std::array<double, kMaxDimension> u{};
     std::array<double, kMaxDimension> v{};
-    sides(r, x, u.data(), v.data());
+    const int middle = m_rightStart[r];
+    const int end = m_leftStart[r + 1];
+    for (int e = m_leftStart[r]; e < middle; ++e) {
+        const PointTerm& p = m_points[static_cast<std::size_t>(e)];
+        for (int k = 0; k < d; ++k) {
+            u[k] += p.coefficient * x[p.offset + k];
+        }
+    }
+    for (int e = middle; e < end; ++e) {
+        const PointTerm& p = m_points[static_cast<std::size_t>(e)];
+        for (int k = 0; k < d; ++k) {
+            v[k] += p.coefficient * x[p.offset + k];
+        }
+    }
     const double scale = m_scale.empty() ? 1.0 : m_scale[r];
     double value = -m_target[r];
     for (int k = 0; k < d; ++k) {
@@ -89,56 +109,15 @@ int BilinearTerm::evaluateOne(std::size_t r, const double* x, double* residual,
     *residual = scale * value;
     // ∂/∂nₖ = s dₖ v, ∂/∂pᵢ = s cᵢ u.
     double* out = jacobian;
-    for (int e = m_leftStart[r]; e < m_rightStart[r]; ++e) {
+    for (int e = m_leftStart[r]; e < middle; ++e) {
         const double c = scale * m_points[static_cast<std::size_t>(e)].coefficient;
         for (int k = 0; k < d; ++k) {
             *out++ = c * v[k];
         }
     }
-    for (int e = m_rightStart[r]; e < m_leftStart[r + 1]; ++e) {
+    for (int e = middle; e < end; ++e) {
         const double c = scale * m_points[static_cast<std::size_t>(e)].coefficient;
         for (int k = 0; k < d; ++k) {
-            *out++ = c * u[k];
-        }
-    }
-    return static_cast<int>(out - jacobian);
-}
-
-template <int D>
-int BilinearTerm::evaluateOneOf(std::size_t r, const double* x, double* residual,
-                                double* jacobian) const {
-    double u[D] = {};
-    double v[D] = {};
-    const int middle = m_rightStart[r];
-    const int end = m_leftStart[r + 1];
-    for (int e = m_leftStart[r]; e < middle; ++e) {
-        const PointTerm& p = m_points[static_cast<std::size_t>(e)];
-        for (int k = 0; k < D; ++k) {
-            u[k] += p.coefficient * x[p.offset + k];
-        }
-    }
-    for (int e = middle; e < end; ++e) {
-        const PointTerm& p = m_points[static_cast<std::size_t>(e)];
-        for (int k = 0; k < D; ++k) {
-            v[k] += p.coefficient * x[p.offset + k];
-        }
-    }
-    const double scale = m_scale.empty() ? 1.0 : m_scale[r];
-    double value = -m_target[r];
-    for (int k = 0; k < D; ++k) {
-        value += u[k] * v[k];
-    }
-    *residual = scale * value;
-    double* out = jacobian;
-    for (int e = m_leftStart[r]; e < middle; ++e) {
-        const double c = scale * m_points[static_cast<std::size_t>(e)].coefficient;
-        for (int k = 0; k < D; ++k) {
-            *out++ = c * v[k];
-        }
-    }
-    for (int e = middle; e < end; ++e) {
-        const double c = scale * m_points[static_cast<std::size_t>(e)].coefficient;
-        for (int k = 0; k < D; ++k) {
             *out++ = c * u[k];
         }
     }
@@ -155,12 +134,6 @@ double BilinearTerm::rowResidual(int row, const double* x) const {
 }
 
 void BilinearTerm::evaluate(const double* x, double* residuals, double* jacobian) const {
-    if (m_dimension == 3) {
-        for (std::size_t r = 0; r < m_target.size(); ++r) {
-            jacobian += evaluateOneOf<3>(r, x, residuals + r, jacobian);
-        }
-        return;
-    }
     for (std::size_t r = 0; r < m_target.size(); ++r) {
         jacobian += evaluateOne(r, x, residuals + r, jacobian);
     }

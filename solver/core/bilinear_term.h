@@ -46,9 +46,9 @@ public:
 private:
     // Residual and Jacobian values of row r; returns the number of Jacobian values written.
     int evaluateOne(std::size_t r, const double* x, double* residual, double* jacobian) const;
-    // The same for a dimension D known at compile time (D = 3, points of space: the loops over
-    // coordinates unrolled). Measured, assembly ms per iteration: fig8-sheet 0.103 → 0.096,
-    // fig12-annulus 0.57 → 0.53.
+    // The same for a dimension D known at compile time (0: m_dimension). With D = 3, points of
+    // space, the loops over coordinates are unrolled: assembly ms per iteration fig8-sheet
+    // 0.103 → 0.096, fig12-annulus 0.57 → 0.53.
     template <int D>
     int evaluateOneOf(std::size_t r, const double* x, double* residual, double* jacobian) const;
     // The two sides of row r at x.

@@ -1,14 +1,15 @@
 #include "solver/core/guided_projection.h"
 
 #include "solver/core/analysis_cache.h"
+#include "solver/core/finite_values.h"
 #include "solver/core/normal_equations.h"
 #include "solver/core/problem.h"
 #include "solver/core/sparse_cholesky.h"
 
 #include <algorithm>
-#include <cstdint>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 
@@ -81,10 +82,6 @@ double elapsedMs(Clock::time_point since) {
     return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
 }
 
-bool allFinite(const std::vector<double>& values) {
-    return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
-}
-
 } // namespace
 
 struct GuidedProjection::Impl {
@@ -124,22 +121,28 @@ struct GuidedProjection::Impl {
 
     // A step with the last factorisation: the right-hand side of this iterate's residuals and
     // the factorised Jacobian.
-    bool reusedStep(const Problem& problem, double eps1, IterationStats& stats,
-                    Summary& summary) {
-        auto start = Clock::now();
+    bool reusedStep(const Problem& problem, double eps1, IterationStats& stats, Summary& summary) {
+        const auto start = Clock::now();
         equations.fillRightHandSide(problem, eps1, stats.proximity, factorJacobian, rhs.data());
         stats.assemblyMs += elapsedMs(start);
-        start = Clock::now();
-        const bool solved = cholesky.solve(rhs.data(), step.data());
-        stats.solveMs = elapsedMs(start);
-        if (!solved) {
-            summary.status = Status::FactorizationFailed;
-            summary.message = cholesky.error();
+        if (!solveForStep(stats, summary)) {
             return false;
         }
         stats.factorizationReused = true;
         ++reusesInARow;
         return true;
+    }
+
+    // step from rhs with the current factorisation.
+    bool solveForStep(IterationStats& stats, Summary& summary) {
+        const auto start = Clock::now();
+        const bool solved = cholesky.solve(rhs.data(), step.data());
+        stats.solveMs = elapsedMs(start);
+        if (!solved) {
+            summary.status = Status::FactorizationFailed;
+            summary.message = cholesky.error();
+        }
+        return solved;
     }
 
     // Lays the normal matrix out for the chosen factorisation and analyses it.
@@ -339,15 +342,7 @@ struct GuidedProjection::Impl {
             factorReusable = true;
             reusesInARow = 0;
         }
-        start = Clock::now();
-        const bool solved = cholesky.solve(rhs.data(), step.data());
-        stats.solveMs = elapsedMs(start);
-        if (!solved) {
-            summary.status = Status::FactorizationFailed;
-            summary.message = cholesky.error();
-            return false;
-        }
-        return true;
+        return solveForStep(stats, summary);
     }
 };
 
@@ -469,10 +464,9 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         }
         stats.assemblyMs = pendingEvaluationMs;
         auto step = [&] {
-            return options.baseline
-                       ? d.baselineStep(problem, stats.eps1, options, stats, summary)
-                       : d.cachedStep(problem, stats.eps1, stats, summary,
-                                      options.reuseFactorization > 0);
+            return options.baseline ? d.baselineStep(problem, stats.eps1, options, stats, summary)
+                                    : d.cachedStep(problem, stats.eps1, stats, summary,
+                                                   options.reuseFactorization > 0);
         };
         bool stepped = d.mayReuseFactorization(problem, options)
                            ? d.reusedStep(problem, stats.eps1, stats, summary)

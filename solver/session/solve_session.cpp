@@ -196,7 +196,10 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
     options.cancel = nullptr;
     options.progress = nullptr;
     options.recordIterations = true;
-    bool improved = false;
+    if (m_dragging && !m_settling) {
+        options.reuseFactorization = kDragFactorizationReuse;
+        options.reuseFactorizationMinimumFlops = kDragFactorizationReuseFlops;
+    }
     std::vector<double> before; // the state before the iteration running
     for (int i = 0; i < n; ++i) {
         if (cancel && cancel->load()) {
@@ -207,10 +210,6 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         // One iteration per solve() call, the schedule continued from the iterations done:
         // the same arithmetic whether the caller asks for one iteration or many.
         options.scheduleOffset = m_iterationsDone;
-        if (m_dragging && !m_settling) {
-            options.reuseFactorization = kDragFactorizationReuse;
-            options.reuseFactorizationMinimumFlops = kDragFactorizationReuseFlops;
-        }
         // The net's lengths before this step (a no-op without the isometry energy).
         m_formulation->rebaseIsometry(m_x);
         if (m_settling) {
@@ -237,13 +236,15 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
                 summary.message.empty() ? "the iteration did not complete" : summary.message;
             break;
         }
-        // Never a result that is no surface: an iterate with a ruling or curve collapsed to a
-        // point (the strip turned into a cone) is not taken; the session stays at the state
-        // before it. (Measured: Solve of the annulus shaken by 1 % of its diameter, seeds 6, 7
-        // and 8, collapsed a ruling between faces after 12 to 15 iterations, on its way to
-        // residuals near 1e-8, and the command line refused the result.)
+        // Every iterate is written into surface(). Never a result that is no surface: an
+        // iterate with a ruling or curve collapsed to a point (the strip turned into a cone) is
+        // not taken; the session stays at the state before it. (Measured: Solve of the annulus
+        // shaken by 1 % of its diameter, seeds 6, 7 and 8, collapsed a ruling between faces after
+        // 12 to 15 iterations, on its way to residuals near 1e-8, and the command line refused the
+        // result.)
         std::string error;
         if (!m_formulation->writeBack(m_x, m_surface, &error)) {
+            // surface() is untouched: it still holds `before`.
             total.status = Status::NonFiniteValue;
             total.message = error;
             m_x = before;
@@ -253,13 +254,13 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
             model::degenerateGeometryProblems(m_surface, model::GeometryChecks::VerticesAndEdges);
         if (!degenerate.empty()) {
             m_x = before;
+            m_formulation->writeBack(m_x, m_surface); // written once already: it is finite
             total.message = "stopped at the last valid state: the next iteration gave a degenerate "
                             "surface, " +
                             degenerate.front();
             break;
         }
         ++m_iterationsDone;
-        improved = true;
         IterationStats stats = summary.iterations.front();
         stats.iteration = i;
         total.iterations.push_back(stats);
@@ -274,12 +275,6 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
             total.status = Status::Converged;
             break;
         }
-    }
-    // m_surface holds the last iterate written (each is checked above); the state it ends at.
-    std::string error;
-    if ((improved || !total.message.empty()) && !m_formulation->writeBack(m_x, m_surface, &error)) {
-        total.status = Status::NonFiniteValue;
-        total.message = error;
     }
     total.tolerance = m_options.solver.reportTolerance;
     total.toleranceReached = total.finalMaxConstraintResidual <= total.tolerance;
