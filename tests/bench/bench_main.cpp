@@ -150,6 +150,8 @@ int main(int argc, char** argv) {
             start = {devsurf::bench::NoiseScale::EdgeLength, std::atof(argv[++i])};
         } else if (arg == "--diameter-noise" && i + 1 < argc) {
             start = {devsurf::bench::NoiseScale::Diameter, std::atof(argv[++i])};
+        } else if (arg == "--session") {
+            studyOptions.solverKind = bench::StudySolver::Session;
         } else if (arg == "--trace") {
             trace = true;
         } else if (arg == "--seeds" && i + 1 < argc) {
@@ -166,10 +168,11 @@ int main(int argc, char** argv) {
                 return 1;
             }
         } else {
-            std::cerr << "usage: devsurf-bench [--json] [--model NAME]... [--no-ceres]\n"
-                         "       devsurf-bench --drag [--json]\n"
-                         "       devsurf-bench --study MODEL [--edge-noise F | --diameter-noise F]"
-                         " [--seeds N] [--iterations N] [--set NAME=VALUE]... [--trace]\n";
+            std::cerr
+                << "usage: devsurf-bench [--json] [--model NAME]... [--no-ceres]\n"
+                   "       devsurf-bench --drag [--json]\n"
+                   "       devsurf-bench --study MODEL [--edge-noise F | --diameter-noise F]"
+                   " [--seeds N] [--iterations N] [--set NAME=VALUE]... [--session] [--trace]\n";
             return 1;
         }
     }

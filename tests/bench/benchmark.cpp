@@ -122,7 +122,8 @@ struct ModelResult {
     double auxiliaryDetMax = 0.0;
     solver::QualityMeasures smallNoiseQuality; // the same 10 iterations from the smaller noise
     struct Study {
-        std::string start; // "edge" or "diameter"
+        std::string solver; // "paper" (GuidedProjection, its defaults) or "solve" (Tools ▸ Solve)
+        std::string start;  // "edge" or "diameter"
         double fraction = 0.0;
         int iterations = 0;
         int seeds = 0;
@@ -245,28 +246,36 @@ ModelResult runModel(const BenchModel& model, const BenchmarkOptions& options, d
         // The ~40,000-variable model gets 20 iterations (the target for it).
         const int iterations = r.variables > 20000 ? 2 * options.iterations : options.iterations;
         const StudyStart starts[] = {{NoiseScale::EdgeLength, 0.1}, {NoiseScale::Diameter, 0.01}};
-        for (const StudyStart& start : starts) {
-            StudyOptions studyOptions;
-            studyOptions.iterations = iterations;
-            studyOptions.seeds = options.studySeeds;
-            studyOptions.firstSeed = options.seed;
-            studyOptions.solver.eps2 = options.eps2;
-            const std::vector<StudyRun> runs = runStudy(model.surface, start, studyOptions);
-            ModelResult::Study study;
-            study.start = start.scale == NoiseScale::EdgeLength ? "edge" : "diameter";
-            study.fraction = start.fraction;
-            study.iterations = iterations;
-            study.seeds = options.studySeeds;
-            study.summary = summarize(runs);
-            std::vector<double> times;
-            for (const StudyRun& run : runs) {
-                times.push_back(run.msPerIteration);
+        // The paper's configuration (GuidedProjection with its defaults), then what Tools ▸
+        // Solve runs on the same starts (a SolveSession, the fixed vertices pinned).
+        for (const StudySolver kind : {StudySolver::Options, StudySolver::Session}) {
+            for (const StudyStart& start : starts) {
+                StudyOptions studyOptions;
+                studyOptions.solverKind = kind;
+                studyOptions.iterations = iterations;
+                studyOptions.seeds = options.studySeeds;
+                studyOptions.firstSeed = options.seed;
+                studyOptions.solver.eps2 = options.eps2;
+                const std::vector<StudyRun> runs = runStudy(model.surface, start, studyOptions);
+                ModelResult::Study study;
+                study.solver = kind == StudySolver::Session ? "solve" : "paper";
+                study.start = start.scale == NoiseScale::EdgeLength ? "edge" : "diameter";
+                study.fraction = start.fraction;
+                study.iterations = iterations;
+                study.seeds = options.studySeeds;
+                study.summary = summarize(runs);
+                std::vector<double> times;
+                for (const StudyRun& run : runs) {
+                    times.push_back(run.msPerIteration);
+                }
+                study.msPerIteration = median(times);
+                r.studies.push_back(study);
+                log(r.name + " (" +
+                    (kind == StudySolver::Session ? "Tools ▸ Solve" : "paper's configuration") +
+                    "): from σ = " + number(start.fraction) + " of the " +
+                    (study.start == "edge" ? "mean edge length" : "diameter") + ", det worst " +
+                    number(study.summary.detWorst) + " median " + number(study.summary.detMedian));
             }
-            study.msPerIteration = median(times);
-            r.studies.push_back(study);
-            log(r.name + ": from σ = " + number(start.fraction) + " of the " +
-                (study.start == "edge" ? "mean edge length" : "diameter") + ", det worst " +
-                number(study.summary.detWorst) + " median " + number(study.summary.detMedian));
         }
     }
 
@@ -361,7 +370,8 @@ void writeJson(const std::vector<ModelResult>& results, const solver::BlasInfo& 
                 const ModelResult::Study& q = r.studies[k];
                 const StudySummary& m = q.summary;
                 constexpr double kDegrees = 57.29577951308232;
-                out << (k == 0 ? "\n" : ",\n") << "        { \"start\": " << quoted(q.start)
+                out << (k == 0 ? "\n" : ",\n") << "        { \"solver\": " << quoted(q.solver)
+                    << ", \"start\": " << quoted(q.start)
                     << ", \"sigma_fraction\": " << number(q.fraction)
                     << ", \"iterations\": " << q.iterations << ", \"seeds\": " << q.seeds
                     << ", \"det_residual_max_worst\": " << number(m.detWorst)

@@ -22,7 +22,8 @@ struct BenchmarkOptions {
     bool compareAuxiliary = true; // also time the auxiliary-variable formulation
     // Quality over seeds (quality_study.h): 10 iterations (20 on the ~40,000-variable model)
     // from σ = 10 % of the mean control-polygon edge length and from σ = 1 % of the diameter,
-    // `studySeeds` seeds each, worst and median; 0 skips it.
+    // `studySeeds` seeds each, worst and median, with the paper's configuration and with what
+    // Tools ▸ Solve runs (StudySolver); 0 skips it.
     int studySeeds = 10;
     // Progress lines (to stderr in the command-line tools).
     std::function<void(const std::string&)> log;

@@ -4,6 +4,7 @@
 #include "solver/core/guided_projection.h"
 #include "solver/formulation/perturbation.h"
 #include "solver/quality/quality_measures.h"
+#include "solver/session/solve_session.h"
 
 #include <algorithm>
 #include <cmath>
@@ -49,10 +50,25 @@ std::vector<StudyRun> runStudy(const model::CompositeSurface& surface, const Stu
         run.seed = options.firstSeed + static_cast<unsigned>(s);
         model::CompositeSurface perturbed = surface;
         solver::perturbSurface(perturbed, sigma, run.seed, anchors);
-        const solver::SurfaceFormulation formulation(perturbed, formulationOptions);
-        std::vector<double> x = formulation.initialState();
-        solver::GuidedProjection projection;
-        const solver::Summary summary = projection.solve(formulation.problem(), x, solverOptions);
+        solver::Summary summary;
+        model::CompositeSurface result = perturbed;
+        bool written = false;
+        if (options.solverKind == StudySolver::Session) {
+            model::CompositeSurface pinned = perturbed;
+            for (model::VertexId v : anchors) {
+                pinned.setPinned(v, true);
+            }
+            solver::SolveSession session(pinned, {});
+            summary = session.step(options.iterations);
+            result = session.surface();
+            written = true;
+        } else {
+            const solver::SurfaceFormulation formulation(perturbed, formulationOptions);
+            std::vector<double> x = formulation.initialState();
+            solver::GuidedProjection projection;
+            summary = projection.solve(formulation.problem(), x, solverOptions);
+            written = formulation.writeBack(x, result);
+        }
         run.status = solver::toString(summary.status);
         run.residual = summary.finalMaxConstraintResidual;
         run.iterations = summary.iterations;
@@ -62,9 +78,8 @@ std::vector<StudyRun> runStudy(const model::CompositeSurface& surface, const Stu
         }
         run.msPerIteration =
             summary.iterations.empty() ? 0.0 : iterationMs / summary.iterations.size();
-        model::CompositeSurface result = perturbed;
         try {
-            if (!formulation.writeBack(x, result)) {
+            if (!written) {
                 throw std::runtime_error("not written back");
             }
             const solver::QualityMeasures quality = solver::measureQuality(result);

@@ -20,7 +20,15 @@ struct StudyStart {
     double fraction = 0.01;
 };
 
+// What solves a start: GuidedProjection with StudyOptions' formulation and solver options, or
+// what Tools ▸ Solve and `devsurf-cli solve` run (a solver::SolveSession with its defaults: for
+// a rough start, the pull towards the start, vertex developability kept where it holds, the
+// step limit on guarded lengths, and a stop at the last valid iterate), the fixed vertices
+// pinned.
+enum class StudySolver { Options, Session };
+
 struct StudyOptions {
+    StudySolver solverKind = StudySolver::Options;
     int iterations = 10;
     int seeds = 10;
     unsigned firstSeed = 20150801u;

@@ -55,11 +55,16 @@ private slots:
         QVERIFY(m.value("det_residual_max").toDouble() <= 1e-8);
         QVERIFY(m.value("flatness_mean").toDouble() <= m.value("paper_flatness_mean").toDouble());
         QVERIFY(m.value("small_noise_det_residual_max").toDouble() <= 1e-8);
-        // Quality over seeds from the two starts, with the degeneracy figures.
+        // Quality over seeds from the two starts, with the degeneracy figures: the paper's
+        // configuration, then Tools ▸ Solve.
         const QJsonArray studies = m.value("quality_over_seeds").toArray();
-        QCOMPARE(studies.size(), 2);
-        QCOMPARE(studies[0].toObject().value("start").toString(), QString("edge"));
-        QCOMPARE(studies[1].toObject().value("start").toString(), QString("diameter"));
+        QCOMPARE(studies.size(), 4);
+        const char* solvers[] = {"paper", "paper", "solve", "solve"};
+        const char* starts[] = {"edge", "diameter", "edge", "diameter"};
+        for (int k = 0; k < 4; ++k) {
+            QCOMPARE(studies[k].toObject().value("solver").toString(), QString(solvers[k]));
+            QCOMPARE(studies[k].toObject().value("start").toString(), QString(starts[k]));
+        }
         for (const QJsonValue& value : studies) {
             const QJsonObject study = value.toObject();
             QCOMPARE(study.value("seeds").toInt(), 10);
