@@ -113,6 +113,10 @@ int runStudy(const std::string& name, const bench::StudyStart& start,
             r.change.startNormalAngleMean * 57.2958,
             r.change.largestMove / solver::surfaceDiameter(surface), r.change.foldOverPlaces(),
             r.overlapping.size(), r.msPerIteration);
+        if (r.ceresResidual >= 0.0) {
+            std::printf("  Ceres from the same start: residual %.2e after %d iterations\n",
+                        r.ceresResidual, r.ceresIterations);
+        }
     }
     const auto s = bench::summarize(runs);
     std::printf("%s: det worst %.2e median %.2e | flat worst %.2e | ruling worst %.3f median %.3f "
@@ -150,6 +154,8 @@ int main(int argc, char** argv) {
             start = {devsurf::bench::NoiseScale::EdgeLength, std::atof(argv[++i])};
         } else if (arg == "--diameter-noise" && i + 1 < argc) {
             start = {devsurf::bench::NoiseScale::Diameter, std::atof(argv[++i])};
+        } else if (arg == "--ceres") {
+            studyOptions.ceres = true;
         } else if (arg == "--session") {
             studyOptions.solverKind = bench::StudySolver::Session;
         } else if (arg == "--trace") {
@@ -168,11 +174,11 @@ int main(int argc, char** argv) {
                 return 1;
             }
         } else {
-            std::cerr
-                << "usage: devsurf-bench [--json] [--model NAME]... [--no-ceres]\n"
-                   "       devsurf-bench --drag [--json]\n"
-                   "       devsurf-bench --study MODEL [--edge-noise F | --diameter-noise F]"
-                   " [--seeds N] [--iterations N] [--set NAME=VALUE]... [--session] [--trace]\n";
+            std::cerr << "usage: devsurf-bench [--json] [--model NAME]... [--no-ceres]\n"
+                         "       devsurf-bench --drag [--json]\n"
+                         "       devsurf-bench --study MODEL [--edge-noise F | --diameter-noise F]"
+                         " [--seeds N] [--iterations N] [--set NAME=VALUE]... [--session | "
+                         "--ceres] [--trace]\n";
             return 1;
         }
     }

@@ -1,5 +1,7 @@
 #include "quality_study.h"
 
+#include "ceres_peer.h"
+
 #include "model/pattern/cutting_pattern.h"
 #include "solver/core/guided_projection.h"
 #include "solver/formulation/perturbation.h"
@@ -65,6 +67,11 @@ std::vector<StudyRun> runStudy(const model::CompositeSurface& surface, const Stu
         } else {
             const solver::SurfaceFormulation formulation(perturbed, formulationOptions);
             std::vector<double> x = formulation.initialState();
+            if (options.ceres) {
+                const CeresResult ceres = runCeres(formulation.problem(), x, 1e-10, 60.0);
+                run.ceresResidual = ceres.finalResidual;
+                run.ceresIterations = ceres.iterations;
+            }
             solver::GuidedProjection projection;
             summary = projection.solve(formulation.problem(), x, solverOptions);
             written = formulation.writeBack(x, result);

@@ -35,6 +35,9 @@ struct StudyOptions {
     int fixedVertices = 3; // boundary vertices fixed (spread over the boundary)
     solver::FormulationOptions formulation;
     solver::Options solver;
+    // Also run Ceres' Levenberg–Marquardt (ceres_peer.h) from each start on the same constraint
+    // rows (StudySolver::Options only) for up to 1,000 iterations or 60 s, towards 1e-10.
+    bool ceres = false;
 };
 
 // One solve from one seed, measured on the geometry.
@@ -49,6 +52,9 @@ struct StudyRun {
     std::vector<model::FaceId> overlapping;
     double msPerIteration = 0.0;
     std::vector<solver::IterationStats> iterations; // the solver's per-iteration statistics
+    // With StudyOptions::ceres: Ceres' largest constraint residual at its end, its iterations.
+    double ceresResidual = -1.0;
+    int ceresIterations = 0;
 };
 
 // Worst and median over the seeds ("worst" is the largest residual, the shortest ruling, …).
