@@ -96,8 +96,7 @@ std::string millimetres(double value) {
 
 } // namespace
 
-std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surface,
-                                                    GeometryChecks checks) {
+std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surface) {
     std::vector<std::string> problems;
 
     // Faces around each vertex, for naming; gathered at the first problem that needs them
@@ -194,9 +193,6 @@ std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surf
         }
     }
 
-    if (checks == GeometryChecks::VerticesAndEdges) {
-        return problems;
-    }
     for (const auto& [face, loop] : surface.faces()) {
         bool usable = true;
         for (std::size_t i = 0; i < loop.size() && usable; ++i) {

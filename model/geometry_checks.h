@@ -15,13 +15,7 @@ inline constexpr double kMaxCoordinate = 1.0e6;
 // that are not finite or absurdly large, curves and rulings of zero length, coincident
 // vertices of a face, faces of zero area. Part of CompositeSurface::validate(); entities whose
 // data are structurally broken (e.g. a wrong control-point count) are skipped here because
-// validate() reports them already.
-//
-// GeometryChecks::VerticesAndEdges leaves out the faces (coincident vertices, zero area),
-// which cost most: the check a solver step's result gets (SolveSession::step), a ruling or
-// curve collapsed to a point.
-enum class GeometryChecks { All, VerticesAndEdges };
-std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surface,
-                                                    GeometryChecks checks = GeometryChecks::All);
+// validate() reports them already. SolveSession checks every iterate with it.
+std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surface);
 
 } // namespace devsurf::model

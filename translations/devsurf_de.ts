@@ -858,7 +858,7 @@
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="186"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="96"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
@@ -1108,202 +1108,202 @@
         <translation>Löser-&amp;Iterationen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="41"/>
         <source>The most solver iterations Tools ▸ Solve runs; it stops earlier once the surface has converged.</source>
         <translation>Höchstzahl der Iterationen von Werkzeuge ▸ Lösen; es endet früher, sobald die Fläche konvergiert ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="44"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="46"/>
         <source>Solver Iterations</source>
         <translation>Löser-Iterationen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="44"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="46"/>
         <source>Most iterations of Tools ▸ Solve:</source>
         <translation>Höchstzahl der Iterationen von Werkzeuge ▸ Lösen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="65"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="67"/>
         <source>R&amp;otate Vertices</source>
         <translation>Ecken dr&amp;ehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="66"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="69"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="71"/>
         <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
         <translation>Drehwerkzeug (R): Wählen Sie zwei oder mehr Ecken aus, drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie die Maus seitwärts; sie drehen sich um eine Achse durch ihren Schwerpunkt (senkrecht oder wie in der Werkzeugleiste gewählt), und die Fläche folgt. Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="87"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="89"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>Beenden Sie zuerst das Ziehen; es löst bereits während der Bewegung.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="53"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="55"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="53"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="55"/>
         <source>&amp;Drag Vertices and Creases</source>
         <translation>Ecken und Falze &amp;ziehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="58"/>
         <source>Drag tool: press on a vertex in the 3D view and move it, the surface follows and stays developable; press on a crease to slide it within its patches. The axis chosen in the toolbar, or holding X, Y or Z, moves along that axis; Esc cancels the drag (G).</source>
         <translation>Ziehwerkzeug: Drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie sie, die Fläche folgt und bleibt abwickelbar; drücken Sie auf einen Falz, um ihn innerhalb seiner Flächenstücke zu verschieben. Die in der Werkzeugleiste gewählte Achse oder gedrückt gehaltenes X, Y oder Z bewegt entlang dieser Achse; Esc bricht das Ziehen ab (G).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="95"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="97"/>
         <source>&amp;Cancel Solve</source>
         <translation>Lösen &amp;abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="100"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>Das laufende Lösen beenden; der Entwurf bleibt, wie er ist (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="122"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="124"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>Lösen: Iteration %1 von %2, Residuum %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="135"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="137"/>
         <source>&amp;Lengths While Dragging</source>
         <translation>&amp;Längen beim Ziehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="147"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="149"/>
         <source>&amp;Automatic</source>
         <translation>&amp;Automatisch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="148"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="150"/>
         <source>Vertex drags and rotations keep lengths on designs without crease conditions, and let the sheet stretch on designs with them, where a motion the flat sheet cannot make without stretching would otherwise stop the fold from converging.</source>
         <translation>Das Ziehen und Drehen von Ecken behält die Längen bei Entwürfen ohne Falzbedingungen bei und lässt das Blatt bei Entwürfen mit Falzbedingungen dehnen, wo sonst eine Bewegung, die das flache Blatt nicht ohne Dehnen ausführen kann, die Faltung nicht konvergieren ließe.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="151"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="153"/>
         <source>&amp;Keep Lengths</source>
         <translation>Längen &amp;beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="152"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="154"/>
         <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape and fold. A motion the sheet cannot make without stretching then may not converge. Dragged creases always resize their patches.</source>
         <translation>Beim Ziehen oder Drehen von Ecken biegt sich das Blatt, statt sich zu dehnen: entfernte Teile bleiben an ihrem Platz, und gekrümmte Falze behalten ihre Form und falten sich. Eine Bewegung, die das Blatt nicht ohne Dehnen ausführen kann, konvergiert dann unter Umständen nicht. Gezogene Falze ändern die Größe ihrer Flächenstücke immer.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="156"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="158"/>
         <source>Let &amp;Stretch</source>
         <translation>&amp;Dehnen zulassen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="157"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="159"/>
         <source>While dragging or rotating vertices, the sheet may stretch: it stays developable and its development changes, curved creases may be pulled straight and large drags may crumple it.</source>
         <translation>Beim Ziehen oder Drehen von Ecken darf sich das Blatt dehnen: es bleibt abwickelbar und seine Abwicklung ändert sich, gekrümmte Falze können gerade gezogen werden, und große Bewegungen können es zerknittern.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="179"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="181"/>
         <source>Motion &amp;Axis</source>
         <translation>Bewegungs&amp;achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="191"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="193"/>
         <source>&amp;Free</source>
         <translation>&amp;Frei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="192"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="194"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>Freie Bewegung: Das Ziehwerkzeug bewegt Ecken in der Bildebene; das Drehwerkzeug dreht sie um die senkrechte Achse (Z) oder um die Blickachse, wenn Werkzeuge ▸ Bewegungsachse ▸ Um die Blickachse drehen eingeschaltet ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="195"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="197"/>
         <source>&amp;X Axis</source>
         <translation>&amp;X-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="196"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="198"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang X; das Drehwerkzeug dreht sie um eine zu X parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes Y oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="198"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="200"/>
         <source>&amp;Y Axis</source>
         <translation>&amp;Y-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="199"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="201"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Y; das Drehwerkzeug dreht sie um eine zu Y parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="201"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="203"/>
         <source>&amp;Z Axis</source>
         <translation>&amp;Z-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="204"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Z; das Drehwerkzeug dreht sie um eine zu Z parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Y hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="226"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="228"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>Um die &amp;Blickachse drehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="229"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="231"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>Bei der Achswahl „Frei“ dreht das Drehwerkzeug die Ecken um die Blickrichtung durch ihren Schwerpunkt statt um die senkrechte Achse.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="243"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="245"/>
         <source>Colour &amp;By</source>
         <translation>&amp;Färben nach</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="251"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="253"/>
         <source>&amp;Patch</source>
         <translation>&amp;Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="251"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="253"/>
         <source>&amp;Developability</source>
         <translation>&amp;Abwickelbarkeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="251"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="253"/>
         <source>&amp;Flatness</source>
         <translation>&amp;Ebenheit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="252"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
         <source>&amp;Angle Defect</source>
         <translation>&amp;Winkeldefekt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="256"/>
         <source>Every patch in its own colour.</source>
         <translation>Jedes Flächenstück in seiner eigenen Farbe.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="255"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="257"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>Wie weit jedes abgetastete Streifenviereck von abwickelbar entfernt ist: das normierte |det(a−b, a′, b′)|, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="257"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="259"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>Ebenheit δ jedes abgetasteten Vierecks: der Abstand seiner Diagonalen durch das Mittel seiner zwei kürzesten Kanten, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="259"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="261"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>Winkeldefekt |K| = |2π − Σ Winkel| an den inneren Ecken des abgetasteten Netzes, im Bogenmaß, logarithmisch skaliert.</translation>
     </message>
@@ -2136,37 +2136,37 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="86"/>
+        <location filename="../app/gui/solve_controller.cpp" line="89"/>
         <source>There is nothing to solve.</source>
         <translation>Es gibt nichts zu lösen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="109"/>
+        <location filename="../app/gui/solve_controller.cpp" line="112"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: Es gibt nichts zu lösen; nichts wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="146"/>
+        <location filename="../app/gui/solve_controller.cpp" line="149"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 abgebrochen; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="147"/>
+        <location filename="../app/gui/solve_controller.cpp" line="150"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 abgebrochen: %2; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="149"/>
+        <location filename="../app/gui/solve_controller.cpp" line="152"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>Lösen abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="150"/>
+        <location filename="../app/gui/solve_controller.cpp" line="153"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>Lösen abgebrochen: %1; der Entwurf ist unverändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="156"/>
+        <location filename="../app/gui/solve_controller.cpp" line="159"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Form prüfen: %n Flächenstück faltet sich auf sich selbst zurück (%1); rückgängig machen oder anders fixieren oder bewegen.</numerusform>
@@ -2174,7 +2174,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="163"/>
+        <location filename="../app/gui/solve_controller.cpp" line="166"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Form prüfen: die Abwicklung überlappt sich selbst an %n Flächenstück (%1); rückgängig machen oder anders fixieren oder bewegen.</numerusform>
@@ -2182,62 +2182,67 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="172"/>
+        <location filename="../app/gui/solve_controller.cpp" line="175"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 fehlgeschlagen: %2 Nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="192"/>
+        <location filename="../app/gui/solve_controller.cpp" line="195"/>
         <source>the design changed</source>
         <translation>der Entwurf hat sich geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="203"/>
+        <location filename="../app/gui/solve_controller.cpp" line="206"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="207"/>
+        <location filename="../app/gui/solve_controller.cpp" line="210"/>
         <source>Failed: %1</source>
         <translation>Fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="219"/>
+        <location filename="../app/gui/solve_controller.cpp" line="222"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="223"/>
+        <location filename="../app/gui/solve_controller.cpp" line="226"/>
         <source>tolerance reached</source>
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="223"/>
+        <location filename="../app/gui/solve_controller.cpp" line="226"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="226"/>
+        <location filename="../app/gui/solve_controller.cpp" line="229"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="229"/>
+        <location filename="../app/gui/solve_controller.cpp" line="232"/>
+        <source>stopped at the last valid state</source>
+        <translation>beim letzten gültigen Zustand angehalten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="235"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="233"/>
+        <location filename="../app/gui/solve_controller.cpp" line="239"/>
         <source> (%1)</source>
         <translation> (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="237"/>
+        <location filename="../app/gui/solve_controller.cpp" line="243"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="254"/>
+        <location filename="../app/gui/solve_controller.cpp" line="260"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n Flächenstück faltet sich auf sich selbst zurück, wo die Fläche sich selbst überlappt: %1</numerusform>
@@ -2245,7 +2250,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="270"/>
+        <location filename="../app/gui/solve_controller.cpp" line="276"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; die Abwicklung überlappt sich selbst an %n Flächenstück (%1) und lässt sich nicht aus einem Bogen schneiden</numerusform>
@@ -2253,32 +2258,32 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="276"/>
+        <location filename="../app/gui/solve_controller.cpp" line="282"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="281"/>
+        <location filename="../app/gui/solve_controller.cpp" line="287"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="289"/>
+        <location filename="../app/gui/solve_controller.cpp" line="295"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="298"/>
+        <location filename="../app/gui/solve_controller.cpp" line="304"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="346"/>
+        <location filename="../app/gui/solve_controller.cpp" line="352"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>Lösen hat den Entwurf unverändert gelassen: das Lösen machte ihn weniger abwickelbar (größtes Abwickelbarkeitsresiduum %1 → %2).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="371"/>
+        <location filename="../app/gui/solve_controller.cpp" line="377"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n Fläche unverändert gelassen: das Lösen machte sie weniger abwickelbar.</numerusform>
@@ -2286,12 +2291,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="382"/>
+        <location filename="../app/gui/solve_controller.cpp" line="388"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 verworfen: Der Entwurf hat sich während des Lösens geändert; nichts wurde bewegt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="399"/>
+        <location filename="../app/gui/solve_controller.cpp" line="405"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, abwickelbar gehalten: %n Iteration, größtes Bedingungsresiduum %2.</numerusform>
@@ -2299,18 +2304,18 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="173"/>
-        <location filename="../app/gui/solve_controller.cpp" line="333"/>
+        <location filename="../app/gui/solve_controller.cpp" line="176"/>
+        <location filename="../app/gui/solve_controller.cpp" line="339"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="316"/>
+        <location filename="../app/gui/solve_controller.cpp" line="322"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="367"/>
+        <location filename="../app/gui/solve_controller.cpp" line="373"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>

@@ -286,7 +286,7 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="156"/>
+        <location filename="../app/gui/solve_controller.cpp" line="159"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Check the shape: %n patch folds over onto itself (%1); undo, or pin or move differently.</numerusform>
@@ -294,7 +294,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="163"/>
+        <location filename="../app/gui/solve_controller.cpp" line="166"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Check the shape: the development overlaps itself at %n patch (%1); undo, or pin or move differently.</numerusform>
@@ -302,7 +302,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="254"/>
+        <location filename="../app/gui/solve_controller.cpp" line="260"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n patch folds over onto itself, where the surface overlaps itself: %1</numerusform>
@@ -310,7 +310,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="270"/>
+        <location filename="../app/gui/solve_controller.cpp" line="276"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; the development overlaps itself at %n patch (%1) and cannot be cut from one sheet</numerusform>
@@ -318,7 +318,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="367"/>
+        <location filename="../app/gui/solve_controller.cpp" line="373"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Solved: %n iteration, largest constraint residual %1.</numerusform>
@@ -326,7 +326,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="371"/>
+        <location filename="../app/gui/solve_controller.cpp" line="377"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n surface left as it was: solving made it less developable.</numerusform>
@@ -334,7 +334,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="399"/>
+        <location filename="../app/gui/solve_controller.cpp" line="405"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, kept developable: %n iteration, largest constraint residual %2.</numerusform>

@@ -331,10 +331,18 @@ int runDragCommand(const std::vector<std::string>& positional,
               << (keepLengths ? " keeping lengths" : "") << " in " << steps << " steps, then "
               << after << " iterations; " << surface.pinnedVertices().size() << " pinned\n";
 
+    // One iteration; false once the session refused a degenerate iterate (it stays at the last
+    // valid state, which is written, as the desktop application keeps it).
+    solver::Summary last;
     auto runIteration = [&](const char* label, int i, int count) {
         const auto begin = std::chrono::steady_clock::now();
         const solver::Summary summary = session->step(1);
         const double ms = elapsedMs(begin);
+        if (summary.status == solver::Status::StoppedBeforeDegenerate) {
+            std::cout << "At " << label << " " << i
+                      << ": stopped at the last valid state: " << summary.message << "\n";
+            return false;
+        }
         if (!summary.succeeded() || summary.iterations.empty()) {
             throw model::ModelError(std::string("the solver stopped at ") + label + " " +
                                     std::to_string(i) + " (" + solver::toString(summary.status) +
@@ -342,11 +350,12 @@ int runDragCommand(const std::vector<std::string>& positional,
                                     "); nothing was written.");
         }
         printStep(label, i, count, summary, ms, session->surface());
-        return summary;
+        last = summary;
+        return true;
     };
 
-    solver::Summary last;
-    for (int k = 1; k <= steps; ++k) {
+    bool going = true;
+    for (int k = 1; k <= steps && going; ++k) {
         const double t = static_cast<double>(k) / steps;
         for (const auto& [id, position] : start) {
             session->setHandleTarget(id, targetAt(position, t));
@@ -354,11 +363,11 @@ int runDragCommand(const std::vector<std::string>& positional,
         for (const solver::ControlPointHandle& point : points) {
             session->setControlPointTarget(point.edge, point.index, targetAt(point.target, t));
         }
-        last = runIteration("step", k, steps);
+        going = runIteration("step", k, steps);
     }
     session->settle();
-    for (int k = 1; k <= after; ++k) {
-        last = runIteration("after", k, after);
+    for (int k = 1; k <= after && going; ++k) {
+        going = runIteration("after", k, after);
     }
 
     double largestMiss = 0.0;
@@ -373,11 +382,17 @@ int runDragCommand(const std::vector<std::string>& positional,
         largestMiss = std::max(largestMiss, (reached - targetAt(point.target, 1.0)).norm());
     }
     char line[256];
-    std::snprintf(line, sizeof line,
-                  "Largest residual %.2e (tolerance %.1e %s); dragged points within %.3g of "
-                  "their targets.\n",
-                  last.finalMaxConstraintResidual, last.tolerance,
-                  last.toleranceReached ? "reached" : "not reached", largestMiss);
+    if (last.iterations.empty()) {
+        std::snprintf(line, sizeof line,
+                      "No iteration completed; dragged points within %.3g of their targets.\n",
+                      largestMiss);
+    } else {
+        std::snprintf(line, sizeof line,
+                      "Largest residual %.2e (tolerance %.1e %s); dragged points within %.3g of "
+                      "their targets.\n",
+                      last.finalMaxConstraintResidual, last.tolerance,
+                      last.toleranceReached ? "reached" : "not reached", largestMiss);
+    }
     std::cout << line;
     printFoldAndShape(surface, session->surface());
     surface = session->surface();

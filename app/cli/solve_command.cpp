@@ -155,9 +155,10 @@ int runSolveCommand(const std::vector<std::string>& positional,
         solver::Summary last;
         for (int i = 0; i < iterations; ++i) {
             const solver::Summary summary = session->step(1);
-            if (summary.succeeded() && summary.iterations.empty() && !summary.message.empty()) {
+            if (summary.status == solver::Status::StoppedBeforeDegenerate) {
                 // The session refused a degenerate iterate and stays at the last valid one.
-                std::cout << "After iteration " << i << ": " << summary.message << "\n";
+                std::cout << "After iteration " << i
+                          << ": stopped at the last valid state: " << summary.message << "\n";
                 break;
             }
             if (!summary.succeeded() || summary.iterations.empty()) {

@@ -228,6 +228,9 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result,
         case solver::Status::Cancelled:
             status = tr("cancelled");
             break;
+        case solver::Status::StoppedBeforeDegenerate:
+            status = tr("stopped at the last valid state");
+            break;
         default:
             status = tr("failed");
             break;

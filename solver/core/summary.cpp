@@ -18,6 +18,8 @@ const char* toString(Status status) {
         return "factorisation failed";
     case Status::InvalidProblem:
         return "invalid problem";
+    case Status::StoppedBeforeDegenerate:
+        return "stopped before a degenerate surface";
     }
     return "unknown";
 }

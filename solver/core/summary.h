@@ -12,6 +12,9 @@ enum class Status {
     NonFiniteValue,      // a residual, Jacobian entry or step was NaN/Inf
     FactorizationFailed, // CHOLMOD failed (not positive definite, out of memory, …)
     InvalidProblem,      // inconsistent structure (column out of range, wrong row count, …)
+    // SolveSession: the next iterate was a degenerate surface (a ruling, curve or patch
+    // collapsed); the session stays at the last valid one, its result.
+    StoppedBeforeDegenerate,
 };
 
 const char* toString(Status status);
@@ -25,10 +28,10 @@ struct IterationStats {
     // Σ w² φ² over energy rows (without ε₁).
     double maxConstraintResidual = 0.0;
     double energy = 0.0;
-    double stepNorm = 0.0;        // ‖x_{k+1} − x_k‖
-    double stepFraction = 1.0;    // of the linear step taken (Options::guardShrinkLimit)
-    bool rejected = false;        // the step raised the constraint merit; x_k was kept
-    bool repeated = false;        // factorised again with Options::eps2 after a failure
+    double stepNorm = 0.0;     // ‖x_{k+1} − x_k‖
+    double stepFraction = 1.0; // of the linear step taken (Options::guardShrinkLimit)
+    bool rejected = false;     // the step raised the constraint merit; x_k was kept
+    bool repeated = false;     // factorised again with Options::eps2 after a failure
     // No factorisation: the step solved the last one with this iterate's right-hand side
     // (Options::reuseFactorization).
     bool factorizationReused = false;
@@ -64,7 +67,8 @@ struct Summary {
     double totalMs = 0.0;
 
     bool succeeded() const {
-        return status == Status::Converged || status == Status::IterationLimit;
+        return status == Status::Converged || status == Status::IterationLimit ||
+               status == Status::StoppedBeforeDegenerate;
     }
     std::string briefReport() const;
 };

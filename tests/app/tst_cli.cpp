@@ -1,3 +1,4 @@
+#include "cli_run.h"
 #include "helical_band.h"
 #include "io/project_file.h"
 #include "model/examples.h"
@@ -7,11 +8,9 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
-#include <cmath>
 
 #include <cmath>
 #include <cstring>
@@ -21,23 +20,10 @@ using namespace devsurf;
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
+using Run = test::CliRun;
 
 Run cli(const QStringList& arguments) {
-    QProcess process;
-    process.start(QStringLiteral(DEVSURF_CLI_PATH), arguments);
-    Run run;
-    if (!process.waitForFinished(120000) || process.exitStatus() != QProcess::NormalExit) {
-        return run;
-    }
-    run.exitCode = process.exitCode();
-    run.out = QString::fromUtf8(process.readAllStandardOutput());
-    run.err = QString::fromUtf8(process.readAllStandardError());
-    return run;
+    return test::runCli(arguments);
 }
 
 } // namespace
@@ -277,24 +263,6 @@ private slots:
                      lines[6].startsWith("The development overlaps itself at patch"),
                  qPrintable(lines[6]));
         QCOMPARE(lines[7], "Wrote " + out);
-    }
-
-    void solveStopsAtTheLastValidState() {
-        // Shaken by 1 % of its diameter (seed 7), the annulus converges towards cones: the
-        // 13th iteration collapses a ruling. The command says so and writes the 12th.
-        const QString file = path("collapse.devsurf");
-        QCOMPARE(cli({"example", "annulus", "-o", file}).exitCode, 0);
-        const QString out = path("collapse-solved.devsurf");
-        const Run run = cli(
-            {"solve", file, "--perturb", "0.01", "--seed", "7", "--iterations", "30", "-o", out});
-        QCOMPARE(run.exitCode, 0);
-        QVERIFY2(run.out.contains(QRegularExpression(
-                     "\\nAfter iteration \\d+: stopped at the last valid state: the next "
-                     "iteration gave a degenerate surface, edge \\d+ \\(a ruling of faces \\d+ "
-                     "and \\d+\\) has zero length\\.\\n")),
-                 qPrintable(run.out));
-        QVERIFY(!run.out.contains("iteration  30 "));
-        QCOMPARE(cli({"validate", out}).exitCode, 0);
     }
 
     void solveAndDragSayWhereTheDevelopmentOverlapsItself() {

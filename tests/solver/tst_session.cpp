@@ -106,6 +106,7 @@ private slots:
             QVERIFY2(problems.empty(), problems.empty() ? "" : problems.front().c_str());
             if (summary.iterations.empty()) {
                 stopped = true;
+                QCOMPARE(summary.status, Status::StoppedBeforeDegenerate);
                 QVERIFY(summary.message.find("degenerate surface, edge") != std::string::npos);
                 QVERIFY(sameBits(session.state(), before));
                 QCOMPARE(session.iterationsDone(), done);

@@ -208,6 +208,68 @@ private slots:
                  qPrintable(QString::number(result.summaries.front().finalMaxConstraintResidual)));
     }
 
+    void dragStopsBeforeADegenerateSurface() {
+        // fig8 lifted 85 mm (stretching, its two corners pinned), then its four middle
+        // vertices turned by −30° about the vertical through their centre in 20 moves: in the
+        // 7th of the 10 iterations after the release patch 1 flattens to a line. The release's
+        // result is the valid state before it, said so (the status ends a drag in the desktop
+        // application), where it used to be a shape the document refuses.
+        const std::vector<model::VertexId> moved{5, 6, 9, 10};
+        model::CompositeSurface lifted = model::makeExample("fig8").surfaces.front();
+        {
+            std::vector<VertexHandle> handles;
+            for (model::VertexId v : moved) {
+                handles.push_back({v, false, lifted.position(v)});
+            }
+            SolveSession lift(lifted, handles);
+            for (int k = 1; k <= 20; ++k) {
+                for (const VertexHandle& h : handles) {
+                    QVERIFY(lift.setHandleTarget(h.vertex,
+                                                 h.target + model::Vec3{0.0, 0.0, 85.0 * k / 20}));
+                }
+                QVERIFY(lift.step(1).succeeded());
+            }
+            lift.settle();
+            QVERIFY(lift.step(10).succeeded());
+            lifted = lift.surface();
+        }
+        // As devsurf-cli drag --rotate 150,171.650635094611,85,0,0,1,-30 turns them.
+        const model::Vec3 centre{150.0, 171.650635094611, 85.0};
+        auto turned = [&](model::VertexId v, double t) {
+            const double angle = -std::acos(-1.0) / 6.0 * t;
+            const model::Vec3 d = lifted.position(v) - centre;
+            const model::Vec3 cross{-d.y, d.x, 0.0};
+            return centre + d * std::cos(angle) + cross * std::sin(angle) +
+                   model::Vec3{0.0, 0.0, d.z * (1.0 - std::cos(angle))};
+        };
+        SolverWorker worker;
+        QSignalSpy finished(&worker, &SolverWorker::finished);
+        SolveRequest request;
+        request.sessionKey = 9;
+        request.surfaces = {lifted};
+        for (int k = 1; k <= 21; ++k) {
+            const bool release = k == 21;
+            std::vector<VertexHandle> handles;
+            for (model::VertexId v : moved) {
+                handles.push_back({v, false, turned(v, std::min(1.0, k / 20.0))});
+            }
+            request.pulled[0] = handles;
+            request.iterations = release ? 10 : 1;
+            request.settle = release;
+            request.revision = static_cast<quint64>(k);
+            worker.submit(request);
+            QVERIFY(waitForResults(finished, k));
+        }
+        const SolveResult result = resultAt(finished, 20);
+        QVERIFY2(result.ok, qPrintable(result.error));
+        const Summary& summary = result.summaries.front();
+        QCOMPARE(summary.status, Status::StoppedBeforeDegenerate);
+        QVERIFY2(summary.message.find("zero area") != std::string::npos, summary.message.c_str());
+        QVERIFY(summary.iterationsCompleted < 10);
+        const std::vector<std::string> problems = result.surfaces.front().validate();
+        QVERIFY2(problems.empty(), problems.empty() ? "" : problems.front().c_str());
+    }
+
     void finalResultsSayWhereTheDevelopmentOverlapsItself() {
         // A band winding one and a half times round: its development overlaps itself whatever
         // the solver makes of its strips. A Solve's result and a drag's settling result say
