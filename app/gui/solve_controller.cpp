@@ -236,7 +236,12 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result,
             break;
         }
         if (!summary.message.empty()) {
-            status += tr(" (%1)").arg(QString::fromStdString(summary.message));
+            // The solver's sentence without its full stop: the status goes on after it.
+            QString message = QString::fromStdString(summary.message);
+            if (message.endsWith(QLatin1Char('.'))) {
+                message.chop(1);
+            }
+            status += tr(" (%1)").arg(message);
         }
         for (const solver::SolveResult::Kept& kept : result.kept) {
             if (kept.surface == static_cast<int>(s)) {
