@@ -1,6 +1,7 @@
 #include "bspline_curve.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -313,7 +314,16 @@ Vec3 BSplineCurve::derivative(double u, int order) const {
     if (order > m) {
         return {};
     }
-    std::vector<Vec3> d(idx(m + 1));
+    // The span's de Boor points: on the stack up to degree 15 (every curve DevSurf makes; this
+    // runs for every sample of every curve), on the heap beyond.
+    constexpr int kStackPoints = 16;
+    std::array<Vec3, kStackPoints> onStack;
+    std::vector<Vec3> onHeap;
+    Vec3* d = onStack.data();
+    if (m + 1 > kStackPoints) {
+        onHeap.resize(idx(m + 1));
+        d = onHeap.data();
+    }
     for (int i = 0; i <= m; ++i) {
         d[idx(i)] = controlAt(j - m + i);
     }
@@ -336,6 +346,36 @@ Vec3 BSplineCurve::derivative(double u, int order) const {
         }
     }
     return d[idx(m)];
+}
+
+void BSplineCurve::pointAndTangent(double u, Vec3& point, Vec3& tangent) const {
+    const int j = locate(u);
+    const int m = m_degree;
+    constexpr int kStackPoints = 16;
+    std::array<Vec3, kStackPoints> onStack;
+    std::vector<Vec3> onHeap;
+    Vec3* d = onStack.data();
+    if (m + 1 > kStackPoints) {
+        onHeap.resize(idx(m + 1));
+        d = onHeap.data();
+    }
+    for (int i = 0; i <= m; ++i) {
+        d[idx(i)] = controlAt(j - m + i);
+    }
+    // Rounds 1 … m − 1 of de Boor; the last two points span the tangent, the last round
+    // gives the point.
+    for (int r = 1; r < m; ++r) {
+        for (int i = m; i >= r; --i) {
+            const int l = j - m + i;
+            const double a =
+                (u - m_knots[idx(l)]) / (m_knots[idx(l + m - r + 1)] - m_knots[idx(l)]);
+            d[idx(i)] = d[idx(i - 1)] * (1.0 - a) + d[idx(i)] * a;
+        }
+    }
+    const double h = m_knots[idx(j + 1)] - m_knots[idx(j)];
+    tangent = (d[idx(m)] - d[idx(m - 1)]) * (static_cast<double>(m) / h);
+    const double a = (u - m_knots[idx(j)]) / h;
+    point = d[idx(m - 1)] * (1.0 - a) + d[idx(m)] * a;
 }
 
 DeBoorRows BSplineCurve::deBoorRows(double u) const {

@@ -85,6 +85,8 @@ public:
 
     Vec3 evaluate(double u) const;
     Vec3 derivative(double u, int order) const; // order >= 0; zero vector for order > degree
+    // evaluate(u) and derivative(u, 1) from one de Boor pass (for dense sampling).
+    void pointAndTangent(double u, Vec3& point, Vec3& tangent) const;
     DeBoorPoints deBoorPoints(double u) const;
     DeBoorRows deBoorRows(double u) const;
 

@@ -28,9 +28,13 @@ bool isDevelopableStart(const model::Strip& strip) {
     const int count = 50 * std::max(1, static_cast<int>(breaks.size()) - 1);
     for (int i = 0; i <= count; ++i) {
         const double u = static_cast<double>(i) / count;
-        const Vec3 d = strip.aPoint(u) - strip.bPoint(u);
-        const Vec3 ta = strip.a.derivative(u, 1);
-        const Vec3 tb = strip.b.derivative(u, 1);
+        Vec3 a;
+        Vec3 ta;
+        Vec3 b;
+        Vec3 tb;
+        strip.a.pointAndTangent(u, a, ta);
+        strip.b.pointAndTangent(u, b, tb);
+        const Vec3 d = a - b;
         if (std::abs(det(d, ta, tb)) > 1e-9 * d.norm() * ta.norm() * tb.norm()) {
             return false;
         }
@@ -39,7 +43,7 @@ bool isDevelopableStart(const model::Strip& strip) {
 }
 
 std::vector<Vec3> fitStartNormals(const model::Strip& strip, const model::BSplineCurve& normalCurve,
-                                  const std::vector<double>& samples) {
+                                  const std::vector<double>& samples, bool developable) {
     const int controls = static_cast<int>(normalCurve.controlPoints().size());
     // Least squares fit to N(u) = a′ × (b − a) at the samples. If N itself lies in the normal
     // spline's space (always in the exact space, see FormulationOptions::exactNormalSpace) its
@@ -66,7 +70,6 @@ std::vector<Vec3> fitStartNormals(const model::Strip& strip, const model::BSplin
     // Only a developable start keeps N itself: on a rough start |N| varies by orders of
     // magnitude along a strip and fitting N made the first steps large where |N| is large
     // (measured: 10× the initial residual, and worse convergence in the exact space).
-    const bool developable = isDevelopableStart(strip);
     const bool exactPossible = developable && typical > 0.0 && endLength > 1e-9 * typical;
     for (std::size_t s = 0; s < samples.size(); ++s) {
         const auto row = static_cast<Eigen::Index>(s);

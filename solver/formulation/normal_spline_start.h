@@ -18,9 +18,10 @@ bool isDevelopableStart(const model::Strip& strip);
 
 // Initial control normals of a strip's normal spline `normalCurve` (its space; its control
 // points are ignored), fitted by least squares to N(u) = a′ × (b − a) at `samples`, whose
-// last two values must be u = 0 and u = 1 (an exact fit of N is scaled to |n(0)| = 1).
+// last two values must be u = 0 and u = 1 (an exact fit of N is scaled to |n(0)| = 1, only
+// if the strip is `developable`: isDevelopableStart(strip), which the caller has at hand).
 std::vector<model::Vec3> fitStartNormals(const model::Strip& strip,
                                          const model::BSplineCurve& normalCurve,
-                                         const std::vector<double>& samples);
+                                         const std::vector<double>& samples, bool developable);
 
 } // namespace devsurf::solver

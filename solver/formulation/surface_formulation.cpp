@@ -96,13 +96,26 @@ struct SurfaceFormulation::Builder {
     // a C² cubic, so the solver had to move such designs. A strip that is not developable at
     // the start gets the cubic C² space: from rough starts it converged better (measured from
     // 0.1 % noise on the cylinder: det 5e-15 against 2e-6 in the exact space).
-    model::SplineSpace normalSpace(const model::Strip& strip) const {
+    model::SplineSpace normalSpace(const model::Strip& strip) {
         const model::SplineSpace& curves = surface.edge(strip.aSide.edge).space;
-        if (!options.exactNormalSpace || !isDevelopableStart(strip)) {
+        if (!options.exactNormalSpace || !developableStart(strip)) {
             return {3, 2, curves.intervals};
         }
         return {2 * curves.degree - 1, std::max(0, curves.smoothness - 1), curves.intervals};
     }
+
+    // isDevelopableStart(strip), sampled once per strip (50 values per interval: most of the
+    // time a session on a large design took to build).
+    bool developableStart(const model::Strip& strip) {
+        const auto found = developableStarts.find(strip.face);
+        if (found != developableStarts.end()) {
+            return found->second;
+        }
+        const bool developable = isDevelopableStart(strip);
+        developableStarts.emplace(strip.face, developable);
+        return developable;
+    }
+    std::map<FaceId, bool> developableStarts;
 
     // Point indices of a strip side's curve in the order the strip traverses it.
     std::vector<int> sidePoints(const model::StripSide& side) const {
@@ -350,7 +363,8 @@ struct SurfaceFormulation::Builder {
         std::vector<double> samples = values;
         samples.push_back(0.0);
         samples.push_back(1.0);
-        const std::vector<Vec3> fitted = fitStartNormals(strip, normalCurve, samples);
+        const std::vector<Vec3> fitted =
+            fitStartNormals(strip, normalCurve, samples, developableStart(strip));
         const model::BSplineCurve startNormal = model::BSplineCurve::uniform(space, fitted);
         const bool unitAtStart =
             startNormal.evaluate(0.0).norm() >= 1e-3 * startNormal.evaluate(1.0).norm();

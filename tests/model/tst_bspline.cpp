@@ -285,6 +285,11 @@ void checkDerivatives(const Case& c) {
             QVERIFY2((fd1 - d1).norm() <= 1e-6 * ref1,
                      describe(c, u) + " first " + QByteArray::number((fd1 - d1).norm() / ref1));
             QVERIFY2((curve.derivative(u, 1) - d1).norm() <= 1e-10 * ref1, describe(c, u));
+            Vec3 point;
+            Vec3 tangent;
+            curve.pointAndTangent(u, point, tangent);
+            QVERIFY2((point - curve.evaluate(u)).norm() <= 1e-12 * c.diameter, describe(c, u));
+            QVERIFY2((tangent - d1).norm() <= 1e-10 * ref1, describe(c, u));
 
             const Vec3 d2 = points.secondDerivative();
             const double ref2 = std::max(d2.norm(), c.diameter / (length * length));
@@ -315,6 +320,15 @@ void checkDerivatives(const Case& c) {
             QCOMPARE(curve.derivative(u, m + 1), Vec3());
             QVERIFY2((curve.derivative(u, 0) - curve.evaluate(u)).norm() == 0.0, describe(c, u));
         }
+    }
+    // pointAndTangent at the knots and the domain ends takes the same span as derivative().
+    for (const double u : distinctDomainKnots(curve)) {
+        Vec3 point;
+        Vec3 tangent;
+        curve.pointAndTangent(u, point, tangent);
+        const Vec3 d1 = curve.derivative(u, 1);
+        QVERIFY2((point - curve.evaluate(u)).norm() <= 1e-12 * c.diameter, describe(c, u));
+        QVERIFY2((tangent - d1).norm() <= 1e-10 * std::max(d1.norm(), c.diameter), describe(c, u));
     }
 }
 
