@@ -301,6 +301,20 @@ int BSplineCurve::locate(double& u) const {
     return j;
 }
 
+Vec3* BSplineCurve::spanPoints(int j, std::array<Vec3, 16>& onStack,
+                               std::vector<Vec3>& onHeap) const {
+    const int m = m_degree;
+    Vec3* d = onStack.data();
+    if (idx(m + 1) > onStack.size()) {
+        onHeap.resize(idx(m + 1));
+        d = onHeap.data();
+    }
+    for (int i = 0; i <= m; ++i) {
+        d[idx(i)] = controlAt(j - m + i);
+    }
+    return d;
+}
+
 Vec3 BSplineCurve::evaluate(double u) const {
     return derivative(u, 0);
 }
@@ -314,19 +328,9 @@ Vec3 BSplineCurve::derivative(double u, int order) const {
     if (order > m) {
         return {};
     }
-    // The span's de Boor points: on the stack up to degree 15 (every curve DevSurf makes; this
-    // runs for every sample of every curve), on the heap beyond.
-    constexpr int kStackPoints = 16;
-    std::array<Vec3, kStackPoints> onStack;
+    std::array<Vec3, 16> onStack;
     std::vector<Vec3> onHeap;
-    Vec3* d = onStack.data();
-    if (m + 1 > kStackPoints) {
-        onHeap.resize(idx(m + 1));
-        d = onHeap.data();
-    }
-    for (int i = 0; i <= m; ++i) {
-        d[idx(i)] = controlAt(j - m + i);
-    }
+    Vec3* d = spanPoints(j, onStack, onHeap);
     // Control points of the derivative curve, restricted to the span.
     for (int r = 1; r <= order; ++r) {
         const int p = m - r + 1;
@@ -351,17 +355,9 @@ Vec3 BSplineCurve::derivative(double u, int order) const {
 void BSplineCurve::pointAndTangent(double u, Vec3& point, Vec3& tangent) const {
     const int j = locate(u);
     const int m = m_degree;
-    constexpr int kStackPoints = 16;
-    std::array<Vec3, kStackPoints> onStack;
+    std::array<Vec3, 16> onStack;
     std::vector<Vec3> onHeap;
-    Vec3* d = onStack.data();
-    if (m + 1 > kStackPoints) {
-        onHeap.resize(idx(m + 1));
-        d = onHeap.data();
-    }
-    for (int i = 0; i <= m; ++i) {
-        d[idx(i)] = controlAt(j - m + i);
-    }
+    Vec3* d = spanPoints(j, onStack, onHeap);
     // Rounds 1 … m − 1 of de Boor; the last two points span the tangent, the last round
     // gives the point.
     for (int r = 1; r < m; ++r) {

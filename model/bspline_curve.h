@@ -3,6 +3,7 @@
 #include "spline_space.h"
 #include "vec3.h"
 
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -113,7 +114,11 @@ public:
 private:
     int controlCount() const { return static_cast<int>(m_controlPoints.size()); }
     const Vec3& controlAt(int i) const; // wraps modulo N for closed curves
-    double knotAt(int i) const;         // any index of the periodic sequence for closed curves
+    // The m + 1 control points of span j (the start of de Boor's algorithm), into `points`
+    // (on the stack up to degree 15, every curve DevSurf makes; on the heap beyond). Returns
+    // their first element.
+    Vec3* spanPoints(int j, std::array<Vec3, 16>& onStack, std::vector<Vec3>& onHeap) const;
+    double knotAt(int i) const; // any index of the periodic sequence for closed curves
     void requireNonEmpty() const;
     // Clamps or reduces u into the domain and returns the span containing it.
     int locate(double& u) const;
