@@ -283,6 +283,30 @@ void CompositeSurface::moveVertex(VertexId vertex, const Vec3& position) {
     }
 }
 
+void CompositeSurface::moveVertices(const std::vector<std::pair<VertexId, Vec3>>& moves) {
+    std::map<VertexId, Vec3> moved;
+    for (const auto& [vertex, position] : moves) {
+        if (m_vertices.find(vertex) == m_vertices.end()) {
+            throw ModelError("vertex " + str(vertex) + " does not exist.");
+        }
+        moved[vertex] = position;
+    }
+    for (const auto& [vertex, position] : moved) {
+        m_vertices.find(vertex)->second = position;
+    }
+    for (auto& [id, record] : m_edges) {
+        if (!record.isSpline() || record.controlPoints.empty()) {
+            continue;
+        }
+        if (const auto from = moved.find(record.from); from != moved.end()) {
+            record.controlPoints.front() = from->second;
+        }
+        if (const auto to = moved.find(record.to); to != moved.end()) {
+            record.controlPoints.back() = to->second;
+        }
+    }
+}
+
 void CompositeSurface::setControlPoints(EdgeId edge, std::vector<Vec3> controlPoints) {
     mutableEdge(edge).controlPoints = std::move(controlPoints);
 }

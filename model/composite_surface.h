@@ -88,6 +88,11 @@ public:
     // Moves a vertex; the end control points of its S-edges follow, so that the curves keep
     // starting and ending at their vertices.
     void moveVertex(VertexId vertex, const Vec3& position);
+    // Moves many vertices as moveVertex does each, in one pass over the edges (moveVertex scans
+    // every edge: a solver's write-back of all vertices was quadratic in the design's size). A
+    // vertex given twice takes its last position. Throws ModelError, changing nothing, if a
+    // vertex does not exist.
+    void moveVertices(const std::vector<std::pair<VertexId, Vec3>>& moves);
     void setControlPoints(EdgeId edge, std::vector<Vec3> controlPoints);
     // Pins a vertex (the solver never moves it) or releases it. Throws ModelError for an
     // unknown vertex.

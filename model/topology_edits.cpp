@@ -567,9 +567,11 @@ CompositeSurface moveVertices(const CompositeSurface& surface, const std::set<Ve
         }
         result.setControlPoints(id, std::move(points));
     }
+    std::vector<std::pair<VertexId, Vec3>> moves;
     for (VertexId v : vertices) {
-        result.moveVertex(v, motion.apply(surface.position(v)));
+        moves.emplace_back(v, motion.apply(surface.position(v)));
     }
+    result.moveVertices(moves);
     throwIfNewProblem(surface, result);
     return result;
 }

@@ -41,16 +41,18 @@ void perturbSurface(model::CompositeSurface& surface, double sigma, unsigned see
     std::normal_distribution<double> noise(0.0, sigma);
     auto jitter = [&](const Vec3& p) { return p + Vec3(noise(rng), noise(rng), noise(rng)); };
     const std::set<VertexId> kept(keep.begin(), keep.end());
-    // Vertices first (moveVertex carries the end control points along), then the interior
+    // Vertices first (moveVertices carries the end control points along), then the interior
     // control points, both in id order so the result depends on the seed only.
     std::vector<std::pair<VertexId, Vec3>> vertices(surface.vertices().begin(),
                                                     surface.vertices().end());
+    std::vector<std::pair<VertexId, Vec3>> moves;
     for (const auto& [id, position] : vertices) {
         const Vec3 moved = jitter(position);
         if (kept.count(id) == 0) {
-            surface.moveVertex(id, moved);
+            moves.emplace_back(id, moved);
         }
     }
+    surface.moveVertices(moves);
     std::vector<model::EdgeId> edges;
     for (const auto& [id, record] : surface.edges()) {
         if (record.isSpline()) {

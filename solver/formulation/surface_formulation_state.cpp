@@ -119,9 +119,12 @@ bool SurfaceFormulation::writeBack(const std::vector<double>& x, model::Composit
         positions[static_cast<std::size_t>(i)] =
             unchanged ? m_originalPoints[static_cast<std::size_t>(i)] : toModel(&x[offset]);
     }
+    std::vector<std::pair<VertexId, Vec3>> vertices;
+    vertices.reserve(m_vertexPoint.size());
     for (const auto& [vertex, point] : m_vertexPoint) {
-        surface.moveVertex(vertex, positions[static_cast<std::size_t>(point)]);
+        vertices.emplace_back(vertex, positions[static_cast<std::size_t>(point)]);
     }
+    surface.moveVertices(vertices);
     for (const auto& [edge, points] : m_edgePoints) {
         std::vector<Vec3> controls;
         controls.reserve(points.size());

@@ -219,6 +219,31 @@ private slots:
         QVERIFY(assigned.validate().empty());
     }
 
+    void moveVerticesMovesAsMoveVertexDoesEach() {
+        // Every vertex of an S/R polygon moved at once: the same surface as one moveVertex after
+        // the other (S-edge ends follow; a vertex given twice takes its last position); an
+        // unknown vertex is refused and nothing moves.
+        CompositeSurface one = polygonWithLabels("SRSRS");
+        CompositeSurface many = one;
+        const CompositeSurface start = one;
+        std::vector<std::pair<VertexId, Vec3>> moves;
+        for (const auto& [id, position] : start.vertices()) {
+            moves.emplace_back(id, position + Vec3(1.0 * id, 2.0, -3.0));
+        }
+        moves.emplace_back(moves.front().first, Vec3(7, 8, 9));
+        for (const auto& [id, position] : moves) {
+            one.moveVertex(id, position);
+        }
+        many.moveVertices(moves);
+        QVERIFY(many == one);
+        QVERIFY(!(many == start));
+        QCOMPARE(many.position(moves.front().first), Vec3(7, 8, 9));
+        CompositeSurface refused = start;
+        QVERIFY_THROWS_EXCEPTION(ModelError, refused.moveVertices({{moves[1].first, Vec3(1, 1, 1)},
+                                                                   {9999, Vec3(0, 0, 0)}}));
+        QVERIFY(refused == start);
+    }
+
     void onlyRulingsAreSmooth() {
         FaceId face = kInvalidId;
         CompositeSurface s = polygonWithLabels("SRSR", &face);
