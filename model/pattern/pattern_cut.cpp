@@ -128,43 +128,54 @@ CutMesh splitAlong(const SampledMesh& mesh, const std::set<std::pair<int, int>>&
         cornerBase[f + 1] = cornerBase[f] + mesh.faces[f].size();
     }
     UnionFind corners(cornerBase.back());
-    std::map<std::pair<int, int>, std::vector<std::pair<std::size_t, std::size_t>>> uses;
+    // Every (edge, corner pair) use, grouped by edge: the uses of one edge are a run.
+    struct EdgeUse {
+        std::pair<int, int> segment;
+        std::size_t smaller = 0; // the corner of the edge's smaller vertex
+        std::size_t larger = 0;
+    };
+    std::vector<EdgeUse> uses;
+    uses.reserve(cornerBase.back());
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         const auto& face = mesh.faces[f];
         for (std::size_t k = 0; k < face.size(); ++k) {
             const std::size_t next = (k + 1) % face.size();
             const int a = face[k];
             const int b = face[next];
-            // The corners of the edge's smaller and larger vertex.
-            const std::size_t ca = cornerBase[f] + (a < b ? k : next);
-            const std::size_t cb = cornerBase[f] + (a < b ? next : k);
-            uses[{std::min(a, b), std::max(a, b)}].emplace_back(ca, cb);
+            uses.push_back({{std::min(a, b), std::max(a, b)},
+                            cornerBase[f] + (a < b ? k : next),
+                            cornerBase[f] + (a < b ? next : k)});
         }
     }
-    for (const auto& [segment, list] : uses) {
-        if (segments.count(segment) != 0) {
-            continue;
+    std::stable_sort(uses.begin(), uses.end(),
+                     [](const EdgeUse& x, const EdgeUse& y) { return x.segment < y.segment; });
+    for (std::size_t begin = 0; begin < uses.size();) {
+        std::size_t end = begin + 1;
+        while (end < uses.size() && uses[end].segment == uses[begin].segment) {
+            ++end;
         }
-        for (std::size_t i = 1; i < list.size(); ++i) {
-            corners.unite(list[0].first, list[i].first);
-            corners.unite(list[0].second, list[i].second);
+        if (segments.count(uses[begin].segment) == 0) {
+            for (std::size_t i = begin + 1; i < end; ++i) {
+                corners.unite(uses[begin].smaller, uses[i].smaller);
+                corners.unite(uses[begin].larger, uses[i].larger);
+            }
         }
+        begin = end;
     }
     CutMesh cut;
-    std::map<std::size_t, int> copyOfClass;
+    std::vector<int> copyOfClass(cornerBase.back(), -1); // by the class's root corner
     cut.mesh.faceOrigin = mesh.faceOrigin;
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         std::vector<int> face;
         for (std::size_t k = 0; k < mesh.faces[f].size(); ++k) {
-            const std::size_t root = corners.find(cornerBase[f] + k);
-            auto [it, inserted] = copyOfClass.emplace(root, 0);
-            if (inserted) {
-                it->second = static_cast<int>(cut.mesh.vertices.size());
+            int& copy = copyOfClass[corners.find(cornerBase[f] + k)];
+            if (copy < 0) {
+                copy = static_cast<int>(cut.mesh.vertices.size());
                 const int original = mesh.faces[f][k];
                 cut.mesh.vertices.push_back(mesh.vertices[static_cast<std::size_t>(original)]);
                 cut.original.push_back(original);
             }
-            face.push_back(it->second);
+            face.push_back(copy);
         }
         cut.mesh.faces.push_back(std::move(face));
     }
