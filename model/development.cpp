@@ -5,7 +5,6 @@
 #include <cmath>
 #include <deque>
 #include <limits>
-#include <map>
 
 namespace devsurf::model {
 
@@ -97,35 +96,17 @@ Development unfoldSampledMesh(const SampledMesh& mesh) {
             triangles.push_back({{face[0], face[i], face[i + 1]}, {}, false});
         }
     }
-    // Triangles across each undirected edge: every (edge, triangle) use sorted by edge and then
-    // triangle; a run of equal edges lists an edge's triangles in triangle order, and every
-    // triangle side knows its run.
-    struct EdgeUse {
-        std::pair<int, int> edge;
-        int triangle = 0;
-        int side = 0;
-    };
-    std::vector<EdgeUse> uses;
-    uses.reserve(3 * triangles.size());
-    for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+    // Triangles across each undirected edge (side 3t + k is side k of triangle t).
+    std::vector<std::pair<int, int>> sideEdges;
+    sideEdges.reserve(3 * triangles.size());
+    for (const Triangle& triangle : triangles) {
         for (int k = 0; k < 3; ++k) {
-            const int a = triangles[t].v[k];
-            const int b = triangles[t].v[(k + 1) % 3];
-            uses.push_back({{std::min(a, b), std::max(a, b)}, t, k});
+            const int a = triangle.v[k];
+            const int b = triangle.v[(k + 1) % 3];
+            sideEdges.emplace_back(std::min(a, b), std::max(a, b));
         }
     }
-    std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
-        return x.edge != y.edge ? x.edge < y.edge : x.triangle < y.triangle;
-    });
-    std::vector<std::pair<std::size_t, std::size_t>> runs; // [begin, end) in uses
-    std::vector<std::size_t> runOfSide(uses.size());
-    for (std::size_t i = 0; i < uses.size(); ++i) {
-        if (i == 0 || uses[i].edge != uses[i - 1].edge) {
-            runs.emplace_back(i, i);
-        }
-        runs.back().second = i + 1;
-        runOfSide[static_cast<std::size_t>(3 * uses[i].triangle + uses[i].side)] = runs.size() - 1;
-    }
+    const SidesByEdge byEdge = groupSidesByEdge(sideEdges);
     auto length = [&mesh](int a, int b) { return distance(mesh.vertices[a], mesh.vertices[b]); };
 
     std::vector<char> vertexPlaced(mesh.vertices.size(), 0);
@@ -159,9 +140,9 @@ Development unfoldSampledMesh(const SampledMesh& mesh) {
             for (int k = 0; k < 3; ++k) {
                 const int a = tri.v[k];
                 const int b = tri.v[(k + 1) % 3];
-                const auto [first, last] = runs[runOfSide[static_cast<std::size_t>(3 * t + k)]];
-                for (std::size_t use = first; use < last; ++use) {
-                    const int n = uses[use].triangle;
+                const auto [first, last] = byEdge.run[static_cast<std::size_t>(3 * t + k)];
+                for (std::size_t i = first; i < last; ++i) {
+                    const auto n = static_cast<int>(byEdge.order[i] / 3);
                     if (n == t) {
                         continue;
                     }

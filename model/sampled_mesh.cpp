@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <map>
+#include <numeric>
 
 namespace devsurf::model {
 
@@ -98,6 +99,27 @@ SampledMesh sampleSurface(const CompositeSurface& surface, int samplesPerInterva
         }
     }
     return mesh;
+}
+
+SidesByEdge groupSidesByEdge(const std::vector<std::pair<int, int>>& edges) {
+    SidesByEdge grouped;
+    grouped.order.resize(edges.size());
+    std::iota(grouped.order.begin(), grouped.order.end(), std::size_t{0});
+    std::stable_sort(grouped.order.begin(), grouped.order.end(),
+                     [&edges](std::size_t x, std::size_t y) { return edges[x] < edges[y]; });
+    grouped.run.resize(edges.size());
+    for (std::size_t begin = 0; begin < grouped.order.size();) {
+        std::size_t end = begin + 1;
+        while (end < grouped.order.size() &&
+               edges[grouped.order[end]] == edges[grouped.order[begin]]) {
+            ++end;
+        }
+        for (std::size_t i = begin; i < end; ++i) {
+            grouped.run[grouped.order[i]] = {begin, end};
+        }
+        begin = end;
+    }
+    return grouped;
 }
 
 } // namespace devsurf::model

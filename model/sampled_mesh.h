@@ -2,6 +2,8 @@
 
 #include "composite_surface.h"
 
+#include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace devsurf::model {
@@ -27,5 +29,15 @@ struct SampledMesh {
 // Samples every S-edge at samplesPerInterval points per spline interval. The surface must be
 // valid (validate() empty); throws ModelError otherwise.
 SampledMesh sampleSurface(const CompositeSurface& surface, int samplesPerInterval);
+
+// The sides of a list of polygons grouped by undirected edge, for walking across edges (the
+// unfolding, cutting a mesh open). Side s is numbered polygon by polygon; edges[s] is its edge
+// with the smaller vertex first. `order` lists the sides sorted by edge (in side order within an
+// edge), and run[s] is the [begin, end) range of side s's edge in `order`: the sides along it.
+struct SidesByEdge {
+    std::vector<std::size_t> order;
+    std::vector<std::pair<std::size_t, std::size_t>> run;
+};
+SidesByEdge groupSidesByEdge(const std::vector<std::pair<int, int>>& edges);
 
 } // namespace devsurf::model

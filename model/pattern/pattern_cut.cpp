@@ -128,39 +128,35 @@ CutMesh splitAlong(const SampledMesh& mesh, const std::set<std::pair<int, int>>&
         cornerBase[f + 1] = cornerBase[f] + mesh.faces[f].size();
     }
     UnionFind corners(cornerBase.back());
-    // Every (edge, corner pair) use, grouped by edge: the uses of one edge are a run.
-    struct EdgeUse {
-        std::pair<int, int> segment;
-        std::size_t smaller = 0; // the corner of the edge's smaller vertex
-        std::size_t larger = 0;
-    };
-    std::vector<EdgeUse> uses;
-    uses.reserve(cornerBase.back());
+    // Side k of face f (corner cornerBase[f] + k to the next corner) along its edge; the
+    // corners of its smaller and larger vertex.
+    std::vector<std::pair<int, int>> sideEdges;
+    std::vector<std::pair<std::size_t, std::size_t>> sideCorners;
+    sideEdges.reserve(cornerBase.back());
+    sideCorners.reserve(cornerBase.back());
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         const auto& face = mesh.faces[f];
         for (std::size_t k = 0; k < face.size(); ++k) {
             const std::size_t next = (k + 1) % face.size();
             const int a = face[k];
             const int b = face[next];
-            uses.push_back({{std::min(a, b), std::max(a, b)},
-                            cornerBase[f] + (a < b ? k : next),
-                            cornerBase[f] + (a < b ? next : k)});
+            sideEdges.emplace_back(std::min(a, b), std::max(a, b));
+            sideCorners.emplace_back(cornerBase[f] + (a < b ? k : next),
+                                     cornerBase[f] + (a < b ? next : k));
         }
     }
-    std::stable_sort(uses.begin(), uses.end(),
-                     [](const EdgeUse& x, const EdgeUse& y) { return x.segment < y.segment; });
-    for (std::size_t begin = 0; begin < uses.size();) {
-        std::size_t end = begin + 1;
-        while (end < uses.size() && uses[end].segment == uses[begin].segment) {
-            ++end;
-        }
-        if (segments.count(uses[begin].segment) == 0) {
-            for (std::size_t i = begin + 1; i < end; ++i) {
-                corners.unite(uses[begin].smaller, uses[i].smaller);
-                corners.unite(uses[begin].larger, uses[i].larger);
+    const SidesByEdge byEdge = groupSidesByEdge(sideEdges);
+    for (std::size_t i = 0; i < byEdge.order.size();) {
+        const std::size_t first = byEdge.order[i];
+        const std::size_t end = byEdge.run[first].second;
+        if (segments.count(sideEdges[first]) == 0) {
+            for (std::size_t j = i + 1; j < end; ++j) {
+                const std::size_t other = byEdge.order[j];
+                corners.unite(sideCorners[first].first, sideCorners[other].first);
+                corners.unite(sideCorners[first].second, sideCorners[other].second);
             }
         }
-        begin = end;
+        i = end;
     }
     CutMesh cut;
     std::vector<int> copyOfClass(cornerBase.back(), -1); // by the class's root corner

@@ -19,6 +19,13 @@ Vec3 initialStripNormal(const model::Strip& strip, double u) {
     return length > 0.0 ? n / length : n;
 }
 
+model::SplineSpace normalSplineSpace(const model::SplineSpace& curves, bool exact) {
+    if (!exact) {
+        return {3, 2, curves.intervals};
+    }
+    return {2 * curves.degree - 1, std::max(0, curves.smoothness - 1), curves.intervals};
+}
+
 bool isDevelopableStart(const model::Strip& strip) {
     if (strip.isCone()) {
         return true;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "model/bspline_curve.h"
+#include "model/spline_space.h"
 #include "model/strip.h"
 
 #include <vector>
@@ -15,6 +16,16 @@ model::Vec3 initialStripNormal(const model::Strip& strip, double u);
 // True if the strip's normalised det(a − b, a′, b′) is at most 1e-9 at 50 values per knot interval
 // (cones: always).
 bool isDevelopableStart(const model::Strip& strip);
+
+// The space of a strip's normal spline, for curves in `curves` = S(m, k, n). Exact: N = a′ × (b −
+// a) of curves in S(m, k, n) lies in S(2m − 1, k − 1, n), so every developable strip of the design
+// space (with N ≠ 0) has a representable normal and a valid design satisfies (4) exactly as it
+// is. The cubic C² space of the paper cannot represent, e.g., the normal of a generalised
+// cylinder over a C² cubic, so the solver had to move such designs. A strip that is not
+// developable at the start gets the cubic C² space (`exact` false): from rough starts it
+// converged better (measured from 0.1 % noise on the cylinder: det 5e-15 against 2e-6 in the
+// exact space).
+model::SplineSpace normalSplineSpace(const model::SplineSpace& curves, bool exact);
 
 // Initial control normals of a strip's normal spline `normalCurve` (its space; its control
 // points are ignored), fitted by least squares to N(u) = a′ × (b − a) at `samples`, whose

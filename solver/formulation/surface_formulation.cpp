@@ -22,6 +22,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <set>
 #include <stdexcept>
 
 namespace devsurf::solver {
@@ -89,33 +90,15 @@ struct SurfaceFormulation::Builder {
                                                            : 3 * strip.a.degree() - 2;
     }
 
-    // The space of a strip's normal spline. Exact: N = a′ × (b − a) of curves in S(m, k, n)
-    // lies in S(2m − 1, k − 1, n), so every developable strip of the design space (with N ≠ 0)
-    // has a representable normal and a valid design satisfies (4) exactly as it is. The cubic
-    // C² space of the paper cannot represent, e.g., the normal of a generalised cylinder over
-    // a C² cubic, so the solver had to move such designs. A strip that is not developable at
-    // the start gets the cubic C² space: from rough starts it converged better (measured from
-    // 0.1 % noise on the cylinder: det 5e-15 against 2e-6 in the exact space).
-    model::SplineSpace normalSpace(const model::Strip& strip) {
-        const model::SplineSpace& curves = surface.edge(strip.aSide.edge).space;
-        if (!options.exactNormalSpace || !developableStart(strip)) {
-            return {3, 2, curves.intervals};
-        }
-        return {2 * curves.degree - 1, std::max(0, curves.smoothness - 1), curves.intervals};
+    model::SplineSpace normalSpace(const model::Strip& strip) const {
+        return normalSplineSpace(surface.edge(strip.aSide.edge).space,
+                                 options.exactNormalSpace &&
+                                     developableStarts.count(strip.face) != 0);
     }
 
-    // isDevelopableStart(strip), sampled once per strip (50 values per interval: most of the
-    // time a session on a large design took to build).
-    bool developableStart(const model::Strip& strip) {
-        const auto found = developableStarts.find(strip.face);
-        if (found != developableStarts.end()) {
-            return found->second;
-        }
-        const bool developable = isDevelopableStart(strip);
-        developableStarts.emplace(strip.face, developable);
-        return developable;
-    }
-    std::map<FaceId, bool> developableStarts;
+    // The strips for which isDevelopableStart holds, sampled once per strip in collect() (50
+    // values per interval: most of the time a session on a large design took to build).
+    std::set<FaceId> developableStarts;
 
     // Point indices of a strip side's curve in the order the strip traverses it.
     std::vector<int> sidePoints(const model::StripSide& side) const {
@@ -160,6 +143,9 @@ struct SurfaceFormulation::Builder {
                 planarFaces.push_back(id);
             } else {
                 strips.push_back(model::stripOfFace(surface, id));
+                if (isDevelopableStart(strips.back())) {
+                    developableStarts.insert(id);
+                }
             }
         }
     }
@@ -364,7 +350,7 @@ struct SurfaceFormulation::Builder {
         samples.push_back(0.0);
         samples.push_back(1.0);
         const std::vector<Vec3> fitted =
-            fitStartNormals(strip, normalCurve, samples, developableStart(strip));
+            fitStartNormals(strip, normalCurve, samples, developableStarts.count(strip.face) != 0);
         const model::BSplineCurve startNormal = model::BSplineCurve::uniform(space, fitted);
         const bool unitAtStart =
             startNormal.evaluate(0.0).norm() >= 1e-3 * startNormal.evaluate(1.0).norm();
