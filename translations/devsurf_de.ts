@@ -653,7 +653,7 @@
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="457"/>
+        <location filename="../app/gui/drag_tool.cpp" line="458"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1184,126 +1184,126 @@
     </message>
     <message>
         <location filename="../app/gui/main_window_solver.cpp" line="150"/>
-        <source>Vertex drags and rotations keep lengths on designs without crease conditions, and let the sheet stretch on designs with them, where a motion the flat sheet cannot make without stretching would otherwise stop the fold from converging.</source>
-        <translation>Das Ziehen und Drehen von Ecken behält die Längen bei Entwürfen ohne Falzbedingungen bei und lässt das Blatt bei Entwürfen mit Falzbedingungen dehnen, wo sonst eine Bewegung, die das flache Blatt nicht ohne Dehnen ausführen kann, die Faltung nicht konvergieren ließe.</translation>
+        <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
+        <translation>Das Ziehen und Drehen von Ecken behält die Längen bei. Wo das Blatt so nicht folgen kann (das Ziehen konvergiert nicht, faltet sich zurück oder seine Abwicklung überlappt sich selbst), wird es beim Loslassen mit Dehnen des Blatts wiederholt, und das bessere der beiden Ergebnisse bleibt; das Löser-Fenster sagt es.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="153"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="154"/>
         <source>&amp;Keep Lengths</source>
         <translation>Längen &amp;beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="154"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="155"/>
         <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape and fold. A motion the sheet cannot make without stretching then may not converge. Dragged creases always resize their patches.</source>
         <translation>Beim Ziehen oder Drehen von Ecken biegt sich das Blatt, statt sich zu dehnen: entfernte Teile bleiben an ihrem Platz, und gekrümmte Falze behalten ihre Form und falten sich. Eine Bewegung, die das Blatt nicht ohne Dehnen ausführen kann, konvergiert dann unter Umständen nicht. Gezogene Falze ändern die Größe ihrer Flächenstücke immer.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="158"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="159"/>
         <source>Let &amp;Stretch</source>
         <translation>&amp;Dehnen zulassen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="159"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="160"/>
         <source>While dragging or rotating vertices, the sheet may stretch: it stays developable and its development changes, curved creases may be pulled straight and large drags may crumple it.</source>
         <translation>Beim Ziehen oder Drehen von Ecken darf sich das Blatt dehnen: es bleibt abwickelbar und seine Abwicklung ändert sich, gekrümmte Falze können gerade gezogen werden, und große Bewegungen können es zerknittern.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="181"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="182"/>
         <source>Motion &amp;Axis</source>
         <translation>Bewegungs&amp;achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="193"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="194"/>
         <source>&amp;Free</source>
         <translation>&amp;Frei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="194"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="195"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>Freie Bewegung: Das Ziehwerkzeug bewegt Ecken in der Bildebene; das Drehwerkzeug dreht sie um die senkrechte Achse (Z) oder um die Blickachse, wenn Werkzeuge ▸ Bewegungsachse ▸ Um die Blickachse drehen eingeschaltet ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="197"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="198"/>
         <source>&amp;X Axis</source>
         <translation>&amp;X-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="198"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="199"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang X; das Drehwerkzeug dreht sie um eine zu X parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes Y oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="200"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="201"/>
         <source>&amp;Y Axis</source>
         <translation>&amp;Y-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="201"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Y; das Drehwerkzeug dreht sie um eine zu Y parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="203"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="204"/>
         <source>&amp;Z Axis</source>
         <translation>&amp;Z-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="204"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="205"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Z; das Drehwerkzeug dreht sie um eine zu Z parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Y hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="228"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="229"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>Um die &amp;Blickachse drehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="231"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="232"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>Bei der Achswahl „Frei“ dreht das Drehwerkzeug die Ecken um die Blickrichtung durch ihren Schwerpunkt statt um die senkrechte Achse.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="245"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="246"/>
         <source>Colour &amp;By</source>
         <translation>&amp;Färben nach</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="253"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
         <source>&amp;Patch</source>
         <translation>&amp;Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="253"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
         <source>&amp;Developability</source>
         <translation>&amp;Abwickelbarkeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="253"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
         <source>&amp;Flatness</source>
         <translation>&amp;Ebenheit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="255"/>
         <source>&amp;Angle Defect</source>
         <translation>&amp;Winkeldefekt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="256"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="257"/>
         <source>Every patch in its own colour.</source>
         <translation>Jedes Flächenstück in seiner eigenen Farbe.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="257"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="258"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>Wie weit jedes abgetastete Streifenviereck von abwickelbar entfernt ist: das normierte |det(a−b, a′, b′)|, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="259"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="260"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>Ebenheit δ jedes abgetasteten Vierecks: der Abstand seiner Diagonalen durch das Mittel seiner zwei kürzesten Kanten, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="261"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>Winkeldefekt |K| = |2π − Σ Winkel| an den inneren Ecken des abgetasteten Netzes, im Bogenmaß, logarithmisch skaliert.</translation>
     </message>
@@ -2136,37 +2136,37 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="89"/>
+        <location filename="../app/gui/solve_controller.cpp" line="85"/>
         <source>There is nothing to solve.</source>
         <translation>Es gibt nichts zu lösen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="112"/>
+        <location filename="../app/gui/solve_controller.cpp" line="108"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: Es gibt nichts zu lösen; nichts wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="149"/>
+        <location filename="../app/gui/solve_controller.cpp" line="145"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 abgebrochen; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="150"/>
+        <location filename="../app/gui/solve_controller.cpp" line="146"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 abgebrochen: %2; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="152"/>
+        <location filename="../app/gui/solve_controller.cpp" line="148"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>Lösen abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="153"/>
+        <location filename="../app/gui/solve_controller.cpp" line="149"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>Lösen abgebrochen: %1; der Entwurf ist unverändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="159"/>
+        <location filename="../app/gui/solve_controller.cpp" line="155"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Form prüfen: %n Flächenstück faltet sich auf sich selbst zurück (%1); rückgängig machen oder anders fixieren oder bewegen.</numerusform>
@@ -2174,7 +2174,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="166"/>
+        <location filename="../app/gui/solve_controller.cpp" line="162"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Form prüfen: die Abwicklung überlappt sich selbst an %n Flächenstück (%1); rückgängig machen oder anders fixieren oder bewegen.</numerusform>
@@ -2182,67 +2182,105 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="175"/>
+        <location filename="../app/gui/solve_controller.cpp" line="171"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 fehlgeschlagen: %2 Nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="195"/>
+        <location filename="../app/gui/solve_controller.cpp" line="191"/>
         <source>the design changed</source>
         <translation>der Entwurf hat sich geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="206"/>
+        <location filename="../app/gui/solve_controller.cpp" line="198"/>
+        <source>it stopped before a degenerate shape</source>
+        <translation>es hielt vor einer entarteten Form an</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="201"/>
+        <source>no convergence, residual %1</source>
+        <translation>keine Konvergenz, Residuum %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/solve_controller.cpp" line="204"/>
+        <source>folded over in %n place(s)</source>
+        <translation>
+            <numerusform>an %n Stelle zurückgefaltet</numerusform>
+            <numerusform>an %n Stellen zurückgefaltet</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="207"/>
+        <source>a development overlapping itself</source>
+        <translation>eine sich selbst überlappende Abwicklung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="210"/>
+        <source>collapsed strips</source>
+        <translation>zusammengefallene Streifen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="213"/>
+        <source>a shape too degenerate to measure</source>
+        <translation>eine zum Messen zu entartete Form</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="225"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="210"/>
+        <location filename="../app/gui/solve_controller.cpp" line="229"/>
         <source>Failed: %1</source>
         <translation>Fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="222"/>
+        <location filename="../app/gui/solve_controller.cpp" line="241"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="226"/>
+        <location filename="../app/gui/solve_controller.cpp" line="245"/>
         <source>tolerance reached</source>
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="226"/>
+        <location filename="../app/gui/solve_controller.cpp" line="245"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="229"/>
+        <location filename="../app/gui/solve_controller.cpp" line="248"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="232"/>
+        <location filename="../app/gui/solve_controller.cpp" line="251"/>
         <source>stopped at the last valid state</source>
         <translation>beim letzten gültigen Zustand angehalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="235"/>
+        <location filename="../app/gui/solve_controller.cpp" line="254"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="244"/>
+        <location filename="../app/gui/solve_controller.cpp" line="263"/>
         <source> (%1)</source>
         <translation> (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="248"/>
+        <location filename="../app/gui/solve_controller.cpp" line="267"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
     </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="275"/>
+        <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
+        <translation>; das Beibehalten der Längen schlug fehl (%1), daher wurde das Ziehen mit Dehnen des Blatts wiederholt</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="265"/>
+        <location filename="../app/gui/solve_controller.cpp" line="291"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n Flächenstück faltet sich auf sich selbst zurück, wo die Fläche sich selbst überlappt: %1</numerusform>
@@ -2250,7 +2288,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="281"/>
+        <location filename="../app/gui/solve_controller.cpp" line="307"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; die Abwicklung überlappt sich selbst an %n Flächenstück (%1) und lässt sich nicht aus einem Bogen schneiden</numerusform>
@@ -2258,32 +2296,32 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="287"/>
+        <location filename="../app/gui/solve_controller.cpp" line="313"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="292"/>
+        <location filename="../app/gui/solve_controller.cpp" line="318"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="300"/>
+        <location filename="../app/gui/solve_controller.cpp" line="326"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="309"/>
+        <location filename="../app/gui/solve_controller.cpp" line="335"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="357"/>
+        <location filename="../app/gui/solve_controller.cpp" line="383"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>Lösen hat den Entwurf unverändert gelassen: das Lösen machte ihn weniger abwickelbar (größtes Abwickelbarkeitsresiduum %1 → %2).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="382"/>
+        <location filename="../app/gui/solve_controller.cpp" line="408"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n Fläche unverändert gelassen: das Lösen machte sie weniger abwickelbar.</numerusform>
@@ -2291,12 +2329,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="393"/>
+        <location filename="../app/gui/solve_controller.cpp" line="419"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 verworfen: Der Entwurf hat sich während des Lösens geändert; nichts wurde bewegt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="410"/>
+        <location filename="../app/gui/solve_controller.cpp" line="436"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, abwickelbar gehalten: %n Iteration, größtes Bedingungsresiduum %2.</numerusform>
@@ -2304,18 +2342,18 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="176"/>
-        <location filename="../app/gui/solve_controller.cpp" line="344"/>
+        <location filename="../app/gui/solve_controller.cpp" line="172"/>
+        <location filename="../app/gui/solve_controller.cpp" line="370"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="327"/>
+        <location filename="../app/gui/solve_controller.cpp" line="353"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="378"/>
+        <location filename="../app/gui/solve_controller.cpp" line="404"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>

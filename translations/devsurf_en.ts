@@ -286,7 +286,7 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="159"/>
+        <location filename="../app/gui/solve_controller.cpp" line="155"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Check the shape: %n patch folds over onto itself (%1); undo, or pin or move differently.</numerusform>
@@ -294,7 +294,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="166"/>
+        <location filename="../app/gui/solve_controller.cpp" line="162"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Check the shape: the development overlaps itself at %n patch (%1); undo, or pin or move differently.</numerusform>
@@ -302,7 +302,15 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="265"/>
+        <location filename="../app/gui/solve_controller.cpp" line="204"/>
+        <source>folded over in %n place(s)</source>
+        <translation>
+            <numerusform>folded over in %n place</numerusform>
+            <numerusform>folded over in %n places</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/solve_controller.cpp" line="291"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n patch folds over onto itself, where the surface overlaps itself: %1</numerusform>
@@ -310,7 +318,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="281"/>
+        <location filename="../app/gui/solve_controller.cpp" line="307"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; the development overlaps itself at %n patch (%1) and cannot be cut from one sheet</numerusform>
@@ -318,7 +326,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="378"/>
+        <location filename="../app/gui/solve_controller.cpp" line="404"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Solved: %n iteration, largest constraint residual %1.</numerusform>
@@ -326,7 +334,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="382"/>
+        <location filename="../app/gui/solve_controller.cpp" line="408"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n surface left as it was: solving made it less developable.</numerusform>
@@ -334,7 +342,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="410"/>
+        <location filename="../app/gui/solve_controller.cpp" line="436"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, kept developable: %n iteration, largest constraint residual %2.</numerusform>

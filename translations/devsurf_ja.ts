@@ -639,7 +639,7 @@
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="457"/>
+        <location filename="../app/gui/drag_tool.cpp" line="458"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1165,126 +1165,126 @@
     </message>
     <message>
         <location filename="../app/gui/main_window_solver.cpp" line="150"/>
-        <source>Vertex drags and rotations keep lengths on designs without crease conditions, and let the sheet stretch on designs with them, where a motion the flat sheet cannot make without stretching would otherwise stop the fold from converging.</source>
-        <translation>頂点のドラッグと回転は、折り線の条件のない設計では長さを保ち、条件のある設計ではシートの伸びを許します。そうしないと、平らなシートが伸びずにはできない動きで折りが収束しなくなるためです。</translation>
+        <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
+        <translation>頂点のドラッグと回転は長さを保ちます。シートがそのままでは追従できない場合 (ドラッグが収束しない、折り返す、または展開図が自身と重なる場合)、離したときにシートの伸びを許してドラッグをやり直し、二つのうち良い方を残します。ソルバーパネルにその旨が表示されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="153"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="154"/>
         <source>&amp;Keep Lengths</source>
         <translation>長さを保つ(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="154"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="155"/>
         <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape and fold. A motion the sheet cannot make without stretching then may not converge. Dragged creases always resize their patches.</source>
         <translation>頂点のドラッグや回転の間、シートは伸びずに曲がります。離れた部分はその場に留まり、曲がった折り線は形を保って折れます。シートが伸びずにはできない動きは収束しないことがあります。ドラッグした折り線は常にパッチの大きさを変えます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="158"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="159"/>
         <source>Let &amp;Stretch</source>
         <translation>伸びを許す(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="159"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="160"/>
         <source>While dragging or rotating vertices, the sheet may stretch: it stays developable and its development changes, curved creases may be pulled straight and large drags may crumple it.</source>
         <translation>頂点のドラッグや回転の間、シートは伸びることがあります。可展面のままで展開図が変わり、曲がった折り線はまっすぐに引き伸ばされることがあり、大きなドラッグではしわになることがあります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="181"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="182"/>
         <source>Motion &amp;Axis</source>
         <translation>移動の軸(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="193"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="194"/>
         <source>&amp;Free</source>
         <translation>自由(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="194"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="195"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>自由な移動: ドラッグツールは頂点を視平面内で動かし、回転ツールは鉛直軸 (Z) の周り、または ツール ▸ 移動の軸 ▸ 視線軸の周りに回転 がオンのときは視線軸の周りに回転させます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="197"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="198"/>
         <source>&amp;X Axis</source>
         <translation>X 軸(&amp;X)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="198"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="199"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X 軸: ドラッグツールは頂点を X 方向にだけ動かし、回転ツールは重心を通る X に平行な軸の周りに回転させます。Y または Z を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="200"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="201"/>
         <source>&amp;Y Axis</source>
         <translation>Y 軸(&amp;Y)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="201"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y 軸: ドラッグツールは頂点を Y 方向にだけ動かし、回転ツールは重心を通る Y に平行な軸の周りに回転させます。X または Z を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="203"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="204"/>
         <source>&amp;Z Axis</source>
         <translation>Z 軸(&amp;Z)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="204"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="205"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z 軸: ドラッグツールは頂点を Z 方向にだけ動かし、回転ツールは重心を通る Z に平行な軸の周りに回転させます。X または Y を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="228"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="229"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>視線軸の周りに回転(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="231"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="232"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>軸が「自由」のとき、回転ツールは頂点を鉛直軸ではなく重心を通る視線方向の周りに回転させます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="245"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="246"/>
         <source>Colour &amp;By</source>
         <translation>色分け(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="253"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
         <source>&amp;Patch</source>
         <translation>パッチ(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="253"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
         <source>&amp;Developability</source>
         <translation>可展性(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="253"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
         <source>&amp;Flatness</source>
         <translation>平面性(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="255"/>
         <source>&amp;Angle Defect</source>
         <translation>角度欠損(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="256"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="257"/>
         <source>Every patch in its own colour.</source>
         <translation>パッチごとに色分けします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="257"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="258"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>サンプルした各帯の四角形が可展からどれだけ離れているか: 正規化した |det(a−b, a′, b′)| を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="259"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="260"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>サンプルした各四角形の平面性 δ: 対角線間の距離を最も短い 2 辺の平均で割った値を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="261"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>サンプルしたメッシュの内部頂点での角度欠損 |K| = |2π − Σ 角度| (ラジアン) を対数スケールで表示します。</translation>
     </message>
@@ -2105,180 +2105,217 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="89"/>
+        <location filename="../app/gui/solve_controller.cpp" line="85"/>
         <source>There is nothing to solve.</source>
         <translation>ソルブする対象がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="112"/>
+        <location filename="../app/gui/solve_controller.cpp" line="108"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: ソルブするものがありません。何も変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="149"/>
+        <location filename="../app/gui/solve_controller.cpp" line="145"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 を取り消しました。何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="150"/>
+        <location filename="../app/gui/solve_controller.cpp" line="146"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 を取り消しました: %2。何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="152"/>
+        <location filename="../app/gui/solve_controller.cpp" line="148"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>ソルブを中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="153"/>
+        <location filename="../app/gui/solve_controller.cpp" line="149"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>ソルブを中止しました: %1。デザインは変更されていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="159"/>
+        <location filename="../app/gui/solve_controller.cpp" line="155"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>形状を確認してください: %n 個のパッチが自身の上に折り返されています (%1)。元に戻すか、固定や移動の仕方を変えてください。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="166"/>
+        <location filename="../app/gui/solve_controller.cpp" line="162"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>形状を確認してください: 展開図が %n 個のパッチで自身と重なっています (%1)。元に戻すか、固定や移動の仕方を変えてください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="175"/>
+        <location filename="../app/gui/solve_controller.cpp" line="171"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 に失敗しました: %2 何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="195"/>
+        <location filename="../app/gui/solve_controller.cpp" line="191"/>
         <source>the design changed</source>
         <translation>デザインが変更されました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="206"/>
+        <location filename="../app/gui/solve_controller.cpp" line="198"/>
+        <source>it stopped before a degenerate shape</source>
+        <translation>退化した形の手前で停止</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="201"/>
+        <source>no convergence, residual %1</source>
+        <translation>収束せず、残差 %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/solve_controller.cpp" line="204"/>
+        <source>folded over in %n place(s)</source>
+        <translation>
+            <numerusform>%n 箇所で折り返し</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="207"/>
+        <source>a development overlapping itself</source>
+        <translation>展開図が自身と重なる</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="210"/>
+        <source>collapsed strips</source>
+        <translation>帯がつぶれる</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="213"/>
+        <source>a shape too degenerate to measure</source>
+        <translation>測定できないほど退化した形</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="225"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="210"/>
+        <location filename="../app/gui/solve_controller.cpp" line="229"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="222"/>
+        <location filename="../app/gui/solve_controller.cpp" line="241"/>
         <source>converged</source>
         <translation>収束</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="226"/>
+        <location filename="../app/gui/solve_controller.cpp" line="245"/>
         <source>tolerance reached</source>
         <translation>許容値に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="226"/>
+        <location filename="../app/gui/solve_controller.cpp" line="245"/>
         <source>iteration limit reached</source>
         <translation>反復回数の上限に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="229"/>
+        <location filename="../app/gui/solve_controller.cpp" line="248"/>
         <source>cancelled</source>
         <translation>中止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="232"/>
+        <location filename="../app/gui/solve_controller.cpp" line="251"/>
         <source>stopped at the last valid state</source>
         <translation>最後の有効な状態で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="235"/>
+        <location filename="../app/gui/solve_controller.cpp" line="254"/>
         <source>failed</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="244"/>
+        <location filename="../app/gui/solve_controller.cpp" line="263"/>
         <source> (%1)</source>
         <translation> (%1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="248"/>
+        <location filename="../app/gui/solve_controller.cpp" line="267"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>。ソルブで可展性が悪化したため元のままにしました (%1 → %2)</translation>
     </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="275"/>
+        <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
+        <translation>; 長さを保てなかったため (%1)、シートの伸びを許してドラッグをやり直しました</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="265"/>
+        <location filename="../app/gui/solve_controller.cpp" line="291"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n 個のパッチが自身の上に折り返され、曲面が自己重複しています: %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="281"/>
+        <location filename="../app/gui/solve_controller.cpp" line="307"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; 展開図が %n 個のパッチで自身と重なっており (%1)、1 枚のシートから切り出せません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="287"/>
+        <location filename="../app/gui/solve_controller.cpp" line="313"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="292"/>
+        <location filename="../app/gui/solve_controller.cpp" line="318"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="300"/>
+        <location filename="../app/gui/solve_controller.cpp" line="326"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="309"/>
+        <location filename="../app/gui/solve_controller.cpp" line="335"/>
         <source>Solve</source>
         <translation>ソルブ</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="357"/>
+        <location filename="../app/gui/solve_controller.cpp" line="383"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>ソルブはデザインを元のままにしました。ソルブで可展性が悪化したためです (最大の可展性残差 %1 → %2)。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="382"/>
+        <location filename="../app/gui/solve_controller.cpp" line="408"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n 個のサーフェスを元のままにしました。ソルブで可展性が悪化したためです。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="393"/>
+        <location filename="../app/gui/solve_controller.cpp" line="419"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 を破棄しました: ソルブ中にデザインが変更されました。何も動いていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="410"/>
+        <location filename="../app/gui/solve_controller.cpp" line="436"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1、可展を維持: %n 回反復、最大の制約残差 %2。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="176"/>
-        <location filename="../app/gui/solve_controller.cpp" line="344"/>
+        <location filename="../app/gui/solve_controller.cpp" line="172"/>
+        <location filename="../app/gui/solve_controller.cpp" line="370"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>ソルブに失敗しました: %1 デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="327"/>
+        <location filename="../app/gui/solve_controller.cpp" line="353"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>ソルブ中にデザインが変更されたため、結果を破棄しました。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="378"/>
+        <location filename="../app/gui/solve_controller.cpp" line="404"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>ソルブ完了: %n 回反復、制約残差の最大値 %1。</numerusform>

@@ -76,14 +76,15 @@ Commands:
                       keeping lengths, else 10). Pins in the file stay; --pin pins more
                       vertices. One line per step (residual, time, quality; a step
                       of a large model that reused the previous step's factorisation
-                      says so). A vertex
-                      drag keeps lengths when no crease of the surface has a condition,
-                      as the desktop application does by default: stretching of every
-                      strip's control net is damped in each step, so the sheet bends
-                      rather than stretches (the damping fades over the K iterations
-                      after the moves; see the manual). --keep-lengths keeps lengths
-                      on any surface (curved creases then fold without being pulled
-                      straight, where the motion allows it); --stretch never. --crease EDGE
+                      says so). A vertex drag keeps lengths, as the desktop
+                      application does by default: stretching of every strip's
+                      control net is damped in each step, so the sheet bends rather
+                      than stretches (the damping fades over the K iterations after
+                      the moves; see the manual); where that fails (no convergence,
+                      a fold-over or an overlapping development) the drag is
+                      replayed letting the sheet stretch and the result with fewer
+                      problems is written. --keep-lengths never replays; --stretch
+                      never keeps lengths. --crease EDGE
                       instead of --vertices drags a crease by DX,DY,DZ: its control points
                       and unpinned ends slide within the surface (the component along its
                       normal is dropped) and the strips on both sides change size; a

@@ -8,6 +8,7 @@
 #include "solver/quality/shape_change.h"
 #include "solver/quality/vertex_stars.h"
 #include "solver/session/crease_drag.h"
+#include "solver/session/drag_lengths.h"
 #include "solver/session/solve_session.h"
 #include "vertex_commands.h"
 
@@ -165,6 +166,48 @@ void printStep(const char* label, int index, int count, const solver::Summary& s
 
 // What a designer checks after a drag: how well the crease conditions hold and how far the
 // creases fold (measured from the geometry), and whether a strip degenerated.
+// What went wrong at the end of a drag (solver::judgeDrag), as the end of a sentence:
+// "did not converge (residual 1.4e-04), folded over in 2 places".
+std::string describeOutcome(const solver::DragOutcome& outcome) {
+    std::vector<std::string> parts;
+    char text[120];
+    if (outcome.stopped) {
+        parts.push_back("stopped before a degenerate shape");
+    }
+    if (outcome.residual > solver::kDragConvergedResidual) {
+        std::snprintf(text, sizeof text, "did not converge (residual %.1e)", outcome.residual);
+        parts.push_back(text);
+    }
+    if (outcome.foldOverPlaces > 0) {
+        std::snprintf(text, sizeof text, "folded over in %d place%s", outcome.foldOverPlaces,
+                      outcome.foldOverPlaces == 1 ? "" : "s");
+        parts.push_back(text);
+    }
+    if (!outcome.overlapping.empty()) {
+        std::snprintf(text, sizeof text, "left a development overlapping itself at %zu patch%s",
+                      outcome.overlapping.size(), outcome.overlapping.size() == 1 ? "" : "es");
+        parts.push_back(text);
+    }
+    if (outcome.collapsed()) {
+        std::snprintf(text, sizeof text,
+                      "collapsed strips (rulings at %.2f of their length, curve speeds at %.2f of "
+                      "their mean)",
+                      outcome.shortestRuling, outcome.slowestSpeed);
+        parts.push_back(text);
+    }
+    if (!outcome.measurable) {
+        parts.push_back("left a shape too degenerate to measure");
+    }
+    if (parts.empty()) {
+        return "ended without a problem";
+    }
+    std::string sentence;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        sentence += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
+    }
+    return sentence;
+}
+
 void printFoldAndShape(const model::CompositeSurface& start,
                        const model::CompositeSurface& result) {
     const solver::CreaseQuality creases = solver::measureCreaseQuality(result);
@@ -247,13 +290,15 @@ int runDragCommand(const std::vector<std::string>& positional,
     }
     model::CompositeSurface& surface = project.surfaces[index];
     // As DragTool: a dragged crease changes the sizes of its strips on purpose and never
-    // keeps lengths; a vertex drag does by default where no crease has a condition.
-    const bool keepLengths =
-        !crease && (hasOption(options, "--keep-lengths") ||
-                    (!hasOption(options, "--stretch") && solver::keepsLengthsByDefault(surface)));
-    const int after = hasOption(options, "--after")
-                          ? parseCount(findOption(options, "--after"), "--after", 0, 10000)
-                          : solver::iterationsAfterDrag(keepLengths);
+    // keeps lengths; a vertex drag keeps them unless --stretch, and without --keep-lengths
+    // (Automatic) is replayed stretching where keeping them fails (solver::DragLengths).
+    const solver::DragLengths lengths =
+        crease || hasOption(options, "--stretch") ? solver::DragLengths::Stretch
+        : hasOption(options, "--keep-lengths")    ? solver::DragLengths::Keep
+                                                  : solver::DragLengths::Automatic;
+    const bool givenAfter = hasOption(options, "--after");
+    const int givenAfterCount =
+        givenAfter ? parseCount(findOption(options, "--after"), "--after", 0, 10000) : 0;
 
     std::vector<model::VertexId> unknown;
     std::vector<model::VertexId> mentioned = dragged;
@@ -288,7 +333,6 @@ int runDragCommand(const std::vector<std::string>& positional,
     std::vector<solver::VertexHandle> pulled;
     std::vector<solver::ControlPointHandle> points;
     std::unique_ptr<solver::CreaseDrag> creaseDrag;
-    std::unique_ptr<solver::SolveSession> session;
     try {
         if (crease) {
             creaseDrag = std::make_unique<solver::CreaseDrag>(surface, creaseEdge);
@@ -298,17 +342,13 @@ int runDragCommand(const std::vector<std::string>& positional,
                 start[handle.vertex] = handle.target;
             }
         }
-        for (model::VertexId id : std::set<model::VertexId>(dragged.begin(), dragged.end())) {
-            start[id] = surface.position(id);
-            pulled.push_back({id, false, surface.position(id)});
-        }
-        session = std::make_unique<solver::SolveSession>(
-            surface, pulled, points,
-            keepLengths ? solver::keepLengthsSessionOptions() : solver::SessionOptions{});
     } catch (const std::invalid_argument& error) {
         throw model::ModelError("surface " + std::to_string(index + 1) + " of '" + path +
-                                "' cannot be " + (crease ? "dragged: " : "solved: ") +
-                                error.what());
+                                "' cannot be dragged: " + error.what());
+    }
+    for (model::VertexId id : std::set<model::VertexId>(dragged.begin(), dragged.end())) {
+        start[id] = surface.position(id);
+        pulled.push_back({id, false, surface.position(id)});
     }
     // Where the handles are at parameter t of the motion.
     auto targetAt = [&](const model::Vec3& position, double t) {
@@ -324,50 +364,101 @@ int runDragCommand(const std::vector<std::string>& positional,
                       creaseEdge, d.x, d.y, d.z, points.size(), pulled.size());
         std::cout << line;
     }
-    std::cout << "Surface " << index + 1 << " (" << surface.name() << "): dragging "
-              << (crease ? "crease " + std::to_string(creaseEdge)
-                         : std::to_string(start.size()) +
-                               (start.size() == 1 ? " vertex" : " vertices"))
-              << (keepLengths ? " keeping lengths" : "") << " in " << steps << " steps, then "
-              << after << " iterations; " << surface.pinnedVertices().size() << " pinned\n";
 
-    // One iteration; false once the session refused a degenerate iterate (it stays at the last
-    // valid state, which is written, as the desktop application keeps it).
+    // The whole drag from the press, keeping lengths or not: one line per iteration; the
+    // result stays in `session`. `stopped`: an iteration was refused as degenerate (the
+    // session stays at the last valid state, which is written, as the desktop application
+    // keeps it).
+    std::unique_ptr<solver::SolveSession> session;
     solver::Summary last;
-    auto runIteration = [&](const char* label, int i, int count) {
-        const auto begin = std::chrono::steady_clock::now();
-        const solver::Summary summary = session->step(1);
-        const double ms = elapsedMs(begin);
-        if (summary.status == solver::Status::StoppedBeforeDegenerate) {
-            std::cout << "At " << label << " " << i
-                      << ": stopped at the last valid state: " << summary.message << "\n";
-            return false;
+    bool stopped = false;
+    auto runDrag = [&](bool keepLengths) {
+        const int after = givenAfter ? givenAfterCount : solver::iterationsAfterDrag(keepLengths);
+        try {
+            session = std::make_unique<solver::SolveSession>(
+                surface, pulled, points,
+                keepLengths ? solver::keepLengthsSessionOptions() : solver::SessionOptions{});
+        } catch (const std::invalid_argument& error) {
+            throw model::ModelError("surface " + std::to_string(index + 1) + " of '" + path +
+                                    "' cannot be " + (crease ? "dragged: " : "solved: ") +
+                                    error.what());
         }
-        if (!summary.succeeded() || summary.iterations.empty()) {
-            throw model::ModelError(std::string("the solver stopped at ") + label + " " +
-                                    std::to_string(i) + " (" + solver::toString(summary.status) +
-                                    (summary.message.empty() ? "" : ": " + summary.message) +
-                                    "); nothing was written.");
+        std::cout << "Surface " << index + 1 << " (" << surface.name() << "): dragging "
+                  << (crease ? "crease " + std::to_string(creaseEdge)
+                             : std::to_string(start.size()) +
+                                   (start.size() == 1 ? " vertex" : " vertices"))
+                  << (keepLengths ? " keeping lengths" : "") << " in " << steps << " steps, then "
+                  << after << " iterations; " << surface.pinnedVertices().size() << " pinned\n";
+        last = solver::Summary{};
+        stopped = false;
+        // One iteration; false once the session refused a degenerate iterate.
+        auto runIteration = [&](const char* label, int i, int count) {
+            const auto begin = std::chrono::steady_clock::now();
+            const solver::Summary summary = session->step(1);
+            const double ms = elapsedMs(begin);
+            if (summary.status == solver::Status::StoppedBeforeDegenerate) {
+                std::cout << "At " << label << " " << i
+                          << ": stopped at the last valid state: " << summary.message << "\n";
+                stopped = true;
+                return false;
+            }
+            if (!summary.succeeded() || summary.iterations.empty()) {
+                throw model::ModelError(std::string("the solver stopped at ") + label + " " +
+                                        std::to_string(i) + " (" +
+                                        solver::toString(summary.status) +
+                                        (summary.message.empty() ? "" : ": " + summary.message) +
+                                        "); nothing was written.");
+            }
+            printStep(label, i, count, summary, ms, session->surface());
+            last = summary;
+            return true;
+        };
+        bool going = true;
+        for (int k = 1; k <= steps && going; ++k) {
+            const double t = static_cast<double>(k) / steps;
+            for (const auto& [id, position] : start) {
+                session->setHandleTarget(id, targetAt(position, t));
+            }
+            for (const solver::ControlPointHandle& point : points) {
+                session->setControlPointTarget(point.edge, point.index, targetAt(point.target, t));
+            }
+            going = runIteration("step", k, steps);
         }
-        printStep(label, i, count, summary, ms, session->surface());
-        last = summary;
-        return true;
+        session->settle();
+        for (int k = 1; k <= after && going; ++k) {
+            going = runIteration("after", k, after);
+        }
+    };
+    auto residualOf = [&] {
+        return last.iterations.empty() ? last.initialMaxConstraintResidual
+                                       : last.finalMaxConstraintResidual;
     };
 
-    bool going = true;
-    for (int k = 1; k <= steps && going; ++k) {
-        const double t = static_cast<double>(k) / steps;
-        for (const auto& [id, position] : start) {
-            session->setHandleTarget(id, targetAt(position, t));
+    runDrag(lengths != solver::DragLengths::Stretch);
+    if (lengths == solver::DragLengths::Automatic) {
+        const solver::DragOutcome kept =
+            solver::judgeDrag(surface, session->surface(), residualOf(), stopped);
+        if (kept.problems() > 0) {
+            std::unique_ptr<solver::SolveSession> keptSession = std::move(session);
+            const solver::Summary keptLast = last;
+            const bool keptStopped = stopped;
+            std::cout << "Keeping lengths, the drag " << describeOutcome(kept)
+                      << "; replaying it letting the sheet stretch.\n";
+            runDrag(false);
+            const solver::DragOutcome stretched =
+                solver::judgeDrag(surface, session->surface(), residualOf(), stopped);
+            const int before = kept.problems();
+            const int now = stretched.problems();
+            std::cout << "Letting the sheet stretch, the drag " << describeOutcome(stretched)
+                      << ": " << (solver::prefersStretched(kept, stretched) ? "taken" : "not taken")
+                      << " (" << now << (now == 1 ? " problem" : " problems") << " against "
+                      << before << ").\n";
+            if (!solver::prefersStretched(kept, stretched)) {
+                session = std::move(keptSession);
+                last = keptLast;
+                stopped = keptStopped;
+            }
         }
-        for (const solver::ControlPointHandle& point : points) {
-            session->setControlPointTarget(point.edge, point.index, targetAt(point.target, t));
-        }
-        going = runIteration("step", k, steps);
-    }
-    session->settle();
-    for (int k = 1; k <= after && going; ++k) {
-        going = runIteration("after", k, after);
     }
 
     double largestMiss = 0.0;

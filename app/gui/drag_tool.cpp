@@ -351,7 +351,7 @@ bool DragTool::targetsAt(const QPoint& pos, std::vector<model::Vec3>& targets) {
 
 bool DragTool::keepsLengths() const {
     // A dragged crease changes the sizes of its strips on purpose: it never keeps lengths.
-    return !m_crease && SolveController::keepsLengths(pressSurface());
+    return !m_crease && SolveController::keepsLengths();
 }
 
 void DragTool::submit(int iterations, bool settle) {
@@ -369,6 +369,8 @@ void DragTool::submit(int iterations, bool settle) {
     }
     request.iterations = iterations;
     request.keepLengths = keepsLengths();
+    request.stretchIfLengthsFail =
+        request.keepLengths && SolveController::stretchesWhereLengthsFail();
     request.settle = settle;
     request.sessionKey = m_sessionKey;
     m_solver->worker()->submit(std::move(request));

@@ -147,9 +147,10 @@ void MainWindow::createLengthsActions(QMenu* tools) {
     };
     const Entry entries[] = {
         {"actionLengthsAutomatic", Mode::Automatic, tr("&Automatic"),
-         tr("Vertex drags and rotations keep lengths on designs without crease conditions, and "
-            "let the sheet stretch on designs with them, where a motion the flat sheet cannot "
-            "make without stretching would otherwise stop the fold from converging.")},
+         tr("Vertex drags and rotations keep lengths. Where the sheet cannot follow that way "
+            "(the drag does not converge, folds over or its development overlaps itself), the "
+            "drag is replayed on release letting the sheet stretch, and the better of the two "
+            "is kept; the Solver panel says so.")},
         {"actionKeepLengths", Mode::Keep, tr("&Keep Lengths"),
          tr("While dragging or rotating vertices, the sheet bends instead of stretching: far "
             "parts stay in place and curved creases keep their shape and fold. A motion the "

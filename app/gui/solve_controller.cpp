@@ -71,16 +71,12 @@ void SolveController::setLengthsSetting(LengthsMode mode) {
     QSettings().setValue(QStringLiteral("solver/lengthsWhileDragging"), static_cast<int>(mode));
 }
 
-bool SolveController::keepsLengths(const model::CompositeSurface& surface) {
-    switch (lengthsSetting()) {
-    case LengthsMode::Keep:
-        return true;
-    case LengthsMode::Stretch:
-        return false;
-    case LengthsMode::Automatic:
-        break;
-    }
-    return solver::keepsLengthsByDefault(surface);
+bool SolveController::keepsLengths() {
+    return lengthsSetting() != LengthsMode::Stretch;
+}
+
+bool SolveController::stretchesWhereLengthsFail() {
+    return lengthsSetting() == LengthsMode::Automatic;
 }
 
 void SolveController::solve() {
@@ -196,6 +192,29 @@ void SolveController::onDocumentChanged() {
     }
 }
 
+QString SolveController::problemsText(const solver::DragOutcome& outcome) {
+    QStringList parts;
+    if (outcome.stopped) {
+        parts << tr("it stopped before a degenerate shape");
+    }
+    if (outcome.residual > solver::kDragConvergedResidual) {
+        parts << tr("no convergence, residual %1").arg(QString::number(outcome.residual, 'e', 1));
+    }
+    if (outcome.foldOverPlaces > 0) {
+        parts << tr("folded over in %n place(s)", nullptr, outcome.foldOverPlaces);
+    }
+    if (!outcome.overlapping.empty()) {
+        parts << tr("a development overlapping itself");
+    }
+    if (outcome.collapsed()) {
+        parts << tr("collapsed strips");
+    }
+    if (!outcome.measurable) {
+        parts << tr("a shape too degenerate to measure");
+    }
+    return parts.join(QStringLiteral(", "));
+}
+
 SolveReport SolveController::reportOf(const solver::SolveResult& result,
                                       const QString& title) const {
     SolveReport report;
@@ -249,6 +268,13 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result,
                              "(%1 → %2)")
                               .arg(QString::number(kept.before, 'e', 1),
                                    QString::number(kept.after, 'e', 1));
+            }
+        }
+        for (const solver::SolveResult::Stretched& stretched : result.stretched) {
+            if (stretched.surface == static_cast<int>(s)) {
+                status += tr("; keeping lengths failed (%1), so the drag was replayed letting "
+                             "the sheet stretch")
+                              .arg(problemsText(stretched.keepingLengths));
             }
         }
         if (s < result.surfaces.size()) {

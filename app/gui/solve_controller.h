@@ -2,6 +2,7 @@
 
 #include "model/composite_surface.h"
 #include "panels/solver_panel.h"
+#include "solver/session/drag_lengths.h"
 
 #include <QObject>
 #include <QString>
@@ -38,12 +39,17 @@ public:
     enum class LengthsMode { Automatic = 0, Keep = 1, Stretch = 2 };
     static LengthsMode lengthsSetting();
     static void setLengthsSetting(LengthsMode mode);
-    // Whether a vertex drag of `surface` keeps lengths under the setting (Automatic:
-    // solver::keepsLengthsByDefault, i.e. unless a crease has a condition).
-    static bool keepsLengths(const model::CompositeSurface& surface);
+    // Whether vertex drags keep lengths under the setting (Automatic and Keep Lengths), and
+    // whether one that fails keeping them is replayed letting the sheet stretch (Automatic;
+    // solver::DragLengths).
+    static bool keepsLengths();
+    static bool stretchesWhereLengthsFail();
     // Builds a report of a result for the Solver panel (worst patches when the tolerance was
     // not reached).
     SolveReport reportOf(const solver::SolveResult& result, const QString& title) const;
+    // What went wrong keeping lengths, for the report: "folded over in 2 places, a development
+    // overlapping itself".
+    static QString problemsText(const solver::DragOutcome& outcome);
 
 public slots:
     void solve();

@@ -89,15 +89,6 @@ SessionOptions keepLengthsSessionOptions() {
     return options;
 }
 
-bool keepsLengthsByDefault(const model::CompositeSurface& surface) {
-    for (const auto& [id, edge] : surface.edges()) {
-        if (edge.isSpline() && edge.condition != model::CreaseCondition::None) {
-            return false;
-        }
-    }
-    return true;
-}
-
 SolveSession::SolveSession(const model::CompositeSurface& surface,
                            const std::vector<VertexHandle>& pulled, const SessionOptions& options)
     : SolveSession(surface, pulled, {}, options) {}

@@ -82,26 +82,6 @@ constexpr double kKeepLengthsWeight = 30.0;
 // values rises to 1e-3 and curves slow to 0.35 of their mean speed); keeping the iterate of
 // smallest residual (after 20 det 2.6e-6 against 5e-7 for the last iterate).
 constexpr double kKeepLengthsFade = 0.5;
-// Whether a vertex drag of `surface` keeps lengths when the designer has not chosen (the
-// desktop application's Tools ▸ Lengths While Dragging ▸ Automatic, `devsurf-cli drag` without
-// --keep-lengths or --stretch, the drag benchmark): yes unless a crease of the surface has a
-// condition. Measured (20 moves, then 20 iterations keeping lengths or 10 stretching):
-// - Without conditions stretching crumples where keeping lengths bends: the annulus with its
-//   outer rim pinned and vertex 0 lifted 100 mm ends at a residual of 2.4 with angle defects
-//   of 3.4 rad and rulings at 0.06 of their length when stretching, at 5e-15 with rulings at
-//   0.98 keeping lengths (lifted 25 mm: 0.35 / 1e-14); a sheet corner lifted 100 mm ends
-//   developable either way, but with rulings shrunk to 0.29 when stretching.
-// - With conditions keeping lengths breaks down where the motion needs the sheet to stretch:
-//   fig8 with all four corners pinned and its middle lifted 20, 40, 60 or 85 mm (impossible
-//   without stretching: the corners' distances are those of the flat sheet) ends at residuals
-//   of 1e-11 … 0.98 with curve speeds of 0.00 … 0.03 of their mean, against 5e-16 … 1e-14
-//   folded 12° … 41° along straight creases when stretching; fig8 with its bottom corners
-//   pinned reaches only 1e-7 (5e-15 stretching, folded 17.5°). Switched on by the designer,
-//   keeping lengths folds curved creases where the motion allows it: fig6 67°, fig8 (bottom
-//   corners) 46°.
-// Keeping lengths damps stretching in every step; it does not keep the development: the
-// annulus lifted 100 mm gains 7 % of its area, fig8 lifted 85 mm 17 %.
-bool keepsLengthsByDefault(const model::CompositeSurface& surface);
 
 // Iterations after a vertex drag's release (the desktop application's Drag and Rotate tools,
 // `devsurf-cli drag` without --after, the drag benchmark): 10, as the paper does; 20 when

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <deque>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -145,6 +146,8 @@ struct SolverWorker::Impl {
     std::vector<model::CompositeSurface> built;
     std::vector<std::set<model::VertexId>> pulled;
     std::vector<std::set<std::pair<model::EdgeId, int>>> pulledPoints;
+    // Per surface index: the handles' targets of every move of the drag solved so far.
+    std::vector<std::vector<DragMove>> moves;
 
     void dropSessions() {
         sessionKey = 0;
@@ -152,6 +155,7 @@ struct SolverWorker::Impl {
         built.clear();
         pulled.clear();
         pulledPoints.clear();
+        moves.clear();
     }
 };
 
@@ -255,6 +259,7 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
         d.built.resize(count);
         d.pulled.resize(count);
         d.pulledPoints.resize(count);
+        d.moves.resize(count);
     }
     d.sessionKey = request.sessionKey;
 
@@ -288,6 +293,8 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
     }
     const int total = iterations * solvedSurfaces;
     int done = 0;
+    // The overlapping patches judgeDrag found already (an Automatic drag's settling).
+    std::map<std::size_t, std::vector<model::FaceId>> judgedOverlaps;
 
     for (std::size_t s = 0; s < count; ++s) {
         const model::CompositeSurface& snapshot = request.surfaces[s];
@@ -333,19 +340,60 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
             d.built[s] = snapshot;
             d.pulled[s] = vertexSet(handles);
             d.pulledPoints[s] = pointSet(points);
+            d.moves[s].clear();
+        }
+        if (drag) {
+            d.moves[s].push_back({handles, points});
         }
         if (request.settle) {
             session->settle();
         }
-        const Summary summary =
-            session->step(iterations, &d.cancel, [&](const IterationStats& stats) {
-                {
-                    std::lock_guard lock(d.mutex);
-                    d.progressOutbox.push_back(
-                        {request.revision, ++done, total, stats.maxConstraintResidual});
+        auto progress = [&](const IterationStats& stats) {
+            {
+                std::lock_guard lock(d.mutex);
+                d.progressOutbox.push_back(
+                    {request.revision, ++done, std::max(done, total), stats.maxConstraintResidual});
+            }
+            QMetaObject::invokeMethod(this, "deliverResults", Qt::QueuedConnection);
+        };
+        Summary summary = session->step(iterations, &d.cancel, progress);
+        std::optional<DragOutcome> judged;
+        if (drag && request.settle && request.keepLengths && request.stretchIfLengthsFail &&
+            points.empty() && summary.succeeded()) {
+            // Automatic: keeping lengths failed? Then the same drag, stretching.
+            const double residual = summary.iterations.empty()
+                                        ? summary.initialMaxConstraintResidual
+                                        : summary.finalMaxConstraintResidual;
+            const DragOutcome kept = judgeDrag(d.built[s], session->surface(), residual,
+                                               summary.status == Status::StoppedBeforeDegenerate);
+            judged = kept;
+            if (kept.problems() > 0) {
+                ReplayedDrag replay;
+                try {
+                    replay = replayStretching(d.built[s], d.moves[s], kIterationsAfterDrag,
+                                              &d.cancel, progress);
+                } catch (const std::exception& error) {
+                    return fail(surfaceLabel(snapshot, s) + QStringLiteral(" cannot be solved: ") +
+                                QString::fromStdString(error.what()));
                 }
-                QMetaObject::invokeMethod(this, "deliverResults", Qt::QueuedConnection);
-            });
+                if (replay.settling.status == Status::Cancelled) {
+                    summary = replay.settling;
+                } else if (replay.settling.succeeded() && allFinite(replay.session->surface())) {
+                    const Summary& end = replay.settling;
+                    const DragOutcome stretched =
+                        judgeDrag(d.built[s], replay.session->surface(),
+                                  end.iterations.empty() ? end.initialMaxConstraintResidual
+                                                         : end.finalMaxConstraintResidual,
+                                  replay.stopped);
+                    if (prefersStretched(kept, stretched)) {
+                        session = std::move(replay.session);
+                        summary = end;
+                        judged = stretched;
+                        result.stretched.push_back({static_cast<int>(s), kept});
+                    }
+                }
+            }
+        }
         if (summary.status == Status::Cancelled) {
             fail(QStringLiteral("the solve was cancelled"));
             result.cancelled = true;
@@ -374,13 +422,19 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
                 continue;
             }
         }
+        if (judged && judged->measurable) {
+            judgedOverlaps[s] = judged->overlapping;
+        }
         result.surfaces.push_back(session->surface());
         result.summaries.push_back(summary);
     }
     if (!drag || request.settle) {
         result.selfOverlaps.resize(result.surfaces.size());
         for (std::size_t s = 0; s < result.surfaces.size(); ++s) {
-            if (!result.summaries[s].iterations.empty()) {
+            const auto known = judgedOverlaps.find(s);
+            if (known != judgedOverlaps.end()) {
+                result.selfOverlaps[s] = known->second;
+            } else if (!result.summaries[s].iterations.empty()) {
                 result.selfOverlaps[s] = model::selfOverlappingPatches(result.surfaces[s]);
             }
         }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "solver/session/drag_lengths.h"
 #include "solver/session/solve_session.h"
 
 #include <QMetaType>
@@ -23,6 +24,11 @@ struct SolveRequest {
     int iterations = 10;
     // Damp stretching of every strip's control net (kKeepLengthsWeight): the sheet bends.
     bool keepLengths = false;
+    // With keepLengths, a vertex drag's settling request (settle) whose result fails
+    // (judgeDrag) replays the drag from the press letting the sheet stretch, along the moves
+    // this worker solved, and returns whichever ends with fewer problems
+    // (DragLengths::Automatic).
+    bool stretchIfLengthsFail = false;
     // The iterations after a drag's release (SolveSession::settle()).
     bool settle = false;
     // Non-zero: a drag. Requests with the same key reuse the worker's sessions of the previous
@@ -58,6 +64,13 @@ struct SolveResult {
     // the worker's thread, since it costs about a development (50 ms on an annulus of 18,000
     // solver variables); empty for the results of a drag's moves and surfaces not solved.
     std::vector<std::vector<model::FaceId>> selfOverlaps;
+    // The surfaces (indices) of a drag with SolveRequest::stretchIfLengthsFail whose result
+    // is the replay letting the sheet stretch, and what went wrong keeping lengths.
+    struct Stretched {
+        int surface = 0;
+        DragOutcome keepingLengths;
+    };
+    std::vector<Stretched> stretched;
     double elapsedMs = 0.0;
 };
 

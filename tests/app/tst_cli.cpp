@@ -446,7 +446,7 @@ private slots:
         QVERIFY(!QFile::exists(never));
     }
 
-    void dragKeepsLengthsWhereNoCreaseHasACondition() {
+    void dragKeepsLengthsByDefault() {
         // As the desktop application by default: the annulus with its outer rim pinned and an
         // inner vertex lifted 100 mm bends without stretching its rulings. Measured from the
         // vertices: the shortest R-edge keeps 0.98 of its length; with --stretch 0.07.
@@ -492,18 +492,44 @@ private slots:
         QVERIFY(!(io::loadProjectFile(stretched).surfaces[0] == keptSurface));
         QVERIFY(std::abs(keptSurface.position(0).z - 100.0) < 1e-3);
 
-        // fig8's creases have conditions: its drags stretch unless told to keep lengths.
+        // Without --keep-lengths or --stretch (Automatic) a drag that fails keeping lengths is
+        // replayed stretching: fig8 with all four corners pinned cannot keep lengths while its
+        // middle rises 85 mm (the corners keep the flat sheet's distances). The replay is the
+        // --stretch drag, bit for bit.
         const QString fig8 = path("fig8.devsurf");
         QCOMPARE(cli({"example", "fig8", "-o", fig8}).exitCode, 0);
-        const QStringList lift = {"drag",   fig8,      "--vertices", "5",       "--by",
-                                  "0,0,10", "--steps", "2",          "--after", "1"};
-        run = cli(lift + QStringList{"-o", path("fig8-plain.devsurf")});
+        const QStringList lift = {"drag", fig8,     "--vertices", "5,6,9,10",
+                                  "--by", "0,0,85", "--pin",      "0,3,12,15"};
+        const QString automatic = path("fig8-automatic.devsurf");
+        run = cli(lift + QStringList{"-o", automatic});
         QCOMPARE(run.exitCode, 0);
-        QVERIFY2(run.out.contains("dragging 1 vertex in 2 steps"), qPrintable(run.out.left(200)));
+        QVERIFY2(run.out.contains(QRegularExpression(
+                     "dragging 4 vertices keeping lengths in 20 steps, then 20 iterations; 4 "
+                     "pinned\n(.*\n)*Keeping lengths, the drag [^\n]*folded over in \\d+ "
+                     "places?[^\n]*; replaying it letting the sheet stretch\\.\nSurface 1 "
+                     "\\(fig8\\): dragging 4 vertices in 20 steps, then 10 iterations; 4 "
+                     "pinned\n(.*\n)*Letting the sheet stretch, the drag ended without a "
+                     "problem: taken \\(0 problems against [2-5]\\)\\.\n")),
+                 qPrintable(run.out));
+        const QString stretchedFig8 = path("fig8-stretched.devsurf");
+        run = cli(lift + QStringList{"--stretch", "-o", stretchedFig8});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY(!run.out.contains("keeping lengths") && !run.out.contains("replaying"));
+        QVERIFY(io::loadProjectFile(automatic).surfaces[0] ==
+                io::loadProjectFile(stretchedFig8).surfaces[0]);
         run = cli(lift + QStringList{"--keep-lengths", "-o", path("fig8-kept.devsurf")});
         QCOMPARE(run.exitCode, 0);
-        QVERIFY2(run.out.contains("dragging 1 vertex keeping lengths in 2 steps"),
+        QVERIFY2(run.out.contains("dragging 4 vertices keeping lengths in 20 steps") &&
+                     !run.out.contains("replaying"),
                  qPrintable(run.out.left(200)));
+        // fig6 with a free corner lifted 75 mm keeps lengths: nothing replayed.
+        const QString fig6 = path("fig6.devsurf");
+        QCOMPARE(cli({"example", "fig6", "-o", fig6}).exitCode, 0);
+        run = cli({"drag", fig6, "--vertices", "4", "--by", "0,0,75", "-o", automatic});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains("dragging 1 vertex keeping lengths in 20 steps") &&
+                     !run.out.contains("replaying"),
+                 qPrintable(run.out));
 
         // Both at once: bad usage (exit 1), nothing written.
         const QString never = path("never-keep.devsurf");

@@ -43,13 +43,14 @@ private slots:
         const QString flat = path("fig8.devsurf");
         QCOMPARE(test::runCli({"example", "fig8", "-o", flat}).exitCode, 0);
         const QString lifted = path("fig8-lifted.devsurf");
-        QCOMPARE(
-            test::runCli({"drag", flat, "--vertices", "5,6,9,10", "--by", "0,0,85", "-o", lifted})
-                .exitCode,
-            0);
+        QCOMPARE(test::runCli({"drag", flat, "--vertices", "5,6,9,10", "--by", "0,0,85",
+                               "--stretch", "-o", lifted})
+                     .exitCode,
+                 0);
         const QString turned = path("fig8-turned.devsurf");
-        const test::CliRun run = test::runCli({"drag", lifted, "--vertices", "5,6,9,10", "--rotate",
-                                               "150,171.650635094611,85,0,0,1,-30", "-o", turned});
+        const test::CliRun run =
+            test::runCli({"drag", lifted, "--vertices", "5,6,9,10", "--rotate",
+                          "150,171.650635094611,85,0,0,1,-30", "--stretch", "-o", turned});
         QCOMPARE(run.exitCode, 0);
         QVERIFY2(run.out.contains(QRegularExpression(
                      "\\nAt after \\d+: stopped at the last valid state: the next iteration "

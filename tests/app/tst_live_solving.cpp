@@ -426,15 +426,17 @@ private slots:
             QAction* stretch = window.action(QStringLiteral("actionLetStretch"));
             QVERIFY(automatic && keep && stretch);
             QVERIFY(automatic->isChecked() && !keep->isChecked() && !stretch->isChecked());
-            // Automatic: a design with crease conditions stretches, one without keeps lengths.
-            QVERIFY(app::SolveController::keepsLengths(annulus));
-            QVERIFY(!app::SolveController::keepsLengths(fig8));
+            // Automatic: drags keep lengths and are replayed stretching where that fails.
+            QVERIFY(app::SolveController::keepsLengths());
+            QVERIFY(app::SolveController::stretchesWhereLengthsFail());
             keep->trigger();
             QVERIFY(keep->isChecked() && !automatic->isChecked());
             QCOMPARE(app::SolveController::lengthsSetting(), Mode::Keep);
-            QVERIFY(app::SolveController::keepsLengths(fig8));
+            QVERIFY(app::SolveController::keepsLengths());
+            QVERIFY(!app::SolveController::stretchesWhereLengthsFail());
             stretch->trigger();
-            QVERIFY(!app::SolveController::keepsLengths(annulus));
+            QVERIFY(!app::SolveController::keepsLengths());
+            QVERIFY(!app::SolveController::stretchesWhereLengthsFail());
         }
         // A new window shows the choice made.
         app::MainWindow again;
@@ -482,7 +484,7 @@ private slots:
         const QAction* automatic =
             s.window.findChild<QAction*>(QStringLiteral("actionLengthsAutomatic"));
         QVERIFY(automatic && automatic->isChecked());
-        QVERIFY(app::SolveController::keepsLengths(s.doc->surface(0)));
+        QVERIFY(app::SolveController::keepsLengths());
         QVERIFY2(window(s)->solverPanel()->iterationRows() ==
                          app::DragTool::kFinalIterationsKeepingLengths ||
                      report.contains(QStringLiteral("converged")),

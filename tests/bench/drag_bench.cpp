@@ -104,8 +104,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
     const quint64 release = static_cast<quint64>(options.moves) + 1;
     constexpr quint64 kDragKey = 1;
 
-    const bool keepLengths =
-        options.keepLengths.value_or(solver::keepsLengthsByDefault(document.surface(0)));
+    const bool keepLengths = options.keepLengths.value_or(true);
     const int after = options.afterIterations > 0 ? options.afterIterations
                                                   : solver::iterationsAfterDrag(keepLengths);
     auto request = [&](quint64 tag, double t, int iterations, bool settle) {
@@ -116,6 +115,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
         r.sessionKey = kDragKey;
         r.iterations = iterations;
         r.keepLengths = keepLengths;
+        r.stretchIfLengthsFail = !options.keepLengths.has_value();
         r.settle = settle;
         r.surfaces = {document.surface(0)};
         r.pulled[0] = {{dragged, false, from + lift * t}};
@@ -146,6 +146,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
                     (void)face;
                     row.foldOvers += places;
                 }
+                row.replayedStretching = !result.stretched.empty();
                 if (!result.selfOverlaps.empty()) {
                     row.overlappingPatches = static_cast<int>(result.selfOverlaps.front().size());
                 }
@@ -274,11 +275,13 @@ void printDragBench(const DragBenchReport& report, bool json, std::ostream& out)
                           "\"p95_ms\": %.3f, \"applied_per_second\": %.2f, "
                           "\"largest_stall_ms\": %.3f, \"release_ms\": %.3f, "
                           "\"residual_after\": %.3e, \"fold_overs\": %d, "
-                          "\"development_overlap_patches\": %d, \"error\": \"%s\"}",
+                          "\"development_overlap_patches\": %d, \"replayed_stretching\": %s, "
+                          "\"error\": \"%s\"}",
                           i == 0 ? "" : ", ", r.model.c_str(), r.variables, r.moves, r.solved,
                           r.applied, r.firstResultMs, r.medianMs, r.p95Ms, r.appliedPerSecond,
                           r.largestStallMs, r.releaseMs, r.residualAfter, r.foldOvers,
-                          r.overlappingPatches, r.error.c_str());
+                          r.overlappingPatches, r.replayedStretching ? "true" : "false",
+                          r.error.c_str());
             out << line;
         }
         const SolveStallRow& s = report.solve;
@@ -299,10 +302,10 @@ void printDragBench(const DragBenchReport& report, bool json, std::ostream& out)
     for (const DragBenchRow& r : report.drags) {
         std::snprintf(
             line, sizeof line,
-            "%-14s %9d %6d %6d %7d %9.1f %9.1f %9.1f %9.1f %9.1f %10.1f %9.2e %6d %8d%s%s\n",
+            "%-14s %9d %6d %6d %7d %9.1f %9.1f %9.1f %9.1f %9.1f %10.1f %9.2e %6d %8d%s%s%s\n",
             r.model.c_str(), r.variables, r.moves, r.solved, r.applied, r.firstResultMs, r.medianMs,
             r.p95Ms, r.appliedPerSecond, r.largestStallMs, r.releaseMs, r.residualAfter,
-            r.foldOvers, r.overlappingPatches,
+            r.foldOvers, r.overlappingPatches, r.replayedStretching ? "  replayed stretching" : "",
             r.error.empty() ? "" : "  failed: ", r.error.c_str());
         out << line;
     }

@@ -18,7 +18,8 @@ struct DragBenchOptions {
     int moves = 200;
     double moveIntervalMs = 8.0; // mouse events at 125 Hz
     double liftFraction = 0.1;   // the whole drag lifts the vertex by this times the diameter
-    // Unset: as the desktop application's default (solver::keepsLengthsByDefault).
+    // Unset: as the desktop application's default (solver::DragLengths::Automatic: keeping
+    // lengths, replayed stretching where that fails).
     std::optional<bool> keepLengths;
     int afterIterations = 0; // after the release; 0: as the application (20 keeping lengths, 10)
     int solveIterations = 10;
@@ -41,6 +42,8 @@ struct DragBenchRow {
     int foldOvers = 0;           // places where the result folds over onto itself (foldOvers)
     // Patches at which the result's development overlaps itself (SolveResult::selfOverlaps).
     int overlappingPatches = 0;
+    // The release's result is the drag replayed stretching (SolveResult::stretched).
+    bool replayedStretching = false;
     std::string error; // empty unless the drag failed
 };
 

@@ -8,6 +8,7 @@
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
 #include "solver/quality/vertex_stars.h"
+#include "solver/session/drag_lengths.h"
 #include "solver/session/solve_session.h"
 #include "solver_test_problems.h"
 #include "test_registry.h"
@@ -25,25 +26,100 @@ class TstKeepLengths : public QObject {
     Q_OBJECT
 
 private slots:
-    void dragsKeepLengthsByDefaultWhereNoCreaseHasACondition() {
-        for (const char* name : {"sheet", "annulus", "cylinder", "mixed"}) {
-            QVERIFY2(solver::keepsLengthsByDefault(model::makeExample(name).surfaces[0]), name);
+    void judgeCountsEachProblem() {
+        const model::CompositeSurface fig6 = model::makeExample("fig6").surfaces[0];
+        solver::DragOutcome outcome = solver::judgeDrag(fig6, fig6, 1e-12, false);
+        QCOMPARE(outcome.problems(), 0);
+        QCOMPARE(outcome.foldOverPlaces, 0);
+        QVERIFY(outcome.overlapping.empty() && outcome.measurable && !outcome.collapsed());
+        QCOMPARE(outcome.shortestRuling, 1.0);
+        outcome = solver::judgeDrag(fig6, fig6, 10 * solver::kDragConvergedResidual, true);
+        QCOMPARE(outcome.problems(), 2);
+        solver::DragOutcome worse = outcome;
+        worse.foldOverPlaces = 3;
+        QCOMPARE(worse.problems(), 3);
+        worse.shortestRuling = 0.5 * solver::kDragShortestRuling;
+        QVERIFY(worse.collapsed());
+        QCOMPARE(worse.problems(), 4);
+        QVERIFY(solver::prefersStretched(worse, outcome));
+        QVERIFY(!solver::prefersStretched(outcome, outcome)); // a tie keeps lengths
+        // fig6 with a free corner pulled to 1 mm from the corner below it: the ruling between
+        // them keeps 1 % of its length.
+        model::CompositeSurface squeezed = fig6;
+        squeezed.moveVertices({{4, fig6.position(2) + model::Vec3{0.0, 1.0, 0.0}}});
+        const solver::DragOutcome collapsed = solver::judgeDrag(fig6, squeezed, 0.0, false);
+        QVERIFY2(collapsed.collapsed(), qPrintable(QString::number(collapsed.shortestRuling)));
+        QVERIFY(!solver::prefersStretched(outcome, worse));
+    }
+
+    void replayedMovesAreEvenlySpacedAndEndWithTheLast() {
+        QVERIFY(solver::replayedMoves(0).empty());
+        QCOMPARE(solver::replayedMoves(3), (std::vector<std::size_t>{0, 1, 2}));
+        QCOMPARE(solver::replayedMoves(10, 4), (std::vector<std::size_t>{2, 4, 7, 9}));
+        const std::vector<std::size_t> many = solver::replayedMoves(1000);
+        QCOMPARE(many.size(), solver::kReplayedMoves);
+        QCOMPARE(many.back(), std::size_t{999});
+        for (std::size_t i = 1; i < many.size(); ++i) {
+            QVERIFY(many[i] > many[i - 1]);
+            QVERIFY(many[i] - many[i - 1] == 25);
         }
-        for (const char* name : {"fig8", "fig6"}) {
-            QVERIFY2(!solver::keepsLengthsByDefault(model::makeExample(name).surfaces[0]), name);
+    }
+
+    void automaticReplaysStretchingWhereKeepingLengthsFails() {
+        // fig8 with all four corners pinned, its middle lifted 85 mm: the corners keep the
+        // distances of the flat sheet, so the sheet cannot follow without stretching. Keeping
+        // lengths the drag folds over and does not converge; replayed stretching along the
+        // same moves it ends exactly developable and folded. (Measured: kept 1.4e-4, 2 places
+        // folded over, development overlapping at 3 patches; stretched 1e-14, folded 41°.)
+        model::CompositeSurface start = model::makeExample("fig8").surfaces[0];
+        for (model::VertexId v : {0, 3, 12, 15}) {
+            start.setPinned(v, true);
         }
-        model::CompositeSurface fig6 = model::makeExample("fig6").surfaces[0];
-        std::vector<model::EdgeId> conditioned;
-        for (const auto& [id, edge] : fig6.edges()) {
-            if (edge.condition != model::CreaseCondition::None) {
-                conditioned.push_back(id);
-            }
+        const auto lift = [&](model::VertexId v, double t) {
+            return start.position(v) + Vec3(0, 0, 85 * t);
+        };
+        const Dragged kept = dragRecording(start, {5, 6, 9, 10}, lift);
+        const solver::DragOutcome keptOutcome =
+            solver::judgeDrag(start, kept.surface, kept.residual, kept.stopped);
+        QVERIFY2(keptOutcome.problems() > 0, qPrintable(QString::number(kept.residual)));
+        const solver::ReplayedDrag replay = solver::replayStretching(start, kept.moves, 10);
+        QVERIFY(replay.session && replay.settling.succeeded() && !replay.stopped);
+        QCOMPARE(replay.iterations, 30);
+        const model::CompositeSurface& stretched = replay.session->surface();
+        const solver::DragOutcome outcome = solver::judgeDrag(
+            start, stretched, replay.settling.finalMaxConstraintResidual, replay.stopped);
+        QCOMPARE(outcome.problems(), 0);
+        QVERIFY(solver::prefersStretched(keptOutcome, outcome));
+        // From the geometry: developable, the creases' conditions held, folded; the handles
+        // reached and the pins kept.
+        const double det = solver::measureQuality(stretched).developabilityMax;
+        QVERIFY2(det < 1e-8, qPrintable(QString::number(det)));
+        const solver::CreaseQuality creases = solver::measureCreaseQuality(stretched);
+        QVERIFY2(creases.residualMax < 1e-8, qPrintable(QString::number(creases.residualMax)));
+        QVERIFY2(creases.meanFoldDegrees > 10.0,
+                 qPrintable(QString::number(creases.meanFoldDegrees)));
+        for (model::VertexId v : {5, 6, 9, 10}) {
+            QVERIFY((stretched.position(v) - lift(v, 1.0)).norm() < 1e-6);
         }
-        QVERIFY(!conditioned.empty());
-        for (model::EdgeId id : conditioned) {
-            fig6.setCreaseCondition(id, model::CreaseCondition::None);
+        for (model::VertexId v : {0, 3, 12, 15}) {
+            QVERIFY((stretched.position(v) - start.position(v)).norm() == 0.0);
         }
-        QVERIFY(solver::keepsLengthsByDefault(fig6));
+    }
+
+    void automaticKeepsLengthsWhereTheyHold() {
+        // fig6 with a free corner lifted 75 mm keeping lengths: no problem, so Automatic keeps
+        // the result with its crease still bowed (stretching pulls it straight or collapses
+        // rulings; measured: rulings at 0.07 of their length and a face folded over).
+        const model::CompositeSurface start = model::makeExample("fig6").surfaces[0];
+        const Dragged kept = dragRecording(start, {4}, [&](model::VertexId v, double t) {
+            return start.position(v) + Vec3(0, 0, 75 * t);
+        });
+        const solver::DragOutcome outcome =
+            solver::judgeDrag(start, kept.surface, kept.residual, kept.stopped);
+        QVERIFY2(outcome.problems() == 0, qPrintable(QString::number(kept.residual)));
+        QVERIFY2(bow(kept.surface) > 0.9 * bow(start),
+                 qPrintable(QString("bow %1 of %2 mm").arg(bow(kept.surface)).arg(bow(start))));
+        QVERIFY(solver::measureShapeChange(start, kept.surface).shortestRuling > 0.9);
     }
 
     void aValidDesignStaysPut() {
@@ -203,6 +279,42 @@ private:
         }
         session.settle();
         return session.step(after).succeeded() ? session.surface() : start;
+    }
+
+    // A drag keeping lengths as the desktop application's worker runs it (20 moves, then 20
+    // iterations), with the moves recorded for a replay.
+    struct Dragged {
+        model::CompositeSurface surface;
+        double residual = 1.0;
+        bool stopped = false;
+        std::vector<solver::DragMove> moves;
+    };
+    template <class Target>
+    static Dragged dragRecording(const model::CompositeSurface& start,
+                                 const std::vector<model::VertexId>& dragged,
+                                 const Target& target) {
+        Dragged result{start, 1.0, false, {}};
+        std::vector<solver::VertexHandle> pulled;
+        for (model::VertexId v : dragged) {
+            pulled.push_back({v, false, start.position(v)});
+        }
+        solver::SolveSession session(start, pulled, options());
+        solver::Summary summary;
+        for (int k = 1; k <= 20; ++k) {
+            solver::DragMove move;
+            for (model::VertexId v : dragged) {
+                move.vertices.push_back({v, false, target(v, k / 20.0)});
+                session.setHandleTarget(v, move.vertices.back().target);
+            }
+            result.moves.push_back(move);
+            summary = session.step(1);
+        }
+        session.settle();
+        summary = session.step(solver::kIterationsAfterDragKeepingLengths);
+        result.surface = session.surface();
+        result.residual = summary.finalMaxConstraintResidual;
+        result.stopped = summary.status == solver::Status::StoppedBeforeDegenerate;
+        return result;
     }
 
     // Every crease's largest distance of a control point from the chord of its ends.

@@ -208,6 +208,72 @@ private slots:
                  qPrintable(QString::number(result.summaries.front().finalMaxConstraintResidual)));
     }
 
+    void automaticDragIsReplayedStretchingWhereKeepingLengthsFails() {
+        // Tools ▸ Lengths While Dragging ▸ Automatic: a drag keeping lengths whose settled
+        // result fails (judgeDrag) is replayed from the press stretching, along the moves the
+        // worker solved, and the better of the two is returned. fig8 with all four corners
+        // pinned and its middle lifted 85 mm cannot keep lengths (it folds over); fig6 with a
+        // free corner lifted 75 mm can.
+        auto dragThroughWorker = [](const model::CompositeSurface& start,
+                                    const std::vector<model::VertexId>& dragged, double lift,
+                                    std::vector<DragMove>* moves) {
+            SolverWorker worker;
+            QSignalSpy finished(&worker, &SolverWorker::finished);
+            SolveRequest request;
+            request.sessionKey = 3;
+            request.keepLengths = true;
+            request.stretchIfLengthsFail = true;
+            request.surfaces = {start};
+            for (int k = 1; k <= 21; ++k) {
+                const bool release = k == 21;
+                DragMove move;
+                for (model::VertexId v : dragged) {
+                    const double t = std::min(20, k) / 20.0;
+                    move.vertices.push_back(
+                        {v, false, start.position(v) + model::Vec3{0.0, 0.0, lift * t}});
+                }
+                request.pulled[0] = move.vertices;
+                request.iterations = release ? kIterationsAfterDragKeepingLengths : 1;
+                request.settle = release;
+                request.revision = static_cast<quint64>(k);
+                worker.submit(request);
+                if (!waitForResults(finished, k)) {
+                    return SolveResult{};
+                }
+                moves->push_back(move);
+            }
+            return resultAt(finished, 20);
+        };
+
+        model::CompositeSurface fig8 = model::makeExample("fig8").surfaces.front();
+        for (model::VertexId v : {0, 3, 12, 15}) {
+            fig8.setPinned(v, true);
+        }
+        std::vector<DragMove> moves;
+        SolveResult result = dragThroughWorker(fig8, {5, 6, 9, 10}, 85.0, &moves);
+        QVERIFY2(result.ok, qPrintable(result.error));
+        QCOMPARE(result.stretched.size(), std::size_t(1));
+        QCOMPARE(result.stretched.front().surface, 0);
+        QVERIFY(result.stretched.front().keepingLengths.problems() > 0);
+        // The replay of the moves as solved (none coalesced here), bit for bit.
+        const ReplayedDrag replay = replayStretching(fig8, moves, kIterationsAfterDrag);
+        QVERIFY(result.surfaces.front() == replay.session->surface());
+        QVERIFY2(result.summaries.front().finalMaxConstraintResidual < 1e-8,
+                 qPrintable(QString::number(result.summaries.front().finalMaxConstraintResidual)));
+        QCOMPARE(result.selfOverlaps.size(), std::size_t(1));
+        QVERIFY(result.selfOverlaps.front().empty());
+        const double det = measureQuality(result.surfaces.front()).developabilityMax;
+        QVERIFY2(det < 1e-8, qPrintable(QString::number(det)));
+
+        moves.clear();
+        const model::CompositeSurface fig6 = model::makeExample("fig6").surfaces.front();
+        result = dragThroughWorker(fig6, {4}, 75.0, &moves);
+        QVERIFY2(result.ok, qPrintable(result.error));
+        QVERIFY(result.stretched.empty());
+        QVERIFY2(result.summaries.front().finalMaxConstraintResidual < 1e-8,
+                 qPrintable(QString::number(result.summaries.front().finalMaxConstraintResidual)));
+    }
+
     void dragStopsBeforeADegenerateSurface() {
         // fig8 lifted 85 mm (stretching, its two corners pinned), then its four middle
         // vertices turned by −30° about the vertical through their centre in 20 moves: in the
