@@ -514,6 +514,9 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
             stepSquared += d.step[k] * d.step[k];
         }
         stats.stepNorm = std::sqrt(stepSquared);
+        if (options.project) {
+            options.project(d.xNew.data());
+        }
         evaluationStart = Clock::now();
         const double meritBefore = d.equations.constraintMerit();
         const bool finite = allFinite(d.xNew) && d.equations.evaluate(problem, d.xNew.data());

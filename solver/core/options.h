@@ -166,6 +166,12 @@ struct Options {
     // Called after every iteration (on the solving thread).
     std::function<void(const IterationStats&)> progress;
 
+    // Called on every new iterate before its residuals are evaluated: moves auxiliary
+    // variables onto constraints they satisfy exactly after a scaling (SolveSession normalises
+    // the unit normals of planar faces and cones, SurfaceFormulation::normaliseUnitNormals).
+    // Unset: nothing.
+    std::function<void(double* x)> project;
+
     // Record per-iteration statistics in Summary::iterations.
     bool recordIterations = true;
 };

@@ -274,6 +274,14 @@ public:
     int pointCount() const { return m_pointCount; }
     double scale() const { return m_scale; }
 
+    // Scales the unit normals of planar faces and cones and the osculating normals of
+    // "straight when unfolded" to unit length at x. Every other row of those normals is
+    // homogeneous in them, so this satisfies the unit rows exactly and leaves the others'
+    // zeros; the step's second-order error in the unit rows (|δn|²) is gone. (The strips'
+    // normal splines are left alone: their rows mix both sides of a crease, and normalised
+    // they made rough starts worse, the sheet from 10 % edge noise 4e-16 → 8e-6.)
+    void normaliseUnitNormals(double* x) const;
+
 private:
     struct Builder;
     int pointOffset(int point) const { return m_pointsOffset + 3 * point; }

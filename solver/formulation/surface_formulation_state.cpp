@@ -42,6 +42,25 @@ void useRoughStartConfiguration(FormulationOptions& formulation, Options& solver
     solver.eps2Minimum = 3e-4;
 }
 
+void SurfaceFormulation::normaliseUnitNormals(double* x) const {
+    // Every 3-block of these variable blocks is one unit normal (a row of "unitNormals").
+    for (const char* name : {"coneNormals", "planeNormals", "osculatingNormals"}) {
+        if (!m_problem.hasBlock(name)) {
+            continue;
+        }
+        const VariableBlock& block = m_problem.block(name);
+        for (int offset = block.offset; offset + 3 <= block.offset + block.size; offset += 3) {
+            double* n = x + offset;
+            const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            if (length > 0.0 && std::isfinite(length)) {
+                for (int k = 0; k < 3; ++k) {
+                    n[k] /= length;
+                }
+            }
+        }
+    }
+}
+
 bool SurfaceFormulation::setHandleTarget(VertexId vertex, const Vec3& target) {
     auto it = m_handleRow.find(vertex);
     if (it == m_handleRow.end() || !m_handleTerm) {
