@@ -197,43 +197,6 @@ private slots:
                              [](const IterationStats& it) { return it.repeated; }));
     }
 
-    void projectRunsOnEveryIterateBeforeItsResiduals() {
-        // One unit vector: Gauss–Newton leaves |δ|² in its unit row after every step; a
-        // projection onto the sphere removes it before the residual is evaluated.
-        auto solve = [](bool normalise, int* calls) {
-            Problem p;
-            p.addVariableBlock("n", 3);
-            auto unit = std::make_unique<UnitNormTerm>(3);
-            unit->addVector(0);
-            p.add(p.addFamily("unit", TermRole::Constraint), std::move(unit));
-            std::vector<double> x{0.5, 0.2, 0.1};
-            Options options;
-            options.maxIterations = 3;
-            if (normalise) {
-                options.project = [calls](double* v) {
-                    ++*calls;
-                    const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-                    for (int k = 0; k < 3; ++k) {
-                        v[k] /= length;
-                    }
-                };
-            }
-            GuidedProjection solver;
-            return solver.solve(p, x, options);
-        };
-        int calls = 0;
-        const Summary plain = solve(false, &calls);
-        QVERIFY(plain.iterations.front().maxConstraintResidual > 1e-3);
-        const Summary projected = solve(true, &calls);
-        QCOMPARE(calls, 3);
-        QCOMPARE(projected.iterationsCompleted, 3);
-        for (const IterationStats& it : projected.iterations) {
-            QVERIFY2(it.maxConstraintResidual < 1e-15,
-                     qPrintable(QString::number(it.maxConstraintResidual)));
-        }
-        QVERIFY(projected.finalMaxConstraintResidual < 1e-15);
-    }
-
     void circleConverges_data() {
         QTest::addColumn<int>("method");
         QTest::newRow("supernodal") << static_cast<int>(FactorizationMethod::Supernodal);

@@ -1,5 +1,6 @@
 // Rough starts: the proximity to the start (TermRole::Proximity, Options::proximityFactor), its
-// Jacobians and weighting, and a start of the benchmark's 1 % annulus that degenerated before.
+// Jacobians and weighting, unit normals projected back after every step (Options::project), and
+// starts of the benchmark that degenerated or alternated before.
 #include "model/examples.h"
 #include "solver/core/guided_projection.h"
 #include "solver/core/normal_equations.h"
@@ -163,6 +164,43 @@ private slots:
             const double move = largestMove(surface, out) / surfaceDiameter(surface);
             QVERIFY2(move <= 1e-6, qPrintable(QString("%1 moved %2").arg(name).arg(move)));
         }
+    }
+
+    void projectRunsOnEveryIterateBeforeItsResiduals() {
+        // One unit vector: Gauss–Newton leaves |δ|² in its unit row after every step; a
+        // projection onto the sphere removes it before the residual is evaluated.
+        auto solve = [](bool normalise, int* calls) {
+            Problem p;
+            p.addVariableBlock("n", 3);
+            auto unit = std::make_unique<UnitNormTerm>(3);
+            unit->addVector(0);
+            p.add(p.addFamily("unit", TermRole::Constraint), std::move(unit));
+            std::vector<double> x{0.5, 0.2, 0.1};
+            Options options;
+            options.maxIterations = 3;
+            if (normalise) {
+                options.project = [calls](double* v) {
+                    ++*calls;
+                    const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+                    for (int k = 0; k < 3; ++k) {
+                        v[k] /= length;
+                    }
+                };
+            }
+            GuidedProjection solver;
+            return solver.solve(p, x, options);
+        };
+        int calls = 0;
+        const Summary plain = solve(false, &calls);
+        QVERIFY(plain.iterations.front().maxConstraintResidual > 1e-3);
+        const Summary projected = solve(true, &calls);
+        QCOMPARE(calls, 3);
+        QCOMPARE(projected.iterationsCompleted, 3);
+        for (const IterationStats& it : projected.iterations) {
+            QVERIFY2(it.maxConstraintResidual < 1e-15,
+                     qPrintable(QString::number(it.maxConstraintResidual)));
+        }
+        QVERIFY(projected.finalMaxConstraintResidual < 1e-15);
     }
 
     void unitNormalsAreNormalisedInPlace() {
