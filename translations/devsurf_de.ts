@@ -653,7 +653,7 @@
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="458"/>
+        <location filename="../app/gui/drag_tool.cpp" line="459"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1184,8 +1184,8 @@
     </message>
     <message>
         <location filename="../app/gui/main_window_solver.cpp" line="150"/>
-        <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
-        <translation>Das Ziehen und Drehen von Ecken behält die Längen bei. Wo das Blatt so nicht folgen kann (das Ziehen konvergiert nicht, faltet sich zurück oder seine Abwicklung überlappt sich selbst), wird es beim Loslassen mit Dehnen des Blatts wiederholt, und das bessere der beiden Ergebnisse bleibt; das Löser-Fenster sagt es.</translation>
+        <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over, collapses a strip or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
+        <translation>Das Ziehen und Drehen von Ecken behält die Längen bei. Wo das Blatt so nicht folgen kann (das Ziehen konvergiert nicht, faltet sich zurück, lässt einen Streifen zusammenfallen oder seine Abwicklung überlappt sich selbst), wird es beim Loslassen mit Dehnen des Blatts wiederholt, und das bessere der beiden Ergebnisse bleibt; das Löser-Fenster sagt es.</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_solver.cpp" line="154"/>

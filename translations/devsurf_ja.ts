@@ -639,7 +639,7 @@
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="458"/>
+        <location filename="../app/gui/drag_tool.cpp" line="459"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1165,8 +1165,8 @@
     </message>
     <message>
         <location filename="../app/gui/main_window_solver.cpp" line="150"/>
-        <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
-        <translation>頂点のドラッグと回転は長さを保ちます。シートがそのままでは追従できない場合 (ドラッグが収束しない、折り返す、または展開図が自身と重なる場合)、離したときにシートの伸びを許してドラッグをやり直し、二つのうち良い方を残します。ソルバーパネルにその旨が表示されます。</translation>
+        <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over, collapses a strip or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
+        <translation>頂点のドラッグと回転は長さを保ちます。シートがそのままでは追従できない場合 (ドラッグが収束しない、折り返す、帯がつぶれる、または展開図が自身と重なる場合)、離したときにシートの伸びを許してドラッグをやり直し、二つのうち良い方を残します。ソルバーパネルにその旨が表示されます。</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_solver.cpp" line="154"/>

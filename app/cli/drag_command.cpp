@@ -429,15 +429,11 @@ int runDragCommand(const std::vector<std::string>& positional,
             going = runIteration("after", k, after);
         }
     };
-    auto residualOf = [&] {
-        return last.iterations.empty() ? last.initialMaxConstraintResidual
-                                       : last.finalMaxConstraintResidual;
-    };
 
     runDrag(lengths != solver::DragLengths::Stretch);
     if (lengths == solver::DragLengths::Automatic) {
-        const solver::DragOutcome kept =
-            solver::judgeDrag(surface, session->surface(), residualOf(), stopped);
+        const solver::DragOutcome kept = solver::judgeDrag(
+            surface, session->surface(), last.finalMaxConstraintResidual, stopped);
         if (kept.problems() > 0) {
             std::unique_ptr<solver::SolveSession> keptSession = std::move(session);
             const solver::Summary keptLast = last;
@@ -445,8 +441,8 @@ int runDragCommand(const std::vector<std::string>& positional,
             std::cout << "Keeping lengths, the drag " << describeOutcome(kept)
                       << "; replaying it letting the sheet stretch.\n";
             runDrag(false);
-            const solver::DragOutcome stretched =
-                solver::judgeDrag(surface, session->surface(), residualOf(), stopped);
+            const solver::DragOutcome stretched = solver::judgeDrag(
+                surface, session->surface(), last.finalMaxConstraintResidual, stopped);
             const int before = kept.problems();
             const int now = stretched.problems();
             std::cout << "Letting the sheet stretch, the drag " << describeOutcome(stretched)

@@ -148,9 +148,9 @@ void MainWindow::createLengthsActions(QMenu* tools) {
     const Entry entries[] = {
         {"actionLengthsAutomatic", Mode::Automatic, tr("&Automatic"),
          tr("Vertex drags and rotations keep lengths. Where the sheet cannot follow that way "
-            "(the drag does not converge, folds over or its development overlaps itself), the "
-            "drag is replayed on release letting the sheet stretch, and the better of the two "
-            "is kept; the Solver panel says so.")},
+            "(the drag does not converge, folds over, collapses a strip or its development "
+            "overlaps itself), the drag is replayed on release letting the sheet stretch, and "
+            "the better of the two is kept; the Solver panel says so.")},
         {"actionKeepLengths", Mode::Keep, tr("&Keep Lengths"),
          tr("While dragging or rotating vertices, the sheet bends instead of stretching: far "
             "parts stay in place and curved creases keep their shape and fold. A motion the "

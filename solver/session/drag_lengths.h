@@ -20,8 +20,8 @@ namespace devsurf::solver {
 // iterations keeping lengths or 10 stretching):
 // - Keeping lengths folds curved creases where stretching pulls them straight or collapses
 //   rulings: fig6 with a free corner lifted 75 mm folds 11° … 13° along its bowed crease
-//   (1e-11; stretching: 10°, rulings at 0.07 of their length, a face folded over), with the
-//   middle of its free edge lifted 66° (stretching 38° along a straight crease); fig8 with
+//   (1e-11; stretching: 10°, rulings at 0.07 of their length, a face folded over), and 66°
+//   with the middle of its free edge lifted (stretching 38° along a straight crease); fig8 with
 //   its bottom corners pinned and its middle lifted 85 mm folds 46° along curved creases
 //   (2e-8; stretching 17.5° along straight ones). Without conditions, the annulus with its
 //   outer rim pinned and an inner vertex lifted 100 mm ends at 5e-15 with rulings at 0.98 of

@@ -361,11 +361,10 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
         if (drag && request.settle && request.keepLengths && request.stretchIfLengthsFail &&
             points.empty() && summary.succeeded()) {
             // Automatic: keeping lengths failed? Then the same drag, stretching.
-            const double residual = summary.iterations.empty()
-                                        ? summary.initialMaxConstraintResidual
-                                        : summary.finalMaxConstraintResidual;
-            const DragOutcome kept = judgeDrag(d.built[s], session->surface(), residual,
-                                               summary.status == Status::StoppedBeforeDegenerate);
+            // (finalMaxConstraintResidual is the start's when no iteration completed.)
+            const DragOutcome kept =
+                judgeDrag(d.built[s], session->surface(), summary.finalMaxConstraintResidual,
+                          summary.status == Status::StoppedBeforeDegenerate);
             judged = kept;
             if (kept.problems() > 0) {
                 ReplayedDrag replay;
@@ -382,9 +381,7 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
                     const Summary& end = replay.settling;
                     const DragOutcome stretched =
                         judgeDrag(d.built[s], replay.session->surface(),
-                                  end.iterations.empty() ? end.initialMaxConstraintResidual
-                                                         : end.finalMaxConstraintResidual,
-                                  replay.stopped);
+                                  end.finalMaxConstraintResidual, replay.stopped);
                     if (prefersStretched(kept, stretched)) {
                         session = std::move(replay.session);
                         summary = end;

@@ -404,9 +404,8 @@ private slots:
                 pinnedNow.z == pinnedAt.z);
         const QString report = window(s)->solverPanel()->statusText();
         QVERIFY(report.contains(QStringLiteral("Drag 2")));
-        // The report is the one of the iterations after the release: 20, since a drag of a
-        // design without crease conditions keeps lengths by default (Tools ▸ Lengths While
-        // Dragging ▸ Automatic).
+        // The report is the one of the iterations after the release: 20, since a vertex drag
+        // keeps lengths by default (Tools ▸ Lengths While Dragging ▸ Automatic).
         const QAction* automatic =
             s.window.findChild<QAction*>(QStringLiteral("actionLengthsAutomatic"));
         QVERIFY(automatic && automatic->isChecked());
