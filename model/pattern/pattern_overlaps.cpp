@@ -98,6 +98,78 @@ bool insidePiece(const Vec2& p, const PatternPiece& piece) {
                         [&p](const std::vector<Vec2>& hole) { return pointInPolygon(p, hole); });
 }
 
+// Mesh faces lying on top of other faces of the same piece: a face's centroid inside another
+// face, farther than `margin` from its edges. The outline of a development that winds round
+// more than once and lands exactly on itself (a band wound one and a half times, developed
+// into a ring whose second half covers the first) runs along itself without crossing, which
+// the sweep above cannot tell from a seam that closes up. Faces are binned in a grid of about
+// their mean size, so each centroid meets only the faces near it. Appends the patches of both
+// faces of every such pair to `faces`.
+bool stackedFaces(const PatternPiece::Mesh& mesh, double margin, std::vector<FaceId>& faces) {
+    const std::size_t count = mesh.faces.size();
+    if (count < 2) {
+        return false;
+    }
+    std::vector<std::vector<Vec2>> polygons(count);
+    std::vector<Vec2> centroids(count);
+    Vec2 lo = mesh.vertices.front();
+    Vec2 hi = lo;
+    double extent = 0.0;
+    for (std::size_t f = 0; f < count; ++f) {
+        Vec2 faceLo{1e300, 1e300};
+        Vec2 faceHi{-1e300, -1e300};
+        for (int v : mesh.faces[f]) {
+            const Vec2& p = mesh.vertices[static_cast<std::size_t>(v)];
+            polygons[f].push_back(p);
+            centroids[f] = centroids[f] + p * (1.0 / static_cast<double>(mesh.faces[f].size()));
+            faceLo = {std::min(faceLo.x, p.x), std::min(faceLo.y, p.y)};
+            faceHi = {std::max(faceHi.x, p.x), std::max(faceHi.y, p.y)};
+        }
+        lo = {std::min(lo.x, faceLo.x), std::min(lo.y, faceLo.y)};
+        hi = {std::max(hi.x, faceHi.x), std::max(hi.y, faceHi.y)};
+        extent += std::max(faceHi.x - faceLo.x, faceHi.y - faceLo.y);
+    }
+    const double cell = std::max(extent / static_cast<double>(count), 1e-9);
+    const auto column = [&](double x) { return static_cast<long long>((x - lo.x) / cell); };
+    const auto row = [&](double y) { return static_cast<long long>((y - lo.y) / cell); };
+    std::map<std::pair<long long, long long>, std::vector<std::size_t>> grid;
+    for (std::size_t f = 0; f < count; ++f) {
+        Vec2 faceLo = polygons[f].front();
+        Vec2 faceHi = faceLo;
+        for (const Vec2& p : polygons[f]) {
+            faceLo = {std::min(faceLo.x, p.x), std::min(faceLo.y, p.y)};
+            faceHi = {std::max(faceHi.x, p.x), std::max(faceHi.y, p.y)};
+        }
+        for (long long i = column(faceLo.x); i <= column(faceHi.x); ++i) {
+            for (long long j = row(faceLo.y); j <= row(faceHi.y); ++j) {
+                grid[{i, j}].push_back(f);
+            }
+        }
+    }
+    bool found = false;
+    for (std::size_t f = 0; f < count && faces.size() < 64; ++f) {
+        const Vec2& c = centroids[f];
+        for (std::size_t g : grid[{column(c.x), row(c.y)}]) {
+            if (g == f || !pointInPolygon(c, polygons[g])) {
+                continue;
+            }
+            const std::vector<Vec2>& polygon = polygons[g];
+            double clearance = 1e300;
+            for (std::size_t k = 0; k < polygon.size(); ++k) {
+                clearance = std::min(
+                    clearance, distanceToSegment(c, polygon[k], polygon[(k + 1) % polygon.size()]));
+            }
+            if (clearance > margin) {
+                found = true;
+                faces.push_back(mesh.faceOrigin[f]);
+                faces.push_back(mesh.faceOrigin[g]);
+                break;
+            }
+        }
+    }
+    return found;
+}
+
 } // namespace
 
 bool selfOverlaps(const PatternPiece& piece, std::vector<FaceId>& faces) {
@@ -139,6 +211,9 @@ bool selfOverlaps(const PatternPiece& piece, std::vector<FaceId>& faces) {
             record(t);
             return faces.size() < 64; // enough to name the patches
         });
+    }
+    if (!found) {
+        found = stackedFaces(piece.mesh, kNegligibleOverlap * size, faces);
     }
     std::sort(faces.begin(), faces.end());
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());

@@ -9,8 +9,9 @@
 
 namespace devsurf::model::pattern {
 
-// Whether the piece's cut loops (outline and holes) cross themselves or each other. faces
-// receives the patches of the mesh faces at the crossing segments.
+// Whether the piece's cut loops (outline and holes) cross themselves or each other, or a face
+// of its mesh lies on top of another. faces receives the patches of the mesh faces at the
+// crossing segments (or of the faces on top of each other).
 bool selfOverlaps(const PatternPiece& piece, std::vector<FaceId>& faces);
 
 // Whether two pieces' areas overlap: their loops cross, or one lies inside the other.

@@ -64,6 +64,30 @@ double spatialArea(const CompositeSurface& surface) {
 // A flat ring of 8 strips between radii 100 and 160 mm that winds once round and by `excess`
 // radians more, open where its two ends meet: its development (the ring itself) overlaps at
 // the ends by that wedge.
+// 18 flat trapezoids between the circles of radius 100 and 160, 30° each, winding 540° round
+// in the plane z = 0.
+CompositeSurface stackedBand() {
+    const SplineSpace space{3, 2, 1};
+    CompositeSurface s;
+    std::vector<VertexId> inner;
+    std::vector<VertexId> outer;
+    for (int i = 0; i <= 18; ++i) {
+        const double phi = kPi * i / 6.0;
+        inner.push_back(s.addVertex({100.0 * std::cos(phi), 100.0 * std::sin(phi), 0.0}));
+        outer.push_back(s.addVertex({160.0 * std::cos(phi), 160.0 * std::sin(phi), 0.0}));
+    }
+    for (int i = 0; i < 18; ++i) {
+        s.addFace({inner[i], outer[i], outer[i + 1], inner[i + 1]});
+        for (const std::vector<VertexId>* chain : {&inner, &outer}) {
+            const VertexId a = (*chain)[i];
+            const VertexId b = (*chain)[i + 1];
+            s.setSpline(a, b, space,
+                        devsurf::test::straightControlPoints(space, s.position(a), s.position(b)));
+        }
+    }
+    return s;
+}
+
 CompositeSurface ringWinding(double excess) {
     const int steps = 8;
     const SplineSpace space{3, 2, 2};
@@ -348,6 +372,12 @@ private slots:
         QVERIFY(selfOverlappingPatches(ringWinding(1e-5)).empty());
         QVERIFY(!selfOverlappingPatches(ringWinding(0.05)).empty());
         QVERIFY(selfOverlappingPatches(ringWinding(-0.05)).empty());
+        // A band of 18 flat trapezoids wound one and a half times round in the plane: its
+        // second half lies exactly on its first (vertex on vertex, edge on edge), so the outline
+        // runs along itself without crossing, but the patches stacked there are named.
+        const std::vector<FaceId> stacked = selfOverlappingPatches(stackedBand());
+        QVERIFY(!stacked.empty());
+        QVERIFY(stacked.size() <= 12);
         QCOMPARE(describeSelfOverlap({}), std::string("The development does not overlap itself."));
     }
 
