@@ -123,7 +123,8 @@ struct GuidedProjection::Impl {
     // the factorised Jacobian.
     bool reusedStep(const Problem& problem, double eps1, IterationStats& stats, Summary& summary) {
         const auto start = Clock::now();
-        equations.fillRightHandSide(problem, eps1, stats.proximity, factorJacobian, rhs.data());
+        equations.fillRightHandSide(problem, eps1, stats.proximity, stats.eps2, factorJacobian,
+                                    rhs.data());
         stats.assemblyMs += elapsedMs(start);
         if (!solveForStep(stats, summary)) {
             return false;

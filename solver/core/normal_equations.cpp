@@ -13,13 +13,15 @@ namespace devsurf::solver {
 
 namespace {
 
-double termWeight(const Problem& problem, int term, double eps1, double proximity) {
+double termWeight(const Problem& problem, int term, double eps1, double proximity, double eps2) {
     const TermFamily& family = problem.family(problem.termFamily(term));
     switch (family.role) {
     case TermRole::Energy:
         return family.weight * eps1;
     case TermRole::Proximity:
         return family.weight * proximity;
+    case TermRole::Damping:
+        return family.weight * eps2;
     case TermRole::Constraint:
         break;
     }
@@ -366,10 +368,10 @@ bool NormalEquations::evaluate(const Problem& problem, const double* x) {
 }
 
 void NormalEquations::rowWeights(const Problem& problem, double eps1, std::vector<double>& weights,
-                                 double proximity) const {
+                                 double proximity, double eps2) const {
     weights.resize(static_cast<std::size_t>(m_rows));
     for (int t = 0; t < problem.termCount(); ++t) {
-        const double w = termWeight(problem, t, eps1, proximity);
+        const double w = termWeight(problem, t, eps1, proximity, eps2);
         std::fill(weights.begin() + m_termRowStart[t],
                   weights.begin() + m_termRowStart[static_cast<std::size_t>(t) + 1], w);
     }
@@ -390,7 +392,7 @@ void NormalEquations::fill(const Problem& problem, double eps1, double eps2, dou
     std::size_t p = 0;
     std::size_t nextGroup = 0;
     for (int t = 0; t < problem.termCount(); ++t) {
-        const double w = termWeight(problem, t, eps1, proximity);
+        const double w = termWeight(problem, t, eps1, proximity, eps2);
         const double w2 = w * w;
         const int rowEnd = m_termRowStart[static_cast<std::size_t>(t) + 1];
         int r = m_termRowStart[t];
@@ -441,10 +443,11 @@ void NormalEquations::fill(const Problem& problem, double eps1, double eps2, dou
 }
 
 void NormalEquations::fillRightHandSide(const Problem& problem, double eps1, double proximity,
-                                        const std::vector<double>& jacobian, double* rhs) const {
+                                        double eps2, const std::vector<double>& jacobian,
+                                        double* rhs) const {
     std::fill(rhs, rhs + m_variables, 0.0);
     for (int t = 0; t < problem.termCount(); ++t) {
-        const double w = termWeight(problem, t, eps1, proximity);
+        const double w = termWeight(problem, t, eps1, proximity, eps2);
         const double w2 = w * w;
         if (w2 == 0.0) {
             continue;
@@ -460,11 +463,11 @@ void NormalEquations::fillRightHandSide(const Problem& problem, double eps1, dou
 }
 
 Eigen::SparseMatrix<double> NormalEquations::weightedJacobian(const Problem& problem, double eps1,
-                                                              double proximity) const {
+                                                              double proximity, double eps2) const {
     std::vector<Eigen::Triplet<double>> triplets;
     triplets.reserve(m_jacColumn.size());
     for (int t = 0; t < problem.termCount(); ++t) {
-        const double w = termWeight(problem, t, eps1, proximity);
+        const double w = termWeight(problem, t, eps1, proximity, eps2);
         for (int r = m_termRowStart[t]; r < m_termRowStart[static_cast<std::size_t>(t) + 1]; ++r) {
             for (int e = m_jacRowStart[r]; e < m_jacRowStart[r + 1]; ++e) {
                 const int c = m_jacColumn[static_cast<std::size_t>(e)];
@@ -482,9 +485,9 @@ Eigen::SparseMatrix<double> NormalEquations::weightedJacobian(const Problem& pro
 void NormalEquations::assembleFromScratch(const Problem& problem, double eps1, double eps2,
                                           Eigen::SparseMatrix<double>& upper, Eigen::VectorXd& rhs,
                                           double proximity) const {
-    const Eigen::SparseMatrix<double> h = weightedJacobian(problem, eps1, proximity);
+    const Eigen::SparseMatrix<double> h = weightedJacobian(problem, eps1, proximity, eps2);
     std::vector<double> weights;
-    rowWeights(problem, eps1, weights, proximity);
+    rowWeights(problem, eps1, weights, proximity, eps2);
     Eigen::VectorXd weightedResidual(m_rows);
     for (int r = 0; r < m_rows; ++r) {
         weightedResidual[r] =

@@ -56,14 +56,15 @@ public:
 
     // Refills the stored triangle of N (current layout) and g (original order) in place from
     // the last evaluate(). Allocation-free.
-    // `proximity` is μ, the multiplier of the proximity families' weights.
+    // `proximity` is μ, the multiplier of the proximity families' weights; `eps2` multiplies
+    // the damping families' weights too.
     void fill(const Problem& problem, double eps1, double eps2, double* values, double* rhs,
               double proximity = 0.0);
 
     // g alone (original order) from the residuals of the last evaluate() and the Jacobian
     // values `jacobian` (in jacobianValues()' order: those of an earlier evaluate(), such as
     // the one last factorised), for a step with an earlier factorisation.
-    void fillRightHandSide(const Problem& problem, double eps1, double proximity,
+    void fillRightHandSide(const Problem& problem, double eps1, double proximity, double eps2,
                            const std::vector<double>& jacobian, double* rhs) const;
 
     int variableCount() const { return m_variables; }
@@ -83,14 +84,15 @@ public:
     const std::vector<double>& jacobianValues() const { return m_jacValue; }
     const std::vector<int>& jacobianRowStart() const { return m_jacRowStart; }
     const std::vector<int>& jacobianColumns() const { return m_jacColumn; }
-    // Per-row weight w (family weight, times ε₁ for energy rows, times μ for proximity rows).
+    // Per-row weight w (family weight, times ε₁ for energy rows, times μ for proximity rows,
+    // times ε₂ for damping rows).
     void rowWeights(const Problem& problem, double eps1, std::vector<double>& weights,
-                    double proximity = 0.0) const;
+                    double proximity = 0.0, double eps2 = 0.0) const;
 
     // Reference assembly from scratch (used by the baseline mode and the tests): the weighted
     // Jacobian W̃ J (fixed columns zero) built from triplets.
     Eigen::SparseMatrix<double> weightedJacobian(const Problem& problem, double eps1,
-                                                 double proximity = 0.0) const;
+                                                 double proximity = 0.0, double eps2 = 0.0) const;
     // N (upper triangle, original order) and g from scratch via Eigen sparse products.
     void assembleFromScratch(const Problem& problem, double eps1, double eps2,
                              Eigen::SparseMatrix<double>& upper, Eigen::VectorXd& rhs,

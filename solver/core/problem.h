@@ -20,8 +20,11 @@ struct VariableBlock {
 // Hard constraints enter the iteration (6) through W (weight w per family); soft energies
 // through ε₁ K (their rows are scaled by ε₁ · w); proximity rows (pulling towards the state a
 // solve started from) through μ (their rows are scaled by μ · w, where μ follows the
-// constraint residual, see Options::proximityFactor).
-enum class TermRole { Constraint, Energy, Proximity };
+// constraint residual, see Options::proximityFactor); damping rows (residuals that measure a
+// change since the last iterate, such as the lengths of a control net re-based before each
+// step) through ε₂ like the damping ‖x − x_k‖² itself (their rows are scaled by ε₂ · w), so
+// they damp chosen combinations of the step as strongly as ε₂ damps every variable.
+enum class TermRole { Constraint, Energy, Proximity, Damping };
 
 struct TermFamily {
     std::string name;

@@ -21,6 +21,7 @@ int SquaredDistanceTerm::addRow(const PointCombination& left, const PointCombina
     m_points.insert(m_points.end(), right.begin(), right.end());
     m_leftStart.push_back(static_cast<int>(m_points.size()));
     m_squaredDistance.push_back(squaredDistance);
+    m_rowScale.push_back(1.0);
     return rowCount() - 1;
 }
 
@@ -78,16 +79,17 @@ int SquaredDistanceTerm::evaluateOne(std::size_t r, const double* x, double* res
     for (int k = 0; k < m_rightDimension; ++k) {
         value -= b[k] * b[k];
     }
-    *residual = value;
+    const double scale = m_rowScale[r];
+    *residual = scale * value;
     double* out = jacobian;
     for (int e = begin; e < middle; ++e) {
-        const double c = 2.0 * m_points[static_cast<std::size_t>(e)].coefficient;
+        const double c = 2.0 * scale * m_points[static_cast<std::size_t>(e)].coefficient;
         for (int k = 0; k < m_leftDimension; ++k) {
             *out++ = c * a[k];
         }
     }
     for (int e = middle; e < end; ++e) {
-        const double c = -2.0 * m_points[static_cast<std::size_t>(e)].coefficient;
+        const double c = -2.0 * scale * m_points[static_cast<std::size_t>(e)].coefficient;
         for (int k = 0; k < m_rightDimension; ++k) {
             *out++ = c * b[k];
         }

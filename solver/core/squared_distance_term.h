@@ -23,6 +23,9 @@ public:
     void setSquaredDistance(int row, double value) {
         m_squaredDistance[static_cast<std::size_t>(row)] = value;
     }
+    // Multiplies row `row` (its residual and Jacobian) by `scale` (1 when added). With
+    // 1 / (2 d) a row measures, to first order, the change of the length d.
+    void setRowScale(int row, double scale) { m_rowScale[static_cast<std::size_t>(row)] = scale; }
 
     // ‖Σ cᵢ pᵢ‖ of the left side of row `row` at x.
     double leftLength(int row, const double* x) const;
@@ -42,6 +45,7 @@ private:
     std::vector<int> m_rightStart;
     std::vector<PointTerm> m_points;
     std::vector<double> m_squaredDistance;
+    std::vector<double> m_rowScale;
 };
 
 } // namespace devsurf::solver

@@ -503,7 +503,7 @@ struct SurfaceFormulation::Builder {
         for (const auto& [edge, points] : edgeOffsets) {
             fairness->addSequence(points);
         }
-        if (options.isometryWeight > 0.0) {
+        if (options.isometryWeight > 0.0 || options.lengthDampingWeight > 0.0) {
             addStripIsometry(strips, edgeOffsets, f.m_initialState, *isometry);
         }
     }
@@ -546,9 +546,7 @@ struct SurfaceFormulation::Builder {
             std::move(vertexStars));
         add("vertexSpokeGuard", TermRole::Constraint, options.vertexDevelopabilityWeight,
             std::move(spokeGuard));
-        if (handles->rowCount() > 0) {
-            f.m_handleTerm = handles.get();
-        }
+        f.m_handleTerm = handles->rowCount() > 0 ? handles.get() : nullptr;
         add("handles", TermRole::Constraint, options.handleWeight, std::move(handles));
         if (rulings) {
             add("rulingGuard", TermRole::Constraint, options.guardWeight, std::move(rulingGuard));
@@ -567,7 +565,9 @@ struct SurfaceFormulation::Builder {
             std::move(normalProximity));
         add("fairness", TermRole::Energy, options.fairnessWeight, std::move(fairness));
         f.m_isometry = isometry->rowCount() > 0 ? isometry.get() : nullptr;
-        add("isometry", TermRole::Energy, options.isometryWeight, std::move(isometry));
+        const bool energy = options.isometryWeight > 0.0; // else damping (lengthDampingWeight)
+        add("isometry", energy ? TermRole::Energy : TermRole::Damping,
+            energy ? options.isometryWeight : options.lengthDampingWeight, std::move(isometry));
         f.m_isometryFamily = f.m_isometry ? p.findFamily("isometry") : -1;
         add("normalFairness", TermRole::Energy, options.normalFairnessWeight,
             std::move(normalFairness));

@@ -117,6 +117,11 @@ struct FormulationOptions {
     // (rebaseIsometry), so it damps stretching of the net in each step and lets the net bend.
     // 0 (the default) removes it; a drag that keeps lengths uses kKeepLengthsWeight.
     double isometryWeight = 0.0;
+    // Where isometryWeight is 0: the same rows as damping (TermRole::Damping), weighted by
+    // this times ε₂, so that a step changes the net's lengths as reluctantly as ε₂ makes it
+    // move any variable, times this weight. 0 (the default) removes them; Solve from a rough
+    // start uses kRoughSolveLengthDamping (see there for the measurements).
+    double lengthDampingWeight = 0.0;
     double normalFairnessWeight = 10.0;
     // false: no normal fairness on the strips next to a crease with a condition. Fairness of
     // the control normals pulls a strip towards a plane, and two planar strips meet in a
@@ -239,7 +244,7 @@ public:
     // Sets the lengths the isometry energy (FormulationOptions::isometryWeight) keeps to
     // those at x.
     void rebaseIsometry(const std::vector<double>& x);
-    // Multiplies the weight of that energy by `factor` (nothing without it).
+    // Multiplies the weight of that energy (or damping) by `factor` (nothing without it).
     void scaleIsometryWeight(double factor);
 
     // Developability, planarity and crease-condition residual of every face at state x (a

@@ -159,9 +159,19 @@ void SurfaceFormulation::rebaseIsometry(const std::vector<double>& x) {
     if (!m_isometry) {
         return;
     }
+    // As damping (FormulationOptions::lengthDampingWeight) a row measures the change of its
+    // length, to first order, so a step pays for changing a length as for moving a point by as
+    // much, whatever the length: the squared rows' Jacobians grow with the length, and damped
+    // by them, a model of a few long segments (two cubic strips of one interval each) stopped
+    // converging where one of many short ones needed that weight.
+    const bool damping = m_options.isometryWeight == 0.0;
+    constexpr double kNegligible = 1e-9; // in coordinates of diameter 1
     for (int row = 0; row < m_isometry->rowCount(); ++row) {
         const double length = m_isometry->leftLength(row, x.data());
         m_isometry->setSquaredDistance(row, length * length);
+        if (damping) {
+            m_isometry->setRowScale(row, length > kNegligible ? 0.5 / length : 0.0);
+        }
     }
 }
 
@@ -247,6 +257,9 @@ void SurfaceFormulation::setReferenceState(const std::vector<double>& x) {
                                          speed > kNegligible ? m_options.speedGuard * speed : 0.0);
             }
         }
+    }
+    if (m_isometry && m_options.isometryWeight == 0.0) {
+        rebaseIsometry(x); // damping rows measure the change from x
     }
 }
 

@@ -153,10 +153,16 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
         // designs stay put as before. A rough start keeps absolute fairness, which it needs
         // (see FormulationOptions::relativeFairness).
         m_options.formulation.relativeFairness = true;
+        m_options.formulation.vertexStartDefectLimit =
+            std::min(m_options.formulation.vertexStartDefectLimit, kValidSolveStarDefectLimit);
     } else if (m_options.solver.proximityFactor == 0.0) {
         // Nothing pulled and a rough start (see kRoughSolveProximity).
         m_options.solver.proximityFactor = kRoughSolveProximity;
         m_options.solver.proximityThreshold = kRoughSolveProximityThreshold;
+        if (m_options.formulation.isometryWeight == 0.0) {
+            m_options.formulation.lengthDampingWeight = kRoughSolveLengthDamping;
+            m_dampingLengths = true;
+        }
     }
     m_formulation = std::make_unique<SurfaceFormulation>(surface, m_options.formulation);
     m_x = m_formulation->initialState();
@@ -213,6 +219,10 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         if (m_settling) {
             m_formulation->scaleIsometryWeight(kKeepLengthsFade);
         }
+        if (m_dampingLengths && m_residual <= kRoughSolveLengthDampingUntil) {
+            m_formulation->scaleIsometryWeight(0.0); // for good (see kRoughSolveLengthDamping)
+            m_dampingLengths = false;
+        }
         before = m_x;
         const Summary summary = m_projection.solve(m_formulation->problem(), m_x, options);
         if (i == 0) {
@@ -267,6 +277,7 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         total.iterationsCompleted = i + 1;
         total.finalMaxConstraintResidual = summary.finalMaxConstraintResidual;
         total.finalEnergy = summary.finalEnergy;
+        m_residual = summary.finalMaxConstraintResidual;
         if (perIteration) {
             perIteration(stats);
         }

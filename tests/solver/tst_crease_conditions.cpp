@@ -177,6 +177,28 @@ private slots:
         QVERIFY(without > 100.0 * withCondition);
     }
 
+    void foldShakenByOnePercentIsRestored() {
+        // Noise of 1 % of the diameter, 20 seeds, as perturbedFoldIsRestored: every seed
+        // reaches det 1e-8 and the crease condition 1e-8 in 10 iterations. Measured: before
+        // Solve damped length changes on rough starts (kRoughSolveLengthDamping), 4 seeds
+        // ended above (up to 1.3e-6); since, the worst is 1.4e-9.
+        for (unsigned seed = 1; seed <= 20; ++seed) {
+            model::CompositeSurface fold = curvedFold(model::CreaseCondition::CurvedFold);
+            const std::vector<model::VertexId> pins{0, 2, 3};
+            solver::perturbSurface(fold, 0.01 * diameterOf(fold), seed, pins);
+            for (model::VertexId v : pins) {
+                fold.setPinned(v, true);
+            }
+            solver::SolveSession session(fold, {});
+            QVERIFY(session.step(10).succeeded());
+            const double det = solver::measureQuality(session.surface()).developabilityMax;
+            const double crease = solver::measureCreaseQuality(session.surface()).residualMax;
+            QVERIFY2(
+                det < 1e-8 && crease < 1e-8,
+                qPrintable(QString("seed %1: det %2, crease %3").arg(seed).arg(det).arg(crease)));
+        }
+    }
+
     void conditionsWhereTheyCannotApplyAreRefused() {
         // A boundary curve is not a crease (the model refuses it): a sentence naming the edge.
         // "Straight when unfolded" is solved (tst_smooth_straight) and accepted here.

@@ -153,6 +153,18 @@ private slots:
         simple.addRow({{0, 1.0}, {3, -1.0}}, 4.0);
         simple.evaluate(x.data(), r, j.data());
         QCOMPARE(r[0], 9.0 - 4.0);
+        // A row scaled by 1 / (2 d) measures the change of the length d to first order: the
+        // residual and every Jacobian value are scaled, and the Jacobian still matches.
+        simple.setRowScale(0, 0.25);
+        double scaled = 0.0;
+        std::vector<double> jScaled(64);
+        simple.evaluate(x.data(), &scaled, jScaled.data());
+        QCOMPARE(scaled, 0.25 * (9.0 - 4.0));
+        for (int k = 0; k < 6; ++k) {
+            QCOMPARE(jScaled[static_cast<std::size_t>(k)], 0.25 * j[static_cast<std::size_t>(k)]);
+        }
+        distance.setRowScale(1, 3.0);
+        checkAgainstFiniteDifferences(distance, 3 * kPoints, 16);
     }
 
     void fairnessTerm() {
