@@ -219,9 +219,11 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         if (m_settling) {
             m_formulation->scaleIsometryWeight(kKeepLengthsFade);
         }
-        if (m_dampingLengths && m_residual <= kRoughSolveLengthDampingUntil) {
-            m_formulation->scaleIsometryWeight(0.0); // for good (see kRoughSolveLengthDamping)
-            m_dampingLengths = false;
+        // See kRoughSolveLengthDamping: once the residual has fallen far enough, the damping
+        // fades geometrically.
+        m_lengthDampingFades = m_lengthDampingFades || m_residual <= kRoughSolveLengthDampingUntil;
+        if (m_dampingLengths && m_lengthDampingFades) {
+            m_formulation->scaleIsometryWeight(kRoughSolveLengthDampingFade);
         }
         before = m_x;
         const Summary summary = m_projection.solve(m_formulation->problem(), m_x, options);

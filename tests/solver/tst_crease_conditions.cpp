@@ -181,7 +181,7 @@ private slots:
         // Noise of 1 % of the diameter, 20 seeds, as perturbedFoldIsRestored: every seed
         // reaches det 1e-8 and the crease condition 1e-8 in 10 iterations. Measured: before
         // Solve damped length changes on rough starts (kRoughSolveLengthDamping), 4 seeds
-        // ended above (up to 1.3e-6); since, the worst is 1.4e-9.
+        // ended above (up to 1.3e-6); since, the worst is 2.6e-9.
         for (unsigned seed = 1; seed <= 20; ++seed) {
             model::CompositeSurface fold = curvedFold(model::CreaseCondition::CurvedFold);
             const std::vector<model::VertexId> pins{0, 2, 3};

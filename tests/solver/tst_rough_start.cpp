@@ -322,8 +322,8 @@ private slots:
         // with three boundary vertices pinned. Measured without the damping of length changes:
         // once the pull towards the start had faded, fairness drew the control points of the
         // nearly flat result along their curves (the slowest speed fell to 0.031 of the
-        // mean) and the residual stalled (det 5e-6 after 10 iterations). With it: 1e-15 and
-        // speeds above 0.4, measured on the geometry.
+        // mean) and the residual stalled (det 5e-6 after 10 iterations). With it: 4e-14 and
+        // speeds at 0.6, measured on the geometry.
         model::CompositeSurface surface = model::makeExample("sheet").surfaces.front();
         const auto anchors = spreadBoundaryVertices(surface, 3);
         perturbSurface(surface, 0.01 * surfaceDiameter(surface), 20150807u, anchors);
@@ -336,17 +336,22 @@ private slots:
         QVERIFY(lengths >= 0);
         QVERIFY(problem.family(lengths).role == TermRole::Damping);
         QCOMPARE(problem.family(lengths).weight, kRoughSolveLengthDamping);
+        // Full weight until the residual first falls to the limit, then halved before every
+        // further iteration.
         double residual = 1.0;
+        double weight = kRoughSolveLengthDamping;
+        int fading = 0;
         for (int i = 0; i < 10; ++i) {
             const Summary summary = session.step(1);
             QVERIFY(summary.succeeded());
-            // Stopped for good once the residual first fell to the limit.
             if (residual <= kRoughSolveLengthDampingUntil) {
-                QCOMPARE(problem.family(lengths).weight, 0.0);
+                weight *= kRoughSolveLengthDampingFade;
+                ++fading;
             }
+            QCOMPARE(problem.family(lengths).weight, weight);
             residual = std::min(residual, summary.finalMaxConstraintResidual);
         }
-        QVERIFY(residual <= kRoughSolveLengthDampingUntil);
+        QVERIFY(fading >= 3);
         const double det = measureQuality(session.surface()).developabilityMax;
         QVERIFY2(det <= 1e-10, qPrintable(QString::number(det)));
         const ShapeChange change = measureShapeChange(surface, session.surface());
