@@ -110,50 +110,54 @@ bool stackedFaces(const PatternPiece::Mesh& mesh, double margin, std::vector<Fac
     if (count < 2) {
         return false;
     }
-    std::vector<std::vector<Vec2>> polygons(count);
-    std::vector<Vec2> centroids(count);
-    Vec2 lo = mesh.vertices.front();
-    Vec2 hi = lo;
+    struct Face {
+        std::vector<Vec2> polygon;
+        Vec2 centroid;
+        Vec2 lo{1e300, 1e300};
+        Vec2 hi{-1e300, -1e300};
+    };
+    std::vector<Face> sampled(count);
+    Vec2 lo{1e300, 1e300};
     double extent = 0.0;
     for (std::size_t f = 0; f < count; ++f) {
-        Vec2 faceLo{1e300, 1e300};
-        Vec2 faceHi{-1e300, -1e300};
+        Face& face = sampled[f];
         for (int v : mesh.faces[f]) {
             const Vec2& p = mesh.vertices[static_cast<std::size_t>(v)];
-            polygons[f].push_back(p);
-            centroids[f] = centroids[f] + p * (1.0 / static_cast<double>(mesh.faces[f].size()));
-            faceLo = {std::min(faceLo.x, p.x), std::min(faceLo.y, p.y)};
-            faceHi = {std::max(faceHi.x, p.x), std::max(faceHi.y, p.y)};
+            face.polygon.push_back(p);
+            face.centroid = face.centroid + p * (1.0 / static_cast<double>(mesh.faces[f].size()));
+            face.lo = {std::min(face.lo.x, p.x), std::min(face.lo.y, p.y)};
+            face.hi = {std::max(face.hi.x, p.x), std::max(face.hi.y, p.y)};
         }
-        lo = {std::min(lo.x, faceLo.x), std::min(lo.y, faceLo.y)};
-        hi = {std::max(hi.x, faceHi.x), std::max(hi.y, faceHi.y)};
-        extent += std::max(faceHi.x - faceLo.x, faceHi.y - faceLo.y);
+        lo = {std::min(lo.x, face.lo.x), std::min(lo.y, face.lo.y)};
+        extent += std::max(face.hi.x - face.lo.x, face.hi.y - face.lo.y);
     }
     const double cell = std::max(extent / static_cast<double>(count), 1e-9);
-    const auto column = [&](double x) { return static_cast<long long>((x - lo.x) / cell); };
-    const auto row = [&](double y) { return static_cast<long long>((y - lo.y) / cell); };
+    const auto cellOf = [&](const Vec2& p) {
+        return std::make_pair(static_cast<long long>((p.x - lo.x) / cell),
+                              static_cast<long long>((p.y - lo.y) / cell));
+    };
     std::map<std::pair<long long, long long>, std::vector<std::size_t>> grid;
     for (std::size_t f = 0; f < count; ++f) {
-        Vec2 faceLo = polygons[f].front();
-        Vec2 faceHi = faceLo;
-        for (const Vec2& p : polygons[f]) {
-            faceLo = {std::min(faceLo.x, p.x), std::min(faceLo.y, p.y)};
-            faceHi = {std::max(faceHi.x, p.x), std::max(faceHi.y, p.y)};
-        }
-        for (long long i = column(faceLo.x); i <= column(faceHi.x); ++i) {
-            for (long long j = row(faceLo.y); j <= row(faceHi.y); ++j) {
+        const auto [i0, j0] = cellOf(sampled[f].lo);
+        const auto [i1, j1] = cellOf(sampled[f].hi);
+        for (long long i = i0; i <= i1; ++i) {
+            for (long long j = j0; j <= j1; ++j) {
                 grid[{i, j}].push_back(f);
             }
         }
     }
     bool found = false;
     for (std::size_t f = 0; f < count && faces.size() < 64; ++f) {
-        const Vec2& c = centroids[f];
-        for (std::size_t g : grid[{column(c.x), row(c.y)}]) {
-            if (g == f || !pointInPolygon(c, polygons[g])) {
+        const Vec2& c = sampled[f].centroid;
+        const auto near = grid.find(cellOf(c));
+        if (near == grid.end()) {
+            continue;
+        }
+        for (std::size_t g : near->second) {
+            const std::vector<Vec2>& polygon = sampled[g].polygon;
+            if (g == f || !pointInPolygon(c, polygon)) {
                 continue;
             }
-            const std::vector<Vec2>& polygon = polygons[g];
             double clearance = 1e300;
             for (std::size_t k = 0; k < polygon.size(); ++k) {
                 clearance = std::min(

@@ -319,6 +319,11 @@ private:
     UnitNormTerm* m_unitControlNormals = nullptr;
     SquaredDistanceTerm* m_isometry = nullptr;
     FamilyId m_isometryFamily = -1;
+    // Whether those rows damp length changes (lengthDampingWeight) rather than keep lengths.
+    bool isometryDamps() const {
+        return m_isometryFamily >= 0 &&
+               m_problem.family(m_isometryFamily).role == TermRole::Damping;
+    }
     MinimumLengthTerm* m_rulingGuard = nullptr;
     MinimumLengthTerm* m_speedGuard = nullptr;
     // Row ranges of m_speedGuard per curve (the mean speed is taken per curve).

@@ -164,7 +164,7 @@ void SurfaceFormulation::rebaseIsometry(const std::vector<double>& x) {
     // much, whatever the length: the squared rows' Jacobians grow with the length, and damped
     // by them, a model of a few long segments (two cubic strips of one interval each) stopped
     // converging where one of many short ones needed that weight.
-    const bool damping = m_options.isometryWeight == 0.0;
+    const bool damping = isometryDamps();
     constexpr double kNegligible = 1e-9; // in coordinates of diameter 1
     for (int row = 0; row < m_isometry->rowCount(); ++row) {
         const double length = m_isometry->leftLength(row, x.data());
@@ -258,7 +258,7 @@ void SurfaceFormulation::setReferenceState(const std::vector<double>& x) {
             }
         }
     }
-    if (m_isometry && m_options.isometryWeight == 0.0) {
+    if (isometryDamps()) {
         rebaseIsometry(x); // damping rows measure the change from x
     }
 }
