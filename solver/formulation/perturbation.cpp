@@ -35,6 +35,19 @@ double surfaceDiameter(const model::CompositeSurface& surface) {
     return any ? (high - low).norm() : 0.0;
 }
 
+double meanControlSpacing(const model::CompositeSurface& surface) {
+    double sum = 0.0;
+    int count = 0;
+    for (const auto& [id, record] : surface.edges()) {
+        (void)id;
+        for (std::size_t i = 0; i + 1 < record.controlPoints.size(); ++i) {
+            sum += model::distance(record.controlPoints[i], record.controlPoints[i + 1]);
+            ++count;
+        }
+    }
+    return count > 0 ? sum / count : 0.0;
+}
+
 void perturbSurface(model::CompositeSurface& surface, double sigma, unsigned seed,
                     const std::vector<VertexId>& keep) {
     std::mt19937 rng(seed);

@@ -10,6 +10,9 @@ namespace devsurf::solver {
 // benchmark and docs/math.md §8 scale by).
 double surfaceDiameter(const model::CompositeSurface& surface);
 
+// The mean length of the segments of all edges' control polygons (0 if there are none).
+double meanControlSpacing(const model::CompositeSurface& surface);
+
 // Adds independent Gaussian noise of standard deviation `sigma` (model units) to every
 // coordinate of every vertex and interior control point, except the vertices in `keep`.
 // Deterministic for a given seed.

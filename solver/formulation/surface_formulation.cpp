@@ -181,8 +181,7 @@ struct SurfaceFormulation::Builder {
         f.m_pointCount = static_cast<int>(f.m_originalPoints.size());
         if (f.m_pointCount > 0) {
             f.m_centre = (low + high) * 0.5;
-            const double diameter = (high - low).norm();
-            f.m_scale = diameter > 0.0 && std::isfinite(diameter) ? diameter : 1.0;
+            f.m_scale = stateUnit(surface, (high - low).norm(), options.controlSpacingUnit);
         }
         f.m_pointsOffset = f.m_problem.addVariableBlock("points", 3 * f.m_pointCount);
     }

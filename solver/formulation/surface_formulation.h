@@ -56,6 +56,18 @@ struct FormulationOptions {
     // cylinder from 0.1 % (3e-8 with it).
     bool normalizedRows = false;
 
+    // The unit of the state's coordinates, as a fraction of the diameter for the mean segment
+    // of the control polygons. The constraint rows are dimensionless, so their Jacobian grows
+    // as one over the control spacing; fairness, ε₂ and the pull towards the start are
+    // measured in the state's unit. With the diameter as the unit, a design whose control
+    // polygons are five times finer has a regularisation 25 times weaker against its
+    // constraints. So the unit is the diameter, or, where the mean control segment
+    // (meanControlSpacing) is shorter than this fraction of the diameter, that segment
+    // divided by it: a finer design is regularised like one whose segments are this fraction
+    // of its diameter. 0 (the default, the paper's configuration the benchmark times) keeps
+    // the diameter; sessions use kSessionControlSpacingUnit.
+    double controlSpacingUnit = 0.0;
+
     // Guards against degenerate solutions, relative to the reference state (the start of the
     // solve, see setReferenceState): every sampled ruling |a(u) − b(u)| stays at least
     // rulingGuard times its reference length, and every sampled curve speed |a′(u)| at least
@@ -213,6 +225,12 @@ struct FormulationOptions {
 // but this one only 2.6e-4 on the cylinder; with ε₂ = 1e-3 the paper's configuration
 // degenerates on every rough start above (det up to 1, rulings at 0).
 void useRoughStartConfiguration(FormulationOptions& formulation, Options& solver);
+
+// The unit of the state's coordinates for `surface`, whose diameter is `diameter`: the
+// diameter, or the mean control segment over `controlSpacingUnit` where that is shorter
+// (FormulationOptions::controlSpacingUnit). 1 for a surface of no extent.
+double stateUnit(const model::CompositeSurface& surface, double diameter,
+                 double controlSpacingUnit);
 
 // Turns a composite surface into a guided-projection problem (§3.1, §3.2) and writes solutions
 // back. Variables, all in coordinates normalised to the surface's diameter (centre at the

@@ -10,6 +10,7 @@
 #include "solver/core/squared_distance_term.h"
 #include "solver/core/target_term.h"
 #include "solver/core/unit_norm_term.h"
+#include "solver/formulation/perturbation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,6 +41,20 @@ void useRoughStartConfiguration(FormulationOptions& formulation, Options& solver
     solver.proximityMaximum = 1.0;
     solver.proximityThreshold = 1e-2;
     solver.eps2Minimum = 3e-4;
+}
+
+double stateUnit(const model::CompositeSurface& surface, double diameter,
+                 double controlSpacingUnit) {
+    if (!(diameter > 0.0) || !std::isfinite(diameter)) {
+        return 1.0;
+    }
+    if (controlSpacingUnit > 0.0) {
+        const double spacing = meanControlSpacing(surface) / controlSpacingUnit;
+        if (spacing > 0.0 && spacing < diameter) {
+            return spacing;
+        }
+    }
+    return diameter;
 }
 
 void SurfaceFormulation::normaliseUnitNormals(double* x) const {

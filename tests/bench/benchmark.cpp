@@ -199,8 +199,12 @@ ModelResult runModel(const BenchModel& model, const BenchmarkOptions& options, d
     r.lowerBoundMs = dgemmGflops > 0.0 ? r.flops / (dgemmGflops * 1e6) : 0.0;
     model::CompositeSurface result = surface;
     std::string error;
-    if (formulation.writeBack(bestState, result, &error)) {
+    // measureQuality samples the surface, which needs a valid one: a result with a collapsed
+    // ruling is reported by its status instead.
+    if (formulation.writeBack(bestState, result, &error) && result.validate().empty()) {
         r.quality = solver::measureQuality(result);
+    } else if (error.empty()) {
+        r.status = "degenerate result: " + result.validate().front();
     } else {
         r.status = error;
     }
@@ -222,7 +226,7 @@ ModelResult runModel(const BenchModel& model, const BenchmarkOptions& options, d
         r.auxiliaryVariables = summary.variables;
         r.auxiliary = medianTiming(summary);
         model::CompositeSurface auxiliaryResult = surface;
-        if (auxiliary.writeBack(y, auxiliaryResult)) {
+        if (auxiliary.writeBack(y, auxiliaryResult) && auxiliaryResult.validate().empty()) {
             r.auxiliaryDetMax = solver::measureQuality(auxiliaryResult).developabilityMax;
         }
         log(r.name + ": auxiliary variant " + number(r.auxiliary.total) + " ms/iteration");
@@ -235,7 +239,8 @@ ModelResult runModel(const BenchModel& model, const BenchmarkOptions& options, d
                                options.seed, anchors);
         const solver::SurfaceFormulation f(quiet, formulationOptions);
         std::vector<double> y = f.initialState();
-        if (solveFrom(f.problem(), y, options, false).succeeded() && f.writeBack(y, quiet)) {
+        if (solveFrom(f.problem(), y, options, false).succeeded() && f.writeBack(y, quiet) &&
+            quiet.validate().empty()) {
             r.smallNoiseQuality = solver::measureQuality(quiet);
         }
         log(r.name + ": from " + number(options.smallNoise) + " noise, det max " +

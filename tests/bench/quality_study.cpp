@@ -16,22 +16,9 @@
 
 namespace devsurf::bench {
 
-double meanControlEdgeLength(const model::CompositeSurface& surface) {
-    double sum = 0.0;
-    int count = 0;
-    for (const auto& [id, record] : surface.edges()) {
-        (void)id;
-        for (std::size_t i = 0; i + 1 < record.controlPoints.size(); ++i) {
-            sum += model::distance(record.controlPoints[i], record.controlPoints[i + 1]);
-            ++count;
-        }
-    }
-    return count > 0 ? sum / count : 0.0;
-}
-
 double noiseSigma(const model::CompositeSurface& surface, const StudyStart& start) {
     return start.fraction * (start.scale == NoiseScale::EdgeLength
-                                 ? meanControlEdgeLength(surface)
+                                 ? solver::meanControlSpacing(surface)
                                  : solver::surfaceDiameter(surface));
 }
 

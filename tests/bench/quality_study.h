@@ -73,7 +73,6 @@ struct StudySummary {
     int overlappingSeeds = 0;
 };
 
-double meanControlEdgeLength(const model::CompositeSurface& surface);
 // Noise σ in model units for a start on `surface`.
 double noiseSigma(const model::CompositeSurface& surface, const StudyStart& start);
 
