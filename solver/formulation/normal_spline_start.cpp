@@ -9,6 +9,34 @@ namespace devsurf::solver {
 
 using model::Vec3;
 
+namespace {
+
+// The least-squares linear field p + u q to the rows of `unit` at `samples`, evaluated at the
+// samples into `linear`. False if the field comes closer to zero than kLinearStartNormalMinimum
+// on [0, 1] (the sampled normals spread too far for one linear field to stand for them).
+bool linearField(const std::vector<double>& samples, const Eigen::MatrixXd& unit,
+                 Eigen::MatrixXd& linear) {
+    Eigen::MatrixXd values(unit.rows(), 2);
+    for (Eigen::Index r = 0; r < unit.rows(); ++r) {
+        values(r, 0) = 1.0;
+        values(r, 1) = samples[static_cast<std::size_t>(r)];
+    }
+    const Eigen::MatrixXd pq =
+        (values.transpose() * values).ldlt().solve(values.transpose() * unit);
+    const Eigen::RowVectorXd p = pq.row(0);
+    const Eigen::RowVectorXd q = pq.row(1);
+    // The point of the segment p + u q, u ∈ [0, 1], nearest to zero.
+    const double t =
+        q.squaredNorm() > 0.0 ? std::clamp(-p.dot(q) / q.squaredNorm(), 0.0, 1.0) : 0.0;
+    if (!((p + t * q).norm() >= kLinearStartNormalMinimum)) {
+        return false;
+    }
+    linear = values * pq;
+    return true;
+}
+
+} // namespace
+
 Vec3 initialStripNormal(const model::Strip& strip, double u) {
     const Vec3 tangent = strip.a.derivative(u, 1);
     Vec3 n = cross(tangent, strip.bPoint(u) - strip.aPoint(u));
@@ -105,6 +133,13 @@ std::vector<Vec3> fitStartNormals(const model::Strip& strip, const model::BSplin
     }
     if (!exactFit) {
         fitted = factor.solve(basis.transpose() * unitField);
+        // Noise (kNoisyStartNormals): the best linear field instead.
+        const double misfit =
+            std::sqrt((basis * fitted - unitField).squaredNorm() / static_cast<double>(rowCount));
+        Eigen::MatrixXd linear;
+        if (misfit >= kNoisyStartNormals && linearField(samples, unitField, linear)) {
+            fitted = factor.solve(basis.transpose() * linear);
+        }
     }
     std::vector<Vec3> result;
     for (int i = 0; i < controls; ++i) {

@@ -3,11 +3,14 @@
 // kRoughSolveLengthDamping), unit normals projected back after every step (Options::project),
 // and starts of the benchmark that degenerated or alternated before.
 #include "model/examples.h"
+#include "model/strip.h"
 #include "solver/core/guided_projection.h"
 #include "solver/core/normal_equations.h"
 #include "solver/core/problem.h"
 #include "solver/core/target_term.h"
+#include "solver/formulation/normal_spline_start.h"
 #include "solver/formulation/perturbation.h"
+#include "solver/formulation/point_combinations.h"
 #include "solver/formulation/surface_formulation.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
@@ -57,6 +60,36 @@ FormulationOptions roughStartFormulation() {
     Options unused;
     useRoughStartConfiguration(options, unused);
     return options;
+}
+
+// `example` (of size `size`, 0: its default) shaken by Gaussian noise of σ = `sigma` model units
+// with three boundary vertices pinned, as devsurf-bench --study starts.
+model::CompositeSurface studyStart(const char* example, int size, double sigma, unsigned seed) {
+    model::CompositeSurface surface = model::makeExample(example, size).surfaces.front();
+    const auto anchors = spreadBoundaryVertices(surface, 3);
+    perturbSurface(surface, sigma, seed, anchors);
+    for (model::VertexId v : anchors) {
+        surface.setPinned(v, true);
+    }
+    return surface;
+}
+
+// Empty if `result`, solved from `start`, is developable to 1e-10 (sampled), keeps every ruling
+// at a quarter of its start length and every curve at a tenth of its mean speed, and folds over
+// nowhere; else what failed.
+QString solvedWithoutDegenerating(const model::CompositeSurface& start,
+                                  const model::CompositeSurface& result) {
+    const double det = measureQuality(result).developabilityMax;
+    const ShapeChange change = measureShapeChange(start, result);
+    if (det > 1e-10 || change.shortestRuling < 0.25 || change.slowestSpeed < 0.1 ||
+        change.foldOverPlaces() != 0) {
+        return QString("det %1, shortest ruling %2, slowest speed %3, %4 places folded over")
+            .arg(det)
+            .arg(change.shortestRuling)
+            .arg(change.slowestSpeed)
+            .arg(change.foldOverPlaces());
+    }
+    return {};
 }
 
 } // namespace
@@ -324,12 +357,9 @@ private slots:
         // nearly flat result along their curves (the slowest speed fell to 0.031 of the
         // mean) and the residual stalled (det 5e-6 after 10 iterations). With it: 4e-14 and
         // speeds at 0.6, measured on the geometry.
-        model::CompositeSurface surface = model::makeExample("sheet").surfaces.front();
-        const auto anchors = spreadBoundaryVertices(surface, 3);
-        perturbSurface(surface, 0.01 * surfaceDiameter(surface), 20150807u, anchors);
-        for (model::VertexId v : anchors) {
-            surface.setPinned(v, true);
-        }
+        const model::CompositeSurface sheet = model::makeExample("sheet").surfaces.front();
+        const model::CompositeSurface surface =
+            studyStart("sheet", 0, 0.01 * surfaceDiameter(sheet), 20150807u);
         SolveSession session(surface, {});
         const Problem& problem = session.formulation().problem();
         const FamilyId lengths = problem.findFamily("isometry");
@@ -352,14 +382,81 @@ private slots:
             residual = std::min(residual, summary.finalMaxConstraintResidual);
         }
         QVERIFY(fading >= 3);
-        const double det = measureQuality(session.surface()).developabilityMax;
-        QVERIFY2(det <= 1e-10, qPrintable(QString::number(det)));
-        const ShapeChange change = measureShapeChange(surface, session.surface());
-        QVERIFY2(change.slowestSpeed >= 0.1, qPrintable(QString::number(change.slowestSpeed)));
-        QVERIFY(change.shortestRuling >= 0.25);
+        const QString failed = solvedWithoutDegenerating(surface, session.surface());
+        QVERIFY2(failed.isEmpty(), qPrintable(failed));
         // A valid design and a drag are not damped so.
         SolveSession valid(model::makeExample("sheet").surfaces.front(), {});
         QCOMPARE(valid.formulation().problem().findFamily("isometry"), -1);
+    }
+
+    void noisyStripsStartFromLinearNormalFields() {
+        // The annulus shaken by 1 % of its diameter: the unit normals a′ × (b − a) of its strips
+        // zig-zag along them, the fit in the normal spline's space misses them by more than
+        // kNoisyStartNormals, and such a strip starts from the best linear field. The cylinder
+        // shaken by 0.01 %, whose normals turn smoothly along its strips, keeps the fit that
+        // follows them.
+        auto startNormals = [](const model::CompositeSurface& surface, const model::Strip& strip) {
+            const int intervals = surface.edge(strip.aSide.edge).space.intervals;
+            std::vector<double> samples = collocationValues(intervals, 3 * strip.a.degree() - 2);
+            samples.push_back(0.0);
+            samples.push_back(1.0);
+            const model::SplineSpace space =
+                normalSplineSpace(surface.edge(strip.aSide.edge).space, false);
+            const model::BSplineCurve curve = model::BSplineCurve::uniform(
+                space, std::vector<model::Vec3>(space.controlPointCount(false)));
+            return model::BSplineCurve::uniform(
+                space, fitStartNormals(strip, curve, samples, isDevelopableStart(strip)));
+        };
+        auto linear = [](const model::BSplineCurve& n) {
+            double off = 0.0;
+            for (double u : {0.2, 0.5, 0.7}) {
+                off = std::max(
+                    off,
+                    (n.evaluate(u) - ((1.0 - u) * n.evaluate(0.0) + u * n.evaluate(1.0))).norm());
+            }
+            return off <= 1e-9;
+        };
+        model::CompositeSurface annulus = model::makeExample("annulus").surfaces.front();
+        perturbSurface(annulus, 0.01 * surfaceDiameter(annulus), 20150805u, {});
+        int linearStrips = 0;
+        const std::vector<model::Strip> strips = model::stripsOf(annulus);
+        for (const model::Strip& strip : strips) {
+            QVERIFY(!isDevelopableStart(strip));
+            linearStrips += linear(startNormals(annulus, strip)) ? 1 : 0;
+        }
+        // Measured: 32 of 48.
+        QVERIFY2(linearStrips >= static_cast<int>(strips.size()) / 2,
+                 qPrintable(QString("%1 of %2").arg(linearStrips).arg(strips.size())));
+
+        model::CompositeSurface cylinder = model::makeExample("cylinder").surfaces.front();
+        perturbSurface(cylinder, 1e-4 * surfaceDiameter(cylinder), 20150805u, {});
+        for (const model::Strip& strip : model::stripsOf(cylinder)) {
+            if (strip.isCone() || isDevelopableStart(strip)) {
+                continue;
+            }
+            const model::BSplineCurve n = startNormals(cylinder, strip);
+            QVERIFY(!linear(n));
+            for (double u : {0.1, 0.5, 0.9}) {
+                const model::Vec3 field = initialStripNormal(strip, u);
+                const model::Vec3 start = n.evaluate(u) / n.evaluate(u).norm();
+                QVERIFY2(model::distance(field, start) < 1e-2,
+                         qPrintable(QString::number(model::distance(field, start))));
+            }
+        }
+    }
+
+    void roughAnnulusConvergesWithinTenIterations() {
+        // Seed 20150805 of the benchmark's 1 % start on the annulus, solved as Tools ▸ Solve
+        // does with three boundary vertices pinned. Measured with the spline fit of the noisy
+        // normals: det 3.8e-4 after 10 iterations; from linear fields: 3e-13, rulings at 0.5 of
+        // their start length, on the geometry.
+        const model::CompositeSurface annulus = model::makeExample("annulus").surfaces.front();
+        const model::CompositeSurface surface =
+            studyStart("annulus", 0, 0.01 * surfaceDiameter(annulus), 20150805u);
+        SolveSession session(surface, {});
+        QVERIFY(session.step(10).succeeded());
+        const QString failed = solvedWithoutDegenerating(surface, session.surface());
+        QVERIFY2(failed.isEmpty(), qPrintable(failed));
     }
 
     void stateUnitFollowsTheControlSpacingOfFineDesigns() {
@@ -390,12 +487,9 @@ private slots:
         // regularisation, measured in diameters, is 6 times weaker against the constraints
         // than on the annulus of size 6). In units of its control spacing: 5e-13, rulings
         // 0.73, on the geometry.
-        model::CompositeSurface surface = model::makeExample("annulus", 14).surfaces.front();
-        const auto anchors = spreadBoundaryVertices(surface, 3);
-        perturbSurface(surface, 0.1 * meanControlSpacing(surface), 20150802u, anchors);
-        for (model::VertexId v : anchors) {
-            surface.setPinned(v, true);
-        }
+        const model::CompositeSurface fine = model::makeExample("annulus", 14).surfaces.front();
+        const model::CompositeSurface surface =
+            studyStart("annulus", 14, 0.1 * meanControlSpacing(fine), 20150802u);
         auto solve = [&surface](double unit) {
             SessionOptions options;
             options.formulation.controlSpacingUnit = unit;
@@ -404,16 +498,11 @@ private slots:
             return summary.succeeded() ? session.surface() : surface;
         };
         const model::CompositeSurface inDiameters = solve(0.0);
-        QVERIFY2(measureQuality(inDiameters).developabilityMax > 1e-8 ||
-                     measureShapeChange(surface, inDiameters).shortestRuling < 0.25,
+        QVERIFY2(!solvedWithoutDegenerating(surface, inDiameters).isEmpty(),
                  "the diameter as unit no longer fails here; choose another seed");
-        const model::CompositeSurface result = solve(kSessionControlSpacingUnit);
-        const double det = measureQuality(result).developabilityMax;
-        QVERIFY2(det <= 1e-10, qPrintable(QString::number(det)));
-        const ShapeChange change = measureShapeChange(surface, result);
-        QVERIFY2(change.shortestRuling >= 0.25, qPrintable(QString::number(change.shortestRuling)));
-        QVERIFY2(change.slowestSpeed >= 0.1, qPrintable(QString::number(change.slowestSpeed)));
-        QCOMPARE(change.foldOverPlaces(), 0);
+        const QString failed =
+            solvedWithoutDegenerating(surface, solve(kSessionControlSpacingUnit));
+        QVERIFY2(failed.isEmpty(), qPrintable(failed));
     }
 
     void roughAnnulusKeepsItsRulingsAndSpeeds() {

@@ -89,12 +89,13 @@ private slots:
     }
 
     void solveStopsBeforeADegenerateSurface() {
-        // The annulus shaken by 1 % of its diameter (devsurf-cli solve --perturb 0.01 --seed 15):
-        // Solve converges towards a surface with a ruling of zero length (faces 40 and 41 turn
-        // into cones) and reaches it in the 17th iteration. The session refuses that iterate
-        // and stays at the valid one before it.
+        // The annulus shaken by 2 % of its diameter (devsurf-cli solve --perturb 0.02 --seed 9):
+        // Solve converges towards a surface in which patch 1 has zero area (the strip flattens
+        // to a line) and reaches it in the 18th iteration. The session refuses that iterate and
+        // stays at the valid one before it. (From 1 %, no seed from 1 to 60 gets there since
+        // noisy strips start from linear normal fields, see kNoisyStartNormals.)
         model::CompositeSurface start = model::makeExample("annulus").surfaces.front();
-        perturbSurface(start, 0.01 * surfaceDiameter(start), 15, {});
+        perturbSurface(start, 0.02 * surfaceDiameter(start), 9, {});
         SolveSession session(start, {});
         bool stopped = false;
         for (int i = 0; i < 30 && !stopped; ++i) {
@@ -107,7 +108,7 @@ private slots:
             if (summary.iterations.empty()) {
                 stopped = true;
                 QCOMPARE(summary.status, Status::StoppedBeforeDegenerate);
-                QVERIFY(summary.message.find("degenerate surface, edge") != std::string::npos);
+                QVERIFY(summary.message.find("degenerate surface, face") != std::string::npos);
                 QVERIFY(sameBits(session.state(), before));
                 QCOMPARE(session.iterationsDone(), done);
             }
