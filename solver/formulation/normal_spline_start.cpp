@@ -78,7 +78,8 @@ bool isDevelopableStart(const model::Strip& strip) {
 }
 
 std::vector<Vec3> fitStartNormals(const model::Strip& strip, const model::BSplineCurve& normalCurve,
-                                  const std::vector<double>& samples, bool developable) {
+                                  const std::vector<double>& samples, bool developable,
+                                  bool linearIfNoisy) {
     const int controls = static_cast<int>(normalCurve.controlPoints().size());
     // Least squares fit to N(u) = a′ × (b − a) at the samples. If N itself lies in the normal
     // spline's space (always in the exact space, see FormulationOptions::exactNormalSpace) its
@@ -137,7 +138,8 @@ std::vector<Vec3> fitStartNormals(const model::Strip& strip, const model::BSplin
         const double misfit =
             std::sqrt((basis * fitted - unitField).squaredNorm() / static_cast<double>(rowCount));
         Eigen::MatrixXd linear;
-        if (misfit >= kNoisyStartNormals && linearField(samples, unitField, linear)) {
+        if (linearIfNoisy && misfit >= kNoisyStartNormals &&
+            linearField(samples, unitField, linear)) {
             fitted = factor.solve(basis.transpose() * linear);
         }
     }

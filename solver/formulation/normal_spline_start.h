@@ -28,7 +28,8 @@ bool isDevelopableStart(const model::Strip& strip);
 model::SplineSpace normalSplineSpace(const model::SplineSpace& curves, bool exact);
 
 // A strip that is not developable at the start gets the least-squares fit of its unit normals
-// N/|N| at the samples in its normal spline's space, unless they are noisy: where that fit misses
+// N/|N| at the samples in its normal spline's space, unless they are noisy (and the caller asks
+// for it: sessions do, FormulationOptions::linearNoisyStartNormals): where that fit misses
 // them by kNoisyStartNormals or more (root mean square of the difference, about an angle in rad),
 // the best linear field p + u q to them is fitted instead (linear fields lie in every spline
 // space). The noise of a rough start grows in the curves' derivatives, and the first step then
@@ -56,8 +57,10 @@ inline constexpr double kLinearStartNormalMinimum = 0.25;
 // points are ignored), fitted by least squares to N(u) = a′ × (b − a) at `samples`, whose
 // last two values must be u = 0 and u = 1 (an exact fit of N is scaled to |n(0)| = 1, only
 // if the strip is `developable`: isDevelopableStart(strip), which the caller has at hand).
+// `linearIfNoisy`: noisy unit normals get their best linear field (kNoisyStartNormals).
 std::vector<model::Vec3> fitStartNormals(const model::Strip& strip,
                                          const model::BSplineCurve& normalCurve,
-                                         const std::vector<double>& samples, bool developable);
+                                         const std::vector<double>& samples, bool developable,
+                                         bool linearIfNoisy);
 
 } // namespace devsurf::solver

@@ -349,7 +349,8 @@ struct SurfaceFormulation::Builder {
         samples.push_back(0.0);
         samples.push_back(1.0);
         const std::vector<Vec3> fitted =
-            fitStartNormals(strip, normalCurve, samples, developableStarts.count(strip.face) != 0);
+            fitStartNormals(strip, normalCurve, samples, developableStarts.count(strip.face) != 0,
+                            options.linearNoisyStartNormals);
         const model::BSplineCurve startNormal = model::BSplineCurve::uniform(space, fitted);
         const bool unitAtStart =
             startNormal.evaluate(0.0).norm() >= 1e-3 * startNormal.evaluate(1.0).norm();

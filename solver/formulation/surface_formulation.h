@@ -68,6 +68,11 @@ struct FormulationOptions {
     // the diameter; sessions use kSessionControlSpacingUnit.
     double controlSpacingUnit = 0.0;
 
+    // Noisy unit normals of a strip that is not developable at the start are replaced by their
+    // best linear field (fitStartNormals, kNoisyStartNormals). Off by default, the paper's
+    // configuration the benchmark times; sessions turn it on.
+    bool linearNoisyStartNormals = false;
+
     // Guards against degenerate solutions, relative to the reference state (the start of the
     // solve, see setReferenceState): every sampled ruling |a(u) − b(u)| stays at least
     // rulingGuard times its reference length, and every sampled curve speed |a′(u)| at least

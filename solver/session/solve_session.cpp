@@ -71,6 +71,7 @@ bool nearlyValid(const model::CompositeSurface& surface) {
 FormulationOptions defaultSessionFormulationOptions() {
     FormulationOptions options;
     options.controlSpacingUnit = kSessionControlSpacingUnit;
+    options.linearNoisyStartNormals = true;
     options.vertexDevelopability = true;
     // Kept at the stars where it holds at the session's start (a valid design, a drag from
     // one), not imposed on a rough start: measured from 0.1 % noise (10 iterations, 4 seeds),

@@ -395,7 +395,8 @@ private slots:
         // kNoisyStartNormals, and such a strip starts from the best linear field. The cylinder
         // shaken by 0.01 %, whose normals turn smoothly along its strips, keeps the fit that
         // follows them.
-        auto startNormals = [](const model::CompositeSurface& surface, const model::Strip& strip) {
+        auto startNormals = [](const model::CompositeSurface& surface, const model::Strip& strip,
+                               bool linearIfNoisy = true) {
             const int intervals = surface.edge(strip.aSide.edge).space.intervals;
             std::vector<double> samples = collocationValues(intervals, 3 * strip.a.degree() - 2);
             samples.push_back(0.0);
@@ -405,7 +406,8 @@ private slots:
             const model::BSplineCurve curve = model::BSplineCurve::uniform(
                 space, std::vector<model::Vec3>(space.controlPointCount(false)));
             return model::BSplineCurve::uniform(
-                space, fitStartNormals(strip, curve, samples, isDevelopableStart(strip)));
+                space,
+                fitStartNormals(strip, curve, samples, isDevelopableStart(strip), linearIfNoisy));
         };
         auto linear = [](const model::BSplineCurve& n) {
             double off = 0.0;
@@ -423,6 +425,8 @@ private slots:
         for (const model::Strip& strip : strips) {
             QVERIFY(!isDevelopableStart(strip));
             linearStrips += linear(startNormals(annulus, strip)) ? 1 : 0;
+            // Not asked for (the paper's configuration): the fit of the noisy normals.
+            QVERIFY(!linear(startNormals(annulus, strip, false)));
         }
         // Measured: 32 of 48.
         QVERIFY2(linearStrips >= static_cast<int>(strips.size()) / 2,
