@@ -239,7 +239,8 @@ double stateUnit(const model::CompositeSurface& surface, double diameter,
 
 // Turns a composite surface into a guided-projection problem (§3.1, §3.2) and writes solutions
 // back. Variables, all in coordinates normalised to the surface's diameter (centre at the
-// origin, diameter 1) so that weights and ε₂ do not depend on the model's units:
+// origin, diameter 1; on fine designs to their control spacing, see controlSpacingUnit) so that
+// weights and ε₂ do not depend on the model's units:
 //   "points"            every coarse vertex and every interior S-edge control point, once;
 //   "normalControls"    a cubic C² normal spline per strip (SRSR, SRS);
 //   "coneNormals"       unit normals of every cone at its interval ends;

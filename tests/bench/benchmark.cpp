@@ -201,12 +201,12 @@ ModelResult runModel(const BenchModel& model, const BenchmarkOptions& options, d
     std::string error;
     // measureQuality samples the surface, which needs a valid one: a result with a collapsed
     // ruling is reported by its status instead.
-    if (formulation.writeBack(bestState, result, &error) && result.validate().empty()) {
-        r.quality = solver::measureQuality(result);
-    } else if (error.empty()) {
-        r.status = "degenerate result: " + result.validate().front();
-    } else {
+    if (!formulation.writeBack(bestState, result, &error)) {
         r.status = error;
+    } else if (const std::vector<std::string> problems = result.validate(); !problems.empty()) {
+        r.status = "degenerate result: " + problems.front();
+    } else {
+        r.quality = solver::measureQuality(result);
     }
     log(r.name + ": ours " + number(r.ours.total) + " ms/iteration, residual " +
         number(r.finalResidual));
