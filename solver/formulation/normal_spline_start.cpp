@@ -135,10 +135,10 @@ std::vector<Vec3> fitStartNormals(const model::Strip& strip, const model::BSplin
     if (!exactFit) {
         fitted = factor.solve(basis.transpose() * unitField);
         // Noise (kNoisyStartNormals): the best linear field instead.
-        const double misfit =
-            std::sqrt((basis * fitted - unitField).squaredNorm() / static_cast<double>(rowCount));
         Eigen::MatrixXd linear;
-        if (linearIfNoisy && misfit >= kNoisyStartNormals &&
+        if (linearIfNoisy &&
+            (basis * fitted - unitField).squaredNorm() >=
+                kNoisyStartNormals * kNoisyStartNormals * static_cast<double>(rowCount) &&
             linearField(samples, unitField, linear)) {
             fitted = factor.solve(basis.transpose() * linear);
         }

@@ -45,6 +45,32 @@ Problem constraintAndTargets(TermRole role, double weight) {
     return p;
 }
 
+// The normal equations of `p` at x = 0, filled in place with ε₁, ε₂ and μ: their upper
+// triangle (original order) and right-hand side, and whether the fill equals the scratch
+// assembly.
+struct FilledEquations {
+    NormalEquations equations;
+    std::vector<double> values;
+    std::vector<double> rhs;
+    Eigen::SparseMatrix<double> matrix;
+    bool matchesScratch = false;
+};
+
+void fillAtZero(const Problem& p, double eps1, double eps2, double mu, FilledEquations& out) {
+    const double x[3] = {0.0, 0.0, 0.0};
+    if (!out.equations.build(p, nullptr) || !out.equations.evaluate(p, x)) {
+        return;
+    }
+    out.values.assign(static_cast<std::size_t>(out.equations.normalNonZeros()), 0.0);
+    out.rhs.assign(3, 0.0);
+    out.equations.fill(p, eps1, eps2, out.values.data(), out.rhs.data(), mu);
+    Eigen::SparseMatrix<double> scratch;
+    Eigen::VectorXd scratchRhs;
+    out.equations.assembleFromScratch(p, eps1, eps2, scratch, scratchRhs, mu);
+    out.matrix = out.equations.toOriginalUpper(out.values.data());
+    out.matchesScratch = Eigen::SparseMatrix<double>(out.matrix - scratch).norm() <= 1e-15;
+}
+
 // The configuration measured for rough starts (useRoughStartConfiguration).
 Options roughStartOptions() {
     FormulationOptions unused;
@@ -117,21 +143,16 @@ private slots:
         // One constraint row and a proximity family: the refilled normal equations equal the
         // scratch assembly, and the proximity rows enter with weight w · μ.
         const Problem p = constraintAndTargets(TermRole::Proximity, 2.0);
-        NormalEquations equations;
-        QVERIFY(equations.build(p, nullptr));
-        const double x[3] = {0.0, 0.0, 0.0};
-        QVERIFY(equations.evaluate(p, x));
-        QCOMPARE(equations.energy(), 0.0); // proximity is neither constraint nor energy
-        std::vector<double> values(static_cast<std::size_t>(equations.normalNonZeros()));
-        std::vector<double> rhs(3);
         const double mu = 0.3;
         const double eps2 = 0.01;
-        equations.fill(p, 0.0, eps2, values.data(), rhs.data(), mu);
-        Eigen::SparseMatrix<double> scratch;
-        Eigen::VectorXd scratchRhs;
-        equations.assembleFromScratch(p, 0.0, eps2, scratch, scratchRhs, mu);
-        const Eigen::SparseMatrix<double> refilled = equations.toOriginalUpper(values.data());
-        QVERIFY(Eigen::SparseMatrix<double>(refilled - scratch).norm() <= 1e-15);
+        FilledEquations filled;
+        fillAtZero(p, 0.0, eps2, mu, filled);
+        NormalEquations& equations = filled.equations;
+        QCOMPARE(equations.energy(), 0.0); // proximity is neither constraint nor energy
+        QVERIFY(filled.matchesScratch);
+        const Eigen::SparseMatrix<double>& refilled = filled.matrix;
+        std::vector<double>& values = filled.values;
+        std::vector<double>& rhs = filled.rhs;
         const double w2 = (2.0 * mu) * (2.0 * mu);
         QVERIFY(std::abs(refilled.coeff(0, 0) - (1.0 + w2 + eps2 * eps2)) < 1e-15);
         QVERIFY(std::abs(refilled.coeff(1, 1) - (w2 + eps2 * eps2)) < 1e-15);
@@ -149,22 +170,16 @@ private slots:
         // the refilled equations, the scratch assembly and a right-hand side alone; it is
         // neither constraint nor energy.
         const Problem p = constraintAndTargets(TermRole::Damping, 30.0);
-        NormalEquations equations;
-        QVERIFY(equations.build(p, nullptr));
-        const double x[3] = {0.0, 0.0, 0.0};
-        QVERIFY(equations.evaluate(p, x));
-        QCOMPARE(equations.energy(), 0.0);
-        QCOMPARE(equations.constraintMerit(), 1.0);
-        std::vector<double> values(static_cast<std::size_t>(equations.normalNonZeros()));
-        std::vector<double> rhs(3);
         const double eps1 = 0.1;
         const double eps2 = 0.01;
-        equations.fill(p, eps1, eps2, values.data(), rhs.data(), 0.7);
-        Eigen::SparseMatrix<double> scratch;
-        Eigen::VectorXd scratchRhs;
-        equations.assembleFromScratch(p, eps1, eps2, scratch, scratchRhs, 0.7);
-        const Eigen::SparseMatrix<double> refilled = equations.toOriginalUpper(values.data());
-        QVERIFY(Eigen::SparseMatrix<double>(refilled - scratch).norm() <= 1e-15);
+        FilledEquations filled;
+        fillAtZero(p, eps1, eps2, 0.7, filled);
+        NormalEquations& equations = filled.equations;
+        QCOMPARE(equations.energy(), 0.0);
+        QCOMPARE(equations.constraintMerit(), 1.0);
+        QVERIFY(filled.matchesScratch);
+        const Eigen::SparseMatrix<double>& refilled = filled.matrix;
+        const std::vector<double>& rhs = filled.rhs;
         const double w2 = (30.0 * eps2) * (30.0 * eps2);
         QVERIFY(std::abs(refilled.coeff(0, 0) - (1.0 + w2 + eps2 * eps2)) < 1e-15);
         QVERIFY(std::abs(refilled.coeff(2, 2) - (w2 + eps2 * eps2)) < 1e-15);
