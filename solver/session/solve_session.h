@@ -35,9 +35,9 @@ bool nearlyValid(const model::CompositeSurface& surface);
 // segments 0.0078 of the diameter; 10 seeds) from 10 % edge noise, diameter as unit → this:
 // det worst 2.2e-4 after 20 iterations (3 seeds), rulings 0.000, every development
 // overlapping → 8.1e-12 (1.7e-7 after 10), rulings 0.69, speeds 0.55, none overlapping. (With
-// the linear start normals of noisy strips, kNoisyStartNormals: median 1.4e-13, worst 1.9e-10 on
-// one seed whose ε₂ stays at the floor a failed factorisation set.) From 1 % of its diameter
-// (noise 1.3 times its control spacing) it crumples either way.
+// the linear start normals of noisy strips, kNoisyStartNormals, and the floor a failed
+// factorisation leaves on ε₂ at twice the failed value: median 9.8e-14, worst 1.9e-13.)
+// From 1 % of its diameter (noise 1.3 times its control spacing) it crumples either way.
 constexpr double kSessionControlSpacingUnit = 0.035;
 
 // FormulationOptions::vertexStartDefectLimit of a session in which nothing is pulled and whose

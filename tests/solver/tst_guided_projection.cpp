@@ -2,6 +2,7 @@
 
 #include "solver/core/blas_info.h"
 #include "solver/core/guided_projection.h"
+#include "solver/core/linear_term.h"
 #include "solver/core/minimum_length_term.h"
 #include "solver/core/normal_equations.h"
 
@@ -195,6 +196,36 @@ private slots:
         const Summary again = solver.solve(p, x, options);
         QVERIFY(std::none_of(again.iterations.begin(), again.iterations.end(),
                              [](const IterationStats& it) { return it.repeated; }));
+    }
+
+    void failedEps2FloorRisesGradually() {
+        // One row w (x₀ − x₁) = w with w = 1e4: N = w² [1 −1; −1 1] + ε₂² I has the pivots
+        // w² + ε₂² and 2ε₂² in exact arithmetic, but in double precision ε₂² vanishes beside
+        // w² = 1e8 below half its ulp (ε₂ < 8.6e-5), and the second pivot is then zero.
+        Problem p;
+        p.addVariableBlock("x", 2);
+        auto row = std::make_unique<LinearTerm>();
+        row->addRow({{0, 1e4}, {1, -1e4}}, 1e4);
+        p.add(p.addFamily("difference", TermRole::Constraint), std::move(row));
+        std::vector<double> x{0.0, 0.0};
+        Options options;
+        options.eps1Iterations = 0;
+        options.eps2Minimum = 8e-6;
+        options.maxIterations = 12;
+        GuidedProjection solver;
+        const Summary s = solver.solve(p, x, options);
+        QVERIFY2(s.succeeded(), s.briefReport().c_str());
+        QVERIFY(std::abs(x[0] - x[1] - 1.0) < 1e-12);
+        // Each failure is repeated with the configured ε₂ and raises the floor to twice the
+        // failed value: 8e-6, 1.6e-5, 3.2e-5 and 6.4e-5 fail, 1.28e-4 factorises and is kept
+        // (within twice the smallest value that factorises; a tenfold floor went from 8e-5
+        // to the configured 1e-3).
+        const auto repeated = std::count_if(s.iterations.begin(), s.iterations.end(),
+                                            [](const IterationStats& it) { return it.repeated; });
+        QCOMPARE(repeated, 4);
+        const IterationStats& last = s.iterations.back();
+        QVERIFY(!last.repeated);
+        QVERIFY2(std::abs(last.eps2 - 16 * 8e-6) < 1e-15, std::to_string(last.eps2).c_str());
     }
 
     void circleConverges_data() {
