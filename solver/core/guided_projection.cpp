@@ -102,9 +102,9 @@ struct GuidedProjection::Impl {
     std::vector<double> xNew;
     std::vector<double> step;
     std::vector<double> rhs;
-    // The smallest adaptive ε₂ worth trying on this structure: raised tenfold above a value
-    // whose factorisation failed (see the retry in solve()), so that a solve or a drag does not
-    // factorise twice in every iteration.
+    // The smallest adaptive ε₂ worth trying on this structure: raised to kEps2FloorFactor
+    // times a value whose factorisation failed (see the retry in solve()), so that a solve or a
+    // drag does not factorise twice in every iteration.
     double eps2Floor = 0.0;
     // The last factorisation, while it may be reused (Options::reuseFactorization): the
     // Jacobian values it was made from, the fixed variables then, and how many steps in a row
