@@ -106,6 +106,10 @@ struct GuidedProjection::Impl {
     // times a value whose factorisation failed (see the retry in solve()), so that a solve or a
     // drag does not factorise twice in every iteration.
     double eps2Floor = 0.0;
+    // The factor by which rejected steps raised ε₂ (Options::levenbergMarquardt,
+    // rejectWorseSteps), kept between solve() calls so that a session's step(1) continues
+    // where the last one stopped.
+    double eps2Boost = 1.0;
     // The last factorisation, while it may be reused (Options::reuseFactorization): the
     // Jacobian values it was made from, the fixed variables then, and how many steps in a row
     // have reused it.
@@ -118,6 +122,7 @@ struct GuidedProjection::Impl {
         equations = NormalEquations();
         analysed = false;
         eps2Floor = 0.0;
+        eps2Boost = 1.0;
         factorReusable = false;
     }
 
@@ -408,6 +413,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
     if (!reusable) {
         d.analysed = false;
         d.eps2Floor = 0.0;
+        d.eps2Boost = 1.0;
         d.factorReusable = false;
         std::string error;
         if (!d.equations.build(problem, &error)) {
@@ -450,7 +456,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         summary.iterations.reserve(static_cast<std::size_t>(std::max(0, options.maxIterations)));
     }
 
-    double eps2Boost = 1.0; // raised by rejected steps (rejectWorseSteps)
+    double& eps2Boost = d.eps2Boost;
     for (int iteration = 0; iteration < options.maxIterations; ++iteration) {
         if (options.cancel && options.cancel->load()) {
             summary.status = Status::Cancelled;

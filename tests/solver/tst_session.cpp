@@ -10,6 +10,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstring>
@@ -37,10 +38,20 @@ class TstSolveSession : public QObject {
     Q_OBJECT
 
 private slots:
+    void stepOneTenTimesEqualsStepTen_data() {
+        QTest::addColumn<bool>("levenbergMarquardt");
+        QTest::newRow("session defaults") << false;
+        // Rejected steps raise ε₂ for the next one, also across step() calls.
+        QTest::newRow("Levenberg-Marquardt") << true;
+    }
+
     void stepOneTenTimesEqualsStepTen() {
+        QFETCH(bool, levenbergMarquardt);
         const model::CompositeSurface start = roughAnnulus();
-        SolveSession one(start, {});
-        SolveSession ten(start, {});
+        SessionOptions options;
+        options.solver.levenbergMarquardt = levenbergMarquardt;
+        SolveSession one(start, {}, options);
+        SolveSession ten(start, {}, options);
         for (int i = 0; i < 10; ++i) {
             const Summary summary = one.step(1);
             QVERIFY(summary.succeeded());
@@ -54,6 +65,11 @@ private slots:
         QVERIFY(one.surface() == ten.surface());
         QVERIFY(!(one.surface() == start));
         QVERIFY(summary.finalMaxConstraintResidual < summary.initialMaxConstraintResidual);
+        if (levenbergMarquardt) {
+            // A step was rejected before the last, so a later one depended on its boost.
+            QVERIFY(std::any_of(summary.iterations.begin(), summary.iterations.end() - 1,
+                                [](const IterationStats& it) { return it.rejected; }));
+        }
     }
 
     void largeDragsReuseEveryOtherFactorizationUntilReleased() {
