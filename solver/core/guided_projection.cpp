@@ -80,9 +80,10 @@ namespace {
 // tried again. A floor too high stalls the convergence where the Jacobian is nearly singular:
 // devsurf-bench --study large-annulus --session from 10 % edge noise, seed 20150806, failed at
 // 1.9e-6 in iteration 12, and with a floor of ten times that stayed at det 1.9e-10 for the
-// remaining 8 iterations (the residual shrank by 1 % per iteration); with twice that: 3.1e-14, all
-// 10 seeds 1.9e-13. Repeated factorisations, ten → two: none in the examples' study, 1 → 2 in the
-// drag benchmark, in the large annulus's 10 seeds and in Solve of the valid annulus.
+// remaining 8 iterations (the residual shrank by 1 % per iteration); with twice that: 3.1e-14,
+// all 10 seeds within 1.9e-13. Factorisations repeated after a failure, factor ten → two: none
+// in the examples' study either way, 1 → 2 in the drag benchmark, in the large annulus's 10
+// seeds and in Solve of the valid annulus.
 constexpr double kEps2FloorFactor = 2.0;
 
 using Clock = std::chrono::steady_clock;
