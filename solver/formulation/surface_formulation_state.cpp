@@ -29,6 +29,9 @@ std::string str(std::uint32_t id) {
     return std::to_string(id);
 }
 
+// Lengths below this (in the state's coordinates) are treated as zero: no guard, no scale.
+constexpr double kNegligibleLength = 1e-9;
+
 } // namespace
 
 void useRoughStartConfiguration(FormulationOptions& formulation, Options& solver) {
@@ -180,12 +183,11 @@ void SurfaceFormulation::rebaseIsometry(const std::vector<double>& x) {
     // by them, a model of a few long segments (two cubic strips of one interval each) stopped
     // converging where one of many short ones needed that weight.
     const bool damping = isometryDamps();
-    constexpr double kNegligible = 1e-9; // in coordinates of diameter 1
     for (int row = 0; row < m_isometry->rowCount(); ++row) {
         const double length = m_isometry->leftLength(row, x.data());
         m_isometry->setSquaredDistance(row, length * length);
         if (damping) {
-            m_isometry->setRowScale(row, length > kNegligible ? 0.5 / length : 0.0);
+            m_isometry->setRowScale(row, length > kNegligibleLength ? 0.5 / length : 0.0);
         }
     }
 }
@@ -247,12 +249,11 @@ void SurfaceFormulation::setReferenceState(const std::vector<double>& x) {
     }
     // Rulings: a fraction of their reference length. Rulings of (nearly) zero length, such as
     // the pointed end of an SRS face, get no guard.
-    constexpr double kNegligible = 1e-9; // in coordinates of diameter 1
     if (m_rulingGuard) {
         for (int row = 0; row < m_rulingGuard->rowCount(); ++row) {
             const double length = m_rulingGuard->length(row, x.data());
-            m_rulingGuard->setMinimum(row,
-                                      length > kNegligible ? m_options.rulingGuard * length : 0.0);
+            m_rulingGuard->setMinimum(
+                row, length > kNegligibleLength ? m_options.rulingGuard * length : 0.0);
         }
     }
     // Speeds: a fraction of the smaller of the reference speed there and the curve's mean
@@ -268,8 +269,8 @@ void SurfaceFormulation::setReferenceState(const std::vector<double>& x) {
             const double mean = end > begin ? sum / (end - begin) : 0.0;
             for (int row = begin; row < end; ++row) {
                 const double speed = std::min(m_speedGuard->length(row, x.data()), mean);
-                m_speedGuard->setMinimum(row,
-                                         speed > kNegligible ? m_options.speedGuard * speed : 0.0);
+                m_speedGuard->setMinimum(
+                    row, speed > kNegligibleLength ? m_options.speedGuard * speed : 0.0);
             }
         }
     }
