@@ -2601,7 +2601,7 @@
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="534"/>
+        <location filename="../views/scene_view.cpp" line="547"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>Fläche %1 ist ungültig und wird nicht angezeigt.</translation>
     </message>
@@ -2664,40 +2664,45 @@
 <context>
     <name>devsurf::views::ViewOverlay</name>
     <message>
-        <location filename="../views/view_overlay.cpp" line="55"/>
+        <location filename="../views/view_overlay.cpp" line="69"/>
         <source>CF</source>
         <comment>badge: curved fold</comment>
         <translation>GF</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="57"/>
+        <location filename="../views/view_overlay.cpp" line="71"/>
         <source>G</source>
         <comment>badge: geodesic</comment>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="59"/>
+        <location filename="../views/view_overlay.cpp" line="73"/>
         <source>SU</source>
         <comment>badge: straight when unfolded</comment>
         <translation>GA</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="115"/>
+        <location filename="../views/view_overlay.cpp" line="130"/>
         <source>Mountain fold</source>
         <translation>Bergfalte</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="118"/>
+        <location filename="../views/view_overlay.cpp" line="134"/>
         <source>Valley fold</source>
         <translation>Talfalte</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="125"/>
+        <location filename="../views/view_overlay.cpp" line="138"/>
+        <source>Crease, not folded</source>
+        <translation>Falz, nicht gefaltet</translation>
+    </message>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="147"/>
         <source>Smooth ruling</source>
         <translation>Glatte Erzeugende</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="128"/>
+        <location filename="../views/view_overlay.cpp" line="150"/>
         <source>Sharp ruling</source>
         <translation>Scharfe Erzeugende</translation>
     </message>

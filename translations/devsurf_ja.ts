@@ -2559,7 +2559,7 @@
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="534"/>
+        <location filename="../views/scene_view.cpp" line="547"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>曲面 %1 は有効でないため表示されません。</translation>
     </message>
@@ -2622,40 +2622,45 @@
 <context>
     <name>devsurf::views::ViewOverlay</name>
     <message>
-        <location filename="../views/view_overlay.cpp" line="55"/>
+        <location filename="../views/view_overlay.cpp" line="69"/>
         <source>CF</source>
         <comment>badge: curved fold</comment>
         <translation>曲</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="57"/>
+        <location filename="../views/view_overlay.cpp" line="71"/>
         <source>G</source>
         <comment>badge: geodesic</comment>
         <translation>測</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="59"/>
+        <location filename="../views/view_overlay.cpp" line="73"/>
         <source>SU</source>
         <comment>badge: straight when unfolded</comment>
         <translation>直</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="115"/>
+        <location filename="../views/view_overlay.cpp" line="130"/>
         <source>Mountain fold</source>
         <translation>山折り</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="118"/>
+        <location filename="../views/view_overlay.cpp" line="134"/>
         <source>Valley fold</source>
         <translation>谷折り</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="125"/>
+        <location filename="../views/view_overlay.cpp" line="138"/>
+        <source>Crease, not folded</source>
+        <translation>折れていない折り線</translation>
+    </message>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="147"/>
         <source>Smooth ruling</source>
         <translation>滑らかな母線</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="128"/>
+        <location filename="../views/view_overlay.cpp" line="150"/>
         <source>Sharp ruling</source>
         <translation>鋭角の母線</translation>
     </message>

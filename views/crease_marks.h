@@ -22,4 +22,17 @@ std::vector<ConditionMark> conditionMarks(const std::vector<SurfaceScene>& scene
 // The point half way along a polyline by length (its first point if it has no length).
 model::Vec3 midpointByLength(const std::vector<model::Vec3>& points);
 
+// How the views draw folds, in the origami convention the printed cutting pattern follows:
+// mountain dash-dot, valley dashed, a crease that is not folded solid. Lengths dash, gap,
+// dash, gap… in units of kFoldDashUnitPixels on screen; empty for a solid line.
+constexpr double kFoldDashUnitPixels = 4.0;
+std::vector<double> foldDashes(model::FoldAssignment fold);
+
+// The dashes of polylines: pattern holds the lengths (scene units, all positive) of dash, gap,
+// dash, gap…, repeated along every polyline from its start. The lines themselves if the
+// pattern is empty, odd or not positive.
+std::vector<std::vector<model::Vec3>>
+dashedPolylines(const std::vector<std::vector<model::Vec3>>& lines,
+                const std::vector<double>& pattern);
+
 } // namespace devsurf::views

@@ -123,14 +123,17 @@ SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
     lineStyle(*m_smoothRulings, smooth.redF(), smooth.greenF(), smooth.blueF(), 3.0, false);
     m_splineEdges = &addLayer();
     lineStyle(*m_splineEdges, 0.15, 0.15, 0.15, 2.5, false);
-    // Creases: the folds the design is about, thicker and darker than everything else.
-    m_creases = &addLayer();
-    lineStyle(*m_creases, 0.55, 0.0, 0.1, 4.0, spatial);
-    // Folded creases in the origami colours: mountain red, valley blue.
-    m_mountains = &addLayer();
-    lineStyle(*m_mountains, 0.9, 0.1, 0.1, 4.0, spatial);
-    m_valleys = &addLayer();
-    lineStyle(*m_valleys, 0.1, 0.35, 0.95, 4.0, spatial);
+    // Creases: the folds the design is about, thicker and darker than everything else; folded
+    // ones in the origami colours and dashes (mountain red dash-dot, valley blue dashed).
+    auto foldStyle = [&](model::FoldAssignment fold) {
+        Layer& layer = addLayer();
+        const QColor colour = ViewOverlay::foldColour(fold);
+        lineStyle(layer, colour.redF(), colour.greenF(), colour.blueF(), 4.0, spatial);
+        return &layer;
+    };
+    m_creases = foldStyle(model::FoldAssignment::Flat);
+    m_mountains = foldStyle(model::FoldAssignment::Mountain);
+    m_valleys = foldStyle(model::FoldAssignment::Valley);
     m_controlPolygons = &addLayer();
     lineStyle(*m_controlPolygons, 0.1, 0.3, 0.95, 1.5, false);
     m_controlPoints = &addLayer();
@@ -292,9 +295,10 @@ void SceneRenderer::setScenes(std::shared_ptr<const SceneSet> scenes, bool geome
     m_conditionMarks = views::conditionMarks(m_set->scenes);
     m_splineEdges->assign(polylineData(splineEdges), geometryOnly);
     m_creases->assign(polylineData(creases), geometryOnly);
-    m_mountains->assign(polylineData(mountains), geometryOnly);
-    m_valleys->assign(polylineData(valleys), geometryOnly);
     m_foldCounts = {static_cast<int>(mountains.size()), static_cast<int>(valleys.size())};
+    m_flatCreases = static_cast<int>(creases.size());
+    m_mountainLines = std::move(mountains);
+    m_valleyLines = std::move(valleys);
     m_rulings->assign(segmentData(rulings), geometryOnly);
     m_outline->assign(segmentData(outline), geometryOnly);
     m_overlapOutline->assign(segmentData(overlapOutline), geometryOnly);
@@ -318,11 +322,54 @@ void SceneRenderer::setScenes(std::shared_ptr<const SceneSet> scenes, bool geome
         diagonal = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
     }
     m_sceneSize = diagonal > 0.0 ? diagonal : 1.0;
+    // The folds are dashed as last drawn (the zoom is unchanged, so are the dashes' lengths);
+    // updateFoldDashes() follows the zoom.
+    if (m_dashUnit <= 0.0) {
+        m_dashUnit = currentDashUnit();
+    }
+    drawFolds();
 
     if (m_quality) {
         m_quality->update(m_set->scenes);
     }
     rebuildHighlight();
+}
+
+double SceneRenderer::currentDashUnit() const {
+    const double perUnit = pixelsPerUnit();
+    const double unit = perUnit > 0.0 && std::isfinite(perUnit) ? kFoldDashUnitPixels / perUnit
+                                                                : m_sceneSize / 300.0;
+    return std::max(unit, m_sceneSize / 2000.0);
+}
+
+void SceneRenderer::drawFolds() {
+    auto dashes = [this](model::FoldAssignment fold) {
+        std::vector<double> pattern = foldDashes(fold);
+        for (double& length : pattern) {
+            length *= m_dashUnit;
+        }
+        return pattern;
+    };
+    m_mountains->assign(
+        polylineData(dashedPolylines(m_mountainLines, dashes(model::FoldAssignment::Mountain))),
+        false);
+    m_valleys->assign(
+        polylineData(dashedPolylines(m_valleyLines, dashes(model::FoldAssignment::Valley))), false);
+}
+
+bool SceneRenderer::updateFoldDashes() {
+    const double unit = currentDashUnit();
+    if (unit > 0.8 * m_dashUnit && unit < 1.25 * m_dashUnit) {
+        return false;
+    }
+    m_dashUnit = unit;
+    drawFolds();
+    return true;
+}
+
+std::pair<int, int> SceneRenderer::foldDashCounts() const {
+    return {static_cast<int>(m_mountains->data->GetNumberOfCells()),
+            static_cast<int>(m_valleys->data->GetNumberOfCells())};
 }
 
 void SceneRenderer::setSelection(const std::set<Pick>& picks) {

@@ -45,6 +45,15 @@ public:
     const std::set<document::Pick>& pinnedDrawn() const { return m_pinnedDrawn; }
     // Mountain and valley creases drawn (for the fold legend and tests).
     std::pair<int, int> foldCounts() const { return m_foldCounts; }
+    // Creases drawn that are not folded (solid, in the crease colour).
+    int flatCreaseCount() const { return m_flatCreases; }
+    // Redraws the dashes of the folds (foldDashes) if the zoom changed their length on screen
+    // by more than a quarter since they were drawn; called before every render. True if it did.
+    bool updateFoldDashes();
+    // The length in scene units of one unit of the fold dash patterns, as last drawn; and the
+    // number of dashes drawn for mountains and for valleys (tests).
+    double foldDashUnit() const { return m_dashUnit; }
+    std::pair<int, int> foldDashCounts() const;
     // The creases with a condition (drawn as badges by the view's overlay).
     const std::vector<ConditionMark>& conditionMarks() const { return m_conditionMarks; }
     // Rulings between two patches drawn smooth (light) and sharp (dark).
@@ -114,6 +123,14 @@ private:
     Layer* m_mountains = nullptr;
     Layer* m_valleys = nullptr;
     std::pair<int, int> m_foldCounts; // mountain and valley creases drawn
+    int m_flatCreases = 0;
+    std::vector<std::vector<model::Vec3>> m_mountainLines; // undashed
+    std::vector<std::vector<model::Vec3>> m_valleyLines;
+    double m_dashUnit = 0.0; // scene units per dash unit, 0 before the first drawing
+    // The dash unit for the current camera (kFoldDashUnitPixels on screen, at least 1/2000 of
+    // the scene's size so that a close zoom cannot multiply the dashes without bound).
+    double currentDashUnit() const;
+    void drawFolds();
     Layer* m_rulings = nullptr;
     Layer* m_outline = nullptr;
     Layer* m_overlapOutline = nullptr; // development: pieces that overlap, in red

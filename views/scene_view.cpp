@@ -134,13 +134,18 @@ SceneView::SceneView(Kind kind, document::Document* document, document::Selectio
         d->triad->AddActor(axes);
         d->gl->renderWindow()->SetNumberOfLayers(2);
         d->gl->renderWindow()->AddRenderer(d->triad);
-        d->startObserver = vtkSmartPointer<vtkCallbackCommand>::New();
-        d->startObserver->SetClientData(this);
-        d->startObserver->SetCallback([](vtkObject*, unsigned long, void* view, void*) {
-            static_cast<SceneView*>(view)->syncTriadCamera();
-        });
-        d->startTag = d->renderer->AddObserver(vtkCommand::StartEvent, d->startObserver);
     }
+    // Before every render: the triad follows the camera, the folds' dashes the zoom.
+    d->startObserver = vtkSmartPointer<vtkCallbackCommand>::New();
+    d->startObserver->SetClientData(this);
+    d->startObserver->SetCallback([](vtkObject*, unsigned long, void* view, void*) {
+        auto* self = static_cast<SceneView*>(view);
+        if (self->d->triad != nullptr) {
+            self->syncTriadCamera();
+        }
+        self->d->scene->updateFoldDashes();
+    });
+    d->startTag = d->renderer->AddObserver(vtkCommand::StartEvent, d->startObserver);
     d->endObserver = vtkSmartPointer<vtkCallbackCommand>::New();
     d->endObserver->SetClientData(this);
     d->endObserver->SetCallback([](vtkObject*, unsigned long, void* view, void*) {
@@ -299,6 +304,14 @@ std::pair<bool, bool> SceneView::foldLegend() const {
     return {d->overlay->showsMountainLegend(), d->overlay->showsValleyLegend()};
 }
 
+std::pair<int, int> SceneView::foldDashesDrawn() const {
+    return d->scene->foldDashCounts();
+}
+
+double SceneView::foldDashUnit() const {
+    return d->scene->foldDashUnit();
+}
+
 std::vector<ViewOverlay::Badge> SceneView::conditionBadges() const {
     return d->overlay->badges();
 }
@@ -402,7 +415,7 @@ void SceneView::updateOverlay() {
         d->overlay->setScaleBar(0.0, QString());
     }
     const auto [mountains, valleys] = d->scene->foldCounts();
-    d->overlay->setFoldLegend(mountains > 0, valleys > 0);
+    d->overlay->setFoldLegend(mountains > 0, valleys > 0, d->scene->flatCreaseCount() > 0);
     updateBadges();
     std::vector<ViewOverlay::Label> labels;
     if (d->showLabels) {

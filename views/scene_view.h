@@ -83,6 +83,10 @@ public:
     // Mountain and valley creases drawn, and whether the fold legend shows each.
     std::pair<int, int> foldsDrawn() const;
     std::pair<bool, bool> foldLegend() const;
+    // The dashes drawn for the mountain and the valley folds, and the length of one unit of
+    // their patterns in scene units (mm) as drawn.
+    std::pair<int, int> foldDashesDrawn() const;
+    double foldDashUnit() const;
     // The badges drawn at the creases that carry a condition ("CF", "G", "SU"), those in view
     // (in 3D not where the surface hides them), at widget positions.
     std::vector<ViewOverlay::Badge> conditionBadges() const;

@@ -1,5 +1,6 @@
 #include "view_overlay.h"
 
+#include "crease_marks.h"
 #include "model/document/commands/crease_condition_command.h"
 
 #include <QFontMetricsF>
@@ -41,12 +42,25 @@ void ViewOverlay::setLabels(std::vector<Label> labels) {
     }
 }
 
-void ViewOverlay::setFoldLegend(bool mountains, bool valleys) {
-    if (mountains != m_mountains || valleys != m_valleys) {
+void ViewOverlay::setFoldLegend(bool mountains, bool valleys, bool flat) {
+    if (mountains != m_mountains || valleys != m_valleys || flat != m_flatCreases) {
         m_mountains = mountains;
         m_valleys = valleys;
+        m_flatCreases = flat;
         update();
     }
+}
+
+QColor ViewOverlay::foldColour(model::FoldAssignment fold) {
+    switch (fold) {
+    case model::FoldAssignment::Mountain:
+        return {230, 25, 25};
+    case model::FoldAssignment::Valley:
+        return {25, 90, 240};
+    case model::FoldAssignment::Flat:
+        break;
+    }
+    return {140, 0, 25};
 }
 
 QString ViewOverlay::badgeText(model::CreaseCondition condition) {
@@ -111,21 +125,30 @@ void ViewOverlay::setBadges(std::vector<Badge> badges) {
 
 std::vector<ViewOverlay::LegendEntry> ViewOverlay::legend() const {
     std::vector<LegendEntry> entries;
+    using model::FoldAssignment;
     if (m_mountains) {
-        entries.push_back({QColor(230, 25, 25), QString(), tr("Mountain fold")});
+        entries.push_back({foldColour(FoldAssignment::Mountain), QString(), tr("Mountain fold"),
+                           foldDashes(FoldAssignment::Mountain)});
     }
     if (m_valleys) {
-        entries.push_back({QColor(25, 90, 240), QString(), tr("Valley fold")});
+        entries.push_back({foldColour(FoldAssignment::Valley), QString(), tr("Valley fold"),
+                           foldDashes(FoldAssignment::Valley)});
+    }
+    if (m_flatCreases) {
+        entries.push_back({foldColour(FoldAssignment::Flat), QString(), tr("Crease, not folded"),
+                           foldDashes(FoldAssignment::Flat)});
     }
     for (model::CreaseCondition condition : m_conditions) {
-        entries.push_back({badgeColour(condition), badgeText(condition),
-                           document::CreaseConditionCommand::conditionText(condition)});
+        entries.push_back({badgeColour(condition),
+                           badgeText(condition),
+                           document::CreaseConditionCommand::conditionText(condition),
+                           {}});
     }
     if (m_smoothRulings) {
-        entries.push_back({smoothRulingColour(), QString(), tr("Smooth ruling")});
+        entries.push_back({smoothRulingColour(), QString(), tr("Smooth ruling"), {}});
     }
     if (m_sharpRulings) {
-        entries.push_back({sharpRulingColour(), QString(), tr("Sharp ruling")});
+        entries.push_back({sharpRulingColour(), QString(), tr("Sharp ruling"), {}});
     }
     return entries;
 }
@@ -189,25 +212,34 @@ void ViewOverlay::paintEvent(QPaintEvent*) {
     // smooth and sharp rulings.
     double top = 10.0;
     for (const LegendEntry& entry : legend()) {
-        const QRectF box(10.0, top, 40.0 + metrics.horizontalAdvance(entry.text) + 12.0,
+        // Swatches long enough for a whole period of the mountain's dash-dot.
+        const QRectF box(10.0, top, 58.0 + metrics.horizontalAdvance(entry.text) + 10.0,
                          metrics.height() + 6.0);
         painter.setPen(Qt::NoPen);
         painter.setBrush(halo);
         painter.drawRoundedRect(box, 3, 3);
-        const QPointF swatch(box.left() + 20.0, box.center().y());
+        const QPointF swatch(box.left() + 26.0, box.center().y());
         if (!entry.badge.isEmpty()) {
             drawBadge(swatch, entry.badge, entry.colour);
         } else {
             // A line as the views draw it, on a grey ground so that a light line shows.
             painter.setBrush(QColor(170, 175, 185));
-            painter.drawRect(QRectF(swatch.x() - 15.0, swatch.y() - 4.0, 30.0, 8.0));
+            painter.drawRect(QRectF(swatch.x() - 23.0, swatch.y() - 4.0, 46.0, 8.0));
             QPen pen(entry.colour, 4.0);
             pen.setCapStyle(Qt::FlatCap);
+            if (!entry.dashes.empty()) {
+                // Qt counts dashes in pen widths.
+                QVector<qreal> dashes;
+                for (double length : entry.dashes) {
+                    dashes << length * kFoldDashUnitPixels / pen.widthF();
+                }
+                pen.setDashPattern(dashes);
+            }
             painter.setPen(pen);
-            painter.drawLine(swatch - QPointF(14.0, 0.0), swatch + QPointF(14.0, 0.0));
+            painter.drawLine(swatch - QPointF(22.0, 0.0), swatch + QPointF(22.0, 0.0));
         }
         painter.setPen(ink);
-        painter.drawText(box.adjusted(40.0, 0, 0, 0), Qt::AlignVCenter | Qt::AlignLeft, entry.text);
+        painter.drawText(box.adjusted(58.0, 0, 0, 0), Qt::AlignVCenter | Qt::AlignLeft, entry.text);
         top += box.height() + 4.0;
     }
 

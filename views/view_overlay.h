@@ -1,6 +1,7 @@
 #pragma once
 
 #include "model/composite_surface.h"
+#include "model/creases.h"
 
 #include <QColor>
 #include <QPointF>
@@ -36,6 +37,9 @@ public:
     // The badge's text ("CF", "G", "SU") and colour for a condition.
     static QString badgeText(model::CreaseCondition condition);
     static QColor badgeColour(model::CreaseCondition condition);
+    // How the views draw creases: mountain red, valley blue, not folded dark crimson (with the
+    // dashes of foldDashes).
+    static QColor foldColour(model::FoldAssignment fold);
     // How the views draw rulings between two patches: smooth ones light, sharp ones dark.
     static QColor smoothRulingColour();
     static QColor sharpRulingColour();
@@ -44,9 +48,9 @@ public:
     // none when pixels is not positive.
     void setScaleBar(double pixels, const QString& text);
     void setLabels(std::vector<Label> labels);
-    // The fold legend in the upper left corner: a red line "Mountain fold" and a blue line
-    // "Valley fold", for those present.
-    void setFoldLegend(bool mountains, bool valleys);
+    // The fold legend in the upper left corner, drawn as the views draw the lines: "Mountain
+    // fold", "Valley fold" and "Crease, not folded", for those present.
+    void setFoldLegend(bool mountains, bool valleys, bool flat = false);
     // The rest of the legend, below the folds: a badge with its condition for every condition
     // among conditions, and, when smooth rulings are drawn, a light line "Smooth ruling" and
     // (if any) a dark line "Sharp ruling".
@@ -74,11 +78,13 @@ private:
         QColor colour;
         QString badge; // a badge swatch; a line swatch when empty
         QString text;
+        std::vector<double> dashes; // the line's (foldDashes); empty: solid
     };
     std::vector<LegendEntry> legend() const;
 
     bool m_mountains = false;
     bool m_valleys = false;
+    bool m_flatCreases = false;
     std::vector<model::CreaseCondition> m_conditions;
     bool m_smoothRulings = false;
     bool m_sharpRulings = false;

@@ -3,6 +3,7 @@
 #include "model/examples.h"
 #include "side_by_side_views.h"
 #include "test_registry.h"
+#include "views/crease_marks.h"
 #include "views/development_view.h"
 #include "views/surface_view.h"
 
@@ -85,8 +86,9 @@ private slots:
             {edges.curvedFold, CreaseCondition::CurvedFold},
             {edges.geodesic, CreaseCondition::Geodesic},
             {edges.straight, CreaseCondition::Straight}};
-        const QStringList legend{"CF Curved fold", "G Geodesic", "SU Straight when unfolded",
-                                 "Smooth ruling", "Sharp ruling"};
+        // The sheet is flat: its creases are not folded.
+        const QStringList legend{"Crease, not folded",        "CF Curved fold", "G Geodesic",
+                                 "SU Straight when unfolded", "Smooth ruling",  "Sharp ruling"};
         for (SceneView* view :
              {static_cast<SceneView*>(views.spatial), static_cast<SceneView*>(views.development)}) {
             const auto badges = view->conditionBadges();
@@ -122,7 +124,7 @@ private slots:
         }
         const int whiteBefore = pixelsOf(views.spatial->grabImage(), Qt::white, 0);
 
-        // Cleared conditions and a sharp ruling: no badges, no legend entries.
+        // Cleared conditions and a sharp ruling: no badges, no legend entries but the creases.
         views.edit([&](CompositeSurface& surface) {
             for (EdgeId edge : {edges.curvedFold, edges.geodesic, edges.straight}) {
                 surface.setCreaseCondition(edge, CreaseCondition::None);
@@ -133,7 +135,7 @@ private slots:
              {static_cast<SceneView*>(views.spatial), static_cast<SceneView*>(views.development)}) {
             QVERIFY(view->conditionBadges().empty());
             QCOMPARE(view->rulingsDrawn(), std::make_pair(0, 6));
-            QVERIFY2(view->legendEntries().isEmpty(), qPrintable(view->legendEntries().join(',')));
+            QCOMPARE(view->legendEntries(), QStringList{"Crease, not folded"});
             for (const CreaseCondition condition :
                  {CreaseCondition::CurvedFold, CreaseCondition::Geodesic,
                   CreaseCondition::Straight}) {
@@ -144,6 +146,57 @@ private slots:
         const int whiteAfter = pixelsOf(views.spatial->grabImage(), Qt::white, 0);
         QVERIFY2(whiteBefore > whiteAfter + 50,
                  qPrintable(QString("%1 → %2").arg(whiteBefore).arg(whiteAfter)));
+    }
+
+    void dashedPolylinesFollowThePatternAlongTheLine() {
+        using devsurf::views::dashedPolylines;
+        // A straight line of 100 mm in three pieces (corners at 31 and 62), dashed 4 on, 2
+        // off: 17 dashes of 4 mm (the last one ends with the line); the two over a corner
+        // (30–34 and 60–64) keep it.
+        const std::vector<std::vector<Vec3>> line{
+            {Vec3(0, 0, 0), Vec3(31, 0, 0), Vec3(62, 0, 0), Vec3(100, 0, 0)}};
+        const auto dashes = dashedPolylines(line, {4.0, 2.0});
+        QCOMPARE(dashes.size(), std::size_t{17});
+        auto near = [](const Vec3& a, const Vec3& b) {
+            return devsurf::model::distance(a, b) < 1e-12;
+        };
+        int overCorners = 0;
+        for (std::size_t i = 0; i < dashes.size(); ++i) {
+            const std::vector<Vec3>& dash = dashes[i];
+            QVERIFY(dash.size() >= 2);
+            QVERIFY(near(dash.front(), Vec3(6.0 * static_cast<double>(i), 0, 0)));
+            double length = 0.0;
+            for (std::size_t k = 0; k + 1 < dash.size(); ++k) {
+                QVERIFY(dash[k + 1].x >= dash[k].x);
+                length += devsurf::model::distance(dash[k], dash[k + 1]);
+            }
+            QVERIFY2(std::abs(length - 4.0) < 1e-9, qPrintable(QString::number(length)));
+            bool overCorner = false;
+            for (const double corner : {31.0, 62.0}) {
+                overCorner = overCorner || (dash.front().x < corner && dash.back().x > corner);
+            }
+            overCorners += overCorner ? 1 : 0;
+            QCOMPARE(dash.size(), overCorner ? std::size_t{3} : std::size_t{2});
+        }
+        QCOMPARE(overCorners, 2);
+        // Around a right angle, dash-dot 6, 2, 1, 2: dashes from 0 to 6, 8 to 9, 11 to 17 and
+        // 19 to 20 along the bend.
+        const std::vector<std::vector<Vec3>> bend{{Vec3(0, 0, 0), Vec3(10, 0, 0), Vec3(10, 12, 0)}};
+        const auto dashDot = dashedPolylines(
+            bend, devsurf::views::foldDashes(devsurf::model::FoldAssignment::Mountain));
+        QCOMPARE(dashDot.size(), std::size_t{4});
+        QVERIFY(near(dashDot[0].back(), Vec3(6, 0, 0)));
+        QVERIFY(near(dashDot[1].front(), Vec3(8, 0, 0)) && near(dashDot[1].back(), Vec3(9, 0, 0)));
+        QVERIFY(near(dashDot[2].front(), Vec3(10, 1, 0)) &&
+                near(dashDot[2].back(), Vec3(10, 7, 0)));
+        QVERIFY(near(dashDot[3].front(), Vec3(10, 9, 0)) &&
+                near(dashDot[3].back(), Vec3(10, 10, 0)));
+        // A crease that is not folded is solid; a bad pattern leaves the lines as they are.
+        QVERIFY(devsurf::views::foldDashes(devsurf::model::FoldAssignment::Flat).empty());
+        for (const std::vector<double>& bad :
+             std::vector<std::vector<double>>{{}, {4.0}, {4.0, 0.0}, {4.0, -1.0}}) {
+            QCOMPARE(dashedPolylines(line, bad).size(), std::size_t{1});
+        }
     }
 
     void aBadgeHiddenBehindTheSurfaceIsNotDrawnIn3D() {

@@ -6,11 +6,15 @@
 #include "straight_control_points.h"
 #include "surface_transform.h"
 #include "test_registry.h"
+#include "views/crease_marks.h"
 #include "views/development_view.h"
 #include "views/surface_view.h"
+#include "views/vtk_opengl_widget.h"
 
+#include <QApplication>
 #include <QHBoxLayout>
 #include <QTest>
+#include <QWheelEvent>
 
 #include <cmath>
 #include <limits>
@@ -23,6 +27,7 @@ using devsurf::model::CompositeSurface;
 using devsurf::model::Vec3;
 using devsurf::model::VertexId;
 using devsurf::views::DevelopmentView;
+using devsurf::views::SceneView;
 using devsurf::views::SurfaceView;
 
 namespace {
@@ -189,7 +194,46 @@ private slots:
                 }
             }
             QVERIFY2((blue > 50) == (expected.second > 0), qPrintable(QString::number(blue)));
+            // Folds are dashed (mountain dash-dot, valley dashed), a few device pixels per
+            // unit of the pattern whatever the zoom; a crease that is not folded is solid.
+            for (SceneView* view : {static_cast<SceneView*>(views.spatial),
+                                    static_cast<SceneView*>(views.development)}) {
+                const auto [mountainDashes, valleyDashes] = view->foldDashesDrawn();
+                QCOMPARE(mountainDashes > 3 * expected.first, expected.first > 0);
+                QCOMPARE(valleyDashes > 3 * expected.second, expected.second > 0);
+                // The sheet's creases at y = 200 stay flat.
+                QVERIFY(view->legendEntries().contains("Crease, not folded"));
+                const double devicePixels = view->foldDashUnit() * view->scaleBarPixels() /
+                                            view->scaleBarLength() *
+                                            view->glWidget()->devicePixelRatioF();
+                QVERIFY2(devicePixels > 0.8 * devsurf::views::kFoldDashUnitPixels &&
+                             devicePixels < 1.25 * devsurf::views::kFoldDashUnitPixels,
+                         qPrintable(QString::number(devicePixels)));
+            }
         }
+    }
+
+    void foldDashesFollowTheZoom() {
+        devsurf::model::Project project = devsurf::model::makeExample("sheet", 3);
+        devsurf::test::foldBeyond(project.surfaces.front(), 100.0, 30.0 * kPi / 180.0);
+        Views views(std::move(project));
+        QVERIFY(views.show());
+        DevelopmentView* view = views.development;
+        const double unit = view->foldDashUnit();
+        const int dashes = view->foldDashesDrawn().second;
+        // Six wheel clicks towards the design: its lines grow on screen, their dashes do not.
+        for (int click = 0; click < 6; ++click) {
+            QWheelEvent wheel(QPointF(view->glWidget()->rect().center()),
+                              view->glWidget()->mapToGlobal(view->glWidget()->rect().center()),
+                              QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                              Qt::NoScrollPhase, false);
+            QApplication::sendEvent(view->glWidget(), &wheel);
+        }
+        view->grabImage();
+        QVERIFY2(view->foldDashUnit() < 0.6 * unit,
+                 qPrintable(QString("%1 → %2 mm").arg(unit).arg(view->foldDashUnit())));
+        QVERIFY2(view->foldDashesDrawn().second > dashes,
+                 qPrintable(QString("%1 → %2").arg(dashes).arg(view->foldDashesDrawn().second)));
     }
 
     void cylinderIsUprightAndItsSeamDrawnOnBothSides() {
