@@ -323,10 +323,9 @@ void SceneRenderer::setScenes(std::shared_ptr<const SceneSet> scenes, bool geome
     }
     m_sceneSize = diagonal > 0.0 ? diagonal : 1.0;
     // The folds are dashed as last drawn (the zoom is unchanged, so are the dashes' lengths);
-    // updateFoldDashes() follows the zoom.
-    if (m_dashUnit <= 0.0) {
-        m_dashUnit = currentDashUnit();
-    }
+    // updateFoldDashes() follows the zoom. A new design, larger by far, is not cut into the
+    // dashes of the last one's zoom before its first render.
+    m_dashUnit = m_dashUnit > 0.0 ? std::max(m_dashUnit, m_sceneSize / 2000.0) : currentDashUnit();
     drawFolds();
 
     if (m_quality) {

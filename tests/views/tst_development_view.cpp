@@ -234,6 +234,18 @@ private slots:
                  qPrintable(QString("%1 → %2 mm").arg(unit).arg(view->foldDashUnit())));
         QVERIFY2(view->foldDashesDrawn().second > dashes,
                  qPrintable(QString("%1 → %2").arg(dashes).arg(view->foldDashesDrawn().second)));
+        // The same design a thousand times larger replaces it: its folds are not cut into the
+        // dashes of the last zoom (millions) before it is fitted and drawn.
+        devsurf::model::Project large = devsurf::model::makeExample("sheet", 3);
+        devsurf::test::foldBeyond(large.surfaces.front(), 100.0, 30.0 * kPi / 180.0);
+        devsurf::test::transformSurface(large.surfaces.front(),
+                                        [](const Vec3& p) { return p * 1000.0; });
+        views.document.resetProject(std::move(large));
+        QVERIFY2(view->foldDashesDrawn().second < 20 * dashes,
+                 qPrintable(QString::number(view->foldDashesDrawn().second)));
+        view->grabImage();
+        QVERIFY2(view->foldDashesDrawn().second < 2 * dashes,
+                 qPrintable(QString("%1 → %2").arg(dashes).arg(view->foldDashesDrawn().second)));
     }
 
     void cylinderIsUprightAndItsSeamDrawnOnBothSides() {
