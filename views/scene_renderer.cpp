@@ -295,7 +295,6 @@ void SceneRenderer::setScenes(std::shared_ptr<const SceneSet> scenes, bool geome
     m_conditionMarks = views::conditionMarks(m_set->scenes);
     m_splineEdges->assign(polylineData(splineEdges), geometryOnly);
     m_creases->assign(polylineData(creases), geometryOnly);
-    m_foldCounts = {static_cast<int>(mountains.size()), static_cast<int>(valleys.size())};
     m_flatCreases = static_cast<int>(creases.size());
     m_mountainLines = std::move(mountains);
     m_valleyLines = std::move(valleys);

@@ -44,7 +44,9 @@ public:
     // The pinned vertices drawn (red).
     const std::set<document::Pick>& pinnedDrawn() const { return m_pinnedDrawn; }
     // Mountain and valley creases drawn (for the fold legend and tests).
-    std::pair<int, int> foldCounts() const { return m_foldCounts; }
+    std::pair<int, int> foldCounts() const {
+        return {static_cast<int>(m_mountainLines.size()), static_cast<int>(m_valleyLines.size())};
+    }
     // Creases drawn that are not folded (solid, in the crease colour).
     int flatCreaseCount() const { return m_flatCreases; }
     // Redraws the dashes of the folds (foldDashes) if the zoom changed their length on screen
@@ -122,9 +124,8 @@ private:
     Layer* m_creases = nullptr;
     Layer* m_mountains = nullptr;
     Layer* m_valleys = nullptr;
-    std::pair<int, int> m_foldCounts; // mountain and valley creases drawn
     int m_flatCreases = 0;
-    std::vector<std::vector<model::Vec3>> m_mountainLines; // undashed
+    std::vector<std::vector<model::Vec3>> m_mountainLines; // the creases drawn, undashed
     std::vector<std::vector<model::Vec3>> m_valleyLines;
     double m_dashUnit = 0.0; // scene units per dash unit, 0 before the first drawing
     // The dash unit for the current camera (kFoldDashUnitPixels on screen, at least 1/2000 of

@@ -10,6 +10,9 @@ namespace devsurf::model::pattern {
 
 namespace {
 
+// The faces collected for an overlap stop at about this many: enough to name its patches.
+constexpr std::size_t kNamedFaces = 64;
+
 struct Segment {
     Vec2 a;
     Vec2 b;
@@ -147,7 +150,7 @@ bool stackedFaces(const PatternPiece::Mesh& mesh, double margin, std::vector<Fac
         }
     }
     bool found = false;
-    for (std::size_t f = 0; f < count && faces.size() < 64; ++f) {
+    for (std::size_t f = 0; f < count && faces.size() < kNamedFaces; ++f) {
         const Vec2& c = sampled[f].centroid;
         const auto near = grid.find(cellOf(c));
         if (near == grid.end()) {
@@ -213,7 +216,7 @@ bool selfOverlaps(const PatternPiece& piece, std::vector<FaceId>& faces) {
             found = true;
             record(s);
             record(t);
-            return faces.size() < 64; // enough to name the patches
+            return faces.size() < kNamedFaces;
         });
     }
     if (!found) {

@@ -270,6 +270,11 @@ public:
     void rebaseIsometry(const std::vector<double>& x);
     // Multiplies the weight of that energy (or damping) by `factor` (nothing without it).
     void scaleIsometryWeight(double factor);
+    // Whether those rows damp length changes (lengthDampingWeight) rather than keep lengths.
+    bool isometryDamps() const {
+        return m_isometryFamily >= 0 &&
+               m_problem.family(m_isometryFamily).role == TermRole::Damping;
+    }
 
     // Developability, planarity and crease-condition residual of every face at state x (a
     // crease counts towards its left strip): the largest |row|
@@ -343,11 +348,6 @@ private:
     UnitNormTerm* m_unitControlNormals = nullptr;
     SquaredDistanceTerm* m_isometry = nullptr;
     FamilyId m_isometryFamily = -1;
-    // Whether those rows damp length changes (lengthDampingWeight) rather than keep lengths.
-    bool isometryDamps() const {
-        return m_isometryFamily >= 0 &&
-               m_problem.family(m_isometryFamily).role == TermRole::Damping;
-    }
     MinimumLengthTerm* m_rulingGuard = nullptr;
     MinimumLengthTerm* m_speedGuard = nullptr;
     // Row ranges of m_speedGuard per curve (the mean speed is taken per curve).

@@ -163,7 +163,6 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
         m_options.solver.proximityThreshold = kRoughSolveProximityThreshold;
         if (m_options.formulation.isometryWeight == 0.0) {
             m_options.formulation.lengthDampingWeight = kRoughSolveLengthDamping;
-            m_dampingLengths = true;
         }
     }
     m_formulation = std::make_unique<SurfaceFormulation>(surface, m_options.formulation);
@@ -224,7 +223,7 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         // See kRoughSolveLengthDamping: once the residual has fallen far enough, the damping
         // fades geometrically.
         m_lengthDampingFades = m_lengthDampingFades || m_residual <= kRoughSolveLengthDampingUntil;
-        if (m_dampingLengths && m_lengthDampingFades) {
+        if (m_lengthDampingFades && m_formulation->isometryDamps()) {
             m_formulation->scaleIsometryWeight(kRoughSolveLengthDampingFade);
         }
         before = m_x;

@@ -259,7 +259,6 @@ private:
     int m_iterationsDone = 0;
     bool m_dragging = false; // something is pulled
     bool m_settling = false;
-    bool m_dampingLengths = false;     // kRoughSolveLengthDamping
     bool m_lengthDampingFades = false; // the residual has fallen to kRoughSolveLengthDampingUntil
     double m_residual = std::numeric_limits<double>::infinity(); // at the last iterate
 };

@@ -61,9 +61,6 @@ double spatialArea(const CompositeSurface& surface) {
     return area;
 }
 
-// A flat ring of 8 strips between radii 100 and 160 mm that winds once round and by `excess`
-// radians more, open where its two ends meet: its development (the ring itself) overlaps at
-// the ends by that wedge.
 // 18 flat trapezoids between the circles of radius 100 and 160, 30° each, winding 540° round
 // in the plane z = 0.
 CompositeSurface stackedBand() {
@@ -88,6 +85,9 @@ CompositeSurface stackedBand() {
     return s;
 }
 
+// A flat ring of 8 strips between radii 100 and 160 mm that winds once round and by `excess`
+// radians more, open where its two ends meet: its development (the ring itself) overlaps at
+// the ends by that wedge.
 CompositeSurface ringWinding(double excess) {
     const int steps = 8;
     const SplineSpace space{3, 2, 2};
