@@ -86,9 +86,10 @@ Commands:
                       problems is written. --keep-lengths never replays; --stretch
                       never keeps lengths. --crease EDGE
                       instead of --vertices drags a crease by DX,DY,DZ: its control points
-                      and unpinned ends slide within the surface (the component along its
-                      normal is dropped) and the strips on both sides change size; a
-                      crease drag never keeps lengths.
+                      and unpinned ends slide within the surface, along the rulings of the
+                      strip the crease leaves (the component along the surface normal is
+                      dropped), and the strips on both sides change size; a crease drag
+                      never keeps lengths.
   export FILE --format dxf|svg|pdf|fold [--sheet W,H | --paper A4|A3|Letter]
          [--tolerance MM] [--splines] [--r12] [--seam MM] [--rulings] -o OUT
                       Write the cutting pattern: pieces laid out on sheets of W x H mm

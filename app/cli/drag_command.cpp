@@ -350,10 +350,21 @@ int runDragCommand(const std::vector<std::string>& positional,
         start[id] = surface.position(id);
         pulled.push_back({id, false, surface.position(id)});
     }
-    // Where the handles are at parameter t of the motion.
-    auto targetAt = [&](const model::Vec3& position, double t) {
-        return creaseDrag ? position + creaseDrag->displacement(motion.by, true) * t
-                          : motion.apply(position, t);
+    // Where the handles are at parameter t of the motion (a crease's points each move along
+    // their own direction, see CreaseDrag).
+    std::map<model::VertexId, model::Vec3> creaseShift;
+    if (creaseDrag) {
+        for (const solver::VertexHandle& handle : creaseDrag->vertexHandles(motion.by, true)) {
+            creaseShift[handle.vertex] = handle.target - start.at(handle.vertex);
+        }
+    }
+    auto targetAt = [&](model::VertexId id, const model::Vec3& position, double t) {
+        return creaseDrag ? position + creaseShift.at(id) * t : motion.apply(position, t);
+    };
+    auto pointTargetAt = [&](const solver::ControlPointHandle& point, double t) {
+        return point.target + creaseDrag->pointDisplacement(static_cast<std::size_t>(point.index),
+                                                            motion.by, true) *
+                                  t;
     };
     if (creaseDrag) {
         const model::Vec3 d = creaseDrag->displacement(motion.by, true);
@@ -377,7 +388,9 @@ int runDragCommand(const std::vector<std::string>& positional,
         try {
             session = std::make_unique<solver::SolveSession>(
                 surface, pulled, points,
-                keepLengths ? solver::keepLengthsSessionOptions() : solver::SessionOptions{});
+                keepLengths ? solver::keepLengthsSessionOptions()
+                : crease    ? solver::creaseDragSessionOptions()
+                            : solver::SessionOptions{});
         } catch (const std::invalid_argument& error) {
             throw model::ModelError("surface " + std::to_string(index + 1) + " of '" + path +
                                     "' cannot be " + (crease ? "dragged: " : "solved: ") +
@@ -417,10 +430,10 @@ int runDragCommand(const std::vector<std::string>& positional,
         for (int k = 1; k <= steps && going; ++k) {
             const double t = static_cast<double>(k) / steps;
             for (const auto& [id, position] : start) {
-                session->setHandleTarget(id, targetAt(position, t));
+                session->setHandleTarget(id, targetAt(id, position, t));
             }
             for (const solver::ControlPointHandle& point : points) {
-                session->setControlPointTarget(point.edge, point.index, targetAt(point.target, t));
+                session->setControlPointTarget(point.edge, point.index, pointTargetAt(point, t));
             }
             going = runIteration("step", k, steps);
         }
@@ -459,14 +472,14 @@ int runDragCommand(const std::vector<std::string>& positional,
 
     double largestMiss = 0.0;
     for (const auto& [id, position] : start) {
-        largestMiss = std::max(largestMiss,
-                               (session->surface().position(id) - targetAt(position, 1.0)).norm());
+        largestMiss = std::max(
+            largestMiss, (session->surface().position(id) - targetAt(id, position, 1.0)).norm());
     }
     for (const solver::ControlPointHandle& point : points) {
         const model::Vec3& reached = session->surface()
                                          .edge(point.edge)
                                          .controlPoints[static_cast<std::size_t>(point.index)];
-        largestMiss = std::max(largestMiss, (reached - targetAt(point.target, 1.0)).norm());
+        largestMiss = std::max(largestMiss, (reached - pointTargetAt(point, 1.0)).norm());
     }
     char line[256];
     if (last.iterations.empty()) {

@@ -275,6 +275,8 @@ bool DragTool::pressCrease(const QPoint& pos, const Pick& pick) {
     m_vertices = m_crease->vertices();
     m_start = m_crease->vertexStart();
     m_creaseShift = {};
+    m_creaseDelta = {};
+    m_creaseSlides = true;
     // The plane of the motion passes through the point of the crease nearest the press.
     const model::EdgeRecord& record = surface.edge(pick.id);
     const model::BSplineCurve curve =
@@ -340,7 +342,16 @@ bool DragTool::targetsAt(const QPoint& pos, std::vector<model::Vec3>& targets) {
         delta = unit * dot(delta, unit);
     }
     if (m_crease) {
-        delta = m_creaseShift = m_crease->displacement(delta, axis() == Axis::Free);
+        // Each point of the crease moves its own way (see solver::CreaseDrag); the shift is
+        // the motion shown in the status bar.
+        m_creaseDelta = delta;
+        m_creaseSlides = axis() == Axis::Free;
+        m_creaseShift = m_crease->displacement(delta, m_creaseSlides);
+        targets.clear();
+        for (const solver::VertexHandle& handle : m_crease->vertexHandles(delta, m_creaseSlides)) {
+            targets.push_back(handle.target);
+        }
+        return true;
     }
     targets.resize(m_start.size());
     for (std::size_t i = 0; i < m_start.size(); ++i) {
@@ -363,9 +374,8 @@ void DragTool::submit(int iterations, bool settle) {
         handles.push_back({m_vertices[i], false, m_targets[i]});
     }
     if (m_crease) {
-        // The axis (if any) was applied to the shift already.
         request.pulledControlPoints[m_surface] =
-            m_crease->controlPointHandles(m_creaseShift, false);
+            m_crease->controlPointHandles(m_creaseDelta, m_creaseSlides);
     }
     request.iterations = iterations;
     request.keepLengths = keepsLengths();

@@ -142,7 +142,9 @@ private:
     bool m_applied = false;
     // The crease being dragged (null for vertices) and its displacement for the mouse now.
     std::unique_ptr<solver::CreaseDrag> m_crease;
-    model::Vec3 m_creaseShift;
+    model::Vec3 m_creaseShift;  // the motion the crease follows (status bar)
+    model::Vec3 m_creaseDelta;  // the mouse's motion, on the axis if one is held
+    bool m_creaseSlides = true; // no axis held: the crease slides within the surface
 };
 
 } // namespace devsurf::app

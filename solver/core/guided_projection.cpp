@@ -466,8 +466,8 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         }
         IterationStats stats;
         stats.iteration = iteration;
-        stats.eps1 = epsilon1(options, options.scheduleOffset + iteration,
-                              d.equations.maxConstraintResidual());
+        stats.eps1 =
+            epsilon1(options, options.scheduleOffset + iteration, d.equations.maxDrivingResidual());
         stats.eps2 = epsilon2(options, options.scheduleOffset + iteration,
                               d.equations.maxConstraintResidual());
         stats.proximity = proximityWeight(options, d.equations.maxConstraintResidual());

@@ -343,6 +343,7 @@ bool NormalEquations::evaluate(const Problem& problem, const double* x) {
         m_jacValue[static_cast<std::size_t>(e)] = 0.0;
     }
     double maxResidual = 0.0;
+    double driving = 0.0;
     double energy = 0.0;
     double merit = 0.0;
     for (int t = 0; t < termCount; ++t) {
@@ -358,10 +359,14 @@ bool NormalEquations::evaluate(const Problem& problem, const double* x) {
                 merit += w2 * phi * phi;
             } else if (family.role == TermRole::Energy) {
                 energy += w2 * phi * phi;
+                if (family.drivesEpsilon1) {
+                    driving = std::max(driving, std::abs(family.weight * phi));
+                }
             }
         }
     }
     m_maxConstraintResidual = maxResidual;
+    m_maxDrivingResidual = std::max(maxResidual, driving);
     m_energy = energy;
     m_constraintMerit = merit;
     return finite;

@@ -43,6 +43,9 @@ public:
     // the residual statistics. Returns false if a residual or Jacobian entry is not finite.
     bool evaluate(const Problem& problem, const double* x);
     double maxConstraintResidual() const { return m_maxConstraintResidual; }
+    // The residual that caps ε₁: the larger of maxConstraintResidual() and the weighted
+    // residuals of the energy families that drive it (TermFamily::drivesEpsilon1).
+    double maxDrivingResidual() const { return m_maxDrivingResidual; }
     double energy() const { return m_energy; }
     // Σ w² φ² over the constraint rows: the merit a step is judged by.
     double constraintMerit() const { return m_constraintMerit; }
@@ -164,6 +167,7 @@ private:
     std::vector<int> m_fixedJacobianEntries;
 
     double m_maxConstraintResidual = 0.0;
+    double m_maxDrivingResidual = 0.0;
     double m_energy = 0.0;
     double m_constraintMerit = 0.0;
 };

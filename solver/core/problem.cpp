@@ -101,6 +101,10 @@ void Problem::setFamilyWeight(FamilyId id, double weight) {
     m_families.at(static_cast<std::size_t>(id)).weight = weight;
 }
 
+void Problem::setFamilyDrivesEpsilon1(FamilyId id, bool drives) {
+    m_families.at(static_cast<std::size_t>(id)).drivesEpsilon1 = drives;
+}
+
 Term* Problem::addTerm(FamilyId family, std::unique_ptr<Term> term) {
     if (family < 0 || family >= familyCount()) {
         throw std::out_of_range("Problem: unknown term family");

@@ -30,6 +30,10 @@ struct TermFamily {
     std::string name;
     TermRole role = TermRole::Constraint;
     double weight = 1.0;
+    // An energy that pulls towards targets the user sets (a dragged crease's control points):
+    // its weighted residual w|φ| caps ε₁ as the constraint residual does (Options::
+    // eps1ResidualFactor), so that it still acts where every constraint holds.
+    bool drivesEpsilon1 = false;
 };
 
 using FamilyId = int;
@@ -67,6 +71,7 @@ public:
         return m_families.at(static_cast<std::size_t>(id));
     }
     void setFamilyWeight(FamilyId id, double weight);
+    void setFamilyDrivesEpsilon1(FamilyId id, bool drives);
 
     // Terms. The problem owns them; the returned pointer stays valid for the problem's
     // lifetime and may be used to change the term's values (not its pattern).

@@ -35,10 +35,6 @@ using model::VertexId;
 
 namespace {
 
-std::string str(std::uint32_t id) {
-    return std::to_string(id);
-}
-
 Vec3 normalised(const Vec3& v) {
     const double length = v.norm();
     return length > 0.0 ? v / length : v;
@@ -68,6 +64,7 @@ struct SurfaceFormulation::Builder {
     std::unique_ptr<SquaredDistanceTerm> vertexStars = std::make_unique<SquaredDistanceTerm>(2, 3);
     std::unique_ptr<MinimumLengthTerm> spokeGuard = std::make_unique<MinimumLengthTerm>(3);
     std::unique_ptr<TargetTerm> handles = std::make_unique<TargetTerm>();
+    std::unique_ptr<TargetTerm> pointHandles = std::make_unique<TargetTerm>(); // soft, if any
     std::unique_ptr<TargetTerm> proximity = std::make_unique<TargetTerm>();
     std::unique_ptr<TargetTerm> normalProximity = std::make_unique<TargetTerm>();
     std::unique_ptr<FairnessTerm> fairness = std::make_unique<FairnessTerm>(3);
@@ -444,42 +441,6 @@ struct SurfaceFormulation::Builder {
         solver::addSmoothRulings(surface, options.smoothRulings, f.m_rulingNormals, *smoothness);
     }
 
-    void addHandles() {
-        for (const VertexHandle& handle : options.handles) {
-            auto it = f.m_vertexPoint.find(handle.vertex);
-            if (it == f.m_vertexPoint.end()) {
-                throw std::invalid_argument("vertex " + str(handle.vertex) +
-                                            " of a handle does not exist.");
-            }
-            const int offset = f.pointOffset(it->second);
-            if (handle.fixed) {
-                for (int k = 0; k < 3; ++k) {
-                    f.m_problem.setFixed(offset + k);
-                }
-                continue;
-            }
-            double target[3];
-            for (int k = 0; k < 3; ++k) {
-                target[k] = (handle.target[k] - f.m_centre[k]) / f.m_scale;
-            }
-            f.m_handleRow[handle.vertex] = handles->addPointTarget(offset, 3, target);
-        }
-        for (const ControlPointHandle& handle : options.controlPointHandles) {
-            const auto it = f.m_edgePoints.find(handle.edge);
-            if (it == f.m_edgePoints.end() || handle.index < 1 ||
-                handle.index + 1 >= static_cast<int>(it->second.size())) {
-                throw std::invalid_argument("edge " + str(handle.edge) +
-                                            " has no interior "
-                                            "control point " +
-                                            std::to_string(handle.index) + ".");
-            }
-            const Vec3 t = (handle.target - f.m_centre) / f.m_scale;
-            const double target[3] = {t.x, t.y, t.z};
-            f.m_controlHandleRow[{handle.edge, handle.index}] = handles->addPointTarget(
-                f.pointOffset(it->second[static_cast<std::size_t>(handle.index)]), 3, target);
-        }
-    }
-
     // Every point towards the reference state (targets set by setReferenceState).
     void addProximity() {
         if (options.proximityWeight <= 0.0) {
@@ -547,7 +508,14 @@ struct SurfaceFormulation::Builder {
         add("vertexSpokeGuard", TermRole::Constraint, options.vertexDevelopabilityWeight,
             std::move(spokeGuard));
         f.m_handleTerm = handles->rowCount() > 0 ? handles.get() : nullptr;
+        f.m_controlHandleTerm = pointHandles->rowCount() > 0 ? pointHandles.get() : f.m_handleTerm;
         add("handles", TermRole::Constraint, options.handleWeight, std::move(handles));
+        if (pointHandles->rowCount() > 0) {
+            add("creaseHandles", TermRole::Energy, options.controlPointHandleWeight,
+                std::move(pointHandles));
+            f.m_controlHandleEnergy = p.findFamily("creaseHandles");
+            p.setFamilyDrivesEpsilon1(f.m_controlHandleEnergy, true);
+        }
         if (rulings) {
             add("rulingGuard", TermRole::Constraint, options.guardWeight, std::move(rulingGuard));
         }
@@ -557,7 +525,10 @@ struct SurfaceFormulation::Builder {
         if (proximity->rowCount() > 0) {
             f.m_proximity = proximity.get();
         }
-        add("proximity", TermRole::Proximity, options.proximityWeight, std::move(proximity));
+        const bool pull = options.proximityEnergyWeight > 0.0; // else weighted by μ
+        add("proximity", pull ? TermRole::Energy : TermRole::Proximity,
+            pull ? options.proximityEnergyWeight : options.proximityWeight, std::move(proximity));
+        f.m_proximityEnergy = pull && f.m_proximity ? p.findFamily("proximity") : -1;
         if (normalProximity->rowCount() > 0) {
             f.m_normalProximity = normalProximity.get();
         }
@@ -589,7 +560,8 @@ SurfaceFormulation::SurfaceFormulation(const model::CompositeSurface& surface,
     builder.addPlanarFaces();
     builder.addSmoothRulings();
     builder.addVertexDevelopability();
-    builder.addHandles();
+    addHandles(*builder.handles,
+               m_options.controlPointHandleWeight > 0.0 ? *builder.pointHandles : *builder.handles);
     addSpeedGuards(surface, builder.edgeOffsets, *builder.speedGuard, m_speedCurveStart);
     builder.addProximity();
     builder.addFairness();

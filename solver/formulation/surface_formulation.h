@@ -102,6 +102,10 @@ struct FormulationOptions {
     // constraint residual, Options::proximityFactor; with μ = 0, the default, the rows are
     // skipped). 0 removes the rows.
     double proximityWeight = 1.0;
+    // Above 0: that pull is instead an energy of this weight (times ε₁, acting whatever μ is)
+    // that a drag fades after its release (SurfaceFormulation::fadeDragEnergies); a crease
+    // drag keeps the rest of the design where it was with it (creaseDragSessionOptions).
+    double proximityEnergyWeight = 0.0;
     // The same for the control normals of the normal splines (towards their reference values).
     // Off: measured, anchoring the normals makes the iteration satisfy (4) by moving the
     // points into the planes of the stuck normals, i.e. by collapsing rulings (weight 1: the
@@ -203,6 +207,11 @@ struct FormulationOptions {
 
     std::vector<VertexHandle> handles;
     std::vector<ControlPointHandle> controlPointHandles;
+    // 0: the control-point handles are constraints, as the vertex handles are. Above 0: an
+    // energy of this weight (times ε₁, family "creaseHandles") that the iteration follows as
+    // far as the conditions let it, for a dragged crease whose every control point is pulled
+    // (see creaseDragSessionOptions).
+    double controlPointHandleWeight = 0.0;
 };
 
 // The configuration for rough starts (a design dragged far, a noisy import): proximity to the
@@ -270,6 +279,11 @@ public:
     void rebaseIsometry(const std::vector<double>& x);
     // Multiplies the weight of that energy (or damping) by `factor` (nothing without it).
     void scaleIsometryWeight(double factor);
+    // Multiplies the weights of a drag's energies by `factor`: the control-point handles'
+    // (controlPointHandleWeight) and the pull towards the reference state where it is an
+    // energy (proximityEnergyWeight); from now on ε₁ follows the constraint residual alone.
+    // Nothing without them.
+    void fadeDragEnergies(double factor);
     // Whether those rows damp length changes (lengthDampingWeight) rather than keep lengths.
     bool isometryDamps() const {
         return m_isometryFamily >= 0 &&
@@ -318,6 +332,10 @@ public:
 
 private:
     struct Builder;
+    // Fixes the fixed vertex handles and adds the rows of the pulled ones to `handles`, those
+    // of the control-point handles to `controlPointHandles` (throws std::invalid_argument for
+    // a handle on something the surface does not have).
+    void addHandles(TargetTerm& handles, TargetTerm& controlPointHandles);
     int pointOffset(int point) const { return m_pointsOffset + 3 * point; }
     model::Vec3 toModel(const double* p) const;
 
@@ -340,8 +358,11 @@ private:
     std::map<model::VertexId, int> m_handleRow; // first TargetTerm row of a pulled handle
     std::map<std::pair<model::EdgeId, int>, int> m_controlHandleRow; // the same per point
     TargetTerm* m_handleTerm = nullptr;
-    TargetTerm* m_proximity = nullptr;       // every point towards the reference state
-    TargetTerm* m_normalProximity = nullptr; // every control normal towards the reference state
+    TargetTerm* m_controlHandleTerm = nullptr; // m_handleTerm, or the energy's own term
+    FamilyId m_controlHandleEnergy = -1;       // the family of that energy, if any
+    FamilyId m_proximityEnergy = -1;           // the pull towards the reference, as an energy
+    TargetTerm* m_proximity = nullptr;         // every point towards the reference state
+    TargetTerm* m_normalProximity = nullptr;   // every control normal towards the reference state
     int m_normalControlsOffset = 0;
     FairnessTerm* m_pointFairness = nullptr;
     FairnessTerm* m_normalFairness = nullptr;

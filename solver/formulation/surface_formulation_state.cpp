@@ -79,6 +79,39 @@ void SurfaceFormulation::normaliseUnitNormals(double* x) const {
     }
 }
 
+void SurfaceFormulation::addHandles(TargetTerm& handles, TargetTerm& controlPointHandles) {
+    for (const VertexHandle& handle : m_options.handles) {
+        const auto it = m_vertexPoint.find(handle.vertex);
+        if (it == m_vertexPoint.end()) {
+            throw std::invalid_argument("vertex " + str(handle.vertex) +
+                                        " of a handle does not exist.");
+        }
+        const int offset = pointOffset(it->second);
+        if (handle.fixed) {
+            for (int k = 0; k < 3; ++k) {
+                m_problem.setFixed(offset + k);
+            }
+            continue;
+        }
+        const Vec3 t = (handle.target - m_centre) / m_scale;
+        const double target[3] = {t.x, t.y, t.z};
+        m_handleRow[handle.vertex] = handles.addPointTarget(offset, 3, target);
+    }
+    for (const ControlPointHandle& handle : m_options.controlPointHandles) {
+        const auto it = m_edgePoints.find(handle.edge);
+        if (it == m_edgePoints.end() || handle.index < 1 ||
+            handle.index + 1 >= static_cast<int>(it->second.size())) {
+            throw std::invalid_argument("edge " + str(handle.edge) +
+                                        " has no interior control point " +
+                                        std::to_string(handle.index) + ".");
+        }
+        const Vec3 t = (handle.target - m_centre) / m_scale;
+        const double target[3] = {t.x, t.y, t.z};
+        m_controlHandleRow[{handle.edge, handle.index}] = controlPointHandles.addPointTarget(
+            pointOffset(it->second[static_cast<std::size_t>(handle.index)]), 3, target);
+    }
+}
+
 bool SurfaceFormulation::setHandleTarget(VertexId vertex, const Vec3& target) {
     auto it = m_handleRow.find(vertex);
     if (it == m_handleRow.end() || !m_handleTerm) {
@@ -92,11 +125,11 @@ bool SurfaceFormulation::setHandleTarget(VertexId vertex, const Vec3& target) {
 
 bool SurfaceFormulation::setControlPointTarget(model::EdgeId edge, int index, const Vec3& target) {
     auto it = m_controlHandleRow.find({edge, index});
-    if (it == m_controlHandleRow.end() || !m_handleTerm) {
+    if (it == m_controlHandleRow.end() || !m_controlHandleTerm) {
         return false;
     }
     for (int k = 0; k < 3; ++k) {
-        m_handleTerm->setTarget(it->second + k, (target[k] - m_centre[k]) / m_scale);
+        m_controlHandleTerm->setTarget(it->second + k, (target[k] - m_centre[k]) / m_scale);
     }
     return true;
 }
@@ -196,6 +229,15 @@ void SurfaceFormulation::scaleIsometryWeight(double factor) {
     if (m_isometryFamily >= 0) {
         m_problem.setFamilyWeight(m_isometryFamily,
                                   m_problem.family(m_isometryFamily).weight * factor);
+    }
+}
+
+void SurfaceFormulation::fadeDragEnergies(double factor) {
+    for (const FamilyId family : {m_controlHandleEnergy, m_proximityEnergy}) {
+        if (family >= 0) {
+            m_problem.setFamilyWeight(family, m_problem.family(family).weight * factor);
+            m_problem.setFamilyDrivesEpsilon1(family, false);
+        }
     }
 }
 

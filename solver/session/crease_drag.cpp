@@ -1,5 +1,9 @@
 #include "solver/session/crease_drag.h"
 
+#include "model/model_error.h"
+#include "model/strip.h"
+
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -23,6 +27,48 @@ Vec3 faceCentroid(const model::CompositeSurface& surface, model::FaceId face) {
     return loop.empty() ? sum : sum / static_cast<double>(loop.size());
 }
 
+// The unit direction of the ruling of `strip` nearest p (the line through a(u) and b(u) closest
+// to p), pointing from the strip's other side towards the crease (its side a if creaseIsA);
+// zero where the ruling has no length.
+Vec3 rulingThrough(const model::Strip& strip, bool creaseIsA, const Vec3& p) {
+    auto distance = [&](double u) {
+        const Vec3 a = strip.aPoint(u);
+        const Vec3 r = strip.bPoint(u) - a;
+        const double length2 = dot(r, r);
+        const double t = length2 > 0.0 ? dot(p - a, r) / length2 : 0.0;
+        return (a + r * t - p).norm();
+    };
+    // Coarse samples, then a ternary search around the nearest.
+    constexpr int kSamples = 256;
+    const double begin = strip.a.domainBegin();
+    const double end = strip.a.domainEnd();
+    const double h = (end - begin) / kSamples;
+    double best = begin;
+    double bestDistance = distance(begin);
+    for (int i = 1; i <= kSamples; ++i) {
+        const double u = begin + h * i;
+        const double d = distance(u);
+        if (d < bestDistance) {
+            best = u;
+            bestDistance = d;
+        }
+    }
+    double low = std::max(begin, best - h);
+    double high = std::min(end, best + h);
+    for (int i = 0; i < 60; ++i) {
+        const double m1 = low + (high - low) / 3.0;
+        const double m2 = high - (high - low) / 3.0;
+        if (distance(m1) < distance(m2)) {
+            high = m2;
+        } else {
+            low = m1;
+        }
+    }
+    const double u = 0.5 * (low + high);
+    const Vec3 r = strip.bPoint(u) - strip.aPoint(u); // from a towards b
+    return unit(creaseIsA ? -r : r);
+}
+
 } // namespace
 
 CreaseDrag::CreaseDrag(const model::CompositeSurface& surface, model::EdgeId edge) : m_edge(edge) {
@@ -40,6 +86,7 @@ CreaseDrag::CreaseDrag(const model::CompositeSurface& surface, model::EdgeId edg
         if (!surface.isPinned(v)) {
             m_vertices.push_back(v);
             m_vertexStart.push_back(surface.position(v));
+            m_vertexIndex.push_back(v == record.from ? 0 : record.controlPoints.size() - 1);
         }
     }
     for (std::size_t i = 1; i + 1 < record.controlPoints.size(); ++i) {
@@ -62,27 +109,56 @@ CreaseDrag::CreaseDrag(const model::CompositeSurface& surface, model::EdgeId edg
     if (m_normal.norm() == 0.0) {
         m_normal = first;
     }
+    for (std::size_t k = 0; k < 2; ++k) {
+        try {
+            const model::Strip strip = model::stripOfFace(surface, faces[k]);
+            const bool creaseIsA = strip.aSide.edge == edge;
+            for (const Vec3& p : record.controlPoints) {
+                m_rulings[k].push_back(rulingThrough(strip, creaseIsA, p));
+            }
+        } catch (const model::ModelError&) {
+            m_rulings[k].clear(); // a planar face: no rulings
+        }
+    }
 }
 
 Vec3 CreaseDrag::displacement(const Vec3& delta, bool slide) const {
     return slide ? delta - m_normal * dot(delta, m_normal) : delta;
 }
 
-std::vector<VertexHandle> CreaseDrag::vertexHandles(const Vec3& delta, bool slide) const {
+Vec3 CreaseDrag::pointDisplacement(std::size_t i, const Vec3& delta, bool slide) const {
     const Vec3 d = displacement(delta, slide);
+    if (!slide || m_rulings[0].empty() || m_rulings[1].empty()) {
+        return d;
+    }
+    // The face the crease moves away from: the one whose rulings point most along d.
+    double along[2] = {0.0, 0.0};
+    for (std::size_t k = 0; k < 2; ++k) {
+        for (const Vec3& r : m_rulings[k]) {
+            along[k] += dot(r, d);
+        }
+    }
+    const Vec3& r = m_rulings[along[1] > along[0] ? 1 : 0][i];
+    // A point whose ruling leans back against the motion stays (the crease does not move into
+    // the face it leaves).
+    return r * std::max(0.0, dot(r, d));
+}
+
+std::vector<VertexHandle> CreaseDrag::vertexHandles(const Vec3& delta, bool slide) const {
     std::vector<VertexHandle> handles;
     for (std::size_t i = 0; i < m_vertices.size(); ++i) {
-        handles.push_back({m_vertices[i], false, m_vertexStart[i] + d});
+        handles.push_back({m_vertices[i], false,
+                           m_vertexStart[i] + pointDisplacement(m_vertexIndex[i], delta, slide)});
     }
     return handles;
 }
 
 std::vector<ControlPointHandle> CreaseDrag::controlPointHandles(const Vec3& delta,
                                                                 bool slide) const {
-    const Vec3 d = displacement(delta, slide);
     std::vector<ControlPointHandle> handles;
     for (std::size_t i = 0; i < m_controlStart.size(); ++i) {
-        handles.push_back({m_edge, static_cast<int>(i) + 1, m_controlStart[i] + d});
+        handles.push_back({m_edge, static_cast<int>(i) + 1,
+                           m_controlStart[i] + pointDisplacement(i + 1, delta, slide)});
     }
     return handles;
 }

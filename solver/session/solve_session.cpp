@@ -91,6 +91,15 @@ SessionOptions keepLengthsSessionOptions() {
     return options;
 }
 
+SessionOptions creaseDragSessionOptions() {
+    SessionOptions options;
+    options.formulation.controlPointHandleWeight = kCreaseDragPointWeight;
+    options.formulation.proximityEnergyWeight = kCreaseDragStartPull;
+    options.formulation.fairnessWeight = 0.0;
+    options.formulation.normalFairnessAtCreaseConditions = false;
+    return options;
+}
+
 SolveSession::SolveSession(const model::CompositeSurface& surface,
                            const std::vector<VertexHandle>& pulled, const SessionOptions& options)
     : SolveSession(surface, pulled, {}, options) {}
@@ -219,6 +228,7 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         m_formulation->rebaseIsometry(m_x);
         if (m_settling) {
             m_formulation->scaleIsometryWeight(kKeepLengthsFade);
+            m_formulation->fadeDragEnergies(kCreaseDragFade);
         }
         // See kRoughSolveLengthDamping: once the residual has fallen far enough, the damping
         // fades geometrically.

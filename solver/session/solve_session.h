@@ -194,6 +194,43 @@ constexpr int kSolveIterations = 30;
 // 46°; the annulus with its outer rim pinned reaches 1e-14 instead of 3e-7.
 SessionOptions keepLengthsSessionOptions();
 
+// The energies of a crease drag (creaseDragSessionOptions) and the factor by which their
+// weights shrink before every iteration after the release. A crease drag pulls its interior
+// control points and its unpinned ends (CreaseDrag). Held at every control point, a curved
+// crease of a folded design fixes a cubic boundary of both its strips, and each strip's other
+// curve has fewer free coordinates than (4) has rows on it: as constraints, the handles and the
+// conditions met at a least-squares compromise. So the ends stay constraints and the interior
+// points are an energy (FormulationOptions::controlPointHandleWeight) that follows the mouse
+// while the drag moves, together with a weak pull of every point towards the press
+// (proximityEnergyWeight) that keeps the rest of the design where it was; after the release
+// both let go and the conditions converge where the crease can be.
+constexpr double kCreaseDragPointWeight = 1.0;
+constexpr double kCreaseDragStartPull = 0.03;
+constexpr double kCreaseDragFade = 0.5;
+
+// The options of a crease drag (the Drag tool on a crease, `devsurf-cli drag --crease`): the
+// energies above and, as when keeping lengths, neither fairness of the points nor of the
+// normals next to creases with a condition, which pulled a folded crease straight and fought
+// the handles (absolute fairness 0.1: fig8's crease 6 slid 15 mm ended at 7e-2 with curve
+// speeds at 0.03; normal fairness: the folds relaxed from 46° to 22°). Measured with
+// devsurf-cli drag --crease (20 moves, 10 iterations) on fig6 folded 15° (its free edge lifted
+// 60 mm keeping lengths) and fig8 lifted 85 mm keeping lengths (the README picture):
+//   fig6, crease slid 15 mm   residual 3.0e-4 for ever, det 4.6e-3 → 1.2e-12, fold kept (15.3°)
+//   fig8, crease 6 slid 15 mm residual alternating 1.6e-4 ↔ 0.5 (the spoke guard), det 4.7e-3,
+//                             57 mm moved after the release → 2.4e-8, det 1.3e-6, fold 49°
+//   fig8, creases 2, 6 (±15 and 30 mm), 14: residuals 2.4e-8 … 2.2e-7, crease rows ≤ 7.4e-7,
+//                             folds 46° … 54° (46° before), rulings ≥ 0.82 of their length
+//   flat fig6, fig8, sheet    residual ≤ 4e-16 as before, the crease within 0.014 mm of the
+//                             mouse, curve speeds 0.99 of their start instead of 0.4 (fairness
+//                             slid the control points along the curves)
+// Without the pull towards the press the iterations after the release let the free boundary
+// curves of fig8 (two pinned corners) wander: one bent by 70 mm where it bends by 7 mm with it
+// (0.01: 21 mm; 0.1: stalls at 2e-4); fading it faster than the handles (0.25, 0.1) let them
+// wander again (17 and 28 mm). Relative fairness instead kept fig8's curves (4 mm) but let
+// fig6's free strip swing open (fold 15° → 4°); the isometry energy (0.3) moved the far strip of
+// a flat sheet rather than shrink it (curve speeds 0.07).
+SessionOptions creaseDragSessionOptions();
+
 // One surface being solved across calls: the formulation, the state vector and the
 // GuidedProjection (with its cached structure and factorisation choice) stay alive between
 // step() calls, so a drag's mouse moves and the iterations after release continue one solve.

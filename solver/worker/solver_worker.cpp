@@ -106,9 +106,12 @@ double worstDevelopability(const model::CompositeSurface& surface) {
     return faces.empty() ? 0.0 : faces.front().second;
 }
 
-// The options of a session: a drag's, or Tools ▸ Solve's, which stops once converged.
-SessionOptions sessionOptions(bool keepLengths, bool drag) {
-    SessionOptions options = keepLengths ? keepLengthsSessionOptions() : SessionOptions{};
+// The options of a session: a drag's (of a crease if `crease`), or Tools ▸ Solve's, which stops
+// once converged.
+SessionOptions sessionOptions(bool keepLengths, bool drag, bool crease) {
+    SessionOptions options = keepLengths ? keepLengthsSessionOptions()
+                             : crease    ? creaseDragSessionOptions()
+                                         : SessionOptions{};
     if (!drag) {
         options.stopResidual = kSolveStopResidual;
     }
@@ -331,8 +334,9 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
             }
         } else {
             try {
-                session = std::make_unique<SolveSession>(snapshot, handles, points,
-                                                         sessionOptions(request.keepLengths, drag));
+                session = std::make_unique<SolveSession>(
+                    snapshot, handles, points,
+                    sessionOptions(request.keepLengths, drag, !points.empty()));
             } catch (const std::exception& error) {
                 return fail(surfaceLabel(snapshot, s) + QStringLiteral(" cannot be solved: ") +
                             QString::fromStdString(error.what()));

@@ -4,6 +4,7 @@
 
 #include "solver/core/guided_projection.h"
 #include "solver/core/linear_term.h"
+#include "solver/core/target_term.h"
 
 #include "test_registry.h"
 
@@ -100,6 +101,42 @@ private slots:
         const IterationStats& last = s.iterations.back();
         QVERIFY(!last.repeated);
         QVERIFY2(std::abs(last.eps2 - 16 * 8e-6) < 1e-15, std::to_string(last.eps2).c_str());
+    }
+
+    void aTargetEnergyThatDrivesEpsilon1ActsWhereEveryConstraintHolds() {
+        // x₀ = x₁ holds at the start; an energy pulls x₀ towards 1. ε₁ is capped by 1000 times
+        // the residual, so an ordinary energy never acts on a design that satisfies its
+        // constraints; one that drives ε₁ (a dragged crease's control points whose ends are
+        // pinned) does, and lets go once its own weight is gone.
+        auto run = [](bool drives, double weight) {
+            Problem p;
+            p.addVariableBlock("x", 2);
+            auto equal = std::make_unique<LinearTerm>();
+            equal->addRow({{0, 1.0}, {1, -1.0}});
+            p.add(p.addFamily("equal", TermRole::Constraint), std::move(equal));
+            auto target = std::make_unique<TargetTerm>();
+            target->addTarget(0, 1.0);
+            const FamilyId pull = p.addFamily("pull", TermRole::Energy, weight);
+            p.add(pull, std::move(target));
+            p.setFamilyDrivesEpsilon1(pull, drives);
+            std::vector<double> x{0.0, 0.0};
+            Options options;
+            options.eps1Schedule = [](int) { return 0.1; };
+            options.maxIterations = 20;
+            GuidedProjection solver;
+            const Summary s = solver.solve(p, x, options);
+            return std::make_pair(x, s);
+        };
+        const auto [still, quiet] = run(false, 1.0);
+        QCOMPARE(still[0], 0.0);
+        QCOMPARE(quiet.iterations.front().eps1, 0.0);
+        const auto [moved, driven] = run(true, 1.0);
+        QCOMPARE(driven.iterations.front().eps1, 0.1); // 1000 × |1 − 0| caps nothing
+        QVERIFY2(moved[0] > 0.5, std::to_string(moved[0]).c_str());
+        QVERIFY(std::abs(moved[0] - moved[1]) < 1e-9);
+        const auto [held, released] = run(true, 0.0);
+        QCOMPARE(held[0], 0.0);
+        QCOMPARE(released.iterations.front().eps1, 0.0);
     }
 };
 
