@@ -579,8 +579,13 @@
             <numerusform>%n Ecken ziehen</numerusform>
         </translation>
     </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="102"/>
+        <source>Sliding crease %1 by %2 mm within the surface, as far as it goes: the patch it moves into keeps %3 % of its width. Release to finish, Esc cancels.</source>
+        <translation>Falz %1 wird um %2 mm innerhalb der Fläche verschoben, so weit es geht: das Flächenstück, in das er sich bewegt, behält %3 % seiner Breite. Loslassen beendet, Esc bricht ab.</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="116"/>
+        <location filename="../app/gui/drag_tool.cpp" line="124"/>
         <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm entlang X gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -588,7 +593,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="119"/>
+        <location filename="../app/gui/drag_tool.cpp" line="127"/>
         <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm entlang Y gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -596,7 +601,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="122"/>
+        <location filename="../app/gui/drag_tool.cpp" line="130"/>
         <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm entlang Z gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -604,7 +609,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="127"/>
+        <location filename="../app/gui/drag_tool.cpp" line="135"/>
         <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm in der Bildebene gezogen. Loslassen beendet, Esc bricht ab; X, Y oder Z gedrückt halten bewegt entlang dieser Achse.</numerusform>
@@ -612,13 +617,13 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="232"/>
+        <location filename="../app/gui/drag_tool.cpp" line="240"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>Ecke %1 ist festgehalten und kann nicht gezogen werden; geben Sie sie zuerst frei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="250"/>
-        <location filename="../app/gui/drag_tool.cpp" line="272"/>
+        <location filename="../app/gui/drag_tool.cpp" line="258"/>
+        <location filename="../app/gui/drag_tool.cpp" line="280"/>
         <source>a drag started</source>
         <translation>ein Ziehen hat begonnen</translation>
     </message>
@@ -643,17 +648,17 @@
         <translation>Ziehen beendet: Der Entwurf hat sich während des Ziehens geändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="102"/>
+        <location filename="../app/gui/drag_tool.cpp" line="110"/>
         <source>Sliding crease %1 by %2 mm within the surface. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>Falz %1 wird um %2 mm innerhalb der Fläche verschoben. Loslassen beendet, Esc bricht ab; X, Y oder Z gedrückt halten bewegt entlang dieser Achse.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="106"/>
+        <location filename="../app/gui/drag_tool.cpp" line="114"/>
         <source>Moving crease %1 by %2 mm along the axis. Release to finish, Esc cancels.</source>
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="459"/>
+        <location filename="../app/gui/drag_tool.cpp" line="478"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2697,12 +2702,12 @@
         <translation>Falz, nicht gefaltet</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="147"/>
+        <location filename="../views/view_overlay.cpp" line="148"/>
         <source>Smooth ruling</source>
         <translation>Glatte Erzeugende</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="150"/>
+        <location filename="../views/view_overlay.cpp" line="151"/>
         <source>Sharp ruling</source>
         <translation>Scharfe Erzeugende</translation>
     </message>

@@ -569,42 +569,47 @@
             <numerusform>%n 個の頂点をドラッグ</numerusform>
         </translation>
     </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="102"/>
+        <source>Sliding crease %1 by %2 mm within the surface, as far as it goes: the patch it moves into keeps %3 % of its width. Release to finish, Esc cancels.</source>
+        <translation>折り線 %1 を曲面の中で %2 mm 移動中 (これ以上は動きません。移動先のパッチは幅の %3 % を保ちます)。離すと終了、Esc で取り消し。</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="116"/>
+        <location filename="../app/gui/drag_tool.cpp" line="124"/>
         <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を X 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="119"/>
+        <location filename="../app/gui/drag_tool.cpp" line="127"/>
         <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を Y 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="122"/>
+        <location filename="../app/gui/drag_tool.cpp" line="130"/>
         <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を Z 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="127"/>
+        <location filename="../app/gui/drag_tool.cpp" line="135"/>
         <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>
             <numerusform>%n 個の頂点を視平面内で %1 mm ドラッグ中。離すと確定、Esc で取り消し。X、Y、Z を押し続けるとその軸に沿って動きます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="232"/>
+        <location filename="../app/gui/drag_tool.cpp" line="240"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>頂点 %1 は固定されているためドラッグできません。先に固定を解除してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="250"/>
-        <location filename="../app/gui/drag_tool.cpp" line="272"/>
+        <location filename="../app/gui/drag_tool.cpp" line="258"/>
+        <location filename="../app/gui/drag_tool.cpp" line="280"/>
         <source>a drag started</source>
         <translation>ドラッグが始まりました</translation>
     </message>
@@ -629,17 +634,17 @@
         <translation>ドラッグを中止しました: ドラッグ中にデザインが変更されました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="102"/>
+        <location filename="../app/gui/drag_tool.cpp" line="110"/>
         <source>Sliding crease %1 by %2 mm within the surface. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>折り線 %1 を曲面の中で %2 mm 移動中。離すと終了、Esc で取り消し。X、Y、Z を押したままにするとその軸に沿って動きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="106"/>
+        <location filename="../app/gui/drag_tool.cpp" line="114"/>
         <source>Moving crease %1 by %2 mm along the axis. Release to finish, Esc cancels.</source>
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="459"/>
+        <location filename="../app/gui/drag_tool.cpp" line="478"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2655,12 +2660,12 @@
         <translation>折れていない折り線</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="147"/>
+        <location filename="../views/view_overlay.cpp" line="148"/>
         <source>Smooth ruling</source>
         <translation>滑らかな母線</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="150"/>
+        <location filename="../views/view_overlay.cpp" line="151"/>
         <source>Sharp ruling</source>
         <translation>鋭角の母線</translation>
     </message>

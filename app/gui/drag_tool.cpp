@@ -98,6 +98,14 @@ QString DragTool::changedText() const {
 QString DragTool::motionText() const {
     if (m_crease) {
         const QString shift = QString::number(m_creaseShift.norm(), 'f', 2);
+        if (axis() == Axis::Free && m_crease->reach(m_creaseDelta, true) < 1.0) {
+            return tr("Sliding crease %1 by %2 mm within the surface, as far as it goes: the "
+                      "patch it moves into keeps %3 % of its width. Release to finish, Esc "
+                      "cancels.")
+                .arg(m_crease->edge())
+                .arg(shift)
+                .arg(qRound(100.0 * solver::kCreaseSlideRoom));
+        }
         return axis() == Axis::Free
                    ? tr("Sliding crease %1 by %2 mm within the surface. Release to finish, Esc "
                         "cancels; hold X, Y or Z to move along that axis.")
@@ -346,7 +354,8 @@ bool DragTool::targetsAt(const QPoint& pos, std::vector<model::Vec3>& targets) {
         // the motion shown in the status bar.
         m_creaseDelta = delta;
         m_creaseSlides = axis() == Axis::Free;
-        m_creaseShift = m_crease->displacement(delta, m_creaseSlides);
+        m_creaseShift =
+            m_crease->displacement(delta, m_creaseSlides) * m_crease->reach(delta, m_creaseSlides);
         targets.clear();
         for (const solver::VertexHandle& handle : m_crease->vertexHandles(delta, m_creaseSlides)) {
             targets.push_back(handle.target);

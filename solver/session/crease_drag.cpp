@@ -27,9 +27,8 @@ Vec3 faceCentroid(const model::CompositeSurface& surface, model::FaceId face) {
     return loop.empty() ? sum : sum / static_cast<double>(loop.size());
 }
 
-// The unit direction of the ruling of `strip` nearest p (the line through a(u) and b(u) closest
-// to p), pointing from the strip's other side towards the crease (its side a if creaseIsA);
-// zero where the ruling has no length.
+// The ruling of `strip` nearest p (the line through a(u) and b(u) closest to p), pointing from
+// the strip's other side towards the crease (its side a if creaseIsA), as a vector.
 Vec3 rulingThrough(const model::Strip& strip, bool creaseIsA, const Vec3& p) {
     auto distance = [&](double u) {
         const Vec3 a = strip.aPoint(u);
@@ -66,7 +65,7 @@ Vec3 rulingThrough(const model::Strip& strip, bool creaseIsA, const Vec3& p) {
     }
     const double u = 0.5 * (low + high);
     const Vec3 r = strip.bPoint(u) - strip.aPoint(u); // from a towards b
-    return unit(creaseIsA ? -r : r);
+    return creaseIsA ? -r : r;
 }
 
 } // namespace
@@ -114,10 +113,13 @@ CreaseDrag::CreaseDrag(const model::CompositeSurface& surface, model::EdgeId edg
             const model::Strip strip = model::stripOfFace(surface, faces[k]);
             const bool creaseIsA = strip.aSide.edge == edge;
             for (const Vec3& p : record.controlPoints) {
-                m_rulings[k].push_back(rulingThrough(strip, creaseIsA, p));
+                const Vec3 ruling = rulingThrough(strip, creaseIsA, p);
+                m_rulings[k].push_back(unit(ruling));
+                m_rulingLengths[k].push_back(ruling.norm());
             }
         } catch (const model::ModelError&) {
             m_rulings[k].clear(); // a planar face: no rulings
+            m_rulingLengths[k].clear();
         }
     }
 }
@@ -126,22 +128,49 @@ Vec3 CreaseDrag::displacement(const Vec3& delta, bool slide) const {
     return slide ? delta - m_normal * dot(delta, m_normal) : delta;
 }
 
+std::size_t CreaseDrag::leftFace(const Vec3& d) const {
+    // The face whose rulings point most along d.
+    double sum[2] = {0.0, 0.0};
+    for (std::size_t k = 0; k < 2; ++k) {
+        for (const Vec3& r : m_rulings[k]) {
+            sum[k] += dot(r, d);
+        }
+    }
+    return sum[1] > sum[0] ? 1 : 0;
+}
+
+double CreaseDrag::along(std::size_t face, std::size_t i, const Vec3& d) const {
+    // A point whose ruling leans back against the motion stays (the crease does not move into
+    // the face it leaves).
+    return std::max(0.0, dot(m_rulings[face][i], d));
+}
+
+double CreaseDrag::reach(const Vec3& delta, bool slide) const {
+    const Vec3 d = displacement(delta, slide);
+    if (!slide || m_rulings[0].empty() || m_rulings[1].empty()) {
+        return 1.0;
+    }
+    const std::size_t left = leftFace(d);
+    const std::size_t into = 1 - left;
+    double reach = 1.0;
+    for (std::size_t i = 0; i < m_rulings[left].size(); ++i) {
+        // How far the point moves across the strip it moves into, along that strip's ruling.
+        const double across = along(left, i, d) * -dot(m_rulings[left][i], m_rulings[into][i]);
+        const double room = (1.0 - kCreaseSlideRoom) * m_rulingLengths[into][i];
+        if (across > room) {
+            reach = std::min(reach, room / across);
+        }
+    }
+    return reach;
+}
+
 Vec3 CreaseDrag::pointDisplacement(std::size_t i, const Vec3& delta, bool slide) const {
     const Vec3 d = displacement(delta, slide);
     if (!slide || m_rulings[0].empty() || m_rulings[1].empty()) {
         return d;
     }
-    // The face the crease moves away from: the one whose rulings point most along d.
-    double along[2] = {0.0, 0.0};
-    for (std::size_t k = 0; k < 2; ++k) {
-        for (const Vec3& r : m_rulings[k]) {
-            along[k] += dot(r, d);
-        }
-    }
-    const Vec3& r = m_rulings[along[1] > along[0] ? 1 : 0][i];
-    // A point whose ruling leans back against the motion stays (the crease does not move into
-    // the face it leaves).
-    return r * std::max(0.0, dot(r, d));
+    const std::size_t left = leftFace(d);
+    return m_rulings[left][i] * (along(left, i, d) * reach(delta, slide));
 }
 
 std::vector<VertexHandle> CreaseDrag::vertexHandles(const Vec3& delta, bool slide) const {

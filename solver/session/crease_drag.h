@@ -21,6 +21,10 @@ namespace devsurf::solver {
 // against 1.2e-12 and 15.3° along the rulings; on the lifted fig8, five slides, 3.0e-8 … 4.8e-7
 // against 2.4e-8 … 2.2e-7.) Where a side of the crease is not a strip or a cone (a planar face),
 // every point moves by the motion.
+//
+// Sliding stops before the strip the crease moves into is narrower than 0.3 of its width
+// anywhere (kCreaseSlideRoom): further, the crease crossed that strip's far curve and turned it
+// inside out (fig6's crease slid 120 mm across its 100 mm strip: folded 180° onto itself).
 class CreaseDrag {
 public:
     // Throws std::invalid_argument with a sentence if `edge` is not a crease of `surface` (an
@@ -34,8 +38,8 @@ public:
 
     // The handles for the crease moved by `delta` (model units). With `slide`, the component
     // of delta along normal() is removed first and the points move along the rulings (see
-    // above), so the crease moves within the surface; without it (an axis the designer chose),
-    // every point moves by delta. Linear in delta.
+    // above) as far as the strip they move into allows (reach()), so the crease moves within
+    // the surface; without it (an axis the designer chose), every point moves by delta.
     std::vector<VertexHandle> vertexHandles(const model::Vec3& delta, bool slide) const;
     std::vector<ControlPointHandle> controlPointHandles(const model::Vec3& delta, bool slide) const;
     // The motion the crease follows for `delta`: delta without its component along normal()
@@ -43,6 +47,9 @@ public:
     model::Vec3 displacement(const model::Vec3& delta, bool slide) const;
     // The displacement of control point i (0 … n − 1, the ends included) for `delta`.
     model::Vec3 pointDisplacement(std::size_t i, const model::Vec3& delta, bool slide) const;
+    // The fraction of the slide for `delta` that the points make: 1, or less where the strip
+    // the crease moves into would become narrower than kCreaseSlideRoom of its width.
+    double reach(const model::Vec3& delta, bool slide) const;
 
     // The end vertices that move (unpinned), and the positions at the start.
     const std::vector<model::VertexId>& vertices() const { return m_vertices; }
@@ -61,6 +68,16 @@ private:
     // face's ruling through the point, from the face towards the crease (empty if the face is
     // not a strip or a cone).
     std::vector<model::Vec3> m_rulings[2];
+    std::vector<double> m_rulingLengths[2]; // the lengths of those rulings
+
+    // The face the crease moves away from for the slide d (0 or 1), and the unclamped
+    // displacement of point i along its ruling.
+    std::size_t leftFace(const model::Vec3& d) const;
+    double along(std::size_t face, std::size_t i, const model::Vec3& d) const;
 };
+
+// The narrowest the strip a sliding crease moves into may become, as a fraction of its width
+// at the press (CreaseDrag::reach).
+constexpr double kCreaseSlideRoom = 0.3;
 
 } // namespace devsurf::solver

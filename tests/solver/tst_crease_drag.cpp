@@ -1,4 +1,5 @@
 #include "model/examples.h"
+#include "model/pattern/cutting_pattern.h"
 #include "model/strip.h"
 #include "solver/formulation/perturbation.h"
 #include "solver/quality/crease_quality.h"
@@ -217,6 +218,27 @@ private slots:
               offRulings, closest);
         QVERIFY2(offRulings < 0.1, qPrintable(QString::number(offRulings)));
         QVERIFY2(closest > 10.0, qPrintable(QString::number(closest)));
+    }
+
+    void aSlideStopsBeforeTheStripItEntersTurnsInsideOut() {
+        // fig6's crease slid 150 mm up its 100 mm strip: it stops where that strip keeps 30 %
+        // of its width, rather than crossing the far curve and folding the strip onto itself.
+        const model::CompositeSurface surface = fig6();
+        const CreaseDrag drag(surface, kCrease);
+        QCOMPARE(drag.reach({0.0, 10.0, 0.0}, true), 1.0);
+        const double reach = drag.reach({0.0, 150.0, 0.0}, true);
+        QVERIFY2(reach > 0.2 && reach < 0.6, qPrintable(QString::number(reach)));
+        QCOMPARE(drag.reach({0.0, 150.0, 0.0}, false), 1.0); // an axis the designer chose
+        const model::Vec3 limit = drag.pointDisplacement(3, {0.0, 150.0 * reach, 0.0}, true);
+        QVERIFY((drag.pointDisplacement(3, {0.0, 300.0, 0.0}, true) - limit).norm() < 1e-9);
+        const model::CompositeSurface result = dragCrease(surface, kCrease, {0.0, 150.0, 0.0});
+        QVERIFY(measureQuality(result).developabilityMax <= 1e-8);
+        const ShapeChange change = measureShapeChange(surface, result);
+        QVERIFY2(change.shortestRuling >= 0.25 && change.shortestRuling < 0.4,
+                 qPrintable(QString::number(change.shortestRuling)));
+        QCOMPARE(change.foldOverPlaces(), 0);
+        QVERIFY(model::selfOverlappingPatches(result).empty());
+        QVERIFY(measureCreaseQuality(result).meanFoldDegrees < 1.0);
     }
 
     void onlyCreasesCanBeDragged() {
