@@ -2,6 +2,7 @@
 #include "solver/core/analysis_cache.h"
 #include "solver/formulation/perturbation.h"
 #include "solver/quality/quality_measures.h"
+#include "solver/session/crease_drag.h"
 #include "solver/worker/solver_worker.h"
 
 #include "helical_band.h"
@@ -206,6 +207,52 @@ private slots:
         QVERIFY(result.surfaces.front() == session.surface());
         QVERIFY2(result.summaries.front().finalMaxConstraintResidual < 1e-8,
                  qPrintable(QString::number(result.summaries.front().finalMaxConstraintResidual)));
+    }
+
+    void creaseDragUsesItsOwnOptions() {
+        // fig6's crease slid 20 mm: moves of one iteration, then the release with 10. The
+        // worker gives the bits of a session built with creaseDragSessionOptions and settled
+        // before its last 10 iterations (the options of a vertex drag give other bits).
+        const model::CompositeSurface surface = model::makeExample("fig6").surfaces.front();
+        const CreaseDrag drag(surface, 2);
+        const model::Vec3 by{0.0, 20.0, 0.0};
+        SolverWorker worker;
+        QSignalSpy finished(&worker, &SolverWorker::finished);
+        SolveRequest request;
+        request.sessionKey = 6;
+        request.surfaces = {surface};
+        SolveSession session(surface, drag.vertexHandles({}, true),
+                             drag.controlPointHandles({}, true), creaseDragSessionOptions());
+        SolveSession vertexDrag(surface, drag.vertexHandles({}, true),
+                                drag.controlPointHandles({}, true));
+        for (int k = 1; k <= 11; ++k) {
+            const bool release = k == 11;
+            const model::Vec3 delta = by * (std::min(1.0, k / 10.0));
+            request.pulled[0] = drag.vertexHandles(delta, true);
+            request.pulledControlPoints[0] = drag.controlPointHandles(delta, true);
+            request.iterations = release ? 10 : 1;
+            request.settle = release;
+            request.revision = static_cast<quint64>(k);
+            worker.submit(request);
+            QVERIFY(waitForResults(finished, k));
+            for (SolveSession* each : {&session, &vertexDrag}) {
+                for (const VertexHandle& handle : drag.vertexHandles(delta, true)) {
+                    QVERIFY(each->setHandleTarget(handle.vertex, handle.target));
+                }
+                for (const ControlPointHandle& point : drag.controlPointHandles(delta, true)) {
+                    QVERIFY(each->setControlPointTarget(point.edge, point.index, point.target));
+                }
+                if (release) {
+                    each->settle();
+                }
+                QVERIFY(each->step(release ? 10 : 1).succeeded());
+            }
+        }
+        const SolveResult result = resultAt(finished, 10);
+        QVERIFY2(result.ok, qPrintable(result.error));
+        QVERIFY(result.surfaces.front() == session.surface());
+        QVERIFY(!(result.surfaces.front() == vertexDrag.surface()));
+        QVERIFY(measureQuality(result.surfaces.front()).developabilityMax <= 1e-8);
     }
 
     void automaticDragIsReplayedStretchingWhereKeepingLengthsFails() {
