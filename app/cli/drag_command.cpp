@@ -353,18 +353,18 @@ int runDragCommand(const std::vector<std::string>& positional,
     // Where the handles are at parameter t of the motion (a crease's points each move along
     // their own direction, see CreaseDrag).
     std::map<model::VertexId, model::Vec3> creaseShift;
+    std::vector<model::Vec3> pointShift; // per control point of the crease, ends included
     if (creaseDrag) {
         for (const solver::VertexHandle& handle : creaseDrag->vertexHandles(motion.by, true)) {
             creaseShift[handle.vertex] = handle.target - start.at(handle.vertex);
         }
+        pointShift = creaseDrag->pointDisplacements(motion.by, true);
     }
     auto targetAt = [&](model::VertexId id, const model::Vec3& position, double t) {
         return creaseDrag ? position + creaseShift.at(id) * t : motion.apply(position, t);
     };
     auto pointTargetAt = [&](const solver::ControlPointHandle& point, double t) {
-        return point.target + creaseDrag->pointDisplacement(static_cast<std::size_t>(point.index),
-                                                            motion.by, true) *
-                                  t;
+        return point.target + pointShift.at(static_cast<std::size_t>(point.index)) * t;
     };
     if (creaseDrag) {
         const model::Vec3 d = creaseDrag->displacement(motion.by, true);

@@ -164,30 +164,42 @@ double CreaseDrag::reach(const Vec3& delta, bool slide) const {
     return reach;
 }
 
-Vec3 CreaseDrag::pointDisplacement(std::size_t i, const Vec3& delta, bool slide) const {
+std::vector<Vec3> CreaseDrag::pointDisplacements(const Vec3& delta, bool slide) const {
     const Vec3 d = displacement(delta, slide);
+    const std::size_t count = m_controlStart.size() + 2;
     if (!slide || m_rulings[0].empty() || m_rulings[1].empty()) {
-        return d;
+        return std::vector<Vec3>(count, d);
     }
     const std::size_t left = leftFace(d);
-    return m_rulings[left][i] * (along(left, i, d) * reach(delta, slide));
+    const double scale = reach(delta, slide);
+    std::vector<Vec3> displacements;
+    for (std::size_t i = 0; i < count; ++i) {
+        displacements.push_back(m_rulings[left][i] * (along(left, i, d) * scale));
+    }
+    return displacements;
+}
+
+Vec3 CreaseDrag::pointDisplacement(std::size_t i, const Vec3& delta, bool slide) const {
+    return pointDisplacements(delta, slide).at(i);
 }
 
 std::vector<VertexHandle> CreaseDrag::vertexHandles(const Vec3& delta, bool slide) const {
+    const std::vector<Vec3> displacements = pointDisplacements(delta, slide);
     std::vector<VertexHandle> handles;
     for (std::size_t i = 0; i < m_vertices.size(); ++i) {
-        handles.push_back({m_vertices[i], false,
-                           m_vertexStart[i] + pointDisplacement(m_vertexIndex[i], delta, slide)});
+        handles.push_back(
+            {m_vertices[i], false, m_vertexStart[i] + displacements[m_vertexIndex[i]]});
     }
     return handles;
 }
 
 std::vector<ControlPointHandle> CreaseDrag::controlPointHandles(const Vec3& delta,
                                                                 bool slide) const {
+    const std::vector<Vec3> displacements = pointDisplacements(delta, slide);
     std::vector<ControlPointHandle> handles;
     for (std::size_t i = 0; i < m_controlStart.size(); ++i) {
-        handles.push_back({m_edge, static_cast<int>(i) + 1,
-                           m_controlStart[i] + pointDisplacement(i + 1, delta, slide)});
+        handles.push_back(
+            {m_edge, static_cast<int>(i) + 1, m_controlStart[i] + displacements[i + 1]});
     }
     return handles;
 }
