@@ -37,7 +37,8 @@ const char* const kUsage = R"(Usage: devsurf-cli COMMAND [OPTIONS]
 
 Commands:
   example NAME [--size K] -o FILE.devsurf
-                      Write a built-in example (sheet, annulus, cylinder, mixed).
+                      Write a built-in example (sheet, annulus, cylinder, mixed,
+                      fig8, fig6; `devsurf-cli examples` lists them).
   info FILE [--vertices] [--edges] [--json]
                       Print surfaces, faces per type, spline spaces, control points,
                       vertices and edges; --vertices lists every vertex (id, x y z,

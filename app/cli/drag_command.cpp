@@ -1,6 +1,7 @@
 #include "drag_command.h"
 
 #include "io/project_file.h"
+#include "model/held_by_pins.h"
 #include "model/model_error.h"
 #include "model/pattern/cutting_pattern.h"
 #include "solver/quality/crease_quality.h"
@@ -15,11 +16,13 @@
 #include <QString>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -374,6 +377,18 @@ int runDragCommand(const std::vector<std::string>& positional,
                       "and %zu end vertices pulled).\n",
                       creaseEdge, d.x, d.y, d.z, points.size(), pulled.size());
         std::cout << line;
+    }
+
+    // Pins that hold a dragged vertex where the sheet cannot bend (e.g. the four corners of a
+    // flat square): keeping lengths then cannot follow the drag, and the output says why.
+    std::optional<model::HeldVertex> held;
+    if (!crease && lengths != solver::DragLengths::Stretch) {
+        held = model::findVertexHeldByPins(surface, dragged);
+        if (held) {
+            std::string why = model::describeHeldVertex(*held);
+            why[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(why[0])));
+            std::cout << why << ".\n";
+        }
     }
 
     // The whole drag from the press, keeping lengths or not: one line per iteration; the

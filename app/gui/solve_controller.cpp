@@ -215,6 +215,24 @@ QString SolveController::problemsText(const solver::DragOutcome& outcome) {
     return parts.join(QStringLiteral(", "));
 }
 
+QString SolveController::heldText(const model::HeldVertex& held) {
+    if (held.pins.size() == 2) {
+        return tr("; vertex %1 lies on the straight line between the pinned vertices %2 and %3, "
+                  "which are as far apart as in the flat sheet, so bending cannot move it: the "
+                  "sheet stretched (unpin one of them to fold it)")
+            .arg(held.vertex)
+            .arg(held.pins[0])
+            .arg(held.pins[1]);
+    }
+    return tr("; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which "
+              "are as far apart as in the flat sheet, so bending cannot move it: the sheet "
+              "stretched (unpin one of them to fold it)")
+        .arg(held.vertex)
+        .arg(held.pins[0])
+        .arg(held.pins[1])
+        .arg(held.pins[2]);
+}
+
 SolveReport SolveController::reportOf(const solver::SolveResult& result,
                                       const QString& title) const {
     SolveReport report;
@@ -275,6 +293,11 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result,
                 status += tr("; keeping lengths failed (%1), so the drag was replayed letting "
                              "the sheet stretch")
                               .arg(problemsText(stretched.keepingLengths));
+            }
+        }
+        for (const solver::SolveResult::Held& held : result.held) {
+            if (held.surface == static_cast<int>(s)) {
+                status += heldText(held.held);
             }
         }
         if (s < result.surfaces.size()) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "model/composite_surface.h"
+#include "model/held_by_pins.h"
 #include "panels/solver_panel.h"
 #include "solver/session/drag_lengths.h"
 
@@ -50,6 +51,10 @@ public:
     // What went wrong keeping lengths, for the report: "folded over in 2 places, a development
     // overlapping itself".
     static QString problemsText(const solver::DragOutcome& outcome);
+    // Why keeping lengths could not follow a drag (model::findVertexHeldByPins), continuing a
+    // status sentence: "; vertex 5 lies inside the triangle of the pinned vertices 0, 3 and 12,
+    // …".
+    static QString heldText(const model::HeldVertex& held);
 
 public slots:
     void solve();

@@ -362,6 +362,12 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
         };
         Summary summary = session->step(iterations, &d.cancel, progress);
         std::optional<DragOutcome> judged;
+        if (drag && request.settle && request.keepLengths && points.empty()) {
+            const std::vector<model::VertexId> dragged(d.pulled[s].begin(), d.pulled[s].end());
+            if (auto held = model::findVertexHeldByPins(d.built[s], dragged)) {
+                result.held.push_back({static_cast<int>(s), *held});
+            }
+        }
         if (drag && request.settle && request.keepLengths && request.stretchIfLengthsFail &&
             points.empty() && summary.succeeded()) {
             // Automatic: keeping lengths failed? Then the same drag, stretching.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "model/held_by_pins.h"
 #include "solver/session/drag_lengths.h"
 #include "solver/session/solve_session.h"
 
@@ -71,6 +72,14 @@ struct SolveResult {
         DragOutcome keepingLengths;
     };
     std::vector<Stretched> stretched;
+    // The surfaces (indices) of a drag keeping lengths, in its settling request, where pinned
+    // vertices hold a dragged one where the sheet cannot bend (model::findVertexHeldByPins):
+    // the result then had to stretch, whatever keeping lengths damped.
+    struct Held {
+        int surface = 0;
+        model::HeldVertex held;
+    };
+    std::vector<Held> held;
     double elapsedMs = 0.0;
 };
 

@@ -302,6 +302,11 @@ private slots:
         QCOMPARE(result.stretched.size(), std::size_t(1));
         QCOMPARE(result.stretched.front().surface, 0);
         QVERIFY(result.stretched.front().keepingLengths.problems() > 0);
+        // Why: the four pinned corners hold the whole flat square (model::findVertexHeldByPins).
+        QCOMPARE(result.held.size(), std::size_t(1));
+        QCOMPARE(result.held.front().surface, 0);
+        QCOMPARE(result.held.front().held.pins.size(), std::size_t(3));
+        QVERIFY(fig8.isPinned(result.held.front().held.pins[0]));
         // The replay of the moves as solved (none coalesced here), bit for bit.
         const ReplayedDrag replay = replayStretching(fig8, moves, kIterationsAfterDrag);
         QVERIFY(result.surfaces.front() == replay.session->surface());
@@ -317,6 +322,7 @@ private slots:
         result = dragThroughWorker(fig6, {4}, 75.0, &moves);
         QVERIFY2(result.ok, qPrintable(result.error));
         QVERIFY(result.stretched.empty());
+        QVERIFY(result.held.empty()); // fig6's two pinned corners hold only its bottom edge
         QVERIFY2(result.summaries.front().finalMaxConstraintResidual < 1e-8,
                  qPrintable(QString::number(result.summaries.front().finalMaxConstraintResidual)));
     }

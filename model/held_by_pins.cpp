@@ -1,0 +1,223 @@
+#include "held_by_pins.h"
+
+#include "development.h"
+#include "sampled_mesh.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+#include <utility>
+
+namespace devsurf::model {
+
+namespace {
+
+// Samples per spline interval of the development (the pins' distances are those of its coarse
+// vertices, which are exact; the samples only outline the sheet).
+constexpr int kOutlineSamples = 4;
+// Points tested along a line between two pins, that it lies in the sheet.
+constexpr int kLineSamples = 32;
+
+double cross2(const Vec2& a, const Vec2& b) {
+    return a.x * b.y - a.y * b.x;
+}
+
+// The development as triangles, to test whether a point lies in the sheet.
+class Outline {
+public:
+    Outline(const SampledMesh& mesh, const Development& development, double scale)
+        : m_points(development.vertices), m_tolerance(1e-9 * scale) {
+        std::map<std::pair<int, int>, int> sides;
+        for (const std::vector<int>& face : mesh.faces) {
+            for (std::size_t k = 1; k + 1 < face.size(); ++k) {
+                m_triangles.push_back({face[0], face[k], face[k + 1]});
+            }
+            for (std::size_t k = 0; k < face.size(); ++k) {
+                const int a = face[k];
+                const int b = face[(k + 1) % face.size()];
+                ++sides[{std::min(a, b), std::max(a, b)}];
+            }
+        }
+        std::set<int> boundary;
+        for (const auto& [side, count] : sides) {
+            if (count == 1) {
+                boundary.insert(side.first);
+                boundary.insert(side.second);
+            }
+        }
+        for (int vertex : boundary) {
+            m_boundary.push_back(m_points[static_cast<std::size_t>(vertex)]);
+        }
+    }
+
+    bool contains(const Vec2& p) const {
+        for (const std::array<int, 3>& t : m_triangles) {
+            const Vec2& a = m_points[static_cast<std::size_t>(t[0])];
+            const Vec2& b = m_points[static_cast<std::size_t>(t[1])];
+            const Vec2& c = m_points[static_cast<std::size_t>(t[2])];
+            const double area = cross2(b - a, c - a);
+            if (std::abs(area) <= 0.0) {
+                continue;
+            }
+            const double sign = area > 0.0 ? 1.0 : -1.0;
+            const double tolerance = m_tolerance * (b - a).norm();
+            if (sign * cross2(b - a, p - a) >= -tolerance &&
+                sign * cross2(c - b, p - b) >= -tolerance &&
+                sign * cross2(a - c, p - c) >= -tolerance) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    // Whether the segment from p to q lies in the sheet (tested at evenly spaced points, the
+    // middle ones first: a line across a hole or a notch leaves the sheet there).
+    bool containsSegment(const Vec2& p, const Vec2& q) const {
+        for (int k = 0; k <= kLineSamples; ++k) {
+            const int step = (k % 2 == 0) ? k / 2 : -(k + 1) / 2;
+            const double t = 0.5 + static_cast<double>(step) / kLineSamples;
+            if (!contains(p + (q - p) * t)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    // Whether some point of the sheet's boundary lies strictly inside the triangle abc (a hole
+    // or a notch inside it).
+    bool boundaryInside(const Vec2& a, const Vec2& b, const Vec2& c) const {
+        const double area = cross2(b - a, c - a);
+        for (const Vec2& p : m_boundary) {
+            const double u = cross2(b - p, c - p) / area;
+            const double v = cross2(c - p, a - p) / area;
+            const double w = cross2(a - p, b - p) / area;
+            if (u > 1e-6 && v > 1e-6 && w > 1e-6) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+private:
+    std::vector<Vec2> m_points;
+    std::vector<std::array<int, 3>> m_triangles;
+    std::vector<Vec2> m_boundary;
+    double m_tolerance;
+};
+
+} // namespace
+
+std::optional<HeldVertex> findVertexHeldByPins(const CompositeSurface& surface,
+                                               const std::vector<VertexId>& vertices,
+                                               double relativeTolerance) {
+    const std::set<VertexId>& pinned = surface.pinnedVertices();
+    std::vector<VertexId> moving;
+    for (VertexId vertex : vertices) {
+        if (surface.hasVertex(vertex) && pinned.count(vertex) == 0) {
+            moving.push_back(vertex);
+        }
+    }
+    if (pinned.size() < 2 || moving.empty() || !surface.validate().empty()) {
+        return std::nullopt;
+    }
+    const SampledMesh mesh = sampleSurface(surface, kOutlineSamples);
+    const Development development = unfoldSampledMesh(mesh);
+    if (development.components != 1 || development.period) {
+        return std::nullopt;
+    }
+    double scale = 0.0;
+    for (const Vec2& p : development.vertices) {
+        scale = std::max({scale, std::abs(p.x), std::abs(p.y)});
+    }
+    if (!(scale > 0.0) || development.closureError > 1e-6 * scale) {
+        return std::nullopt; // not developable enough for its distances to mean anything
+    }
+    std::map<VertexId, Vec2> flat;
+    for (std::size_t i = 0; i < mesh.coarseVertexIds.size(); ++i) {
+        flat[mesh.coarseVertexIds[i]] = development.vertices[i];
+    }
+    const Outline outline(mesh, development, scale);
+
+    // Pairs of pins as far apart as in the development, along a line in the sheet.
+    const std::vector<VertexId> pins(pinned.begin(), pinned.end());
+    std::set<std::pair<VertexId, VertexId>> taut;
+    for (std::size_t i = 0; i < pins.size(); ++i) {
+        for (std::size_t j = i + 1; j < pins.size(); ++j) {
+            const Vec2 a = flat.at(pins[i]);
+            const Vec2 b = flat.at(pins[j]);
+            const double inPlane = (b - a).norm();
+            const double inSpace = distance(surface.position(pins[i]), surface.position(pins[j]));
+            if (inPlane > 0.0 && inSpace >= inPlane * (1.0 - relativeTolerance) &&
+                outline.containsSegment(a, b)) {
+                taut.insert({pins[i], pins[j]});
+            }
+        }
+    }
+    auto isTaut = [&](VertexId a, VertexId b) {
+        return taut.count({std::min(a, b), std::max(a, b)}) > 0;
+    };
+
+    for (VertexId vertex : moving) {
+        const Vec2 p = flat.at(vertex);
+        for (const auto& [a, b] : taut) {
+            const Vec2 pa = flat.at(a);
+            const Vec2 pb = flat.at(b);
+            const Vec2 d = pb - pa;
+            const double length = d.norm();
+            const double along = (d.x * (p - pa).x + d.y * (p - pa).y) / (length * length);
+            if (along > 0.0 && along < 1.0 &&
+                std::abs(cross2(d, p - pa)) / length <= relativeTolerance * length) {
+                return HeldVertex{vertex, {a, b}};
+            }
+        }
+        for (std::size_t i = 0; i < pins.size(); ++i) {
+            for (std::size_t j = i + 1; j < pins.size(); ++j) {
+                if (!isTaut(pins[i], pins[j])) {
+                    continue;
+                }
+                for (std::size_t k = j + 1; k < pins.size(); ++k) {
+                    if (!isTaut(pins[i], pins[k]) || !isTaut(pins[j], pins[k])) {
+                        continue;
+                    }
+                    const Vec2 a = flat.at(pins[i]);
+                    const Vec2 b = flat.at(pins[j]);
+                    const Vec2 c = flat.at(pins[k]);
+                    const double area = cross2(b - a, c - a);
+                    const double size = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+                    if (std::abs(area) <= 1e-6 * size * size) {
+                        continue; // three pins on a line hold only that line
+                    }
+                    const double u = cross2(b - p, c - p) / area;
+                    const double v = cross2(c - p, a - p) / area;
+                    const double w = cross2(a - p, b - p) / area;
+                    const double inside = -relativeTolerance;
+                    if (u >= inside && v >= inside && w >= inside &&
+                        !outline.boundaryInside(a, b, c)) {
+                        return HeldVertex{vertex, {pins[i], pins[j], pins[k]}};
+                    }
+                }
+            }
+        }
+    }
+    return std::nullopt;
+}
+
+std::string describeHeldVertex(const HeldVertex& held) {
+    std::ostringstream text;
+    text << "vertex " << held.vertex;
+    if (held.pins.size() == 2) {
+        text << " lies on the straight line between the pinned vertices " << held.pins[0] << " and "
+             << held.pins[1];
+    } else {
+        text << " lies inside the triangle of the pinned vertices " << held.pins[0] << ", "
+             << held.pins[1] << " and " << held.pins[2];
+    }
+    text << ", which are as far apart as in the flat sheet, so bending cannot move it; only "
+            "stretching can";
+    return text.str();
+}
+
+} // namespace devsurf::model
