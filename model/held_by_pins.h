@@ -23,7 +23,9 @@ struct HeldVertex {
 // The first of `vertices` (in their order) that its surface's pinned vertices hold, and the pins
 // that hold it; nothing when none is held, when the surface has fewer than two pinned vertices,
 // or when it does not unfold into one piece (its development is then not a single plane region).
-// Distances count as equal within `relativeTolerance` of the pins' distance.
+// Distances count as equal within `relativeTolerance` of the pins' distance. With more than 300
+// pins only lines between two of them are considered. Cost: a development of the surface
+// (0.2 ms for fig8, about 0.1 s for 5,000 vertices).
 std::optional<HeldVertex> findVertexHeldByPins(const CompositeSurface& surface,
                                                const std::vector<VertexId>& vertices,
                                                double relativeTolerance = 1e-6);
