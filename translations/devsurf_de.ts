@@ -623,9 +623,19 @@
     </message>
     <message>
         <location filename="../app/gui/drag_tool.cpp" line="258"/>
-        <location filename="../app/gui/drag_tool.cpp" line="280"/>
+        <location filename="../app/gui/drag_tool.cpp" line="284"/>
         <source>a drag started</source>
         <translation>ein Ziehen hat begonnen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="383"/>
+        <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
+        <translation>Die festgehaltenen Ecken %1 und %2 halten Ecke %3 auf der Geraden zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="389"/>
+        <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
+        <translation>Die festgehaltenen Ecken %1, %2 und %3 halten Ecke %4 im Dreieck zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
     <message>
         <location filename="../app/gui/drag_tool.cpp" line="85"/>
@@ -658,7 +668,7 @@
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="478"/>
+        <location filename="../app/gui/drag_tool.cpp" line="503"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

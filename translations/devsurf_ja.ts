@@ -609,9 +609,19 @@
     </message>
     <message>
         <location filename="../app/gui/drag_tool.cpp" line="258"/>
-        <location filename="../app/gui/drag_tool.cpp" line="280"/>
+        <location filename="../app/gui/drag_tool.cpp" line="284"/>
         <source>a drag started</source>
         <translation>ドラッグが始まりました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="383"/>
+        <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
+        <translation>固定点 %1 と %2 が頂点 %3 をその間の直線上に押さえています (2 点の距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="389"/>
+        <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
+        <translation>固定点 %1、%2、%3 が頂点 %4 をその三角形の中に押さえています (距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
     <message>
         <location filename="../app/gui/drag_tool.cpp" line="85"/>
@@ -644,7 +654,7 @@
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="478"/>
+        <location filename="../app/gui/drag_tool.cpp" line="503"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

@@ -262,6 +262,10 @@ bool DragTool::press(const QPoint& pos) {
     for (model::VertexId v : m_vertices) {
         m_start.push_back(surface.position(v));
     }
+    m_held.reset();
+    if (SolveController::keepsLengths() && surface.vertices().size() <= kHeldCheckVertices) {
+        m_held = model::findVertexHeldByPins(surface, m_vertices); // 0.2 ms on fig8
+    }
     return start(pos, surface.position(pick->id));
 }
 
@@ -279,6 +283,7 @@ bool DragTool::pressCrease(const QPoint& pos, const Pick& pick) {
     if (m_solver->isSolving()) {
         m_solver->cancel(tr("a drag started"));
     }
+    m_held.reset(); // a dragged crease stretches its strips on purpose
     m_surface = pick.surface;
     m_vertices = m_crease->vertices();
     m_start = m_crease->vertexStart();
@@ -335,7 +340,7 @@ void DragTool::move(const QPoint& pos) {
         return;
     }
     m_moved = true;
-    emit statusMessage(motionText());
+    emit statusMessage(heldText() + motionText());
     submit(1);
 }
 
@@ -367,6 +372,26 @@ bool DragTool::targetsAt(const QPoint& pos, std::vector<model::Vec3>& targets) {
         targets[i] = m_start[i] + delta;
     }
     return true;
+}
+
+QString DragTool::heldText() const {
+    if (!m_held || m_crease) {
+        return {};
+    }
+    const model::HeldVertex& held = *m_held;
+    if (held.pins.size() == 2) {
+        return tr("Pins %1 and %2 hold vertex %3 on the straight line between them (they are as "
+                  "far apart as in the flat sheet): it moves only by stretching the sheet. ")
+            .arg(held.pins[0])
+            .arg(held.pins[1])
+            .arg(held.vertex);
+    }
+    return tr("Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far "
+              "apart as in the flat sheet): it moves only by stretching the sheet. ")
+        .arg(held.pins[0])
+        .arg(held.pins[1])
+        .arg(held.pins[2])
+        .arg(held.vertex);
 }
 
 bool DragTool::keepsLengths() const {

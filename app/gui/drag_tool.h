@@ -2,6 +2,7 @@
 
 #include "model/composite_surface.h"
 #include "model/document/selection.h"
+#include "model/held_by_pins.h"
 #include "panels/solver_panel.h"
 #include "solver/session/crease_drag.h"
 #include "solver/session/solve_session.h"
@@ -9,7 +10,9 @@
 #include <QObject>
 #include <QPoint>
 
+#include <cstddef>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QAction;
@@ -118,6 +121,9 @@ private:
     // settle: the iterations after the release (SolveSession::settle()).
     void submit(int iterations, bool settle = false);
     bool keepsLengths() const;
+    // "Pins 0, 3 and 12 hold vertex 5 …", before the motion's sentence, while pins hold a
+    // dragged vertex where the sheet cannot bend (m_held); empty otherwise.
+    QString heldText() const;
     void onResult(const solver::SolveResult& result);
     void end(bool applied, const QString& sentence);
     bool handleKey(QEvent* event);
@@ -145,6 +151,11 @@ private:
     model::Vec3 m_creaseShift;  // the motion the crease follows (status bar)
     model::Vec3 m_creaseDelta;  // the mouse's motion, on the axis if one is held
     bool m_creaseSlides = true; // no axis held: the crease slides within the surface
+    // Pins that hold a dragged vertex where the sheet cannot bend (model::findVertexHeldByPins),
+    // found at the press of a vertex drag keeping lengths on a surface of at most
+    // kHeldCheckVertices vertices (larger ones hear it from the worker after the release).
+    std::optional<model::HeldVertex> m_held;
+    static constexpr std::size_t kHeldCheckVertices = 2000;
 };
 
 } // namespace devsurf::app

@@ -499,6 +499,54 @@ private slots:
         QTest::mouseRelease(s.gl, Qt::LeftButton, {}, QPoint(5, 5));
     }
 
+    // fig8 with all four corners pinned: they hold the whole flat square, so a vertex drag that
+    // keeps lengths must stretch it. The status bar says so while the mouse moves, the Solver
+    // panel after the release.
+    void aDragOfAVertexThePinsHoldSaysSo() {
+        app::MainWindow w;
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        w.workspace()->newFromExample(QStringLiteral("fig8"), 0);
+        document::Document* doc = w.workspace()->document();
+        doc->undoStack()->push(
+            document::PinVerticesCommand::create(*doc, 0, {12, 15}, true).takeCommand().release());
+        w.action(QStringLiteral("actionDragTool"))->setChecked(true);
+        QWidget* gl = w.surfaceView()->glWidget();
+        w.surfaceView()->grabImage();
+        const QPoint at = w.surfaceView()->projectVertexToWidget(0, 5);
+        const auto pick = w.surfaceView()->pickAt(at);
+        QVERIFY(pick && pick->kind == Pick::Kind::Vertex && pick->id == 5);
+        QSignalSpy status(w.dragTool(), &app::DragTool::statusMessage);
+        QSignalSpy finished(w.dragTool(), &app::DragTool::dragFinished);
+        QTest::mousePress(gl, Qt::LeftButton, {}, at);
+        QTest::mouseMove(gl, at + QPoint(0, -10));
+        QVERIFY(!status.isEmpty());
+        const QString moving = status.back().front().toString();
+        QVERIFY2(moving.startsWith(QStringLiteral("Pins 0, 3 and 12 hold vertex 5 in the "
+                                                  "triangle between them")),
+                 qPrintable(moving));
+        QTest::mouseRelease(gl, Qt::LeftButton, {}, at + QPoint(0, -10));
+        QVERIFY(finished.wait(60000));
+        const QString report = w.solverPanel()->statusText();
+        QVERIFY2(report.contains(QStringLiteral("vertex 5 lies inside the triangle of the pinned "
+                                                "vertices 0, 3 and 12")),
+                 qPrintable(report));
+
+        // The example's two bottom corners hold only the bottom edge: nothing said.
+        doc->undoStack()->undo(); // the drag
+        doc->undoStack()->undo(); // the two pins
+        QVERIFY(!doc->surface(0).isPinned(12));
+        status.clear();
+        QTest::mousePress(gl, Qt::LeftButton, {}, at);
+        QTest::mouseMove(gl, at + QPoint(0, -10));
+        QVERIFY(!status.isEmpty());
+        QVERIFY(status.back().front().toString().startsWith(QStringLiteral("Dragging")));
+        QTest::mouseRelease(gl, Qt::LeftButton, {}, at + QPoint(0, -10));
+        QVERIFY(finished.wait(60000));
+        QVERIFY(!w.solverPanel()->statusText().contains(QStringLiteral("pinned vertices")));
+    }
+
 private:
     static app::MainWindow* window(Setup& s) { return &s.window; }
 };
