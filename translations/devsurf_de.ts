@@ -2240,16 +2240,6 @@
         <translation>eine zum Messen zu entartete Form</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="220"/>
-        <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched (unpin one of them to fold it)</source>
-        <translation>; Ecke %1 liegt auf der Geraden zwischen den festgehaltenen Ecken %2 und %3, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt (geben Sie eine davon frei, um es zu falten)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/solve_controller.cpp" line="227"/>
-        <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched (unpin one of them to fold it)</source>
-        <translation>; Ecke %1 liegt im Dreieck der festgehaltenen Ecken %2, %3 und %4, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt (geben Sie eine davon frei, um es zu falten)</translation>
-    </message>
-    <message>
         <location filename="../app/gui/solve_controller.cpp" line="243"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
@@ -2371,6 +2361,16 @@
         <location filename="../app/gui/solve_controller.cpp" line="393"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="220"/>
+        <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
+        <translation>; Ecke %1 liegt auf der Geraden zwischen den festgehaltenen Ecken %2 und %3, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="227"/>
+        <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
+        <translation>; Ecke %1 liegt im Dreieck der festgehaltenen Ecken %2, %3 und %4, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
         <location filename="../app/gui/solve_controller.cpp" line="376"/>

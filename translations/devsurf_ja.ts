@@ -2206,16 +2206,6 @@
         <translation>測定できないほど退化した形</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="220"/>
-        <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched (unpin one of them to fold it)</source>
-        <translation>; 頂点 %1 は固定した頂点 %2 と %3 を結ぶ直線上にあり、この 2 点の距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました (折るにはどちらかの固定を解除してください)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/solve_controller.cpp" line="227"/>
-        <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched (unpin one of them to fold it)</source>
-        <translation>; 頂点 %1 は固定した頂点 %2、%3、%4 の三角形の内側にあり、これらの距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました (折るにはいずれかの固定を解除してください)</translation>
-    </message>
-    <message>
         <location filename="../app/gui/solve_controller.cpp" line="243"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>中止しました。デザインは変更されていません。</translation>
@@ -2333,6 +2323,16 @@
         <location filename="../app/gui/solve_controller.cpp" line="393"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>ソルブに失敗しました: %1 デザインは変更されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="220"/>
+        <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
+        <translation>; 頂点 %1 は固定した頂点 %2 と %3 を結ぶ直線上にあり、この 2 点の距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="227"/>
+        <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
+        <translation>; 頂点 %1 は固定した頂点 %2、%3、%4 の三角形の内側にあり、これらの距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
         <location filename="../app/gui/solve_controller.cpp" line="376"/>

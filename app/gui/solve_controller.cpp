@@ -219,14 +219,14 @@ QString SolveController::heldText(const model::HeldVertex& held) {
     if (held.pins.size() == 2) {
         return tr("; vertex %1 lies on the straight line between the pinned vertices %2 and %3, "
                   "which are as far apart as in the flat sheet, so bending cannot move it: the "
-                  "sheet stretched (unpin one of them to fold it)")
+                  "sheet stretched")
             .arg(held.vertex)
             .arg(held.pins[0])
             .arg(held.pins[1]);
     }
     return tr("; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which "
               "are as far apart as in the flat sheet, so bending cannot move it: the sheet "
-              "stretched (unpin one of them to fold it)")
+              "stretched")
         .arg(held.vertex)
         .arg(held.pins[0])
         .arg(held.pins[1])
