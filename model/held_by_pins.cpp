@@ -227,7 +227,8 @@ std::optional<HeldVertex> findVertexHeldByPins(const CompositeSurface& surface,
 
     // Pairs of pins as far apart as in the development, along a line in the sheet.
     const std::vector<VertexId> pins(pinned.begin(), pinned.end());
-    std::set<std::pair<VertexId, VertexId>> taut;
+    std::vector<std::pair<std::size_t, std::size_t>> taut; // indices into pins
+    std::vector<char> tautMatrix(pins.size() * pins.size(), 0);
     for (std::size_t i = 0; i < pins.size(); ++i) {
         for (std::size_t j = i + 1; j < pins.size(); ++j) {
             const Vec2 a = flat.at(pins[i]);
@@ -236,17 +237,20 @@ std::optional<HeldVertex> findVertexHeldByPins(const CompositeSurface& surface,
             const double inSpace = distance(surface.position(pins[i]), surface.position(pins[j]));
             if (inPlane > 0.0 && inSpace >= inPlane * (1.0 - relativeTolerance) &&
                 outline.containsSegment(a, b)) {
-                taut.insert({pins[i], pins[j]});
+                taut.push_back({i, j});
+                tautMatrix[i * pins.size() + j] = 1;
             }
         }
     }
-    auto isTaut = [&](VertexId a, VertexId b) {
-        return taut.count({std::min(a, b), std::max(a, b)}) > 0;
+    auto isTaut = [&](std::size_t i, std::size_t j) { // i < j
+        return tautMatrix[i * pins.size() + j] != 0;
     };
 
     for (VertexId vertex : moving) {
         const Vec2 p = flat.at(vertex);
-        for (const auto& [a, b] : taut) {
+        for (const auto& [i, j] : taut) {
+            const VertexId a = pins[i];
+            const VertexId b = pins[j];
             const Vec2 pa = flat.at(a);
             const Vec2 pb = flat.at(b);
             const Vec2 d = pb - pa;
@@ -262,11 +266,11 @@ std::optional<HeldVertex> findVertexHeldByPins(const CompositeSurface& surface,
         }
         for (std::size_t i = 0; i < pins.size(); ++i) {
             for (std::size_t j = i + 1; j < pins.size(); ++j) {
-                if (!isTaut(pins[i], pins[j])) {
+                if (!isTaut(i, j)) {
                     continue;
                 }
                 for (std::size_t k = j + 1; k < pins.size(); ++k) {
-                    if (!isTaut(pins[i], pins[k]) || !isTaut(pins[j], pins[k])) {
+                    if (!isTaut(i, k) || !isTaut(j, k)) {
                         continue;
                     }
                     const Vec2 a = flat.at(pins[i]);

@@ -263,7 +263,8 @@ bool DragTool::press(const QPoint& pos) {
         m_start.push_back(surface.position(v));
     }
     m_held.reset();
-    if (SolveController::keepsLengths() && surface.vertices().size() <= kHeldCheckVertices) {
+    if (SolveController::keepsLengths() && surface.vertices().size() <= kHeldCheckVertices &&
+        surface.pinnedVertices().size() <= kHeldCheckPins) {
         m_held = model::findVertexHeldByPins(surface, m_vertices); // 0.2 ms on fig8
     }
     return start(pos, surface.position(pick->id));
