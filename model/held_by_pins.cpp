@@ -36,6 +36,7 @@ double cross2(const Vec2& a, const Vec2& b) {
 // in the sheet.
 class Outline {
 public:
+    // Keeps a reference to the development's points, which must outlive it.
     Outline(const SampledMesh& mesh, const Development& development, double scale)
         : m_points(development.vertices), m_tolerance(1e-9 * scale) {
         std::unordered_map<std::uint64_t, int> sides;
@@ -176,7 +177,7 @@ private:
         return static_cast<long>(y) * m_columns + static_cast<long>(x);
     }
 
-    std::vector<Vec2> m_points;
+    const std::vector<Vec2>& m_points;
     std::vector<std::array<int, 3>> m_triangles;
     std::vector<Vec2> m_boundary;
     double m_tolerance;
@@ -298,7 +299,7 @@ std::optional<HeldVertex> findVertexHeldByPins(const CompositeSurface& surface,
 
 std::string describeHeldVertex(const HeldVertex& held) {
     std::ostringstream text;
-    text << "vertex " << held.vertex;
+    text << "Vertex " << held.vertex;
     if (held.pins.size() == 2) {
         text << " lies on the straight line between the pinned vertices " << held.pins[0] << " and "
              << held.pins[1];
@@ -307,7 +308,7 @@ std::string describeHeldVertex(const HeldVertex& held) {
              << held.pins[1] << " and " << held.pins[2];
     }
     text << ", which are as far apart as in the flat sheet, so bending cannot move it; only "
-            "stretching can";
+            "stretching can.";
     return text.str();
 }
 

@@ -16,7 +16,6 @@
 #include <QString>
 
 #include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -385,9 +384,7 @@ int runDragCommand(const std::vector<std::string>& positional,
     if (!crease && lengths != solver::DragLengths::Stretch) {
         held = model::findVertexHeldByPins(surface, dragged);
         if (held) {
-            std::string why = model::describeHeldVertex(*held);
-            why[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(why[0])));
-            std::cout << why << ".\n";
+            std::cout << model::describeHeldVertex(*held) << "\n";
         }
     }
 

@@ -179,10 +179,6 @@ std::vector<Vec3> CreaseDrag::pointDisplacements(const Vec3& delta, bool slide) 
     return displacements;
 }
 
-Vec3 CreaseDrag::pointDisplacement(std::size_t i, const Vec3& delta, bool slide) const {
-    return pointDisplacements(delta, slide).at(i);
-}
-
 std::vector<VertexHandle> CreaseDrag::vertexHandles(const Vec3& delta, bool slide) const {
     const std::vector<Vec3> displacements = pointDisplacements(delta, slide);
     std::vector<VertexHandle> handles;

@@ -45,10 +45,8 @@ public:
     // The motion the crease follows for `delta`: delta without its component along normal()
     // when sliding, else delta.
     model::Vec3 displacement(const model::Vec3& delta, bool slide) const;
-    // The displacements of the control points 0 … n − 1 (the ends included) for `delta`, and
-    // that of control point i alone.
+    // The displacements of the control points 0 … n − 1 (the ends included) for `delta`.
     std::vector<model::Vec3> pointDisplacements(const model::Vec3& delta, bool slide) const;
-    model::Vec3 pointDisplacement(std::size_t i, const model::Vec3& delta, bool slide) const;
     // The fraction of the slide for `delta` that the points make: 1, or less where the strip
     // the crease moves into would become narrower than kCreaseSlideRoom of its width.
     double reach(const model::Vec3& delta, bool slide) const;
