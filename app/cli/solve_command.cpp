@@ -178,6 +178,14 @@ int runSolveCommand(const std::vector<std::string>& positional,
                           it.solveMs, quality.describe().c_str());
             std::cout << line;
         }
+        // Solve ends on its best iterate (SolveSession::returnToBestIterate).
+        const solver::SolveSession::BestIterate best = session->returnToBestIterate();
+        if (best.iteration > 0) {
+            std::cout << "Ended on iteration " << best.iteration
+                      << ", the one with the smallest residual.\n";
+            last.finalMaxConstraintResidual = best.residual;
+            last.toleranceReached = best.residual <= last.tolerance;
+        }
         reportTolerance(*session, last);
         surface = session->surface();
         std::cout << solver::describeFoldOvers(solver::foldOvers(surface)) << "\n"

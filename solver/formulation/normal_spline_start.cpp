@@ -54,7 +54,7 @@ model::SplineSpace normalSplineSpace(const model::SplineSpace& curves, bool exac
     return {2 * curves.degree - 1, std::max(0, curves.smoothness - 1), curves.intervals};
 }
 
-bool isDevelopableStart(const model::Strip& strip) {
+bool isDevelopableStart(const model::Strip& strip, double limit) {
     if (strip.isCone()) {
         return true;
     }
@@ -70,7 +70,7 @@ bool isDevelopableStart(const model::Strip& strip) {
         strip.a.pointAndTangent(u, a, ta);
         strip.b.pointAndTangent(u, b, tb);
         const Vec3 d = a - b;
-        if (std::abs(det(d, ta, tb)) > 1e-9 * d.norm() * ta.norm() * tb.norm()) {
+        if (std::abs(det(d, ta, tb)) > limit * d.norm() * ta.norm() * tb.norm()) {
             return false;
         }
     }

@@ -13,9 +13,12 @@ namespace devsurf::solver {
 // start consistently oriented (docs/math.md §2, §5). A collapsed ruling (SRS end) uses a′ × b′.
 model::Vec3 initialStripNormal(const model::Strip& strip, double u);
 
-// True if the strip's normalised det(a − b, a′, b′) is at most 1e-9 at 50 values per knot interval
-// (cones: always).
-bool isDevelopableStart(const model::Strip& strip);
+// The largest normalised det(a − b, a′, b′) at which isDevelopableStart holds by default.
+inline constexpr double kDevelopableStartLimit = 1e-9;
+
+// True if the strip's normalised det(a − b, a′, b′) is at most `limit` at 50 values per knot
+// interval (cones: always).
+bool isDevelopableStart(const model::Strip& strip, double limit = kDevelopableStartLimit);
 
 // The space of a strip's normal spline, for curves in `curves` = S(m, k, n). Exact: N = a′ × (b −
 // a) of curves in S(m, k, n) lies in S(2m − 1, k − 1, n), so every developable strip of the design

@@ -140,7 +140,7 @@ struct SurfaceFormulation::Builder {
                 planarFaces.push_back(id);
             } else {
                 strips.push_back(model::stripOfFace(surface, id));
-                if (isDevelopableStart(strips.back())) {
+                if (isDevelopableStart(strips.back(), options.developableStartLimit)) {
                     developableStarts.insert(id);
                 }
             }

@@ -3,6 +3,7 @@
 #include "model/composite_surface.h"
 #include "solver/core/options.h"
 #include "solver/core/problem.h"
+#include "solver/formulation/normal_spline_start.h"
 
 #include <map>
 #include <string>
@@ -117,6 +118,14 @@ struct FormulationOptions {
     // for cubic C² curves), which contains the normal of every developable strip of the
     // design space, instead of the paper's cubic C² (see the Builder).
     bool exactNormalSpace = true;
+    // The largest normalised det(a − b, a′, b′) at which a strip counts as developable at the
+    // start (isDevelopableStart): such a strip gets the exact normal space and the exact fit of
+    // its normal, so the iteration starts at its residual. Solve of a nearly valid design
+    // (SolveSession) raises it to kNearlyValidResidual: with the default, the cubic fit of the
+    // curved fold a drag keeping lengths leaves on the lifted Fig. 8 (sampled det 6.6e-7)
+    // started Solve at 1.1e-4 instead of 3e-8, and its steps wrecked the design (1.1e-2 after
+    // 30 iterations, a point moved by 116 mm); with it, 2.6e-8 after 30 (0.08 mm).
+    double developableStartLimit = kDevelopableStartLimit;
 
     // Constraint weights (the W of (6)).
     double developabilityWeight = 1.0;

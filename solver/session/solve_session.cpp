@@ -166,6 +166,9 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
         m_options.formulation.relativeFairness = true;
         m_options.formulation.vertexStartDefectLimit =
             std::min(m_options.formulation.vertexStartDefectLimit, kValidSolveStarDefectLimit);
+        // Its strips keep their exact normals (see FormulationOptions::developableStartLimit).
+        m_options.formulation.developableStartLimit =
+            std::max(m_options.formulation.developableStartLimit, kNearlyValidResidual);
     } else if (m_options.solver.proximityFactor == 0.0) {
         // Nothing pulled and a rough start (see kRoughSolveProximity).
         m_options.solver.proximityFactor = kRoughSolveProximity;
@@ -291,6 +294,11 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         total.finalMaxConstraintResidual = summary.finalMaxConstraintResidual;
         total.finalEnergy = summary.finalEnergy;
         m_residual = summary.finalMaxConstraintResidual;
+        if (!m_dragging && m_residual < m_bestResidual) {
+            m_bestResidual = m_residual;
+            m_bestX = m_x;
+            m_bestIteration = m_iterationsDone;
+        }
         if (perIteration) {
             perIteration(stats);
         }
@@ -305,6 +313,16 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
     total.totalMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return total;
+}
+
+SolveSession::BestIterate SolveSession::returnToBestIterate() {
+    if (m_dragging || m_bestIteration == 0 || !(m_residual > m_bestResidual)) {
+        return {0, m_residual};
+    }
+    m_x = m_bestX;
+    m_formulation->writeBack(m_x, m_surface); // written once already: it is finite
+    m_residual = m_bestResidual;
+    return {m_bestIteration, m_bestResidual};
 }
 
 std::vector<SurfaceFormulation::FaceResidual> SolveSession::worstFaces() const {

@@ -286,6 +286,19 @@ public:
     // Faces worst first at the current state (SurfaceFormulation::faceResiduals).
     std::vector<SurfaceFormulation::FaceResidual> worstFaces() const;
 
+    // A Solve (nothing pulled) remembers, over all step() calls, the iterate whose largest
+    // constraint residual was the smallest. If the current iterate's is larger, this goes back
+    // to that one (state and surface()) and returns its iteration (counted from 1 over all
+    // calls) and residual; otherwise, and in a drag, it stays and returns {0, residual}.
+    // Measured: Solve of the lifted Fig. 8 kept at its lengths cycles between 2.6e-8,
+    // 1.7e-6 and 1.8e-6, so where it ended depended on the iteration count (10 iterations:
+    // sampled det 1.3e-6 from 6.6e-7; 30: 6.3e-7).
+    struct BestIterate {
+        int iteration = 0;
+        double residual = 0.0;
+    };
+    BestIterate returnToBestIterate();
+
 private:
     SessionOptions m_options;
     model::CompositeSurface m_surface;
@@ -298,6 +311,10 @@ private:
     bool m_settling = false;
     bool m_lengthDampingFades = false; // the residual has fallen to kRoughSolveLengthDampingUntil
     double m_residual = std::numeric_limits<double>::infinity(); // at the last iterate
+    // The iterate of smallest residual of a Solve (returnToBestIterate).
+    std::vector<double> m_bestX;
+    double m_bestResidual = std::numeric_limits<double>::infinity();
+    int m_bestIteration = 0;
 };
 
 } // namespace devsurf::solver

@@ -361,6 +361,17 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
             QMetaObject::invokeMethod(this, "deliverResults", Qt::QueuedConnection);
         };
         Summary summary = session->step(iterations, &d.cancel, progress);
+        if (!drag && summary.succeeded()) {
+            // Solve ends on its best iterate (SolveSession::returnToBestIterate).
+            const SolveSession::BestIterate best = session->returnToBestIterate();
+            if (best.iteration > 0) {
+                summary.finalMaxConstraintResidual = best.residual;
+                summary.toleranceReached = best.residual <= summary.tolerance;
+                summary.message += std::string(summary.message.empty() ? "" : "; ") +
+                                   "ended on iteration " + std::to_string(best.iteration) +
+                                   ", the one with the smallest residual";
+            }
+        }
         std::optional<DragOutcome> judged;
         if (drag && request.settle && request.keepLengths && points.empty()) {
             const std::vector<model::VertexId> dragged(d.pulled[s].begin(), d.pulled[s].end());

@@ -6,6 +6,7 @@
 #include "solver/quality/shape_change.h"
 #include "solver/session/solve_session.h"
 
+#include "lifted_fig8.h"
 #include "test_registry.h"
 
 #include <QTest>
@@ -154,6 +155,35 @@ private slots:
         // A valid design: one iteration.
         SolveSession again(solve.surface(), {}, stopping);
         QCOMPARE(again.step(kSolveIterations).iterationsCompleted, 1);
+    }
+
+    void solveReturnsToItsBestIterate() {
+        // fig8 folded by lifting its middle 85 mm keeping lengths: Solve's residual then
+        // cycles (about 2.6e-8, 1.7e-6, 1.8e-6), so its last iterate is seldom its best.
+        const model::CompositeSurface folded = testing::liftedFig8(20);
+        SolveSession drag(folded, {{5, false, folded.position(5) + model::Vec3{0, 0, 1}}});
+        QVERIFY(drag.step(2).succeeded());
+        QCOMPARE(drag.returnToBestIterate().iteration, 0); // a drag never goes back
+
+        SolveSession solve(folded, {});
+        std::vector<double> residuals;
+        std::vector<std::vector<double>> states;
+        for (int i = 0; i < 10; ++i) {
+            const Summary summary = solve.step(1);
+            QVERIFY2(summary.succeeded(), summary.briefReport().c_str());
+            residuals.push_back(summary.finalMaxConstraintResidual);
+            states.push_back(solve.state());
+        }
+        const auto best = std::min_element(residuals.begin(), residuals.end());
+        QVERIFY2(*best < residuals.back(), "the last iterate was the best one");
+        const SolveSession::BestIterate back = solve.returnToBestIterate();
+        QCOMPARE(back.iteration, static_cast<int>(best - residuals.begin()) + 1);
+        QCOMPARE(back.residual, *best);
+        QVERIFY(sameBits(solve.state(), states[static_cast<std::size_t>(back.iteration - 1)]));
+        QVERIFY(measureQuality(solve.surface()).developabilityMax <=
+                measureQuality(folded).developabilityMax);
+        // Once there, it stays.
+        QCOMPARE(solve.returnToBestIterate().iteration, 0);
     }
 
     void secondSessionOnSameStructureDoesNoSymbolicAnalysis() {
