@@ -4,6 +4,7 @@
 #include "model/model_error.h"
 #include "model/pattern/cutting_pattern.h"
 #include "solver/formulation/perturbation.h"
+#include "solver/quality/crease_quality.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
 #include "solver/session/solve_session.h"
@@ -188,6 +189,17 @@ int runSolveCommand(const std::vector<std::string>& positional,
         }
         reportTolerance(*session, last);
         surface = session->surface();
+        // The solver's residual holds at collocation values; the crease conditions sampled
+        // along the whole creases (as the Solver panel gives them).
+        if (const solver::CreaseQuality creases = solver::measureCreaseQuality(surface);
+            creases.creases > 0) {
+            char line[160];
+            std::snprintf(line, sizeof line,
+                          "Creases: %d with a condition, sampled along them: residual max %.2e "
+                          "mean %.2e.\n",
+                          creases.creases, creases.residualMax, creases.residualMean);
+            std::cout << line;
+        }
         std::cout << solver::describeFoldOvers(solver::foldOvers(surface)) << "\n"
                   << model::describeSelfOverlap(model::selfOverlappingPatches(surface)) << "\n";
     }

@@ -318,6 +318,9 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result,
             }
             report.foldedOver << folded;
         }
+        if (s < result.creaseResiduals.size()) {
+            report.creaseResidual = std::max(report.creaseResidual, result.creaseResiduals[s]);
+        }
         if (s < result.selfOverlaps.size() && !result.selfOverlaps[s].empty()) {
             // Every condition may hold and the development still overlap itself, e.g. where a
             // patch was turned over in the plane: such a design cannot be cut from one sheet.

@@ -1,6 +1,7 @@
 #include "solver/worker/solver_worker.h"
 
 #include "model/pattern/cutting_pattern.h"
+#include "solver/quality/crease_quality.h"
 #include "solver/quality/quality_measures.h"
 
 #include <atomic>
@@ -247,6 +248,21 @@ void SolverWorker::deliverResults() {
     }
 }
 
+namespace {
+
+// SolveResult::creaseResiduals of one surface.
+double sampledCreaseResidual(const model::CompositeSurface& surface) {
+    for (const auto& [id, edge] : surface.edges()) {
+        if (edge.condition != model::CreaseCondition::None) {
+            const CreaseQuality quality = measureCreaseQuality(surface);
+            return quality.creases > 0 ? quality.residualMax : -1.0;
+        }
+    }
+    return -1.0;
+}
+
+} // namespace
+
 SolveResult SolverWorker::solve(const SolveRequest& request) {
     const auto start = std::chrono::steady_clock::now();
     Impl& d = *m_impl;
@@ -447,6 +463,7 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
         result.summaries.push_back(summary);
     }
     if (!drag || request.settle) {
+        result.creaseResiduals.assign(result.surfaces.size(), -1.0);
         result.selfOverlaps.resize(result.surfaces.size());
         for (std::size_t s = 0; s < result.surfaces.size(); ++s) {
             const auto known = judgedOverlaps.find(s);
@@ -455,6 +472,7 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
             } else if (!result.summaries[s].iterations.empty()) {
                 result.selfOverlaps[s] = model::selfOverlappingPatches(result.surfaces[s]);
             }
+            result.creaseResiduals[s] = sampledCreaseResidual(result.surfaces[s]);
         }
     }
     if (!drag) {

@@ -1,6 +1,7 @@
 #include "model/examples.h"
 #include "solver/core/analysis_cache.h"
 #include "solver/formulation/perturbation.h"
+#include "solver/quality/crease_quality.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/session/crease_drag.h"
 #include "solver/worker/solver_worker.h"
@@ -489,6 +490,7 @@ private slots:
         QVERIFY2(rough.ok, qPrintable(rough.error));
         QVERIFY(rough.kept.empty());
         QVERIFY(!(rough.surfaces.front() == annulus));
+        QCOMPARE(rough.creaseResiduals, std::vector<double>{-1.0}); // no crease condition
     }
 
     void solveKeepsANearlyValidFold() {
@@ -516,6 +518,9 @@ private slots:
             }
         }
         QVERIFY2(moved < 1.0, qPrintable(QString::number(moved)));
+        // The crease conditions sampled along the creases, for the Solver panel.
+        QCOMPARE(result.creaseResiduals,
+                 std::vector<double>{measureCreaseQuality(solved).residualMax});
     }
 
     void cancelMidSolveGivesCancelledResult() {

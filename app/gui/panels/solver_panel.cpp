@@ -72,6 +72,13 @@ void SolverPanel::showReport(const SolveReport& report) {
     }
     m_patches = report.patchesToCheck;
     m_selectPatches->setEnabled(!m_patches.empty());
+    if (report.creaseResidual >= 0.0) {
+        // The solver's residual holds at collocation values; this one along the whole creases.
+        m_status->setText(m_status->text() +
+                          tr("<br>Crease conditions, sampled along the creases: largest "
+                             "residual %1.")
+                              .arg(QString::number(report.creaseResidual, 'e', 1)));
+    }
     m_worst = report.worstFaces.join(QStringLiteral(", "));
     if (!m_worst.isEmpty()) {
         m_status->setText(m_status->text() +

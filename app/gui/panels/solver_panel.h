@@ -23,6 +23,9 @@ struct SolveReport {
     QList<int> foldedOver; // patches that fold over onto themselves (solver::foldOvers)
     // Patches at which the development overlaps itself (SolveResult::selfOverlaps).
     QList<int> overlapping;
+    // The largest sampled residual of the crease conditions over the surfaces
+    // (SolveResult::creaseResiduals); −1: no crease has a condition.
+    double creaseResidual = -1.0;
     // Every patch named above (least developable, folded over), for selecting them.
     std::set<document::Pick> patchesToCheck;
     double elapsedMs = 0.0;
