@@ -180,12 +180,10 @@ int runSolveCommand(const std::vector<std::string>& positional,
             std::cout << line;
         }
         // Solve ends on its best iterate (SolveSession::returnToBestIterate).
-        const solver::SolveSession::BestIterate best = session->returnToBestIterate();
+        const solver::SolveSession::BestIterate best = session->returnToBestIterate(&last);
         if (best.iteration > 0) {
             std::cout << "Ended on iteration " << best.iteration
                       << ", the one with the smallest residual.\n";
-            last.finalMaxConstraintResidual = best.residual;
-            last.toleranceReached = best.residual <= last.tolerance;
         }
         reportTolerance(*session, last);
         surface = session->surface();

@@ -315,13 +315,17 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
     return total;
 }
 
-SolveSession::BestIterate SolveSession::returnToBestIterate() {
+SolveSession::BestIterate SolveSession::returnToBestIterate(Summary* summary) {
     if (m_dragging || m_bestIteration == 0 || !(m_residual > m_bestResidual)) {
         return {0, m_residual};
     }
     m_x = m_bestX;
     m_formulation->writeBack(m_x, m_surface); // written once already: it is finite
     m_residual = m_bestResidual;
+    if (summary) {
+        summary->finalMaxConstraintResidual = m_bestResidual;
+        summary->toleranceReached = m_bestResidual <= summary->tolerance;
+    }
     return {m_bestIteration, m_bestResidual};
 }
 

@@ -289,7 +289,9 @@ public:
     // A Solve (nothing pulled) remembers, over all step() calls, the iterate whose largest
     // constraint residual was the smallest. If the current iterate's is larger, this goes back
     // to that one (state and surface()) and returns its iteration (counted from 1 over all
-    // calls) and residual; otherwise, and in a drag, it stays and returns {0, residual}.
+    // calls) and residual; otherwise, and in a drag, it stays and returns {0, residual}. With
+    // `summary` (of the last step()), its final residual and toleranceReached follow the
+    // iterate returned to.
     // Measured: Solve of the lifted Fig. 8 kept at its lengths cycles between 2.6e-8,
     // 1.7e-6 and 1.8e-6, so where it ended depended on the iteration count (10 iterations:
     // sampled det 1.3e-6 from 6.6e-7; 30: 6.3e-7).
@@ -297,7 +299,7 @@ public:
         int iteration = 0;
         double residual = 0.0;
     };
-    BestIterate returnToBestIterate();
+    BestIterate returnToBestIterate(Summary* summary = nullptr);
 
 private:
     SessionOptions m_options;

@@ -379,10 +379,8 @@ SolveResult SolverWorker::solve(const SolveRequest& request) {
         Summary summary = session->step(iterations, &d.cancel, progress);
         if (!drag && summary.succeeded()) {
             // Solve ends on its best iterate (SolveSession::returnToBestIterate).
-            const SolveSession::BestIterate best = session->returnToBestIterate();
+            const SolveSession::BestIterate best = session->returnToBestIterate(&summary);
             if (best.iteration > 0) {
-                summary.finalMaxConstraintResidual = best.residual;
-                summary.toleranceReached = best.residual <= summary.tolerance;
                 summary.message += std::string(summary.message.empty() ? "" : "; ") +
                                    "ended on iteration " + std::to_string(best.iteration) +
                                    ", the one with the smallest residual";

@@ -3,6 +3,7 @@
 #include "solver/formulation/perturbation.h"
 #include "solver/quality/crease_quality.h"
 #include "solver/quality/quality_measures.h"
+#include "solver/quality/shape_change.h"
 #include "solver/session/crease_drag.h"
 #include "solver/worker/solver_worker.h"
 
@@ -510,13 +511,7 @@ private slots:
         QVERIFY2(after <= before, qPrintable(QString::number(after)));
         QVERIFY2(result.summaries.front().finalMaxConstraintResidual < 1e-7,
                  qPrintable(QString::number(result.summaries.front().finalMaxConstraintResidual)));
-        double moved = 0.0;
-        for (const auto& [id, record] : folded.edges()) {
-            for (std::size_t i = 0; i < record.controlPoints.size(); ++i) {
-                moved = std::max(
-                    moved, (solved.edge(id).controlPoints[i] - record.controlPoints[i]).norm());
-            }
-        }
+        const double moved = measureShapeChange(folded, solved).largestMove;
         QVERIFY2(moved < 1.0, qPrintable(QString::number(moved)));
         // The crease conditions sampled along the creases, for the Solver panel.
         QCOMPARE(result.creaseResiduals,
