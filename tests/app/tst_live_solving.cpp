@@ -40,6 +40,18 @@ using test::waitForWorkerIdle;
 
 namespace {
 
+// Shows `window` active (keyboard shortcuts reach it) with the built-in example `name`; false
+// if the window never became active.
+bool showActiveWithExample(app::MainWindow& window, const QString& name) {
+    window.show();
+    window.activateWindow();
+    if (!QTest::qWaitForWindowActive(&window)) {
+        return false;
+    }
+    window.workspace()->newFromExample(name, 0);
+    return true;
+}
+
 // Every coarse vertex and S-edge control point of every surface, in a fixed order.
 std::vector<model::Vec3> allPoints(const document::Document& doc) {
     std::vector<model::Vec3> points;
@@ -294,10 +306,7 @@ private slots:
 
     void escapeCancelsTheSolve() {
         app::MainWindow window;
-        window.show();
-        window.activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(&window));
-        window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
+        QVERIFY(showActiveWithExample(window, QStringLiteral("annulus")));
         const std::string before = bytesOf(window);
         QSignalSpy finished(window.solveController(), &app::SolveController::finished);
         QTest::keyClick(&window, Qt::Key_Return, Qt::ControlModifier);
@@ -343,12 +352,9 @@ class TstDrag : public QObject {
     static constexpr model::VertexId kPinned = 0;
 
     static bool prepare(Setup& s) {
-        s.window.show();
-        s.window.activateWindow();
-        if (!QTest::qWaitForWindowActive(&s.window)) {
+        if (!showActiveWithExample(s.window, QStringLiteral("annulus"))) {
             return false;
         }
-        s.window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
         s.doc = s.window.workspace()->document();
         s.doc->undoStack()->push(document::PinVerticesCommand::create(*s.doc, 0, {kPinned}, true)
                                      .takeCommand()
@@ -529,10 +535,7 @@ private slots:
     // panel after the release.
     void aDragOfAVertexThePinsHoldSaysSo() {
         app::MainWindow w;
-        w.show();
-        w.activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(&w));
-        w.workspace()->newFromExample(QStringLiteral("fig8"), 0);
+        QVERIFY(showActiveWithExample(w, QStringLiteral("fig8")));
         document::Document* doc = w.workspace()->document();
         doc->undoStack()->push(
             document::PinVerticesCommand::create(*doc, 0, {12, 15}, true).takeCommand().release());
