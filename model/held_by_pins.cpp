@@ -297,19 +297,4 @@ std::optional<HeldVertex> findVertexHeldByPins(const CompositeSurface& surface,
     return std::nullopt;
 }
 
-std::string describeHeldVertex(const HeldVertex& held) {
-    std::ostringstream text;
-    text << "Vertex " << held.vertex;
-    if (held.pins.size() == 2) {
-        text << " lies on the straight line between the pinned vertices " << held.pins[0] << " and "
-             << held.pins[1];
-    } else {
-        text << " lies inside the triangle of the pinned vertices " << held.pins[0] << ", "
-             << held.pins[1] << " and " << held.pins[2];
-    }
-    text << ", which are as far apart as in the flat sheet, so bending cannot move it; only "
-            "stretching can.";
-    return text.str();
-}
-
 } // namespace devsurf::model

@@ -30,9 +30,4 @@ std::optional<HeldVertex> findVertexHeldByPins(const CompositeSurface& surface,
                                                const std::vector<VertexId>& vertices,
                                                double relativeTolerance = 1e-6);
 
-// The sentence "Vertex 5 lies inside the triangle of the pinned vertices 0, 3 and 15, which are as
-// far apart as in the flat sheet, so bending cannot move it; only stretching can." (English, for
-// the command line; the desktop application formats its own, translated sentences.)
-std::string describeHeldVertex(const HeldVertex& held);
-
 } // namespace devsurf::model

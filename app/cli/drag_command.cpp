@@ -1,22 +1,16 @@
 #include "drag_command.h"
 
 #include "io/project_file.h"
-#include "model/held_by_pins.h"
 #include "model/model_error.h"
-#include "model/pattern/cutting_pattern.h"
-#include "solver/quality/crease_quality.h"
+#include "outcome_text.h"
 #include "solver/quality/quality_measures.h"
-#include "solver/quality/shape_change.h"
-#include "solver/quality/vertex_stars.h"
 #include "solver/session/crease_drag.h"
-#include "solver/session/drag_lengths.h"
-#include "solver/session/solve_session.h"
+#include "solver/session/solve_job.h"
 #include "vertex_commands.h"
 
 #include <QString>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -147,88 +141,31 @@ std::string idList(const std::vector<model::VertexId>& ids) {
     return text;
 }
 
-double elapsedMs(std::chrono::steady_clock::time_point since) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since)
-        .count();
-}
-
-void printStep(const char* label, int index, int count, const solver::Summary& summary, double ms,
+void printStep(const char* label, int index, int count, const solver::IterationStats& stats,
                const model::CompositeSurface& surface) {
     const solver::QualityMeasures quality = solver::measureQuality(surface);
     char line[512];
     // A move of a large model may solve with the previous move's factorisation
     // (solver::kDragFactorizationReuse).
-    const bool reused =
-        !summary.iterations.empty() && summary.iterations.front().factorizationReused;
-    std::snprintf(line, sizeof line, "%s %3d/%d  residual %.3e  time %.3f ms  %s%s\n", label, index,
-                  count, summary.finalMaxConstraintResidual, ms,
-                  reused ? "(factorisation reused)  " : "", quality.describe().c_str());
+    std::snprintf(
+        line, sizeof line, "%s %3d/%d  residual %.3e  time %.3f ms  %s%s\n", label, index, count,
+        stats.maxConstraintResidual, stats.assemblyMs + stats.factorizationMs + stats.solveMs,
+        stats.factorizationReused ? "(factorisation reused)  " : "", quality.describe().c_str());
     std::cout << line;
 }
 
-// What a designer checks after a drag: how well the crease conditions hold and how far the
-// creases fold (measured from the geometry), and whether a strip degenerated.
-// What went wrong at the end of a drag (solver::judgeDrag), as the end of a sentence:
-// "did not converge (residual 1.4e-04), folded over in 2 places".
-std::string describeOutcome(const solver::DragOutcome& outcome) {
-    std::vector<std::string> parts;
-    char text[120];
-    if (outcome.stopped) {
-        parts.push_back("stopped before a degenerate shape");
-    }
-    if (outcome.residual > solver::kDragConvergedResidual) {
-        std::snprintf(text, sizeof text, "did not converge (residual %.1e)", outcome.residual);
-        parts.push_back(text);
-    }
-    if (outcome.foldOverPlaces > 0) {
-        std::snprintf(text, sizeof text, "folded over in %d place%s", outcome.foldOverPlaces,
-                      outcome.foldOverPlaces == 1 ? "" : "s");
-        parts.push_back(text);
-    }
-    if (!outcome.overlapping.empty()) {
-        std::snprintf(text, sizeof text, "left a development overlapping itself at %zu patch%s",
-                      outcome.overlapping.size(), outcome.overlapping.size() == 1 ? "" : "es");
-        parts.push_back(text);
-    }
-    if (outcome.collapsed()) {
-        std::snprintf(text, sizeof text,
-                      "collapsed strips (rulings at %.2f of their length, curve speeds at %.2f of "
-                      "their mean)",
-                      outcome.shortestRuling, outcome.slowestSpeed);
-        parts.push_back(text);
-    }
-    if (!outcome.measurable) {
-        parts.push_back("left a shape too degenerate to measure");
-    }
-    if (parts.empty()) {
-        return "ended without a problem";
-    }
-    std::string sentence;
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-        sentence += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
-    }
-    return sentence;
-}
-
-void printFoldAndShape(const model::CompositeSurface& start,
-                       const model::CompositeSurface& result) {
-    const solver::CreaseQuality creases = solver::measureCreaseQuality(result);
-    const solver::ShapeChange change = solver::measureShapeChange(start, result);
-    double defect = 0.0;
-    const auto defects = solver::vertexAngleDefects(result);
-    for (const solver::VertexAngleDefect& d : defects) {
-        defect = std::max(defect, d.defect);
-    }
+void printFoldAndShape(const solver::SurfaceAssessment& assessment) {
+    const solver::CreaseQuality& creases = assessment.creases;
     char line[640];
     std::snprintf(line, sizeof line,
                   "Creases: %d with a condition, residual max %.2e mean %.2e; mean |fold angle| "
-                  "%.2f deg; angle defect at %zu interior crease vertices max %.2e rad. Shortest "
+                  "%.2f deg; angle defect at %d interior crease vertices max %.2e rad. Shortest "
                   "ruling %.2f of its start length, slowest curve speed %.2f of its mean.\n",
                   creases.creases, creases.residualMax, creases.residualMean,
-                  creases.meanFoldDegrees, defects.size(), defect, change.shortestRuling,
-                  change.slowestSpeed);
-    std::cout << line << solver::describeFoldOvers(change.foldOvers) << "\n"
-              << model::describeSelfOverlap(model::selfOverlappingPatches(result)) << "\n";
+                  creases.meanFoldDegrees, assessment.vertexStars, assessment.largestVertexDefect,
+                  assessment.shortestRuling, assessment.slowestSpeed);
+    std::cout << line << describeFoldOvers(assessment.foldOvers) << "\n"
+              << describeSelfOverlap(assessment.overlapping) << "\n";
 }
 
 } // namespace
@@ -378,136 +315,109 @@ int runDragCommand(const std::vector<std::string>& positional,
         std::cout << line;
     }
 
-    // Pins that hold a dragged vertex where the sheet cannot bend (e.g. the four corners of a
-    // flat square): keeping lengths then cannot follow the drag, and the output says why.
-    std::optional<model::HeldVertex> held;
-    if (!crease && lengths != solver::DragLengths::Stretch) {
-        held = model::findVertexHeldByPins(surface, dragged);
-        if (held) {
-            std::cout << model::describeHeldVertex(*held) << "\n";
+    // The drag as the desktop application's Drag and Rotate tools run it: the same solve job,
+    // one request per step (one iteration each), then the release.
+    solver::JobRequest request;
+    request.kind = crease          ? solver::JobKind::CreaseDrag
+                   : motion.rotate ? solver::JobKind::Rotate
+                                   : solver::JobKind::VertexDrag;
+    request.drag = 1;
+    request.lengths = lengths;
+    request.surfaces = project.surfaces;
+    auto setTargets = [&](double t) {
+        std::vector<solver::VertexHandle>& handles = request.pulled[static_cast<int>(index)];
+        handles.clear();
+        for (const auto& [id, position] : start) {
+            handles.push_back({id, false, targetAt(id, position, t)});
         }
-    }
-
-    // The whole drag from the press, keeping lengths or not: one line per iteration; the
-    // result stays in `session`. `stopped`: an iteration was refused as degenerate (the
-    // session stays at the last valid state, which is written, as the desktop application
-    // keeps it).
-    std::unique_ptr<solver::SolveSession> session;
-    solver::Summary last;
-    bool stopped = false;
-    auto runDrag = [&](bool keepLengths) {
-        const int after = givenAfter ? givenAfterCount : solver::iterationsAfterDrag(keepLengths);
-        try {
-            session = std::make_unique<solver::SolveSession>(
-                surface, pulled, points,
-                keepLengths ? solver::keepLengthsSessionOptions()
-                : crease    ? solver::creaseDragSessionOptions()
-                            : solver::SessionOptions{});
-        } catch (const std::invalid_argument& error) {
-            throw model::ModelError("surface " + std::to_string(index + 1) + " of '" + path +
-                                    "' cannot be " + (crease ? "dragged: " : "solved: ") +
-                                    error.what());
-        }
-        std::cout << "Surface " << index + 1 << " (" << surface.name() << "): dragging "
-                  << (crease ? "crease " + std::to_string(creaseEdge)
-                             : std::to_string(start.size()) +
-                                   (start.size() == 1 ? " vertex" : " vertices"))
-                  << (keepLengths ? " keeping lengths" : "") << " in " << steps << " steps, then "
-                  << after << " iterations; " << surface.pinnedVertices().size() << " pinned\n";
-        last = solver::Summary{};
-        stopped = false;
-        // One iteration; false once the session refused a degenerate iterate.
-        auto runIteration = [&](const char* label, int i, int count) {
-            const auto begin = std::chrono::steady_clock::now();
-            const solver::Summary summary = session->step(1);
-            const double ms = elapsedMs(begin);
-            if (summary.status == solver::Status::StoppedBeforeDegenerate) {
-                std::cout << "At " << label << " " << i
-                          << ": stopped at the last valid state: " << summary.message << "\n";
-                stopped = true;
-                return false;
+        if (creaseDrag) {
+            std::vector<solver::ControlPointHandle>& moved =
+                request.pulledControlPoints[static_cast<int>(index)];
+            moved = points;
+            for (solver::ControlPointHandle& point : moved) {
+                point.target = pointTargetAt(point, t);
             }
-            if (!summary.succeeded() || summary.iterations.empty()) {
-                throw model::ModelError(std::string("the solver stopped at ") + label + " " +
-                                        std::to_string(i) + " (" +
-                                        solver::toString(summary.status) +
-                                        (summary.message.empty() ? "" : ": " + summary.message) +
-                                        "); nothing was written.");
-            }
-            printStep(label, i, count, summary, ms, session->surface());
-            last = summary;
-            return true;
-        };
-        bool going = true;
-        for (int k = 1; k <= steps && going; ++k) {
-            const double t = static_cast<double>(k) / steps;
-            for (const auto& [id, position] : start) {
-                session->setHandleTarget(id, targetAt(id, position, t));
-            }
-            for (const solver::ControlPointHandle& point : points) {
-                session->setControlPointTarget(point.edge, point.index, pointTargetAt(point, t));
-            }
-            going = runIteration("step", k, steps);
-        }
-        session->settle();
-        for (int k = 1; k <= after && going; ++k) {
-            going = runIteration("after", k, after);
         }
     };
+    const bool keepLengths = !crease && lengths != solver::DragLengths::Stretch;
+    const int after = givenAfter ? givenAfterCount : solver::iterationsAfterDrag(keepLengths);
+    std::cout << "Surface " << index + 1 << " (" << surface.name() << "): dragging "
+              << (crease ? "crease " + std::to_string(creaseEdge)
+                         : std::to_string(start.size()) +
+                               (start.size() == 1 ? " vertex" : " vertices"))
+              << (keepLengths ? " keeping lengths" : "") << " in " << steps << " steps, then "
+              << after << " iterations; " << surface.pinnedVertices().size() << " pinned\n";
 
-    runDrag(lengths != solver::DragLengths::Stretch);
-    if (lengths == solver::DragLengths::Automatic) {
-        const solver::DragOutcome kept = solver::judgeDrag(
-            surface, session->surface(), last.finalMaxConstraintResidual, stopped);
-        if (kept.problems() > 0) {
-            std::unique_ptr<solver::SolveSession> keptSession = std::move(session);
-            const solver::Summary keptLast = last;
-            const bool keptStopped = stopped;
-            std::cout << "Keeping lengths, the drag " << describeOutcome(kept)
-                      << "; replaying it letting the sheet stretch.\n";
-            runDrag(false);
-            const solver::DragOutcome stretched = solver::judgeDrag(
-                surface, session->surface(), last.finalMaxConstraintResidual, stopped);
-            const int before = kept.problems();
-            const int now = stretched.problems();
-            std::cout << "Letting the sheet stretch, the drag " << describeOutcome(stretched)
-                      << ": " << (solver::prefersStretched(kept, stretched) ? "taken" : "not taken")
-                      << " (" << now << (now == 1 ? " problem" : " problems") << " against "
-                      << before << ").\n";
-            if (!solver::prefersStretched(kept, stretched)) {
-                session = std::move(keptSession);
-                last = keptLast;
-                stopped = keptStopped;
-            }
+    solver::SolveJob job;
+    const char* label = "step";
+    int labelIndex = 0;
+    int labelCount = steps;
+    auto progress = [&](const solver::JobProgress& step) {
+        if (step.replaying) {
+            char line[160];
+            std::snprintf(line, sizeof line, "replay %3d  residual %.3e\n", step.done,
+                          step.stats->maxConstraintResidual);
+            std::cout << line;
+            return;
         }
+        printStep(label, labelIndex + step.done, labelCount, *step.stats, *step.current);
+    };
+    // Runs one request; a failure ends the command (nothing is written).
+    auto run = [&](const char* what) {
+        solver::JobOutcome outcome = job.run(request, nullptr, progress);
+        if (!outcome.ok) {
+            throw model::ModelError(std::string("the solver stopped at ") + what + " (" +
+                                    describeFailure(outcome.failure) + "); nothing was written.");
+        }
+        const solver::Summary& summary = outcome.assessments.at(index).summary;
+        if (summary.status == solver::Status::StoppedBeforeDegenerate) {
+            std::cout << "At " << label << " " << labelIndex + summary.iterationsCompleted + 1
+                      << ": stopped at the last valid state: " << summary.message << "\n";
+        }
+        return outcome;
+    };
+    for (int k = 1; k <= steps; ++k) {
+        labelIndex = k - 1;
+        setTargets(static_cast<double>(k) / steps);
+        run("a step");
     }
-
-    double largestMiss = 0.0;
-    for (const auto& [id, position] : start) {
-        largestMiss = std::max(
-            largestMiss, (session->surface().position(id) - targetAt(id, position, 1.0)).norm());
+    label = "after";
+    labelIndex = 0;
+    labelCount = after;
+    request.settle = true;
+    request.iterations = after;
+    const solver::JobOutcome outcome = run("the release");
+    const solver::SurfaceAssessment& assessment = outcome.assessments.at(index);
+    if (assessment.held) {
+        std::cout << describeHeld(*assessment.held) << "\n";
     }
-    for (const solver::ControlPointHandle& point : points) {
-        const model::Vec3& reached = session->surface()
-                                         .edge(point.edge)
-                                         .controlPoints[static_cast<std::size_t>(point.index)];
-        largestMiss = std::max(largestMiss, (reached - pointTargetAt(point, 1.0)).norm());
+    if (assessment.replay) {
+        const solver::LengthsReplay& replay = *assessment.replay;
+        const int before = replay.keepingLengths.problems();
+        const int now = replay.stretching.problems();
+        std::cout << "Keeping lengths, the drag " << describeOutcome(replay.keepingLengths)
+                  << "; replayed letting the sheet stretch.\n"
+                  << "Letting the sheet stretch, the drag " << describeOutcome(replay.stretching)
+                  << ": " << (replay.taken ? "taken" : "not taken") << " (" << now
+                  << (now == 1 ? " problem" : " problems") << " against " << before << ").\n";
     }
+    const solver::Summary& last = assessment.summary;
     char line[256];
     if (last.iterations.empty()) {
         std::snprintf(line, sizeof line,
                       "No iteration completed; dragged points within %.3g of their targets.\n",
-                      largestMiss);
+                      assessment.largestHandleGap);
     } else {
         std::snprintf(line, sizeof line,
                       "Largest residual %.2e (tolerance %.1e %s); dragged points within %.3g of "
                       "their targets.\n",
                       last.finalMaxConstraintResidual, last.tolerance,
-                      last.toleranceReached ? "reached" : "not reached", largestMiss);
+                      last.toleranceReached ? "reached" : "not reached",
+                      assessment.largestHandleGap);
     }
     std::cout << line;
-    printFoldAndShape(surface, session->surface());
-    surface = session->surface();
+    printFoldAndShape(assessment);
+    surface = outcome.surfaces.at(index);
     io::saveProjectFile(project, QString::fromStdString(output));
     std::cout << "Wrote " << output << "\n";
     return 0;

@@ -2,18 +2,17 @@
 
 #include "io/project_file.h"
 #include "model/model_error.h"
-#include "model/pattern/cutting_pattern.h"
+#include "outcome_text.h"
 #include "solver/formulation/perturbation.h"
-#include "solver/quality/crease_quality.h"
 #include "solver/quality/quality_measures.h"
-#include "solver/quality/shape_change.h"
-#include "solver/session/solve_session.h"
+#include "solver/session/solve_job.h"
 
 #include <QString>
 
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -60,9 +59,10 @@ std::vector<model::VertexId> parseIds(const std::string& text) {
     return ids;
 }
 
-// Says whether the solve reached the tolerance and, if not, which faces are worst (their ids,
-// as the desktop application shows them).
-void reportTolerance(const solver::SolveSession& session, const solver::Summary& summary) {
+// Says whether the solve reached the tolerance and, if not, which patches are least
+// developable (sampled, as the desktop application's Solver panel names them).
+void reportTolerance(const solver::SurfaceAssessment& assessment) {
+    const solver::Summary& summary = assessment.summary;
     char line[256];
     if (summary.toleranceReached) {
         std::snprintf(line, sizeof line, "Reached the tolerance %.1e (largest residual %.2e).\n",
@@ -71,17 +71,18 @@ void reportTolerance(const solver::SolveSession& session, const solver::Summary&
         return;
     }
     std::snprintf(line, sizeof line,
-                  "Did not reach the tolerance %.1e (largest residual %.2e); worst faces:",
+                  "Did not reach the tolerance %.1e (largest residual %.2e); least developable "
+                  "faces:",
                   summary.tolerance, summary.finalMaxConstraintResidual);
     std::cout << line;
-    const auto faces = session.worstFaces();
-    const std::size_t shown = std::min<std::size_t>(faces.size(), 5);
-    for (std::size_t i = 0; i < shown; ++i) {
-        std::snprintf(line, sizeof line, "%s face %u (%.2e)", i == 0 ? "" : ",", faces[i].face,
-                      faces[i].residual);
+    for (std::size_t i = 0; i < assessment.worstFaces.size(); ++i) {
+        std::snprintf(line, sizeof line, "%s face %u (%.2e)", i == 0 ? "" : ",",
+                      assessment.worstFaces[i].first, assessment.worstFaces[i].second);
         std::cout << line;
     }
-    std::cout << (shown == 0 ? " none (the residual is in a vertex or normal condition)" : "")
+    std::cout << (assessment.worstFaces.empty()
+                      ? " none (the residual is in a vertex or normal condition)"
+                      : "")
               << "\n";
 }
 
@@ -92,7 +93,7 @@ int runSolveCommand(const std::vector<std::string>& positional,
     if (positional.size() != 1) {
         throw std::invalid_argument("expected one project file");
     }
-    int iterations = 10;
+    std::optional<int> iterations; // the job's: a limit, Solve stops once converged
     double sigma = 0.0;
     bool perturb = false;
     unsigned seed = 1;
@@ -125,6 +126,9 @@ int runSolveCommand(const std::vector<std::string>& positional,
     }
     const std::string& path = positional[0];
     model::Project project = io::loadProjectFile(QString::fromStdString(path));
+    solver::JobRequest request;
+    request.kind = solver::JobKind::Solve;
+    request.iterations = iterations;
     for (std::size_t s = 0; s < project.surfaces.size(); ++s) {
         model::CompositeSurface& surface = project.surfaces[s];
         for (model::VertexId v : fixed) {
@@ -137,69 +141,68 @@ int runSolveCommand(const std::vector<std::string>& positional,
             solver::perturbSurface(surface, sigma * solver::surfaceDiameter(surface),
                                    seed + static_cast<unsigned>(s), fixed);
         }
-        solver::SessionOptions sessionOptions;
-        for (model::VertexId v : fixed) {
-            sessionOptions.formulation.handles.push_back({v, true, {}});
+        request.fixed[static_cast<int>(s)] = fixed;
+    }
+    request.surfaces = project.surfaces;
+    // The same job as the desktop application's Tools ▸ Solve: one line per iteration.
+    int surfaceShown = -1;
+    auto progress = [&](const solver::JobProgress& step) {
+        if (step.surface != surfaceShown) {
+            surfaceShown = step.surface;
+            std::cout << "Surface " << step.surface + 1 << " ("
+                      << project.surfaces[static_cast<std::size_t>(step.surface)].name()
+                      << "): " << step.variables << " variables, " << step.rows << " rows\n";
         }
-        std::unique_ptr<solver::SolveSession> session;
-        try {
-            session = std::make_unique<solver::SolveSession>(
-                surface, std::vector<solver::VertexHandle>{}, sessionOptions);
-        } catch (const std::invalid_argument& error) {
-            throw model::ModelError("surface " + std::to_string(s + 1) + " of '" + path +
-                                    "' cannot be solved: " + error.what());
+        const solver::IterationStats& it = *step.stats;
+        const solver::QualityMeasures quality = solver::measureQuality(*step.current);
+        char line[512];
+        std::snprintf(line, sizeof line,
+                      "iteration %3d  residual %.3e  assembly %.3f ms  factorisation %.3f ms "
+                      " solve %.3f ms  %s\n",
+                      it.iteration + 1, it.maxConstraintResidual, it.assemblyMs, it.factorizationMs,
+                      it.solveMs, quality.describe().c_str());
+        std::cout << line;
+    };
+    solver::SolveJob job;
+    const solver::JobOutcome outcome = job.run(request, nullptr, progress);
+    if (!outcome.ok) {
+        throw model::ModelError("the solver stopped (" + describeFailure(outcome.failure) +
+                                "); nothing was written.");
+    }
+    for (std::size_t s = 0; s < outcome.surfaces.size(); ++s) {
+        const solver::SurfaceAssessment& a = outcome.assessments[s];
+        const solver::Summary& summary = a.summary;
+        if (summary.status == solver::Status::StoppedBeforeDegenerate) {
+            // The session refused a degenerate iterate and stayed at the last valid one.
+            std::cout << "After iteration " << summary.iterationsCompleted
+                      << ": stopped at the last valid state: " << summary.message << "\n";
         }
-        const solver::Problem& problem = session->formulation().problem();
-        std::cout << "Surface " << s + 1 << " (" << surface.name()
-                  << "): " << problem.variableCount() << " variables, " << problem.rowCount()
-                  << " rows\n";
-        solver::Summary last;
-        for (int i = 0; i < iterations; ++i) {
-            const solver::Summary summary = session->step(1);
-            if (summary.status == solver::Status::StoppedBeforeDegenerate) {
-                // The session refused a degenerate iterate and stays at the last valid one.
-                std::cout << "After iteration " << i
-                          << ": stopped at the last valid state: " << summary.message << "\n";
-                break;
-            }
-            if (!summary.succeeded() || summary.iterations.empty()) {
-                throw model::ModelError("the solver stopped at iteration " + std::to_string(i + 1) +
-                                        " (" + solver::toString(summary.status) +
-                                        (summary.message.empty() ? "" : ": " + summary.message) +
-                                        "); nothing was written.");
-            }
-            last = summary;
-            const solver::IterationStats& it = summary.iterations.front();
-            const solver::QualityMeasures quality = solver::measureQuality(session->surface());
-            char line[512];
-            std::snprintf(line, sizeof line,
-                          "iteration %3d  residual %.3e  assembly %.3f ms  factorisation %.3f ms "
-                          " solve %.3f ms  %s\n",
-                          i + 1, it.maxConstraintResidual, it.assemblyMs, it.factorizationMs,
-                          it.solveMs, quality.describe().c_str());
-            std::cout << line;
-        }
-        // Solve ends on its best iterate (SolveSession::returnToBestIterate).
-        const solver::SolveSession::BestIterate best = session->returnToBestIterate(&last);
-        if (best.iteration > 0) {
-            std::cout << "Ended on iteration " << best.iteration
+        if (a.bestIteration > 0) {
+            std::cout << "Ended on iteration " << a.bestIteration
                       << ", the one with the smallest residual.\n";
         }
-        reportTolerance(*session, last);
-        surface = session->surface();
+        if (a.keptAsItWas) {
+            char line[200];
+            std::snprintf(line, sizeof line,
+                          "Left as it was: solving made it less developable (largest "
+                          "developability residual %.1e -> %.1e).\n",
+                          a.keptAsItWas->before, a.keptAsItWas->after);
+            std::cout << line;
+        }
+        reportTolerance(a);
         // The solver's residual holds at collocation values; the crease conditions sampled
         // along the whole creases (as the Solver panel gives them).
-        if (const solver::CreaseQuality creases = solver::measureCreaseQuality(surface);
-            creases.creases > 0) {
+        if (a.creases.creases > 0) {
             char line[160];
             std::snprintf(line, sizeof line,
                           "Creases: %d with a condition, sampled along them: residual max %.2e "
                           "mean %.2e.\n",
-                          creases.creases, creases.residualMax, creases.residualMean);
+                          a.creases.creases, a.creases.residualMax, a.creases.residualMean);
             std::cout << line;
         }
-        std::cout << solver::describeFoldOvers(solver::foldOvers(surface)) << "\n"
-                  << model::describeSelfOverlap(model::selfOverlappingPatches(surface)) << "\n";
+        std::cout << describeFoldOvers(a.foldOvers) << "\n"
+                  << describeSelfOverlap(a.overlapping) << "\n";
+        project.surfaces[s] = outcome.surfaces[s];
     }
     io::saveProjectFile(project, QString::fromStdString(output));
     std::cout << "Wrote " << output << "\n";

@@ -324,11 +324,9 @@ bool DragTool::start(const QPoint& pos, const model::Vec3& anchor) {
         return true;
     }
     m_sessionKey = nextSessionKey();
-    m_mergeKey = static_cast<int>(m_sessionKey & 0x3fffffff);
     m_pressRevision = doc->revision();
     m_ownRevision = m_pressRevision;
-    m_stackCountAtPress = doc->undoStack()->count();
-    m_applied = false;
+    m_previewed = false;
     m_state = State::Dragging;
     return true;
 }
@@ -342,7 +340,7 @@ void DragTool::move(const QPoint& pos) {
     }
     m_moved = true;
     emit statusMessage(heldText() + motionText());
-    submit(1);
+    submit();
 }
 
 bool DragTool::targetsAt(const QPoint& pos, std::vector<model::Vec3>& targets) {
@@ -395,29 +393,38 @@ QString DragTool::heldText() const {
         .arg(held.vertex);
 }
 
-bool DragTool::keepsLengths() const {
-    // A dragged crease changes the sizes of its strips on purpose: it never keeps lengths.
-    return !m_crease && SolveController::keepsLengths();
+solver::JobKind DragTool::jobKind() const {
+    return m_crease ? solver::JobKind::CreaseDrag : solver::JobKind::VertexDrag;
 }
 
-void DragTool::submit(int iterations, bool settle) {
+void DragTool::submit(bool settle) {
     solver::SolveRequest request;
     request.revision = m_pressRevision;
-    request.surfaces = m_pressSurfaces;
-    std::vector<solver::VertexHandle>& handles = request.pulled[m_surface];
+    request.ticket = m_sessionKey;
+    solver::JobRequest& job = request.job;
+    job.kind = jobKind();
+    job.drag = m_sessionKey;
+    job.settle = settle;
+    job.surfaces = m_pressSurfaces;
+    std::vector<solver::VertexHandle>& handles = job.pulled[m_surface];
     for (std::size_t i = 0; i < m_vertices.size(); ++i) {
         handles.push_back({m_vertices[i], false, m_targets[i]});
     }
     if (m_crease) {
-        request.pulledControlPoints[m_surface] =
+        job.pulledControlPoints[m_surface] =
             m_crease->controlPointHandles(m_creaseDelta, m_creaseSlides);
     }
-    request.iterations = iterations;
-    request.keepLengths = keepsLengths();
-    request.stretchIfLengthsFail =
-        request.keepLengths && SolveController::stretchesWhereLengthsFail();
-    request.settle = settle;
-    request.sessionKey = m_sessionKey;
+    switch (SolveController::lengthsSetting()) {
+    case SolveController::LengthsMode::Automatic:
+        job.lengths = solver::DragLengths::Automatic;
+        break;
+    case SolveController::LengthsMode::Keep:
+        job.lengths = solver::DragLengths::Keep;
+        break;
+    case SolveController::LengthsMode::Stretch:
+        job.lengths = solver::DragLengths::Stretch;
+        break;
+    }
     m_solver->worker()->submit(std::move(request));
 }
 
@@ -433,24 +440,25 @@ void DragTool::release(const QPoint& pos, Qt::KeyboardModifiers modifiers) {
         emit dragFinished(false);
         return;
     }
-    // The move being solved finishes and is applied; the final iterations continue from the
-    // session's state with the handles at the release position.
+    // The move being solved finishes and is shown; the iterations after the release continue
+    // from the session's state with the handles at the release position.
     m_state = State::Finishing;
-    submit(solver::iterationsAfterDrag(keepsLengths()), true);
+    submit(true);
 }
 
 void DragTool::abort(const QString& sentence) {
     m_solver->worker()->cancel();
-    QUndoStack* stack = m_workspace->document()->undoStack();
-    if (m_applied && stack->count() == m_stackCountAtPress + 1 &&
-        stack->index() == stack->count()) {
-        // Undo the drag's command, then drop it from the history: no undo step remains.
-        stack->undo();
-        const_cast<QUndoCommand*>(stack->command(stack->index()))->setObsolete(true);
-        stack->redo();
-    }
-    m_applied = false;
+    restorePress();
     end(false, sentence);
+}
+
+void DragTool::restorePress() {
+    document::Document* doc = m_workspace->document();
+    if (m_previewed && m_surface < doc->surfaceCount() &&
+        !(doc->surface(m_surface) == pressSurface())) {
+        doc->previewSurface(m_surface, pressSurface());
+    }
+    m_previewed = false;
 }
 
 void DragTool::end(bool applied, const QString& sentence) {
@@ -463,46 +471,61 @@ void DragTool::end(bool applied, const QString& sentence) {
 }
 
 void DragTool::onResult(const solver::SolveResult& result) {
-    if (m_state == State::Idle || result.sessionKey != m_sessionKey || result.cancelled) {
+    const solver::JobOutcome& outcome = result.outcome;
+    if (m_state == State::Idle || result.ticket != m_sessionKey || outcome.cancelled()) {
         return;
     }
     document::Document* doc = m_workspace->document();
-    if (!result.ok) {
+    if (!outcome.ok) {
         if (m_state == State::Finishing) {
-            emit reportReady(m_solver->reportOf(result, undoText()));
+            emit reportReady(SolveController::reportOf(result, undoText()));
         }
-        abort(stoppedText(result.error));
+        abort(stoppedText(SolveController::failureText(outcome.failure)));
         return;
     }
     if (doc->revision() != m_ownRevision) {
+        // Another edit (an undo, say) replaced what the drag showed: it ends without a step.
         m_solver->worker()->cancel();
-        end(m_applied, changedText());
+        m_previewed = false;
+        end(false, changedText());
         return;
     }
-    if (static_cast<std::size_t>(m_surface) >= result.surfaces.size() ||
-        static_cast<std::size_t>(m_surface) >= result.summaries.size()) {
+    const auto index = static_cast<std::size_t>(m_surface);
+    if (index >= outcome.surfaces.size()) {
         return;
     }
-    document::CommandOrError edit = document::ApplySurfaceCommand::create(
-        *doc, m_surface, result.surfaces[static_cast<std::size_t>(m_surface)], undoText(),
-        document::Change::Geometry, m_mergeKey);
+    const model::CompositeSurface& shape = outcome.surfaces[index];
+    if (!outcome.settled) {
+        // A move: shown, outside the undo history.
+        const auto problems = shape.validate();
+        if (!problems.empty()) {
+            abort(stoppedText(tr("The new shape cannot be applied: %1")
+                                  .arg(QString::fromStdString(problems.front()))));
+            return;
+        }
+        doc->previewSurface(m_surface, shape);
+        m_previewed = true;
+        m_ownRevision = doc->revision();
+        return;
+    }
+    // The release: the settled shape becomes one undo step from the press.
+    const SolveReport report = SolveController::reportOf(result, undoText());
+    emit reportReady(report);
+    if (shape == pressSurface()) {
+        restorePress();
+        end(false, tr("%1: %2").arg(undoText(), report.status));
+        return;
+    }
+    doc->previewSurface(m_surface, shape);
+    document::CommandOrError edit =
+        document::ApplySurfaceCommand::createShown(*doc, m_surface, pressSurface(), undoText());
     if (edit.isRefused()) {
         abort(stoppedText(edit.error()));
         return;
     }
     doc->undoStack()->push(edit.takeCommand().release());
-    m_applied = true;
-    m_ownRevision = doc->revision();
-    // The final request is the one that ran more than a move's single iteration or stopped
-    // for another reason than its iteration limit (converged, failed).
-    const solver::Summary& summary = result.summaries.at(static_cast<std::size_t>(m_surface));
-    const bool final = summary.iterationsCompleted >= kFinalIterations ||
-                       summary.status != solver::Status::IterationLimit;
-    if (m_state == State::Finishing && final) {
-        const SolveReport report = m_solver->reportOf(result, undoText());
-        emit reportReady(report);
-        end(true, tr("%1: %2").arg(undoText(), report.status));
-    }
+    m_previewed = false;
+    end(true, tr("%1: %2").arg(undoText(), report.status));
 }
 
 } // namespace devsurf::app

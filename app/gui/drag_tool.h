@@ -5,6 +5,7 @@
 #include "model/held_by_pins.h"
 #include "panels/solver_panel.h"
 #include "solver/session/crease_drag.h"
+#include "solver/session/solve_job.h"
 #include "solver/session/solve_session.h"
 
 #include <QObject>
@@ -35,8 +36,9 @@ class Workspace;
 // pressed vertex (the axis chosen in the toolbar, or holding X, Y or Z, constrains the motion
 // to that axis) and the surface follows: every move runs one solver iteration with the dragged
 // vertices pulled to the mouse as handles (pinned vertices stay); the release runs ten more.
-// The whole drag is one undo step whose undo returns the exact state at press; Esc during the
-// drag returns to the state at press without an undo step. A press on a crease drags the crease
+// Moves are shown outside the undo history; the release pushes one undo step whose undo
+// returns the exact state at press; Esc returns to the state at press without touching the
+// history. A press on a crease drags the crease
 // instead (solver::CreaseDrag): it slides within its two strips, its control points and
 // unpinned ends pulled by the mouse's motion (without its component along the surface normal,
 // unless an axis is chosen). Presses away from vertices and creases still turn the camera. Other
@@ -58,10 +60,6 @@ public:
     void setChosenAxis(Axis axis) { m_chosenAxis = axis; }
     // The unit vector of an axis other than Free.
     static model::Vec3 unitVector(Axis axis);
-    // Iterations run after the release (solver::iterationsAfterDrag).
-    static constexpr int kFinalIterations = solver::kIterationsAfterDrag;
-    static constexpr int kFinalIterationsKeepingLengths =
-        solver::kIterationsAfterDragKeepingLengths;
 
 signals:
     // The drag ended: applied (one undo step), or not (cancelled, failed, or nothing moved).
@@ -86,6 +84,8 @@ protected:
     virtual QString hintText() const;
     // The status bar sentence while the vertices follow the mouse.
     virtual QString motionText() const;
+    // What the solve job is told this drag is.
+    virtual solver::JobKind jobKind() const;
     // Called when the motion ends (applied or not).
     virtual void finish() {}
     virtual QString undoText() const;
@@ -118,9 +118,10 @@ private:
     void release(const QPoint& pos, Qt::KeyboardModifiers modifiers);
     // Returns to the state at press (no undo step); says why in the status bar.
     void abort(const QString& sentence);
-    // settle: the iterations after the release (SolveSession::settle()).
-    void submit(int iterations, bool settle = false);
-    bool keepsLengths() const;
+    // Shows the press state again if a move was shown.
+    void restorePress();
+    // settle: the release (the iterations after it).
+    void submit(bool settle = false);
     // "Pins 0, 3 and 12 hold vertex 5 …", before the motion's sentence, while pins hold a
     // dragged vertex where the sheet cannot bend (m_held); empty otherwise.
     QString heldText() const;
@@ -141,11 +142,9 @@ private:
     std::vector<model::Vec3> m_targets;
     bool m_moved = false;
     quint64 m_sessionKey = 0;
-    int m_mergeKey = 0;
     quint64 m_pressRevision = 0;
     quint64 m_ownRevision = 0;
-    int m_stackCountAtPress = 0;
-    bool m_applied = false;
+    bool m_previewed = false; // a move's result is shown (Document::previewSurface)
     // The crease being dragged (null for vertices) and its displacement for the mouse now.
     std::unique_ptr<solver::CreaseDrag> m_crease;
     model::Vec3 m_creaseShift;  // the motion the crease follows (status bar)

@@ -31,6 +31,7 @@ protected:
     bool begin() override;
     bool movesWholeSelection() const override { return true; }
     bool dragsCreases() const override { return false; }
+    solver::JobKind jobKind() const override { return solver::JobKind::Rotate; }
     bool targetsAt(const QPoint& pos, std::vector<model::Vec3>& targets) override;
     QString hintText() const override;
     QString motionText() const override;

@@ -2,8 +2,6 @@
 
 #include "model/document/commands/apply_surface_command.h"
 #include "model/document/document.h"
-#include "solver/quality/quality_measures.h"
-#include "solver/quality/shape_change.h"
 #include "solver/session/solve_session.h"
 #include "solver/worker/solver_worker.h"
 #include "workspace.h"
@@ -17,6 +15,12 @@
 namespace devsurf::app {
 
 namespace {
+
+// Solves and edits get tickets of their own (drags use their ids, see DragTool).
+quint64 nextTicket() {
+    static quint64 ticket = 0x534f4c56'00000000ULL;
+    return ++ticket;
+}
 
 // "1, 2, 6" for the patches a report names.
 QString patchList(const QList<int>& faces) {
@@ -87,11 +91,12 @@ void SolveController::solve() {
     }
     solver::SolveRequest request;
     request.revision = doc->revision();
-    request.surfaces = doc->project().surfaces;
-    request.iterations = iterationsSetting();
-    request.sessionKey = 0;
+    request.ticket = nextTicket();
+    request.job.kind = solver::JobKind::Solve;
+    request.job.surfaces = doc->project().surfaces;
+    request.job.iterations = iterationsSetting();
     m_revision = request.revision;
-    m_sessionKey = 0;
+    m_ticket = request.ticket;
     m_editSurface = -1;
     m_worker->submit(std::move(request));
     if (!m_solving) {
@@ -121,16 +126,15 @@ void SolveController::solveEdit(int surfaceIndex, model::CompositeSurface edited
         m_heldTargets[v] = edited.position(v);
         handles.push_back({v, false, edited.position(v)});
     }
-    // Edits get keys of their own: only the edited surface is solved, from the snapshot.
-    static quint64 editKey = 0x45444954'00000000ULL;
     solver::SolveRequest request;
     request.revision = doc->revision();
-    request.surfaces = doc->project().surfaces;
-    request.pulled[surfaceIndex] = handles;
-    request.iterations = iterations + 1; // the step to the targets, then `iterations` more
-    request.sessionKey = ++editKey;
+    request.ticket = nextTicket();
+    request.job.kind = solver::JobKind::Edit;
+    request.job.surfaces = doc->project().surfaces;
+    request.job.pulled[surfaceIndex] = handles;
+    request.job.iterations = iterations + 1; // the step to the targets, then `iterations` more
     m_revision = request.revision;
-    m_sessionKey = request.sessionKey;
+    m_ticket = request.ticket;
     m_editSurface = surfaceIndex;
     m_editTitle = title;
     m_worker->submit(std::move(request));
@@ -233,26 +237,66 @@ QString SolveController::heldText(const model::HeldVertex& held) {
         .arg(held.pins[2]);
 }
 
-SolveReport SolveController::reportOf(const solver::SolveResult& result,
-                                      const QString& title) const {
+QString SolveController::failureText(const solver::JobFailure& failure) {
+    const QString surface = tr("Surface %1").arg(failure.surface + 1);
+    QString text;
+    switch (failure.error) {
+    case solver::JobError::None:
+    case solver::JobError::Cancelled:
+        return tr("The solve was cancelled.");
+    case solver::JobError::CannotSolve:
+        text = tr("%1 cannot be solved.").arg(surface);
+        break;
+    case solver::JobError::TargetNotFinite:
+        text = failure.vertex != model::kInvalidId
+                   ? tr("The drag target of vertex %1 is not a finite point.").arg(failure.vertex)
+                   : tr("The drag target of control point %1 of edge %2 is not a finite point.")
+                         .arg(failure.index)
+                         .arg(failure.edge);
+        break;
+    case solver::JobError::SolverFailed:
+        text = failure.status == solver::Status::FactorizationFailed
+                   ? tr("%1 could not be solved: the linear system could not be factorised.")
+                         .arg(surface)
+                   : tr("%1 could not be solved: an iteration gave values that are not finite.")
+                         .arg(surface);
+        break;
+    case solver::JobError::NotFinite:
+        text = tr("%1 could not be solved: the solver produced a value that is not finite.")
+                   .arg(surface);
+        break;
+    }
+    if (!failure.detail.empty()) {
+        // The solver's technical note, untranslated, for a support request.
+        text += QLatin1Char(' ') + tr("(Solver: %1)").arg(QString::fromStdString(failure.detail));
+    }
+    return text;
+}
+
+SolveReport SolveController::reportOf(const solver::SolveResult& result, const QString& title) {
+    const solver::JobOutcome& outcome = result.outcome;
     SolveReport report;
     report.title = title;
-    report.elapsedMs = result.elapsedMs;
-    report.summaries = result.summaries;
-    if (result.cancelled) {
+    report.elapsedMs = outcome.elapsedMs;
+    for (const solver::SurfaceAssessment& a : outcome.assessments) {
+        report.summaries.push_back(a.summary);
+    }
+    if (outcome.cancelled()) {
         report.status = tr("Cancelled; the design is unchanged.");
         return report;
     }
-    if (!result.ok) {
-        report.status = tr("Failed: %1").arg(result.error);
+    if (!outcome.ok) {
+        report.status = tr("Failed: %1").arg(failureText(outcome.failure));
         return report;
     }
     QStringList statuses;
-    for (std::size_t s = 0; s < result.summaries.size(); ++s) {
-        const solver::Summary& summary = result.summaries[s];
-        if (summary.iterations.empty() && summary.message.empty()) {
-            continue; // not solved (a drag leaves surfaces without handles alone)
+    for (std::size_t s = 0; s < outcome.assessments.size(); ++s) {
+        const solver::SurfaceAssessment& a = outcome.assessments[s];
+        if (!a.solved) {
+            continue; // a drag leaves surfaces without handles alone
         }
+        const solver::Summary& summary = a.summary;
+        const int surface = static_cast<int>(s);
         QString status;
         switch (summary.status) {
         case solver::Status::Converged:
@@ -262,73 +306,55 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result,
             status =
                 summary.toleranceReached ? tr("tolerance reached") : tr("iteration limit reached");
             break;
-        case solver::Status::Cancelled:
-            status = tr("cancelled");
-            break;
         case solver::Status::StoppedBeforeDegenerate:
-            status = tr("stopped at the last valid state");
+            status = tr("stopped at the last valid state, before a ruling, curve or patch "
+                        "collapsed");
             break;
         default:
             status = tr("failed");
             break;
         }
-        if (!summary.message.empty()) {
-            // The solver's sentence without its full stop: the status goes on after it.
-            QString message = QString::fromStdString(summary.message);
-            if (message.endsWith(QLatin1Char('.'))) {
-                message.chop(1);
-            }
-            status += tr(" (%1)").arg(message);
+        if (a.bestIteration > 0) {
+            status += tr(" (ended on iteration %1, the one with the smallest residual)")
+                          .arg(a.bestIteration);
         }
-        for (const solver::SolveResult::Kept& kept : result.kept) {
-            if (kept.surface == static_cast<int>(s)) {
-                status += tr("; left as it was, since solving made it less developable "
-                             "(%1 → %2)")
-                              .arg(QString::number(kept.before, 'e', 1),
-                                   QString::number(kept.after, 'e', 1));
-            }
+        if (a.keptAsItWas) {
+            status += tr("; left as it was, since solving made it less developable "
+                         "(%1 → %2)")
+                          .arg(QString::number(a.keptAsItWas->before, 'e', 1),
+                               QString::number(a.keptAsItWas->after, 'e', 1));
         }
-        for (const solver::SolveResult::Stretched& stretched : result.stretched) {
-            if (stretched.surface == static_cast<int>(s)) {
-                status += tr("; keeping lengths failed (%1), so the drag was replayed letting "
-                             "the sheet stretch")
-                              .arg(problemsText(stretched.keepingLengths));
-            }
+        if (a.replay && a.replay->taken) {
+            status += tr("; keeping lengths failed (%1), so the drag was replayed letting "
+                         "the sheet stretch")
+                          .arg(problemsText(a.replay->keepingLengths));
         }
-        for (const solver::SolveResult::Held& held : result.held) {
-            if (held.surface == static_cast<int>(s)) {
-                status += heldText(held.held);
-            }
+        if (a.held) {
+            status += heldText(*a.held);
         }
-        if (s < result.surfaces.size()) {
-            // A result that folds over onto itself satisfies the conditions but is no surface
-            // a sheet can take (e.g. a flat design pushed within its plane): said, not hidden.
-            QList<int> folded;
-            for (const auto& [face, places] : solver::foldOvers(result.surfaces[s])) {
-                (void)places;
-                folded << static_cast<int>(face);
-                report.patchesToCheck.insert(
-                    {document::Pick::Kind::Face, static_cast<int>(s), face});
-            }
-            if (!folded.isEmpty()) {
-                status += tr("; %n patch(es) fold over onto themselves, where the surface "
-                             "overlaps itself: %1",
-                             nullptr, static_cast<int>(folded.size()))
-                              .arg(patchList(folded));
-            }
-            report.foldedOver << folded;
+        QList<int> folded;
+        for (const auto& [face, places] : a.foldOvers) {
+            (void)places;
+            folded << static_cast<int>(face);
+            report.patchesToCheck.insert({document::Pick::Kind::Face, surface, face});
         }
-        if (s < result.creaseResiduals.size()) {
-            report.creaseResidual = std::max(report.creaseResidual, result.creaseResiduals[s]);
+        if (!folded.isEmpty()) {
+            // Every condition may hold and the surface still overlap itself (e.g. a flat
+            // design pushed within its plane): said, not hidden.
+            status += tr("; %n patch(es) fold over onto themselves, where the surface "
+                         "overlaps itself: %1",
+                         nullptr, static_cast<int>(folded.size()))
+                          .arg(patchList(folded));
         }
-        if (s < result.selfOverlaps.size() && !result.selfOverlaps[s].empty()) {
-            // Every condition may hold and the development still overlap itself, e.g. where a
-            // patch was turned over in the plane: such a design cannot be cut from one sheet.
+        report.foldedOver << folded;
+        if (a.creases.creases > 0) {
+            report.creaseResidual = std::max(report.creaseResidual, a.creases.residualMax);
+        }
+        if (!a.overlapping.empty()) {
             QList<int> overlapping;
-            for (model::FaceId face : result.selfOverlaps[s]) {
+            for (model::FaceId face : a.overlapping) {
                 overlapping << static_cast<int>(face);
-                report.patchesToCheck.insert(
-                    {document::Pick::Kind::Face, static_cast<int>(s), face});
+                report.patchesToCheck.insert({document::Pick::Kind::Face, surface, face});
             }
             status += tr("; the development overlaps itself at %n patch(es) (%1) and cannot be "
                          "cut from one sheet",
@@ -336,17 +362,13 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result,
                           .arg(patchList(overlapping));
             report.overlapping << overlapping;
         }
-        statuses << (result.summaries.size() > 1 ? tr("surface %1 %2").arg(s + 1).arg(status)
-                                                 : status);
-        if (!summary.toleranceReached && s < result.surfaces.size()) {
-            const auto faces = solver::developabilityByFace(result.surfaces[s]);
-            for (std::size_t i = 0; i < std::min<std::size_t>(3, faces.size()); ++i) {
-                report.worstFaces << tr("patch %1: %2")
-                                         .arg(faces[i].first)
-                                         .arg(QString::number(faces[i].second, 'e', 1));
-                report.patchesToCheck.insert(
-                    {document::Pick::Kind::Face, static_cast<int>(s), faces[i].first});
-            }
+        statuses << (outcome.assessments.size() > 1 ? tr("surface %1 %2").arg(s + 1).arg(status)
+                                                    : status);
+        for (std::size_t i = 0; i < std::min<std::size_t>(3, a.worstFaces.size()); ++i) {
+            const auto& [face, residual] = a.worstFaces[i];
+            report.worstFaces
+                << tr("patch %1: %2").arg(face).arg(QString::number(residual, 'e', 1));
+            report.patchesToCheck.insert({document::Pick::Kind::Face, surface, face});
         }
     }
     report.status = statuses.isEmpty() ? tr("nothing was solved.")
@@ -355,18 +377,19 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result,
 }
 
 void SolveController::onResult(const solver::SolveResult& result) {
-    if (result.sessionKey != m_sessionKey || !m_solving || result.revision != m_revision) {
+    if (result.ticket != m_ticket || !m_solving || result.revision != m_revision) {
         return; // a drag's result, or one of a solve that was cancelled or superseded
     }
     const QString title = m_editSurface >= 0 ? m_editTitle : tr("Solve");
     const SolveReport report = reportOf(result, title);
     emit reportReady(report);
-    if (result.cancelled) {
+    const solver::JobOutcome& outcome = result.outcome;
+    if (outcome.cancelled()) {
         stop(cancelledSentence(QString()));
         return;
     }
-    if (!result.ok) {
-        stop(failedSentence(result.error));
+    if (!outcome.ok) {
+        stop(failedSentence(failureText(outcome.failure)));
         return;
     }
     if (m_editSurface >= 0) {
@@ -375,36 +398,35 @@ void SolveController::onResult(const solver::SolveResult& result) {
     }
     document::Document* doc = m_workspace->document();
     if (doc->revision() != result.revision ||
-        result.surfaces.size() != static_cast<std::size_t>(doc->surfaceCount())) {
+        outcome.surfaces.size() != static_cast<std::size_t>(doc->surfaceCount())) {
         stop(tr("Solve result discarded: the design changed while solving."));
         return;
     }
     // Every surface's command is made before any is pushed: one refused (the solved shape
     // does not validate) leaves the design as it was.
     std::vector<std::unique_ptr<QUndoCommand>> commands;
-    auto isKept = [&result](std::size_t s) {
-        return std::any_of(result.kept.begin(), result.kept.end(),
-                           [s](const auto& kept) { return kept.surface == static_cast<int>(s); });
-    };
-    for (std::size_t s = 0; s < result.surfaces.size(); ++s) {
-        if (isKept(s)) {
+    int keptCount = 0;
+    double before = 0.0;
+    double after = 0.0;
+    for (std::size_t s = 0; s < outcome.surfaces.size(); ++s) {
+        if (const auto& kept = outcome.assessments[s].keptAsItWas) {
+            ++keptCount;
+            before = std::max(before, kept->before);
+            after = std::max(after, kept->after);
             continue;
         }
+        if (outcome.surfaces[s] == doc->surface(static_cast<int>(s))) {
+            continue; // nothing changed: no undo step
+        }
         document::CommandOrError edit = document::ApplySurfaceCommand::create(
-            *doc, static_cast<int>(s), result.surfaces[s], title);
+            *doc, static_cast<int>(s), outcome.surfaces[s], title);
         if (edit.isRefused()) {
             stop(tr("Solve failed: %1 The design is unchanged.").arg(edit.error()));
             return;
         }
         commands.push_back(edit.takeCommand());
     }
-    if (!result.kept.empty()) {
-        double before = 0.0;
-        double after = 0.0;
-        for (const auto& kept : result.kept) {
-            before = std::max(before, kept.before);
-            after = std::max(after, kept.after);
-        }
+    if (keptCount > 0) {
         if (commands.empty()) {
             stop(tr("Solve left the design as it was: solving made it less developable (largest "
                     "developability residual %1 → %2).")
@@ -412,27 +434,25 @@ void SolveController::onResult(const solver::SolveResult& result) {
             return;
         }
     }
-    m_applying = true;
-    QUndoStack* stack = doc->undoStack();
-    stack->beginMacro(title);
-    for (auto& command : commands) {
-        stack->push(command.release());
+    if (!commands.empty()) {
+        m_applying = true;
+        QUndoStack* stack = doc->undoStack();
+        stack->beginMacro(title);
+        for (auto& command : commands) {
+            stack->push(command.release());
+        }
+        stack->endMacro();
+        m_applying = false;
     }
-    stack->endMacro();
-    m_applying = false;
-    double residual = 0.0;
-    int iterations = 0;
-    for (const solver::Summary& summary : result.summaries) {
-        residual = std::max(residual, summary.finalMaxConstraintResidual);
-        iterations = std::max(iterations, summary.iterationsCompleted);
-    }
+    const double residual = outcome.largestResidual();
+    const int iterations = outcome.largestIterationCount();
     QString sentence =
         tr("Solved: %n iteration(s), largest constraint residual %1.", nullptr, iterations)
             .arg(QString::number(residual, 'e', 2));
-    if (!result.kept.empty()) {
+    if (keptCount > 0) {
         sentence += QLatin1Char(' ') +
                     tr("%n surface(s) left as they were: solving made them less developable.",
-                       nullptr, static_cast<int>(result.kept.size()));
+                       nullptr, keptCount);
     }
     stop(sentence + checkShapeSentence(report));
 }
@@ -440,12 +460,12 @@ void SolveController::onResult(const solver::SolveResult& result) {
 void SolveController::applyEdit(const solver::SolveResult& result, const SolveReport& report) {
     document::Document* doc = m_workspace->document();
     const auto s = static_cast<std::size_t>(m_editSurface);
-    if (doc->revision() != result.revision || s >= result.surfaces.size() ||
-        s >= result.summaries.size()) {
+    const solver::JobOutcome& outcome = result.outcome;
+    if (doc->revision() != result.revision || s >= outcome.surfaces.size()) {
         stop(tr("%1 discarded: the design changed while solving; nothing moved.").arg(m_editTitle));
         return;
     }
-    model::CompositeSurface solved = result.surfaces[s];
+    model::CompositeSurface solved = outcome.surfaces[s];
     for (const auto& [v, target] : m_heldTargets) {
         solved.moveVertex(v, target);
     }
@@ -458,7 +478,7 @@ void SolveController::applyEdit(const solver::SolveResult& result, const SolveRe
     m_applying = true;
     doc->undoStack()->push(edit.takeCommand().release());
     m_applying = false;
-    const solver::Summary& summary = result.summaries[s];
+    const solver::Summary& summary = outcome.assessments[s].summary;
     stop(tr("%1, kept developable: %n iteration(s), largest constraint residual %2.", nullptr,
             summary.iterationsCompleted)
              .arg(m_editTitle, QString::number(summary.finalMaxConstraintResidual, 'e', 2)) +

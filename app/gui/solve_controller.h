@@ -14,6 +14,7 @@
 namespace devsurf::solver {
 class SolverWorker;
 struct SolveResult;
+struct JobFailure;
 } // namespace devsurf::solver
 
 namespace devsurf::app {
@@ -47,7 +48,9 @@ public:
     static bool stretchesWhereLengthsFail();
     // Builds a report of a result for the Solver panel (worst patches when the tolerance was
     // not reached).
-    SolveReport reportOf(const solver::SolveResult& result, const QString& title) const;
+    static SolveReport reportOf(const solver::SolveResult& result, const QString& title);
+    // Why a job failed, as a sentence.
+    static QString failureText(const solver::JobFailure& failure);
     // What went wrong keeping lengths, for the report: "folded over in 2 places, a development
     // overlapping itself".
     static QString problemsText(const solver::DragOutcome& outcome);
@@ -92,8 +95,8 @@ private:
     bool m_solving = false;
     bool m_applying = false;
     quint64 m_revision = 0;
-    // The running request: 0 and -1 for Solve, else an edit's own key and surface.
-    quint64 m_sessionKey = 0;
+    // The running request's ticket; the edited surface (-1: Solve).
+    quint64 m_ticket = 0;
     int m_editSurface = -1;
     QString m_editTitle;
     // The held vertices that the edit's snapshot pinned and its result must release.

@@ -48,6 +48,14 @@ quint64 Document::surfaceRevision(int index) const {
                                           : std::max(it->second, m_allSurfacesRevision);
 }
 
+void Document::previewSurface(int index, const model::CompositeSurface& surface) {
+    model::CompositeSurface& target = m_project.surfaces.at(static_cast<std::size_t>(index));
+    const model::SurfaceId id = target.id();
+    target = surface;
+    target.setId(id);
+    notifyChanged(Change::Geometry, index);
+}
+
 void Document::notifyChanged(Changes changes, int surfaceIndex) {
     ++m_revision;
     if (surfaceIndex >= 0 && surfaceIndex < surfaceCount()) {

@@ -46,6 +46,12 @@ public:
     // New or opened project: replaces everything and clears the undo history.
     void resetProject(model::Project project, const QString& filePath = QString());
 
+    // A drag's live result, shown outside the undo history: the surface at index becomes
+    // `surface` (its id kept) and changed() is emitted, but no undo step is made and the
+    // modified flag stays. The drag pushes one command on release (ApplySurfaceCommand::
+    // createShown) or restores its press state the same way.
+    void previewSurface(int index, const model::CompositeSurface& surface);
+
     // For commands only: the project to change, then notifyChanged() once the change is done.
     model::Project& mutableProject() { return m_project; }
     // surfaceIndex: the only surface changed, or -1 for any number of them.

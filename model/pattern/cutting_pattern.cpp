@@ -109,15 +109,6 @@ std::vector<FaceId> selfOverlappingPatches(const CompositeSurface& surface,
     return patches;
 }
 
-std::string describeSelfOverlap(const std::vector<FaceId>& patches) {
-    if (patches.empty()) {
-        return "The development does not overlap itself.";
-    }
-    return std::string("The development overlaps itself at ") +
-           (patches.size() == 1 ? "patch " : "patches ") + facesText(patches) +
-           " and cannot be cut from one sheet.";
-}
-
 CuttingPattern buildCuttingPattern(const Project& project, const PatternOptions& requested) {
     PatternOptions options = requested;
     if (!std::isfinite(options.tolerance) || options.tolerance <= 0.0) {

@@ -149,11 +149,6 @@ developSurfacePieces(const CompositeSurface& surface, int surfaceIndex,
 std::vector<FaceId> selfOverlappingPatches(const CompositeSurface& surface,
                                            int samplesPerInterval = 8);
 
-// One sentence for the command line about selfOverlappingPatches(): "The development overlaps
-// itself at patches 6, 7, 8 and cannot be cut from one sheet." or "The development does not
-// overlap itself."
-std::string describeSelfOverlap(const std::vector<FaceId>& patches);
-
 // Builds the pattern of every surface of the project. Invalid surfaces are skipped with a
 // problem sentence naming them; it never throws for bad geometry.
 CuttingPattern buildCuttingPattern(const Project& project, const PatternOptions& options = {});

@@ -202,29 +202,4 @@ int ShapeChange::foldOverPlaces() const {
     return sum;
 }
 
-std::string describeFoldOvers(const std::vector<std::pair<model::FaceId, int>>& foldOvers) {
-    if (foldOvers.empty()) {
-        return "No face folds over onto itself.";
-    }
-    auto places = [](int count) {
-        return std::to_string(count) + (count == 1 ? " place" : " places");
-    };
-    std::string text = "Folded over onto itself:";
-    const std::size_t named = std::min(foldOvers.size(), kFoldOversNamed);
-    for (std::size_t i = 0; i < named; ++i) {
-        text += (i == 0 ? " face " : ", face ") + std::to_string(foldOvers[i].first) + " (" +
-                places(foldOvers[i].second) + ")";
-    }
-    if (named < foldOvers.size()) {
-        int rest = 0;
-        for (std::size_t i = named; i < foldOvers.size(); ++i) {
-            rest += foldOvers[i].second;
-        }
-        const std::size_t more = foldOvers.size() - named;
-        text += " and " + std::to_string(more) + (more == 1 ? " more face (" : " more faces (") +
-                places(rest) + ")";
-    }
-    return text + ".";
-}
-
 } // namespace devsurf::solver

@@ -45,11 +45,8 @@ ShapeChange measureShapeChange(const model::CompositeSurface& start,
 std::vector<std::pair<model::FaceId, int>> foldOvers(const model::CompositeSurface& surface,
                                                      int samplesPerInterval = 8);
 
-// One sentence for the command line naming the faces of foldOvers(): "Folded over onto itself:
-// face 3 (2 places), face 5 (1 place)." or "No face folds over onto itself." At most
-// kFoldOversNamed faces are named (the first ones, which foldOvers() lists most places
-// first); the rest are counted ("… and 412 more faces (650 places).").
+// How many faces of foldOvers() a report names (the first ones, which it lists most places
+// first); the rest are counted.
 inline constexpr std::size_t kFoldOversNamed = 10;
-std::string describeFoldOvers(const std::vector<std::pair<model::FaceId, int>>& foldOvers);
 
 } // namespace devsurf::solver

@@ -417,12 +417,18 @@ private slots:
         QSignalSpy changed(s.doc, &document::Document::changed);
         QTest::mousePress(s.gl, Qt::LeftButton, {}, s.at);
         QVERIFY(s.window.dragTool()->isDragging());
+        QSignalSpy stackMoves(s.doc->undoStack(), &QUndoStack::indexChanged);
+        const bool modifiedAtPress = s.doc->isModified();
         for (int i = 1; i <= 6; ++i) {
             QTest::mouseMove(s.gl, s.at + QPoint(0, -6 * i));
             if (i == 3) {
                 QVERIFY(changed.wait(60000)); // the surface follows during the drag
             }
         }
+        // The moves are shown outside the undo history; the release pushes one step.
+        QCOMPARE(s.doc->undoStack()->count(), stackAtPress);
+        QCOMPARE(stackMoves.count(), 0);
+        QCOMPARE(s.doc->isModified(), modifiedAtPress);
         QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(0, -36));
         QVERIFY(finished.wait(60000));
         QCOMPARE(finished.front().front().toBool(), true);
@@ -442,7 +448,7 @@ private slots:
         QVERIFY(automatic && automatic->isChecked());
         QVERIFY(app::SolveController::keepsLengths());
         QVERIFY2(window(s)->solverPanel()->iterationRows() ==
-                         app::DragTool::kFinalIterationsKeepingLengths ||
+                         solver::kIterationsAfterDragKeepingLengths ||
                      report.contains(QStringLiteral("converged")),
                  qPrintable(report));
         const solver::QualityMeasures quality = solver::measureQuality(s.doc->surface(0));
@@ -468,12 +474,15 @@ private slots:
         QTest::mouseMove(s.gl, s.at + QPoint(0, -20));
         QVERIFY(changed.wait(60000));
         QVERIFY(bytesOf(s.window) != atPress);
+        QSignalSpy stackMoves(s.doc->undoStack(), &QUndoStack::indexChanged);
         QTest::keyClick(s.gl, Qt::Key_Escape);
         QCOMPARE(finished.size(), 1);
         QCOMPARE(finished.front().front().toBool(), false);
         QVERIFY(!s.window.dragTool()->isDragging());
         QCOMPARE(bytesOf(s.window), atPress);
+        // Esc restored the press without touching the history (no undo, no obsolete step).
         QCOMPARE(s.doc->undoStack()->count(), stackAtPress);
+        QCOMPARE(stackMoves.count(), 0);
         QVERIFY(!s.window.workspace()->selection()->isEmpty()); // Esc did not select nothing
         // The release after Esc is an ordinary release; nothing of the drag comes back.
         QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(0, -20));

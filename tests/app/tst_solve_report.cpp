@@ -6,6 +6,7 @@
 #include "model/document/selection.h"
 #include "panels/solver_panel.h"
 #include "solve_controller.h"
+#include "solver/quality/shape_change.h"
 #include "solver/worker/solver_worker.h"
 #include "test_registry.h"
 #include "workspace.h"
@@ -21,14 +22,21 @@ using namespace devsurf;
 namespace {
 
 // A result of one iteration that reached the tolerance on `surface`, as the worker hands it over.
+// Measured as the solve job measures a settled result (fold-overs from the geometry).
 solver::SolveResult solvedResult(const model::CompositeSurface& surface) {
     solver::SolveResult result;
-    result.ok = true;
-    result.summaries.resize(1);
-    result.summaries[0].iterations.resize(1);
-    result.summaries[0].iterationsCompleted = 1;
-    result.summaries[0].toleranceReached = true;
-    result.surfaces = {surface};
+    solver::JobOutcome& outcome = result.outcome;
+    outcome.ok = true;
+    outcome.settled = true;
+    outcome.assessments.resize(1);
+    solver::SurfaceAssessment& a = outcome.assessments[0];
+    a.solved = true;
+    a.measured = true;
+    a.summary.iterations.resize(1);
+    a.summary.iterationsCompleted = 1;
+    a.summary.toleranceReached = true;
+    a.foldOvers = solver::foldOvers(surface);
+    outcome.surfaces = {surface};
     return result;
 }
 
@@ -58,7 +66,7 @@ private slots:
         select->click();
         QVERIFY(window.workspace()->selection()->picks() == patch);
 
-        result.surfaces = {test::flatStrip(100.0)};
+        result = solvedResult(test::flatStrip(100.0));
         const app::SolveReport flat = window.solveController()->reportOf(result, "Drag 1 vertex");
         QVERIFY(flat.foldedOver.isEmpty() && flat.patchesToCheck.empty());
         QVERIFY2(!flat.status.contains(QStringLiteral("fold over")), qPrintable(flat.status));
@@ -74,7 +82,7 @@ private slots:
         window.workspace()->newFromExample(QStringLiteral("sheet"), 0);
         solver::SolveResult result =
             solvedResult(window.workspace()->document()->project().surfaces.front());
-        result.selfOverlaps = {{1, 2}};
+        result.outcome.assessments[0].overlapping = {1, 2};
         const app::SolveReport report = window.solveController()->reportOf(result, "Solve");
         QVERIFY(report.foldedOver.isEmpty());
         QCOMPARE(report.overlapping, (QList<int>{1, 2}));
@@ -91,7 +99,7 @@ private slots:
         select->click();
         QVERIFY(window.workspace()->selection()->picks() == patches);
 
-        result.selfOverlaps = {{}};
+        result.outcome.assessments[0].overlapping.clear();
         const app::SolveReport clean = window.solveController()->reportOf(result, "Solve");
         QVERIFY(clean.overlapping.isEmpty() && clean.patchesToCheck.empty());
         QVERIFY2(!clean.status.contains(QStringLiteral("overlaps")), qPrintable(clean.status));
@@ -108,7 +116,7 @@ private slots:
         kept.residual = 10 * solver::kDragConvergedResidual;
         kept.foldOverPlaces = 2;
         kept.overlapping = {3};
-        result.stretched.push_back({0, kept});
+        result.outcome.assessments[0].replay = solver::LengthsReplay{kept, {}, true};
         const app::SolveReport report =
             window.solveController()->reportOf(result, "Drag 4 vertices");
         QVERIFY2(
@@ -117,7 +125,7 @@ private slots:
                 "place(\\(s\\)|s), a development overlapping itself\\), so the drag was "
                 "replayed letting the sheet stretch"))),
             qPrintable(report.status));
-        result.stretched.clear();
+        result.outcome.assessments[0].replay.reset();
         const app::SolveReport plain =
             window.solveController()->reportOf(result, "Drag 4 vertices");
         QVERIFY2(!plain.status.contains(QStringLiteral("replayed")), qPrintable(plain.status));

@@ -112,25 +112,29 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
         // The bench tags each request with its move number (the application sends the
         // document's revision at the press and tracks the revisions it produced itself).
         r.revision = tag;
-        r.sessionKey = kDragKey;
-        r.iterations = iterations;
-        r.keepLengths = keepLengths;
-        r.stretchIfLengthsFail = !options.keepLengths.has_value();
-        r.settle = settle;
-        r.surfaces = {document.surface(0)};
-        r.pulled[0] = {{dragged, false, from + lift * t}};
+        r.ticket = kDragKey;
+        r.job.kind = solver::JobKind::VertexDrag;
+        r.job.drag = kDragKey;
+        r.job.iterations = iterations;
+        r.job.lengths = !options.keepLengths.has_value() ? solver::DragLengths::Automatic
+                        : keepLengths                    ? solver::DragLengths::Keep
+                                                         : solver::DragLengths::Stretch;
+        r.job.settle = settle;
+        r.job.surfaces = {document.surface(0)};
+        r.job.pulled[0] = {{dragged, false, from + lift * t}};
         worker.submit(std::move(r));
     };
     QObject::connect(
         &worker, &solver::SolverWorker::finished, &loop, [&](const solver::SolveResult& result) {
-            if (!result.ok) {
-                row.error = result.error.toStdString();
+            const solver::JobOutcome& outcome = result.outcome;
+            if (!outcome.ok) {
+                row.error = "the solve job failed: " + outcome.failure.detail;
                 loop.quit();
                 return;
             }
             const QString refused = document::pushOrExplain(
                 document, document::ApplySurfaceCommand::create(
-                              document, 0, result.surfaces.front(), QStringLiteral("Drag vertex"),
+                              document, 0, outcome.surfaces.front(), QStringLiteral("Drag vertex"),
                               document::Change::Geometry, static_cast<int>(kDragKey)));
             if (!refused.isEmpty()) {
                 row.error = refused.toStdString();
@@ -138,18 +142,17 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
                 return;
             }
             const double now = clock.nsecsElapsed() / 1e6;
-            row.variables = result.summaries.front().variables;
+            const solver::SurfaceAssessment& assessment = outcome.assessments.front();
+            row.variables = assessment.summary.variables;
             if (result.revision == release) {
                 row.releaseMs = now - releasedAt;
-                row.residualAfter = result.summaries.front().finalMaxConstraintResidual;
-                for (const auto& [face, places] : solver::foldOvers(result.surfaces.front())) {
+                row.residualAfter = assessment.summary.finalMaxConstraintResidual;
+                for (const auto& [face, places] : assessment.foldOvers) {
                     (void)face;
                     row.foldOvers += places;
                 }
-                row.replayedStretching = !result.stretched.empty();
-                if (!result.selfOverlaps.empty()) {
-                    row.overlappingPatches = static_cast<int>(result.selfOverlaps.front().size());
-                }
+                row.replayedStretching = assessment.replay && assessment.replay->taken;
+                row.overlappingPatches = static_cast<int>(assessment.overlapping.size());
                 loop.quit();
                 return;
             }
@@ -208,13 +211,14 @@ SolveStallRow runSolve(const std::string& name, model::CompositeSurface surface,
     StallWatch stalls;
     QObject::connect(
         &worker, &solver::SolverWorker::finished, &loop, [&](const solver::SolveResult& result) {
-            if (!result.ok) {
-                row.error = result.error.toStdString();
+            const solver::JobOutcome& outcome = result.outcome;
+            if (!outcome.ok) {
+                row.error = "the solve job failed: " + outcome.failure.detail;
             } else {
-                row.variables = result.summaries.front().variables;
+                row.variables = outcome.assessments.front().summary.variables;
                 const QString refused = document::pushOrExplain(
                     document, document::ApplySurfaceCommand::create(
-                                  document, 0, result.surfaces.front(), QStringLiteral("Solve")));
+                                  document, 0, outcome.surfaces.front(), QStringLiteral("Solve")));
                 row.error = refused.toStdString();
             }
             row.solveMs = clock.nsecsElapsed() / 1e6;
@@ -222,8 +226,8 @@ SolveStallRow runSolve(const std::string& name, model::CompositeSurface surface,
         });
     solver::SolveRequest request;
     request.revision = document.revision();
-    request.iterations = options.solveIterations;
-    request.surfaces = {document.surface(0)};
+    request.job.iterations = options.solveIterations;
+    request.job.surfaces = {document.surface(0)};
     clock.start();
     worker.submit(std::move(request));
     loop.exec();

@@ -50,15 +50,22 @@ SolveResult solveOnce(const model::CompositeSurface& surface, int iterations) {
     QSignalSpy finished(&worker, &SolverWorker::finished);
     SolveRequest request;
     request.revision = 3;
-    request.surfaces = {surface};
-    request.iterations = iterations;
+    request.job.surfaces = {surface};
+    request.job.iterations = iterations;
     worker.submit(request);
     if (!waitForResults(finished, 1)) {
         SolveResult none;
-        none.error = QStringLiteral("no result arrived");
+        none.outcome.failure.detail = "no result arrived";
         return none;
     }
     return resultAt(finished, 0);
+}
+
+// What went wrong, for a failed check's message.
+QString why(const SolveResult& result) {
+    return QStringLiteral("error %1: %2")
+        .arg(static_cast<int>(result.outcome.failure.error))
+        .arg(QString::fromStdString(result.outcome.failure.detail));
 }
 
 bool allFinite(const model::CompositeSurface& surface) {
@@ -89,23 +96,23 @@ private slots:
         QSignalSpy finished(&worker, &SolverWorker::finished);
         SolveRequest request;
         request.revision = 42;
-        request.surfaces = {roughAnnulus(), model::makeExample("sheet").surfaces.front()};
-        request.iterations = 3;
+        request.job.surfaces = {roughAnnulus(), model::makeExample("sheet").surfaces.front()};
+        request.job.iterations = 3;
         worker.submit(request);
         QVERIFY(waitForResults(finished, 1));
         const SolveResult result = resultAt(finished, 0);
-        QVERIFY2(result.ok, qPrintable(result.error));
-        QVERIFY(!result.cancelled);
+        QVERIFY2(result.outcome.ok, qPrintable(why(result)));
+        QVERIFY(!result.outcome.cancelled());
         QCOMPARE(result.revision, quint64{42});
-        QCOMPARE(result.surfaces.size(), std::size_t{2});
-        QCOMPARE(result.summaries.size(), std::size_t{2});
-        QCOMPARE(result.summaries[0].iterationsCompleted, 3);
-        QVERIFY(!(result.surfaces[0] == request.surfaces[0]));
-        QVERIFY(allFinite(result.surfaces[0]));
+        QCOMPARE(result.outcome.surfaces.size(), std::size_t{2});
+        QCOMPARE(result.outcome.assessments.size(), std::size_t{2});
+        QCOMPARE(result.outcome.assessments[0].summary.iterationsCompleted, 3);
+        QVERIFY(!(result.outcome.surfaces[0] == request.job.surfaces[0]));
+        QVERIFY(allFinite(result.outcome.surfaces[0]));
         // The sheet is developable already: a Solve stops after its first iteration
         // (kSolveStopResidual).
-        QCOMPARE(result.summaries[1].status, Status::Converged);
-        QCOMPARE(result.summaries[1].iterationsCompleted, 1);
+        QCOMPARE(result.outcome.assessments[1].summary.status, Status::Converged);
+        QCOMPARE(result.outcome.assessments[1].summary.iterationsCompleted, 1);
         // Progress: one per iteration of every surface, queued before the result.
         QCOMPARE(progress.count(), 4);
         const QList<QVariant> last = progress.last();
@@ -125,10 +132,12 @@ private slots:
         for (int i = 0; i < 100; ++i) {
             SolveRequest& request = requests[static_cast<std::size_t>(i)];
             request.revision = static_cast<quint64>(i + 1);
-            request.sessionKey = 7;
-            request.iterations = 1;
-            request.surfaces = {surface};
-            request.pulled[0] = {
+            request.job.kind = JobKind::VertexDrag;
+            request.job.drag = 7;
+            request.job.lengths = DragLengths::Stretch;
+            request.job.iterations = 1;
+            request.job.surfaces = {surface};
+            request.job.pulled[0] = {
                 {dragged, false, from + model::Vec3{0.0, 0.0, 1e-3 * diameter * (i + 1)}}};
         }
         SolverWorker worker;
@@ -144,7 +153,7 @@ private slots:
         quint64 previous = 0;
         for (int i = 0; i < finished.count(); ++i) {
             const SolveResult result = resultAt(finished, i);
-            QVERIFY2(result.ok, qPrintable(result.error));
+            QVERIFY2(result.outcome.ok, qPrintable(why(result)));
             QVERIFY(result.revision > previous);
             previous = result.revision;
         }
@@ -163,14 +172,16 @@ private slots:
         SolverWorker worker;
         QSignalSpy finished(&worker, &SolverWorker::finished);
         SolveRequest request;
-        request.sessionKey = 3;
-        request.iterations = 1;
-        request.surfaces = {surface};
-        request.pulled[0] = {{dragged, false, first}};
+        request.job.kind = JobKind::VertexDrag;
+        request.job.drag = 3;
+        request.job.lengths = DragLengths::Stretch;
+        request.job.iterations = 1;
+        request.job.surfaces = {surface};
+        request.job.pulled[0] = {{dragged, false, first}};
         request.revision = 1;
         worker.submit(request);
         QVERIFY(waitForResults(finished, 1));
-        request.pulled[0] = {{dragged, false, second}};
+        request.job.pulled[0] = {{dragged, false, second}};
         request.revision = 2;
         worker.submit(request);
         QVERIFY(waitForResults(finished, 2));
@@ -180,8 +191,8 @@ private slots:
         QVERIFY(session.setHandleTarget(dragged, second));
         QVERIFY(session.step(1).succeeded());
         const SolveResult result = resultAt(finished, 1);
-        QVERIFY2(result.ok, qPrintable(result.error));
-        QVERIFY(result.surfaces.front() == session.surface());
+        QVERIFY2(result.outcome.ok, qPrintable(why(result)));
+        QVERIFY(result.outcome.surfaces.front() == session.surface());
     }
 
     void keepLengthsDragSettlesAfterTheRelease() {
@@ -202,16 +213,18 @@ private slots:
         SolverWorker worker;
         QSignalSpy finished(&worker, &SolverWorker::finished);
         SolveRequest request;
-        request.sessionKey = 5;
-        request.keepLengths = true;
-        request.surfaces = {surface};
+        request.job.kind = JobKind::VertexDrag;
+        request.job.drag = 5;
+        request.job.lengths = DragLengths::Stretch;
+        request.job.lengths = DragLengths::Keep;
+        request.job.surfaces = {surface};
         SolveSession session(surface, targets(0.0), keepLengthsSessionOptions());
         for (int k = 1; k <= 11; ++k) {
             const bool release = k == 11;
             const double t = std::min(1.0, k / 10.0);
-            request.pulled[0] = targets(t);
-            request.iterations = release ? 10 : 1;
-            request.settle = release;
+            request.job.pulled[0] = targets(t);
+            request.job.iterations = release ? 10 : 1;
+            request.job.settle = release;
             request.revision = static_cast<quint64>(k);
             worker.submit(request);
             QVERIFY(waitForResults(finished, k));
@@ -224,10 +237,11 @@ private slots:
             QVERIFY(session.step(release ? 10 : 1).succeeded());
         }
         const SolveResult result = resultAt(finished, 10);
-        QVERIFY2(result.ok, qPrintable(result.error));
-        QVERIFY(result.surfaces.front() == session.surface());
-        QVERIFY2(result.summaries.front().finalMaxConstraintResidual < 1e-8,
-                 qPrintable(QString::number(result.summaries.front().finalMaxConstraintResidual)));
+        QVERIFY2(result.outcome.ok, qPrintable(why(result)));
+        QVERIFY(result.outcome.surfaces.front() == session.surface());
+        QVERIFY2(result.outcome.assessments.front().summary.finalMaxConstraintResidual < 1e-8,
+                 qPrintable(QString::number(
+                     result.outcome.assessments.front().summary.finalMaxConstraintResidual)));
     }
 
     void creaseDragUsesItsOwnOptions() {
@@ -240,8 +254,10 @@ private slots:
         SolverWorker worker;
         QSignalSpy finished(&worker, &SolverWorker::finished);
         SolveRequest request;
-        request.sessionKey = 6;
-        request.surfaces = {surface};
+        request.job.kind = JobKind::CreaseDrag;
+        request.job.drag = 6;
+        request.job.lengths = DragLengths::Stretch;
+        request.job.surfaces = {surface};
         SolveSession session(surface, drag.vertexHandles({}, true),
                              drag.controlPointHandles({}, true), creaseDragSessionOptions());
         SolveSession vertexDrag(surface, drag.vertexHandles({}, true),
@@ -249,10 +265,10 @@ private slots:
         for (int k = 1; k <= 11; ++k) {
             const bool release = k == 11;
             const model::Vec3 delta = by * (std::min(1.0, k / 10.0));
-            request.pulled[0] = drag.vertexHandles(delta, true);
-            request.pulledControlPoints[0] = drag.controlPointHandles(delta, true);
-            request.iterations = release ? 10 : 1;
-            request.settle = release;
+            request.job.pulled[0] = drag.vertexHandles(delta, true);
+            request.job.pulledControlPoints[0] = drag.controlPointHandles(delta, true);
+            request.job.iterations = release ? 10 : 1;
+            request.job.settle = release;
             request.revision = static_cast<quint64>(k);
             worker.submit(request);
             QVERIFY(waitForResults(finished, k));
@@ -270,10 +286,10 @@ private slots:
             }
         }
         const SolveResult result = resultAt(finished, 10);
-        QVERIFY2(result.ok, qPrintable(result.error));
-        QVERIFY(result.surfaces.front() == session.surface());
-        QVERIFY(!(result.surfaces.front() == vertexDrag.surface()));
-        QVERIFY(measureQuality(result.surfaces.front()).developabilityMax <= 1e-8);
+        QVERIFY2(result.outcome.ok, qPrintable(why(result)));
+        QVERIFY(result.outcome.surfaces.front() == session.surface());
+        QVERIFY(!(result.outcome.surfaces.front() == vertexDrag.surface()));
+        QVERIFY(measureQuality(result.outcome.surfaces.front()).developabilityMax <= 1e-8);
     }
 
     void automaticDragIsReplayedStretchingWhereKeepingLengthsFails() {
@@ -288,10 +304,12 @@ private slots:
             SolverWorker worker;
             QSignalSpy finished(&worker, &SolverWorker::finished);
             SolveRequest request;
-            request.sessionKey = 3;
-            request.keepLengths = true;
-            request.stretchIfLengthsFail = true;
-            request.surfaces = {start};
+            request.job.kind = JobKind::VertexDrag;
+            request.job.drag = 3;
+            request.job.lengths = DragLengths::Stretch;
+            request.job.lengths = DragLengths::Keep;
+            request.job.lengths = DragLengths::Automatic;
+            request.job.surfaces = {start};
             for (int k = 1; k <= 21; ++k) {
                 const bool release = k == 21;
                 DragMove move;
@@ -300,15 +318,17 @@ private slots:
                     move.vertices.push_back(
                         {v, false, start.position(v) + model::Vec3{0.0, 0.0, lift * t}});
                 }
-                request.pulled[0] = move.vertices;
-                request.iterations = release ? kIterationsAfterDragKeepingLengths : 1;
-                request.settle = release;
+                request.job.pulled[0] = move.vertices;
+                request.job.iterations = release ? kIterationsAfterDragKeepingLengths : 1;
+                request.job.settle = release;
                 request.revision = static_cast<quint64>(k);
                 worker.submit(request);
                 if (!waitForResults(finished, k)) {
                     return SolveResult{};
                 }
-                moves->push_back(move);
+                if (!release) {
+                    moves->push_back(move); // a release where the last move was is no move
+                }
             }
             return resultAt(finished, 20);
         };
@@ -319,33 +339,35 @@ private slots:
         }
         std::vector<DragMove> moves;
         SolveResult result = dragThroughWorker(fig8, {5, 6, 9, 10}, 85.0, &moves);
-        QVERIFY2(result.ok, qPrintable(result.error));
-        QCOMPARE(result.stretched.size(), std::size_t(1));
-        QCOMPARE(result.stretched.front().surface, 0);
-        QVERIFY(result.stretched.front().keepingLengths.problems() > 0);
+        QVERIFY2(result.outcome.ok, qPrintable(why(result)));
+        const SurfaceAssessment& lifted = result.outcome.assessments.front();
+        QVERIFY(lifted.replay && lifted.replay->taken);
+        QVERIFY(lifted.replay->keepingLengths.problems() > 0);
         // Why: the four pinned corners hold the whole flat square (model::findVertexHeldByPins).
-        QCOMPARE(result.held.size(), std::size_t(1));
-        QCOMPARE(result.held.front().surface, 0);
-        QCOMPARE(result.held.front().held.pins.size(), std::size_t(3));
-        QVERIFY(fig8.isPinned(result.held.front().held.pins[0]));
+        QVERIFY(lifted.held.has_value());
+        QCOMPARE(lifted.held->pins.size(), std::size_t(3));
+        QVERIFY(fig8.isPinned(lifted.held->pins[0]));
         // The replay of the moves as solved (none coalesced here), bit for bit.
         const ReplayedDrag replay = replayStretching(fig8, moves, kIterationsAfterDrag);
-        QVERIFY(result.surfaces.front() == replay.session->surface());
-        QVERIFY2(result.summaries.front().finalMaxConstraintResidual < 1e-8,
-                 qPrintable(QString::number(result.summaries.front().finalMaxConstraintResidual)));
-        QCOMPARE(result.selfOverlaps.size(), std::size_t(1));
-        QVERIFY(result.selfOverlaps.front().empty());
-        const double det = measureQuality(result.surfaces.front()).developabilityMax;
+        QVERIFY(result.outcome.surfaces.front() == replay.session->surface());
+        QVERIFY2(result.outcome.assessments.front().summary.finalMaxConstraintResidual < 1e-8,
+                 qPrintable(QString::number(
+                     result.outcome.assessments.front().summary.finalMaxConstraintResidual)));
+        QVERIFY(lifted.measured);
+        QVERIFY(lifted.overlapping.empty());
+        const double det = measureQuality(result.outcome.surfaces.front()).developabilityMax;
         QVERIFY2(det < 1e-8, qPrintable(QString::number(det)));
 
         moves.clear();
         const model::CompositeSurface fig6 = model::makeExample("fig6").surfaces.front();
         result = dragThroughWorker(fig6, {4}, 75.0, &moves);
-        QVERIFY2(result.ok, qPrintable(result.error));
-        QVERIFY(result.stretched.empty());
-        QVERIFY(result.held.empty()); // fig6's two pinned corners hold only its bottom edge
-        QVERIFY2(result.summaries.front().finalMaxConstraintResidual < 1e-8,
-                 qPrintable(QString::number(result.summaries.front().finalMaxConstraintResidual)));
+        QVERIFY2(result.outcome.ok, qPrintable(why(result)));
+        QVERIFY(!result.outcome.assessments.front().replay);
+        // fig6's two pinned corners hold only its bottom edge.
+        QVERIFY(!result.outcome.assessments.front().held);
+        QVERIFY2(result.outcome.assessments.front().summary.finalMaxConstraintResidual < 1e-8,
+                 qPrintable(QString::number(
+                     result.outcome.assessments.front().summary.finalMaxConstraintResidual)));
     }
 
     void dragStopsBeforeADegenerateSurface() {
@@ -385,28 +407,30 @@ private slots:
         SolverWorker worker;
         QSignalSpy finished(&worker, &SolverWorker::finished);
         SolveRequest request;
-        request.sessionKey = 9;
-        request.surfaces = {lifted};
+        request.job.kind = JobKind::VertexDrag;
+        request.job.drag = 9;
+        request.job.lengths = DragLengths::Stretch;
+        request.job.surfaces = {lifted};
         for (int k = 1; k <= 21; ++k) {
             const bool release = k == 21;
             std::vector<VertexHandle> handles;
             for (model::VertexId v : moved) {
                 handles.push_back({v, false, turned(v, std::min(1.0, k / 20.0))});
             }
-            request.pulled[0] = handles;
-            request.iterations = release ? 10 : 1;
-            request.settle = release;
+            request.job.pulled[0] = handles;
+            request.job.iterations = release ? 10 : 1;
+            request.job.settle = release;
             request.revision = static_cast<quint64>(k);
             worker.submit(request);
             QVERIFY(waitForResults(finished, k));
         }
         const SolveResult result = resultAt(finished, 20);
-        QVERIFY2(result.ok, qPrintable(result.error));
-        const Summary& summary = result.summaries.front();
+        QVERIFY2(result.outcome.ok, qPrintable(why(result)));
+        const Summary& summary = result.outcome.assessments.front().summary;
         QCOMPARE(summary.status, Status::StoppedBeforeDegenerate);
         QVERIFY2(summary.message.find("zero area") != std::string::npos, summary.message.c_str());
         QVERIFY(summary.iterationsCompleted < 10);
-        const std::vector<std::string> problems = result.surfaces.front().validate();
+        const std::vector<std::string> problems = result.outcome.surfaces.front().validate();
         QVERIFY2(problems.empty(), problems.empty() ? "" : problems.front().c_str());
     }
 
@@ -417,53 +441,56 @@ private slots:
         const model::CompositeSurface band = test::helicalBand();
         const model::VertexId end = band.vertices().begin()->first;
         auto overlapsItself = [&band](const SolveResult& result) {
-            if (result.selfOverlaps.size() != 1 || result.selfOverlaps.front().empty()) {
+            const SurfaceAssessment& a = result.outcome.assessments.front();
+            if (!a.measured || a.overlapping.empty()) {
                 return false;
             }
-            return std::all_of(result.selfOverlaps.front().begin(),
-                               result.selfOverlaps.front().end(),
+            return std::all_of(a.overlapping.begin(), a.overlapping.end(),
                                [&band](model::FaceId face) { return band.hasFace(face); });
         };
         SolverWorker worker;
         QSignalSpy finished(&worker, &SolverWorker::finished);
         SolveRequest request;
-        request.surfaces = {band};
+        request.job.surfaces = {band};
         request.revision = 1;
         worker.submit(request);
         QVERIFY(waitForResults(finished, 1));
         SolveResult result = resultAt(finished, 0);
-        QVERIFY2(result.ok, qPrintable(result.error));
+        QVERIFY2(result.outcome.ok, qPrintable(why(result)));
         QVERIFY(overlapsItself(result));
 
-        request.sessionKey = 7;
-        request.iterations = 1;
-        request.pulled[0] = {{end, false, band.position(end) + model::Vec3{0, 0, 1}}};
+        request.job.kind = JobKind::VertexDrag;
+        request.job.drag = 7;
+        request.job.lengths = DragLengths::Stretch;
+        request.job.iterations = 1;
+        request.job.pulled[0] = {{end, false, band.position(end) + model::Vec3{0, 0, 1}}};
         request.revision = 2;
         worker.submit(request);
         QVERIFY(waitForResults(finished, 2));
         result = resultAt(finished, 1);
-        QVERIFY2(result.ok, qPrintable(result.error));
-        QVERIFY(result.selfOverlaps.empty());
+        QVERIFY2(result.outcome.ok, qPrintable(why(result)));
+        QVERIFY(!result.outcome.settled && !result.outcome.assessments.front().measured);
+        QVERIFY(result.outcome.assessments.front().overlapping.empty());
 
-        request.settle = true;
-        request.iterations = 10;
+        request.job.settle = true;
+        request.job.iterations = 10;
         request.revision = 3;
         worker.submit(request);
         QVERIFY(waitForResults(finished, 3));
         result = resultAt(finished, 2);
-        QVERIFY2(result.ok, qPrintable(result.error));
+        QVERIFY2(result.outcome.ok, qPrintable(why(result)));
         QVERIFY(overlapsItself(result));
 
         // A design whose development lies flat without overlapping.
         request = SolveRequest();
-        request.surfaces = {model::makeExample("annulus").surfaces.front()};
+        request.job.surfaces = {model::makeExample("annulus").surfaces.front()};
         request.revision = 4;
         worker.submit(request);
         QVERIFY(waitForResults(finished, 4));
         result = resultAt(finished, 3);
-        QVERIFY2(result.ok, qPrintable(result.error));
-        QCOMPARE(result.selfOverlaps.size(), std::size_t(1));
-        QVERIFY(result.selfOverlaps.front().empty());
+        QVERIFY2(result.outcome.ok, qPrintable(why(result)));
+        QVERIFY(result.outcome.assessments.front().measured);
+        QVERIFY(result.outcome.assessments.front().overlapping.empty());
     }
 
     void solveNeverLeavesADesignLessDevelopable() {
@@ -476,22 +503,22 @@ private slots:
         QVERIFY2(before < 1e-5, qPrintable(QString::number(before)));
 
         const SolveResult result = solveOnce(folded, 10);
-        QVERIFY2(result.ok, qPrintable(result.error));
-        QCOMPARE(result.kept.size(), std::size_t{1});
-        QCOMPARE(result.kept.front().surface, 0);
-        QVERIFY(result.surfaces.front() == folded);
+        QVERIFY2(result.outcome.ok, qPrintable(why(result)));
+        const auto& kept = result.outcome.assessments.front().keptAsItWas;
+        QVERIFY(kept.has_value());
+        QVERIFY(result.outcome.surfaces.front() == folded);
         // The figures it reports are the geometry's, and the solved shape was indeed worse.
-        QVERIFY(result.kept.front().before <= before);
-        QVERIFY2(result.kept.front().after > kLessDevelopableFactor * result.kept.front().before,
-                 qPrintable(QString::number(result.kept.front().after)));
+        QVERIFY(kept->before <= before);
+        QVERIFY2(kept->after > kLessDevelopableFactor * kept->before,
+                 qPrintable(QString::number(kept->after)));
 
         // A design Solve improves is solved as before: nothing is kept.
         const model::CompositeSurface annulus = roughAnnulus();
         const SolveResult rough = solveOnce(annulus, 10);
-        QVERIFY2(rough.ok, qPrintable(rough.error));
-        QVERIFY(rough.kept.empty());
-        QVERIFY(!(rough.surfaces.front() == annulus));
-        QCOMPARE(rough.creaseResiduals, std::vector<double>{-1.0}); // no crease condition
+        QVERIFY2(rough.outcome.ok, qPrintable(why(rough)));
+        QVERIFY(!rough.outcome.assessments.front().keptAsItWas);
+        QVERIFY(!(rough.outcome.surfaces.front() == annulus));
+        QCOMPARE(rough.outcome.assessments.front().creases.creases, 0); // no crease condition
     }
 
     void solveKeepsANearlyValidFold() {
@@ -504,18 +531,19 @@ private slots:
         QVERIFY2(before < kNearlyValidResidual, qPrintable(QString::number(before)));
         // Its residual cycles (2.6e-8, 1.7e-6, 1.8e-6); Solve ends on the best iterate.
         const SolveResult result = solveOnce(folded, 10);
-        QVERIFY2(result.ok, qPrintable(result.error));
-        QVERIFY(result.kept.empty());
-        const model::CompositeSurface& solved = result.surfaces.front();
+        QVERIFY2(result.outcome.ok, qPrintable(why(result)));
+        QVERIFY(!result.outcome.assessments.front().keptAsItWas);
+        const model::CompositeSurface& solved = result.outcome.surfaces.front();
         const double after = measureQuality(solved).developabilityMax;
         QVERIFY2(after <= before, qPrintable(QString::number(after)));
-        QVERIFY2(result.summaries.front().finalMaxConstraintResidual < 1e-7,
-                 qPrintable(QString::number(result.summaries.front().finalMaxConstraintResidual)));
+        QVERIFY2(result.outcome.assessments.front().summary.finalMaxConstraintResidual < 1e-7,
+                 qPrintable(QString::number(
+                     result.outcome.assessments.front().summary.finalMaxConstraintResidual)));
         const double moved = measureShapeChange(folded, solved).largestMove;
         QVERIFY2(moved < 1.0, qPrintable(QString::number(moved)));
         // The crease conditions sampled along the creases, for the Solver panel.
-        QCOMPARE(result.creaseResiduals,
-                 std::vector<double>{measureCreaseQuality(solved).residualMax});
+        QCOMPARE(result.outcome.assessments.front().creases.residualMax,
+                 measureCreaseQuality(solved).residualMax);
     }
 
     void cancelMidSolveGivesCancelledResult() {
@@ -524,18 +552,18 @@ private slots:
         QSignalSpy finished(&worker, &SolverWorker::finished);
         SolveRequest request;
         request.revision = 5;
-        request.surfaces = {roughAnnulus()};
-        request.iterations = 10000;
+        request.job.surfaces = {roughAnnulus()};
+        request.job.iterations = 10000;
         worker.submit(request);
         QVERIFY(progress.wait(60000));
         QVERIFY(worker.isBusy());
         worker.cancel();
         QVERIFY(waitForResults(finished, 1));
         const SolveResult result = resultAt(finished, 0);
-        QVERIFY(result.cancelled);
-        QVERIFY(!result.ok);
-        QVERIFY(!result.error.isEmpty());
-        QVERIFY(result.surfaces.empty());
+        QVERIFY(result.outcome.cancelled());
+        QVERIFY(!result.outcome.ok);
+        QCOMPARE(result.outcome.failure.error, JobError::Cancelled);
+        QVERIFY(result.outcome.surfaces.empty());
         QCOMPARE(result.revision, quint64{5});
         QVERIFY(progress.count() < 10000);
     }
@@ -549,17 +577,17 @@ private slots:
         QSignalSpy firstDone(&first, &SolverWorker::finished);
         QSignalSpy secondDone(&second, &SolverWorker::finished);
         SolveRequest request;
-        request.surfaces = {surface};
-        request.iterations = 4;
+        request.job.surfaces = {surface};
+        request.job.iterations = 4;
         first.submit(request);
         second.submit(request);
         QVERIFY(waitForResults(firstDone, 1));
         QVERIFY(waitForResults(secondDone, 1));
         const SolveResult a = resultAt(firstDone, 0);
         const SolveResult b = resultAt(secondDone, 0);
-        QVERIFY2(a.ok, qPrintable(a.error));
-        QVERIFY2(b.ok, qPrintable(b.error));
-        QVERIFY(a.surfaces.front() == b.surfaces.front());
+        QVERIFY2(a.outcome.ok, qPrintable(why(a)));
+        QVERIFY2(b.outcome.ok, qPrintable(why(b)));
+        QVERIFY(a.outcome.surfaces.front() == b.outcome.surfaces.front());
     }
 
     void nanInTheInputIsRefused() {
@@ -570,24 +598,27 @@ private slots:
         QSignalSpy finished(&worker, &SolverWorker::finished);
         SolveRequest request;
         request.revision = 9;
-        request.surfaces = {surface};
+        request.job.surfaces = {surface};
         worker.submit(request);
         QVERIFY(waitForResults(finished, 1));
         const SolveResult result = resultAt(finished, 0);
-        QVERIFY(!result.ok);
-        QVERIFY(!result.cancelled);
-        QVERIFY(result.surfaces.empty());
-        QVERIFY2(result.error.endsWith('.') && result.error.contains("not a finite number"),
-                 qPrintable(result.error));
+        QVERIFY(!result.outcome.ok);
+        QVERIFY(!result.outcome.cancelled());
+        QVERIFY(result.outcome.surfaces.empty());
+        QCOMPARE(result.outcome.failure.error, JobError::CannotSolve);
+        QVERIFY2(result.outcome.failure.detail.find("not a finite number") != std::string::npos,
+                 qPrintable(why(result)));
 
         // A NaN drag target is refused the same way.
-        request.surfaces = {roughAnnulus()};
-        request.sessionKey = 1;
-        request.pulled[0] = {{id, false, {0.0, std::nan(""), 0.0}}};
+        request.job.surfaces = {roughAnnulus()};
+        request.job.kind = JobKind::VertexDrag;
+        request.job.drag = 1;
+        request.job.lengths = DragLengths::Stretch;
+        request.job.pulled[0] = {{id, false, {0.0, std::nan(""), 0.0}}};
         worker.submit(request);
         QVERIFY(waitForResults(finished, 2));
-        QVERIFY(!resultAt(finished, 1).ok);
-        QVERIFY(resultAt(finished, 1).surfaces.empty());
+        QVERIFY(!resultAt(finished, 1).outcome.ok);
+        QVERIFY(resultAt(finished, 1).outcome.surfaces.empty());
     }
 };
 

@@ -30,6 +30,34 @@ CommandOrError ApplySurfaceCommand::create(Document& document, int surfaceIndex,
         });
 }
 
+CommandOrError ApplySurfaceCommand::createShown(Document& document, int surfaceIndex,
+                                                model::CompositeSurface before,
+                                                const QString& text) {
+    const QString indexError = checkSurfaceIndex(document, surfaceIndex);
+    if (!indexError.isEmpty()) {
+        return CommandOrError(indexError);
+    }
+    model::CompositeSurface after = document.surface(surfaceIndex);
+    const auto problems = after.validate();
+    if (!problems.empty()) {
+        return CommandOrError(tr("The new shape cannot be applied: %1")
+                                  .arg(QString::fromStdString(problems.front())));
+    }
+    before.setId(after.id());
+    auto* command = new ApplySurfaceCommand(document, surfaceIndex, std::move(before),
+                                            std::move(after), Change::Geometry, text, -1);
+    command->m_shown = true;
+    return CommandOrError(std::unique_ptr<QUndoCommand>(command));
+}
+
+void ApplySurfaceCommand::redo() {
+    if (m_shown) {
+        m_shown = false; // pushed: the document shows the result already
+        return;
+    }
+    SurfaceEditCommand::redo();
+}
+
 int ApplySurfaceCommand::id() const {
     return m_mergeKey < 0 ? -1 : kApplySurfaceCommandId;
 }

@@ -4,10 +4,9 @@
 
 namespace devsurf::document {
 
-// Replaces one surface by a given one: what the solver uses to apply its result. A drag is one
-// command: push with the same non-negative mergeKey (e.g. a drag counter) for every solver
-// result of the drag; consecutive commands with that key merge, keeping the state at mouse press
-// as "before" and the latest solved state as "after".
+// Replaces one surface by a given one: what the solver uses to apply its result. Consecutive
+// commands with the same non-negative mergeKey merge, keeping the first "before" and the last
+// "after".
 class ApplySurfaceCommand : public SurfaceEditCommand {
     Q_DECLARE_TR_FUNCTIONS(ApplySurfaceCommand)
 public:
@@ -16,6 +15,12 @@ public:
                                  model::CompositeSurface newSurface, const QString& text,
                                  Changes changes = Change::Geometry, int mergeKey = -1);
 
+    // The command of a drag whose result the document shows already (Document::previewSurface):
+    // undo returns `before` (the press); its first redo, when pushed, changes nothing.
+    static CommandOrError createShown(Document& document, int surfaceIndex,
+                                      model::CompositeSurface before, const QString& text);
+
+    void redo() override;
     int id() const override;
     bool mergeWith(const QUndoCommand* other) override;
     int mergeKey() const { return m_mergeKey; }
@@ -26,6 +31,7 @@ private:
                         int mergeKey);
 
     int m_mergeKey;
+    bool m_shown = false; // the document shows `after` until the first redo
 };
 
 } // namespace devsurf::document

@@ -1,0 +1,145 @@
+#include "outcome_text.h"
+
+#include "solver/quality/shape_change.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+namespace devsurf::app {
+
+namespace {
+
+std::string faceList(const std::vector<model::FaceId>& faces) {
+    constexpr std::size_t kShown = 8;
+    std::string text;
+    for (std::size_t i = 0; i < std::min(faces.size(), kShown); ++i) {
+        text += (i == 0 ? "" : ", ") + std::to_string(faces[i]);
+    }
+    return faces.size() > kShown ? text + ", …" : text;
+}
+
+std::string places(int count) {
+    return std::to_string(count) + (count == 1 ? " place" : " places");
+}
+
+} // namespace
+
+std::string describeFoldOvers(const std::vector<std::pair<model::FaceId, int>>& foldOvers) {
+    if (foldOvers.empty()) {
+        return "No face folds over onto itself.";
+    }
+    std::string text = "Folded over onto itself:";
+    const std::size_t named = std::min(foldOvers.size(), solver::kFoldOversNamed);
+    for (std::size_t i = 0; i < named; ++i) {
+        text += (i == 0 ? " face " : ", face ") + std::to_string(foldOvers[i].first) + " (" +
+                places(foldOvers[i].second) + ")";
+    }
+    if (named < foldOvers.size()) {
+        int rest = 0;
+        for (std::size_t i = named; i < foldOvers.size(); ++i) {
+            rest += foldOvers[i].second;
+        }
+        const std::size_t more = foldOvers.size() - named;
+        text += " and " + std::to_string(more) + (more == 1 ? " more face (" : " more faces (") +
+                places(rest) + ")";
+    }
+    return text + ".";
+}
+
+std::string describeSelfOverlap(const std::vector<model::FaceId>& patches) {
+    if (patches.empty()) {
+        return "The development does not overlap itself.";
+    }
+    return std::string("The development overlaps itself at ") +
+           (patches.size() == 1 ? "patch " : "patches ") + faceList(patches) +
+           " and cannot be cut from one sheet.";
+}
+
+std::string describeHeld(const model::HeldVertex& held) {
+    std::ostringstream text;
+    text << "Vertex " << held.vertex;
+    if (held.pins.size() == 2) {
+        text << " lies on the straight line between the pinned vertices " << held.pins[0] << " and "
+             << held.pins[1];
+    } else {
+        text << " lies inside the triangle of the pinned vertices " << held.pins[0] << ", "
+             << held.pins[1] << " and " << held.pins[2];
+    }
+    text << ", which are as far apart as in the flat sheet, so bending cannot move it; only "
+            "stretching can.";
+    return text.str();
+}
+
+std::string describeOutcome(const solver::DragOutcome& outcome) {
+    std::vector<std::string> parts;
+    char text[160];
+    if (outcome.stopped) {
+        parts.push_back("stopped before a degenerate shape");
+    }
+    if (outcome.residual > solver::kDragConvergedResidual) {
+        std::snprintf(text, sizeof text, "did not converge (residual %.1e)", outcome.residual);
+        parts.push_back(text);
+    }
+    if (outcome.foldOverPlaces > 0) {
+        parts.push_back("folded over in " + places(outcome.foldOverPlaces));
+    }
+    if (!outcome.overlapping.empty()) {
+        std::snprintf(text, sizeof text, "left a development overlapping itself at %zu patch%s",
+                      outcome.overlapping.size(), outcome.overlapping.size() == 1 ? "" : "es");
+        parts.push_back(text);
+    }
+    if (outcome.collapsed()) {
+        std::snprintf(text, sizeof text,
+                      "collapsed strips (rulings at %.2f of their length, curve speeds at %.2f of "
+                      "their mean)",
+                      outcome.shortestRuling, outcome.slowestSpeed);
+        parts.push_back(text);
+    }
+    if (!outcome.measurable) {
+        parts.push_back("left a shape too degenerate to measure");
+    }
+    if (parts.empty()) {
+        return "ended without a problem";
+    }
+    std::string sentence;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        sentence += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
+    }
+    return sentence;
+}
+
+std::string describeFailure(const solver::JobFailure& failure) {
+    const std::string surface = "surface " + std::to_string(failure.surface + 1);
+    std::string text;
+    switch (failure.error) {
+    case solver::JobError::None:
+    case solver::JobError::Cancelled:
+        return "cancelled";
+    case solver::JobError::CannotSolve:
+        text = surface + " cannot be solved";
+        break;
+    case solver::JobError::TargetNotFinite:
+        text = failure.vertex != model::kInvalidId
+                   ? "the target of vertex " + std::to_string(failure.vertex) + " is not finite"
+                   : "the target of control point " + std::to_string(failure.index) + " of edge " +
+                         std::to_string(failure.edge) + " is not finite";
+        break;
+    case solver::JobError::SolverFailed:
+        text = surface + " could not be solved: " + solver::toString(failure.status);
+        break;
+    case solver::JobError::NotFinite:
+        text = surface + " could not be solved: the solver produced a value that is not finite";
+        break;
+    }
+    if (!failure.detail.empty()) {
+        std::string detail = failure.detail;
+        if (!detail.empty() && detail.back() == '.') {
+            detail.pop_back();
+        }
+        text += ": " + detail;
+    }
+    return text;
+}
+
+} // namespace devsurf::app

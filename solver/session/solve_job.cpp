@@ -1,0 +1,485 @@
+#include "solver/session/solve_job.h"
+
+#include "model/pattern/cutting_pattern.h"
+#include "solver/quality/quality_measures.h"
+#include "solver/quality/shape_change.h"
+#include "solver/quality/vertex_stars.h"
+#include "solver/session/solve_session.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <set>
+#include <stdexcept>
+
+namespace devsurf::solver {
+
+namespace {
+
+bool isFinite(const model::Vec3& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+bool allFinite(const model::CompositeSurface& surface) {
+    for (const auto& [id, position] : surface.vertices()) {
+        if (!isFinite(position)) {
+            return false;
+        }
+    }
+    for (const auto& [id, edge] : surface.edges()) {
+        for (const model::Vec3& point : edge.controlPoints) {
+            if (!isFinite(point)) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+// Same combinatorics, labels, spline spaces and pins: a session built from `a` can continue
+// on `b` (positions may differ).
+bool sameStructure(const model::CompositeSurface& a, const model::CompositeSurface& b) {
+    if (a.faces() != b.faces() || a.pinnedVertices() != b.pinnedVertices() ||
+        a.vertices().size() != b.vertices().size() || a.edges().size() != b.edges().size()) {
+        return false;
+    }
+    for (auto i = a.vertices().begin(), j = b.vertices().begin(); i != a.vertices().end();
+         ++i, ++j) {
+        if (i->first != j->first) {
+            return false;
+        }
+    }
+    for (auto i = a.edges().begin(), j = b.edges().begin(); i != a.edges().end(); ++i, ++j) {
+        const model::EdgeRecord& e = i->second;
+        const model::EdgeRecord& f = j->second;
+        if (i->first != j->first || e.from != f.from || e.to != f.to || e.label != f.label ||
+            e.condition != f.condition || e.controlPoints.size() != f.controlPoints.size() ||
+            (e.isSpline() && !(e.space == f.space))) {
+            return false;
+        }
+    }
+    return true;
+}
+
+std::set<model::VertexId> vertexSet(const std::vector<VertexHandle>& handles) {
+    std::set<model::VertexId> vertices;
+    for (const VertexHandle& handle : handles) {
+        vertices.insert(handle.vertex);
+    }
+    return vertices;
+}
+
+std::set<std::pair<model::EdgeId, int>> pointSet(const std::vector<ControlPointHandle>& handles) {
+    std::set<std::pair<model::EdgeId, int>> points;
+    for (const ControlPointHandle& handle : handles) {
+        points.insert({handle.edge, handle.index});
+    }
+    return points;
+}
+
+bool sameTargets(const DragMove& move, const std::vector<VertexHandle>& handles,
+                 const std::vector<ControlPointHandle>& points) {
+    auto samePoint = [](const model::Vec3& a, const model::Vec3& b) {
+        return a.x == b.x && a.y == b.y && a.z == b.z;
+    };
+    if (move.vertices.size() != handles.size() || move.controlPoints.size() != points.size()) {
+        return false;
+    }
+    for (std::size_t i = 0; i < handles.size(); ++i) {
+        if (move.vertices[i].vertex != handles[i].vertex ||
+            !samePoint(move.vertices[i].target, handles[i].target)) {
+            return false;
+        }
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (move.controlPoints[i].edge != points[i].edge ||
+            move.controlPoints[i].index != points[i].index ||
+            !samePoint(move.controlPoints[i].target, points[i].target)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool keepsLengths(const JobRequest& request) {
+    return (request.kind == JobKind::VertexDrag || request.kind == JobKind::Rotate) &&
+           request.lengths != DragLengths::Stretch;
+}
+
+SessionOptions optionsFor(const JobRequest& request, int surface) {
+    SessionOptions options;
+    if (keepsLengths(request)) {
+        options = keepLengthsSessionOptions();
+    } else if (request.kind == JobKind::CreaseDrag) {
+        options = creaseDragSessionOptions();
+    }
+    if (request.kind == JobKind::Solve) {
+        options.stopResidual = kSolveStopResidual;
+        if (const auto it = request.fixed.find(surface); it != request.fixed.end()) {
+            for (model::VertexId v : it->second) {
+                options.formulation.handles.push_back({v, true, {}});
+            }
+        }
+    }
+    return options;
+}
+
+// The largest normalised developability residual sampled over the surface's strips (0 for a
+// surface without strips).
+double worstDevelopability(const model::CompositeSurface& surface) {
+    const auto faces = developabilityByFace(surface);
+    return faces.empty() ? 0.0 : faces.front().second;
+}
+
+template <typename Map> typename Map::mapped_type entryOf(const Map& map, int key) {
+    const auto it = map.find(key);
+    return it == map.end() ? typename Map::mapped_type{} : it->second;
+}
+
+void measureHandleGaps(SurfaceAssessment& assessment, const model::CompositeSurface& surface,
+                       const std::vector<VertexHandle>& handles,
+                       const std::vector<ControlPointHandle>& points) {
+    for (const VertexHandle& handle : handles) {
+        if (!surface.hasVertex(handle.vertex) || surface.isPinned(handle.vertex)) {
+            continue;
+        }
+        assessment.handleGaps.push_back({handle.vertex, model::kInvalidId, -1,
+                                         (surface.position(handle.vertex) - handle.target).norm()});
+    }
+    for (const ControlPointHandle& point : points) {
+        if (!surface.hasEdge(point.edge)) {
+            continue;
+        }
+        const auto& controlPoints = surface.edge(point.edge).controlPoints;
+        if (point.index < 0 || static_cast<std::size_t>(point.index) >= controlPoints.size()) {
+            continue;
+        }
+        assessment.handleGaps.push_back(
+            {model::kInvalidId, point.edge, point.index,
+             (controlPoints[static_cast<std::size_t>(point.index)] - point.target).norm()});
+    }
+    for (const HandleGap& gap : assessment.handleGaps) {
+        assessment.largestHandleGap = std::max(assessment.largestHandleGap, gap.distance);
+    }
+}
+
+// The geometry of a settled result: fold-overs, overlaps, creases, vertex stars, worst faces.
+// `press` is the drag's surface at the press (null for Solve and Edit); `knownOverlaps` those a
+// judged drag found already.
+void measureSettled(SurfaceAssessment& assessment, const model::CompositeSurface& result,
+                    const model::CompositeSurface* press,
+                    const std::optional<std::vector<model::FaceId>>& knownOverlaps) {
+    assessment.measured = true;
+    try {
+        if (press) {
+            const ShapeChange change = measureShapeChange(*press, result);
+            assessment.foldOvers = change.foldOvers;
+            assessment.shortestRuling = change.shortestRuling;
+            assessment.slowestSpeed = change.slowestSpeed;
+        } else {
+            assessment.foldOvers = foldOvers(result);
+        }
+    } catch (const std::exception&) {
+        // Too degenerate to sample: the worst faces below say where.
+    }
+    if (knownOverlaps) {
+        assessment.overlapping = *knownOverlaps;
+    } else if (!assessment.summary.iterations.empty()) {
+        assessment.overlapping = model::selfOverlappingPatches(result);
+    }
+    try {
+        assessment.creases = measureCreaseQuality(result);
+    } catch (const std::exception&) {
+    }
+    try {
+        const auto defects = vertexAngleDefects(result);
+        assessment.vertexStars = static_cast<int>(defects.size());
+        for (const VertexAngleDefect& d : defects) {
+            assessment.largestVertexDefect = std::max(assessment.largestVertexDefect, d.defect);
+        }
+    } catch (const std::exception&) {
+    }
+    if (!assessment.summary.toleranceReached) {
+        auto faces = developabilityByFace(result);
+        if (faces.size() > kWorstFaces) {
+            faces.resize(kWorstFaces);
+        }
+        assessment.worstFaces = std::move(faces);
+    }
+}
+
+JobFailure failureOf(JobError error, int surface, Status status = Status::IterationLimit,
+                     std::string detail = {}) {
+    JobFailure failure;
+    failure.error = error;
+    failure.surface = surface;
+    failure.status = status;
+    failure.detail = std::move(detail);
+    return failure;
+}
+
+JobFailure targetFailure(int surface, model::VertexId vertex, model::EdgeId edge, int index) {
+    JobFailure failure = failureOf(JobError::TargetNotFinite, surface);
+    failure.vertex = vertex;
+    failure.edge = edge;
+    failure.index = index;
+    return failure;
+}
+
+} // namespace
+
+int defaultIterations(JobKind kind, bool settle, DragLengths lengths) {
+    switch (kind) {
+    case JobKind::Solve:
+        return kSolveIterations;
+    case JobKind::Edit:
+        return 1;
+    case JobKind::CreaseDrag:
+        return settle ? iterationsAfterDrag(false) : 1;
+    case JobKind::VertexDrag:
+    case JobKind::Rotate:
+        break;
+    }
+    return settle ? iterationsAfterDrag(lengths != DragLengths::Stretch) : 1;
+}
+
+double JobOutcome::largestResidual() const {
+    double residual = 0.0;
+    for (const SurfaceAssessment& a : assessments) {
+        if (a.solved) {
+            residual = std::max(residual, a.summary.finalMaxConstraintResidual);
+        }
+    }
+    return residual;
+}
+
+int JobOutcome::largestIterationCount() const {
+    int count = 0;
+    for (const SurfaceAssessment& a : assessments) {
+        count = std::max(count, a.summary.iterationsCompleted);
+    }
+    return count;
+}
+
+// A drag's state between its requests, per surface index: the sessions, the surfaces they
+// were built from (the press), their pulled handles and every move's targets (for the replay).
+struct SolveJob::Drag {
+    std::uint64_t id = 0;
+    std::vector<std::unique_ptr<SolveSession>> sessions;
+    std::vector<model::CompositeSurface> built;
+    std::vector<std::set<model::VertexId>> pulled;
+    std::vector<std::set<std::pair<model::EdgeId, int>>> pulledPoints;
+    std::vector<std::vector<DragMove>> moves;
+
+    explicit Drag(std::size_t count)
+        : sessions(count), built(count), pulled(count), pulledPoints(count), moves(count) {}
+};
+
+SolveJob::SolveJob() = default;
+SolveJob::~SolveJob() = default;
+
+void SolveJob::reset() {
+    m_drag.reset();
+}
+
+JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* cancel,
+                         const JobProgressFn& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    const bool drag = isDrag(request.kind);
+    const bool settle = !drag || request.settle;
+    const std::size_t count = request.surfaces.size();
+    JobOutcome outcome;
+    outcome.kind = request.kind;
+    outcome.drag = request.drag;
+    outcome.settled = settle;
+
+    if (!drag || request.drag == 0 || !m_drag || m_drag->id != request.drag ||
+        m_drag->sessions.size() != count) {
+        m_drag = std::make_unique<Drag>(count);
+        m_drag->id = drag ? request.drag : 0;
+    }
+    Drag& d = *m_drag;
+
+    auto finish = [&]() {
+        outcome.elapsedMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
+        if (!outcome.ok || !drag || request.settle) {
+            // A Solve, an edit, a release or a failure ends what a drag continues.
+            m_drag.reset();
+        }
+        return outcome;
+    };
+    auto fail = [&](JobFailure failure) {
+        outcome.ok = false;
+        outcome.failure = std::move(failure);
+        outcome.surfaces.clear();
+        outcome.assessments.clear();
+        return finish();
+    };
+
+    const int iterations = std::max(
+        0, request.iterations.value_or(defaultIterations(request.kind, settle, request.lengths)));
+    int solvedSurfaces = 0;
+    for (std::size_t s = 0; s < count; ++s) {
+        const int key = static_cast<int>(s);
+        if (request.kind == JobKind::Solve || !entryOf(request.pulled, key).empty() ||
+            !entryOf(request.pulledControlPoints, key).empty()) {
+            ++solvedSurfaces;
+        }
+    }
+    const int total = iterations * solvedSurfaces;
+    int done = 0;
+
+    for (std::size_t s = 0; s < count; ++s) {
+        const int key = static_cast<int>(s);
+        const model::CompositeSurface& snapshot = request.surfaces[s];
+        const std::vector<VertexHandle> handles = entryOf(request.pulled, key);
+        const std::vector<ControlPointHandle> points = entryOf(request.pulledControlPoints, key);
+        SurfaceAssessment assessment;
+        if (request.kind != JobKind::Solve && handles.empty() && points.empty()) {
+            // Nothing pulled on this surface: it stays as it is.
+            if (!allFinite(snapshot)) {
+                return fail(failureOf(JobError::NotFinite, key));
+            }
+            outcome.surfaces.push_back(snapshot);
+            outcome.assessments.push_back(std::move(assessment));
+            continue;
+        }
+        assessment.solved = true;
+        std::unique_ptr<SolveSession>& session = d.sessions[s];
+        const bool continues = drag && session && sameStructure(d.built[s], snapshot) &&
+                               d.pulled[s] == vertexSet(handles) &&
+                               d.pulledPoints[s] == pointSet(points);
+        if (continues) {
+            for (const VertexHandle& handle : handles) {
+                if (!isFinite(handle.target)) {
+                    return fail(targetFailure(key, handle.vertex, model::kInvalidId, -1));
+                }
+                session->setHandleTarget(handle.vertex, handle.target);
+            }
+            for (const ControlPointHandle& point : points) {
+                if (!session->setControlPointTarget(point.edge, point.index, point.target)) {
+                    return fail(targetFailure(key, model::kInvalidId, point.edge, point.index));
+                }
+            }
+        } else {
+            try {
+                session = std::make_unique<SolveSession>(snapshot, handles, points,
+                                                         optionsFor(request, key));
+            } catch (const std::exception& error) {
+                return fail(
+                    failureOf(JobError::CannotSolve, key, Status::InvalidProblem, error.what()));
+            }
+            d.built[s] = snapshot;
+            d.pulled[s] = vertexSet(handles);
+            d.pulledPoints[s] = pointSet(points);
+            d.moves[s].clear();
+        }
+        if (drag) {
+            // The release at the last move's position is no move of its own: the replay then
+            // runs the moves a drag of the same steps runs.
+            const bool same =
+                !d.moves[s].empty() && sameTargets(d.moves[s].back(), handles, points);
+            if (!same) {
+                d.moves[s].push_back({handles, points});
+            }
+            if (request.settle) {
+                session->settle();
+            }
+        }
+        bool replaying = false;
+        auto perIteration = [&](const IterationStats& stats) {
+            if (progress) {
+                ++done;
+                const Problem& problem = session->formulation().problem();
+                progress({key, done, std::max(done, total), replaying, problem.variableCount(),
+                          problem.rowCount(), &stats, replaying ? nullptr : &session->surface()});
+            }
+        };
+        Summary summary = session->step(iterations, cancel, perIteration);
+        if (request.kind == JobKind::Solve && summary.succeeded()) {
+            assessment.bestIteration = session->returnToBestIterate(&summary).iteration;
+        }
+        const bool vertexDragSettles =
+            drag && request.settle && keepsLengths(request) && points.empty();
+        if (vertexDragSettles) {
+            const std::vector<model::VertexId> dragged(d.pulled[s].begin(), d.pulled[s].end());
+            assessment.held = model::findVertexHeldByPins(d.built[s], dragged);
+        }
+        std::optional<std::vector<model::FaceId>> knownOverlaps;
+        if (vertexDragSettles && request.lengths == DragLengths::Automatic && summary.succeeded()) {
+            // Keeping lengths failed? Then the same drag from the press, stretching.
+            // (finalMaxConstraintResidual is the start's when no iteration completed.)
+            const DragOutcome kept =
+                judgeDrag(d.built[s], session->surface(), summary.finalMaxConstraintResidual,
+                          summary.status == Status::StoppedBeforeDegenerate);
+            if (kept.measurable) {
+                knownOverlaps = kept.overlapping;
+            }
+            if (kept.problems() > 0) {
+                replaying = true;
+                ReplayedDrag replay;
+                try {
+                    replay = replayStretching(d.built[s], d.moves[s], kIterationsAfterDrag, cancel,
+                                              perIteration);
+                } catch (const std::exception& error) {
+                    return fail(failureOf(JobError::CannotSolve, key, Status::InvalidProblem,
+                                          error.what()));
+                }
+                if (replay.settling.status == Status::Cancelled) {
+                    summary = replay.settling;
+                } else if (replay.settling.succeeded() && allFinite(replay.session->surface())) {
+                    LengthsReplay record;
+                    record.keepingLengths = kept;
+                    record.stretching =
+                        judgeDrag(d.built[s], replay.session->surface(),
+                                  replay.settling.finalMaxConstraintResidual, replay.stopped);
+                    record.taken = prefersStretched(kept, record.stretching);
+                    if (record.taken) {
+                        session = std::move(replay.session);
+                        summary = replay.settling;
+                        knownOverlaps.reset();
+                        if (record.stretching.measurable) {
+                            knownOverlaps = record.stretching.overlapping;
+                        }
+                    }
+                    assessment.replay = record;
+                }
+            }
+        }
+        if (summary.status == Status::Cancelled) {
+            return fail(failureOf(JobError::Cancelled, key));
+        }
+        if (!summary.succeeded()) {
+            return fail(failureOf(JobError::SolverFailed, key, summary.status, summary.message));
+        }
+        if (!allFinite(session->surface())) {
+            return fail(failureOf(JobError::NotFinite, key));
+        }
+        assessment.summary = summary;
+        const model::CompositeSurface* result = &session->surface();
+        if (request.kind == JobKind::Solve) {
+            // Solve never spoils a design: the fairness of a fresh solve may pull a nearly
+            // valid fold through a crumpled shape (docs/tuning.md, "Solve's guard").
+            const double before = worstDevelopability(snapshot);
+            const double after = worstDevelopability(session->surface());
+            if (after > std::max(kLessDevelopableFactor * before, kNegligibleDevelopability)) {
+                assessment.keptAsItWas = SurfaceAssessment::LessDevelopable{before, after};
+                result = &snapshot;
+                knownOverlaps.reset();
+            }
+        }
+        measureHandleGaps(assessment, *result, handles, points);
+        if (settle) {
+            measureSettled(assessment, *result, drag ? &d.built[s] : nullptr, knownOverlaps);
+        }
+        outcome.surfaces.push_back(*result);
+        outcome.assessments.push_back(std::move(assessment));
+    }
+    outcome.ok = true;
+    return finish();
+}
+
+} // namespace devsurf::solver

@@ -1,0 +1,185 @@
+#pragma once
+
+#include "model/composite_surface.h"
+#include "model/held_by_pins.h"
+#include "solver/core/summary.h"
+#include "solver/formulation/surface_formulation.h"
+#include "solver/quality/crease_quality.h"
+#include "solver/session/drag_lengths.h"
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace devsurf::solver {
+
+// What a solve is for. The job chooses the options, the iteration count and the guards from it.
+enum class JobKind {
+    Solve,      // Tools ▸ Solve, `devsurf-cli solve`: every surface, stops once converged
+    VertexDrag, // the Drag tool on vertices, `devsurf-cli drag --vertices`
+    CreaseDrag, // the Drag tool on a crease, `devsurf-cli drag --crease`
+    Rotate,     // the Rotate tool, `devsurf-cli drag --rotate` (a vertex drag along an arc)
+    Edit,       // an exact move or rotation kept developable (Tools ▸ Move or Rotate Vertices)
+};
+
+// Drags and rotations come as many requests (one per mouse move) and a settling one (the
+// release); Solve and Edit are one request each.
+constexpr bool isDrag(JobKind kind) {
+    return kind == JobKind::VertexDrag || kind == JobKind::CreaseDrag || kind == JobKind::Rotate;
+}
+
+struct JobRequest {
+    JobKind kind = JobKind::Solve;
+    // Requests of one drag share a non-zero id: the job continues that drag's sessions. A new
+    // id, or any other kind, starts afresh from `surfaces`.
+    std::uint64_t drag = 0;
+    // A drag's release: the iterations after it, the keep-lengths replay and the full
+    // assessment. Solve and Edit always settle.
+    bool settle = false;
+    std::vector<model::CompositeSurface> surfaces;   // every surface of the project (pins inside)
+    std::map<int, std::vector<VertexHandle>> pulled; // per surface index
+    std::map<int, std::vector<ControlPointHandle>> pulledControlPoints; // a dragged crease
+    // Solve: vertices held where they are without pinning them in the document.
+    std::map<int, std::vector<model::VertexId>> fixed;
+    // Iterations of this request; unset: defaultIterations(kind, settle, lengths).
+    std::optional<int> iterations;
+    // Vertex drags and rotations: whether the sheet bends or stretches (crease drags stretch).
+    DragLengths lengths = DragLengths::Automatic;
+};
+
+// The iterations a request runs when it does not say: Solve kSolveIterations (a limit, it stops
+// once converged), a drag's move 1, its release iterationsAfterDrag(), an edit 1.
+int defaultIterations(JobKind kind, bool settle, DragLengths lengths);
+
+// How far a handle ended from its target (model units).
+struct HandleGap {
+    model::VertexId vertex = model::kInvalidId; // a pulled vertex, or
+    model::EdgeId edge = model::kInvalidId;     // a pulled control point of this edge
+    int index = -1;
+    double distance = 0.0;
+};
+
+// An Automatic drag that failed keeping lengths and was replayed letting the sheet stretch.
+struct LengthsReplay {
+    DragOutcome keepingLengths;
+    DragOutcome stretching;
+    bool taken = false; // the stretched result is the outcome's
+};
+
+// Everything the front ends say about one surface of an outcome. Measured once, here.
+struct SurfaceAssessment {
+    bool solved = false; // false: left as it was (a drag's surfaces without handles)
+    Summary summary;
+    // Solve: ended on this earlier iterate of smallest residual (0: on the last).
+    int bestIteration = 0;
+    // Solve: the result sampled less developable than the start, which is returned instead.
+    struct LessDevelopable {
+        double before = 0.0; // largest normalised developability residual
+        double after = 0.0;
+    };
+    std::optional<LessDevelopable> keptAsItWas;
+    std::optional<LengthsReplay> replay;
+    // A vertex drag keeping lengths whose pins hold a dragged vertex where the sheet cannot bend.
+    std::optional<model::HeldVertex> held;
+    std::vector<HandleGap> handleGaps;
+    double largestHandleGap = 0.0;
+
+    // The rest is measured on settled outcomes only (Solve, Edit, a drag's release).
+    bool measured = false;
+    std::vector<std::pair<model::FaceId, int>> foldOvers; // patch, places
+    std::vector<model::FaceId> overlapping;               // the development overlaps itself
+    CreaseQuality creases; // sampled along every crease (residuals of those with a condition)
+    int vertexStars = 0;   // interior crease vertices
+    double largestVertexDefect = 0.0; // rad
+    // Drags: the shortest ruling and slowest curve speed relative to the press.
+    double shortestRuling = 1.0;
+    double slowestSpeed = 1.0;
+    // Up to kWorstFaces patches by sampled developability, worst first, when the tolerance was
+    // not reached.
+    std::vector<std::pair<model::FaceId, double>> worstFaces;
+};
+
+constexpr std::size_t kWorstFaces = 5;
+
+// A Solve whose result is this many times less developable than its start made it worse.
+inline constexpr double kLessDevelopableFactor = 10.0;
+// Below this normalised developability residual a surface counts as developable either way.
+inline constexpr double kNegligibleDevelopability = 1e-8;
+
+// Why a job failed: a code with its data. The front ends word it; `detail` is the solver's
+// own technical note, for logs and the command line.
+enum class JobError {
+    None,
+    Cancelled,
+    CannotSolve,     // the surface cannot be set up (invalid, an unknown handle)
+    TargetNotFinite, // a handle's target is not a finite point
+    SolverFailed,    // an iteration failed (Summary::status says how)
+    NotFinite,       // the solver produced a value that is not finite
+};
+
+struct JobFailure {
+    JobError error = JobError::None;
+    int surface = -1;
+    model::VertexId vertex = model::kInvalidId; // TargetNotFinite: the vertex, or
+    model::EdgeId edge = model::kInvalidId;     // the control point's edge and index
+    int index = -1;
+    Status status = Status::IterationLimit; // SolverFailed
+    std::string detail;
+};
+
+struct JobOutcome {
+    JobKind kind = JobKind::Solve;
+    std::uint64_t drag = 0;
+    bool settled = false; // answers a Solve, an Edit or a drag's release
+    bool ok = false;      // false: failure says why, surfaces is empty
+    JobFailure failure;
+    std::vector<model::CompositeSurface> surfaces; // every surface (finite values only)
+    std::vector<SurfaceAssessment> assessments;    // per surface
+    double elapsedMs = 0.0;
+
+    bool cancelled() const { return failure.error == JobError::Cancelled; }
+    // The largest final constraint residual and iteration count over the solved surfaces.
+    double largestResidual() const;
+    int largestIterationCount() const;
+};
+
+struct JobProgress {
+    int surface = 0;
+    int done = 0;  // iterations of this request so far, over all surfaces
+    int total = 0; // as planned (a replay adds more)
+    bool replaying = false;
+    int variables = 0; // of the surface's problem
+    int rows = 0;
+    const IterationStats* stats = nullptr;
+    const model::CompositeSurface* current = nullptr; // the surface after this iteration
+};
+using JobProgressFn = std::function<void(const JobProgress&)>;
+
+// The one place where a solve is decided: options, iteration counts, the keep-lengths replay,
+// the best iterate, the guards and the assessment. The desktop application's worker and the
+// command line run it, so the same requests give the same bits. A drag's moves continue the
+// sessions of its earlier requests. Not thread-safe; one thread at a time.
+class SolveJob {
+public:
+    SolveJob();
+    ~SolveJob();
+    SolveJob(const SolveJob&) = delete;
+    SolveJob& operator=(const SolveJob&) = delete;
+
+    // `cancel` is checked between iterations; `progress` is called after each (this thread).
+    JobOutcome run(const JobRequest& request, const std::atomic<bool>* cancel = nullptr,
+                   const JobProgressFn& progress = {});
+    // Forgets a drag's sessions.
+    void reset();
+
+private:
+    struct Drag;
+    std::unique_ptr<Drag> m_drag;
+};
+
+} // namespace devsurf::solver
