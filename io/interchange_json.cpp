@@ -1,4 +1,5 @@
 #include "interchange_json.h"
+#include "model/derived_geometry.h"
 
 #include "file_error.h"
 #include "model/creases.h"
@@ -103,8 +104,9 @@ void writeCurve(JsonWriter& w, const model::BSplineCurve& curve) {
 
 void writeSurface(JsonWriter& w, const model::CompositeSurface& surface, int samples) {
     using namespace model;
-    const std::vector<Strip> strips = stripsOf(surface);
-    const SampledMesh mesh = sampleSurface(surface, samples);
+    const auto derived = DerivedGeometry::of(surface, samples);
+    const std::vector<Strip>& strips = derived->strips();
+    const SampledMesh& mesh = derived->mesh();
     w.text += "{\n      ";
     w.key("name");
     w.string(surface.name());
@@ -232,7 +234,7 @@ void writeSurface(JsonWriter& w, const model::CompositeSurface& surface, int sam
     }
     w.text += "],\n      ";
 
-    const Development development = unfoldSampledMesh(mesh);
+    const Development& development = derived->development();
     w.key("mesh");
     w.text += "{\n        ";
     w.key("vertices");

@@ -1,4 +1,5 @@
 #include "held_by_pins.h"
+#include "derived_geometry.h"
 
 #include "development.h"
 #include "model_error.h"
@@ -203,13 +204,14 @@ std::optional<HeldVertex> findVertexHeldByPins(const CompositeSurface& surface,
     if (pinned.size() < 2 || moving.empty()) {
         return std::nullopt;
     }
-    SampledMesh mesh;
+    std::shared_ptr<const DerivedGeometry> derived;
     try {
-        mesh = sampleSurface(surface, kOutlineSamples);
+        derived = DerivedGeometry::of(surface, kOutlineSamples);
     } catch (const ModelError&) {
         return std::nullopt; // not a valid surface: nothing to say about it
     }
-    const Development development = unfoldSampledMesh(mesh);
+    const SampledMesh& mesh = derived->mesh();
+    const Development& development = derived->development();
     if (development.components != 1 || development.period) {
         return std::nullopt;
     }

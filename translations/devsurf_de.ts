@@ -5,6 +5,7 @@
     <name>ApplySurfaceCommand</name>
     <message>
         <location filename="../model/document/commands/apply_surface_command.cpp" line="20"/>
+        <location filename="../model/document/commands/apply_surface_command.cpp" line="43"/>
         <source>The new shape cannot be applied: %1</source>
         <translation>Die neue Form kann nicht übernommen werden: %1</translation>
     </message>
@@ -628,12 +629,12 @@
         <translation>ein Ziehen hat begonnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="384"/>
+        <location filename="../app/gui/drag_tool.cpp" line="382"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>Die festgehaltenen Ecken %1 und %2 halten Ecke %3 auf der Geraden zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="390"/>
+        <location filename="../app/gui/drag_tool.cpp" line="388"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>Die festgehaltenen Ecken %1, %2 und %3 halten Ecke %4 im Dreieck zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
@@ -668,7 +669,13 @@
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="504"/>
+        <location filename="../app/gui/drag_tool.cpp" line="502"/>
+        <source>The new shape cannot be applied: %1</source>
+        <translation>Die neue Form kann nicht übernommen werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="516"/>
+        <location filename="../app/gui/drag_tool.cpp" line="528"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -872,8 +879,8 @@
         <translation>Auswahl &amp;aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="186"/>
         <location filename="../app/gui/main_window_solver.cpp" line="98"/>
+        <location filename="../app/gui/main_window.cpp" line="186"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
@@ -1815,7 +1822,7 @@
 <context>
     <name>devsurf::app::PropertiesPanel</name>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="26"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="27"/>
         <source>degree %1, C%2, %3 intervals</source>
         <translation>Grad %1, C%2, %3 Intervalle</translation>
     </message>
@@ -1835,7 +1842,7 @@
         <translation>Nichts ausgewählt.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Klicken Sie auf eine Ecke, Kante oder ein Flächenstück, um es auszuwählen; Umschalt-Klick erweitert die Auswahl.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="36"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="37"/>
         <source>A crease between patches %1 (left) and %2 (right); condition: %3.&lt;br&gt;</source>
         <translation>Ein Falz zwischen den Flächenstücken %1 (links) und %2 (rechts); Bedingung: %3.&lt;br&gt;</translation>
     </message>
@@ -2151,37 +2158,37 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="85"/>
+        <location filename="../app/gui/solve_controller.cpp" line="89"/>
         <source>There is nothing to solve.</source>
         <translation>Es gibt nichts zu lösen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="108"/>
+        <location filename="../app/gui/solve_controller.cpp" line="113"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: Es gibt nichts zu lösen; nichts wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="145"/>
+        <location filename="../app/gui/solve_controller.cpp" line="149"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 abgebrochen; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="146"/>
+        <location filename="../app/gui/solve_controller.cpp" line="150"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 abgebrochen: %2; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="148"/>
+        <location filename="../app/gui/solve_controller.cpp" line="152"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>Lösen abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="149"/>
+        <location filename="../app/gui/solve_controller.cpp" line="153"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>Lösen abgebrochen: %1; der Entwurf ist unverändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="155"/>
+        <location filename="../app/gui/solve_controller.cpp" line="159"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Form prüfen: %n Flächenstück faltet sich auf sich selbst zurück (%1); rückgängig machen oder anders fixieren oder bewegen.</numerusform>
@@ -2189,7 +2196,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="162"/>
+        <location filename="../app/gui/solve_controller.cpp" line="166"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Form prüfen: die Abwicklung überlappt sich selbst an %n Flächenstück (%1); rückgängig machen oder anders fixieren oder bewegen.</numerusform>
@@ -2197,27 +2204,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="171"/>
+        <location filename="../app/gui/solve_controller.cpp" line="175"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 fehlgeschlagen: %2 Nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="191"/>
+        <location filename="../app/gui/solve_controller.cpp" line="195"/>
         <source>the design changed</source>
         <translation>der Entwurf hat sich geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="198"/>
+        <location filename="../app/gui/solve_controller.cpp" line="202"/>
         <source>it stopped before a degenerate shape</source>
         <translation>es hielt vor einer entarteten Form an</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="201"/>
+        <location filename="../app/gui/solve_controller.cpp" line="205"/>
         <source>no convergence, residual %1</source>
         <translation>keine Konvergenz, Residuum %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="204"/>
+        <location filename="../app/gui/solve_controller.cpp" line="208"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>an %n Stelle zurückgefaltet</numerusform>
@@ -2225,77 +2232,107 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="207"/>
+        <location filename="../app/gui/solve_controller.cpp" line="211"/>
         <source>a development overlapping itself</source>
         <translation>eine sich selbst überlappende Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="210"/>
+        <location filename="../app/gui/solve_controller.cpp" line="214"/>
         <source>collapsed strips</source>
         <translation>zusammengefallene Streifen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="213"/>
+        <location filename="../app/gui/solve_controller.cpp" line="217"/>
         <source>a shape too degenerate to measure</source>
         <translation>eine zum Messen zu entartete Form</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="243"/>
+        <location filename="../app/gui/solve_controller.cpp" line="241"/>
+        <source>Surface %1</source>
+        <translation>Fläche %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="246"/>
+        <source>The solve was cancelled.</source>
+        <translation>Das Lösen wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="248"/>
+        <source>%1 cannot be solved.</source>
+        <translation>%1 kann nicht gelöst werden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="252"/>
+        <source>The drag target of vertex %1 is not a finite point.</source>
+        <translation>Das Ziel des gezogenen Eckpunkts %1 ist kein endlicher Punkt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="253"/>
+        <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
+        <translation>Das Ziel des gezogenen Kontrollpunkts %1 der Kante %2 ist kein endlicher Punkt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="259"/>
+        <source>%1 could not be solved: the linear system could not be factorised.</source>
+        <translation>%1 konnte nicht gelöst werden: das lineare Gleichungssystem ließ sich nicht faktorisieren.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="261"/>
+        <source>%1 could not be solved: an iteration gave values that are not finite.</source>
+        <translation>%1 konnte nicht gelöst werden: eine Iteration ergab Werte, die nicht endlich sind.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="265"/>
+        <source>%1 could not be solved: the solver produced a value that is not finite.</source>
+        <translation>%1 konnte nicht gelöst werden: der Löser lieferte einen Wert, der nicht endlich ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="271"/>
+        <source>(Solver: %1)</source>
+        <translation>(Löser: %1)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="285"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="247"/>
+        <location filename="../app/gui/solve_controller.cpp" line="289"/>
         <source>Failed: %1</source>
         <translation>Fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="259"/>
+        <location filename="../app/gui/solve_controller.cpp" line="303"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="263"/>
+        <location filename="../app/gui/solve_controller.cpp" line="307"/>
         <source>tolerance reached</source>
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="263"/>
+        <location filename="../app/gui/solve_controller.cpp" line="307"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="266"/>
-        <source>cancelled</source>
-        <translation>abgebrochen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/solve_controller.cpp" line="269"/>
-        <source>stopped at the last valid state</source>
-        <translation>beim letzten gültigen Zustand angehalten</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/solve_controller.cpp" line="272"/>
+        <location filename="../app/gui/solve_controller.cpp" line="314"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="281"/>
-        <source> (%1)</source>
-        <translation> (%1)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/solve_controller.cpp" line="285"/>
+        <location filename="../app/gui/solve_controller.cpp" line="322"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="293"/>
+        <location filename="../app/gui/solve_controller.cpp" line="328"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; das Beibehalten der Längen schlug fehl (%1), daher wurde das Ziehen mit Dehnen des Blatts wiederholt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="314"/>
+        <location filename="../app/gui/solve_controller.cpp" line="344"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n Flächenstück faltet sich auf sich selbst zurück, wo die Fläche sich selbst überlappt: %1</numerusform>
@@ -2303,7 +2340,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="333"/>
+        <location filename="../app/gui/solve_controller.cpp" line="359"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; die Abwicklung überlappt sich selbst an %n Flächenstück (%1) und lässt sich nicht aus einem Bogen schneiden</numerusform>
@@ -2311,32 +2348,32 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="339"/>
+        <location filename="../app/gui/solve_controller.cpp" line="365"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="344"/>
+        <location filename="../app/gui/solve_controller.cpp" line="370"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="352"/>
+        <location filename="../app/gui/solve_controller.cpp" line="374"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="361"/>
+        <location filename="../app/gui/solve_controller.cpp" line="383"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="409"/>
+        <location filename="../app/gui/solve_controller.cpp" line="431"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>Lösen hat den Entwurf unverändert gelassen: das Lösen machte ihn weniger abwickelbar (größtes Abwickelbarkeitsresiduum %1 → %2).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="434"/>
+        <location filename="../app/gui/solve_controller.cpp" line="454"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n Fläche unverändert gelassen: das Lösen machte sie weniger abwickelbar.</numerusform>
@@ -2344,12 +2381,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="445"/>
+        <location filename="../app/gui/solve_controller.cpp" line="465"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 verworfen: Der Entwurf hat sich während des Lösens geändert; nichts wurde bewegt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="462"/>
+        <location filename="../app/gui/solve_controller.cpp" line="482"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, abwickelbar gehalten: %n Iteration, größtes Bedingungsresiduum %2.</numerusform>
@@ -2357,28 +2394,38 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="172"/>
-        <location filename="../app/gui/solve_controller.cpp" line="396"/>
+        <location filename="../app/gui/solve_controller.cpp" line="176"/>
+        <location filename="../app/gui/solve_controller.cpp" line="424"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="220"/>
+        <location filename="../app/gui/solve_controller.cpp" line="224"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt auf der Geraden zwischen den festgehaltenen Ecken %2 und %3, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="227"/>
+        <location filename="../app/gui/solve_controller.cpp" line="231"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt im Dreieck der festgehaltenen Ecken %2, %3 und %4, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="379"/>
+        <location filename="../app/gui/solve_controller.cpp" line="310"/>
+        <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
+        <translation>beim letzten gültigen Zustand angehalten, bevor eine Erzeugende, eine Kurve oder ein Flächenstück kollabierte</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="318"/>
+        <source> (ended on iteration %1, the one with the smallest residual)</source>
+        <translation> (endete bei Iteration %1, der mit dem kleinsten Residuum)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="402"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="430"/>
+        <location filename="../app/gui/solve_controller.cpp" line="450"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>

@@ -5,6 +5,7 @@
     <name>ApplySurfaceCommand</name>
     <message>
         <location filename="../model/document/commands/apply_surface_command.cpp" line="20"/>
+        <location filename="../model/document/commands/apply_surface_command.cpp" line="43"/>
         <source>The new shape cannot be applied: %1</source>
         <translation>新しい形状を適用できません: %1</translation>
     </message>
@@ -614,12 +615,12 @@
         <translation>ドラッグが始まりました</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="384"/>
+        <location filename="../app/gui/drag_tool.cpp" line="382"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1 と %2 が頂点 %3 をその間の直線上に押さえています (2 点の距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="390"/>
+        <location filename="../app/gui/drag_tool.cpp" line="388"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1、%2、%3 が頂点 %4 をその三角形の中に押さえています (距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
@@ -654,7 +655,13 @@
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="504"/>
+        <location filename="../app/gui/drag_tool.cpp" line="502"/>
+        <source>The new shape cannot be applied: %1</source>
+        <translation>新しい形状を適用できません: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="516"/>
+        <location filename="../app/gui/drag_tool.cpp" line="528"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -858,8 +865,8 @@
         <translation>選択を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="186"/>
         <location filename="../app/gui/main_window_solver.cpp" line="98"/>
+        <location filename="../app/gui/main_window.cpp" line="186"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
@@ -1793,12 +1800,12 @@
 <context>
     <name>devsurf::app::PropertiesPanel</name>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="26"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="27"/>
         <source>degree %1, C%2, %3 intervals</source>
         <translation>次数 %1、C%2、区間数 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="36"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="37"/>
         <source>A crease between patches %1 (left) and %2 (right); condition: %3.&lt;br&gt;</source>
         <translation>パッチ %1 (左) と %2 (右) の間の折り線。条件: %3。&lt;br&gt;</translation>
     </message>
@@ -2120,227 +2127,267 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="85"/>
+        <location filename="../app/gui/solve_controller.cpp" line="89"/>
         <source>There is nothing to solve.</source>
         <translation>ソルブする対象がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="108"/>
+        <location filename="../app/gui/solve_controller.cpp" line="113"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: ソルブするものがありません。何も変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="145"/>
+        <location filename="../app/gui/solve_controller.cpp" line="149"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 を取り消しました。何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="146"/>
+        <location filename="../app/gui/solve_controller.cpp" line="150"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 を取り消しました: %2。何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="148"/>
+        <location filename="../app/gui/solve_controller.cpp" line="152"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>ソルブを中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="149"/>
+        <location filename="../app/gui/solve_controller.cpp" line="153"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>ソルブを中止しました: %1。デザインは変更されていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="155"/>
+        <location filename="../app/gui/solve_controller.cpp" line="159"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>形状を確認してください: %n 個のパッチが自身の上に折り返されています (%1)。元に戻すか、固定や移動の仕方を変えてください。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="162"/>
+        <location filename="../app/gui/solve_controller.cpp" line="166"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>形状を確認してください: 展開図が %n 個のパッチで自身と重なっています (%1)。元に戻すか、固定や移動の仕方を変えてください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="171"/>
+        <location filename="../app/gui/solve_controller.cpp" line="175"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 に失敗しました: %2 何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="191"/>
+        <location filename="../app/gui/solve_controller.cpp" line="195"/>
         <source>the design changed</source>
         <translation>デザインが変更されました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="198"/>
+        <location filename="../app/gui/solve_controller.cpp" line="202"/>
         <source>it stopped before a degenerate shape</source>
         <translation>退化した形の手前で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="201"/>
+        <location filename="../app/gui/solve_controller.cpp" line="205"/>
         <source>no convergence, residual %1</source>
         <translation>収束せず、残差 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="204"/>
+        <location filename="../app/gui/solve_controller.cpp" line="208"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>%n 箇所で折り返し</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="207"/>
+        <location filename="../app/gui/solve_controller.cpp" line="211"/>
         <source>a development overlapping itself</source>
         <translation>展開図が自身と重なる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="210"/>
+        <location filename="../app/gui/solve_controller.cpp" line="214"/>
         <source>collapsed strips</source>
         <translation>帯がつぶれる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="213"/>
+        <location filename="../app/gui/solve_controller.cpp" line="217"/>
         <source>a shape too degenerate to measure</source>
         <translation>測定できないほど退化した形</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="243"/>
+        <location filename="../app/gui/solve_controller.cpp" line="241"/>
+        <source>Surface %1</source>
+        <translation>曲面 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="246"/>
+        <source>The solve was cancelled.</source>
+        <translation>ソルブを中止しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="248"/>
+        <source>%1 cannot be solved.</source>
+        <translation>%1 は解けません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="252"/>
+        <source>The drag target of vertex %1 is not a finite point.</source>
+        <translation>頂点 %1 のドラッグ先が有限の点ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="253"/>
+        <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
+        <translation>辺 %2 の制御点 %1 のドラッグ先が有限の点ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="259"/>
+        <source>%1 could not be solved: the linear system could not be factorised.</source>
+        <translation>%1 を解けませんでした: 連立一次方程式を分解できませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="261"/>
+        <source>%1 could not be solved: an iteration gave values that are not finite.</source>
+        <translation>%1 を解けませんでした: 反復で有限でない値が生じました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="265"/>
+        <source>%1 could not be solved: the solver produced a value that is not finite.</source>
+        <translation>%1 を解けませんでした: ソルバーが有限でない値を出しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="271"/>
+        <source>(Solver: %1)</source>
+        <translation>(ソルバー: %1)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="285"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="247"/>
+        <location filename="../app/gui/solve_controller.cpp" line="289"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="259"/>
+        <location filename="../app/gui/solve_controller.cpp" line="303"/>
         <source>converged</source>
         <translation>収束</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="263"/>
+        <location filename="../app/gui/solve_controller.cpp" line="307"/>
         <source>tolerance reached</source>
         <translation>許容値に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="263"/>
+        <location filename="../app/gui/solve_controller.cpp" line="307"/>
         <source>iteration limit reached</source>
         <translation>反復回数の上限に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="266"/>
-        <source>cancelled</source>
-        <translation>中止</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/solve_controller.cpp" line="269"/>
-        <source>stopped at the last valid state</source>
-        <translation>最後の有効な状態で停止</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/solve_controller.cpp" line="272"/>
+        <location filename="../app/gui/solve_controller.cpp" line="314"/>
         <source>failed</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="281"/>
-        <source> (%1)</source>
-        <translation> (%1)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/solve_controller.cpp" line="285"/>
+        <location filename="../app/gui/solve_controller.cpp" line="322"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>。ソルブで可展性が悪化したため元のままにしました (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="293"/>
+        <location filename="../app/gui/solve_controller.cpp" line="328"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; 長さを保てなかったため (%1)、シートの伸びを許してドラッグをやり直しました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="314"/>
+        <location filename="../app/gui/solve_controller.cpp" line="344"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n 個のパッチが自身の上に折り返され、曲面が自己重複しています: %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="333"/>
+        <location filename="../app/gui/solve_controller.cpp" line="359"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; 展開図が %n 個のパッチで自身と重なっており (%1)、1 枚のシートから切り出せません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="339"/>
+        <location filename="../app/gui/solve_controller.cpp" line="365"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="344"/>
+        <location filename="../app/gui/solve_controller.cpp" line="370"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="352"/>
+        <location filename="../app/gui/solve_controller.cpp" line="374"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="361"/>
+        <location filename="../app/gui/solve_controller.cpp" line="383"/>
         <source>Solve</source>
         <translation>ソルブ</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="409"/>
+        <location filename="../app/gui/solve_controller.cpp" line="431"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>ソルブはデザインを元のままにしました。ソルブで可展性が悪化したためです (最大の可展性残差 %1 → %2)。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="434"/>
+        <location filename="../app/gui/solve_controller.cpp" line="454"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n 個のサーフェスを元のままにしました。ソルブで可展性が悪化したためです。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="445"/>
+        <location filename="../app/gui/solve_controller.cpp" line="465"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 を破棄しました: ソルブ中にデザインが変更されました。何も動いていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="462"/>
+        <location filename="../app/gui/solve_controller.cpp" line="482"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1、可展を維持: %n 回反復、最大の制約残差 %2。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="172"/>
-        <location filename="../app/gui/solve_controller.cpp" line="396"/>
+        <location filename="../app/gui/solve_controller.cpp" line="176"/>
+        <location filename="../app/gui/solve_controller.cpp" line="424"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>ソルブに失敗しました: %1 デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="220"/>
+        <location filename="../app/gui/solve_controller.cpp" line="224"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2 と %3 を結ぶ直線上にあり、この 2 点の距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="227"/>
+        <location filename="../app/gui/solve_controller.cpp" line="231"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2、%3、%4 の三角形の内側にあり、これらの距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="379"/>
+        <location filename="../app/gui/solve_controller.cpp" line="310"/>
+        <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
+        <translation>母線、曲線またはパッチがつぶれる前の最後の有効な状態で停止</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="318"/>
+        <source> (ended on iteration %1, the one with the smallest residual)</source>
+        <translation> (残差が最小の反復 %1 で終了)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="402"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>ソルブ中にデザインが変更されたため、結果を破棄しました。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="430"/>
+        <location filename="../app/gui/solve_controller.cpp" line="450"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>ソルブ完了: %n 回反復、制約残差の最大値 %1。</numerusform>

@@ -1,4 +1,5 @@
 #include "scene_geometry.h"
+#include "model/derived_geometry.h"
 
 #include "model/pattern/cutting_pattern.h"
 #include "model/pattern/pattern_layout.h"
@@ -73,7 +74,8 @@ Vec3 toScene(const Vec2& p) {
 } // namespace
 
 SurfaceScene buildSpatialScene(const model::CompositeSurface& surface, int surfaceIndex) {
-    const model::SampledMesh mesh = model::sampleSurface(surface, kSamplesPerInterval);
+    const auto derived = model::DerivedGeometry::of(surface, kSamplesPerInterval);
+    const model::SampledMesh& mesh = derived->mesh();
     SurfaceScene scene;
     scene.surface = surfaceIndex;
 

@@ -1,4 +1,5 @@
 #include "vertex_commands.h"
+#include "model/derived_geometry.h"
 
 #include "io/project_file.h"
 #include "model/creases.h"
@@ -43,8 +44,7 @@ const char* curveKind(const model::CompositeSurface& surface, model::EdgeId id) 
 // Every crease of the surface by edge id (mountain/valley and fold angle from the sampled mesh).
 std::map<model::EdgeId, model::Crease> creasesById(const model::CompositeSurface& surface) {
     std::map<model::EdgeId, model::Crease> creases;
-    for (const model::Crease& crease :
-         model::creasesOf(surface, model::stripsOf(surface), model::sampleSurface(surface, 8))) {
+    for (const model::Crease& crease : model::DerivedGeometry::of(surface, 8)->creases()) {
         creases.emplace(crease.edge, crease);
     }
     return creases;

@@ -1,4 +1,5 @@
 #include "pattern_pieces.h"
+#include "model/derived_geometry.h"
 
 #include "model/bspline_curve.h"
 #include "model/creases.h"
@@ -229,7 +230,8 @@ std::vector<PieceBuild> developSurface(const CompositeSurface& surface, int surf
     const int samples = options.samplesPerInterval > 0
                             ? std::min(options.samplesPerInterval, 1000)
                             : samplesForTolerance(surface, options.tolerance);
-    const SampledMesh mesh = sampleSurface(surface, samples);
+    const auto derived = DerivedGeometry::of(surface, samples);
+    const SampledMesh& mesh = derived->mesh();
     std::set<EdgeId> cutEdges = chooseCutEdges(surface);
     CutMesh cut = splitAlong(mesh, cutSegments(surface, mesh, cutEdges));
     Development development = unfoldSampledMesh(cut.mesh);

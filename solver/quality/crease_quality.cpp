@@ -1,4 +1,5 @@
 #include "crease_quality.h"
+#include "model/derived_geometry.h"
 
 #include "model/bspline_curve.h"
 #include "model/creases.h"
@@ -93,9 +94,9 @@ bool between2Strips(const model::Crease& crease, const model::EdgeRecord& record
 
 CreaseQuality measureCreaseQuality(const model::CompositeSurface& surface, int samplesPerInterval) {
     CreaseQuality quality;
-    const std::vector<model::Strip> strips = model::stripsOf(surface);
-    const std::vector<model::Crease> creases =
-        model::creasesOf(surface, strips, model::sampleSurface(surface, 8));
+    const auto derived = model::DerivedGeometry::of(surface, 8);
+    const std::vector<model::Strip>& strips = derived->strips();
+    const std::vector<model::Crease>& creases = derived->creases();
     double foldSum = 0.0;
     double residualSum = 0.0;
     for (const model::Crease& crease : creases) {

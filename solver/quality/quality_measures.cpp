@@ -1,4 +1,5 @@
 #include "solver/quality/quality_measures.h"
+#include "model/derived_geometry.h"
 
 #include "model/sampled_mesh.h"
 #include "model/strip.h"
@@ -54,8 +55,9 @@ double normalizedDevelopabilityResidual(const Vec3& aMinusB, const Vec3& aPrime,
 QualityMeasures measureQuality(const model::CompositeSurface& surface,
                                const QualityOptions& options) {
     QualityMeasures q;
-    const model::SampledMesh mesh =
-        model::sampleSurface(surface, std::max(1, options.meshSamplesPerInterval));
+    const auto derived =
+        model::DerivedGeometry::of(surface, std::max(1, options.meshSamplesPerInterval));
+    const model::SampledMesh& mesh = derived->mesh();
 
     double flatnessSum = 0.0;
     std::map<std::pair<int, int>, int> edgeFaces;

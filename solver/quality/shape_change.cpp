@@ -1,4 +1,5 @@
 #include "solver/quality/shape_change.h"
+#include "model/derived_geometry.h"
 
 #include "model/bspline_curve.h"
 #include "model/model_error.h"
@@ -142,7 +143,8 @@ ShapeChange measureShapeChange(const model::CompositeSurface& start,
         change.largestMove = std::max(change.largestMove, distance(position, result.position(id)));
     }
 
-    const model::SampledMesh before = model::sampleSurface(start, samples);
+    const auto derivedBefore = model::DerivedGeometry::of(start, samples);
+    const model::SampledMesh& before = derivedBefore->mesh();
     double sum = 0.0;
     int count = 0;
     for (const auto& [edge, faces] : edgeFaces(before)) {
@@ -156,7 +158,8 @@ ShapeChange measureShapeChange(const model::CompositeSurface& start,
     }
     change.startNormalAngleMean = count > 0 ? sum / count : 0.0;
 
-    const model::SampledMesh after = model::sampleSurface(result, samples);
+    const auto derivedAfter = model::DerivedGeometry::of(result, samples);
+    const model::SampledMesh& after = derivedAfter->mesh();
     const auto afterEdges = edgeFaces(after);
     sum = 0.0;
     count = 0;
@@ -184,13 +187,13 @@ ShapeChange measureShapeChange(const model::CompositeSurface& start,
 
 std::vector<std::pair<model::FaceId, int>> foldOvers(const model::CompositeSurface& surface,
                                                      int samplesPerInterval) {
-    model::SampledMesh mesh;
+    std::shared_ptr<const model::DerivedGeometry> derived;
     try {
-        mesh = model::sampleSurface(surface, std::max(1, samplesPerInterval));
+        derived = model::DerivedGeometry::of(surface, std::max(1, samplesPerInterval));
     } catch (const std::exception&) {
         return {}; // an invalid surface has no patches to measure
     }
-    return sortedFoldOvers(mesh, edgeFaces(mesh));
+    return sortedFoldOvers(derived->mesh(), edgeFaces(derived->mesh()));
 }
 
 int ShapeChange::foldOverPlaces() const {

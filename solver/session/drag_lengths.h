@@ -10,34 +10,15 @@
 
 namespace devsurf::solver {
 
-// How a vertex drag treats the lengths of the strips' control nets: the desktop application's
-// Tools ▸ Lengths While Dragging, `devsurf-cli drag [--keep-lengths | --stretch]`.
-//
-// Automatic keeps lengths (the sheet bends) and, where the drag then fails (judgeDrag: it does
-// not converge, folds over, collapses strips or its development overlaps itself), replays the same
-// drag from its start letting the sheet stretch, and takes whichever of the two ends with fewer
-// problems (keeping lengths on a tie). Measured with devsurf-cli drag (20 moves, then 20
-// iterations keeping lengths or 10 stretching):
-// - Keeping lengths folds curved creases where stretching pulls them straight or collapses
-//   rulings: fig6 with a free corner lifted 75 mm folds 11° … 13° along its bowed crease
-//   (1e-11; stretching: 10°, rulings at 0.07 of their length, a face folded over), and 66°
-//   with the middle of its free edge lifted (stretching 38° along a straight crease); fig8 with
-//   its bottom corners pinned and its middle lifted 85 mm folds 46° along curved creases
-//   (2e-8; stretching 17.5° along straight ones). Without conditions, the annulus with its
-//   outer rim pinned and an inner vertex lifted 100 mm ends at 5e-15 with rulings at 0.98 of
-//   their length (stretching: 2.4, angle defects of 3.4 rad, rulings at 0.06).
-// - Where the motion needs the sheet to stretch, keeping lengths fails and the replay
-//   stretching is taken: fig8 with all four corners pinned (their distances are those of the
-//   flat sheet) and its middle lifted 30 or 85 mm ends at 9e-4 and 1e-4 with face 7 folded
-//   over and an overlapping development keeping lengths, at 1e-14 folded 14° … 41° along
-//   straight creases stretching; the same turned by 30° afterwards ends with three problems
-//   keeping lengths, with an overlapping development only stretching.
+// How a vertex drag treats the lengths of the strips' control nets (Tools ▸ Lengths While
+// Dragging, `devsurf-cli drag [--keep-lengths | --stretch]`): Keep bends the sheet, Stretch lets
+// it stretch, Automatic keeps lengths and, where that fails (judgeDrag), replays the drag from
+// its press stretching and takes the result with fewer problems (keeping lengths on a tie).
+// Measurements: docs/tuning.md, "Lengths while dragging".
 enum class DragLengths { Automatic, Keep, Stretch };
 
 // The largest constraint residual at the end of a drag above which it counts as not converged
-// (judgeDrag). A drag keeping lengths settles slowly where the net had to give a little (the
-// lifted Fig. 8: 2e-8 after 20 iterations, 2e-5 when lifted in 5 moves); 1e-4 and more means
-// it did not find a developable shape near the mouse.
+// (judgeDrag): 1e-4 and more means it found no developable shape near the mouse.
 inline constexpr double kDragConvergedResidual = 1e-4;
 
 // A drag's result whose rulings shrink below this fraction of their length at the press, or
@@ -78,9 +59,8 @@ struct DragMove {
     std::vector<ControlPointHandle> controlPoints;
 };
 
-// At most this many of a drag's moves are replayed (evenly chosen, the last always): a drag
-// in the desktop application solves one move per mouse event it keeps up with, hundreds in a
-// long drag.
+// At most this many of a drag's moves are replayed (evenly chosen, the last always): a long drag
+// in the desktop application solves hundreds.
 inline constexpr std::size_t kReplayedMoves = 40;
 
 // The indices of the moves replayed out of `count`, in order.

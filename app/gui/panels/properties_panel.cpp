@@ -1,4 +1,5 @@
 #include "properties_panel.h"
+#include "model/derived_geometry.h"
 
 #include "../face_type_text.h"
 #include "model/creases.h"
@@ -35,8 +36,7 @@ QString creaseText(const model::CompositeSurface& surface, model::EdgeId edge) {
     const model::EdgeRecord& record = surface.edge(edge);
     QString text = PropertiesPanel::tr("A crease between patches %1 (left) and %2 (right); "
                                        "condition: %3.<br>");
-    for (const model::Crease& crease :
-         model::creasesOf(surface, model::stripsOf(surface), model::sampleSurface(surface, 8))) {
+    for (const model::Crease& crease : model::DerivedGeometry::of(surface, 8)->creases()) {
         if (crease.edge != edge) {
             continue;
         }
