@@ -228,4 +228,21 @@ std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surf
     return problems;
 }
 
+bool allCoordinatesFinite(const CompositeSurface& surface) {
+    auto finite = [](const Vec3& p) {
+        return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+    };
+    for (const auto& [id, position] : surface.vertices()) {
+        if (!finite(position)) {
+            return false;
+        }
+    }
+    for (const auto& [id, edge] : surface.edges()) {
+        if (!std::all_of(edge.controlPoints.begin(), edge.controlPoints.end(), finite)) {
+            return false;
+        }
+    }
+    return true;
+}
+
 } // namespace devsurf::model

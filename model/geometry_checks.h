@@ -18,4 +18,7 @@ inline constexpr double kMaxCoordinate = 1.0e6;
 // validate() reports them already. SolveSession checks every iterate with it.
 std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surface);
 
+// Every vertex and control point has finite coordinates.
+bool allCoordinatesFinite(const CompositeSurface& surface);
+
 } // namespace devsurf::model

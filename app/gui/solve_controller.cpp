@@ -181,10 +181,13 @@ void SolveController::cancel(const QString& reason) {
         return;
     }
     m_worker->cancel();
-    stop(cancelledSentence(reason));
+    stop(m_cancelledByChange ? Ending::CancelledByChange : Ending::Cancelled,
+         cancelledSentence(reason));
+    m_cancelledByChange = false;
 }
 
-void SolveController::stop(const QString& sentence) {
+void SolveController::stop(Ending ending, const QString& sentence) {
+    m_ending = ending;
     m_solving = false;
     emit busyChanged(false);
     emit finished(sentence);
@@ -192,6 +195,7 @@ void SolveController::stop(const QString& sentence) {
 
 void SolveController::onDocumentChanged() {
     if (m_solving && !m_applying && m_workspace->document()->revision() != m_revision) {
+        m_cancelledByChange = true;
         cancel(tr("the design changed"));
     }
 }
@@ -277,6 +281,7 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result, const Q
     const solver::JobOutcome& outcome = result.outcome;
     SolveReport report;
     report.title = title;
+    report.outcome = outcome;
     report.elapsedMs = outcome.elapsedMs;
     for (const solver::SurfaceAssessment& a : outcome.assessments) {
         report.summaries.push_back(a.summary);
@@ -385,11 +390,11 @@ void SolveController::onResult(const solver::SolveResult& result) {
     emit reportReady(report);
     const solver::JobOutcome& outcome = result.outcome;
     if (outcome.cancelled()) {
-        stop(cancelledSentence(QString()));
+        stop(Ending::Cancelled, cancelledSentence(QString()));
         return;
     }
     if (!outcome.ok) {
-        stop(failedSentence(failureText(outcome.failure)));
+        stop(Ending::Failed, failedSentence(failureText(outcome.failure)));
         return;
     }
     if (m_editSurface >= 0) {
@@ -399,7 +404,7 @@ void SolveController::onResult(const solver::SolveResult& result) {
     document::Document* doc = m_workspace->document();
     if (doc->revision() != result.revision ||
         outcome.surfaces.size() != static_cast<std::size_t>(doc->surfaceCount())) {
-        stop(tr("Solve result discarded: the design changed while solving."));
+        stop(Ending::Discarded, tr("Solve result discarded: the design changed while solving."));
         return;
     }
     // Every surface's command is made before any is pushed: one refused (the solved shape
@@ -421,14 +426,15 @@ void SolveController::onResult(const solver::SolveResult& result) {
         document::CommandOrError edit = document::ApplySurfaceCommand::create(
             *doc, static_cast<int>(s), outcome.surfaces[s], title);
         if (edit.isRefused()) {
-            stop(tr("Solve failed: %1 The design is unchanged.").arg(edit.error()));
+            stop(Ending::Failed, tr("Solve failed: %1 The design is unchanged.").arg(edit.error()));
             return;
         }
         commands.push_back(edit.takeCommand());
     }
     if (keptCount > 0) {
         if (commands.empty()) {
-            stop(tr("Solve left the design as it was: solving made it less developable (largest "
+            stop(Ending::LeftAsItWas,
+                 tr("Solve left the design as it was: solving made it less developable (largest "
                     "developability residual %1 → %2).")
                      .arg(QString::number(before, 'e', 1), QString::number(after, 'e', 1)));
             return;
@@ -454,7 +460,7 @@ void SolveController::onResult(const solver::SolveResult& result) {
                     tr("%n surface(s) left as they were: solving made them less developable.",
                        nullptr, keptCount);
     }
-    stop(sentence + checkShapeSentence(report));
+    stop(Ending::Solved, sentence + checkShapeSentence(report));
 }
 
 void SolveController::applyEdit(const solver::SolveResult& result, const SolveReport& report) {
@@ -462,7 +468,8 @@ void SolveController::applyEdit(const solver::SolveResult& result, const SolveRe
     const auto s = static_cast<std::size_t>(m_editSurface);
     const solver::JobOutcome& outcome = result.outcome;
     if (doc->revision() != result.revision || s >= outcome.surfaces.size()) {
-        stop(tr("%1 discarded: the design changed while solving; nothing moved.").arg(m_editTitle));
+        stop(Ending::Discarded,
+             tr("%1 discarded: the design changed while solving; nothing moved.").arg(m_editTitle));
         return;
     }
     model::CompositeSurface solved = outcome.surfaces[s];
@@ -472,17 +479,18 @@ void SolveController::applyEdit(const solver::SolveResult& result, const SolveRe
     document::CommandOrError edit =
         document::ApplySurfaceCommand::create(*doc, m_editSurface, solved, m_editTitle);
     if (edit.isRefused()) {
-        stop(failedSentence(edit.error()));
+        stop(Ending::Failed, failedSentence(edit.error()));
         return;
     }
     m_applying = true;
     doc->undoStack()->push(edit.takeCommand().release());
     m_applying = false;
     const solver::Summary& summary = outcome.assessments[s].summary;
-    stop(tr("%1, kept developable: %n iteration(s), largest constraint residual %2.", nullptr,
+    stop(Ending::Solved,
+         tr("%1, kept developable: %n iteration(s), largest constraint residual %2.", nullptr,
             summary.iterationsCompleted)
-             .arg(m_editTitle, QString::number(summary.finalMaxConstraintResidual, 'e', 2)) +
-         checkShapeSentence(report));
+                 .arg(m_editTitle, QString::number(summary.finalMaxConstraintResidual, 'e', 2)) +
+             checkShapeSentence(report));
 }
 
 } // namespace devsurf::app

@@ -36,6 +36,17 @@ public:
 
     solver::SolverWorker* worker() const { return m_worker; }
     bool isSolving() const { return m_solving; }
+    // How the last solve or edit ended (what finished() worded).
+    enum class Ending {
+        None,
+        Solved,
+        LeftAsItWas,
+        Cancelled,
+        CancelledByChange,
+        Failed,
+        Discarded
+    };
+    Ending lastEnding() const { return m_ending; }
     static int iterationsSetting();
     // Tools ▸ Lengths While Dragging: whether vertex drags damp stretching of the sheet.
     enum class LengthsMode { Automatic = 0, Keep = 1, Stretch = 2 };
@@ -81,7 +92,7 @@ signals:
 private:
     void onResult(const solver::SolveResult& result);
     void onDocumentChanged();
-    void stop(const QString& sentence);
+    void stop(Ending ending, const QString& sentence);
     void applyEdit(const solver::SolveResult& result, const SolveReport& report);
     // The sentences of a solve or of an edit's solve.
     QString cancelledSentence(const QString& reason) const;
@@ -93,6 +104,8 @@ private:
     Workspace* m_workspace;
     solver::SolverWorker* m_worker;
     bool m_solving = false;
+    Ending m_ending = Ending::None;
+    bool m_cancelledByChange = false;
     bool m_applying = false;
     quint64 m_revision = 0;
     // The running request's ticket; the edited surface (-1: Solve).

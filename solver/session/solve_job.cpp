@@ -1,5 +1,6 @@
 #include "solver/session/solve_job.h"
 
+#include "model/geometry_checks.h"
 #include "model/pattern/cutting_pattern.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
@@ -22,19 +23,7 @@ bool isFinite(const model::Vec3& p) {
 }
 
 bool allFinite(const model::CompositeSurface& surface) {
-    for (const auto& [id, position] : surface.vertices()) {
-        if (!isFinite(position)) {
-            return false;
-        }
-    }
-    for (const auto& [id, edge] : surface.edges()) {
-        for (const model::Vec3& point : edge.controlPoints) {
-            if (!isFinite(point)) {
-                return false;
-            }
-        }
-    }
-    return true;
+    return model::allCoordinatesFinite(surface);
 }
 
 // Same combinatorics, labels, spline spaces and pins: a session built from `a` can continue

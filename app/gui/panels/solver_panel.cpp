@@ -46,6 +46,7 @@ SolverPanel::SolverPanel(QWidget* parent)
 }
 
 void SolverPanel::showReport(const SolveReport& report) {
+    m_report = report;
     int iterations = 0;
     for (const solver::Summary& summary : report.summaries) {
         iterations += static_cast<int>(summary.iterations.size());

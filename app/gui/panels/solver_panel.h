@@ -2,6 +2,7 @@
 
 #include "model/document/selection.h"
 #include "solver/core/summary.h"
+#include "solver/session/solve_job.h"
 
 #include <QStringList>
 #include <QWidget>
@@ -16,15 +17,16 @@ namespace devsurf::app {
 
 // What the Solver panel shows about the last solve or drag.
 struct SolveReport {
-    QString title;  // what ran: "Solve", "Drag 3 vertices"
+    solver::JobOutcome outcome; // what the sentences below word
+    QString title;              // what ran: "Solve", "Drag 3 vertices"
     QString status; // one sentence: converged, iteration limit, cancelled, failed (and why)
     std::vector<solver::Summary> summaries; // per surface (empty summaries are skipped)
     QStringList worstFaces;                 // filled when the tolerance was not reached
     QList<int> foldedOver; // patches that fold over onto themselves (solver::foldOvers)
-    // Patches at which the development overlaps itself (SolveResult::selfOverlaps).
+    // Patches at which the development overlaps itself (SurfaceAssessment::overlapping).
     QList<int> overlapping;
     // The largest sampled residual of the crease conditions over the surfaces
-    // (SolveResult::creaseResiduals); −1: no crease has a condition.
+    // (SurfaceAssessment::creases); −1: no crease has a condition.
     double creaseResidual = -1.0;
     // Every patch named above (least developable, folded over), for selecting them.
     std::set<document::Pick> patchesToCheck;
@@ -39,6 +41,8 @@ public:
     explicit SolverPanel(QWidget* parent = nullptr);
 
     void showReport(const SolveReport& report);
+    // The report shown last.
+    const SolveReport& report() const { return m_report; }
     QString statusText() const;
     // Rows of the iteration table (one per iteration of every solved surface).
     int iterationRows() const;
@@ -55,6 +59,7 @@ private:
     QTableWidget* m_table;
     QPushButton* m_selectPatches;
     QString m_worst;
+    SolveReport m_report;
     std::set<document::Pick> m_patches;
 };
 
