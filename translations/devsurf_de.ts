@@ -624,17 +624,32 @@
     </message>
     <message>
         <location filename="../app/gui/drag_tool.cpp" line="258"/>
-        <location filename="../app/gui/drag_tool.cpp" line="285"/>
+        <location filename="../app/gui/drag_tool.cpp" line="299"/>
         <source>a drag started</source>
         <translation>ein Ziehen hat begonnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="382"/>
+        <location filename="../app/gui/drag_tool.cpp" line="282"/>
+        <source>There is no edge %1.</source>
+        <translation>Es gibt keine Kante %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="285"/>
+        <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
+        <translation>Kante %1 ist kein Falz (eine Kurve zwischen zwei Flächenstücken); nur Falze lassen sich ziehen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="290"/>
+        <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
+        <translation>Kante %1 kann sich nicht bewegen: beide Enden sind festgehalten und sie hat keinen weiteren Kontrollpunkt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="396"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>Die festgehaltenen Ecken %1 und %2 halten Ecke %3 auf der Geraden zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="388"/>
+        <location filename="../app/gui/drag_tool.cpp" line="402"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>Die festgehaltenen Ecken %1, %2 und %3 halten Ecke %4 im Dreieck zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
@@ -669,13 +684,13 @@
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="502"/>
+        <location filename="../app/gui/drag_tool.cpp" line="516"/>
         <source>The new shape cannot be applied: %1</source>
         <translation>Die neue Form kann nicht übernommen werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="516"/>
-        <location filename="../app/gui/drag_tool.cpp" line="528"/>
+        <location filename="../app/gui/drag_tool.cpp" line="530"/>
+        <location filename="../app/gui/drag_tool.cpp" line="542"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2209,22 +2224,22 @@
         <translation>%1 fehlgeschlagen: %2 Nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="195"/>
+        <location filename="../app/gui/solve_controller.cpp" line="199"/>
         <source>the design changed</source>
         <translation>der Entwurf hat sich geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="202"/>
+        <location filename="../app/gui/solve_controller.cpp" line="206"/>
         <source>it stopped before a degenerate shape</source>
         <translation>es hielt vor einer entarteten Form an</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="205"/>
+        <location filename="../app/gui/solve_controller.cpp" line="209"/>
         <source>no convergence, residual %1</source>
         <translation>keine Konvergenz, Residuum %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="208"/>
+        <location filename="../app/gui/solve_controller.cpp" line="212"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>an %n Stelle zurückgefaltet</numerusform>
@@ -2232,107 +2247,107 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="211"/>
+        <location filename="../app/gui/solve_controller.cpp" line="215"/>
         <source>a development overlapping itself</source>
         <translation>eine sich selbst überlappende Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="214"/>
+        <location filename="../app/gui/solve_controller.cpp" line="218"/>
         <source>collapsed strips</source>
         <translation>zusammengefallene Streifen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="217"/>
+        <location filename="../app/gui/solve_controller.cpp" line="221"/>
         <source>a shape too degenerate to measure</source>
         <translation>eine zum Messen zu entartete Form</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="241"/>
+        <location filename="../app/gui/solve_controller.cpp" line="245"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="246"/>
+        <location filename="../app/gui/solve_controller.cpp" line="250"/>
         <source>The solve was cancelled.</source>
         <translation>Das Lösen wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="248"/>
+        <location filename="../app/gui/solve_controller.cpp" line="252"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 kann nicht gelöst werden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="252"/>
+        <location filename="../app/gui/solve_controller.cpp" line="256"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
-        <translation>Das Ziel des gezogenen Eckpunkts %1 ist kein endlicher Punkt.</translation>
+        <translation>Das Ziel der gezogenen Ecke %1 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="253"/>
+        <location filename="../app/gui/solve_controller.cpp" line="257"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>Das Ziel des gezogenen Kontrollpunkts %1 der Kante %2 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="259"/>
+        <location filename="../app/gui/solve_controller.cpp" line="263"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 konnte nicht gelöst werden: das lineare Gleichungssystem ließ sich nicht faktorisieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="261"/>
+        <location filename="../app/gui/solve_controller.cpp" line="265"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 konnte nicht gelöst werden: eine Iteration ergab Werte, die nicht endlich sind.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="265"/>
+        <location filename="../app/gui/solve_controller.cpp" line="269"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 konnte nicht gelöst werden: der Löser lieferte einen Wert, der nicht endlich ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="271"/>
+        <location filename="../app/gui/solve_controller.cpp" line="275"/>
         <source>(Solver: %1)</source>
         <translation>(Löser: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="285"/>
+        <location filename="../app/gui/solve_controller.cpp" line="290"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="289"/>
+        <location filename="../app/gui/solve_controller.cpp" line="294"/>
         <source>Failed: %1</source>
         <translation>Fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="303"/>
+        <location filename="../app/gui/solve_controller.cpp" line="308"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="307"/>
+        <location filename="../app/gui/solve_controller.cpp" line="312"/>
         <source>tolerance reached</source>
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="307"/>
+        <location filename="../app/gui/solve_controller.cpp" line="312"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="314"/>
+        <location filename="../app/gui/solve_controller.cpp" line="319"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="322"/>
+        <location filename="../app/gui/solve_controller.cpp" line="327"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="328"/>
+        <location filename="../app/gui/solve_controller.cpp" line="333"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; das Beibehalten der Längen schlug fehl (%1), daher wurde das Ziehen mit Dehnen des Blatts wiederholt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="344"/>
+        <location filename="../app/gui/solve_controller.cpp" line="349"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n Flächenstück faltet sich auf sich selbst zurück, wo die Fläche sich selbst überlappt: %1</numerusform>
@@ -2340,7 +2355,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="359"/>
+        <location filename="../app/gui/solve_controller.cpp" line="364"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; die Abwicklung überlappt sich selbst an %n Flächenstück (%1) und lässt sich nicht aus einem Bogen schneiden</numerusform>
@@ -2348,32 +2363,32 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="365"/>
+        <location filename="../app/gui/solve_controller.cpp" line="370"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="370"/>
+        <location filename="../app/gui/solve_controller.cpp" line="375"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="374"/>
+        <location filename="../app/gui/solve_controller.cpp" line="379"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="383"/>
+        <location filename="../app/gui/solve_controller.cpp" line="388"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="431"/>
+        <location filename="../app/gui/solve_controller.cpp" line="437"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>Lösen hat den Entwurf unverändert gelassen: das Lösen machte ihn weniger abwickelbar (größtes Abwickelbarkeitsresiduum %1 → %2).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="454"/>
+        <location filename="../app/gui/solve_controller.cpp" line="460"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n Fläche unverändert gelassen: das Lösen machte sie weniger abwickelbar.</numerusform>
@@ -2381,12 +2396,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="465"/>
+        <location filename="../app/gui/solve_controller.cpp" line="472"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 verworfen: Der Entwurf hat sich während des Lösens geändert; nichts wurde bewegt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="482"/>
+        <location filename="../app/gui/solve_controller.cpp" line="490"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, abwickelbar gehalten: %n Iteration, größtes Bedingungsresiduum %2.</numerusform>
@@ -2395,37 +2410,37 @@
     </message>
     <message>
         <location filename="../app/gui/solve_controller.cpp" line="176"/>
-        <location filename="../app/gui/solve_controller.cpp" line="424"/>
+        <location filename="../app/gui/solve_controller.cpp" line="429"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="224"/>
+        <location filename="../app/gui/solve_controller.cpp" line="228"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt auf der Geraden zwischen den festgehaltenen Ecken %2 und %3, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="231"/>
+        <location filename="../app/gui/solve_controller.cpp" line="235"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt im Dreieck der festgehaltenen Ecken %2, %3 und %4, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="310"/>
+        <location filename="../app/gui/solve_controller.cpp" line="315"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>beim letzten gültigen Zustand angehalten, bevor eine Erzeugende, eine Kurve oder ein Flächenstück kollabierte</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="318"/>
+        <location filename="../app/gui/solve_controller.cpp" line="323"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (endete bei Iteration %1, der mit dem kleinsten Residuum)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="402"/>
+        <location filename="../app/gui/solve_controller.cpp" line="407"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="450"/>
+        <location filename="../app/gui/solve_controller.cpp" line="456"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>
@@ -2491,7 +2506,7 @@
         <translation>Wählt die Flächenstücke aus, die das letzte Lösen nennt: die am wenigsten abwickelbaren und die, die sich auf sich selbst zurückfalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="54"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="55"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n Iteration in %3 ms.</numerusform>
@@ -2499,12 +2514,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="78"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="79"/>
         <source>&lt;br&gt;Crease conditions, sampled along the creases: largest residual %1.</source>
         <translation>&lt;br&gt;Falzbedingungen, entlang der Falze abgetastet: größtes Residuum %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="85"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="86"/>
         <source>&lt;br&gt;Tolerance not reached. Least developable patches (normalised residual): %1</source>
         <translation>&lt;br&gt;Toleranz nicht erreicht. Am wenigsten abwickelbare Flächenstücke (normiertes Residuum): %1</translation>
     </message>

@@ -610,17 +610,32 @@
     </message>
     <message>
         <location filename="../app/gui/drag_tool.cpp" line="258"/>
-        <location filename="../app/gui/drag_tool.cpp" line="285"/>
+        <location filename="../app/gui/drag_tool.cpp" line="299"/>
         <source>a drag started</source>
         <translation>ドラッグが始まりました</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="382"/>
+        <location filename="../app/gui/drag_tool.cpp" line="282"/>
+        <source>There is no edge %1.</source>
+        <translation>辺 %1 はありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="285"/>
+        <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
+        <translation>辺 %1 は折り線 (2 つのパッチの間の曲線) ではありません。ドラッグできるのは折り線だけです。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="290"/>
+        <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
+        <translation>辺 %1 は動かせません: 両端が固定されていて、ほかに制御点がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="396"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1 と %2 が頂点 %3 をその間の直線上に押さえています (2 点の距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="388"/>
+        <location filename="../app/gui/drag_tool.cpp" line="402"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1、%2、%3 が頂点 %4 をその三角形の中に押さえています (距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
@@ -655,13 +670,13 @@
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="502"/>
+        <location filename="../app/gui/drag_tool.cpp" line="516"/>
         <source>The new shape cannot be applied: %1</source>
         <translation>新しい形状を適用できません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="516"/>
-        <location filename="../app/gui/drag_tool.cpp" line="528"/>
+        <location filename="../app/gui/drag_tool.cpp" line="530"/>
+        <location filename="../app/gui/drag_tool.cpp" line="542"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2176,180 +2191,180 @@
         <translation>%1 に失敗しました: %2 何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="195"/>
+        <location filename="../app/gui/solve_controller.cpp" line="199"/>
         <source>the design changed</source>
         <translation>デザインが変更されました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="202"/>
+        <location filename="../app/gui/solve_controller.cpp" line="206"/>
         <source>it stopped before a degenerate shape</source>
         <translation>退化した形の手前で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="205"/>
+        <location filename="../app/gui/solve_controller.cpp" line="209"/>
         <source>no convergence, residual %1</source>
         <translation>収束せず、残差 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="208"/>
+        <location filename="../app/gui/solve_controller.cpp" line="212"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>%n 箇所で折り返し</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="211"/>
+        <location filename="../app/gui/solve_controller.cpp" line="215"/>
         <source>a development overlapping itself</source>
         <translation>展開図が自身と重なる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="214"/>
+        <location filename="../app/gui/solve_controller.cpp" line="218"/>
         <source>collapsed strips</source>
         <translation>帯がつぶれる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="217"/>
+        <location filename="../app/gui/solve_controller.cpp" line="221"/>
         <source>a shape too degenerate to measure</source>
         <translation>測定できないほど退化した形</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="241"/>
+        <location filename="../app/gui/solve_controller.cpp" line="245"/>
         <source>Surface %1</source>
         <translation>曲面 %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="246"/>
+        <location filename="../app/gui/solve_controller.cpp" line="250"/>
         <source>The solve was cancelled.</source>
         <translation>ソルブを中止しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="248"/>
+        <location filename="../app/gui/solve_controller.cpp" line="252"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 は解けません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="252"/>
+        <location filename="../app/gui/solve_controller.cpp" line="256"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>頂点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="253"/>
+        <location filename="../app/gui/solve_controller.cpp" line="257"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>辺 %2 の制御点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="259"/>
+        <location filename="../app/gui/solve_controller.cpp" line="263"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 を解けませんでした: 連立一次方程式を分解できませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="261"/>
+        <location filename="../app/gui/solve_controller.cpp" line="265"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 を解けませんでした: 反復で有限でない値が生じました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="265"/>
+        <location filename="../app/gui/solve_controller.cpp" line="269"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 を解けませんでした: ソルバーが有限でない値を出しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="271"/>
+        <location filename="../app/gui/solve_controller.cpp" line="275"/>
         <source>(Solver: %1)</source>
         <translation>(ソルバー: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="285"/>
+        <location filename="../app/gui/solve_controller.cpp" line="290"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="289"/>
+        <location filename="../app/gui/solve_controller.cpp" line="294"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="303"/>
+        <location filename="../app/gui/solve_controller.cpp" line="308"/>
         <source>converged</source>
         <translation>収束</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="307"/>
+        <location filename="../app/gui/solve_controller.cpp" line="312"/>
         <source>tolerance reached</source>
         <translation>許容値に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="307"/>
+        <location filename="../app/gui/solve_controller.cpp" line="312"/>
         <source>iteration limit reached</source>
         <translation>反復回数の上限に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="314"/>
+        <location filename="../app/gui/solve_controller.cpp" line="319"/>
         <source>failed</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="322"/>
+        <location filename="../app/gui/solve_controller.cpp" line="327"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>。ソルブで可展性が悪化したため元のままにしました (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="328"/>
+        <location filename="../app/gui/solve_controller.cpp" line="333"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; 長さを保てなかったため (%1)、シートの伸びを許してドラッグをやり直しました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="344"/>
+        <location filename="../app/gui/solve_controller.cpp" line="349"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n 個のパッチが自身の上に折り返され、曲面が自己重複しています: %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="359"/>
+        <location filename="../app/gui/solve_controller.cpp" line="364"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; 展開図が %n 個のパッチで自身と重なっており (%1)、1 枚のシートから切り出せません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="365"/>
+        <location filename="../app/gui/solve_controller.cpp" line="370"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="370"/>
+        <location filename="../app/gui/solve_controller.cpp" line="375"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="374"/>
+        <location filename="../app/gui/solve_controller.cpp" line="379"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="383"/>
+        <location filename="../app/gui/solve_controller.cpp" line="388"/>
         <source>Solve</source>
         <translation>ソルブ</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="431"/>
+        <location filename="../app/gui/solve_controller.cpp" line="437"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>ソルブはデザインを元のままにしました。ソルブで可展性が悪化したためです (最大の可展性残差 %1 → %2)。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="454"/>
+        <location filename="../app/gui/solve_controller.cpp" line="460"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n 個のサーフェスを元のままにしました。ソルブで可展性が悪化したためです。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="465"/>
+        <location filename="../app/gui/solve_controller.cpp" line="472"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 を破棄しました: ソルブ中にデザインが変更されました。何も動いていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="482"/>
+        <location filename="../app/gui/solve_controller.cpp" line="490"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1、可展を維持: %n 回反復、最大の制約残差 %2。</numerusform>
@@ -2357,37 +2372,37 @@
     </message>
     <message>
         <location filename="../app/gui/solve_controller.cpp" line="176"/>
-        <location filename="../app/gui/solve_controller.cpp" line="424"/>
+        <location filename="../app/gui/solve_controller.cpp" line="429"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>ソルブに失敗しました: %1 デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="224"/>
+        <location filename="../app/gui/solve_controller.cpp" line="228"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2 と %3 を結ぶ直線上にあり、この 2 点の距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="231"/>
+        <location filename="../app/gui/solve_controller.cpp" line="235"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2、%3、%4 の三角形の内側にあり、これらの距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="310"/>
+        <location filename="../app/gui/solve_controller.cpp" line="315"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>母線、曲線またはパッチがつぶれる前の最後の有効な状態で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="318"/>
+        <location filename="../app/gui/solve_controller.cpp" line="323"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (残差が最小の反復 %1 で終了)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="402"/>
+        <location filename="../app/gui/solve_controller.cpp" line="407"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>ソルブ中にデザインが変更されたため、結果を破棄しました。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="450"/>
+        <location filename="../app/gui/solve_controller.cpp" line="456"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>ソルブ完了: %n 回反復、制約残差の最大値 %1。</numerusform>
@@ -2452,19 +2467,19 @@
         <translation>直前のソルブが挙げたパッチ (可展性の最も低いものと自身の上に折り返されたもの) を選択します</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="54"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="55"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n 回反復、%3 ms。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="78"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="79"/>
         <source>&lt;br&gt;Crease conditions, sampled along the creases: largest residual %1.</source>
         <translation>&lt;br&gt;折り線の条件 (折り線に沿ってサンプリング): 最大残差 %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="85"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="86"/>
         <source>&lt;br&gt;Tolerance not reached. Least developable patches (normalised residual): %1</source>
         <translation>&lt;br&gt;許容値に達しませんでした。可展性の最も低いパッチ (正規化残差): %1</translation>
     </message>

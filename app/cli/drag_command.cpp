@@ -147,10 +147,11 @@ void printStep(const char* label, int index, int count, const solver::IterationS
     char line[512];
     // A move of a large model may solve with the previous move's factorisation
     // (solver::kDragFactorizationReuse).
-    std::snprintf(
-        line, sizeof line, "%s %3d/%d  residual %.3e  time %.3f ms  %s%s\n", label, index, count,
-        stats.maxConstraintResidual, stats.assemblyMs + stats.factorizationMs + stats.solveMs,
-        stats.factorizationReused ? "(factorisation reused)  " : "", quality.describe().c_str());
+    std::snprintf(line, sizeof line, "%s %3d/%d  residual %.3e  time %.3f ms  %s%s\n", label, index,
+                  count, stats.maxConstraintResidual,
+                  stats.assemblyMs + stats.factorizationMs + stats.solveMs,
+                  stats.factorizationReused ? "(factorisation reused)  " : "",
+                  describeQuality(quality).c_str());
     std::cout << line;
 }
 
@@ -281,6 +282,9 @@ int runDragCommand(const std::vector<std::string>& positional,
                 start[handle.vertex] = handle.target;
             }
         }
+    } catch (const solver::CreaseDragRefused& refused) {
+        throw model::ModelError("surface " + std::to_string(index + 1) + " of '" + path +
+                                "' cannot be dragged: " + describeCreaseRefusal(refused));
     } catch (const std::invalid_argument& error) {
         throw model::ModelError("surface " + std::to_string(index + 1) + " of '" + path +
                                 "' cannot be dragged: " + error.what());

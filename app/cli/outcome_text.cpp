@@ -109,6 +109,29 @@ std::string describeOutcome(const solver::DragOutcome& outcome) {
     return sentence;
 }
 
+std::string describeCreaseRefusal(const solver::CreaseDragRefused& refused) {
+    const std::string name = "edge " + std::to_string(refused.edge());
+    switch (refused.reason()) {
+    case solver::CreaseDragRefusal::NoSuchEdge:
+        return "there is no " + name + ".";
+    case solver::CreaseDragRefusal::NotACrease:
+        return name +
+               " is not a crease (a curve between two patches); only creases can be dragged.";
+    case solver::CreaseDragRefusal::Immovable:
+        break;
+    }
+    return name + " cannot move: both its ends are pinned and it has no other control point.";
+}
+
+std::string describeQuality(const solver::QualityMeasures& q) {
+    char buffer[256];
+    std::snprintf(buffer, sizeof buffer,
+                  "flatness mean %.2e max %.2e, |K| mean %.2e max %.2e, det mean %.2e max %.2e",
+                  q.flatnessMean, q.flatnessMax, q.curvatureMean, q.curvatureMax,
+                  q.developabilityMean, q.developabilityMax);
+    return buffer;
+}
+
 std::string describeFailure(const solver::JobFailure& failure) {
     const std::string surface = "surface " + std::to_string(failure.surface + 1);
     std::string text;

@@ -2,6 +2,8 @@
 
 #include "model/held_by_pins.h"
 #include "model/ids.h"
+#include "solver/quality/quality_measures.h"
+#include "solver/session/crease_drag.h"
 #include "solver/session/solve_job.h"
 
 #include <string>
@@ -23,6 +25,10 @@ std::string describeHeld(const model::HeldVertex& held);
 // What went wrong at the end of a drag, continuing "the drag …": "did not converge (residual
 // 1.4e-04), folded over in 2 places", or "ended without a problem".
 std::string describeOutcome(const solver::DragOutcome& outcome);
+// Why a crease cannot be dragged: "edge 3 is not a crease (…); only creases can be dragged."
+std::string describeCreaseRefusal(const solver::CreaseDragRefused& refused);
+// "flatness mean … max …, |K| mean … max …, det mean … max …"
+std::string describeQuality(const solver::QualityMeasures& quality);
 // Why a job failed: "surface 1 could not be solved: FactorizationFailed (…)".
 std::string describeFailure(const solver::JobFailure& failure);
 

@@ -160,7 +160,7 @@ int runSolveCommand(const std::vector<std::string>& positional,
                       "iteration %3d  residual %.3e  assembly %.3f ms  factorisation %.3f ms "
                       " solve %.3f ms  %s\n",
                       it.iteration + 1, it.maxConstraintResidual, it.assemblyMs, it.factorizationMs,
-                      it.solveMs, quality.describe().c_str());
+                      it.solveMs, describeQuality(quality).c_str());
         std::cout << line;
     };
     solver::SolveJob job;

@@ -275,9 +275,23 @@ bool DragTool::pressCrease(const QPoint& pos, const Pick& pick) {
     const model::CompositeSurface& surface = doc->surface(pick.surface);
     try {
         m_crease = std::make_unique<solver::CreaseDrag>(surface, pick.id);
-    } catch (const std::invalid_argument& error) {
+    } catch (const solver::CreaseDragRefused& refused) {
         // Not a crease (or nothing of it may move): say so, and the camera turns as usual.
-        emit statusMessage(QString::fromStdString(error.what()));
+        switch (refused.reason()) {
+        case solver::CreaseDragRefusal::NoSuchEdge:
+            emit statusMessage(tr("There is no edge %1.").arg(refused.edge()));
+            break;
+        case solver::CreaseDragRefusal::NotACrease:
+            emit statusMessage(tr("Edge %1 is not a crease (a curve between two patches); only "
+                                  "creases can be dragged.")
+                                   .arg(refused.edge()));
+            break;
+        case solver::CreaseDragRefusal::Immovable:
+            emit statusMessage(tr("Edge %1 cannot move: both its ends are pinned and it has no "
+                                  "other control point.")
+                                   .arg(refused.edge()));
+            break;
+        }
         return false;
     }
     m_workspace->selection()->set({pick});

@@ -164,13 +164,4 @@ developabilityByFace(const model::CompositeSurface& surface, int samplesPerInter
     return result;
 }
 
-std::string QualityMeasures::describe() const {
-    char buffer[256];
-    std::snprintf(buffer, sizeof buffer,
-                  "flatness mean %.2e max %.2e, |K| mean %.2e max %.2e, det mean %.2e max %.2e",
-                  flatnessMean, flatnessMax, curvatureMean, curvatureMax, developabilityMean,
-                  developabilityMax);
-    return buffer;
-}
-
 } // namespace devsurf::solver

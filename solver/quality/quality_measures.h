@@ -30,8 +30,6 @@ struct QualityMeasures {
     int developabilitySamples = 0;
     double developabilityMean = 0.0;
     double developabilityMax = 0.0;
-
-    std::string describe() const;
 };
 
 // Throws model::ModelError if the surface is not valid.

@@ -70,16 +70,18 @@ Vec3 rulingThrough(const model::Strip& strip, bool creaseIsA, const Vec3& p) {
 
 } // namespace
 
+CreaseDragRefused::CreaseDragRefused(CreaseDragRefusal reason, model::EdgeId edge)
+    : std::invalid_argument("crease drag refused for edge " + std::to_string(edge)),
+      m_reason(reason), m_edge(edge) {}
+
 CreaseDrag::CreaseDrag(const model::CompositeSurface& surface, model::EdgeId edge) : m_edge(edge) {
-    const std::string name = "edge " + std::to_string(edge);
     if (!surface.hasEdge(edge)) {
-        throw std::invalid_argument("there is no " + name + ".");
+        throw CreaseDragRefused(CreaseDragRefusal::NoSuchEdge, edge);
     }
     const model::EdgeRecord& record = surface.edge(edge);
     const std::vector<model::FaceId> faces = surface.facesOfEdge(edge);
     if (!record.isSpline() || faces.size() != 2) {
-        throw std::invalid_argument(name + " is not a crease (a curve between two patches); only "
-                                           "creases can be dragged.");
+        throw CreaseDragRefused(CreaseDragRefusal::NotACrease, edge);
     }
     for (model::VertexId v : {record.from, record.to}) {
         if (!surface.isPinned(v)) {
@@ -92,8 +94,7 @@ CreaseDrag::CreaseDrag(const model::CompositeSurface& surface, model::EdgeId edg
         m_controlStart.push_back(record.controlPoints[i]);
     }
     if (m_vertices.empty() && m_controlStart.empty()) {
-        throw std::invalid_argument(name + " cannot move: both its ends are pinned and it has no "
-                                           "other control point.");
+        throw CreaseDragRefused(CreaseDragRefusal::Immovable, edge);
     }
     // Each face's normal at the crease from the chord and the direction into the face; both
     // oriented alike (a fold turns them by less than half a turn).

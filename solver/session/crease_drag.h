@@ -3,9 +3,28 @@
 #include "model/composite_surface.h"
 #include "solver/formulation/surface_formulation.h"
 
+#include <stdexcept>
 #include <vector>
 
 namespace devsurf::solver {
+
+// Why a crease cannot be dragged (CreaseDrag's constructor throws CreaseDragRefused).
+enum class CreaseDragRefusal {
+    NoSuchEdge,
+    NotACrease, // a ruling or a boundary curve: only curves between two patches slide
+    Immovable,  // both ends pinned and no interior control point
+};
+
+class CreaseDragRefused : public std::invalid_argument {
+public:
+    CreaseDragRefused(CreaseDragRefusal reason, model::EdgeId edge);
+    CreaseDragRefusal reason() const { return m_reason; }
+    model::EdgeId edge() const { return m_edge; }
+
+private:
+    CreaseDragRefusal m_reason;
+    model::EdgeId m_edge;
+};
 
 // A crease being dragged across its two strips (paper §4.1): its interior control points and
 // its unpinned end vertices are pulled as handles, so the crease slides within the strips and

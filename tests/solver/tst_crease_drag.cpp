@@ -250,11 +250,17 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, CreaseDrag(surface, 0)); // boundary
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, CreaseDrag(surface, 1)); // a ruling
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, CreaseDrag(surface, 999));
-        try {
-            CreaseDrag(surface, 0);
-        } catch (const std::invalid_argument& error) {
-            QVERIFY(QString::fromUtf8(error.what()).contains(QStringLiteral("edge 0")));
-        }
+        auto refusal = [&surface](model::EdgeId edge) {
+            try {
+                CreaseDrag drag(surface, edge);
+            } catch (const CreaseDragRefused& refused) {
+                return refused.edge() == edge ? static_cast<int>(refused.reason()) : -1;
+            }
+            return -2;
+        };
+        QCOMPARE(refusal(0), static_cast<int>(CreaseDragRefusal::NotACrease));
+        QCOMPARE(refusal(1), static_cast<int>(CreaseDragRefusal::NotACrease));
+        QCOMPARE(refusal(999), static_cast<int>(CreaseDragRefusal::NoSuchEdge));
         // A control point that is not interior, or of an edge that has none, is refused.
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                                  SolveSession(surface, {}, Points{{kCrease, 0, {}}}));

@@ -204,8 +204,8 @@ private slots:
         model::CompositeSurface out = surface;
         QVERIFY(f.writeBack(x, out));
         const QualityMeasures q = measureQuality(out);
-        QVERIFY2(q.developabilityMax <= 1e-8, q.describe().c_str());
-        QVERIFY2(q.flatnessMean <= paperFlatnessMean, q.describe().c_str());
+        QVERIFY2(q.developabilityMax <= 1e-8, qPrintable(QString::number(q.developabilityMax)));
+        QVERIFY2(q.flatnessMean <= paperFlatnessMean, qPrintable(QString::number(q.flatnessMean)));
         for (auto v : anchors) {
             QVERIFY(out.position(v) == surface.position(v)); // fixed: bit for bit
         }
