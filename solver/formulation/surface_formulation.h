@@ -34,9 +34,9 @@ struct ControlPointHandle {
     model::Vec3 target; // model coordinates
 };
 
-// The choices of a formulation. The defaults are the paper's configuration, which the benchmark
-// times; the sessions (solver/session) and useRoughStartConfiguration change them. Why each
-// default is what it is, with the measurements: docs/tuning.md.
+// The choices of a formulation. The defaults are the configuration the benchmark times (the
+// paper's, but with the exact normal space); the sessions (solver/session) and
+// useRoughStartConfiguration change them. The measurements behind them: docs/tuning.md.
 struct FormulationOptions {
     // (4) with the first-derivative points a¹₀, a¹₁, b¹₀, b¹₁ of every collocation value as
     // auxiliary variables tied to the control points by linear relations (as the paper does),
