@@ -64,7 +64,9 @@ private slots:
         QTest::newRow("sheet lifted") << "sheet" << 5 << 15.0;
         QTest::newRow("cylinder pushed") << "cylinder" << 3 << 10.0;
         QTest::newRow("mixed lifted") << "mixed" << 1 << 5.0;
+        QTest::newRow("fig6 lifted") << "fig6" << 2 << 5.0;
         QTest::newRow("fig6") << "fig6" << -1 << 0.0;
+        QTest::newRow("fig8 lifted") << "fig8" << 2 << 5.0;
         QTest::newRow("fig8") << "fig8" << -1 << 0.0;
     }
 
