@@ -7,258 +7,138 @@
 #include "model/sampled_mesh.h"
 #include "model/strip.h"
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QJsonValue>
 #include <QSaveFile>
 
-#include <cstdio>
-#include <map>
+#include <vector>
 
 namespace devsurf::io {
 
 namespace {
 
-class JsonWriter {
-public:
-    std::string text;
-
-    void number(double value) {
-        char buffer[40];
-        std::snprintf(buffer, sizeof buffer, "%.17g", value);
-        text += buffer;
-    }
-    void integer(long long value) { text += std::to_string(value); }
-    void string(const std::string& value) {
-        text += '"';
-        for (char c : value) {
-            switch (c) {
-            case '"':
-                text += "\\\"";
-                break;
-            case '\\':
-                text += "\\\\";
-                break;
-            case '\n':
-                text += "\\n";
-                break;
-            case '\t':
-                text += "\\t";
-                break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20) {
-                    char buffer[8];
-                    std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned>(c));
-                    text += buffer;
-                } else {
-                    text += c;
-                }
-            }
-        }
-        text += '"';
-    }
-    void key(const char* name) {
-        string(name);
-        text += ": ";
-    }
-    void point(const model::Vec3& p) {
-        text += '[';
-        number(p.x);
-        text += ", ";
-        number(p.y);
-        text += ", ";
-        number(p.z);
-        text += ']';
-    }
-    void point(const model::Vec2& p) {
-        text += '[';
-        number(p.x);
-        text += ", ";
-        number(p.y);
-        text += ']';
-    }
-    template <class T, class F> void array(const std::vector<T>& items, F&& each) {
-        text += '[';
-        for (std::size_t i = 0; i < items.size(); ++i) {
-            if (i != 0) {
-                text += ", ";
-            }
-            each(items[i]);
-        }
-        text += ']';
-    }
-};
-
-void writeCurve(JsonWriter& w, const model::BSplineCurve& curve) {
-    w.text += "{";
-    w.key("degree");
-    w.integer(curve.degree());
-    w.text += ", ";
-    w.key("knots");
-    w.array(curve.exportKnots(), [&w](double k) { w.number(k); });
-    w.text += ", ";
-    w.key("controlPoints");
-    w.array(curve.exportControlPoints(), [&w](const model::Vec3& p) { w.point(p); });
-    w.text += ", ";
-    w.key("closed");
-    w.text += curve.isClosed() ? "true" : "false";
-    w.text += "}";
+// Doubles become JSON numbers as QJsonDocument writes them: the shortest decimal form that
+// reads back as the same IEEE double.
+QJsonArray point(const model::Vec3& p) {
+    return {p.x, p.y, p.z};
 }
 
-void writeSurface(JsonWriter& w, const model::CompositeSurface& surface, int samples) {
+QJsonArray point(const model::Vec2& p) {
+    return {p.x, p.y};
+}
+
+template <class T, class F> QJsonArray array(const std::vector<T>& items, F&& each) {
+    QJsonArray result;
+    for (const T& item : items) {
+        result.append(each(item));
+    }
+    return result;
+}
+
+QJsonValue integer(long long value) {
+    return QJsonValue(static_cast<qint64>(value));
+}
+
+QJsonObject curveObject(const model::BSplineCurve& curve) {
+    return {
+        {"degree", integer(curve.degree())},
+        {"knots", array(curve.exportKnots(), [](double k) { return QJsonValue(k); })},
+        {"controlPoints",
+         array(curve.exportControlPoints(), [](const model::Vec3& p) { return point(p); })},
+        {"closed", curve.isClosed()},
+    };
+}
+
+QJsonObject creaseSideObject(const model::CreaseSide& side) {
+    return {
+        {"strip", integer(static_cast<long long>(side.strip))},
+        {"side", side.sideA ? "a" : "b"},
+        {"reversed", side.reversed},
+        {"flipNormal", side.flipNormal},
+    };
+}
+
+QJsonObject surfaceObject(const model::CompositeSurface& surface, int samples) {
     using namespace model;
     const auto derived = DerivedGeometry::of(surface, samples);
     const std::vector<Strip>& strips = derived->strips();
     const SampledMesh& mesh = derived->mesh();
-    w.text += "{\n      ";
-    w.key("name");
-    w.string(surface.name());
-    w.text += ",\n      ";
-    w.key("strips");
-    w.text += "[";
-    for (std::size_t i = 0; i < strips.size(); ++i) {
-        const Strip& s = strips[i];
-        w.text += i == 0 ? "\n        {" : ",\n        {";
-        w.key("face");
-        w.integer(s.face);
-        w.text += ", ";
-        w.key("type");
-        w.string(s.isCone() ? "cone" : "strip");
-        w.text += ", ";
-        w.key("a");
-        writeCurve(w, s.a);
-        w.text += ", ";
-        w.key("b");
-        if (s.isCone()) {
-            w.text += "null";
-        } else {
-            writeCurve(w, s.b);
-        }
-        w.text += ", ";
-        w.key("apex");
-        if (s.isCone()) {
-            w.point(s.apex);
-        } else {
-            w.text += "null";
-        }
-        w.text += "}";
-    }
-    w.text += "],\n      ";
 
-    w.key("planarFaces");
-    w.text += "[";
-    bool first = true;
+    QJsonArray stripArray;
+    for (const Strip& s : strips) {
+        stripArray.append(QJsonObject{
+            {"face", integer(s.face)},
+            {"type", s.isCone() ? "cone" : "strip"},
+            {"a", curveObject(s.a)},
+            {"b", s.isCone() ? QJsonValue() : QJsonValue(curveObject(s.b))},
+            {"apex", s.isCone() ? QJsonValue(point(s.apex)) : QJsonValue()},
+        });
+    }
+
+    QJsonArray planarFaces;
     for (const auto& [faceId, loop] : surface.faces()) {
-        if (surface.faceType(faceId) != FaceType::Planar) {
-            continue;
+        if (surface.faceType(faceId) == FaceType::Planar) {
+            planarFaces.append(QJsonObject{
+                {"face", integer(faceId)},
+                {"polygon", array(loop, [&](VertexId v) { return point(surface.position(v)); })},
+            });
         }
-        w.text += first ? "\n        {" : ",\n        {";
-        first = false;
-        w.key("face");
-        w.integer(faceId);
-        w.text += ", ";
-        w.key("polygon");
-        w.array(loop, [&](VertexId v) { w.point(surface.position(v)); });
-        w.text += "}";
     }
-    w.text += "],\n      ";
 
-    w.key("creases");
-    w.text += "[";
-    first = true;
+    QJsonArray creases;
     for (const Crease& crease : creasesOf(surface, strips, mesh)) {
         if (crease.left.strip == CreaseSide::kNoStrip ||
             crease.right.strip == CreaseSide::kNoStrip) {
             continue;
         }
         const EdgeRecord& record = surface.edge(crease.edge);
-        auto writeSide = [&w](const CreaseSide& side) {
-            w.text += "{";
-            w.key("strip");
-            w.integer(static_cast<long long>(side.strip));
-            w.text += ", ";
-            w.key("side");
-            w.string(side.sideA ? "a" : "b");
-            w.text += ", ";
-            w.key("reversed");
-            w.text += side.reversed ? "true" : "false";
-            w.text += ", ";
-            w.key("flipNormal");
-            w.text += side.flipNormal ? "true" : "false";
-            w.text += "}";
-        };
-        w.text += first ? "\n        {" : ",\n        {";
-        first = false;
-        w.key("edge");
-        w.integer(crease.edge);
-        w.text += ", ";
-        w.key("curve");
-        writeCurve(w, BSplineCurve::uniform(record.space, record.controlPoints));
-        w.text += ", ";
-        w.key("left");
-        writeSide(crease.left);
-        w.text += ", ";
-        w.key("right");
-        writeSide(crease.right);
-        w.text += ", ";
-        w.key("condition");
-        w.string(creaseConditionName(record.condition));
-        w.text += ", ";
-        w.key("assignment");
-        w.string(foldAssignmentLetter(crease.assignment));
-        w.text += ", ";
-        w.key("foldAngle");
-        w.number(crease.foldAngleDegrees);
-        w.text += "}";
+        creases.append(QJsonObject{
+            {"edge", integer(crease.edge)},
+            {"curve", curveObject(BSplineCurve::uniform(record.space, record.controlPoints))},
+            {"left", creaseSideObject(crease.left)},
+            {"right", creaseSideObject(crease.right)},
+            {"condition", QString::fromLatin1(creaseConditionName(record.condition))},
+            {"assignment", QString::fromLatin1(foldAssignmentLetter(crease.assignment))},
+            {"foldAngle", crease.foldAngleDegrees},
+        });
     }
-    w.text += "],\n      ";
 
-    w.key("rulings");
-    w.text += "[";
-    first = true;
+    QJsonArray rulings;
     for (const auto& [edgeId, record] : surface.edges()) {
-        if (record.isSpline() || surface.facesOfEdge(edgeId).size() != 2) {
-            continue;
+        if (!record.isSpline() && surface.facesOfEdge(edgeId).size() == 2) {
+            rulings.append(QJsonObject{
+                {"edge", integer(edgeId)},
+                {"from", point(surface.position(record.from))},
+                {"to", point(surface.position(record.to))},
+                {"smooth", record.smooth},
+            });
         }
-        w.text += first ? "\n        {" : ",\n        {";
-        first = false;
-        w.key("edge");
-        w.integer(edgeId);
-        w.text += ", ";
-        w.key("from");
-        w.point(surface.position(record.from));
-        w.text += ", ";
-        w.key("to");
-        w.point(surface.position(record.to));
-        w.text += ", ";
-        w.key("smooth");
-        w.text += record.smooth ? "true" : "false";
-        w.text += "}";
     }
-    w.text += "],\n      ";
 
     const Development& development = derived->development();
-    w.key("mesh");
-    w.text += "{\n        ";
-    w.key("vertices");
-    w.array(mesh.vertices, [&w](const Vec3& p) { w.point(p); });
-    w.text += ",\n        ";
-    w.key("faces");
-    w.array(mesh.faces,
-            [&w](const std::vector<int>& face) { w.array(face, [&w](int i) { w.integer(i); }); });
-    w.text += "},\n      ";
-    w.key("development");
-    w.text += "{\n        ";
-    w.key("vertices");
-    w.array(development.vertices, [&w](const Vec2& p) { w.point(p); });
-    w.text += ",\n        ";
-    w.key("period");
-    if (development.period) {
-        w.point(*development.period);
-    } else {
-        w.text += "null";
-    }
-    w.text += ",\n        ";
-    w.key("closureError");
-    w.number(development.closureError);
-    w.text += "}}";
+    return {
+        {"name", QString::fromStdString(surface.name())},
+        {"strips", stripArray},
+        {"planarFaces", planarFaces},
+        {"creases", creases},
+        {"rulings", rulings},
+        {"mesh",
+         QJsonObject{
+             {"vertices", array(mesh.vertices, [](const Vec3& p) { return point(p); })},
+             {"faces", array(mesh.faces,
+                             [](const std::vector<int>& face) {
+                                 return array(face, [](int i) { return integer(i); });
+                             })},
+         }},
+        {"development",
+         QJsonObject{
+             {"vertices", array(development.vertices, [](const Vec2& p) { return point(p); })},
+             {"period", development.period ? QJsonValue(point(*development.period)) : QJsonValue()},
+             {"closureError", development.closureError},
+         }},
+    };
 }
 
 } // namespace
@@ -277,25 +157,17 @@ void saveInterchangeJsonFile(const model::Project& project, const QString& path,
 }
 
 std::string interchangeJson(const model::Project& project, int samplesPerInterval) {
-    JsonWriter w;
-    w.text += "{\n  ";
-    w.key("format");
-    w.string("devsurf-interchange");
-    w.text += ",\n  ";
-    w.key("version");
-    w.integer(kInterchangeVersion);
-    w.text += ",\n  ";
-    w.key("units");
-    w.string(project.units);
-    w.text += ",\n  ";
-    w.key("surfaces");
-    w.text += "[";
-    for (std::size_t i = 0; i < project.surfaces.size(); ++i) {
-        w.text += i == 0 ? "\n    " : ",\n    ";
-        writeSurface(w, project.surfaces[i], samplesPerInterval);
+    QJsonArray surfaces;
+    for (const model::CompositeSurface& surface : project.surfaces) {
+        surfaces.append(surfaceObject(surface, samplesPerInterval));
     }
-    w.text += "]\n}\n";
-    return w.text;
+    const QJsonObject root{
+        {"format", "devsurf-interchange"},
+        {"version", kInterchangeVersion},
+        {"units", QString::fromStdString(project.units)},
+        {"surfaces", surfaces},
+    };
+    return QJsonDocument(root).toJson(QJsonDocument::Compact).toStdString();
 }
 
 } // namespace devsurf::io

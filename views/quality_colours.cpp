@@ -10,96 +10,36 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <limits>
 
 namespace devsurf::views {
-
-using model::Vec3;
-
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-// |det(m, da, db)| / (|m| |da| |db|) of the quad a0 a1 b1 b0 (a strip's sampled quad).
-double quadDevelopability(const Vec3& a0, const Vec3& a1, const Vec3& b1, const Vec3& b0) {
-    const Vec3 m = (a0 + a1) * 0.5 - (b0 + b1) * 0.5;
-    const Vec3 da = a1 - a0;
-    const Vec3 db = b1 - b0;
-    const double scale = m.norm() * da.norm() * db.norm();
-    return scale > 0.0 ? std::abs(dot(m, cross(da, db))) / scale : 0.0;
-}
-
-// δ: the distance of the two diagonals over the mean of the two shortest edges.
-double quadFlatness(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
-    const Vec3 u = p2 - p0;
-    const Vec3 v = p3 - p1;
-    const Vec3 n = cross(u, v);
-    double distance = 0.0;
-    if (n.norm() > 0.0) {
-        distance = std::abs(dot(p1 - p0, n)) / n.norm();
-    }
-    double edges[4] = {(p1 - p0).norm(), (p2 - p1).norm(), (p3 - p2).norm(), (p0 - p3).norm()};
-    std::sort(edges, edges + 4);
-    const double mean = 0.5 * (edges[0] + edges[1]);
-    return mean > 0.0 ? distance / mean : 0.0;
-}
-
-} // namespace
 
 bool isPerPoint(ColourBy by) {
     return by == ColourBy::AngleDefect;
 }
 
 std::vector<double> qualityValues(const SurfaceScene& scene, ColourBy by) {
-    std::vector<double> values;
-    if (by == ColourBy::Developability || by == ColourBy::Flatness) {
-        values.reserve(scene.polygons.size());
-        for (const std::vector<int>& polygon : scene.polygons) {
-            if (polygon.size() != 4) {
-                values.push_back(0.0); // triangles of cones and fans are flat
-                continue;
-            }
-            const Vec3& p0 = scene.points[static_cast<std::size_t>(polygon[0])];
-            const Vec3& p1 = scene.points[static_cast<std::size_t>(polygon[1])];
-            const Vec3& p2 = scene.points[static_cast<std::size_t>(polygon[2])];
-            const Vec3& p3 = scene.points[static_cast<std::size_t>(polygon[3])];
-            values.push_back(by == ColourBy::Developability ? quadDevelopability(p0, p1, p2, p3)
-                                                            : quadFlatness(p0, p1, p2, p3));
-        }
-    } else if (by == ColourBy::AngleDefect && scene.pointOrigin.size() == scene.points.size()) {
-        // Angle sums per sampled-mesh vertex; a vertex on an edge used by one polygon only is
-        // on the boundary and has no defect.
-        std::map<int, double> sums;
-        std::map<std::pair<int, int>, int> edgeUses;
-        for (const std::vector<int>& polygon : scene.polygons) {
-            const std::size_t n = polygon.size();
-            for (std::size_t i = 0; i < n; ++i) {
-                const auto at = [&](std::size_t k) {
-                    return scene.points[static_cast<std::size_t>(polygon[k % n])];
-                };
-                const Vec3 e1 = at(i + 1) - at(i);
-                const Vec3 e2 = at(i + n - 1) - at(i);
-                const double denominator = e1.norm() * e2.norm();
-                const int origin = scene.pointOrigin[static_cast<std::size_t>(polygon[i])];
-                if (denominator > 0.0) {
-                    sums[origin] += std::acos(std::clamp(dot(e1, e2) / denominator, -1.0, 1.0));
-                }
-                const int next = scene.pointOrigin[static_cast<std::size_t>(polygon[(i + 1) % n])];
-                ++edgeUses[std::minmax(origin, next)];
-            }
-        }
-        std::map<int, bool> boundary;
-        for (const auto& [edge, uses] : edgeUses) {
-            if (uses == 1) {
-                boundary[edge.first] = true;
-                boundary[edge.second] = true;
-            }
-        }
-        values.reserve(scene.points.size());
-        for (int origin : scene.pointOrigin) {
-            values.push_back(boundary.count(origin) != 0 ? 0.0
-                                                         : std::abs(2.0 * kPi - sums[origin]));
-        }
+    const std::vector<double>* measured = nullptr;
+    switch (by) {
+    case ColourBy::Developability:
+        measured = &scene.polygonDevelopability;
+        break;
+    case ColourBy::Flatness:
+        measured = &scene.polygonFlatness;
+        break;
+    case ColourBy::AngleDefect:
+        measured = &scene.pointAngleDefect;
+        break;
+    case ColourBy::Patch:
+        break;
+    }
+    if (measured == nullptr) {
+        return {};
+    }
+    // Where a measure does not apply (triangles, the boundary) the colour is the scale's bottom.
+    std::vector<double> values(measured->begin(), measured->end());
+    for (double& v : values) {
+        v = std::isnan(v) ? 0.0 : v;
     }
     return values;
 }
@@ -172,6 +112,37 @@ void QualityColouring::update(const std::vector<SurfaceScene>& scenes) {
     m_low = std::max(m_high * 1e-10, 1e-12);
     m_table->SetTableRange(m_low, m_high);
     m_table->Build();
+}
+
+double QualityColouring::valueOfPatch(const std::vector<SurfaceScene>& scenes, int surface,
+                                      model::FaceId face) const {
+    double value = std::numeric_limits<double>::quiet_NaN();
+    if (m_mode == ColourBy::Patch) {
+        return value;
+    }
+    const bool perPoint = isPerPoint(m_mode);
+    std::size_t offset = 0; // of the scene's values in m_values
+    for (const SurfaceScene& scene : scenes) {
+        const std::size_t count = perPoint ? scene.points.size() : scene.polygons.size();
+        if (scene.surface == surface && offset + count <= m_values.size()) {
+            for (std::size_t p = 0; p < scene.polygons.size(); ++p) {
+                if (scene.polygonFace[p] != face) {
+                    continue;
+                }
+                if (!perPoint) {
+                    value = std::isnan(value) ? m_values[offset + p]
+                                              : std::max(value, m_values[offset + p]);
+                    continue;
+                }
+                for (int point : scene.polygons[p]) {
+                    const double v = m_values[offset + static_cast<std::size_t>(point)];
+                    value = std::isnan(value) ? v : std::max(value, v);
+                }
+            }
+        }
+        offset += count;
+    }
+    return value;
 }
 
 std::array<double, 3> QualityColouring::colour(double value) const {

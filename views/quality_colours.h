@@ -19,8 +19,9 @@ class vtkUnsignedCharArray;
 
 namespace devsurf::views {
 
-// Developability and flatness give one value per polygon, the angle defect one per point
-// (0 on the boundary), in the order of the scene's polygons or points.
+// Developability and flatness give one value per polygon, the angle defect one per point, in the
+// order of the scene's polygons or points: the scene's measures (solver/quality, as the Solver
+// panel reports them), with 0 where a measure does not apply (triangles, the boundary).
 std::vector<double> qualityValues(const SurfaceScene& scene, ColourBy by);
 bool isPerPoint(ColourBy by);
 
@@ -35,6 +36,10 @@ public:
     // Measures the scenes and fits the legend's range. Values are concatenated in scene order.
     void update(const std::vector<SurfaceScene>& scenes);
     const std::vector<double>& values() const { return m_values; }
+    // The largest value given to one patch of the scenes last measured (its polygons, or its
+    // polygons' points for the angle defect); NaN when colouring by patch or if it has none.
+    double valueOfPatch(const std::vector<SurfaceScene>& scenes, int surface,
+                        model::FaceId face) const;
     // RGB in 0..1 of a value on the current scale.
     std::array<double, 3> colour(double value) const;
     // Per-point colours (angle defect) for a polydata with the scenes' points in order.

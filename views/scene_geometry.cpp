@@ -6,6 +6,7 @@
 #include "model/pattern/pattern_overlaps.h"
 #include "model/sampled_mesh.h"
 #include "model/strip.h"
+#include "solver/quality/quality_measures.h"
 
 #include <algorithm>
 #include <cmath>
@@ -71,6 +72,37 @@ Vec3 toScene(const Vec2& p) {
     return {p.x, p.y, 0.0};
 }
 
+// The polygons of a strip patch are its sampled quads in the order of u (model::sampleSurface),
+// so the k-th polygon of a patch is segment k of solver::developabilityOfPatches.
+void addQualityMeasures(const model::CompositeSurface& surface, const model::SampledMesh& mesh,
+                        SurfaceScene& scene) {
+    std::map<FaceId, const solver::PatchDevelopability*> byFace;
+    const std::vector<solver::PatchDevelopability> patches =
+        solver::developabilityOfPatches(surface, kSamplesPerInterval);
+    for (const solver::PatchDevelopability& patch : patches) {
+        byFace[patch.face] = &patch;
+    }
+    std::map<FaceId, std::size_t> polygonsSoFar;
+    scene.polygonDevelopability.reserve(scene.polygons.size());
+    for (FaceId face : scene.polygonFace) {
+        const std::size_t k = polygonsSoFar[face]++;
+        const auto patch = byFace.find(face);
+        if (patch == byFace.end()) {
+            scene.polygonDevelopability.push_back(0.0); // cones and planar patches
+        } else {
+            const std::vector<double>& segments = patch->second->segments;
+            scene.polygonDevelopability.push_back(k < segments.size() ? segments[k]
+                                                                      : patch->second->worst);
+        }
+    }
+    scene.polygonFlatness = solver::faceFlatness(mesh); // one polygon per sampled face
+    const std::vector<double> defects = solver::vertexAngleDefects(mesh);
+    scene.pointAngleDefect.reserve(scene.pointOrigin.size());
+    for (int v : scene.pointOrigin) {
+        scene.pointAngleDefect.push_back(defects[static_cast<std::size_t>(v)]);
+    }
+}
+
 } // namespace
 
 SurfaceScene buildSpatialScene(const model::CompositeSurface& surface, int surfaceIndex) {
@@ -113,6 +145,7 @@ SurfaceScene buildSpatialScene(const model::CompositeSurface& surface, int surfa
         const double len = n.norm();
         n = len > 0.0 ? n / len : Vec3(0.0, 0.0, 1.0);
     }
+    addQualityMeasures(surface, mesh, scene);
 
     std::map<EdgeId, model::FoldAssignment> folds;
     for (const model::Crease& crease : model::creasesOf(surface, model::stripsOf(surface), mesh)) {

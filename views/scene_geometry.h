@@ -44,6 +44,14 @@ struct SurfaceScene {
     std::vector<int> pointOrigin;     // per point, 3D only: its vertex of the sampled mesh
     std::vector<std::vector<int>> polygons;
     std::vector<model::FaceId> polygonFace;
+    // 3D only, the quality measures of solver/quality (those the Solver panel reports): per
+    // polygon its patch's developability residual within the polygon's span of u (0 for cones
+    // and planar patches; the largest over a patch's polygons is the panel's value of the patch)
+    // and its flatness δ; per point the angle defect |K| of its sampled-mesh vertex. NaN where a
+    // measure does not apply (triangles for δ, boundary vertices for |K|).
+    std::vector<double> polygonDevelopability;
+    std::vector<double> polygonFlatness;
+    std::vector<double> pointAngleDefect;
     std::vector<EdgeCurve> edges;
     std::vector<std::pair<model::Vec3, model::Vec3>> rulings; // development only
     std::vector<std::pair<model::Vec3, model::Vec3>> outline; // development only

@@ -378,6 +378,14 @@ std::pair<double, double> SceneView::legendRange() const {
     return quality ? std::make_pair(quality->low(), quality->high()) : std::make_pair(0.0, 0.0);
 }
 
+double SceneView::legendValue(const document::Pick& face) const {
+    const QualityColouring* quality = d->scene->quality();
+    if (quality == nullptr || face.kind != document::Pick::Kind::Face) {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    return quality->valueOfPatch(d->scene->scenes(), face.surface, face.id);
+}
+
 void SceneView::setColourBy(ColourBy by) {
     d->scene->setColourBy(by);
     rerender();

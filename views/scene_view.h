@@ -107,6 +107,9 @@ public:
     // The legend's title (empty when colouring by patch) and its range.
     QString legendTitle() const;
     std::pair<double, double> legendRange() const;
+    // The value the colouring gives a patch (a face pick): the largest over its polygons (the
+    // Solver panel's value of the patch for developability), NaN when colouring by patch.
+    double legendValue(const document::Pick& face) const;
     // The number of preview lines shown.
     int previewLineCount() const;
 

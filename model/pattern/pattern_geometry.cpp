@@ -26,37 +26,6 @@ bool pointInPolygon(const Vec2& p, const std::vector<Vec2>& polygon) {
     return inside;
 }
 
-namespace {
-
-int orientation(const Vec2& a, const Vec2& b, const Vec2& c) {
-    const double value = cross2(b - a, c - a);
-    // Relative to the segment's size, so that collinear pieces of a sampled curve count as such.
-    const double scale = std::max((b - a).norm() * (c - a).norm(), 1e-300);
-    if (std::abs(value) <= 1e-12 * scale) {
-        return 0;
-    }
-    return value > 0 ? 1 : -1;
-}
-
-bool onSegment(const Vec2& a, const Vec2& b, const Vec2& p) {
-    return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-           p.y <= std::max(a.y, b.y);
-}
-
-} // namespace
-
-bool segmentsIntersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
-    const int o1 = orientation(a, b, c);
-    const int o2 = orientation(a, b, d);
-    const int o3 = orientation(c, d, a);
-    const int o4 = orientation(c, d, b);
-    if (o1 != o2 && o3 != o4) {
-        return true;
-    }
-    return (o1 == 0 && onSegment(a, b, c)) || (o2 == 0 && onSegment(a, b, d)) ||
-           (o3 == 0 && onSegment(c, d, a)) || (o4 == 0 && onSegment(c, d, b));
-}
-
 double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
     const Vec2 d = b - a;
     const double length2 = dot2(d, d);

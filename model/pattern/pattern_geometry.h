@@ -21,9 +21,6 @@ double signedArea(const std::vector<Vec2>& polygon);
 // Whether p lies inside the closed polygon (even-odd rule).
 bool pointInPolygon(const Vec2& p, const std::vector<Vec2>& polygon);
 
-// Whether the closed segments [a,b] and [c,d] have a point in common.
-bool segmentsIntersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d);
-
 // Distance from p to the segment [a,b].
 double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b);
 

@@ -2,13 +2,24 @@
 
 #include "pattern_geometry.h"
 
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 
 namespace devsurf::model::pattern {
 
 namespace {
+
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+using BgPoint = bg::model::d2::point_xy<double>;
+using BgSegment = bg::model::segment<BgPoint>;
+using BgBox = bg::model::box<BgPoint>;
+using BgPolygon = bg::model::polygon<BgPoint, false, false>; // counter-clockwise, open
 
 // The faces collected for an overlap stop at about this many: enough to name its patches.
 constexpr std::size_t kNamedFaces = 64;
@@ -19,8 +30,6 @@ struct Segment {
     int owner = 0; // which piece (between pieces) or loop (within one)
     int index = 0; // position in its loop
     int loopSize = 0;
-    double minX() const { return std::min(a.x, b.x); }
-    double maxX() const { return std::max(a.x, b.x); }
 };
 
 void addLoop(std::vector<Segment>& segments, const std::vector<Vec2>& loop, int owner) {
@@ -38,24 +47,42 @@ bool neighbours(const Segment& s, const Segment& t) {
     return d <= 1 || d == s.loopSize - 1;
 }
 
-// Every crossing pair of segments, found by a sweep along x; sameOwner: pairs within one owner
-// (else only pairs of different owners).
+BgPoint toBg(const Vec2& p) {
+    return {p.x, p.y};
+}
+
+BgSegment toBg(const Segment& s) {
+    return {toBg(s.a), toBg(s.b)};
+}
+
+// Every crossing pair of segments (in the order of the list), found through an R-tree of their
+// bounding boxes; sameOwner: pairs within one owner (else only pairs of different owners).
+// Stops when visit returns false.
 template <typename Visit>
-void crossings(std::vector<Segment> segments, bool sameOwner, Visit visit) {
-    std::sort(segments.begin(), segments.end(),
-              [](const Segment& s, const Segment& t) { return s.minX() < t.minX(); });
+void crossings(const std::vector<Segment>& segments, bool sameOwner, Visit visit) {
+    using Entry = std::pair<BgBox, std::size_t>;
+    std::vector<Entry> boxes;
+    boxes.reserve(segments.size());
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        boxes.emplace_back(bg::return_envelope<BgBox>(toBg(segments[i])), i);
+    }
+    const bgi::rtree<Entry, bgi::rstar<16>> tree(boxes.begin(), boxes.end());
+    std::vector<Entry> near;
     for (std::size_t i = 0; i < segments.size(); ++i) {
         const Segment& s = segments[i];
-        for (std::size_t j = i + 1; j < segments.size() && segments[j].minX() <= s.maxX(); ++j) {
-            const Segment& t = segments[j];
+        near.clear();
+        tree.query(bgi::intersects(boxes[i].first), std::back_inserter(near));
+        std::sort(near.begin(), near.end(),
+                  [](const Entry& x, const Entry& y) { return x.second < y.second; });
+        for (const Entry& entry : near) {
+            if (entry.second <= i) {
+                continue;
+            }
+            const Segment& t = segments[entry.second];
             if ((s.owner == t.owner) != sameOwner || (sameOwner && neighbours(s, t))) {
                 continue;
             }
-            if (std::max(s.a.y, s.b.y) < std::min(t.a.y, t.b.y) ||
-                std::max(t.a.y, t.b.y) < std::min(s.a.y, s.b.y)) {
-                continue;
-            }
-            if (segmentsIntersect(s.a, s.b, t.a, t.b) && !visit(s, t)) {
+            if (bg::intersects(toBg(s), toBg(t)) && !visit(s, t)) {
                 return;
             }
         }
@@ -93,21 +120,29 @@ bool negligibleCrossing(const Segment& s, const Segment& t, double size) {
     return nearEnd(s) && nearEnd(t);
 }
 
-bool insidePiece(const Vec2& p, const PatternPiece& piece) {
-    if (!pointInPolygon(p, piece.outline)) {
-        return false;
+// The piece's area: its outline with its holes.
+BgPolygon polygonOf(const PatternPiece& piece) {
+    BgPolygon polygon;
+    for (const Vec2& p : piece.outline) {
+        polygon.outer().push_back(toBg(p));
     }
-    return std::none_of(piece.holes.begin(), piece.holes.end(),
-                        [&p](const std::vector<Vec2>& hole) { return pointInPolygon(p, hole); });
+    for (const std::vector<Vec2>& hole : piece.holes) {
+        polygon.inners().emplace_back();
+        for (const Vec2& p : hole) {
+            polygon.inners().back().push_back(toBg(p));
+        }
+    }
+    bg::correct(polygon); // orientation of the outline and the holes as Boost.Geometry wants
+    return polygon;
 }
 
 // Mesh faces lying on top of other faces of the same piece: a face's centroid inside another
 // face, farther than `margin` from its edges. The outline of a development that winds round
 // more than once and lands exactly on itself (a band wound one and a half times, developed
 // into a ring whose second half covers the first) runs along itself without crossing, which
-// the sweep above cannot tell from a seam that closes up. Faces are binned in a grid of about
-// their mean size, so each centroid meets only the faces near it. Appends the patches of both
-// faces of every such pair to `faces`.
+// the crossing test above cannot tell from a seam that closes up. An R-tree of the faces' boxes
+// gives each centroid only the faces near it. Appends the patches of both faces of every such
+// pair to `faces`.
 bool stackedFaces(const PatternPiece::Mesh& mesh, double margin, std::vector<FaceId>& faces) {
     const std::size_t count = mesh.faces.size();
     if (count < 2) {
@@ -120,8 +155,6 @@ bool stackedFaces(const PatternPiece::Mesh& mesh, double margin, std::vector<Fac
         Vec2 hi{-1e300, -1e300};
     };
     std::vector<Face> sampled(count);
-    Vec2 lo{1e300, 1e300};
-    double extent = 0.0;
     for (std::size_t f = 0; f < count; ++f) {
         Face& face = sampled[f];
         for (int v : mesh.faces[f]) {
@@ -131,32 +164,24 @@ bool stackedFaces(const PatternPiece::Mesh& mesh, double margin, std::vector<Fac
             face.lo = {std::min(face.lo.x, p.x), std::min(face.lo.y, p.y)};
             face.hi = {std::max(face.hi.x, p.x), std::max(face.hi.y, p.y)};
         }
-        lo = {std::min(lo.x, face.lo.x), std::min(lo.y, face.lo.y)};
-        extent += std::max(face.hi.x - face.lo.x, face.hi.y - face.lo.y);
     }
-    const double cell = std::max(extent / static_cast<double>(count), 1e-9);
-    const auto cellOf = [&](const Vec2& p) {
-        return std::make_pair(static_cast<long long>((p.x - lo.x) / cell),
-                              static_cast<long long>((p.y - lo.y) / cell));
-    };
-    std::map<std::pair<long long, long long>, std::vector<std::size_t>> grid;
+    using Entry = std::pair<BgBox, std::size_t>;
+    std::vector<Entry> boxes;
+    boxes.reserve(count);
     for (std::size_t f = 0; f < count; ++f) {
-        const auto [i0, j0] = cellOf(sampled[f].lo);
-        const auto [i1, j1] = cellOf(sampled[f].hi);
-        for (long long i = i0; i <= i1; ++i) {
-            for (long long j = j0; j <= j1; ++j) {
-                grid[{i, j}].push_back(f);
-            }
-        }
+        boxes.emplace_back(BgBox(toBg(sampled[f].lo), toBg(sampled[f].hi)), f);
     }
+    const bgi::rtree<Entry, bgi::rstar<16>> tree(boxes.begin(), boxes.end());
+    std::vector<Entry> near;
     bool found = false;
     for (std::size_t f = 0; f < count && faces.size() < kNamedFaces; ++f) {
         const Vec2& c = sampled[f].centroid;
-        const auto near = grid.find(cellOf(c));
-        if (near == grid.end()) {
-            continue;
-        }
-        for (std::size_t g : near->second) {
+        near.clear();
+        tree.query(bgi::intersects(toBg(c)), std::back_inserter(near));
+        std::sort(near.begin(), near.end(),
+                  [](const Entry& x, const Entry& y) { return x.second < y.second; });
+        for (const Entry& entry : near) {
+            const std::size_t g = entry.second;
             const std::vector<Vec2>& polygon = sampled[g].polygon;
             if (g == f || !pointInPolygon(c, polygon)) {
                 continue;
@@ -236,15 +261,8 @@ bool piecesOverlap(const PatternPiece& a, const PatternPiece& b) {
     if (hiA.x < loB.x || hiB.x < loA.x || hiA.y < loB.y || hiB.y < loA.y) {
         return false;
     }
-    std::vector<Segment> segments;
-    addLoop(segments, a.outline, 0);
-    addLoop(segments, b.outline, 1);
-    bool crossing = false;
-    crossings(segments, false, [&crossing](const Segment&, const Segment&) {
-        crossing = true;
-        return false;
-    });
-    return crossing || insidePiece(a.outline.front(), b) || insidePiece(b.outline.front(), a);
+    // Touching counts, as a shared cut would cut both pieces.
+    return bg::intersects(polygonOf(a), polygonOf(b));
 }
 
 std::vector<PatternOverlap> overlapsBetweenPieces(const std::vector<PatternPiece>& pieces) {

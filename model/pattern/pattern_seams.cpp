@@ -3,19 +3,17 @@
 #include "pattern_geometry.h"
 #include "pattern_labels.h"
 
+#include <boost/geometry.hpp>
+
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 namespace devsurf::model::pattern {
 
 namespace {
 
-Vec2 rightNormal(const Vec2& from, const Vec2& to) {
-    const Vec2 d = to - from;
-    const double length = d.norm();
-    return length > 0.0 ? Vec2(d.y / length, -d.x / length) : Vec2();
-}
+// A mitred corner of the offset reaches at most this many widths from its polyline corner.
+constexpr double kMitreLimit = 4.0;
 
 // The point at arc length s along a polyline whose vertex arc lengths are given.
 Vec2 atLength(const std::vector<Vec2>& points, const std::vector<double>& lengths, double s) {
@@ -29,28 +27,36 @@ Vec2 atLength(const std::vector<Vec2>& points, const std::vector<double>& length
     return points.back();
 }
 
+std::vector<double> arcLengths(const std::vector<Vec2>& points) {
+    std::vector<double> lengths{0.0};
+    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+        lengths.push_back(lengths.back() + (points[i + 1] - points[i]).norm());
+    }
+    return lengths;
+}
+
 // What replaces a run of the outline, its two end points included.
 std::vector<Vec2> replacement(const std::vector<Vec2>& run, const PatternOptions& options) {
     const double width = options.seamAllowance;
     const std::vector<Vec2> offset = offsetPolyline(run, width);
     std::vector<Vec2> result{run.front()};
-    if (!options.glueTabs) {
+    if (offset.size() < 2) {
+        // Nothing to offset (a run of one point): the outline stays.
+    } else if (!options.glueTabs) {
         result.insert(result.end(), offset.begin(), offset.end());
     } else {
-        std::vector<double> lengths{0.0};
-        for (std::size_t i = 0; i + 1 < run.size(); ++i) {
-            lengths.push_back(lengths.back() + (run[i + 1] - run[i]).norm());
-        }
-        const double total = lengths.back();
+        const double total = arcLengths(run).back();
+        const std::vector<double> lengths = arcLengths(offset);
+        const double offsetTotal = lengths.back();
         // Sides at 45° where the seam is long enough, steeper on short seams.
-        const double inset = std::min(width, 0.25 * total);
+        const double inset = std::min({width, 0.25 * total, 0.5 * offsetTotal});
         result.push_back(atLength(offset, lengths, inset));
-        for (std::size_t i = 1; i + 1 < run.size(); ++i) {
-            if (lengths[i] > inset && lengths[i] < total - inset) {
+        for (std::size_t i = 1; i + 1 < offset.size(); ++i) {
+            if (lengths[i] > inset && lengths[i] < offsetTotal - inset) {
                 result.push_back(offset[i]);
             }
         }
-        result.push_back(atLength(offset, lengths, total - inset));
+        result.push_back(atLength(offset, lengths, offsetTotal - inset));
     }
     result.push_back(run.back());
     return result;
@@ -59,27 +65,71 @@ std::vector<Vec2> replacement(const std::vector<Vec2>& run, const PatternOptions
 } // namespace
 
 std::vector<Vec2> offsetPolyline(const std::vector<Vec2>& points, double width) {
-    std::vector<Vec2> result;
-    const std::size_t n = points.size();
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::optional<Vec2> before =
-            i > 0 ? std::optional<Vec2>(rightNormal(points[i - 1], points[i])) : std::nullopt;
-        const std::optional<Vec2> after =
-            i + 1 < n ? std::optional<Vec2>(rightNormal(points[i], points[i + 1])) : std::nullopt;
-        Vec2 normal = before ? *before : (after ? *after : Vec2());
-        if (before && after) {
-            const Vec2 sum = *before + *after;
-            const double length = sum.norm();
-            // A mitre keeps both neighbouring segments at the full width; it is capped so that a
-            // sharp corner does not shoot out.
-            if (length > 1e-12) {
-                normal = sum * (1.0 / length);
-                normal = normal * (1.0 / std::max(0.25, dot2(normal, *after)));
+    namespace bg = boost::geometry;
+    using Point = bg::model::d2::point_xy<double>;
+    bg::model::linestring<Point> line;
+    for (const Vec2& p : points) {
+        if (line.empty() || !(p == Vec2(bg::get<0>(line.back()), bg::get<1>(line.back())))) {
+            line.emplace_back(p.x, p.y);
+        }
+    }
+    const double distance = std::abs(width);
+    if (line.size() < 2 || !(distance > 0.0)) {
+        return {};
+    }
+    // The one-sided buffer: the area between the polyline and its offset, bounded by the
+    // polyline on one side (distance 0) and the offset on the other.
+    bg::model::multi_polygon<bg::model::polygon<Point>> area;
+    const bg::strategy::buffer::distance_asymmetric<double> sides(width < 0.0 ? distance : 0.0,
+                                                                  width < 0.0 ? 0.0 : distance);
+    bg::buffer(line, area, sides, bg::strategy::buffer::side_straight(),
+               bg::strategy::buffer::join_miter(kMitreLimit), bg::strategy::buffer::end_flat(),
+               bg::strategy::buffer::point_square());
+    if (area.empty()) {
+        return {};
+    }
+    const auto& largest =
+        *std::max_element(area.begin(), area.end(),
+                          [](const auto& a, const auto& b) { return bg::area(a) < bg::area(b); });
+    // Its boundary runs along the polyline and back along the offset: the offset is the part
+    // of the closed ring away from the polyline, from the ring's first point on the polyline.
+    std::vector<Point> ring(largest.outer().begin(), largest.outer().end() - 1);
+    std::vector<bool> far(ring.size());
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+        far[i] = bg::distance(ring[i], line) > 0.5 * distance;
+    }
+    const auto near = std::find(far.begin(), far.end(), false);
+    if (near == far.end()) {
+        return {};
+    }
+    const std::size_t start = static_cast<std::size_t>(near - far.begin());
+    std::vector<Vec2> offset;
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+        const std::size_t i = (start + k) % ring.size();
+        const Vec2 p(bg::get<0>(ring[i]), bg::get<1>(ring[i]));
+        if (far[i] && (offset.empty() || !(offset.back() == p))) {
+            offset.push_back(p);
+        }
+    }
+    // The buffer adds points along straight sides (where its pieces were joined): drop those
+    // between collinear neighbours.
+    std::vector<Vec2> corners;
+    for (std::size_t i = 0; i < offset.size(); ++i) {
+        if (i > 0 && i + 1 < offset.size()) {
+            const Vec2 u = offset[i] - corners.back();
+            const Vec2 v = offset[i + 1] - offset[i];
+            if (std::abs(cross2(u, v)) <= 1e-12 * u.norm() * v.norm() && dot2(u, v) > 0.0) {
+                continue;
             }
         }
-        result.push_back(points[i] + normal * width);
+        corners.push_back(offset[i]);
     }
-    return result;
+    offset = std::move(corners);
+    if (offset.size() >= 2 &&
+        (offset.front() - points.front()).norm() > (offset.back() - points.front()).norm()) {
+        std::reverse(offset.begin(), offset.end());
+    }
+    return offset;
 }
 
 void addSeamAllowances(PieceBuild& build, const PatternOptions& options) {

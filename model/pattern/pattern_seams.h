@@ -9,7 +9,10 @@
 namespace devsurf::model::pattern {
 
 // The polyline offset by width to the right of its direction (outwards for a counter-clockwise
-// outline), with mitred corners.
+// outline; to the left for a negative width), from the offset of its first point to that of its
+// last, with mitred corners (at most 4 widths out) and the loops of concave corners cut off: the
+// far side of Boost.Geometry's one-sided buffer of the polyline. Empty for fewer than two
+// distinct points or no width.
 std::vector<Vec2> offsetPolyline(const std::vector<Vec2>& points, double width);
 
 // On one side of every seam (SeamRun::primary) the outline is replaced by a strip of

@@ -14,9 +14,9 @@ namespace devsurf::solver {
 // Rows may carry constant scales sᵣ (scaleRowsAt): sᵣ(⟨u, v⟩ − t) with sᵣ = 1/(|u| |v|) taken
 // at a reference state, so that near it a row measures the cosine of the angle between its two
 // sides: dimensionless, and comparable between thin and wide strips, fine and coarse control
-// spacings and models of any size. (The exact cosine, rescaled at every x, was measured worse:
-// it is invariant to the scale of the points and the normals, and the iteration drifted along
-// those directions until it broke down.)
+// spacings and models of any size. The scales are constants, not the exact cosine rescaled at
+// every x: that is invariant to the scale of the points and normals, and the iteration drifted
+// along those directions (docs/tuning.md).
 class BilinearTerm : public Term {
 public:
     static constexpr int kMaxDimension = 4;
@@ -46,9 +46,8 @@ public:
 private:
     // Residual and Jacobian values of row r; returns the number of Jacobian values written.
     int evaluateOne(std::size_t r, const double* x, double* residual, double* jacobian) const;
-    // The same for a dimension D known at compile time (0: m_dimension). With D = 3, points of
-    // space, the loops over coordinates are unrolled: assembly ms per iteration fig8-sheet
-    // 0.103 → 0.096, fig12-annulus 0.57 → 0.53.
+    // The same for a dimension D known at compile time (0: m_dimension), so that the loops over
+    // the coordinates of points of space (D = 3) are unrolled (docs/tuning.md).
     template <int D>
     int evaluateOneOf(std::size_t r, const double* x, double* residual, double* jacobian) const;
     // The two sides of row r at x.

@@ -14,9 +14,8 @@ namespace devsurf::solver {
 // crease (and of the geodesic condition (8) with m negated): those splines have unit length at
 // u = 0 only, and on a curved strip their length varies along it, so ⟨d, n + m⟩ = 0 does not
 // say what (7) says. The weights are constants between two calls of weighSidesAt, so the rows
-// stay bilinear in the iteration (measured: the exact ⟨d, |m| n + |n| m⟩ with its full
-// Jacobian diverged on the lifted Fig. 8 turned by 30° in 20 moves, which the bilinear rows
-// solve to 3e-16). See FormulationOptions::weighCreaseNormals for when they are taken.
+// stay bilinear in the iteration; the exact form with its full Jacobian diverged
+// (docs/tuning.md). See FormulationOptions::weighCreaseNormals for when they are taken.
 //
 // Rows may carry constant scales s = 1/(|w_n n + w_m m| |d|) taken at a reference state
 // (scaleRowsAt), kept within a factor 100 of the median, as BilinearTerm does.

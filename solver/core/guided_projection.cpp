@@ -107,7 +107,8 @@ struct GuidedProjection::Impl {
     // times a value whose factorisation failed (see the retry in solve()), so that a solve or a
     // drag does not factorise twice in every iteration.
     double eps2Floor = 0.0;
-    // The factor by which rejected steps raised ε₂ (Options::levenbergMarquardt,
+    ExperimentalOptions experimental;
+    // The factor by which rejected steps raised ε₂ (ExperimentalOptions::levenbergMarquardt,
     // rejectWorseSteps), kept between solve() calls so that a session's step(1) continues
     // where the last one stopped.
     double eps2Boost = 1.0;
@@ -128,7 +129,7 @@ struct GuidedProjection::Impl {
     }
 
     bool mayReuseFactorization(const Problem& problem, const Options& options) const {
-        return options.reuseFactorization > 0 && !options.baseline && factorReusable &&
+        return options.reuseFactorization > 0 && !experimental.baseline && factorReusable &&
                reusesInARow < options.reuseFactorization &&
                factorFixedRevision == problem.fixedRevision() &&
                cholesky.flops() >= options.reuseFactorizationMinimumFlops;
@@ -369,6 +370,17 @@ void GuidedProjection::invalidate() {
     m_impl->reset();
 }
 
+void GuidedProjection::setExperimentalOptions(const ExperimentalOptions& experimental) {
+    // The baseline keeps no symbolic factorisation and the boost of rejected steps belongs to
+    // the variant that raised it: start afresh.
+    m_impl->reset();
+    m_impl->experimental = experimental;
+}
+
+const ExperimentalOptions& GuidedProjection::experimentalOptions() const {
+    return m_impl->experimental;
+}
+
 const NormalEquations* GuidedProjection::normalEquations() const {
     return m_impl->equations.isBuilt() ? &m_impl->equations : nullptr;
 }
@@ -387,6 +399,7 @@ Summary GuidedProjection::solve(const Problem& problem, std::vector<double>& x,
 
 Summary GuidedProjection::solve(const Problem& problem, double* x, const Options& options) {
     Impl& d = *m_impl;
+    const ExperimentalOptions& experimental = d.experimental;
     const auto totalStart = Clock::now();
     Summary summary;
     const int n = problem.variableCount();
@@ -409,8 +422,9 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
 
     // Structure: reuse while the problem structure (and the factorisation method) is unchanged.
     auto analysisStart = Clock::now();
-    const bool reusable = d.equations.matches(problem) &&
-                          (options.baseline || (d.analysed && d.method == options.factorization));
+    const bool reusable =
+        d.equations.matches(problem) &&
+        (experimental.baseline || (d.analysed && d.method == options.factorization));
     if (!reusable) {
         d.analysed = false;
         d.eps2Floor = 0.0;
@@ -439,7 +453,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         return summary;
     }
     double pendingEvaluationMs = elapsedMs(evaluationStart);
-    if (!reusable && !options.baseline) {
+    if (!reusable && !experimental.baseline) {
         analysisStart = Clock::now();
         if (!d.analyseCached(problem, options, summary)) {
             d.reset();
@@ -472,7 +486,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
                               d.equations.maxConstraintResidual());
         stats.proximity = proximityWeight(options, d.equations.maxConstraintResidual());
         if (eps2Boost > 1.0) {
-            stats.eps2 = options.levenbergMarquardt
+            stats.eps2 = experimental.levenbergMarquardt
                              ? eps2Boost * stats.eps2
                              : std::min(std::max(options.eps2, stats.eps2), eps2Boost * stats.eps2);
         }
@@ -481,9 +495,10 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         }
         stats.assemblyMs = pendingEvaluationMs;
         auto step = [&] {
-            return options.baseline ? d.baselineStep(problem, stats.eps1, options, stats, summary)
-                                    : d.cachedStep(problem, stats.eps1, stats, summary,
-                                                   options.reuseFactorization > 0);
+            return experimental.baseline
+                       ? d.baselineStep(problem, stats.eps1, options, stats, summary)
+                       : d.cachedStep(problem, stats.eps1, stats, summary,
+                                      options.reuseFactorization > 0);
         };
         bool stepped = d.mayReuseFactorization(problem, options)
                            ? d.reusedStep(problem, stats.eps1, stats, summary)
@@ -538,8 +553,9 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         const double meritBefore = d.equations.constraintMerit();
         const bool finite = allFinite(d.xNew) && d.equations.evaluate(problem, d.xNew.data());
         const bool worse = finite && d.equations.constraintMerit() > meritBefore;
-        if ((worse && options.levenbergMarquardt) ||
-            (worse && options.rejectWorseSteps && stats.eps1 == 0.0 && stats.eps2 < options.eps2)) {
+        if ((worse && experimental.levenbergMarquardt) ||
+            (worse && experimental.rejectWorseSteps && stats.eps1 == 0.0 &&
+             stats.eps2 < options.eps2)) {
             // Keep x_k (evaluated again: the equations hold the rejected iterate) and damp more.
             stats.rejected = true;
             stats.stepNorm = 0.0;
@@ -580,7 +596,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
     summary.tolerance = options.reportTolerance;
     summary.toleranceReached = summary.finalMaxConstraintResidual <= options.reportTolerance;
     summary.supernodal = d.cholesky.isSupernodal();
-    summary.factorizedInPlace = !options.baseline && d.cholesky.factorizesInPlace();
+    summary.factorizedInPlace = !experimental.baseline && d.cholesky.factorizesInPlace();
     std::copy(d.x.begin(), d.x.end(), x);
     summary.totalMs = elapsedMs(totalStart);
     return summary;

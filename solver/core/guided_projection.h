@@ -1,5 +1,6 @@
 #pragma once
 
+#include "solver/core/experimental_options.h"
 #include "solver/core/options.h"
 #include "solver/core/summary.h"
 
@@ -34,6 +35,10 @@ public:
 
     // Drops the cached structure and symbolic factorisation.
     void invalidate();
+
+    // Variants for the benchmark and the tests (none by default); they apply to later solves.
+    void setExperimentalOptions(const ExperimentalOptions& experimental);
+    const ExperimentalOptions& experimentalOptions() const;
 
     // The cached linearised system (for tests and diagnostics); null before the first solve.
     const NormalEquations* normalEquations() const;

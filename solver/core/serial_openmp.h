@@ -6,14 +6,10 @@ namespace devsurf::solver {
 // lives on that thread (see serial_openmp.cpp).
 //
 // Debian's CHOLMOD is built with OpenMP: its supernodal factorisation and solve open parallel
-// regions of a fixed four threads (CHOLMOD_OMP_NUM_THREADS), several per supernode, whatever
-// the machine has, and the BLAS it calls is single-threaded. Those threads spent more time
-// waking each other than computing (the 40,200-variable annulus: 135 ms per factorisation,
-// 50 ms on one thread). Keeping the regions inactive (OpenMP's max-active-levels 0) still
-// left libgomp building a team of one for every region and waking its barrier with a futex
-// system call at the end: 139 system calls per factorisation of fig8-sheet. Run directly,
-// factorisation ms per iteration: fig8-sheet 0.132 → 0.094, fig12-annulus 0.70 → 0.55,
-// large-annulus 32.5 → 27.3.
+// regions of a fixed four threads, several per supernode, whatever the machine has, and the
+// BLAS it calls is single-threaded. Those threads spent more time waking each other than
+// computing, and even inactive regions cost libgomp a team and a futex call each; run directly
+// the factorisation is faster (docs/tuning.md).
 class SerialOpenMpRegions {
 public:
     SerialOpenMpRegions();

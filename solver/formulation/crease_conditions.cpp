@@ -1,6 +1,7 @@
 #include "crease_conditions.h"
 
 #include "model/creases.h"
+#include "model/derived_geometry.h"
 #include "model/sampled_mesh.h"
 #include "solver/formulation/point_combinations.h"
 
@@ -84,8 +85,7 @@ int addCreaseConditions(const model::CompositeSurface& surface,
     if (!any) {
         return 0;
     }
-    for (const model::Crease& crease :
-         model::creasesOf(surface, strips, model::sampleSurface(surface, 2))) {
+    for (const model::Crease& crease : model::DerivedGeometry::of(surface, 2)->creases()) {
         creases.emplace(crease.edge, crease);
     }
     // Straight creases are formulated after the others, once their normals' block exists.

@@ -26,8 +26,7 @@ bool isDevelopableStart(const model::Strip& strip, double limit = kDevelopableSt
 // is. The cubic C² space of the paper cannot represent, e.g., the normal of a generalised
 // cylinder over a C² cubic, so the solver had to move such designs. A strip that is not
 // developable at the start gets the cubic C² space (`exact` false): from rough starts it
-// converged better (measured from 0.1 % noise on the cylinder: det 5e-15 against 2e-6 in the
-// exact space).
+// converges better (docs/tuning.md).
 model::SplineSpace normalSplineSpace(const model::SplineSpace& curves, bool exact);
 
 // A strip that is not developable at the start gets the least-squares fit of its unit normals
@@ -35,25 +34,12 @@ model::SplineSpace normalSplineSpace(const model::SplineSpace& curves, bool exac
 // for it: sessions do, FormulationOptions::linearNoisyStartNormals): where that fit misses
 // them by kNoisyStartNormals or more (root mean square of the difference, about an angle in rad),
 // the best linear field p + u q to them is fitted instead (linear fields lie in every spline
-// space). The noise of a rough start grows in the curves' derivatives, and the first step then
-// had to turn normals that zig-zag along the strip: it overshot (the annulus from 1 % of its
-// diameter: largest residual 0.8 → 3.4, most of it the normal splines' unit rows) and the next
-// five iterations recovered. A strip that really bends has normals the spline fits closely
-// (the curved fold of tst_crease_conditions: misfit 0.002; the annulus from 1 %: 0.08 on average,
-// up to 0.25). Measured with devsurf-bench --study MODEL --session (10 seeds, 10 iterations),
-// det worst without → with: the annulus from 1 % of its diameter 3.8e-4 → 9.9e-11 (every seed
-// within 1e-8; rulings 0.34 → 0.38; over 40 seeds 0.81 → 1.1e-3, fold-overs in 4 → 1 seeds);
-// the other examples, fig6, fig8 and Fig. 13 from 10 % edge noise and 1 % at most 2.1e-10 as
-// before, their creases folding no more. Limits of 0.03 and 0.06: the annulus at 9.2e-11 and
-// 8.7e-9; 0.02: Fig. 13's creases folded 1.06 times the start's noise (0.40 before); 0.01:
-// fig6's 0.90 (0.28). A linear field for every strip whose sampled normals merely turned
-// quickly (second differences, threshold 0.02) failed 10 of 20 seeds of that curved fold from
-// 0.2 %. Smoothing splines (second differences of the control normals at weight 10 … 1e6)
-// left the annulus at 7.5e-4 … 1.9e-7.
+// space). The noise of a rough start grows in the curves' derivatives, and a first step that
+// has to turn normals zig-zagging along the strip overshoots; a strip that really bends has
+// normals the spline fits closely. The limit and the alternatives tried: docs/tuning.md.
 inline constexpr double kNoisyStartNormals = 0.04;
 // The linear field is used only where it stays this far from zero on [0, 1] (where the sampled
-// normals spread by more than about 150°). 0.5 kept the noisy fit on strips that needed the
-// linear one: the annulus from 1 % at 6.4e-3.
+// normals spread by more than about 150°; docs/tuning.md).
 inline constexpr double kLinearStartNormalMinimum = 0.25;
 
 // Initial control normals of a strip's normal spline `normalCurve` (its space; its control

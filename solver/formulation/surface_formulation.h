@@ -34,68 +34,54 @@ struct ControlPointHandle {
     model::Vec3 target; // model coordinates
 };
 
+// The choices of a formulation. The defaults are the configuration the benchmark times (the
+// paper's, but with the exact normal space); the sessions (solver/session) and
+// useRoughStartConfiguration change them. The measurements behind them: docs/tuning.md.
 struct FormulationOptions {
     // (4) with the first-derivative points a¹₀, a¹₁, b¹₀, b¹₁ of every collocation value as
     // auxiliary variables tied to the control points by linear relations (as the paper does),
-    // instead of substituting those relations into (4). Measured slower at equal quality (see
-    // the benchmark), so off by default.
+    // instead of substituting those relations into (4). Off: slower at equal quality.
     bool auxiliaryDerivativePoints = false;
     // Collocation values of (4) per interval; 0 means 3m − 2, which makes the strip exactly
     // developable (det(a−b, a′, b′) has degree 3m − 3 per interval, docs/math.md §2).
     int developabilityValuesPerInterval = 0;
 
     // Scale every row of (4), of planar faces, of cone normals and of the crease conditions
-    // (docs/math.md §5) by 1/(|n| |d|) of its two
-    // sides at the reference state (BilinearTerm::scaleRowsAt): near it a row then measures
-    // the cosine of an angle, so a residual of 1e-8 means the same on every strip whatever its
-    // width, control spacing or the model's size. Off by default: measured from 0.1 % noise
-    // (3 seeds, 10 iterations) it helped the sheet (det 2e-15 against 2e-11) and the annulus
-    // (9e-14 against 1e-7) and kept rulings longer, but the cylinder stalled at 1e-5 (against
-    // 5e-15) and one seed of the mixed example degenerated. Together with the proximity to the
-    // start it is part of useRoughStartConfiguration: without it that configuration ended at
-    // det 0.40 on the annulus from 1 % of the diameter (5.5e-3 with it) and 2.2e-6 on the
-    // cylinder from 0.1 % (3e-8 with it).
+    // (docs/math.md §5) by 1/(|n| |d|) of its two sides at the reference state
+    // (BilinearTerm::scaleRowsAt): near it a row then measures the cosine of an angle, so a
+    // residual of 1e-8 means the same on every strip whatever its size. Off by default (the
+    // cylinder stalls with it); part of useRoughStartConfiguration.
     bool normalizedRows = false;
 
     // The unit of the state's coordinates, as a fraction of the diameter for the mean segment
     // of the control polygons. The constraint rows are dimensionless, so their Jacobian grows
-    // as one over the control spacing; fairness, ε₂ and the pull towards the start are
-    // measured in the state's unit. With the diameter as the unit, a design whose control
-    // polygons are five times finer has a regularisation 25 times weaker against its
-    // constraints. So the unit is the diameter, or, where the mean control segment
-    // (meanControlSpacing) is shorter than this fraction of the diameter, that segment
-    // divided by it: a finer design is regularised like one whose segments are this fraction
-    // of its diameter. 0 (the default, the paper's configuration the benchmark times) keeps
-    // the diameter; sessions use kSessionControlSpacingUnit.
+    // as one over the control spacing, while fairness, ε₂ and the pull towards the start are
+    // measured in the state's unit: a finer design would be regularised more weakly. The unit
+    // is the diameter, or, where the mean control segment (meanControlSpacing) is shorter than
+    // this fraction of the diameter, that segment divided by it. 0 (the default) keeps the
+    // diameter; sessions use kSessionControlSpacingUnit.
     double controlSpacingUnit = 0.0;
 
     // Noisy unit normals of a strip that is not developable at the start are replaced by their
-    // best linear field (fitStartNormals, kNoisyStartNormals). Off by default, the paper's
-    // configuration the benchmark times; sessions turn it on.
+    // best linear field (fitStartNormals, kNoisyStartNormals). Off by default; sessions turn it
+    // on.
     bool linearNoisyStartNormals = false;
 
-    // Guards against degenerate solutions, relative to the reference state (the start of the
-    // solve, see setReferenceState): every sampled ruling |a(u) − b(u)| stays at least
-    // rulingGuard times its reference length, and every sampled curve speed |a′(u)| at least
-    // speedGuard times the smaller of its reference speed and the curve's mean reference
-    // speed. Inactive (zero rows) while satisfied, so a valid design is not moved; 0 disables.
-    // Off by default: measured with 0.5 on the sheet and the annulus from 1 % noise, they keep
-    // the rulings above half their length but the iteration then does not converge in 10
-    // iterations (normalised det 0.56–0.99 instead of 1e-5 on the sheet). With the proximity
-    // to the start (useRoughStartConfiguration: 0.3, 0.15, weight 0.1) they are inactive on
-    // every start measured except the annulus from 1 % of the diameter, where they keep the
-    // rulings at 0.30 of their length instead of 0.005 (det 1.9e-2 instead of 5.5e-3; weight
-    // 0.3: rulings 0.17, 0.03: 0.11, speed guard 0.3: rulings 0.19).
+    // Guards against degenerate solutions, relative to the reference state (see
+    // setReferenceState): every sampled ruling |a(u) − b(u)| stays at least rulingGuard times
+    // its reference length, and every sampled curve speed |a′(u)| at least speedGuard times the
+    // smaller of its reference speed and the curve's mean reference speed. Inactive (zero rows)
+    // while satisfied, so a valid design is not moved; 0 disables. Off by default: alone they
+    // keep rulings long but stop the convergence; useRoughStartConfiguration uses 0.3, 0.15,
+    // weight 0.1.
     double rulingGuard = 0.0;
     double speedGuard = 0.0;
     double guardWeight = 1.0;
 
     // Fairness of the change x − x_ref (x_ref: the reference state) instead of fairness of x,
     // and the soft length of the normal spline's control normals kept at their reference
-    // lengths. Off by default: it leaves a rough start's noise in place, and measured from
-    // 0.1 % noise on the sheet the rulings then collapsed (det 6e-3 instead of 1e-13). Valid
-    // designs stay put either way, because ε₁ is capped by the constraint residual
-    // (Options::eps1ResidualFactor). Meant for drags re-based with setReferenceState.
+    // lengths. Meant for drags re-based with setReferenceState. Off by default: it leaves a
+    // rough start's noise in place and its rulings can collapse.
     bool relativeFairness = false;
 
     // Weight of the pull of every point towards the reference state (a family of role
@@ -108,10 +94,7 @@ struct FormulationOptions {
     // drag keeps the rest of the design where it was with it (creaseDragSessionOptions).
     double proximityEnergyWeight = 0.0;
     // The same for the control normals of the normal splines (towards their reference values).
-    // Off: measured, anchoring the normals makes the iteration satisfy (4) by moving the
-    // points into the planes of the stuck normals, i.e. by collapsing rulings (weight 1: the
-    // sheet from 10 % edge noise ended at det 0.12 with rulings at 5 % of their length; 0.1
-    // lost the annulus, det 0.83).
+    // Off: anchored normals make the iteration satisfy (4) by collapsing rulings.
     double normalProximityWeight = 0.0;
 
     // The normal spline of a strip in S(2m − 1, k − 1) of its curves' space S(m, k) (quintic C¹
@@ -121,10 +104,8 @@ struct FormulationOptions {
     // The largest normalised det(a − b, a′, b′) at which a strip counts as developable at the
     // start (isDevelopableStart): such a strip gets the exact normal space and the exact fit of
     // its normal, so the iteration starts at its residual. Solve of a nearly valid design
-    // (SolveSession) raises it to kNearlyValidResidual: with the default, the cubic fit of the
-    // curved fold a drag keeping lengths leaves on the lifted Fig. 8 (sampled det 6.6e-7)
-    // started Solve at 1.1e-4 instead of 3e-8, and its steps wrecked the design (1.1e-2 after
-    // 30 iterations, a point moved by 116 mm); with it, 2.6e-8 after 30 (0.08 mm).
+    // (SolveSession) raises it to kNearlyValidResidual, so that it does not start at a cubic
+    // fit's larger residual.
     double developableStartLimit = kDevelopableStartLimit;
 
     // Constraint weights (the W of (6)).
@@ -136,10 +117,7 @@ struct FormulationOptions {
     double handleWeight = 1.0;
     // Energy weights (multiplied by ε₁ in the iteration, so they act in the first iterations
     // only). Fairness of the point sequences is low: it pulls every curve towards a straight
-    // line, which deforms curved designs (measured: 10 bent the developable cylinder example
-    // to det 0.19, 0.1 keeps it at 1e-15). Fairness of the normal splines' control normals is
-    // high: 10 × ε₁ = 1 → 0.59 keeps neighbouring control normals from flipping against each
-    // other, a degenerate way of satisfying (4) where n(u) vanishes between them.
+    // line, which deforms curved designs.
     double fairnessWeight = 0.1;
     // Weight of the energy that keeps the lengths of every strip's control net (its two
     // control polygons, the segments aᵢbᵢ and the diagonals aᵢbᵢ₊₁; see addStripIsometry)
@@ -150,27 +128,23 @@ struct FormulationOptions {
     // Where isometryWeight is 0: the same rows as damping (TermRole::Damping), weighted by
     // this times ε₂, so that a step changes the net's lengths as reluctantly as ε₂ makes it
     // move any variable, times this weight. 0 (the default) removes them; Solve from a rough
-    // start uses kRoughSolveLengthDamping (see there for the measurements).
+    // start uses kRoughSolveLengthDamping.
     double lengthDampingWeight = 0.0;
+    // Fairness of the normal splines' control normals is high: it keeps neighbouring control
+    // normals from flipping against each other, a degenerate way of satisfying (4) where n(u)
+    // vanishes between them.
     double normalFairnessWeight = 10.0;
     // false: no normal fairness on the strips next to a crease with a condition. Fairness of
     // the control normals pulls a strip towards a plane, and two planar strips meet in a
-    // straight line: a drag that keeps lengths (keepLengthsSessionOptions) then still pulled
-    // every curved fold straight as the isometry energy faded (fig6 lifted 60 mm: bow 0.0 mm
-    // with weight 0.1, 33 mm without).
+    // straight line, so a drag that keeps lengths pulled curved folds straight
+    // (keepLengthsSessionOptions uses false).
     bool normalFairnessAtCreaseConditions = true;
     // The normal splines of the two strips beside a curved fold or a geodesic have unit length
     // at u = 0 only, so the bilinear rows ⟨d, n_L ± n_R⟩ state (7) and (8) only where the two
     // have equal lengths. true: setReferenceState weighs the two normals of every row by their
     // lengths at the reference state (BisectorTerm::weighSidesAt), so that there the rows are
-    // (7) and (8) with unit normals and a valid fold stays where it is (measured: Solve moved
-    // fig6, lifted 60 mm keeping lengths and saved, by 18 % of its diameter; with SolveSession's
-    // relative fairness for nearly valid starts now 3.4e-6). false:
-    // weights 1. SolveSession uses false while something is pulled: over a drag the lengths at
-    // its start go stale, and measured with them fig6 lifted keeping lengths lost its crease's
-    // bow (12 of 30 mm, against 33 with weights 1); weighed again before every iteration the
-    // weights feed back into the lengths, and a valid fold without pins drifted away
-    // (residual 3e-13, 1e-8, 1e-2 over five iterations).
+    // (7) and (8) with unit normals and a valid fold stays where it is. false: weights 1, which
+    // SolveSession uses while something is pulled (the lengths at a drag's start go stale).
     bool weighCreaseNormals = true;
     double unitControlNormalWeight = 0.1;
 
@@ -181,37 +155,25 @@ struct FormulationOptions {
     // Vertex developability (docs/math.md §7): at every interior vertex where a crease meets,
     // the angles between consecutive edges sum to 2π, through a flat copy of the star of its
     // edges' tangent points (see addVertexDevelopability). The rows vanish on an exactly
-    // developable design, so valid designs stay put with it (tst_vertex_developability). Off by
-    // default: measured on the examples from 0.1 % noise (tst_formulation, ε₂ = 1e-3, 10
-    // iterations) it kept det at 1e-8 … 6e-4 instead of ≤ 1e-8 (weight 1; 0.1 and 0.01 did not
-    // help), the rough annulus ended at det 1.7e-2 instead of ≤ 1e-6, and a star lifted to an
-    // angle defect of 0.05 needs ε₂ = 1e-3 (10 iterations: defect 4e-12) or 30 iterations at
-    // ε₂ = 0.01 (4e-15; 10 iterations: 0.8). SolveSession turns it on (with the limits below,
-    // see defaultSessionFormulationOptions).
+    // developable design, so valid designs stay put with it. Off by default (it slows the
+    // convergence from rough starts); SolveSession turns it on with the limits below
+    // (defaultSessionFormulationOptions).
     bool vertexDevelopability = false;
     double vertexDevelopabilityWeight = 1.0;
     // Every spoke of such a star (from the vertex to its edge's tangent point) stays at least
-    // this fraction of its start length (a one-sided guard, inactive while satisfied; 0: none).
-    // Without it the iteration closed a lifted star by shrinking one spoke to a point (defect
-    // 1e-2 left, measured by the angles of the control points).
+    // this fraction of its start length (a one-sided guard, inactive while satisfied; 0: none),
+    // so that the iteration does not close a star by shrinking one spoke to a point.
     double vertexSpokeGuard = 0.5;
     // Where a crease passes through such a star almost straight (a four-spoke star whose two
     // S-edge spokes leave the vertex within this angle, in radians, of opposite directions at
     // the start), the crease is made tangent-continuous there (G¹, see
     // addVertexDevelopability) instead of the star's flat copy; that implies the angle sum 2π.
-    // Measured on the scripted Fig. 8 lift (SolveSession, 20 moves + 10 iterations; the
-    // example's creases then kinked by 0.026 rad at its four crease vertices, now they are
-    // tangent-continuous there, so Solve leaves the flat example put): with flat copies the
-    // drag did not converge (residual 0.36, defect 2.5e-2 … 2.5 rad; with the session's final
-    // ε₁ det 3e-14, defect 1e-13, but rulings at 3 % of their start length); with tangent
-    // continuity det 5e-15, defect 0, rulings 0.78. 0.05 stays below the annulus example's
-    // kinks (0.087 rad; the cylinder's are 0.175), which it keeps through flat copies: valid
-    // designs stay put. 0: flat copies everywhere.
+    // 0.05 stays below the kinks of the annulus example (0.087 rad) and of the cylinder
+    // (0.175), which keep flat copies, so valid designs stay put. 0: flat copies everywhere.
     double vertexSmoothCreaseAngle = 0.05;
     // Only stars whose angle defect at the start is at most this (radians) get rows (the
     // others keep rows scaled to zero): vertex developability is then kept where it holds
-    // rather than imposed on a rough start. See defaultSessionFormulationOptions for measured
-    // values; the default imposes it everywhere.
+    // rather than imposed on a rough start. The default imposes it everywhere.
     double vertexStartDefectLimit = 1e9;
 
     std::vector<VertexHandle> handles;
@@ -225,28 +187,10 @@ struct FormulationOptions {
 
 // The configuration for rough starts (a design dragged far, a noisy import): proximity to the
 // start (Options::proximityFactor 1, threshold 1e-2), rows of (4) normalised to angles
-// (normalizedRows), ε₂ floor 3e-4, ruling and speed guards (0.3, 0.15, weight 0.1). Measured over
-// 10 seeds, 10 iterations, three boundary vertices fixed: det worst, paper's configuration → this
-// one (in brackets: worst shortest ruling and slowest speed relative to the start, paper's → this
-// one):
-//   10 % of the mean edge length
-//     sheet     2.8e-4 → 1.2e-7  (0.65 → 0.95, 0.62 → 0.70)
-//     annulus   0.15   → 2.4e-7  (0.00 → 0.66, 0.00 → 0.67)
-//     cylinder  5.2e-4 → 2.2e-7  (0.69 → 0.90, 0.85 → 0.84)
-//     mixed     2.6e-6 → 7.0e-8  (0.47 → 0.82, 0.32 → 0.59)
-//   1 % of the diameter
-//     sheet     6.6e-3 → 6.2e-7  (0.00 → 0.92, 0.05 → 0.27)
-//     annulus   0.98   → 1.9e-2  (0.00 → 0.30, 0.00 → 0.03)
-//     cylinder  1.2e-3 → 5.2e-7  (0.43 → 0.90, 0.78 → 0.83)
-//     mixed     3.9e-6 → 8.1e-8  (0.37 → 0.83, 0.30 → 0.59)
-// and crease folds over the start's noise angle at most 0.20 (paper's: up to 13.5). The
-// guards act only on the annulus from 1 %: without them 5.5e-3 (0.005, 0.015). From
-// 0.1 % of the diameter (4 seeds) it ends at 3e-9 / 5e-9 / 3e-8 / 1e-16 on the four examples,
-// where the paper's configuration with the same ε₂ = 0.01 ends at 6e-6 / 2e-3 / 7e-5 / 3e-16.
-// Not the default: with ε₂ = 1e-3, which tst_formulation uses from 0.1 %, the paper's
-// configuration reaches 2e-11 … 5e-15 there (the cylinder by shrinking its rulings to 31 %)
-// but this one only 2.6e-4 on the cylinder; with ε₂ = 1e-3 the paper's configuration
-// degenerates on every rough start above (det up to 1, rulings at 0).
+// (normalizedRows), ε₂ floor 3e-4, ruling and speed guards (0.3, 0.15, weight 0.1). It keeps
+// rulings long and ends near the start where the paper's configuration degenerates; not the
+// default, since with a small ε₂ the paper's configuration converges further on mild noise
+// (docs/tuning.md).
 void useRoughStartConfiguration(FormulationOptions& formulation, Options& solver);
 
 // The unit of the state's coordinates for `surface`, whose diameter is `diameter`: the
@@ -334,9 +278,8 @@ public:
     // Scales the unit normals of planar faces and cones and the osculating normals of
     // "straight when unfolded" to unit length at x. Every other row of those normals is
     // homogeneous in them, so this satisfies the unit rows exactly and leaves the others'
-    // zeros; the step's second-order error in the unit rows (|δn|²) is gone. (The strips'
-    // normal splines are left alone: their rows mix both sides of a crease, and normalised
-    // they made rough starts worse, the sheet from 10 % edge noise 4e-16 → 8e-6.)
+    // zeros. The strips' normal splines are left alone: their rows mix both sides of a crease
+    // (docs/tuning.md).
     void normaliseUnitNormals(double* x) const;
 
 private:

@@ -120,9 +120,9 @@ CreaseQuality measureCreaseQuality(const model::CompositeSurface& surface, int s
 std::vector<CreaseResidual> curvedFoldResiduals(const model::CompositeSurface& surface,
                                                 int samplesPerInterval) {
     std::vector<CreaseResidual> result;
-    const std::vector<model::Strip> strips = model::stripsOf(surface);
-    for (const model::Crease& crease :
-         model::creasesOf(surface, strips, model::sampleSurface(surface, 8))) {
+    const auto derived = model::DerivedGeometry::of(surface, 8);
+    const std::vector<model::Strip>& strips = derived->strips();
+    for (const model::Crease& crease : derived->creases()) {
         if (!between2Strips(crease, surface.edge(crease.edge))) {
             continue;
         }

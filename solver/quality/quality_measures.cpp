@@ -1,6 +1,6 @@
 #include "solver/quality/quality_measures.h"
-#include "model/derived_geometry.h"
 
+#include "model/derived_geometry.h"
 #include "model/sampled_mesh.h"
 #include "model/strip.h"
 
@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <map>
 #include <utility>
 #include <vector>
@@ -52,14 +53,25 @@ double normalizedDevelopabilityResidual(const Vec3& aMinusB, const Vec3& aPrime,
     return std::abs(det(aMinusB, aPrime, bPrime)) / scale;
 }
 
-QualityMeasures measureQuality(const model::CompositeSurface& surface,
-                               const QualityOptions& options) {
-    QualityMeasures q;
-    const auto derived =
-        model::DerivedGeometry::of(surface, std::max(1, options.meshSamplesPerInterval));
-    const model::SampledMesh& mesh = derived->mesh();
+std::vector<double> faceFlatness(const model::SampledMesh& mesh) {
+    std::vector<double> flatness(mesh.faces.size(), std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        const std::vector<int>& face = mesh.faces[f];
+        if (face.size() != 4) {
+            continue;
+        }
+        const double delta = quadFlatness(mesh.vertices[static_cast<std::size_t>(face[0])],
+                                          mesh.vertices[static_cast<std::size_t>(face[1])],
+                                          mesh.vertices[static_cast<std::size_t>(face[2])],
+                                          mesh.vertices[static_cast<std::size_t>(face[3])]);
+        if (delta >= 0.0) {
+            flatness[f] = delta;
+        }
+    }
+    return flatness;
+}
 
-    double flatnessSum = 0.0;
+std::vector<double> vertexAngleDefects(const model::SampledMesh& mesh) {
     std::map<std::pair<int, int>, int> edgeFaces;
     std::vector<double> angleSum(mesh.vertices.size(), 0.0);
     for (const std::vector<int>& face : mesh.faces) {
@@ -74,20 +86,7 @@ QualityMeasures measureQuality(const model::CompositeSurface& surface,
                 angleBetween(mesh.vertices[static_cast<std::size_t>(next)] - p,
                              mesh.vertices[static_cast<std::size_t>(previous)] - p);
         }
-        if (n == 4) {
-            const double delta = quadFlatness(mesh.vertices[static_cast<std::size_t>(face[0])],
-                                              mesh.vertices[static_cast<std::size_t>(face[1])],
-                                              mesh.vertices[static_cast<std::size_t>(face[2])],
-                                              mesh.vertices[static_cast<std::size_t>(face[3])]);
-            if (delta >= 0.0) {
-                ++q.quads;
-                flatnessSum += delta;
-                q.flatnessMax = std::max(q.flatnessMax, delta);
-            }
-        }
     }
-    q.flatnessMean = q.quads > 0 ? flatnessSum / q.quads : 0.0;
-
     std::vector<char> onBoundary(mesh.vertices.size(), 0);
     std::vector<char> used(mesh.vertices.size(), 0);
     for (const auto& [edge, faces] : edgeFaces) {
@@ -98,15 +97,39 @@ QualityMeasures measureQuality(const model::CompositeSurface& surface,
             onBoundary[static_cast<std::size_t>(edge.second)] = 1;
         }
     }
-    double curvatureSum = 0.0;
+    std::vector<double> defects(mesh.vertices.size(), std::numeric_limits<double>::quiet_NaN());
     for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-        if (!used[v] || onBoundary[v]) {
-            continue;
+        if (used[v] && !onBoundary[v]) {
+            defects[v] = std::abs(kTwoPi - angleSum[v]);
         }
-        const double k = std::abs(kTwoPi - angleSum[v]);
-        ++q.interiorVertices;
-        curvatureSum += k;
-        q.curvatureMax = std::max(q.curvatureMax, k);
+    }
+    return defects;
+}
+
+QualityMeasures measureQuality(const model::CompositeSurface& surface,
+                               const QualityOptions& options) {
+    QualityMeasures q;
+    const auto derived =
+        model::DerivedGeometry::of(surface, std::max(1, options.meshSamplesPerInterval));
+    const model::SampledMesh& mesh = derived->mesh();
+
+    double flatnessSum = 0.0;
+    for (double delta : faceFlatness(mesh)) {
+        if (!std::isnan(delta)) {
+            ++q.quads;
+            flatnessSum += delta;
+            q.flatnessMax = std::max(q.flatnessMax, delta);
+        }
+    }
+    q.flatnessMean = q.quads > 0 ? flatnessSum / q.quads : 0.0;
+
+    double curvatureSum = 0.0;
+    for (double k : vertexAngleDefects(mesh)) {
+        if (!std::isnan(k)) {
+            ++q.interiorVertices;
+            curvatureSum += k;
+            q.curvatureMax = std::max(q.curvatureMax, k);
+        }
     }
     q.curvatureMean = q.interiorVertices > 0 ? curvatureSum / q.interiorVertices : 0.0;
 
@@ -135,9 +158,10 @@ QualityMeasures measureQuality(const model::CompositeSurface& surface,
     return q;
 }
 
-std::vector<std::pair<model::FaceId, double>>
-developabilityByFace(const model::CompositeSurface& surface, int samplesPerInterval) {
-    std::vector<std::pair<model::FaceId, double>> result;
+std::vector<PatchDevelopability> developabilityOfPatches(const model::CompositeSurface& surface,
+                                                         int segmentsPerInterval,
+                                                         int samplesPerInterval) {
+    std::vector<PatchDevelopability> result;
     std::vector<model::Strip> strips;
     try {
         strips = model::stripsOf(surface);
@@ -145,19 +169,50 @@ developabilityByFace(const model::CompositeSurface& surface, int samplesPerInter
         return result; // an invalid surface has no strips to measure
     }
     const int samples = std::max(1, samplesPerInterval);
+    const int perInterval = std::max(1, segmentsPerInterval);
     for (const model::Strip& strip : strips) {
         if (strip.isCone()) {
             continue;
         }
         const int intervals = std::max(1, surface.edge(strip.aSide.edge).space.intervals);
-        double worst = 0.0;
-        for (int i = 0; i < intervals * samples; ++i) {
-            const double u = (i + 0.5) / (intervals * samples);
-            worst = std::max(worst, normalizedDevelopabilityResidual(
-                                        strip.a.evaluate(u) - strip.b.evaluate(u),
-                                        strip.a.derivative(u, 1), strip.b.derivative(u, 1)));
+        const long long n = static_cast<long long>(intervals) * samples;
+        const long long m = static_cast<long long>(intervals) * perInterval;
+        std::vector<double> values(static_cast<std::size_t>(n));
+        PatchDevelopability patch;
+        patch.face = strip.face;
+        patch.segments.assign(static_cast<std::size_t>(m), -1.0);
+        for (long long i = 0; i < n; ++i) {
+            const double u = (static_cast<double>(i) + 0.5) / static_cast<double>(n);
+            const double r = normalizedDevelopabilityResidual(
+                strip.a.evaluate(u) - strip.b.evaluate(u), strip.a.derivative(u, 1),
+                strip.b.derivative(u, 1));
+            values[static_cast<std::size_t>(i)] = r;
+            patch.worst = std::max(patch.worst, r);
+            // The segment of u = (2i+1) / 2n, in integers so that a sample on a segment's
+            // boundary always falls on the same side.
+            const long long segment = std::min(m - 1, (2 * i + 1) * m / (2 * n));
+            double& value = patch.segments[static_cast<std::size_t>(segment)];
+            value = std::max(value, r);
         }
-        result.emplace_back(strip.face, worst);
+        for (long long k = 0; k < m; ++k) {
+            double& value = patch.segments[static_cast<std::size_t>(k)];
+            if (value < 0.0) {
+                const long long nearest =
+                    std::clamp<long long>(((2 * k + 1) * n) / (2 * m), 0, n - 1);
+                value = values[static_cast<std::size_t>(nearest)];
+            }
+        }
+        result.push_back(std::move(patch));
+    }
+    return result;
+}
+
+std::vector<std::pair<model::FaceId, double>>
+developabilityByFace(const model::CompositeSurface& surface, int samplesPerInterval) {
+    std::vector<std::pair<model::FaceId, double>> result;
+    for (const PatchDevelopability& patch :
+         developabilityOfPatches(surface, 1, samplesPerInterval)) {
+        result.emplace_back(patch.face, patch.worst);
     }
     std::sort(result.begin(), result.end(),
               [](const auto& a, const auto& b) { return a.second > b.second; });

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "model/composite_surface.h"
+#include "model/sampled_mesh.h"
 
 #include <string>
 #include <utility>
@@ -41,6 +42,32 @@ QualityMeasures measureQuality(const model::CompositeSurface& surface,
 // patches are developable by construction and are not listed. Empty for an invalid surface.
 std::vector<std::pair<model::FaceId, double>>
 developabilityByFace(const model::CompositeSurface& surface, int samplesPerInterval = 20);
+
+// The developability of one strip patch as the Solver panel and the 3D view's colouring report it:
+// the normalised residual at samplesPerInterval midpoints per spline interval; `worst` is their
+// maximum (developabilityByFace's value), and segments[i] the maximum of the samples with u in
+// [i, i+1) / (segmentsPerInterval · intervals), i.e. within the i-th quad of
+// model::sampleSurface(surface, segmentsPerInterval). A segment that holds no sample takes the
+// sample nearest its middle, so the maximum over the segments is `worst`.
+struct PatchDevelopability {
+    model::FaceId face = model::kInvalidId;
+    double worst = 0.0;
+    std::vector<double> segments;
+};
+// Every strip patch in face id order; cones and planar patches (developable by construction) are
+// not listed. Empty for an invalid surface.
+std::vector<PatchDevelopability> developabilityOfPatches(const model::CompositeSurface& surface,
+                                                         int segmentsPerInterval,
+                                                         int samplesPerInterval = 20);
+
+// δ of every face of a sampled mesh: the distance of a quad's diagonal lines over the mean of its
+// two shortest edges (docs/math.md §8); NaN where there is no quad to measure (triangles,
+// quads whose diagonals are parallel or whose shortest edges vanish).
+std::vector<double> faceFlatness(const model::SampledMesh& mesh);
+
+// |K| = |2π − Σ angles| at every vertex of a sampled mesh (docs/math.md §8); NaN at vertices on
+// the boundary or used by no face.
+std::vector<double> vertexAngleDefects(const model::SampledMesh& mesh);
 
 // The normalised developability residual of one ruled surface at u (docs/math.md §8, from (2)); 0
 // if a factor vanishes.

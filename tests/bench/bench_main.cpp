@@ -58,7 +58,7 @@ bool setOption(bench::StudyOptions& o, const std::string& name, double v) {
     else if (name == "eps1ResidualFactor")
         s.eps1ResidualFactor = v;
     else if (name == "rejectWorseSteps")
-        s.rejectWorseSteps = v != 0.0;
+        o.experimental.rejectWorseSteps = v != 0.0;
     else if (name == "adaptiveEps2")
         s.adaptiveEps2 = v != 0.0;
     else if (name == "roughStart")
@@ -68,7 +68,7 @@ bool setOption(bench::StudyOptions& o, const std::string& name, double v) {
     else if (name == "proximityThreshold")
         s.proximityThreshold = v;
     else if (name == "levenbergMarquardt")
-        s.levenbergMarquardt = v != 0.0;
+        o.experimental.levenbergMarquardt = v != 0.0;
     else if (name == "normalProximityWeight")
         f.normalProximityWeight = v;
     else if (name == "proximityFactor")

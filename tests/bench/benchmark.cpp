@@ -139,13 +139,15 @@ solver::Summary solveFrom(const solver::Problem& problem, std::vector<double>& x
     solver::Options o;
     o.maxIterations = options.iterations;
     o.eps2 = options.eps2;
-    o.baseline = baseline;
     // Ours: supernodal or simplicial by the calibrated switch (the default); the baseline takes
     // CHOLMOD's own choice, as a rebuild-everything implementation would.
     if (baseline) {
         o.factorization = solver::FactorizationMethod::Automatic;
     }
     solver::GuidedProjection projection;
+    solver::ExperimentalOptions experimental;
+    experimental.baseline = baseline;
+    projection.setExperimentalOptions(experimental);
     return projection.solve(problem, x, o);
 }
 

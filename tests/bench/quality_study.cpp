@@ -60,6 +60,7 @@ std::vector<StudyRun> runStudy(const model::CompositeSurface& surface, const Stu
                 run.ceresIterations = ceres.iterations;
             }
             solver::GuidedProjection projection;
+            projection.setExperimentalOptions(options.experimental);
             summary = projection.solve(formulation.problem(), x, solverOptions);
             written = formulation.writeBack(x, result);
         }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "model/composite_surface.h"
+#include "solver/core/experimental_options.h"
 #include "solver/core/options.h"
 #include "solver/core/summary.h"
 #include "solver/formulation/surface_formulation.h"
@@ -35,6 +36,8 @@ struct StudyOptions {
     int fixedVertices = 3; // boundary vertices fixed (spread over the boundary)
     solver::FormulationOptions formulation;
     solver::Options solver;
+    // Variants of the iteration the product does not use (StudySolver::Options only).
+    solver::ExperimentalOptions experimental;
     // Also run Ceres' Levenberg–Marquardt (ceres_peer.h) from each start on the same constraint
     // rows (StudySolver::Options only) for up to 1,000 iterations or 60 s, towards 1e-10.
     bool ceres = false;

@@ -1,5 +1,6 @@
 #include "io/interchange_json.h"
 #include "model/examples.h"
+#include "model/sampled_mesh.h"
 #include "model/strip.h"
 #include "surface_transform.h"
 #include "test_registry.h"
@@ -10,6 +11,13 @@
 #include <QTest>
 
 #include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <regex>
+#include <set>
+#include <vector>
 
 using namespace devsurf;
 
@@ -28,6 +36,23 @@ QJsonObject parse(const std::string& text) {
 model::Vec3 toVec3(const QJsonValue& value) {
     const QJsonArray a = value.toArray();
     return {a[0].toDouble(), a[1].toDouble(), a[2].toDouble()};
+}
+
+std::uint64_t bitsOf(double value) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+// The bit patterns of every number in a JSON text, read with strtod (not with Qt's reader).
+std::set<std::uint64_t> numbersIn(const std::string& text) {
+    std::set<std::uint64_t> numbers;
+    static const std::regex number(R"((?:^|[\[,:\s])(-?[0-9]+(?:\.[0-9]+)?(?:[eE][+-]?[0-9]+)?))");
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), number);
+         it != std::sregex_iterator(); ++it) {
+        numbers.insert(bitsOf(std::strtod((*it)[1].str().c_str(), nullptr)));
+    }
+    return numbers;
 }
 
 } // namespace
@@ -154,6 +179,68 @@ private slots:
                 }
                 QCOMPARE(folded, degrees == 0.0 ? 0 : 3);
             }
+        }
+    }
+
+    // Every double is written so that it reads back bit for bit: values without a short decimal
+    // form (0.1, 1/3), tiny and subnormal numbers. The one exception is the sign of zero:
+    // −0 is written as 0 (QJsonDocument does so), and reads back as +0, equal to −0.
+    void everyDoubleReadsBackBitForBit() {
+        model::Project project = model::makeExample("sheet");
+        model::CompositeSurface& surface = project.surfaces.front();
+        const std::vector<double> planted = {0.1,    1.0 / 3.0, 1e-300,           -0.0,
+                                             5e-324, 2.0 / 3e7, 123456.789012345, -1.0 / 7.0};
+        std::size_t next = 0;
+        for (const auto& [id, record] : surface.edges()) {
+            if (!record.isSpline() || record.controlPoints.size() < 4 || next >= planted.size()) {
+                continue;
+            }
+            // Heights of interior control points: the sheet stays valid.
+            std::vector<model::Vec3> points = record.controlPoints;
+            for (std::size_t k = 1; k + 1 < points.size() && next < planted.size(); ++k) {
+                points[k].z = planted[next++];
+            }
+            surface.setControlPoints(id, points);
+        }
+        QCOMPARE(next, planted.size());
+        QVERIFY(surface.validate().empty());
+
+        const std::string text = io::interchangeJson(project, 3);
+        const std::set<std::uint64_t> written = numbersIn(text);
+        // As written: the bits of the value, +0 for either zero.
+        const auto expected = [](double value) { return bitsOf(value == 0.0 ? 0.0 : value); };
+        for (double value : planted) {
+            QVERIFY2(written.count(expected(value)) == 1,
+                     qPrintable(QString::number(value, 'g', 17)));
+        }
+        QVERIFY(written.count(bitsOf(-0.0)) == 0);
+        for (const auto& [id, record] : surface.edges()) {
+            for (const model::Vec3& p : record.controlPoints) {
+                for (double value : {p.x, p.y, p.z}) {
+                    QVERIFY(written.count(expected(value)) == 1);
+                }
+            }
+        }
+        const model::SampledMesh mesh = model::sampleSurface(surface, 3);
+        for (const model::Vec3& p : mesh.vertices) {
+            for (double value : {p.x, p.y, p.z}) {
+                QVERIFY2(written.count(expected(value)) == 1,
+                         qPrintable(QString::number(value, 'g', 17)));
+            }
+        }
+
+        // Qt's reader gives the same bits for the mesh as written.
+        const QJsonArray vertices = parse(text)["surfaces"]
+                                        .toArray()[0]
+                                        .toObject()["mesh"]
+                                        .toObject()["vertices"]
+                                        .toArray();
+        QCOMPARE(vertices.size(), qsizetype(mesh.vertices.size()));
+        for (qsizetype i = 0; i < vertices.size(); ++i) {
+            const model::Vec3 p = toVec3(vertices[i]);
+            const model::Vec3& q = mesh.vertices[static_cast<std::size_t>(i)];
+            QVERIFY(bitsOf(p.x) == expected(q.x) && bitsOf(p.y) == expected(q.y) &&
+                    bitsOf(p.z) == expected(q.z));
         }
     }
 

@@ -3,6 +3,7 @@
 #include "model/bspline_curve.h"
 #include "model/examples.h"
 #include "model/pattern/cutting_pattern.h"
+#include "model/pattern/pattern_seams.h"
 #include "model/sampled_mesh.h"
 #include "surface_transform.h"
 #include "test_registry.h"
@@ -488,6 +489,30 @@ private slots:
         // Three trapezoids: 60 mm at the edge, 50 mm at 5 mm out.
         QVERIFY(std::abs(shoelace(tabbed.outline) - shoelace(plain.outline) - 3 * 275.0) < 1e-6);
         QCOMPARE(countPaths(tabbed, PatternLayer::Seam), 3);
+    }
+
+    void offsetPolylineMitresConvexCornersAndCutsConcaveOnes() {
+        using devsurf::model::pattern::offsetPolyline;
+        const auto near = [](const std::vector<Vec2>& got, const std::vector<Vec2>& expected) {
+            if (got.size() != expected.size()) {
+                return false;
+            }
+            for (std::size_t i = 0; i < got.size(); ++i) {
+                if ((got[i] - expected[i]).norm() > 1e-9) {
+                    return false;
+                }
+            }
+            return true;
+        };
+        // Right of the direction: around the outside of a left turn (a mitre at (12, −2)) ...
+        QVERIFY(
+            near(offsetPolyline({{0, 0}, {10, 0}, {10, 10}}, 2.0), {{0, -2}, {12, -2}, {12, 10}}));
+        // ... inside a right turn, where the two offset lines meet at (8, −2) ...
+        QVERIFY(
+            near(offsetPolyline({{0, 0}, {10, 0}, {10, -10}}, 2.0), {{0, -2}, {8, -2}, {8, -10}}));
+        // ... and left of it for a negative width; a repeated point changes nothing.
+        QVERIFY(near(offsetPolyline({{0, 0}, {10, 0}, {10, 0}, {20, 0}}, -3.0), {{0, 3}, {20, 3}}));
+        QVERIFY(offsetPolyline({{1, 1}, {1, 1}}, 2.0).empty());
     }
 
     void chosenEdgesGetAnAllowanceToo() {

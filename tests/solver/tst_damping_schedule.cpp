@@ -5,6 +5,10 @@
 #include "solver/core/guided_projection.h"
 #include "solver/core/linear_term.h"
 #include "solver/core/target_term.h"
+#include "solver/formulation/perturbation.h"
+#include "solver/formulation/surface_formulation.h"
+
+#include "model/examples.h"
 
 #include "test_registry.h"
 
@@ -12,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,6 +28,40 @@ class TstDampingSchedule : public QObject {
     Q_OBJECT
 
 private slots:
+    // ExperimentalOptions::levenbergMarquardt: a rejected step raises ε₂ for the next one, also
+    // across solve() calls, so that one iteration ten times equals ten iterations.
+    void levenbergMarquardtKeepsItsBoostAcrossSolves() {
+        devsurf::model::CompositeSurface start =
+            devsurf::model::makeExample("annulus").surfaces.front();
+        perturbSurface(start, 1e-3 * surfaceDiameter(start), 3, {});
+        const SurfaceFormulation formulation(start, FormulationOptions{});
+        ExperimentalOptions experimental;
+        experimental.levenbergMarquardt = true;
+        GuidedProjection one;
+        GuidedProjection ten;
+        one.setExperimentalOptions(experimental);
+        ten.setExperimentalOptions(experimental);
+        QVERIFY(ten.experimentalOptions().levenbergMarquardt);
+        std::vector<double> a = formulation.initialState();
+        std::vector<double> b = formulation.initialState();
+        Options options;
+        options.maxIterations = 1;
+        for (int k = 0; k < 10; ++k) {
+            options.scheduleOffset = k;
+            QVERIFY(one.solve(formulation.problem(), a, options).succeeded());
+        }
+        options.maxIterations = 10;
+        options.scheduleOffset = 0;
+        const Summary summary = ten.solve(formulation.problem(), b, options);
+        QVERIFY(summary.succeeded());
+        QCOMPARE(summary.iterationsCompleted, 10);
+        QVERIFY(std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0);
+        QVERIFY(summary.finalMaxConstraintResidual < summary.initialMaxConstraintResidual);
+        // A step was rejected before the last, so a later one depended on its boost.
+        QVERIFY(std::any_of(summary.iterations.begin(), summary.iterations.end() - 1,
+                            [](const IterationStats& it) { return it.rejected; }));
+    }
+
     void epsilonSchedule() {
         Options options;
         QCOMPARE(epsilon1(options, 0), 0.1);

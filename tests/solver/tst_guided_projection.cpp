@@ -453,6 +453,9 @@ private slots:
         options.factorization = static_cast<FactorizationMethod>(method);
         GuidedProjection cached;
         GuidedProjection baseline;
+        ExperimentalOptions rebuildEverything;
+        rebuildEverything.baseline = true;
+        baseline.setExperimentalOptions(rebuildEverything);
         std::vector<double> a = circle->start;
         std::vector<double> b = circle->start;
         double largestStep = 0.0;
@@ -460,9 +463,7 @@ private slots:
         for (int k = 0; k < 8; ++k) {
             options.maxIterations = 1;
             options.scheduleOffset = k;
-            options.baseline = false;
             const Summary sa = cached.solve(circle->problem, a, options);
-            options.baseline = true;
             const Summary sb = baseline.solve(circle->problem, b, options);
             QVERIFY(sa.succeeded() && sb.succeeded());
             largestStep = std::max(largestStep, sa.iterations.front().stepNorm);

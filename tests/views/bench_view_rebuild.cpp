@@ -5,6 +5,7 @@
 #include "model/document/commands/move_vertices_command.h"
 #include "model/examples.h"
 #include "side_by_side_views.h"
+#include "solver/quality/quality_measures.h"
 #include "views/scene_geometry.h"
 #include "views/vtk_opengl_widget.h"
 
@@ -56,14 +57,17 @@ int main(int argc, char** argv) {
         spatial.push_back(timeMs([&] { views::buildSpatialScene(surface, 0); }));
         development.push_back(timeMs([&] { views::buildDevelopmentScenes(project); }));
     }
-    std::vector<double> validate, develop, layout;
+    std::vector<double> validate, develop, layout, quality;
     for (int m = 0; m < moves; ++m) {
+        quality.push_back(
+            timeMs([&] { solver::developabilityOfPatches(surface, views::kSamplesPerInterval); }));
         validate.push_back(timeMs([&] { surface.validate(); }));
         views::SurfaceDevelopment developed;
         develop.push_back(timeMs([&] { developed = views::developSurfaceForView(surface, 0); }));
         layout.push_back(timeMs([&] { views::layOutDevelopments(project, {&developed}); }));
     }
     std::printf("stage buildSpatialScene      %8.2f ms\n", median(spatial));
+    std::printf("  of which patch developability %5.2f ms\n", median(quality));
     std::printf("stage buildDevelopmentScenes %8.2f ms\n", median(development));
     std::printf("  of which validate()        %8.2f ms\n", median(validate));
     std::printf("  develop one surface        %8.2f ms (validate included)\n", median(develop));

@@ -1,0 +1,147 @@
+#include "model/document/commands/move_vertices_command.h"
+#include "model/document/document.h"
+#include "model/document/selection.h"
+#include "model/examples.h"
+#include "model/strip.h"
+#include "solver/quality/quality_measures.h"
+#include "test_registry.h"
+#include "views/surface_view.h"
+
+#include <QHBoxLayout>
+#include <QTest>
+#include <QUndoStack>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+
+using devsurf::document::Pick;
+using devsurf::model::FaceId;
+using devsurf::model::Vec3;
+using devsurf::views::ColourBy;
+
+namespace {
+
+// The normalised residual |det(a−b, a′, b′)| / (|a−b| |a′| |b′|) with the derivatives taken by
+// central differences, independently of solver/quality.
+double residualByDifferences(const devsurf::model::Strip& strip, double u) {
+    const double h = 1e-6;
+    const Vec3 aPrime = (strip.a.evaluate(u + h) - strip.a.evaluate(u - h)) / (2.0 * h);
+    const Vec3 bPrime = (strip.b.evaluate(u + h) - strip.b.evaluate(u - h)) / (2.0 * h);
+    const Vec3 m = strip.a.evaluate(u) - strip.b.evaluate(u);
+    return std::abs(dot(m, cross(aPrime, bPrime))) / (m.norm() * aPrime.norm() * bPrime.norm());
+}
+
+} // namespace
+
+// The 3D view colours with the measures the Solver panel reports: the legend's value of a patch
+// is the panel's value (solver::developabilityByFace, which SolveController::reportOf lists as
+// the least developable patches), bit for bit.
+class TstQualityLegend : public QObject {
+    Q_OBJECT
+
+    devsurf::document::Document m_document;
+    devsurf::document::Selection m_selection;
+    QWidget m_window;
+    devsurf::views::SurfaceView* m_view = nullptr;
+
+private slots:
+    void initTestCase() {
+        auto* layout = new QHBoxLayout(&m_window);
+        m_view = new devsurf::views::SurfaceView(&m_document, &m_selection);
+        layout->addWidget(m_view);
+        m_window.resize(500, 400);
+        m_window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&m_window));
+    }
+
+    void legendValueOfAPatchIsThePanelsValue_data() {
+        QTest::addColumn<QString>("example");
+        QTest::addColumn<int>("vertex"); // moved by about `lift` (none if negative)
+        QTest::addColumn<double>("lift");
+        QTest::newRow("annulus lifted") << "annulus" << 20 << 20.0;
+        QTest::newRow("sheet lifted") << "sheet" << 5 << 15.0;
+        QTest::newRow("cylinder pushed") << "cylinder" << 3 << 10.0;
+        QTest::newRow("mixed lifted") << "mixed" << 1 << 5.0;
+        QTest::newRow("fig6 lifted") << "fig6" << 2 << 5.0;
+        QTest::newRow("fig6") << "fig6" << -1 << 0.0;
+        QTest::newRow("fig8 lifted") << "fig8" << 2 << 5.0;
+        QTest::newRow("fig8") << "fig8" << -1 << 0.0;
+    }
+
+    void legendValueOfAPatchIsThePanelsValue() {
+        QFETCH(QString, example);
+        QFETCH(int, vertex);
+        QFETCH(double, lift);
+        m_document.resetProject(devsurf::model::makeExample(example.toStdString()));
+        if (vertex >= 0) {
+            auto edit = devsurf::document::MoveVerticesCommand::createTranslation(
+                m_document, 0, {static_cast<devsurf::model::VertexId>(vertex)},
+                Vec3(0.5 * lift, 0.3 * lift, lift));
+            QVERIFY(!edit.isRefused());
+            m_document.undoStack()->push(edit.takeCommand().release());
+        }
+        m_view->setColourBy(ColourBy::Developability);
+        m_view->grabImage();
+        const devsurf::model::CompositeSurface& surface = m_document.surface(0);
+
+        std::map<FaceId, double> panel;
+        for (const auto& [face, value] : devsurf::solver::developabilityByFace(surface)) {
+            panel[face] = value;
+        }
+        QVERIFY(!panel.empty());
+        double worst = 0.0;
+        for (const auto& [face, loop] : surface.faces()) {
+            (void)loop;
+            const double legend = m_view->legendValue({Pick::Kind::Face, 0, face});
+            const auto listed = panel.find(face);
+            if (listed == panel.end()) {
+                QCOMPARE(legend, 0.0); // cones and planar patches: developable by construction
+                continue;
+            }
+            QCOMPARE(legend, listed->second);
+            worst = std::max(worst, legend);
+
+            // And the value is the residual: the largest of its 20 samples per interval,
+            // recomputed here with difference quotients.
+            const devsurf::model::Strip strip = devsurf::model::stripOfFace(surface, face);
+            const int n = 20 * surface.edge(strip.aSide.edge).space.intervals;
+            double independent = 0.0;
+            for (int i = 0; i < n; ++i) {
+                independent = std::max(independent, residualByDifferences(strip, (i + 0.5) / n));
+            }
+            QVERIFY2(std::abs(legend - independent) <= 1e-6 * independent + 1e-9,
+                     qPrintable(QStringLiteral("patch %1: legend %2, by differences %3")
+                                    .arg(face)
+                                    .arg(legend, 0, 'e', 6)
+                                    .arg(independent, 0, 'e', 6)));
+        }
+        qInfo("%s: the least developable patch at %.17g in the legend and the panel",
+              qPrintable(example), worst);
+        if (vertex >= 0) {
+            QVERIFY2(worst > 1e-4, qPrintable(QString::number(worst))); // really not developable
+        }
+        // The top of the legend is the panel's least developable patch.
+        QCOMPARE(m_view->legendRange().second, std::max(worst, 1e-10));
+
+        // Flatness and the angle defect: the largest value drawn is measureQuality's.
+        const devsurf::solver::QualityMeasures measures = devsurf::solver::measureQuality(surface);
+        for (const ColourBy by : {ColourBy::Flatness, ColourBy::AngleDefect}) {
+            m_view->setColourBy(by);
+            m_view->grabImage();
+            double largest = 0.0;
+            for (const auto& [face, loop] : surface.faces()) {
+                (void)loop;
+                largest = std::max(largest, m_view->legendValue({Pick::Kind::Face, 0, face}));
+            }
+            QCOMPARE(largest,
+                     by == ColourBy::Flatness ? measures.flatnessMax : measures.curvatureMax);
+        }
+        m_view->setColourBy(ColourBy::Patch);
+        QVERIFY(std::isnan(m_view->legendValue({Pick::Kind::Face, 0, panel.begin()->first})));
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstQualityLegend);
+#include "tst_quality_legend.moc"
