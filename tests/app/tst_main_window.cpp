@@ -36,6 +36,8 @@
 #include <QTranslator>
 #include <QTreeView>
 #include <QUndoStack>
+#include <sys/resource.h>
+
 #include <cmath>
 #include <set>
 
@@ -263,6 +265,31 @@ private slots:
         QVERIFY(!window.workspace()->open(path));
         QVERIFY(shown.contains("damaged.devsurf"));
         QCOMPARE(io::encodeProject(window.workspace()->document()->project()), before);
+    }
+
+    // Issue 46, 3: a device without an end is refused after its first bytes: no growth to
+    // gigabytes, no std::bad_alloc ending the application.
+    void openingAnEndlessDeviceIsRefusedAtOnce() {
+        if (!QFileInfo::exists(QStringLiteral("/dev/zero"))) {
+            QSKIP("no /dev/zero");
+        }
+        app::MainWindow window;
+        window.show();
+        struct rusage before {};
+        getrusage(RUSAGE_SELF, &before);
+        QString shown;
+        QTimer::singleShot(0, [&shown] {
+            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+                shown = box->text();
+                box->accept();
+            }
+        });
+        QVERIFY(!window.workspace()->open(QStringLiteral("/dev/zero")));
+        QVERIFY(shown.contains("/dev/zero"));
+        struct rusage after {};
+        getrusage(RUSAGE_SELF, &after);
+        QVERIFY2(after.ru_maxrss - before.ru_maxrss < 256 * 1024,
+                 qPrintable(QString::number(after.ru_maxrss - before.ru_maxrss) + " kB"));
     }
 
     void unsavedWorkSurvivesACrash() {
