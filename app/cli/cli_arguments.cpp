@@ -89,7 +89,7 @@ DragArguments dragArguments(const SubcommandArguments& args) {
         try {
             result.motion.at(1.0); // refuses a zero or non-finite axis
         } catch (const model::ModelError&) {
-            throw UsageError{"option '--rotate' needs a non-zero axis AX,AY,AZ"};
+            throw UsageError{"option '--rotate' needs a non-zero axis AX,AY,AZ of finite length"};
         }
     }
     if (const std::optional<std::string> pins = args.value("pin")) {

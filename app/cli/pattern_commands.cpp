@@ -19,7 +19,6 @@
 #include <cmath>
 #include <cstring>
 #include <iostream>
-#include <map>
 #include <optional>
 #include <stdexcept>
 
