@@ -6,12 +6,12 @@
 #include "model/development.h"
 #include "model/sampled_mesh.h"
 #include "model/strip.h"
+#include "output_file.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QJsonValue>
-#include <QSaveFile>
 
 #include <vector>
 
@@ -146,14 +146,7 @@ QJsonObject surfaceObject(const model::CompositeSurface& surface, int samples) {
 void saveInterchangeJsonFile(const model::Project& project, const QString& path,
                              int samplesPerInterval) {
     const std::string text = interchangeJson(project, samplesPerInterval);
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) ||
-        file.write(text.data(), static_cast<qint64>(text.size())) !=
-            static_cast<qint64>(text.size()) ||
-        !file.commit()) {
-        throw FileError("Cannot write '" + path.toStdString() +
-                        "': " + file.errorString().toStdString() + ".");
-    }
+    writeFileAtomically(path, QByteArray(text.data(), static_cast<qsizetype>(text.size())));
 }
 
 std::string interchangeJson(const model::Project& project, int samplesPerInterval) {

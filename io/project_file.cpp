@@ -2,6 +2,7 @@
 
 #include "crc32.h"
 #include "file_error.h"
+#include "output_file.h"
 #include "project_archive.h"
 
 #include <QFile>
@@ -9,6 +10,7 @@
 #include <QSaveFile>
 
 #include <cstring>
+#include <new>
 
 namespace devsurf::io {
 
@@ -84,27 +86,79 @@ model::Project decodeProject(const std::string& bytes) {
     return readProjectArchive(payload);
 }
 
+namespace {
+
+// Replaces PATH.bak by a copy of PATH atomically: the previous backup stays until the new one is
+// complete, so a kill at any moment leaves one of them.
+void keepBackup(const QString& path) {
+    const QString backup = path + QStringLiteral(".bak");
+    QFile current(path);
+    if (!current.open(QIODevice::ReadOnly)) {
+        throw FileError("Cannot save " + quoted(path) + ": the backup copy " + quoted(backup) +
+                        " could not be written (" +
+                        withoutFinalPeriod(current.errorString().toStdString()) + ").");
+    }
+    QSaveFile copy(backup);
+    try {
+        openOutputFile(copy, backup);
+        for (;;) {
+            const std::string chunk = readAtMost(current, 1u << 20);
+            if (chunk.empty()) {
+                break;
+            }
+            if (copy.write(chunk.data(), static_cast<qint64>(chunk.size())) !=
+                static_cast<qint64>(chunk.size())) {
+                const std::string reason = copy.errorString().toStdString();
+                copy.cancelWriting();
+                throw FileError(reason);
+            }
+        }
+        commitOutputFile(copy, backup);
+    } catch (const FileError& error) {
+        throw FileError("Cannot save " + quoted(path) + ": the backup copy " + quoted(backup) +
+                        " could not be written (" + withoutFinalPeriod(error.what()) + ").");
+    }
+}
+
+} // namespace
+
 void saveProjectFile(const model::Project& project, const QString& path, Backup backup) {
     const std::string bytes = encodeProject(project);
+    switch (outputProblem(path)) {
+    case OutputProblem::Folder:
+        throw FileError("Cannot save " + quoted(path) + ": it is a folder.");
+    case OutputProblem::NotRegularFile:
+        throw FileError("Cannot save " + quoted(path) +
+                        ": it is a device, pipe or socket, not a regular file.");
+    case OutputProblem::None:
+    case OutputProblem::SameAsInput:
+        break;
+    }
     QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
+    // Unbuffered: a failing write reports the system's reason (a full disk), not "Unknown error".
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered)) {
         throw FileError("Cannot save " + quoted(path) + ": " +
                         withoutFinalPeriod(file.errorString().toStdString()) + ".");
     }
-    if (file.write(bytes.data(), static_cast<qint64>(bytes.size())) !=
-        static_cast<qint64>(bytes.size())) {
-        const std::string reason = file.errorString().toStdString();
-        file.cancelWriting();
-        throw FileError("Cannot save " + quoted(path) + ": " + withoutFinalPeriod(reason) + ".");
+    qint64 done = 0;
+    while (done < static_cast<qint64>(bytes.size())) {
+        const qint64 written =
+            file.write(bytes.data() + done, static_cast<qint64>(bytes.size()) - done);
+        if (written <= 0) {
+            const std::string reason = file.errorString().toStdString();
+            file.cancelWriting();
+            throw FileError("Cannot save " + quoted(path) + ": " + withoutFinalPeriod(reason) +
+                            ".");
+        }
+        done += written;
     }
     // Keep the previous version: a failed or regretted save never loses the last good file.
     if (backup == Backup::Keep && QFileInfo::exists(path)) {
-        const QString backup = path + QStringLiteral(".bak");
-        QFile::remove(backup);
-        if (!QFile::copy(path, backup)) {
+        try {
+            keepBackup(path);
+        } catch (const FileError&) {
             file.cancelWriting();
-            throw FileError("Cannot save " + quoted(path) + ": the backup copy " + quoted(backup) +
-                            " could not be written.");
+            throw;
         }
     }
     if (!file.commit()) {
@@ -119,18 +173,35 @@ model::Project loadProjectFile(const QString& path) {
         throw FileError("Cannot open " + quoted(path) + ": " +
                         withoutFinalPeriod(file.errorString().toStdString()) + ".");
     }
+    const std::string tooLarge =
+        "Cannot open " + quoted(path) + ": it is larger than any DevSurf project file can be.";
     if (static_cast<std::uint64_t>(file.size()) > kMaxProjectFileSize) {
-        throw FileError("Cannot open " + quoted(path) +
-                        ": it is larger than any DevSurf project file can be.");
-    }
-    const QByteArray data = file.readAll();
-    if (file.error() != QFileDevice::NoError) {
-        throw FileError("Cannot open " + quoted(path) + ": " +
-                        withoutFinalPeriod(file.errorString().toStdString()) + ".");
+        throw FileError(tooLarge);
     }
     try {
-        return decodeProject(std::string(data.constData(), static_cast<std::size_t>(data.size())));
+        // The header first: a device or pipe that holds no project (/dev/zero) is refused after
+        // 24 bytes, and no more than the bound plus one byte is ever read.
+        std::string bytes = readAtMost(file, kProjectHeaderSize);
+        std::uint64_t rest = 0;
+        if (bytes.size() == kProjectHeaderSize &&
+            std::memcmp(bytes.data(), kMagic, sizeof kMagic) == 0) {
+            rest = kMaxProjectFileSize + 1 - kProjectHeaderSize;
+            const std::uint64_t length = getLittleEndian(bytes, 12, 8);
+            if (file.isSequential() && length < rest) {
+                rest = length + 1; // one byte more shows content after the payload
+            }
+        }
+        bytes += readAtMost(file, rest);
+        if (bytes.size() > kMaxProjectFileSize) {
+            throw FileError(tooLarge);
+        }
+        return decodeProject(bytes);
+    } catch (const std::bad_alloc&) {
+        throw FileError("Cannot open " + quoted(path) + ": there is not enough memory to read it.");
     } catch (const FileError& error) {
+        if (error.what() == tooLarge) {
+            throw;
+        }
         throw FileError("Cannot open " + quoted(path) + ": " + withoutFinalPeriod(error.what()) +
                             ".",
                         error.details());

@@ -2817,4 +2817,23 @@
         <translation>Mit einem eingebauten Beispiel beginnen.</translation>
     </message>
 </context>
+<context>
+    <name>OutputProblem</name>
+    <message>
+        <source>“%1” is the project file of this design: exporting over it would destroy the design. Choose another file name.</source>
+        <translation>„%1“ ist die Projektdatei dieses Entwurfs: Ein Export darüber würde den Entwurf zerstören. Wählen Sie einen anderen Dateinamen.</translation>
+    </message>
+    <message>
+        <source>“%1” is a folder. Choose a file name.</source>
+        <translation>„%1“ ist ein Ordner. Wählen Sie einen Dateinamen.</translation>
+    </message>
+    <message>
+        <source>“%1” is a device, pipe or socket, not a file. Choose a file name.</source>
+        <translation>„%1“ ist ein Gerät, eine Pipe oder ein Socket, keine Datei. Wählen Sie einen Dateinamen.</translation>
+    </message>
+    <message>
+        <source>There is not enough memory to open “%1”.</source>
+        <translation>Es ist nicht genug Speicher vorhanden, um „%1“ zu öffnen.</translation>
+    </message>
+</context>
 </TS>

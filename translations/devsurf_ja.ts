@@ -2775,4 +2775,23 @@
         <translation>組み込みの例で開始します。</translation>
     </message>
 </context>
+<context>
+    <name>OutputProblem</name>
+    <message>
+        <source>“%1” is the project file of this design: exporting over it would destroy the design. Choose another file name.</source>
+        <translation>「%1」はこのデザインのプロジェクトファイルです。上書きしてエクスポートするとデザインが失われます。別のファイル名を選んでください。</translation>
+    </message>
+    <message>
+        <source>“%1” is a folder. Choose a file name.</source>
+        <translation>「%1」はフォルダーです。ファイル名を選んでください。</translation>
+    </message>
+    <message>
+        <source>“%1” is a device, pipe or socket, not a file. Choose a file name.</source>
+        <translation>「%1」はデバイス、パイプまたはソケットで、ファイルではありません。ファイル名を選んでください。</translation>
+    </message>
+    <message>
+        <source>There is not enough memory to open “%1”.</source>
+        <translation>「%1」を開くためのメモリが足りません。</translation>
+    </message>
+</context>
 </TS>

@@ -484,6 +484,14 @@ void SceneView::setTargetPointsImpl(const std::vector<model::Vec3>& points) {
     rerender();
 }
 
+namespace {
+
+// Faces of a surface from which its development after a change is always built in the
+// background (an annulus of size 30 has 1,200).
+constexpr std::size_t kBackgroundDevelopmentFaces = 500;
+
+} // namespace
+
 void SceneView::onDocumentChanged(unsigned changes) {
     // resetProject() announces itself twice (projectReset, then changed): build once.
     if (d->document == nullptr || d->document->revision() == d->builtRevision) {
@@ -502,10 +510,16 @@ void SceneView::onDocumentChanged(unsigned changes) {
     const QUndoStack* stack = d->document->undoStack();
     const std::array<int, 3> state = {stack->count(), stack->index(),
                                       d->document->changedSurface()};
-    const bool continued = changes == static_cast<unsigned>(document::Change::Geometry) &&
-                           state == d->lastChange && state[2] >= 0;
+    const bool geometryOfOne =
+        changes == static_cast<unsigned>(document::Change::Geometry) && state[2] >= 0;
+    const bool continued = geometryOfOne && state == d->lastChange;
+    // Any such change of a large surface (an edit, an undo, a redo) is developed in the
+    // background too: developing it on the GUI thread would stop the window answering.
+    const bool large = geometryOfOne &&
+                       d->document->surface(state[2]).faces().size() >= kBackgroundDevelopmentFaces;
     d->lastChange = state;
-    if (d->kind == Kind::Development && continued && !firstBuild && d->problem.isEmpty()) {
+    if (d->kind == Kind::Development && (continued || large) && !firstBuild &&
+        d->problem.isEmpty()) {
         d->builtRevision = d->document->revision();
         d->followDevelopment = true;
         SceneCache::of(d->document)->developInBackground(state[2]);

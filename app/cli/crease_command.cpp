@@ -1,11 +1,12 @@
 #include "crease_command.h"
 
+#include "cli_output.h"
 #include "io/project_file.h"
-#include "vertex_commands.h"
 
 #include <QString>
 
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 
 namespace devsurf::app {
@@ -25,28 +26,30 @@ model::CreaseCondition parseCondition(const std::string& text) {
     if (text == "straight") {
         return model::CreaseCondition::Straight;
     }
-    throw std::invalid_argument(
-        "option '--condition' needs curved-fold, geodesic, straight or none, not '" + text + "'");
+    throw UsageError{"option '--condition' needs curved-fold, geodesic, straight or none, not '" +
+                     text + "'"};
+}
+
+int surfaceNumberOf(const SubcommandArguments& args) {
+    const std::optional<std::string> text = args.value("surface");
+    return text ? static_cast<int>(parseWhole(*text, "--surface", 1, 1000000)) : 0;
 }
 
 } // namespace
 
-int runCreaseCommand(const std::vector<std::string>& positional,
-                     const std::vector<std::pair<std::string, std::string>>& options) {
-    if (positional.size() != 1) {
-        throw std::invalid_argument("expected one project file");
-    }
-    const std::string idsText =
-        requiredOption(options, "--edges", "the creases are missing (use --edges IDS)");
-    const std::string conditionText = requiredOption(options, "--condition",
-                                                     "the condition is missing (use --condition "
-                                                     "curved-fold|geodesic|straight|none)");
-    const std::string output =
-        requiredOption(options, "-o", "the output file is missing (use -o FILE)");
+int runCreaseCommand(const SubcommandArguments& args) {
+    const std::string input = args.onePositional("one project file");
+    const std::string idsText = args.required("edges", "the creases are missing (use --edges IDS)");
+    const std::string conditionText =
+        args.required("condition", "the condition is missing (use --condition "
+                                   "curved-fold|geodesic|straight|none)");
+    const std::string output = args.required("o", "the output file is missing (use -o FILE)");
     const std::vector<std::uint32_t> ids = parseIds(idsText, "--edges", "edge");
     const model::CreaseCondition condition = parseCondition(conditionText);
-    model::Project project = io::loadProjectFile(QString::fromStdString(positional[0]));
-    const std::size_t index = surfaceOption(options, project, "set crease conditions on");
+    const int surfaceNumber = surfaceNumberOf(args);
+    checkOutput(output, {input}, OutputKind::Project, "the project");
+    model::Project project = io::loadProjectFile(QString::fromStdString(input));
+    const std::size_t index = surfaceIndex(surfaceNumber, project, "set crease conditions on");
     model::CompositeSurface& surface = project.surfaces[index];
     for (model::EdgeId id : ids) {
         std::string problem;
@@ -66,25 +69,24 @@ int runCreaseCommand(const std::vector<std::string>& positional,
     for (model::EdgeId id : ids) {
         surface.setCreaseCondition(id, condition);
     }
-    io::saveProjectFile(project, QString::fromStdString(output));
+    writeProject(project, output);
     std::cout << "Wrote " << output << " (" << ids.size() << " crease"
               << (ids.size() == 1 ? "" : "s") << " set to " << model::creaseConditionName(condition)
               << " in '" << surface.name() << "')\n";
     return 0;
 }
 
-int runSmoothCommand(const std::vector<std::string>& positional,
-                     const std::vector<std::pair<std::string, std::string>>& options, bool sharp) {
-    if (positional.size() != 1) {
-        throw std::invalid_argument("expected one project file");
-    }
-    const std::string idsText =
-        requiredOption(options, "--edges", "the rulings are missing (use --edges IDS)");
-    const std::string output =
-        requiredOption(options, "-o", "the output file is missing (use -o FILE)");
+int runSmoothCommand(const SubcommandArguments& args) {
+    const std::string input = args.onePositional("one project file");
+    const std::string idsText = args.required("edges", "the rulings are missing (use --edges IDS)");
+    const std::string output = args.required("o", "the output file is missing (use -o FILE)");
     const std::vector<std::uint32_t> ids = parseIds(idsText, "--edges", "edge");
-    model::Project project = io::loadProjectFile(QString::fromStdString(positional[0]));
-    const std::size_t index = surfaceOption(options, project, "mark rulings smooth or sharp in");
+    const bool sharp = args.isSet("off");
+    const int surfaceNumber = surfaceNumberOf(args);
+    checkOutput(output, {input}, OutputKind::Project, "the project");
+    model::Project project = io::loadProjectFile(QString::fromStdString(input));
+    const std::size_t index =
+        surfaceIndex(surfaceNumber, project, "mark rulings smooth or sharp in");
     model::CompositeSurface& surface = project.surfaces[index];
     for (model::EdgeId id : ids) {
         std::string problem;
@@ -107,7 +109,7 @@ int runSmoothCommand(const std::vector<std::string>& positional,
     for (model::EdgeId id : ids) {
         surface.setSmooth(id, !sharp);
     }
-    io::saveProjectFile(project, QString::fromStdString(output));
+    writeProject(project, output);
     std::cout << "Wrote " << output << " (" << ids.size() << " ruling"
               << (ids.size() == 1 ? "" : "s") << " made " << (sharp ? "sharp" : "smooth") << " in '"
               << surface.name() << "')\n";

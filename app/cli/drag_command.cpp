@@ -1,12 +1,12 @@
 #include "drag_command.h"
 
+#include "cli_output.h"
 #include "io/project_file.h"
 #include "model/model_error.h"
 #include "outcome_text.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/session/crease_drag.h"
 #include "solver/session/solve_job.h"
-#include "vertex_commands.h"
 
 #include <QString>
 
@@ -23,115 +23,6 @@
 namespace devsurf::app {
 
 namespace {
-
-std::string findOption(const std::vector<std::pair<std::string, std::string>>& options,
-                       const std::string& name) {
-    for (const auto& [key, value] : options) {
-        if (key == name) {
-            return value;
-        }
-    }
-    return {};
-}
-
-bool hasOption(const std::vector<std::pair<std::string, std::string>>& options,
-               const std::string& name) {
-    for (const auto& entry : options) {
-        if (entry.first == name) {
-            return true;
-        }
-    }
-    return false;
-}
-
-// Exactly `count` finite numbers separated by commas.
-std::vector<double> parseNumbers(const std::string& text, const std::string& option,
-                                 std::size_t count, const char* example) {
-    std::vector<double> values;
-    std::stringstream stream(text);
-    std::string item;
-    bool ok = true;
-    while (ok && std::getline(stream, item, ',')) {
-        try {
-            std::size_t used = 0;
-            const double value = std::stod(item, &used);
-            ok = used == item.size() && std::isfinite(value);
-            values.push_back(value);
-        } catch (const std::exception&) {
-            ok = false;
-        }
-    }
-    if (!ok || values.size() != count || (!text.empty() && text.back() == ',')) {
-        throw std::invalid_argument("option '" + option + "' needs " + std::to_string(count) +
-                                    " numbers such as " + example + ", not '" + text + "'");
-    }
-    return values;
-}
-
-int parseCount(const std::string& text, const std::string& option, int low, int high) {
-    try {
-        std::size_t used = 0;
-        const long value = std::stol(text, &used);
-        if (used == text.size() && value >= low && value <= high) {
-            return static_cast<int>(value);
-        }
-    } catch (const std::exception&) {
-    }
-    throw std::invalid_argument("option '" + option + "' needs a whole number between " +
-                                std::to_string(low) + " and " + std::to_string(high) + ", not '" +
-                                text + "'");
-}
-
-// The motion of a drag at parameter t in [0, 1]: a translation by t·by or a rotation by
-// t·angle about an axis through a point.
-struct Motion {
-    bool rotate = false;
-    model::Vec3 by;
-    model::Vec3 point;
-    model::Vec3 axis; // unit
-    double radians = 0.0;
-
-    model::Vec3 apply(const model::Vec3& p, double t) const {
-        if (!rotate) {
-            return p + by * t;
-        }
-        // Rodrigues' rotation of p − point about the axis.
-        const double angle = radians * t;
-        const double c = std::cos(angle);
-        const double s = std::sin(angle);
-        const model::Vec3 v = p - point;
-        const model::Vec3 k = axis;
-        const model::Vec3 cross{k.y * v.z - k.z * v.y, k.z * v.x - k.x * v.z,
-                                k.x * v.y - k.y * v.x};
-        const double dot = k.x * v.x + k.y * v.y + k.z * v.z;
-        return point + v * c + cross * s + k * (dot * (1.0 - c));
-    }
-};
-
-Motion parseMotion(const std::vector<std::pair<std::string, std::string>>& options) {
-    const bool by = hasOption(options, "--by");
-    const bool rotate = hasOption(options, "--rotate");
-    if (by == rotate) {
-        throw std::invalid_argument("give the motion as either --by DX,DY,DZ or --rotate "
-                                    "PX,PY,PZ,AX,AY,AZ,DEGREES");
-    }
-    Motion motion;
-    if (by) {
-        const auto v = parseNumbers(findOption(options, "--by"), "--by", 3, "0,0,100");
-        motion.by = {v[0], v[1], v[2]};
-        return motion;
-    }
-    const auto v = parseNumbers(findOption(options, "--rotate"), "--rotate", 7, "0,0,0,0,0,1,30");
-    motion.rotate = true;
-    motion.point = {v[0], v[1], v[2]};
-    const double length = std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
-    if (!(length > 0.0) || !std::isfinite(length)) {
-        throw std::invalid_argument("option '--rotate' needs a non-zero axis AX,AY,AZ");
-    }
-    motion.axis = {v[3] / length, v[4] / length, v[5] / length};
-    motion.radians = v[6] * std::acos(-1.0) / 180.0;
-    return motion;
-}
 
 std::string idList(const std::vector<model::VertexId>& ids) {
     std::string text;
@@ -171,74 +62,25 @@ void printFoldAndShape(const solver::SurfaceAssessment& assessment) {
 
 } // namespace
 
-int runDragCommand(const std::vector<std::string>& positional,
-                   const std::vector<std::pair<std::string, std::string>>& options) {
-    if (positional.size() != 1) {
-        throw std::invalid_argument("expected one project file");
-    }
-    const bool crease = hasOption(options, "--crease");
-    const std::string idsText = findOption(options, "--vertices");
-    if (crease == !idsText.empty()) {
-        throw std::invalid_argument(crease ? "give either --vertices IDS or --crease EDGE, not both"
-                                           : "the vertices to drag are missing (use --vertices "
-                                             "IDS, or --crease EDGE to drag a crease)");
-    }
-    std::vector<model::VertexId> dragged;
-    model::EdgeId creaseEdge = model::kInvalidId;
-    if (crease) {
-        const std::vector<model::EdgeId> edges =
-            parseVertexIds(findOption(options, "--crease"), "--crease");
-        if (edges.size() != 1) {
-            throw std::invalid_argument("option '--crease' needs one edge id");
-        }
-        creaseEdge = edges.front();
-        if (hasOption(options, "--rotate")) {
-            throw std::invalid_argument("a crease is dragged with --by DX,DY,DZ, not rotated");
-        }
-    } else {
-        dragged = parseVertexIds(idsText, "--vertices");
-    }
-    const Motion motion = parseMotion(options);
-    std::vector<model::VertexId> pins;
-    if (hasOption(options, "--pin")) {
-        pins = parseVertexIds(findOption(options, "--pin"), "--pin");
-    }
-    const int steps = hasOption(options, "--steps")
-                          ? parseCount(findOption(options, "--steps"), "--steps", 1, 10000)
-                          : 20;
-    const std::string output = findOption(options, "-o");
-    if (output.empty()) {
-        throw std::invalid_argument("the output file is missing (use -o FILE)");
-    }
-    for (model::VertexId id : pins) {
-        if (std::find(dragged.begin(), dragged.end(), id) != dragged.end()) {
-            throw std::invalid_argument("vertex " + std::to_string(id) +
-                                        " cannot be both dragged and pinned");
-        }
-    }
+int runDragCommand(const DragArguments& args) {
+    const bool crease = args.crease.has_value();
+    const std::vector<model::VertexId>& dragged = args.vertices;
+    const model::EdgeId creaseEdge = crease ? *args.crease : model::kInvalidId;
+    const DragMotion& motion = args.motion;
+    const std::vector<model::VertexId>& pins = args.pins;
+    const int steps = args.steps;
+    const std::string& output = args.output;
 
-    const std::string& path = positional[0];
+    const std::string& path = args.input;
     model::Project project = io::loadProjectFile(QString::fromStdString(path));
     if (project.surfaces.empty()) {
         throw model::ModelError("'" + path + "' has no surface to drag.");
     }
-    std::size_t index = 0;
-    if (hasOption(options, "--surface")) {
-        index = static_cast<std::size_t>(parseCount(findOption(options, "--surface"), "--surface",
-                                                    1, static_cast<int>(project.surfaces.size())) -
-                                         1);
-    }
+    const std::size_t index = surfaceIndex(args.surface, project, "drag");
     model::CompositeSurface& surface = project.surfaces[index];
-    // As DragTool: a dragged crease changes the sizes of its strips on purpose and never
-    // keeps lengths; a vertex drag keeps them unless --stretch, and without --keep-lengths
-    // (Automatic) is replayed stretching where keeping them fails (solver::DragLengths).
-    const solver::DragLengths lengths =
-        crease || hasOption(options, "--stretch") ? solver::DragLengths::Stretch
-        : hasOption(options, "--keep-lengths")    ? solver::DragLengths::Keep
-                                                  : solver::DragLengths::Automatic;
-    const bool givenAfter = hasOption(options, "--after");
-    const int givenAfterCount =
-        givenAfter ? parseCount(findOption(options, "--after"), "--after", 0, 10000) : 0;
+    const solver::DragLengths lengths = args.lengths;
+    const bool givenAfter = args.after.has_value();
+    const int givenAfterCount = args.after.value_or(0);
 
     std::vector<model::VertexId> unknown;
     std::vector<model::VertexId> mentioned = dragged;
@@ -304,7 +146,7 @@ int runDragCommand(const std::vector<std::string>& positional,
         pointShift = creaseDrag->pointDisplacements(motion.by, true);
     }
     auto targetAt = [&](model::VertexId id, const model::Vec3& position, double t) {
-        return creaseDrag ? position + creaseShift.at(id) * t : motion.apply(position, t);
+        return creaseDrag ? position + creaseShift.at(id) * t : motion.at(t).apply(position);
     };
     auto pointTargetAt = [&](const solver::ControlPointHandle& point, double t) {
         return point.target + pointShift.at(static_cast<std::size_t>(point.index)) * t;
@@ -422,7 +264,7 @@ int runDragCommand(const std::vector<std::string>& positional,
     std::cout << line;
     printFoldAndShape(assessment);
     surface = outcome.surfaces.at(index);
-    io::saveProjectFile(project, QString::fromStdString(output));
+    writeProject(project, output);
     std::cout << "Wrote " << output << "\n";
     return 0;
 }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "command_line.h"
+
 #include <QCoreApplication>
 
 #include <memory>
@@ -10,14 +12,13 @@ namespace devsurf::app {
 
 // `devsurf-cli export FILE --format dxf|svg|pdf|fold [--sheet W,H | --paper A4|A3|Letter]
 // [--tolerance MM] [--splines] [--r12] [--seam MM] [--rulings] -o OUT`: the cutting pattern.
-// Throws std::invalid_argument for bad usage (message without a final period) and io/model
-// errors for bad input; returns the exit code. Problems of the pattern (overlaps, pieces larger
-// than the sheet) are warnings on stderr.
-int runExportPatternCommand(const std::vector<std::string>& args);
+// Throws UsageError for bad usage and io/model errors for bad input; returns the exit code.
+// Problems of the pattern (overlaps, pieces larger than the sheet) are warnings on stderr.
+int runExportPatternCommand(const SubcommandArguments& args);
 
 // `devsurf-cli report FILE [--json]` (and the pattern options of export): the fabrication
 // report.
-int runReportCommand(const std::vector<std::string>& args);
+int runReportCommand(const SubcommandArguments& args);
 
 // The application object of the tool: exporting a PDF paints text, which needs a
 // QGuiApplication (on the offscreen platform unless one is chosen); everything else a

@@ -1,5 +1,6 @@
 #include "solve_command.h"
 
+#include "cli_output.h"
 #include "io/project_file.h"
 #include "model/model_error.h"
 #include "outcome_text.h"
@@ -19,45 +20,6 @@
 namespace devsurf::app {
 
 namespace {
-
-double parseNumber(const std::string& text, const std::string& option) {
-    try {
-        std::size_t used = 0;
-        const double value = std::stod(text, &used);
-        if (used == text.size() && std::isfinite(value)) {
-            return value;
-        }
-    } catch (const std::exception&) {
-    }
-    throw std::invalid_argument("option '" + option + "' needs a number, not '" + text + "'");
-}
-
-long parseWhole(const std::string& text, const std::string& option, long low, long high) {
-    try {
-        std::size_t used = 0;
-        const long value = std::stol(text, &used);
-        if (used == text.size() && value >= low && value <= high) {
-            return value;
-        }
-    } catch (const std::exception&) {
-    }
-    throw std::invalid_argument("option '" + option + "' needs a whole number between " +
-                                std::to_string(low) + " and " + std::to_string(high) + ", not '" +
-                                text + "'");
-}
-
-std::vector<model::VertexId> parseIds(const std::string& text) {
-    std::vector<model::VertexId> ids;
-    std::stringstream stream(text);
-    std::string item;
-    while (std::getline(stream, item, ',')) {
-        ids.push_back(static_cast<model::VertexId>(parseWhole(item, "--fix", 0, 0xfffffffe)));
-    }
-    if (ids.empty()) {
-        throw std::invalid_argument("option '--fix' needs vertex ids such as 0,4,7");
-    }
-    return ids;
-}
 
 // Says whether the solve reached the tolerance and, if not, which patches are least
 // developable (sampled, as the desktop application's Solver panel names them).
@@ -88,43 +50,14 @@ void reportTolerance(const solver::SurfaceAssessment& assessment) {
 
 } // namespace
 
-int runSolveCommand(const std::vector<std::string>& positional,
-                    const std::vector<std::pair<std::string, std::string>>& options) {
-    if (positional.size() != 1) {
-        throw std::invalid_argument("expected one project file");
-    }
-    std::optional<int> iterations; // the job's: a limit, Solve stops once converged
-    double sigma = 0.0;
-    bool perturb = false;
-    unsigned seed = 1;
-    bool seedGiven = false;
-    std::vector<model::VertexId> fixed;
-    std::string output;
-    for (const auto& [name, value] : options) {
-        if (name == "--iterations") {
-            iterations = static_cast<int>(parseWhole(value, name, 1, 10000));
-        } else if (name == "--perturb") {
-            sigma = parseNumber(value, name);
-            if (sigma < 0.0) {
-                throw std::invalid_argument("option '--perturb' must not be negative");
-            }
-            perturb = true;
-        } else if (name == "--seed") {
-            seed = static_cast<unsigned>(parseWhole(value, name, 0, 0x7fffffff));
-            seedGiven = true;
-        } else if (name == "--fix") {
-            fixed = parseIds(value);
-        } else if (name == "-o") {
-            output = value;
-        }
-    }
-    if (output.empty()) {
-        throw std::invalid_argument("the output file is missing (use -o FILE)");
-    }
-    if (seedGiven && !perturb) {
-        throw std::invalid_argument("option '--seed' only makes sense with '--perturb'");
-    }
-    const std::string& path = positional[0];
+int runSolveCommand(const SolveArguments& args) {
+    const std::optional<int> iterations = args.iterations;
+    const bool perturb = args.perturb.has_value();
+    const double sigma = args.perturb.value_or(0.0);
+    const unsigned seed = args.seed;
+    const std::vector<model::VertexId>& fixed = args.fixed;
+    const std::string& output = args.output;
+    const std::string& path = args.input;
     model::Project project = io::loadProjectFile(QString::fromStdString(path));
     solver::JobRequest request;
     request.kind = solver::JobKind::Solve;
@@ -204,7 +137,7 @@ int runSolveCommand(const std::vector<std::string>& positional,
                   << describeSelfOverlap(a.overlapping) << "\n";
         project.surfaces[s] = outcome.surfaces[s];
     }
-    io::saveProjectFile(project, QString::fromStdString(output));
+    writeProject(project, output);
     std::cout << "Wrote " << output << "\n";
     return 0;
 }

@@ -1,6 +1,8 @@
 #include "vertex_commands.h"
 #include "model/derived_geometry.h"
 
+#include "cli_output.h"
+
 #include "io/project_file.h"
 #include "model/creases.h"
 #include "model/sampled_mesh.h"
@@ -128,16 +130,6 @@ void printSurfaceText(const model::CompositeSurface& surface, std::size_t index,
     }
 }
 
-std::string option(const std::vector<std::pair<std::string, std::string>>& options,
-                   const std::string& name) {
-    for (const auto& [key, value] : options) {
-        if (key == name) {
-            return value;
-        }
-    }
-    return {};
-}
-
 } // namespace
 
 void printEntities(const model::Project& project, const EntityListing& listing, std::ostream& out) {
@@ -156,81 +148,20 @@ void printEntities(const model::Project& project, const EntityListing& listing, 
     }
 }
 
-std::string requiredOption(const std::vector<std::pair<std::string, std::string>>& options,
-                           const std::string& name, const std::string& missing) {
-    std::string value = option(options, name);
-    if (value.empty()) {
-        throw std::invalid_argument(missing);
-    }
-    return value;
-}
-
-std::size_t surfaceOption(const std::vector<std::pair<std::string, std::string>>& options,
-                          const model::Project& project, const std::string& purpose) {
-    if (project.surfaces.empty()) {
-        throw std::invalid_argument("the project has no surface to " + purpose);
-    }
-    const std::string text = option(options, "--surface");
-    if (text.empty()) {
-        return 0;
-    }
-    std::size_t used = 0;
-    long value = 0;
-    try {
-        value = std::stol(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != text.size() || value < 1 ||
-        static_cast<std::size_t>(value) > project.surfaces.size()) {
-        throw std::invalid_argument("option '--surface' needs a surface number from 1 to " +
-                                    std::to_string(project.surfaces.size()) + ", not '" + text +
-                                    "'");
-    }
-    return static_cast<std::size_t>(value - 1);
-}
-
-std::vector<model::VertexId> parseVertexIds(const std::string& text, const std::string& option) {
-    return parseIds(text, option, "vertex");
-}
-
-std::vector<std::uint32_t> parseIds(const std::string& text, const std::string& option,
-                                    const std::string& what) {
-    std::vector<std::uint32_t> ids;
-    std::stringstream stream(text);
-    std::string item;
-    while (std::getline(stream, item, ',')) {
-        std::size_t used = 0;
-        long value = -1;
-        try {
-            value = std::stol(item, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used == 0 || used != item.size() || value < 0 || value > 0xfffffffeL) {
-            throw std::invalid_argument("option '" + option + "' needs " + what +
-                                        " ids such as 0,4,7, not '" + text + "'");
-        }
-        ids.push_back(static_cast<std::uint32_t>(value));
-    }
-    if (ids.empty()) {
-        throw std::invalid_argument("option '" + option + "' needs " + what + " ids such as 0,4,7");
-    }
-    return ids;
-}
-
-int runPinCommand(const std::vector<std::string>& positional,
-                  const std::vector<std::pair<std::string, std::string>>& options, bool unpin) {
-    if (positional.size() != 1) {
-        throw std::invalid_argument("expected one project file");
-    }
+int runPinCommand(const SubcommandArguments& args) {
+    const std::string input = args.onePositional("one project file");
     const std::string idsText =
-        requiredOption(options, "--vertices", "the vertices are missing (use --vertices IDS)");
-    const std::string output =
-        requiredOption(options, "-o", "the output file is missing (use -o FILE)");
-    const std::vector<model::VertexId> ids = parseVertexIds(idsText, "--vertices");
-    model::Project project = io::loadProjectFile(QString::fromStdString(positional[0]));
-    const std::size_t index = surfaceOption(options, project, "pin vertices of");
+        args.required("vertices", "the vertices are missing (use --vertices IDS)");
+    const std::string output = args.required("o", "the output file is missing (use -o FILE)");
+    const std::vector<model::VertexId> ids = parseIds(idsText, "--vertices", "vertex");
+    const int surfaceNumber =
+        args.isSet("surface")
+            ? static_cast<int>(parseWhole(*args.value("surface"), "--surface", 1, 1000000))
+            : 0;
+    const bool unpin = args.isSet("unpin");
+    checkOutput(output, {input}, OutputKind::Project, "the project");
+    model::Project project = io::loadProjectFile(QString::fromStdString(input));
+    const std::size_t index = surfaceIndex(surfaceNumber, project, "pin vertices of");
     model::CompositeSurface& surface = project.surfaces[index];
     std::string unknown;
     for (model::VertexId id : ids) {
@@ -246,7 +177,7 @@ int runPinCommand(const std::vector<std::string>& positional,
     for (model::VertexId id : ids) {
         surface.setPinned(id, !unpin);
     }
-    io::saveProjectFile(project, QString::fromStdString(output));
+    writeProject(project, output);
     std::cout << "Wrote " << output << " (" << surface.pinnedVertices().size() << " of "
               << surface.vertices().size() << " vertices pinned in '" << surface.name() << "')\n";
     return 0;

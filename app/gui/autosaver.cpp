@@ -94,6 +94,22 @@ void Autosaver::discard() {
 }
 
 QStringList Autosaver::staleRecoveryFiles(const QString& directory) {
+    // A session killed before it wrote a recovery file leaves only its lock: remove those of
+    // ended sessions, so they do not pile up (a running session's lock is not stale).
+    const QFileInfoList locks = QDir(directory).entryInfoList(
+        {QStringLiteral("session-*.devsurf.lock")}, QDir::Files | QDir::Hidden);
+    for (const QFileInfo& info : locks) {
+        const QString recovery = info.absoluteFilePath().chopped(int(qstrlen(".lock")));
+        if (QFileInfo::exists(recovery)) {
+            continue;
+        }
+        QLockFile lock(info.absoluteFilePath());
+        lock.setStaleLockTime(0);
+        if (lock.tryLock(0)) {
+            lock.unlock(); // removes the lock file
+            QFile::remove(sidecar(recovery));
+        }
+    }
     QStringList stale;
     const QFileInfoList files = QDir(directory).entryInfoList({QStringLiteral("session-*.devsurf")},
                                                               QDir::Files, QDir::Time);

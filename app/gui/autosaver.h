@@ -32,7 +32,8 @@ public:
     // The session ends cleanly: nothing to recover.
     void discard();
 
-    // Recovery files left by sessions that did not end cleanly, newest first.
+    // Recovery files left by sessions that did not end cleanly, newest first. Removes the locks
+    // of ended sessions that left no recovery file.
     static QStringList staleRecoveryFiles(const QString& directory);
     // The file the recovered work had been saved to, if any (empty for untitled work).
     static QString originalPath(const QString& recoveryFile);

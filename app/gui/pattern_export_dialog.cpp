@@ -1,5 +1,7 @@
 #include "pattern_export_dialog.h"
 
+#include "output_problem_text.h"
+
 #include "io/file_error.h"
 #include "io/pattern/fabrication_report.h"
 #include "model/project.h"
@@ -350,6 +352,12 @@ void PatternExportDialog::chooseFileAndExport() {
 }
 
 bool PatternExportDialog::exportTo(const QString& path) {
+    const io::OutputProblem problem = io::outputProblem(
+        path, m_projectFile.isEmpty() ? QStringList{} : QStringList{m_projectFile});
+    if (problem != io::OutputProblem::None) {
+        QMessageBox::critical(this, tr("Export failed"), outputProblemText(problem, path));
+        return false;
+    }
     const PatternSettings s = settings();
     s.save();
     // The progress dialog runs the event loop: the pattern written stays this one.

@@ -49,6 +49,9 @@ public:
     QLabel* warningLabel() const { return m_warning; }
     QComboBox* formatBox() const { return m_format; }
 
+    // The design's project file, which an export never overwrites (empty: not saved yet).
+    void setProjectFile(const QString& projectFile) { m_projectFile = projectFile; }
+
     // Writes the pattern to `path` with the current options, with a progress dialog for long
     // PDFs. Returns false (after telling the user) on failure or cancellation.
     bool exportTo(const QString& path);
@@ -67,6 +70,7 @@ private:
     const model::Project& m_project;
     QString m_baseName;
     QString m_directory;
+    QString m_projectFile;
     model::CuttingPattern m_pattern;
 
     QComboBox* m_format;

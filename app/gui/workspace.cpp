@@ -8,6 +8,7 @@
 #include "model/document/selection.h"
 #include "model/examples.h"
 #include "model/model_error.h"
+#include "output_problem_text.h"
 
 #include <QDateTime>
 #include <QDir>
@@ -18,6 +19,7 @@
 #include <QUndoStack>
 
 #include <algorithm>
+#include <new>
 
 namespace devsurf::app {
 
@@ -126,6 +128,9 @@ bool Workspace::open(const QString& path) {
         }
         showError(tr("Cannot open file"), QString::fromStdString(error.what()), details);
         return false;
+    } catch (const std::bad_alloc&) {
+        showError(tr("Cannot open file"), notEnoughMemoryText(path));
+        return false;
     }
 }
 
@@ -188,6 +193,9 @@ bool Workspace::recover(const QString& recoveryFile) {
         return true;
     } catch (const io::FileError& error) {
         showError(tr("Cannot recover"), QString::fromStdString(error.what()));
+        return false;
+    } catch (const std::bad_alloc&) {
+        showError(tr("Cannot recover"), notEnoughMemoryText(recoveryFile));
         return false;
     }
 }

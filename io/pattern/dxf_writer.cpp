@@ -11,10 +11,15 @@
 
 #include <QFile>
 #include <QString>
-#include <QTemporaryDir>
 
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <memory>
+#include <string>
 
 namespace devsurf::io {
 
@@ -236,28 +241,30 @@ private:
 } // namespace
 
 QByteArray patternDxf(const model::CuttingPattern& pattern, const PatternWriteOptions& options) {
-    // dxflib writes to a named file only: write into a private temporary folder, then hand the
-    // bytes to the caller (who saves them atomically).
-    QTemporaryDir dir;
-    if (!dir.isValid()) {
-        throw FileError("Cannot create a temporary folder for the DXF file: " +
-                        dir.errorString().toStdString() + ".");
+    // dxflib writes to a named file only: it writes into an anonymous file in memory (named
+    // through /proc/self/fd), whose bytes go to the caller, who saves them atomically. Nothing
+    // is left behind when the process is killed, and no temporary folder is needed.
+    const int fd = ::memfd_create("devsurf-pattern.dxf", MFD_CLOEXEC);
+    if (fd < 0) {
+        throw FileError(std::string("Cannot write the DXF file: ") + std::strerror(errno) + ".");
     }
-    const QString path = dir.filePath(QStringLiteral("pattern.dxf"));
+    QFile file;
+    if (!file.open(fd, QIODevice::ReadOnly, QFileDevice::AutoCloseHandle)) {
+        ::close(fd);
+        throw FileError("Cannot write the DXF file: " + file.errorString().toStdString() + ".");
+    }
     {
-        DxfBuilder builder(pattern, options, QFile::encodeName(path).toStdString());
+        DxfBuilder builder(pattern, options, "/proc/self/fd/" + std::to_string(fd));
         if (!builder.opened()) {
-            throw FileError("Cannot write a temporary DXF file in '" + dir.path().toStdString() +
-                            "'.");
+            throw FileError("Cannot write the DXF file: the memory file could not be opened.");
         }
         builder.write();
     }
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        throw FileError(
-            "Cannot read back the temporary DXF file: " + file.errorString().toStdString() + ".");
+    QByteArray bytes = file.readAll();
+    if (file.error() != QFileDevice::NoError) {
+        throw FileError("Cannot write the DXF file: " + file.errorString().toStdString() + ".");
     }
-    return file.readAll();
+    return bytes;
 }
 
 } // namespace devsurf::io

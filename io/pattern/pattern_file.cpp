@@ -3,6 +3,7 @@
 #include "pattern_writers.h"
 
 #include "io/file_error.h"
+#include "io/output_file.h"
 
 #include <QPdfWriter>
 #include <QSaveFile>
@@ -68,24 +69,6 @@ model::Vec2 paperSize(Paper paper) {
     return {size.width(), size.height()};
 }
 
-namespace {
-
-void commit(QSaveFile& file, const QString& path) {
-    if (!file.commit()) {
-        throw FileError("Cannot write '" + path.toStdString() +
-                        "': " + file.errorString().toStdString() + ".");
-    }
-}
-
-void openSaveFile(QSaveFile& file, const QString& path) {
-    if (!file.open(QIODevice::WriteOnly)) {
-        throw FileError("Cannot write '" + path.toStdString() +
-                        "': " + file.errorString().toStdString() + ".");
-    }
-}
-
-} // namespace
-
 bool savePatternFile(const model::CuttingPattern& pattern, PatternFormat format,
                      const QString& path, const PatternWriteOptions& options,
                      const PatternProgress& progress) {
@@ -93,9 +76,10 @@ bool savePatternFile(const model::CuttingPattern& pattern, PatternFormat format,
         throw FileError("Cannot write '" + path.toStdString() +
                         "': the cutting pattern has no pieces.");
     }
-    QSaveFile file(path);
     if (format == PatternFormat::Pdf) {
-        openSaveFile(file, path);
+        QSaveFile file(path);
+        // Buffered: the PDF writer writes many small pieces.
+        openOutputFile(file, path, QIODevice::WriteOnly);
         const PagePlan plan = planPages(pattern, paperSize(options.paper));
         QPdfWriter writer(&file);
         writer.setResolution(1200);
@@ -115,7 +99,7 @@ bool savePatternFile(const model::CuttingPattern& pattern, PatternFormat format,
             throw FileError("Cannot write '" + path.toStdString() +
                             "': the PDF pages could not be drawn.");
         }
-        commit(file, path);
+        commitOutputFile(file, path);
         return true;
     }
     QByteArray bytes;
@@ -132,12 +116,7 @@ bool savePatternFile(const model::CuttingPattern& pattern, PatternFormat format,
     case PatternFormat::Pdf:
         break;
     }
-    openSaveFile(file, path);
-    if (file.write(bytes) != bytes.size()) {
-        throw FileError("Cannot write '" + path.toStdString() +
-                        "': " + file.errorString().toStdString() + ".");
-    }
-    commit(file, path);
+    writeFileAtomically(path, bytes);
     return true;
 }
 

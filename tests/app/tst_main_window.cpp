@@ -22,9 +22,11 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QItemSelectionModel>
+#include <QLockFile>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QProcess>
 #include <QPushButton>
 #include <QSettings>
 #include <QTemporaryDir>
@@ -34,6 +36,8 @@
 #include <QTranslator>
 #include <QTreeView>
 #include <QUndoStack>
+#include <sys/resource.h>
+
 #include <cmath>
 #include <set>
 
@@ -263,6 +267,31 @@ private slots:
         QCOMPARE(io::encodeProject(window.workspace()->document()->project()), before);
     }
 
+    // Issue 46, 3: a device without an end is refused after its first bytes: no growth to
+    // gigabytes, no std::bad_alloc ending the application.
+    void openingAnEndlessDeviceIsRefusedAtOnce() {
+        if (!QFileInfo::exists(QStringLiteral("/dev/zero"))) {
+            QSKIP("no /dev/zero");
+        }
+        app::MainWindow window;
+        window.show();
+        struct rusage before {};
+        getrusage(RUSAGE_SELF, &before);
+        QString shown;
+        QTimer::singleShot(0, [&shown] {
+            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+                shown = box->text();
+                box->accept();
+            }
+        });
+        QVERIFY(!window.workspace()->open(QStringLiteral("/dev/zero")));
+        QVERIFY(shown.contains("/dev/zero"));
+        struct rusage after {};
+        getrusage(RUSAGE_SELF, &after);
+        QVERIFY2(after.ru_maxrss - before.ru_maxrss < 256 * 1024,
+                 qPrintable(QString::number(after.ru_maxrss - before.ru_maxrss) + " kB"));
+    }
+
     void unsavedWorkSurvivesACrash() {
         const QString original = m_dir.filePath("crash.devsurf");
         QString leftover;
@@ -331,6 +360,39 @@ private slots:
         QVERIFY(!QFile::exists(leftover));
         QVERIFY(next.workspace()->save());
         QCOMPARE(io::encodeProject(io::loadProjectFile(original)), edited);
+    }
+
+    // Issue 46, 6: a session killed before it wrote a recovery file leaves only its lock; the
+    // next start removes it (a running session's lock stays).
+    void staleLocksWithoutRecoveryFileAreRemoved() {
+        QTemporaryDir dir;
+        // A lock as a session writes it, then given to a process that has ended.
+        QProcess child;
+        child.start(QStringLiteral("sh"), {QStringLiteral("-c"), QStringLiteral("echo $$")});
+        QVERIFY(child.waitForFinished(30000));
+        const QByteArray deadPid = child.readAllStandardOutput().trimmed();
+        QVERIFY(!deadPid.isEmpty());
+        QByteArray contents;
+        {
+            QLockFile own(dir.filePath(QStringLiteral("own.lock")));
+            QVERIFY(own.tryLock(0));
+            QFile file(dir.filePath(QStringLiteral("own.lock")));
+            QVERIFY(file.open(QIODevice::ReadOnly));
+            contents = file.readAll();
+        }
+        contents = deadPid + contents.mid(contents.indexOf('\n'));
+        const QString dead = dir.filePath(QStringLiteral("session-1-2.devsurf.lock"));
+        {
+            QFile file(dead);
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write(contents);
+        }
+        document::Document document;
+        app::Autosaver running(&document, dir.path(), 60000);
+        QVERIFY(QFile::exists(running.recoveryFile() + QStringLiteral(".lock")));
+        QVERIFY(app::Autosaver::staleRecoveryFiles(dir.path()).isEmpty());
+        QVERIFY(!QFile::exists(dead));
+        QVERIFY(QFile::exists(running.recoveryFile() + QStringLiteral(".lock")));
     }
 
     void germanTranslationCoversTheMenus() {

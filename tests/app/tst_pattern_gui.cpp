@@ -1,4 +1,5 @@
 #include "../io/dxf_check.h"
+#include "io/project_file.h"
 #include "main_window.h"
 #include "model/examples.h"
 #include "model/project.h"
@@ -8,16 +9,19 @@
 #include "workspace.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QComboBox>
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPrinter>
 #include <QProcess>
 #include <QSettings>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 using namespace devsurf;
 
@@ -104,6 +108,34 @@ private slots:
                 QVERIFY2(action->shortcut() != print->shortcut(), qPrintable(action->objectName()));
             }
         }
+    }
+
+    // Issue 46, 1: the export dialog never writes over the design's project file.
+    void dialogRefusesTheProjectFile() {
+        const model::Project project = model::makeExample("cylinder");
+        const QString file = m_dir.filePath(QStringLiteral("cylinder.devsurf"));
+        io::saveProjectFile(project, file, io::Backup::None);
+        const QByteArray before = [&] {
+            QFile in(file);
+            return in.open(QIODevice::ReadOnly) ? in.readAll() : QByteArray();
+        }();
+        app::PatternExportDialog dialog(project, QStringLiteral("cylinder"), m_dir.path());
+        dialog.setProjectFile(file);
+        dialog.setSettings(bigSheet());
+        dialog.rebuildPattern();
+        bool answered = false;
+        QTimer::singleShot(0, [&answered] {
+            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+                answered = true;
+                box->accept();
+            }
+        });
+        QVERIFY(!dialog.exportTo(file));
+        QVERIFY(answered);
+        QFile in(file);
+        QVERIFY(in.open(QIODevice::ReadOnly));
+        QCOMPARE(in.readAll(), before);
+        QVERIFY(dialog.exportTo(m_dir.filePath(QStringLiteral("cylinder-pattern.out"))));
     }
 
     void printingPaintsThroughQPrinter() {

@@ -215,6 +215,34 @@ private slots:
                  std::optional<devsurf::model::Vec3>(uncached.scenes.front().vertices.at(vertex)));
         QCOMPARE(views.development->problem(), QString());
     }
+
+    // Issue 46, 5: edits, undo and redo of a large surface are developed in the background,
+    // so that undo bursts keep the window answering; the development view ends at the state
+    // undone to.
+    void largeSurfacesAreDevelopedInTheBackground() {
+        devsurf::test::SideBySideViews views(devsurf::model::makeExample("annulus", 30), 800, 400);
+        QVERIFY(views.show());
+        SceneCache* cache = SceneCache::of(&views.document);
+        QSignalSpy ready(cache, &SceneCache::developmentReady);
+        const auto vertex = views.document.surface(0).vertices().begin()->first;
+        push(views.document, devsurf::document::MoveVerticesCommand::createTranslation(
+                                 views.document, 0, {vertex}, {0.0, 0.0, 2.0}));
+        for (const int step : {0, 1, 2}) { // the push, its undo, its redo
+            if (step == 1) {
+                views.document.undoStack()->undo();
+            } else if (step == 2) {
+                views.document.undoStack()->redo();
+            }
+            QVERIFY(cache->developmentPending()); // not developed on the GUI thread
+            while (cache->developmentPending()) {
+                QVERIFY(ready.wait(30000));
+            }
+            const auto uncached = devsurf::views::buildDevelopmentScenes(views.document.project());
+            QCOMPARE(
+                views.development->vertexScenePoint(0, vertex),
+                std::optional<devsurf::model::Vec3>(uncached.scenes.front().vertices.at(vertex)));
+        }
+    }
 };
 
 DEVSURF_REGISTER_TEST(TstSceneCache);

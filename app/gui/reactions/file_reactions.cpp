@@ -1,6 +1,7 @@
 #include "file_reactions.h"
 
 #include "../example_dialog.h"
+#include "../output_problem_text.h"
 #include "../workspace.h"
 #include "io/file_error.h"
 #include "io/interchange_json.h"
@@ -113,6 +114,12 @@ void ExportJsonReaction::onTriggered() {
         tr("Interchange JSON (*.json)"));
     path = jsonPathFor(path, workspace()->window());
     if (path.isEmpty()) {
+        return;
+    }
+    const io::OutputProblem problem = io::outputProblem(
+        path, doc->filePath().isEmpty() ? QStringList{} : QStringList{doc->filePath()});
+    if (problem != io::OutputProblem::None) {
+        workspace()->showError(tr("Export failed"), outputProblemText(problem, path));
         return;
     }
     try {

@@ -73,6 +73,7 @@ void ExportPatternReaction::onTriggered() {
     const QString base = file.isEmpty() ? tr("untitled") : QFileInfo(file).completeBaseName();
     PatternExportDialog dialog(workspace()->document()->project(), base,
                                workspace()->fileDialogDirectory(), workspace()->window());
+    dialog.setProjectFile(file);
     if (dialog.exec() == QDialog::Accepted) {
         emit workspace()->statusMessage(tr("Exported the cutting pattern"));
     }

@@ -1,0 +1,183 @@
+#include "subcommands.h"
+
+namespace devsurf::app {
+
+namespace {
+
+const OptionSpec kOutputProject{"o", "OUT.devsurf", "The project file to write."};
+const OptionSpec kSurface{"surface", "K", "The surface to change (1 for the first, the default)."};
+
+// The pattern options export and report share.
+std::vector<OptionSpec> patternOptions(std::vector<OptionSpec> more) {
+    std::vector<OptionSpec> options{
+        {"sheet", "W,H", "Sheets of W x H mm (default 600,400)."},
+        {"paper", "A4|A3|Letter", "Sheets of a paper's printable size."},
+        {"tolerance", "MM", "Curves within MM (default 0.01)."},
+        {"seam", "MM", "A seam allowance of MM."},
+        {"rulings", "", "Rulings as scoring lines."}};
+    options.insert(options.end(), more.begin(), more.end());
+    return options;
+}
+
+} // namespace
+
+const std::vector<SubcommandSpec>& subcommands() {
+    static const std::vector<SubcommandSpec> all{
+        {"example",
+         "example NAME [--size K] -o FILE.devsurf",
+         "Write a built-in example (sheet, annulus, cylinder, mixed,\n"
+         "fig8, fig6; `devsurf-cli examples` lists them).",
+         {{"size", "K", "The example's size."},
+          {"o", "FILE.devsurf", "The project file to write."}}},
+        {"info",
+         "info FILE [--vertices] [--edges] [--json]",
+         "Print surfaces, faces per type, spline spaces, control points,\n"
+         "vertices and edges; --vertices lists every vertex (id, x y z,\n"
+         "pinned, boundary), --edges every edge (id, R or S, its vertices,\n"
+         "crease condition, smooth or sharp); --json prints those lists\n"
+         "as JSON.",
+         {{"vertices", "", "List every vertex."},
+          {"edges", "", "List every edge."},
+          {"json", "", "Print the lists as JSON."}}},
+        {"pin",
+         "pin FILE --vertices IDS [--unpin] [--surface K] -o OUT.devsurf",
+         "Pin vertices (the solver never moves them) or release them.",
+         {{"vertices", "IDS", "The vertices, such as 0,4,7."},
+          {"unpin", "", "Release the vertices instead."},
+          kSurface,
+          kOutputProject}},
+        {"crease",
+         "crease FILE --edges IDS --condition curved-fold|geodesic|straight|none [--surface K]\n"
+         "      -o OUT.devsurf",
+         "Set the condition the solver imposes on creases: a curved fold\n"
+         "(the crease's osculating plane bisects the two patches), a\n"
+         "geodesic, or straight when unfolded (in its left patch); none\n"
+         "clears it.",
+         {{"edges", "IDS", "The creases, such as 3,8."},
+          {"condition", "CONDITION", "curved-fold, geodesic, straight or none."},
+          kSurface,
+          kOutputProject}},
+        {"smooth",
+         "smooth FILE --edges IDS [--off] [--surface K] -o OUT.devsurf",
+         "Mark rulings between two patches smooth (the solver keeps the\n"
+         "surface smooth across them); --off makes them sharp again.",
+         {{"edges", "IDS", "The rulings, such as 3,8."},
+          {"off", "", "Make them sharp again."},
+          kSurface,
+          kOutputProject}},
+        {"validate", "validate FILE", "Check every invariant of the model; list all problems.", {}},
+        {"export-json",
+         "export-json FILE -o OUT.json [--samples N]",
+         "Write the interchange JSON (docs/interchange-format.md);\n"
+         "N samples per spline interval for the mesh (default 8).\n"
+         "-o - writes it to standard output.",
+         {{"o", "OUT.json", "The JSON file to write (- for standard output)."},
+          {"samples", "N", "Samples per spline interval (1 to 1000)."}}},
+        {"examples", "examples", "List the built-in examples and their sizes.", {}},
+        {"solve",
+         "solve FILE [--iterations N] [--perturb SIGMA [--seed S]] [--fix IDS] -o OUT.devsurf",
+         "Solve every surface as Tools > Solve does (the same solve job): until\n"
+         "the largest residual is below 1e-12, at most N iterations (default\n"
+         "30), ending on the iterate of smallest residual and leaving a surface\n"
+         "as it was where solving would make it less developable; write the\n"
+         "result; one line per iteration (residual, time for\n"
+         "assembly / factorisation / solve, quality). --perturb adds Gaussian\n"
+         "noise of SIGMA times the surface's diameter first; --fix keeps the\n"
+         "vertices with the given ids (e.g. 0,4,7) where they are. The output\n"
+         "may be the input file (its previous version is kept as FILE.bak).",
+         {{"iterations", "N", "At most N iterations (1 to 10000, default 30)."},
+          {"perturb", "SIGMA", "Gaussian noise of SIGMA times the diameter first."},
+          {"seed", "S", "The seed of the noise."},
+          {"fix", "IDS", "Vertices kept where they are, such as 0,4,7."},
+          kOutputProject}},
+        {"drag",
+         "drag FILE (--vertices IDS | --crease EDGE) (--by DX,DY,DZ | --rotate "
+         "PX,PY,PZ,AX,AY,AZ,DEGREES)\n"
+         "     [--steps N] [--pin IDS] [--after K] [--keep-lengths | --stretch] [--surface K]\n"
+         "     -o OUT.devsurf",
+         "Replay a drag as the desktop application runs it: the vertices are\n"
+         "moved by DX,DY,DZ (or rotated by DEGREES about the axis AX,AY,AZ\n"
+         "through PX,PY,PZ) in N evenly spaced steps (default 20) with one\n"
+         "solver iteration each, then K more iterations (default 20 when\n"
+         "keeping lengths, else 10). Pins in the file stay; --pin pins more\n"
+         "vertices. One line per step (residual, time, quality; a step\n"
+         "of a large model that reused the previous step's factorisation\n"
+         "says so). A vertex drag keeps lengths, as the desktop\n"
+         "application does by default: stretching of every strip's\n"
+         "control net is damped in each step, so the sheet bends rather\n"
+         "than stretches (the damping fades over the K iterations after\n"
+         "the moves; see the manual); where that fails (no convergence,\n"
+         "a fold-over or an overlapping development) the drag is\n"
+         "replayed letting the sheet stretch and the result with fewer\n"
+         "problems is written. --keep-lengths never replays; --stretch\n"
+         "never keeps lengths. --crease EDGE\n"
+         "instead of --vertices drags a crease by DX,DY,DZ: its control points\n"
+         "and unpinned ends slide within the surface, along the rulings of the\n"
+         "strip the crease leaves (the component along the surface normal is\n"
+         "dropped), and the strips on both sides change size; a crease drag\n"
+         "never keeps lengths.",
+         {{"vertices", "IDS", "The vertices to drag, such as 0,4,7."},
+          {"crease", "EDGE", "The crease to drag."},
+          {"by", "DX,DY,DZ", "Move by this vector."},
+          {"rotate", "PX,PY,PZ,AX,AY,AZ,DEGREES", "Rotate about the axis through a point."},
+          {"steps", "N", "Steps of the drag (1 to 10000, default 20)."},
+          {"pin", "IDS", "More vertices to pin."},
+          {"after", "K", "Iterations after the moves (0 to 10000)."},
+          {"keep-lengths", "", "Keep lengths; never replay stretching."},
+          {"stretch", "", "Never keep lengths."},
+          kSurface,
+          kOutputProject}},
+        {"export",
+         "export FILE --format dxf|svg|pdf|fold [--sheet W,H | --paper A4|A3|Letter]\n"
+         "       [--tolerance MM] [--splines] [--r12] [--seam MM] [--rulings] -o OUT",
+         "Write the cutting pattern: pieces laid out on sheets of W x H mm\n"
+         "(default 600,400) or of a paper's printable size; curves within\n"
+         "MM (default 0.01); DXF as SPLINEs (--splines) or R12 (--r12); a seam\n"
+         "allowance of MM; rulings as scoring lines. PDF prints 1:1 on the\n"
+         "paper (default A4), tiled, after the fabrication report. FOLD\n"
+         "always has the rulings (as flat edges, for folding simulators).\n"
+         "OUT must end in the format's extension (or have none); -o - writes\n"
+         "DXF, SVG or FOLD to standard output.",
+         patternOptions({{"format", "FORMAT", "dxf, svg, pdf or fold (default: OUT's extension)."},
+                         {"splines", "", "DXF: curves as SPLINEs."},
+                         {"r12", "", "DXF: R12 instead of R2000."},
+                         {"o", "OUT", "The file to write (- for standard output)."}})},
+        {"report", "report FILE [--json] [--sheet W,H | --paper NAME] [--tolerance MM] [--seam MM]",
+         "Print the fabrication report: per piece its sheet, size, area,\n"
+         "largest isometry error, overlaps, and whether it fits the sheet.",
+         patternOptions({{"json", "", "Print the report as JSON."}})},
+    };
+    return all;
+}
+
+const SubcommandSpec* findSubcommand(const std::string& name) {
+    for (const SubcommandSpec& spec : subcommands()) {
+        if (name == spec.name) {
+            return &spec;
+        }
+    }
+    return nullptr;
+}
+
+std::string overallHelp() {
+    std::string text = "Usage: devsurf-cli COMMAND [OPTIONS]\n\nCommands:\n";
+    for (const SubcommandSpec& spec : subcommands()) {
+        text += std::string("  ") + spec.synopsis + "\n";
+        std::string description = spec.description;
+        std::size_t start = 0;
+        while (start < description.size()) {
+            const std::size_t end = description.find('\n', start);
+            text += "                      " +
+                    description.substr(start, end == std::string::npos ? end : end - start) + "\n";
+            start = end == std::string::npos ? description.size() : end + 1;
+        }
+    }
+    return text + "\nThe solver benchmark is the separate program devsurf-bench [--json].\n\n"
+                  "Options:\n"
+                  "  -h, --help          Show this help (COMMAND --help: that command's).\n"
+                  "  --version           Show the version.\n\n"
+                  "Exit codes: 0 success, 1 bad usage, 2 invalid or unreadable input (or an\n"
+                  "output that cannot be written).\n";
+}
+
+} // namespace devsurf::app
