@@ -22,12 +22,12 @@ namespace devsurf::app {
 class Workspace;
 
 // Tools ▸ Solve and what it shares with the Drag tool: the background solver worker. A solve
-// takes a snapshot of every surface and runs the worker (iterations from the setting
-// "solver/iterations", default 10); the result becomes one undo step ("Solve") if the design
-// did not change meanwhile. Any edit while solving cancels the solve; a cancelled or failed
-// solve changes nothing and says why. solveEdit() does the same for an edit of one surface not
-// yet applied (Tools ▸ Move or Rotate Vertices with Keep developable): the edit and its solve
-// become one undo step, or nothing changes.
+// takes a snapshot of every surface and runs a Solve job on the worker (at most the setting
+// "solver/iterations", default solver::kSolveIterations); the result becomes one undo step
+// ("Solve") if the design did not change meanwhile and the result differs from it. Any edit while
+// solving cancels the solve; a cancelled or failed solve changes nothing and says why. solveEdit()
+// does the same for an edit of one surface not yet applied (Tools ▸ Move or Rotate Vertices with
+// Keep developable): the edit and its solve become one undo step, or nothing changes.
 class SolveController : public QObject {
     Q_OBJECT
 public:
