@@ -498,9 +498,14 @@ void DragTool::onResult(const solver::SolveResult& result) {
         return;
     }
     if (doc->revision() != m_ownRevision) {
-        // Another edit (an undo, say) replaced what the drag showed: it ends without a step.
+        // Another edit (an undo, say) changed the design during the drag: it ends without a
+        // step, and where the dragged surface still shows a move, the press comes back.
         m_solver->worker()->cancel();
-        m_previewed = false;
+        if (!(m_previewed && m_surface < doc->surfaceCount() &&
+              doc->surfaceRevision(m_surface) == m_ownRevision)) {
+            m_previewed = false;
+        }
+        restorePress();
         end(false, changedText());
         return;
     }
@@ -530,7 +535,13 @@ void DragTool::onResult(const solver::SolveResult& result) {
         end(false, tr("%1: %2").arg(undoText(), report.status));
         return;
     }
+    if (const auto problems = shape.validate(); !problems.empty()) {
+        abort(stoppedText(tr("The new shape cannot be applied: %1")
+                              .arg(QString::fromStdString(problems.front()))));
+        return;
+    }
     doc->previewSurface(m_surface, shape);
+    m_previewed = true;
     document::CommandOrError edit =
         document::ApplySurfaceCommand::createShown(*doc, m_surface, pressSurface(), undoText());
     if (edit.isRefused()) {

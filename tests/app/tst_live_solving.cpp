@@ -467,6 +467,30 @@ private slots:
         QCOMPARE(bytesOf(s.window), after);
     }
 
+    void anUndoDuringADragEndsItWithoutAStep() {
+        // The moves are shown outside the history; an undo meanwhile (here of the pin made
+        // before the press) wins: the drag ends, adds no step, and the design is the undo's.
+        Setup s;
+        QVERIFY(prepare(s));
+        const int stackAtPress = s.doc->undoStack()->count();
+        QSignalSpy finished(s.window.dragTool(), &app::DragTool::dragFinished);
+        QSignalSpy changed(s.doc, &document::Document::changed);
+        QTest::mousePress(s.gl, Qt::LeftButton, {}, s.at);
+        QTest::mouseMove(s.gl, s.at + QPoint(0, -20));
+        QVERIFY(changed.wait(60000));
+        s.doc->undoStack()->undo();
+        const std::string undone = bytesOf(s.window);
+        QVERIFY(!s.doc->surface(0).isPinned(kPinned));
+        QTest::mouseMove(s.gl, s.at + QPoint(0, -30));
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(finished.front().front().toBool(), false);
+        QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(0, -30));
+        QVERIFY(waitForWorkerIdle(s.window, 60000));
+        QCOMPARE(s.doc->undoStack()->count(), stackAtPress);
+        QCOMPARE(s.doc->undoStack()->index(), stackAtPress - 1);
+        QCOMPARE(bytesOf(s.window), undone);
+    }
+
     void escapeDuringADragRestoresTheStateAtPress() {
         Setup s;
         QVERIFY(prepare(s));
