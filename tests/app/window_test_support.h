@@ -12,6 +12,7 @@
 #include <QCoreApplication>
 #include <QSignalSpy>
 #include <QString>
+#include <QTest>
 
 #include <string>
 
@@ -20,6 +21,18 @@ namespace devsurf::test {
 // The project as it would be saved: byte-exact comparisons of undo and redo.
 inline std::string bytesOf(const app::MainWindow& window) {
     return io::encodeProject(window.workspace()->document()->project());
+}
+
+// Shows `window` active (keyboard shortcuts reach it) with the built-in example `name`; false
+// if the window never became active.
+inline bool showActiveWithExample(app::MainWindow& window, const QString& name) {
+    window.show();
+    window.activateWindow();
+    if (!QTest::qWaitForWindowActive(&window)) {
+        return false;
+    }
+    window.workspace()->newFromExample(name, 0);
+    return true;
 }
 
 // Waits (on the signal, never by sleeping) until the controller's solve has ended; returns its

@@ -1,0 +1,323 @@
+// The Drag tool: live moves, one undo step on release, Esc, pins that hold a vertex.
+#include "drag_tool.h"
+#include "io/project_file.h"
+#include "main_window.h"
+#include "model/document/commands/move_vertices_command.h"
+#include "model/document/commands/pin_vertices_command.h"
+#include "model/document/document.h"
+#include "model/document/selection.h"
+#include "model/examples.h"
+#include "panels/solver_panel.h"
+#include "solve_controller.h"
+#include "solver/quality/crease_quality.h"
+#include "solver/quality/quality_measures.h"
+#include "solver/worker/solver_worker.h"
+#include "test_registry.h"
+#include "views/development_view.h"
+#include "views/surface_view.h"
+#include "views/vtk_opengl_widget.h"
+#include "window_test_support.h"
+#include "workspace.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QMenu>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTest>
+#include <QTimer>
+#include <QUndoStack>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+using namespace devsurf;
+using document::Pick;
+using test::bytesOf;
+using test::showActiveWithExample;
+using test::waitForWorkerIdle;
+
+class TstDrag : public QObject {
+    Q_OBJECT
+
+    // A shown window with the annulus, vertex `dragged` and `other` selected, `pinned` pinned,
+    // and the Drag tool on.
+    struct Setup {
+        app::MainWindow window;
+        document::Document* doc = nullptr;
+        QWidget* gl = nullptr;
+        QPoint at;
+    };
+    static constexpr model::VertexId kDragged = 20;
+    static constexpr model::VertexId kOther = 21;
+    static constexpr model::VertexId kPinned = 0;
+
+    static bool prepare(Setup& s) {
+        if (!showActiveWithExample(s.window, QStringLiteral("annulus"))) {
+            return false;
+        }
+        s.doc = s.window.workspace()->document();
+        s.doc->undoStack()->push(document::PinVerticesCommand::create(*s.doc, 0, {kPinned}, true)
+                                     .takeCommand()
+                                     .release());
+        s.window.workspace()->selection()->set(
+            {{Pick::Kind::Vertex, 0, kDragged}, {Pick::Kind::Vertex, 0, kOther}});
+        s.window.action(QStringLiteral("actionDragTool"))->setChecked(true);
+        s.gl = s.window.surfaceView()->glWidget();
+        s.window.surfaceView()->grabImage();
+        s.at = s.window.surfaceView()->projectVertexToWidget(0, kDragged);
+        const auto pick = s.window.surfaceView()->pickAt(s.at);
+        return pick && pick->kind == Pick::Kind::Vertex && pick->id == kDragged;
+    }
+
+private slots:
+    void init() { QSettings().clear(); }
+
+    void lengthsWhileDraggingIsChosenInTheMenuAndRemembered() {
+        using Mode = app::SolveController::LengthsMode;
+        const model::CompositeSurface annulus = model::makeExample("annulus").surfaces[0];
+        const model::CompositeSurface fig8 = model::makeExample("fig8").surfaces[0];
+        {
+            app::MainWindow window;
+            QAction* automatic = window.action(QStringLiteral("actionLengthsAutomatic"));
+            QAction* keep = window.action(QStringLiteral("actionKeepLengths"));
+            QAction* stretch = window.action(QStringLiteral("actionLetStretch"));
+            QVERIFY(automatic && keep && stretch);
+            QVERIFY(automatic->isChecked() && !keep->isChecked() && !stretch->isChecked());
+            // Automatic: drags keep lengths and are replayed stretching where that fails.
+            QVERIFY(app::SolveController::keepsLengths());
+            QVERIFY(app::SolveController::stretchesWhereLengthsFail());
+            keep->trigger();
+            QVERIFY(keep->isChecked() && !automatic->isChecked());
+            QCOMPARE(app::SolveController::lengthsSetting(), Mode::Keep);
+            QVERIFY(app::SolveController::keepsLengths());
+            QVERIFY(!app::SolveController::stretchesWhereLengthsFail());
+            stretch->trigger();
+            QVERIFY(!app::SolveController::keepsLengths());
+            QVERIFY(!app::SolveController::stretchesWhereLengthsFail());
+        }
+        // A new window shows the choice made.
+        app::MainWindow again;
+        QVERIFY(again.action(QStringLiteral("actionLetStretch"))->isChecked());
+        // The on/off choice of earlier versions is taken over while no new choice was made.
+        QSettings().clear();
+        QSettings().setValue(QStringLiteral("solver/keepLengths"), true);
+        QCOMPARE(app::SolveController::lengthsSetting(), Mode::Keep);
+        QSettings().setValue(QStringLiteral("solver/keepLengths"), false);
+        QCOMPARE(app::SolveController::lengthsSetting(), Mode::Stretch);
+    }
+
+    void dragIsOneUndoStepAndUndoGivesTheStateAtPress() {
+        Setup s;
+        QVERIFY(prepare(s));
+        const int stackAtPress = s.doc->undoStack()->count();
+        const std::string atPress = bytesOf(s.window);
+        const model::Vec3 pinnedAt = s.doc->surface(0).position(kPinned);
+        const model::Vec3 start = s.doc->surface(0).position(kDragged);
+        QSignalSpy finished(s.window.dragTool(), &app::DragTool::dragFinished);
+        QSignalSpy changed(s.doc, &document::Document::changed);
+        QTest::mousePress(s.gl, Qt::LeftButton, {}, s.at);
+        QVERIFY(s.window.dragTool()->isDragging());
+        QSignalSpy stackMoves(s.doc->undoStack(), &QUndoStack::indexChanged);
+        const bool modifiedAtPress = s.doc->isModified();
+        for (int i = 1; i <= 6; ++i) {
+            QTest::mouseMove(s.gl, s.at + QPoint(0, -6 * i));
+            if (i == 3) {
+                QVERIFY(changed.wait(60000)); // the surface follows during the drag
+            }
+        }
+        // The moves are shown outside the undo history; the release pushes one step.
+        QCOMPARE(s.doc->undoStack()->count(), stackAtPress);
+        QCOMPARE(stackMoves.count(), 0);
+        QCOMPARE(s.doc->isModified(), modifiedAtPress);
+        QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(0, -36));
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(finished.front().front().toBool(), true);
+        QCOMPARE(s.doc->undoStack()->count(), stackAtPress + 1);
+        QCOMPARE(s.doc->undoStack()->undoText(), QStringLiteral("Drag 2 vertices"));
+        const model::Vec3 end = s.doc->surface(0).position(kDragged);
+        QVERIFY2((end - start).norm() > 1.0, qPrintable(QString::number((end - start).norm())));
+        const model::Vec3 pinnedNow = s.doc->surface(0).position(kPinned);
+        QVERIFY(pinnedNow.x == pinnedAt.x && pinnedNow.y == pinnedAt.y &&
+                pinnedNow.z == pinnedAt.z);
+        const app::SolveReport& shown = window(s)->solverPanel()->report();
+        QCOMPARE(shown.outcome.kind, solver::JobKind::VertexDrag);
+        QVERIFY(shown.outcome.settled);
+        const QString report = window(s)->solverPanel()->statusText();
+        // The report is the one of the iterations after the release: 20, since a vertex drag
+        // keeps lengths by default (Tools ▸ Lengths While Dragging ▸ Automatic).
+        const QAction* automatic =
+            s.window.findChild<QAction*>(QStringLiteral("actionLengthsAutomatic"));
+        QVERIFY(automatic && automatic->isChecked());
+        QVERIFY(app::SolveController::keepsLengths());
+        QVERIFY2(window(s)->solverPanel()->iterationRows() ==
+                         solver::kIterationsAfterDragKeepingLengths ||
+                     shown.outcome.assessments.front().summary.status == solver::Status::Converged,
+                 qPrintable(report));
+        const solver::QualityMeasures quality = solver::measureQuality(s.doc->surface(0));
+        qInfo("after the drag: developability max %.3g, mean %.3g", quality.developabilityMax,
+              quality.developabilityMean);
+        QVERIFY(std::isfinite(quality.developabilityMax));
+
+        const std::string after = bytesOf(s.window);
+        s.doc->undoStack()->undo();
+        QCOMPARE(bytesOf(s.window), atPress);
+        s.doc->undoStack()->redo();
+        QCOMPARE(bytesOf(s.window), after);
+    }
+
+    void anUndoDuringADragEndsItWithoutAStep() {
+        // The moves are shown outside the history; an undo meanwhile (here of the pin made
+        // before the press) wins: the drag ends, adds no step, and the design is the undo's.
+        Setup s;
+        QVERIFY(prepare(s));
+        const int stackAtPress = s.doc->undoStack()->count();
+        QSignalSpy finished(s.window.dragTool(), &app::DragTool::dragFinished);
+        QSignalSpy changed(s.doc, &document::Document::changed);
+        QTest::mousePress(s.gl, Qt::LeftButton, {}, s.at);
+        QTest::mouseMove(s.gl, s.at + QPoint(0, -20));
+        QVERIFY(changed.wait(60000));
+        s.doc->undoStack()->undo();
+        const std::string undone = bytesOf(s.window);
+        QVERIFY(!s.doc->surface(0).isPinned(kPinned));
+        QTest::mouseMove(s.gl, s.at + QPoint(0, -30));
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(finished.front().front().toBool(), false);
+        QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(0, -30));
+        QVERIFY(waitForWorkerIdle(s.window, 60000));
+        QCOMPARE(s.doc->undoStack()->count(), stackAtPress);
+        QCOMPARE(s.doc->undoStack()->index(), stackAtPress - 1);
+        QCOMPARE(bytesOf(s.window), undone);
+    }
+
+    void escapeDuringADragRestoresTheStateAtPress() {
+        Setup s;
+        QVERIFY(prepare(s));
+        const int stackAtPress = s.doc->undoStack()->count();
+        const std::string atPress = bytesOf(s.window);
+        QSignalSpy finished(s.window.dragTool(), &app::DragTool::dragFinished);
+        QSignalSpy changed(s.doc, &document::Document::changed);
+        QTest::mousePress(s.gl, Qt::LeftButton, {}, s.at);
+        QTest::mouseMove(s.gl, s.at + QPoint(0, -20));
+        QVERIFY(changed.wait(60000));
+        QVERIFY(bytesOf(s.window) != atPress);
+        QSignalSpy stackMoves(s.doc->undoStack(), &QUndoStack::indexChanged);
+        QTest::keyClick(s.gl, Qt::Key_Escape);
+        QCOMPARE(finished.size(), 1);
+        QCOMPARE(finished.front().front().toBool(), false);
+        QVERIFY(!s.window.dragTool()->isDragging());
+        QCOMPARE(bytesOf(s.window), atPress);
+        // Esc restored the press without touching the history (no undo, no obsolete step).
+        QCOMPARE(s.doc->undoStack()->count(), stackAtPress);
+        QCOMPARE(stackMoves.count(), 0);
+        QVERIFY(!s.window.workspace()->selection()->isEmpty()); // Esc did not select nothing
+        // The release after Esc is an ordinary release; nothing of the drag comes back.
+        QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(0, -20));
+        QVERIFY(waitForWorkerIdle(s.window, 60000));
+        QCOMPARE(bytesOf(s.window), atPress);
+    }
+
+    void qualityColoursFollowTheDrag() {
+        Setup s;
+        QVERIFY(prepare(s));
+        app::MainWindow& w = s.window;
+        QAction* developability = w.action(QStringLiteral("actionColourDevelopability"));
+        QVERIFY(developability != nullptr);
+        developability->trigger();
+        QCOMPARE(w.surfaceView()->colourBy(), views::ColourBy::Developability);
+        QVERIFY(w.surfaceView()->legendTitle().contains(QStringLiteral("Developability")));
+        const double flatHigh = w.surfaceView()->legendRange().second;
+        QSignalSpy finished(w.dragTool(), &app::DragTool::dragFinished);
+        QSignalSpy changed(s.doc, &document::Document::changed);
+        QTest::keyPress(s.gl, Qt::Key_Z); // lift along z
+        QTest::mousePress(s.gl, Qt::LeftButton, {}, s.at);
+        for (int i = 1; i <= 15; ++i) {
+            QTest::mouseMove(s.gl, s.at + QPoint(0, -2 * i));
+            if (i == 8) {
+                QVERIFY(changed.wait(60000));
+            }
+        }
+        QCOMPARE(w.dragTool()->axis(), app::DragTool::Axis::Z);
+        QVERIFY(changed.wait(60000));
+        // The legend is refitted to the surface being dragged.
+        QVERIFY(w.surfaceView()->legendRange().second != flatHigh);
+        QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(0, -30));
+        QTest::keyRelease(s.gl, Qt::Key_Z);
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(w.dragTool()->axis(), app::DragTool::Axis::Free);
+        // A picture of the result for the documentation, on request.
+        const QString shot = qEnvironmentVariable("DEVSURF_DRAG_SCREENSHOT");
+        if (!shot.isEmpty()) {
+            QVERIFY(w.grab().save(shot));
+        }
+        const model::Vec3 moved = s.doc->surface(0).position(kDragged);
+        QVERIFY(moved.z > 1.0);
+        w.action(QStringLiteral("actionColourAngleDefect"))->trigger();
+        QVERIFY(w.surfaceView()->legendTitle().contains(QStringLiteral("Angle defect")));
+        w.action(QStringLiteral("actionColourPatch"))->trigger();
+        QVERIFY(w.surfaceView()->legendTitle().isEmpty());
+    }
+
+    void pressingAwayFromVerticesStillTurnsTheCamera() {
+        Setup s;
+        QVERIFY(prepare(s));
+        QTest::mousePress(s.gl, Qt::LeftButton, {}, QPoint(5, 5));
+        QVERIFY(!s.window.dragTool()->isDragging());
+        QTest::mouseRelease(s.gl, Qt::LeftButton, {}, QPoint(5, 5));
+    }
+
+    // fig8 with all four corners pinned: they hold the whole flat square, so a vertex drag that
+    // keeps lengths must stretch it. The status bar says so while the mouse moves, the Solver
+    // panel after the release.
+    void aDragOfAVertexThePinsHoldSaysSo() {
+        app::MainWindow w;
+        QVERIFY(showActiveWithExample(w, QStringLiteral("fig8")));
+        document::Document* doc = w.workspace()->document();
+        doc->undoStack()->push(
+            document::PinVerticesCommand::create(*doc, 0, {12, 15}, true).takeCommand().release());
+        w.action(QStringLiteral("actionDragTool"))->setChecked(true);
+        QWidget* gl = w.surfaceView()->glWidget();
+        w.surfaceView()->grabImage();
+        const QPoint at = w.surfaceView()->projectVertexToWidget(0, 5);
+        const auto pick = w.surfaceView()->pickAt(at);
+        QVERIFY(pick && pick->kind == Pick::Kind::Vertex && pick->id == 5);
+        QSignalSpy status(w.dragTool(), &app::DragTool::statusMessage);
+        QSignalSpy finished(w.dragTool(), &app::DragTool::dragFinished);
+        QTest::mousePress(gl, Qt::LeftButton, {}, at);
+        QTest::mouseMove(gl, at + QPoint(0, -10));
+        QVERIFY(!status.isEmpty());
+        const QString moving = status.back().front().toString();
+        QVERIFY2(moving.startsWith(QStringLiteral("Pins 0, 3 and 12 hold vertex 5 in the "
+                                                  "triangle between them")),
+                 qPrintable(moving));
+        QTest::mouseRelease(gl, Qt::LeftButton, {}, at + QPoint(0, -10));
+        QVERIFY(finished.wait(60000));
+        const auto& held = w.solverPanel()->report().outcome.assessments.front().held;
+        QVERIFY(held.has_value());
+        QCOMPARE(held->vertex, model::VertexId{5});
+        QCOMPARE(held->pins, (std::vector<model::VertexId>{0, 3, 12}));
+
+        // The example's two bottom corners hold only the bottom edge: nothing said.
+        doc->undoStack()->undo(); // the drag
+        doc->undoStack()->undo(); // the two pins
+        QVERIFY(!doc->surface(0).isPinned(12));
+        status.clear();
+        QTest::mousePress(gl, Qt::LeftButton, {}, at);
+        QTest::mouseMove(gl, at + QPoint(0, -10));
+        QVERIFY(!status.isEmpty());
+        QVERIFY(status.back().front().toString().startsWith(QStringLiteral("Dragging")));
+        QTest::mouseRelease(gl, Qt::LeftButton, {}, at + QPoint(0, -10));
+        QVERIFY(finished.wait(60000));
+        QVERIFY(w.solverPanel()->report().outcome.settled);
+        QVERIFY(!w.solverPanel()->report().outcome.assessments.front().held);
+    }
+
+private:
+    static app::MainWindow* window(Setup& s) { return &s.window; }
+};
+
+DEVSURF_REGISTER_TEST(TstDrag);
+
+#include "tst_drag.moc"
