@@ -53,6 +53,9 @@ public:
 
     enum class Axis { Free, X, Y, Z };
     bool isDragging() const { return m_state != State::Idle; }
+    // Pins that hold a dragged vertex where the sheet cannot bend, as found at the press of a
+    // vertex drag keeping lengths (said in the status bar while the mouse moves).
+    const std::optional<model::HeldVertex>& heldAtPress() const { return m_held; }
     // The axis in effect: the one of a held X, Y or Z key, else the chosen one.
     Axis axis() const { return m_heldAxis != Axis::Free ? m_heldAxis : m_chosenAxis; }
     Axis chosenAxis() const { return m_chosenAxis; }

@@ -288,10 +288,11 @@ private slots:
         QTest::mousePress(gl, Qt::LeftButton, {}, at);
         QTest::mouseMove(gl, at + QPoint(0, -10));
         QVERIFY(!status.isEmpty());
-        const QString moving = status.back().front().toString();
-        QVERIFY2(moving.startsWith(QStringLiteral("Pins 0, 3 and 12 hold vertex 5 in the "
-                                                  "triangle between them")),
-                 qPrintable(moving));
+        QVERIFY(w.dragTool()->isDragging());
+        const auto& atPress = w.dragTool()->heldAtPress();
+        QVERIFY(atPress.has_value());
+        QCOMPARE(atPress->vertex, model::VertexId{5});
+        QCOMPARE(atPress->pins, (std::vector<model::VertexId>{0, 3, 12}));
         QTest::mouseRelease(gl, Qt::LeftButton, {}, at + QPoint(0, -10));
         QVERIFY(finished.wait(60000));
         const auto& held = w.solverPanel()->report().outcome.assessments.front().held;
@@ -307,7 +308,8 @@ private slots:
         QTest::mousePress(gl, Qt::LeftButton, {}, at);
         QTest::mouseMove(gl, at + QPoint(0, -10));
         QVERIFY(!status.isEmpty());
-        QVERIFY(status.back().front().toString().startsWith(QStringLiteral("Dragging")));
+        QVERIFY(w.dragTool()->isDragging());
+        QVERIFY(!w.dragTool()->heldAtPress());
         QTest::mouseRelease(gl, Qt::LeftButton, {}, at + QPoint(0, -10));
         QVERIFY(finished.wait(60000));
         QVERIFY(w.solverPanel()->report().outcome.settled);
