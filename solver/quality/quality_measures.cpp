@@ -106,6 +106,23 @@ std::vector<double> vertexAngleDefects(const model::SampledMesh& mesh) {
     return defects;
 }
 
+namespace {
+
+// Count, mean and largest of the values that are not NaN (NaN: no value there).
+void accumulate(const std::vector<double>& values, int& count, double& mean, double& largest) {
+    double sum = 0.0;
+    for (double value : values) {
+        if (!std::isnan(value)) {
+            ++count;
+            sum += value;
+            largest = std::max(largest, value);
+        }
+    }
+    mean = count > 0 ? sum / count : 0.0;
+}
+
+} // namespace
+
 QualityMeasures measureQuality(const model::CompositeSurface& surface,
                                const QualityOptions& options) {
     QualityMeasures q;
@@ -113,29 +130,12 @@ QualityMeasures measureQuality(const model::CompositeSurface& surface,
         model::DerivedGeometry::of(surface, std::max(1, options.meshSamplesPerInterval));
     const model::SampledMesh& mesh = derived->mesh();
 
-    double flatnessSum = 0.0;
-    for (double delta : faceFlatness(mesh)) {
-        if (!std::isnan(delta)) {
-            ++q.quads;
-            flatnessSum += delta;
-            q.flatnessMax = std::max(q.flatnessMax, delta);
-        }
-    }
-    q.flatnessMean = q.quads > 0 ? flatnessSum / q.quads : 0.0;
-
-    double curvatureSum = 0.0;
-    for (double k : vertexAngleDefects(mesh)) {
-        if (!std::isnan(k)) {
-            ++q.interiorVertices;
-            curvatureSum += k;
-            q.curvatureMax = std::max(q.curvatureMax, k);
-        }
-    }
-    q.curvatureMean = q.interiorVertices > 0 ? curvatureSum / q.interiorVertices : 0.0;
+    accumulate(faceFlatness(mesh), q.quads, q.flatnessMean, q.flatnessMax);
+    accumulate(vertexAngleDefects(mesh), q.interiorVertices, q.curvatureMean, q.curvatureMax);
 
     const int samples = std::max(1, options.developabilitySamplesPerInterval);
     double developabilitySum = 0.0;
-    for (const model::Strip& strip : model::stripsOf(surface)) {
+    for (const model::Strip& strip : derived->strips()) {
         if (strip.isCone()) {
             continue; // cones are developable by construction
         }
