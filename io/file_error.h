@@ -1,21 +1,24 @@
 #pragma once
 
+#include "model/problem.h"
+
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace devsurf::io {
 
-// A file could not be read or written. The message is one sentence for the user; details
-// lists every problem found where there are several (e.g. all validation problems).
+// A file could not be read or written. The message is one sentence for the user; where the
+// file describes an impossible design, `problems` lists what the model found, for the front end
+// to word (app/text).
 class FileError : public std::runtime_error {
 public:
-    explicit FileError(const std::string& message, std::vector<std::string> details = {})
-        : std::runtime_error(message), m_details(std::move(details)) {}
-    const std::vector<std::string>& details() const { return m_details; }
+    explicit FileError(const std::string& message, std::vector<model::Problem> problems = {})
+        : std::runtime_error(message), m_problems(std::move(problems)) {}
+    const std::vector<model::Problem>& problems() const { return m_problems; }
 
 private:
-    std::vector<std::string> m_details;
+    std::vector<model::Problem> m_problems;
 };
 
 } // namespace devsurf::io

@@ -320,7 +320,7 @@ model::Project readProjectArchive(const std::string& payload) {
     } catch (const FileError&) {
         throw;
     } catch (const model::ModelError& error) {
-        throw FileError(std::string("it describes an impossible surface: ") + error.what());
+        throw FileError("it describes an impossible surface", {error.problem()});
     } catch (const boost::archive::archive_exception& error) {
         throw FileError(std::string("its contents are damaged (") + error.what() + ")");
     } catch (const std::exception& error) {
@@ -338,8 +338,7 @@ model::Project readProjectArchive(const std::string& payload) {
     for (const model::CompositeSurface& surface : project.surfaces) {
         const auto problems = surface.validate();
         if (!problems.empty()) {
-            throw FileError("its surface '" + surface.name() + "' is invalid: " + problems.front(),
-                            problems);
+            throw FileError("its surface '" + surface.name() + "' is invalid", problems);
         }
     }
     return project;

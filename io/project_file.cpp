@@ -204,7 +204,7 @@ model::Project loadProjectFile(const QString& path) {
         }
         throw FileError("Cannot open " + quoted(path) + ": " + withoutFinalPeriod(error.what()) +
                             ".",
-                        error.details());
+                        error.problems());
     }
 }
 

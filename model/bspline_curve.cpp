@@ -167,12 +167,12 @@ BSplineCurve::BSplineCurve(int degree, std::vector<double> knots, std::vector<Ve
 BSplineCurve BSplineCurve::uniform(const SplineSpace& space, std::vector<Vec3> controlPoints,
                                    bool closed) {
     if (!space.isValid()) {
-        fail("Invalid spline space: " + space.describe() + ".");
+        fail("Invalid spline space: " + space.technicalKey() + ".");
     }
     const int count = space.controlPointCount(closed);
     if (controlPoints.size() != idx(count)) {
         fail("A" + std::string(closed ? " closed" : "n open") + " curve in the spline space " +
-             space.describe() + " needs " + std::to_string(count) + " control points, got " +
+             space.technicalKey() + " needs " + std::to_string(count) + " control points, got " +
              std::to_string(controlPoints.size()) + ".");
     }
     return BSplineCurve(space.degree, space.knots(closed), std::move(controlPoints), closed);

@@ -96,8 +96,10 @@ std::pair<VertexId, VertexId> edgeKey(VertexId a, VertexId b) {
     return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
 }
 
-std::string str(std::uint32_t id) {
-    return std::to_string(id);
+Problem noEdgeBetween(VertexId a, VertexId b) {
+    Problem problem = vertexProblem(ProblemCode::NoEdgeBetween, a);
+    problem.otherVertex = b;
+    return problem;
 }
 
 } // namespace
@@ -110,7 +112,7 @@ VertexId CompositeSurface::addVertex(const Vec3& position) {
 
 void CompositeSurface::addVertexWithId(VertexId id, const Vec3& position) {
     if (id == kInvalidId || m_vertices.count(id) != 0) {
-        throw ModelError("vertex id " + str(id) + " is used twice.");
+        throw ModelError(elementProblem(ProblemCode::IdUsedTwice, Element::Vertex, id));
     }
     m_vertices.emplace(id, position);
     auto handle = m_connectivity->mesh.add_vertex(Mesh::Point(0, 0, 0));
@@ -121,15 +123,17 @@ void CompositeSurface::addVertexWithId(VertexId id, const Vec3& position) {
 
 void CompositeSurface::addEdgeWithId(EdgeId id, const EdgeRecord& record) {
     if (id == kInvalidId || m_edges.count(id) != 0) {
-        throw ModelError("edge id " + str(id) + " is used twice.");
+        throw ModelError(elementProblem(ProblemCode::IdUsedTwice, Element::Edge, id));
     }
     if (!hasVertex(record.from) || !hasVertex(record.to) || record.from == record.to) {
-        throw ModelError("edge " + str(id) + " does not join two distinct existing vertices.");
+        throw ModelError(edgeProblem(ProblemCode::EdgeEndsInvalid, id));
     }
     const auto key = edgeKey(record.from, record.to);
     if (m_edgeByVertices.count(key) != 0) {
-        throw ModelError("edge " + str(id) + " duplicates the edge between vertices " +
-                         str(record.from) + " and " + str(record.to) + ".");
+        Problem problem = edgeProblem(ProblemCode::DuplicateEdge, id);
+        problem.vertex = record.from;
+        problem.otherVertex = record.to;
+        throw ModelError(problem);
     }
     m_edges.emplace(id, record);
     m_edgeByVertices.emplace(key, id);
@@ -144,20 +148,19 @@ FaceId CompositeSurface::addFace(const std::vector<VertexId>& loop) {
 
 void CompositeSurface::addFaceWithId(FaceId id, const std::vector<VertexId>& loop) {
     if (id == kInvalidId || m_faces.count(id) != 0) {
-        throw ModelError("face id " + str(id) + " is used twice.");
+        throw ModelError(elementProblem(ProblemCode::IdUsedTwice, Element::Face, id));
     }
     insertFace(id, loop);
     m_nextFaceId = std::max(m_nextFaceId, id + 1);
 }
 
 void CompositeSurface::insertFace(FaceId id, const std::vector<VertexId>& loop) {
-    const std::string face = "face " + str(id);
     if (loop.size() < 3) {
-        throw ModelError(face + " has fewer than three vertices.");
+        throw ModelError(faceProblem(ProblemCode::FaceTooFewVertices, id));
     }
     std::set<VertexId> distinct(loop.begin(), loop.end());
     if (distinct.size() != loop.size()) {
-        throw ModelError(face + " visits a vertex twice.");
+        throw ModelError(faceProblem(ProblemCode::FaceRepeatsVertex, id));
     }
     Connectivity& c = *m_connectivity;
     std::vector<Mesh::VertexHandle> handles;
@@ -165,7 +168,9 @@ void CompositeSurface::insertFace(FaceId id, const std::vector<VertexId>& loop) 
     for (VertexId v : loop) {
         auto it = c.vertexHandle.find(v);
         if (it == c.vertexHandle.end()) {
-            throw ModelError(face + " refers to vertex " + str(v) + ", which does not exist.");
+            Problem problem = faceProblem(ProblemCode::FaceMissingVertex, id);
+            problem.vertex = v;
+            throw ModelError(problem);
         }
         handles.push_back(it->second);
     }
@@ -174,15 +179,15 @@ void CompositeSurface::insertFace(FaceId id, const std::vector<VertexId>& loop) 
         const auto to = handles[(i + 1) % loop.size()];
         const auto halfedge = c.mesh.find_halfedge(from, to);
         if (halfedge.is_valid() && !c.mesh.is_boundary(halfedge)) {
-            throw ModelError(face + " runs along the edge from vertex " + str(loop[i]) +
-                             " to vertex " + str(loop[(i + 1) % loop.size()]) +
-                             " in the same direction as another face: faces must be oriented "
-                             "consistently and an edge can border at most two faces.");
+            Problem problem = faceProblem(ProblemCode::FaceOrientation, id);
+            problem.vertex = loop[i];
+            problem.otherVertex = loop[(i + 1) % loop.size()];
+            throw ModelError(problem);
         }
     }
     const auto faceHandle = c.mesh.add_face(handles);
     if (!faceHandle.is_valid()) {
-        throw ModelError(face + " cannot be attached without making the mesh non-manifold.");
+        throw ModelError(faceProblem(ProblemCode::FaceNonManifold, id));
     }
     c.mesh.property(c.faceId, faceHandle) = id;
     for (std::size_t i = 0; i < loop.size(); ++i) {
@@ -216,7 +221,7 @@ void CompositeSurface::setNextIds(VertexId vertex, EdgeId edge, FaceId face) {
 EdgeRecord& CompositeSurface::mutableEdge(EdgeId id) {
     auto it = m_edges.find(id);
     if (it == m_edges.end()) {
-        throw ModelError("edge " + str(id) + " does not exist.");
+        throw ModelError(elementProblem(ProblemCode::Missing, Element::Edge, id));
     }
     return it->second;
 }
@@ -225,7 +230,7 @@ EdgeId CompositeSurface::setSpline(VertexId a, VertexId b, const SplineSpace& sp
                                    std::vector<Vec3> controlPoints) {
     const EdgeId id = edgeBetween(a, b);
     if (id == kInvalidId) {
-        throw ModelError("there is no edge between vertices " + str(a) + " and " + str(b) + ".");
+        throw ModelError(noEdgeBetween(a, b));
     }
     EdgeRecord& record = mutableEdge(id);
     record.from = a;
@@ -253,7 +258,7 @@ void CompositeSurface::setCreaseCondition(EdgeId edge, CreaseCondition condition
 void CompositeSurface::setSmooth(EdgeId edge, bool smooth) {
     EdgeRecord& record = mutableEdge(edge);
     if (record.isSpline() && smooth) {
-        throw ModelError("edge " + str(edge) + " is a curve; only rulings are smooth or sharp.");
+        throw ModelError(edgeProblem(ProblemCode::CurveCannotBeSmooth, edge));
     }
     record.smooth = smooth;
 }
@@ -267,7 +272,7 @@ void CompositeSurface::reverseEdge(EdgeId edge) {
 void CompositeSurface::moveVertex(VertexId vertex, const Vec3& position) {
     auto it = m_vertices.find(vertex);
     if (it == m_vertices.end()) {
-        throw ModelError("vertex " + str(vertex) + " does not exist.");
+        throw ModelError(elementProblem(ProblemCode::Missing, Element::Vertex, vertex));
     }
     it->second = position;
     for (auto& [id, record] : m_edges) {
@@ -287,7 +292,7 @@ void CompositeSurface::moveVertices(const std::vector<std::pair<VertexId, Vec3>>
     std::map<VertexId, Vec3> moved;
     for (const auto& [vertex, position] : moves) {
         if (m_vertices.find(vertex) == m_vertices.end()) {
-            throw ModelError("vertex " + str(vertex) + " does not exist.");
+            throw ModelError(elementProblem(ProblemCode::Missing, Element::Vertex, vertex));
         }
         moved[vertex] = position;
     }
@@ -313,7 +318,7 @@ void CompositeSurface::setControlPoints(EdgeId edge, std::vector<Vec3> controlPo
 
 void CompositeSurface::setPinned(VertexId vertex, bool pinned) {
     if (!hasVertex(vertex)) {
-        throw ModelError("vertex " + str(vertex) + " does not exist.");
+        throw ModelError(elementProblem(ProblemCode::Missing, Element::Vertex, vertex));
     }
     if (pinned) {
         m_pinned.insert(vertex);
@@ -325,7 +330,7 @@ void CompositeSurface::setPinned(VertexId vertex, bool pinned) {
 const Vec3& CompositeSurface::position(VertexId id) const {
     auto it = m_vertices.find(id);
     if (it == m_vertices.end()) {
-        throw ModelError("vertex " + str(id) + " does not exist.");
+        throw ModelError(elementProblem(ProblemCode::Missing, Element::Vertex, id));
     }
     return it->second;
 }
@@ -333,7 +338,7 @@ const Vec3& CompositeSurface::position(VertexId id) const {
 const EdgeRecord& CompositeSurface::edge(EdgeId id) const {
     auto it = m_edges.find(id);
     if (it == m_edges.end()) {
-        throw ModelError("edge " + str(id) + " does not exist.");
+        throw ModelError(elementProblem(ProblemCode::Missing, Element::Edge, id));
     }
     return it->second;
 }
@@ -341,7 +346,7 @@ const EdgeRecord& CompositeSurface::edge(EdgeId id) const {
 const std::vector<VertexId>& CompositeSurface::faceLoop(FaceId id) const {
     auto it = m_faces.find(id);
     if (it == m_faces.end()) {
-        throw ModelError("face " + str(id) + " does not exist.");
+        throw ModelError(elementProblem(ProblemCode::Missing, Element::Face, id));
     }
     return it->second;
 }
@@ -387,7 +392,7 @@ std::vector<EdgeId> CompositeSurface::faceEdges(FaceId face) const {
 std::vector<Vec3> CompositeSurface::controlPointsFrom(VertexId a, VertexId b) const {
     const EdgeId id = edgeBetween(a, b);
     if (id == kInvalidId) {
-        throw ModelError("there is no edge between vertices " + str(a) + " and " + str(b) + ".");
+        throw ModelError(noEdgeBetween(a, b));
     }
     const EdgeRecord& record = edge(id);
     std::vector<Vec3> points = record.controlPoints;
@@ -466,10 +471,10 @@ std::vector<std::vector<EdgeId>> CompositeSurface::splineClasses() const {
     return classes;
 }
 
-std::vector<std::string> CompositeSurface::validate() const {
-    std::vector<std::string> problems;
+std::vector<Problem> CompositeSurface::validate() const {
+    std::vector<Problem> problems;
     if (m_faces.empty()) {
-        problems.push_back("the surface has no faces.");
+        problems.push_back(problemOf(ProblemCode::NoFaces));
     }
     std::set<VertexId> usedVertices;
     std::set<EdgeId> usedEdges;
@@ -481,42 +486,44 @@ std::vector<std::string> CompositeSurface::validate() const {
     }
     for (const auto& [id, p] : m_vertices) {
         if (usedVertices.count(id) == 0) {
-            problems.push_back("vertex " + str(id) + " belongs to no face.");
+            problems.push_back(elementProblem(ProblemCode::Unused, Element::Vertex, id));
         }
         if (id >= m_nextVertexId) {
-            problems.push_back("vertex " + str(id) + " lies beyond the id counter.");
+            problems.push_back(elementProblem(ProblemCode::BeyondIdCounter, Element::Vertex, id));
         }
     }
     for (const auto& [id, record] : m_edges) {
-        const std::string name = "edge " + str(id);
         if (usedEdges.count(id) == 0) {
-            problems.push_back(name + " belongs to no face.");
+            problems.push_back(elementProblem(ProblemCode::Unused, Element::Edge, id));
         }
         if (id >= m_nextEdgeId) {
-            problems.push_back(name + " lies beyond the id counter.");
+            problems.push_back(elementProblem(ProblemCode::BeyondIdCounter, Element::Edge, id));
         }
         if (record.label != EdgeLabel::Spline) {
             if (!record.controlPoints.empty() || record.condition != CreaseCondition::None) {
-                problems.push_back(name + " is a ruling but carries spline data.");
+                problems.push_back(edgeProblem(ProblemCode::RulingWithSplineData, id));
             }
             if (record.smooth && facesOfEdge(id).size() != 2) {
-                problems.push_back(name + " is marked smooth but is not shared by two faces.");
+                problems.push_back(edgeProblem(ProblemCode::SmoothNotShared, id));
             }
             continue;
         }
         if (record.smooth) {
-            problems.push_back(name + " is a curve but is marked smooth (only rulings are).");
+            problems.push_back(edgeProblem(ProblemCode::CurveMarkedSmooth, id));
         }
         if (!record.space.isValid()) {
-            problems.push_back(name + " has an invalid spline space (" + record.space.describe() +
-                               ").");
+            Problem problem = edgeProblem(ProblemCode::InvalidSplineSpace, id);
+            problem.space = record.space;
+            problems.push_back(problem);
             continue;
         }
         const auto expected = static_cast<std::size_t>(record.space.controlPointCount(false));
         if (record.controlPoints.size() != expected) {
-            problems.push_back(name + " has " + std::to_string(record.controlPoints.size()) +
-                               " control points; its spline space (" + record.space.describe() +
-                               ") needs " + std::to_string(expected) + ".");
+            Problem problem = edgeProblem(ProblemCode::ControlPointCount, id);
+            problem.count = static_cast<long long>(record.controlPoints.size());
+            problem.expected = static_cast<long long>(expected);
+            problem.space = record.space;
+            problems.push_back(problem);
             continue;
         }
         bool finite = true;
@@ -524,30 +531,34 @@ std::vector<std::string> CompositeSurface::validate() const {
             finite = finite && p.isFinite();
         }
         if (!finite) {
-            problems.push_back(name + " has a control point that is not a finite number.");
+            problems.push_back(edgeProblem(ProblemCode::ControlPointNotFinite, id));
         }
         auto from = m_vertices.find(record.from);
         auto to = m_vertices.find(record.to);
         if (from != m_vertices.end() && record.controlPoints.front() != from->second) {
-            problems.push_back(name + " does not start at its vertex " + str(record.from) + ".");
+            Problem problem = edgeProblem(ProblemCode::CurveNotAtVertex, id);
+            problem.vertex = record.from;
+            problems.push_back(problem);
         }
         if (to != m_vertices.end() && record.controlPoints.back() != to->second) {
-            problems.push_back(name + " does not end at its vertex " + str(record.to) + ".");
+            Problem problem = edgeProblem(ProblemCode::CurveNotAtVertex, id);
+            problem.vertex = record.to;
+            problem.count = 1;
+            problems.push_back(problem);
         }
         const auto faces = facesOfEdge(id);
         if (record.condition != CreaseCondition::None && faces.size() != 2) {
-            problems.push_back(name +
-                               " carries a crease condition but is not shared by two faces.");
+            problems.push_back(edgeProblem(ProblemCode::ConditionNotShared, id));
         }
     }
     for (const auto& [faceId, loop] : m_faces) {
         if (faceType(faceId) == FaceType::Invalid) {
-            problems.push_back("face " + str(faceId) + " is labelled " + labelString(faceId) +
-                               "; a face must be an SRSR strip, an SRS strip, an SRR cone or a "
-                               "polygon of rulings only (R…R).");
+            Problem problem = faceProblem(ProblemCode::InvalidFaceLabel, faceId);
+            problem.name = labelString(faceId);
+            problems.push_back(problem);
         }
         if (faceId >= m_nextFaceId) {
-            problems.push_back("face " + str(faceId) + " lies beyond the id counter.");
+            problems.push_back(elementProblem(ProblemCode::BeyondIdCounter, Element::Face, faceId));
         }
     }
     for (const auto& cls : splineClasses()) {
@@ -555,16 +566,17 @@ std::vector<std::string> CompositeSurface::validate() const {
         for (EdgeId e : cls) {
             const SplineSpace& other = m_edges.at(e).space;
             if (other != space) {
-                problems.push_back("S-edges " + str(cls.front()) + " and " + str(e) +
-                                   " are connected through faces but use different spline "
-                                   "spaces (" +
-                                   space.describe() + " and " + other.describe() + ").");
+                Problem problem = edgeProblem(ProblemCode::SplineSpacesDiffer, cls.front());
+                problem.otherEdge = e;
+                problem.space = space;
+                problem.otherSpace = other;
+                problems.push_back(problem);
                 break;
             }
         }
     }
     // Positions (finite, not absurdly large) and degenerate curves, rulings and faces.
-    for (std::string& problem : degenerateGeometryProblems(*this)) {
+    for (Problem& problem : degenerateGeometryProblems(*this)) {
         problems.push_back(std::move(problem));
     }
     return problems;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ids.h"
+#include "problem.h"
 #include "spline_space.h"
 #include "vec3.h"
 
@@ -133,8 +134,8 @@ public:
     std::string labelString(FaceId face) const; // e.g. "SRSR", in loop order
     // Classes of S-edges connected through faces; every class must have one spline space.
     std::vector<std::vector<EdgeId>> splineClasses() const;
-    // Every problem found, as sentences naming the entity; empty when the surface is valid.
-    std::vector<std::string> validate() const;
+    // Every problem found, as codes naming the entity; empty when the surface is valid.
+    std::vector<Problem> validate() const;
 
     // Distinct control points: vertices plus interior control points of S-edges.
     std::size_t controlPointCount() const;

@@ -306,19 +306,8 @@ CompositeSurface makeFig6(int intervals) {
 
 const std::vector<ExampleInfo>& builtInExamples() {
     static const std::vector<ExampleInfo> examples{
-        {"sheet", "a flat rectangle of size × size strips (Fig. 8)", 3, 1, 60},
-        {"annulus", "a flat annulus of size rings cut by radial rulings (Fig. 12)", 6, 1, 60},
-        {"cylinder", "a closed cylinder of strips, size sectors around (Fig. 14)", 6, 3, 120},
-        {"mixed", "strips, a pointed strip, a cone and a planar face; size intervals per curve", 2,
-         1, 50},
-        {"fig8",
-         "a flat square of size × size strips with curved creases, curved-fold conditions and "
-         "the bottom corners pinned (Fig. 8)",
-         3, 2, 30},
-        {"fig6",
-         "two strips joined by one curved crease with the curved-fold condition; size "
-         "intervals per curve (Fig. 6)",
-         4, 1, 40},
+        {"sheet", 3, 1, 60}, {"annulus", 6, 1, 60}, {"cylinder", 6, 3, 120},
+        {"mixed", 2, 1, 50}, {"fig8", 3, 2, 30},    {"fig6", 4, 1, 40},
     };
     return examples;
 }
@@ -332,9 +321,12 @@ Project makeExample(const std::string& name, int size) {
             size = info.defaultSize;
         }
         if (size < info.minSize || size > info.maxSize) {
-            throw ModelError("the size of the example '" + name + "' must be between " +
-                             std::to_string(info.minSize) + " and " + std::to_string(info.maxSize) +
-                             ".");
+            Problem problem = problemOf(ProblemCode::ExampleSize);
+            problem.name = name;
+            problem.count = size;
+            problem.expected = info.minSize;
+            problem.limit = info.maxSize;
+            throw ModelError(problem);
         }
         Project project;
         if (name == "sheet") {
@@ -352,11 +344,9 @@ Project makeExample(const std::string& name, int size) {
         }
         return project;
     }
-    std::string known;
-    for (const ExampleInfo& info : builtInExamples()) {
-        known += (known.empty() ? "" : ", ") + info.name;
-    }
-    throw ModelError("there is no example called '" + name + "'; the examples are " + known + ".");
+    Problem problem = problemOf(ProblemCode::UnknownExample);
+    problem.name = name;
+    throw ModelError(problem);
 }
 
 } // namespace devsurf::model

@@ -8,8 +8,7 @@
 namespace devsurf::model {
 
 struct ExampleInfo {
-    std::string name;
-    std::string description;
+    std::string name; // app::exampleDescription says what it is
     int defaultSize;
     int minSize;
     int maxSize;

@@ -7,30 +7,10 @@
 #include <limits>
 #include <map>
 #include <set>
-#include <sstream>
 
 namespace devsurf::model {
 
 namespace {
-
-std::string str(std::uint32_t id) {
-    return std::to_string(id);
-}
-
-// "face 3" or "faces 3 and 4" or "faces 1, 2 and 5".
-std::string facesPhrase(const std::vector<FaceId>& faces) {
-    if (faces.empty()) {
-        return "no face";
-    }
-    std::string text = faces.size() == 1 ? "face " : "faces ";
-    for (std::size_t i = 0; i < faces.size(); ++i) {
-        if (i > 0) {
-            text += i + 1 == faces.size() ? " and " : ", ";
-        }
-        text += str(faces[i]);
-    }
-    return text;
-}
 
 bool isHuge(const Vec3& p) {
     return std::abs(p.x) > kMaxCoordinate || std::abs(p.y) > kMaxCoordinate ||
@@ -87,17 +67,10 @@ double fanArea(const std::vector<Vec3>& polygon, double* perimeter) {
     return area;
 }
 
-std::string millimetres(double value) {
-    std::ostringstream out;
-    out.precision(3);
-    out << value << " mm";
-    return out.str();
-}
-
 } // namespace
 
-std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surface) {
-    std::vector<std::string> problems;
+std::vector<Problem> degenerateGeometryProblems(const CompositeSurface& surface) {
+    std::vector<Problem> problems;
 
     // Faces around each vertex, for naming; gathered at the first problem that needs them
     // (the checks also run after every solver step, SolveSession::step, where there is none).
@@ -124,19 +97,19 @@ std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surf
     double hi[3] = {-lo[0], -lo[1], -lo[2]};
     std::set<VertexId> badVertices;
     for (const auto& [id, p] : surface.vertices()) {
-        auto where = [&facesAround, id = id] {
-            return " (of " + facesPhrase(facesAround(id)) + ")";
-        };
         if (!p.isFinite()) {
-            problems.push_back("vertex " + str(id) + where() +
-                               " has a position that is not a finite number.");
+            Problem problem = vertexProblem(ProblemCode::PositionNotFinite, id);
+            problem.faces = facesAround(id);
+            problems.push_back(problem);
             badVertices.insert(id);
             continue;
         }
         if (isHuge(p)) {
-            problems.push_back("vertex " + str(id) + where() + " lies " + millimetres(p.norm()) +
-                               " from the origin; coordinates beyond " +
-                               millimetres(kMaxCoordinate) + " (1 km) are not accepted.");
+            Problem problem = vertexProblem(ProblemCode::PositionTooFar, id);
+            problem.faces = facesAround(id);
+            problem.value = p.norm();
+            problem.limit = kMaxCoordinate;
+            problems.push_back(problem);
             badVertices.insert(id);
             continue;
         }
@@ -162,9 +135,10 @@ std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surf
                 // Non-finite control points are reported by validate() itself.
                 if (std::all_of(record.controlPoints.begin(), record.controlPoints.end(),
                                 [](const Vec3& p) { return p.isFinite(); })) {
-                    problems.push_back("edge " + str(id) + " (a spline curve of " +
-                                       facesPhrase(faces()) + ") has a control point beyond " +
-                                       millimetres(kMaxCoordinate) + " from the origin.");
+                    Problem problem = edgeProblem(ProblemCode::ControlPointTooFar, id);
+                    problem.faces = faces();
+                    problem.limit = kMaxCoordinate;
+                    problems.push_back(problem);
                 }
                 badEdges.insert(id);
                 continue;
@@ -176,8 +150,9 @@ std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surf
             // The curve lies in the hull of its control points: a control polygon of zero
             // length is a curve of zero length.
             if (length <= tolerance) {
-                problems.push_back("edge " + str(id) + " (a spline curve of " +
-                                   facesPhrase(faces()) + ") has zero length.");
+                Problem problem = edgeProblem(ProblemCode::CurveZeroLength, id);
+                problem.faces = faces();
+                problems.push_back(problem);
                 zeroEdges.insert(std::minmax(record.from, record.to));
             }
             continue;
@@ -187,8 +162,9 @@ std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surf
             continue;
         }
         if (distance(surface.position(record.from), surface.position(record.to)) <= tolerance) {
-            problems.push_back("edge " + str(id) + " (a ruling of " + facesPhrase(faces()) +
-                               ") has zero length.");
+            Problem problem = edgeProblem(ProblemCode::RulingZeroLength, id);
+            problem.faces = faces();
+            problems.push_back(problem);
             zeroEdges.insert(std::minmax(record.from, record.to));
         }
     }
@@ -214,15 +190,17 @@ std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surf
                     continue;
                 }
                 if (distance(surface.position(loop[i]), surface.position(loop[j])) <= tolerance) {
-                    problems.push_back("face " + str(face) + " has coincident vertices " +
-                                       str(loop[i]) + " and " + str(loop[j]) + ".");
+                    Problem problem = faceProblem(ProblemCode::CoincidentVertices, face);
+                    problem.vertex = loop[i];
+                    problem.otherVertex = loop[j];
+                    problems.push_back(problem);
                 }
             }
         }
         double perimeter = 0.0;
         const double area = fanArea(boundaryPolygon(surface, face), &perimeter);
         if (area <= tolerance * std::max(perimeter, tolerance)) {
-            problems.push_back("face " + str(face) + " has zero area.");
+            problems.push_back(faceProblem(ProblemCode::ZeroArea, face));
         }
     }
     return problems;

@@ -1,6 +1,7 @@
 #pragma once
 
-#include <string>
+#include "problem.h"
+
 #include <vector>
 
 namespace devsurf::model {
@@ -11,12 +12,12 @@ class CompositeSurface;
 // or mis-scaled design, not as sheet material.
 inline constexpr double kMaxCoordinate = 1.0e6;
 
-// Degenerate geometry of a structurally sound surface, as sentences naming the faces: positions
+// Degenerate geometry of a structurally sound surface, as problems naming the faces: positions
 // that are not finite or absurdly large, curves and rulings of zero length, coincident
 // vertices of a face, faces of zero area. Part of CompositeSurface::validate(); entities whose
 // data are structurally broken (e.g. a wrong control-point count) are skipped here because
 // validate() reports them already. SolveSession checks every iterate with it.
-std::vector<std::string> degenerateGeometryProblems(const CompositeSurface& surface);
+std::vector<Problem> degenerateGeometryProblems(const CompositeSurface& surface);
 
 // Every vertex and control point has finite coordinates.
 bool allCoordinatesFinite(const CompositeSurface& surface);

@@ -17,8 +17,7 @@ RigidMotion RigidMotion::translationBy(const Vec3& offset) {
 RigidMotion RigidMotion::rotationAbout(const Vec3& point, const Vec3& direction, double angle) {
     const double length = direction.norm();
     if (!(length > 0.0) || !std::isfinite(length) || !point.isFinite() || !std::isfinite(angle)) {
-        throw ModelError("a rotation needs a finite axis point, a non-zero axis direction and a "
-                         "finite angle.");
+        throw ModelError(problemOf(ProblemCode::InvalidRotation));
     }
     const Vec3 k = direction / length;
     const double c = std::cos(angle);

@@ -11,11 +11,14 @@ namespace devsurf::model {
 
 SampledMesh sampleSurface(const CompositeSurface& surface, int samplesPerInterval) {
     if (samplesPerInterval < 1 || samplesPerInterval > 1000) {
-        throw ModelError("the number of samples per spline interval must be between 1 and 1000.");
+        Problem problem = problemOf(ProblemCode::SampleCount);
+        problem.count = samplesPerInterval;
+        problem.expected = 1000;
+        throw ModelError(problem);
     }
     const auto problems = surface.validate();
     if (!problems.empty()) {
-        throw ModelError("the surface is not valid: " + problems.front());
+        throw ModelError(problems.front());
     }
     SampledMesh mesh;
     std::map<VertexId, int> vertexIndex;

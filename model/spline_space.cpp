@@ -21,7 +21,7 @@ int SplineSpace::controlPointCount(bool closed) const {
 
 std::vector<double> SplineSpace::knots(bool closed) const {
     if (!isValid()) {
-        throw std::invalid_argument("Invalid spline space: " + describe() + ".");
+        throw std::invalid_argument("Invalid spline space: " + technicalKey() + ".");
     }
     const int m = degree;
     const int mult = degree - smoothness;
@@ -50,9 +50,9 @@ std::vector<double> SplineSpace::knots(bool closed) const {
     return t;
 }
 
-std::string SplineSpace::describe() const {
-    return "degree " + std::to_string(degree) + ", C" + std::to_string(smoothness) + ", " +
-           std::to_string(intervals) + (intervals == 1 ? " interval" : " intervals");
+std::string SplineSpace::technicalKey() const {
+    return "S(n=" + std::to_string(intervals) + ", m=" + std::to_string(degree) +
+           ", k=" + std::to_string(smoothness) + ")";
 }
 
 } // namespace devsurf::model

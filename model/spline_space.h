@@ -28,8 +28,8 @@ struct SplineSpace {
     // 0, t_{m+N} = 1, and t_{i+N} = t_i + 1. Throws std::invalid_argument for an invalid space.
     std::vector<double> knots(bool closed) const;
 
-    // Human-readable, e.g. "degree 3, C2, 4 intervals".
-    std::string describe() const;
+    // "S(n=4, m=3, k=2)": for logs and exception texts (app::ProblemText::splineSpace words it).
+    std::string technicalKey() const;
 
     bool operator==(const SplineSpace& o) const {
         return degree == o.degree && smoothness == o.smoothness && intervals == o.intervals;

@@ -54,7 +54,7 @@ Strip stripOfFace(const CompositeSurface& surface, FaceId face) {
     }
     case FaceType::Planar:
     case FaceType::Invalid:
-        throw ModelError("face " + std::to_string(face) + " is not a strip or a cone.");
+        throw ModelError(faceProblem(ProblemCode::NotAStrip, face));
     }
     return strip;
 }

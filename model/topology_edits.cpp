@@ -103,12 +103,11 @@ struct SurfaceData {
         }
         // A face side without a prepared edge would have been created silently; that, or any
         // other problem, is a bug in the edit, reported rather than handed to the document.
-        auto problems = s.validate();
         if (s.edges().size() != edges.size()) {
-            problems.insert(problems.begin(), "a face side has no edge.");
+            throw ModelError(internalProblem(what + ": a face side has no edge"));
         }
-        if (!problems.empty()) {
-            throw ModelError(what + " failed unexpectedly: " + problems.front());
+        if (const auto problems = s.validate(); !problems.empty()) {
+            throw ModelError(internalProblem(what + ": " + technicalKey(problems.front())));
         }
         return s;
     }
@@ -157,7 +156,7 @@ void throwIfNewProblem(const CompositeSurface& before, const CompositeSurface& a
         return;
     }
     const auto old = before.validate();
-    for (const std::string& problem : problems) {
+    for (const Problem& problem : problems) {
         if (std::find(old.begin(), old.end(), problem) == old.end()) {
             throw ModelError(problem);
         }
@@ -171,11 +170,12 @@ struct RowFace {
 
 std::vector<RowFace> collectRow(const CompositeSurface& s, FaceId face) {
     if (!s.hasFace(face)) {
-        throw ModelError("face " + str(face) + " does not exist.");
+        throw ModelError(elementProblem(ProblemCode::Missing, Element::Face, face));
     }
     if (s.faceType(face) != FaceType::StripSRSR) {
-        throw ModelError("face " + str(face) + " is an " + faceTypeName(s.faceType(face)) +
-                         "; only an SRSR strip can be cut by a new crease.");
+        Problem problem = faceProblem(ProblemCode::CreaseNeedsStrip, face);
+        problem.faceType = s.faceType(face);
+        throw ModelError(problem);
     }
     std::map<FaceId, std::size_t> seen{{face, stripASide(s, face)}};
     std::vector<RowFace> row{{face, seen[face]}};
@@ -197,11 +197,11 @@ std::vector<RowFace> collectRow(const CompositeSurface& s, FaceId face) {
                     continue;
                 }
                 if (type != FaceType::StripSRSR) {
-                    throw ModelError("the new crease cannot continue across ruling edge " +
-                                     str(ruling) + " into face " + str(other) + ", an " +
-                                     faceTypeName(type) +
-                                     "; a row of strips can only be cut where its rulings border "
-                                     "SRSR strips, planar faces or the boundary.");
+                    Problem problem = edgeProblem(ProblemCode::CreaseBlocked, ruling);
+                    problem.face = face;
+                    problem.otherFace = other;
+                    problem.faceType = type;
+                    throw ModelError(problem);
                 }
                 const auto& otherLoop = s.faceLoop(other);
                 std::size_t shared = 0;
@@ -215,9 +215,7 @@ std::vector<RowFace> collectRow(const CompositeSurface& s, FaceId face) {
                 auto it = seen.find(other);
                 if (it != seen.end()) {
                     if (it->second != ia) {
-                        throw ModelError("the row of strips through face " + str(face) +
-                                         " closes on itself with its sides swapped, so it cannot "
-                                         "be cut at one distance between its curves.");
+                        throw ModelError(faceProblem(ProblemCode::RowClosesSwapped, face));
                     }
                     continue;
                 }
@@ -245,12 +243,12 @@ SplineSpace spaceForNewSplineEdge(const CompositeSurface& surface, EdgeId edge) 
 CompositeSurface relabelEdges(const CompositeSurface& surface,
                               const std::vector<std::pair<EdgeId, EdgeLabel>>& labels) {
     if (labels.empty()) {
-        throw ModelError("no edge was given to relabel.");
+        throw ModelError(problemOf(ProblemCode::NothingToRelabel));
     }
     CompositeSurface result = surface;
     for (const auto& [edge, label] : labels) {
         if (!result.hasEdge(edge)) {
-            throw ModelError("edge " + str(edge) + " does not exist.");
+            throw ModelError(elementProblem(ProblemCode::Missing, Element::Edge, edge));
         }
         const EdgeRecord& record = result.edge(edge);
         if (record.label == label) {
@@ -281,8 +279,10 @@ std::vector<FaceId> stripRow(const CompositeSurface& surface, FaceId face) {
 
 CompositeSurface subdivideStrip(const CompositeSurface& surface, FaceId face, double t) {
     if (!(t > 0.0 && t < 1.0)) {
-        throw ModelError("the new crease must lie strictly between the strip's two curves "
-                         "(0 < t < 1).");
+        Problem problem = problemOf(ProblemCode::CreasePositionOutside);
+        problem.face = face;
+        problem.value = t;
+        throw ModelError(problem);
     }
     const std::vector<RowFace> row = collectRow(surface, face);
     SurfaceData data(surface);
@@ -359,7 +359,7 @@ CompositeSurface subdivideStrip(const CompositeSurface& surface, FaceId face, do
 
 std::vector<EdgeId> splineClassOf(const CompositeSurface& surface, EdgeId edge) {
     if (!surface.hasEdge(edge) || !surface.edge(edge).isSpline()) {
-        throw ModelError("edge " + str(edge) + " is not a spline curve (S-edge).");
+        throw ModelError(edgeProblem(ProblemCode::NotACurve, edge));
     }
     for (auto& cls : surface.splineClasses()) {
         if (std::find(cls.begin(), cls.end(), edge) != cls.end()) {
@@ -371,25 +371,25 @@ std::vector<EdgeId> splineClassOf(const CompositeSurface& surface, EdgeId edge) 
 
 CompositeSurface splitAtRuling(const CompositeSurface& surface, FaceId face, int breakpoint) {
     if (!surface.hasFace(face)) {
-        throw ModelError("face " + str(face) + " does not exist.");
+        throw ModelError(elementProblem(ProblemCode::Missing, Element::Face, face));
     }
     const FaceType type = surface.faceType(face);
     if (type == FaceType::Planar || type == FaceType::Invalid) {
-        throw ModelError("face " + str(face) + " is a " + faceTypeName(type) +
-                         "; a ruling can only be added to a strip or a cone.");
+        Problem problem = faceProblem(ProblemCode::RulingNeedsStrip, face);
+        problem.faceType = type;
+        throw ModelError(problem);
     }
     const Strip start = stripOfFace(surface, face);
     const SplineSpace space = surface.edge(start.aSide.edge).space;
     const int n = space.intervals;
     if (n < 2) {
-        throw ModelError("the curves of face " + str(face) +
-                         " have a single interval; refine them before adding a ruling.");
+        throw ModelError(faceProblem(ProblemCode::SingleInterval, face));
     }
     if (breakpoint < 1 || breakpoint > n - 1) {
-        throw ModelError("a ruling can only be added at an interior breakpoint i/" +
-                         std::to_string(n) + " of the curves of face " + str(face) +
-                         " (1 <= i <= " + std::to_string(n - 1) +
-                         "); refine the curves for finer positions.");
+        Problem problem = faceProblem(ProblemCode::RulingPosition, face);
+        problem.count = breakpoint;
+        problem.expected = n;
+        throw ModelError(problem);
     }
 
     // Breakpoint index of every S-edge of the class, in the edge's stored orientation.
@@ -415,9 +415,7 @@ CompositeSurface splitAtRuling(const CompositeSurface& surface, FaceId face, int
                 cut.emplace(other.edge, otherCut);
                 queue.push_back(other.edge);
             } else if (it->second != otherCut) {
-                throw ModelError("the curves connected to face " + str(face) +
-                                 " meet themselves reversed, so no ruling position is "
-                                 "consistent across them.");
+                throw ModelError(faceProblem(ProblemCode::CurvesMeetReversed, face));
             }
         }
     }
@@ -427,8 +425,9 @@ CompositeSurface splitAtRuling(const CompositeSurface& surface, FaceId face, int
     for (const auto& [e, k] : cut) {
         const EdgeRecord original = surface.edge(e);
         if (original.space != space) {
-            throw ModelError("S-edge " + str(e) + " uses a different spline space from face " +
-                             str(face) + "'s curves.");
+            Problem problem = edgeProblem(ProblemCode::CurveSpaceDiffers, e);
+            problem.face = face;
+            throw ModelError(problem);
         }
         const BSplineCurve curve = BSplineCurve::uniform(space, original.controlPoints);
         auto [left, right] = curve.split(static_cast<double>(k) / n);
@@ -440,8 +439,8 @@ CompositeSurface splitAtRuling(const CompositeSurface& surface, FaceId face, int
         rightSpace.intervals = n - k;
         if (leftPoints.size() != static_cast<std::size_t>(leftSpace.controlPointCount(false)) ||
             rightPoints.size() != static_cast<std::size_t>(rightSpace.controlPointCount(false))) {
-            throw ModelError("splitting S-edge " + str(e) +
-                             " did not give uniform pieces; this is a bug.");
+            throw ModelError(
+                internalProblem("splitting S-edge " + str(e) + " gave non-uniform pieces"));
         }
         const VertexId w = data.addVertex(leftPoints.back());
         rightPoints.front() = leftPoints.back();
@@ -478,7 +477,7 @@ CompositeSurface splitAtRuling(const CompositeSurface& surface, FaceId face, int
             std::sort(chord.begin(), chord.end());
         }
         if (chord.size() != 2) {
-            throw ModelError("face " + str(g) + " cannot take the new ruling; this is a bug.");
+            throw ModelError(internalProblem("face " + str(g) + " cannot take the new ruling"));
         }
         const auto i1 = static_cast<std::ptrdiff_t>(chord[0]);
         const auto i2 = static_cast<std::ptrdiff_t>(chord[1]);
@@ -496,12 +495,15 @@ CompositeSurface refineSplineClass(const CompositeSurface& surface, EdgeId edge,
     const std::vector<EdgeId> cls = splineClassOf(surface, edge);
     const SplineSpace space = surface.edge(edge).space;
     if (factor < 2) {
-        throw ModelError("refining needs a factor of at least 2.");
+        Problem problem = edgeProblem(ProblemCode::RefineFactorTooSmall, edge);
+        problem.count = factor;
+        throw ModelError(problem);
     }
     if (static_cast<long long>(space.intervals) * factor > SplineSpace::maxIntervals) {
-        throw ModelError("the curves of edge " + str(edge) + " already have " +
-                         std::to_string(space.intervals) +
-                         " intervals; refining them further is not supported.");
+        Problem problem = edgeProblem(ProblemCode::TooManyIntervals, edge);
+        problem.count = space.intervals;
+        problem.expected = SplineSpace::maxIntervals;
+        throw ModelError(problem);
     }
     SplineSpace refined = space;
     refined.intervals = space.intervals * factor;
@@ -519,7 +521,7 @@ CompositeSurface refineSplineClass(const CompositeSurface& surface, EdgeId edge,
         }
         std::vector<Vec3> points = curve.controlPoints();
         if (points.size() != static_cast<std::size_t>(refined.controlPointCount(false))) {
-            throw ModelError("refining S-edge " + str(e) + " went wrong; this is a bug.");
+            throw ModelError(internalProblem("refining S-edge " + str(e) + " went wrong"));
         }
         points.front() = surface.position(record.from);
         points.back() = surface.position(record.to);
@@ -531,11 +533,11 @@ CompositeSurface refineSplineClass(const CompositeSurface& surface, EdgeId edge,
 CompositeSurface moveVertices(const CompositeSurface& surface, const std::set<VertexId>& vertices,
                               const RigidMotion& motion) {
     if (vertices.empty()) {
-        throw ModelError("no vertex was given to move.");
+        throw ModelError(problemOf(ProblemCode::NothingToMove));
     }
     for (VertexId v : vertices) {
         if (!surface.hasVertex(v)) {
-            throw ModelError("vertex " + str(v) + " does not exist.");
+            throw ModelError(elementProblem(ProblemCode::Missing, Element::Vertex, v));
         }
     }
     CompositeSurface result = surface;

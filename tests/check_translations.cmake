@@ -7,6 +7,7 @@ if(NOT SOURCE_DIR OR NOT LUPDATE OR NOT WORK_DIR)
 endif()
 file(GLOB_RECURSE sources
   ${SOURCE_DIR}/app/gui/*.cpp ${SOURCE_DIR}/app/gui/*.h
+  ${SOURCE_DIR}/app/text/*.cpp ${SOURCE_DIR}/app/text/*.h
   ${SOURCE_DIR}/views/*.cpp ${SOURCE_DIR}/views/*.h
   ${SOURCE_DIR}/model/document/*.cpp ${SOURCE_DIR}/model/document/*.h)
 file(MAKE_DIRECTORY ${WORK_DIR})

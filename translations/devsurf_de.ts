@@ -5,9 +5,9 @@
     <name>ApplySurfaceCommand</name>
     <message>
         <location filename="../model/document/commands/apply_surface_command.cpp" line="20"/>
-        <location filename="../model/document/commands/apply_surface_command.cpp" line="43"/>
-        <source>The new shape cannot be applied: %1</source>
-        <translation>Die neue Form kann nicht übernommen werden: %1</translation>
+        <location filename="../model/document/commands/apply_surface_command.cpp" line="42"/>
+        <source>The new shape cannot be applied</source>
+        <translation>Die neue Form kann nicht übernommen werden</translation>
     </message>
 </context>
 <context>
@@ -75,29 +75,70 @@
     </message>
 </context>
 <context>
+    <name>EditRefusal</name>
+    <message>
+        <location filename="../app/gui/edit_refusal.cpp" line="17"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ExampleDialog</name>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="9"/>
+        <source>A flat rectangle of size × size strips.</source>
+        <translation>Ein ebenes Rechteck aus Größe × Größe Streifen.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="13"/>
+        <source>A flat annulus of size rings cut by radial rulings.</source>
+        <translation>Ein ebener Kreisring aus Größe Ringen, geteilt durch radiale Erzeugende.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="17"/>
+        <source>A closed cylinder of strips, size sectors around.</source>
+        <translation>Ein geschlossener Zylinder aus Streifen, Größe Sektoren im Umfang.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="21"/>
+        <source>A flat square of size × size strips with curved creases, ready to fold: every interior crease carries the curved-fold condition and the bottom corners are pinned. Drag the middle vertices up (Drag tool, G).</source>
+        <translation>Ein ebenes Quadrat aus Größe × Größe Streifen mit gekrümmten Falzen, bereit zum Falten: Jeder innere Falz trägt die Bedingung „Gekrümmte Faltung“, und die unteren Ecken sind festgehalten. Ziehen Sie die mittleren Ecken nach oben (Ziehwerkzeug, G).</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="28"/>
+        <source>Two strips joined by one curved crease with the curved-fold condition, the bottom corners pinned; size intervals per curve. Drag a top corner up to fold it.</source>
+        <translation>Zwei Streifen, verbunden durch einen gekrümmten Falz mit der Bedingung „Gekrümmte Faltung“, die unteren Ecken festgehalten; Größe Intervalle je Kurve. Ziehen Sie eine obere Ecke nach oben, um ihn zu falten.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="33"/>
+        <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
+        <translation>Ein Streifen, ein spitzer Streifen, ein Kegel und ein ebenes Flächenstück; Größe Intervalle je Kurve.</translation>
+    </message>
+</context>
+<context>
     <name>FaceType</name>
     <message>
-        <location filename="../app/gui/face_type_text.cpp" line="10"/>
+        <location filename="../app/text/face_type_text.cpp" line="10"/>
         <source>strip (SRSR)</source>
         <translation>Streifen (SRSR)</translation>
     </message>
     <message>
-        <location filename="../app/gui/face_type_text.cpp" line="12"/>
+        <location filename="../app/text/face_type_text.cpp" line="12"/>
         <source>pointed strip (SRS)</source>
         <translation>spitzer Streifen (SRS)</translation>
     </message>
     <message>
-        <location filename="../app/gui/face_type_text.cpp" line="14"/>
+        <location filename="../app/text/face_type_text.cpp" line="14"/>
         <source>cone (SRR)</source>
         <translation>Kegel (SRR)</translation>
     </message>
     <message>
-        <location filename="../app/gui/face_type_text.cpp" line="16"/>
+        <location filename="../app/text/face_type_text.cpp" line="16"/>
         <source>planar patch</source>
         <translation>ebenes Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/face_type_text.cpp" line="20"/>
+        <location filename="../app/text/face_type_text.cpp" line="20"/>
         <source>invalid labelling</source>
         <translation>ungültige Beschriftung</translation>
     </message>
@@ -118,12 +159,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/document/commands/move_vertices_command.cpp" line="37"/>
-        <source>The vertices cannot be rotated: %1</source>
-        <translation>Die Ecken können nicht gedreht werden: %1</translation>
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="36"/>
+        <source>The vertices cannot be rotated</source>
+        <translation>Die Ecken können nicht gedreht werden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/document/commands/move_vertices_command.cpp" line="39"/>
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="38"/>
         <source>Rotate %n vertices</source>
         <translation>
             <numerusform>%n Ecke drehen</numerusform>
@@ -131,9 +172,32 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/document/commands/move_vertices_command.cpp" line="47"/>
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="46"/>
         <source>The vertices cannot be moved</source>
         <translation>Die Ecken können nicht verschoben werden</translation>
+    </message>
+</context>
+<context>
+    <name>OutputProblem</name>
+    <message>
+        <location filename="../app/gui/output_problem_text.cpp" line="14"/>
+        <source>“%1” is the project file of this design: exporting over it would destroy the design. Choose another file name.</source>
+        <translation>„%1“ ist die Projektdatei dieses Entwurfs: Ein Export darüber würde den Entwurf zerstören. Wählen Sie einen anderen Dateinamen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/output_problem_text.cpp" line="19"/>
+        <source>“%1” is a folder. Choose a file name.</source>
+        <translation>„%1“ ist ein Ordner. Wählen Sie einen Dateinamen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/output_problem_text.cpp" line="22"/>
+        <source>“%1” is a device, pipe or socket, not a file. Choose a file name.</source>
+        <translation>„%1“ ist ein Gerät, eine Pipe oder ein Socket, keine Datei. Wählen Sie einen Dateinamen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/output_problem_text.cpp" line="31"/>
+        <source>There is not enough memory to open “%1”.</source>
+        <translation>Es ist nicht genug Speicher vorhanden, um „%1“ zu öffnen.</translation>
     </message>
 </context>
 <context>
@@ -181,64 +245,447 @@
     </message>
 </context>
 <context>
+    <name>ProblemText</name>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="39"/>
+        <source>no patch</source>
+        <translation>keinem Flächenstück</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="42"/>
+        <source>patch %1</source>
+        <translation>Flächenstück %1</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="44"/>
+        <source>patches %1</source>
+        <translation>Flächenstücke %1</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="49"/>
+        <source>degree %1, C%2, 1 interval</source>
+        <translation>Grad %1, C%2, 1 Intervall</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="51"/>
+        <source>degree %1, C%2, %3 intervals</source>
+        <translation>Grad %1, C%2, %3 Intervalle</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="59"/>
+        <source>Surface %1</source>
+        <translation>Fläche %1</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="61"/>
+        <source>Surface %1 “%2”</source>
+        <translation>Fläche %1 „%2“</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="68"/>
+        <source>The surface has no patches.</source>
+        <translation>Die Fläche hat keine Flächenstücke.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="70"/>
+        <source>Vertex id %1 is used twice.</source>
+        <translation>Die Ecken-ID %1 wird zweimal verwendet.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="71"/>
+        <source>Edge id %1 is used twice.</source>
+        <translation>Die Kanten-ID %1 wird zweimal verwendet.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="72"/>
+        <source>Patch id %1 is used twice.</source>
+        <translation>Die Flächenstück-ID %1 wird zweimal verwendet.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="74"/>
+        <source>Vertex %1 does not exist.</source>
+        <translation>Ecke %1 gibt es nicht.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="75"/>
+        <source>Edge %1 does not exist.</source>
+        <translation>Kante %1 gibt es nicht.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="76"/>
+        <source>Patch %1 does not exist.</source>
+        <translation>Flächenstück %1 gibt es nicht.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="78"/>
+        <source>Edge %1 does not join two distinct existing vertices.</source>
+        <translation>Kante %1 verbindet nicht zwei verschiedene vorhandene Ecken.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="80"/>
+        <source>Edge %1 duplicates the edge between vertices %2 and %3.</source>
+        <translation>Kante %1 doppelt die Kante zwischen den Ecken %2 und %3.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="85"/>
+        <source>Patch %1 has fewer than three corners.</source>
+        <translation>Flächenstück %1 hat weniger als drei Ecken.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="87"/>
+        <source>Patch %1 visits a vertex twice.</source>
+        <translation>Flächenstück %1 durchläuft eine Ecke zweimal.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="89"/>
+        <source>Patch %1 refers to vertex %2, which does not exist.</source>
+        <translation>Flächenstück %1 verweist auf Ecke %2, die es nicht gibt.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="91"/>
+        <source>Patch %1 runs along the edge from vertex %2 to vertex %3 in the same direction as another patch: patches must be oriented consistently and an edge can border at most two patches.</source>
+        <translation>Flächenstück %1 läuft entlang der Kante von Ecke %2 zu Ecke %3 in derselben Richtung wie ein anderes Flächenstück: Flächenstücke müssen einheitlich orientiert sein, und eine Kante kann höchstens zwei Flächenstücke begrenzen.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="98"/>
+        <source>Patch %1 cannot be attached without making the surface non-manifold.</source>
+        <translation>Flächenstück %1 kann nicht angefügt werden, ohne dass die Fläche nicht-mannigfaltig wird.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="101"/>
+        <source>There is no edge between vertices %1 and %2.</source>
+        <translation>Zwischen den Ecken %1 und %2 gibt es keine Kante.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="103"/>
+        <source>Edge %1 is a curve; only rulings are smooth or sharp.</source>
+        <translation>Kante %1 ist eine Kurve; nur Erzeugende sind glatt oder scharf.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="105"/>
+        <source>Vertex %1 belongs to no patch.</source>
+        <translation>Ecke %1 gehört zu keinem Flächenstück.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="106"/>
+        <source>Edge %1 belongs to no patch.</source>
+        <translation>Kante %1 gehört zu keinem Flächenstück.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="108"/>
+        <source>Vertex %1 lies beyond the id counter.</source>
+        <translation>Ecke %1 liegt jenseits des ID-Zählers.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="109"/>
+        <source>Edge %1 lies beyond the id counter.</source>
+        <translation>Kante %1 liegt jenseits des ID-Zählers.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="110"/>
+        <source>Patch %1 lies beyond the id counter.</source>
+        <translation>Flächenstück %1 liegt jenseits des ID-Zählers.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="112"/>
+        <source>Edge %1 is a ruling but carries spline data.</source>
+        <translation>Kante %1 ist eine Erzeugende, trägt aber Splinedaten.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="114"/>
+        <source>Edge %1 is marked smooth but is not shared by two patches.</source>
+        <translation>Kante %1 ist als glatt markiert, gehört aber nicht zu zwei Flächenstücken.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="116"/>
+        <source>Edge %1 is a curve but is marked smooth (only rulings are).</source>
+        <translation>Kante %1 ist eine Kurve, ist aber als glatt markiert (das können nur Erzeugende sein).</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="118"/>
+        <source>Edge %1 has an invalid spline space (%2).</source>
+        <translation>Kante %1 hat einen ungültigen Splineraum (%2).</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="122"/>
+        <source>Edge %1 has %2 control points; its spline space (%3) needs %4.</source>
+        <translation>Kante %1 hat %2 Kontrollpunkte; ihr Splineraum (%3) braucht %4.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="128"/>
+        <source>Edge %1 has a control point that is not a finite number.</source>
+        <translation>Kante %1 hat einen Kontrollpunkt, der keine endliche Zahl ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="131"/>
+        <source>Edge %1 does not start at its vertex %2.</source>
+        <translation>Kante %1 beginnt nicht an ihrer Ecke %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="132"/>
+        <source>Edge %1 does not end at its vertex %2.</source>
+        <translation>Kante %1 endet nicht an ihrer Ecke %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="134"/>
+        <source>Edge %1 carries a crease condition but is not shared by two patches.</source>
+        <translation>Kante %1 trägt eine Falzbedingung, gehört aber nicht zu zwei Flächenstücken.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="137"/>
+        <source>Patch %1 is labelled %2; a patch must be an SRSR strip, an SRS strip, an SRR cone or a polygon of rulings only (R…R).</source>
+        <translation>Flächenstück %1 ist mit %2 beschriftet; ein Flächenstück muss ein SRSR-Streifen, ein SRS-Streifen, ein SRR-Kegel oder ein Polygon nur aus Erzeugenden (R…R) sein.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="142"/>
+        <source>Curves %1 and %2 are connected through patches but use different spline spaces (%3 and %4).</source>
+        <translation>Die Kurven %1 und %2 sind über Flächenstücke verbunden, haben aber verschiedene Splineräume (%3 und %4).</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="148"/>
+        <source>Vertex %1 (of %2) has a position that is not a finite number.</source>
+        <translation>Ecke %1 (von %2) hat eine Lage, die keine endliche Zahl ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="152"/>
+        <source>Vertex %1 (of %2) lies %3 mm from the origin; coordinates beyond %4 mm (1 km) are not accepted.</source>
+        <translation>Ecke %1 (von %2) liegt %3 mm vom Ursprung entfernt; Koordinaten jenseits von %4 mm (1 km) werden nicht angenommen.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="157"/>
+        <source>Edge %1 (a curve of %2) has a control point beyond %3 mm from the origin.</source>
+        <translation>Kante %1 (eine Kurve von %2) hat einen Kontrollpunkt weiter als %3 mm vom Ursprung.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="161"/>
+        <source>Edge %1 (a curve of %2) has zero length.</source>
+        <translation>Kante %1 (eine Kurve von %2) hat die Länge null.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="163"/>
+        <source>Edge %1 (a ruling of %2) has zero length.</source>
+        <translation>Kante %1 (eine Erzeugende von %2) hat die Länge null.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="165"/>
+        <source>Patch %1 has coincident vertices %2 and %3.</source>
+        <translation>Flächenstück %1 hat zusammenfallende Ecken %2 und %3.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="170"/>
+        <source>Patch %1 has zero area.</source>
+        <translation>Flächenstück %1 hat den Flächeninhalt null.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="172"/>
+        <source>Patch %1 is a %2; only an SRSR strip can be cut by a new crease.</source>
+        <translation>Flächenstück %1 ist vom Typ „%2“; nur ein SRSR-Streifen kann durch einen neuen Falz geteilt werden.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="176"/>
+        <source>The new crease cannot continue across ruling edge %1 into patch %2, a %3; a row of strips can only be cut where its rulings border SRSR strips, planar patches or the boundary.</source>
+        <translation>Der neue Falz kann nicht über die Erzeugende %1 in das Flächenstück %2 (Typ „%3“) weiterlaufen; eine Reihe von Streifen kann nur geteilt werden, wo ihre Erzeugenden an SRSR-Streifen, ebene Flächenstücke oder den Rand grenzen.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="183"/>
+        <source>The row of strips through patch %1 closes on itself with its sides swapped, so it cannot be cut at one distance between its curves.</source>
+        <translation>Die Reihe von Streifen durch Flächenstück %1 schließt sich mit vertauschten Seiten, daher kann sie nicht in einem Abstand zwischen ihren Kurven geteilt werden.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="187"/>
+        <source>The new crease must lie strictly between the strip&apos;s two curves (0 &lt; t &lt; 1, not %1).</source>
+        <translation>Der neue Falz muss echt zwischen den beiden Kurven des Streifens liegen (0 &lt; t &lt; 1, nicht %1).</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="191"/>
+        <source>No edge was given to relabel.</source>
+        <translation>Es wurde keine Kante zum Umbenennen angegeben.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="193"/>
+        <source>Edge %1 is not a spline curve.</source>
+        <translation>Kante %1 ist keine Splinekurve.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="195"/>
+        <source>Patch %1 is a %2; a ruling can only be added to a strip or a cone.</source>
+        <translation>Flächenstück %1 ist vom Typ „%2“; eine Erzeugende kann nur einem Streifen oder Kegel hinzugefügt werden.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="199"/>
+        <source>The curves of patch %1 have a single interval; refine them before adding a ruling.</source>
+        <translation>Die Kurven von Flächenstück %1 haben nur ein Intervall; verfeinern Sie sie, bevor Sie eine Erzeugende hinzufügen.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="203"/>
+        <source>A ruling can only be added at an interior breakpoint i/%1 of the curves of patch %2 (1 ≤ i ≤ %3, not %4); refine the curves for finer positions.</source>
+        <translation>Eine Erzeugende kann nur an einem inneren Knoten i/%1 der Kurven von Flächenstück %2 hinzugefügt werden (1 ≤ i ≤ %3, nicht %4); verfeinern Sie die Kurven für feinere Positionen.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="210"/>
+        <source>The curves connected to patch %1 meet themselves reversed, so no ruling position is consistent across them.</source>
+        <translation>Die mit Flächenstück %1 verbundenen Kurven treffen sich selbst umgekehrt, daher passt keine Position einer Erzeugenden zu allen.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="214"/>
+        <source>Curve %1 uses a different spline space from the curves of patch %2.</source>
+        <translation>Kurve %1 hat einen anderen Splineraum als die Kurven von Flächenstück %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="218"/>
+        <source>Refining needs a factor of at least 2, not %1.</source>
+        <translation>Das Verfeinern braucht einen Faktor von mindestens 2, nicht %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="220"/>
+        <source>The curves of edge %1 already have %2 intervals; refining them beyond %3 is not supported.</source>
+        <translation>Die Kurven von Kante %1 haben schon %2 Intervalle; mehr als %3 werden nicht unterstützt.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="226"/>
+        <source>No vertex was given to move.</source>
+        <translation>Es wurde keine Ecke zum Verschieben angegeben.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="228"/>
+        <source>A rotation needs a finite axis point, a non-zero axis direction and a finite angle.</source>
+        <translation>Eine Drehung braucht einen endlichen Achsenpunkt, eine Achsenrichtung ungleich null und einen endlichen Winkel.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="235"/>
+        <source>There is no example called “%1”; the examples are %2.</source>
+        <translation>Es gibt kein Beispiel namens „%1“; die Beispiele sind %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="239"/>
+        <source>The size of the example “%1” must be between %2 and %3, not %4.</source>
+        <translation>Die Größe des Beispiels „%1“ muss zwischen %2 und %3 liegen, nicht %4.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="245"/>
+        <source>The number of samples per spline interval must be between 1 and %1, not %2.</source>
+        <translation>Die Zahl der Abtastpunkte je Splineintervall muss zwischen 1 und %1 liegen, nicht %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="249"/>
+        <source>Patch %1 is not a strip or a cone.</source>
+        <translation>Flächenstück %1 ist weder ein Streifen noch ein Kegel.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="251"/>
+        <source>The two shapes do not have the same patches.</source>
+        <translation>Die beiden Formen haben nicht dieselben Flächenstücke.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="253"/>
+        <source>Edge %1 has a crease condition but is a boundary curve, not a crease.</source>
+        <translation>Kante %1 hat eine Falzbedingung, ist aber eine Randkurve, kein Falz.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="256"/>
+        <source>Edge %1 has a crease condition but a cone or planar patch lies beside it; crease conditions need a strip on either side.</source>
+        <translation>Kante %1 hat eine Falzbedingung, aber neben ihr liegt ein Kegel oder ein ebenes Flächenstück; Falzbedingungen brauchen auf beiden Seiten einen Streifen.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="261"/>
+        <source>Edge %1 has a crease condition but its curve is of degree %2; a crease condition needs degree 2 or more.</source>
+        <translation>Kante %1 hat eine Falzbedingung, aber ihre Kurve hat den Grad %2; eine Falzbedingung braucht Grad 2 oder mehr.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="268"/>
+        <source>DevSurf met an internal error (%1). Please report it.</source>
+        <translation>DevSurf ist auf einen internen Fehler gestoßen (%1). Bitte melden Sie ihn.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="286"/>
+        <source>The sheet size must be positive; the pieces are laid out side by side.</source>
+        <translation>Die Bogengröße muss positiv sein; die Teile werden nebeneinander gelegt.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="288"/>
+        <source>%1 is not valid and has no pattern: %2</source>
+        <translation>%1 ist ungültig und hat kein Schnittmuster: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="291"/>
+        <source>%1 could not be developed: %2</source>
+        <translation>%1 konnte nicht abgewickelt werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="294"/>
+        <source>Piece %1 (%2) overlaps itself at patches %3 and cannot be cut from one sheet.</source>
+        <translation>Teil %1 (%2) überlappt sich selbst bei den Flächenstücken %3 und kann nicht aus einem Bogen geschnitten werden.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="297"/>
+        <source>Pieces %1 (patches %2) and %3 (patches %4) overlap on sheet %5.</source>
+        <translation>Die Teile %1 (Flächenstücke %2) und %3 (Flächenstücke %4) überlappen sich auf Bogen %5.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="302"/>
+        <source>Piece %1 (%2) measures %3 × %4 mm and does not fit on the %5 × %6 mm sheet with a %7 mm gap.</source>
+        <translation>Teil %1 (%2) misst %3 × %4 mm und passt mit %7 mm Abstand nicht auf den Bogen von %5 × %6 mm.</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="33"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="36"/>
         <source>Laser bed 600 × 400 mm</source>
         <translation>Laserbett 600 × 400 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="34"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
         <source>A4 (210 × 297 mm)</source>
         <translation>A4 (210 × 297 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="35"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="38"/>
         <source>A3 (297 × 420 mm)</source>
         <translation>A3 (297 × 420 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="36"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="39"/>
         <source>Letter (8.5 × 11 in)</source>
         <translation>Letter (8,5 × 11 in)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="40"/>
         <source>Custom</source>
         <translation>Benutzerdefiniert</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="34"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="35"/>
         <source>Nothing to print</source>
         <translation>Nichts zu drucken</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="36"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="37"/>
         <source>The design has no surface to develop.</source>
         <translation>Der Entwurf hat keine Fläche, die abgewickelt werden kann.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="52"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="53"/>
         <source>Printing the cutting pattern…</source>
         <translation>Der Schnittmusterplan wird gedruckt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="52"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="53"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="140"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="143"/>
         <source>Export &amp;Cutting Pattern…</source>
         <translation>&amp;Schnittmuster exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="142"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="145"/>
         <source>&amp;Print…</source>
         <translation>&amp;Drucken…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="145"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="148"/>
         <source>Print Pre&amp;view…</source>
         <translation>Druck&amp;vorschau…</translation>
     </message>
@@ -310,7 +757,7 @@
 <context>
     <name>SceneView</name>
     <message>
-        <location filename="../views/quality_colours.cpp" line="144"/>
+        <location filename="../views/quality_colours.cpp" line="84"/>
         <source>Developability
 |det(a-b, a&apos;, b&apos;)|
 (ratio)</source>
@@ -319,14 +766,14 @@
 (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="147"/>
+        <location filename="../views/quality_colours.cpp" line="87"/>
         <source>Flatness δ
 (ratio)</source>
         <translation>Ebenheit δ
 (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="149"/>
+        <location filename="../views/quality_colours.cpp" line="89"/>
         <source>Angle defect |K|
 (rad)</source>
         <translation>Winkeldefekt |K|
@@ -411,14 +858,9 @@
 <context>
     <name>SurfaceEditCommand</name>
     <message>
-        <location filename="../model/document/commands/surface_edit_command.cpp" line="48"/>
+        <location filename="../model/document/commands/surface_edit_command.cpp" line="50"/>
         <source>There is no surface number %1 in the design.</source>
         <translation>Der Entwurf hat keine Fläche Nummer %1.</translation>
-    </message>
-    <message>
-        <location filename="../model/document/commands/surface_edit_command.cpp" line="66"/>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -527,32 +969,32 @@
 <context>
     <name>devsurf::app::CreaseConditionReaction</name>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="69"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="70"/>
         <source>Curved fold: the solver keeps the crease&apos;s osculating plane halfway between the two patches, so that the design folds from one flat sheet.</source>
         <translation>Gekrümmte Faltung: Der Löser hält die Schmiegebene des Falzes in der Mitte zwischen den beiden Flächenstücken, damit sich der Entwurf aus einem ebenen Blatt falten lässt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="73"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="74"/>
         <source>Geodesic: the solver keeps the crease a geodesic of both patches.</source>
         <translation>Geodätische: Der Löser hält den Falz als Geodätische beider Flächenstücke.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="76"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="77"/>
         <source>Straight when unfolded: the solver keeps the crease a straight line in the development.</source>
         <translation>Gerade in der Abwicklung: Der Löser hält den Falz in der Abwicklung als gerade Linie.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="82"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="83"/>
         <source>No condition: the solver treats the crease freely.</source>
         <translation>Keine Bedingung: Der Löser behandelt den Falz frei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="103"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="104"/>
         <source>Select creases (curves between two patches) of one surface first.</source>
         <translation>Wählen Sie zuerst Falze (Kurven zwischen zwei Flächenstücken) einer Fläche.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="162"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="163"/>
         <source>Cr&amp;ease</source>
         <translation>&amp;Falz</translation>
     </message>
@@ -568,12 +1010,12 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="81"/>
+        <location filename="../app/gui/drag_tool.cpp" line="83"/>
         <source>Drag cancelled; the design is as it was.</source>
         <translation>Ziehen abgebrochen; der Entwurf ist wie zuvor.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="77"/>
+        <location filename="../app/gui/drag_tool.cpp" line="79"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>%n Ecke ziehen</numerusform>
@@ -581,12 +1023,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="102"/>
+        <location filename="../app/gui/drag_tool.cpp" line="104"/>
         <source>Sliding crease %1 by %2 mm within the surface, as far as it goes: the patch it moves into keeps %3 % of its width. Release to finish, Esc cancels.</source>
         <translation>Falz %1 wird um %2 mm innerhalb der Fläche verschoben, so weit es geht: das Flächenstück, in das er sich bewegt, behält %3 % seiner Breite. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="124"/>
+        <location filename="../app/gui/drag_tool.cpp" line="126"/>
         <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm entlang X gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -594,7 +1036,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="127"/>
+        <location filename="../app/gui/drag_tool.cpp" line="129"/>
         <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm entlang Y gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -602,7 +1044,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="130"/>
+        <location filename="../app/gui/drag_tool.cpp" line="132"/>
         <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm entlang Z gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -610,7 +1052,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="135"/>
+        <location filename="../app/gui/drag_tool.cpp" line="137"/>
         <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm in der Bildebene gezogen. Loslassen beendet, Esc bricht ab; X, Y oder Z gedrückt halten bewegt entlang dieser Achse.</numerusform>
@@ -618,79 +1060,80 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="240"/>
+        <location filename="../app/gui/drag_tool.cpp" line="242"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>Ecke %1 ist festgehalten und kann nicht gezogen werden; geben Sie sie zuerst frei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="258"/>
-        <location filename="../app/gui/drag_tool.cpp" line="299"/>
+        <location filename="../app/gui/drag_tool.cpp" line="260"/>
+        <location filename="../app/gui/drag_tool.cpp" line="301"/>
         <source>a drag started</source>
         <translation>ein Ziehen hat begonnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="282"/>
+        <location filename="../app/gui/drag_tool.cpp" line="284"/>
         <source>There is no edge %1.</source>
         <translation>Es gibt keine Kante %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="285"/>
+        <location filename="../app/gui/drag_tool.cpp" line="287"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>Kante %1 ist kein Falz (eine Kurve zwischen zwei Flächenstücken); nur Falze lassen sich ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="290"/>
+        <location filename="../app/gui/drag_tool.cpp" line="292"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>Kante %1 kann sich nicht bewegen: beide Enden sind festgehalten und sie hat keinen weiteren Kontrollpunkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="396"/>
+        <location filename="../app/gui/drag_tool.cpp" line="398"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>Die festgehaltenen Ecken %1 und %2 halten Ecke %3 auf der Geraden zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="402"/>
+        <location filename="../app/gui/drag_tool.cpp" line="404"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>Die festgehaltenen Ecken %1, %2 und %3 halten Ecke %4 im Dreieck zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="85"/>
+        <location filename="../app/gui/drag_tool.cpp" line="87"/>
         <source>Drag stopped: %1 The design is as it was.</source>
         <translation>Ziehen beendet: %1 Der Entwurf ist wie zuvor.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="75"/>
+        <location filename="../app/gui/drag_tool.cpp" line="77"/>
         <source>Drag crease %1</source>
         <translation>Falz %1 ziehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="89"/>
+        <location filename="../app/gui/drag_tool.cpp" line="91"/>
         <source>Drag tool: press on a vertex in the 3D view and move the mouse; the selected vertices of its surface follow. Press on a crease to slide it within its patches. Esc cancels a drag.</source>
         <translation>Ziehwerkzeug: Drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie die Maus; die ausgewählten Ecken ihrer Fläche folgen. Drücken Sie auf einen Falz, um ihn innerhalb seiner Flächenstücke zu verschieben. Esc bricht das Ziehen ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="95"/>
+        <location filename="../app/gui/drag_tool.cpp" line="97"/>
         <source>Drag stopped: the design changed during the drag.</source>
         <translation>Ziehen beendet: Der Entwurf hat sich während des Ziehens geändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="110"/>
+        <location filename="../app/gui/drag_tool.cpp" line="112"/>
         <source>Sliding crease %1 by %2 mm within the surface. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>Falz %1 wird um %2 mm innerhalb der Fläche verschoben. Loslassen beendet, Esc bricht ab; X, Y oder Z gedrückt halten bewegt entlang dieser Achse.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="114"/>
+        <location filename="../app/gui/drag_tool.cpp" line="116"/>
         <source>Moving crease %1 by %2 mm along the axis. Release to finish, Esc cancels.</source>
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="516"/>
+        <location filename="../app/gui/drag_tool.cpp" line="523"/>
+        <location filename="../app/gui/drag_tool.cpp" line="541"/>
         <source>The new shape cannot be applied: %1</source>
         <translation>Die neue Form kann nicht übernommen werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="530"/>
-        <location filename="../app/gui/drag_tool.cpp" line="542"/>
+        <location filename="../app/gui/drag_tool.cpp" line="537"/>
+        <location filename="../app/gui/drag_tool.cpp" line="555"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -698,47 +1141,17 @@
 <context>
     <name>devsurf::app::ExampleDialog</name>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="19"/>
-        <source>A flat rectangle of size × size strips.</source>
-        <translation>Ein ebenes Rechteck aus Größe × Größe Streifen.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/example_dialog.cpp" line="22"/>
-        <source>A flat annulus of size rings cut by radial rulings.</source>
-        <translation>Ein ebener Kreisring aus Größe Ringen, geteilt durch radiale Erzeugende.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/example_dialog.cpp" line="25"/>
-        <source>A closed cylinder of strips, size sectors around.</source>
-        <translation>Ein geschlossener Zylinder aus Streifen, Größe Sektoren im Umfang.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/example_dialog.cpp" line="28"/>
-        <source>A flat square of size × size strips with curved creases, ready to fold: every interior crease carries the curved-fold condition and the bottom corners are pinned. Drag the middle vertices up (Drag tool, G).</source>
-        <translation>Ein ebenes Quadrat aus Größe × Größe Streifen mit gekrümmten Falzen, bereit zum Falten: Jeder innere Falz trägt die Bedingung „Gekrümmte Faltung“, und die unteren Ecken sind festgehalten. Ziehen Sie die mittleren Ecken nach oben (Ziehwerkzeug, G).</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/example_dialog.cpp" line="34"/>
-        <source>Two strips joined by one curved crease with the curved-fold condition, the bottom corners pinned; size intervals per curve. Drag a top corner up to fold it.</source>
-        <translation>Zwei Streifen, verbunden durch einen gekrümmten Falz mit der Bedingung „Gekrümmte Faltung“, die unteren Ecken festgehalten; Größe Intervalle je Kurve. Ziehen Sie eine obere Ecke nach oben, um ihn zu falten.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/example_dialog.cpp" line="38"/>
-        <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
-        <translation>Ein Streifen, ein spitzer Streifen, ein Kegel und ein ebenes Flächenstück; Größe Intervalle je Kurve.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/example_dialog.cpp" line="47"/>
+        <location filename="../app/gui/example_dialog.cpp" line="18"/>
         <source>New from Example</source>
         <translation>Neu aus Beispiel</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="53"/>
+        <location filename="../app/gui/example_dialog.cpp" line="24"/>
         <source>&amp;Example:</source>
         <translation>&amp;Beispiel:</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="54"/>
+        <location filename="../app/gui/example_dialog.cpp" line="25"/>
         <source>&amp;Size:</source>
         <translation>&amp;Größe:</translation>
     </message>
@@ -746,44 +1159,45 @@
 <context>
     <name>devsurf::app::ExportJsonReaction</name>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="109"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="111"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="94"/>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="111"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="96"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="113"/>
         <source>Export Interchange JSON</source>
         <translation>Austausch-JSON exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="95"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="97"/>
         <source>“%1” ends in .%2, but this command writes interchange JSON. Export to “%3” instead?</source>
         <translation>„%1“ endet auf .%2, dieser Befehl schreibt aber Austausch-JSON. Stattdessen nach „%3“ exportieren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="100"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="102"/>
         <source>Export as .json</source>
         <translation>Als .json exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="113"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="115"/>
         <source>Interchange JSON (*.json)</source>
         <translation>Austausch-JSON (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="122"/>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="125"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="123"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="130"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="133"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="120"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="128"/>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="126"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="134"/>
         <source>The design cannot be exported: %1</source>
         <translation>Der Entwurf kann nicht exportiert werden: %1</translation>
     </message>
@@ -791,12 +1205,12 @@
 <context>
     <name>devsurf::app::ExportPatternReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="73"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="75"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="77"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="80"/>
         <source>Exported the cutting pattern</source>
         <translation>Schnittmuster exportiert</translation>
     </message>
@@ -894,8 +1308,8 @@
         <translation>Auswahl &amp;aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <location filename="../app/gui/main_window.cpp" line="186"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
@@ -1414,22 +1828,22 @@
 <context>
     <name>devsurf::app::MoveVerticesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="315"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="316"/>
         <source>Translate or rotate the selected vertices with their neighbouring control points. Select vertices of one surface first.</source>
         <translation>Verschiebt oder dreht die ausgewählten Ecken samt benachbarten Kontrollpunkten. Wählen Sie zuerst Ecken einer Fläche aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="343"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="344"/>
         <source>Cannot rotate</source>
         <translation>Drehen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="343"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="344"/>
         <source>Cannot move</source>
         <translation>Verschieben nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="352"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="353"/>
         <source>the vertices are moved</source>
         <translation>die Ecken werden bewegt</translation>
     </message>
@@ -1437,12 +1851,12 @@
 <context>
     <name>devsurf::app::OpenReaction</name>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="32"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="34"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="34"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="36"/>
         <source>DevSurf projects (*.devsurf)</source>
         <translation>DevSurf-Projekte (*.devsurf)</translation>
     </message>
@@ -1450,12 +1864,12 @@
 <context>
     <name>devsurf::app::OpenRecentReaction</name>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="62"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="64"/>
         <source>No recent files</source>
         <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="66"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="68"/>
         <source>Clear Recent Files</source>
         <translation>Liste leeren</translation>
     </message>
@@ -1499,237 +1913,237 @@
 <context>
     <name>devsurf::app::PatternExportDialog</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="82"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="85"/>
         <source>DXF drawing (*.dxf)</source>
         <translation>DXF-Zeichnung (*.dxf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="84"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="87"/>
         <source>SVG image (*.svg)</source>
         <translation>SVG-Bild (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="86"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="89"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF-Dokument (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="88"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="91"/>
         <source>FOLD crease pattern (*.fold)</source>
         <translation>FOLD-Faltmuster (*.fold)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="96"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="330"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="339"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="99"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="335"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="344"/>
         <source>Export Cutting Pattern</source>
         <translation>Schnittmuster exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
         <source>DXF (laser and plotter cutters)</source>
         <translation>DXF (Laser- und Plotterschneider)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
         <source>SVG (vinyl and paper cutters)</source>
         <translation>SVG (Folien- und Papierschneider)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="101"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
         <source>PDF (print at 1:1, tiled)</source>
         <translation>PDF (Druck 1:1, gekachelt)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="101"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
         <source>FOLD (origami simulators)</source>
         <translation>FOLD (Origami-Simulatoren)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="102"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="107"/>
         <source>&amp;Polylines</source>
         <translation>&amp;Polylinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="108"/>
         <source>S&amp;plines</source>
         <translation>S&amp;plines</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="112"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="115"/>
         <source>DXF &amp;R12 (for old cutter software)</source>
         <translation>DXF &amp;R12 (für alte Schneidsoftware)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="114"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="117"/>
         <source>Curves:</source>
         <translation>Kurven:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="120"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="138"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="154"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="123"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="141"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="157"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="121"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
         <source>&amp;Tolerance:</source>
         <translation>&amp;Toleranz:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Cut</source>
         <translation>Schnitt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Mountain</source>
         <translation>Berg</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Valley</source>
         <translation>Tal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Crease</source>
         <translation>Falz</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Rulings (score)</source>
         <translation>Erzeugende (ritzen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Seam</source>
         <translation>Naht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
         <source>Labels</source>
         <translation>Beschriftungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="134"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="137"/>
         <source>Layers:</source>
         <translation>Ebenen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="139"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="142"/>
         <source>as &amp;glue tabs</source>
         <translation>als &amp;Klebelaschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="143"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="146"/>
         <source>&amp;Seam allowance:</source>
         <translation>&amp;Nahtzugabe:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="161"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
         <source>S&amp;heet:</source>
         <translation>&amp;Bogen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
         <source>A4</source>
         <translation>A4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
         <source>A3</source>
         <translation>A3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
         <source>Letter</source>
         <translation>Letter</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="165"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
         <source>P&amp;aper (PDF):</source>
         <translation>P&amp;apier (PDF):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
         <source>Piece</source>
         <translation>Teil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
         <source>Sheet</source>
         <translation>Bogen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
         <source>Size (mm)</source>
         <translation>Größe (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="173"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Area (mm²)</source>
         <translation>Fläche (mm²)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="173"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Isometry error (mm)</source>
         <translation>Isometriefehler (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
         <source>Fits sheet</source>
         <translation>Passt auf Bogen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
         <source>Overlaps</source>
         <translation>Überlappungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="181"/>
         <source>Fabrication report</source>
         <translation>Fertigungsbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="185"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="188"/>
         <source>&amp;Export…</source>
         <translation>&amp;Exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="292"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="296"/>
         <source>itself</source>
         <translation>sich selbst</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="299"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="304"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="308"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="300"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="304"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="307"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="307"/>
         <source>no</source>
         <translation>nein</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="313"/>
         <source>%n piece(s)</source>
         <translation>
             <numerusform>%n Teil</numerusform>
@@ -1737,7 +2151,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="310"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="314"/>
         <source>%n sheet(s)</source>
         <translation>
             <numerusform>%n Bogen</numerusform>
@@ -1745,32 +2159,33 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="312"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="316"/>
         <source>largest isometry error %1 mm</source>
         <translation>größter Isometriefehler %1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="328"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="333"/>
         <source>Some pieces overlap and cannot be cut as laid out. Export anyway?</source>
         <translation>Einige Teile überlappen sich und können so nicht geschnitten werden. Trotzdem exportieren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="329"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="334"/>
         <source>The pattern has problems (see the report). Export anyway?</source>
         <translation>Das Schnittmuster hat Probleme (siehe Bericht). Trotzdem exportieren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="358"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="370"/>
         <source>Writing the cutting pattern…</source>
         <translation>Das Schnittmuster wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="358"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="370"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="369"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="361"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="381"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
@@ -1778,32 +2193,32 @@
 <context>
     <name>devsurf::app::PinVerticesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pin_reactions.cpp" line="50"/>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="51"/>
         <source>Pin the selected vertices: the solver never moves them. Select vertices of one surface first.</source>
         <translation>Die gewählten Ecken festhalten: Der Löser bewegt sie nie. Wählen Sie zuerst Ecken einer Fläche.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pin_reactions.cpp" line="52"/>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="53"/>
         <source>Release the selected pinned vertices. Select vertices of one surface first.</source>
         <translation>Die gewählten festgehaltenen Ecken freigeben. Wählen Sie zuerst Ecken einer Fläche.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pin_reactions.cpp" line="57"/>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="58"/>
         <source>Pin the selected vertices: the solver never moves them.</source>
         <translation>Die gewählten Ecken festhalten: Der Löser bewegt sie nie.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pin_reactions.cpp" line="58"/>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="59"/>
         <source>Release the selected pinned vertices.</source>
         <translation>Die gewählten festgehaltenen Ecken freigeben.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pin_reactions.cpp" line="69"/>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="70"/>
         <source>Cannot pin the vertices</source>
         <translation>Die Ecken können nicht festgehalten werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pin_reactions.cpp" line="69"/>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="70"/>
         <source>Cannot unpin the vertices</source>
         <translation>Die Ecken können nicht freigegeben werden</translation>
     </message>
@@ -1811,17 +2226,17 @@
 <context>
     <name>devsurf::app::PrintPatternReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="97"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="100"/>
         <source>Print Cutting Pattern</source>
         <translation>Schnittmuster drucken</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="102"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="105"/>
         <source>Printing failed</source>
         <translation>Drucken fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="103"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="106"/>
         <source>The pages could not be sent to the printer.</source>
         <translation>Die Seiten konnten nicht an den Drucker gesendet werden.</translation>
     </message>
@@ -1829,7 +2244,7 @@
 <context>
     <name>devsurf::app::PrintPreviewReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="123"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="126"/>
         <source>Print Preview: Cutting Pattern</source>
         <translation>Druckvorschau: Schnittmuster</translation>
     </message>
@@ -1837,48 +2252,48 @@
 <context>
     <name>devsurf::app::PropertiesPanel</name>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="27"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="28"/>
         <source>degree %1, C%2, %3 intervals</source>
         <translation>Grad %1, C%2, %3 Intervalle</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="137"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="138"/>
         <source>&lt;b&gt;Vertex %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;Ecke %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="148"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="149"/>
         <source>&lt;b&gt;Edge %1&lt;/b&gt; from vertex %2 to vertex %3&lt;br&gt;</source>
         <translation>&lt;b&gt;Kante %1&lt;/b&gt; von Ecke %2 zu Ecke %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="112"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="113"/>
         <source>Nothing selected.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
         <translation>Nichts ausgewählt.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Klicken Sie auf eine Ecke, Kante oder ein Flächenstück, um es auszuwählen; Umschalt-Klick erweitert die Auswahl.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="37"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="38"/>
         <source>A crease between patches %1 (left) and %2 (right); condition: %3.&lt;br&gt;</source>
         <translation>Ein Falz zwischen den Flächenstücken %1 (links) und %2 (rechts); Bedingung: %3.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="48"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="49"/>
         <source>Mountain fold of %1° (up to %2°).</source>
         <translation>Bergfalte um %1° (bis %2°).</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="52"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="53"/>
         <source>Valley fold of %1° (up to %2°).</source>
         <translation>Talfalte um %1° (bis %2°).</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="56"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="57"/>
         <source>Not folded.</source>
         <translation>Nicht gefaltet.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="114"/>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="115"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="125"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -1886,7 +2301,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="115"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="116"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -1894,12 +2309,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="122"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="123"/>
         <source>Selected: %1, %2, %3.</source>
         <translation>Ausgewählt: %1, %2, %3.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="123"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
         <source>%n vertex(es)</source>
         <translation>
             <numerusform>%n Ecke</numerusform>
@@ -1907,7 +2322,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="123"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
         <source>%n edge(s)</source>
         <translation>
             <numerusform>%n Kante</numerusform>
@@ -1915,7 +2330,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="153"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="154"/>
         <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
         <translation>
             <numerusform>Spline-Kurve (S), %1, %n Kontrollpunkt.&lt;br&gt;</numerusform>
@@ -1923,27 +2338,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="159"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="160"/>
         <source>A boundary curve of patch %1.</source>
         <translation>Eine Randkurve des Flächenstücks %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="163"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="164"/>
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>Erzeugende (R), eine Strecke der Länge %1 mm.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="170"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="171"/>
         <source>Smooth between patches %1 and %2: the surface stays smooth across it.</source>
         <translation>Glatt zwischen den Flächenstücken %1 und %2: Die Fläche bleibt über sie hinweg glatt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="172"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="173"/>
         <source>Sharp between patches %1 and %2: the surface may fold along it.</source>
         <translation>Scharf zwischen den Flächenstücken %1 und %2: Die Fläche darf entlang ihr falten.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="182"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="183"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;Flächenstück %1&lt;/b&gt;: %2&lt;br&gt;Kantenbeschriftung entlang des Flächenstücks: %3&lt;br&gt;%n Ecke.</numerusform>
@@ -1951,7 +2366,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="218"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="219"/>
         <source>Cannot move</source>
         <translation>Verschieben nicht möglich</translation>
     </message>
@@ -1959,12 +2374,12 @@
 <context>
     <name>devsurf::app::RefineCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="293"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="294"/>
         <source>Double the spline intervals of the selected curve and of all curves joined to it through strips; the shape stays the same. Select one spline edge or strip first.</source>
         <translation>Verdoppelt die Spline-Intervalle der ausgewählten Kurve und aller über Streifen mit ihr verbundenen Kurven; die Form bleibt gleich. Wählen Sie zuerst eine Splinekante oder einen Streifen aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="303"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="304"/>
         <source>Cannot refine</source>
         <translation>Verfeinern nicht möglich</translation>
     </message>
@@ -1972,17 +2387,17 @@
 <context>
     <name>devsurf::app::RelabelEdgeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="114"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="115"/>
         <source>Cannot relabel: %1</source>
         <translation>Umbenennen nicht möglich: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="118"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="119"/>
         <source>Turn the selected edges from rulings (R) into spline curves (S) or back. Select edges of one surface first.</source>
         <translation>Macht die ausgewählten Kanten von Erzeugenden (R) zu Splinekurven (S) oder umgekehrt. Wählen Sie zuerst Kanten einer Fläche aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="125"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="126"/>
         <source>Cannot relabel</source>
         <translation>Umbenennen nicht möglich</translation>
     </message>
@@ -2145,27 +2560,27 @@
 <context>
     <name>devsurf::app::SmoothRulingsReaction</name>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="135"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="136"/>
         <source>Smooth: the solver keeps the surface smooth across the selected rulings (both patches share the tangent plane).</source>
         <translation>Glatt: Der Löser hält die Fläche über die ausgewählten Erzeugenden hinweg glatt (beide Flächenstücke teilen die Tangentialebene).</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="137"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="138"/>
         <source>Sharp: the surface may fold along the selected rulings.</source>
         <translation>Scharf: Die Fläche darf entlang der ausgewählten Erzeugenden falten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="139"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="140"/>
         <source>Select rulings between two patches of one surface first.</source>
         <translation>Wählen Sie zuerst Erzeugende zwischen zwei Flächenstücken einer Fläche aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="177"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="178"/>
         <source>&amp;Smooth Rulings</source>
         <translation>&amp;Glatte Erzeugende</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="180"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="181"/>
         <source>S&amp;harp Rulings</source>
         <translation>&amp;Scharfe Erzeugende</translation>
     </message>
@@ -2173,37 +2588,37 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="89"/>
+        <location filename="../app/gui/solve_controller.cpp" line="91"/>
         <source>There is nothing to solve.</source>
         <translation>Es gibt nichts zu lösen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="113"/>
+        <location filename="../app/gui/solve_controller.cpp" line="115"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: Es gibt nichts zu lösen; nichts wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="149"/>
+        <location filename="../app/gui/solve_controller.cpp" line="151"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 abgebrochen; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="150"/>
+        <location filename="../app/gui/solve_controller.cpp" line="152"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 abgebrochen: %2; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="152"/>
+        <location filename="../app/gui/solve_controller.cpp" line="154"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>Lösen abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="153"/>
+        <location filename="../app/gui/solve_controller.cpp" line="155"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>Lösen abgebrochen: %1; der Entwurf ist unverändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="159"/>
+        <location filename="../app/gui/solve_controller.cpp" line="161"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Form prüfen: %n Flächenstück faltet sich auf sich selbst zurück (%1); rückgängig machen oder anders fixieren oder bewegen.</numerusform>
@@ -2211,7 +2626,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="166"/>
+        <location filename="../app/gui/solve_controller.cpp" line="168"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Form prüfen: die Abwicklung überlappt sich selbst an %n Flächenstück (%1); rückgängig machen oder anders fixieren oder bewegen.</numerusform>
@@ -2219,27 +2634,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="175"/>
+        <location filename="../app/gui/solve_controller.cpp" line="177"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 fehlgeschlagen: %2 Nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="199"/>
+        <location filename="../app/gui/solve_controller.cpp" line="201"/>
         <source>the design changed</source>
         <translation>der Entwurf hat sich geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="206"/>
+        <location filename="../app/gui/solve_controller.cpp" line="208"/>
         <source>it stopped before a degenerate shape</source>
         <translation>es hielt vor einer entarteten Form an</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="209"/>
+        <location filename="../app/gui/solve_controller.cpp" line="211"/>
         <source>no convergence, residual %1</source>
         <translation>keine Konvergenz, Residuum %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="212"/>
+        <location filename="../app/gui/solve_controller.cpp" line="214"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>an %n Stelle zurückgefaltet</numerusform>
@@ -2247,107 +2662,112 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="215"/>
+        <location filename="../app/gui/solve_controller.cpp" line="217"/>
         <source>a development overlapping itself</source>
         <translation>eine sich selbst überlappende Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="218"/>
+        <location filename="../app/gui/solve_controller.cpp" line="220"/>
         <source>collapsed strips</source>
         <translation>zusammengefallene Streifen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="221"/>
+        <location filename="../app/gui/solve_controller.cpp" line="223"/>
         <source>a shape too degenerate to measure</source>
         <translation>eine zum Messen zu entartete Form</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="245"/>
+        <location filename="../app/gui/solve_controller.cpp" line="247"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="250"/>
+        <location filename="../app/gui/solve_controller.cpp" line="252"/>
         <source>The solve was cancelled.</source>
         <translation>Das Lösen wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="252"/>
+        <location filename="../app/gui/solve_controller.cpp" line="254"/>
+        <source>%1 cannot be solved: %2</source>
+        <translation>%1 kann nicht gelöst werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="256"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 kann nicht gelöst werden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="256"/>
+        <location filename="../app/gui/solve_controller.cpp" line="260"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>Das Ziel der gezogenen Ecke %1 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="257"/>
+        <location filename="../app/gui/solve_controller.cpp" line="261"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>Das Ziel des gezogenen Kontrollpunkts %1 der Kante %2 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="263"/>
+        <location filename="../app/gui/solve_controller.cpp" line="267"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 konnte nicht gelöst werden: das lineare Gleichungssystem ließ sich nicht faktorisieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="265"/>
+        <location filename="../app/gui/solve_controller.cpp" line="269"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 konnte nicht gelöst werden: eine Iteration ergab Werte, die nicht endlich sind.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="269"/>
+        <location filename="../app/gui/solve_controller.cpp" line="273"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 konnte nicht gelöst werden: der Löser lieferte einen Wert, der nicht endlich ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="275"/>
+        <location filename="../app/gui/solve_controller.cpp" line="279"/>
         <source>(Solver: %1)</source>
         <translation>(Löser: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="290"/>
+        <location filename="../app/gui/solve_controller.cpp" line="294"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="294"/>
+        <location filename="../app/gui/solve_controller.cpp" line="298"/>
         <source>Failed: %1</source>
         <translation>Fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="308"/>
+        <location filename="../app/gui/solve_controller.cpp" line="312"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="312"/>
+        <location filename="../app/gui/solve_controller.cpp" line="316"/>
         <source>tolerance reached</source>
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="312"/>
+        <location filename="../app/gui/solve_controller.cpp" line="316"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="319"/>
+        <location filename="../app/gui/solve_controller.cpp" line="323"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="327"/>
+        <location filename="../app/gui/solve_controller.cpp" line="331"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="333"/>
+        <location filename="../app/gui/solve_controller.cpp" line="337"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; das Beibehalten der Längen schlug fehl (%1), daher wurde das Ziehen mit Dehnen des Blatts wiederholt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="349"/>
+        <location filename="../app/gui/solve_controller.cpp" line="353"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n Flächenstück faltet sich auf sich selbst zurück, wo die Fläche sich selbst überlappt: %1</numerusform>
@@ -2355,7 +2775,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="364"/>
+        <location filename="../app/gui/solve_controller.cpp" line="368"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; die Abwicklung überlappt sich selbst an %n Flächenstück (%1) und lässt sich nicht aus einem Bogen schneiden</numerusform>
@@ -2363,32 +2783,32 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="370"/>
+        <location filename="../app/gui/solve_controller.cpp" line="374"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="375"/>
+        <location filename="../app/gui/solve_controller.cpp" line="379"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="379"/>
+        <location filename="../app/gui/solve_controller.cpp" line="383"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="388"/>
+        <location filename="../app/gui/solve_controller.cpp" line="392"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="437"/>
+        <location filename="../app/gui/solve_controller.cpp" line="441"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>Lösen hat den Entwurf unverändert gelassen: das Lösen machte ihn weniger abwickelbar (größtes Abwickelbarkeitsresiduum %1 → %2).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="460"/>
+        <location filename="../app/gui/solve_controller.cpp" line="464"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n Fläche unverändert gelassen: das Lösen machte sie weniger abwickelbar.</numerusform>
@@ -2396,12 +2816,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="472"/>
+        <location filename="../app/gui/solve_controller.cpp" line="476"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 verworfen: Der Entwurf hat sich während des Lösens geändert; nichts wurde bewegt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="490"/>
+        <location filename="../app/gui/solve_controller.cpp" line="494"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, abwickelbar gehalten: %n Iteration, größtes Bedingungsresiduum %2.</numerusform>
@@ -2409,38 +2829,38 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="176"/>
-        <location filename="../app/gui/solve_controller.cpp" line="429"/>
+        <location filename="../app/gui/solve_controller.cpp" line="178"/>
+        <location filename="../app/gui/solve_controller.cpp" line="433"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="228"/>
+        <location filename="../app/gui/solve_controller.cpp" line="230"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt auf der Geraden zwischen den festgehaltenen Ecken %2 und %3, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="235"/>
+        <location filename="../app/gui/solve_controller.cpp" line="237"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt im Dreieck der festgehaltenen Ecken %2, %3 und %4, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="315"/>
+        <location filename="../app/gui/solve_controller.cpp" line="319"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>beim letzten gültigen Zustand angehalten, bevor eine Erzeugende, eine Kurve oder ein Flächenstück kollabierte</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="323"/>
+        <location filename="../app/gui/solve_controller.cpp" line="327"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (endete bei Iteration %1, der mit dem kleinsten Residuum)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="407"/>
+        <location filename="../app/gui/solve_controller.cpp" line="411"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="456"/>
+        <location filename="../app/gui/solve_controller.cpp" line="460"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>
@@ -2527,28 +2947,28 @@
 <context>
     <name>devsurf::app::SplitAtRulingReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="212"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="213"/>
         <source>The curves of this strip have a single spline interval, so a ruling can only be added after refining them (the shape stays the same). Refine now?</source>
         <translation>Die Kurven dieses Streifens haben nur ein Spline-Intervall; eine Erzeugende kann erst nach dem Verfeinern eingefügt werden (die Form bleibt gleich). Jetzt verfeinern?</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="217"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="218"/>
         <source>Cannot refine</source>
         <translation>Verfeinern nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="211"/>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="228"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="212"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="229"/>
         <source>Add Ruling</source>
         <translation>Erzeugende einfügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="192"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="193"/>
         <source>Add a ruling across the selected strip and the strips that share its curves. Select one strip or cone patch first.</source>
         <translation>Fügt eine Erzeugende quer über den ausgewählten Streifen und die Streifen mit denselben Kurven ein. Wählen Sie zuerst ein Streifen- oder Kegel-Flächenstück aus.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="229"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="230"/>
         <source>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoint(s) of the curves; refine the curves (Ctrl+Shift+R) for more.</source>
         <translation>
             <numerusform>Wo die neue Erzeugende Flächenstück %1 und die Streifen mit denselben Kurven kreuzt (grün in der 3D-Ansicht): Prozent des Wegs entlang des Streifens. Erzeugende können durch den %n Knoten der Kurven gehen; verfeinern Sie die Kurven (Strg+Umschalt+R) für mehr.</numerusform>
@@ -2556,7 +2976,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="260"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="261"/>
         <source>Cannot add the ruling</source>
         <translation>Erzeugende kann nicht eingefügt werden</translation>
     </message>
@@ -2564,22 +2984,22 @@
 <context>
     <name>devsurf::app::SubdivideStripReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="137"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="138"/>
         <source>Add a crease across the selected strip and the row of strips it belongs to. Select one patch of type strip (SRSR) first.</source>
         <translation>Fügt einen Falz quer über den ausgewählten Streifen und seine Streifenreihe ein. Wählen Sie zuerst ein Flächenstück vom Typ Streifen (SRSR) aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="148"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="149"/>
         <source>Add Crease</source>
         <translation>Falz einfügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="149"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="150"/>
         <source>Where the new crease crosses patch %1 and the strips of its row (green in the 3D view): per cent of the way from one curve of the strip to the other.</source>
         <translation>Wo der neue Falz Flächenstück %1 und die Streifen seiner Reihe kreuzt (grün in der 3D-Ansicht): Prozent des Wegs von einer Kurve des Streifens zur anderen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="178"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="179"/>
         <source>Cannot add the crease</source>
         <translation>Falz kann nicht eingefügt werden</translation>
     </message>
@@ -2587,7 +3007,7 @@
 <context>
     <name>devsurf::app::Workspace</name>
     <message numerus="yes">
-        <location filename="../app/gui/workspace.cpp" line="82"/>
+        <location filename="../app/gui/workspace.cpp" line="86"/>
         <source>… and %n more problem(s).</source>
         <translation>
             <numerusform>… und %n weiteres Problem.</numerusform>
@@ -2595,87 +3015,89 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="102"/>
+        <location filename="../app/gui/workspace.cpp" line="106"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="105"/>
+        <location filename="../app/gui/workspace.cpp" line="109"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="106"/>
+        <location filename="../app/gui/workspace.cpp" line="110"/>
         <source>%1 has unsaved changes. Do you want to save them?</source>
         <translation>%1 hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="120"/>
+        <location filename="../app/gui/workspace.cpp" line="124"/>
         <source>Opened %1</source>
         <translation>%1 geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="127"/>
+        <location filename="../app/gui/workspace.cpp" line="131"/>
+        <location filename="../app/gui/workspace.cpp" line="134"/>
         <source>Cannot open file</source>
         <translation>Datei kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="141"/>
+        <location filename="../app/gui/workspace.cpp" line="148"/>
         <source>Save Project As</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="144"/>
+        <location filename="../app/gui/workspace.cpp" line="151"/>
         <source>untitled.devsurf</source>
         <translation>unbenannt.devsurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="146"/>
+        <location filename="../app/gui/workspace.cpp" line="153"/>
         <source>DevSurf projects (*.devsurf)</source>
         <translation>DevSurf-Projekte (*.devsurf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="160"/>
+        <location filename="../app/gui/workspace.cpp" line="167"/>
         <source>Cannot save file</source>
         <translation>Datei kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="167"/>
+        <location filename="../app/gui/workspace.cpp" line="174"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="174"/>
+        <location filename="../app/gui/workspace.cpp" line="181"/>
         <source>New design from the example “%1”</source>
         <translation>Neuer Entwurf aus dem Beispiel „%1“</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="176"/>
+        <location filename="../app/gui/workspace.cpp" line="183"/>
         <source>Cannot create the example</source>
         <translation>Das Beispiel kann nicht erzeugt werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="187"/>
+        <location filename="../app/gui/workspace.cpp" line="194"/>
         <source>Recovered unsaved work</source>
         <translation>Ungespeicherte Arbeit wiederhergestellt</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="190"/>
+        <location filename="../app/gui/workspace.cpp" line="197"/>
+        <location filename="../app/gui/workspace.cpp" line="200"/>
         <source>Cannot recover</source>
         <translation>Wiederherstellen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="203"/>
+        <location filename="../app/gui/workspace.cpp" line="213"/>
         <source>an untitled design</source>
         <translation>einem unbenannten Entwurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="205"/>
+        <location filename="../app/gui/workspace.cpp" line="215"/>
         <source>Recover unsaved work</source>
         <translation>Ungespeicherte Arbeit wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="206"/>
+        <location filename="../app/gui/workspace.cpp" line="216"/>
         <source>DevSurf did not close properly last time. Recover the unsaved changes to %1 from %2?</source>
         <translation>DevSurf wurde zuletzt nicht ordnungsgemäß beendet. Die ungespeicherten Änderungen an %1 vom %2 wiederherstellen?</translation>
     </message>
@@ -2693,7 +3115,7 @@
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="547"/>
+        <location filename="../views/scene_view.cpp" line="569"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>Fläche %1 ist ungültig und wird nicht angezeigt.</translation>
     </message>
@@ -2815,25 +3237,6 @@
         <location filename="../app/gui/main.cpp" line="35"/>
         <source>Start with a built-in example.</source>
         <translation>Mit einem eingebauten Beispiel beginnen.</translation>
-    </message>
-</context>
-<context>
-    <name>OutputProblem</name>
-    <message>
-        <source>“%1” is the project file of this design: exporting over it would destroy the design. Choose another file name.</source>
-        <translation>„%1“ ist die Projektdatei dieses Entwurfs: Ein Export darüber würde den Entwurf zerstören. Wählen Sie einen anderen Dateinamen.</translation>
-    </message>
-    <message>
-        <source>“%1” is a folder. Choose a file name.</source>
-        <translation>„%1“ ist ein Ordner. Wählen Sie einen Dateinamen.</translation>
-    </message>
-    <message>
-        <source>“%1” is a device, pipe or socket, not a file. Choose a file name.</source>
-        <translation>„%1“ ist ein Gerät, eine Pipe oder ein Socket, keine Datei. Wählen Sie einen Dateinamen.</translation>
-    </message>
-    <message>
-        <source>There is not enough memory to open “%1”.</source>
-        <translation>Es ist nicht genug Speicher vorhanden, um „%1“ zu öffnen.</translation>
     </message>
 </context>
 </TS>

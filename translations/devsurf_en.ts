@@ -31,7 +31,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/document/commands/move_vertices_command.cpp" line="39"/>
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="38"/>
         <source>Rotate %n vertices</source>
         <translation>
             <numerusform>Rotate %n vertex</numerusform>
@@ -91,7 +91,7 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="77"/>
+        <location filename="../app/gui/drag_tool.cpp" line="79"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>Drag %n vertex</numerusform>
@@ -99,7 +99,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="124"/>
+        <location filename="../app/gui/drag_tool.cpp" line="126"/>
         <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along X. Release to finish, Esc cancels.</numerusform>
@@ -107,7 +107,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="127"/>
+        <location filename="../app/gui/drag_tool.cpp" line="129"/>
         <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along Y. Release to finish, Esc cancels.</numerusform>
@@ -115,7 +115,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="130"/>
+        <location filename="../app/gui/drag_tool.cpp" line="132"/>
         <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along Z. Release to finish, Esc cancels.</numerusform>
@@ -123,7 +123,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="135"/>
+        <location filename="../app/gui/drag_tool.cpp" line="137"/>
         <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</numerusform>
@@ -188,7 +188,7 @@
 <context>
     <name>devsurf::app::PatternExportDialog</name>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="313"/>
         <source>%n piece(s)</source>
         <translation>
             <numerusform>%n piece</numerusform>
@@ -196,7 +196,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="310"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="314"/>
         <source>%n sheet(s)</source>
         <translation>
             <numerusform>%n sheet</numerusform>
@@ -207,8 +207,8 @@
 <context>
     <name>devsurf::app::PropertiesPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="114"/>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="115"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="125"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n patch</numerusform>
@@ -216,7 +216,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="115"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="116"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n control point</numerusform>
@@ -224,7 +224,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="123"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
         <source>%n vertex(es)</source>
         <translation>
             <numerusform>%n vertex</numerusform>
@@ -232,7 +232,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="123"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
         <source>%n edge(s)</source>
         <translation>
             <numerusform>%n edge</numerusform>
@@ -240,7 +240,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="153"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="154"/>
         <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
         <translation>
             <numerusform>Spline curve (S), %1, %n control point.&lt;br&gt;</numerusform>
@@ -248,7 +248,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="182"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="183"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner.</numerusform>
@@ -286,7 +286,7 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="155"/>
+        <location filename="../app/gui/solve_controller.cpp" line="161"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Check the shape: %n patch folds over onto itself (%1); undo, or pin or move differently.</numerusform>
@@ -294,7 +294,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="162"/>
+        <location filename="../app/gui/solve_controller.cpp" line="168"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Check the shape: the development overlaps itself at %n patch (%1); undo, or pin or move differently.</numerusform>
@@ -302,7 +302,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="204"/>
+        <location filename="../app/gui/solve_controller.cpp" line="214"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>folded over in %n place</numerusform>
@@ -310,7 +310,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="314"/>
+        <location filename="../app/gui/solve_controller.cpp" line="353"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n patch folds over onto itself, where the surface overlaps itself: %1</numerusform>
@@ -318,7 +318,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="333"/>
+        <location filename="../app/gui/solve_controller.cpp" line="368"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; the development overlaps itself at %n patch (%1) and cannot be cut from one sheet</numerusform>
@@ -326,7 +326,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="430"/>
+        <location filename="../app/gui/solve_controller.cpp" line="460"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Solved: %n iteration, largest constraint residual %1.</numerusform>
@@ -334,7 +334,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="434"/>
+        <location filename="../app/gui/solve_controller.cpp" line="464"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n surface left as it was: solving made it less developable.</numerusform>
@@ -342,7 +342,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="462"/>
+        <location filename="../app/gui/solve_controller.cpp" line="494"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, kept developable: %n iteration, largest constraint residual %2.</numerusform>
@@ -353,7 +353,7 @@
 <context>
     <name>devsurf::app::SolverPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="54"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="55"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration in %3 ms.</numerusform>
@@ -364,7 +364,7 @@
 <context>
     <name>devsurf::app::SplitAtRulingReaction</name>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="229"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="230"/>
         <source>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoint(s) of the curves; refine the curves (Ctrl+Shift+R) for more.</source>
         <translation>
             <numerusform>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoint of the curves; refine the curves (Ctrl+Shift+R) for more.</numerusform>
@@ -375,7 +375,7 @@
 <context>
     <name>devsurf::app::Workspace</name>
     <message numerus="yes">
-        <location filename="../app/gui/workspace.cpp" line="82"/>
+        <location filename="../app/gui/workspace.cpp" line="86"/>
         <source>… and %n more problem(s).</source>
         <translation>
             <numerusform>… and %n more problem.</numerusform>

@@ -5,9 +5,9 @@
     <name>ApplySurfaceCommand</name>
     <message>
         <location filename="../model/document/commands/apply_surface_command.cpp" line="20"/>
-        <location filename="../model/document/commands/apply_surface_command.cpp" line="43"/>
-        <source>The new shape cannot be applied: %1</source>
-        <translation>新しい形状を適用できません: %1</translation>
+        <location filename="../model/document/commands/apply_surface_command.cpp" line="42"/>
+        <source>The new shape cannot be applied</source>
+        <translation>新しい形状を適用できません</translation>
     </message>
 </context>
 <context>
@@ -73,29 +73,70 @@
     </message>
 </context>
 <context>
+    <name>EditRefusal</name>
+    <message>
+        <location filename="../app/gui/edit_refusal.cpp" line="17"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ExampleDialog</name>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="9"/>
+        <source>A flat rectangle of size × size strips.</source>
+        <translation>サイズ × サイズ個のストリップからなる平らな長方形。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="13"/>
+        <source>A flat annulus of size rings cut by radial rulings.</source>
+        <translation>放射状の母線で区切られた、サイズ個の環からなる平らな円環。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="17"/>
+        <source>A closed cylinder of strips, size sectors around.</source>
+        <translation>周方向にサイズ個の区画を持つ、ストリップからなる閉じた円柱。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="21"/>
+        <source>A flat square of size × size strips with curved creases, ready to fold: every interior crease carries the curved-fold condition and the bottom corners are pinned. Drag the middle vertices up (Drag tool, G).</source>
+        <translation>曲がった折り線をもつ サイズ × サイズ 個のストリップからなる平らな正方形で、すぐに折れます: 内部の折り線にはすべて曲線折りの条件があり、下の角は固定されています。中央の頂点を上へドラッグしてください (ドラッグツール、G)。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="28"/>
+        <source>Two strips joined by one curved crease with the curved-fold condition, the bottom corners pinned; size intervals per curve. Drag a top corner up to fold it.</source>
+        <translation>曲線折りの条件をもつ 1 本の曲がった折り線でつながった 2 つのストリップ。下の角は固定、曲線ごとに サイズ 個の区間。上の角を上へドラッグすると折れます。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="33"/>
+        <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
+        <translation>ストリップ、尖ったストリップ、錐面、平面パッチ。曲線ごとにサイズ個の区間。</translation>
+    </message>
+</context>
+<context>
     <name>FaceType</name>
     <message>
-        <location filename="../app/gui/face_type_text.cpp" line="10"/>
+        <location filename="../app/text/face_type_text.cpp" line="10"/>
         <source>strip (SRSR)</source>
         <translation>ストリップ (SRSR)</translation>
     </message>
     <message>
-        <location filename="../app/gui/face_type_text.cpp" line="12"/>
+        <location filename="../app/text/face_type_text.cpp" line="12"/>
         <source>pointed strip (SRS)</source>
         <translation>尖ったストリップ (SRS)</translation>
     </message>
     <message>
-        <location filename="../app/gui/face_type_text.cpp" line="14"/>
+        <location filename="../app/text/face_type_text.cpp" line="14"/>
         <source>cone (SRR)</source>
         <translation>錐面 (SRR)</translation>
     </message>
     <message>
-        <location filename="../app/gui/face_type_text.cpp" line="16"/>
+        <location filename="../app/text/face_type_text.cpp" line="16"/>
         <source>planar patch</source>
         <translation>平面パッチ</translation>
     </message>
     <message>
-        <location filename="../app/gui/face_type_text.cpp" line="20"/>
+        <location filename="../app/text/face_type_text.cpp" line="20"/>
         <source>invalid labelling</source>
         <translation>無効なラベル付け</translation>
     </message>
@@ -115,21 +156,44 @@
         </translation>
     </message>
     <message>
-        <location filename="../model/document/commands/move_vertices_command.cpp" line="37"/>
-        <source>The vertices cannot be rotated: %1</source>
-        <translation>頂点を回転できません: %1</translation>
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="36"/>
+        <source>The vertices cannot be rotated</source>
+        <translation>頂点を回転できません</translation>
     </message>
     <message numerus="yes">
-        <location filename="../model/document/commands/move_vertices_command.cpp" line="39"/>
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="38"/>
         <source>Rotate %n vertices</source>
         <translation>
             <numerusform>%n 個の頂点を回転</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../model/document/commands/move_vertices_command.cpp" line="47"/>
+        <location filename="../model/document/commands/move_vertices_command.cpp" line="46"/>
         <source>The vertices cannot be moved</source>
         <translation>頂点を移動できません</translation>
+    </message>
+</context>
+<context>
+    <name>OutputProblem</name>
+    <message>
+        <location filename="../app/gui/output_problem_text.cpp" line="14"/>
+        <source>“%1” is the project file of this design: exporting over it would destroy the design. Choose another file name.</source>
+        <translation>「%1」はこのデザインのプロジェクトファイルです。上書きしてエクスポートするとデザインが失われます。別のファイル名を選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/output_problem_text.cpp" line="19"/>
+        <source>“%1” is a folder. Choose a file name.</source>
+        <translation>「%1」はフォルダーです。ファイル名を選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/output_problem_text.cpp" line="22"/>
+        <source>“%1” is a device, pipe or socket, not a file. Choose a file name.</source>
+        <translation>「%1」はデバイス、パイプまたはソケットで、ファイルではありません。ファイル名を選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/output_problem_text.cpp" line="31"/>
+        <source>There is not enough memory to open “%1”.</source>
+        <translation>「%1」を開くためのメモリが足りません。</translation>
     </message>
 </context>
 <context>
@@ -175,64 +239,447 @@
     </message>
 </context>
 <context>
+    <name>ProblemText</name>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="39"/>
+        <source>no patch</source>
+        <translation>パッチなし</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="42"/>
+        <source>patch %1</source>
+        <translation>パッチ %1</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="44"/>
+        <source>patches %1</source>
+        <translation>パッチ %1</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="49"/>
+        <source>degree %1, C%2, 1 interval</source>
+        <translation>次数 %1、C%2、区間数 1</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="51"/>
+        <source>degree %1, C%2, %3 intervals</source>
+        <translation>次数 %1、C%2、区間数 %3</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="59"/>
+        <source>Surface %1</source>
+        <translation>曲面 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="61"/>
+        <source>Surface %1 “%2”</source>
+        <translation>曲面 %1「%2」</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="68"/>
+        <source>The surface has no patches.</source>
+        <translation>曲面にパッチがありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="70"/>
+        <source>Vertex id %1 is used twice.</source>
+        <translation>頂点 ID %1 が二重に使われています。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="71"/>
+        <source>Edge id %1 is used twice.</source>
+        <translation>辺 ID %1 が二重に使われています。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="72"/>
+        <source>Patch id %1 is used twice.</source>
+        <translation>パッチ ID %1 が二重に使われています。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="74"/>
+        <source>Vertex %1 does not exist.</source>
+        <translation>頂点 %1 は存在しません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="75"/>
+        <source>Edge %1 does not exist.</source>
+        <translation>辺 %1 は存在しません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="76"/>
+        <source>Patch %1 does not exist.</source>
+        <translation>パッチ %1 は存在しません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="78"/>
+        <source>Edge %1 does not join two distinct existing vertices.</source>
+        <translation>辺 %1 は異なる 2 つの既存の頂点を結んでいません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="80"/>
+        <source>Edge %1 duplicates the edge between vertices %2 and %3.</source>
+        <translation>辺 %1 は頂点 %2 と %3 の間の辺と重複しています。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="85"/>
+        <source>Patch %1 has fewer than three corners.</source>
+        <translation>パッチ %1 の角が 3 つ未満です。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="87"/>
+        <source>Patch %1 visits a vertex twice.</source>
+        <translation>パッチ %1 は同じ頂点を 2 回通ります。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="89"/>
+        <source>Patch %1 refers to vertex %2, which does not exist.</source>
+        <translation>パッチ %1 は存在しない頂点 %2 を参照しています。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="91"/>
+        <source>Patch %1 runs along the edge from vertex %2 to vertex %3 in the same direction as another patch: patches must be oriented consistently and an edge can border at most two patches.</source>
+        <translation>パッチ %1 は頂点 %2 から頂点 %3 への辺を別のパッチと同じ向きにたどっています。パッチの向きはそろっている必要があり、1 本の辺に接するパッチは 2 つまでです。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="98"/>
+        <source>Patch %1 cannot be attached without making the surface non-manifold.</source>
+        <translation>パッチ %1 を追加すると曲面が非多様体になるため追加できません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="101"/>
+        <source>There is no edge between vertices %1 and %2.</source>
+        <translation>頂点 %1 と %2 の間に辺がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="103"/>
+        <source>Edge %1 is a curve; only rulings are smooth or sharp.</source>
+        <translation>辺 %1 は曲線です。滑らか・鋭いの区別があるのは母線だけです。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="105"/>
+        <source>Vertex %1 belongs to no patch.</source>
+        <translation>頂点 %1 はどのパッチにも属していません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="106"/>
+        <source>Edge %1 belongs to no patch.</source>
+        <translation>辺 %1 はどのパッチにも属していません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="108"/>
+        <source>Vertex %1 lies beyond the id counter.</source>
+        <translation>頂点 %1 は ID カウンタを超えています。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="109"/>
+        <source>Edge %1 lies beyond the id counter.</source>
+        <translation>辺 %1 は ID カウンタを超えています。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="110"/>
+        <source>Patch %1 lies beyond the id counter.</source>
+        <translation>パッチ %1 は ID カウンタを超えています。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="112"/>
+        <source>Edge %1 is a ruling but carries spline data.</source>
+        <translation>辺 %1 は母線ですがスプラインのデータを持っています。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="114"/>
+        <source>Edge %1 is marked smooth but is not shared by two patches.</source>
+        <translation>辺 %1 は滑らかと指定されていますが、2 つのパッチに共有されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="116"/>
+        <source>Edge %1 is a curve but is marked smooth (only rulings are).</source>
+        <translation>辺 %1 は曲線ですが滑らかと指定されています（指定できるのは母線だけです）。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="118"/>
+        <source>Edge %1 has an invalid spline space (%2).</source>
+        <translation>辺 %1 のスプライン空間 (%2) は無効です。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="122"/>
+        <source>Edge %1 has %2 control points; its spline space (%3) needs %4.</source>
+        <translation>辺 %1 の制御点は %2 個ですが、そのスプライン空間 (%3) には %4 個必要です。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="128"/>
+        <source>Edge %1 has a control point that is not a finite number.</source>
+        <translation>辺 %1 に有限の数でない制御点があります。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="131"/>
+        <source>Edge %1 does not start at its vertex %2.</source>
+        <translation>辺 %1 が頂点 %2 から始まっていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="132"/>
+        <source>Edge %1 does not end at its vertex %2.</source>
+        <translation>辺 %1 が頂点 %2 で終わっていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="134"/>
+        <source>Edge %1 carries a crease condition but is not shared by two patches.</source>
+        <translation>辺 %1 には折り線の条件がありますが、2 つのパッチに共有されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="137"/>
+        <source>Patch %1 is labelled %2; a patch must be an SRSR strip, an SRS strip, an SRR cone or a polygon of rulings only (R…R).</source>
+        <translation>パッチ %1 のラベルは %2 です。パッチは SRSR ストリップ、SRS ストリップ、SRR 錐面、または母線だけの多角形 (R…R) でなければなりません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="142"/>
+        <source>Curves %1 and %2 are connected through patches but use different spline spaces (%3 and %4).</source>
+        <translation>曲線 %1 と %2 はパッチを介してつながっていますが、スプライン空間が異なります (%3 と %4)。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="148"/>
+        <source>Vertex %1 (of %2) has a position that is not a finite number.</source>
+        <translation>頂点 %1（%2）の位置が有限の数ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="152"/>
+        <source>Vertex %1 (of %2) lies %3 mm from the origin; coordinates beyond %4 mm (1 km) are not accepted.</source>
+        <translation>頂点 %1（%2）は原点から %3 mm 離れています。%4 mm (1 km) を超える座標は受け付けません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="157"/>
+        <source>Edge %1 (a curve of %2) has a control point beyond %3 mm from the origin.</source>
+        <translation>辺 %1（%2 の曲線）に原点から %3 mm より遠い制御点があります。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="161"/>
+        <source>Edge %1 (a curve of %2) has zero length.</source>
+        <translation>辺 %1（%2 の曲線）の長さがゼロです。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="163"/>
+        <source>Edge %1 (a ruling of %2) has zero length.</source>
+        <translation>辺 %1（%2 の母線）の長さがゼロです。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="165"/>
+        <source>Patch %1 has coincident vertices %2 and %3.</source>
+        <translation>パッチ %1 の頂点 %2 と %3 が一致しています。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="170"/>
+        <source>Patch %1 has zero area.</source>
+        <translation>パッチ %1 の面積がゼロです。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="172"/>
+        <source>Patch %1 is a %2; only an SRSR strip can be cut by a new crease.</source>
+        <translation>パッチ %1 は%2です。新しい折り線で分割できるのは SRSR ストリップだけです。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="176"/>
+        <source>The new crease cannot continue across ruling edge %1 into patch %2, a %3; a row of strips can only be cut where its rulings border SRSR strips, planar patches or the boundary.</source>
+        <translation>新しい折り線は母線の辺 %1 を越えてパッチ %2（%3）へ続けられません。ストリップの列を分割できるのは、その母線が SRSR ストリップ、平面パッチまたは境界に接する場所だけです。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="183"/>
+        <source>The row of strips through patch %1 closes on itself with its sides swapped, so it cannot be cut at one distance between its curves.</source>
+        <translation>パッチ %1 を通るストリップの列は左右が入れ替わって閉じているため、曲線間の一定の位置で分割できません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="187"/>
+        <source>The new crease must lie strictly between the strip&apos;s two curves (0 &lt; t &lt; 1, not %1).</source>
+        <translation>新しい折り線はストリップの 2 本の曲線の間になければなりません（0 &lt; t &lt; 1、%1 ではなく）。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="191"/>
+        <source>No edge was given to relabel.</source>
+        <translation>ラベルを変更する辺が指定されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="193"/>
+        <source>Edge %1 is not a spline curve.</source>
+        <translation>辺 %1 はスプライン曲線ではありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="195"/>
+        <source>Patch %1 is a %2; a ruling can only be added to a strip or a cone.</source>
+        <translation>パッチ %1 は%2です。母線を追加できるのはストリップか錐面だけです。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="199"/>
+        <source>The curves of patch %1 have a single interval; refine them before adding a ruling.</source>
+        <translation>パッチ %1 の曲線は区間が 1 つだけです。母線を追加する前に細分してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="203"/>
+        <source>A ruling can only be added at an interior breakpoint i/%1 of the curves of patch %2 (1 ≤ i ≤ %3, not %4); refine the curves for finer positions.</source>
+        <translation>母線を追加できるのはパッチ %2 の曲線の内部の区切り点 i/%1 だけです（1 ≤ i ≤ %3、%4 ではなく）。細かい位置には曲線を細分してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="210"/>
+        <source>The curves connected to patch %1 meet themselves reversed, so no ruling position is consistent across them.</source>
+        <translation>パッチ %1 につながる曲線は逆向きに自分自身と出会うため、すべてに合う母線の位置がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="214"/>
+        <source>Curve %1 uses a different spline space from the curves of patch %2.</source>
+        <translation>曲線 %1 のスプライン空間はパッチ %2 の曲線と異なります。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="218"/>
+        <source>Refining needs a factor of at least 2, not %1.</source>
+        <translation>細分には 2 以上の倍率が必要です（%1 ではなく）。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="220"/>
+        <source>The curves of edge %1 already have %2 intervals; refining them beyond %3 is not supported.</source>
+        <translation>辺 %1 の曲線はすでに区間数 %2 です。%3 を超える細分には対応していません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="226"/>
+        <source>No vertex was given to move.</source>
+        <translation>移動する頂点が指定されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="228"/>
+        <source>A rotation needs a finite axis point, a non-zero axis direction and a finite angle.</source>
+        <translation>回転には有限の軸上の点、ゼロでない軸方向、有限の角度が必要です。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="235"/>
+        <source>There is no example called “%1”; the examples are %2.</source>
+        <translation>「%1」という例はありません。例は %2 です。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="239"/>
+        <source>The size of the example “%1” must be between %2 and %3, not %4.</source>
+        <translation>例「%1」のサイズは %2 から %3 の間でなければなりません（%4 ではなく）。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="245"/>
+        <source>The number of samples per spline interval must be between 1 and %1, not %2.</source>
+        <translation>スプライン区間あたりのサンプル数は 1 から %1 の間でなければなりません（%2 ではなく）。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="249"/>
+        <source>Patch %1 is not a strip or a cone.</source>
+        <translation>パッチ %1 はストリップでも錐面でもありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="251"/>
+        <source>The two shapes do not have the same patches.</source>
+        <translation>2 つの形状のパッチが一致しません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="253"/>
+        <source>Edge %1 has a crease condition but is a boundary curve, not a crease.</source>
+        <translation>辺 %1 には折り線の条件がありますが、折り線ではなく境界曲線です。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="256"/>
+        <source>Edge %1 has a crease condition but a cone or planar patch lies beside it; crease conditions need a strip on either side.</source>
+        <translation>辺 %1 には折り線の条件がありますが、隣に錐面または平面パッチがあります。折り線の条件には両側にストリップが必要です。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="261"/>
+        <source>Edge %1 has a crease condition but its curve is of degree %2; a crease condition needs degree 2 or more.</source>
+        <translation>辺 %1 には折り線の条件がありますが、曲線の次数が %2 です。折り線の条件には次数 2 以上が必要です。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="268"/>
+        <source>DevSurf met an internal error (%1). Please report it.</source>
+        <translation>DevSurf で内部エラーが発生しました (%1)。報告してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="286"/>
+        <source>The sheet size must be positive; the pieces are laid out side by side.</source>
+        <translation>シートの大きさは正でなければなりません。ピースは横に並べて配置します。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="288"/>
+        <source>%1 is not valid and has no pattern: %2</source>
+        <translation>%1 は無効で型紙がありません: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="291"/>
+        <source>%1 could not be developed: %2</source>
+        <translation>%1 を展開できませんでした: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="294"/>
+        <source>Piece %1 (%2) overlaps itself at patches %3 and cannot be cut from one sheet.</source>
+        <translation>ピース %1（%2）はパッチ %3 で自分自身と重なっており、1 枚のシートから切り出せません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="297"/>
+        <source>Pieces %1 (patches %2) and %3 (patches %4) overlap on sheet %5.</source>
+        <translation>ピース %1（パッチ %2）と %3（パッチ %4）がシート %5 上で重なっています。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="302"/>
+        <source>Piece %1 (%2) measures %3 × %4 mm and does not fit on the %5 × %6 mm sheet with a %7 mm gap.</source>
+        <translation>ピース %1（%2）は %3 × %4 mm で、%7 mm の間隔をとると %5 × %6 mm のシートに収まりません。</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="33"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="36"/>
         <source>Laser bed 600 × 400 mm</source>
         <translation>レーザー加工機のベッド 600 × 400 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="34"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
         <source>A4 (210 × 297 mm)</source>
         <translation>A4 (210 × 297 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="35"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="38"/>
         <source>A3 (297 × 420 mm)</source>
         <translation>A3 (297 × 420 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="36"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="39"/>
         <source>Letter (8.5 × 11 in)</source>
         <translation>レター (8.5 × 11 in)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="40"/>
         <source>Custom</source>
         <translation>カスタム</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="34"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="35"/>
         <source>Nothing to print</source>
         <translation>印刷するものがありません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="36"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="37"/>
         <source>The design has no surface to develop.</source>
         <translation>デザインに展開できる曲面がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="52"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="53"/>
         <source>Printing the cutting pattern…</source>
         <translation>型紙を印刷しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="52"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="53"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="140"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="143"/>
         <source>Export &amp;Cutting Pattern…</source>
         <translation>型紙をエクスポート(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="142"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="145"/>
         <source>&amp;Print…</source>
         <translation>印刷(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="145"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="148"/>
         <source>Print Pre&amp;view…</source>
         <translation>印刷プレビュー(&amp;V)…</translation>
     </message>
@@ -303,7 +750,7 @@
 <context>
     <name>SceneView</name>
     <message>
-        <location filename="../views/quality_colours.cpp" line="144"/>
+        <location filename="../views/quality_colours.cpp" line="84"/>
         <source>Developability
 |det(a-b, a&apos;, b&apos;)|
 (ratio)</source>
@@ -312,14 +759,14 @@
 (比)</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="147"/>
+        <location filename="../views/quality_colours.cpp" line="87"/>
         <source>Flatness δ
 (ratio)</source>
         <translation>平面性 δ
 (比)</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="149"/>
+        <location filename="../views/quality_colours.cpp" line="89"/>
         <source>Angle defect |K|
 (rad)</source>
         <translation>角度欠損 |K|
@@ -402,14 +849,9 @@
 <context>
     <name>SurfaceEditCommand</name>
     <message>
-        <location filename="../model/document/commands/surface_edit_command.cpp" line="48"/>
+        <location filename="../model/document/commands/surface_edit_command.cpp" line="50"/>
         <source>There is no surface number %1 in the design.</source>
         <translation>デザインに曲面 %1 はありません。</translation>
-    </message>
-    <message>
-        <location filename="../model/document/commands/surface_edit_command.cpp" line="66"/>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -518,32 +960,32 @@
 <context>
     <name>devsurf::app::CreaseConditionReaction</name>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="69"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="70"/>
         <source>Curved fold: the solver keeps the crease&apos;s osculating plane halfway between the two patches, so that the design folds from one flat sheet.</source>
         <translation>曲線折り: ソルバーは折り線の接触平面を 2 つのパッチの中間に保ち、デザインが 1 枚の平らなシートから折れるようにします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="73"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="74"/>
         <source>Geodesic: the solver keeps the crease a geodesic of both patches.</source>
         <translation>測地線: ソルバーは折り線を両方のパッチの測地線に保ちます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="76"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="77"/>
         <source>Straight when unfolded: the solver keeps the crease a straight line in the development.</source>
         <translation>展開で直線: ソルバーは折り線を展開図の上で直線に保ちます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="82"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="83"/>
         <source>No condition: the solver treats the crease freely.</source>
         <translation>条件なし: ソルバーは折り線を自由に扱います。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="103"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="104"/>
         <source>Select creases (curves between two patches) of one surface first.</source>
         <translation>先に 1 つの曲面の折り線 (2 つのパッチの間の曲線) を選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="162"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="163"/>
         <source>Cr&amp;ease</source>
         <translation>折り線(&amp;E)</translation>
     </message>
@@ -559,124 +1001,125 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="81"/>
+        <location filename="../app/gui/drag_tool.cpp" line="83"/>
         <source>Drag cancelled; the design is as it was.</source>
         <translation>ドラッグを取り消しました。デザインは元のままです。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="77"/>
+        <location filename="../app/gui/drag_tool.cpp" line="79"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>%n 個の頂点をドラッグ</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="102"/>
+        <location filename="../app/gui/drag_tool.cpp" line="104"/>
         <source>Sliding crease %1 by %2 mm within the surface, as far as it goes: the patch it moves into keeps %3 % of its width. Release to finish, Esc cancels.</source>
         <translation>折り線 %1 を曲面の中で %2 mm 移動中 (これ以上は動きません。移動先のパッチは幅の %3 % を保ちます)。離すと終了、Esc で取り消し。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="124"/>
+        <location filename="../app/gui/drag_tool.cpp" line="126"/>
         <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を X 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="127"/>
+        <location filename="../app/gui/drag_tool.cpp" line="129"/>
         <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を Y 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="130"/>
+        <location filename="../app/gui/drag_tool.cpp" line="132"/>
         <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を Z 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="135"/>
+        <location filename="../app/gui/drag_tool.cpp" line="137"/>
         <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>
             <numerusform>%n 個の頂点を視平面内で %1 mm ドラッグ中。離すと確定、Esc で取り消し。X、Y、Z を押し続けるとその軸に沿って動きます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="240"/>
+        <location filename="../app/gui/drag_tool.cpp" line="242"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>頂点 %1 は固定されているためドラッグできません。先に固定を解除してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="258"/>
-        <location filename="../app/gui/drag_tool.cpp" line="299"/>
+        <location filename="../app/gui/drag_tool.cpp" line="260"/>
+        <location filename="../app/gui/drag_tool.cpp" line="301"/>
         <source>a drag started</source>
         <translation>ドラッグが始まりました</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="282"/>
+        <location filename="../app/gui/drag_tool.cpp" line="284"/>
         <source>There is no edge %1.</source>
         <translation>辺 %1 はありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="285"/>
+        <location filename="../app/gui/drag_tool.cpp" line="287"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>辺 %1 は折り線 (2 つのパッチの間の曲線) ではありません。ドラッグできるのは折り線だけです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="290"/>
+        <location filename="../app/gui/drag_tool.cpp" line="292"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>辺 %1 は動かせません: 両端が固定されていて、ほかに制御点がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="396"/>
+        <location filename="../app/gui/drag_tool.cpp" line="398"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1 と %2 が頂点 %3 をその間の直線上に押さえています (2 点の距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="402"/>
+        <location filename="../app/gui/drag_tool.cpp" line="404"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1、%2、%3 が頂点 %4 をその三角形の中に押さえています (距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="85"/>
+        <location filename="../app/gui/drag_tool.cpp" line="87"/>
         <source>Drag stopped: %1 The design is as it was.</source>
         <translation>ドラッグを中止しました: %1 デザインは元のままです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="75"/>
+        <location filename="../app/gui/drag_tool.cpp" line="77"/>
         <source>Drag crease %1</source>
         <translation>折り線 %1 をドラッグ</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="89"/>
+        <location filename="../app/gui/drag_tool.cpp" line="91"/>
         <source>Drag tool: press on a vertex in the 3D view and move the mouse; the selected vertices of its surface follow. Press on a crease to slide it within its patches. Esc cancels a drag.</source>
         <translation>ドラッグツール: 3D ビューで頂点を押してマウスを動かすと、その曲面の選択した頂点が追従します。折り線を押すと、パッチの中で折り線を滑らせます。Esc でドラッグを取り消します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="95"/>
+        <location filename="../app/gui/drag_tool.cpp" line="97"/>
         <source>Drag stopped: the design changed during the drag.</source>
         <translation>ドラッグを中止しました: ドラッグ中にデザインが変更されました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="110"/>
+        <location filename="../app/gui/drag_tool.cpp" line="112"/>
         <source>Sliding crease %1 by %2 mm within the surface. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>折り線 %1 を曲面の中で %2 mm 移動中。離すと終了、Esc で取り消し。X、Y、Z を押したままにするとその軸に沿って動きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="114"/>
+        <location filename="../app/gui/drag_tool.cpp" line="116"/>
         <source>Moving crease %1 by %2 mm along the axis. Release to finish, Esc cancels.</source>
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="516"/>
+        <location filename="../app/gui/drag_tool.cpp" line="523"/>
+        <location filename="../app/gui/drag_tool.cpp" line="541"/>
         <source>The new shape cannot be applied: %1</source>
         <translation>新しい形状を適用できません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="530"/>
-        <location filename="../app/gui/drag_tool.cpp" line="542"/>
+        <location filename="../app/gui/drag_tool.cpp" line="537"/>
+        <location filename="../app/gui/drag_tool.cpp" line="555"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -684,47 +1127,17 @@
 <context>
     <name>devsurf::app::ExampleDialog</name>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="19"/>
-        <source>A flat rectangle of size × size strips.</source>
-        <translation>サイズ × サイズ個のストリップからなる平らな長方形。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/example_dialog.cpp" line="22"/>
-        <source>A flat annulus of size rings cut by radial rulings.</source>
-        <translation>放射状の母線で区切られた、サイズ個の環からなる平らな円環。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/example_dialog.cpp" line="25"/>
-        <source>A closed cylinder of strips, size sectors around.</source>
-        <translation>周方向にサイズ個の区画を持つ、ストリップからなる閉じた円柱。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/example_dialog.cpp" line="28"/>
-        <source>A flat square of size × size strips with curved creases, ready to fold: every interior crease carries the curved-fold condition and the bottom corners are pinned. Drag the middle vertices up (Drag tool, G).</source>
-        <translation>曲がった折り線をもつ サイズ × サイズ 個のストリップからなる平らな正方形で、すぐに折れます: 内部の折り線にはすべて曲線折りの条件があり、下の角は固定されています。中央の頂点を上へドラッグしてください (ドラッグツール、G)。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/example_dialog.cpp" line="34"/>
-        <source>Two strips joined by one curved crease with the curved-fold condition, the bottom corners pinned; size intervals per curve. Drag a top corner up to fold it.</source>
-        <translation>曲線折りの条件をもつ 1 本の曲がった折り線でつながった 2 つのストリップ。下の角は固定、曲線ごとに サイズ 個の区間。上の角を上へドラッグすると折れます。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/example_dialog.cpp" line="38"/>
-        <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
-        <translation>ストリップ、尖ったストリップ、錐面、平面パッチ。曲線ごとにサイズ個の区間。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/example_dialog.cpp" line="47"/>
+        <location filename="../app/gui/example_dialog.cpp" line="18"/>
         <source>New from Example</source>
         <translation>例から新規作成</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="53"/>
+        <location filename="../app/gui/example_dialog.cpp" line="24"/>
         <source>&amp;Example:</source>
         <translation>例(&amp;E):</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="54"/>
+        <location filename="../app/gui/example_dialog.cpp" line="25"/>
         <source>&amp;Size:</source>
         <translation>サイズ(&amp;S):</translation>
     </message>
@@ -732,44 +1145,45 @@
 <context>
     <name>devsurf::app::ExportJsonReaction</name>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="94"/>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="111"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="96"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="113"/>
         <source>Export Interchange JSON</source>
         <translation>交換用 JSON のエクスポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="95"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="97"/>
         <source>“%1” ends in .%2, but this command writes interchange JSON. Export to “%3” instead?</source>
         <translation>「%1」の拡張子は .%2 ですが、このコマンドは交換用 JSON を書き出します。代わりに「%3」にエクスポートしますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="100"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="102"/>
         <source>Export as .json</source>
         <translation>.json としてエクスポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="109"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="111"/>
         <source>untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="113"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="115"/>
         <source>Interchange JSON (*.json)</source>
         <translation>交換用 JSON (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="120"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="128"/>
         <source>Exported %1</source>
         <translation>%1 をエクスポートしました</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="122"/>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="125"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="123"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="130"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="133"/>
         <source>Export failed</source>
         <translation>エクスポートに失敗しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="126"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="134"/>
         <source>The design cannot be exported: %1</source>
         <translation>デザインをエクスポートできません: %1</translation>
     </message>
@@ -777,12 +1191,12 @@
 <context>
     <name>devsurf::app::ExportPatternReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="73"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="75"/>
         <source>untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="77"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="80"/>
         <source>Exported the cutting pattern</source>
         <translation>型紙をエクスポートしました</translation>
     </message>
@@ -880,8 +1294,8 @@
         <translation>選択を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <location filename="../app/gui/main_window.cpp" line="186"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
@@ -1395,22 +1809,22 @@
 <context>
     <name>devsurf::app::MoveVerticesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="315"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="316"/>
         <source>Translate or rotate the selected vertices with their neighbouring control points. Select vertices of one surface first.</source>
         <translation>選択した頂点を隣接する制御点とともに平行移動または回転します。先に 1 つの曲面の頂点を選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="343"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="344"/>
         <source>Cannot rotate</source>
         <translation>回転できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="343"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="344"/>
         <source>Cannot move</source>
         <translation>移動できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="352"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="353"/>
         <source>the vertices are moved</source>
         <translation>頂点が移動されます</translation>
     </message>
@@ -1418,12 +1832,12 @@
 <context>
     <name>devsurf::app::OpenReaction</name>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="32"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="34"/>
         <source>Open Project</source>
         <translation>プロジェクトを開く</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="34"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="36"/>
         <source>DevSurf projects (*.devsurf)</source>
         <translation>DevSurf プロジェクト (*.devsurf)</translation>
     </message>
@@ -1431,12 +1845,12 @@
 <context>
     <name>devsurf::app::OpenRecentReaction</name>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="62"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="64"/>
         <source>No recent files</source>
         <translation>最近使ったファイルはありません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="66"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="68"/>
         <source>Clear Recent Files</source>
         <translation>最近使ったファイルの一覧を消去</translation>
     </message>
@@ -1479,276 +1893,277 @@
 <context>
     <name>devsurf::app::PatternExportDialog</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="82"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="85"/>
         <source>DXF drawing (*.dxf)</source>
         <translation>DXF 図面 (*.dxf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="84"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="87"/>
         <source>SVG image (*.svg)</source>
         <translation>SVG 画像 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="86"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="89"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文書 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="88"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="91"/>
         <source>FOLD crease pattern (*.fold)</source>
         <translation>FOLD 折り線図 (*.fold)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="96"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="330"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="339"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="99"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="335"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="344"/>
         <source>Export Cutting Pattern</source>
         <translation>型紙のエクスポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
         <source>DXF (laser and plotter cutters)</source>
         <translation>DXF (レーザー・プロッターカッター用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
         <source>SVG (vinyl and paper cutters)</source>
         <translation>SVG (カッティングマシン用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="101"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
         <source>PDF (print at 1:1, tiled)</source>
         <translation>PDF (原寸で印刷、分割)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="101"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
         <source>FOLD (origami simulators)</source>
         <translation>FOLD (折り紙シミュレーター用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="102"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
         <source>&amp;Format:</source>
         <translation>形式(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="107"/>
         <source>&amp;Polylines</source>
         <translation>ポリライン(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="108"/>
         <source>S&amp;plines</source>
         <translation>スプライン(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="112"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="115"/>
         <source>DXF &amp;R12 (for old cutter software)</source>
         <translation>DXF &amp;R12 (古いカッターソフト用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="114"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="117"/>
         <source>Curves:</source>
         <translation>曲線:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="120"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="138"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="154"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="123"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="141"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="157"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="121"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
         <source>&amp;Tolerance:</source>
         <translation>許容誤差(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Cut</source>
         <translation>切断</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Mountain</source>
         <translation>山折り</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Valley</source>
         <translation>谷折り</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Crease</source>
         <translation>折り線</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Rulings (score)</source>
         <translation>母線 (筋付け)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Seam</source>
         <translation>継ぎ目</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
         <source>Labels</source>
         <translation>ラベル</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="134"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="137"/>
         <source>Layers:</source>
         <translation>レイヤー:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="139"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="142"/>
         <source>as &amp;glue tabs</source>
         <translation>のりしろとして(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="143"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="146"/>
         <source>&amp;Seam allowance:</source>
         <translation>縫い代(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="161"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
         <source>S&amp;heet:</source>
         <translation>シート(&amp;H):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
         <source>A4</source>
         <translation>A4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
         <source>A3</source>
         <translation>A3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
         <source>Letter</source>
         <translation>レター</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="165"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
         <source>P&amp;aper (PDF):</source>
         <translation>用紙 (PDF)(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
         <source>Piece</source>
         <translation>ピース</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
         <source>Sheet</source>
         <translation>シート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
         <source>Size (mm)</source>
         <translation>サイズ (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="173"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Area (mm²)</source>
         <translation>面積 (mm²)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="173"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Isometry error (mm)</source>
         <translation>等長誤差 (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
         <source>Fits sheet</source>
         <translation>シートに収まる</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
         <source>Overlaps</source>
         <translation>重なり</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="181"/>
         <source>Fabrication report</source>
         <translation>製作レポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="185"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="188"/>
         <source>&amp;Export…</source>
         <translation>エクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="292"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="296"/>
         <source>itself</source>
         <translation>自身</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="299"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="304"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="308"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="300"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="304"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="307"/>
         <source>yes</source>
         <translation>はい</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="307"/>
         <source>no</source>
         <translation>いいえ</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="313"/>
         <source>%n piece(s)</source>
         <translation>
             <numerusform>ピース %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="310"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="314"/>
         <source>%n sheet(s)</source>
         <translation>
             <numerusform>シート %n 枚</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="312"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="316"/>
         <source>largest isometry error %1 mm</source>
         <translation>最大等長誤差 %1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="328"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="333"/>
         <source>Some pieces overlap and cannot be cut as laid out. Export anyway?</source>
         <translation>重なっているピースがあり、この配置では切断できません。それでもエクスポートしますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="329"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="334"/>
         <source>The pattern has problems (see the report). Export anyway?</source>
         <translation>型紙に問題があります (レポートを参照)。それでもエクスポートしますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="358"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="370"/>
         <source>Writing the cutting pattern…</source>
         <translation>型紙を書き出しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="358"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="370"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="369"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="361"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="381"/>
         <source>Export failed</source>
         <translation>エクスポートに失敗しました</translation>
     </message>
@@ -1756,32 +2171,32 @@
 <context>
     <name>devsurf::app::PinVerticesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pin_reactions.cpp" line="50"/>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="51"/>
         <source>Pin the selected vertices: the solver never moves them. Select vertices of one surface first.</source>
         <translation>選択した頂点を固定します。ソルバーはこれらを動かしません。先に 1 つの曲面の頂点を選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pin_reactions.cpp" line="52"/>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="53"/>
         <source>Release the selected pinned vertices. Select vertices of one surface first.</source>
         <translation>選択した頂点の固定を解除します。先に 1 つの曲面の頂点を選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pin_reactions.cpp" line="57"/>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="58"/>
         <source>Pin the selected vertices: the solver never moves them.</source>
         <translation>選択した頂点を固定します。ソルバーはこれらを動かしません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pin_reactions.cpp" line="58"/>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="59"/>
         <source>Release the selected pinned vertices.</source>
         <translation>選択した頂点の固定を解除します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pin_reactions.cpp" line="69"/>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="70"/>
         <source>Cannot pin the vertices</source>
         <translation>頂点を固定できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pin_reactions.cpp" line="69"/>
+        <location filename="../app/gui/reactions/pin_reactions.cpp" line="70"/>
         <source>Cannot unpin the vertices</source>
         <translation>頂点の固定を解除できません</translation>
     </message>
@@ -1789,17 +2204,17 @@
 <context>
     <name>devsurf::app::PrintPatternReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="97"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="100"/>
         <source>Print Cutting Pattern</source>
         <translation>型紙の印刷</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="102"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="105"/>
         <source>Printing failed</source>
         <translation>印刷に失敗しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="103"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="106"/>
         <source>The pages could not be sent to the printer.</source>
         <translation>ページをプリンターに送れませんでした。</translation>
     </message>
@@ -1807,7 +2222,7 @@
 <context>
     <name>devsurf::app::PrintPreviewReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="123"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="126"/>
         <source>Print Preview: Cutting Pattern</source>
         <translation>印刷プレビュー: 型紙</translation>
     </message>
@@ -1815,115 +2230,115 @@
 <context>
     <name>devsurf::app::PropertiesPanel</name>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="27"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="28"/>
         <source>degree %1, C%2, %3 intervals</source>
         <translation>次数 %1、C%2、区間数 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="37"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="38"/>
         <source>A crease between patches %1 (left) and %2 (right); condition: %3.&lt;br&gt;</source>
         <translation>パッチ %1 (左) と %2 (右) の間の折り線。条件: %3。&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="48"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="49"/>
         <source>Mountain fold of %1° (up to %2°).</source>
         <translation>山折り %1° (最大 %2°)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="52"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="53"/>
         <source>Valley fold of %1° (up to %2°).</source>
         <translation>谷折り %1° (最大 %2°)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="56"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="57"/>
         <source>Not folded.</source>
         <translation>折れていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="112"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="113"/>
         <source>Nothing selected.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
         <translation>何も選択されていません。&lt;br&gt;%1、%2。&lt;br&gt;&lt;i&gt;頂点・辺・パッチをクリックすると選択されます。Shift+クリックで選択に追加します。&lt;/i&gt;</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="114"/>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="115"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="125"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="115"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="116"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="122"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="123"/>
         <source>Selected: %1, %2, %3.</source>
         <translation>選択: %1、%2、%3。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="123"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
         <source>%n vertex(es)</source>
         <translation>
             <numerusform>頂点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="123"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
         <source>%n edge(s)</source>
         <translation>
             <numerusform>辺 %n 本</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="137"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="138"/>
         <source>&lt;b&gt;Vertex %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;頂点 %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="148"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="149"/>
         <source>&lt;b&gt;Edge %1&lt;/b&gt; from vertex %2 to vertex %3&lt;br&gt;</source>
         <translation>&lt;b&gt;辺 %1&lt;/b&gt; 頂点 %2 から頂点 %3 まで&lt;br&gt;</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="153"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="154"/>
         <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
         <translation>
             <numerusform>スプライン曲線 (S)、%1、制御点 %n 個。&lt;br&gt;</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="159"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="160"/>
         <source>A boundary curve of patch %1.</source>
         <translation>パッチ %1 の境界曲線。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="163"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="164"/>
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>母線 (R)、長さ %1 mm の線分。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="170"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="171"/>
         <source>Smooth between patches %1 and %2: the surface stays smooth across it.</source>
         <translation>パッチ %1 と %2 の間で滑らか: 曲面はこの母線をまたいで滑らかに保たれます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="172"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="173"/>
         <source>Sharp between patches %1 and %2: the surface may fold along it.</source>
         <translation>パッチ %1 と %2 の間で鋭角: 曲面はこの母線に沿って折れてもかまいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="182"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="183"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;パッチ %1&lt;/b&gt;: %2&lt;br&gt;パッチに沿った辺のラベル: %3&lt;br&gt;角 %n 個。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="218"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="219"/>
         <source>Cannot move</source>
         <translation>移動できません</translation>
     </message>
@@ -1931,12 +2346,12 @@
 <context>
     <name>devsurf::app::RefineCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="293"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="294"/>
         <source>Double the spline intervals of the selected curve and of all curves joined to it through strips; the shape stays the same. Select one spline edge or strip first.</source>
         <translation>選択した曲線と、ストリップを介してつながるすべての曲線のスプライン区間を 2 倍にします。形状は変わりません。先にスプライン辺またはストリップを 1 つ選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="303"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="304"/>
         <source>Cannot refine</source>
         <translation>細分化できません</translation>
     </message>
@@ -1944,17 +2359,17 @@
 <context>
     <name>devsurf::app::RelabelEdgeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="114"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="115"/>
         <source>Cannot relabel: %1</source>
         <translation>ラベルを変更できません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="118"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="119"/>
         <source>Turn the selected edges from rulings (R) into spline curves (S) or back. Select edges of one surface first.</source>
         <translation>選択した辺を母線 (R) からスプライン曲線 (S) に、またはその逆に変更します。先に 1 つの曲面の辺を選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="125"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="126"/>
         <source>Cannot relabel</source>
         <translation>ラベルを変更できません</translation>
     </message>
@@ -2114,27 +2529,27 @@
 <context>
     <name>devsurf::app::SmoothRulingsReaction</name>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="135"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="136"/>
         <source>Smooth: the solver keeps the surface smooth across the selected rulings (both patches share the tangent plane).</source>
         <translation>滑らか: ソルバーは選択した母線をまたいで曲面を滑らかに保ちます (両方のパッチが接平面を共有します)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="137"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="138"/>
         <source>Sharp: the surface may fold along the selected rulings.</source>
         <translation>鋭角: 曲面は選択した母線に沿って折れてもかまいません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="139"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="140"/>
         <source>Select rulings between two patches of one surface first.</source>
         <translation>先に 1 つの曲面の 2 つのパッチの間の母線を選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="177"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="178"/>
         <source>&amp;Smooth Rulings</source>
         <translation>滑らかな母線(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/crease_reactions.cpp" line="180"/>
+        <location filename="../app/gui/reactions/crease_reactions.cpp" line="181"/>
         <source>S&amp;harp Rulings</source>
         <translation>鋭角の母線(&amp;H)</translation>
     </message>
@@ -2142,267 +2557,272 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="89"/>
+        <location filename="../app/gui/solve_controller.cpp" line="91"/>
         <source>There is nothing to solve.</source>
         <translation>ソルブする対象がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="113"/>
+        <location filename="../app/gui/solve_controller.cpp" line="115"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: ソルブするものがありません。何も変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="149"/>
+        <location filename="../app/gui/solve_controller.cpp" line="151"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 を取り消しました。何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="150"/>
+        <location filename="../app/gui/solve_controller.cpp" line="152"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 を取り消しました: %2。何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="152"/>
+        <location filename="../app/gui/solve_controller.cpp" line="154"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>ソルブを中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="153"/>
+        <location filename="../app/gui/solve_controller.cpp" line="155"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>ソルブを中止しました: %1。デザインは変更されていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="159"/>
+        <location filename="../app/gui/solve_controller.cpp" line="161"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>形状を確認してください: %n 個のパッチが自身の上に折り返されています (%1)。元に戻すか、固定や移動の仕方を変えてください。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="166"/>
+        <location filename="../app/gui/solve_controller.cpp" line="168"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>形状を確認してください: 展開図が %n 個のパッチで自身と重なっています (%1)。元に戻すか、固定や移動の仕方を変えてください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="175"/>
+        <location filename="../app/gui/solve_controller.cpp" line="177"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 に失敗しました: %2 何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="199"/>
+        <location filename="../app/gui/solve_controller.cpp" line="201"/>
         <source>the design changed</source>
         <translation>デザインが変更されました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="206"/>
+        <location filename="../app/gui/solve_controller.cpp" line="208"/>
         <source>it stopped before a degenerate shape</source>
         <translation>退化した形の手前で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="209"/>
+        <location filename="../app/gui/solve_controller.cpp" line="211"/>
         <source>no convergence, residual %1</source>
         <translation>収束せず、残差 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="212"/>
+        <location filename="../app/gui/solve_controller.cpp" line="214"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>%n 箇所で折り返し</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="215"/>
+        <location filename="../app/gui/solve_controller.cpp" line="217"/>
         <source>a development overlapping itself</source>
         <translation>展開図が自身と重なる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="218"/>
+        <location filename="../app/gui/solve_controller.cpp" line="220"/>
         <source>collapsed strips</source>
         <translation>帯がつぶれる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="221"/>
+        <location filename="../app/gui/solve_controller.cpp" line="223"/>
         <source>a shape too degenerate to measure</source>
         <translation>測定できないほど退化した形</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="245"/>
+        <location filename="../app/gui/solve_controller.cpp" line="247"/>
         <source>Surface %1</source>
         <translation>曲面 %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="250"/>
+        <location filename="../app/gui/solve_controller.cpp" line="252"/>
         <source>The solve was cancelled.</source>
         <translation>ソルブを中止しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="252"/>
+        <location filename="../app/gui/solve_controller.cpp" line="254"/>
+        <source>%1 cannot be solved: %2</source>
+        <translation>%1 は解けません: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="256"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 は解けません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="256"/>
+        <location filename="../app/gui/solve_controller.cpp" line="260"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>頂点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="257"/>
+        <location filename="../app/gui/solve_controller.cpp" line="261"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>辺 %2 の制御点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="263"/>
+        <location filename="../app/gui/solve_controller.cpp" line="267"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 を解けませんでした: 連立一次方程式を分解できませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="265"/>
+        <location filename="../app/gui/solve_controller.cpp" line="269"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 を解けませんでした: 反復で有限でない値が生じました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="269"/>
+        <location filename="../app/gui/solve_controller.cpp" line="273"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 を解けませんでした: ソルバーが有限でない値を出しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="275"/>
+        <location filename="../app/gui/solve_controller.cpp" line="279"/>
         <source>(Solver: %1)</source>
         <translation>(ソルバー: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="290"/>
+        <location filename="../app/gui/solve_controller.cpp" line="294"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="294"/>
+        <location filename="../app/gui/solve_controller.cpp" line="298"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="308"/>
+        <location filename="../app/gui/solve_controller.cpp" line="312"/>
         <source>converged</source>
         <translation>収束</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="312"/>
+        <location filename="../app/gui/solve_controller.cpp" line="316"/>
         <source>tolerance reached</source>
         <translation>許容値に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="312"/>
+        <location filename="../app/gui/solve_controller.cpp" line="316"/>
         <source>iteration limit reached</source>
         <translation>反復回数の上限に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="319"/>
+        <location filename="../app/gui/solve_controller.cpp" line="323"/>
         <source>failed</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="327"/>
+        <location filename="../app/gui/solve_controller.cpp" line="331"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>。ソルブで可展性が悪化したため元のままにしました (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="333"/>
+        <location filename="../app/gui/solve_controller.cpp" line="337"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; 長さを保てなかったため (%1)、シートの伸びを許してドラッグをやり直しました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="349"/>
+        <location filename="../app/gui/solve_controller.cpp" line="353"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n 個のパッチが自身の上に折り返され、曲面が自己重複しています: %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="364"/>
+        <location filename="../app/gui/solve_controller.cpp" line="368"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; 展開図が %n 個のパッチで自身と重なっており (%1)、1 枚のシートから切り出せません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="370"/>
+        <location filename="../app/gui/solve_controller.cpp" line="374"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="375"/>
+        <location filename="../app/gui/solve_controller.cpp" line="379"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="379"/>
+        <location filename="../app/gui/solve_controller.cpp" line="383"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="388"/>
+        <location filename="../app/gui/solve_controller.cpp" line="392"/>
         <source>Solve</source>
         <translation>ソルブ</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="437"/>
+        <location filename="../app/gui/solve_controller.cpp" line="441"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>ソルブはデザインを元のままにしました。ソルブで可展性が悪化したためです (最大の可展性残差 %1 → %2)。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="460"/>
+        <location filename="../app/gui/solve_controller.cpp" line="464"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n 個のサーフェスを元のままにしました。ソルブで可展性が悪化したためです。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="472"/>
+        <location filename="../app/gui/solve_controller.cpp" line="476"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 を破棄しました: ソルブ中にデザインが変更されました。何も動いていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="490"/>
+        <location filename="../app/gui/solve_controller.cpp" line="494"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1、可展を維持: %n 回反復、最大の制約残差 %2。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="176"/>
-        <location filename="../app/gui/solve_controller.cpp" line="429"/>
+        <location filename="../app/gui/solve_controller.cpp" line="178"/>
+        <location filename="../app/gui/solve_controller.cpp" line="433"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>ソルブに失敗しました: %1 デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="228"/>
+        <location filename="../app/gui/solve_controller.cpp" line="230"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2 と %3 を結ぶ直線上にあり、この 2 点の距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="235"/>
+        <location filename="../app/gui/solve_controller.cpp" line="237"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2、%3、%4 の三角形の内側にあり、これらの距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="315"/>
+        <location filename="../app/gui/solve_controller.cpp" line="319"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>母線、曲線またはパッチがつぶれる前の最後の有効な状態で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="323"/>
+        <location filename="../app/gui/solve_controller.cpp" line="327"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (残差が最小の反復 %1 で終了)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="407"/>
+        <location filename="../app/gui/solve_controller.cpp" line="411"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>ソルブ中にデザインが変更されたため、結果を破棄しました。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="456"/>
+        <location filename="../app/gui/solve_controller.cpp" line="460"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>ソルブ完了: %n 回反復、制約残差の最大値 %1。</numerusform>
@@ -2487,35 +2907,35 @@
 <context>
     <name>devsurf::app::SplitAtRulingReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="212"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="213"/>
         <source>The curves of this strip have a single spline interval, so a ruling can only be added after refining them (the shape stays the same). Refine now?</source>
         <translation>このストリップの曲線はスプライン区間が 1 つしかないため、母線は細分化した後でなければ追加できません (形状は変わりません)。今すぐ細分化しますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="217"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="218"/>
         <source>Cannot refine</source>
         <translation>細分化できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="211"/>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="228"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="212"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="229"/>
         <source>Add Ruling</source>
         <translation>母線を追加</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="192"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="193"/>
         <source>Add a ruling across the selected strip and the strips that share its curves. Select one strip or cone patch first.</source>
         <translation>選択したストリップと同じ曲線を共有するストリップを横切る母線を追加します。先にストリップまたは錐面のパッチを 1 つ選択してください。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="229"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="230"/>
         <source>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoint(s) of the curves; refine the curves (Ctrl+Shift+R) for more.</source>
         <translation>
             <numerusform>新しい母線がパッチ %1 と同じ曲線を共有するストリップを横切る位置 (3D ビューで緑): ストリップに沿った割合 (%)。母線は曲線の %n 個の区切り点を通ることができます。さらに増やすには曲線を細分化してください (Ctrl+Shift+R)。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="260"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="261"/>
         <source>Cannot add the ruling</source>
         <translation>母線を追加できません</translation>
     </message>
@@ -2523,22 +2943,22 @@
 <context>
     <name>devsurf::app::SubdivideStripReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="137"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="138"/>
         <source>Add a crease across the selected strip and the row of strips it belongs to. Select one patch of type strip (SRSR) first.</source>
         <translation>選択したストリップとそれが属するストリップの列を横切る折り線を追加します。先に種類がストリップ (SRSR) のパッチを 1 つ選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="148"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="149"/>
         <source>Add Crease</source>
         <translation>折り線を追加</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="149"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="150"/>
         <source>Where the new crease crosses patch %1 and the strips of its row (green in the 3D view): per cent of the way from one curve of the strip to the other.</source>
         <translation>新しい折り線がパッチ %1 とその列のストリップを横切る位置 (3D ビューで緑): ストリップの一方の曲線からもう一方への割合 (%)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="178"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="179"/>
         <source>Cannot add the crease</source>
         <translation>折り線を追加できません</translation>
     </message>
@@ -2546,94 +2966,96 @@
 <context>
     <name>devsurf::app::Workspace</name>
     <message numerus="yes">
-        <location filename="../app/gui/workspace.cpp" line="82"/>
+        <location filename="../app/gui/workspace.cpp" line="86"/>
         <source>… and %n more problem(s).</source>
         <translation>
             <numerusform>… ほかに %n 件の問題があります。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="102"/>
+        <location filename="../app/gui/workspace.cpp" line="106"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="105"/>
+        <location filename="../app/gui/workspace.cpp" line="109"/>
         <source>Unsaved changes</source>
         <translation>未保存の変更</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="106"/>
+        <location filename="../app/gui/workspace.cpp" line="110"/>
         <source>%1 has unsaved changes. Do you want to save them?</source>
         <translation>%1 には未保存の変更があります。保存しますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="120"/>
+        <location filename="../app/gui/workspace.cpp" line="124"/>
         <source>Opened %1</source>
         <translation>%1 を開きました</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="127"/>
+        <location filename="../app/gui/workspace.cpp" line="131"/>
+        <location filename="../app/gui/workspace.cpp" line="134"/>
         <source>Cannot open file</source>
         <translation>ファイルを開けません</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="141"/>
+        <location filename="../app/gui/workspace.cpp" line="148"/>
         <source>Save Project As</source>
         <translation>プロジェクトに名前を付けて保存</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="144"/>
+        <location filename="../app/gui/workspace.cpp" line="151"/>
         <source>untitled.devsurf</source>
         <translation>無題.devsurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="146"/>
+        <location filename="../app/gui/workspace.cpp" line="153"/>
         <source>DevSurf projects (*.devsurf)</source>
         <translation>DevSurf プロジェクト (*.devsurf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="160"/>
+        <location filename="../app/gui/workspace.cpp" line="167"/>
         <source>Cannot save file</source>
         <translation>ファイルを保存できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="167"/>
+        <location filename="../app/gui/workspace.cpp" line="174"/>
         <source>Saved %1</source>
         <translation>%1 を保存しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="174"/>
+        <location filename="../app/gui/workspace.cpp" line="181"/>
         <source>New design from the example “%1”</source>
         <translation>例「%1」から新しいデザインを作成しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="176"/>
+        <location filename="../app/gui/workspace.cpp" line="183"/>
         <source>Cannot create the example</source>
         <translation>例を作成できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="187"/>
+        <location filename="../app/gui/workspace.cpp" line="194"/>
         <source>Recovered unsaved work</source>
         <translation>未保存の作業を復元しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="190"/>
+        <location filename="../app/gui/workspace.cpp" line="197"/>
+        <location filename="../app/gui/workspace.cpp" line="200"/>
         <source>Cannot recover</source>
         <translation>復元できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="203"/>
+        <location filename="../app/gui/workspace.cpp" line="213"/>
         <source>an untitled design</source>
         <translation>無題のデザイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="205"/>
+        <location filename="../app/gui/workspace.cpp" line="215"/>
         <source>Recover unsaved work</source>
         <translation>未保存の作業の復元</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="206"/>
+        <location filename="../app/gui/workspace.cpp" line="216"/>
         <source>DevSurf did not close properly last time. Recover the unsaved changes to %1 from %2?</source>
         <translation>前回 DevSurf は正常に終了しませんでした。%1 への未保存の変更を %2 から復元しますか?</translation>
     </message>
@@ -2651,7 +3073,7 @@
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="547"/>
+        <location filename="../views/scene_view.cpp" line="569"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>曲面 %1 は有効でないため表示されません。</translation>
     </message>
@@ -2773,25 +3195,6 @@
         <location filename="../app/gui/main.cpp" line="35"/>
         <source>Start with a built-in example.</source>
         <translation>組み込みの例で開始します。</translation>
-    </message>
-</context>
-<context>
-    <name>OutputProblem</name>
-    <message>
-        <source>“%1” is the project file of this design: exporting over it would destroy the design. Choose another file name.</source>
-        <translation>「%1」はこのデザインのプロジェクトファイルです。上書きしてエクスポートするとデザインが失われます。別のファイル名を選んでください。</translation>
-    </message>
-    <message>
-        <source>“%1” is a folder. Choose a file name.</source>
-        <translation>「%1」はフォルダーです。ファイル名を選んでください。</translation>
-    </message>
-    <message>
-        <source>“%1” is a device, pipe or socket, not a file. Choose a file name.</source>
-        <translation>「%1」はデバイス、パイプまたはソケットで、ファイルではありません。ファイル名を選んでください。</translation>
-    </message>
-    <message>
-        <source>There is not enough memory to open “%1”.</source>
-        <translation>「%1」を開くためのメモリが足りません。</translation>
     </message>
 </context>
 </TS>

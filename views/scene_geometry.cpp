@@ -223,13 +223,14 @@ DevelopmentScenes layOutDevelopments(const model::Project& project,
     std::vector<model::PatternPiece> pieces;
     std::vector<std::string> surfaceNames;
     for (std::size_t s = 0; s < developments.size(); ++s) {
-        surfaceNames.push_back("surface " + std::to_string(s + 1));
+        surfaceNames.push_back(s < project.surfaces.size() ? project.surfaces[s].name()
+                                                           : std::string());
         for (const model::PatternPiece& piece : developments[s]->pieces) {
             pieces.push_back(piece);
             pieces.back().surface = static_cast<int>(s);
         }
     }
-    std::vector<std::string> problems;
+    std::vector<model::PatternProblem> problems; // the development view marks, not words, them
     model::pattern::layoutPieces(pieces, options, surfaceNames, problems);
     std::set<std::size_t> overlapping;
     for (std::size_t p = 0; p < pieces.size(); ++p) {

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,12 @@ namespace devsurf::app {
 
 struct UsageError {
     std::string message;
+};
+
+// The input cannot do what was asked (no such vertex, the solver stopped): exit 1 with the
+// sentence, nothing written.
+struct InputError : std::runtime_error {
+    using std::runtime_error::runtime_error;
 };
 
 // One option of a subcommand: its name ("o" is -o, longer names are --name), the name of its

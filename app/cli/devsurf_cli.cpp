@@ -3,6 +3,8 @@
 // cannot be written), each failure explained in one sentence on stderr.
 
 #include "devsurf_cli.h"
+#include "example_text.h"
+#include "problem_text.h"
 
 #include "cli_arguments.h"
 #include "cli_output.h"
@@ -51,7 +53,7 @@ int commandExample(const SubcommandArguments& args) {
     try {
         project = model::makeExample(name, size);
     } catch (const model::ModelError& error) {
-        std::string message = error.what();
+        std::string message = ProblemText::of(error.problem()).toStdString();
         while (!message.empty() && message.back() == '.') {
             message.pop_back();
         }
@@ -111,7 +113,8 @@ int commandInfo(const SubcommandArguments& args) {
                   << "  Spline spaces:";
         for (const auto& [space, edges] : stats.splineSpaces) {
             std::cout << (space == stats.splineSpaces.begin()->first ? " " : "; ")
-                      << space.describe() << " (" << counted(edges, "S-edge", "S-edges") << ")";
+                      << ProblemText::splineSpace(space).toStdString() << " ("
+                      << counted(edges, "S-edge", "S-edges") << ")";
         }
         std::cout << "\n"
                   << "  Control points: " << stats.controlPoints << "\n"
@@ -134,8 +137,8 @@ int commandValidate(const SubcommandArguments& args) {
         return kExitOk;
     } catch (const io::FileError& error) {
         std::cerr << "devsurf-cli: " << error.what() << "\n";
-        for (const std::string& problem : error.details()) {
-            std::cerr << "  - " << problem << "\n";
+        for (const model::Problem& problem : error.problems()) {
+            std::cerr << "  - " << ProblemText::of(problem).toStdString() << "\n";
         }
         return kExitInput;
     }
@@ -166,7 +169,11 @@ int commandExamples(const SubcommandArguments& args) {
         throw UsageError{"'examples' takes no file"};
     }
     for (const model::ExampleInfo& info : model::builtInExamples()) {
-        std::cout << info.name << ": " << info.description << "; size " << info.minSize << "–"
+        std::string description = exampleDescription(info.name).toStdString();
+        if (!description.empty() && description.back() == '.') {
+            description.pop_back();
+        }
+        std::cout << info.name << ": " << description << "; size " << info.minSize << "–"
                   << info.maxSize << ", default " << info.defaultSize << "\n";
     }
     return kExitOk;
@@ -245,9 +252,15 @@ int runDevsurfCli(const std::vector<std::string>& args) {
         return kExitUsage;
     } catch (const io::FileError& error) {
         std::cerr << "devsurf-cli: " << error.what() << "\n";
+        for (const model::Problem& problem : error.problems()) {
+            std::cerr << "  - " << ProblemText::of(problem).toStdString() << "\n";
+        }
+        return kExitInput;
+    } catch (const InputError& error) {
+        std::cerr << "devsurf-cli: " << error.what() << "\n";
         return kExitInput;
     } catch (const model::ModelError& error) {
-        std::cerr << "devsurf-cli: " << error.what() << "\n";
+        std::cerr << "devsurf-cli: " << ProblemText::of(error.problem()).toStdString() << "\n";
         return kExitInput;
     } catch (const std::bad_alloc&) {
         std::cerr << "devsurf-cli: there is not enough memory for this design.\n";

@@ -74,7 +74,7 @@ int runDragCommand(const DragArguments& args) {
     const std::string& path = args.input;
     model::Project project = io::loadProjectFile(QString::fromStdString(path));
     if (project.surfaces.empty()) {
-        throw model::ModelError("'" + path + "' has no surface to drag.");
+        throw InputError("'" + path + "' has no surface to drag.");
     }
     const std::size_t index = surfaceIndex(args.surface, project, "drag");
     model::CompositeSurface& surface = project.surfaces[index];
@@ -91,9 +91,8 @@ int runDragCommand(const DragArguments& args) {
         }
     }
     if (!unknown.empty()) {
-        throw model::ModelError("surface '" + surface.name() + "' has no vertex " +
-                                idList(unknown) +
-                                " (list them with 'devsurf-cli info FILE --vertices').");
+        throw InputError("surface '" + surface.name() + "' has no vertex " + idList(unknown) +
+                         " (list them with 'devsurf-cli info FILE --vertices').");
     }
     std::vector<model::VertexId> pinnedDragged;
     for (model::VertexId id : dragged) {
@@ -102,8 +101,8 @@ int runDragCommand(const DragArguments& args) {
         }
     }
     if (!pinnedDragged.empty()) {
-        throw model::ModelError("vertex " + idList(pinnedDragged) + " of surface '" +
-                                surface.name() + "' is pinned and cannot be dragged.");
+        throw InputError("vertex " + idList(pinnedDragged) + " of surface '" + surface.name() +
+                         "' is pinned and cannot be dragged.");
     }
     for (model::VertexId id : pins) {
         surface.setPinned(id, true);
@@ -125,11 +124,11 @@ int runDragCommand(const DragArguments& args) {
             }
         }
     } catch (const solver::CreaseDragRefused& refused) {
-        throw model::ModelError("surface " + std::to_string(index + 1) + " of '" + path +
-                                "' cannot be dragged: " + describeCreaseRefusal(refused));
+        throw InputError("surface " + std::to_string(index + 1) + " of '" + path +
+                         "' cannot be dragged: " + describeCreaseRefusal(refused));
     } catch (const std::invalid_argument& error) {
-        throw model::ModelError("surface " + std::to_string(index + 1) + " of '" + path +
-                                "' cannot be dragged: " + error.what());
+        throw InputError("surface " + std::to_string(index + 1) + " of '" + path +
+                         "' cannot be dragged: " + error.what());
     }
     for (model::VertexId id : std::set<model::VertexId>(dragged.begin(), dragged.end())) {
         start[id] = surface.position(id);
@@ -212,13 +211,14 @@ int runDragCommand(const DragArguments& args) {
     auto run = [&](const char* what) {
         solver::JobOutcome outcome = job.run(request, nullptr, progress);
         if (!outcome.ok) {
-            throw model::ModelError(std::string("the solver stopped at ") + what + " (" +
-                                    describeFailure(outcome.failure) + "); nothing was written.");
+            throw InputError(std::string("the solver stopped at ") + what + " (" +
+                             describeFailure(outcome.failure) + "); nothing was written.");
         }
-        const solver::Summary& summary = outcome.assessments.at(index).summary;
+        const solver::SurfaceAssessment& assessment = outcome.assessments.at(index);
+        const solver::Summary& summary = assessment.summary;
         if (summary.status == solver::Status::StoppedBeforeDegenerate) {
             std::cout << "At " << label << " " << labelIndex + summary.iterationsCompleted + 1
-                      << ": stopped at the last valid state: " << summary.message << "\n";
+                      << ": stopped at the last valid state" << refusedText(assessment) << "\n";
         }
         return outcome;
     };

@@ -1,4 +1,5 @@
 #include "outcome_text.h"
+#include "problem_text.h"
 
 #include "solver/quality/shape_change.h"
 
@@ -132,6 +133,14 @@ std::string describeQuality(const solver::QualityMeasures& q) {
     return buffer;
 }
 
+std::string refusedText(const solver::SurfaceAssessment& assessment) {
+    if (!assessment.refusedIterate) {
+        return std::string();
+    }
+    return ", before the next iteration broke it: " +
+           ProblemText::of(*assessment.refusedIterate).toStdString();
+}
+
 std::string describeFailure(const solver::JobFailure& failure) {
     const std::string surface = "surface " + std::to_string(failure.surface + 1);
     std::string text;
@@ -141,6 +150,13 @@ std::string describeFailure(const solver::JobFailure& failure) {
         return "cancelled";
     case solver::JobError::CannotSolve:
         text = surface + " cannot be solved";
+        if (failure.problem) {
+            std::string why = ProblemText::of(*failure.problem).toStdString();
+            if (!why.empty() && why.back() == '.') {
+                why.pop_back();
+            }
+            text += ": " + why;
+        }
         break;
     case solver::JobError::TargetNotFinite:
         text = failure.vertex != model::kInvalidId

@@ -31,5 +31,8 @@ std::string describeCreaseRefusal(const solver::CreaseDragRefused& refused);
 std::string describeQuality(const solver::QualityMeasures& quality);
 // Why a job failed: "surface 1 could not be solved: FactorizationFailed (…)".
 std::string describeFailure(const solver::JobFailure& failure);
+// What the iterate a solve refused would have broken: ", before the next iteration broke it:
+// Patch 3 has zero area." or "" when nothing was refused.
+std::string refusedText(const solver::SurfaceAssessment& assessment);
 
 } // namespace devsurf::app

@@ -1,4 +1,5 @@
 #include "pattern_commands.h"
+#include "problem_text.h"
 
 #include "cli_output.h"
 
@@ -124,7 +125,8 @@ model::CuttingPattern patternOf(const std::string& file, const Settings& setting
     refuseUnboundedSampling(project, file, settings.pattern.tolerance);
     model::CuttingPattern pattern = model::buildCuttingPattern(project, settings.pattern);
     if (pattern.pieces.empty()) {
-        std::string why = pattern.problems.empty() ? "it has no surface" : pattern.problems.front();
+        std::string why =
+            pattern.problems.empty() ? "it has no surface" : patternProblemTexts(pattern).front();
         if (!why.empty() && why.back() == '.') {
             why.pop_back();
         }
@@ -173,7 +175,8 @@ int runExportPatternCommand(const SubcommandArguments& args) {
         throw UsageError{"a PDF is written to a file, not to standard output ('-')"};
     }
     const model::CuttingPattern pattern = patternOf(file, settings);
-    for (const std::string& problem : pattern.problems) {
+    settings.write.problemTexts = patternProblemTexts(pattern);
+    for (const std::string& problem : settings.write.problemTexts) {
         std::cerr << "devsurf-cli: warning: " << problem << "\n";
     }
     if (settings.write.splines && settings.write.r12) {
@@ -198,7 +201,8 @@ int runReportCommand(const SubcommandArguments& args) {
     const std::string file = args.onePositional("one project file");
     const Settings settings = settingsOf(args);
     const model::CuttingPattern pattern = patternOf(file, settings);
-    const io::FabricationReport report = io::fabricationReport(pattern);
+    const io::FabricationReport report =
+        io::fabricationReport(pattern, patternProblemTexts(pattern));
     if (args.isSet("json")) {
         std::cout << io::fabricationReportJson(report).toStdString();
     } else {

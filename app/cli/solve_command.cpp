@@ -66,8 +66,8 @@ int runSolveCommand(const SolveArguments& args) {
         model::CompositeSurface& surface = project.surfaces[s];
         for (model::VertexId v : fixed) {
             if (!surface.hasVertex(v)) {
-                throw model::ModelError("'" + path + "' has no vertex " + std::to_string(v) +
-                                        " in surface " + std::to_string(s + 1) + ".");
+                throw InputError("'" + path + "' has no vertex " + std::to_string(v) +
+                                 " in surface " + std::to_string(s + 1) + ".");
             }
         }
         if (perturb) {
@@ -99,8 +99,8 @@ int runSolveCommand(const SolveArguments& args) {
     solver::SolveJob job;
     const solver::JobOutcome outcome = job.run(request, nullptr, progress);
     if (!outcome.ok) {
-        throw model::ModelError("the solver stopped (" + describeFailure(outcome.failure) +
-                                "); nothing was written.");
+        throw InputError("the solver stopped (" + describeFailure(outcome.failure) +
+                         "); nothing was written.");
     }
     for (std::size_t s = 0; s < outcome.surfaces.size(); ++s) {
         const solver::SurfaceAssessment& a = outcome.assessments[s];
@@ -108,7 +108,7 @@ int runSolveCommand(const SolveArguments& args) {
         if (summary.status == solver::Status::StoppedBeforeDegenerate) {
             // The session refused a degenerate iterate and stayed at the last valid one.
             std::cout << "After iteration " << summary.iterationsCompleted
-                      << ": stopped at the last valid state: " << summary.message << "\n";
+                      << ": stopped at the last valid state" << refusedText(a) << "\n";
         }
         if (a.bestIteration > 0) {
             std::cout << "Ended on iteration " << a.bestIteration

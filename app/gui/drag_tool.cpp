@@ -1,4 +1,6 @@
 #include "drag_tool.h"
+#include "edit_refusal.h"
+#include "problem_text.h"
 
 #include "model/bspline_curve.h"
 #include "model/document/commands/apply_surface_command.h"
@@ -518,8 +520,8 @@ void DragTool::onResult(const solver::SolveResult& result) {
         // A move: shown, outside the undo history.
         const auto problems = shape.validate();
         if (!problems.empty()) {
-            abort(stoppedText(tr("The new shape cannot be applied: %1")
-                                  .arg(QString::fromStdString(problems.front()))));
+            abort(stoppedText(
+                tr("The new shape cannot be applied: %1").arg(ProblemText::of(problems.front()))));
             return;
         }
         doc->previewSurface(m_surface, shape);
@@ -536,8 +538,8 @@ void DragTool::onResult(const solver::SolveResult& result) {
         return;
     }
     if (const auto problems = shape.validate(); !problems.empty()) {
-        abort(stoppedText(tr("The new shape cannot be applied: %1")
-                              .arg(QString::fromStdString(problems.front()))));
+        abort(stoppedText(
+            tr("The new shape cannot be applied: %1").arg(ProblemText::of(problems.front()))));
         return;
     }
     doc->previewSurface(m_surface, shape);
@@ -545,7 +547,7 @@ void DragTool::onResult(const solver::SolveResult& result) {
     document::CommandOrError edit =
         document::ApplySurfaceCommand::createShown(*doc, m_surface, pressSurface(), undoText());
     if (edit.isRefused()) {
-        abort(stoppedText(edit.error()));
+        abort(stoppedText(refusalText(edit)));
         return;
     }
     doc->undoStack()->push(edit.takeCommand().release());

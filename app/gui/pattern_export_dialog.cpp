@@ -1,4 +1,5 @@
 #include "pattern_export_dialog.h"
+#include "problem_text.h"
 
 #include "output_problem_text.h"
 
@@ -285,7 +286,8 @@ void PatternExportDialog::rebuildPattern() {
 }
 
 void PatternExportDialog::showReport() {
-    const io::FabricationReport report = io::fabricationReport(m_pattern);
+    const io::FabricationReport report =
+        io::fabricationReport(m_pattern, patternProblemTexts(m_pattern));
     m_report->setRowCount(int(report.pieces.size()));
     for (int row = 0; row < int(report.pieces.size()); ++row) {
         const io::PieceReport& piece = report.pieces[std::size_t(row)];
@@ -323,7 +325,8 @@ void PatternExportDialog::showReport() {
 
 void PatternExportDialog::chooseFileAndExport() {
     rebuildPattern();
-    const io::FabricationReport report = io::fabricationReport(m_pattern);
+    const io::FabricationReport report =
+        io::fabricationReport(m_pattern, patternProblemTexts(m_pattern));
     if (report.hasOverlaps() || !report.problems.empty()) {
         const QString question =
             report.hasOverlaps()
@@ -358,11 +361,12 @@ bool PatternExportDialog::exportTo(const QString& path) {
         QMessageBox::critical(this, tr("Export failed"), outputProblemText(problem, path));
         return false;
     }
-    const PatternSettings s = settings();
+    PatternSettings s = settings();
     s.save();
     // The progress dialog runs the event loop: the pattern written stays this one.
     rebuildPattern();
     const model::CuttingPattern pattern = m_pattern;
+    s.write.problemTexts = patternProblemTexts(pattern);
     QProgressDialog progress(tr("Writing the cutting pattern…"), tr("Cancel"), 0, 1, this);
     progress.setWindowModality(Qt::WindowModal);
     progress.setMinimumDuration(400);

@@ -1,4 +1,6 @@
 #include "solve_controller.h"
+#include "edit_refusal.h"
+#include "problem_text.h"
 
 #include "model/document/commands/apply_surface_command.h"
 #include "model/document/document.h"
@@ -249,7 +251,9 @@ QString SolveController::failureText(const solver::JobFailure& failure) {
     case solver::JobError::Cancelled:
         return tr("The solve was cancelled.");
     case solver::JobError::CannotSolve:
-        text = tr("%1 cannot be solved.").arg(surface);
+        text = failure.problem
+                   ? tr("%1 cannot be solved: %2").arg(surface, ProblemText::of(*failure.problem))
+                   : tr("%1 cannot be solved.").arg(surface);
         break;
     case solver::JobError::TargetNotFinite:
         text = failure.vertex != model::kInvalidId
@@ -426,7 +430,8 @@ void SolveController::onResult(const solver::SolveResult& result) {
         document::CommandOrError edit = document::ApplySurfaceCommand::create(
             *doc, static_cast<int>(s), outcome.surfaces[s], title);
         if (edit.isRefused()) {
-            stop(Ending::Failed, tr("Solve failed: %1 The design is unchanged.").arg(edit.error()));
+            stop(Ending::Failed,
+                 tr("Solve failed: %1 The design is unchanged.").arg(refusalText(edit)));
             return;
         }
         commands.push_back(edit.takeCommand());
@@ -479,7 +484,7 @@ void SolveController::applyEdit(const solver::SolveResult& result, const SolveRe
     document::CommandOrError edit =
         document::ApplySurfaceCommand::create(*doc, m_editSurface, solved, m_editTitle);
     if (edit.isRefused()) {
-        stop(Ending::Failed, failedSentence(edit.error()));
+        stop(Ending::Failed, failedSentence(refusalText(edit)));
         return;
     }
     m_applying = true;

@@ -1,4 +1,6 @@
 #include "workspace.h"
+#include "edit_refusal.h"
+#include "problem_text.h"
 
 #include "autosaver.h"
 #include "io/file_error.h"
@@ -57,7 +59,7 @@ Workspace::Workspace(QWidget* window)
 }
 
 bool Workspace::apply(document::CommandOrError edit, const QString& failureTitle) {
-    const QString refusal = document::pushOrExplain(*m_document, std::move(edit));
+    const QString refusal = pushOrExplain(*m_document, std::move(edit));
     if (!refusal.isEmpty()) {
         showError(failureTitle, refusal);
         return false;
@@ -123,8 +125,8 @@ bool Workspace::open(const QString& path) {
         return true;
     } catch (const io::FileError& error) {
         QStringList details;
-        for (const std::string& problem : error.details()) {
-            details << QString::fromStdString(problem);
+        for (const model::Problem& problem : error.problems()) {
+            details << ProblemText::of(problem);
         }
         showError(tr("Cannot open file"), QString::fromStdString(error.what()), details);
         return false;
@@ -178,7 +180,7 @@ void Workspace::newFromExample(const QString& name, int size) {
         m_document->resetProject(model::makeExample(name.toStdString(), size));
         emit statusMessage(tr("New design from the example “%1”").arg(name));
     } catch (const model::ModelError& error) {
-        showError(tr("Cannot create the example"), QString::fromStdString(error.what()));
+        showError(tr("Cannot create the example"), ProblemText::of(error.problem()));
     }
 }
 

@@ -15,11 +15,12 @@ bool FabricationReport::hasOverlaps() const {
     });
 }
 
-FabricationReport fabricationReport(const model::CuttingPattern& pattern) {
+FabricationReport fabricationReport(const model::CuttingPattern& pattern,
+                                    std::vector<std::string> problemTexts) {
     FabricationReport report;
     report.sheetSize = pattern.sheetSize;
     report.sheetCount = pattern.sheetCount;
-    report.problems = pattern.problems;
+    report.problems = std::move(problemTexts);
     const auto count = static_cast<int>(pattern.pieces.size());
     for (const model::PatternPiece& piece : pattern.pieces) {
         PieceReport row;

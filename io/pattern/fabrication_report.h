@@ -35,7 +35,9 @@ struct FabricationReport {
     bool hasOverlaps() const;
 };
 
-FabricationReport fabricationReport(const model::CuttingPattern& pattern);
+// `problemTexts`: the pattern's problems as the front end words them (app::patternProblemTexts).
+FabricationReport fabricationReport(const model::CuttingPattern& pattern,
+                                    std::vector<std::string> problemTexts);
 
 // A plain-text table, one line per piece, then the problems.
 std::string fabricationReportText(const FabricationReport& report);

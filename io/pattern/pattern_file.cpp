@@ -91,7 +91,7 @@ bool savePatternFile(const model::CuttingPattern& pattern, PatternFormat format,
             cancelled = progress && !progress(done, total);
             return !cancelled;
         };
-        if (!paintPatternPages(writer, pattern, plan, watch)) {
+        if (!paintPatternPages(writer, pattern, plan, options.problemTexts, watch)) {
             file.cancelWriting();
             if (cancelled) {
                 return false;

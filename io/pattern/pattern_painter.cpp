@@ -469,14 +469,15 @@ int patternPageCount(const model::CuttingPattern& pattern, const PagePlan& plan)
 }
 
 bool paintPatternPages(QPagedPaintDevice& device, const model::CuttingPattern& pattern,
-                       const PagePlan& plan, const PatternProgress& progress) {
+                       const PagePlan& plan, const std::vector<std::string>& problemTexts,
+                       const PatternProgress& progress) {
     QPainter painter;
     if (!painter.begin(&device)) {
         return false;
     }
     painter.setRenderHint(QPainter::Antialiasing);
     PagePainter pages(painter, device.logicalDpiX());
-    const FabricationReport report = fabricationReport(pattern);
+    const FabricationReport report = fabricationReport(pattern, problemTexts);
     const int reportPages = reportPageCount(pattern, plan);
     const int total = patternPageCount(pattern, plan);
     int page = 0;

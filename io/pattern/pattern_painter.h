@@ -20,10 +20,12 @@ void preparePagedDevice(QPagedPaintDevice& device, const QPageSize& pageSize, co
 // Pages painted for a pattern: report pages + one overview per sheet + tiles.
 int patternPageCount(const model::CuttingPattern& pattern, const PagePlan& plan);
 
-// Paints every page. Returns false if the painter could not start on the device or the
-// progress callback cancelled.
+// Paints every page; the report page lists `problemTexts` (the pattern's problems as the front
+// end words them). Returns false if the painter could not start on the device or the progress
+// callback cancelled.
 bool paintPatternPages(QPagedPaintDevice& device, const model::CuttingPattern& pattern,
-                       const PagePlan& plan, const PatternProgress& progress = {});
+                       const PagePlan& plan, const std::vector<std::string>& problemTexts,
+                       const PatternProgress& progress = {});
 
 QPageSize pageSizeOf(Paper paper);
 

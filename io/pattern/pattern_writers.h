@@ -14,6 +14,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace devsurf::io {
 
@@ -37,6 +38,8 @@ struct PatternWriteOptions {
     bool r12 = false;        // DXF R12 instead of R2000
     double margin = 10.0;    // SVG: space around the drawing, mm
     Paper paper = Paper::A4; // PDF
+    // PDF report page: the pattern's problems as the front end words them.
+    std::vector<std::string> problemTexts;
 };
 
 // Called with (done, total) while pages are drawn; returning false cancels.

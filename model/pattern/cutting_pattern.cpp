@@ -1,5 +1,6 @@
 #include "cutting_pattern.h"
 
+#include "model/model_error.h"
 #include "model/project.h"
 #include "pattern_geometry.h"
 #include "pattern_layout.h"
@@ -51,22 +52,6 @@ std::pair<Vec2, Vec2> CuttingPattern::bounds(int sheet) const {
     }
     return {lo, hi};
 }
-
-namespace {
-
-std::string facesText(const std::vector<FaceId>& faces) {
-    std::string text;
-    const std::size_t shown = std::min<std::size_t>(faces.size(), 8);
-    for (std::size_t i = 0; i < shown; ++i) {
-        text += (i == 0 ? "" : ", ") + std::to_string(faces[i]);
-    }
-    if (shown < faces.size()) {
-        text += ", …";
-    }
-    return text;
-}
-
-} // namespace
 
 std::vector<PatternPiece> developSurfacePieces(const CompositeSurface& surface, int surfaceIndex,
                                                const PatternOptions& options, int& nameIndex,
@@ -128,8 +113,9 @@ CuttingPattern buildCuttingPattern(const Project& project, const PatternOptions&
     if (options.layout &&
         !(options.sheetSize.x > 0.0 && options.sheetSize.y > 0.0 &&
           std::isfinite(options.sheetSize.x) && std::isfinite(options.sheetSize.y))) {
-        pattern.problems.push_back(
-            "The sheet size must be positive; the pieces are laid out side by side.");
+        PatternProblem problem;
+        problem.code = PatternProblemCode::SheetSizeInvalid;
+        pattern.problems.push_back(std::move(problem));
         options.layout = false;
     }
 
@@ -137,13 +123,16 @@ CuttingPattern buildCuttingPattern(const Project& project, const PatternOptions&
     int nameIndex = 0;
     for (std::size_t s = 0; s < project.surfaces.size(); ++s) {
         const CompositeSurface& surface = project.surfaces[s];
-        const std::string name = "surface " + std::to_string(s + 1) +
-                                 (surface.name().empty() ? "" : " \"" + surface.name() + "\"");
-        surfaceNames.push_back(name);
-        const std::vector<std::string> invalid = surface.validate();
+        surfaceNames.push_back(surface.name());
+        PatternProblem about;
+        about.surface = static_cast<int>(s);
+        about.surfaceName = surface.name();
+        const std::vector<Problem> invalid = surface.validate();
         if (!invalid.empty()) {
-            pattern.problems.push_back("The " + name +
-                                       " is not valid and has no pattern: " + invalid.front());
+            PatternProblem problem = about;
+            problem.code = PatternProblemCode::SurfaceInvalid;
+            problem.cause = invalid.front();
+            pattern.problems.push_back(std::move(problem));
             continue;
         }
         std::vector<PatternPiece> pieces;
@@ -151,16 +140,26 @@ CuttingPattern buildCuttingPattern(const Project& project, const PatternOptions&
         try {
             pieces = developSurfacePieces(surface, static_cast<int>(s), options, nameIndex,
                                           &selfOverlapFaces);
+        } catch (const ModelError& error) {
+            PatternProblem problem = about;
+            problem.code = PatternProblemCode::NotDeveloped;
+            problem.cause = error.problem();
+            pattern.problems.push_back(std::move(problem));
         } catch (const std::exception& error) {
-            pattern.problems.push_back("The " + name + " could not be developed: " + error.what());
+            PatternProblem problem = about;
+            problem.code = PatternProblemCode::NotDeveloped;
+            problem.detail = error.what();
+            pattern.problems.push_back(std::move(problem));
         }
         for (std::size_t p = 0; p < pieces.size(); ++p) {
             const int index = static_cast<int>(pattern.pieces.size());
             if (pieces[p].selfOverlapping) {
                 pattern.overlaps.push_back({index, index, selfOverlapFaces[p]});
-                pattern.problems.push_back(
-                    "Piece " + pieces[p].name + " (" + name + ") overlaps itself at patches " +
-                    facesText(selfOverlapFaces[p]) + " and cannot be cut from one sheet.");
+                PatternProblem problem = about;
+                problem.code = PatternProblemCode::PieceOverlapsItself;
+                problem.piece = index;
+                problem.faces = selfOverlapFaces[p];
+                pattern.problems.push_back(std::move(problem));
             }
             pattern.pieces.push_back(std::move(pieces[p]));
         }
@@ -171,10 +170,14 @@ CuttingPattern buildCuttingPattern(const Project& project, const PatternOptions&
 
     for (PatternOverlap& overlap : pattern::overlapsBetweenPieces(pattern.pieces)) {
         const PatternPiece& a = pattern.pieces[static_cast<std::size_t>(overlap.first)];
-        const PatternPiece& b = pattern.pieces[static_cast<std::size_t>(overlap.second)];
-        pattern.problems.push_back("Pieces " + a.name + " (patches " + facesText(a.faces) +
-                                   ") and " + b.name + " (patches " + facesText(b.faces) +
-                                   ") overlap on sheet " + std::to_string(a.sheet + 1) + ".");
+        PatternProblem problem;
+        problem.code = PatternProblemCode::PiecesOverlap;
+        problem.surface = a.surface;
+        problem.piece = overlap.first;
+        problem.otherPiece = overlap.second;
+        problem.sheet = a.sheet;
+        problem.faces = overlap.faces;
+        pattern.problems.push_back(std::move(problem));
         pattern.overlaps.push_back(std::move(overlap));
     }
     return pattern;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "model/problem.h"
+
 // The cutting pattern of a project: every surface developed into flat pieces, with cut lines,
 // folds, scoring lines, seam allowances and labels on named layers, laid out on sheets. This is
 // the one place that computes it; the development view draws it and every writer in io/ (DXF,
@@ -100,6 +102,31 @@ struct PatternOverlap {
     std::vector<FaceId> faces; // patches involved
 };
 
+// What a designer must know before cutting, as a code with data; app/ words it.
+enum class PatternProblemCode {
+    SheetSizeInvalid,    // the sheet size is not positive: pieces are laid out side by side
+    SurfaceInvalid,      // surface has no pattern: cause says why
+    NotDeveloped,        // surface could not be developed: cause (or detail) says why
+    PieceOverlapsItself, // piece (of surface) overlaps itself at the patches `faces`
+    PiecesOverlap,       // piece and otherPiece overlap on sheet (patches of each: the pieces')
+    PieceTooLarge,       // piece of `size` does not fit on the sheet of sheetSize with gap
+};
+
+struct PatternProblem {
+    PatternProblemCode code = PatternProblemCode::SheetSizeInvalid;
+    int surface = -1; // index in Project::surfaces
+    std::string surfaceName;
+    int piece = -1; // indices in CuttingPattern::pieces
+    int otherPiece = -1;
+    int sheet = -1;
+    std::vector<FaceId> faces;
+    Vec2 size;
+    Vec2 sheetSize;
+    double gap = 0.0;
+    std::optional<Problem> cause;
+    std::string detail; // NotDeveloped without a model problem: technical, for a bug report
+};
+
 struct PatternOptions {
     double tolerance = 0.01;      // mm: chord error of sampled curves
     bool rulings = false;         // write rulings on the SCORE layer
@@ -123,9 +150,9 @@ struct CuttingPattern {
     Vec2 sheetSize;     // as in the options
     int sheetCount = 0; // sheets used by the layout
     std::vector<PatternOverlap> overlaps;
-    // One sentence per problem a designer must know before cutting (a piece larger than the
-    // sheet, an overlap, a surface that could not be developed).
-    std::vector<std::string> problems;
+    // What a designer must know before cutting (a piece larger than the sheet, an overlap, a
+    // surface that could not be developed).
+    std::vector<PatternProblem> problems;
 
     // Bounding box of everything on one sheet (sheet < 0: of all pieces): {min, max}.
     std::pair<Vec2, Vec2> bounds(int sheet = -1) const;

@@ -113,16 +113,11 @@ double materialSavingAngle(const PatternPiece& piece) {
     return best < 0.99 * current ? bestAngle : 0.0;
 }
 
-std::string millimetres(double value) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.1f", value);
-    return buffer;
-}
-
 } // namespace
 
 int layoutPieces(std::vector<PatternPiece>& pieces, const PatternOptions& options,
-                 const std::vector<std::string>& surfaceNames, std::vector<std::string>& problems) {
+                 const std::vector<std::string>& surfaceNames,
+                 std::vector<PatternProblem>& problems) {
     const double gap = std::max(0.0, options.gap);
     if (!options.layout) {
         double x = 0.0;
@@ -174,11 +169,15 @@ int layoutPieces(std::vector<PatternPiece>& pieces, const PatternOptions& option
             const auto [lo, hi] = pieceBounds(piece);
             transformPiece(piece, Placement{0.0, Vec2() - lo});
             piece.size = hi - lo;
-            const std::string& surface = surfaceNames[static_cast<std::size_t>(piece.surface)];
-            problems.push_back(
-                "Piece " + piece.name + " (" + surface + ") measures " + millimetres(size.x) +
-                " × " + millimetres(size.y) + " mm and does not fit on the " + millimetres(width) +
-                " × " + millimetres(height) + " mm sheet with a " + millimetres(gap) + " mm gap.");
+            PatternProblem problem;
+            problem.code = PatternProblemCode::PieceTooLarge;
+            problem.surface = piece.surface;
+            problem.surfaceName = surfaceNames[static_cast<std::size_t>(piece.surface)];
+            problem.piece = static_cast<int>(index);
+            problem.size = size;
+            problem.sheetSize = Vec2(width, height);
+            problem.gap = gap;
+            problems.push_back(std::move(problem));
             continue;
         }
         Choice best;

@@ -14,10 +14,11 @@ namespace devsurf::model::pattern {
 // heuristic "best short side fit" (Jylänki, "A Thousand Ways to Pack the Bin", 2010) on as
 // many sheets as needed, each rectangle trying both orientations, grown by options.gap so that
 // pieces keep that gap to each other and to the sheet's edge. A piece that does not fit on an
-// empty sheet gets sheet = -1 and a problem sentence; it is left at the origin.
+// empty sheet gets sheet = -1 and a PieceTooLarge problem; it is left at the origin.
 // Without options.layout the pieces lie side by side on one sheet (0), options.gap apart.
 // Returns the number of sheets used.
 int layoutPieces(std::vector<PatternPiece>& pieces, const PatternOptions& options,
-                 const std::vector<std::string>& surfaceNames, std::vector<std::string>& problems);
+                 const std::vector<std::string>& surfaceNames,
+                 std::vector<PatternProblem>& problems);
 
 } // namespace devsurf::model::pattern

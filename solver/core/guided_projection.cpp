@@ -157,7 +157,7 @@ struct GuidedProjection::Impl {
         stats.solveMs = elapsedMs(start);
         if (!solved) {
             summary.status = Status::FactorizationFailed;
-            summary.message = cholesky.error();
+            summary.detail = cholesky.error();
         }
         return solved;
     }
@@ -172,7 +172,7 @@ struct GuidedProjection::Impl {
                 equations.variableCount(), equations.columnStart(), equations.rowIndex(),
                 triangle == NormalEquations::Triangle::Lower, supernodal, permutation)) {
             summary.status = Status::FactorizationFailed;
-            summary.message = cholesky.error();
+            summary.detail = cholesky.error();
             return false;
         }
         return true;
@@ -273,7 +273,7 @@ struct GuidedProjection::Impl {
                                       equations.rowIndex(), options.factorization, permutation,
                                       supernodal)) {
             summary.status = Status::FactorizationFailed;
-            summary.message = cholesky.error();
+            summary.detail = cholesky.error();
             return false;
         }
         bool analysedAsChosen = false;
@@ -297,7 +297,7 @@ struct GuidedProjection::Impl {
         if (!storeAnalysis(options, std::move(originalColStart), std::move(originalRowIndex),
                            permutation, supernodal)) {
             summary.status = Status::FactorizationFailed;
-            summary.message = cholesky.error();
+            summary.detail = cholesky.error();
             return false;
         }
         return true;
@@ -317,14 +317,14 @@ struct GuidedProjection::Impl {
         start = Clock::now();
         if (!cholesky.analyzeGeneral(n, colStart, rowIndex, options.factorization)) {
             summary.status = Status::FactorizationFailed;
-            summary.message = cholesky.error();
+            summary.detail = cholesky.error();
             return false;
         }
         std::memcpy(cholesky.values(), upper.valuePtr(),
                     sizeof(double) * static_cast<std::size_t>(upper.nonZeros()));
         if (!cholesky.factorize()) {
             summary.status = Status::FactorizationFailed;
-            summary.message = cholesky.error();
+            summary.detail = cholesky.error();
             return false;
         }
         stats.factorizationMs = elapsedMs(start);
@@ -334,7 +334,7 @@ struct GuidedProjection::Impl {
         stats.solveMs = elapsedMs(start);
         if (!solved) {
             summary.status = Status::FactorizationFailed;
-            summary.message = cholesky.error();
+            summary.detail = cholesky.error();
             return false;
         }
         return true;
@@ -349,7 +349,7 @@ struct GuidedProjection::Impl {
         factorReusable = false;
         if (!cholesky.factorize()) {
             summary.status = Status::FactorizationFailed;
-            summary.message = cholesky.error();
+            summary.detail = cholesky.error();
             return false;
         }
         stats.factorizationMs = elapsedMs(start);
@@ -390,8 +390,8 @@ Summary GuidedProjection::solve(const Problem& problem, std::vector<double>& x,
     if (x.size() != static_cast<std::size_t>(problem.variableCount())) {
         Summary summary;
         summary.status = Status::InvalidProblem;
-        summary.message = "state has " + std::to_string(x.size()) + " values for " +
-                          std::to_string(problem.variableCount()) + " variables";
+        summary.detail = "state has " + std::to_string(x.size()) + " values for " +
+                         std::to_string(problem.variableCount()) + " variables";
         return summary;
     }
     return solve(problem, x.data(), options);
@@ -406,7 +406,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
     summary.variables = n;
     if (n > 0 && !x) {
         summary.status = Status::InvalidProblem;
-        summary.message = "null state";
+        summary.detail = "null state";
         return summary;
     }
     d.x.assign(x, x + n);
@@ -415,7 +415,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
     d.rhs.resize(static_cast<std::size_t>(n));
     if (!allFinite(d.x)) {
         summary.status = Status::NonFiniteValue;
-        summary.message = "the initial state contains a non-finite value";
+        summary.detail = "the initial state contains a non-finite value";
         summary.totalMs = elapsedMs(totalStart);
         return summary;
     }
@@ -434,7 +434,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         if (!d.equations.build(problem, &error)) {
             d.reset();
             summary.status = Status::InvalidProblem;
-            summary.message = error;
+            summary.detail = error;
             summary.totalMs = elapsedMs(totalStart);
             return summary;
         }
@@ -448,7 +448,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
     auto evaluationStart = Clock::now();
     if (!d.equations.evaluate(problem, d.x.data())) {
         summary.status = Status::NonFiniteValue;
-        summary.message = "a term produced a non-finite value at the initial state";
+        summary.detail = "a term produced a non-finite value at the initial state";
         summary.totalMs = elapsedMs(totalStart);
         return summary;
     }
@@ -475,7 +475,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
     for (int iteration = 0; iteration < options.maxIterations; ++iteration) {
         if (options.cancel && options.cancel->load()) {
             summary.status = Status::Cancelled;
-            summary.message = "cancelled";
+            summary.detail = "cancelled";
             break;
         }
         IterationStats stats;
@@ -514,7 +514,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
                                    stats.eps2 > 0.0 ? kEps2FloorFactor * stats.eps2 : options.eps2);
             stats.repeated = true;
             summary.status = Status::IterationLimit;
-            summary.message.clear();
+            summary.detail.clear();
             stats.eps2 = options.eps2;
             stepped = step();
         }
@@ -527,7 +527,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         }
         if (!allFinite(d.step)) {
             summary.status = Status::NonFiniteValue;
-            summary.message = "the linear solve produced a non-finite step";
+            summary.detail = "the linear solve produced a non-finite step";
             break;
         }
         if (options.guardShrinkLimit > 0.0) {
@@ -570,7 +570,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         pendingEvaluationMs = 0.0;
         if (!finite) {
             summary.status = Status::NonFiniteValue;
-            summary.message =
+            summary.detail =
                 "a term produced a non-finite value at iterate " + std::to_string(iteration + 1);
             break;
         }

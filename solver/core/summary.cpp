@@ -37,7 +37,7 @@ std::string Summary::briefReport() const {
                   toString(status), iterationsCompleted, initialMaxConstraintResidual,
                   finalMaxConstraintResidual, tolerancePart, initialEnergy, finalEnergy, variables,
                   rows, supernodal ? "supernodal" : "simplicial", totalMs,
-                  message.empty() ? "" : ": ", message.c_str());
+                  detail.empty() ? "" : ": ", detail.c_str());
     return buffer;
 }
 

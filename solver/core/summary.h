@@ -44,7 +44,9 @@ struct IterationStats {
 
 struct Summary {
     Status status = Status::IterationLimit;
-    std::string message;
+    // A technical note on a failure (a CHOLMOD status, the check that failed), for logs and bug
+    // reports; the front ends word `status`, never this.
+    std::string detail;
     int iterationsCompleted = 0;
     std::vector<IterationStats> iterations;
     double initialMaxConstraintResidual = 0.0;

@@ -2,6 +2,7 @@
 
 #include "model/creases.h"
 #include "model/derived_geometry.h"
+#include "model/model_error.h"
 #include "model/sampled_mesh.h"
 #include "solver/formulation/point_combinations.h"
 
@@ -64,10 +65,6 @@ model::Vec3 startOsculatingNormal(const model::BSplineCurve& curve, const model:
     return length > 0.0 ? candidate / length : model::Vec3(0, 0, 1);
 }
 
-std::string edgeName(model::EdgeId edge) {
-    return "edge " + std::to_string(edge);
-}
-
 } // namespace
 
 int addCreaseConditions(const model::CompositeSurface& surface,
@@ -101,11 +98,10 @@ int addCreaseConditions(const model::CompositeSurface& surface,
         if (!record.isSpline() || record.condition == model::CreaseCondition::None) {
             continue;
         }
-        const std::string name = model::creaseConditionName(record.condition);
         const auto it = creases.find(id);
         if (it == creases.end()) {
-            throw std::invalid_argument(edgeName(id) + " has the condition '" + name +
-                                        "' but is a boundary curve, not a crease.");
+            throw model::ModelError(
+                model::edgeProblem(model::ProblemCode::ConditionOnBoundary, id));
         }
         const model::Crease& crease = it->second;
         const auto left = normals.find(crease.left.face);
@@ -113,15 +109,14 @@ int addCreaseConditions(const model::CompositeSurface& surface,
         if (crease.left.strip == model::CreaseSide::kNoStrip ||
             crease.right.strip == model::CreaseSide::kNoStrip || left == normals.end() ||
             right == normals.end()) {
-            throw std::invalid_argument(edgeName(id) + " has the condition '" + name +
-                                        "' but a cone or planar patch lies beside it; crease "
-                                        "conditions need a strip on either side.");
+            throw model::ModelError(
+                model::edgeProblem(model::ProblemCode::ConditionBesideNonStrip, id));
         }
         if (record.space.degree < 2) {
-            throw std::invalid_argument(edgeName(id) + " has the condition '" + name +
-                                        "' but its curve is of degree " +
-                                        std::to_string(record.space.degree) +
-                                        "; a crease condition needs degree 2 or more.");
+            model::Problem problem =
+                model::edgeProblem(model::ProblemCode::ConditionNeedsDegree, id);
+            problem.count = record.space.degree;
+            throw model::ModelError(problem);
         }
         const model::BSplineCurve curve =
             model::BSplineCurve::uniform(record.space, record.controlPoints);

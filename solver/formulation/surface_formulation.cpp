@@ -1,6 +1,7 @@
 #include "solver/formulation/surface_formulation.h"
 
 #include "model/bspline_curve.h"
+#include "model/model_error.h"
 #include "model/strip.h"
 #include "solver/core/bilinear_term.h"
 #include "solver/core/bisector_term.h"
@@ -131,7 +132,7 @@ struct SurfaceFormulation::Builder {
 
     void collect() {
         if (const auto problems = surface.validate(); !problems.empty()) {
-            throw std::invalid_argument("the surface is not valid: " + problems.front());
+            throw model::ModelError(problems.front());
         }
         for (const auto& [id, loop] : surface.faces()) {
             (void)loop;

@@ -97,7 +97,7 @@ ShapeChange measureShapeChange(const model::CompositeSurface& start,
     const std::vector<model::Strip> startStrips = model::stripsOf(start);
     const std::vector<model::Strip> resultStrips = model::stripsOf(result);
     if (startStrips.size() != resultStrips.size()) {
-        throw model::ModelError("the two surfaces do not have the same faces.");
+        throw model::ModelError(model::problemOf(model::ProblemCode::DifferentFaces));
     }
     for (std::size_t s = 0; s < startStrips.size(); ++s) {
         const model::Strip& a = startStrips[s];

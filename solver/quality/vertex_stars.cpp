@@ -104,7 +104,7 @@ model::Vec3 spokePoint(const model::CompositeSurface& surface, const StarSpoke& 
 
 std::vector<VertexAngleDefect> vertexAngleDefects(const model::CompositeSurface& surface) {
     if (const auto problems = surface.validate(); !problems.empty()) {
-        throw model::ModelError("the surface is not valid: " + problems.front());
+        throw model::ModelError(problems.front());
     }
     std::vector<VertexAngleDefect> defects;
     for (const VertexStar& star : creaseVertexStars(surface)) {

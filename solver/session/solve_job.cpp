@@ -1,6 +1,7 @@
 #include "solver/session/solve_job.h"
 
 #include "model/geometry_checks.h"
+#include "model/model_error.h"
 #include "model/pattern/cutting_pattern.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
@@ -208,6 +209,17 @@ JobFailure failureOf(JobError error, int surface, Status status = Status::Iterat
     return failure;
 }
 
+// A surface that cannot be set up: the model's problem where it named one.
+JobFailure cannotSolve(int surface, const std::exception& error) {
+    JobFailure failure = failureOf(JobError::CannotSolve, surface, Status::InvalidProblem);
+    if (const auto* model = dynamic_cast<const model::ModelError*>(&error)) {
+        failure.problem = model->problem();
+    } else {
+        failure.detail = error.what();
+    }
+    return failure;
+}
+
 JobFailure targetFailure(int surface, model::VertexId vertex, model::EdgeId edge, int index) {
     JobFailure failure = failureOf(JobError::TargetNotFinite, surface);
     failure.vertex = vertex;
@@ -358,8 +370,7 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
                 session = std::make_unique<SolveSession>(snapshot, handles, points,
                                                          optionsFor(request, key));
             } catch (const std::exception& error) {
-                return fail(
-                    failureOf(JobError::CannotSolve, key, Status::InvalidProblem, error.what()));
+                return fail(cannotSolve(key, error));
             }
             d.built[s] = snapshot;
             d.pulled[s] = vertexSet(handles);
@@ -414,8 +425,7 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
                     replay = replayStretching(d.built[s], d.moves[s], kIterationsAfterDrag, cancel,
                                               perIteration);
                 } catch (const std::exception& error) {
-                    return fail(failureOf(JobError::CannotSolve, key, Status::InvalidProblem,
-                                          error.what()));
+                    return fail(cannotSolve(key, error));
                 }
                 if (replay.settling.status == Status::Cancelled) {
                     summary = replay.settling;
@@ -442,12 +452,16 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             return fail(failureOf(JobError::Cancelled, key));
         }
         if (!summary.succeeded()) {
-            return fail(failureOf(JobError::SolverFailed, key, summary.status, summary.message));
+            return fail(failureOf(JobError::SolverFailed, key, summary.status, summary.detail));
         }
         if (!allFinite(session->surface())) {
             return fail(failureOf(JobError::NotFinite, key));
         }
         assessment.summary = summary;
+        if (summary.status == Status::StoppedBeforeDegenerate &&
+            !session->refusedIterate().empty()) {
+            assessment.refusedIterate = session->refusedIterate().front();
+        }
         const model::CompositeSurface* result = &session->surface();
         if (request.kind == JobKind::Solve) {
             // Solve never spoils a design: the fairness of a fresh solve may pull a nearly

@@ -75,6 +75,8 @@ struct LengthsReplay {
 struct SurfaceAssessment {
     bool solved = false; // false: left as it was (a drag's surfaces without handles)
     Summary summary;
+    // Status::StoppedBeforeDegenerate: what the refused iterate would have broken.
+    std::optional<model::Problem> refusedIterate;
     // Solve: ended on this earlier iterate of smallest residual (0: on the last).
     int bestIteration = 0;
     // Solve: the result sampled less developable than the start, which is returned instead.
@@ -129,7 +131,8 @@ struct JobFailure {
     model::EdgeId edge = model::kInvalidId;     // the control point's edge and index
     int index = -1;
     Status status = Status::IterationLimit; // SolverFailed
-    std::string detail;
+    std::optional<model::Problem> problem;  // CannotSolve: what the model found wrong
+    std::string detail;                     // a technical note for a bug report, not for the user
 };
 
 struct JobOutcome {

@@ -1,6 +1,7 @@
 #include "solver/session/solve_session.h"
 
 #include "model/geometry_checks.h"
+#include "model/model_error.h"
 #include "solver/quality/crease_quality.h"
 #include "solver/quality/quality_measures.h"
 
@@ -23,15 +24,15 @@ bool isFinite(const model::Vec3& p) {
 void requireFiniteGeometry(const model::CompositeSurface& surface) {
     for (const auto& [id, position] : surface.vertices()) {
         if (!isFinite(position)) {
-            throw std::invalid_argument("vertex " + std::to_string(id) +
-                                        " has a coordinate that is not a finite number.");
+            throw model::ModelError(
+                model::vertexProblem(model::ProblemCode::PositionNotFinite, id));
         }
     }
     for (const auto& [id, edge] : surface.edges()) {
         for (const model::Vec3& point : edge.controlPoints) {
             if (!isFinite(point)) {
-                throw std::invalid_argument("edge " + std::to_string(id) +
-                                            " has a control point that is not a finite number.");
+                throw model::ModelError(
+                    model::edgeProblem(model::ProblemCode::ControlPointNotFinite, id));
             }
         }
     }
@@ -129,8 +130,8 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
     }
     for (const VertexHandle& handle : pulled) {
         if (!surface.hasVertex(handle.vertex)) {
-            throw std::invalid_argument("there is no vertex " + std::to_string(handle.vertex) +
-                                        " to pull.");
+            throw model::ModelError(model::elementProblem(model::ProblemCode::Missing,
+                                                          model::Element::Vertex, handle.vertex));
         }
         if (!isFinite(handle.target)) {
             throw std::invalid_argument("the target of vertex " + std::to_string(handle.vertex) +
@@ -218,10 +219,11 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         options.reuseFactorizationMinimumFlops = kDragFactorizationReuseFlops;
     }
     std::vector<double> before; // the state before the iteration running
+    m_refused.clear();
     for (int i = 0; i < n; ++i) {
         if (cancel && cancel->load()) {
             total.status = Status::Cancelled;
-            total.message = "cancelled";
+            total.detail = "cancelled";
             break;
         }
         // One iteration per solve() call, the schedule continued from the iterations done:
@@ -256,8 +258,8 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         total.analysisMs += summary.analysisMs;
         if (!summary.succeeded() || summary.iterations.empty()) {
             total.status = summary.succeeded() ? Status::InvalidProblem : summary.status;
-            total.message =
-                summary.message.empty() ? "the iteration did not complete" : summary.message;
+            total.detail =
+                summary.detail.empty() ? "the iteration did not complete" : summary.detail;
             break;
         }
         // Every iterate is written into surface(). Never a result that is no surface: an
@@ -274,16 +276,19 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         if (!m_formulation->writeBack(m_x, m_surface, &error)) {
             // surface() is untouched: it still holds `before`.
             total.status = Status::NonFiniteValue;
-            total.message = error;
+            total.detail = error;
             m_x = before;
             break;
         }
-        const std::vector<std::string> degenerate = model::degenerateGeometryProblems(m_surface);
+        std::vector<model::Problem> degenerate = model::degenerateGeometryProblems(m_surface);
         if (!degenerate.empty()) {
             m_x = before;
             m_formulation->writeBack(m_x, m_surface); // written once already: it is finite
             total.status = Status::StoppedBeforeDegenerate;
-            total.message = "the next iteration gave a degenerate surface, " + degenerate.front();
+            total.detail = "the next iteration gave a degenerate surface: " +
+                           model::technicalKey(degenerate.front());
+            degenerate.resize(1);
+            m_refused = std::move(degenerate);
             break;
         }
         ++m_iterationsDone;

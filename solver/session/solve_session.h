@@ -149,6 +149,9 @@ public:
     int iterationsDone() const { return m_iterationsDone; }
     // The pulled vertices (pinned ones excluded).
     const std::vector<model::VertexId>& pulledVertices() const { return m_pulled; }
+    // Why the last step() stopped with Status::StoppedBeforeDegenerate: the first problem of
+    // the iterate it refused (model::degenerateGeometryProblems). Empty otherwise.
+    const std::vector<model::Problem>& refusedIterate() const { return m_refused; }
 
     // Faces worst first at the current state (SurfaceFormulation::faceResiduals).
     std::vector<SurfaceFormulation::FaceResidual> worstFaces() const;
@@ -173,6 +176,7 @@ private:
     std::vector<double> m_x;
     std::vector<model::VertexId> m_pulled;
     int m_iterationsDone = 0;
+    std::vector<model::Problem> m_refused;
     bool m_dragging = false; // something is pulled
     bool m_settling = false;
     bool m_lengthDampingFades = false; // the residual has fallen to kRoughSolveLengthDampingUntil

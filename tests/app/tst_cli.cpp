@@ -195,8 +195,8 @@ private slots:
         f.close();
         const Run run = cli({"validate", file});
         QCOMPARE(run.exitCode, 2);
-        QVERIFY(run.err.contains("face 0 is labelled RRSR"));
-        QVERIFY(run.err.contains("face 3 is labelled"));
+        QVERIFY(run.err.contains("Patch 0 is labelled RRSR"));
+        QVERIFY(run.err.contains("Patch 3 is labelled"));
         QCOMPARE(cli({"info", file}).exitCode, 2);
     }
 
@@ -224,7 +224,7 @@ private slots:
         QCOMPARE(run.exitCode, 2);
         const QString first = run.err.section('\n', 0, 0);
         QVERIFY2(first.contains("zero.devsurf"), qPrintable(first));
-        QVERIFY(run.err.contains("face 0 has zero area."));
+        QVERIFY(run.err.contains("Patch 0 has zero area."));
         QVERIFY(run.err.contains("has zero length."));
         const Run solve = cli({"solve", file, "-o", path("zero-solved.devsurf")});
         QCOMPARE(solve.exitCode, 2);

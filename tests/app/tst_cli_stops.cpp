@@ -40,8 +40,8 @@ private slots:
             {"solve", file, "--perturb", "0.02", "--seed", "9", "--iterations", "30", "-o", out});
         QCOMPARE(run.exitCode, 0);
         QVERIFY2(run.out.contains(QRegularExpression(
-                     "\\nAfter iteration \\d+: stopped at the last valid state: the next "
-                     "iteration gave a degenerate surface, face \\d+ has zero area\\.\\n")),
+                     "\\nAfter iteration \\d+: stopped at the last valid state, before the next "
+                     "iteration broke it: Patch \\d+ has zero area\\.\\n")),
                  qPrintable(run.out));
         QVERIFY(!run.out.contains("iteration  30 "));
         QCOMPARE(test::runCli({"validate", out}).exitCode, 0);
@@ -61,8 +61,8 @@ private slots:
                           "150,171.650635094611,85,0,0,1,-30", "--stretch", "-o", turned});
         QCOMPARE(run.exitCode, 0);
         QVERIFY2(run.out.contains(QRegularExpression(
-                     "\\nAt after \\d+: stopped at the last valid state: the next iteration "
-                     "gave a degenerate surface, face \\d+ has zero area\\.\\n")),
+                     "\\nAt after \\d+: stopped at the last valid state, before the next "
+                     "iteration broke it: Patch \\d+ has zero area\\.\\n")),
                  qPrintable(run.out + run.err));
         QVERIFY(run.out.contains("Largest residual "));
         QVERIFY(run.out.endsWith("Wrote " + turned + "\n"));

@@ -1,5 +1,6 @@
 // The command line's words for the solve job's outcome (app/cli/outcome_text).
 #include "outcome_text.h"
+#include "problem_text.h"
 #include "test_registry.h"
 
 #include <QString>
@@ -10,6 +11,45 @@ using namespace devsurf;
 class TstCliText : public QObject {
     Q_OBJECT
 private slots:
+    void everyProblemCodeHasItsOwnSentence() {
+        // Each code of model/ is worded (not the internal-error fallback), as one sentence
+        // naming the ids it carries.
+        using devsurf::model::ProblemCode;
+        QSet<QString> seen;
+        const QString internal =
+            devsurf::app::ProblemText::of(devsurf::model::internalProblem("x")).section('(', 0, 0);
+        for (int c = 0; c < static_cast<int>(ProblemCode::Internal); ++c) {
+            devsurf::model::Problem p = devsurf::model::problemOf(static_cast<ProblemCode>(c));
+            p.id = p.vertex = p.edge = p.face = 4321;
+            p.otherVertex = p.otherEdge = p.otherFace = 8765;
+            const QString text = devsurf::app::ProblemText::of(p);
+            QVERIFY2(!text.startsWith(internal), qPrintable(QString::number(c)));
+            QVERIFY2(text.endsWith('.') && text.at(0).isUpper(), qPrintable(text));
+            QVERIFY2(!seen.contains(text), qPrintable(text));
+            seen.insert(text);
+        }
+        const QString edge = devsurf::app::ProblemText::of(
+            devsurf::model::edgeProblem(ProblemCode::CurveZeroLength, 7));
+        QVERIFY2(edge.contains(QStringLiteral("7")), qPrintable(edge));
+    }
+
+    void patternProblemsNameTheirPieces() {
+        devsurf::model::CuttingPattern pattern;
+        pattern.pieces.resize(2);
+        pattern.pieces[0].name = "A";
+        pattern.pieces[1].name = "B";
+        devsurf::model::PatternProblem overlap;
+        overlap.code = devsurf::model::PatternProblemCode::PiecesOverlap;
+        overlap.piece = 0;
+        overlap.otherPiece = 1;
+        overlap.sheet = 2;
+        pattern.problems = {overlap};
+        const std::vector<std::string> texts = devsurf::app::patternProblemTexts(pattern);
+        QCOMPARE(texts.size(), std::size_t(1));
+        QCOMPARE(QString::fromStdString(texts.front()),
+                 QStringLiteral("Pieces A (patches ) and B (patches ) overlap on sheet 3."));
+    }
+
     void foldOversNameTheFirstFacesAndCountTheRest() {
         QCOMPARE(app::describeFoldOvers({{0, 2}}),
                  std::string("Folded over onto itself: face 0 (2 places)."));

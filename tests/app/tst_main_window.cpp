@@ -1,4 +1,5 @@
 #include "autosaver.h"
+#include "edit_refusal.h"
 #include "io/project_file.h"
 #include "main_window.h"
 #include "model/document/commands/command_or_error.h"
@@ -170,7 +171,7 @@ private slots:
         window.workspace()->newFromExample(QStringLiteral("sheet"), 0);
         document::Document* doc = window.workspace()->document();
         QVERIFY(!window.isWindowModified());
-        const QString refusal = document::pushOrExplain(
+        const QString refusal = app::pushOrExplain(
             *doc, document::MoveVerticesCommand::createTranslation(*doc, 0, {5}, {0, 0, 10}));
         QVERIFY(refusal.isEmpty());
         QVERIFY(window.isWindowModified());
@@ -218,7 +219,7 @@ private slots:
         window.show();
         window.workspace()->newFromExample(QStringLiteral("sheet"), 0);
         document::Document* doc = window.workspace()->document();
-        document::pushOrExplain(
+        app::pushOrExplain(
             *doc, document::MoveVerticesCommand::createTranslation(*doc, 0, {5}, {0, 0, 10}));
         answerNextMessageBox(QMessageBox::Cancel);
         QVERIFY(!window.close());
@@ -304,7 +305,7 @@ private slots:
             workspace->autosaver()->saveNow();
             QVERIFY(!QFile::exists(workspace->autosaver()->recoveryFile())); // nothing unsaved
             document::Document* doc = workspace->document();
-            document::pushOrExplain(
+            app::pushOrExplain(
                 *doc, document::MoveVerticesCommand::createTranslation(*doc, 0, {5}, {0, 0, 7}));
             workspace->autosaver()->saveNow();
             const QString recovery = workspace->autosaver()->recoveryFile();
@@ -327,7 +328,7 @@ private slots:
             app::Workspace* workspace = window.workspace();
             QVERIFY(workspace->open(original));
             document::Document* doc = workspace->document();
-            document::pushOrExplain(
+            app::pushOrExplain(
                 *doc, document::MoveVerticesCommand::createTranslation(*doc, 0, {6}, {0, 0, 3}));
             workspace->autosaver()->saveNow();
             const QString recovery = workspace->autosaver()->recoveryFile();
@@ -336,7 +337,7 @@ private slots:
             QVERIFY(!QFile::exists(recovery));
             QVERIFY(!QFile::exists(recovery + ".origin"));
             // Undoing back to the saved state after another edit removes it as well.
-            document::pushOrExplain(
+            app::pushOrExplain(
                 *doc, document::MoveVerticesCommand::createTranslation(*doc, 0, {6}, {0, 0, 2}));
             workspace->autosaver()->saveNow();
             QVERIFY(QFile::exists(recovery));

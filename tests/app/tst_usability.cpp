@@ -1,3 +1,4 @@
+#include "edit_refusal.h"
 #include "help_dialogs.h"
 #include "io/project_file.h"
 #include "main_window.h"
@@ -7,6 +8,7 @@
 #include "model/examples.h"
 #include "model/topology_edits.h"
 #include "position_dialog.h"
+#include "problem_text.h"
 #include "reactions/file_reactions.h"
 #include "test_registry.h"
 #include "translations.h"
@@ -183,7 +185,7 @@ private slots:
         QWidget* undo = toolbar->widgetForAction(window.action("actionUndo"));
         const QRect before = undo->geometry();
         document::Document* doc = window.workspace()->document();
-        document::pushOrExplain(
+        app::pushOrExplain(
             *doc, document::MoveVerticesCommand::createTranslation(*doc, 0, {0, 1, 2}, {0, 0, 1}));
         QVERIFY(window.action("actionUndo")->isEnabled());
         QCOMPARE(undo->geometry(), before);
@@ -409,7 +411,8 @@ private slots:
         QVERIFY2(text.contains(QStringLiteral("zero")), qPrintable(text));
         QVERIFY(text.contains(QStringLiteral("more problem")));
         for (const auto& [face, loop] : surface.faces()) {
-            QVERIFY(details.contains(QStringLiteral("face %1 has zero area.").arg(face)));
+            QVERIFY(details.contains(
+                app::ProblemText::of(model::faceProblem(model::ProblemCode::ZeroArea, face))));
         }
     }
 

@@ -205,8 +205,8 @@ ModelResult runModel(const BenchModel& model, const BenchmarkOptions& options, d
     // ruling is reported by its status instead.
     if (!formulation.writeBack(bestState, result, &error)) {
         r.status = error;
-    } else if (const std::vector<std::string> problems = result.validate(); !problems.empty()) {
-        r.status = "degenerate result: " + problems.front();
+    } else if (const auto problems = result.validate(); !problems.empty()) {
+        r.status = "degenerate result: " + model::technicalKey(problems.front());
     } else {
         r.quality = solver::measureQuality(result);
     }

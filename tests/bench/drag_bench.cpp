@@ -24,6 +24,18 @@ namespace devsurf::bench {
 
 namespace {
 
+// Pushes the edit; empty when pushed, otherwise why it was refused (technical).
+QString pushEdit(devsurf::document::Document& document, devsurf::document::CommandOrError edit) {
+    if (devsurf::document::push(document, edit)) {
+        return QString();
+    }
+    return edit.error() +
+           (edit.problem()
+                ? QStringLiteral(": ") +
+                      QString::fromStdString(devsurf::model::technicalKey(*edit.problem()))
+                : QString());
+}
+
 // Watches the event loop of the calling thread: the largest gap between ticks of a 1 ms timer.
 class StallWatch {
 public:
@@ -132,7 +144,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
                 loop.quit();
                 return;
             }
-            const QString refused = document::pushOrExplain(
+            const QString refused = pushEdit(
                 document, document::ApplySurfaceCommand::create(
                               document, 0, outcome.surfaces.front(), QStringLiteral("Drag vertex"),
                               document::Change::Geometry, static_cast<int>(kDragKey)));
@@ -216,7 +228,7 @@ SolveStallRow runSolve(const std::string& name, model::CompositeSurface surface,
                 row.error = "the solve job failed: " + outcome.failure.detail;
             } else {
                 row.variables = outcome.assessments.front().summary.variables;
-                const QString refused = document::pushOrExplain(
+                const QString refused = pushEdit(
                     document, document::ApplySurfaceCommand::create(
                                   document, 0, outcome.surfaces.front(), QStringLiteral("Solve")));
                 row.error = refused.toStdString();

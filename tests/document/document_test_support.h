@@ -14,6 +14,10 @@
 
 // Helpers shared by the document tests. The geometric comparison does not use any code under
 // test: it measures distances from sample points to ruling segments directly.
+#include "model/document/commands/command_or_error.h"
+
+#include <QUndoCommand>
+
 namespace devsurf::test {
 
 inline std::string bytesOf(const document::Document& doc) {
@@ -22,7 +26,21 @@ inline std::string bytesOf(const document::Document& doc) {
 
 inline std::string firstProblem(const model::CompositeSurface& s) {
     const auto problems = s.validate();
-    return problems.empty() ? std::string() : problems.front();
+    return problems.empty() ? std::string() : model::technicalKey(problems.front());
+}
+
+// Pushes the edit; empty when it was pushed, otherwise the refusal's heading and the technical
+// key of its problem (the application words it, app/gui/edit_refusal.h).
+inline QString pushOrExplain(document::Document& doc, document::CommandOrError result) {
+    if (document::push(doc, result)) {
+        return QString();
+    }
+    QString text = result.error().isEmpty() ? QStringLiteral("refused") : result.error();
+    if (result.problem()) {
+        text +=
+            QStringLiteral(": ") + QString::fromStdString(model::technicalKey(*result.problem()));
+    }
+    return text;
 }
 
 inline double pointSegmentDistance(const model::Vec3& p, const model::Vec3& a,

@@ -24,6 +24,7 @@ using namespace devsurf::document;
 using namespace devsurf::model;
 using devsurf::test::bytesOf;
 using devsurf::test::firstProblem;
+using devsurf::test::pushOrExplain;
 
 namespace {
 
@@ -200,7 +201,8 @@ private slots:
         const FaceId strip = firstFaceOfType(doc.surface(0), FaceType::StripSRSR);
         const CommandOrError refused = SplitAtRulingCommand::create(doc, 0, strip, 1);
         QVERIFY(refused.isRefused());
-        QVERIFY(refused.error().contains("refine"));
+        QVERIFY(refused.problem() && refused.problem()->code == ProblemCode::SingleInterval);
+        QCOMPARE(refused.problem()->face, strip);
         QCOMPARE(SplitAtRulingCommand::nearestBreakpoint(doc.surface(0), strip, 0.4),
                  std::make_pair(0, 1));
         const EdgeId a = stripOfFace(doc.surface(0), strip).aSide.edge;
@@ -317,9 +319,9 @@ private slots:
             const CommandOrError result =
                 RelabelEdgeCommand::create(doc, 0, edge, EdgeLabel::Ruling);
             QVERIFY(result.isRefused());
-            QVERIFY2(result.error().contains(QString("face %1").arg(strip)) ||
-                         result.error().contains("face "),
-                     qPrintable(result.error()));
+            QVERIFY(result.problem().has_value());
+            QCOMPARE(result.problem()->code, ProblemCode::InvalidFaceLabel);
+            QVERIFY(result.problem()->face != kInvalidId);
             QVERIFY(!pushOrExplain(doc, RelabelEdgeCommand::create(doc, 0, edge, EdgeLabel::Ruling))
                          .isEmpty());
             // Relabelling to the label it has is refused too.
@@ -339,7 +341,8 @@ private slots:
         const FaceId cone = firstFaceOfType(s, FaceType::ConeSRR);
         const QString message =
             pushOrExplain(doc, SubdivideStripCommand::create(doc, 0, cone, 0.5));
-        QVERIFY(message.contains(QString("face %1").arg(cone)));
+        QVERIFY2(message.contains(QString("CreaseNeedsStrip face=%1").arg(cone)),
+                 qPrintable(message));
         QVERIFY(!pushOrExplain(doc, SplitAtRulingCommand::create(doc, 0, 0, 1)).isEmpty());
         QVERIFY(!pushOrExplain(doc, RefineSplineClassCommand::create(doc, 0, 0)).isEmpty());
         QVERIFY(!pushOrExplain(doc, MoveVerticesCommand::createTranslation(doc, 0, {}, {1, 0, 0}))

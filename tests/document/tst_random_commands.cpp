@@ -23,6 +23,7 @@ using namespace devsurf::document;
 using namespace devsurf::model;
 using devsurf::test::bytesOf;
 using devsurf::test::firstProblem;
+using devsurf::test::pushOrExplain;
 
 namespace {
 

@@ -142,7 +142,8 @@ private slots:
             subdivideStrip(s, 0, 0.5);
             QFAIL("the cut into an SRS strip was not refused");
         } catch (const ModelError& error) {
-            QVERIFY(std::string(error.what()).find("face 1") != std::string::npos);
+            QCOMPARE(error.problem().code, ProblemCode::CreaseBlocked);
+            QCOMPARE(error.problem().otherFace, FaceId(1));
         }
     }
 
@@ -259,7 +260,8 @@ private slots:
             relabelEdges(sheet, {{0, EdgeLabel::Ruling}});
             QFAIL("an invalid labelling was accepted");
         } catch (const ModelError& error) {
-            QVERIFY(std::string(error.what()).find("face 0") != std::string::npos);
+            QCOMPARE(error.problem().code, ProblemCode::InvalidFaceLabel);
+            QCOMPARE(error.problem().face, FaceId(0));
         }
         std::vector<std::pair<EdgeId, EdgeLabel>> both;
         for (EdgeId e : sheet.faceEdges(0)) {

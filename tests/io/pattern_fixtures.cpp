@@ -96,7 +96,11 @@ model::CuttingPattern fixturePatternWithOverlap() {
     model::CuttingPattern pattern = fixturePattern();
     pattern.pieces[1].selfOverlapping = true;
     pattern.overlaps.push_back({1, 1, {0}});
-    pattern.problems.push_back("Piece B overlaps itself (patch 0).");
+    model::PatternProblem problem;
+    problem.code = model::PatternProblemCode::PieceOverlapsItself;
+    problem.piece = 1;
+    problem.faces = {0};
+    pattern.problems.push_back(problem);
     return pattern;
 }
 

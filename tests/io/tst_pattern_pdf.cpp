@@ -204,7 +204,7 @@ private slots:
         const QSizeF paper = a3.size(QPageSize::Millimeter);
         const io::PagePlan plan = io::planPages(pattern, {paper.width(), paper.height()});
         io::preparePagedDevice(printer, a3, plan);
-        QVERIFY(io::paintPatternPages(printer, pattern, plan));
+        QVERIFY(io::paintPatternPages(printer, pattern, plan, {}));
         const PdfInfo info = pdfInfo(file);
         QCOMPARE(info.pages, io::patternPageCount(pattern, plan));
         // A3 (297 × 420 mm): content 277 × 342 portrait or 342 × 277 landscape: the sector

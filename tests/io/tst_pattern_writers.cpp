@@ -265,13 +265,13 @@ private slots:
     }
 
     void fabricationReportListsOverlapsAndProblems() {
-        const io::FabricationReport clean = io::fabricationReport(test::fixturePattern());
+        const io::FabricationReport clean = io::fabricationReport(test::fixturePattern(), {});
         QVERIFY(!clean.hasOverlaps());
         QCOMPARE(clean.pieces.size(), std::size_t(2));
         QVERIFY(clean.pieces[0].fitsSheet && clean.pieces[1].fitsSheet);
 
-        const io::FabricationReport report =
-            io::fabricationReport(test::fixturePatternWithOverlap());
+        const io::FabricationReport report = io::fabricationReport(
+            test::fixturePatternWithOverlap(), {"Piece B overlaps itself (patch 0)."});
         QVERIFY(report.hasOverlaps());
         QVERIFY(report.pieces[1].selfOverlapping);
         const QString text = QString::fromStdString(io::fabricationReportText(report));

@@ -79,8 +79,7 @@ void TstBSpline::splineSpace() {
     }
     QCOMPARE(SplineSpace({3, 2, 1}).controlPointCount(false), 4); // cubic C2: n + 3
     QCOMPARE(SplineSpace({3, 2, 4}).controlPointCount(false), 7);
-    QCOMPARE(SplineSpace({3, 2, 4}).describe(), std::string("degree 3, C2, 4 intervals"));
-    QCOMPARE(SplineSpace({2, 0, 1}).describe(), std::string("degree 2, C0, 1 interval"));
+    QCOMPARE(SplineSpace({3, 2, 4}).technicalKey(), std::string("S(n=4, m=3, k=2)"));
 
     QVERIFY(!SplineSpace({0, 0, 1}).isValid());
     QVERIFY(!SplineSpace({3, 3, 1}).isValid());

@@ -330,8 +330,9 @@ private slots:
         QCOMPARE(pattern.overlaps.front().first, 0);
         QCOMPARE(pattern.overlaps.front().second, 0);
         QVERIFY(!pattern.overlaps.front().faces.empty());
-        QVERIFY(pattern.problems.size() == 1 &&
-                pattern.problems.front().find("overlaps itself") != std::string::npos);
+        QCOMPARE(pattern.problems.size(), std::size_t(1));
+        QCOMPARE(pattern.problems.front().code, PatternProblemCode::PieceOverlapsItself);
+        QCOMPARE(pattern.problems.front().faces, pattern.overlaps.front().faces);
         // Half a turn does not overlap.
         for (const ExampleInfo& info : builtInExamples()) {
             QVERIFY(!buildCuttingPattern(makeExample(info.name), sideBySide())
@@ -450,8 +451,11 @@ private slots:
         QVERIFY(pattern.pieces[0].size.x > 490 && pattern.pieces[0].size.y > 490);
         QVERIFY(pattern.pieces[1].sheet == 0);
         QCOMPARE(pattern.problems.size(), std::size_t(1));
-        QVERIFY(pattern.problems.front().find("does not fit") != std::string::npos);
-        QVERIFY(pattern.problems.front().find("Piece A") != std::string::npos);
+        QCOMPARE(pattern.problems.front().code, PatternProblemCode::PieceTooLarge);
+        QCOMPARE(pattern.problems.front().piece, 0);
+        QCOMPARE(pattern.pieces[0].name, std::string("A"));
+        QVERIFY(pattern.problems.front().size.x > 490 &&
+                pattern.problems.front().sheetSize.x == 420);
     }
 
     void seamAllowanceIsOffsetByItsWidth() {

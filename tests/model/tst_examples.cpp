@@ -43,7 +43,8 @@ private slots:
                 QCOMPARE(project.surfaces.size(), std::size_t(1));
                 const auto problems = project.surfaces.front().validate();
                 QVERIFY2(problems.empty(),
-                         (info.name + ": " + (problems.empty() ? std::string() : problems.front()))
+                         (info.name + ": " +
+                          (problems.empty() ? std::string() : technicalKey(problems.front())))
                              .c_str());
             }
         }

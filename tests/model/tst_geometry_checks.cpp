@@ -40,18 +40,29 @@ CompositeSurface strip() {
     return s;
 }
 
-int count(const std::vector<std::string>& problems, const std::string& text) {
+// Problems whose technical key ("ZeroArea face=0") contains `text`.
+int count(const std::vector<Problem>& problems, const std::string& text) {
     return static_cast<int>(std::count_if(problems.begin(), problems.end(), [&](const auto& p) {
-        return p.find(text) != std::string::npos;
+        return technicalKey(p).find(text) != std::string::npos;
     }));
 }
 
-QByteArray joined(const std::vector<std::string>& problems) {
+QByteArray joined(const std::vector<Problem>& problems) {
     std::string all;
     for (const auto& p : problems) {
-        all += p + "\n";
+        all += technicalKey(p) + "\n";
     }
     return QByteArray::fromStdString(all);
+}
+
+// The first problem with `code`; fails the test if there is none.
+const Problem* find(const std::vector<Problem>& problems, ProblemCode code) {
+    for (const Problem& p : problems) {
+        if (p.code == code) {
+            return &p;
+        }
+    }
+    return nullptr;
 }
 
 } // namespace
@@ -75,17 +86,18 @@ private slots:
     void coincidentVerticesOfAFace() {
         // Corners 0 and 2 coincide; no side is degenerate and the face encloses area.
         const auto problems = polygon({{0, 0, 0}, {100, 0, 0}, {0, 0, 0}, {0, 100, 0}}).validate();
-        QCOMPARE(count(problems, "face 0 has coincident vertices 0 and 2."), 1);
-        QCOMPARE(count(problems, "zero"), 0);
+        QCOMPARE(count(problems, "CoincidentVertices vertex=0 other-vertex=2 face=0"), 1);
+        QCOMPARE(count(problems, "Zero"), 0);
     }
 
     void zeroLengthRuling() {
         const auto problems =
             polygon({{0, 0, 0}, {100, 0, 0}, {100, 0, 0}, {0, 100, 0}}).validate();
-        QCOMPARE(count(problems, "(a ruling of face 0) has zero length."), 1);
+        QCOMPARE(count(problems, "RulingZeroLength"), 1);
+        QCOMPARE(find(problems, ProblemCode::RulingZeroLength)->faces, std::vector<FaceId>{0});
         // Reported once, as the side, not again as coincident corners.
-        QCOMPARE(count(problems, "coincident"), 0);
-        QCOMPARE(count(problems, "zero area"), 0);
+        QCOMPARE(count(problems, "Coincident"), 0);
+        QCOMPARE(count(problems, "ZeroArea"), 0);
     }
 
     void zeroLengthCurve() {
@@ -95,26 +107,27 @@ private slots:
         s.moveVertex(1, {0, 0, 0});
         s.setControlPoints(a, std::vector<Vec3>(s.edge(a).controlPoints.size(), Vec3{}));
         const auto problems = s.validate();
-        QCOMPARE(count(problems, "edge " + std::to_string(a) +
-                                     " (a spline curve of face 0) has zero length."),
-                 1);
+        QCOMPARE(count(problems, "CurveZeroLength edge=" + std::to_string(a)), 1);
+        QCOMPARE(find(problems, ProblemCode::CurveZeroLength)->faces, std::vector<FaceId>{0});
     }
 
     void zeroAreaFace() {
         // Four distinct corners on one line.
         const auto problems =
             polygon({{0, 0, 0}, {100, 0, 0}, {200, 0, 0}, {300, 0, 0}}).validate();
-        QCOMPARE(count(problems, "face 0 has zero area."), 1);
-        QCOMPARE(count(problems, "zero length"), 0);
+        QCOMPARE(count(problems, "ZeroArea face=0"), 1);
+        QCOMPARE(count(problems, "ZeroLength"), 0);
     }
 
     void nonFiniteAndHugeCoordinates() {
         const double nan = std::numeric_limits<double>::quiet_NaN();
         auto problems = polygon({{0, 0, 0}, {100, 0, 0}, {100, nan, 0}, {0, 100, 0}}).validate();
-        QCOMPARE(count(problems, "vertex 2 (of face 0) has a position that is not a finite"), 1);
+        QCOMPARE(count(problems, "PositionNotFinite vertex=2"), 1);
+        QCOMPARE(find(problems, ProblemCode::PositionNotFinite)->faces, std::vector<FaceId>{0});
         problems = polygon({{0, 0, 0}, {100, 0, 0}, {100, 5e7, 0}, {0, 100, 0}}).validate();
-        QCOMPARE(count(problems, "vertex 2 (of face 0) lies"), 1);
-        QCOMPARE(count(problems, "not accepted"), 1);
+        QCOMPARE(count(problems, "PositionTooFar vertex=2"), 1);
+        const Problem* far = find(problems, ProblemCode::PositionTooFar);
+        QVERIFY(far->value > far->limit && far->limit == kMaxCoordinate);
         // Just inside the limit is accepted.
         QVERIFY(polygon({{0, 0, 0}, {9e5, 0, 0}, {9e5, 9e5, 0}, {0, 9e5, 0}}).validate().empty());
     }
@@ -133,9 +146,9 @@ private slots:
         }
         const auto problems = s.validate();
         for (const auto& [face, loop] : s.faces()) {
-            QCOMPARE(count(problems, "face " + std::to_string(face) + " has zero area."), 1);
+            QCOMPARE(count(problems, "ZeroArea face=" + std::to_string(face)), 1);
         }
-        QVERIFY(count(problems, "has zero length.") >= static_cast<int>(s.edges().size()));
+        QVERIFY(count(problems, "ZeroLength") >= static_cast<int>(s.edges().size()));
     }
 };
 

@@ -364,7 +364,7 @@ private slots:
         const Summary s = solver.solve(circle->problem, x, options);
         QCOMPARE(s.status, Status::NonFiniteValue);
         QCOMPARE(s.iterationsCompleted, 3);
-        QVERIFY(!s.message.empty());
+        QVERIFY(!s.detail.empty());
         QVERIFY(maxAbsDifference(x, expected) < 1e-12);
         for (double v : x) {
             QVERIFY(std::isfinite(v));
@@ -384,7 +384,7 @@ private slots:
             const Summary s = solver.solve(p, x, options);
             QCOMPARE(s.status, Status::FactorizationFailed);
             QCOMPARE(s.iterationsCompleted, 0);
-            QVERIFY(!s.message.empty());
+            QVERIFY(!s.detail.empty());
             QCOMPARE(x, (std::vector<double>{0.5, 0.5, 0.5}));
         }
         // Fixing the free variable makes it solvable (and it converges in one step).

@@ -1,6 +1,6 @@
 #include "patch_tree_model.h"
 
-#include "../face_type_text.h"
+#include "face_type_text.h"
 #include "model/document/document.h"
 #include "views/surface_view.h"
 

@@ -1,7 +1,8 @@
 #include "properties_panel.h"
+#include "edit_refusal.h"
 #include "model/derived_geometry.h"
 
-#include "../face_type_text.h"
+#include "face_type_text.h"
 #include "model/creases.h"
 #include "model/document/commands/command_or_error.h"
 #include "model/document/commands/crease_condition_command.h"
@@ -212,8 +213,8 @@ void PropertiesPanel::coordinateEdited() {
         return;
     }
     const QString refusal =
-        document::pushOrExplain(*m_document, document::MoveVerticesCommand::createTranslation(
-                                                 *m_document, pick.surface, {pick.id}, delta));
+        pushOrExplain(*m_document, document::MoveVerticesCommand::createTranslation(
+                                       *m_document, pick.surface, {pick.id}, delta));
     if (!refusal.isEmpty()) {
         QMessageBox::warning(this, tr("Cannot move"), refusal);
         refresh();

@@ -1,4 +1,5 @@
 #include "crease_reactions.h"
+#include "edit_refusal.h"
 
 #include "../workspace.h"
 #include "model/document/commands/command_or_error.h"
@@ -114,7 +115,7 @@ void CreaseConditionReaction::onTriggered() {
     if (selected.surface >= 0) {
         document::CommandOrError edit = document::CreaseConditionCommand::create(
             *workspace()->document(), selected.surface, selected.edges, m_condition);
-        const QString refusal = document::pushOrExplain(*workspace()->document(), std::move(edit));
+        const QString refusal = pushOrExplain(*workspace()->document(), std::move(edit));
         if (!refusal.isEmpty()) {
             emit workspace()->statusMessage(refusal);
         }
@@ -150,7 +151,7 @@ void SmoothRulingsReaction::onTriggered() {
     if (selected.surface >= 0) {
         document::CommandOrError edit = document::SmoothRulingsCommand::create(
             *workspace()->document(), selected.surface, selected.edges, m_smooth);
-        const QString refusal = document::pushOrExplain(*workspace()->document(), std::move(edit));
+        const QString refusal = pushOrExplain(*workspace()->document(), std::move(edit));
         if (!refusal.isEmpty()) {
             emit workspace()->statusMessage(refusal);
         }

@@ -1,4 +1,5 @@
 #include "file_reactions.h"
+#include "problem_text.h"
 
 #include "../example_dialog.h"
 #include "../output_problem_text.h"
@@ -130,7 +131,7 @@ void ExportJsonReaction::onTriggered() {
     } catch (const model::ModelError& error) {
         workspace()->showError(
             tr("Export failed"),
-            tr("The design cannot be exported: %1").arg(QString::fromStdString(error.what())));
+            tr("The design cannot be exported: %1").arg(ProblemText::of(error.problem())));
     }
 }
 

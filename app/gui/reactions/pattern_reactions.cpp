@@ -1,4 +1,5 @@
 #include "pattern_reactions.h"
+#include "problem_text.h"
 
 #include "../pattern_export_dialog.h"
 #include "../workspace.h"
@@ -34,7 +35,7 @@ std::optional<model::CuttingPattern> patternToPrint(Workspace* workspace) {
         workspace->showError(QObject::tr("Nothing to print"),
                              pattern.problems.empty()
                                  ? QObject::tr("The design has no surface to develop.")
-                                 : QString::fromStdString(pattern.problems.front()));
+                                 : ProblemText::of(pattern.problems.front(), pattern));
         return std::nullopt;
     }
     return pattern;
@@ -53,10 +54,11 @@ bool printCuttingPattern(QPrinter& printer, const model::CuttingPattern& pattern
                              io::patternPageCount(pattern, plan), parent);
     progress.setWindowModality(Qt::WindowModal);
     progress.setMinimumDuration(400);
-    return io::paintPatternPages(printer, pattern, plan, [&progress](int done, int) {
-        progress.setValue(done);
-        return !progress.wasCanceled();
-    });
+    return io::paintPatternPages(printer, pattern, plan, patternProblemTexts(pattern),
+                                 [&progress](int done, int) {
+                                     progress.setValue(done);
+                                     return !progress.wasCanceled();
+                                 });
 }
 
 ExportPatternReaction::ExportPatternReaction(QAction* action, Workspace* workspace)

@@ -1,4 +1,5 @@
 #include "pin_reactions.h"
+#include "edit_refusal.h"
 
 #include "../workspace.h"
 #include "model/document/commands/command_or_error.h"
@@ -52,7 +53,7 @@ void PinVerticesReaction::updateEnableState() {
                     : tr("Release the selected pinned vertices. Select vertices of one surface "
                          "first.");
     } else if (edit->isRefused()) {
-        tip = edit->error();
+        tip = refusalText(*edit);
     } else {
         tip = m_pin ? tr("Pin the selected vertices: the solver never moves them.")
                     : tr("Release the selected pinned vertices.");

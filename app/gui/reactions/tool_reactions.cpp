@@ -1,4 +1,5 @@
 #include "tool_reactions.h"
+#include "edit_refusal.h"
 
 #include "../edit_preview.h"
 #include "../move_dialog.h"
@@ -111,7 +112,7 @@ void RelabelEdgeReaction::updateEnableState() {
     // neither strip, cone nor planar polygon (every edge of the cylinder) is not offered.
     const std::optional<document::CommandOrError> edit = relabelSelection(workspace());
     if (edit && edit->isRefused()) {
-        explainDisabled(action(), false, tr("Cannot relabel: %1").arg(edit->error()));
+        explainDisabled(action(), false, tr("Cannot relabel: %1").arg(refusalText(*edit)));
         return;
     }
     explainDisabled(action(), edit.has_value(),

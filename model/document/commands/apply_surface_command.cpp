@@ -17,8 +17,7 @@ CommandOrError ApplySurfaceCommand::create(Document& document, int surfaceIndex,
                                            Changes changes, int mergeKey) {
     const auto problems = newSurface.validate();
     if (!problems.empty()) {
-        return CommandOrError(tr("The new shape cannot be applied: %1")
-                                  .arg(QString::fromStdString(problems.front())));
+        return CommandOrError(tr("The new shape cannot be applied"), problems.front());
     }
     return attempt(
         document, surfaceIndex, text,
@@ -40,8 +39,7 @@ CommandOrError ApplySurfaceCommand::createShown(Document& document, int surfaceI
     model::CompositeSurface after = document.surface(surfaceIndex);
     const auto problems = after.validate();
     if (!problems.empty()) {
-        return CommandOrError(tr("The new shape cannot be applied: %1")
-                                  .arg(QString::fromStdString(problems.front())));
+        return CommandOrError(tr("The new shape cannot be applied"), problems.front());
     }
     before.setId(after.id());
     auto* command = new ApplySurfaceCommand(document, surfaceIndex, std::move(before),

@@ -10,18 +10,19 @@ namespace devsurf::document {
 CommandOrError::CommandOrError(std::unique_ptr<QUndoCommand> command)
     : m_command(std::move(command)) {}
 
-CommandOrError::CommandOrError(QString error) : m_error(std::move(error)) {}
+CommandOrError::CommandOrError(QString error, std::optional<model::Problem> problem)
+    : m_error(std::move(error)), m_problem(std::move(problem)) {}
 
 CommandOrError::CommandOrError(CommandOrError&&) noexcept = default;
 CommandOrError& CommandOrError::operator=(CommandOrError&&) noexcept = default;
 CommandOrError::~CommandOrError() = default;
 
-QString pushOrExplain(Document& document, CommandOrError result) {
+bool push(Document& document, CommandOrError& result) {
     if (result.isRefused()) {
-        return result.error();
+        return false;
     }
     document.undoStack()->push(result.takeCommand().release());
-    return QString();
+    return true;
 }
 
 } // namespace devsurf::document

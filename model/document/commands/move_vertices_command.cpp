@@ -33,8 +33,7 @@ CommandOrError MoveVerticesCommand::createRotation(Document& document, int surfa
     try {
         motion = model::RigidMotion::rotationAbout(point, direction, angle);
     } catch (const model::ModelError& e) {
-        return CommandOrError(
-            tr("The vertices cannot be rotated: %1").arg(QString::fromStdString(e.what())));
+        return CommandOrError(tr("The vertices cannot be rotated"), e.problem());
     }
     const QString text = tr("Rotate %n vertices", nullptr, static_cast<int>(vertices.size()));
     return create(document, surfaceIndex, std::move(vertices), motion, text);

@@ -1,5 +1,7 @@
 #include "surface_edit_command.h"
 
+#include "model/model_error.h"
+
 #include "model/document/document.h"
 
 #include <exception>
@@ -62,8 +64,10 @@ CommandOrError SurfaceEditCommand::attempt(const Document& document, int surface
     try {
         model::CompositeSurface after = edit(before);
         return CommandOrError(make(before, std::move(after)));
+    } catch (const model::ModelError& e) {
+        return CommandOrError(refusal, e.problem());
     } catch (const std::exception& e) {
-        return CommandOrError(tr("%1: %2").arg(refusal, QString::fromStdString(e.what())));
+        return CommandOrError(refusal, model::internalProblem(e.what()));
     }
 }
 

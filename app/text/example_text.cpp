@@ -1,0 +1,38 @@
+#include "example_text.h"
+
+#include <QCoreApplication>
+
+namespace devsurf::app {
+
+QString exampleDescription(const std::string& name) {
+    if (name == "sheet") {
+        return QCoreApplication::translate("ExampleDialog",
+                                           "A flat rectangle of size × size strips.");
+    }
+    if (name == "annulus") {
+        return QCoreApplication::translate("ExampleDialog",
+                                           "A flat annulus of size rings cut by radial rulings.");
+    }
+    if (name == "cylinder") {
+        return QCoreApplication::translate("ExampleDialog",
+                                           "A closed cylinder of strips, size sectors around.");
+    }
+    if (name == "fig8") {
+        return QCoreApplication::translate(
+            "ExampleDialog",
+            "A flat square of size × size strips with curved creases, ready to fold: every "
+            "interior crease carries the curved-fold condition and the bottom corners are "
+            "pinned. Drag the middle vertices up (Drag tool, G).");
+    }
+    if (name == "fig6") {
+        return QCoreApplication::translate(
+            "ExampleDialog",
+            "Two strips joined by one curved crease with the curved-fold condition, the bottom "
+            "corners pinned; size intervals per curve. Drag a top corner up to fold it.");
+    }
+    return QCoreApplication::translate("ExampleDialog",
+                                       "A strip, a pointed strip, a cone and a planar patch; size "
+                                       "intervals per curve.");
+}
+
+} // namespace devsurf::app
