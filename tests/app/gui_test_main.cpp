@@ -14,7 +14,11 @@ int main(int argc, char** argv) {
     QStandardPaths::setTestModeEnabled(true);
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("DevSurfTests"));
-    QApplication::setApplicationName(QStringLiteral("tst_app"));
+    // A run in another language keeps its settings and recovery files apart (CTest may run
+    // both at once).
+    const QString language = qEnvironmentVariable("DEVSURF_TEST_LANGUAGE");
+    QApplication::setApplicationName(language.isEmpty() ? QStringLiteral("tst_app")
+                                                        : QStringLiteral("tst_app_") + language);
     devsurf::test::installTestLanguage();
     return devsurf::test::runAll(argc, argv);
 }
