@@ -324,6 +324,10 @@ QStringList SceneView::legendEntries() const {
     return d->overlay->legendEntries();
 }
 
+ViewOverlay::LegendContents SceneView::legendContents() const {
+    return d->overlay->legendContents();
+}
+
 QImage SceneView::grabOverlay() const {
     return d->overlay->grab().toImage();
 }

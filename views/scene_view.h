@@ -94,6 +94,8 @@ public:
     std::pair<int, int> rulingsDrawn() const;
     // The legend's entries, top to bottom: "Mountain fold", "CF Curved fold", "Smooth ruling"…
     QStringList legendEntries() const;
+    // What the legend shows (legendEntries() is its wording).
+    ViewOverlay::LegendContents legendContents() const;
     // What the overlay paints over the rendering (legend, badges, labels, scale bar).
     QImage grabOverlay() const;
     // The 3D view draws an orientation triad (x red, y green, z blue) in its lower left.

@@ -60,6 +60,19 @@ public:
     const std::vector<Badge>& badges() const { return m_badges; }
     // The legend's entries as written, top to bottom.
     QStringList legendEntries() const;
+    // What the legend shows, as state: the fold lines, the conditions' badges and the rulings.
+    struct LegendContents {
+        bool mountainFolds = false;
+        bool valleyFolds = false;
+        bool flatCreases = false;
+        std::vector<model::CreaseCondition> conditions;
+        bool smoothRulings = false;
+        bool sharpRulings = false;
+    };
+    LegendContents legendContents() const {
+        return {m_mountains,  m_valleys,       m_flatCreases,
+                m_conditions, m_smoothRulings, m_sharpRulings};
+    }
     bool showsMountainLegend() const { return m_mountains; }
     bool showsValleyLegend() const { return m_valleys; }
 

@@ -275,9 +275,11 @@ bool DragTool::press(const QPoint& pos) {
 bool DragTool::pressCrease(const QPoint& pos, const Pick& pick) {
     document::Document* doc = m_workspace->document();
     const model::CompositeSurface& surface = doc->surface(pick.surface);
+    m_refusal.reset();
     try {
         m_crease = std::make_unique<solver::CreaseDrag>(surface, pick.id);
     } catch (const solver::CreaseDragRefused& refused) {
+        m_refusal = refused.reason();
         // Not a crease (or nothing of it may move): say so, and the camera turns as usual.
         switch (refused.reason()) {
         case solver::CreaseDragRefusal::NoSuchEdge:

@@ -56,6 +56,8 @@ public:
     // Pins that hold a dragged vertex where the sheet cannot bend, as found at the press of a
     // vertex drag keeping lengths (said in the status bar while the mouse moves).
     const std::optional<model::HeldVertex>& heldAtPress() const { return m_held; }
+    // Why the last press on an edge did not drag it (said in the status bar); none if it did.
+    const std::optional<solver::CreaseDragRefusal>& creaseRefusal() const { return m_refusal; }
     // The axis in effect: the one of a held X, Y or Z key, else the chosen one.
     Axis axis() const { return m_heldAxis != Axis::Free ? m_heldAxis : m_chosenAxis; }
     Axis chosenAxis() const { return m_chosenAxis; }
@@ -159,6 +161,7 @@ private:
     // after the release). Measured: 0.2 ms on fig8, 43 ms on a sheet of 676 vertices with its
     // 100 boundary vertices pinned.
     std::optional<model::HeldVertex> m_held;
+    std::optional<solver::CreaseDragRefusal> m_refusal;
     static constexpr std::size_t kHeldCheckVertices = 2000;
     static constexpr std::size_t kHeldCheckPins = 100;
 };

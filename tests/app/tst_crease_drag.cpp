@@ -1,6 +1,7 @@
 #include "drag_tool.h"
 #include "main_window.h"
 #include "model/bspline_curve.h"
+#include "model/document/commands/apply_surface_command.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "rotate_tool.h"
@@ -96,7 +97,9 @@ private slots:
         QVERIFY(finished.wait(60000));
         QCOMPARE(finished.front().front().toBool(), true);
         QCOMPARE(s.doc->undoStack()->count(), stackAtPress + 1);
-        QCOMPARE(s.doc->undoStack()->undoText(), QStringLiteral("Drag crease 2"));
+        QVERIFY(test::undoCommand<document::ApplySurfaceCommand>(*s.doc) != nullptr);
+        QVERIFY(!s.window.dragTool()->creaseRefusal().has_value());
+        QVERIFY(s.doc->undoStack()->undoText().contains(QString::number(kCrease)));
 
         // Every interior control point of the crease moved by the same displacement, within
         // the plane of the flat sheet (z = 0), by more than a millimetre.
@@ -155,9 +158,11 @@ private slots:
         QSignalSpy messages(s.window.dragTool(), &app::DragTool::statusMessage);
         QTest::mousePress(s.gl, Qt::LeftButton, {}, *at);
         QVERIFY(!s.window.dragTool()->isDragging());
+        QCOMPARE(s.window.dragTool()->creaseRefusal(),
+                 std::optional(solver::CreaseDragRefusal::NotACrease));
         QVERIFY(!messages.isEmpty());
-        QVERIFY2(messages.back().front().toString().contains(QStringLiteral("not a crease")),
-                 qPrintable(messages.back().front().toString()));
+        const QString said = messages.back().front().toString();
+        QVERIFY2(said.contains(QString::number(kBoundary)), qPrintable(said)); // names the edge
         QTest::mouseMove(s.gl, *at + QPoint(0, -20));
         QTest::mouseRelease(s.gl, Qt::LeftButton, {}, *at + QPoint(0, -20));
         QCOMPARE(bytesOf(s.window), atPress);

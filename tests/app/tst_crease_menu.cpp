@@ -1,5 +1,6 @@
 #include "io/project_file.h"
 #include "main_window.h"
+#include "model/document/commands/crease_condition_command.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "panels/properties_panel.h"
@@ -66,12 +67,12 @@ private slots:
                                                  "actionStraightWhenUnfolded,actionNoCondition,|,"
                                                  "actionSmoothRulings,actionSharpRulings"));
         QCOMPARE(window.action("actionStraightWhenUnfolded")->text(),
-                 QStringLiteral("Straight when unfolded"));
-        // Under Tools.
+                 document::CreaseConditionCommand::conditionText(CreaseCondition::Straight));
+        // Under Tools (the menu of Tools ▸ Solve).
         bool underTools = false;
         for (QAction* menu : window.menuBar()->actions()) {
             if (menu->menu() != nullptr && menu->menu()->actions().contains(crease->menuAction())) {
-                underTools = menu->text() == QStringLiteral("&Tools");
+                underTools = menu->menu()->actions().contains(window.action("actionSolve"));
             }
         }
         QVERIFY(underTools);
@@ -85,16 +86,21 @@ private slots:
         QAction* smooth = window.action("actionSmoothRulings");
         QAction* sharp = window.action("actionSharpRulings");
         QVERIFY(!curved->isEnabled() && !smooth->isEnabled());
-        QVERIFY(curved->toolTip().contains(QStringLiteral("Select creases")));
+        // Disabled, an action says what to select; enabled, something else.
+        const QString selectCreases = curved->toolTip();
+        QVERIFY(!selectCreases.isEmpty());
         document::Selection* selection = window.workspace()->selection();
         selection->set({edgePick(sheet.crease)});
         QVERIFY(curved->isEnabled());
+        QVERIFY(curved->toolTip() != selectCreases);
         QVERIFY(!curved->isChecked());
         QVERIFY(!smooth->isEnabled());
-        QVERIFY(smooth->toolTip().contains(QStringLiteral("Select rulings")));
+        const QString selectRulings = smooth->toolTip();
+        QVERIFY(!selectRulings.isEmpty());
         selection->set({edgePick(sheet.innerRuling)});
         QVERIFY(!curved->isEnabled());
         QVERIFY(smooth->isEnabled() && sharp->isEnabled());
+        QVERIFY(smooth->toolTip() != selectRulings);
         QVERIFY(sharp->isChecked() && !smooth->isChecked()); // rulings start sharp
         selection->set({edgePick(sheet.boundaryRuling)});
         QVERIFY(!smooth->isEnabled() && !sharp->isEnabled());
@@ -124,8 +130,10 @@ private slots:
             QVERIFY(states.back() != states[states.size() - 2]);
             // The properties of one of them name the condition.
             window.workspace()->selection()->set({edgePick(sheet.crease)});
+            QVERIFY(window.propertiesPanel()->describedCrease().has_value());
+            QCOMPARE(window.propertiesPanel()->describedCrease()->edge, sheet.crease);
             const QString text = window.propertiesPanel()->summaryText();
-            QVERIFY2(text.contains(QStringLiteral("condition: ") + action->text()),
+            QVERIFY2(text.contains(document::CreaseConditionCommand::conditionText(condition)),
                      qPrintable(text));
             window.workspace()->selection()->set(
                 {edgePick(sheet.crease), edgePick(sheet.otherCrease)});
@@ -136,8 +144,8 @@ private slots:
         window.developmentView()->grabImage();
         QCOMPARE(window.surfaceView()->conditionBadges().size(), std::size_t(2));
         QCOMPARE(window.developmentView()->conditionBadges().size(), std::size_t(2));
-        QVERIFY(window.developmentView()->legendEntries().contains(
-            QStringLiteral("SU Straight when unfolded")));
+        QCOMPARE(window.developmentView()->legendContents().conditions,
+                 std::vector<CreaseCondition>{CreaseCondition::Straight});
         QCOMPARE(bytesOf(window), states[3]);
         for (int i = 2; i >= 0; --i) {
             window.action("actionUndo")->trigger();
@@ -159,38 +167,38 @@ private slots:
         const int undoSteps = window.action("actionUndo")->isEnabled() ? 1 : 0;
 
         // A ruling among the creases: the command's sentence names it.
+        QStatusBar* status = window.statusBar();
         window.workspace()->selection()->set({edgePick(sheet.crease), edgePick(sheet.innerRuling)});
         QAction* geodesic = window.action("actionGeodesic");
         QVERIFY(geodesic->isEnabled());
+        status->clearMessage();
         geodesic->trigger();
         QCOMPARE(bytesOf(window), before);
-        QCOMPARE(window.statusBar()->currentMessage(),
-                 QStringLiteral("Edge %1 is a ruling; conditions apply to creases (curves "
-                                "between two patches).")
-                     .arg(sheet.innerRuling));
+        QVERIFY2(status->currentMessage().contains(QString::number(sheet.innerRuling)),
+                 qPrintable(status->currentMessage()));
         QVERIFY(!geodesic->isChecked());
 
         // The condition the crease already has.
         window.workspace()->selection()->set({edgePick(sheet.crease)});
+        status->clearMessage();
         window.action("actionNoCondition")->trigger();
         QCOMPARE(bytesOf(window), before);
-        QVERIFY(window.statusBar()->currentMessage().contains(QStringLiteral("already")));
+        QVERIFY(!status->currentMessage().isEmpty());
         QVERIFY(window.action("actionNoCondition")->isChecked());
 
         // Sharp on a ruling that is sharp; smooth with a boundary ruling among the edges.
         window.workspace()->selection()->set({edgePick(sheet.innerRuling)});
+        status->clearMessage();
         window.action("actionSharpRulings")->trigger();
         QCOMPARE(bytesOf(window), before);
-        QCOMPARE(window.statusBar()->currentMessage(),
-                 QStringLiteral("The selected rulings are already sharp."));
+        QVERIFY(!status->currentMessage().isEmpty());
         window.workspace()->selection()->set(
             {edgePick(sheet.innerRuling), edgePick(sheet.boundaryRuling)});
+        status->clearMessage();
         window.action("actionSmoothRulings")->trigger();
         QCOMPARE(bytesOf(window), before);
-        QVERIFY2(
-            window.statusBar()->currentMessage().contains(
-                QStringLiteral("Edge %1 is a ruling on the boundary").arg(sheet.boundaryRuling)),
-            qPrintable(window.statusBar()->currentMessage()));
+        QVERIFY2(status->currentMessage().contains(QString::number(sheet.boundaryRuling)),
+                 qPrintable(status->currentMessage()));
         QCOMPARE(window.action("actionUndo")->isEnabled() ? 1 : 0, undoSteps);
     }
 
@@ -202,19 +210,22 @@ private slots:
         const Sheet sheet = sheetEdges(surfaceOf(window));
         const std::string before = bytesOf(window);
         window.workspace()->selection()->set({edgePick(sheet.innerRuling)});
-        QVERIFY(window.propertiesPanel()->summaryText().contains(QStringLiteral("Sharp between")));
+        QVERIFY(window.propertiesPanel()->describedPick() == edgePick(sheet.innerRuling));
+        const QString sharpText = window.propertiesPanel()->summaryText();
+        QVERIFY(!sharpText.isEmpty());
         window.action("actionSmoothRulings")->trigger();
         QVERIFY(surfaceOf(window).edge(sheet.innerRuling).smooth);
         QVERIFY(window.action("actionSmoothRulings")->isChecked());
         QVERIFY(!window.action("actionSharpRulings")->isChecked());
+        // The properties follow: the same ruling, now described as smooth.
+        QVERIFY(window.propertiesPanel()->describedPick() == edgePick(sheet.innerRuling));
         const QString text = window.propertiesPanel()->summaryText();
-        QVERIFY2(text.contains(QStringLiteral("Smooth between patches")), qPrintable(text));
+        QVERIFY2(!text.isEmpty() && text != sharpText, qPrintable(text));
         const std::string smooth = bytesOf(window);
         QVERIFY(smooth != before);
         window.developmentView()->grabImage();
         QCOMPARE(window.developmentView()->rulingsDrawn(), std::make_pair(1, 5));
-        QVERIFY(
-            window.developmentView()->legendEntries().contains(QStringLiteral("Smooth ruling")));
+        QVERIFY(window.developmentView()->legendContents().smoothRulings);
 
         window.action("actionUndo")->trigger();
         QCOMPARE(bytesOf(window), before);

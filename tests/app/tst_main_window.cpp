@@ -3,6 +3,7 @@
 #include "io/project_file.h"
 #include "main_window.h"
 #include "model/document/commands/command_or_error.h"
+#include "model/document/commands/crease_condition_command.h"
 #include "model/document/commands/move_vertices_command.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
@@ -15,6 +16,7 @@
 #include "views/development_view.h"
 #include "views/surface_view.h"
 #include "views/vtk_opengl_widget.h"
+#include "window_test_support.h"
 #include "workspace.h"
 
 #include <QAction>
@@ -105,7 +107,7 @@ private slots:
         const document::Pick expected{document::Pick::Kind::Vertex, 0, 5};
         QVERIFY(window.workspace()->selection()->contains(expected));
         QVERIFY(window.developmentView()->highlightedPicks().count(expected) == 1);
-        QVERIFY(window.propertiesPanel()->summaryText().contains("Vertex 5"));
+        QVERIFY(window.propertiesPanel()->describedPick() == expected);
         QCOMPARE(window.propertiesPanel()->coordinateEditor(0)->value(), 100.0);
     }
 
@@ -124,14 +126,27 @@ private slots:
         const model::EdgeId crease = doc.surface(0).edgeBetween(4, 5);
         QVERIFY(crease != model::kInvalidId);
         window.workspace()->selection()->add({document::Pick::Kind::Edge, 0, crease});
-        const QString text = window.propertiesPanel()->summaryText();
-        QVERIFY2(text.contains("Valley fold of 30.0°"), qPrintable(text));
-        QVERIFY2(text.contains("condition: No condition"), qPrintable(text));
-        // A boundary curve says so, with no fold.
+        const app::PropertiesPanel* panel = window.propertiesPanel();
+        const QString text = panel->summaryText();
+        QVERIFY(panel->describedPick() == (document::Pick{document::Pick::Kind::Edge, 0, crease}));
+        QVERIFY(panel->describedCrease().has_value());
+        QCOMPARE(panel->describedCrease()->edge, crease);
+        QCOMPARE(panel->describedCrease()->assignment, model::FoldAssignment::Valley);
+        QCOMPARE(qRound(panel->describedCrease()->foldAngleDegrees * 10.0), -300);
+        QVERIFY2(text.contains(QStringLiteral("30.0")), qPrintable(text));
+        QCOMPARE(doc.surface(0).edge(crease).condition, model::CreaseCondition::None);
+        QVERIFY2(text.contains(
+                     document::CreaseConditionCommand::conditionText(model::CreaseCondition::None)),
+                 qPrintable(text));
+        // A boundary curve is described with no fold.
         window.workspace()->selection()->clear();
-        window.workspace()->selection()->add(
-            {document::Pick::Kind::Edge, 0, doc.surface(0).edgeBetween(0, 1)});
-        QVERIFY(window.propertiesPanel()->summaryText().contains("boundary curve"));
+        const model::EdgeId boundary = doc.surface(0).edgeBetween(0, 1);
+        QCOMPARE(doc.surface(0).facesOfEdge(boundary).size(), std::size_t(1));
+        window.workspace()->selection()->add({document::Pick::Kind::Edge, 0, boundary});
+        QVERIFY(panel->describedPick() ==
+                (document::Pick{document::Pick::Kind::Edge, 0, boundary}));
+        QVERIFY(!panel->describedCrease().has_value());
+        QVERIFY(!panel->summaryText().isEmpty());
     }
 
     void patchTreeAndViewsShareTheSelection() {
@@ -175,7 +190,9 @@ private slots:
             *doc, document::MoveVerticesCommand::createTranslation(*doc, 0, {5}, {0, 0, 10}));
         QVERIFY(refusal.isEmpty());
         QVERIFY(window.isWindowModified());
-        QVERIFY(window.action("actionUndo")->text().contains("Move"));
+        QVERIFY(devsurf::test::undoCommand<document::MoveVerticesCommand>(*doc) != nullptr);
+        QVERIFY(window.action("actionUndo")->isEnabled());
+        QVERIFY(window.action("actionUndo")->text().contains(doc->undoStack()->undoText()));
         window.action("actionUndo")->trigger();
         QVERIFY(!window.isWindowModified());
         window.action("actionRedo")->trigger();

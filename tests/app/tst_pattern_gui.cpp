@@ -1,4 +1,5 @@
 #include "../io/dxf_check.h"
+#include "io/pattern/fabrication_report.h"
 #include "io/project_file.h"
 #include "main_window.h"
 #include "model/examples.h"
@@ -63,7 +64,8 @@ private slots:
         dialog.setSettings(bigSheet());
         dialog.rebuildPattern();
         QCOMPARE(dialog.reportTable()->rowCount(), int(dialog.pattern().pieces.size()));
-        QCOMPARE(dialog.reportTable()->item(0, 5)->text(), QStringLiteral("yes"));
+        QVERIFY(io::fabricationReport(dialog.pattern()).pieces.front().fitsSheet);
+        QCOMPARE(dialog.reportTable()->item(0, 5)->text(), app::PatternExportDialog::tr("yes"));
         QVERIFY(dialog.warningLabel()->isHidden());
         for (const char* format : {"dxf", "svg", "pdf", "fold"}) {
             dialog.formatBox()->setCurrentIndex(int(*io::patternFormatFromName(format)));
@@ -89,8 +91,9 @@ private slots:
         dialog.setSettings(settings);
         dialog.rebuildPattern();
         QVERIFY(dialog.warningLabel()->isVisible());
-        QVERIFY(dialog.warningLabel()->text().contains(QStringLiteral("does not fit")));
-        QCOMPARE(dialog.reportTable()->item(0, 5)->text(), QStringLiteral("no"));
+        QVERIFY(!dialog.warningLabel()->text().isEmpty());
+        QVERIFY(!io::fabricationReport(dialog.pattern()).pieces.front().fitsSheet);
+        QCOMPARE(dialog.reportTable()->item(0, 5)->text(), app::PatternExportDialog::tr("no"));
     }
 
     void fileMenuHasExportAndPrint() {

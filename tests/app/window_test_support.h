@@ -7,20 +7,49 @@
 #include "model/document/document.h"
 #include "solve_controller.h"
 #include "solver/worker/solver_worker.h"
+#include "translations.h"
 #include "workspace.h"
 
 #include <QCoreApplication>
+#include <QLocale>
 #include <QSignalSpy>
 #include <QString>
 #include <QTest>
+#include <QUndoStack>
 
 #include <string>
 
 namespace devsurf::test {
 
+// The interface language the tests run in: US English, or the one DEVSURF_TEST_LANGUAGE names
+// ("de", "ja").
+inline QLocale testLocale() {
+    const QString language = qEnvironmentVariable("DEVSURF_TEST_LANGUAGE");
+    return language.isEmpty() ? QLocale(QLocale::English, QLocale::UnitedStates)
+                              : QLocale(language);
+}
+
+// Makes testLocale() the default locale and installs its translations (tests that switch the
+// language call it again afterwards); false if DevSurf's translation was not found.
+inline bool installTestLanguage() {
+    QLocale::setDefault(testLocale());
+    return app::installTranslations(QLocale());
+}
+
 // The project as it would be saved: byte-exact comparisons of undo and redo.
 inline std::string bytesOf(const app::MainWindow& window) {
     return io::encodeProject(window.workspace()->document()->project());
+}
+
+// The step undo would undo next as a command of class C (the first child of a macro, such as
+// a solve's), or null if it is none.
+template <class C> const C* undoCommand(const document::Document& doc) {
+    const QUndoStack* stack = doc.undoStack();
+    const QUndoCommand* step = stack->index() > 0 ? stack->command(stack->index() - 1) : nullptr;
+    if (step != nullptr && step->childCount() > 0) {
+        step = step->child(0);
+    }
+    return dynamic_cast<const C*>(step);
 }
 
 // Shows `window` active (keyboard shortcuts reach it) with the built-in example `name`; false

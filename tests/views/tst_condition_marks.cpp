@@ -87,8 +87,8 @@ private slots:
             {edges.geodesic, CreaseCondition::Geodesic},
             {edges.straight, CreaseCondition::Straight}};
         // The sheet is flat: its creases are not folded.
-        const QStringList legend{"Crease, not folded",        "CF Curved fold", "G Geodesic",
-                                 "SU Straight when unfolded", "Smooth ruling",  "Sharp ruling"};
+        const std::vector<CreaseCondition> conditions{
+            CreaseCondition::CurvedFold, CreaseCondition::Geodesic, CreaseCondition::Straight};
         for (SceneView* view :
              {static_cast<SceneView*>(views.spatial), static_cast<SceneView*>(views.development)}) {
             const auto badges = view->conditionBadges();
@@ -112,7 +112,19 @@ private slots:
             }
             // One of the six rulings between two patches is smooth.
             QCOMPARE(view->rulingsDrawn(), std::make_pair(1, 5));
-            QCOMPARE(view->legendEntries(), legend);
+            // The legend: creases not folded, the three conditions by their badges, smooth and
+            // sharp rulings.
+            const ViewOverlay::LegendContents legend = view->legendContents();
+            QVERIFY(legend.flatCreases && !legend.mountainFolds && !legend.valleyFolds);
+            QCOMPARE(legend.conditions, conditions);
+            QVERIFY(legend.smoothRulings && legend.sharpRulings);
+            const QStringList entries = view->legendEntries();
+            QCOMPARE(entries.size(), qsizetype(6));
+            for (std::size_t i = 0; i < conditions.size(); ++i) {
+                QVERIFY2(entries[qsizetype(i) + 1].startsWith(
+                             ViewOverlay::badgeText(conditions[i]) + QLatin1Char(' ')),
+                         qPrintable(entries.join(',')));
+            }
             // The badges are painted in their colours.
             const QImage overlay = view->grabOverlay();
             for (const CreaseCondition condition :
@@ -135,7 +147,10 @@ private slots:
              {static_cast<SceneView*>(views.spatial), static_cast<SceneView*>(views.development)}) {
             QVERIFY(view->conditionBadges().empty());
             QCOMPARE(view->rulingsDrawn(), std::make_pair(0, 6));
-            QCOMPARE(view->legendEntries(), QStringList{"Crease, not folded"});
+            const ViewOverlay::LegendContents legend = view->legendContents();
+            QVERIFY(legend.flatCreases && legend.conditions.empty());
+            QVERIFY(!legend.smoothRulings && !legend.sharpRulings);
+            QCOMPARE(view->legendEntries().size(), qsizetype(1));
             for (const CreaseCondition condition :
                  {CreaseCondition::CurvedFold, CreaseCondition::Geodesic,
                   CreaseCondition::Straight}) {

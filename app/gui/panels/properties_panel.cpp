@@ -32,8 +32,9 @@ QString spaceText(const model::SplineSpace& space) {
 }
 
 // A crease: its two patches (left and right of the edge's direction, seen from the normal
-// side), its condition and how it is folded.
-QString creaseText(const model::CompositeSurface& surface, model::EdgeId edge) {
+// side), its condition and how it is folded; `found` is the crease as measured.
+QString creaseText(const model::CompositeSurface& surface, model::EdgeId edge,
+                   std::optional<model::Crease>& found) {
     const model::EdgeRecord& record = surface.edge(edge);
     QString text = PropertiesPanel::tr("A crease between patches %1 (left) and %2 (right); "
                                        "condition: %3.<br>");
@@ -41,6 +42,7 @@ QString creaseText(const model::CompositeSurface& surface, model::EdgeId edge) {
         if (crease.edge != edge) {
             continue;
         }
+        found = crease;
         text = text.arg(crease.left.face)
                    .arg(crease.right.face)
                    .arg(document::CreaseConditionCommand::conditionText(record.condition));
@@ -102,6 +104,8 @@ void PropertiesPanel::refresh() {
     const auto& picks = m_selection->picks();
     const auto& surfaces = m_document->project().surfaces;
     m_positionBox->setVisible(false);
+    m_described.reset();
+    m_crease.reset();
     QString text;
     if (picks.empty()) {
         std::size_t faces = 0;
@@ -131,6 +135,7 @@ void PropertiesPanel::refresh() {
             return;
         }
         const model::CompositeSurface& surface = surfaces[static_cast<std::size_t>(pick.surface)];
+        m_described = pick;
         switch (pick.kind) {
         case document::Pick::Kind::Vertex:
             if (surface.hasVertex(pick.id)) {
@@ -155,7 +160,7 @@ void PropertiesPanel::refresh() {
                                static_cast<int>(edge.controlPoints.size()))
                                 .arg(spaceText(edge.space));
                     if (faces.size() == 2) {
-                        text += creaseText(surface, pick.id);
+                        text += creaseText(surface, pick.id, m_crease);
                     } else {
                         text += tr("A boundary curve of patch %1.")
                                     .arg(faces.empty() ? 0u : faces.front());
@@ -189,6 +194,9 @@ void PropertiesPanel::refresh() {
             }
             break;
         }
+    }
+    if (text.isEmpty()) {
+        m_described.reset(); // no such entity
     }
     m_summary->setText(text);
     m_refreshing = false;

@@ -1,6 +1,11 @@
 #pragma once
 
+#include "model/creases.h"
+#include "model/document/selection.h"
+
 #include <QWidget>
+
+#include <optional>
 
 class QDoubleSpinBox;
 class QFormLayout;
@@ -8,7 +13,6 @@ class QLabel;
 
 namespace devsurf::document {
 class Document;
-class Selection;
 } // namespace devsurf::document
 
 namespace devsurf::app {
@@ -24,6 +28,10 @@ public:
     // The position editors (x, y, z) of a single selected vertex; hidden otherwise.
     QDoubleSpinBox* coordinateEditor(int axis) const { return m_coordinates[axis]; }
     QString summaryText() const;
+    // The single selected entity the summary describes (none: nothing or several selected).
+    const std::optional<document::Pick>& describedPick() const { return m_described; }
+    // The crease the summary describes, with its fold as measured (none: no crease described).
+    const std::optional<model::Crease>& describedCrease() const { return m_crease; }
 
 private:
     void refresh();
@@ -35,6 +43,8 @@ private:
     QWidget* m_positionBox;
     QDoubleSpinBox* m_coordinates[3];
     bool m_refreshing = false;
+    std::optional<document::Pick> m_described;
+    std::optional<model::Crease> m_crease;
 };
 
 } // namespace devsurf::app
