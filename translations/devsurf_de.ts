@@ -11,6 +11,19 @@
     </message>
 </context>
 <context>
+    <name>BoundedPattern</name>
+    <message>
+        <location filename="../app/gui/bounded_pattern.cpp" line="25"/>
+        <source>Surface %1 reaches %2 m from the origin: even at a tolerance of 10 mm its pattern would take minutes to build, so there is none. Move its far control points closer.</source>
+        <translation>Fläche %1 reicht %2 m vom Ursprung weg: Selbst bei einer Toleranz von 10 mm würde ihr Schnittmuster Minuten brauchen, daher gibt es keines. Rücken Sie ihre fernen Kontrollpunkte näher heran.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/bounded_pattern.cpp" line="38"/>
+        <source>Surface %1 reaches %2 m from the origin: its curves are sampled to %3 mm, since %4 mm would take minutes.</source>
+        <translation>Fläche %1 reicht %2 m vom Ursprung weg: Ihre Kurven werden auf %3 mm abgetastet, da %4 mm Minuten dauern würde.</translation>
+    </message>
+</context>
+<context>
     <name>CreaseConditionCommand</name>
     <message>
         <location filename="../model/document/commands/crease_condition_command.cpp" line="8"/>
@@ -137,6 +150,29 @@
     </message>
 </context>
 <context>
+    <name>OutputProblem</name>
+    <message>
+        <location filename="../app/gui/output_problem_text.cpp" line="14"/>
+        <source>“%1” is the project file of this design: exporting over it would destroy the design. Choose another file name.</source>
+        <translation>„%1“ ist die Projektdatei dieses Entwurfs: Ein Export darüber würde den Entwurf zerstören. Wählen Sie einen anderen Dateinamen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/output_problem_text.cpp" line="19"/>
+        <source>“%1” is a folder. Choose a file name.</source>
+        <translation>„%1“ ist ein Ordner. Wählen Sie einen Dateinamen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/output_problem_text.cpp" line="22"/>
+        <source>“%1” is a device, pipe or socket, not a file. Choose a file name.</source>
+        <translation>„%1“ ist ein Gerät, eine Pipe oder ein Socket, keine Datei. Wählen Sie einen Dateinamen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/output_problem_text.cpp" line="31"/>
+        <source>There is not enough memory to open “%1”.</source>
+        <translation>Es ist nicht genug Speicher vorhanden, um „%1“ zu öffnen.</translation>
+    </message>
+</context>
+<context>
     <name>PinVerticesCommand</name>
     <message>
         <location filename="../model/document/commands/pin_vertices_command.cpp" line="9"/>
@@ -183,62 +219,63 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="33"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="36"/>
         <source>Laser bed 600 × 400 mm</source>
         <translation>Laserbett 600 × 400 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="34"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
         <source>A4 (210 × 297 mm)</source>
         <translation>A4 (210 × 297 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="35"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="38"/>
         <source>A3 (297 × 420 mm)</source>
         <translation>A3 (297 × 420 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="36"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="39"/>
         <source>Letter (8.5 × 11 in)</source>
         <translation>Letter (8,5 × 11 in)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="40"/>
         <source>Custom</source>
         <translation>Benutzerdefiniert</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="34"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="35"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="43"/>
         <source>Nothing to print</source>
         <translation>Nichts zu drucken</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="36"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="45"/>
         <source>The design has no surface to develop.</source>
         <translation>Der Entwurf hat keine Fläche, die abgewickelt werden kann.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="52"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="61"/>
         <source>Printing the cutting pattern…</source>
         <translation>Der Schnittmusterplan wird gedruckt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="52"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="61"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="140"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="150"/>
         <source>Export &amp;Cutting Pattern…</source>
         <translation>&amp;Schnittmuster exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="142"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="152"/>
         <source>&amp;Print…</source>
         <translation>&amp;Drucken…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="145"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="155"/>
         <source>Print Pre&amp;view…</source>
         <translation>Druck&amp;vorschau…</translation>
     </message>
@@ -310,7 +347,7 @@
 <context>
     <name>SceneView</name>
     <message>
-        <location filename="../views/quality_colours.cpp" line="144"/>
+        <location filename="../views/quality_colours.cpp" line="84"/>
         <source>Developability
 |det(a-b, a&apos;, b&apos;)|
 (ratio)</source>
@@ -319,14 +356,14 @@
 (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="147"/>
+        <location filename="../views/quality_colours.cpp" line="87"/>
         <source>Flatness δ
 (ratio)</source>
         <translation>Ebenheit δ
 (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="149"/>
+        <location filename="../views/quality_colours.cpp" line="89"/>
         <source>Angle defect |K|
 (rad)</source>
         <translation>Winkeldefekt |K|
@@ -684,13 +721,14 @@
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="516"/>
+        <location filename="../app/gui/drag_tool.cpp" line="521"/>
+        <location filename="../app/gui/drag_tool.cpp" line="539"/>
         <source>The new shape cannot be applied: %1</source>
         <translation>Die neue Form kann nicht übernommen werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="530"/>
-        <location filename="../app/gui/drag_tool.cpp" line="542"/>
+        <location filename="../app/gui/drag_tool.cpp" line="535"/>
+        <location filename="../app/gui/drag_tool.cpp" line="553"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -746,44 +784,45 @@
 <context>
     <name>devsurf::app::ExportJsonReaction</name>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="109"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="110"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="94"/>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="111"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="95"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="112"/>
         <source>Export Interchange JSON</source>
         <translation>Austausch-JSON exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="95"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="96"/>
         <source>“%1” ends in .%2, but this command writes interchange JSON. Export to “%3” instead?</source>
         <translation>„%1“ endet auf .%2, dieser Befehl schreibt aber Austausch-JSON. Stattdessen nach „%3“ exportieren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="100"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="101"/>
         <source>Export as .json</source>
         <translation>Als .json exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="113"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="114"/>
         <source>Interchange JSON (*.json)</source>
         <translation>Austausch-JSON (*.json)</translation>
     </message>
     <message>
         <location filename="../app/gui/reactions/file_reactions.cpp" line="122"/>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="125"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="129"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="132"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="120"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="127"/>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="126"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="133"/>
         <source>The design cannot be exported: %1</source>
         <translation>Der Entwurf kann nicht exportiert werden: %1</translation>
     </message>
@@ -791,12 +830,12 @@
 <context>
     <name>devsurf::app::ExportPatternReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="73"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="82"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="77"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="87"/>
         <source>Exported the cutting pattern</source>
         <translation>Schnittmuster exportiert</translation>
     </message>
@@ -894,8 +933,8 @@
         <translation>Auswahl &amp;aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <location filename="../app/gui/main_window.cpp" line="186"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
@@ -1437,12 +1476,12 @@
 <context>
     <name>devsurf::app::OpenReaction</name>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="32"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="33"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="34"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="35"/>
         <source>DevSurf projects (*.devsurf)</source>
         <translation>DevSurf-Projekte (*.devsurf)</translation>
     </message>
@@ -1450,12 +1489,12 @@
 <context>
     <name>devsurf::app::OpenRecentReaction</name>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="62"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="63"/>
         <source>No recent files</source>
         <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="66"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="67"/>
         <source>Clear Recent Files</source>
         <translation>Liste leeren</translation>
     </message>
@@ -1499,237 +1538,237 @@
 <context>
     <name>devsurf::app::PatternExportDialog</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="82"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="85"/>
         <source>DXF drawing (*.dxf)</source>
         <translation>DXF-Zeichnung (*.dxf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="84"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="87"/>
         <source>SVG image (*.svg)</source>
         <translation>SVG-Bild (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="86"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="89"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF-Dokument (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="88"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="91"/>
         <source>FOLD crease pattern (*.fold)</source>
         <translation>FOLD-Faltmuster (*.fold)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="96"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="330"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="99"/>
         <location filename="../app/gui/pattern_export_dialog.cpp" line="339"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="348"/>
         <source>Export Cutting Pattern</source>
         <translation>Schnittmuster exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
         <source>DXF (laser and plotter cutters)</source>
         <translation>DXF (Laser- und Plotterschneider)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
         <source>SVG (vinyl and paper cutters)</source>
         <translation>SVG (Folien- und Papierschneider)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="101"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
         <source>PDF (print at 1:1, tiled)</source>
         <translation>PDF (Druck 1:1, gekachelt)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="101"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
         <source>FOLD (origami simulators)</source>
         <translation>FOLD (Origami-Simulatoren)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="102"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="107"/>
         <source>&amp;Polylines</source>
         <translation>&amp;Polylinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="108"/>
         <source>S&amp;plines</source>
         <translation>S&amp;plines</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="112"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="115"/>
         <source>DXF &amp;R12 (for old cutter software)</source>
         <translation>DXF &amp;R12 (für alte Schneidsoftware)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="114"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="117"/>
         <source>Curves:</source>
         <translation>Kurven:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="120"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="138"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="154"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="123"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="141"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="157"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="121"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
         <source>&amp;Tolerance:</source>
         <translation>&amp;Toleranz:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Cut</source>
         <translation>Schnitt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Mountain</source>
         <translation>Berg</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Valley</source>
         <translation>Tal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Crease</source>
         <translation>Falz</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Rulings (score)</source>
         <translation>Erzeugende (ritzen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Seam</source>
         <translation>Naht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
         <source>Labels</source>
         <translation>Beschriftungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="134"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="137"/>
         <source>Layers:</source>
         <translation>Ebenen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="139"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="142"/>
         <source>as &amp;glue tabs</source>
         <translation>als &amp;Klebelaschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="143"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="146"/>
         <source>&amp;Seam allowance:</source>
         <translation>&amp;Nahtzugabe:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="161"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
         <source>S&amp;heet:</source>
         <translation>&amp;Bogen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
         <source>A4</source>
         <translation>A4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
         <source>A3</source>
         <translation>A3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
         <source>Letter</source>
         <translation>Letter</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="165"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
         <source>P&amp;aper (PDF):</source>
         <translation>P&amp;apier (PDF):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
         <source>Piece</source>
         <translation>Teil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
         <source>Sheet</source>
         <translation>Bogen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
         <source>Size (mm)</source>
         <translation>Größe (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="173"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Area (mm²)</source>
         <translation>Fläche (mm²)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="173"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Isometry error (mm)</source>
         <translation>Isometriefehler (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
         <source>Fits sheet</source>
         <translation>Passt auf Bogen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
         <source>Overlaps</source>
         <translation>Überlappungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="181"/>
         <source>Fabrication report</source>
         <translation>Fertigungsbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="185"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="188"/>
         <source>&amp;Export…</source>
         <translation>&amp;Exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="292"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="298"/>
         <source>itself</source>
         <translation>sich selbst</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="299"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="304"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="305"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="310"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="300"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="306"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
         <source>no</source>
         <translation>nein</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="315"/>
         <source>%n piece(s)</source>
         <translation>
             <numerusform>%n Teil</numerusform>
@@ -1737,7 +1776,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="310"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="316"/>
         <source>%n sheet(s)</source>
         <translation>
             <numerusform>%n Bogen</numerusform>
@@ -1745,32 +1784,34 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="312"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="318"/>
         <source>largest isometry error %1 mm</source>
         <translation>größter Isometriefehler %1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="328"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="337"/>
         <source>Some pieces overlap and cannot be cut as laid out. Export anyway?</source>
         <translation>Einige Teile überlappen sich und können so nicht geschnitten werden. Trotzdem exportieren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="329"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="338"/>
         <source>The pattern has problems (see the report). Export anyway?</source>
         <translation>Das Schnittmuster hat Probleme (siehe Bericht). Trotzdem exportieren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="358"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
         <source>Writing the cutting pattern…</source>
         <translation>Das Schnittmuster wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="358"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="369"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="365"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="375"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="389"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
@@ -1811,17 +1852,17 @@
 <context>
     <name>devsurf::app::PrintPatternReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="97"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="107"/>
         <source>Print Cutting Pattern</source>
         <translation>Schnittmuster drucken</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="102"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="112"/>
         <source>Printing failed</source>
         <translation>Drucken fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="103"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="113"/>
         <source>The pages could not be sent to the printer.</source>
         <translation>Die Seiten konnten nicht an den Drucker gesendet werden.</translation>
     </message>
@@ -1829,7 +1870,7 @@
 <context>
     <name>devsurf::app::PrintPreviewReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="123"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="133"/>
         <source>Print Preview: Cutting Pattern</source>
         <translation>Druckvorschau: Schnittmuster</translation>
     </message>
@@ -2587,7 +2628,7 @@
 <context>
     <name>devsurf::app::Workspace</name>
     <message numerus="yes">
-        <location filename="../app/gui/workspace.cpp" line="82"/>
+        <location filename="../app/gui/workspace.cpp" line="84"/>
         <source>… and %n more problem(s).</source>
         <translation>
             <numerusform>… und %n weiteres Problem.</numerusform>
@@ -2595,87 +2636,89 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="102"/>
+        <location filename="../app/gui/workspace.cpp" line="104"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="105"/>
+        <location filename="../app/gui/workspace.cpp" line="107"/>
         <source>Unsaved changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="106"/>
+        <location filename="../app/gui/workspace.cpp" line="108"/>
         <source>%1 has unsaved changes. Do you want to save them?</source>
         <translation>%1 hat ungespeicherte Änderungen. Möchten Sie sie speichern?</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="120"/>
+        <location filename="../app/gui/workspace.cpp" line="122"/>
         <source>Opened %1</source>
         <translation>%1 geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="127"/>
+        <location filename="../app/gui/workspace.cpp" line="129"/>
+        <location filename="../app/gui/workspace.cpp" line="132"/>
         <source>Cannot open file</source>
         <translation>Datei kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="141"/>
+        <location filename="../app/gui/workspace.cpp" line="146"/>
         <source>Save Project As</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="144"/>
+        <location filename="../app/gui/workspace.cpp" line="149"/>
         <source>untitled.devsurf</source>
         <translation>unbenannt.devsurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="146"/>
+        <location filename="../app/gui/workspace.cpp" line="151"/>
         <source>DevSurf projects (*.devsurf)</source>
         <translation>DevSurf-Projekte (*.devsurf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="160"/>
+        <location filename="../app/gui/workspace.cpp" line="165"/>
         <source>Cannot save file</source>
         <translation>Datei kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="167"/>
+        <location filename="../app/gui/workspace.cpp" line="172"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="174"/>
+        <location filename="../app/gui/workspace.cpp" line="179"/>
         <source>New design from the example “%1”</source>
         <translation>Neuer Entwurf aus dem Beispiel „%1“</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="176"/>
+        <location filename="../app/gui/workspace.cpp" line="181"/>
         <source>Cannot create the example</source>
         <translation>Das Beispiel kann nicht erzeugt werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="187"/>
+        <location filename="../app/gui/workspace.cpp" line="192"/>
         <source>Recovered unsaved work</source>
         <translation>Ungespeicherte Arbeit wiederhergestellt</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="190"/>
+        <location filename="../app/gui/workspace.cpp" line="195"/>
+        <location filename="../app/gui/workspace.cpp" line="198"/>
         <source>Cannot recover</source>
         <translation>Wiederherstellen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="203"/>
+        <location filename="../app/gui/workspace.cpp" line="211"/>
         <source>an untitled design</source>
         <translation>einem unbenannten Entwurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="205"/>
+        <location filename="../app/gui/workspace.cpp" line="213"/>
         <source>Recover unsaved work</source>
         <translation>Ungespeicherte Arbeit wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="206"/>
+        <location filename="../app/gui/workspace.cpp" line="214"/>
         <source>DevSurf did not close properly last time. Recover the unsaved changes to %1 from %2?</source>
         <translation>DevSurf wurde zuletzt nicht ordnungsgemäß beendet. Die ungespeicherten Änderungen an %1 vom %2 wiederherstellen?</translation>
     </message>
@@ -2693,7 +2736,7 @@
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="547"/>
+        <location filename="../views/scene_view.cpp" line="569"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>Fläche %1 ist ungültig und wird nicht angezeigt.</translation>
     </message>
@@ -2815,25 +2858,6 @@
         <location filename="../app/gui/main.cpp" line="35"/>
         <source>Start with a built-in example.</source>
         <translation>Mit einem eingebauten Beispiel beginnen.</translation>
-    </message>
-</context>
-<context>
-    <name>OutputProblem</name>
-    <message>
-        <source>“%1” is the project file of this design: exporting over it would destroy the design. Choose another file name.</source>
-        <translation>„%1“ ist die Projektdatei dieses Entwurfs: Ein Export darüber würde den Entwurf zerstören. Wählen Sie einen anderen Dateinamen.</translation>
-    </message>
-    <message>
-        <source>“%1” is a folder. Choose a file name.</source>
-        <translation>„%1“ ist ein Ordner. Wählen Sie einen Dateinamen.</translation>
-    </message>
-    <message>
-        <source>“%1” is a device, pipe or socket, not a file. Choose a file name.</source>
-        <translation>„%1“ ist ein Gerät, eine Pipe oder ein Socket, keine Datei. Wählen Sie einen Dateinamen.</translation>
-    </message>
-    <message>
-        <source>There is not enough memory to open “%1”.</source>
-        <translation>Es ist nicht genug Speicher vorhanden, um „%1“ zu öffnen.</translation>
     </message>
 </context>
 </TS>

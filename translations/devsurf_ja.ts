@@ -11,6 +11,19 @@
     </message>
 </context>
 <context>
+    <name>BoundedPattern</name>
+    <message>
+        <location filename="../app/gui/bounded_pattern.cpp" line="25"/>
+        <source>Surface %1 reaches %2 m from the origin: even at a tolerance of 10 mm its pattern would take minutes to build, so there is none. Move its far control points closer.</source>
+        <translation>曲面 %1 は原点から %2 m 離れた所まで達しています。許容差 10 mm でも型紙の作成に数分かかるため、型紙は作成しません。遠くの制御点を近づけてください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/bounded_pattern.cpp" line="38"/>
+        <source>Surface %1 reaches %2 m from the origin: its curves are sampled to %3 mm, since %4 mm would take minutes.</source>
+        <translation>曲面 %1 は原点から %2 m 離れた所まで達しています。%4 mm では数分かかるため、曲線を %3 mm でサンプリングします。</translation>
+    </message>
+</context>
+<context>
     <name>CreaseConditionCommand</name>
     <message>
         <location filename="../model/document/commands/crease_condition_command.cpp" line="8"/>
@@ -133,6 +146,29 @@
     </message>
 </context>
 <context>
+    <name>OutputProblem</name>
+    <message>
+        <location filename="../app/gui/output_problem_text.cpp" line="14"/>
+        <source>“%1” is the project file of this design: exporting over it would destroy the design. Choose another file name.</source>
+        <translation>「%1」はこのデザインのプロジェクトファイルです。上書きしてエクスポートするとデザインが失われます。別のファイル名を選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/output_problem_text.cpp" line="19"/>
+        <source>“%1” is a folder. Choose a file name.</source>
+        <translation>「%1」はフォルダーです。ファイル名を選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/output_problem_text.cpp" line="22"/>
+        <source>“%1” is a device, pipe or socket, not a file. Choose a file name.</source>
+        <translation>「%1」はデバイス、パイプまたはソケットで、ファイルではありません。ファイル名を選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/output_problem_text.cpp" line="31"/>
+        <source>There is not enough memory to open “%1”.</source>
+        <translation>「%1」を開くためのメモリが足りません。</translation>
+    </message>
+</context>
+<context>
     <name>PinVerticesCommand</name>
     <message>
         <location filename="../model/document/commands/pin_vertices_command.cpp" line="9"/>
@@ -177,62 +213,63 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="33"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="36"/>
         <source>Laser bed 600 × 400 mm</source>
         <translation>レーザー加工機のベッド 600 × 400 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="34"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
         <source>A4 (210 × 297 mm)</source>
         <translation>A4 (210 × 297 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="35"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="38"/>
         <source>A3 (297 × 420 mm)</source>
         <translation>A3 (297 × 420 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="36"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="39"/>
         <source>Letter (8.5 × 11 in)</source>
         <translation>レター (8.5 × 11 in)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="40"/>
         <source>Custom</source>
         <translation>カスタム</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="34"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="35"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="43"/>
         <source>Nothing to print</source>
         <translation>印刷するものがありません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="36"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="45"/>
         <source>The design has no surface to develop.</source>
         <translation>デザインに展開できる曲面がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="52"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="61"/>
         <source>Printing the cutting pattern…</source>
         <translation>型紙を印刷しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="52"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="61"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="140"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="150"/>
         <source>Export &amp;Cutting Pattern…</source>
         <translation>型紙をエクスポート(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="142"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="152"/>
         <source>&amp;Print…</source>
         <translation>印刷(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="145"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="155"/>
         <source>Print Pre&amp;view…</source>
         <translation>印刷プレビュー(&amp;V)…</translation>
     </message>
@@ -303,7 +340,7 @@
 <context>
     <name>SceneView</name>
     <message>
-        <location filename="../views/quality_colours.cpp" line="144"/>
+        <location filename="../views/quality_colours.cpp" line="84"/>
         <source>Developability
 |det(a-b, a&apos;, b&apos;)|
 (ratio)</source>
@@ -312,14 +349,14 @@
 (比)</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="147"/>
+        <location filename="../views/quality_colours.cpp" line="87"/>
         <source>Flatness δ
 (ratio)</source>
         <translation>平面性 δ
 (比)</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="149"/>
+        <location filename="../views/quality_colours.cpp" line="89"/>
         <source>Angle defect |K|
 (rad)</source>
         <translation>角度欠損 |K|
@@ -670,13 +707,14 @@
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="516"/>
+        <location filename="../app/gui/drag_tool.cpp" line="521"/>
+        <location filename="../app/gui/drag_tool.cpp" line="539"/>
         <source>The new shape cannot be applied: %1</source>
         <translation>新しい形状を適用できません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="530"/>
-        <location filename="../app/gui/drag_tool.cpp" line="542"/>
+        <location filename="../app/gui/drag_tool.cpp" line="535"/>
+        <location filename="../app/gui/drag_tool.cpp" line="553"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -732,44 +770,45 @@
 <context>
     <name>devsurf::app::ExportJsonReaction</name>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="94"/>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="111"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="95"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="112"/>
         <source>Export Interchange JSON</source>
         <translation>交換用 JSON のエクスポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="95"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="96"/>
         <source>“%1” ends in .%2, but this command writes interchange JSON. Export to “%3” instead?</source>
         <translation>「%1」の拡張子は .%2 ですが、このコマンドは交換用 JSON を書き出します。代わりに「%3」にエクスポートしますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="100"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="101"/>
         <source>Export as .json</source>
         <translation>.json としてエクスポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="109"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="110"/>
         <source>untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="113"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="114"/>
         <source>Interchange JSON (*.json)</source>
         <translation>交換用 JSON (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="120"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="127"/>
         <source>Exported %1</source>
         <translation>%1 をエクスポートしました</translation>
     </message>
     <message>
         <location filename="../app/gui/reactions/file_reactions.cpp" line="122"/>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="125"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="129"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="132"/>
         <source>Export failed</source>
         <translation>エクスポートに失敗しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="126"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="133"/>
         <source>The design cannot be exported: %1</source>
         <translation>デザインをエクスポートできません: %1</translation>
     </message>
@@ -777,12 +816,12 @@
 <context>
     <name>devsurf::app::ExportPatternReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="73"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="82"/>
         <source>untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="77"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="87"/>
         <source>Exported the cutting pattern</source>
         <translation>型紙をエクスポートしました</translation>
     </message>
@@ -880,8 +919,8 @@
         <translation>選択を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <location filename="../app/gui/main_window.cpp" line="186"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
@@ -1418,12 +1457,12 @@
 <context>
     <name>devsurf::app::OpenReaction</name>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="32"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="33"/>
         <source>Open Project</source>
         <translation>プロジェクトを開く</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="34"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="35"/>
         <source>DevSurf projects (*.devsurf)</source>
         <translation>DevSurf プロジェクト (*.devsurf)</translation>
     </message>
@@ -1431,12 +1470,12 @@
 <context>
     <name>devsurf::app::OpenRecentReaction</name>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="62"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="63"/>
         <source>No recent files</source>
         <translation>最近使ったファイルはありません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/file_reactions.cpp" line="66"/>
+        <location filename="../app/gui/reactions/file_reactions.cpp" line="67"/>
         <source>Clear Recent Files</source>
         <translation>最近使ったファイルの一覧を消去</translation>
     </message>
@@ -1479,276 +1518,278 @@
 <context>
     <name>devsurf::app::PatternExportDialog</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="82"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="85"/>
         <source>DXF drawing (*.dxf)</source>
         <translation>DXF 図面 (*.dxf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="84"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="87"/>
         <source>SVG image (*.svg)</source>
         <translation>SVG 画像 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="86"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="89"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文書 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="88"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="91"/>
         <source>FOLD crease pattern (*.fold)</source>
         <translation>FOLD 折り線図 (*.fold)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="96"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="330"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="99"/>
         <location filename="../app/gui/pattern_export_dialog.cpp" line="339"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="348"/>
         <source>Export Cutting Pattern</source>
         <translation>型紙のエクスポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
         <source>DXF (laser and plotter cutters)</source>
         <translation>DXF (レーザー・プロッターカッター用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
         <source>SVG (vinyl and paper cutters)</source>
         <translation>SVG (カッティングマシン用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="101"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
         <source>PDF (print at 1:1, tiled)</source>
         <translation>PDF (原寸で印刷、分割)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="101"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
         <source>FOLD (origami simulators)</source>
         <translation>FOLD (折り紙シミュレーター用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="102"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
         <source>&amp;Format:</source>
         <translation>形式(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="107"/>
         <source>&amp;Polylines</source>
         <translation>ポリライン(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="108"/>
         <source>S&amp;plines</source>
         <translation>スプライン(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="112"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="115"/>
         <source>DXF &amp;R12 (for old cutter software)</source>
         <translation>DXF &amp;R12 (古いカッターソフト用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="114"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="117"/>
         <source>Curves:</source>
         <translation>曲線:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="120"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="138"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="154"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="123"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="141"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="157"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="121"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
         <source>&amp;Tolerance:</source>
         <translation>許容誤差(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Cut</source>
         <translation>切断</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Mountain</source>
         <translation>山折り</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Valley</source>
         <translation>谷折り</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Crease</source>
         <translation>折り線</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Rulings (score)</source>
         <translation>母線 (筋付け)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Seam</source>
         <translation>継ぎ目</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
         <source>Labels</source>
         <translation>ラベル</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="134"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="137"/>
         <source>Layers:</source>
         <translation>レイヤー:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="139"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="142"/>
         <source>as &amp;glue tabs</source>
         <translation>のりしろとして(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="143"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="146"/>
         <source>&amp;Seam allowance:</source>
         <translation>縫い代(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="161"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
         <source>S&amp;heet:</source>
         <translation>シート(&amp;H):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
         <source>A4</source>
         <translation>A4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
         <source>A3</source>
         <translation>A3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
         <source>Letter</source>
         <translation>レター</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="165"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
         <source>P&amp;aper (PDF):</source>
         <translation>用紙 (PDF)(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
         <source>Piece</source>
         <translation>ピース</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
         <source>Sheet</source>
         <translation>シート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
         <source>Size (mm)</source>
         <translation>サイズ (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="173"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Area (mm²)</source>
         <translation>面積 (mm²)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="173"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Isometry error (mm)</source>
         <translation>等長誤差 (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
         <source>Fits sheet</source>
         <translation>シートに収まる</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
         <source>Overlaps</source>
         <translation>重なり</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="181"/>
         <source>Fabrication report</source>
         <translation>製作レポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="185"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="188"/>
         <source>&amp;Export…</source>
         <translation>エクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="292"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="298"/>
         <source>itself</source>
         <translation>自身</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="299"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="304"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="305"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="310"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="300"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="306"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
         <source>yes</source>
         <translation>はい</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
         <source>no</source>
         <translation>いいえ</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="315"/>
         <source>%n piece(s)</source>
         <translation>
             <numerusform>ピース %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="310"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="316"/>
         <source>%n sheet(s)</source>
         <translation>
             <numerusform>シート %n 枚</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="312"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="318"/>
         <source>largest isometry error %1 mm</source>
         <translation>最大等長誤差 %1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="328"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="337"/>
         <source>Some pieces overlap and cannot be cut as laid out. Export anyway?</source>
         <translation>重なっているピースがあり、この配置では切断できません。それでもエクスポートしますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="329"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="338"/>
         <source>The pattern has problems (see the report). Export anyway?</source>
         <translation>型紙に問題があります (レポートを参照)。それでもエクスポートしますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="358"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
         <source>Writing the cutting pattern…</source>
         <translation>型紙を書き出しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="358"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="369"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="365"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="375"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="389"/>
         <source>Export failed</source>
         <translation>エクスポートに失敗しました</translation>
     </message>
@@ -1789,17 +1830,17 @@
 <context>
     <name>devsurf::app::PrintPatternReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="97"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="107"/>
         <source>Print Cutting Pattern</source>
         <translation>型紙の印刷</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="102"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="112"/>
         <source>Printing failed</source>
         <translation>印刷に失敗しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="103"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="113"/>
         <source>The pages could not be sent to the printer.</source>
         <translation>ページをプリンターに送れませんでした。</translation>
     </message>
@@ -1807,7 +1848,7 @@
 <context>
     <name>devsurf::app::PrintPreviewReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="123"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="133"/>
         <source>Print Preview: Cutting Pattern</source>
         <translation>印刷プレビュー: 型紙</translation>
     </message>
@@ -2546,94 +2587,96 @@
 <context>
     <name>devsurf::app::Workspace</name>
     <message numerus="yes">
-        <location filename="../app/gui/workspace.cpp" line="82"/>
+        <location filename="../app/gui/workspace.cpp" line="84"/>
         <source>… and %n more problem(s).</source>
         <translation>
             <numerusform>… ほかに %n 件の問題があります。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="102"/>
+        <location filename="../app/gui/workspace.cpp" line="104"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="105"/>
+        <location filename="../app/gui/workspace.cpp" line="107"/>
         <source>Unsaved changes</source>
         <translation>未保存の変更</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="106"/>
+        <location filename="../app/gui/workspace.cpp" line="108"/>
         <source>%1 has unsaved changes. Do you want to save them?</source>
         <translation>%1 には未保存の変更があります。保存しますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="120"/>
+        <location filename="../app/gui/workspace.cpp" line="122"/>
         <source>Opened %1</source>
         <translation>%1 を開きました</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="127"/>
+        <location filename="../app/gui/workspace.cpp" line="129"/>
+        <location filename="../app/gui/workspace.cpp" line="132"/>
         <source>Cannot open file</source>
         <translation>ファイルを開けません</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="141"/>
+        <location filename="../app/gui/workspace.cpp" line="146"/>
         <source>Save Project As</source>
         <translation>プロジェクトに名前を付けて保存</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="144"/>
+        <location filename="../app/gui/workspace.cpp" line="149"/>
         <source>untitled.devsurf</source>
         <translation>無題.devsurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="146"/>
+        <location filename="../app/gui/workspace.cpp" line="151"/>
         <source>DevSurf projects (*.devsurf)</source>
         <translation>DevSurf プロジェクト (*.devsurf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="160"/>
+        <location filename="../app/gui/workspace.cpp" line="165"/>
         <source>Cannot save file</source>
         <translation>ファイルを保存できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="167"/>
+        <location filename="../app/gui/workspace.cpp" line="172"/>
         <source>Saved %1</source>
         <translation>%1 を保存しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="174"/>
+        <location filename="../app/gui/workspace.cpp" line="179"/>
         <source>New design from the example “%1”</source>
         <translation>例「%1」から新しいデザインを作成しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="176"/>
+        <location filename="../app/gui/workspace.cpp" line="181"/>
         <source>Cannot create the example</source>
         <translation>例を作成できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="187"/>
+        <location filename="../app/gui/workspace.cpp" line="192"/>
         <source>Recovered unsaved work</source>
         <translation>未保存の作業を復元しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="190"/>
+        <location filename="../app/gui/workspace.cpp" line="195"/>
+        <location filename="../app/gui/workspace.cpp" line="198"/>
         <source>Cannot recover</source>
         <translation>復元できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="203"/>
+        <location filename="../app/gui/workspace.cpp" line="211"/>
         <source>an untitled design</source>
         <translation>無題のデザイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="205"/>
+        <location filename="../app/gui/workspace.cpp" line="213"/>
         <source>Recover unsaved work</source>
         <translation>未保存の作業の復元</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="206"/>
+        <location filename="../app/gui/workspace.cpp" line="214"/>
         <source>DevSurf did not close properly last time. Recover the unsaved changes to %1 from %2?</source>
         <translation>前回 DevSurf は正常に終了しませんでした。%1 への未保存の変更を %2 から復元しますか?</translation>
     </message>
@@ -2651,7 +2694,7 @@
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="547"/>
+        <location filename="../views/scene_view.cpp" line="569"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>曲面 %1 は有効でないため表示されません。</translation>
     </message>
@@ -2773,25 +2816,6 @@
         <location filename="../app/gui/main.cpp" line="35"/>
         <source>Start with a built-in example.</source>
         <translation>組み込みの例で開始します。</translation>
-    </message>
-</context>
-<context>
-    <name>OutputProblem</name>
-    <message>
-        <source>“%1” is the project file of this design: exporting over it would destroy the design. Choose another file name.</source>
-        <translation>「%1」はこのデザインのプロジェクトファイルです。上書きしてエクスポートするとデザインが失われます。別のファイル名を選んでください。</translation>
-    </message>
-    <message>
-        <source>“%1” is a folder. Choose a file name.</source>
-        <translation>「%1」はフォルダーです。ファイル名を選んでください。</translation>
-    </message>
-    <message>
-        <source>“%1” is a device, pipe or socket, not a file. Choose a file name.</source>
-        <translation>「%1」はデバイス、パイプまたはソケットで、ファイルではありません。ファイル名を選んでください。</translation>
-    </message>
-    <message>
-        <source>There is not enough memory to open “%1”.</source>
-        <translation>「%1」を開くためのメモリが足りません。</translation>
     </message>
 </context>
 </TS>
