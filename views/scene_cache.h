@@ -55,6 +55,10 @@ public:
     int developmentBuilds() const { return m_developmentBuilds; }
     int layouts() const { return m_layouts; }
 
+    // For benches: waits until no background job runs (their results are taken in by the event
+    // loop, as queued calls to this object). False if msecs passed first.
+    bool waitForBackgroundJobs(int msecs) { return m_pool.waitForDone(msecs); }
+
 signals:
     // A background development finished (latestDevelopmentScenes() has changed).
     void developmentReady();
