@@ -18,10 +18,11 @@ SceneCache* SceneCache::of(document::Document* document) {
 }
 
 SceneCache::SceneCache(document::Document* document) : QObject(document), m_document(document) {
-    m_pool.setMaxThreadCount(1);
+    m_pool.setMaxThreadCount(2); // one sampling and one development at a time
     connect(document, &document::Document::projectReset, this, [this] {
         ++m_generation;
         m_wanted.clear();
+        m_spatialWanted.clear();
     });
 }
 
@@ -36,43 +37,122 @@ SceneCache::Key SceneCache::keyOf(int surfaceIndex) const {
 }
 
 std::shared_ptr<const SceneSet> SceneCache::spatialScenes() {
+    return spatial(false);
+}
+
+std::shared_ptr<const SceneSet> SceneCache::latestSpatialScenes() {
+    return spatial(true);
+}
+
+std::shared_ptr<const SceneSet> SceneCache::spatial(bool latest) {
     if (m_document == nullptr) {
         return std::make_shared<const SceneSet>();
     }
     if (m_spatial != nullptr && m_spatialRevision == m_document->revision()) {
         return m_spatial;
     }
-    auto result = std::make_shared<SceneSet>();
-    std::vector<SpatialEntry> entries;
+    std::vector<Key> keys;
+    std::set<quint32> present;
+    bool current = true;
     for (int i = 0; i < m_document->surfaceCount(); ++i) {
-        SpatialEntry entry{keyOf(i), -1};
-        const auto old = std::find_if(m_spatialEntries.begin(), m_spatialEntries.end(),
-                                      [&](const SpatialEntry& e) { return e.key == entry.key; });
-        if (old != m_spatialEntries.end() && m_spatial != nullptr) {
-            if (old->scene >= 0) {
-                // Unchanged since the last build: copied, not resampled.
-                entry.scene = static_cast<int>(result->scenes.size());
-                result->scenes.push_back(m_spatial->scenes[static_cast<std::size_t>(old->scene)]);
-                result->scenes.back().surface = i;
-            }
-        } else {
+        const Key key = keyOf(i);
+        present.insert(key.surface);
+        SpatialEntry& entry = m_spatialEntries[key.surface];
+        const bool stale = !(entry.key == key);
+        const bool waitForJob =
+            latest && m_spatialWanted.count(key.surface) != 0 && entry.key.revision != kNever;
+        if (stale && !waitForJob) {
             ++m_spatialBuilds;
+            entry.key = key;
             try {
-                result->scenes.push_back(buildSpatialScene(m_document->surface(i), i));
-                entry.scene = static_cast<int>(result->scenes.size()) - 1;
+                entry.scene = std::make_shared<const SurfaceScene>(
+                    buildSpatialScene(m_document->surface(i), i));
             } catch (const std::exception&) {
                 // An invalid surface (e.g. mid-way through an edit) is skipped, not fatal.
+                entry.scene.reset();
+            }
+            m_spatialWanted.erase(key.surface); // sampled at its current revision
+        }
+        current = current && entry.key == key;
+        keys.push_back(entry.key);
+    }
+    for (auto it = m_spatialEntries.begin(); it != m_spatialEntries.end();) {
+        it = present.count(it->first) != 0 ? std::next(it) : m_spatialEntries.erase(it);
+    }
+    if (m_spatial == nullptr || keys != m_sampled) {
+        // Unchanged surfaces are copied, not resampled.
+        auto result = std::make_shared<SceneSet>();
+        for (int i = 0; i < static_cast<int>(keys.size()); ++i) {
+            const SpatialEntry& entry = m_spatialEntries[keys[static_cast<std::size_t>(i)].surface];
+            if (entry.scene != nullptr) {
+                result->scenes.push_back(*entry.scene);
+                result->scenes.back().surface = i;
+            } else {
+                result->invalidSurfaces.push_back(i);
             }
         }
-        if (entry.scene < 0) {
-            result->invalidSurfaces.push_back(i);
-        }
-        entries.push_back(entry);
+        m_spatial = std::move(result);
+        m_sampled = std::move(keys);
     }
-    m_spatialEntries = std::move(entries);
-    m_spatial = std::move(result);
-    m_spatialRevision = m_document->revision();
+    m_spatialRevision = current ? m_document->revision() : kNever;
     return m_spatial;
+}
+
+void SceneCache::sampleInBackground(int surfaceIndex) {
+    if (m_document == nullptr || surfaceIndex < 0 || surfaceIndex >= m_document->surfaceCount()) {
+        return;
+    }
+    m_spatialWanted.insert(m_document->surface(surfaceIndex).id());
+    startNextSpatialJob();
+}
+
+void SceneCache::startNextSpatialJob() {
+    if (m_spatialJobRunning || m_document == nullptr) {
+        return;
+    }
+    while (!m_spatialWanted.empty()) {
+        const quint32 id = *m_spatialWanted.begin();
+        const int index = m_document->project().indexOf(id);
+        if (index < 0) {
+            m_spatialWanted.erase(id);
+            continue;
+        }
+        const Key key = keyOf(index);
+        const auto done = m_spatialEntries.find(id);
+        if (done != m_spatialEntries.end() && done->second.key == key) {
+            m_spatialWanted.erase(id); // caught up
+            continue;
+        }
+        // The job works on its own copy of the surface; the result comes back queued.
+        m_spatialJobRunning = true;
+        const quint64 generation = m_generation;
+        m_pool.start([this, surface = m_document->surface(index), index, key, generation] {
+            std::shared_ptr<const SurfaceScene> scene;
+            try {
+                scene = std::make_shared<const SurfaceScene>(buildSpatialScene(surface, index));
+            } catch (const std::exception&) {
+                // Not valid: drawn as such once taken in.
+            }
+            QMetaObject::invokeMethod(
+                this, [this, key, generation, scene] { onSampled(key, generation, scene); },
+                Qt::QueuedConnection);
+        });
+        return;
+    }
+}
+
+void SceneCache::onSampled(Key key, quint64 generation, std::shared_ptr<const SurfaceScene> scene) {
+    m_spatialJobRunning = false;
+    ++m_spatialBuilds;
+    if (generation == m_generation) {
+        SpatialEntry& entry = m_spatialEntries[key.surface];
+        if (entry.key.revision == kNever || entry.key.revision < key.revision) {
+            entry = {key, std::move(scene)};
+            m_spatialRevision = kNever; // the set handed out is rebuilt with it
+        }
+    }
+    startNextSpatialJob();
+    emit spatialReady();
 }
 
 std::shared_ptr<const SceneSet> SceneCache::developmentScenes() {

@@ -39,6 +39,15 @@ public:
     std::shared_ptr<const SceneSet> spatialScenes();
     std::shared_ptr<const SceneSet> developmentScenes();
 
+    // For a change of a large surface: samples it for the 3D view at its latest revision on a
+    // background thread (one job at a time, later revisions coalesced), then emits spatialReady().
+    void sampleInBackground(int surfaceIndex);
+    // The 3D scenes as far as they are known: a surface being sampled in the background as last
+    // sampled, every other one at the current revision. Equals spatialScenes() once no sampling
+    // is pending.
+    std::shared_ptr<const SceneSet> latestSpatialScenes();
+    bool spatialPending() const { return !m_spatialWanted.empty(); }
+
     // For a drag: develops the surface at its latest revision on a background thread (one job
     // at a time; revisions that arrive meanwhile are coalesced into the next job), then emits
     // developmentReady().
@@ -62,6 +71,8 @@ public:
 signals:
     // A background development finished (latestDevelopmentScenes() has changed).
     void developmentReady();
+    // A background sampling finished (latestSpatialScenes() has changed).
+    void spatialReady();
 
 private:
     static constexpr quint64 kNever = std::numeric_limits<quint64>::max();
@@ -75,13 +86,17 @@ private:
     };
     struct SpatialEntry {
         Key key;
-        int scene = -1; // index into m_spatial->scenes; -1: the surface is not valid
+        std::shared_ptr<const SurfaceScene> scene; // null: the surface is not valid
     };
     struct DevelopmentEntry {
         Key key;
         std::shared_ptr<const SurfaceDevelopment> development;
     };
     Key keyOf(int surfaceIndex) const;
+    // The 3D scenes (current, or latest known for the surfaces in m_spatialWanted).
+    std::shared_ptr<const SceneSet> spatial(bool latest);
+    void startNextSpatialJob();
+    void onSampled(Key key, quint64 generation, std::shared_ptr<const SurfaceScene> scene);
     // Lays out the developments (current, or latest known for the surfaces in m_wanted).
     std::shared_ptr<const SceneSet> development(bool latest);
     void startNextJob();
@@ -89,9 +104,14 @@ private:
                      std::shared_ptr<const SurfaceDevelopment> development);
 
     QPointer<document::Document> m_document;
-    quint64 m_spatialRevision = kNever;
+    // The newest 3D scene of every surface (by id), the set of them last handed out and the
+    // document revision it is current at (kNever while a surface in it is behind).
+    std::map<quint32, SpatialEntry> m_spatialEntries;
+    std::vector<Key> m_sampled;
     std::shared_ptr<const SceneSet> m_spatial;
-    std::vector<SpatialEntry> m_spatialEntries;
+    quint64 m_spatialRevision = kNever;
+    std::set<quint32> m_spatialWanted; // surfaces (by id) to sample in the background
+    bool m_spatialJobRunning = false;
     // The newest development of every surface (by id), and the last layout of them.
     std::map<quint32, DevelopmentEntry> m_developments;
     std::vector<Key> m_laidOut;

@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
     }
     const model::VertexId vertex = views.surface().vertices().begin()->first;
     views::SceneCache* cache = views::SceneCache::of(&views.document);
-    const auto pending = [cache] { return cache->developmentPending(); };
+    const auto pending = [cache] { return cache->developmentPending() || cache->spatialPending(); };
     std::vector<double> rebuild, results, work, render3d, render2d, total;
     for (int m = 0; m < moves; ++m) {
         const double step = (m % 2 == 0 ? 1.0 : -1.0) * 0.5;
