@@ -189,7 +189,11 @@ std::shared_ptr<const SceneSet> SceneCache::development(bool latest) {
     for (auto it = m_developments.begin(); it != m_developments.end();) {
         it = present.count(it->first) != 0 ? std::next(it) : m_developments.erase(it);
     }
-    if (m_development == nullptr || keys != m_laidOut) {
+    if (m_ready != nullptr && keys == m_readyKeys && keys != m_laidOut) {
+        ++m_layouts; // laid out in the background
+        m_development = std::move(m_ready);
+        m_laidOut = std::move(keys);
+    } else if (m_development == nullptr || keys != m_laidOut) {
         ++m_layouts;
         m_development = std::make_shared<const SceneSet>(
             layOutDevelopments(m_document->project(), developments));
@@ -223,15 +227,47 @@ void SceneCache::startNextJob() {
             m_wanted.erase(id); // caught up
             continue;
         }
-        // The job works on its own copy of the surface; the result comes back queued.
+        // The job lays the pieces out as well where every other surface's development is
+        // current (their developments are shared, read only).
+        const int count = m_document->surfaceCount();
+        std::vector<Key> keys;
+        std::vector<std::shared_ptr<const SurfaceDevelopment>> developments(
+            static_cast<std::size_t>(count));
+        for (int i = 0; i < count && keys.size() == static_cast<std::size_t>(i); ++i) {
+            const Key other = keyOf(i);
+            const auto known = m_developments.find(other.surface);
+            if (i == index) {
+                keys.push_back(key);
+            } else if (known != m_developments.end() && known->second.key == other &&
+                       known->second.development != nullptr) {
+                keys.push_back(other);
+                developments[static_cast<std::size_t>(i)] = known->second.development;
+            }
+        }
+        if (keys.size() != static_cast<std::size_t>(count)) {
+            keys.clear();
+        }
+        // The job works on its own copy of the project; the result comes back queued.
         m_jobRunning = true;
         const quint64 generation = m_generation;
-        m_pool.start([this, surface = m_document->surface(index), index, key, generation] {
-            auto development =
-                std::make_shared<const SurfaceDevelopment>(developSurfaceForView(surface, index));
+        m_pool.start([this, project = m_document->project(), index, key, generation,
+                      keys = std::move(keys), developments = std::move(developments)]() mutable {
+            auto development = std::make_shared<const SurfaceDevelopment>(
+                developSurfaceForView(project.surfaces[static_cast<std::size_t>(index)], index));
+            std::shared_ptr<const SceneSet> laidOut;
+            if (!keys.empty()) {
+                developments[static_cast<std::size_t>(index)] = development;
+                std::vector<const SurfaceDevelopment*> all;
+                for (const auto& each : developments) {
+                    all.push_back(each.get());
+                }
+                laidOut = std::make_shared<const SceneSet>(layOutDevelopments(project, all));
+            }
             QMetaObject::invokeMethod(
                 this,
-                [this, key, generation, development] { onDeveloped(key, generation, development); },
+                [this, key, generation, development, keys = std::move(keys), laidOut] {
+                    onDeveloped(key, generation, development, keys, laidOut);
+                },
                 Qt::QueuedConnection);
         });
         return;
@@ -239,7 +275,8 @@ void SceneCache::startNextJob() {
 }
 
 void SceneCache::onDeveloped(Key key, quint64 generation,
-                             std::shared_ptr<const SurfaceDevelopment> development) {
+                             std::shared_ptr<const SurfaceDevelopment> development,
+                             std::vector<Key> keys, std::shared_ptr<const SceneSet> laidOut) {
     m_jobRunning = false;
     ++m_developmentBuilds;
     if (generation == m_generation) {
@@ -247,6 +284,8 @@ void SceneCache::onDeveloped(Key key, quint64 generation,
         if (!entry.development || entry.key.revision == kNever ||
             entry.key.revision < key.revision) {
             entry = {key, std::move(development)};
+            m_readyKeys = std::move(keys);
+            m_ready = laidOut != nullptr && !m_readyKeys.empty() ? std::move(laidOut) : nullptr;
         }
     }
     startNextJob();

@@ -101,7 +101,8 @@ private:
     std::shared_ptr<const SceneSet> development(bool latest);
     void startNextJob();
     void onDeveloped(Key key, quint64 generation,
-                     std::shared_ptr<const SurfaceDevelopment> development);
+                     std::shared_ptr<const SurfaceDevelopment> development, std::vector<Key> keys,
+                     std::shared_ptr<const SceneSet> laidOut);
 
     QPointer<document::Document> m_document;
     // The newest 3D scene of every surface (by id), the set of them last handed out and the
@@ -116,6 +117,10 @@ private:
     std::map<quint32, DevelopmentEntry> m_developments;
     std::vector<Key> m_laidOut;
     std::shared_ptr<const SceneSet> m_development;
+    // A layout made by the last background development, and the keys it was made for: taken
+    // instead of laying out again when those are the keys wanted.
+    std::vector<Key> m_readyKeys;
+    std::shared_ptr<const SceneSet> m_ready;
     // Surfaces (by id) to develop in the background, whether a job runs, and the project
     // generation (a new project drops the results of jobs started before it).
     std::set<quint32> m_wanted;
