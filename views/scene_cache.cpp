@@ -7,6 +7,25 @@
 
 namespace devsurf::views {
 
+namespace {
+
+// The scenes of every surface in one set (a copy of each); null: the surface is not valid.
+std::shared_ptr<const SceneSet>
+sceneSetOf(const std::vector<std::shared_ptr<const SurfaceScene>>& scenes) {
+    auto result = std::make_shared<SceneSet>();
+    for (int i = 0; i < static_cast<int>(scenes.size()); ++i) {
+        if (const auto& scene = scenes[static_cast<std::size_t>(i)]) {
+            result->scenes.push_back(*scene);
+            result->scenes.back().surface = i;
+        } else {
+            result->invalidSurfaces.push_back(i);
+        }
+    }
+    return result;
+}
+
+} // namespace
+
 SceneCache* SceneCache::of(document::Document* document) {
     if (document == nullptr) {
         return nullptr;
@@ -79,19 +98,16 @@ std::shared_ptr<const SceneSet> SceneCache::spatial(bool latest) {
     for (auto it = m_spatialEntries.begin(); it != m_spatialEntries.end();) {
         it = present.count(it->first) != 0 ? std::next(it) : m_spatialEntries.erase(it);
     }
-    if (m_spatial == nullptr || keys != m_sampled) {
+    if (m_spatialReady != nullptr && keys == m_spatialReadyKeys && keys != m_sampled) {
+        m_spatial = std::move(m_spatialReady); // put together in the background
+        m_sampled = std::move(keys);
+    } else if (m_spatial == nullptr || keys != m_sampled) {
         // Unchanged surfaces are copied, not resampled.
-        auto result = std::make_shared<SceneSet>();
-        for (int i = 0; i < static_cast<int>(keys.size()); ++i) {
-            const SpatialEntry& entry = m_spatialEntries[keys[static_cast<std::size_t>(i)].surface];
-            if (entry.scene != nullptr) {
-                result->scenes.push_back(*entry.scene);
-                result->scenes.back().surface = i;
-            } else {
-                result->invalidSurfaces.push_back(i);
-            }
+        std::vector<std::shared_ptr<const SurfaceScene>> scenes;
+        for (const Key& each : keys) {
+            scenes.push_back(m_spatialEntries[each.surface].scene);
         }
-        m_spatial = std::move(result);
+        m_spatial = sceneSetOf(scenes);
         m_sampled = std::move(keys);
     }
     m_spatialRevision = current ? m_document->revision() : kNever;
@@ -123,25 +139,53 @@ void SceneCache::startNextSpatialJob() {
             m_spatialWanted.erase(id); // caught up
             continue;
         }
+        // The job puts the set of scenes together as well where every other surface's scene
+        // is current (their scenes are shared, read only).
+        const int count = m_document->surfaceCount();
+        std::vector<Key> keys;
+        std::vector<std::shared_ptr<const SurfaceScene>> scenes(static_cast<std::size_t>(count));
+        for (int i = 0; i < count && keys.size() == static_cast<std::size_t>(i); ++i) {
+            const Key other = keyOf(i);
+            const auto known = m_spatialEntries.find(other.surface);
+            if (i == index) {
+                keys.push_back(key);
+            } else if (known != m_spatialEntries.end() && known->second.key == other) {
+                keys.push_back(other);
+                scenes[static_cast<std::size_t>(i)] = known->second.scene;
+            }
+        }
+        if (keys.size() != static_cast<std::size_t>(count)) {
+            keys.clear();
+        }
         // The job works on its own copy of the surface; the result comes back queued.
         m_spatialJobRunning = true;
         const quint64 generation = m_generation;
-        m_pool.start([this, surface = m_document->surface(index), index, key, generation] {
+        m_pool.start([this, surface = m_document->surface(index), index, key, generation,
+                      keys = std::move(keys), scenes = std::move(scenes)]() mutable {
             std::shared_ptr<const SurfaceScene> scene;
             try {
                 scene = std::make_shared<const SurfaceScene>(buildSpatialScene(surface, index));
             } catch (const std::exception&) {
                 // Not valid: drawn as such once taken in.
             }
+            std::shared_ptr<const SceneSet> set;
+            if (!keys.empty()) {
+                scenes[static_cast<std::size_t>(index)] = scene;
+                set = sceneSetOf(scenes);
+            }
             QMetaObject::invokeMethod(
-                this, [this, key, generation, scene] { onSampled(key, generation, scene); },
+                this,
+                [this, key, generation, scene, keys = std::move(keys), set] {
+                    onSampled(key, generation, scene, keys, set);
+                },
                 Qt::QueuedConnection);
         });
         return;
     }
 }
 
-void SceneCache::onSampled(Key key, quint64 generation, std::shared_ptr<const SurfaceScene> scene) {
+void SceneCache::onSampled(Key key, quint64 generation, std::shared_ptr<const SurfaceScene> scene,
+                           std::vector<Key> keys, std::shared_ptr<const SceneSet> set) {
     m_spatialJobRunning = false;
     ++m_spatialBuilds;
     if (generation == m_generation) {
@@ -149,6 +193,9 @@ void SceneCache::onSampled(Key key, quint64 generation, std::shared_ptr<const Su
         if (entry.key.revision == kNever || entry.key.revision < key.revision) {
             entry = {key, std::move(scene)};
             m_spatialRevision = kNever; // the set handed out is rebuilt with it
+            m_spatialReadyKeys = std::move(keys);
+            m_spatialReady =
+                set != nullptr && !m_spatialReadyKeys.empty() ? std::move(set) : nullptr;
         }
     }
     startNextSpatialJob();

@@ -96,7 +96,8 @@ private:
     // The 3D scenes (current, or latest known for the surfaces in m_spatialWanted).
     std::shared_ptr<const SceneSet> spatial(bool latest);
     void startNextSpatialJob();
-    void onSampled(Key key, quint64 generation, std::shared_ptr<const SurfaceScene> scene);
+    void onSampled(Key key, quint64 generation, std::shared_ptr<const SurfaceScene> scene,
+                   std::vector<Key> keys, std::shared_ptr<const SceneSet> set);
     // Lays out the developments (current, or latest known for the surfaces in m_wanted).
     std::shared_ptr<const SceneSet> development(bool latest);
     void startNextJob();
@@ -113,6 +114,10 @@ private:
     quint64 m_spatialRevision = kNever;
     std::set<quint32> m_spatialWanted; // surfaces (by id) to sample in the background
     bool m_spatialJobRunning = false;
+    // A set of 3D scenes put together by the last background sampling, and the keys it holds:
+    // taken instead of putting it together again when those are the keys wanted.
+    std::vector<Key> m_spatialReadyKeys;
+    std::shared_ptr<const SceneSet> m_spatialReady;
     // The newest development of every surface (by id), and the last layout of them.
     std::map<quint32, DevelopmentEntry> m_developments;
     std::vector<Key> m_laidOut;
