@@ -11,6 +11,19 @@
     </message>
 </context>
 <context>
+    <name>BoundedPattern</name>
+    <message>
+        <location filename="../app/gui/bounded_pattern.cpp" line="25"/>
+        <source>Surface %1 reaches %2 m from the origin: even at a tolerance of 10 mm its pattern would take minutes to build, so there is none. Move its far control points closer.</source>
+        <translation>Fläche %1 reicht %2 m vom Ursprung weg: Selbst bei einer Toleranz von 10 mm würde ihr Schnittmuster Minuten brauchen, daher gibt es keines. Rücken Sie ihre fernen Kontrollpunkte näher heran.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/bounded_pattern.cpp" line="38"/>
+        <source>Surface %1 reaches %2 m from the origin: its curves are sampled to %3 mm, since %4 mm would take minutes.</source>
+        <translation>Fläche %1 reicht %2 m vom Ursprung weg: Ihre Kurven werden auf %3 mm abgetastet, da %4 mm Minuten dauern würde.</translation>
+    </message>
+</context>
+<context>
     <name>CreaseConditionCommand</name>
     <message>
         <location filename="../model/document/commands/crease_condition_command.cpp" line="8"/>
@@ -630,62 +643,63 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="36"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
         <source>Laser bed 600 × 400 mm</source>
         <translation>Laserbett 600 × 400 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="38"/>
         <source>A4 (210 × 297 mm)</source>
         <translation>A4 (210 × 297 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="38"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="39"/>
         <source>A3 (297 × 420 mm)</source>
         <translation>A3 (297 × 420 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="39"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="40"/>
         <source>Letter (8.5 × 11 in)</source>
         <translation>Letter (8,5 × 11 in)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="40"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="41"/>
         <source>Custom</source>
         <translation>Benutzerdefiniert</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="35"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="36"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="44"/>
         <source>Nothing to print</source>
         <translation>Nichts zu drucken</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="37"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="46"/>
         <source>The design has no surface to develop.</source>
         <translation>Der Entwurf hat keine Fläche, die abgewickelt werden kann.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="53"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="62"/>
         <source>Printing the cutting pattern…</source>
         <translation>Der Schnittmusterplan wird gedruckt…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="53"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="62"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="143"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="152"/>
         <source>Export &amp;Cutting Pattern…</source>
         <translation>&amp;Schnittmuster exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="145"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="154"/>
         <source>&amp;Print…</source>
         <translation>&amp;Drucken…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="148"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="157"/>
         <source>Print Pre&amp;view…</source>
         <translation>Druck&amp;vorschau…</translation>
     </message>
@@ -1066,32 +1080,32 @@
     </message>
     <message>
         <location filename="../app/gui/drag_tool.cpp" line="260"/>
-        <location filename="../app/gui/drag_tool.cpp" line="301"/>
+        <location filename="../app/gui/drag_tool.cpp" line="303"/>
         <source>a drag started</source>
         <translation>ein Ziehen hat begonnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="284"/>
+        <location filename="../app/gui/drag_tool.cpp" line="286"/>
         <source>There is no edge %1.</source>
         <translation>Es gibt keine Kante %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="287"/>
+        <location filename="../app/gui/drag_tool.cpp" line="289"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>Kante %1 ist kein Falz (eine Kurve zwischen zwei Flächenstücken); nur Falze lassen sich ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="292"/>
+        <location filename="../app/gui/drag_tool.cpp" line="294"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>Kante %1 kann sich nicht bewegen: beide Enden sind festgehalten und sie hat keinen weiteren Kontrollpunkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="398"/>
+        <location filename="../app/gui/drag_tool.cpp" line="400"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>Die festgehaltenen Ecken %1 und %2 halten Ecke %3 auf der Geraden zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="404"/>
+        <location filename="../app/gui/drag_tool.cpp" line="406"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>Die festgehaltenen Ecken %1, %2 und %3 halten Ecke %4 im Dreieck zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
@@ -1126,14 +1140,14 @@
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="523"/>
-        <location filename="../app/gui/drag_tool.cpp" line="541"/>
+        <location filename="../app/gui/drag_tool.cpp" line="526"/>
+        <location filename="../app/gui/drag_tool.cpp" line="544"/>
         <source>The new shape cannot be applied: %1</source>
         <translation>Die neue Form kann nicht übernommen werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="537"/>
-        <location filename="../app/gui/drag_tool.cpp" line="555"/>
+        <location filename="../app/gui/drag_tool.cpp" line="539"/>
+        <location filename="../app/gui/drag_tool.cpp" line="557"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1205,12 +1219,12 @@
 <context>
     <name>devsurf::app::ExportPatternReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="75"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="84"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="80"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="89"/>
         <source>Exported the cutting pattern</source>
         <translation>Schnittmuster exportiert</translation>
     </message>
@@ -1913,237 +1927,237 @@
 <context>
     <name>devsurf::app::PatternExportDialog</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="85"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="86"/>
         <source>DXF drawing (*.dxf)</source>
         <translation>DXF-Zeichnung (*.dxf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="87"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="88"/>
         <source>SVG image (*.svg)</source>
         <translation>SVG-Bild (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="89"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="90"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF-Dokument (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="91"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="92"/>
         <source>FOLD crease pattern (*.fold)</source>
         <translation>FOLD-Faltmuster (*.fold)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="99"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="335"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="344"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="342"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="351"/>
         <source>Export Cutting Pattern</source>
         <translation>Schnittmuster exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
         <source>DXF (laser and plotter cutters)</source>
         <translation>DXF (Laser- und Plotterschneider)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
         <source>SVG (vinyl and paper cutters)</source>
         <translation>SVG (Folien- und Papierschneider)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
         <source>PDF (print at 1:1, tiled)</source>
         <translation>PDF (Druck 1:1, gekachelt)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
         <source>FOLD (origami simulators)</source>
         <translation>FOLD (Origami-Simulatoren)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="106"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="107"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="108"/>
         <source>&amp;Polylines</source>
         <translation>&amp;Polylinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="108"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="109"/>
         <source>S&amp;plines</source>
         <translation>S&amp;plines</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="115"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="116"/>
         <source>DXF &amp;R12 (for old cutter software)</source>
         <translation>DXF &amp;R12 (für alte Schneidsoftware)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="117"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="118"/>
         <source>Curves:</source>
         <translation>Kurven:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="123"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="141"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="157"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="142"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="158"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
         <source>&amp;Tolerance:</source>
         <translation>&amp;Toleranz:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Cut</source>
         <translation>Schnitt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Mountain</source>
         <translation>Berg</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Valley</source>
         <translation>Tal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
         <source>Crease</source>
         <translation>Falz</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
         <source>Rulings (score)</source>
         <translation>Erzeugende (ritzen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
         <source>Seam</source>
         <translation>Naht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="130"/>
         <source>Labels</source>
         <translation>Beschriftungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="137"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="138"/>
         <source>Layers:</source>
         <translation>Ebenen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="142"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="143"/>
         <source>as &amp;glue tabs</source>
         <translation>als &amp;Klebelaschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="146"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="147"/>
         <source>&amp;Seam allowance:</source>
         <translation>&amp;Nahtzugabe:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="165"/>
         <source>S&amp;heet:</source>
         <translation>&amp;Bogen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
         <source>A4</source>
         <translation>A4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
         <source>A3</source>
         <translation>A3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
         <source>Letter</source>
         <translation>Letter</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="169"/>
         <source>P&amp;aper (PDF):</source>
         <translation>P&amp;apier (PDF):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Piece</source>
         <translation>Teil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Sheet</source>
         <translation>Bogen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Size (mm)</source>
         <translation>Größe (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
         <source>Area (mm²)</source>
         <translation>Fläche (mm²)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
         <source>Isometry error (mm)</source>
         <translation>Isometriefehler (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
         <source>Fits sheet</source>
         <translation>Passt auf Bogen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
         <source>Overlaps</source>
         <translation>Überlappungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="181"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="182"/>
         <source>Fabrication report</source>
         <translation>Fertigungsbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="188"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="189"/>
         <source>&amp;Export…</source>
         <translation>&amp;Exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="296"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="300"/>
         <source>itself</source>
         <translation>sich selbst</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="308"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="307"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="312"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="304"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="308"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="307"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="311"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="307"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="311"/>
         <source>no</source>
         <translation>nein</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="313"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="317"/>
         <source>%n piece(s)</source>
         <translation>
             <numerusform>%n Teil</numerusform>
@@ -2151,7 +2165,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="314"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="318"/>
         <source>%n sheet(s)</source>
         <translation>
             <numerusform>%n Bogen</numerusform>
@@ -2159,33 +2173,34 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="316"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="320"/>
         <source>largest isometry error %1 mm</source>
         <translation>größter Isometriefehler %1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="333"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="340"/>
         <source>Some pieces overlap and cannot be cut as laid out. Export anyway?</source>
         <translation>Einige Teile überlappen sich und können so nicht geschnitten werden. Trotzdem exportieren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="334"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="341"/>
         <source>The pattern has problems (see the report). Export anyway?</source>
         <translation>Das Schnittmuster hat Probleme (siehe Bericht). Trotzdem exportieren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="370"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="382"/>
         <source>Writing the cutting pattern…</source>
         <translation>Das Schnittmuster wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="370"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="382"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="361"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="381"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="368"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="393"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
@@ -2226,17 +2241,17 @@
 <context>
     <name>devsurf::app::PrintPatternReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="100"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="109"/>
         <source>Print Cutting Pattern</source>
         <translation>Schnittmuster drucken</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="105"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="114"/>
         <source>Printing failed</source>
         <translation>Drucken fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="106"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="115"/>
         <source>The pages could not be sent to the printer.</source>
         <translation>Die Seiten konnten nicht an den Drucker gesendet werden.</translation>
     </message>
@@ -2244,7 +2259,7 @@
 <context>
     <name>devsurf::app::PrintPreviewReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="126"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="135"/>
         <source>Print Preview: Cutting Pattern</source>
         <translation>Druckvorschau: Schnittmuster</translation>
     </message>
@@ -2257,43 +2272,43 @@
         <translation>Grad %1, C%2, %3 Intervalle</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="138"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="143"/>
         <source>&lt;b&gt;Vertex %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;Ecke %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="149"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="154"/>
         <source>&lt;b&gt;Edge %1&lt;/b&gt; from vertex %2 to vertex %3&lt;br&gt;</source>
         <translation>&lt;b&gt;Kante %1&lt;/b&gt; von Ecke %2 zu Ecke %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="113"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="117"/>
         <source>Nothing selected.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
         <translation>Nichts ausgewählt.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Klicken Sie auf eine Ecke, Kante oder ein Flächenstück, um es auszuwählen; Umschalt-Klick erweitert die Auswahl.&lt;/i&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="38"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="39"/>
         <source>A crease between patches %1 (left) and %2 (right); condition: %3.&lt;br&gt;</source>
         <translation>Ein Falz zwischen den Flächenstücken %1 (links) und %2 (rechts); Bedingung: %3.&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="49"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="51"/>
         <source>Mountain fold of %1° (up to %2°).</source>
         <translation>Bergfalte um %1° (bis %2°).</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="53"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="55"/>
         <source>Valley fold of %1° (up to %2°).</source>
         <translation>Talfalte um %1° (bis %2°).</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="57"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="59"/>
         <source>Not folded.</source>
         <translation>Nicht gefaltet.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="115"/>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="125"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="119"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="129"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -2301,7 +2316,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="116"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="120"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -2309,12 +2324,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="123"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="127"/>
         <source>Selected: %1, %2, %3.</source>
         <translation>Ausgewählt: %1, %2, %3.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="128"/>
         <source>%n vertex(es)</source>
         <translation>
             <numerusform>%n Ecke</numerusform>
@@ -2322,7 +2337,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="128"/>
         <source>%n edge(s)</source>
         <translation>
             <numerusform>%n Kante</numerusform>
@@ -2330,7 +2345,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="154"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="159"/>
         <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
         <translation>
             <numerusform>Spline-Kurve (S), %1, %n Kontrollpunkt.&lt;br&gt;</numerusform>
@@ -2338,27 +2353,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="160"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="165"/>
         <source>A boundary curve of patch %1.</source>
         <translation>Eine Randkurve des Flächenstücks %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="164"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="169"/>
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>Erzeugende (R), eine Strecke der Länge %1 mm.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="171"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="176"/>
         <source>Smooth between patches %1 and %2: the surface stays smooth across it.</source>
         <translation>Glatt zwischen den Flächenstücken %1 und %2: Die Fläche bleibt über sie hinweg glatt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="173"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="178"/>
         <source>Sharp between patches %1 and %2: the surface may fold along it.</source>
         <translation>Scharf zwischen den Flächenstücken %1 und %2: Die Fläche darf entlang ihr falten.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="183"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="188"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;Flächenstück %1&lt;/b&gt;: %2&lt;br&gt;Kantenbeschriftung entlang des Flächenstücks: %3&lt;br&gt;%n Ecke.</numerusform>
@@ -2366,7 +2381,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="219"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="227"/>
         <source>Cannot move</source>
         <translation>Verschieben nicht möglich</translation>
     </message>
@@ -2687,7 +2702,7 @@
         <translation>Das Lösen wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="254"/>
+        <location filename="../app/gui/solve_controller.cpp" line="255"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 kann nicht gelöst werden: %2</translation>
     </message>
@@ -2803,12 +2818,12 @@
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="441"/>
+        <location filename="../app/gui/solve_controller.cpp" line="442"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>Lösen hat den Entwurf unverändert gelassen: das Lösen machte ihn weniger abwickelbar (größtes Abwickelbarkeitsresiduum %1 → %2).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="464"/>
+        <location filename="../app/gui/solve_controller.cpp" line="465"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n Fläche unverändert gelassen: das Lösen machte sie weniger abwickelbar.</numerusform>
@@ -2816,12 +2831,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="476"/>
+        <location filename="../app/gui/solve_controller.cpp" line="477"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 verworfen: Der Entwurf hat sich während des Lösens geändert; nichts wurde bewegt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="494"/>
+        <location filename="../app/gui/solve_controller.cpp" line="495"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, abwickelbar gehalten: %n Iteration, größtes Bedingungsresiduum %2.</numerusform>
@@ -2830,7 +2845,7 @@
     </message>
     <message>
         <location filename="../app/gui/solve_controller.cpp" line="178"/>
-        <location filename="../app/gui/solve_controller.cpp" line="433"/>
+        <location filename="../app/gui/solve_controller.cpp" line="434"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
     </message>
@@ -2860,7 +2875,7 @@
         <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="460"/>
+        <location filename="../app/gui/solve_controller.cpp" line="461"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>
@@ -3115,7 +3130,7 @@
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="569"/>
+        <location filename="../views/scene_view.cpp" line="586"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>Fläche %1 ist ungültig und wird nicht angezeigt.</translation>
     </message>

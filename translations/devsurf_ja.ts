@@ -11,6 +11,19 @@
     </message>
 </context>
 <context>
+    <name>BoundedPattern</name>
+    <message>
+        <location filename="../app/gui/bounded_pattern.cpp" line="25"/>
+        <source>Surface %1 reaches %2 m from the origin: even at a tolerance of 10 mm its pattern would take minutes to build, so there is none. Move its far control points closer.</source>
+        <translation>曲面 %1 は原点から %2 m 離れた所まで達しています。許容差 10 mm でも型紙の作成に数分かかるため、型紙は作成しません。遠くの制御点を近づけてください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/bounded_pattern.cpp" line="38"/>
+        <source>Surface %1 reaches %2 m from the origin: its curves are sampled to %3 mm, since %4 mm would take minutes.</source>
+        <translation>曲面 %1 は原点から %2 m 離れた所まで達しています。%4 mm では数分かかるため、曲線を %3 mm でサンプリングします。</translation>
+    </message>
+</context>
+<context>
     <name>CreaseConditionCommand</name>
     <message>
         <location filename="../model/document/commands/crease_condition_command.cpp" line="8"/>
@@ -624,62 +637,63 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="36"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
         <source>Laser bed 600 × 400 mm</source>
         <translation>レーザー加工機のベッド 600 × 400 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="38"/>
         <source>A4 (210 × 297 mm)</source>
         <translation>A4 (210 × 297 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="38"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="39"/>
         <source>A3 (297 × 420 mm)</source>
         <translation>A3 (297 × 420 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="39"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="40"/>
         <source>Letter (8.5 × 11 in)</source>
         <translation>レター (8.5 × 11 in)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="40"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="41"/>
         <source>Custom</source>
         <translation>カスタム</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="35"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="36"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="44"/>
         <source>Nothing to print</source>
         <translation>印刷するものがありません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="37"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="46"/>
         <source>The design has no surface to develop.</source>
         <translation>デザインに展開できる曲面がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="53"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="62"/>
         <source>Printing the cutting pattern…</source>
         <translation>型紙を印刷しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="53"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="62"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="143"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="152"/>
         <source>Export &amp;Cutting Pattern…</source>
         <translation>型紙をエクスポート(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="145"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="154"/>
         <source>&amp;Print…</source>
         <translation>印刷(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="148"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="157"/>
         <source>Print Pre&amp;view…</source>
         <translation>印刷プレビュー(&amp;V)…</translation>
     </message>
@@ -1052,32 +1066,32 @@
     </message>
     <message>
         <location filename="../app/gui/drag_tool.cpp" line="260"/>
-        <location filename="../app/gui/drag_tool.cpp" line="301"/>
+        <location filename="../app/gui/drag_tool.cpp" line="303"/>
         <source>a drag started</source>
         <translation>ドラッグが始まりました</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="284"/>
+        <location filename="../app/gui/drag_tool.cpp" line="286"/>
         <source>There is no edge %1.</source>
         <translation>辺 %1 はありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="287"/>
+        <location filename="../app/gui/drag_tool.cpp" line="289"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>辺 %1 は折り線 (2 つのパッチの間の曲線) ではありません。ドラッグできるのは折り線だけです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="292"/>
+        <location filename="../app/gui/drag_tool.cpp" line="294"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>辺 %1 は動かせません: 両端が固定されていて、ほかに制御点がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="398"/>
+        <location filename="../app/gui/drag_tool.cpp" line="400"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1 と %2 が頂点 %3 をその間の直線上に押さえています (2 点の距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="404"/>
+        <location filename="../app/gui/drag_tool.cpp" line="406"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1、%2、%3 が頂点 %4 をその三角形の中に押さえています (距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
@@ -1112,14 +1126,14 @@
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="523"/>
-        <location filename="../app/gui/drag_tool.cpp" line="541"/>
+        <location filename="../app/gui/drag_tool.cpp" line="526"/>
+        <location filename="../app/gui/drag_tool.cpp" line="544"/>
         <source>The new shape cannot be applied: %1</source>
         <translation>新しい形状を適用できません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="537"/>
-        <location filename="../app/gui/drag_tool.cpp" line="555"/>
+        <location filename="../app/gui/drag_tool.cpp" line="539"/>
+        <location filename="../app/gui/drag_tool.cpp" line="557"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1191,12 +1205,12 @@
 <context>
     <name>devsurf::app::ExportPatternReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="75"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="84"/>
         <source>untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="80"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="89"/>
         <source>Exported the cutting pattern</source>
         <translation>型紙をエクスポートしました</translation>
     </message>
@@ -1893,277 +1907,278 @@
 <context>
     <name>devsurf::app::PatternExportDialog</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="85"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="86"/>
         <source>DXF drawing (*.dxf)</source>
         <translation>DXF 図面 (*.dxf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="87"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="88"/>
         <source>SVG image (*.svg)</source>
         <translation>SVG 画像 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="89"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="90"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文書 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="91"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="92"/>
         <source>FOLD crease pattern (*.fold)</source>
         <translation>FOLD 折り線図 (*.fold)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="99"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="335"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="344"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="342"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="351"/>
         <source>Export Cutting Pattern</source>
         <translation>型紙のエクスポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
         <source>DXF (laser and plotter cutters)</source>
         <translation>DXF (レーザー・プロッターカッター用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
         <source>SVG (vinyl and paper cutters)</source>
         <translation>SVG (カッティングマシン用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
         <source>PDF (print at 1:1, tiled)</source>
         <translation>PDF (原寸で印刷、分割)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
         <source>FOLD (origami simulators)</source>
         <translation>FOLD (折り紙シミュレーター用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="106"/>
         <source>&amp;Format:</source>
         <translation>形式(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="107"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="108"/>
         <source>&amp;Polylines</source>
         <translation>ポリライン(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="108"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="109"/>
         <source>S&amp;plines</source>
         <translation>スプライン(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="115"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="116"/>
         <source>DXF &amp;R12 (for old cutter software)</source>
         <translation>DXF &amp;R12 (古いカッターソフト用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="117"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="118"/>
         <source>Curves:</source>
         <translation>曲線:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="123"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="141"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="157"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="142"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="158"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
         <source>&amp;Tolerance:</source>
         <translation>許容誤差(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Cut</source>
         <translation>切断</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Mountain</source>
         <translation>山折り</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Valley</source>
         <translation>谷折り</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
         <source>Crease</source>
         <translation>折り線</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
         <source>Rulings (score)</source>
         <translation>母線 (筋付け)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
         <source>Seam</source>
         <translation>継ぎ目</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="130"/>
         <source>Labels</source>
         <translation>ラベル</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="137"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="138"/>
         <source>Layers:</source>
         <translation>レイヤー:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="142"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="143"/>
         <source>as &amp;glue tabs</source>
         <translation>のりしろとして(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="146"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="147"/>
         <source>&amp;Seam allowance:</source>
         <translation>縫い代(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="164"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="165"/>
         <source>S&amp;heet:</source>
         <translation>シート(&amp;H):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
         <source>A4</source>
         <translation>A4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
         <source>A3</source>
         <translation>A3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
         <source>Letter</source>
         <translation>レター</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="169"/>
         <source>P&amp;aper (PDF):</source>
         <translation>用紙 (PDF)(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Piece</source>
         <translation>ピース</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Sheet</source>
         <translation>シート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Size (mm)</source>
         <translation>サイズ (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
         <source>Area (mm²)</source>
         <translation>面積 (mm²)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
         <source>Isometry error (mm)</source>
         <translation>等長誤差 (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
         <source>Fits sheet</source>
         <translation>シートに収まる</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
         <source>Overlaps</source>
         <translation>重なり</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="181"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="182"/>
         <source>Fabrication report</source>
         <translation>製作レポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="188"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="189"/>
         <source>&amp;Export…</source>
         <translation>エクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="296"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="300"/>
         <source>itself</source>
         <translation>自身</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="308"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="307"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="312"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="304"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="308"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="307"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="311"/>
         <source>yes</source>
         <translation>はい</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="307"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="311"/>
         <source>no</source>
         <translation>いいえ</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="313"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="317"/>
         <source>%n piece(s)</source>
         <translation>
             <numerusform>ピース %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="314"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="318"/>
         <source>%n sheet(s)</source>
         <translation>
             <numerusform>シート %n 枚</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="316"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="320"/>
         <source>largest isometry error %1 mm</source>
         <translation>最大等長誤差 %1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="333"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="340"/>
         <source>Some pieces overlap and cannot be cut as laid out. Export anyway?</source>
         <translation>重なっているピースがあり、この配置では切断できません。それでもエクスポートしますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="334"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="341"/>
         <source>The pattern has problems (see the report). Export anyway?</source>
         <translation>型紙に問題があります (レポートを参照)。それでもエクスポートしますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="370"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="382"/>
         <source>Writing the cutting pattern…</source>
         <translation>型紙を書き出しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="370"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="382"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="361"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="381"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="368"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="393"/>
         <source>Export failed</source>
         <translation>エクスポートに失敗しました</translation>
     </message>
@@ -2204,17 +2219,17 @@
 <context>
     <name>devsurf::app::PrintPatternReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="100"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="109"/>
         <source>Print Cutting Pattern</source>
         <translation>型紙の印刷</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="105"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="114"/>
         <source>Printing failed</source>
         <translation>印刷に失敗しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="106"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="115"/>
         <source>The pages could not be sent to the printer.</source>
         <translation>ページをプリンターに送れませんでした。</translation>
     </message>
@@ -2222,7 +2237,7 @@
 <context>
     <name>devsurf::app::PrintPreviewReaction</name>
     <message>
-        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="126"/>
+        <location filename="../app/gui/reactions/pattern_reactions.cpp" line="135"/>
         <source>Print Preview: Cutting Pattern</source>
         <translation>印刷プレビュー: 型紙</translation>
     </message>
@@ -2235,110 +2250,110 @@
         <translation>次数 %1、C%2、区間数 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="38"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="39"/>
         <source>A crease between patches %1 (left) and %2 (right); condition: %3.&lt;br&gt;</source>
         <translation>パッチ %1 (左) と %2 (右) の間の折り線。条件: %3。&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="49"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="51"/>
         <source>Mountain fold of %1° (up to %2°).</source>
         <translation>山折り %1° (最大 %2°)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="53"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="55"/>
         <source>Valley fold of %1° (up to %2°).</source>
         <translation>谷折り %1° (最大 %2°)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="57"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="59"/>
         <source>Not folded.</source>
         <translation>折れていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="113"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="117"/>
         <source>Nothing selected.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
         <translation>何も選択されていません。&lt;br&gt;%1、%2。&lt;br&gt;&lt;i&gt;頂点・辺・パッチをクリックすると選択されます。Shift+クリックで選択に追加します。&lt;/i&gt;</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="115"/>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="125"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="119"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="129"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="116"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="120"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="123"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="127"/>
         <source>Selected: %1, %2, %3.</source>
         <translation>選択: %1、%2、%3。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="128"/>
         <source>%n vertex(es)</source>
         <translation>
             <numerusform>頂点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="128"/>
         <source>%n edge(s)</source>
         <translation>
             <numerusform>辺 %n 本</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="138"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="143"/>
         <source>&lt;b&gt;Vertex %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;頂点 %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="149"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="154"/>
         <source>&lt;b&gt;Edge %1&lt;/b&gt; from vertex %2 to vertex %3&lt;br&gt;</source>
         <translation>&lt;b&gt;辺 %1&lt;/b&gt; 頂点 %2 から頂点 %3 まで&lt;br&gt;</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="154"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="159"/>
         <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
         <translation>
             <numerusform>スプライン曲線 (S)、%1、制御点 %n 個。&lt;br&gt;</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="160"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="165"/>
         <source>A boundary curve of patch %1.</source>
         <translation>パッチ %1 の境界曲線。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="164"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="169"/>
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>母線 (R)、長さ %1 mm の線分。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="171"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="176"/>
         <source>Smooth between patches %1 and %2: the surface stays smooth across it.</source>
         <translation>パッチ %1 と %2 の間で滑らか: 曲面はこの母線をまたいで滑らかに保たれます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="173"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="178"/>
         <source>Sharp between patches %1 and %2: the surface may fold along it.</source>
         <translation>パッチ %1 と %2 の間で鋭角: 曲面はこの母線に沿って折れてもかまいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="183"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="188"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;パッチ %1&lt;/b&gt;: %2&lt;br&gt;パッチに沿った辺のラベル: %3&lt;br&gt;角 %n 個。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="219"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="227"/>
         <source>Cannot move</source>
         <translation>移動できません</translation>
     </message>
@@ -2653,7 +2668,7 @@
         <translation>ソルブを中止しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="254"/>
+        <location filename="../app/gui/solve_controller.cpp" line="255"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 は解けません: %2</translation>
     </message>
@@ -2767,24 +2782,24 @@
         <translation>ソルブ</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="441"/>
+        <location filename="../app/gui/solve_controller.cpp" line="442"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>ソルブはデザインを元のままにしました。ソルブで可展性が悪化したためです (最大の可展性残差 %1 → %2)。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="464"/>
+        <location filename="../app/gui/solve_controller.cpp" line="465"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n 個のサーフェスを元のままにしました。ソルブで可展性が悪化したためです。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="476"/>
+        <location filename="../app/gui/solve_controller.cpp" line="477"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 を破棄しました: ソルブ中にデザインが変更されました。何も動いていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="494"/>
+        <location filename="../app/gui/solve_controller.cpp" line="495"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1、可展を維持: %n 回反復、最大の制約残差 %2。</numerusform>
@@ -2792,7 +2807,7 @@
     </message>
     <message>
         <location filename="../app/gui/solve_controller.cpp" line="178"/>
-        <location filename="../app/gui/solve_controller.cpp" line="433"/>
+        <location filename="../app/gui/solve_controller.cpp" line="434"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>ソルブに失敗しました: %1 デザインは変更されていません。</translation>
     </message>
@@ -2822,7 +2837,7 @@
         <translation>ソルブ中にデザインが変更されたため、結果を破棄しました。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="460"/>
+        <location filename="../app/gui/solve_controller.cpp" line="461"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>ソルブ完了: %n 回反復、制約残差の最大値 %1。</numerusform>
@@ -3073,7 +3088,7 @@
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="569"/>
+        <location filename="../views/scene_view.cpp" line="586"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>曲面 %1 は有効でないため表示されません。</translation>
     </message>

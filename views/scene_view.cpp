@@ -163,14 +163,21 @@ SceneView::SceneView(Kind kind, document::Document* document, document::Selectio
                 &SceneView::onSelectionChanged);
     }
     onProjectReset();
-    if (SceneCache* cache = SceneCache::of(document);
-        cache != nullptr && kind == Kind::Development) {
-        connect(cache, &SceneCache::developmentReady, this, [this] {
-            if (d->followDevelopment) {
+    if (SceneCache* cache = SceneCache::of(document)) {
+        const bool development = kind == Kind::Development;
+        auto follow = [this, development] {
+            if (d->followBackground) {
                 rebuild(true);
-                d->followDevelopment = SceneCache::of(d->document)->developmentPending();
+                const SceneCache* cache = SceneCache::of(d->document);
+                d->followBackground =
+                    development ? cache->developmentPending() : cache->spatialPending();
             }
-        });
+        };
+        if (development) {
+            connect(cache, &SceneCache::developmentReady, this, follow);
+        } else {
+            connect(cache, &SceneCache::spatialReady, this, follow);
+        }
     }
 }
 
@@ -490,8 +497,8 @@ void SceneView::setTargetPointsImpl(const std::vector<model::Vec3>& points) {
 
 namespace {
 
-// Faces of a surface from which its development after a change is always built in the
-// background (an annulus of size 30 has 1,200).
+// Faces of a surface from which its 3D scene and its development after a change are always
+// built in the background (an annulus of size 30 has 1,200).
 constexpr std::size_t kBackgroundDevelopmentFaces = 500;
 
 } // namespace
@@ -517,19 +524,25 @@ void SceneView::onDocumentChanged(unsigned changes) {
     const bool geometryOfOne =
         changes == static_cast<unsigned>(document::Change::Geometry) && state[2] >= 0;
     const bool continued = geometryOfOne && state == d->lastChange;
-    // Any such change of a large surface (an edit, an undo, a redo) is developed in the
-    // background too: developing it on the GUI thread would stop the window answering.
+    // Any such change of a large surface (an edit, an undo, a redo) is sampled and developed
+    // in the background: building either scene on the GUI thread would stop the window
+    // answering.
     const bool large = geometryOfOne &&
                        d->document->surface(state[2]).faces().size() >= kBackgroundDevelopmentFaces;
     d->lastChange = state;
-    if (d->kind == Kind::Development && (continued || large) && !firstBuild &&
-        d->problem.isEmpty()) {
+    const bool development = d->kind == Kind::Development;
+    if ((large || (development && continued)) && !firstBuild && d->problem.isEmpty()) {
         d->builtRevision = d->document->revision();
-        d->followDevelopment = true;
-        SceneCache::of(d->document)->developInBackground(state[2]);
+        d->followBackground = true;
+        SceneCache* cache = SceneCache::of(d->document);
+        if (development) {
+            cache->developInBackground(state[2]);
+        } else {
+            cache->sampleInBackground(state[2]);
+        }
         return;
     }
-    d->followDevelopment = false;
+    d->followBackground = false;
     rebuild((changes & structural) == 0);
     if (firstBuild) {
         fitAll();
@@ -563,10 +576,10 @@ void SceneView::rebuild(bool geometryOnly) {
         d->builtRevision = d->document->revision();
         // Shared with the other views of the document: built once per surface revision.
         if (d->kind == Kind::Spatial) {
-            scenes = cache->spatialScenes();
+            scenes = d->followBackground ? cache->latestSpatialScenes() : cache->spatialScenes();
         } else {
-            scenes = d->followDevelopment ? cache->latestDevelopmentScenes()
-                                          : cache->developmentScenes();
+            scenes =
+                d->followBackground ? cache->latestDevelopmentScenes() : cache->developmentScenes();
         }
         for (int i : scenes->invalidSurfaces) {
             // An invalid surface (e.g. mid-way through an edit) is skipped, not fatal.

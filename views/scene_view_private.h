@@ -49,9 +49,9 @@ struct SceneView::Private {
     // The undo stack (count, index) and the surface changed at the last change: the same again
     // means the last change merged into the undo step before it (a drag goes on).
     std::array<int, 3> lastChange = {-1, -1, -1};
-    // The development view draws the latest background development (SceneCache) while a drag
-    // goes on.
-    bool followDevelopment = false;
+    // The view draws the latest background build (SceneCache) while one is pending: the
+    // development during a drag, and either view after a change of a large surface.
+    bool followBackground = false;
     QString problem;
     QString hover;
 

@@ -9,7 +9,7 @@
 #include "io/pattern/pattern_writers.h"
 #include "io/project_file.h"
 #include "model/pattern/cutting_pattern.h"
-#include "model/pattern/pattern_pieces.h"
+#include "model/pattern/sampling_bound.h"
 #include "model/project.h"
 
 #include <QFileInfo>
@@ -72,52 +72,29 @@ Settings settingsOf(const SubcommandArguments& args) {
     return settings;
 }
 
-// Sampled points along all curves of a surface beyond which building its pattern takes many
-// seconds (the examples need at most 15,000; a control point 1 km away at 0.01 mm: 168,000,
-// 9 s). Such a design is refused at once, with a tolerance that would do.
-constexpr long kMaxCurveSamples = 40000;
-
-long curveSamples(const model::CompositeSurface& surface, double tolerance) {
-    long intervals = 0;
-    for (const auto& [id, edge] : surface.edges()) {
-        if (edge.isSpline()) {
-            intervals += edge.space.intervals;
-        }
-    }
-    return intervals * model::pattern::samplesForTolerance(surface, tolerance);
-}
-
+// A design whose curves would need more samples than model::pattern::kMaxCurveSamples at the
+// tolerance (far-away geometry took 9 s and more) is refused at once, with a tolerance that
+// would do.
 void refuseUnboundedSampling(const model::Project& project, const std::string& file,
                              double tolerance) {
-    for (std::size_t i = 0; i < project.surfaces.size(); ++i) {
-        const model::CompositeSurface& surface = project.surfaces[i];
-        const long samples = curveSamples(surface, tolerance);
-        if (samples <= kMaxCurveSamples) {
-            continue;
-        }
-        double reach = 0.0;
-        for (const auto& [id, edge] : surface.edges()) {
-            for (const model::Vec3& p : edge.controlPoints) {
-                reach = std::max(reach, p.norm());
-            }
-        }
-        std::string advice = " No tolerance up to 10 mm is coarse enough.";
-        for (double coarser : {0.1, 1.0, 10.0}) {
-            if (coarser > tolerance && curveSamples(surface, coarser) <= kMaxCurveSamples) {
-                char text[96];
-                std::snprintf(text, sizeof text, " Give --tolerance %g (mm) to write it.", coarser);
-                advice = text;
-                break;
-            }
-        }
-        char line[320];
-        std::snprintf(line, sizeof line,
-                      "'%s' is too large for the tolerance %g mm: surface %zu reaches %.0f mm "
-                      "from the origin, and its curves would need %ld samples, which would take "
-                      "minutes.",
-                      file.c_str(), tolerance, i + 1, reach, samples);
-        throw io::FileError(line + advice);
+    const std::optional<model::pattern::OversampledSurface> over =
+        model::pattern::oversampledSurface(project, tolerance);
+    if (!over) {
+        return;
     }
+    std::string advice = " No tolerance up to 10 mm is coarse enough.";
+    if (over->coarser > 0.0) {
+        char text[96];
+        std::snprintf(text, sizeof text, " Give --tolerance %g (mm) to write it.", over->coarser);
+        advice = text;
+    }
+    char line[320];
+    std::snprintf(line, sizeof line,
+                  "'%s' is too large for the tolerance %g mm: surface %d reaches %.0f mm "
+                  "from the origin, and its curves would need %ld samples, which would take "
+                  "minutes.",
+                  file.c_str(), tolerance, over->surface + 1, over->reach, over->samples);
+    throw io::FileError(line + advice);
 }
 
 model::CuttingPattern patternOf(const std::string& file, const Settings& settings) {

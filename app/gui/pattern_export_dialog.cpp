@@ -1,6 +1,7 @@
 #include "pattern_export_dialog.h"
 #include "problem_text.h"
 
+#include "bounded_pattern.h"
 #include "output_problem_text.h"
 
 #include "io/file_error.h"
@@ -281,7 +282,10 @@ void PatternExportDialog::rebuildPattern() {
     if (m_rebuildTimer != nullptr) {
         m_rebuildTimer->stop();
     }
-    m_pattern = model::buildCuttingPattern(m_project, settings().pattern);
+    BoundedPattern built = buildBoundedPattern(m_project, settings().pattern);
+    m_pattern = std::move(built.pattern);
+    m_samplingTolerance = built.tolerance;
+    m_samplingNote = built.note;
     showReport();
 }
 
@@ -315,6 +319,9 @@ void PatternExportDialog::showReport() {
                        QStringLiteral(" · ") +
                        tr("largest isometry error %1 mm").arg(report.maxIsometryError, 0, 'g', 3));
     QStringList problems;
+    if (!m_samplingNote.isEmpty()) {
+        problems << m_samplingNote;
+    }
     for (const std::string& problem : report.problems) {
         problems << QString::fromStdString(problem);
     }
@@ -366,6 +373,11 @@ bool PatternExportDialog::exportTo(const QString& path) {
     // The progress dialog runs the event loop: the pattern written stays this one.
     rebuildPattern();
     const model::CuttingPattern pattern = m_pattern;
+    s.write.tolerance = m_samplingTolerance; // coarser where the design reaches far
+    if (pattern.pieces.empty() && !m_samplingNote.isEmpty()) { // refused: too far to sample
+        QMessageBox::critical(this, tr("Export failed"), m_samplingNote);
+        return false;
+    }
     s.write.problemTexts = patternProblemTexts(pattern);
     QProgressDialog progress(tr("Writing the cutting pattern…"), tr("Cancel"), 0, 1, this);
     progress.setWindowModality(Qt::WindowModal);

@@ -48,6 +48,9 @@ public:
     QTableWidget* reportTable() const { return m_report; }
     QLabel* warningLabel() const { return m_warning; }
     QComboBox* formatBox() const { return m_format; }
+    // The tolerance (mm) the pattern was sampled to: the one asked for, or coarser where the
+    // design reaches so far that the one asked for would take minutes (the warning says so).
+    double samplingTolerance() const { return m_samplingTolerance; }
 
     // The design's project file, which an export never overwrites (empty: not saved yet).
     void setProjectFile(const QString& projectFile) { m_projectFile = projectFile; }
@@ -72,6 +75,8 @@ private:
     QString m_directory;
     QString m_projectFile;
     model::CuttingPattern m_pattern;
+    double m_samplingTolerance = 0.0;
+    QString m_samplingNote; // why the tolerance was coarsened or there is no pattern
 
     QComboBox* m_format;
     QRadioButton* m_polylines;

@@ -192,17 +192,25 @@ private slots:
         QVERIFY2(piped.exitCode == 0, qPrintable(piped.err));
     }
 
-    // 4. The DXF writer needs no temporary folder (none is left when a run is killed).
+    // 4. The DXF writer needs no temporary folder (none is left when a run is killed). TMPDIR
+    // names a file, in which no folder can be made (a missing TMPDIR is no test: Qt then makes
+    // its folders in "/", which root may write).
     void dxfExportLeavesNothingBehind() {
         const QString design = project("dxf.devsurf");
         const QByteArray oldTemp = qgetenv("TMPDIR");
         QTemporaryDir temp;
-        qputenv("TMPDIR", QFile::encodeName(temp.filePath("missing")));
+        const QString notAFolder = temp.filePath("not-a-folder");
+        QFile file(notAFolder);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.close();
+        qputenv("TMPDIR", QFile::encodeName(notAFolder));
         const Outcome run = cli({"export", design, "--format", "dxf", "-o", path("out.dxf")});
         qputenv("TMPDIR", oldTemp);
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         QVERIFY(bytesOf(path("out.dxf")).contains("EOF"));
-        QCOMPARE(QDir(temp.path()).entryList(QDir::NoDotAndDotDot | QDir::AllEntries).size(), 0);
+        QCOMPARE(QDir(temp.path()).entryList(QDir::NoDotAndDotDot | QDir::AllEntries),
+                 QStringList{"not-a-folder"});
+        QCOMPARE(QFileInfo(notAFolder).size(), 0);
         for (const QString& name : QDir(m_dir.path()).entryList({"out.dxf*"})) {
             QCOMPARE(name, QStringLiteral("out.dxf"));
         }

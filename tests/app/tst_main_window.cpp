@@ -23,6 +23,7 @@
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QFileDialog>
 #include <QFileInfo>
 #include <QItemSelectionModel>
 #include <QLockFile>
@@ -40,6 +41,7 @@
 #include <QTreeView>
 #include <QUndoStack>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <set>
@@ -378,6 +380,63 @@ private slots:
         QVERIFY(!QFile::exists(leftover));
         QVERIFY(next.workspace()->save());
         QCOMPARE(io::encodeProject(io::loadProjectFile(original)), edited);
+    }
+
+    // Issue 46, 1 in the application: File ▸ Export Interchange JSON never writes over the
+    // design's own project file, also not through a link or a second name ending in .json; the
+    // user is told, and the next name that is not the project works.
+    void jsonExportRefusesTheProjectFile() {
+        const QString design = m_dir.filePath(QStringLiteral("json-self.devsurf"));
+        io::saveProjectFile(model::makeExample("annulus"), design, io::Backup::None);
+        const auto bytesOf = [](const QString& path) {
+            QFile file(path);
+            return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+        };
+        const QByteArray before = bytesOf(design);
+        const QString link = m_dir.filePath(QStringLiteral("json-self-link.json"));
+        const QString hard = m_dir.filePath(QStringLiteral("json-self-hard.json"));
+        QVERIFY(QFile::link(design, link));
+        QVERIFY(::link(QFile::encodeName(design).constData(),
+                       QFile::encodeName(hard).constData()) == 0);
+        const QString other = m_dir.filePath(QStringLiteral("json-self-export.json"));
+        app::MainWindow window;
+        window.show();
+        QVERIFY(window.workspace()->open(design));
+        for (const QString& target : {link, hard, other}) {
+            // Answers the file dialog with the target, then counts the message boxes.
+            int boxes = 0;
+            bool chosen = false;
+            QTimer driver;
+            driver.setInterval(0);
+            connect(&driver, &QTimer::timeout, &driver, [&] {
+                QWidget* modal = QApplication::activeModalWidget();
+                if (auto* files = qobject_cast<QFileDialog*>(modal); files && !chosen) {
+                    chosen = true;
+                    files->selectFile(target);
+                    // Queued: its "replace it?" box runs a loop this timer must answer too.
+                    QMetaObject::invokeMethod(files, "accept", Qt::QueuedConnection);
+                } else if (auto* box = qobject_cast<QMessageBox*>(modal)) {
+                    if (QAbstractButton* replace = box->button(QMessageBox::Yes)) {
+                        replace->click(); // the file dialog's "replace it?"
+                    } else {
+                        ++boxes; // the refusal
+                        box->accept();
+                    }
+                }
+            });
+            driver.start();
+            window.action("actionExportJson")->trigger();
+            driver.stop();
+            QCOMPARE(bytesOf(design), before);
+            if (target == other) {
+                QCOMPARE(boxes, 0);
+                QVERIFY(bytesOf(other).contains("devsurf-interchange"));
+            } else {
+                QCOMPARE(boxes, 1);
+                QVERIFY(QFileInfo(link).isSymLink());
+            }
+        }
+        QVERIFY(window.workspace()->open(design));
     }
 
     // Issue 46, 6: a session killed before it wrote a recovery file leaves only its lock; the

@@ -3,10 +3,12 @@
 #include "io/project_file.h"
 #include "main_window.h"
 #include "model/examples.h"
+#include "model/pattern/sampling_bound.h"
 #include "model/project.h"
 #include "pattern_export_dialog.h"
 #include "reactions/pattern_reactions.h"
 #include "test_registry.h"
+#include "views/scene_geometry.h"
 #include "workspace.h"
 
 #include <QAction>
@@ -48,6 +50,30 @@ app::PatternSettings bigSheet() {
     return settings;
 }
 
+// The annulus with one control point moved up to the validity limit (1 km): valid, but its
+// curves sampled to 0.01 mm would need some 168,000 points.
+model::Project farAnnulus() {
+    model::Project far = model::makeExample("annulus");
+    model::CompositeSurface& surface = far.surfaces.front();
+    for (const auto& [id, edge] : surface.edges()) {
+        if (edge.isSpline() && edge.controlPoints.size() > 2) {
+            std::vector<model::Vec3> points = edge.controlPoints;
+            points[1].z = 0.999e6;
+            surface.setControlPoints(id, points);
+            break;
+        }
+    }
+    return far;
+}
+
+long outlinePoints(const model::CuttingPattern& pattern) {
+    long points = 0;
+    for (const model::PatternPiece& piece : pattern.pieces) {
+        points += static_cast<long>(piece.outline.size());
+    }
+    return points;
+}
+
 } // namespace
 
 // The export dialog and the print path, driven without modal dialogs.
@@ -64,7 +90,7 @@ private slots:
         dialog.setSettings(bigSheet());
         dialog.rebuildPattern();
         QCOMPARE(dialog.reportTable()->rowCount(), int(dialog.pattern().pieces.size()));
-        QVERIFY(io::fabricationReport(dialog.pattern()).pieces.front().fitsSheet);
+        QVERIFY(io::fabricationReport(dialog.pattern(), {}).pieces.front().fitsSheet);
         QCOMPARE(dialog.reportTable()->item(0, 5)->text(), app::PatternExportDialog::tr("yes"));
         QVERIFY(dialog.warningLabel()->isHidden());
         for (const char* format : {"dxf", "svg", "pdf", "fold"}) {
@@ -92,7 +118,7 @@ private slots:
         dialog.rebuildPattern();
         QVERIFY(dialog.warningLabel()->isVisible());
         QVERIFY(!dialog.warningLabel()->text().isEmpty());
-        QVERIFY(!io::fabricationReport(dialog.pattern()).pieces.front().fitsSheet);
+        QVERIFY(!io::fabricationReport(dialog.pattern(), {}).pieces.front().fitsSheet);
         QCOMPARE(dialog.reportTable()->item(0, 5)->text(), app::PatternExportDialog::tr("no"));
     }
 
@@ -139,6 +165,42 @@ private slots:
         QVERIFY(in.open(QIODevice::ReadOnly));
         QCOMPARE(in.readAll(), before);
         QVERIFY(dialog.exportTo(m_dir.filePath(QStringLiteral("cylinder-pattern.out"))));
+    }
+
+    // Issue 46, 7: a design reaching 1 km away is sampled within the shared bound, to a coarser
+    // tolerance the dialog names, instead of taking minutes at the one asked for.
+    void farAwayDesignIsSampledWithinTheBound() {
+        const model::Project far = farAnnulus();
+        QVERIFY(far.surfaces.front().validate().empty());
+        const auto over = model::pattern::oversampledSurface(far, 0.01);
+        QVERIFY(over.has_value());
+        QVERIFY(over->coarser > 0.01);
+        app::PatternExportDialog dialog(far, QStringLiteral("far"), m_dir.path());
+        QVERIFY(!dialog.pattern().pieces.empty());
+        QVERIFY(!dialog.warningLabel()->isHidden());
+        QVERIFY(!dialog.warningLabel()->text().isEmpty());
+        // What was built is bounded: at 0.01 mm the outline alone had over 100,000 points.
+        QVERIFY2(outlinePoints(dialog.pattern()) <= model::pattern::kMaxCurveSamples,
+                 qPrintable(QString::number(outlinePoints(dialog.pattern()))));
+        QCOMPARE(dialog.settings().write.tolerance, 0.01);
+        QCOMPARE(dialog.samplingTolerance(), over->coarser);
+        const QString svg = m_dir.filePath(QStringLiteral("far.svg"));
+        dialog.formatBox()->setCurrentIndex(int(io::PatternFormat::Svg));
+        QVERIFY(dialog.exportTo(svg));
+        QVERIFY(QFileInfo(svg).size() > 500);
+        // The development view samples by parameter, as the 3D view does: bounded as well.
+        const views::SurfaceDevelopment shown =
+            views::developSurfaceForView(far.surfaces.front(), 0);
+        QVERIFY(!shown.pieces.empty());
+        long shownPoints = 0;
+        for (const model::PatternPiece& piece : shown.pieces) {
+            shownPoints += static_cast<long>(piece.outline.size());
+        }
+        QVERIFY(shownPoints <= model::pattern::kMaxCurveSamples);
+        // A design within the bound keeps the tolerance asked for.
+        const model::Project near = model::makeExample("annulus");
+        app::PatternExportDialog nearDialog(near, QStringLiteral("near"), m_dir.path());
+        QCOMPARE(nearDialog.samplingTolerance(), 0.01);
     }
 
     void printingPaintsThroughQPrinter() {

@@ -4,6 +4,7 @@
 #include "model/examples.h"
 #include "model/pattern/cutting_pattern.h"
 #include "model/pattern/pattern_seams.h"
+#include "model/pattern/sampling_bound.h"
 #include "model/sampled_mesh.h"
 #include "surface_transform.h"
 #include "test_registry.h"
@@ -373,6 +374,34 @@ private slots:
         const std::vector<FaceId> stacked = selfOverlappingPatches(stackedBand());
         QVERIFY(!stacked.empty());
         QVERIFY(stacked.size() <= 12);
+    }
+
+    // Issue 46, point 7: the examples are within the sampling bound; an annulus with one
+    // control point 1 km up is not, and the bound names the coarser tolerance that is.
+    void samplingBoundNamesACoarserTolerance() {
+        for (const ExampleInfo& info : builtInExamples()) {
+            QVERIFY2(!pattern::oversampledSurface(makeExample(info.name), 0.01), info.name.c_str());
+        }
+        Project far = makeExample("annulus");
+        CompositeSurface& surface = far.surfaces.front();
+        for (const auto& [id, edge] : surface.edges()) {
+            if (edge.isSpline() && edge.controlPoints.size() > 2) {
+                std::vector<Vec3> points = edge.controlPoints;
+                points[1].z = 0.999e6;
+                surface.setControlPoints(id, points);
+                break;
+            }
+        }
+        QVERIFY(surface.validate().empty());
+        const auto over = pattern::oversampledSurface(far, 0.01);
+        QVERIFY(over.has_value());
+        QCOMPARE(over->surface, 0);
+        QCOMPARE(over->samples, pattern::curveSampleCount(surface, 0.01));
+        QVERIFY(over->samples > pattern::kMaxCurveSamples);
+        QVERIFY(over->reach >= 0.999e6);
+        QCOMPARE(over->coarser, 0.1);
+        QVERIFY(pattern::curveSampleCount(surface, 0.1) <= pattern::kMaxCurveSamples);
+        QVERIFY(!pattern::oversampledSurface(far, 0.1));
     }
 
     void layoutKeepsTheGap() {

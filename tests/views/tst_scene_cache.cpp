@@ -216,14 +216,15 @@ private slots:
         QCOMPARE(views.development->problem(), QString());
     }
 
-    // Issue 46, 5: edits, undo and redo of a large surface are developed in the background,
-    // so that undo bursts keep the window answering; the development view ends at the state
+    // Issue 46, 5: edits, undo and redo of a large surface are sampled and developed in the
+    // background, so that undo bursts keep the window answering; both views end at the state
     // undone to.
     void largeSurfacesAreDevelopedInTheBackground() {
         devsurf::test::SideBySideViews views(devsurf::model::makeExample("annulus", 30), 800, 400);
         QVERIFY(views.show());
         SceneCache* cache = SceneCache::of(&views.document);
         QSignalSpy ready(cache, &SceneCache::developmentReady);
+        QSignalSpy sampled(cache, &SceneCache::spatialReady);
         const auto vertex = views.document.surface(0).vertices().begin()->first;
         push(views.document, devsurf::document::MoveVerticesCommand::createTranslation(
                                  views.document, 0, {vertex}, {0.0, 0.0, 2.0}));
@@ -233,10 +234,22 @@ private slots:
             } else if (step == 2) {
                 views.document.undoStack()->redo();
             }
+            const int builds = cache->spatialBuilds();
             QVERIFY(cache->developmentPending()); // not developed on the GUI thread
+            QVERIFY(cache->spatialPending());     // nor sampled there
+            QCOMPARE(cache->spatialBuilds(), builds);
             while (cache->developmentPending()) {
                 QVERIFY(ready.wait(30000));
             }
+            while (cache->spatialPending()) {
+                QVERIFY(sampled.wait(30000));
+            }
+            const auto surface = views.document.surface(0);
+            const devsurf::views::SurfaceScene scene =
+                devsurf::views::buildSpatialScene(surface, 0);
+            QCOMPARE(views.spatial->vertexScenePoint(0, vertex),
+                     std::optional<devsurf::model::Vec3>(scene.vertices.at(vertex)));
+            QCOMPARE(cache->spatialScenes()->scenes.front().points, scene.points);
             const auto uncached = devsurf::views::buildDevelopmentScenes(views.document.project());
             QCOMPARE(
                 views.development->vertexScenePoint(0, vertex),

@@ -1,6 +1,7 @@
 #include "pattern_reactions.h"
 #include "problem_text.h"
 
+#include "../bounded_pattern.h"
 #include "../pattern_export_dialog.h"
 #include "../workspace.h"
 #include "io/pattern/page_plan.h"
@@ -29,8 +30,16 @@ bool hasSurfaces(const Workspace* workspace) {
 // The pattern printed: the options of the last export; nullopt (after telling the user) when
 // nothing can be developed.
 std::optional<model::CuttingPattern> patternToPrint(Workspace* workspace) {
-    model::CuttingPattern pattern = model::buildCuttingPattern(workspace->document()->project(),
-                                                               PatternSettings::load().pattern);
+    BoundedPattern built =
+        buildBoundedPattern(workspace->document()->project(), PatternSettings::load().pattern);
+    if (built.refused) {
+        workspace->showError(QObject::tr("Nothing to print"), built.note);
+        return std::nullopt;
+    }
+    if (!built.note.isEmpty()) {
+        emit workspace->statusMessage(built.note); // printed at a coarser tolerance
+    }
+    model::CuttingPattern pattern = std::move(built.pattern);
     if (pattern.pieces.empty()) {
         workspace->showError(QObject::tr("Nothing to print"),
                              pattern.problems.empty()
