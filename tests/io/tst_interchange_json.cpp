@@ -8,6 +8,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 #include <QTest>
 
 #include <cmath>
@@ -15,7 +16,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
-#include <regex>
 #include <set>
 #include <vector>
 
@@ -47,10 +47,11 @@ std::uint64_t bitsOf(double value) {
 // The bit patterns of every number in a JSON text, read with strtod (not with Qt's reader).
 std::set<std::uint64_t> numbersIn(const std::string& text) {
     std::set<std::uint64_t> numbers;
-    static const std::regex number(R"((?:^|[\[,:\s])(-?[0-9]+(?:\.[0-9]+)?(?:[eE][+-]?[0-9]+)?))");
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), number);
-         it != std::sregex_iterator(); ++it) {
-        numbers.insert(bitsOf(std::strtod((*it)[1].str().c_str(), nullptr)));
+    static const QRegularExpression number(
+        QStringLiteral(R"((?:^|[\[,:\s])(-?[0-9]+(?:\.[0-9]+)?(?:[eE][+-]?[0-9]+)?))"));
+    QRegularExpressionMatchIterator it = number.globalMatch(QString::fromStdString(text));
+    while (it.hasNext()) {
+        numbers.insert(bitsOf(std::strtod(it.next().captured(1).toStdString().c_str(), nullptr)));
     }
     return numbers;
 }
