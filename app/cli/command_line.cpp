@@ -1,4 +1,5 @@
 #include "command_line.h"
+#include "problem_text.h"
 
 #include <QStringList>
 
@@ -11,13 +12,6 @@
 namespace devsurf::app {
 
 namespace {
-
-std::string withoutFinalPeriod(std::string text) {
-    while (!text.empty() && (text.back() == '.' || text.back() == ' ')) {
-        text.pop_back();
-    }
-    return text;
-}
 
 // The comma-separated items of text; UsageError for an empty item ("0,,4", "0,4,").
 std::vector<std::string> items(const std::string& text, const std::string& option,

@@ -53,11 +53,7 @@ int commandExample(const SubcommandArguments& args) {
     try {
         project = model::makeExample(name, size);
     } catch (const model::ModelError& error) {
-        std::string message = ProblemText::of(error.problem()).toStdString();
-        while (!message.empty() && message.back() == '.') {
-            message.pop_back();
-        }
-        throw UsageError{message};
+        throw UsageError{withoutFinalPeriod(ProblemText::of(error.problem()).toStdString())};
     }
     writeProject(project, output);
     std::cout << "Wrote " << output << " (" << project.surfaces.front().name() << ", "
@@ -169,10 +165,8 @@ int commandExamples(const SubcommandArguments& args) {
         throw UsageError{"'examples' takes no file"};
     }
     for (const model::ExampleInfo& info : model::builtInExamples()) {
-        std::string description = exampleDescription(info.name).toStdString();
-        if (!description.empty() && description.back() == '.') {
-            description.pop_back();
-        }
+        const std::string description =
+            withoutFinalPeriod(exampleDescription(info.name).toStdString());
         std::cout << info.name << ": " << description << "; size " << info.minSize << "–"
                   << info.maxSize << ", default " << info.defaultSize << "\n";
     }

@@ -151,11 +151,7 @@ std::string describeFailure(const solver::JobFailure& failure) {
     case solver::JobError::CannotSolve:
         text = surface + " cannot be solved";
         if (failure.problem) {
-            std::string why = ProblemText::of(*failure.problem).toStdString();
-            if (!why.empty() && why.back() == '.') {
-                why.pop_back();
-            }
-            text += ": " + why;
+            text += ": " + withoutFinalPeriod(ProblemText::of(*failure.problem).toStdString());
         }
         break;
     case solver::JobError::TargetNotFinite:
@@ -172,11 +168,7 @@ std::string describeFailure(const solver::JobFailure& failure) {
         break;
     }
     if (!failure.detail.empty()) {
-        std::string detail = failure.detail;
-        if (!detail.empty() && detail.back() == '.') {
-            detail.pop_back();
-        }
-        text += ": " + detail;
+        text += ": " + withoutFinalPeriod(failure.detail);
     }
     return text;
 }

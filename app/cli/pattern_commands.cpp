@@ -102,11 +102,11 @@ model::CuttingPattern patternOf(const std::string& file, const Settings& setting
     refuseUnboundedSampling(project, file, settings.pattern.tolerance);
     model::CuttingPattern pattern = model::buildCuttingPattern(project, settings.pattern);
     if (pattern.pieces.empty()) {
-        std::string why =
-            pattern.problems.empty() ? "it has no surface" : patternProblemTexts(pattern).front();
-        if (!why.empty() && why.back() == '.') {
-            why.pop_back();
-        }
+        const std::string why =
+            pattern.problems.empty()
+                ? "it has no surface"
+                : withoutFinalPeriod(
+                      ProblemText::of(pattern.problems.front(), pattern).toStdString());
         throw io::FileError("'" + file + "' has no cutting pattern: " + why + ".");
     }
     return pattern;

@@ -311,6 +311,13 @@ QString ProblemText::of(const model::PatternProblem& p, const model::CuttingPatt
     return QString();
 }
 
+std::string withoutFinalPeriod(std::string text) {
+    while (!text.empty() && (text.back() == '.' || text.back() == ' ')) {
+        text.pop_back();
+    }
+    return text;
+}
+
 std::vector<std::string> patternProblemTexts(const model::CuttingPattern& pattern) {
     std::vector<std::string> texts;
     for (const model::PatternProblem& problem : pattern.problems) {

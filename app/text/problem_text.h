@@ -28,6 +28,9 @@ public:
     static QString patches(const std::vector<model::FaceId>& faces);
 };
 
+// A sentence used as a clause: without its final full stop (and trailing spaces).
+std::string withoutFinalPeriod(std::string text);
+
 // Every pattern problem worded, in order (for the files and pages that list them).
 std::vector<std::string> patternProblemTexts(const model::CuttingPattern& pattern);
 

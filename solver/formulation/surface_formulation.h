@@ -53,12 +53,8 @@ struct FormulationOptions {
     // cylinder stalls with it); part of useRoughStartConfiguration.
     bool normalizedRows = false;
 
-    // The unit of the state's coordinates, as a fraction of the diameter for the mean segment
-    // of the control polygons. The constraint rows are dimensionless, so their Jacobian grows
-    // as one over the control spacing, while fairness, ε₂ and the pull towards the start are
-    // measured in the state's unit: a finer design would be regularised more weakly. The unit
-    // is the diameter, or, where the mean control segment (meanControlSpacing) is shorter than
-    // this fraction of the diameter, that segment divided by it. 0 (the default) keeps the
+    // The state's unit: the diameter, or the mean control segment divided by this where that
+    // is shorter (stateUnit), so a finer design is not regularised more weakly. 0: the
     // diameter; sessions use kSessionControlSpacingUnit.
     double controlSpacingUnit = 0.0;
 
@@ -67,13 +63,9 @@ struct FormulationOptions {
     // on.
     bool linearNoisyStartNormals = false;
 
-    // Guards against degenerate solutions, relative to the reference state (see
-    // setReferenceState): every sampled ruling |a(u) − b(u)| stays at least rulingGuard times
-    // its reference length, and every sampled curve speed |a′(u)| at least speedGuard times the
-    // smaller of its reference speed and the curve's mean reference speed. Inactive (zero rows)
-    // while satisfied, so a valid design is not moved; 0 disables. Off by default: alone they
-    // keep rulings long but stop the convergence; useRoughStartConfiguration uses 0.3, 0.15,
-    // weight 0.1.
+    // One-sided guards relative to the reference state: every sampled ruling stays at least
+    // rulingGuard times its reference length, every curve speed at least speedGuard times the
+    // smaller of its reference and mean reference speed. Inactive while satisfied; 0: off.
     double rulingGuard = 0.0;
     double speedGuard = 0.0;
     double guardWeight = 1.0;
@@ -84,10 +76,8 @@ struct FormulationOptions {
     // rough start's noise in place and its rulings can collapse.
     bool relativeFairness = false;
 
-    // Weight of the pull of every point towards the reference state (a family of role
-    // Proximity: its weight is further multiplied by μ, which GuidedProjection ties to the
-    // constraint residual, Options::proximityFactor; with μ = 0, the default, the rows are
-    // skipped). 0 removes the rows.
+    // Weight of the pull of every point towards the reference state, further multiplied by μ
+    // (Options::proximityFactor; μ = 0 skips the rows). 0 removes the rows.
     double proximityWeight = 1.0;
     // Above 0: that pull is instead an energy of this weight (times ε₁, acting whatever μ is)
     // that a drag fades after its release (SurfaceFormulation::fadeDragEnergies); a crease
@@ -119,16 +109,12 @@ struct FormulationOptions {
     // only). Fairness of the point sequences is low: it pulls every curve towards a straight
     // line, which deforms curved designs.
     double fairnessWeight = 0.1;
-    // Weight of the energy that keeps the lengths of every strip's control net (its two
-    // control polygons, the segments aᵢbᵢ and the diagonals aᵢbᵢ₊₁; see addStripIsometry)
-    // at their values before the iteration: SolveSession re-bases it before every iteration
-    // (rebaseIsometry), so it damps stretching of the net in each step and lets the net bend.
-    // 0 (the default) removes it; a drag that keeps lengths uses kKeepLengthsWeight.
+    // Weight of the energy keeping the lengths of every strip's control net (addStripIsometry)
+    // at their values before each iteration (rebaseIsometry): the net bends rather than
+    // stretches. 0 removes it; a drag that keeps lengths uses kKeepLengthsWeight.
     double isometryWeight = 0.0;
-    // Where isometryWeight is 0: the same rows as damping (TermRole::Damping), weighted by
-    // this times ε₂, so that a step changes the net's lengths as reluctantly as ε₂ makes it
-    // move any variable, times this weight. 0 (the default) removes them; Solve from a rough
-    // start uses kRoughSolveLengthDamping.
+    // Where isometryWeight is 0: the same rows as damping, weighted by this times ε₂. 0
+    // removes them; Solve from a rough start uses kRoughSolveLengthDamping.
     double lengthDampingWeight = 0.0;
     // Fairness of the normal splines' control normals is high: it keeps neighbouring control
     // normals from flipping against each other, a degenerate way of satisfying (4) where n(u)
@@ -139,12 +125,9 @@ struct FormulationOptions {
     // straight line, so a drag that keeps lengths pulled curved folds straight
     // (keepLengthsSessionOptions uses false).
     bool normalFairnessAtCreaseConditions = true;
-    // The normal splines of the two strips beside a curved fold or a geodesic have unit length
-    // at u = 0 only, so the bilinear rows ⟨d, n_L ± n_R⟩ state (7) and (8) only where the two
-    // have equal lengths. true: setReferenceState weighs the two normals of every row by their
-    // lengths at the reference state (BisectorTerm::weighSidesAt), so that there the rows are
-    // (7) and (8) with unit normals and a valid fold stays where it is. false: weights 1, which
-    // SolveSession uses while something is pulled (the lengths at a drag's start go stale).
+    // true: the two normals of every crease row are weighed by their lengths at the reference
+    // state (BisectorTerm::weighSidesAt), so the rows state (7) and (8) with unit normals and
+    // a valid fold stays put. false (while something is pulled): weights 1.
     bool weighCreaseNormals = true;
     double unitControlNormalWeight = 0.1;
 
@@ -164,12 +147,9 @@ struct FormulationOptions {
     // this fraction of its start length (a one-sided guard, inactive while satisfied; 0: none),
     // so that the iteration does not close a star by shrinking one spoke to a point.
     double vertexSpokeGuard = 0.5;
-    // Where a crease passes through such a star almost straight (a four-spoke star whose two
-    // S-edge spokes leave the vertex within this angle, in radians, of opposite directions at
-    // the start), the crease is made tangent-continuous there (G¹, see
-    // addVertexDevelopability) instead of the star's flat copy; that implies the angle sum 2π.
-    // 0.05 stays below the kinks of the annulus example (0.087 rad) and of the cylinder
-    // (0.175), which keep flat copies, so valid designs stay put. 0: flat copies everywhere.
+    // Where a crease passes through such a star straight to within this angle (radians), it is
+    // made tangent-continuous there (G¹) instead of the flat copy; it stays below the
+    // examples' kinks (docs/tuning.md). 0: flat copies everywhere.
     double vertexSmoothCreaseAngle = 0.05;
     // Only stars whose angle defect at the start is at most this (radians) get rows (the
     // others keep rows scaled to zero): vertex developability is then kept where it holds

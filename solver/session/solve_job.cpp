@@ -458,9 +458,8 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             return fail(failureOf(JobError::NotFinite, key));
         }
         assessment.summary = summary;
-        if (summary.status == Status::StoppedBeforeDegenerate &&
-            !session->refusedIterate().empty()) {
-            assessment.refusedIterate = session->refusedIterate().front();
+        if (summary.status == Status::StoppedBeforeDegenerate) {
+            assessment.refusedIterate = session->refusedIterate();
         }
         const model::CompositeSurface* result = &session->surface();
         if (request.kind == JobKind::Solve) {

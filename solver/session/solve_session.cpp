@@ -219,7 +219,7 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         options.reuseFactorizationMinimumFlops = kDragFactorizationReuseFlops;
     }
     std::vector<double> before; // the state before the iteration running
-    m_refused.clear();
+    m_refused.reset();
     for (int i = 0; i < n; ++i) {
         if (cancel && cancel->load()) {
             total.status = Status::Cancelled;
@@ -280,15 +280,14 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
             m_x = before;
             break;
         }
-        std::vector<model::Problem> degenerate = model::degenerateGeometryProblems(m_surface);
+        const std::vector<model::Problem> degenerate = model::degenerateGeometryProblems(m_surface);
         if (!degenerate.empty()) {
             m_x = before;
             m_formulation->writeBack(m_x, m_surface); // written once already: it is finite
             total.status = Status::StoppedBeforeDegenerate;
             total.detail = "the next iteration gave a degenerate surface: " +
                            model::technicalKey(degenerate.front());
-            degenerate.resize(1);
-            m_refused = std::move(degenerate);
+            m_refused = degenerate.front();
             break;
         }
         ++m_iterationsDone;

@@ -9,6 +9,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace devsurf::solver {
@@ -151,7 +152,7 @@ public:
     const std::vector<model::VertexId>& pulledVertices() const { return m_pulled; }
     // Why the last step() stopped with Status::StoppedBeforeDegenerate: the first problem of
     // the iterate it refused (model::degenerateGeometryProblems). Empty otherwise.
-    const std::vector<model::Problem>& refusedIterate() const { return m_refused; }
+    const std::optional<model::Problem>& refusedIterate() const { return m_refused; }
 
     // Faces worst first at the current state (SurfaceFormulation::faceResiduals).
     std::vector<SurfaceFormulation::FaceResidual> worstFaces() const;
@@ -176,7 +177,7 @@ private:
     std::vector<double> m_x;
     std::vector<model::VertexId> m_pulled;
     int m_iterationsDone = 0;
-    std::vector<model::Problem> m_refused;
+    std::optional<model::Problem> m_refused;
     bool m_dragging = false; // something is pulled
     bool m_settling = false;
     bool m_lengthDampingFades = false; // the residual has fallen to kRoughSolveLengthDampingUntil

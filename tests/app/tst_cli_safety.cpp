@@ -3,6 +3,7 @@
 // tmpfs when the tests run as root; otherwise those parts are skipped with a message.
 
 #include "devsurf_cli.h"
+#include "far_design.h"
 #include "io/file_error.h"
 #include "io/project_file.h"
 #include "model/examples.h"
@@ -219,16 +220,7 @@ private slots:
     // 7. A design reaching far away (one control point at the validity limit, 1 km up) is
     // reported and exported in time proportional to the design, or refused at once.
     void farAwayGeometryAnswersAtOnce() {
-        model::Project far = model::makeExample("annulus");
-        model::CompositeSurface& surface = far.surfaces.front();
-        for (const auto& [id, edge] : surface.edges()) {
-            if (edge.isSpline() && edge.controlPoints.size() > 2) {
-                std::vector<model::Vec3> points = edge.controlPoints;
-                points[1].z = 0.999e6;
-                surface.setControlPoints(id, points);
-                break;
-            }
-        }
+        const model::Project far = test::farAnnulus();
         const QString file = path("far.devsurf");
         io::saveProjectFile(far, file, io::Backup::None);
         QVERIFY(isValidProject(file));

@@ -1,4 +1,5 @@
 #include "../io/dxf_check.h"
+#include "far_design.h"
 #include "io/pattern/fabrication_report.h"
 #include "io/project_file.h"
 #include "main_window.h"
@@ -48,22 +49,6 @@ app::PatternSettings bigSheet() {
     settings.sheetPreset = int(app::sheetPresets().size()) - 1; // custom
     settings.pattern.sheetSize = {2000.0, 2000.0};
     return settings;
-}
-
-// The annulus with one control point moved up to the validity limit (1 km): valid, but its
-// curves sampled to 0.01 mm would need some 168,000 points.
-model::Project farAnnulus() {
-    model::Project far = model::makeExample("annulus");
-    model::CompositeSurface& surface = far.surfaces.front();
-    for (const auto& [id, edge] : surface.edges()) {
-        if (edge.isSpline() && edge.controlPoints.size() > 2) {
-            std::vector<model::Vec3> points = edge.controlPoints;
-            points[1].z = 0.999e6;
-            surface.setControlPoints(id, points);
-            break;
-        }
-    }
-    return far;
 }
 
 long outlinePoints(const model::CuttingPattern& pattern) {
@@ -170,7 +155,7 @@ private slots:
     // Issue 46, 7: a design reaching 1 km away is sampled within the shared bound, to a coarser
     // tolerance the dialog names, instead of taking minutes at the one asked for.
     void farAwayDesignIsSampledWithinTheBound() {
-        const model::Project far = farAnnulus();
+        const model::Project far = test::farAnnulus();
         QVERIFY(far.surfaces.front().validate().empty());
         const auto over = model::pattern::oversampledSurface(far, 0.01);
         QVERIFY(over.has_value());
