@@ -5,7 +5,6 @@
     <name>ApplySurfaceCommand</name>
     <message>
         <location filename="../model/document/commands/apply_surface_command.cpp" line="20"/>
-        <location filename="../model/document/commands/apply_surface_command.cpp" line="42"/>
         <source>The new shape cannot be applied</source>
         <translation>Die neue Form kann nicht übernommen werden</translation>
     </message>
@@ -1140,14 +1139,8 @@
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="526"/>
-        <location filename="../app/gui/drag_tool.cpp" line="544"/>
-        <source>The new shape cannot be applied: %1</source>
-        <translation>Die neue Form kann nicht übernommen werden: %1</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/drag_tool.cpp" line="539"/>
-        <location filename="../app/gui/drag_tool.cpp" line="557"/>
+        <location filename="../app/gui/drag_tool.cpp" line="533"/>
+        <location filename="../app/gui/drag_tool.cpp" line="546"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

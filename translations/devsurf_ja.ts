@@ -5,7 +5,6 @@
     <name>ApplySurfaceCommand</name>
     <message>
         <location filename="../model/document/commands/apply_surface_command.cpp" line="20"/>
-        <location filename="../model/document/commands/apply_surface_command.cpp" line="42"/>
         <source>The new shape cannot be applied</source>
         <translation>新しい形状を適用できません</translation>
     </message>
@@ -1126,14 +1125,8 @@
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="526"/>
-        <location filename="../app/gui/drag_tool.cpp" line="544"/>
-        <source>The new shape cannot be applied: %1</source>
-        <translation>新しい形状を適用できません: %1</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/drag_tool.cpp" line="539"/>
-        <location filename="../app/gui/drag_tool.cpp" line="557"/>
+        <location filename="../app/gui/drag_tool.cpp" line="533"/>
+        <location filename="../app/gui/drag_tool.cpp" line="546"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

@@ -519,13 +519,7 @@ void DragTool::onResult(const solver::SolveResult& result) {
     }
     const model::CompositeSurface& shape = outcome.surfaces[index];
     if (!outcome.settled) {
-        // A move: shown, outside the undo history.
-        const auto problems = shape.validate();
-        if (!problems.empty()) {
-            abort(stoppedText(
-                tr("The new shape cannot be applied: %1").arg(ProblemText::of(problems.front()))));
-            return;
-        }
+        // A move: shown, outside the undo history (the job validated it).
         doc->previewSurface(m_surface, shape);
         m_previewed = true;
         m_ownRevision = doc->revision();
@@ -537,11 +531,6 @@ void DragTool::onResult(const solver::SolveResult& result) {
     if (shape == pressSurface()) {
         restorePress();
         end(false, tr("%1: %2").arg(undoText(), report.status));
-        return;
-    }
-    if (const auto problems = shape.validate(); !problems.empty()) {
-        abort(stoppedText(
-            tr("The new shape cannot be applied: %1").arg(ProblemText::of(problems.front()))));
         return;
     }
     doc->previewSurface(m_surface, shape);

@@ -47,9 +47,9 @@ public:
     void resetProject(model::Project project, const QString& filePath = QString());
 
     // A drag's live result, shown outside the undo history: the surface at index becomes
-    // `surface` (its id kept) and changed() is emitted, but no undo step is made and the
-    // modified flag stays. The drag pushes one command on release (ApplySurfaceCommand::
-    // createShown) or restores its press state the same way.
+    // `surface` (valid: a solve job's outcome; its id kept) and changed() is emitted, but no undo
+    // step is made and the modified flag stays. The drag pushes one command on release
+    // (ApplySurfaceCommand:: createShown) or restores its press state the same way.
     void previewSurface(int index, const model::CompositeSurface& surface);
 
     // For commands only: the project to change, then notifyChanged() once the change is done.

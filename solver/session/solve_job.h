@@ -141,8 +141,11 @@ struct JobOutcome {
     bool settled = false; // answers a Solve, an Edit or a drag's release
     bool ok = false;      // false: failure says why, surfaces is empty
     JobFailure failure;
-    std::vector<model::CompositeSurface> surfaces; // every surface (finite values only)
-    std::vector<SurfaceAssessment> assessments;    // per surface
+    // Every surface, valid: a session starts only from a valid surface, changes only positions
+    // and refuses an iterate with degenerate geometry, so the front ends apply these without
+    // validating them again on their thread (ApplySurfaceCommand::createValidated).
+    std::vector<model::CompositeSurface> surfaces;
+    std::vector<SurfaceAssessment> assessments; // per surface
     double elapsedMs = 0.0;
 
     bool cancelled() const { return failure.error == JobError::Cancelled; }

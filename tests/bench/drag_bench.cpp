@@ -37,6 +37,8 @@ QString pushEdit(devsurf::document::Document& document, devsurf::document::Comma
 }
 
 // Watches the event loop of the calling thread: the largest gap between ticks of a 1 ms timer.
+// A run ends through quitOnNextTick(), so the handler of the last result is always inside a
+// measured gap (a plain quit() leaves it out or in, depending on the order of pending events).
 class StallWatch {
 public:
     StallWatch() {
@@ -46,17 +48,23 @@ public:
             const double now = m_clock.nsecsElapsed() / 1e6;
             m_largest = std::max(m_largest, now - m_last);
             m_last = now;
+            if (m_quit != nullptr) {
+                m_quit->quit();
+                m_quit = nullptr;
+            }
         });
         m_clock.start();
         m_timer.start();
     }
     double largestGapMs() const { return m_largest; }
+    void quitOnNextTick(QEventLoop& loop) { m_quit = &loop; }
 
 private:
     QTimer m_timer;
     QElapsedTimer m_clock;
     double m_last = 0.0;
     double m_largest = 0.0;
+    QEventLoop* m_quit = nullptr;
 };
 
 double percentile(std::vector<double> values, double p) {
@@ -145,7 +153,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
                 return;
             }
             const QString refused = pushEdit(
-                document, document::ApplySurfaceCommand::create(
+                document, document::ApplySurfaceCommand::createValidated(
                               document, 0, outcome.surfaces.front(), QStringLiteral("Drag vertex"),
                               document::Change::Geometry, static_cast<int>(kDragKey)));
             if (!refused.isEmpty()) {
@@ -165,7 +173,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
                 }
                 row.replayedStretching = assessment.replay && assessment.replay->taken;
                 row.overlappingPatches = static_cast<int>(assessment.overlapping.size());
-                loop.quit();
+                stalls.quitOnNextTick(loop);
                 return;
             }
             ++row.applied;
@@ -229,12 +237,12 @@ SolveStallRow runSolve(const std::string& name, model::CompositeSurface surface,
             } else {
                 row.variables = outcome.assessments.front().summary.variables;
                 const QString refused = pushEdit(
-                    document, document::ApplySurfaceCommand::create(
+                    document, document::ApplySurfaceCommand::createValidated(
                                   document, 0, outcome.surfaces.front(), QStringLiteral("Solve")));
                 row.error = refused.toStdString();
             }
             row.solveMs = clock.nsecsElapsed() / 1e6;
-            loop.quit();
+            stalls.quitOnNextTick(loop);
         });
     solver::SolveRequest request;
     request.revision = document.revision();

@@ -19,6 +19,13 @@ CommandOrError ApplySurfaceCommand::create(Document& document, int surfaceIndex,
     if (!problems.empty()) {
         return CommandOrError(tr("The new shape cannot be applied"), problems.front());
     }
+    return createValidated(document, surfaceIndex, std::move(newSurface), text, changes, mergeKey);
+}
+
+CommandOrError ApplySurfaceCommand::createValidated(Document& document, int surfaceIndex,
+                                                    model::CompositeSurface newSurface,
+                                                    const QString& text, Changes changes,
+                                                    int mergeKey) {
     return attempt(
         document, surfaceIndex, text,
         [&newSurface](const model::CompositeSurface&) { return std::move(newSurface); },
@@ -37,10 +44,6 @@ CommandOrError ApplySurfaceCommand::createShown(Document& document, int surfaceI
         return CommandOrError(indexError);
     }
     model::CompositeSurface after = document.surface(surfaceIndex);
-    const auto problems = after.validate();
-    if (!problems.empty()) {
-        return CommandOrError(tr("The new shape cannot be applied"), problems.front());
-    }
     before.setId(after.id());
     auto* command = new ApplySurfaceCommand(document, surfaceIndex, std::move(before),
                                             std::move(after), Change::Geometry, text, -1);

@@ -14,9 +14,15 @@ public:
     static CommandOrError create(Document& document, int surfaceIndex,
                                  model::CompositeSurface newSurface, const QString& text,
                                  Changes changes = Change::Geometry, int mergeKey = -1);
+    // As create(), for a surface already validated off this thread (a solve job's outcome):
+    // validating a large design takes milliseconds the GUI thread should not stall for.
+    static CommandOrError createValidated(Document& document, int surfaceIndex,
+                                          model::CompositeSurface newSurface, const QString& text,
+                                          Changes changes = Change::Geometry, int mergeKey = -1);
 
-    // The command of a drag whose result the document shows already (Document::previewSurface):
-    // undo returns `before` (the press); its first redo, when pushed, changes nothing.
+    // The command of a drag whose result the document shows already (Document::previewSurface,
+    // with a validated surface): undo returns `before` (the press); its first redo, when pushed,
+    // changes nothing.
     static CommandOrError createShown(Document& document, int surfaceIndex,
                                       model::CompositeSurface before, const QString& text);
 
