@@ -18,7 +18,8 @@
 namespace devsurf::io::versions {
 inline constexpr unsigned kProject = 1;
 // 2: pinned vertices (project file format 2). 3: the surface id (project file format 3).
-inline constexpr unsigned kSurface = 3;
+// 4: the kept development (project file format 4).
+inline constexpr unsigned kSurface = 4;
 // 2: the smooth flag of rulings (project file format 3, with the surface ids).
 inline constexpr unsigned kEdge = 2;
 } // namespace devsurf::io::versions
@@ -201,6 +202,12 @@ template <class Archive> void save(Archive& ar, const CompositeSurface& s, unsig
     }
     const SurfaceId id = s.id();
     ar << id;
+    const std::uint8_t keeps = s.keepsDevelopment() ? 1 : 0;
+    const auto points = static_cast<std::uint32_t>(s.development().size());
+    ar << keeps << points;
+    for (const devsurf::model::Vec2& p : s.development()) {
+        ar << p.x << p.y;
+    }
 }
 
 template <class Archive> void load(Archive& ar, CompositeSurface& s, unsigned version) {
@@ -260,6 +267,21 @@ template <class Archive> void load(Archive& ar, CompositeSurface& s, unsigned ve
         SurfaceId id = 0;
         ar >> id;
         s.setId(id);
+    }
+    if (version >= 4) {
+        std::uint8_t keeps = 0;
+        std::uint32_t points = 0;
+        ar >> keeps >> points;
+        if (keeps > 1) {
+            throw FileError("it has an invalid development setting " + std::to_string(keeps));
+        }
+        checkedCount(points, 100'000'000, "development points", 2);
+        std::vector<devsurf::model::Vec2> development(points);
+        for (devsurf::model::Vec2& p : development) {
+            ar >> p.x >> p.y;
+        }
+        s.setKeepsDevelopment(keeps == 1);
+        s.setDevelopment(std::move(development)); // its size is checked by validate()
     }
 }
 

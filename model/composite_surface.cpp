@@ -73,9 +73,10 @@ CompositeSurface::~CompositeSurface() = default;
 
 CompositeSurface::CompositeSurface(const CompositeSurface& other)
     : m_name(other.m_name), m_id(other.m_id), m_vertices(other.m_vertices), m_edges(other.m_edges),
-      m_faces(other.m_faces), m_pinned(other.m_pinned), m_edgeByVertices(other.m_edgeByVertices),
-      m_nextVertexId(other.m_nextVertexId), m_nextEdgeId(other.m_nextEdgeId),
-      m_nextFaceId(other.m_nextFaceId),
+      m_faces(other.m_faces), m_pinned(other.m_pinned),
+      m_keepsDevelopment(other.m_keepsDevelopment), m_development(other.m_development),
+      m_edgeByVertices(other.m_edgeByVertices), m_nextVertexId(other.m_nextVertexId),
+      m_nextEdgeId(other.m_nextEdgeId), m_nextFaceId(other.m_nextFaceId),
       m_connectivity(std::make_unique<Connectivity>(*other.m_connectivity)) {}
 
 CompositeSurface& CompositeSurface::operator=(const CompositeSurface& other) {
@@ -110,6 +111,7 @@ VertexId CompositeSurface::addVertex(const Vec3& position) {
 }
 
 void CompositeSurface::addVertexWithId(VertexId id, const Vec3& position) {
+    m_development.clear(); // the samples' indexing changes
     if (id == kInvalidId || m_vertices.count(id) != 0) {
         throw ModelError(elementProblem(ProblemCode::IdUsedTwice, Element::Vertex, id));
     }
@@ -121,6 +123,7 @@ void CompositeSurface::addVertexWithId(VertexId id, const Vec3& position) {
 }
 
 void CompositeSurface::addEdgeWithId(EdgeId id, const EdgeRecord& record) {
+    m_development.clear(); // the samples' indexing changes
     if (id == kInvalidId || m_edges.count(id) != 0) {
         throw ModelError(elementProblem(ProblemCode::IdUsedTwice, Element::Edge, id));
     }
@@ -146,6 +149,7 @@ FaceId CompositeSurface::addFace(const std::vector<VertexId>& loop) {
 }
 
 void CompositeSurface::addFaceWithId(FaceId id, const std::vector<VertexId>& loop) {
+    m_development.clear(); // the samples' indexing changes
     if (id == kInvalidId || m_faces.count(id) != 0) {
         throw ModelError(elementProblem(ProblemCode::IdUsedTwice, Element::Face, id));
     }
@@ -227,6 +231,7 @@ EdgeRecord& CompositeSurface::mutableEdge(EdgeId id) {
 
 EdgeId CompositeSurface::setSpline(VertexId a, VertexId b, const SplineSpace& space,
                                    std::vector<Vec3> controlPoints) {
+    m_development.clear(); // the samples' indexing changes
     const EdgeId id = edgeBetween(a, b);
     if (id == kInvalidId) {
         throw ModelError(noEdgeBetween(a, b));
@@ -242,6 +247,7 @@ EdgeId CompositeSurface::setSpline(VertexId a, VertexId b, const SplineSpace& sp
 }
 
 void CompositeSurface::setRuling(EdgeId edge) {
+    m_development.clear(); // the samples' indexing changes
     EdgeRecord& record = mutableEdge(edge);
     record.label = EdgeLabel::Ruling;
     record.space = SplineSpace{};
@@ -263,6 +269,7 @@ void CompositeSurface::setSmooth(EdgeId edge, bool smooth) {
 }
 
 void CompositeSurface::reverseEdge(EdgeId edge) {
+    m_development.clear(); // the samples' indexing changes
     EdgeRecord& record = mutableEdge(edge);
     std::swap(record.from, record.to);
     std::reverse(record.controlPoints.begin(), record.controlPoints.end());
@@ -313,6 +320,13 @@ void CompositeSurface::moveVertices(const std::vector<std::pair<VertexId, Vec3>>
 
 void CompositeSurface::setControlPoints(EdgeId edge, std::vector<Vec3> controlPoints) {
     mutableEdge(edge).controlPoints = std::move(controlPoints);
+}
+
+void CompositeSurface::setKeepsDevelopment(bool keep) {
+    m_keepsDevelopment = keep;
+    if (!keep) {
+        m_development.clear();
+    }
 }
 
 void CompositeSurface::setPinned(VertexId vertex, bool pinned) {
@@ -489,7 +503,8 @@ bool CompositeSurface::operator==(const CompositeSurface& other) const {
     return m_name == other.m_name && m_id == other.m_id && m_vertices == other.m_vertices &&
            m_faces == other.m_faces && m_nextVertexId == other.m_nextVertexId &&
            m_nextEdgeId == other.m_nextEdgeId && m_nextFaceId == other.m_nextFaceId &&
-           m_pinned == other.m_pinned &&
+           m_pinned == other.m_pinned && m_keepsDevelopment == other.m_keepsDevelopment &&
+           m_development == other.m_development &&
            std::equal(m_edges.begin(), m_edges.end(), other.m_edges.begin(), other.m_edges.end(),
                       [&](const auto& a, const auto& b) {
                           return a.first == b.first && sameEdges(a.second, b.second);

@@ -14,6 +14,9 @@
 
 namespace devsurf::model {
 
+// The sampling of the sampled mesh (sampleSurface) whose flat copy a surface keeps.
+inline constexpr int kDevelopmentSamplesPerInterval = 2;
+
 // R: a ruling (straight segment), S: a spline curve (boundary or crease) (§3.1).
 enum class EdgeLabel : std::uint8_t { Ruling = 0, Spline = 1 };
 
@@ -99,6 +102,17 @@ public:
     // unknown vertex.
     void setPinned(VertexId vertex, bool pinned);
 
+    // --- the sheet (§5) --------------------------------------------------------------------
+    // With keepsDevelopment(), every solve and drag keeps the surface isometric to its
+    // development(): a flat position per vertex of sampleSurface(*this,
+    // kDevelopmentSamplesPerInterval), the sheet it is folded from. Empty until a solve derives
+    // it by unfolding; a change of the combinatorics, of an S-edge's space or of an edge's
+    // orientation empties it (the indexing of the samples changes), the setting stays.
+    bool keepsDevelopment() const { return m_keepsDevelopment; }
+    void setKeepsDevelopment(bool keep);
+    const std::vector<Vec2>& development() const { return m_development; }
+    void setDevelopment(std::vector<Vec2> development) { m_development = std::move(development); }
+
     // Construction with explicit ids (file loading). Ids must be new; next ids advance past them.
     void addVertexWithId(VertexId id, const Vec3& position);
     void addEdgeWithId(EdgeId id, const EdgeRecord& record);
@@ -156,6 +170,8 @@ private:
     std::map<EdgeId, EdgeRecord> m_edges;
     std::map<FaceId, std::vector<VertexId>> m_faces;
     std::set<VertexId> m_pinned;
+    bool m_keepsDevelopment = false;
+    std::vector<Vec2> m_development;
     std::map<std::pair<VertexId, VertexId>, EdgeId> m_edgeByVertices; // key: (min, max)
     VertexId m_nextVertexId = 0;
     EdgeId m_nextEdgeId = 0;

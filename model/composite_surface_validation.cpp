@@ -1,5 +1,9 @@
 #include "composite_surface.h"
 #include "geometry_checks.h"
+#include "sampled_mesh.h"
+
+#include <algorithm>
+#include <cmath>
 
 #include <set>
 
@@ -109,6 +113,19 @@ std::vector<Problem> CompositeSurface::validate() const {
                 problems.push_back(problem);
                 break;
             }
+        }
+    }
+    if (!m_development.empty()) {
+        const std::size_t expected = sampledVertexCount(*this, kDevelopmentSamplesPerInterval);
+        if (m_development.size() != expected) {
+            Problem problem = problemOf(ProblemCode::DevelopmentSize);
+            problem.count = static_cast<long long>(m_development.size());
+            problem.expected = static_cast<long long>(expected);
+            problems.push_back(problem);
+        } else if (!std::all_of(m_development.begin(), m_development.end(), [](const Vec2& p) {
+                       return std::isfinite(p.x) && std::isfinite(p.y);
+                   })) {
+            problems.push_back(problemOf(ProblemCode::DevelopmentNotFinite));
         }
     }
     // Positions (finite, not absurdly large) and degenerate curves, rulings and faces.

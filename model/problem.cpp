@@ -35,6 +35,8 @@ const char* codeName(ProblemCode code) {
         DEVSURF_CODE(ConditionNotShared)
         DEVSURF_CODE(InvalidFaceLabel)
         DEVSURF_CODE(SplineSpacesDiffer)
+        DEVSURF_CODE(DevelopmentSize)
+        DEVSURF_CODE(DevelopmentNotFinite)
         DEVSURF_CODE(PositionNotFinite)
         DEVSURF_CODE(PositionTooFar)
         DEVSURF_CODE(ControlPointTooFar)

@@ -40,6 +40,8 @@ enum class ProblemCode {
     ConditionNotShared,    // edge carries a crease condition but is not shared by two faces
     InvalidFaceLabel,      // face with label `name`
     SplineSpacesDiffer,    // edge and otherEdge connected, spaces space and otherSpace
+    DevelopmentSize,       // the kept development has `count` points, the sampled mesh `expected`
+    DevelopmentNotFinite,  // a point of the kept development is not finite
     // Degenerate geometry of a structurally sound design (also checked on every solver step).
     PositionNotFinite,  // vertex (faces around it)
     PositionTooFar,     // vertex (faces) lies `value` mm from the origin, beyond `limit`

@@ -104,6 +104,16 @@ SampledMesh sampleSurface(const CompositeSurface& surface, int samplesPerInterva
     return mesh;
 }
 
+std::size_t sampledVertexCount(const CompositeSurface& surface, int samplesPerInterval) {
+    std::size_t count = surface.vertices().size();
+    for (const auto& [id, record] : surface.edges()) {
+        if (record.isSpline() && record.space.intervals > 0) {
+            count += static_cast<std::size_t>(record.space.intervals * samplesPerInterval - 1);
+        }
+    }
+    return count;
+}
+
 SidesByEdge groupSidesByEdge(const std::vector<std::pair<int, int>>& edges) {
     SidesByEdge grouped;
     grouped.order.resize(edges.size());

@@ -30,6 +30,9 @@ struct SampledMesh {
 // valid (validate() empty); throws ModelError otherwise.
 SampledMesh sampleSurface(const CompositeSurface& surface, int samplesPerInterval);
 
+// The number of vertices sampleSurface gives at that sampling (structure only, no validation).
+std::size_t sampledVertexCount(const CompositeSurface& surface, int samplesPerInterval);
+
 // The sides of a list of polygons grouped by undirected edge, for walking across edges (the
 // unfolding, cutting a mesh open). Side s is numbered polygon by polygon; edges[s] is its edge
 // with the smaller vertex first. `order` lists the sides sorted by edge (in side order within an

@@ -455,186 +455,196 @@
     </message>
     <message>
         <location filename="../app/text/problem_text.cpp" line="148"/>
+        <source>The kept development has %1 points, but the surface&apos;s sampled mesh has %2.</source>
+        <translation>Die beibehaltene Abwicklung hat %1 Punkte, das abgetastete Netz der Fläche aber %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="152"/>
+        <source>A point of the kept development is not a finite number.</source>
+        <translation>Ein Punkt der beibehaltenen Abwicklung ist keine endliche Zahl.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="154"/>
         <source>Vertex %1 (of %2) has a position that is not a finite number.</source>
         <translation>Ecke %1 (von %2) hat eine Lage, die keine endliche Zahl ist.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="152"/>
+        <location filename="../app/text/problem_text.cpp" line="158"/>
         <source>Vertex %1 (of %2) lies %3 mm from the origin; coordinates beyond %4 mm (1 km) are not accepted.</source>
         <translation>Ecke %1 (von %2) liegt %3 mm vom Ursprung entfernt; Koordinaten jenseits von %4 mm (1 km) werden nicht angenommen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="157"/>
+        <location filename="../app/text/problem_text.cpp" line="163"/>
         <source>Edge %1 (a curve of %2) has a control point beyond %3 mm from the origin.</source>
         <translation>Kante %1 (eine Kurve von %2) hat einen Kontrollpunkt weiter als %3 mm vom Ursprung.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="161"/>
+        <location filename="../app/text/problem_text.cpp" line="167"/>
         <source>Edge %1 (a curve of %2) has zero length.</source>
         <translation>Kante %1 (eine Kurve von %2) hat die Länge null.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="163"/>
+        <location filename="../app/text/problem_text.cpp" line="169"/>
         <source>Edge %1 (a ruling of %2) has zero length.</source>
         <translation>Kante %1 (eine Erzeugende von %2) hat die Länge null.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="165"/>
+        <location filename="../app/text/problem_text.cpp" line="171"/>
         <source>Patch %1 has coincident vertices %2 and %3.</source>
         <translation>Flächenstück %1 hat zusammenfallende Ecken %2 und %3.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="170"/>
+        <location filename="../app/text/problem_text.cpp" line="176"/>
         <source>Patch %1 has zero area.</source>
         <translation>Flächenstück %1 hat den Flächeninhalt null.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="172"/>
+        <location filename="../app/text/problem_text.cpp" line="178"/>
         <source>Patch %1 is a %2; only an SRSR strip can be cut by a new crease.</source>
         <translation>Flächenstück %1 ist vom Typ „%2“; nur ein SRSR-Streifen kann durch einen neuen Falz geteilt werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="176"/>
+        <location filename="../app/text/problem_text.cpp" line="182"/>
         <source>The new crease cannot continue across ruling edge %1 into patch %2, a %3; a row of strips can only be cut where its rulings border SRSR strips, planar patches or the boundary.</source>
         <translation>Der neue Falz kann nicht über die Erzeugende %1 in das Flächenstück %2 (Typ „%3“) weiterlaufen; eine Reihe von Streifen kann nur geteilt werden, wo ihre Erzeugenden an SRSR-Streifen, ebene Flächenstücke oder den Rand grenzen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="183"/>
+        <location filename="../app/text/problem_text.cpp" line="189"/>
         <source>The row of strips through patch %1 closes on itself with its sides swapped, so it cannot be cut at one distance between its curves.</source>
         <translation>Die Reihe von Streifen durch Flächenstück %1 schließt sich mit vertauschten Seiten, daher kann sie nicht in einem Abstand zwischen ihren Kurven geteilt werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="187"/>
+        <location filename="../app/text/problem_text.cpp" line="193"/>
         <source>The new crease must lie strictly between the strip&apos;s two curves (0 &lt; t &lt; 1, not %1).</source>
         <translation>Der neue Falz muss echt zwischen den beiden Kurven des Streifens liegen (0 &lt; t &lt; 1, nicht %1).</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="191"/>
+        <location filename="../app/text/problem_text.cpp" line="197"/>
         <source>No edge was given to relabel.</source>
         <translation>Es wurde keine Kante zum Umbenennen angegeben.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="193"/>
+        <location filename="../app/text/problem_text.cpp" line="199"/>
         <source>Edge %1 is not a spline curve.</source>
         <translation>Kante %1 ist keine Splinekurve.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="195"/>
+        <location filename="../app/text/problem_text.cpp" line="201"/>
         <source>Patch %1 is a %2; a ruling can only be added to a strip or a cone.</source>
         <translation>Flächenstück %1 ist vom Typ „%2“; eine Erzeugende kann nur einem Streifen oder Kegel hinzugefügt werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="199"/>
+        <location filename="../app/text/problem_text.cpp" line="205"/>
         <source>The curves of patch %1 have a single interval; refine them before adding a ruling.</source>
         <translation>Die Kurven von Flächenstück %1 haben nur ein Intervall; verfeinern Sie sie, bevor Sie eine Erzeugende hinzufügen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="203"/>
+        <location filename="../app/text/problem_text.cpp" line="209"/>
         <source>A ruling can only be added at an interior breakpoint i/%1 of the curves of patch %2 (1 ≤ i ≤ %3, not %4); refine the curves for finer positions.</source>
         <translation>Eine Erzeugende kann nur an einem inneren Knoten i/%1 der Kurven von Flächenstück %2 hinzugefügt werden (1 ≤ i ≤ %3, nicht %4); verfeinern Sie die Kurven für feinere Positionen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="210"/>
+        <location filename="../app/text/problem_text.cpp" line="216"/>
         <source>The curves connected to patch %1 meet themselves reversed, so no ruling position is consistent across them.</source>
         <translation>Die mit Flächenstück %1 verbundenen Kurven treffen sich selbst umgekehrt, daher passt keine Position einer Erzeugenden zu allen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="214"/>
+        <location filename="../app/text/problem_text.cpp" line="220"/>
         <source>Curve %1 uses a different spline space from the curves of patch %2.</source>
         <translation>Kurve %1 hat einen anderen Splineraum als die Kurven von Flächenstück %2.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="218"/>
+        <location filename="../app/text/problem_text.cpp" line="224"/>
         <source>Refining needs a factor of at least 2, not %1.</source>
         <translation>Das Verfeinern braucht einen Faktor von mindestens 2, nicht %1.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="220"/>
+        <location filename="../app/text/problem_text.cpp" line="226"/>
         <source>The curves of edge %1 already have %2 intervals; refining them beyond %3 is not supported.</source>
         <translation>Die Kurven von Kante %1 haben schon %2 Intervalle; mehr als %3 werden nicht unterstützt.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="226"/>
+        <location filename="../app/text/problem_text.cpp" line="232"/>
         <source>No vertex was given to move.</source>
         <translation>Es wurde keine Ecke zum Verschieben angegeben.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="228"/>
+        <location filename="../app/text/problem_text.cpp" line="234"/>
         <source>A rotation needs a finite axis point, a non-zero axis direction and a finite angle.</source>
         <translation>Eine Drehung braucht einen endlichen Achsenpunkt, eine Achsenrichtung ungleich null und einen endlichen Winkel.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="235"/>
+        <location filename="../app/text/problem_text.cpp" line="241"/>
         <source>There is no example called “%1”; the examples are %2.</source>
         <translation>Es gibt kein Beispiel namens „%1“; die Beispiele sind %2.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="239"/>
+        <location filename="../app/text/problem_text.cpp" line="245"/>
         <source>The size of the example “%1” must be between %2 and %3, not %4.</source>
         <translation>Die Größe des Beispiels „%1“ muss zwischen %2 und %3 liegen, nicht %4.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="245"/>
+        <location filename="../app/text/problem_text.cpp" line="251"/>
         <source>The number of samples per spline interval must be between 1 and %1, not %2.</source>
         <translation>Die Zahl der Abtastpunkte je Splineintervall muss zwischen 1 und %1 liegen, nicht %2.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="249"/>
+        <location filename="../app/text/problem_text.cpp" line="255"/>
         <source>Patch %1 is not a strip or a cone.</source>
         <translation>Flächenstück %1 ist weder ein Streifen noch ein Kegel.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="251"/>
+        <location filename="../app/text/problem_text.cpp" line="257"/>
         <source>The two shapes do not have the same patches.</source>
         <translation>Die beiden Formen haben nicht dieselben Flächenstücke.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="253"/>
+        <location filename="../app/text/problem_text.cpp" line="259"/>
         <source>Edge %1 has a crease condition but is a boundary curve, not a crease.</source>
         <translation>Kante %1 hat eine Falzbedingung, ist aber eine Randkurve, kein Falz.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="256"/>
+        <location filename="../app/text/problem_text.cpp" line="262"/>
         <source>Edge %1 has a crease condition but a cone or planar patch lies beside it; crease conditions need a strip on either side.</source>
         <translation>Kante %1 hat eine Falzbedingung, aber neben ihr liegt ein Kegel oder ein ebenes Flächenstück; Falzbedingungen brauchen auf beiden Seiten einen Streifen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="261"/>
+        <location filename="../app/text/problem_text.cpp" line="267"/>
         <source>Edge %1 has a crease condition but its curve is of degree %2; a crease condition needs degree 2 or more.</source>
         <translation>Kante %1 hat eine Falzbedingung, aber ihre Kurve hat den Grad %2; eine Falzbedingung braucht Grad 2 oder mehr.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="268"/>
+        <location filename="../app/text/problem_text.cpp" line="274"/>
         <source>DevSurf met an internal error (%1). Please report it.</source>
         <translation>DevSurf ist auf einen internen Fehler gestoßen (%1). Bitte melden Sie ihn.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="286"/>
+        <location filename="../app/text/problem_text.cpp" line="292"/>
         <source>The sheet size must be positive; the pieces are laid out side by side.</source>
         <translation>Die Bogengröße muss positiv sein; die Teile werden nebeneinander gelegt.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="288"/>
+        <location filename="../app/text/problem_text.cpp" line="294"/>
         <source>%1 is not valid and has no pattern: %2</source>
         <translation>%1 ist ungültig und hat kein Schnittmuster: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="291"/>
+        <location filename="../app/text/problem_text.cpp" line="297"/>
         <source>%1 could not be developed: %2</source>
         <translation>%1 konnte nicht abgewickelt werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="294"/>
+        <location filename="../app/text/problem_text.cpp" line="300"/>
         <source>Piece %1 (%2) overlaps itself at patches %3 and cannot be cut from one sheet.</source>
         <translation>Teil %1 (%2) überlappt sich selbst bei den Flächenstücken %3 und kann nicht aus einem Bogen geschnitten werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="297"/>
+        <location filename="../app/text/problem_text.cpp" line="303"/>
         <source>Pieces %1 (patches %2) and %3 (patches %4) overlap on sheet %5.</source>
         <translation>Die Teile %1 (Flächenstücke %2) und %3 (Flächenstücke %4) überlappen sich auf Bogen %5.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="302"/>
+        <location filename="../app/text/problem_text.cpp" line="308"/>
         <source>Piece %1 (%2) measures %3 × %4 mm and does not fit on the %5 × %6 mm sheet with a %7 mm gap.</source>
         <translation>Teil %1 (%2) misst %3 × %4 mm und passt mit %7 mm Abstand nicht auf den Bogen von %5 × %6 mm.</translation>
     </message>
@@ -2774,8 +2784,13 @@
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; das Beibehalten der Längen schlug fehl (%1), daher wurde das Ziehen mit Dehnen des Blatts wiederholt</translation>
     </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="345"/>
+        <source>; held back %1 mm by the sheet</source>
+        <translation>; vom Bogen um %1 mm zurückgehalten</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="353"/>
+        <location filename="../app/gui/solve_controller.cpp" line="357"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n Flächenstück faltet sich auf sich selbst zurück, wo die Fläche sich selbst überlappt: %1</numerusform>
@@ -2783,7 +2798,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="368"/>
+        <location filename="../app/gui/solve_controller.cpp" line="372"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; die Abwicklung überlappt sich selbst an %n Flächenstück (%1) und lässt sich nicht aus einem Bogen schneiden</numerusform>
@@ -2791,32 +2806,32 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="374"/>
+        <location filename="../app/gui/solve_controller.cpp" line="378"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="379"/>
+        <location filename="../app/gui/solve_controller.cpp" line="383"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="383"/>
+        <location filename="../app/gui/solve_controller.cpp" line="387"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="392"/>
+        <location filename="../app/gui/solve_controller.cpp" line="396"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="442"/>
+        <location filename="../app/gui/solve_controller.cpp" line="446"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>Lösen hat den Entwurf unverändert gelassen: das Lösen machte ihn weniger abwickelbar (größtes Abwickelbarkeitsresiduum %1 → %2).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="465"/>
+        <location filename="../app/gui/solve_controller.cpp" line="469"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n Fläche unverändert gelassen: das Lösen machte sie weniger abwickelbar.</numerusform>
@@ -2824,12 +2839,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="477"/>
+        <location filename="../app/gui/solve_controller.cpp" line="481"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 verworfen: Der Entwurf hat sich während des Lösens geändert; nichts wurde bewegt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="495"/>
+        <location filename="../app/gui/solve_controller.cpp" line="499"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, abwickelbar gehalten: %n Iteration, größtes Bedingungsresiduum %2.</numerusform>
@@ -2838,7 +2853,7 @@
     </message>
     <message>
         <location filename="../app/gui/solve_controller.cpp" line="178"/>
-        <location filename="../app/gui/solve_controller.cpp" line="434"/>
+        <location filename="../app/gui/solve_controller.cpp" line="438"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
     </message>
@@ -2863,12 +2878,12 @@
         <translation> (endete bei Iteration %1, der mit dem kleinsten Residuum)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="411"/>
+        <location filename="../app/gui/solve_controller.cpp" line="415"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="461"/>
+        <location filename="../app/gui/solve_controller.cpp" line="465"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>

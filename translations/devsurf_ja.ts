@@ -449,186 +449,196 @@
     </message>
     <message>
         <location filename="../app/text/problem_text.cpp" line="148"/>
+        <source>The kept development has %1 points, but the surface&apos;s sampled mesh has %2.</source>
+        <translation>保持された展開図の点は %1 個ですが、曲面のサンプリングメッシュは %2 個です。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="152"/>
+        <source>A point of the kept development is not a finite number.</source>
+        <translation>保持された展開図の点に有限でない数があります。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="154"/>
         <source>Vertex %1 (of %2) has a position that is not a finite number.</source>
         <translation>頂点 %1（%2）の位置が有限の数ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="152"/>
+        <location filename="../app/text/problem_text.cpp" line="158"/>
         <source>Vertex %1 (of %2) lies %3 mm from the origin; coordinates beyond %4 mm (1 km) are not accepted.</source>
         <translation>頂点 %1（%2）は原点から %3 mm 離れています。%4 mm (1 km) を超える座標は受け付けません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="157"/>
+        <location filename="../app/text/problem_text.cpp" line="163"/>
         <source>Edge %1 (a curve of %2) has a control point beyond %3 mm from the origin.</source>
         <translation>辺 %1（%2 の曲線）に原点から %3 mm より遠い制御点があります。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="161"/>
+        <location filename="../app/text/problem_text.cpp" line="167"/>
         <source>Edge %1 (a curve of %2) has zero length.</source>
         <translation>辺 %1（%2 の曲線）の長さがゼロです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="163"/>
+        <location filename="../app/text/problem_text.cpp" line="169"/>
         <source>Edge %1 (a ruling of %2) has zero length.</source>
         <translation>辺 %1（%2 の母線）の長さがゼロです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="165"/>
+        <location filename="../app/text/problem_text.cpp" line="171"/>
         <source>Patch %1 has coincident vertices %2 and %3.</source>
         <translation>パッチ %1 の頂点 %2 と %3 が一致しています。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="170"/>
+        <location filename="../app/text/problem_text.cpp" line="176"/>
         <source>Patch %1 has zero area.</source>
         <translation>パッチ %1 の面積がゼロです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="172"/>
+        <location filename="../app/text/problem_text.cpp" line="178"/>
         <source>Patch %1 is a %2; only an SRSR strip can be cut by a new crease.</source>
         <translation>パッチ %1 は%2です。新しい折り線で分割できるのは SRSR ストリップだけです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="176"/>
+        <location filename="../app/text/problem_text.cpp" line="182"/>
         <source>The new crease cannot continue across ruling edge %1 into patch %2, a %3; a row of strips can only be cut where its rulings border SRSR strips, planar patches or the boundary.</source>
         <translation>新しい折り線は母線の辺 %1 を越えてパッチ %2（%3）へ続けられません。ストリップの列を分割できるのは、その母線が SRSR ストリップ、平面パッチまたは境界に接する場所だけです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="183"/>
+        <location filename="../app/text/problem_text.cpp" line="189"/>
         <source>The row of strips through patch %1 closes on itself with its sides swapped, so it cannot be cut at one distance between its curves.</source>
         <translation>パッチ %1 を通るストリップの列は左右が入れ替わって閉じているため、曲線間の一定の位置で分割できません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="187"/>
+        <location filename="../app/text/problem_text.cpp" line="193"/>
         <source>The new crease must lie strictly between the strip&apos;s two curves (0 &lt; t &lt; 1, not %1).</source>
         <translation>新しい折り線はストリップの 2 本の曲線の間になければなりません（0 &lt; t &lt; 1、%1 ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="191"/>
+        <location filename="../app/text/problem_text.cpp" line="197"/>
         <source>No edge was given to relabel.</source>
         <translation>ラベルを変更する辺が指定されていません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="193"/>
+        <location filename="../app/text/problem_text.cpp" line="199"/>
         <source>Edge %1 is not a spline curve.</source>
         <translation>辺 %1 はスプライン曲線ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="195"/>
+        <location filename="../app/text/problem_text.cpp" line="201"/>
         <source>Patch %1 is a %2; a ruling can only be added to a strip or a cone.</source>
         <translation>パッチ %1 は%2です。母線を追加できるのはストリップか錐面だけです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="199"/>
+        <location filename="../app/text/problem_text.cpp" line="205"/>
         <source>The curves of patch %1 have a single interval; refine them before adding a ruling.</source>
         <translation>パッチ %1 の曲線は区間が 1 つだけです。母線を追加する前に細分してください。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="203"/>
+        <location filename="../app/text/problem_text.cpp" line="209"/>
         <source>A ruling can only be added at an interior breakpoint i/%1 of the curves of patch %2 (1 ≤ i ≤ %3, not %4); refine the curves for finer positions.</source>
         <translation>母線を追加できるのはパッチ %2 の曲線の内部の区切り点 i/%1 だけです（1 ≤ i ≤ %3、%4 ではなく）。細かい位置には曲線を細分してください。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="210"/>
+        <location filename="../app/text/problem_text.cpp" line="216"/>
         <source>The curves connected to patch %1 meet themselves reversed, so no ruling position is consistent across them.</source>
         <translation>パッチ %1 につながる曲線は逆向きに自分自身と出会うため、すべてに合う母線の位置がありません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="214"/>
+        <location filename="../app/text/problem_text.cpp" line="220"/>
         <source>Curve %1 uses a different spline space from the curves of patch %2.</source>
         <translation>曲線 %1 のスプライン空間はパッチ %2 の曲線と異なります。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="218"/>
+        <location filename="../app/text/problem_text.cpp" line="224"/>
         <source>Refining needs a factor of at least 2, not %1.</source>
         <translation>細分には 2 以上の倍率が必要です（%1 ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="220"/>
+        <location filename="../app/text/problem_text.cpp" line="226"/>
         <source>The curves of edge %1 already have %2 intervals; refining them beyond %3 is not supported.</source>
         <translation>辺 %1 の曲線はすでに区間数 %2 です。%3 を超える細分には対応していません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="226"/>
+        <location filename="../app/text/problem_text.cpp" line="232"/>
         <source>No vertex was given to move.</source>
         <translation>移動する頂点が指定されていません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="228"/>
+        <location filename="../app/text/problem_text.cpp" line="234"/>
         <source>A rotation needs a finite axis point, a non-zero axis direction and a finite angle.</source>
         <translation>回転には有限の軸上の点、ゼロでない軸方向、有限の角度が必要です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="235"/>
+        <location filename="../app/text/problem_text.cpp" line="241"/>
         <source>There is no example called “%1”; the examples are %2.</source>
         <translation>「%1」という例はありません。例は %2 です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="239"/>
+        <location filename="../app/text/problem_text.cpp" line="245"/>
         <source>The size of the example “%1” must be between %2 and %3, not %4.</source>
         <translation>例「%1」のサイズは %2 から %3 の間でなければなりません（%4 ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="245"/>
+        <location filename="../app/text/problem_text.cpp" line="251"/>
         <source>The number of samples per spline interval must be between 1 and %1, not %2.</source>
         <translation>スプライン区間あたりのサンプル数は 1 から %1 の間でなければなりません（%2 ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="249"/>
+        <location filename="../app/text/problem_text.cpp" line="255"/>
         <source>Patch %1 is not a strip or a cone.</source>
         <translation>パッチ %1 はストリップでも錐面でもありません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="251"/>
+        <location filename="../app/text/problem_text.cpp" line="257"/>
         <source>The two shapes do not have the same patches.</source>
         <translation>2 つの形状のパッチが一致しません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="253"/>
+        <location filename="../app/text/problem_text.cpp" line="259"/>
         <source>Edge %1 has a crease condition but is a boundary curve, not a crease.</source>
         <translation>辺 %1 には折り線の条件がありますが、折り線ではなく境界曲線です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="256"/>
+        <location filename="../app/text/problem_text.cpp" line="262"/>
         <source>Edge %1 has a crease condition but a cone or planar patch lies beside it; crease conditions need a strip on either side.</source>
         <translation>辺 %1 には折り線の条件がありますが、隣に錐面または平面パッチがあります。折り線の条件には両側にストリップが必要です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="261"/>
+        <location filename="../app/text/problem_text.cpp" line="267"/>
         <source>Edge %1 has a crease condition but its curve is of degree %2; a crease condition needs degree 2 or more.</source>
         <translation>辺 %1 には折り線の条件がありますが、曲線の次数が %2 です。折り線の条件には次数 2 以上が必要です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="268"/>
+        <location filename="../app/text/problem_text.cpp" line="274"/>
         <source>DevSurf met an internal error (%1). Please report it.</source>
         <translation>DevSurf で内部エラーが発生しました (%1)。報告してください。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="286"/>
+        <location filename="../app/text/problem_text.cpp" line="292"/>
         <source>The sheet size must be positive; the pieces are laid out side by side.</source>
         <translation>シートの大きさは正でなければなりません。ピースは横に並べて配置します。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="288"/>
+        <location filename="../app/text/problem_text.cpp" line="294"/>
         <source>%1 is not valid and has no pattern: %2</source>
         <translation>%1 は無効で型紙がありません: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="291"/>
+        <location filename="../app/text/problem_text.cpp" line="297"/>
         <source>%1 could not be developed: %2</source>
         <translation>%1 を展開できませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="294"/>
+        <location filename="../app/text/problem_text.cpp" line="300"/>
         <source>Piece %1 (%2) overlaps itself at patches %3 and cannot be cut from one sheet.</source>
         <translation>ピース %1（%2）はパッチ %3 で自分自身と重なっており、1 枚のシートから切り出せません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="297"/>
+        <location filename="../app/text/problem_text.cpp" line="303"/>
         <source>Pieces %1 (patches %2) and %3 (patches %4) overlap on sheet %5.</source>
         <translation>ピース %1（パッチ %2）と %3（パッチ %4）がシート %5 上で重なっています。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="302"/>
+        <location filename="../app/text/problem_text.cpp" line="308"/>
         <source>Piece %1 (%2) measures %3 × %4 mm and does not fit on the %5 × %6 mm sheet with a %7 mm gap.</source>
         <translation>ピース %1（%2）は %3 × %4 mm で、%7 mm の間隔をとると %5 × %6 mm のシートに収まりません。</translation>
     </message>
@@ -2740,59 +2750,64 @@
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; 長さを保てなかったため (%1)、シートの伸びを許してドラッグをやり直しました</translation>
     </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="345"/>
+        <source>; held back %1 mm by the sheet</source>
+        <translation>; シートにより %1 mm 手前で止まりました</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="353"/>
+        <location filename="../app/gui/solve_controller.cpp" line="357"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n 個のパッチが自身の上に折り返され、曲面が自己重複しています: %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="368"/>
+        <location filename="../app/gui/solve_controller.cpp" line="372"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; 展開図が %n 個のパッチで自身と重なっており (%1)、1 枚のシートから切り出せません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="374"/>
+        <location filename="../app/gui/solve_controller.cpp" line="378"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="379"/>
+        <location filename="../app/gui/solve_controller.cpp" line="383"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="383"/>
+        <location filename="../app/gui/solve_controller.cpp" line="387"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="392"/>
+        <location filename="../app/gui/solve_controller.cpp" line="396"/>
         <source>Solve</source>
         <translation>ソルブ</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="442"/>
+        <location filename="../app/gui/solve_controller.cpp" line="446"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>ソルブはデザインを元のままにしました。ソルブで可展性が悪化したためです (最大の可展性残差 %1 → %2)。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="465"/>
+        <location filename="../app/gui/solve_controller.cpp" line="469"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n 個のサーフェスを元のままにしました。ソルブで可展性が悪化したためです。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="477"/>
+        <location filename="../app/gui/solve_controller.cpp" line="481"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 を破棄しました: ソルブ中にデザインが変更されました。何も動いていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="495"/>
+        <location filename="../app/gui/solve_controller.cpp" line="499"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1、可展を維持: %n 回反復、最大の制約残差 %2。</numerusform>
@@ -2800,7 +2815,7 @@
     </message>
     <message>
         <location filename="../app/gui/solve_controller.cpp" line="178"/>
-        <location filename="../app/gui/solve_controller.cpp" line="434"/>
+        <location filename="../app/gui/solve_controller.cpp" line="438"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>ソルブに失敗しました: %1 デザインは変更されていません。</translation>
     </message>
@@ -2825,12 +2840,12 @@
         <translation> (残差が最小の反復 %1 で終了)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="411"/>
+        <location filename="../app/gui/solve_controller.cpp" line="415"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>ソルブ中にデザインが変更されたため、結果を破棄しました。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="461"/>
+        <location filename="../app/gui/solve_controller.cpp" line="465"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>ソルブ完了: %n 回反復、制約残差の最大値 %1。</numerusform>

@@ -262,6 +262,12 @@ int runDragCommand(const DragArguments& args) {
                       assessment.largestHandleGap);
     }
     std::cout << line;
+    if (assessment.sheetHeld && assessment.largestHandleGap > solver::kNegligibleLag) {
+        std::snprintf(line, sizeof line,
+                      "The sheet is kept: the dragged points are held back %.1f mm by it.\n",
+                      assessment.largestHandleGap);
+        std::cout << line;
+    }
     printFoldAndShape(assessment);
     surface = outcome.surfaces.at(index);
     writeProject(project, output);

@@ -341,6 +341,10 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result, const Q
         if (a.held) {
             status += heldText(*a.held);
         }
+        if (a.sheetHeld && a.largestHandleGap > solver::kNegligibleLag) {
+            status += tr("; held back %1 mm by the sheet")
+                          .arg(QString::number(a.largestHandleGap, 'f', 1));
+        }
         QList<int> folded;
         for (const auto& [face, places] : a.foldOvers) {
             (void)places;

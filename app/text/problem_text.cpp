@@ -144,6 +144,12 @@ QString ProblemText::of(const model::Problem& p) {
             .arg(p.edge)
             .arg(p.otherEdge)
             .arg(splineSpace(p.space), splineSpace(p.otherSpace));
+    case ProblemCode::DevelopmentSize:
+        return tr("The kept development has %1 points, but the surface's sampled mesh has %2.")
+            .arg(p.count)
+            .arg(p.expected);
+    case ProblemCode::DevelopmentNotFinite:
+        return tr("A point of the kept development is not a finite number.");
     case ProblemCode::PositionNotFinite:
         return tr("Vertex %1 (of %2) has a position that is not a finite number.")
             .arg(p.vertex)

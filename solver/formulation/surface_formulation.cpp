@@ -63,9 +63,12 @@ struct SurfaceFormulation::Builder {
     std::map<FaceId, StripNormalSpline> stripNormals; // per strip, for the crease conditions
     std::unique_ptr<LinearTerm> smoothness = std::make_unique<LinearTerm>();
     std::unique_ptr<SquaredDistanceTerm> vertexStars = std::make_unique<SquaredDistanceTerm>(2, 3);
+    std::unique_ptr<SquaredDistanceTerm> development = std::make_unique<SquaredDistanceTerm>(2, 3);
+    std::unique_ptr<FairnessTerm> developmentFairness = std::make_unique<FairnessTerm>(2);
     std::unique_ptr<MinimumLengthTerm> spokeGuard = std::make_unique<MinimumLengthTerm>(3);
     std::unique_ptr<TargetTerm> handles = std::make_unique<TargetTerm>();
     std::unique_ptr<TargetTerm> pointHandles = std::make_unique<TargetTerm>(); // soft, if any
+    std::unique_ptr<TargetTerm> pulls = std::make_unique<TargetTerm>(); // soft vertex handles
     std::unique_ptr<TargetTerm> proximity = std::make_unique<TargetTerm>();
     std::unique_ptr<TargetTerm> normalProximity = std::make_unique<TargetTerm>();
     std::unique_ptr<FairnessTerm> fairness = std::make_unique<FairnessTerm>(3);
@@ -414,6 +417,25 @@ struct SurfaceFormulation::Builder {
                                         f.m_initialState, *vertexStars, *spokeGuard, options);
     }
 
+    // The development as variables (§5, eq. 12), fixed where it is kept as given.
+    void addDevelopment() {
+        if (options.developmentSamplesPerInterval <= 0) {
+            return;
+        }
+        std::map<VertexId, int> vertexOffsets;
+        for (const auto& [vertex, point] : f.m_vertexPoint) {
+            vertexOffsets[vertex] = f.pointOffset(point);
+        }
+        f.m_development = solver::addDevelopment(
+            surface, options.developmentSamplesPerInterval,
+            options.developmentStart.empty() ? nullptr : &options.developmentStart, vertexOffsets,
+            edgeOffsets, f.m_scale, f.m_problem, f.m_initialState, *development,
+            *developmentFairness);
+        if (options.fixedDevelopment) {
+            f.m_problem.setBlockFixed("development");
+        }
+    }
+
     // RR…R faces: ⟨n_f, v_{i+1} − v_i⟩ = 0 for every edge, |n_f| = 1 (docs/math.md §3).
     void addPlanarFaces() {
         for (std::size_t i = 0; i < planarFaces.size(); ++i) {
@@ -508,9 +530,21 @@ struct SurfaceFormulation::Builder {
             std::move(vertexStars));
         add("vertexSpokeGuard", TermRole::Constraint, options.vertexDevelopabilityWeight,
             std::move(spokeGuard));
-        f.m_handleTerm = handles->rowCount() > 0 ? handles.get() : nullptr;
-        f.m_controlHandleTerm = pointHandles->rowCount() > 0 ? pointHandles.get() : f.m_handleTerm;
+        add("development", TermRole::Constraint, options.developmentWeight, std::move(development));
+        if (!options.fixedDevelopment && developmentFairness->rowCount() > 0) {
+            f.m_developmentFairness = developmentFairness.get();
+            add("developmentFairness", TermRole::Energy, options.developmentFairnessWeight,
+                std::move(developmentFairness));
+        }
+        TargetTerm* hard = handles->rowCount() > 0 ? handles.get() : nullptr;
+        f.m_handleTerm = pulls->rowCount() > 0 ? pulls.get() : hard;
+        f.m_controlHandleTerm = pointHandles->rowCount() > 0 ? pointHandles.get() : hard;
         add("handles", TermRole::Constraint, options.handleWeight, std::move(handles));
+        if (pulls->rowCount() > 0) {
+            add("pulls", TermRole::Energy, options.pulledHandleWeight, std::move(pulls));
+            f.m_pullEnergy = p.findFamily("pulls");
+            p.setFamilyDrivesEpsilon1(f.m_pullEnergy, true);
+        }
         if (pointHandles->rowCount() > 0) {
             add("creaseHandles", TermRole::Energy, options.controlPointHandleWeight,
                 std::move(pointHandles));
@@ -561,7 +595,8 @@ SurfaceFormulation::SurfaceFormulation(const model::CompositeSurface& surface,
     builder.addPlanarFaces();
     builder.addSmoothRulings();
     builder.addVertexDevelopability();
-    addHandles(*builder.handles,
+    builder.addDevelopment();
+    addHandles(m_options.pulledHandleWeight > 0.0 ? *builder.pulls : *builder.handles,
                m_options.controlPointHandleWeight > 0.0 ? *builder.pointHandles : *builder.handles);
     addSpeedGuards(surface, builder.edgeOffsets, *builder.speedGuard, m_speedCurveStart);
     builder.addProximity();

@@ -3,6 +3,7 @@
 #include "model/composite_surface.h"
 #include "solver/core/options.h"
 #include "solver/core/problem.h"
+#include "solver/formulation/development_terms.h"
 #include "solver/formulation/normal_spline_start.h"
 
 #include <map>
@@ -156,6 +157,18 @@ struct FormulationOptions {
     // rather than imposed on a rough start. The default imposes it everywhere.
     double vertexStartDefectLimit = 1e9;
 
+    // The development in the solve (§5, eq. 12; addDevelopment): a flat copy of the surface
+    // sampled at this many values per spline interval, isometric to it face by face (weight
+    // developmentWeight), with overfolding fairness along every sampled curve (an energy of
+    // developmentFairnessWeight). 0: none. The copy starts at developmentStart (indexed like
+    // model::sampleSurface's mesh at this sampling, millimetres) or, empty, at the unfolding;
+    // fixedDevelopment keeps it where it starts: the surface is then folded from that sheet.
+    int developmentSamplesPerInterval = 0;
+    double developmentWeight = 1.0;
+    double developmentFairnessWeight = 0.01;
+    std::vector<model::Vec2> developmentStart;
+    bool fixedDevelopment = false;
+
     std::vector<VertexHandle> handles;
     std::vector<ControlPointHandle> controlPointHandles;
     // 0: the control-point handles are constraints, as the vertex handles are. Above 0: an
@@ -163,6 +176,10 @@ struct FormulationOptions {
     // far as the conditions let it, for a dragged crease whose every control point is pulled
     // (see creaseDragSessionOptions).
     double controlPointHandleWeight = 0.0;
+    // 0: pulled vertex handles are constraints. Above 0: an energy of this weight (times ε₁,
+    // family "pulls", driving ε₁ while the drag moves) that the constraints may refuse: where
+    // the sheet cannot follow, the vertex lags behind its target. fadeDragEnergies fades it.
+    double pulledHandleWeight = 0.0;
 };
 
 // The configuration for rough starts (a design dragged far, a noisy import): proximity to the
@@ -249,6 +266,15 @@ public:
     // Model coordinates of a coarse vertex in state x.
     model::Vec3 vertexPosition(const std::vector<double>& x, model::VertexId vertex) const;
 
+    // The development in the solve at state x (millimetres) and the mesh it is of; null and
+    // empty without one (FormulationOptions::developmentSamplesPerInterval 0).
+    const model::SampledMesh* developmentMesh() const {
+        return m_development.offset >= 0 ? &m_development.mesh : nullptr;
+    }
+    model::Development development(const std::vector<double>& x) const {
+        return m_development.offset >= 0 ? m_development.read(x) : model::Development{};
+    }
+
     int stripCount() const { return m_stripCount; }
     int coneCount() const { return m_coneCount; }
     int planarFaceCount() const { return m_planarCount; }
@@ -292,12 +318,15 @@ private:
     TargetTerm* m_handleTerm = nullptr;
     TargetTerm* m_controlHandleTerm = nullptr; // m_handleTerm, or the energy's own term
     FamilyId m_controlHandleEnergy = -1;       // the family of that energy, if any
+    FamilyId m_pullEnergy = -1;                // soft vertex handles (pulledHandleWeight)
     FamilyId m_proximityEnergy = -1;           // the pull towards the reference, as an energy
     TargetTerm* m_proximity = nullptr;         // every point towards the reference state
     TargetTerm* m_normalProximity = nullptr;   // every control normal towards the reference state
     int m_normalControlsOffset = 0;
     FairnessTerm* m_pointFairness = nullptr;
     FairnessTerm* m_normalFairness = nullptr;
+    FairnessTerm* m_developmentFairness = nullptr;
+    DevelopmentVariables m_development;
     UnitNormTerm* m_unitControlNormals = nullptr;
     SquaredDistanceTerm* m_isometry = nullptr;
     FamilyId m_isometryFamily = -1;

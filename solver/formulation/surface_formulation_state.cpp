@@ -233,7 +233,7 @@ void SurfaceFormulation::scaleIsometryWeight(double factor) {
 }
 
 void SurfaceFormulation::fadeDragEnergies(double factor) {
-    for (const FamilyId family : {m_controlHandleEnergy, m_proximityEnergy}) {
+    for (const FamilyId family : {m_controlHandleEnergy, m_proximityEnergy, m_pullEnergy}) {
         if (family >= 0) {
             m_problem.setFamilyWeight(family, m_problem.family(family).weight * factor);
             m_problem.setFamilyDrivesEpsilon1(family, false);
@@ -277,6 +277,9 @@ void SurfaceFormulation::setReferenceState(const std::vector<double>& x) {
     }
     if (m_normalFairness) {
         m_normalFairness->setReference(reference);
+    }
+    if (m_developmentFairness) {
+        m_developmentFairness->setReference(reference);
     }
     if (m_unitControlNormals) {
         // Each control normal keeps its reference length (or, absolute, unit length).

@@ -409,7 +409,9 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             assessment.held = model::findVertexHeldByPins(d.built[s], dragged);
         }
         std::optional<std::vector<model::FaceId>> knownOverlaps;
-        if (vertexDragSettles && request.lengths == DragLengths::Automatic && summary.succeeded()) {
+        // A surface that keeps its development is never replayed stretching: its sheet holds.
+        if (vertexDragSettles && request.lengths == DragLengths::Automatic &&
+            !snapshot.keepsDevelopment() && summary.succeeded()) {
             // Keeping lengths failed? Then the same drag from the press, stretching.
             // (finalMaxConstraintResidual is the start's when no iteration completed.)
             const DragOutcome kept =
@@ -474,6 +476,7 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             }
         }
         measureHandleGaps(assessment, *result, handles, points);
+        assessment.sheetHeld = result->keepsDevelopment();
         if (settle) {
             measureSettled(assessment, *result, drag ? &d.built[s] : nullptr, knownOverlaps);
         }

@@ -72,6 +72,9 @@ struct LengthsReplay {
 };
 
 // Everything the front ends say about one surface of an outcome. Measured once, here.
+// A vertex held back by the sheet by less than this (mm) has followed the mouse.
+inline constexpr double kNegligibleLag = 0.01;
+
 struct SurfaceAssessment {
     bool solved = false; // false: left as it was (a drag's surfaces without handles)
     Summary summary;
@@ -90,6 +93,9 @@ struct SurfaceAssessment {
     std::optional<model::HeldVertex> held;
     std::vector<HandleGap> handleGaps;
     double largestHandleGap = 0.0;
+    // The surface keeps its development: a dragged vertex goes only as far as the sheet lets
+    // it, and largestHandleGap says how far it lags behind the mouse.
+    bool sheetHeld = false;
 
     // The rest is measured on settled outcomes only (Solve, Edit, a drag's release).
     bool measured = false;

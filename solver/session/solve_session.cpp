@@ -178,8 +178,22 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
             m_options.formulation.lengthDampingWeight = kRoughSolveLengthDamping;
         }
     }
+    if (surface.keepsDevelopment()) {
+        // The sheet is held (§5): the surface stays isometric to its development, which no
+        // iteration changes, and a pulled vertex is a wish the sheet may refuse (it lags).
+        FormulationOptions& f = m_options.formulation;
+        f.developmentSamplesPerInterval = model::kDevelopmentSamplesPerInterval;
+        f.developmentStart = surface.development();
+        f.fixedDevelopment = true;
+        if (m_dragging && f.pulledHandleWeight == 0.0) {
+            f.pulledHandleWeight = kSheetPullWeight;
+        }
+    }
     m_formulation = std::make_unique<SurfaceFormulation>(surface, m_options.formulation);
     m_x = m_formulation->initialState();
+    if (surface.keepsDevelopment() && surface.development().empty()) {
+        m_surface.setDevelopment(m_formulation->development(m_x).vertices); // unfolded now
+    }
 }
 
 SolveSession::~SolveSession() = default;

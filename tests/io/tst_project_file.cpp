@@ -1,7 +1,9 @@
 #include "io/crc32.h"
 #include "io/file_error.h"
 #include "io/project_file.h"
+#include "model/development.h"
 #include "model/examples.h"
+#include "model/sampled_mesh.h"
 #include "model/surface_statistics.h"
 #include "test_registry.h"
 
@@ -257,6 +259,39 @@ private slots:
         unpinned.surfaces[0].setPinned(*surface.pinnedVertices().begin(), false);
         QVERIFY(!(unpinned == project));
         QVERIFY(io::encodeProject(unpinned) != io::encodeProject(project));
+    }
+
+    void keptDevelopmentRoundTrips() {
+        model::Project project = model::makeExample("fig8", 0);
+        model::CompositeSurface& surface = project.surfaces[0];
+        surface.setKeepsDevelopment(true);
+        const model::Development unfolded = model::unfoldSampledMesh(
+            model::sampleSurface(surface, model::kDevelopmentSamplesPerInterval));
+        std::vector<model::Vec2> points = unfolded.vertices;
+        points.front().x += 1.0 / 3.0; // not a round number: the bits must survive
+        surface.setDevelopment(points);
+        const std::string bytes = io::encodeProject(project);
+        const model::Project loaded = io::decodeProject(bytes);
+        QVERIFY(loaded.surfaces[0].keepsDevelopment());
+        QVERIFY(loaded.surfaces[0].development() == points);
+        QVERIFY(loaded == project);
+        QCOMPARE(io::encodeProject(loaded), bytes);
+        // The setting alone (nothing derived yet) is saved too.
+        model::Project settingOnly = project;
+        settingOnly.surfaces[0].setDevelopment({});
+        QVERIFY(io::decodeProject(io::encodeProject(settingOnly)) == settingOnly);
+        // A development that does not fit the surface is refused with a sentence.
+        model::Project damaged = project;
+        points.pop_back();
+        damaged.surfaces[0].setDevelopment(points);
+        bool refused = false;
+        try {
+            io::decodeProject(io::encodeProject(damaged));
+        } catch (const io::FileError& error) {
+            refused = !error.problems().empty() &&
+                      error.problems().front().code == model::ProblemCode::DevelopmentSize;
+        }
+        QVERIFY(refused);
     }
 };
 

@@ -1,0 +1,130 @@
+#include "development_terms.h"
+
+#include "model/bspline_curve.h"
+#include "solver/formulation/point_combinations.h"
+
+#include <stdexcept>
+
+namespace devsurf::solver {
+
+namespace {
+
+// A point of a combination of 3D state points at x.
+model::Vec3 valueOf(const PointCombination& c, const std::vector<double>& x) {
+    model::Vec3 p;
+    for (const PointTerm& t : c) {
+        const auto o = static_cast<std::size_t>(t.offset);
+        p = p + model::Vec3(x[o], x[o + 1], x[o + 2]) * t.coefficient;
+    }
+    return p;
+}
+
+// Every mesh vertex as a linear evaluation of the state: coarse vertices are points; samples
+// of an S-edge, which model::sampleSurface takes at u = i / (intervals · samples) of the
+// uniform curve in stored orientation, are de Boor combinations of its control points.
+std::vector<PointCombination>
+meshVertexCombinations(const model::CompositeSurface& surface, const model::SampledMesh& mesh,
+                       int samplesPerInterval, const std::map<model::VertexId, int>& vertexOffsets,
+                       const std::map<model::EdgeId, std::vector<int>>& edgeOffsets) {
+    std::vector<PointCombination> combinations(mesh.vertices.size());
+    for (std::size_t i = 0; i < mesh.coarseVertexIds.size(); ++i) {
+        combinations[i] = {{vertexOffsets.at(mesh.coarseVertexIds[i]), 1.0}};
+    }
+    for (const model::SampledMesh::Polyline& line : mesh.splineEdges) {
+        const model::EdgeRecord& record = surface.edge(line.edge);
+        const std::vector<int>& offsets = edgeOffsets.at(line.edge);
+        const model::BSplineCurve curve =
+            model::BSplineCurve::uniform(record.space, record.controlPoints);
+        const int count = record.space.intervals * samplesPerInterval;
+        for (int k = 1; k < count; ++k) {
+            const model::DeBoorRows rows = curve.deBoorRows(static_cast<double>(k) / count);
+            PointCombination c;
+            for (std::size_t j = 0; j < rows.indices.size(); ++j) {
+                c.push_back({offsets.at(static_cast<std::size_t>(rows.indices[j])), rows.point[j]});
+            }
+            combinations[static_cast<std::size_t>(line.vertices[static_cast<std::size_t>(k)])] =
+                simplified(c);
+        }
+    }
+    return combinations;
+}
+
+} // namespace
+
+model::Development DevelopmentVariables::read(const std::vector<double>& x) const {
+    model::Development development;
+    development.vertices.reserve(mesh.vertices.size());
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+        const auto o = static_cast<std::size_t>(offset) + 2 * i;
+        development.vertices.push_back(origin + model::Vec2(x[o], x[o + 1]) * scale);
+    }
+    development.components = 1;
+    return development;
+}
+
+DevelopmentVariables addDevelopment(const model::CompositeSurface& surface, int samplesPerInterval,
+                                    const std::vector<model::Vec2>* start,
+                                    const std::map<model::VertexId, int>& vertexOffsets,
+                                    const std::map<model::EdgeId, std::vector<int>>& edgeOffsets,
+                                    double scale, Problem& problem, std::vector<double>& state,
+                                    SquaredDistanceTerm& isometry, FairnessTerm& fairness) {
+    DevelopmentVariables result;
+    result.mesh = model::sampleSurface(surface, samplesPerInterval);
+    result.scale = scale;
+    const model::SampledMesh& mesh = result.mesh;
+    std::vector<model::Vec2> flat;
+    if (start != nullptr) {
+        if (start->size() != mesh.vertices.size()) {
+            throw std::invalid_argument("the kept development has " +
+                                        std::to_string(start->size()) + " vertices, the mesh " +
+                                        std::to_string(mesh.vertices.size()));
+        }
+        flat = *start;
+    } else {
+        flat = model::unfoldSampledMesh(mesh).vertices;
+    }
+    for (const model::Vec2& p : flat) {
+        result.origin = result.origin + p * (1.0 / static_cast<double>(flat.size()));
+    }
+    const std::vector<PointCombination> points =
+        meshVertexCombinations(surface, mesh, samplesPerInterval, vertexOffsets, edgeOffsets);
+
+    result.offset =
+        problem.addVariableBlock("development", 2 * static_cast<int>(mesh.vertices.size()));
+    state.resize(static_cast<std::size_t>(problem.variableCount()), 0.0);
+    for (std::size_t i = 0; i < flat.size(); ++i) {
+        const model::Vec2 p = (flat[i] - result.origin) * (1.0 / scale);
+        state[static_cast<std::size_t>(result.offset) + 2 * i] = p.x;
+        state[static_cast<std::size_t>(result.offset) + 2 * i + 1] = p.y;
+    }
+    auto flatOf = [&result](int vertex) {
+        return PointCombination{{result.offset + 2 * vertex, 1.0}};
+    };
+    for (const std::vector<int>& face : mesh.faces) {
+        for (std::size_t i = 0; i < face.size(); ++i) {
+            for (std::size_t j = i + 1; j < face.size(); ++j) {
+                const int a = face[i];
+                const int b = face[j];
+                const PointCombination space =
+                    simplified(plus(points[static_cast<std::size_t>(a)],
+                                    points[static_cast<std::size_t>(b)], -1.0));
+                const double length = valueOf(space, state).norm();
+                if (!(length > 0.0)) {
+                    continue; // coincident samples (a pointed end): no pair to keep
+                }
+                const int row = isometry.addRow(plus(flatOf(a), flatOf(b), -1.0), space, 0.0);
+                isometry.setRowScale(row, 1.0 / (length * length));
+            }
+        }
+    }
+    for (const model::SampledMesh::Polyline& line : mesh.splineEdges) {
+        std::vector<int> offsets;
+        for (int v : line.vertices) {
+            offsets.push_back(result.offset + 2 * v);
+        }
+        fairness.addSequence(offsets);
+    }
+    return result;
+}
+
+} // namespace devsurf::solver

@@ -1,0 +1,47 @@
+#pragma once
+
+// The development in the solve (§5, eq. 12; docs/math.md §7): a flat copy of the sampled mesh
+// as variables, isometric to the surface face by face.
+
+#include "model/composite_surface.h"
+#include "model/development.h"
+#include "model/sampled_mesh.h"
+#include "solver/core/fairness_term.h"
+#include "solver/core/problem.h"
+#include "solver/core/squared_distance_term.h"
+
+#include <map>
+#include <vector>
+
+namespace devsurf::solver {
+
+// Where the flat copy lives in the state, and how to read it back in millimetres.
+struct DevelopmentVariables {
+    model::SampledMesh mesh; // the sampled mesh the copy is of
+    int offset = -1;         // block "development": v̄ of mesh vertex i at offset + 2 i
+    model::Vec2 origin;      // a development point is origin + scale · (state values)
+    double scale = 1.0;
+
+    model::Development read(const std::vector<double>& x) const;
+};
+
+// Samples `surface` at `samplesPerInterval` values per spline interval (model::sampleSurface)
+// and appends to `problem` a block "development" with a 2D point v̄ per mesh vertex, starting at
+// `start` (indexed like the mesh, millimetres) or, without one, at the mesh's unfolding
+// (model::unfoldSampledMesh). Every mesh vertex v is a linear evaluation of the state: a coarse
+// vertex's point, or a sample a(u) of an S-edge as the de Boor combination of its control points
+// (`vertexOffsets`, `edgeOffsets`: state offsets, S-edge control points in stored orientation).
+// `isometry` (left dimension 2, right 3) gets (12) for every pair of vertices of every sampled
+// face, ‖v̄ᵢ − v̄ⱼ‖² − ‖vᵢ − vⱼ‖² = 0, each row divided by the pair's squared length at the start
+// so that a residual is a relative change of squared length; `fairness` (dimension 2) gets the
+// overfolding fairness Σ‖v̄ᵢ₊₁ − 2v̄ᵢ + v̄ᵢ₋₁‖² along every sampled S-edge. State coordinates are
+// model coordinates less `centre`, divided by `scale` (the formulation's frame); `state` is
+// resized to the problem's variable count and the block filled.
+DevelopmentVariables addDevelopment(const model::CompositeSurface& surface, int samplesPerInterval,
+                                    const std::vector<model::Vec2>* start,
+                                    const std::map<model::VertexId, int>& vertexOffsets,
+                                    const std::map<model::EdgeId, std::vector<int>>& edgeOffsets,
+                                    double scale, Problem& problem, std::vector<double>& state,
+                                    SquaredDistanceTerm& isometry, FairnessTerm& fairness);
+
+} // namespace devsurf::solver

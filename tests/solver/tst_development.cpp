@@ -1,0 +1,295 @@
+// The development in the solve (§5, eq. 12): its rows' Jacobians, a flat design staying put, and
+// drags that keep the surface isometric to its development, measured from the written-back
+// geometry (model::sampleSurface), not from the solver's residuals.
+
+#include "model/composite_surface.h"
+#include "model/development.h"
+#include "model/examples.h"
+#include "model/sampled_mesh.h"
+#include "solver/core/guided_projection.h"
+#include "solver/formulation/surface_formulation.h"
+#include "solver/quality/crease_quality.h"
+#include "solver/quality/quality_measures.h"
+#include "solver/session/solve_session.h"
+#include "solver_test_problems.h"
+#include "test_registry.h"
+
+#include <QtTest>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+using namespace devsurf;
+using model::Vec3;
+using solver::testing::familyRows;
+
+namespace {
+
+constexpr int kSamples = 2; // per spline interval
+
+// Largest relative difference between the length of an edge of a sampled face (all its vertex
+// pairs) on `surface`, sampled anew, and in `development`.
+double pairLengthError(const model::CompositeSurface& surface,
+                       const std::vector<model::Vec2>& development) {
+    const model::SampledMesh mesh = model::sampleSurface(surface, kSamples);
+    if (mesh.vertices.size() != development.size()) {
+        return 1.0;
+    }
+    double worst = 0.0;
+    for (const std::vector<int>& face : mesh.faces) {
+        for (std::size_t i = 0; i < face.size(); ++i) {
+            for (std::size_t j = i + 1; j < face.size(); ++j) {
+                const auto a = static_cast<std::size_t>(face[i]);
+                const auto b = static_cast<std::size_t>(face[j]);
+                const double space = model::distance(mesh.vertices[a], mesh.vertices[b]);
+                const double flat = (development[a] - development[b]).norm();
+                worst = std::max(worst, std::abs(space - flat) / space);
+            }
+        }
+    }
+    return worst;
+}
+
+double largestCoordinateChange(const model::CompositeSurface& a, const model::CompositeSurface& b) {
+    double worst = 0.0;
+    for (const auto& [id, p] : a.vertices()) {
+        worst = std::max(worst, model::distance(p, b.position(id)));
+    }
+    for (const auto& [id, record] : a.edges()) {
+        for (std::size_t k = 0; k < record.controlPoints.size(); ++k) {
+            worst = std::max(worst,
+                             model::distance(record.controlPoints[k], b.edge(id).controlPoints[k]));
+        }
+    }
+    return worst;
+}
+
+// A vertex drag as the solve job runs one (keepLengthsSessionOptions): `pulled` lifted by `lift`
+// in 20 moves of one iteration each, then 20 iterations after the release.
+struct Dragged {
+    model::CompositeSurface surface;
+    solver::Summary summary;
+    double largestGap = 0.0; // of a pulled vertex from its final target
+    double smallestRise = 0.0;
+};
+
+Dragged dragUp(const model::CompositeSurface& start, const std::vector<model::VertexId>& pulled,
+               double lift) {
+    std::vector<solver::VertexHandle> handles;
+    for (model::VertexId v : pulled) {
+        handles.push_back({v, false, start.position(v)});
+    }
+    solver::SolveSession session(start, handles, solver::keepLengthsSessionOptions());
+    Dragged result;
+    for (int k = 1; k <= 20; ++k) {
+        for (model::VertexId v : pulled) {
+            session.setHandleTarget(v, start.position(v) + Vec3(0, 0, lift * k / 20.0));
+        }
+        result.summary = session.step(1);
+    }
+    session.settle();
+    result.summary = session.step(20);
+    result.surface = session.surface();
+    result.smallestRise = lift;
+    for (model::VertexId v : pulled) {
+        const Vec3 target = start.position(v) + Vec3(0, 0, lift);
+        result.largestGap =
+            std::max(result.largestGap, model::distance(result.surface.position(v), target));
+        result.smallestRise =
+            std::min(result.smallestRise, result.surface.position(v).z - start.position(v).z);
+    }
+    return result;
+}
+
+// The bounding box in x and y of a design's vertices or of a development.
+struct Box {
+    model::Vec2 low{1e300, 1e300};
+    model::Vec2 high{-1e300, -1e300};
+    void add(double x, double y) {
+        low = {std::min(low.x, x), std::min(low.y, y)};
+        high = {std::max(high.x, x), std::max(high.y, y)};
+    }
+};
+Box boxOf(const model::CompositeSurface& s) {
+    Box box;
+    for (const auto& [id, p] : s.vertices()) {
+        box.add(p.x, p.y);
+    }
+    return box;
+}
+Box boxOf(const std::vector<model::Vec2>& points) {
+    Box box;
+    for (const model::Vec2& p : points) {
+        box.add(p.x, p.y);
+    }
+    return box;
+}
+
+// The vertices strictly inside the bounding square of a flat design.
+std::vector<model::VertexId> innerVertices(const model::CompositeSurface& s) {
+    const Box box = boxOf(s);
+    std::vector<model::VertexId> inner;
+    for (const auto& [id, p] : s.vertices()) {
+        if (p.x > box.low.x + 1e-9 && p.x < box.high.x - 1e-9 && p.y > box.low.y + 1e-9 &&
+            p.y < box.high.y - 1e-9) {
+            inner.push_back(id);
+        }
+    }
+    return inner;
+}
+
+// The largest distance of an S-edge's control points from the chord of its ends: 0 for a
+// straight crease.
+double leastCurvedCrease(const model::CompositeSurface& s) {
+    double least = 1e300;
+    for (const auto& [id, record] : s.edges()) {
+        if (record.condition == model::CreaseCondition::None) {
+            continue;
+        }
+        const Vec3 a = record.controlPoints.front();
+        const Vec3 d = record.controlPoints.back() - a;
+        double most = 0.0;
+        for (const Vec3& p : record.controlPoints) {
+            const Vec3 r = p - a;
+            most = std::max(most, (r - d * (model::dot(r, d) / model::dot(d, d))).norm());
+        }
+        least = std::min(least, most);
+    }
+    return least;
+}
+
+solver::FormulationOptions withDevelopment() {
+    solver::FormulationOptions options;
+    options.developmentSamplesPerInterval = kSamples;
+    return options;
+}
+
+} // namespace
+
+class TstDevelopment : public QObject {
+    Q_OBJECT
+
+private slots:
+    void rowsAndJacobians() {
+        const model::CompositeSurface sheet = model::makeExample("sheet").surfaces.front();
+        const solver::SurfaceFormulation f(sheet, withDevelopment());
+        const solver::Problem& problem = f.problem();
+        const model::SampledMesh* mesh = f.developmentMesh();
+        QVERIFY(mesh != nullptr);
+        QCOMPARE(problem.block("development").size, 2 * static_cast<int>(mesh->vertices.size()));
+        int pairs = 0;
+        for (const auto& face : mesh->faces) {
+            pairs += static_cast<int>(face.size() * (face.size() - 1) / 2);
+        }
+        QCOMPARE(familyRows(problem, "development"), pairs);
+        QVERIFY(familyRows(problem, "developmentFairness") > 0);
+        std::mt19937 rng(11);
+        const std::vector<double> x = solver::testing::randomVector(rng, problem.variableCount());
+        for (int t = 0; t < problem.termCount(); ++t) {
+            const solver::Term& term = problem.term(t);
+            const double error = solver::testing::jacobianError(
+                solver::testing::analyticJacobian(term, x),
+                solver::testing::finiteDifferenceJacobian(term, x, 1e-6));
+            QVERIFY2(error < 1e-6, term.typeName());
+        }
+        QCOMPARE(familyRows(solver::SurfaceFormulation(sheet, {}).problem(), "development"), 0);
+    }
+
+    void flatDesignStaysPut() {
+        const model::CompositeSurface sheet = model::makeExample("sheet").surfaces.front();
+        const solver::SurfaceFormulation f(sheet, withDevelopment());
+        std::vector<double> x = f.initialState();
+        solver::Options options;
+        options.maxIterations = 10;
+        solver::GuidedProjection projection;
+        const solver::Summary summary = projection.solve(f.problem(), x, options);
+        QVERIFY(summary.succeeded());
+        model::CompositeSurface solved = sheet;
+        QVERIFY(f.writeBack(x, solved));
+        QVERIFY(largestCoordinateChange(sheet, solved) < 1e-9);
+        QVERIFY(pairLengthError(solved, f.development(x).vertices) < 1e-12);
+    }
+
+    void developmentKeptAcrossEdits() {
+        model::CompositeSurface sheet = model::makeExample("sheet").surfaces.front();
+        sheet.setKeepsDevelopment(true);
+        QVERIFY(sheet.development().empty());
+        solver::SolveSession session(sheet, {});
+        QVERIFY(session.step(2).succeeded());
+        const model::CompositeSurface solved = session.surface();
+        QCOMPARE(solved.development().size(),
+                 model::sampledVertexCount(solved, model::kDevelopmentSamplesPerInterval));
+        QVERIFY(solved.validate().empty());
+        QVERIFY(pairLengthError(solved, solved.development()) < 1e-12);
+        // A development of the wrong size is a problem validate() names; a change of an
+        // edge's orientation (which reorders its samples) empties it, the setting stays.
+        model::CompositeSurface damaged = solved;
+        std::vector<model::Vec2> shorter = solved.development();
+        shorter.pop_back();
+        damaged.setDevelopment(shorter);
+        QVERIFY(!damaged.validate().empty());
+        QCOMPARE(damaged.validate().front().code, model::ProblemCode::DevelopmentSize);
+        model::CompositeSurface reversed = solved;
+        reversed.reverseEdge(reversed.edges().begin()->first);
+        QVERIFY(reversed.development().empty());
+        QVERIFY(reversed.keepsDevelopment());
+        QVERIFY(!(reversed == solved));
+    }
+
+    void impossibleLiftLagsAndKeepsTheSheet() {
+        // Four corners of a flat square pinned: no isometric shape lifts its middle. The
+        // vertices lag (they do not move), the surface stays developable and isometric to the
+        // sheet; without the sheet held, the same drag is taken by stretching it.
+        model::CompositeSurface sheet = model::makeExample("sheet").surfaces.front();
+        const Box box = boxOf(sheet);
+        for (const auto& [id, p] : sheet.vertices()) {
+            const bool xEnd = std::abs(p.x - box.low.x) < 1e-9 || std::abs(p.x - box.high.x) < 1e-9;
+            const bool yEnd = std::abs(p.y - box.low.y) < 1e-9 || std::abs(p.y - box.high.y) < 1e-9;
+            if (xEnd && yEnd) {
+                sheet.setPinned(id, true);
+            }
+        }
+        QCOMPARE(static_cast<int>(sheet.pinnedVertices().size()), 4);
+        const std::vector<model::VertexId> middle = innerVertices(sheet);
+        QCOMPARE(static_cast<int>(middle.size()), 4);
+        const Dragged stretched = dragUp(sheet, middle, 60.0);
+        QVERIFY(stretched.largestGap < 1e-3); // followed the mouse: the sheet stretched
+        QVERIFY(model::unfoldSampledMesh(model::sampleSurface(stretched.surface, kSamples))
+                    .maxEdgeLengthError > 1e-3);
+
+        sheet.setKeepsDevelopment(true);
+        const Dragged held = dragUp(sheet, middle, 60.0);
+        QVERIFY(held.summary.succeeded());
+        QVERIFY2(held.largestGap > 59.0, qPrintable(QString::number(held.largestGap)));
+        QVERIFY(solver::measureQuality(held.surface).developabilityMax < 1e-8);
+        QVERIFY(pairLengthError(held.surface, held.surface.development()) < 1e-10);
+        QVERIFY(held.surface.validate().empty());
+    }
+
+    void fig8LiftKeepsTheSquare() {
+        // The paper's Fig. 8, top row: the middle vertices lifted by 20 % of the diameter (85 mm
+        // of a 300 mm square's 424 mm), the bottom corners pinned as the example comes.
+        model::CompositeSurface fig8 = model::makeExample("fig8").surfaces.front();
+        fig8.setKeepsDevelopment(true);
+        const std::vector<model::VertexId> middle = innerVertices(fig8);
+        QCOMPARE(static_cast<int>(middle.size()), 4);
+        const Dragged lifted = dragUp(fig8, middle, 85.0);
+        QVERIFY(lifted.summary.succeeded());
+        const model::CompositeSurface& s = lifted.surface;
+        QVERIFY(s.validate().empty());
+        QVERIFY(solver::measureQuality(s).developabilityMax < 1e-8);
+        QVERIFY(solver::measureCreaseQuality(s).residualMax < 1e-8);
+        QVERIFY(pairLengthError(s, s.development()) < 1e-10);
+        QVERIFY(lifted.smallestRise > 40.0); // it folds up, as far as the sheet lets it
+        QVERIFY(leastCurvedCrease(s) > 1.0); // every crease still curved
+        // The development is the 300 × 300 mm square the design started as.
+        const Box sheet = boxOf(s.development());
+        QVERIFY(std::abs(sheet.high.x - sheet.low.x - 300.0) < 1e-9);
+        QVERIFY(std::abs(sheet.high.y - sheet.low.y - 300.0) < 1e-9);
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstDevelopment);
+
+#include "tst_development.moc"
