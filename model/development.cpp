@@ -86,6 +86,21 @@ void alignToProjection(const SampledMesh& mesh, const std::vector<int>& componen
 
 } // namespace
 
+std::optional<Problem> keepDevelopment(CompositeSurface& surface) {
+    const Development unfolded =
+        unfoldSampledMesh(sampleSurface(surface, kDevelopmentSamplesPerInterval));
+    if (unfolded.components != 1 || unfolded.period || unfolded.closureError > kOneSheetClosure) {
+        Problem problem = problemOf(ProblemCode::NotOneSheet);
+        problem.count = unfolded.components;
+        problem.value = unfolded.period ? unfolded.period->norm() : unfolded.closureError;
+        problem.limit = unfolded.period ? 1.0 : 0.0; // 1: closes up with a period
+        return problem;
+    }
+    surface.setKeepsDevelopment(true);
+    surface.setDevelopment(unfolded.vertices);
+    return std::nullopt;
+}
+
 Development unfoldSampledMesh(const SampledMesh& mesh) {
     Development dev;
     dev.vertices.assign(mesh.vertices.size(), Vec2());

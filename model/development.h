@@ -28,6 +28,15 @@ struct Development {
 // period along +x.
 Development unfoldSampledMesh(const SampledMesh& mesh);
 
+// The largest gap (mm) at which an unfolding still counts as one flat sheet (closure error).
+inline constexpr double kOneSheetClosure = 1e-3;
+
+// Starts keeping the development of `surface` (CompositeSurface::keepsDevelopment): its sampled
+// mesh unfolded becomes the sheet it is folded from. Returns the problem instead, changing
+// nothing, where the surface is not one flat sheet: several parts, an unfolding that closes up
+// only with a period (a cylinder) or not at all (closure error above kOneSheetClosure).
+std::optional<Problem> keepDevelopment(CompositeSurface& surface);
+
 // Relative edge-length error between the mesh and a development of it (§8), using the
 // development's period where it has one.
 double edgeLengthError(const SampledMesh& mesh, const Development& development);

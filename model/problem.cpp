@@ -67,6 +67,7 @@ const char* codeName(ProblemCode code) {
         DEVSURF_CODE(ConditionOnBoundary)
         DEVSURF_CODE(ConditionBesideNonStrip)
         DEVSURF_CODE(ConditionNeedsDegree)
+        DEVSURF_CODE(NotOneSheet)
         DEVSURF_CODE(Internal)
 #undef DEVSURF_CODE
     }

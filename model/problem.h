@@ -74,7 +74,9 @@ enum class ProblemCode {
     ConditionOnBoundary,     // edge has a crease condition but is a boundary curve
     ConditionBesideNonStrip, // edge has a crease condition beside a cone or planar patch
     ConditionNeedsDegree,    // edge has a crease condition but its curve's degree is `count`
-    Internal,                // a bug; detail says where
+    NotOneSheet, // not one flat sheet: count parts; limit 1: closes with period `value` mm, else
+                 // its unfolding misses closing up by `value` mm
+    Internal,    // a bug; detail says where
 };
 
 // What a problem's `element` and `id` name for the codes that concern any kind of entity.

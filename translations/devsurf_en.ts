@@ -59,6 +59,17 @@
     </message>
 </context>
 <context>
+    <name>ProblemText</name>
+    <message numerus="yes">
+        <location filename="../app/text/problem_text.cpp" line="273"/>
+        <source>The surface is not one sheet: it has %n separate part(s).</source>
+        <translation>
+            <numerusform>The surface is not one sheet: it has %n separate part.</numerusform>
+            <numerusform>The surface is not one sheet: it has %n separate parts.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>RelabelEdgeCommand</name>
     <message numerus="yes">
         <location filename="../model/document/commands/relabel_edge_command.cpp" line="28"/>
@@ -134,7 +145,7 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="368"/>
+        <location filename="../app/gui/main_window.cpp" line="372"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n surface</numerusform>
@@ -142,7 +153,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="369"/>
+        <location filename="../app/gui/main_window.cpp" line="373"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n patch</numerusform>
@@ -150,7 +161,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="370"/>
+        <location filename="../app/gui/main_window.cpp" line="374"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n control point</numerusform>
@@ -158,7 +169,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="371"/>
+        <location filename="../app/gui/main_window.cpp" line="375"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n selected</numerusform>

@@ -116,7 +116,14 @@ int commandInfo(const SubcommandArguments& args) {
                   << "  Control points: " << stats.controlPoints << "\n"
                   << "  Vertices: " << stats.vertices << "\n"
                   << "  Edges: " << stats.splineEdges << " S, " << stats.rulingEdges << " R\n"
-                  << "  Pinned vertices: " << surface.pinnedVertices().size() << "\n";
+                  << "  Pinned vertices: " << surface.pinnedVertices().size() << "\n"
+                  << "  Sheet: "
+                  << (!surface.keepsDevelopment() ? std::string("not held (it may stretch)")
+                      : surface.development().empty()
+                          ? std::string("held, unfolded at the next solve")
+                          : "held (" + std::to_string(surface.development().size()) +
+                                " development points)")
+                  << "\n";
     }
     if (listing.vertices || listing.edges) {
         app::printEntities(project, listing, std::cout);
@@ -214,18 +221,14 @@ int run(const std::vector<std::string>& args) {
         return kExitOk;
     }
     using Runner = int (*)(const SubcommandArguments&);
-    static const std::pair<const char*, Runner> runners[] = {{"example", commandExample},
-                                                             {"info", commandInfo},
-                                                             {"pin", runPinCommand},
-                                                             {"crease", runCreaseCommand},
-                                                             {"smooth", runSmoothCommand},
-                                                             {"validate", commandValidate},
-                                                             {"export-json", commandExportJson},
-                                                             {"examples", commandExamples},
-                                                             {"solve", commandSolve},
-                                                             {"drag", commandDrag},
-                                                             {"export", runExportPatternCommand},
-                                                             {"report", runReportCommand}};
+    static const std::pair<const char*, Runner> runners[] = {
+        {"example", commandExample},   {"info", commandInfo},
+        {"pin", runPinCommand},        {"sheet", runSheetCommand},
+        {"crease", runCreaseCommand},  {"smooth", runSmoothCommand},
+        {"validate", commandValidate}, {"export-json", commandExportJson},
+        {"examples", commandExamples}, {"solve", commandSolve},
+        {"drag", commandDrag},         {"export", runExportPatternCommand},
+        {"report", runReportCommand}};
     for (const auto& [name, runner] : runners) {
         if (command == name) {
             return runner(parsed);

@@ -46,6 +46,18 @@ const std::vector<SubcommandSpec>& subcommands() {
           {"unpin", "", "Release the vertices instead."},
           kSurface,
           kOutputProject}},
+        {"sheet",
+         "sheet FILE (--free | --off) [--surface K] -o OUT.devsurf",
+         "Hold the sheet: the surface keeps its development as it unfolds\n"
+         "now, and every solve and drag keeps it isometric to that sheet (a\n"
+         "dragged vertex lags where the sheet cannot follow, instead of the\n"
+         "sheet stretching); --off lets the sheet stretch again. Only a\n"
+         "surface that unfolds into one flat sheet can hold it. Confining the\n"
+         "sheet to a rectangle, disk, annulus or outline is not available yet.",
+         {{"free", "", "Hold the sheet as it unfolds, its boundary free."},
+          {"off", "", "No longer hold the sheet."},
+          kSurface,
+          kOutputProject}},
         {"crease",
          "crease FILE --edges IDS --condition curved-fold|geodesic|straight|none [--surface K]\n"
          "      -o OUT.devsurf",

@@ -2,9 +2,12 @@
 #include "model/derived_geometry.h"
 
 #include "cli_output.h"
+#include "command_line.h"
+#include "problem_text.h"
 
 #include "io/project_file.h"
 #include "model/creases.h"
+#include "model/development.h"
 #include "model/sampled_mesh.h"
 #include "model/strip.h"
 
@@ -180,6 +183,38 @@ int runPinCommand(const SubcommandArguments& args) {
     writeProject(project, output);
     std::cout << "Wrote " << output << " (" << surface.pinnedVertices().size() << " of "
               << surface.vertices().size() << " vertices pinned in '" << surface.name() << "')\n";
+    return 0;
+}
+
+int runSheetCommand(const SubcommandArguments& args) {
+    const std::string input = args.onePositional("one project file");
+    const std::string output = args.required("o", "the output file is missing (use -o FILE)");
+    const bool free = args.isSet("free");
+    if (free == args.isSet("off")) {
+        throw UsageError{"give one of --free (hold the sheet as it unfolds) and --off"};
+    }
+    const int surfaceNumber =
+        args.isSet("surface")
+            ? static_cast<int>(parseWhole(*args.value("surface"), "--surface", 1, 1000000))
+            : 0;
+    checkOutput(output, {input}, OutputKind::Project, "the project");
+    model::Project project = io::loadProjectFile(QString::fromStdString(input));
+    const std::size_t index = surfaceIndex(surfaceNumber, project, "hold the sheet of");
+    model::CompositeSurface& surface = project.surfaces[index];
+    if (free) {
+        if (const auto problem = model::keepDevelopment(surface)) {
+            throw InputError("cannot hold the sheet of '" + surface.name() +
+                             "': " + withoutFinalPeriod(ProblemText::of(*problem).toStdString()));
+        }
+    } else {
+        surface.setKeepsDevelopment(false);
+    }
+    writeProject(project, output);
+    std::cout << "Wrote " << output << " ('" << surface.name() << "' "
+              << (free ? "keeps its development: " + std::to_string(surface.development().size()) +
+                             " points, no boundary confined"
+                       : std::string("no longer keeps a development"))
+              << ")\n";
     return 0;
 }
 

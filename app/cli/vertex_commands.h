@@ -27,4 +27,8 @@ void printEntities(const model::Project& project, const EntityListing& listing, 
 // bad usage and io/model errors for bad input; returns the exit code.
 int runPinCommand(const SubcommandArguments& args);
 
+// `devsurf-cli sheet FILE (--free | --off) [--surface K] -o OUT`: the surface keeps its
+// development as it unfolds now (every solve and drag holds that sheet), or no longer.
+int runSheetCommand(const SubcommandArguments& args);
+
 } // namespace devsurf::app

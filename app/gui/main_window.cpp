@@ -13,6 +13,7 @@
 #include "reactions/file_reactions.h"
 #include "reactions/pattern_reactions.h"
 #include "reactions/pin_reactions.h"
+#include "reactions/sheet_reactions.h"
 #include "reactions/tool_reactions.h"
 #include "reactions/view_reactions.h"
 #include "solve_controller.h"
@@ -241,6 +242,9 @@ void MainWindow::createMenus() {
     QAction* unpin = addAction(tools, QStringLiteral("actionUnpinVertices"), tr("U&npin Vertices"),
                                QKeySequence(tr("Ctrl+Shift+K")));
     new PinVerticesReaction(unpin, m_workspace, false);
+    QAction* holdSheet = addAction(tools, QStringLiteral("actionHoldSheet"), tr("Hold the &Sheet"),
+                                   QKeySequence(tr("Ctrl+Shift+H")));
+    new HoldSheetReaction(holdSheet, m_workspace);
     tools->addSeparator();
     const QList<QAction*> solverActions = createSolverActions(tools, selectNone);
     // A right click in either view offers what applies to the entity under the cursor.

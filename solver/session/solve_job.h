@@ -71,10 +71,10 @@ struct LengthsReplay {
     bool taken = false; // the stretched result is the outcome's
 };
 
-// Everything the front ends say about one surface of an outcome. Measured once, here.
 // A vertex held back by the sheet by less than this (mm) has followed the mouse.
 inline constexpr double kNegligibleLag = 0.01;
 
+// Everything the front ends say about one surface of an outcome. Measured once, here.
 struct SurfaceAssessment {
     bool solved = false; // false: left as it was (a drag's surfaces without handles)
     Summary summary;

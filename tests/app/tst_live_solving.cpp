@@ -7,6 +7,7 @@
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "model/examples.h"
+#include "model/sampled_mesh.h"
 #include "panels/solver_panel.h"
 #include "solve_controller.h"
 #include "solver/quality/crease_quality.h"
@@ -22,6 +23,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QMenu>
+#include <QMessageBox>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTest>
@@ -96,6 +98,50 @@ private slots:
         QVERIFY(!unpin->toolTip().isEmpty());
         QVERIFY2(unpin->toolTip() != selectToUnpin, qPrintable(unpin->toolTip()));
         QCOMPARE(pin->shortcut(), QKeySequence(QStringLiteral("Ctrl+K")));
+    }
+
+    void holdingTheSheetIsOneUndoStep() {
+        app::MainWindow window;
+        window.workspace()->newFromExample(QStringLiteral("fig8"), 0);
+        document::Document* doc = window.workspace()->document();
+        QAction* hold = window.action(QStringLiteral("actionHoldSheet"));
+        QVERIFY(hold != nullptr && hold->isEnabled() && hold->isCheckable());
+        QVERIFY(!hold->isChecked());
+        QVERIFY(!doc->surface(0).keepsDevelopment());
+        const int steps = doc->undoStack()->count();
+        hold->trigger();
+        QCOMPARE(doc->undoStack()->count(), steps + 1);
+        const model::CompositeSurface& held = doc->surface(0);
+        QVERIFY(held.keepsDevelopment() && hold->isChecked());
+        QCOMPARE(held.development().size(),
+                 model::sampledVertexCount(held, model::kDevelopmentSamplesPerInterval));
+        doc->undoStack()->undo();
+        QVERIFY(!doc->surface(0).keepsDevelopment() && !hold->isChecked());
+        doc->undoStack()->redo();
+        QVERIFY(doc->surface(0).keepsDevelopment() && hold->isChecked());
+        hold->trigger(); // and back: the sheet may stretch again
+        QVERIFY(!doc->surface(0).keepsDevelopment() && doc->surface(0).development().empty());
+    }
+
+    void aCylinderIsNoFlatSheetToHold() {
+        app::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.workspace()->newFromExample(QStringLiteral("cylinder"), 0);
+        document::Document* doc = window.workspace()->document();
+        const int steps = doc->undoStack()->count();
+        bool warned = false;
+        QTimer::singleShot(0, [&warned] {
+            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+                warned = true;
+                box->accept();
+            }
+        });
+        window.action(QStringLiteral("actionHoldSheet"))->trigger();
+        QVERIFY(warned);
+        QVERIFY(!doc->surface(0).keepsDevelopment());
+        QCOMPARE(doc->undoStack()->count(), steps);
+        QVERIFY(!window.action(QStringLiteral("actionHoldSheet"))->isChecked());
     }
 
     void theViewsContextMenuOffersPins() {

@@ -10,6 +10,7 @@
 #include "solver/formulation/surface_formulation.h"
 #include "solver/quality/crease_quality.h"
 #include "solver/quality/quality_measures.h"
+#include "solver/session/solve_job.h"
 #include "solver/session/solve_session.h"
 #include "solver_test_problems.h"
 #include "test_registry.h"
@@ -265,6 +266,49 @@ private slots:
         QVERIFY(solver::measureQuality(held.surface).developabilityMax < 1e-8);
         QVERIFY(pairLengthError(held.surface, held.surface.development()) < 1e-10);
         QVERIFY(held.surface.validate().empty());
+    }
+
+    void theJobNeverReplaysAHeldSheetStretching() {
+        // The same impossible lift through the solve job, lengths Automatic: no replay that
+        // stretches the sheet; the assessment says the sheet holds the vertices back.
+        model::CompositeSurface sheet = model::makeExample("sheet").surfaces.front();
+        const Box box = boxOf(sheet);
+        for (const auto& [id, p] : sheet.vertices()) {
+            if ((p.x == box.low.x || p.x == box.high.x) &&
+                (p.y == box.low.y || p.y == box.high.y)) {
+                sheet.setPinned(id, true);
+            }
+        }
+        QVERIFY(!model::keepDevelopment(sheet).has_value());
+        const std::vector<model::VertexId> middle = innerVertices(sheet);
+        solver::SolveJob job;
+        solver::JobOutcome outcome;
+        for (int k = 1; k <= 21; ++k) {
+            solver::JobRequest request;
+            request.kind = solver::JobKind::VertexDrag;
+            request.drag = 7;
+            request.settle = k == 21;
+            request.surfaces = {sheet};
+            for (model::VertexId v : middle) {
+                const double t = std::min(k, 20) / 20.0;
+                request.pulled[0].push_back({v, false, sheet.position(v) + Vec3(0, 0, 60.0 * t)});
+            }
+            outcome = job.run(request);
+            QVERIFY(outcome.ok);
+        }
+        const solver::SurfaceAssessment& a = outcome.assessments.front();
+        QVERIFY(a.sheetHeld);
+        QVERIFY(!a.replay.has_value());
+        QVERIFY2(a.largestHandleGap > 59.0, qPrintable(QString::number(a.largestHandleGap)));
+        const model::CompositeSurface& result = outcome.surfaces.front();
+        QVERIFY(result.development() == sheet.development());
+        QVERIFY(pairLengthError(result, result.development()) < 1e-10);
+        QVERIFY(solver::measureQuality(result).developabilityMax < 1e-8);
+        // A cylinder is no flat sheet: keepDevelopment refuses it and changes nothing.
+        model::CompositeSurface cylinder = model::makeExample("cylinder").surfaces.front();
+        const auto refused = model::keepDevelopment(cylinder);
+        QVERIFY(refused && refused->code == model::ProblemCode::NotOneSheet);
+        QVERIFY(!cylinder.keepsDevelopment() && cylinder.development().empty());
     }
 
     void fig8LiftKeepsTheSquare() {
