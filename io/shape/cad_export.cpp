@@ -95,7 +95,7 @@ TopoDS_Face ruledFace(const PatchSurface& patch) {
         new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, patch.a.degree(), 1);
     BRepBuilderAPI_MakeFace face(surface, 0.0, 1.0, 0.0, 1.0, Precision::Confusion());
     if (!face.IsDone()) {
-        throw CadExportError(CadExportError::Code::BadSurface, patch.surface, patch.face);
+        throw ShapeExportError(ShapeExportError::Code::BadSurface, patch.surface, patch.face);
     }
     TopoDS_Face result = face.Face();
     if (patch.flipped) {
@@ -115,12 +115,12 @@ TopoDS_Face planarFace(const PatchSurface& patch) {
     }
     polygon.Close();
     if (!polygon.IsDone() || normal.norm() == 0.0) {
-        throw CadExportError(CadExportError::Code::BadSurface, patch.surface, patch.face);
+        throw ShapeExportError(ShapeExportError::Code::BadSurface, patch.surface, patch.face);
     }
     const gp_Pln plane(toPnt(patch.corners.front()), gp_Dir(normal.x, normal.y, normal.z));
     BRepBuilderAPI_MakeFace face(plane, polygon.Wire(), Standard_True);
     if (!face.IsDone()) {
-        throw CadExportError(CadExportError::Code::BadSurface, patch.surface, patch.face);
+        throw ShapeExportError(ShapeExportError::Code::BadSurface, patch.surface, patch.face);
     }
     return face.Face();
 }
@@ -235,11 +235,11 @@ SewnSurface sewSurface(const model::CompositeSurface& surface, bool severalSurfa
         try {
             faces.push_back(patch.isPlanar() ? planarFace(patch) : ruledFace(patch));
         } catch (const Standard_Failure&) {
-            throw CadExportError(CadExportError::Code::BadSurface, patch.surface, patch.face);
+            throw ShapeExportError(ShapeExportError::Code::BadSurface, patch.surface, patch.face);
         }
         if (options.progress && !options.progress(done + 0.3 * share * static_cast<double>(i + 1) /
                                                              static_cast<double>(patches.size()))) {
-            throw CadExportError(CadExportError::Code::Cancelled);
+            throw ShapeExportError(ShapeExportError::Code::Cancelled);
         }
     }
     result.report.faces = faces.size();
@@ -252,7 +252,7 @@ SewnSurface sewSurface(const model::CompositeSurface& surface, bool severalSurfa
         new ProgressBridge(options.progress, done + 0.3 * share, 0.7 * share);
     sewing.Perform(progress->Start());
     if (progress->cancelled()) {
-        throw CadExportError(CadExportError::Code::Cancelled);
+        throw ShapeExportError(ShapeExportError::Code::Cancelled);
     }
     result.shape = sewing.SewedShape();
     for (std::size_t i = 0; i < faces.size(); ++i) {
@@ -376,17 +376,17 @@ QByteArray stepBytes(const Handle(TDocStd_Document) & document, CadFormat format
     STEPCAFControl_Writer writer;
     writer.SetNameMode(Standard_True);
     if (!writer.Transfer(document, STEPControl_AsIs)) {
-        throw CadExportError(CadExportError::Code::Translate);
+        throw ShapeExportError(ShapeExportError::Code::Translate);
     }
     // The STEP writer of OpenCASCADE 7.6 writes to a path only: a private temporary file.
     QTemporaryDir folder;
     const QString path = folder.filePath(QStringLiteral("shape.step"));
     if (!folder.isValid() || writer.Write(path.toLocal8Bit().constData()) != IFSelect_RetDone) {
-        throw CadExportError(CadExportError::Code::Translate);
+        throw ShapeExportError(ShapeExportError::Code::Translate);
     }
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        throw CadExportError(CadExportError::Code::Translate);
+        throw ShapeExportError(ShapeExportError::Code::Translate);
     }
     return file.readAll();
 }
@@ -400,11 +400,11 @@ QByteArray igesBytes(const Handle(TDocStd_Document) & document) {
     IGESCAFControl_Writer writer;
     writer.SetNameMode(Standard_True);
     if (!writer.Transfer(document)) {
-        throw CadExportError(CadExportError::Code::Translate);
+        throw ShapeExportError(ShapeExportError::Code::Translate);
     }
     std::ostringstream stream;
     if (!writer.Write(stream)) {
-        throw CadExportError(CadExportError::Code::Translate);
+        throw ShapeExportError(ShapeExportError::Code::Translate);
     }
     const std::string text = stream.str();
     return QByteArray(text.data(), static_cast<int>(text.size()));
@@ -428,7 +428,7 @@ bool CadExportResult::sewn() const {
 CadExportResult saveCadFile(const model::Project& project, const QString& path,
                             const CadExportOptions& options) {
     if (project.surfaces.empty()) {
-        throw CadExportError(CadExportError::Code::NoSurface);
+        throw ShapeExportError(ShapeExportError::Code::NoSurface);
     }
     CadExportResult result;
     result.sewingTolerance = options.sewingTolerance > 0.0
@@ -452,11 +452,11 @@ CadExportResult saveCadFile(const model::Project& project, const QString& path,
                                                       : stepBytes(document, options.format);
             XCAFApp_Application::GetApplication()->Close(document);
         } catch (const Standard_Failure&) {
-            throw CadExportError(CadExportError::Code::Translate);
+            throw ShapeExportError(ShapeExportError::Code::Translate);
         }
     }
     if (options.progress && !options.progress(1.0)) {
-        throw CadExportError(CadExportError::Code::Cancelled);
+        throw ShapeExportError(ShapeExportError::Code::Cancelled);
     }
     writeFileAtomically(path, bytes);
     return result;

@@ -7,12 +7,12 @@
 
 #include "model/ids.h"
 #include "model/project.h"
+#include "shape_export_error.h"
 
 #include <QString>
 
 #include <cstddef>
 #include <functional>
-#include <stdexcept>
 #include <vector>
 
 namespace devsurf::io {
@@ -54,29 +54,8 @@ struct CadExportResult {
     bool sewn() const; // no seam left open
 };
 
-// Why an export stopped. The front ends word it.
-class CadExportError : public std::runtime_error {
-public:
-    enum class Code {
-        NoSurface,  // the project has no surface
-        BadSurface, // OpenCASCADE refused a patch's surface (surface, face say which)
-        Translate,  // the writer refused the shape
-        Cancelled
-    };
-    CadExportError(Code code, model::SurfaceId surface = 0, model::FaceId face = model::kInvalidId)
-        : std::runtime_error("cad export"), m_code(code), m_surface(surface), m_face(face) {}
-    Code code() const { return m_code; }
-    model::SurfaceId surface() const { return m_surface; }
-    model::FaceId face() const { return m_face; }
-
-private:
-    Code m_code;
-    model::SurfaceId m_surface;
-    model::FaceId m_face;
-};
-
 // Writes the project's surfaces to `path` (atomically). Throws ModelError for an invalid
-// surface, CadExportError, or FileError where the file cannot be written.
+// surface, ShapeExportError, or FileError where the file cannot be written.
 CadExportResult saveCadFile(const model::Project& project, const QString& path,
                             const CadExportOptions& options);
 

@@ -198,8 +198,8 @@ private slots:
         try {
             io::saveCadFile(model::makeExample("annulus"), path, options);
             QFAIL("not cancelled");
-        } catch (const io::CadExportError& error) {
-            QCOMPARE(error.code(), io::CadExportError::Code::Cancelled);
+        } catch (const io::ShapeExportError& error) {
+            QCOMPARE(error.code(), io::ShapeExportError::Code::Cancelled);
         }
         QVERIFY(!QFile::exists(path));
     }
