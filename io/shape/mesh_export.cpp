@@ -171,7 +171,11 @@ QByteArray openMeshBytes(const ShapeMesh& mesh, const char* extension) {
     std::ostringstream stream;
     OpenMesh::IO::Options options = OpenMesh::IO::Options::Binary;
     options += OpenMesh::IO::Options::LSB;
-    if (!OpenMesh::IO::write_mesh(out, stream, extension, options)) {
+    // OpenMesh's writers note on its log what they write; an export says that itself.
+    omlog().disable();
+    const bool written = OpenMesh::IO::write_mesh(out, stream, extension, options);
+    omlog().enable();
+    if (!written) {
         return {};
     }
     const std::string bytes = stream.str();
