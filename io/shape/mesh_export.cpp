@@ -33,8 +33,18 @@ Vec3 midpoint(const Vec3& a, const Vec3& b) {
     return (a + b) * 0.5;
 }
 
-// Whether N samples per interval keep every S-edge's chords and every strip's triangles (the
-// quad a_i a_i+1 b_i+1 b_i split along a_i b_i+1) within the tolerance, checked at the midpoints.
+// How far the two triangles of the quad p0 p1 q1 q0 (split along p0 q1) stray from the quad's
+// bilinear surface: half the distance between its diagonals (0 for a planar quad).
+double twist(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
+    const Vec3 normal = model::cross(q1 - p0, q0 - p1);
+    const double length = normal.norm();
+    return length > 0.0 ? 0.5 * std::abs(model::dot(normal, p1 - p0)) / length : 0.0;
+}
+
+// Whether N samples per interval keep every S-edge's chords within the tolerance (checked at
+// their midpoints) and every strip's quads planar within it. The ruled surface between two
+// chords strays from the bilinear quad by at most the chords' error, since it is linear along
+// the rulings.
 bool fineEnough(const model::CompositeSurface& surface, const std::vector<PatchSurface>& patches,
                 int samples, double tolerance) {
     for (const auto& [id, record] : surface.edges()) {
@@ -64,9 +74,8 @@ bool fineEnough(const model::CompositeSurface& surface, const std::vector<PatchS
         for (int i = 0; i < count; ++i) {
             const double u0 = static_cast<double>(i) / count;
             const double u1 = static_cast<double>(i + 1) / count;
-            const Vec3 centre = patch.point(0.5 * (u0 + u1), 0.5);
-            if ((centre - midpoint(patch.a.evaluate(u0), patch.b.evaluate(u1))).norm() >
-                tolerance) {
+            if (twist(patch.a.evaluate(u0), patch.a.evaluate(u1), patch.b.evaluate(u0),
+                      patch.b.evaluate(u1)) > tolerance) {
                 return false;
             }
         }

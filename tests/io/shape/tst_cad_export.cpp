@@ -2,6 +2,7 @@
 #include "patch_distance.h"
 #include "test_registry.h"
 
+#include "io/project_file.h"
 #include "io/shape/cad_export.h"
 #include "io/shape/patch_surfaces.h"
 #include "model/examples.h"
@@ -28,6 +29,15 @@ const char* formatName(io::CadFormat format) {
     return "";
 }
 
+// A built-in example, or "fig8-folded": fig8 folded by devsurf-cli drag --vertices 12,13,14,15
+// --by 0,-60,150 (valley folds of 47°, mountain folds of 15°).
+model::Project projectNamed(const QString& name) {
+    if (name == QLatin1String("fig8-folded")) {
+        return io::loadProjectFile(QStringLiteral(DEVSURF_TEST_DATA_DIR "/fig8-folded.devsurf"));
+    }
+    return model::makeExample(name.toStdString());
+}
+
 } // namespace
 
 // Every built-in example as STEP (AP242), and several as AP214 and IGES, read back by FreeCAD
@@ -39,8 +49,11 @@ private slots:
     void readBack_data() {
         QTest::addColumn<QString>("example");
         QTest::addColumn<int>("format");
+        QStringList names{QStringLiteral("fig8-folded")};
         for (const model::ExampleInfo& info : model::builtInExamples()) {
-            const QString name = QString::fromStdString(info.name);
+            names << QString::fromStdString(info.name);
+        }
+        for (const QString& name : names) {
             for (io::CadFormat format :
                  {io::CadFormat::StepAP242, io::CadFormat::StepAP214, io::CadFormat::Iges}) {
                 QTest::newRow(qPrintable(name + " " + formatName(format)))
@@ -52,7 +65,7 @@ private slots:
     void readBack() {
         QFETCH(QString, example);
         QFETCH(int, format);
-        const model::Project project = model::makeExample(example.toStdString());
+        const model::Project project = projectNamed(example);
         std::vector<io::PatchSurface> patches;
         double area = 0.0;
         for (const model::CompositeSurface& surface : project.surfaces) {
@@ -108,6 +121,10 @@ private slots:
                                       ? "AUTOMOTIVE_DESIGN"
                                       : "AP242_MANAGED_MODEL_BASED_3D_ENGINEERING"));
             QVERIFY(text.contains("'patch " + QByteArray::number(patches.front().face) + "'"));
+            if (example == QLatin1String("fig8-folded")) {
+                QCOMPARE(result.surfaces.front().namedCreases, std::size_t{6});
+                QVERIFY(text.contains("mountain'") && text.contains("valley'"));
+            }
         }
     }
 
