@@ -123,6 +123,11 @@ int runExportShapeCommand(const SubcommandArguments& args, const std::string& fo
             options.format = meshFormat;
             const io::ShapeMesh written =
                 io::saveMeshFile(project, QString::fromStdString(output), options);
+            if (!written.toleranceMet) {
+                std::cerr << "devsurf-cli: warning: the mesh has " << written.samplesPerInterval
+                          << " samples per spline interval, the most it takes, and is coarser "
+                             "than --tolerance.\n";
+            }
             std::cout << "Wrote " << output << " (" << upper << ", " << written.triangles.size()
                       << " triangles, " << written.samplesPerInterval
                       << " samples per spline interval)\n";

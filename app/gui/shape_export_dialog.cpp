@@ -10,7 +10,6 @@
 #include "model/model_error.h"
 #include "model/project.h"
 
-#include <QApplication>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -209,16 +208,23 @@ bool ShapeExportDialog::exportMesh(const QString& path, Format format) {
                                      : io::MeshFormat::Stl;
     options.tolerance = m_tolerance->value();
     options.thickness = m_thickness->value();
-    QApplication::setOverrideCursor(Qt::WaitCursor);
-    io::ShapeMesh mesh;
-    try {
-        mesh = io::saveMeshFile(m_project, path, options);
-    } catch (...) {
-        QApplication::restoreOverrideCursor();
-        throw;
-    }
-    QApplication::restoreOverrideCursor();
+    QProgressDialog progress(tr("Writing the 3D shape…"), tr("Cancel"), 0, 1000, this);
+    progress.setWindowModality(Qt::WindowModal);
+    progress.setMinimumDuration(400);
+    options.progress = [&progress](double fraction) {
+        progress.setValue(static_cast<int>(fraction * 1000.0));
+        return !progress.wasCanceled();
+    };
+    const io::ShapeMesh mesh = io::saveMeshFile(m_project, path, options);
+    progress.setValue(1000);
     m_summary = tr("triangles: %1").arg(mesh.triangles.size());
+    if (!mesh.toleranceMet) {
+        QMessageBox::warning(this, tr("Export 3D Shape"),
+                             tr("The mesh was written with %1 samples per curve interval, the "
+                                "most DevSurf writes, and is coarser than the tolerance asked "
+                                "for.")
+                                 .arg(mesh.samplesPerInterval));
+    }
     return true;
 }
 

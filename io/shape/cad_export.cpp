@@ -349,6 +349,15 @@ Handle(TDocStd_Document)
     return document;
 }
 
+// The application keeps every document it made until it is closed, also when writing fails.
+struct OpenDocument {
+    explicit OpenDocument(Handle(TDocStd_Document) document) : handle(std::move(document)) {}
+    ~OpenDocument() { XCAFApp_Application::GetApplication()->Close(handle); }
+    OpenDocument(const OpenDocument&) = delete;
+    OpenDocument& operator=(const OpenDocument&) = delete;
+    Handle(TDocStd_Document) handle;
+};
+
 // OpenCASCADE's writers take their settings from one global table.
 std::mutex& writerSettingsMutex() {
     static std::mutex mutex;
@@ -447,10 +456,9 @@ CadExportResult saveCadFile(const model::Project& project, const QString& path,
         const std::lock_guard<std::mutex> lock(writerSettingsMutex());
         quietWriters();
         try {
-            const Handle(TDocStd_Document) document = cadDocument(project, sewn);
-            bytes = options.format == CadFormat::Iges ? igesBytes(document)
-                                                      : stepBytes(document, options.format);
-            XCAFApp_Application::GetApplication()->Close(document);
+            const OpenDocument document(cadDocument(project, sewn));
+            bytes = options.format == CadFormat::Iges ? igesBytes(document.handle)
+                                                      : stepBytes(document.handle, options.format);
         } catch (const Standard_Failure&) {
             throw ShapeExportError(ShapeExportError::Code::Translate);
         }

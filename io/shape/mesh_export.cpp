@@ -27,8 +27,6 @@ struct DoubleTraits : public OpenMesh::DefaultTraits {
 };
 using TriangleMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
 
-constexpr int kMaxSamples = 1000;
-
 Vec3 midpoint(const Vec3& a, const Vec3& b) {
     return (a + b) * 0.5;
 }
@@ -195,11 +193,14 @@ QByteArray openMeshBytes(const ShapeMesh& mesh, const char* extension) {
 
 int samplesForTolerance(const model::CompositeSurface& surface, double tolerance) {
     const std::vector<PatchSurface> patches = patchSurfaces(surface);
+    if (!fineEnough(surface, patches, kMaxMeshSamples, tolerance)) {
+        return kMaxMeshSamples + 1;
+    }
     int coarse = 0; // known too coarse
     int fine = 1;
-    while (fine < kMaxSamples && !fineEnough(surface, patches, fine, tolerance)) {
+    while (!fineEnough(surface, patches, fine, tolerance)) {
         coarse = fine;
-        fine = std::min(kMaxSamples, fine * 2);
+        fine = std::min(kMaxMeshSamples, fine * 2);
     }
     while (fine - coarse > 1) {
         const int middle = (coarse + fine) / 2;
@@ -218,9 +219,21 @@ ShapeMesh shapeMesh(const model::Project& project, const MeshExportOptions& opti
     }
     ShapeMesh mesh;
     const bool several = project.surfaces.size() > 1;
-    for (const model::CompositeSurface& surface : project.surfaces) {
-        const int samples = samplesForTolerance(surface, options.tolerance);
+    const double share = 1.0 / static_cast<double>(project.surfaces.size());
+    for (std::size_t s = 0; s < project.surfaces.size(); ++s) {
+        const model::CompositeSurface& surface = project.surfaces[s];
+        if (options.progress && !options.progress(share * static_cast<double>(s))) {
+            throw ShapeExportError(ShapeExportError::Code::Cancelled);
+        }
+        int samples = samplesForTolerance(surface, options.tolerance);
+        if (samples > kMaxMeshSamples) {
+            samples = kMaxMeshSamples;
+            mesh.toleranceMet = false;
+        }
         mesh.samplesPerInterval = std::max(mesh.samplesPerInterval, samples);
+        if (options.progress && !options.progress(share * (static_cast<double>(s) + 0.5))) {
+            throw ShapeExportError(ShapeExportError::Code::Cancelled);
+        }
         const model::SampledMesh sampled = model::sampleSurface(surface, samples);
         const int first = static_cast<int>(mesh.vertices.size());
         mesh.vertices.insert(mesh.vertices.end(), sampled.vertices.begin(), sampled.vertices.end());
@@ -264,6 +277,9 @@ ShapeMesh saveMeshFile(const model::Project& project, const QString& path,
     const QByteArray bytes = meshBytes(mesh, options.format);
     if (bytes.isEmpty()) {
         throw ShapeExportError(ShapeExportError::Code::Translate);
+    }
+    if (options.progress && !options.progress(1.0)) {
+        throw ShapeExportError(ShapeExportError::Code::Cancelled);
     }
     writeFileAtomically(path, bytes);
     return mesh;

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,8 @@ struct MeshExportOptions {
     MeshFormat format = MeshFormat::Stl;
     double tolerance = 0.01; // mm: the chord error of the sampled curves and rulings' quads
     double thickness = 0.0;  // mm: 0 for the surface itself, else a sheet of this thickness
+    // Given the fraction done (0 … 1); returns false to cancel (ShapeExportError Cancelled).
+    std::function<bool(double fraction)> progress;
 };
 
 struct ShapeMesh {
@@ -33,10 +36,13 @@ struct ShapeMesh {
     std::vector<std::string> groups;           // one name per patch (and "rim" with thickness)
     std::vector<int> triangleGroup;            // index into groups, per triangle
     int samplesPerInterval = 0;                // what the tolerance required
+    bool toleranceMet = true; // false where even 1000 samples per interval were too coarse
 };
 
-// The smallest sampling (samples per spline interval, at most 1000) at which every S-edge's
-// chords and every strip's triangles stay within `tolerance` of the exact surface.
+// The smallest sampling (samples per spline interval, at most kMaxMeshSamples) at which every
+// S-edge's chords and every strip's triangles stay within `tolerance` of the exact surface;
+// kMaxMeshSamples + 1 where even that is too coarse.
+inline constexpr int kMaxMeshSamples = 1000;
 int samplesForTolerance(const model::CompositeSurface& surface, double tolerance);
 
 // The triangulated 3D shape of every surface of the project (surfaces must be valid; throws

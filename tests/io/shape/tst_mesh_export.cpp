@@ -4,6 +4,7 @@
 #include "io/project_file.h"
 #include "io/shape/mesh_export.h"
 #include "io/shape/patch_surfaces.h"
+#include "io/shape/shape_export_error.h"
 #include "model/examples.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
@@ -191,6 +192,28 @@ private slots:
         const double volume = back["volume"].toDouble();
         QVERIFY2(std::abs(volume - exact.area * options.thickness) <= 0.01 * volume,
                  qPrintable(QString::number(volume)));
+    }
+
+    // A tolerance no sampling reaches is said, not hidden; a cancel writes nothing.
+    void unreachableToleranceAndCancel() {
+        const model::Project project = model::makeExample("cylinder");
+        io::MeshExportOptions options;
+        options.tolerance = 1e-9;
+        const io::ShapeMesh fine = io::shapeMesh(project, options);
+        QVERIFY(!fine.toleranceMet);
+        QCOMPARE(fine.samplesPerInterval, io::kMaxMeshSamples);
+        options.tolerance = 0.01;
+        QVERIFY(io::shapeMesh(project, options).toleranceMet);
+        QTemporaryDir folder;
+        const QString path = folder.filePath("cancelled.stl");
+        options.progress = [](double fraction) { return fraction < 0.4; };
+        try {
+            io::saveMeshFile(project, path, options);
+            QFAIL("not cancelled");
+        } catch (const io::ShapeExportError& error) {
+            QCOMPARE(error.code(), io::ShapeExportError::Code::Cancelled);
+        }
+        QVERIFY(!QFile::exists(path));
     }
 
     // PLY and STL through OpenMesh's readers: as many faces, the same area.
