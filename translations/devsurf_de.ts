@@ -2508,150 +2508,158 @@
 <context>
     <name>devsurf::app::ShapeExportDialog</name>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="38"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="37"/>
         <source>The design has no surface to export.</source>
         <translation>Der Entwurf hat keine Fläche, die exportiert werden könnte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="40"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="39"/>
         <source>Patch %1 of surface %2 cannot be written as an exact surface.</source>
         <translation>Flächenstück %1 der Fläche %2 kann nicht als exakte Fläche geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="45"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="44"/>
         <source>The shape could not be translated into this format. Try another format.</source>
         <translation>Die Form ließ sich nicht in dieses Format übertragen. Versuchen Sie ein anderes Format.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="58"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="133"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="197"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="57"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="132"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="196"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="222"/>
         <source>Export 3D Shape</source>
         <translation>3D-Form exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
         <source>STEP AP242: exact surfaces</source>
         <translation>STEP AP242: exakte Flächen</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
         <source>STEP AP214: exact surfaces</source>
         <translation>STEP AP214: exakte Flächen</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
         <source>IGES: exact surfaces</source>
         <translation>IGES: exakte Flächen</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
         <source>OBJ mesh: a group per patch</source>
         <translation>OBJ-Netz: eine Gruppe je Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="63"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
         <source>STL mesh (binary)</source>
         <translation>STL-Netz (binär)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="63"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
         <source>PLY mesh (binary)</source>
         <translation>PLY-Netz (binär)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="70"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="77"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="69"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="76"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="71"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="70"/>
         <source>How far the mesh&apos;s triangles may stray from the exact surface.</source>
         <translation>Wie weit die Dreiecke des Netzes von der exakten Fläche abweichen dürfen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="78"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="77"/>
         <source>none (the surface)</source>
         <translation>keine (die Fläche)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="80"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="79"/>
         <source>A sheet of this thickness for 3D printing: both sides offset by half of it, the rim closed.</source>
         <translation>Eine Platte dieser Dicke für den 3D-Druck: beide Seiten um die Hälfte versetzt, der Rand geschlossen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="86"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="85"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="87"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="86"/>
         <source>Chord &amp;tolerance:</source>
         <translation>Sehnen&amp;toleranz:</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="88"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="87"/>
         <source>T&amp;hickness:</source>
         <translation>&amp;Dicke:</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="90"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="89"/>
         <source>&amp;Export…</source>
         <translation>&amp;Exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="123"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="122"/>
         <source>A triangle mesh for renderers, slicers and mesh tools; watertight wherever the design is.</source>
         <translation>Ein Dreiecksnetz für Renderer, Slicer und Netzwerkzeuge; wasserdicht überall dort, wo der Entwurf es ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="124"/>
         <source>Every patch as its exact B-spline surface, sewn into one shell per surface, in millimetres, faces named after their patches.</source>
         <translation>Jedes Flächenstück als seine exakte B-Spline-Fläche, je Fläche zu einer Schale vernäht, in Millimetern, die Flächen nach ihren Flächenstücken benannt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="135"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="134"/>
         <source>%1 files (*.%2)</source>
         <translation>%1-Dateien (*.%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="151"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="159"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="162"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="164"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="150"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="158"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="161"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="163"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="170"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="169"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
         <source>Writing the 3D shape…</source>
         <translation>Die 3D-Form wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="170"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="169"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="188"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="187"/>
         <source>surface %1, edge %2 (%3 mm apart)</source>
         <translation>Fläche %1, Kante %2 (%3 mm auseinander)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="194"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="193"/>
         <source>faces: %1, shells: %2</source>
         <translation>Flächen: %1, Schalen: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="198"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="197"/>
         <source>The shape was written, but some patches could not be sewn together and stay apart in the file: %1.</source>
         <translation>Die Form wurde geschrieben, aber einige Flächenstücke ließen sich nicht vernähen und bleiben in der Datei getrennt: %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="221"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="220"/>
         <source>triangles: %1</source>
         <translation>Dreiecke: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="223"/>
+        <source>The mesh was written with %1 samples per curve interval, the most DevSurf writes, and is coarser than the tolerance asked for.</source>
+        <translation>Das Netz wurde mit %1 Abtastpunkten je Kurvenintervall geschrieben, dem Höchstwert von DevSurf, und ist gröber als die verlangte Toleranz.</translation>
     </message>
 </context>
 <context>

@@ -2477,150 +2477,158 @@
 <context>
     <name>devsurf::app::ShapeExportDialog</name>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="38"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="37"/>
         <source>The design has no surface to export.</source>
         <translation>エクスポートする曲面がデザインにありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="40"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="39"/>
         <source>Patch %1 of surface %2 cannot be written as an exact surface.</source>
         <translation>曲面 %2 のパッチ %1 を厳密な曲面として書き出せません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="45"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="44"/>
         <source>The shape could not be translated into this format. Try another format.</source>
         <translation>形状をこの形式に変換できませんでした。別の形式をお試しください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="58"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="133"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="197"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="57"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="132"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="196"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="222"/>
         <source>Export 3D Shape</source>
         <translation>3D 形状のエクスポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
         <source>STEP AP242: exact surfaces</source>
         <translation>STEP AP242: 厳密な曲面</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
         <source>STEP AP214: exact surfaces</source>
         <translation>STEP AP214: 厳密な曲面</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
         <source>IGES: exact surfaces</source>
         <translation>IGES: 厳密な曲面</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
         <source>OBJ mesh: a group per patch</source>
         <translation>OBJ メッシュ: パッチごとに 1 グループ</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="63"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
         <source>STL mesh (binary)</source>
         <translation>STL メッシュ (バイナリ)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="63"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
         <source>PLY mesh (binary)</source>
         <translation>PLY メッシュ (バイナリ)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="70"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="77"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="69"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="76"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="71"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="70"/>
         <source>How far the mesh&apos;s triangles may stray from the exact surface.</source>
         <translation>メッシュの三角形が厳密な曲面から離れてよい距離。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="78"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="77"/>
         <source>none (the surface)</source>
         <translation>なし (曲面そのもの)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="80"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="79"/>
         <source>A sheet of this thickness for 3D printing: both sides offset by half of it, the rim closed.</source>
         <translation>3D プリント用にこの厚さの板にします: 両面を半分ずつオフセットし、縁を閉じます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="86"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="85"/>
         <source>&amp;Format:</source>
         <translation>形式(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="87"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="86"/>
         <source>Chord &amp;tolerance:</source>
         <translation>弦の許容誤差(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="88"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="87"/>
         <source>T&amp;hickness:</source>
         <translation>厚さ(&amp;H):</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="90"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="89"/>
         <source>&amp;Export…</source>
         <translation>エクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="123"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="122"/>
         <source>A triangle mesh for renderers, slicers and mesh tools; watertight wherever the design is.</source>
         <translation>レンダラー、スライサー、メッシュツール向けの三角形メッシュ。デザインが閉じている所では水密です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="124"/>
         <source>Every patch as its exact B-spline surface, sewn into one shell per surface, in millimetres, faces named after their patches.</source>
         <translation>各パッチを厳密な B スプライン曲面として、曲面ごとに 1 つのシェルに縫い合わせ、ミリメートル単位で、面にパッチ名を付けて書き出します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="135"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="134"/>
         <source>%1 files (*.%2)</source>
         <translation>%1 ファイル (*.%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="151"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="159"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="162"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="164"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="150"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="158"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="161"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="163"/>
         <source>Export failed</source>
         <translation>エクスポートに失敗しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="170"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="169"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
         <source>Writing the 3D shape…</source>
         <translation>3D 形状を書き出しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="170"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="169"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="188"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="187"/>
         <source>surface %1, edge %2 (%3 mm apart)</source>
         <translation>曲面 %1、辺 %2 (%3 mm 離れています)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="194"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="193"/>
         <source>faces: %1, shells: %2</source>
         <translation>面: %1、シェル: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="198"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="197"/>
         <source>The shape was written, but some patches could not be sewn together and stay apart in the file: %1.</source>
         <translation>形状は書き出されましたが、縫い合わせられなかったパッチがあり、ファイル内で離れたままです: %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="221"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="220"/>
         <source>triangles: %1</source>
         <translation>三角形: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="223"/>
+        <source>The mesh was written with %1 samples per curve interval, the most DevSurf writes, and is coarser than the tolerance asked for.</source>
+        <translation>メッシュは曲線区間あたり %1 サンプル (DevSurf の上限) で書き出され、指定の許容誤差より粗くなっています。</translation>
     </message>
 </context>
 <context>
