@@ -28,54 +28,60 @@ namespace {
 // measures triangles, area, signed volume, boundary edges and directed edges used twice.
 const char* const kReader = R"(
 import json, struct, sys, math
-path = sys.argv[1]
-triangles = []
-groups = set()
-if path.endswith(".stl"):
-    data = open(path, "rb").read()
-    count = struct.unpack("<I", data[80:84])[0]
-    assert len(data) == 84 + 50 * count, "size"
-    for i in range(count):
-        values = struct.unpack("<12f", data[84 + 50 * i: 84 + 50 * i + 48])
-        triangles.append((values[3:6], values[6:9], values[9:12]))
-else:
-    vertices = []
-    for line in open(path):
-        words = line.split()
-        if not words:
-            continue
-        if words[0] == "v":
-            vertices.append(tuple(float(w) for w in words[1:4]))
-        elif words[0] == "g":
-            groups.add(" ".join(words[1:]))
-        elif words[0] == "f":
-            triangles.append(tuple(vertices[int(w.split("/")[0]) - 1] for w in words[1:4]))
-def sub(a, b): return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
-def cross(a, b): return (a[1]*b[2] - a[2]*b[1], a[2]*b[0] - a[0]*b[2], a[0]*b[1] - a[1]*b[0])
-area = 0.0
-volume = 0.0
-directed = {}
-for a, b, c in triangles:
-    n = cross(sub(b, a), sub(c, a))
-    area += 0.5 * math.sqrt(n[0]**2 + n[1]**2 + n[2]**2)
-    volume += (a[0]*(b[1]*c[2] - b[2]*c[1]) - a[1]*(b[0]*c[2] - b[2]*c[0]) + a[2]*(b[0]*c[1] - b[1]*c[0])) / 6.0
-    for p, q in ((a, b), (b, c), (c, a)):
-        directed[(p, q)] = directed.get((p, q), 0) + 1
-boundary = sum(1 for (p, q) in directed if (q, p) not in directed)
-twice = sum(1 for k, v in directed.items() if v > 1)
-print(json.dumps({"triangles": len(triangles), "area": area, "volume": volume,
-                  "boundary": boundary, "twice": twice, "groups": len(groups)}))
+def read(path):
+    triangles = []
+    groups = set()
+    if path.endswith(".stl"):
+        data = open(path, "rb").read()
+        count = struct.unpack("<I", data[80:84])[0]
+        assert len(data) == 84 + 50 * count, "size"
+        for i in range(count):
+            values = struct.unpack("<12f", data[84 + 50 * i: 84 + 50 * i + 48])
+            triangles.append((values[3:6], values[6:9], values[9:12]))
+    else:
+        vertices = []
+        for line in open(path):
+            words = line.split()
+            if not words:
+                continue
+            if words[0] == "v":
+                vertices.append(tuple(float(w) for w in words[1:4]))
+            elif words[0] == "g":
+                groups.add(" ".join(words[1:]))
+            elif words[0] == "f":
+                triangles.append(tuple(vertices[int(w.split("/")[0]) - 1] for w in words[1:4]))
+    def sub(a, b): return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+    def cross(a, b): return (a[1]*b[2] - a[2]*b[1], a[2]*b[0] - a[0]*b[2], a[0]*b[1] - a[1]*b[0])
+    area = 0.0
+    volume = 0.0
+    directed = {}
+    for a, b, c in triangles:
+        n = cross(sub(b, a), sub(c, a))
+        area += 0.5 * math.sqrt(n[0]**2 + n[1]**2 + n[2]**2)
+        volume += (a[0]*(b[1]*c[2] - b[2]*c[1]) - a[1]*(b[0]*c[2] - b[2]*c[0]) + a[2]*(b[0]*c[1] - b[1]*c[0])) / 6.0
+        for p, q in ((a, b), (b, c), (c, a)):
+            directed[(p, q)] = directed.get((p, q), 0) + 1
+    boundary = sum(1 for (p, q) in directed if (q, p) not in directed)
+    twice = sum(1 for k, v in directed.items() if v > 1)
+    return {"triangles": len(triangles), "area": area, "volume": volume,
+            "boundary": boundary, "twice": twice, "groups": len(groups)}
+print(json.dumps([read(path) for path in sys.argv[1:]]))
 )";
 
-QJsonObject readWithPython(const QString& path) {
+// One python run for many files (starting python takes about a second here).
+QJsonArray readWithPython(const QStringList& paths) {
     QProcess python;
     python.start(QStringLiteral("python3"),
-                 {QStringLiteral("-c"), QString::fromUtf8(kReader), path});
+                 QStringList{QStringLiteral("-c"), QString::fromUtf8(kReader)} + paths);
     if (!python.waitForFinished(300000) || python.exitCode() != 0) {
         qWarning("%s", python.readAllStandardError().constData());
         return {};
     }
-    return QJsonDocument::fromJson(python.readAllStandardOutput()).object();
+    return QJsonDocument::fromJson(python.readAllStandardOutput()).array();
+}
+
+QJsonObject readWithPython(const QString& path) {
+    return readWithPython(QStringList{path}).at(0).toObject();
 }
 
 struct Exact {
@@ -111,48 +117,59 @@ class TstMeshExport : public QObject {
     Q_OBJECT
 
 private slots:
-    // Every example as binary STL and OBJ, read back by python: the triangles, the area within
-    // what the chord tolerance allows, a watertight mesh (boundary only where the design has
-    // one, every edge used once per direction), one OBJ group per patch.
-    void examples_data() {
-        QTest::addColumn<QString>("example");
-        for (const model::ExampleInfo& info : model::builtInExamples()) {
-            QTest::newRow(info.name.c_str()) << QString::fromStdString(info.name);
-        }
-        QTest::newRow("fig8-folded") << QStringLiteral("fig8-folded");
-    }
+    // Every example and a folded fig8 as binary STL and OBJ, read back by python: the triangles,
+    // the area within what the chord tolerance allows, a watertight mesh (boundary only where the
+    // design has one, every edge used once per direction), one OBJ group per patch.
     void examples() {
-        QFETCH(QString, example);
-        // fig8-folded: see tst_cad_export.cpp.
-        const model::Project project =
-            example == QLatin1String("fig8-folded")
-                ? io::loadProjectFile(QStringLiteral(DEVSURF_TEST_DATA_DIR "/fig8-folded.devsurf"))
-                : model::makeExample(example.toStdString());
-        const Exact exact = exactOf(project);
-        const double diameter = io::projectDiameter(project);
+        QStringList names{QStringLiteral("fig8-folded")};
+        for (const model::ExampleInfo& info : model::builtInExamples()) {
+            names << QString::fromStdString(info.name);
+        }
+        struct Written {
+            QString example;
+            io::MeshFormat format;
+            io::ShapeMesh mesh;
+            model::Project project;
+        };
+        std::vector<Written> written;
+        QStringList paths;
         QTemporaryDir folder;
-        io::MeshExportOptions options;
-        options.tolerance = 1e-3 * diameter;
-        for (io::MeshFormat format : {io::MeshFormat::Stl, io::MeshFormat::Obj}) {
-            options.format = format;
-            const QString path =
-                folder.filePath(format == io::MeshFormat::Stl ? "shape.stl" : "shape.obj");
-            const io::ShapeMesh mesh = io::saveMeshFile(project, path, options);
-            const QJsonObject back = readWithPython(path);
-            QVERIFY(!back.isEmpty());
-            QCOMPARE(back["triangles"].toInt(), static_cast<int>(mesh.triangles.size()));
+        for (const QString& example : names) {
+            // fig8-folded: see tst_cad_export.cpp.
+            const model::Project project = example == QLatin1String("fig8-folded")
+                                               ? io::loadProjectFile(QStringLiteral(
+                                                     DEVSURF_TEST_DATA_DIR "/fig8-folded.devsurf"))
+                                               : model::makeExample(example.toStdString());
+            io::MeshExportOptions options;
+            options.tolerance = 1e-3 * io::projectDiameter(project);
+            for (io::MeshFormat format : {io::MeshFormat::Stl, io::MeshFormat::Obj}) {
+                options.format = format;
+                const QString path =
+                    folder.filePath(example + (format == io::MeshFormat::Stl ? ".stl" : ".obj"));
+                written.push_back(
+                    {example, format, io::saveMeshFile(project, path, options), project});
+                paths << path;
+            }
+        }
+        const QJsonArray read = readWithPython(paths);
+        QCOMPARE(read.size(), paths.size());
+        for (std::size_t i = 0; i < written.size(); ++i) {
+            const Written& w = written[i];
+            const QJsonObject back = read[static_cast<int>(i)].toObject();
+            const Exact exact = exactOf(w.project);
+            QCOMPARE(back["triangles"].toInt(), static_cast<int>(w.mesh.triangles.size()));
             QCOMPARE(back["twice"].toInt(-1), 0);
             QCOMPARE(back["boundary"].toInt(-1),
-                     boundarySegments(project.surfaces.front(), mesh.samplesPerInterval));
+                     boundarySegments(w.project.surfaces.front(), w.mesh.samplesPerInterval));
             // Inscribed triangles lose area of the order of tolerance / diameter.
             const double areaError = std::abs(back["area"].toDouble() - exact.area) / exact.area;
-            QVERIFY2(areaError <= 1e-2, qPrintable(QString::number(areaError)));
-            if (format == io::MeshFormat::Obj) {
+            QVERIFY2(areaError <= 1e-2, qPrintable(w.example + QString::number(areaError)));
+            if (w.format == io::MeshFormat::Obj) {
                 QCOMPARE(back["groups"].toInt(), static_cast<int>(exact.patches.size()));
             }
             qInfo("%s %s: %d triangles (%d samples per interval), area error %.2g",
-                  qPrintable(example), format == io::MeshFormat::Stl ? "STL" : "OBJ",
-                  back["triangles"].toInt(), mesh.samplesPerInterval, areaError);
+                  qPrintable(w.example), w.format == io::MeshFormat::Stl ? "STL" : "OBJ",
+                  back["triangles"].toInt(), w.mesh.samplesPerInterval, areaError);
         }
     }
 
