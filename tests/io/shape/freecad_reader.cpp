@@ -43,29 +43,32 @@ def face_area(face):
                     area += wx * wy * (b - a) * (d - c) / 4 * n.Length
     return area
 
-result = {}
-try:
-    shape = Part.read(INPUT)
-    result["faces"] = len(shape.Faces)
-    result["shells"] = len(shape.Shells)
-    result["closed"] = [s.isClosed() for s in shape.Shells]
-    result["area"] = sum(face_area(f) for f in shape.Faces)
-    result["freecad_area"] = shape.Area
-    points = []
-    for face in shape.Faces:
-        u0, u1, v0, v1 = face.ParameterRange
-        for i in range(4):
-            for j in range(4):
-                u = u0 + (u1 - u0) * (i + 0.37) / 4.0
-                v = v0 + (v1 - v0) * (j + 0.61) / 4.0
-                if face.isPartOfDomain(u, v):
-                    p = face.valueAt(u, v)
-                    points.append([p.x, p.y, p.z])
-    result["points"] = points
-except Exception as error:
-    result["error"] = str(error)
+def read(path):
+    result = {}
+    try:
+        shape = Part.read(path)
+        result["faces"] = len(shape.Faces)
+        result["shells"] = len(shape.Shells)
+        result["closed"] = [s.isClosed() for s in shape.Shells]
+        result["area"] = sum(face_area(f) for f in shape.Faces)
+        result["freecad_area"] = shape.Area
+        points = []
+        for face in shape.Faces:
+            u0, u1, v0, v1 = face.ParameterRange
+            for i in range(4):
+                for j in range(4):
+                    u = u0 + (u1 - u0) * (i + 0.37) / 4.0
+                    v = v0 + (v1 - v0) * (j + 0.61) / 4.0
+                    if face.isPartOfDomain(u, v):
+                        p = face.valueAt(u, v)
+                        points.append([p.x, p.y, p.z])
+        result["points"] = points
+    except Exception as error:
+        result["error"] = str(error)
+    return result
+
 with open(OUTPUT, "w") as out:
-    json.dump(result, out)
+    json.dump([read(path) for path in INPUTS], out)
 )";
 
 QString pythonString(const QString& text) {
@@ -77,23 +80,33 @@ QString pythonString(const QString& text) {
 
 } // namespace
 
-CadReadBack readWithFreeCad(const QString& path) {
-    CadReadBack back;
+std::vector<CadReadBack> readWithFreeCad(const QStringList& paths) {
+    std::vector<CadReadBack> backs(static_cast<std::size_t>(paths.size()));
+    auto failAll = [&backs](const QString& error) {
+        for (CadReadBack& back : backs) {
+            back.error = error;
+        }
+        return backs;
+    };
     const QString freecad = QStandardPaths::findExecutable(QStringLiteral("freecadcmd"));
     if (freecad.isEmpty()) {
-        back.error = QStringLiteral("freecadcmd is not installed (Debian package freecad-python3)");
-        return back;
+        return failAll(
+            QStringLiteral("freecadcmd is not installed (Debian package freecad-python3)"));
     }
     QTemporaryDir folder;
     const QString script = folder.filePath(QStringLiteral("read.py"));
     const QString output = folder.filePath(QStringLiteral("result.json"));
     QFile file(script);
     if (!folder.isValid() || !file.open(QIODevice::WriteOnly)) {
-        back.error = QStringLiteral("cannot write the script");
-        return back;
+        return failAll(QStringLiteral("cannot write the script"));
     }
-    file.write(
-        ("INPUT = " + pythonString(path) + "\nOUTPUT = " + pythonString(output) + "\n").toUtf8());
+    QStringList inputs;
+    for (const QString& path : paths) {
+        inputs << pythonString(path);
+    }
+    file.write(("INPUTS = [" + inputs.join(QLatin1String(", ")) +
+                "]\nOUTPUT = " + pythonString(output) + "\n")
+                   .toUtf8());
     file.write(kScript);
     file.close();
     QProcess process;
@@ -102,33 +115,42 @@ CadReadBack readWithFreeCad(const QString& path) {
     process.setProcessEnvironment(environment);
     process.start(freecad, {script});
     if (!process.waitForFinished(300000) || process.exitStatus() != QProcess::NormalExit) {
-        back.error = QStringLiteral("freecadcmd did not finish");
-        return back;
+        return failAll(QStringLiteral("freecadcmd did not finish"));
     }
     QFile json(output);
     if (!json.open(QIODevice::ReadOnly)) {
-        back.error = QStringLiteral("freecadcmd wrote no result: ") +
-                     QString::fromUtf8(process.readAllStandardError());
-        return back;
+        return failAll(QStringLiteral("freecadcmd wrote no result: ") +
+                       QString::fromUtf8(process.readAllStandardError()));
     }
-    const QJsonObject result = QJsonDocument::fromJson(json.readAll()).object();
-    if (result.contains(QStringLiteral("error"))) {
-        back.error = result[QStringLiteral("error")].toString();
-        return back;
+    const QJsonArray results = QJsonDocument::fromJson(json.readAll()).array();
+    if (results.size() != paths.size()) {
+        return failAll(QStringLiteral("freecadcmd's result is incomplete"));
     }
-    back.faces = result[QStringLiteral("faces")].toInt(-1);
-    back.shells = result[QStringLiteral("shells")].toInt(-1);
-    for (const QJsonValue closed : result[QStringLiteral("closed")].toArray()) {
-        back.shellClosed.push_back(closed.toBool());
+    for (std::size_t i = 0; i < backs.size(); ++i) {
+        const QJsonObject result = results[static_cast<int>(i)].toObject();
+        CadReadBack& back = backs[i];
+        if (result.contains(QStringLiteral("error"))) {
+            back.error = result[QStringLiteral("error")].toString();
+            continue;
+        }
+        back.faces = result[QStringLiteral("faces")].toInt(-1);
+        back.shells = result[QStringLiteral("shells")].toInt(-1);
+        for (const QJsonValue closed : result[QStringLiteral("closed")].toArray()) {
+            back.shellClosed.push_back(closed.toBool());
+        }
+        back.area = result[QStringLiteral("area")].toDouble();
+        back.freeCadArea = result[QStringLiteral("freecad_area")].toDouble();
+        for (const QJsonValue point : result[QStringLiteral("points")].toArray()) {
+            const QJsonArray p = point.toArray();
+            back.points.push_back({p[0].toDouble(), p[1].toDouble(), p[2].toDouble()});
+        }
+        back.ok = true;
     }
-    back.area = result[QStringLiteral("area")].toDouble();
-    back.freeCadArea = result[QStringLiteral("freecad_area")].toDouble();
-    for (const QJsonValue point : result[QStringLiteral("points")].toArray()) {
-        const QJsonArray p = point.toArray();
-        back.points.push_back({p[0].toDouble(), p[1].toDouble(), p[2].toDouble()});
-    }
-    back.ok = true;
-    return back;
+    return backs;
+}
+
+CadReadBack readWithFreeCad(const QString& path) {
+    return readWithFreeCad(QStringList{path}).front();
 }
 
 } // namespace devsurf::test
