@@ -21,13 +21,15 @@ packages=(
   qt6-base-dev libqt6opengl6-dev qt6-svg-dev qt6-tools-dev qt6-l10n-tools
   libvtk9-dev libeigen3-dev libsuitesparse-dev libopenmesh-dev libboost-serialization-dev
   libopenblas0-serial libdxflib-dev
+  libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev
+  libocct-foundation-dev libocct-ocaf-dev
   qt6-translations-l10n fonts-noto-cjk
   xvfb xauth
 )
 if [ "$mode" = test ]; then
-  # Test-time only: an independent DXF reader, PDF tools (page size, rasterising), and Ceres
-  # Solver as the benchmark's peer.
-  packages+=(python3-ezdxf poppler-utils libceres-dev)
+  # Test-time only: an independent DXF reader, PDF tools (page size, rasterising), Ceres
+  # Solver as the benchmark's peer, and FreeCAD's interpreter reading STEP and IGES back.
+  packages+=(python3-ezdxf poppler-utils libceres-dev freecad-python3)
 fi
 
 as_root() {

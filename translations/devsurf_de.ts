@@ -1251,6 +1251,19 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::ExportShapeReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/shape_reactions.cpp" line="23"/>
+        <source>untitled</source>
+        <translation>unbenannt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/shape_reactions.cpp" line="28"/>
+        <source>Exported the 3D shape (%1)</source>
+        <translation>3D-Form exportiert (%1)</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::HoldSheetReaction</name>
     <message>
         <location filename="../app/gui/reactions/sheet_reactions.cpp" line="42"/>
@@ -1293,228 +1306,233 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="113"/>
+        <location filename="../app/gui/main_window.cpp" line="114"/>
         <source>Patches</source>
         <translation>Flächenstücke</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="119"/>
+        <location filename="../app/gui/main_window.cpp" line="120"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="126"/>
+        <location filename="../app/gui/main_window.cpp" line="127"/>
         <source>Solver</source>
         <translation>Löser</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="139"/>
+        <location filename="../app/gui/main_window.cpp" line="140"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="146"/>
+        <location filename="../app/gui/main_window.cpp" line="147"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="148"/>
+        <location filename="../app/gui/main_window.cpp" line="149"/>
         <source>&amp;New from Example…</source>
         <translation>&amp;Neu aus Beispiel…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="150"/>
+        <location filename="../app/gui/main_window.cpp" line="151"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="152"/>
+        <location filename="../app/gui/main_window.cpp" line="153"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="156"/>
+        <location filename="../app/gui/main_window.cpp" line="157"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="159"/>
+        <location filename="../app/gui/main_window.cpp" line="160"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="163"/>
+        <location filename="../app/gui/main_window.cpp" line="164"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>Austausch-JSON &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="163"/>
+        <location filename="../app/gui/main_window.cpp" line="164"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="167"/>
+        <source>Export &amp;3D Shape…</source>
+        <translation>&amp;3D-Form exportieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="171"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="171"/>
+        <location filename="../app/gui/main_window.cpp" line="175"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="174"/>
+        <location filename="../app/gui/main_window.cpp" line="178"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="177"/>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="184"/>
+        <location filename="../app/gui/main_window.cpp" line="188"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="186"/>
+        <location filename="../app/gui/main_window.cpp" line="190"/>
         <source>Select &amp;None</source>
         <translation>Auswahl &amp;aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="187"/>
+        <location filename="../app/gui/main_window.cpp" line="191"/>
         <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="191"/>
+        <location filename="../app/gui/main_window.cpp" line="195"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="193"/>
+        <location filename="../app/gui/main_window.cpp" line="197"/>
         <source>&amp;3D View</source>
         <translation>&amp;3D-Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="193"/>
+        <location filename="../app/gui/main_window.cpp" line="197"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="195"/>
+        <location filename="../app/gui/main_window.cpp" line="199"/>
         <source>&amp;Development View</source>
         <translation>&amp;Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="195"/>
+        <location filename="../app/gui/main_window.cpp" line="199"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="196"/>
+        <location filename="../app/gui/main_window.cpp" line="200"/>
         <source>3D &amp;and Development</source>
         <translation>3D &amp;und Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <location filename="../app/gui/main_window.cpp" line="201"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="201"/>
+        <location filename="../app/gui/main_window.cpp" line="205"/>
         <source>&amp;Control Polygons</source>
         <translation>&amp;Kontrollpolygone</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="201"/>
+        <location filename="../app/gui/main_window.cpp" line="205"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="202"/>
+        <location filename="../app/gui/main_window.cpp" line="206"/>
         <source>&amp;Vertices</source>
         <translation>&amp;Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="203"/>
+        <location filename="../app/gui/main_window.cpp" line="207"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207"/>
+        <location filename="../app/gui/main_window.cpp" line="211"/>
         <source>&amp;Fit All</source>
         <translation>&amp;Alles zeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207"/>
+        <location filename="../app/gui/main_window.cpp" line="211"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="213"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>Reset &amp;Layout</source>
         <translation>&amp;Layout zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="218"/>
+        <location filename="../app/gui/main_window.cpp" line="222"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="221"/>
+        <location filename="../app/gui/main_window.cpp" line="225"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>Kante &amp;umbenennen (R ↔ S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="221"/>
+        <location filename="../app/gui/main_window.cpp" line="225"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="223"/>
+        <location filename="../app/gui/main_window.cpp" line="227"/>
         <source>Add &amp;Crease…</source>
         <translation>&amp;Falz einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="226"/>
+        <location filename="../app/gui/main_window.cpp" line="230"/>
         <source>Add R&amp;uling…</source>
         <translation>&amp;Erzeugende einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="239"/>
+        <location filename="../app/gui/main_window.cpp" line="243"/>
         <source>&amp;Pin Vertices</source>
         <translation>Ecken &amp;festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="240"/>
+        <location filename="../app/gui/main_window.cpp" line="244"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="242"/>
+        <location filename="../app/gui/main_window.cpp" line="246"/>
         <source>U&amp;npin Vertices</source>
         <translation>Ecken &amp;freigeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="243"/>
+        <location filename="../app/gui/main_window.cpp" line="247"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="245"/>
+        <location filename="../app/gui/main_window.cpp" line="249"/>
         <source>Hold the &amp;Sheet</source>
         <translation>&amp;Bogen festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="246"/>
+        <location filename="../app/gui/main_window.cpp" line="250"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="372"/>
+        <location filename="../app/gui/main_window.cpp" line="376"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n Fläche</numerusform>
@@ -1522,7 +1540,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="373"/>
+        <location filename="../app/gui/main_window.cpp" line="377"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -1530,7 +1548,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="374"/>
+        <location filename="../app/gui/main_window.cpp" line="378"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -1538,7 +1556,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="375"/>
+        <location filename="../app/gui/main_window.cpp" line="379"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n ausgewählt</numerusform>
@@ -1546,77 +1564,77 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="224"/>
+        <location filename="../app/gui/main_window.cpp" line="228"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="227"/>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="229"/>
+        <location filename="../app/gui/main_window.cpp" line="233"/>
         <source>Re&amp;fine Curves</source>
         <translation>Kurven &amp;verfeinern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="230"/>
+        <location filename="../app/gui/main_window.cpp" line="234"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="236"/>
+        <location filename="../app/gui/main_window.cpp" line="240"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>Ecken &amp;verschieben oder drehen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="236"/>
+        <location filename="../app/gui/main_window.cpp" line="240"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="275"/>
+        <location filename="../app/gui/main_window.cpp" line="279"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="276"/>
+        <location filename="../app/gui/main_window.cpp" line="280"/>
         <source>&amp;User Manual</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="283"/>
+        <location filename="../app/gui/main_window.cpp" line="287"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="289"/>
+        <location filename="../app/gui/main_window.cpp" line="293"/>
         <source>&amp;About DevSurf</source>
         <translation>&amp;Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="291"/>
+        <location filename="../app/gui/main_window.cpp" line="295"/>
         <source>About DevSurf</source>
         <translation>Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="292"/>
+        <location filename="../app/gui/main_window.cpp" line="296"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen mit Spline-Torsen (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="335"/>
+        <location filename="../app/gui/main_window.cpp" line="339"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="357"/>
+        <location filename="../app/gui/main_window.cpp" line="361"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="358"/>
+        <location filename="../app/gui/main_window.cpp" line="362"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
@@ -2563,6 +2581,163 @@
         <location filename="../app/gui/rotate_tool.cpp" line="114"/>
         <source>Rotation stopped: the design changed during the rotation.</source>
         <translation>Drehung angehalten: Der Entwurf hat sich während der Drehung geändert.</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::ShapeExportDialog</name>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="37"/>
+        <source>The design has no surface to export.</source>
+        <translation>Der Entwurf hat keine Fläche, die exportiert werden könnte.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="39"/>
+        <source>Patch %1 of surface %2 cannot be written as an exact surface.</source>
+        <translation>Flächenstück %1 der Fläche %2 kann nicht als exakte Fläche geschrieben werden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="44"/>
+        <source>The shape could not be translated into this format. Try another format.</source>
+        <translation>Die Form ließ sich nicht in dieses Format übertragen. Versuchen Sie ein anderes Format.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="57"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="132"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="196"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="222"/>
+        <source>Export 3D Shape</source>
+        <translation>3D-Form exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
+        <source>STEP AP242: exact surfaces</source>
+        <translation>STEP AP242: exakte Flächen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
+        <source>STEP AP214: exact surfaces</source>
+        <translation>STEP AP214: exakte Flächen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
+        <source>IGES: exact surfaces</source>
+        <translation>IGES: exakte Flächen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
+        <source>OBJ mesh: a group per patch</source>
+        <translation>OBJ-Netz: eine Gruppe je Flächenstück</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
+        <source>STL mesh (binary)</source>
+        <translation>STL-Netz (binär)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
+        <source>PLY mesh (binary)</source>
+        <translation>PLY-Netz (binär)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="69"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="76"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="70"/>
+        <source>How far the mesh&apos;s triangles may stray from the exact surface.</source>
+        <translation>Wie weit die Dreiecke des Netzes von der exakten Fläche abweichen dürfen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="77"/>
+        <source>none (the surface)</source>
+        <translation>keine (die Fläche)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="79"/>
+        <source>A sheet of this thickness for 3D printing: both sides offset by half of it, the rim closed.</source>
+        <translation>Eine Platte dieser Dicke für den 3D-Druck: beide Seiten um die Hälfte versetzt, der Rand geschlossen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="85"/>
+        <source>&amp;Format:</source>
+        <translation>&amp;Format:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="86"/>
+        <source>Chord &amp;tolerance:</source>
+        <translation>Sehnen&amp;toleranz:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="87"/>
+        <source>T&amp;hickness:</source>
+        <translation>&amp;Dicke:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="89"/>
+        <source>&amp;Export…</source>
+        <translation>&amp;Exportieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="122"/>
+        <source>A triangle mesh for renderers, slicers and mesh tools; watertight wherever the design is.</source>
+        <translation>Ein Dreiecksnetz für Renderer, Slicer und Netzwerkzeuge; wasserdicht überall dort, wo der Entwurf es ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="124"/>
+        <source>Every patch as its exact B-spline surface, sewn into one shell per surface, in millimetres, faces named after their patches.</source>
+        <translation>Jedes Flächenstück als seine exakte B-Spline-Fläche, je Fläche zu einer Schale vernäht, in Millimetern, die Flächen nach ihren Flächenstücken benannt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="134"/>
+        <source>%1 files (*.%2)</source>
+        <translation>%1-Dateien (*.%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="150"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="158"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="161"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="163"/>
+        <source>Export failed</source>
+        <translation>Export fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="169"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
+        <source>Writing the 3D shape…</source>
+        <translation>Die 3D-Form wird geschrieben…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="169"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="187"/>
+        <source>surface %1, edge %2 (%3 mm apart)</source>
+        <translation>Fläche %1, Kante %2 (%3 mm auseinander)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="193"/>
+        <source>faces: %1, shells: %2</source>
+        <translation>Flächen: %1, Schalen: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="197"/>
+        <source>The shape was written, but some patches could not be sewn together and stay apart in the file: %1.</source>
+        <translation>Die Form wurde geschrieben, aber einige Flächenstücke ließen sich nicht vernähen und bleiben in der Datei getrennt: %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="220"/>
+        <source>triangles: %1</source>
+        <translation>Dreiecke: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="223"/>
+        <source>The mesh was written with %1 samples per curve interval, the most DevSurf writes, and is coarser than the tolerance asked for.</source>
+        <translation>Das Netz wurde mit %1 Abtastpunkten je Kurvenintervall geschrieben, dem Höchstwert von DevSurf, und ist gröber als die verlangte Toleranz.</translation>
     </message>
 </context>
 <context>

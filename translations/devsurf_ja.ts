@@ -1236,6 +1236,19 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::ExportShapeReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/shape_reactions.cpp" line="23"/>
+        <source>untitled</source>
+        <translation>無題</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/shape_reactions.cpp" line="28"/>
+        <source>Exported the 3D shape (%1)</source>
+        <translation>3D 形状をエクスポートしました (%1)</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::HoldSheetReaction</name>
     <message>
         <location filename="../app/gui/reactions/sheet_reactions.cpp" line="42"/>
@@ -1278,324 +1291,329 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="113"/>
+        <location filename="../app/gui/main_window.cpp" line="114"/>
         <source>Patches</source>
         <translation>パッチ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="119"/>
+        <location filename="../app/gui/main_window.cpp" line="120"/>
         <source>Properties</source>
         <translation>プロパティ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="126"/>
+        <location filename="../app/gui/main_window.cpp" line="127"/>
         <source>Solver</source>
         <translation>ソルバー</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="139"/>
+        <location filename="../app/gui/main_window.cpp" line="140"/>
         <source>Main</source>
         <translation>メイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="146"/>
+        <location filename="../app/gui/main_window.cpp" line="147"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="148"/>
+        <location filename="../app/gui/main_window.cpp" line="149"/>
         <source>&amp;New from Example…</source>
         <translation>例から新規作成(&amp;N)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="150"/>
+        <location filename="../app/gui/main_window.cpp" line="151"/>
         <source>&amp;Open…</source>
         <translation>開く(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="152"/>
+        <location filename="../app/gui/main_window.cpp" line="153"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="156"/>
+        <location filename="../app/gui/main_window.cpp" line="157"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="159"/>
+        <location filename="../app/gui/main_window.cpp" line="160"/>
         <source>Save &amp;As…</source>
         <translation>名前を付けて保存(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="163"/>
+        <location filename="../app/gui/main_window.cpp" line="164"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>交換用 JSON をエクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="163"/>
+        <location filename="../app/gui/main_window.cpp" line="164"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="167"/>
+        <source>Export &amp;3D Shape…</source>
+        <translation>3D 形状をエクスポート(&amp;3)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="171"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="171"/>
+        <location filename="../app/gui/main_window.cpp" line="175"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="174"/>
+        <location filename="../app/gui/main_window.cpp" line="178"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="177"/>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="184"/>
+        <location filename="../app/gui/main_window.cpp" line="188"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="186"/>
+        <location filename="../app/gui/main_window.cpp" line="190"/>
         <source>Select &amp;None</source>
         <translation>選択を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="187"/>
+        <location filename="../app/gui/main_window.cpp" line="191"/>
         <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="191"/>
+        <location filename="../app/gui/main_window.cpp" line="195"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="193"/>
+        <location filename="../app/gui/main_window.cpp" line="197"/>
         <source>&amp;3D View</source>
         <translation>3D ビュー(&amp;3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="193"/>
+        <location filename="../app/gui/main_window.cpp" line="197"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="195"/>
+        <location filename="../app/gui/main_window.cpp" line="199"/>
         <source>&amp;Development View</source>
         <translation>展開図ビュー(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="195"/>
+        <location filename="../app/gui/main_window.cpp" line="199"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="196"/>
+        <location filename="../app/gui/main_window.cpp" line="200"/>
         <source>3D &amp;and Development</source>
         <translation>3D と展開図(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <location filename="../app/gui/main_window.cpp" line="201"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="201"/>
+        <location filename="../app/gui/main_window.cpp" line="205"/>
         <source>&amp;Control Polygons</source>
         <translation>制御多角形(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="201"/>
+        <location filename="../app/gui/main_window.cpp" line="205"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="202"/>
+        <location filename="../app/gui/main_window.cpp" line="206"/>
         <source>&amp;Vertices</source>
         <translation>頂点(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="203"/>
+        <location filename="../app/gui/main_window.cpp" line="207"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207"/>
+        <location filename="../app/gui/main_window.cpp" line="211"/>
         <source>&amp;Fit All</source>
         <translation>全体を表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207"/>
+        <location filename="../app/gui/main_window.cpp" line="211"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="213"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>Reset &amp;Layout</source>
         <translation>レイアウトをリセット(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="218"/>
+        <location filename="../app/gui/main_window.cpp" line="222"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="221"/>
+        <location filename="../app/gui/main_window.cpp" line="225"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>辺のラベルを変更 (R ↔ S)(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="221"/>
+        <location filename="../app/gui/main_window.cpp" line="225"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="223"/>
+        <location filename="../app/gui/main_window.cpp" line="227"/>
         <source>Add &amp;Crease…</source>
         <translation>折り線を追加(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="224"/>
+        <location filename="../app/gui/main_window.cpp" line="228"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="226"/>
+        <location filename="../app/gui/main_window.cpp" line="230"/>
         <source>Add R&amp;uling…</source>
         <translation>母線を追加(&amp;U)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="227"/>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="229"/>
+        <location filename="../app/gui/main_window.cpp" line="233"/>
         <source>Re&amp;fine Curves</source>
         <translation>曲線を細分化(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="230"/>
+        <location filename="../app/gui/main_window.cpp" line="234"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="236"/>
+        <location filename="../app/gui/main_window.cpp" line="240"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>頂点の移動・回転(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="236"/>
+        <location filename="../app/gui/main_window.cpp" line="240"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="239"/>
+        <location filename="../app/gui/main_window.cpp" line="243"/>
         <source>&amp;Pin Vertices</source>
         <translation>頂点を固定(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="240"/>
+        <location filename="../app/gui/main_window.cpp" line="244"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="242"/>
+        <location filename="../app/gui/main_window.cpp" line="246"/>
         <source>U&amp;npin Vertices</source>
         <translation>頂点の固定を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="243"/>
+        <location filename="../app/gui/main_window.cpp" line="247"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="245"/>
+        <location filename="../app/gui/main_window.cpp" line="249"/>
         <source>Hold the &amp;Sheet</source>
         <translation>シートを保持(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="246"/>
+        <location filename="../app/gui/main_window.cpp" line="250"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="275"/>
+        <location filename="../app/gui/main_window.cpp" line="279"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="276"/>
+        <location filename="../app/gui/main_window.cpp" line="280"/>
         <source>&amp;User Manual</source>
         <translation>ユーザーマニュアル(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="283"/>
+        <location filename="../app/gui/main_window.cpp" line="287"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="289"/>
+        <location filename="../app/gui/main_window.cpp" line="293"/>
         <source>&amp;About DevSurf</source>
         <translation>DevSurf について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="291"/>
+        <location filename="../app/gui/main_window.cpp" line="295"/>
         <source>About DevSurf</source>
         <translation>DevSurf について</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="292"/>
+        <location filename="../app/gui/main_window.cpp" line="296"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;スプライン可展面による可展面と曲線折り折り紙の設計 (Tang, Bo, Wallner, Pottmann 2015)。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="335"/>
+        <location filename="../app/gui/main_window.cpp" line="339"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="357"/>
+        <location filename="../app/gui/main_window.cpp" line="361"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="358"/>
+        <location filename="../app/gui/main_window.cpp" line="362"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="372"/>
+        <location filename="../app/gui/main_window.cpp" line="376"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>曲面 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="373"/>
+        <location filename="../app/gui/main_window.cpp" line="377"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="374"/>
+        <location filename="../app/gui/main_window.cpp" line="378"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="375"/>
+        <location filename="../app/gui/main_window.cpp" line="379"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n 個選択</numerusform>
@@ -2531,6 +2549,163 @@
         <location filename="../app/gui/rotate_tool.cpp" line="114"/>
         <source>Rotation stopped: the design changed during the rotation.</source>
         <translation>回転を中止しました: 回転中にデザインが変更されました。</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::ShapeExportDialog</name>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="37"/>
+        <source>The design has no surface to export.</source>
+        <translation>エクスポートする曲面がデザインにありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="39"/>
+        <source>Patch %1 of surface %2 cannot be written as an exact surface.</source>
+        <translation>曲面 %2 のパッチ %1 を厳密な曲面として書き出せません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="44"/>
+        <source>The shape could not be translated into this format. Try another format.</source>
+        <translation>形状をこの形式に変換できませんでした。別の形式をお試しください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="57"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="132"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="196"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="222"/>
+        <source>Export 3D Shape</source>
+        <translation>3D 形状のエクスポート</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
+        <source>STEP AP242: exact surfaces</source>
+        <translation>STEP AP242: 厳密な曲面</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
+        <source>STEP AP214: exact surfaces</source>
+        <translation>STEP AP214: 厳密な曲面</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
+        <source>IGES: exact surfaces</source>
+        <translation>IGES: 厳密な曲面</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
+        <source>OBJ mesh: a group per patch</source>
+        <translation>OBJ メッシュ: パッチごとに 1 グループ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
+        <source>STL mesh (binary)</source>
+        <translation>STL メッシュ (バイナリ)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
+        <source>PLY mesh (binary)</source>
+        <translation>PLY メッシュ (バイナリ)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="69"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="76"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="70"/>
+        <source>How far the mesh&apos;s triangles may stray from the exact surface.</source>
+        <translation>メッシュの三角形が厳密な曲面から離れてよい距離。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="77"/>
+        <source>none (the surface)</source>
+        <translation>なし (曲面そのもの)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="79"/>
+        <source>A sheet of this thickness for 3D printing: both sides offset by half of it, the rim closed.</source>
+        <translation>3D プリント用にこの厚さの板にします: 両面を半分ずつオフセットし、縁を閉じます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="85"/>
+        <source>&amp;Format:</source>
+        <translation>形式(&amp;F):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="86"/>
+        <source>Chord &amp;tolerance:</source>
+        <translation>弦の許容誤差(&amp;T):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="87"/>
+        <source>T&amp;hickness:</source>
+        <translation>厚さ(&amp;H):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="89"/>
+        <source>&amp;Export…</source>
+        <translation>エクスポート(&amp;E)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="122"/>
+        <source>A triangle mesh for renderers, slicers and mesh tools; watertight wherever the design is.</source>
+        <translation>レンダラー、スライサー、メッシュツール向けの三角形メッシュ。デザインが閉じている所では水密です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="124"/>
+        <source>Every patch as its exact B-spline surface, sewn into one shell per surface, in millimetres, faces named after their patches.</source>
+        <translation>各パッチを厳密な B スプライン曲面として、曲面ごとに 1 つのシェルに縫い合わせ、ミリメートル単位で、面にパッチ名を付けて書き出します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="134"/>
+        <source>%1 files (*.%2)</source>
+        <translation>%1 ファイル (*.%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="150"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="158"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="161"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="163"/>
+        <source>Export failed</source>
+        <translation>エクスポートに失敗しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="169"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
+        <source>Writing the 3D shape…</source>
+        <translation>3D 形状を書き出しています…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="169"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="187"/>
+        <source>surface %1, edge %2 (%3 mm apart)</source>
+        <translation>曲面 %1、辺 %2 (%3 mm 離れています)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="193"/>
+        <source>faces: %1, shells: %2</source>
+        <translation>面: %1、シェル: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="197"/>
+        <source>The shape was written, but some patches could not be sewn together and stay apart in the file: %1.</source>
+        <translation>形状は書き出されましたが、縫い合わせられなかったパッチがあり、ファイル内で離れたままです: %1。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="220"/>
+        <source>triangles: %1</source>
+        <translation>三角形: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="223"/>
+        <source>The mesh was written with %1 samples per curve interval, the most DevSurf writes, and is coarser than the tolerance asked for.</source>
+        <translation>メッシュは曲線区間あたり %1 サンプル (DevSurf の上限) で書き出され、指定の許容誤差より粗くなっています。</translation>
     </message>
 </context>
 <context>

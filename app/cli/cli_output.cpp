@@ -16,7 +16,8 @@ namespace devsurf::app {
 namespace {
 
 // The extensions of the files DevSurf writes.
-const char* const kKnownExtensions[] = {"devsurf", "json", "dxf", "svg", "pdf", "fold"};
+const char* const kKnownExtensions[] = {"devsurf", "json", "dxf", "svg", "pdf", "fold", "step",
+                                        "stp",     "iges", "igs", "obj", "stl", "ply"};
 
 } // namespace
 

@@ -1,5 +1,6 @@
 #include "pattern_commands.h"
 #include "problem_text.h"
+#include "shape_commands.h"
 
 #include "cli_output.h"
 
@@ -118,17 +119,29 @@ int runExportPatternCommand(const SubcommandArguments& args) {
     const std::string file = args.onePositional("one project file");
     const std::string output = args.required("o", "the output file is missing (use -o FILE)");
     std::optional<io::PatternFormat> format;
+    const std::string suffix =
+        QFileInfo(QString::fromStdString(output)).suffix().toLower().toStdString();
+    // The 3D shape formats share the subcommand.
+    const std::optional<std::string> formatOption = args.value("format");
+    const std::string shapeFormat = formatOption ? *formatOption : suffix;
+    if (isShapeFormat(shapeFormat)) {
+        return runExportShapeCommand(args, shapeFormat);
+    }
+    if (args.isSet("thickness")) {
+        throw UsageError{"option '--thickness' is for meshes (obj, stl, ply) only"};
+    }
     if (const std::optional<std::string> name = args.value("format")) {
         format = io::patternFormatFromName(*name);
         if (!format) {
-            throw UsageError{"option '--format' needs dxf, svg, pdf or fold, not '" + *name + "'"};
+            throw UsageError{"option '--format' needs dxf, svg, pdf, fold, step, step214, iges, "
+                             "obj, stl or ply, not '" +
+                             *name + "'"};
         }
     } else {
-        const std::string suffix =
-            QFileInfo(QString::fromStdString(output)).suffix().toLower().toStdString();
         format = io::patternFormatFromName(suffix);
         if (!format) {
-            throw UsageError{"the format is missing (use --format dxf|svg|pdf|fold)"};
+            throw UsageError{"the format is missing (use --format dxf|svg|pdf|fold|step|iges|obj|"
+                             "stl|ply)"};
         }
     }
     const std::string formatName = io::patternFormatName(*format);

@@ -141,18 +141,28 @@ const std::vector<SubcommandSpec>& subcommands() {
           kOutputProject}},
         {"export",
          "export FILE --format dxf|svg|pdf|fold [--sheet W,H | --paper A4|A3|Letter]\n"
-         "       [--tolerance MM] [--splines] [--r12] [--seam MM] [--rulings] -o OUT",
+         "       [--tolerance MM] [--splines] [--r12] [--seam MM] [--rulings] -o OUT\n"
+         "export FILE --format step|step214|iges|obj|stl|ply [--tolerance MM]\n"
+         "       [--thickness MM] -o OUT",
          "Write the cutting pattern: pieces laid out on sheets of W x H mm\n"
          "(default 600,400) or of a paper's printable size; curves within\n"
          "MM (default 0.01); DXF as SPLINEs (--splines) or R12 (--r12); a seam\n"
          "allowance of MM; rulings as scoring lines. PDF prints 1:1 on the\n"
          "paper (default A4), tiled, after the fabrication report. FOLD\n"
          "always has the rulings (as flat edges, for folding simulators).\n"
-         "OUT must end in the format's extension (or have none); -o - writes\n"
-         "DXF, SVG or FOLD to standard output.",
-         patternOptions({{"format", "FORMAT", "dxf, svg, pdf or fold (default: OUT's extension)."},
+         "Or write the 3D shape: STEP (AP242; step214: AP214) or IGES with\n"
+         "every patch's exact B-spline surface, each surface sewn into one\n"
+         "shell, units mm; or a triangle mesh (OBJ with a group per patch,\n"
+         "binary STL or PLY) within MM of the surface (default 0.01),\n"
+         "optionally a sheet of --thickness MM (both sides offset, the rim\n"
+         "closed). OUT must end in the format's extension (or have none);\n"
+         "-o - writes DXF, SVG or FOLD to standard output.",
+         patternOptions({{"format", "FORMAT",
+                          "dxf, svg, pdf, fold, step, step214, iges, obj, stl or ply "
+                          "(default: OUT's extension)."},
                          {"splines", "", "DXF: curves as SPLINEs."},
                          {"r12", "", "DXF: R12 instead of R2000."},
+                         {"thickness", "MM", "Meshes: a sheet of this thickness."},
                          {"o", "OUT", "The file to write (- for standard output)."}})},
         {"report", "report FILE [--json] [--sheet W,H | --paper NAME] [--tolerance MM] [--seam MM]",
          "Print the fabrication report: per piece its sheet, size, area,\n"

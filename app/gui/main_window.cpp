@@ -13,6 +13,7 @@
 #include "reactions/file_reactions.h"
 #include "reactions/pattern_reactions.h"
 #include "reactions/pin_reactions.h"
+#include "reactions/shape_reactions.h"
 #include "reactions/sheet_reactions.h"
 #include "reactions/tool_reactions.h"
 #include "reactions/view_reactions.h"
@@ -162,6 +163,9 @@ void MainWindow::createMenus() {
     QAction* exportJson = addAction(file, QStringLiteral("actionExportJson"),
                                     tr("&Export Interchange JSON…"), QKeySequence(tr("Ctrl+E")));
     new ExportJsonReaction(exportJson, m_workspace);
+    QAction* exportShape =
+        addAction(file, QStringLiteral("actionExportShape"), tr("Export &3D Shape…"));
+    new ExportShapeReaction(exportShape, m_workspace);
     addCuttingPatternActions(file, m_workspace);
     file->addSeparator();
     QAction* quit = addAction(file, QStringLiteral("actionQuit"), tr("&Quit"), QKeySequence::Quit);
