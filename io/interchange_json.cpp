@@ -138,6 +138,13 @@ QJsonObject surfaceObject(const model::CompositeSurface& surface, int samples) {
              {"period", development.period ? QJsonValue(point(*development.period)) : QJsonValue()},
              {"closureError", development.closureError},
          }},
+        {"keptDevelopment", !surface.keepsDevelopment()
+                                ? QJsonValue()
+                                : QJsonValue(QJsonObject{
+                                      {"samplesPerInterval", kDevelopmentSamplesPerInterval},
+                                      {"vertices", array(surface.development(),
+                                                         [](const Vec2& p) { return point(p); })},
+                                  })},
     };
 }
 

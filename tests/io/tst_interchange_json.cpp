@@ -1,4 +1,5 @@
 #include "io/interchange_json.h"
+#include "model/development.h"
 #include "model/examples.h"
 #include "model/sampled_mesh.h"
 #include "model/strip.h"
@@ -258,6 +259,28 @@ private slots:
         QCOMPARE(mixed["planarFaces"].toArray().size(), qsizetype(1));
         QCOMPARE(mixed["planarFaces"].toArray()[0].toObject()["polygon"].toArray().size(),
                  qsizetype(4));
+    }
+
+    void keptDevelopmentIsWritten() {
+        model::Project project = model::makeExample("fig8");
+        QVERIFY(parse(io::interchangeJson(project, 4))["surfaces"]
+                    .toArray()[0]
+                    .toObject()["keptDevelopment"]
+                    .isNull());
+        QVERIFY(!model::keepDevelopment(project.surfaces[0]).has_value());
+        const QJsonObject kept = parse(io::interchangeJson(project, 4))["surfaces"]
+                                     .toArray()[0]
+                                     .toObject()["keptDevelopment"]
+                                     .toObject();
+        QCOMPARE(kept["samplesPerInterval"].toInt(), model::kDevelopmentSamplesPerInterval);
+        const QJsonArray vertices = kept["vertices"].toArray();
+        const std::vector<model::Vec2>& sheet = project.surfaces[0].development();
+        QCOMPARE(static_cast<std::size_t>(vertices.size()), sheet.size());
+        for (qsizetype i = 0; i < vertices.size(); ++i) {
+            const QJsonArray p = vertices[i].toArray();
+            QCOMPARE(p[0].toDouble(), sheet[static_cast<std::size_t>(i)].x);
+            QCOMPARE(p[1].toDouble(), sheet[static_cast<std::size_t>(i)].y);
+        }
     }
 };
 
