@@ -56,6 +56,12 @@ if [ -n "$openblas" ] && [ "$(readlink -f /etc/alternatives/"$blas_alt")" != "$(
   as_root update-alternatives --set "$blas_alt" "$openblas"
 fi
 
+# The sanitizer builds keep line tables only (-g1): their reports still name file and line, and
+# compiling and linking with less debug information saves CI time (about a tenth of the compile
+# time of the solver's sources).
+sanitizer_flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
+  "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG")
+
 configure_and_build() { # dir, extra cmake args...
   local dir="$1"; shift
   # Configure every time (a few seconds): packages installed since the last run, such as the
@@ -87,13 +93,13 @@ case "$mode" in
     echo "== Running all tests (headless)"
     (cd "$build" && xvfb-run -a -s "-screen 0 1920x1080x24" ctest --output-on-failure -j "$jobs")
     echo "== Building and running the unit tests under AddressSanitizer + UBSan in $build_asan"
-    configure_and_build "$build_asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDEVSURF_SANITIZE=ON \
+    configure_and_build "$build_asan" "${sanitizer_flags[@]}" -DDEVSURF_SANITIZE=ON \
       -DDEVSURF_UNIT_TESTS_ONLY=ON
     (cd "$build_asan" && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       xvfb-run -a ctest --output-on-failure -j "$jobs")
     echo "== Building and running the worker and document tests under ThreadSanitizer in $build_tsan"
-    cmake -S "$root" -B "$build_tsan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDEVSURF_TSAN=ON \
+    cmake -S "$root" -B "$build_tsan" -G Ninja "${sanitizer_flags[@]}" -DDEVSURF_TSAN=ON \
       -DDEVSURF_UNIT_TESTS_ONLY=ON >/dev/null
     cmake --build "$build_tsan" -j "$jobs" --target tst_worker tst_document
     # One BLAS/OpenMP thread: the threads under test are ours, not the uninstrumented libgomp's.

@@ -1,6 +1,8 @@
 #include "output_problem_text.h"
 
 #include <QCoreApplication>
+#include <QDir>
+#include <QFileDialog>
 #include <QFileInfo>
 
 namespace devsurf::app {
@@ -25,6 +27,16 @@ QString outputProblemText(io::OutputProblem problem, const QString& path) {
             .arg(name);
     }
     return {};
+}
+
+QString askExportPath(QWidget* parent, const QString& title, const QString& directory,
+                      const QString& baseName, const QString& extension, const QString& filter) {
+    QString path = QFileDialog::getSaveFileName(
+        parent, title, QDir(directory).filePath(baseName + QLatin1Char('.') + extension), filter);
+    if (!path.isEmpty() && !path.endsWith(QLatin1Char('.') + extension, Qt::CaseInsensitive)) {
+        path += QLatin1Char('.') + extension;
+    }
+    return path;
 }
 
 QString notEnoughMemoryText(const QString& path) {

@@ -12,9 +12,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
-#include <QDir>
 #include <QDoubleSpinBox>
-#include <QFileDialog>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -347,16 +345,9 @@ void PatternExportDialog::chooseFileAndExport() {
     }
     const auto format = static_cast<io::PatternFormat>(m_format->currentIndex());
     const QString extension = QString::fromLatin1(io::patternFormatName(format));
-    QString path = QFileDialog::getSaveFileName(
-        this, tr("Export Cutting Pattern"),
-        QDir(m_directory).filePath(m_baseName + QLatin1Char('.') + extension), filterFor(format));
-    if (path.isEmpty()) {
-        return;
-    }
-    if (!path.endsWith(QLatin1Char('.') + extension, Qt::CaseInsensitive)) {
-        path += QLatin1Char('.') + extension;
-    }
-    if (exportTo(path)) {
+    const QString path = askExportPath(this, tr("Export Cutting Pattern"), m_directory, m_baseName,
+                                       extension, filterFor(format));
+    if (!path.isEmpty() && exportTo(path)) {
         accept();
     }
 }

@@ -12,9 +12,7 @@
 
 #include <QComboBox>
 #include <QDialogButtonBox>
-#include <QDir>
 #include <QDoubleSpinBox>
-#include <QFileDialog>
 #include <QFormLayout>
 #include <QLabel>
 #include <QMessageBox>
@@ -128,17 +126,10 @@ void ShapeExportDialog::updateEnabled() {
 void ShapeExportDialog::chooseFileAndExport() {
     const auto format = static_cast<Format>(m_format->currentIndex());
     const QString extension = extensionFor(format);
-    QString path = QFileDialog::getSaveFileName(
-        this, tr("Export 3D Shape"),
-        QDir(m_directory).filePath(m_baseName + QLatin1Char('.') + extension),
-        tr("%1 files (*.%2)").arg(extension.toUpper(), extension));
-    if (path.isEmpty()) {
-        return;
-    }
-    if (!path.endsWith(QLatin1Char('.') + extension, Qt::CaseInsensitive)) {
-        path += QLatin1Char('.') + extension;
-    }
-    if (exportTo(path)) {
+    const QString path =
+        askExportPath(this, tr("Export 3D Shape"), m_directory, m_baseName, extension,
+                      tr("%1 files (*.%2)").arg(extension.toUpper(), extension));
+    if (!path.isEmpty() && exportTo(path)) {
         accept();
     }
 }

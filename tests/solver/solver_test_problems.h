@@ -15,6 +15,7 @@
 #include <map>
 #include <memory>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -87,6 +88,13 @@ inline SparseRows finiteDifferenceJacobian(const Term& term, std::vector<double>
 }
 
 // Largest |analytic − finite difference| over the union of both supports.
+inline double jacobianError(const SparseRows& analytic, const SparseRows& numeric);
+
+// The type of the first term of `problem` whose Jacobian at x differs from central differences
+// (step 1e-6) by more than `tolerance`; empty when none does.
+inline std::string termWithWrongJacobian(const Problem& problem, const std::vector<double>& x,
+                                         double tolerance = 1e-6);
+
 inline double jacobianError(const SparseRows& analytic, const SparseRows& numeric) {
     double error = 0.0;
     for (const auto& [key, value] : analytic) {
@@ -98,6 +106,18 @@ inline double jacobianError(const SparseRows& analytic, const SparseRows& numeri
         error = std::max(error, std::abs(value - (it == analytic.end() ? 0.0 : it->second)));
     }
     return error;
+}
+
+inline std::string termWithWrongJacobian(const Problem& problem, const std::vector<double>& x,
+                                         double tolerance) {
+    for (int t = 0; t < problem.termCount(); ++t) {
+        const Term& term = problem.term(t);
+        if (jacobianError(analyticJacobian(term, x), finiteDifferenceJacobian(term, x, 1e-6)) >
+            tolerance) {
+            return term.typeName();
+        }
+    }
+    return {};
 }
 
 // Points on the unit circle: ‖pᵢ‖² = 1 (hard), ⟨pᵢ, pᵢ₊₁⟩ = cos(2π/n) (hard, closed chain),
