@@ -31,10 +31,8 @@ Development unfoldSampledMesh(const SampledMesh& mesh);
 // The largest gap (mm) at which an unfolding still counts as one flat sheet (closure error).
 inline constexpr double kOneSheetClosure = 1e-3;
 
-// Starts keeping the development of `surface` (CompositeSurface::keepsDevelopment): its sampled
-// mesh unfolded becomes the sheet it is folded from. Returns the problem instead, changing
-// nothing, where the surface is not one flat sheet: several parts, an unfolding that closes up
-// only with a period (a cylinder) or not at all (closure error above kOneSheetClosure).
+// Makes `surface` hold its sheet (keepsDevelopment) as it unfolds now; or, changing nothing, the
+// problem why it is not one flat sheet (several parts, a period, a gap above kOneSheetClosure).
 std::optional<Problem> keepDevelopment(CompositeSurface& surface);
 
 // Relative edge-length error between the mesh and a development of it (§8), using the

@@ -3,6 +3,7 @@
 #include "model/bspline_curve.h"
 #include "solver/formulation/point_combinations.h"
 
+#include <memory>
 #include <stdexcept>
 
 namespace devsurf::solver {
@@ -62,12 +63,15 @@ model::Development DevelopmentVariables::read(const std::vector<double>& x) cons
     return development;
 }
 
-DevelopmentVariables addDevelopment(const model::CompositeSurface& surface, int samplesPerInterval,
-                                    const std::vector<model::Vec2>* start,
+DevelopmentVariables addDevelopment(const model::CompositeSurface& surface,
+                                    const DevelopmentOptions& options,
                                     const std::map<model::VertexId, int>& vertexOffsets,
                                     const std::map<model::EdgeId, std::vector<int>>& edgeOffsets,
-                                    double scale, Problem& problem, std::vector<double>& state,
-                                    SquaredDistanceTerm& isometry, FairnessTerm& fairness) {
+                                    double scale, Problem& problem, std::vector<double>& state) {
+    const int samplesPerInterval = options.samplesPerInterval;
+    const std::vector<model::Vec2>* start = options.start;
+    auto isometry = std::make_unique<SquaredDistanceTerm>(2, 3);
+    auto fairness = std::make_unique<FairnessTerm>(2);
     DevelopmentVariables result;
     result.mesh = model::sampleSurface(surface, samplesPerInterval);
     result.scale = scale;
@@ -112,8 +116,8 @@ DevelopmentVariables addDevelopment(const model::CompositeSurface& surface, int 
                 if (!(length > 0.0)) {
                     continue; // coincident samples (a pointed end): no pair to keep
                 }
-                const int row = isometry.addRow(plus(flatOf(a), flatOf(b), -1.0), space, 0.0);
-                isometry.setRowScale(row, 1.0 / (length * length));
+                const int row = isometry->addRow(plus(flatOf(a), flatOf(b), -1.0), space, 0.0);
+                isometry->setRowScale(row, 1.0 / (length * length));
             }
         }
     }
@@ -122,7 +126,16 @@ DevelopmentVariables addDevelopment(const model::CompositeSurface& surface, int 
         for (int v : line.vertices) {
             offsets.push_back(result.offset + 2 * v);
         }
-        fairness.addSequence(offsets);
+        fairness->addSequence(offsets);
+    }
+    problem.add(problem.addFamily("development", TermRole::Constraint, options.weight),
+                std::move(isometry));
+    if (options.fixed) {
+        problem.setBlockFixed("development");
+    } else if (fairness->rowCount() > 0) {
+        result.fairness = problem.add(
+            problem.addFamily("developmentFairness", TermRole::Energy, options.fairnessWeight),
+            std::move(fairness));
     }
     return result;
 }

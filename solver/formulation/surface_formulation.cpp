@@ -63,8 +63,6 @@ struct SurfaceFormulation::Builder {
     std::map<FaceId, StripNormalSpline> stripNormals; // per strip, for the crease conditions
     std::unique_ptr<LinearTerm> smoothness = std::make_unique<LinearTerm>();
     std::unique_ptr<SquaredDistanceTerm> vertexStars = std::make_unique<SquaredDistanceTerm>(2, 3);
-    std::unique_ptr<SquaredDistanceTerm> development = std::make_unique<SquaredDistanceTerm>(2, 3);
-    std::unique_ptr<FairnessTerm> developmentFairness = std::make_unique<FairnessTerm>(2);
     std::unique_ptr<MinimumLengthTerm> spokeGuard = std::make_unique<MinimumLengthTerm>(3);
     std::unique_ptr<TargetTerm> handles = std::make_unique<TargetTerm>();
     std::unique_ptr<TargetTerm> pointHandles = std::make_unique<TargetTerm>(); // soft, if any
@@ -383,6 +381,15 @@ struct SurfaceFormulation::Builder {
         }
     }
 
+    // State offsets of every coarse vertex, once the points are placed.
+    std::map<VertexId, int> vertexOffsets() const {
+        std::map<VertexId, int> offsets;
+        for (const auto& [vertex, point] : f.m_vertexPoint) {
+            offsets[vertex] = f.pointOffset(point);
+        }
+        return offsets;
+    }
+
     // State offsets of every S-edge's control points (stored orientation), once the points
     // are placed.
     void collectEdgeOffsets() {
@@ -409,30 +416,21 @@ struct SurfaceFormulation::Builder {
         if (!options.vertexDevelopability) {
             return;
         }
-        std::map<VertexId, int> vertexOffsets;
-        for (const auto& [vertex, point] : f.m_vertexPoint) {
-            vertexOffsets[vertex] = f.pointOffset(point);
-        }
-        solver::addVertexDevelopability(surface, vertexOffsets, edgeOffsets, f.m_problem,
+        solver::addVertexDevelopability(surface, vertexOffsets(), edgeOffsets, f.m_problem,
                                         f.m_initialState, *vertexStars, *spokeGuard, options);
     }
 
     // The development as variables (§5, eq. 12), fixed where it is kept as given.
     void addDevelopment() {
-        if (options.developmentSamplesPerInterval <= 0) {
-            return;
-        }
-        std::map<VertexId, int> vertexOffsets;
-        for (const auto& [vertex, point] : f.m_vertexPoint) {
-            vertexOffsets[vertex] = f.pointOffset(point);
-        }
-        f.m_development = solver::addDevelopment(
-            surface, options.developmentSamplesPerInterval,
-            options.developmentStart.empty() ? nullptr : &options.developmentStart, vertexOffsets,
-            edgeOffsets, f.m_scale, f.m_problem, f.m_initialState, *development,
-            *developmentFairness);
-        if (options.fixedDevelopment) {
-            f.m_problem.setBlockFixed("development");
+        if (options.developmentSamplesPerInterval > 0) {
+            const std::vector<model::Vec2>& start = options.developmentStart;
+            f.m_development = solver::addDevelopment(
+                surface,
+                {options.developmentSamplesPerInterval, start.empty() ? nullptr : &start,
+                 options.fixedDevelopment, options.developmentWeight,
+                 options.developmentFairnessWeight},
+                vertexOffsets(), edgeOffsets, f.m_scale, f.m_problem, f.m_initialState);
+            f.m_developmentFairness = f.m_development.fairness;
         }
     }
 
@@ -530,12 +528,6 @@ struct SurfaceFormulation::Builder {
             std::move(vertexStars));
         add("vertexSpokeGuard", TermRole::Constraint, options.vertexDevelopabilityWeight,
             std::move(spokeGuard));
-        add("development", TermRole::Constraint, options.developmentWeight, std::move(development));
-        if (!options.fixedDevelopment && developmentFairness->rowCount() > 0) {
-            f.m_developmentFairness = developmentFairness.get();
-            add("developmentFairness", TermRole::Energy, options.developmentFairnessWeight,
-                std::move(developmentFairness));
-        }
         TargetTerm* hard = handles->rowCount() > 0 ? handles.get() : nullptr;
         f.m_handleTerm = pulls->rowCount() > 0 ? pulls.get() : hard;
         f.m_controlHandleTerm = pointHandles->rowCount() > 0 ? pointHandles.get() : hard;

@@ -157,12 +157,9 @@ struct FormulationOptions {
     // rather than imposed on a rough start. The default imposes it everywhere.
     double vertexStartDefectLimit = 1e9;
 
-    // The development in the solve (§5, eq. 12; addDevelopment): a flat copy of the surface
-    // sampled at this many values per spline interval, isometric to it face by face (weight
-    // developmentWeight), with overfolding fairness along every sampled curve (an energy of
-    // developmentFairnessWeight). 0: none. The copy starts at developmentStart (indexed like
-    // model::sampleSurface's mesh at this sampling, millimetres) or, empty, at the unfolding;
-    // fixedDevelopment keeps it where it starts: the surface is then folded from that sheet.
+    // The development in the solve (addDevelopment): a flat copy of the surface sampled at this
+    // many values per interval (0: none), starting at developmentStart (mm) or the unfolding;
+    // fixedDevelopment keeps it there, so the surface is folded from that sheet.
     int developmentSamplesPerInterval = 0;
     double developmentWeight = 1.0;
     double developmentFairnessWeight = 0.01;
@@ -176,9 +173,8 @@ struct FormulationOptions {
     // far as the conditions let it, for a dragged crease whose every control point is pulled
     // (see creaseDragSessionOptions).
     double controlPointHandleWeight = 0.0;
-    // 0: pulled vertex handles are constraints. Above 0: an energy of this weight (times ε₁,
-    // family "pulls", driving ε₁ while the drag moves) that the constraints may refuse: where
-    // the sheet cannot follow, the vertex lags behind its target. fadeDragEnergies fades it.
+    // Above 0: pulled vertex handles are an energy of this weight ("pulls", driving ε₁, faded by
+    // fadeDragEnergies) instead of constraints, so a vertex lags where the sheet cannot follow.
     double pulledHandleWeight = 0.0;
 };
 
@@ -266,8 +262,7 @@ public:
     // Model coordinates of a coarse vertex in state x.
     model::Vec3 vertexPosition(const std::vector<double>& x, model::VertexId vertex) const;
 
-    // The development in the solve at state x (millimetres) and the mesh it is of; null and
-    // empty without one (FormulationOptions::developmentSamplesPerInterval 0).
+    // The development at state x (mm) and its mesh; null and empty without one.
     const model::SampledMesh* developmentMesh() const {
         return m_development.offset >= 0 ? &m_development.mesh : nullptr;
     }

@@ -68,10 +68,8 @@ constexpr int iterationsAfterDrag(bool keepLengths) {
 constexpr int kDragFactorizationReuse = 1;
 constexpr double kDragFactorizationReuseFlops = 1e7;
 
-// The weight of the pull of a dragged vertex on a surface that keeps its development
-// (FormulationOptions::pulledHandleWeight): the development holds, the vertex follows as far as
-// the sheet lets it. Measured on fig8 lifted 85 mm (20 moves, 20 iterations): the vertices lag
-// by the same 35.5 mm at weights 1, 10 and 100 (the sheet's limit, not the pull's).
+// The pull of a dragged vertex of a surface that holds its sheet (pulledHandleWeight); the lag
+// does not depend on it (docs/tuning.md, "Holding the sheet").
 constexpr double kSheetPullWeight = 1.0;
 
 struct SessionOptions {
