@@ -23,7 +23,6 @@
 #include <QAction>
 #include <QApplication>
 #include <QMenu>
-#include <QMessageBox>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTest>
@@ -131,12 +130,7 @@ private slots:
         document::Document* doc = window.workspace()->document();
         const int steps = doc->undoStack()->count();
         bool warned = false;
-        QTimer::singleShot(0, [&warned] {
-            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
-                warned = true;
-                box->accept();
-            }
-        });
+        test::acceptNextMessageBox(warned);
         window.action(QStringLiteral("actionHoldSheet"))->trigger();
         QVERIFY(warned);
         QVERIFY(!doc->surface(0).keepsDevelopment());

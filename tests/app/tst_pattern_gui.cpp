@@ -10,6 +10,7 @@
 #include "reactions/pattern_reactions.h"
 #include "test_registry.h"
 #include "views/scene_geometry.h"
+#include "window_test_support.h"
 #include "workspace.h"
 
 #include <QAction>
@@ -18,14 +19,12 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
-#include <QMessageBox>
 #include <QPrinter>
 #include <QProcess>
 #include <QSettings>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
-#include <QTimer>
 
 using namespace devsurf;
 
@@ -138,12 +137,7 @@ private slots:
         dialog.setSettings(bigSheet());
         dialog.rebuildPattern();
         bool answered = false;
-        QTimer::singleShot(0, [&answered] {
-            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
-                answered = true;
-                box->accept();
-            }
-        });
+        test::acceptNextMessageBox(answered);
         QVERIFY(!dialog.exportTo(file));
         QVERIFY(answered);
         QFile in(file);

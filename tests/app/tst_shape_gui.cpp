@@ -4,6 +4,7 @@
 #include "model/project.h"
 #include "shape_export_dialog.h"
 #include "test_registry.h"
+#include "window_test_support.h"
 #include "workspace.h"
 
 #include <QAction>
@@ -12,10 +13,8 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
-#include <QMessageBox>
 #include <QTemporaryDir>
 #include <QTest>
-#include <QTimer>
 
 using namespace devsurf;
 
@@ -65,12 +64,7 @@ private slots:
         dialog.setProjectFile(file);
         dialog.formatBox()->setCurrentIndex(app::ShapeExportDialog::Stl);
         bool answered = false;
-        QTimer::singleShot(0, [&answered] {
-            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
-                answered = true;
-                box->accept();
-            }
-        });
+        test::acceptNextMessageBox(answered);
         QVERIFY(!dialog.exportTo(file));
         QVERIFY(answered);
         QVERIFY(in.open(QIODevice::ReadOnly));

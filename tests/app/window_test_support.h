@@ -10,16 +10,30 @@
 #include "translations.h"
 #include "workspace.h"
 
+#include <QApplication>
 #include <QCoreApplication>
 #include <QLocale>
+#include <QMessageBox>
 #include <QSignalSpy>
 #include <QString>
 #include <QTest>
+#include <QTimer>
 #include <QUndoStack>
 
 #include <string>
 
 namespace devsurf::test {
+
+// Accepts the message box the next event-loop turn shows (a refusal, a warning) and sets
+// `answered`, so a test can check that one was shown without a user to close it.
+inline void acceptNextMessageBox(bool& answered) {
+    QTimer::singleShot(0, [&answered] {
+        if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+            answered = true;
+            box->accept();
+        }
+    });
+}
 
 // The interface language the tests run in: US English, or the one DEVSURF_TEST_LANGUAGE names
 // ("de", "ja").
