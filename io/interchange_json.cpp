@@ -60,6 +60,42 @@ QJsonObject creaseSideObject(const model::CreaseSide& side) {
     };
 }
 
+// The sheet a kept development is confined to: its shape, sizes, placement and, for an
+// outline, its loops as the development's plane sees them.
+QJsonObject sheetJson(const model::SheetDomain& d) {
+    static const char* const names[] = {"free", "rectangle", "disk", "annulus", "outline"};
+    QJsonObject sheet{{"shape", names[static_cast<int>(d.shape)]}};
+    switch (d.shape) {
+    case model::SheetShape::Free:
+        return sheet;
+    case model::SheetShape::Rectangle:
+        sheet["width"] = d.width;
+        sheet["height"] = d.height;
+        break;
+    case model::SheetShape::Disk:
+        sheet["radius"] = d.radius;
+        break;
+    case model::SheetShape::Annulus:
+        sheet["radius"] = d.radius;
+        sheet["innerRadius"] = d.innerRadius;
+        break;
+    case model::SheetShape::Outline:
+        break;
+    }
+    sheet["centre"] = point(d.centre);
+    sheet["angle"] = d.angle;
+    QJsonArray loops;
+    for (const model::DomainLoop& loop : model::domainLoops(d)) {
+        if (!loop.circle) {
+            loops.append(array(loop.polygon, [](const model::Vec2& p) { return point(p); }));
+        }
+    }
+    if (!loops.isEmpty()) {
+        sheet["loops"] = loops;
+    }
+    return sheet;
+}
+
 QJsonObject surfaceObject(const model::CompositeSurface& surface, int samples) {
     using namespace model;
     const auto derived = DerivedGeometry::of(surface, samples);
@@ -144,6 +180,7 @@ QJsonObject surfaceObject(const model::CompositeSurface& surface, int samples) {
                                       {"samplesPerInterval", kDevelopmentSamplesPerInterval},
                                       {"vertices", array(surface.development(),
                                                          [](const Vec2& p) { return point(p); })},
+                                      {"sheet", sheetJson(surface.sheetDomain())},
                                   })},
     };
 }

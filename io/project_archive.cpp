@@ -18,8 +18,8 @@
 namespace devsurf::io::versions {
 inline constexpr unsigned kProject = 1;
 // 2: pinned vertices (project file format 2). 3: the surface id (project file format 3).
-// 4: the kept development (project file format 4).
-inline constexpr unsigned kSurface = 4;
+// 4: the kept development (project file format 4). 5: the sheet's shape (format 5).
+inline constexpr unsigned kSurface = 5;
 // 2: the smooth flag of rulings (project file format 3, with the surface ids).
 inline constexpr unsigned kEdge = 2;
 } // namespace devsurf::io::versions
@@ -208,6 +208,18 @@ template <class Archive> void save(Archive& ar, const CompositeSurface& s, unsig
     for (const devsurf::model::Vec2& p : s.development()) {
         ar << p.x << p.y;
     }
+    const devsurf::model::SheetDomain& d = s.sheetDomain();
+    const auto shape = static_cast<std::uint8_t>(d.shape);
+    const auto loops = static_cast<std::uint32_t>(d.outline.size());
+    ar << shape << d.width << d.height << d.radius << d.innerRadius << d.centre.x << d.centre.y
+       << d.angle << loops;
+    for (const std::vector<devsurf::model::Vec2>& loop : d.outline) {
+        const auto corners = static_cast<std::uint32_t>(loop.size());
+        ar << corners;
+        for (const devsurf::model::Vec2& p : loop) {
+            ar << p.x << p.y;
+        }
+    }
 }
 
 template <class Archive> void load(Archive& ar, CompositeSurface& s, unsigned version) {
@@ -282,6 +294,29 @@ template <class Archive> void load(Archive& ar, CompositeSurface& s, unsigned ve
         }
         s.setKeepsDevelopment(keeps == 1);
         s.setDevelopment(std::move(development)); // its size is checked by validate()
+    }
+    if (version >= 5) {
+        devsurf::model::SheetDomain d;
+        std::uint8_t shape = 0;
+        std::uint32_t loops = 0;
+        ar >> shape >> d.width >> d.height >> d.radius >> d.innerRadius >> d.centre.x >>
+            d.centre.y >> d.angle >> loops;
+        if (shape > static_cast<std::uint8_t>(devsurf::model::SheetShape::Outline)) {
+            throw FileError("it has an unknown sheet shape " + std::to_string(shape));
+        }
+        d.shape = static_cast<devsurf::model::SheetShape>(shape);
+        checkedCount(loops, 100'000, "outline loops", 4);
+        d.outline.resize(loops);
+        for (std::vector<devsurf::model::Vec2>& loop : d.outline) {
+            std::uint32_t corners = 0;
+            ar >> corners;
+            checkedCount(corners, 10'000'000, "outline points", 2);
+            loop.resize(corners);
+            for (devsurf::model::Vec2& p : loop) {
+                ar >> p.x >> p.y;
+            }
+        }
+        s.setSheetDomain(std::move(d)); // its sizes are checked by validate()
     }
 }
 

@@ -75,8 +75,9 @@ CompositeSurface::CompositeSurface(const CompositeSurface& other)
     : m_name(other.m_name), m_id(other.m_id), m_vertices(other.m_vertices), m_edges(other.m_edges),
       m_faces(other.m_faces), m_pinned(other.m_pinned),
       m_keepsDevelopment(other.m_keepsDevelopment), m_development(other.m_development),
-      m_edgeByVertices(other.m_edgeByVertices), m_nextVertexId(other.m_nextVertexId),
-      m_nextEdgeId(other.m_nextEdgeId), m_nextFaceId(other.m_nextFaceId),
+      m_sheetDomain(other.m_sheetDomain), m_edgeByVertices(other.m_edgeByVertices),
+      m_nextVertexId(other.m_nextVertexId), m_nextEdgeId(other.m_nextEdgeId),
+      m_nextFaceId(other.m_nextFaceId),
       m_connectivity(std::make_unique<Connectivity>(*other.m_connectivity)) {}
 
 CompositeSurface& CompositeSurface::operator=(const CompositeSurface& other) {
@@ -326,6 +327,7 @@ void CompositeSurface::setKeepsDevelopment(bool keep) {
     m_keepsDevelopment = keep;
     if (!keep) {
         m_development.clear();
+        m_sheetDomain = SheetDomain(); // no sheet: nothing to confine
     }
 }
 
@@ -504,7 +506,7 @@ bool CompositeSurface::operator==(const CompositeSurface& other) const {
            m_faces == other.m_faces && m_nextVertexId == other.m_nextVertexId &&
            m_nextEdgeId == other.m_nextEdgeId && m_nextFaceId == other.m_nextFaceId &&
            m_pinned == other.m_pinned && m_keepsDevelopment == other.m_keepsDevelopment &&
-           m_development == other.m_development &&
+           m_development == other.m_development && m_sheetDomain == other.m_sheetDomain &&
            std::equal(m_edges.begin(), m_edges.end(), other.m_edges.begin(), other.m_edges.end(),
                       [&](const auto& a, const auto& b) {
                           return a.first == b.first && sameEdges(a.second, b.second);

@@ -2,6 +2,7 @@
 
 #include "ids.h"
 #include "problem.h"
+#include "sheet_domain.h"
 #include "spline_space.h"
 #include "vec3.h"
 
@@ -112,6 +113,11 @@ public:
     void setKeepsDevelopment(bool keep);
     const std::vector<Vec2>& development() const { return m_development; }
     void setDevelopment(std::vector<Vec2> development) { m_development = std::move(development); }
+    // The sheet the kept development is confined to (free: the development is held as it is;
+    // otherwise it may change inside the sheet, its boundary on the sheet's). A setting like
+    // keepsDevelopment(): edits keep it; setKeepsDevelopment(false) clears it.
+    const SheetDomain& sheetDomain() const { return m_sheetDomain; }
+    void setSheetDomain(SheetDomain domain) { m_sheetDomain = std::move(domain); }
 
     // Construction with explicit ids (file loading). Ids must be new; next ids advance past them.
     void addVertexWithId(VertexId id, const Vec3& position);
@@ -172,6 +178,7 @@ private:
     std::set<VertexId> m_pinned;
     bool m_keepsDevelopment = false;
     std::vector<Vec2> m_development;
+    SheetDomain m_sheetDomain;
     std::map<std::pair<VertexId, VertexId>, EdgeId> m_edgeByVertices; // key: (min, max)
     VertexId m_nextVertexId = 0;
     EdgeId m_nextEdgeId = 0;

@@ -128,6 +128,9 @@ std::vector<Problem> CompositeSurface::validate() const {
             problems.push_back(problemOf(ProblemCode::DevelopmentNotFinite));
         }
     }
+    if (std::optional<Problem> problem = domainProblem(m_sheetDomain)) {
+        problems.push_back(std::move(*problem));
+    }
     // Positions (finite, not absurdly large) and degenerate curves, rulings and faces.
     for (Problem& problem : degenerateGeometryProblems(*this)) {
         problems.push_back(std::move(problem));

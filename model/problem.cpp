@@ -37,6 +37,7 @@ const char* codeName(ProblemCode code) {
         DEVSURF_CODE(SplineSpacesDiffer)
         DEVSURF_CODE(DevelopmentSize)
         DEVSURF_CODE(DevelopmentNotFinite)
+        DEVSURF_CODE(SheetDomainInvalid)
         DEVSURF_CODE(PositionNotFinite)
         DEVSURF_CODE(PositionTooFar)
         DEVSURF_CODE(ControlPointTooFar)

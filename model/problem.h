@@ -42,6 +42,8 @@ enum class ProblemCode {
     SplineSpacesDiffer,    // edge and otherEdge connected, spaces space and otherSpace
     DevelopmentSize,       // the kept development has `count` points, the sampled mesh `expected`
     DevelopmentNotFinite,  // a point of the kept development is not finite
+    SheetDomainInvalid,    // the sheet's shape: count 1 a size not finite or not positive, 2 an
+                           // annulus's inner radius not below its outer, 3 no outer loop
     // Degenerate geometry of a structurally sound design (also checked on every solver step).
     PositionNotFinite,  // vertex (faces around it)
     PositionTooFar,     // vertex (faces) lies `value` mm from the origin, beyond `limit`

@@ -32,6 +32,7 @@ struct SurfaceData {
     std::map<FaceId, std::vector<VertexId>> faces;
     std::set<VertexId> pinned;     // vertices keep their ids, so pins carry over
     bool keepsDevelopment = false; // the setting carries over; the new samples are unfolded anew
+    SheetDomain sheetDomain;       // carries over likewise
     std::map<std::pair<VertexId, VertexId>, EdgeId> edgeByVertices;
     VertexId nextVertex = 0;
     EdgeId nextEdge = 0;
@@ -40,7 +41,8 @@ struct SurfaceData {
     explicit SurfaceData(const CompositeSurface& s)
         : name(s.name()), surfaceId(s.id()), vertices(s.vertices()), edges(s.edges()),
           faces(s.faces()), pinned(s.pinnedVertices()), keepsDevelopment(s.keepsDevelopment()),
-          nextVertex(s.nextVertexId()), nextEdge(s.nextEdgeId()), nextFace(s.nextFaceId()) {
+          sheetDomain(s.sheetDomain()), nextVertex(s.nextVertexId()), nextEdge(s.nextEdgeId()),
+          nextFace(s.nextFaceId()) {
         for (const auto& [id, record] : edges) {
             edgeByVertices[key(record.from, record.to)] = id;
         }
@@ -103,6 +105,7 @@ struct SurfaceData {
             s.setPinned(vertex, true);
         }
         s.setKeepsDevelopment(keepsDevelopment);
+        s.setSheetDomain(sheetDomain);
         // A face side without a prepared edge would have been created silently; that, or any
         // other problem, is a bug in the edit, reported rather than handed to the document.
         if (s.edges().size() != edges.size()) {

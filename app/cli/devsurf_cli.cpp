@@ -83,6 +83,24 @@ std::string faceSummary(const model::SurfaceStatistics& stats) {
     return text + ")";
 }
 
+// ", on a 300 x 300 mm rectangle" and the like: the sheet a kept development is confined to.
+std::string sheetShapeText(const model::SheetDomain& d) {
+    auto mm = [](double v) { return QString::number(v, 'g', 6).toStdString(); };
+    switch (d.shape) {
+    case model::SheetShape::Free:
+        return "";
+    case model::SheetShape::Rectangle:
+        return ", on a " + mm(d.width) + " x " + mm(d.height) + " mm rectangle";
+    case model::SheetShape::Disk:
+        return ", on a disk of radius " + mm(d.radius) + " mm";
+    case model::SheetShape::Annulus:
+        return ", on an annulus of radii " + mm(d.innerRadius) + " and " + mm(d.radius) + " mm";
+    case model::SheetShape::Outline:
+        return ", on an outline of " + std::to_string(d.outline.size()) + " loop(s)";
+    }
+    return "";
+}
+
 int commandInfo(const SubcommandArguments& args) {
     EntityListing listing;
     listing.vertices = args.isSet("vertices");
@@ -123,7 +141,7 @@ int commandInfo(const SubcommandArguments& args) {
                           ? std::string("held, unfolded at the next solve")
                           : "held (" + std::to_string(surface.development().size()) +
                                 " development points)")
-                  << "\n";
+                  << sheetShapeText(surface.sheetDomain()) << "\n";
     }
     if (listing.vertices || listing.edges) {
         app::printEntities(project, listing, std::cout);

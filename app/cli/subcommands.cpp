@@ -47,14 +47,22 @@ const std::vector<SubcommandSpec>& subcommands() {
           kSurface,
           kOutputProject}},
         {"sheet",
-         "sheet FILE (--free | --off) [--surface K] -o OUT.devsurf",
-         "Hold the sheet: the surface keeps its development as it unfolds\n"
-         "now, and every solve and drag keeps it isometric to that sheet (a\n"
-         "dragged vertex lags where the sheet cannot follow, instead of the\n"
-         "sheet stretching); --off lets the sheet stretch again. Only a\n"
-         "surface that unfolds into one flat sheet can hold it. Confining the\n"
-         "sheet to a rectangle, disk, annulus or outline is not available yet.",
+         "sheet FILE (--free | --rectangle W,H | --disk R | --annulus R1,R2 | --off)\n"
+         "      [--surface K] -o OUT.devsurf",
+         "Hold the sheet: the surface keeps its development, and every solve\n"
+         "and drag keeps it isometric to that sheet (a dragged vertex lags\n"
+         "where the sheet cannot follow, instead of the sheet stretching).\n"
+         "--free holds the development as it unfolds now. --rectangle, --disk\n"
+         "and --annulus confine it to that sheet, placed where it fits the\n"
+         "development best: the development may then change inside the\n"
+         "sheet, its boundary on the sheet's, its corners at the sheet's; the\n"
+         "next solve moves a development that does not fit yet onto the\n"
+         "sheet. --off lets the sheet stretch again. Only a surface that\n"
+         "unfolds into one flat sheet can hold it. Sizes are in mm.",
          {{"free", "", "Hold the sheet as it unfolds, its boundary free."},
+          {"rectangle", "W,H", "Confine it to a W x H rectangle."},
+          {"disk", "R", "Confine it to a disk of radius R."},
+          {"annulus", "R1,R2", "Confine it to an annulus between radii R1 and R2."},
           {"off", "", "No longer hold the sheet."},
           kSurface,
           kOutputProject}},

@@ -9,6 +9,7 @@
 #include "model/creases.h"
 #include "model/development.h"
 #include "model/sampled_mesh.h"
+#include "model/sheet_domain.h"
 #include "model/strip.h"
 
 #include <QJsonArray>
@@ -16,9 +17,11 @@
 #include <QJsonObject>
 #include <QString>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -186,13 +189,62 @@ int runPinCommand(const SubcommandArguments& args) {
     return 0;
 }
 
+namespace {
+
+std::string millimetres(double value) {
+    return QString::number(value, 'g', 4).toStdString() + " mm";
+}
+std::string squareMillimetres(double value) {
+    return QString::number(value, 'f', 0).toStdString() + " mm\u00b2";
+}
+
+// The sheet asked for on the command line: free (nullopt for --off) or a shape's sizes.
+std::optional<model::SheetDomain> requestedSheet(const SubcommandArguments& args) {
+    const char* const options[] = {"free", "rectangle", "disk", "annulus", "off"};
+    int given = 0;
+    for (const char* option : options) {
+        given += args.isSet(option) ? 1 : 0;
+    }
+    if (given != 1) {
+        throw UsageError{
+            "give one of --free, --rectangle W,H, --disk R, --annulus R1,R2 and --off"};
+    }
+    model::SheetDomain domain;
+    constexpr double kLargest = 1e6; // mm: a kilometre
+    if (args.isSet("off")) {
+        return std::nullopt;
+    }
+    if (args.isSet("rectangle")) {
+        const std::vector<double> size =
+            parseReals(*args.value("rectangle"), "--rectangle", 2, "300,200");
+        domain.shape = model::SheetShape::Rectangle;
+        domain.width =
+            parseReal(std::to_string(size[0]), "--rectangle", 1e-3, kLargest, "lengths in mm");
+        domain.height =
+            parseReal(std::to_string(size[1]), "--rectangle", 1e-3, kLargest, "lengths in mm");
+    } else if (args.isSet("disk")) {
+        domain.shape = model::SheetShape::Disk;
+        domain.radius = parseReal(*args.value("disk"), "--disk", 1e-3, kLargest, "a radius in mm");
+    } else if (args.isSet("annulus")) {
+        const std::vector<double> radii =
+            parseReals(*args.value("annulus"), "--annulus", 2, "100,250");
+        domain.shape = model::SheetShape::Annulus;
+        domain.innerRadius = std::min(radii[0], radii[1]);
+        domain.radius = std::max(radii[0], radii[1]);
+        if (!(domain.innerRadius > 0.0) || !(domain.radius > domain.innerRadius) ||
+            domain.radius > kLargest) {
+            throw UsageError{"--annulus needs two different radii in mm, such as 100,250"};
+        }
+    }
+    return domain;
+}
+
+} // namespace
+
 int runSheetCommand(const SubcommandArguments& args) {
     const std::string input = args.onePositional("one project file");
     const std::string output = args.required("o", "the output file is missing (use -o FILE)");
-    const bool free = args.isSet("free");
-    if (free == args.isSet("off")) {
-        throw UsageError{"give one of --free (hold the sheet as it unfolds) and --off"};
-    }
+    const std::optional<model::SheetDomain> requested = requestedSheet(args);
     const int surfaceNumber =
         args.isSet("surface")
             ? static_cast<int>(parseWhole(*args.value("surface"), "--surface", 1, 1000000))
@@ -201,20 +253,43 @@ int runSheetCommand(const SubcommandArguments& args) {
     model::Project project = io::loadProjectFile(QString::fromStdString(input));
     const std::size_t index = surfaceIndex(surfaceNumber, project, "hold the sheet of");
     model::CompositeSurface& surface = project.surfaces[index];
-    if (free) {
+    if (!requested) {
+        surface.setKeepsDevelopment(false);
+        surface.setSheetDomain({});
+        writeProject(project, output);
+        std::cout << "Wrote " << output << " ('" << surface.name()
+                  << "' no longer keeps a development)\n";
+        return 0;
+    }
+    // A development already kept is confined as it is; otherwise it is unfolded now.
+    if (!surface.keepsDevelopment() || surface.development().empty()) {
         if (const auto problem = model::keepDevelopment(surface)) {
             throw InputError("cannot hold the sheet of '" + surface.name() +
                              "': " + withoutFinalPeriod(ProblemText::of(*problem).toStdString()));
         }
-    } else {
-        surface.setKeepsDevelopment(false);
     }
+    const model::SampledMesh mesh =
+        model::sampleSurface(surface, model::kDevelopmentSamplesPerInterval);
+    const model::SheetDomain domain = model::placeDomain(*requested, mesh, surface.development());
+    surface.setSheetDomain(domain);
     writeProject(project, output);
-    std::cout << "Wrote " << output << " ('" << surface.name() << "' "
-              << (free ? "keeps its development: " + std::to_string(surface.development().size()) +
-                             " points, no boundary confined"
-                       : std::string("no longer keeps a development"))
-              << ")\n";
+    std::cout << "Wrote " << output << " ('" << surface.name()
+              << "' keeps its development: " << surface.development().size() << " points, ";
+    if (domain.isFree()) {
+        std::cout << "no boundary confined)\n";
+        return 0;
+    }
+    const double gap = model::largestDomainGap(domain, mesh, surface.development());
+    const double area = model::developedArea(mesh, surface.development());
+    std::cout << "confined to the sheet; its boundary is " << millimetres(gap)
+              << " from the sheet's)\n";
+    if (area > model::domainArea(domain) * (1.0 + 1e-9)) {
+        std::cout << "Note: the development (" << squareMillimetres(area)
+                  << ") is larger than the sheet (" << squareMillimetres(model::domainArea(domain))
+                  << "): no solve can fold the design from it without cutting.\n";
+    } else if (gap > 1e-6) {
+        std::cout << "The next solve moves the development onto the sheet.\n";
+    }
     return 0;
 }
 

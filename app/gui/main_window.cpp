@@ -249,6 +249,9 @@ void MainWindow::createMenus() {
     QAction* holdSheet = addAction(tools, QStringLiteral("actionHoldSheet"), tr("Hold the &Sheet"),
                                    QKeySequence(tr("Ctrl+Shift+H")));
     new HoldSheetReaction(holdSheet, m_workspace);
+    QAction* sheetShape =
+        addAction(tools, QStringLiteral("actionSheetShape"), tr("Sheet S&hape…"), QKeySequence());
+    new SheetShapeReaction(sheetShape, m_workspace);
     tools->addSeparator();
     const QList<QAction*> solverActions = createSolverActions(tools, selectNone);
     // A right click in either view offers what applies to the entity under the cursor.

@@ -150,6 +150,14 @@ QString ProblemText::of(const model::Problem& p) {
             .arg(p.expected);
     case ProblemCode::DevelopmentNotFinite:
         return tr("A point of the kept development is not a finite number.");
+    case ProblemCode::SheetDomainInvalid:
+        if (p.count == 2) {
+            return tr("The sheet's inner radius must be smaller than its outer radius.");
+        }
+        if (p.count == 3) {
+            return tr("The sheet's outline has no closed loop enclosing an area.");
+        }
+        return tr("The sheet's sizes must be finite and greater than zero.");
     case ProblemCode::PositionNotFinite:
         return tr("Vertex %1 (of %2) has a position that is not a finite number.")
             .arg(p.vertex)

@@ -24,6 +24,10 @@ bool pointInPolygon(const Vec2& p, const std::vector<Vec2>& polygon);
 // Distance from p to the segment [a,b].
 double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b);
 
+// The closed boundary loops of a polygon mesh's faces (vertex indices), each running with the
+// faces' orientation: the edges used by one face only.
+std::vector<std::vector<int>> boundaryLoops(const std::vector<std::vector<int>>& faces);
+
 // Convex hull, counter-clockwise, without collinear points.
 std::vector<Vec2> convexHull(std::vector<Vec2> points);
 

@@ -141,51 +141,6 @@ polylineCopies(const std::vector<int>& line,
     return result;
 }
 
-// The closed boundary loops of a piece's faces (local vertex indices), each running with the
-// faces' orientation.
-std::vector<std::vector<int>> boundaryLoops(const std::vector<std::vector<int>>& faces) {
-    std::map<EdgeKey, int> uses;
-    for (const auto& face : faces) {
-        for (std::size_t k = 0; k < face.size(); ++k) {
-            const int a = face[k];
-            const int b = face[(k + 1) % face.size()];
-            ++uses[{std::min(a, b), std::max(a, b)}];
-        }
-    }
-    std::multimap<int, int> next;
-    for (const auto& face : faces) {
-        for (std::size_t k = 0; k < face.size(); ++k) {
-            const int a = face[k];
-            const int b = face[(k + 1) % face.size()];
-            if (uses[{std::min(a, b), std::max(a, b)}] == 1) {
-                next.emplace(a, b);
-            }
-        }
-    }
-    std::vector<std::vector<int>> loops;
-    while (!next.empty()) {
-        const int start = next.begin()->first;
-        std::vector<int> loop{start};
-        int current = start;
-        while (true) {
-            const auto it = next.find(current);
-            if (it == next.end()) {
-                break;
-            }
-            current = it->second;
-            next.erase(it);
-            if (current == start) {
-                break;
-            }
-            loop.push_back(current);
-        }
-        if (loop.size() >= 3) {
-            loops.push_back(std::move(loop));
-        }
-    }
-    return loops;
-}
-
 } // namespace
 
 std::string pieceName(int index) {

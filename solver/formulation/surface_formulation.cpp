@@ -13,6 +13,7 @@
 #include "solver/core/unit_norm_term.h"
 #include "solver/formulation/crease_conditions.h"
 #include "solver/formulation/curve_guards.h"
+#include "solver/formulation/domain_terms.h"
 #include "solver/formulation/normal_spline_start.h"
 #include "solver/formulation/point_combinations.h"
 #include "solver/formulation/smooth_rulings.h"
@@ -431,6 +432,10 @@ struct SurfaceFormulation::Builder {
                  options.developmentFairnessWeight},
                 vertexOffsets(), edgeOffsets, f.m_scale, f.m_problem, f.m_initialState);
             f.m_developmentFairness = f.m_development.fairness;
+            if (!options.fixedDevelopment) {
+                addDomain(options.developmentDomain, f.m_development, f.m_problem,
+                          f.m_initialState);
+            }
         }
     }
 

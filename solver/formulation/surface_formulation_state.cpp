@@ -203,7 +203,17 @@ bool SurfaceFormulation::writeBack(const std::vector<double>& x, model::Composit
         }
         surface.setControlPoints(edge, std::move(controls));
     }
+    // A development confined to a sheet changes with the surface; a fixed one stays as it is.
+    if (m_development.offset >= 0 && !m_options.fixedDevelopment && surface.keepsDevelopment()) {
+        surface.setDevelopment(m_development.read(x).vertices);
+    }
     return true;
+}
+
+void SurfaceFormulation::rebaseDevelopmentFairness(const std::vector<double>& x) {
+    if (m_developmentFairness && x.size() == m_initialState.size()) {
+        m_developmentFairness->setReference(x.data());
+    }
 }
 
 void SurfaceFormulation::rebaseIsometry(const std::vector<double>& x) {

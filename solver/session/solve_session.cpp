@@ -180,11 +180,13 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
     }
     if (surface.keepsDevelopment()) {
         // The sheet is held (§5): the surface stays isometric to its development, which no
-        // iteration changes, and a pulled vertex is a wish the sheet may refuse (it lags).
+        // iteration changes, or which changes only inside the sheet's shape with its boundary
+        // on the shape's; a pulled vertex is a wish the sheet may refuse (it lags).
         FormulationOptions& f = m_options.formulation;
         f.developmentSamplesPerInterval = model::kDevelopmentSamplesPerInterval;
         f.developmentStart = surface.development();
-        f.fixedDevelopment = true;
+        f.fixedDevelopment = surface.sheetDomain().isFree();
+        f.developmentDomain = surface.sheetDomain();
         if (m_dragging && f.pulledHandleWeight == 0.0) {
             f.pulledHandleWeight = kSheetPullWeight;
         }
@@ -245,6 +247,7 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         options.scheduleOffset = m_iterationsDone;
         // The net's lengths before this step (a no-op without the isometry energy).
         m_formulation->rebaseIsometry(m_x);
+        m_formulation->rebaseDevelopmentFairness(m_x);
         if (m_settling) {
             m_formulation->scaleIsometryWeight(kKeepLengthsFade);
             m_formulation->fadeDragEnergies(kCreaseDragFade);

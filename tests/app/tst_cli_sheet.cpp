@@ -2,6 +2,7 @@
 
 #include "cli_run.h"
 #include "io/project_file.h"
+#include "model/pattern/pattern_geometry.h"
 #include "model/sampled_mesh.h"
 #include "test_registry.h"
 
@@ -9,6 +10,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace devsurf;
@@ -52,6 +54,57 @@ private slots:
         QCOMPARE(cli({"sheet", cylinder, "--free", "-o", refused}).exitCode, 2);
         QVERIFY(!QFile::exists(refused));
         QCOMPARE(cli({"sheet", cylinder, "-o", refused}).exitCode, 1);
+    }
+
+    void sheetShapes() {
+        // The annulus example on an annulus of radii 100 and 250 mm: placed on its development,
+        // written, listed by info; a Solve moves the development's rims onto the circles.
+        const QString file = path("ring.devsurf");
+        QCOMPARE(cli({"example", "annulus", "--size", "3", "-o", file}).exitCode, 0);
+        const QString ring = path("ring-sheet.devsurf");
+        test::CliRun run = cli({"sheet", file, "--annulus", "250,100", "-o", ring});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains(QStringLiteral("next solve")), qPrintable(run.out));
+        const model::CompositeSurface held = io::loadProjectFile(ring).surfaces[0];
+        QCOMPARE(held.sheetDomain().shape, model::SheetShape::Annulus);
+        QCOMPARE(held.sheetDomain().innerRadius, 100.0);
+        QCOMPARE(held.sheetDomain().radius, 250.0);
+        run = cli({"info", ring});
+        QVERIFY2(run.out.contains(QStringLiteral("annulus")), qPrintable(run.out));
+        const QString solved = path("ring-solved.devsurf");
+        QCOMPARE(cli({"solve", ring, "-o", solved}).exitCode, 0);
+        const model::CompositeSurface after = io::loadProjectFile(solved).surfaces[0];
+        const model::SampledMesh mesh =
+            model::sampleSurface(after, model::kDevelopmentSamplesPerInterval);
+        double worst = 0.0; // of every development vertex on a rim, from its circle
+        for (const auto& loop : model::pattern::boundaryLoops(mesh.faces)) {
+            for (int v : loop) {
+                const double r =
+                    (after.development()[static_cast<std::size_t>(v)] - held.sheetDomain().centre)
+                        .norm();
+                worst = std::max(worst, std::min(std::abs(r - 100.0), std::abs(r - 250.0)));
+            }
+        }
+        QVERIFY2(worst < 1e-6, qPrintable(QString::number(worst)));
+
+        // A rectangle and a disk are written; sizes that are no sheet are refused, nothing
+        // written.
+        const QString square = path("square.devsurf");
+        QCOMPARE(cli({"example", "sheet", "-o", square}).exitCode, 0);
+        const QString onSquare = path("on-square.devsurf");
+        run = cli({"sheet", square, "--rectangle", "300,300", "-o", onSquare});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(!run.out.contains(QStringLiteral("next solve")), qPrintable(run.out));
+        QCOMPARE(io::loadProjectFile(onSquare).surfaces[0].sheetDomain().width, 300.0);
+        const QString small = path("small.devsurf");
+        run = cli({"sheet", square, "--disk", "100", "-o", small});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains(QStringLiteral("larger than the sheet")), qPrintable(run.out));
+        const QString refused = path("refused.devsurf");
+        QCOMPARE(cli({"sheet", square, "--annulus", "100,100", "-o", refused}).exitCode, 1);
+        QCOMPARE(cli({"sheet", square, "--disk", "-5", "-o", refused}).exitCode, 1);
+        QCOMPARE(cli({"sheet", square, "--disk", "5", "--free", "-o", refused}).exitCode, 1);
+        QVERIFY(!QFile::exists(refused));
     }
 };
 

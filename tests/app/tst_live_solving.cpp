@@ -9,6 +9,7 @@
 #include "model/examples.h"
 #include "model/sampled_mesh.h"
 #include "panels/solver_panel.h"
+#include "sheet_shape_dialog.h"
 #include "solve_controller.h"
 #include "solver/quality/crease_quality.h"
 #include "solver/quality/quality_measures.h"
@@ -22,6 +23,8 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QMenu>
 #include <QSettings>
 #include <QSignalSpy>
@@ -120,6 +123,48 @@ private slots:
         QVERIFY(doc->surface(0).keepsDevelopment() && hold->isChecked());
         hold->trigger(); // and back: the sheet may stretch again
         QVERIFY(!doc->surface(0).keepsDevelopment() && doc->surface(0).development().empty());
+    }
+
+    void sheetShapeIsChosenInItsDialog() {
+        // Tools ▸ Sheet Shape…: the dialog comes up with the rectangle that holds the flat
+        // square; choosing it holds the sheet on that rectangle in one undo step.
+        app::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.workspace()->newFromExample(QStringLiteral("sheet"), 0);
+        document::Document* doc = window.workspace()->document();
+        QAction* shape = window.action(QStringLiteral("actionSheetShape"));
+        QVERIFY(shape != nullptr && shape->isEnabled());
+        const int steps = doc->undoStack()->count();
+        double offeredWidth = 0.0;
+        QTimer poll; // the dialog runs its own event loop: a timer fills it in there
+        connect(&poll, &QTimer::timeout, &poll, [&] {
+            auto* dialog = qobject_cast<app::SheetShapeDialog*>(QApplication::activeModalWidget());
+            if (!dialog) {
+                return;
+            }
+            dialog->shapeBox()->setCurrentIndex(
+                dialog->shapeBox()->findData(static_cast<int>(model::SheetShape::Rectangle)));
+            offeredWidth = dialog->widthBox()->value();
+            dialog->accept();
+        });
+        poll.start(10);
+        shape->trigger();
+        poll.stop();
+        QVERIFY2(std::abs(offeredWidth - 300.0) < 0.01, qPrintable(QString::number(offeredWidth)));
+        QCOMPARE(doc->undoStack()->count(), steps + 1);
+        const model::CompositeSurface& held = doc->surface(0);
+        QVERIFY(held.keepsDevelopment());
+        QCOMPARE(held.sheetDomain().shape, model::SheetShape::Rectangle);
+        const model::SampledMesh mesh =
+            model::sampleSurface(held, model::kDevelopmentSamplesPerInterval);
+        QVERIFY(model::largestDomainGap(held.sheetDomain(), mesh, held.development()) < 1e-6);
+        QVERIFY(window.action(QStringLiteral("actionHoldSheet"))->isChecked());
+        doc->undoStack()->undo();
+        QVERIFY(!doc->surface(0).keepsDevelopment());
+        QVERIFY(doc->surface(0).sheetDomain().isFree());
+        doc->undoStack()->redo();
+        QCOMPARE(doc->surface(0).sheetDomain().shape, model::SheetShape::Rectangle);
     }
 
     void aCylinderIsNoFlatSheetToHold() {

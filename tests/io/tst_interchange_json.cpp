@@ -281,6 +281,26 @@ private slots:
             QCOMPARE(p[0].toDouble(), sheet[static_cast<std::size_t>(i)].x);
             QCOMPARE(p[1].toDouble(), sheet[static_cast<std::size_t>(i)].y);
         }
+        QCOMPARE(kept["sheet"].toObject()["shape"].toString(), QStringLiteral("free"));
+        // A rectangle's sizes, placement and corners (counter-clockwise about its centre).
+        model::SheetDomain square;
+        square.shape = model::SheetShape::Rectangle;
+        square.width = 300.0;
+        square.height = 200.0;
+        square.centre = {150.0, 100.0};
+        project.surfaces[0].setSheetDomain(square);
+        const QJsonObject shape = parse(io::interchangeJson(project, 4))["surfaces"]
+                                      .toArray()[0]
+                                      .toObject()["keptDevelopment"]
+                                      .toObject()["sheet"]
+                                      .toObject();
+        QCOMPARE(shape["shape"].toString(), QStringLiteral("rectangle"));
+        QCOMPARE(shape["width"].toDouble(), 300.0);
+        QCOMPARE(shape["height"].toDouble(), 200.0);
+        const QJsonArray corners = shape["loops"].toArray()[0].toArray();
+        QCOMPARE(corners.size(), 4);
+        QCOMPARE(corners[0].toArray()[0].toDouble(), 0.0);
+        QCOMPARE(corners[2].toArray()[1].toDouble(), 200.0);
     }
 };
 

@@ -192,6 +192,29 @@ private slots:
         QVERIFY(project == expected);
     }
 
+    void versionFourSampleStaysLoadable() {
+        // Committed once with format version 4 (the sheet example with vertex 0 pinned, holding
+        // its sheet as it unfolded); it loads with a free sheet shape.
+        const QString path = QStringLiteral(DEVSURF_TEST_DATA_DIR "/sample-v4.devsurf");
+        const std::string bytes = readAll(path);
+        QCOMPARE(bytes.substr(8, 4), std::string("\x04\x00\x00\x00", 4));
+        const model::Project project = io::loadProjectFile(path);
+        const model::CompositeSurface& loaded = project.surfaces[0];
+        QVERIFY(loaded.keepsDevelopment());
+        QVERIFY(loaded.sheetDomain().isFree());
+        model::Project expected = model::makeExample("sheet", 0);
+        model::CompositeSurface& s = expected.surfaces[0];
+        s.setPinned(0, true);
+        s.setKeepsDevelopment(true);
+        s.setDevelopment(loaded.development());
+        QVERIFY(project == expected);
+        const model::SampledMesh mesh =
+            model::sampleSurface(loaded, model::kDevelopmentSamplesPerInterval);
+        model::Development development;
+        development.vertices = loaded.development();
+        QVERIFY(model::edgeLengthError(mesh, development) < 1e-12);
+    }
+
     void surfaceIdsRoundTripAndOldFilesGetThem() {
         model::Project project;
         project.addSurface(model::makeExample("sheet", 2).surfaces[0]);
@@ -259,6 +282,42 @@ private slots:
         unpinned.surfaces[0].setPinned(*surface.pinnedVertices().begin(), false);
         QVERIFY(!(unpinned == project));
         QVERIFY(io::encodeProject(unpinned) != io::encodeProject(project));
+    }
+
+    void sheetShapesRoundTrip() {
+        // Every shape, with sizes and a placement that are not round numbers, survives bit for
+        // bit; an unusable size is refused with the problem's code.
+        model::Project project = model::makeExample("fig8", 0);
+        model::CompositeSurface& surface = project.surfaces[0];
+        QVERIFY(!model::keepDevelopment(surface).has_value());
+        model::SheetDomain d;
+        d.centre = {1.0 / 3.0, -2.0 / 7.0};
+        d.angle = 0.1;
+        for (model::SheetShape shape : {model::SheetShape::Rectangle, model::SheetShape::Disk,
+                                        model::SheetShape::Annulus, model::SheetShape::Outline}) {
+            d.shape = shape;
+            d.width = 300.0 / 7.0;
+            d.height = 200.0 / 3.0;
+            d.radius = 250.0 / 3.0;
+            d.innerRadius = 100.0 / 3.0;
+            d.outline = {{{0, 0}, {310.0 / 3.0, 0}, {100, 100}}, {{10, 10}, {20, 10}, {20, 20}}};
+            surface.setSheetDomain(d);
+            const std::string bytes = io::encodeProject(project);
+            const model::Project loaded = io::decodeProject(bytes);
+            QVERIFY(loaded.surfaces[0].sheetDomain() == d);
+            QCOMPARE(io::encodeProject(loaded), bytes);
+        }
+        d.shape = model::SheetShape::Annulus;
+        d.innerRadius = 2.0 * d.radius;
+        surface.setSheetDomain(d);
+        bool refused = false;
+        try {
+            io::decodeProject(io::encodeProject(project));
+        } catch (const io::FileError& error) {
+            refused = !error.problems().empty() &&
+                      error.problems().front().code == model::ProblemCode::SheetDomainInvalid;
+        }
+        QVERIFY(refused);
     }
 
     void keptDevelopmentRoundTrips() {

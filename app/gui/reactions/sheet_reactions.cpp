@@ -7,7 +7,11 @@
 #include "model/document/document.h"
 #include "model/document/selection.h"
 
+#include "../sheet_shape_dialog.h"
+#include "model/sampled_mesh.h"
+
 #include <QAction>
+#include <QLocale>
 
 namespace devsurf::app {
 
@@ -17,18 +21,30 @@ HoldSheetReaction::HoldSheetReaction(QAction* action, Workspace* workspace)
     followDocumentAndSelection();
 }
 
-std::optional<int> HoldSheetReaction::targetSurface() const {
+namespace {
+
+// The surface a sheet setting acts on: the one of the selection, or the only one.
+std::optional<int> sheetTarget(const Workspace* workspace) {
     std::optional<int> surface;
-    for (const document::Pick& pick : workspace()->selection()->picks()) {
+    for (const document::Pick& pick : workspace->selection()->picks()) {
         if (surface && *surface != pick.surface) {
             return std::nullopt; // several surfaces selected
         }
         surface = pick.surface;
     }
-    if (!surface && workspace()->document()->surfaceCount() == 1) {
+    if (!surface && workspace->document()->surfaceCount() == 1) {
         surface = 0;
     }
+    if (surface && *surface >= workspace->document()->surfaceCount()) {
+        return std::nullopt;
+    }
     return surface;
+}
+
+} // namespace
+
+std::optional<int> HoldSheetReaction::targetSurface() const {
+    return sheetTarget(workspace());
 }
 
 void HoldSheetReaction::updateEnableState() {
@@ -74,6 +90,79 @@ void HoldSheetReaction::onTriggered() {
                                                              title, document::Change::Labels),
                        hold ? tr("Cannot hold the sheet") : tr("Cannot let the sheet stretch"));
     updateEnableState();
+}
+
+SheetShapeReaction::SheetShapeReaction(QAction* action, Workspace* workspace)
+    : Reaction(action, workspace) {
+    followDocumentAndSelection();
+}
+
+void SheetShapeReaction::updateEnableState() {
+    const bool target = sheetTarget(workspace()).has_value();
+    action()->setEnabled(target);
+    const QString tip =
+        target ? tr("Choose the sheet the surface is folded from: its development as it is, or "
+                    "a rectangle, disk or annulus its development stays inside.")
+               : tr("Choose the sheet of a surface: select something on one surface first.");
+    action()->setToolTip(tip);
+    action()->setStatusTip(tip);
+}
+
+void SheetShapeReaction::onTriggered() {
+    const std::optional<int> surface = sheetTarget(workspace());
+    if (!surface) {
+        updateEnableState();
+        return;
+    }
+    // The development the sheet is fitted to: the kept one, or the surface as it unfolds now.
+    model::CompositeSurface held = workspace()->document()->surface(*surface);
+    if (!held.keepsDevelopment() || held.development().empty()) {
+        if (const auto problem = model::keepDevelopment(held)) {
+            workspace()->apply(document::CommandOrError(tr("Cannot hold the sheet"), *problem),
+                               tr("Cannot hold the sheet"));
+            return;
+        }
+    }
+    const model::SampledMesh mesh =
+        model::sampleSurface(held, model::kDevelopmentSamplesPerInterval);
+    SheetShapeDialog dialog(held.sheetDomain(), mesh, held.development(), workspace()->window());
+    if (dialog.exec() == QDialog::Accepted) {
+        applyShape(*surface, dialog.domain());
+    }
+}
+
+bool SheetShapeReaction::applyShape(int index, const model::SheetDomain& domain) {
+    document::Document* doc = workspace()->document();
+    if (index < 0 || index >= doc->surfaceCount()) {
+        return false;
+    }
+    model::CompositeSurface changed = doc->surface(index);
+    if (!changed.keepsDevelopment() || changed.development().empty()) {
+        if (const auto problem = model::keepDevelopment(changed)) {
+            workspace()->apply(document::CommandOrError(tr("Cannot hold the sheet"), *problem),
+                               tr("Cannot hold the sheet"));
+            return false;
+        }
+    }
+    changed.setSheetDomain(domain);
+    const model::SampledMesh mesh =
+        model::sampleSurface(changed, model::kDevelopmentSamplesPerInterval);
+    const double gap =
+        domain.isFree() ? 0.0 : model::largestDomainGap(domain, mesh, changed.development());
+    if (!workspace()->apply(document::ApplySurfaceCommand::create(*doc, index, std::move(changed),
+                                                                  tr("Set Sheet Shape"),
+                                                                  document::Change::Labels),
+                            tr("Cannot set the sheet shape"))) {
+        return false;
+    }
+    if (gap > 1e-6) {
+        emit workspace()->statusMessage(
+            tr("The development's boundary is up to %1 mm from the sheet's: Solve moves it onto "
+               "the sheet.")
+                .arg(QLocale().toString(gap, 'f', 1)));
+    }
+    updateEnableState();
+    return true;
 }
 
 } // namespace devsurf::app

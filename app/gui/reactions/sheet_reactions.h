@@ -2,6 +2,8 @@
 
 #include "reaction.h"
 
+#include "model/sheet_domain.h"
+
 #include <optional>
 
 namespace devsurf::app {
@@ -20,6 +22,23 @@ protected:
 
 private:
     std::optional<int> targetSurface() const;
+};
+
+// Tools ▸ Sheet Shape…: the sheet the chosen surface is folded from — its development held as
+// it is, or confined to a rectangle, disk or annulus (SheetShapeDialog). Holds the sheet if it
+// is not held yet; one undo step.
+class SheetShapeReaction : public Reaction {
+    Q_OBJECT
+public:
+    SheetShapeReaction(QAction* action, Workspace* workspace);
+
+    // Gives surface `index` the sheet `domain` (placed), holding its development; false and a
+    // sentence in the status bar if it cannot hold one. Public for the tests.
+    bool applyShape(int index, const model::SheetDomain& domain);
+
+protected:
+    void onTriggered() override;
+    void updateEnableState() override;
 };
 
 } // namespace devsurf::app

@@ -1,0 +1,156 @@
+#include "sheet_shape_dialog.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QVBoxLayout>
+
+namespace devsurf::app {
+
+namespace {
+
+constexpr double kLargestSize = 1e6; // mm: a kilometre
+
+QDoubleSpinBox* sizeBox(QWidget* parent, const QString& name) {
+    auto* box = new QDoubleSpinBox(parent);
+    box->setObjectName(name);
+    box->setRange(0.01, kLargestSize);
+    box->setDecimals(2);
+    box->setSuffix(QStringLiteral(" mm"));
+    box->setAccelerated(true);
+    return box;
+}
+
+} // namespace
+
+SheetShapeDialog::SheetShapeDialog(const model::SheetDomain& current,
+                                   const model::SampledMesh& mesh,
+                                   std::vector<model::Vec2> development, QWidget* parent)
+    : QDialog(parent), m_mesh(mesh), m_development(std::move(development)),
+      m_shape(new QComboBox(this)), m_width(sizeBox(this, QStringLiteral("sheetWidth"))),
+      m_height(sizeBox(this, QStringLiteral("sheetHeight"))),
+      m_radius(sizeBox(this, QStringLiteral("sheetRadius"))),
+      m_innerRadius(sizeBox(this, QStringLiteral("sheetInnerRadius"))), m_fit(new QLabel(this)) {
+    setObjectName(QStringLiteral("sheetShapeDialog"));
+    setWindowTitle(tr("Sheet Shape"));
+    m_developedArea = model::developedArea(m_mesh, m_development);
+    m_shape->setObjectName(QStringLiteral("sheetShape"));
+    m_shape->addItem(tr("Free: the development as it is"),
+                     static_cast<int>(model::SheetShape::Free));
+    m_shape->addItem(tr("Rectangle"), static_cast<int>(model::SheetShape::Rectangle));
+    m_shape->addItem(tr("Disk"), static_cast<int>(model::SheetShape::Disk));
+    m_shape->addItem(tr("Annulus"), static_cast<int>(model::SheetShape::Annulus));
+    // Sizes start at the sheets that just hold the development, or at the sheet kept now.
+    const auto rectangle =
+        model::fittingDomain(model::SheetShape::Rectangle, m_mesh, m_development);
+    const auto annulus = model::fittingDomain(model::SheetShape::Annulus, m_mesh, m_development);
+    m_width->setValue(current.shape == model::SheetShape::Rectangle ? current.width
+                                                                    : rectangle.width);
+    m_height->setValue(current.shape == model::SheetShape::Rectangle ? current.height
+                                                                     : rectangle.height);
+    const bool round =
+        current.shape == model::SheetShape::Disk || current.shape == model::SheetShape::Annulus;
+    m_radius->setValue(round ? current.radius : annulus.radius);
+    m_innerRadius->setValue(current.shape == model::SheetShape::Annulus ? current.innerRadius
+                                                                        : annulus.innerRadius);
+    const int index = m_shape->findData(static_cast<int>(current.shape));
+    m_shape->setCurrentIndex(index >= 0 ? index : 0);
+
+    auto* intro = new QLabel(tr("The sheet the surface is folded from. Every solve and drag keeps "
+                                "the surface isometric to its development; with a shape, the "
+                                "development may change inside it, its boundary on the shape's "
+                                "and its corners at the shape's corners."),
+                             this);
+    intro->setWordWrap(true);
+    auto* form = new QFormLayout;
+    form->addRow(tr("Shape:"), m_shape);
+    form->addRow(tr("Width:"), m_width);
+    form->addRow(tr("Height:"), m_height);
+    form->addRow(tr("Radius:"), m_radius);
+    form->addRow(tr("Inner radius:"), m_innerRadius);
+    m_fit->setObjectName(QStringLiteral("sheetFit"));
+    m_fit->setWordWrap(true);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(intro);
+    layout->addLayout(form);
+    layout->addWidget(m_fit);
+    layout->addWidget(buttons);
+    setMinimumWidth(420);
+    connect(m_shape, &QComboBox::currentIndexChanged, this, &SheetShapeDialog::onShapeChanged);
+    for (QDoubleSpinBox* box : {m_width, m_height, m_radius, m_innerRadius}) {
+        connect(box, &QDoubleSpinBox::valueChanged, this, &SheetShapeDialog::updateFit);
+    }
+    onShapeChanged();
+}
+
+model::SheetDomain SheetShapeDialog::unplaced() const {
+    model::SheetDomain d;
+    d.shape = static_cast<model::SheetShape>(m_shape->currentData().toInt());
+    switch (d.shape) {
+    case model::SheetShape::Rectangle:
+        d.width = m_width->value();
+        d.height = m_height->value();
+        break;
+    case model::SheetShape::Disk:
+        d.radius = m_radius->value();
+        break;
+    case model::SheetShape::Annulus:
+        d.radius = m_radius->value();
+        d.innerRadius = m_innerRadius->value();
+        break;
+    case model::SheetShape::Free:
+    case model::SheetShape::Outline:
+        break;
+    }
+    return d;
+}
+
+model::SheetDomain SheetShapeDialog::domain() const {
+    return model::placeDomain(unplaced(), m_mesh, m_development);
+}
+
+void SheetShapeDialog::onShapeChanged() {
+    const auto shape = static_cast<model::SheetShape>(m_shape->currentData().toInt());
+    m_width->setEnabled(shape == model::SheetShape::Rectangle);
+    m_height->setEnabled(shape == model::SheetShape::Rectangle);
+    m_radius->setEnabled(shape == model::SheetShape::Disk || shape == model::SheetShape::Annulus);
+    m_innerRadius->setEnabled(shape == model::SheetShape::Annulus);
+    updateFit();
+}
+
+void SheetShapeDialog::updateFit() {
+    const model::SheetDomain d = unplaced();
+    const QLocale locale;
+    const QString developed = locale.toString(m_developedArea / 100.0, 'f', 0);
+    if (d.isFree()) {
+        m_fit->setText(tr("The development covers %1 cm² and is held as it is.").arg(developed));
+        m_fit->setStyleSheet(QString());
+        return;
+    }
+    if (const auto problem = model::domainProblem(d)) {
+        m_fit->setText(tr("The inner radius must be smaller than the radius."));
+        m_fit->setStyleSheet(QStringLiteral("color: #b00020;"));
+        return;
+    }
+    const double area = model::domainArea(d);
+    const QString sheet = locale.toString(area / 100.0, 'f', 0);
+    if (m_developedArea > area * (1.0 + 1e-9)) {
+        m_fit->setText(tr("The development (%1 cm²) is larger than this sheet (%2 cm²): no solve "
+                          "can fold the design from it.")
+                           .arg(developed, sheet));
+        m_fit->setStyleSheet(QStringLiteral("color: #b00020;"));
+        return;
+    }
+    m_fit->setText(tr("The development covers %1 cm² of this sheet's %2 cm². The next solve "
+                      "moves its boundary onto the sheet's.")
+                       .arg(developed, sheet));
+    m_fit->setStyleSheet(QString());
+}
+
+} // namespace devsurf::app
