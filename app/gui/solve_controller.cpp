@@ -485,6 +485,16 @@ void SolveController::applyEdit(const solver::SolveResult& result, const SolveRe
     for (const auto& [v, target] : m_heldTargets) {
         solved.moveVertex(v, target);
     }
+    const solver::Summary& summary = outcome.assessments[s].summary;
+    const QString sentence =
+        tr("%1, kept developable: %n iteration(s), largest constraint residual %2.", nullptr,
+           summary.iterationsCompleted)
+            .arg(m_editTitle, QString::number(summary.finalMaxConstraintResidual, 'e', 2)) +
+        checkShapeSentence(report);
+    if (solved == doc->surface(m_editSurface)) {
+        stop(Ending::Solved, sentence); // nothing moved: no undo step, not modified
+        return;
+    }
     document::CommandOrError edit =
         document::ApplySurfaceCommand::create(*doc, m_editSurface, solved, m_editTitle);
     if (edit.isRefused()) {
@@ -494,12 +504,7 @@ void SolveController::applyEdit(const solver::SolveResult& result, const SolveRe
     m_applying = true;
     doc->undoStack()->push(edit.takeCommand().release());
     m_applying = false;
-    const solver::Summary& summary = outcome.assessments[s].summary;
-    stop(Ending::Solved,
-         tr("%1, kept developable: %n iteration(s), largest constraint residual %2.", nullptr,
-            summary.iterationsCompleted)
-                 .arg(m_editTitle, QString::number(summary.finalMaxConstraintResidual, 'e', 2)) +
-             checkShapeSentence(report));
+    stop(Ending::Solved, sentence);
 }
 
 } // namespace devsurf::app
