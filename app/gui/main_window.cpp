@@ -124,6 +124,7 @@ void MainWindow::createDocks() {
 
     m_solveController = new SolveController(m_workspace, this);
     m_solverPanel = new SolverPanel(this);
+    m_solverPanel->follow(doc);
     auto* solverDock = new QDockWidget(tr("Solver"), this);
     solverDock->setObjectName(QStringLiteral("SolverDock"));
     solverDock->setWidget(m_solverPanel);
