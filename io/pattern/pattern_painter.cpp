@@ -1,5 +1,6 @@
 #include "pattern_painter.h"
 
+#include "dashed_line.h"
 #include "fabrication_report.h"
 
 #include <QFontMetricsF>
@@ -74,17 +75,34 @@ private:
     double m_dpi;
 };
 
-QPen layerPen(const PagePainter& pages, const LayerStyle& style) {
-    QPen pen = pages.pen(colourOf(style.rgb), style.strokeWidth);
-    if (!style.dashes.empty()) {
-        // Qt's dash pattern counts in pen widths; a dot is a dash as long as it is wide.
-        QVector<qreal> dashes;
-        for (double d : style.dashes) {
-            dashes << std::max(d, 0.01) / style.strokeWidth;
+// A dashed layer is drawn as its dashes (dashed_line.h), each with a solid pen; dots are discs
+// as wide as the line.
+void drawLayerLine(PagePainter& pages, const LayerStyle& style, const QPolygonF& line,
+                   bool closed) {
+    QPainter& p = pages.painter();
+    const QColor colour = colourOf(style.rgb);
+    p.setPen(pages.pen(colour, style.strokeWidth));
+    p.setBrush(Qt::NoBrush);
+    if (style.dashes.empty()) {
+        if (closed) {
+            p.drawPolygon(line);
+        } else {
+            p.drawPolyline(line);
         }
-        pen.setDashPattern(dashes);
+        return;
     }
-    return pen;
+    const DashedLine dashed = dashLine(line, closed, style.dashes);
+    for (const QPolygonF& dash : dashed.dashes) {
+        p.drawPolyline(dash);
+    }
+    if (!dashed.dots.empty()) {
+        p.setPen(Qt::NoPen);
+        p.setBrush(colour);
+        const double r = 0.5 * style.strokeWidth;
+        for (const QPointF& dot : dashed.dots) {
+            p.drawEllipse(dot, r, r);
+        }
+    }
 }
 
 bool meets(const std::vector<Vec2>& points, const QRectF& visible) {
@@ -115,8 +133,6 @@ void drawPieces(PagePainter& pages, const model::CuttingPattern& pattern,
         if (cutOnly && layer != PatternLayer::Cut) {
             continue;
         }
-        p.setPen(layerPen(pages, layerStyle(layer)));
-        p.setBrush(Qt::NoBrush);
         for (int index : pieces) {
             for (const model::PatternPath& path : pattern.pieces[std::size_t(index)].paths) {
                 if (path.layer != layer || path.points.size() < 2 || !meets(path.points, visible)) {
@@ -126,11 +142,7 @@ void drawPieces(PagePainter& pages, const model::CuttingPattern& pattern,
                 for (const Vec2& q : path.points) {
                     polygon << QPointF(q.x, q.y);
                 }
-                if (path.closed) {
-                    p.drawPolygon(polygon);
-                } else {
-                    p.drawPolyline(polygon);
-                }
+                drawLayerLine(pages, layerStyle(layer), polygon, path.closed);
             }
         }
     }
