@@ -1306,233 +1306,238 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="114"/>
+        <location filename="../app/gui/main_window.cpp" line="115"/>
         <source>Patches</source>
         <translation>Flächenstücke</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="120"/>
+        <location filename="../app/gui/main_window.cpp" line="121"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="128"/>
+        <location filename="../app/gui/main_window.cpp" line="127"/>
+        <source>Pins</source>
+        <translation>Festgehaltene Ecken</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="137"/>
         <source>Solver</source>
         <translation>Löser</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="141"/>
+        <location filename="../app/gui/main_window.cpp" line="150"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="148"/>
+        <location filename="../app/gui/main_window.cpp" line="157"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="150"/>
+        <location filename="../app/gui/main_window.cpp" line="159"/>
         <source>&amp;New from Example…</source>
         <translation>&amp;Neu aus Beispiel…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="152"/>
+        <location filename="../app/gui/main_window.cpp" line="161"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="154"/>
+        <location filename="../app/gui/main_window.cpp" line="163"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="158"/>
+        <location filename="../app/gui/main_window.cpp" line="167"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="161"/>
+        <location filename="../app/gui/main_window.cpp" line="170"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="165"/>
+        <location filename="../app/gui/main_window.cpp" line="174"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>Austausch-JSON &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="165"/>
+        <location filename="../app/gui/main_window.cpp" line="174"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="168"/>
+        <location filename="../app/gui/main_window.cpp" line="177"/>
         <source>Export &amp;3D Shape…</source>
         <translation>&amp;3D-Form exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="172"/>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="176"/>
+        <location filename="../app/gui/main_window.cpp" line="185"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="179"/>
+        <location filename="../app/gui/main_window.cpp" line="188"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="182"/>
+        <location filename="../app/gui/main_window.cpp" line="191"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="189"/>
+        <location filename="../app/gui/main_window.cpp" line="198"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="191"/>
+        <location filename="../app/gui/main_window.cpp" line="200"/>
         <source>Select &amp;None</source>
         <translation>Auswahl &amp;aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="192"/>
+        <location filename="../app/gui/main_window.cpp" line="201"/>
         <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="196"/>
+        <location filename="../app/gui/main_window.cpp" line="205"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="198"/>
+        <location filename="../app/gui/main_window.cpp" line="207"/>
         <source>&amp;3D View</source>
         <translation>&amp;3D-Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="198"/>
+        <location filename="../app/gui/main_window.cpp" line="207"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="209"/>
         <source>&amp;Development View</source>
         <translation>&amp;Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="209"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="201"/>
+        <location filename="../app/gui/main_window.cpp" line="210"/>
         <source>3D &amp;and Development</source>
         <translation>3D &amp;und Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="202"/>
+        <location filename="../app/gui/main_window.cpp" line="211"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="206"/>
+        <location filename="../app/gui/main_window.cpp" line="215"/>
         <source>&amp;Control Polygons</source>
         <translation>&amp;Kontrollpolygone</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="206"/>
+        <location filename="../app/gui/main_window.cpp" line="215"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207"/>
+        <location filename="../app/gui/main_window.cpp" line="216"/>
         <source>&amp;Vertices</source>
         <translation>&amp;Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="208"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="212"/>
+        <location filename="../app/gui/main_window.cpp" line="221"/>
         <source>&amp;Fit All</source>
         <translation>&amp;Alles zeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="212"/>
+        <location filename="../app/gui/main_window.cpp" line="221"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="218"/>
+        <location filename="../app/gui/main_window.cpp" line="227"/>
         <source>Reset &amp;Layout</source>
         <translation>&amp;Layout zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="223"/>
+        <location filename="../app/gui/main_window.cpp" line="232"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="226"/>
+        <location filename="../app/gui/main_window.cpp" line="235"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>Kante &amp;umbenennen (R ↔ S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="226"/>
+        <location filename="../app/gui/main_window.cpp" line="235"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="228"/>
+        <location filename="../app/gui/main_window.cpp" line="237"/>
         <source>Add &amp;Crease…</source>
         <translation>&amp;Falz einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="240"/>
         <source>Add R&amp;uling…</source>
         <translation>&amp;Erzeugende einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="244"/>
+        <location filename="../app/gui/main_window.cpp" line="253"/>
         <source>&amp;Pin Vertices</source>
         <translation>Ecken &amp;festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="245"/>
+        <location filename="../app/gui/main_window.cpp" line="254"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="247"/>
+        <location filename="../app/gui/main_window.cpp" line="256"/>
         <source>U&amp;npin Vertices</source>
         <translation>Ecken &amp;freigeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="248"/>
+        <location filename="../app/gui/main_window.cpp" line="257"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="250"/>
+        <location filename="../app/gui/main_window.cpp" line="260"/>
         <source>Hold the &amp;Sheet</source>
         <translation>&amp;Bogen festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="251"/>
+        <location filename="../app/gui/main_window.cpp" line="261"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="377"/>
+        <location filename="../app/gui/main_window.cpp" line="387"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n Fläche</numerusform>
@@ -1540,7 +1545,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="378"/>
+        <location filename="../app/gui/main_window.cpp" line="388"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -1548,7 +1553,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="379"/>
+        <location filename="../app/gui/main_window.cpp" line="389"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -1556,7 +1561,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="380"/>
+        <location filename="../app/gui/main_window.cpp" line="390"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n ausgewählt</numerusform>
@@ -1564,77 +1569,77 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="229"/>
+        <location filename="../app/gui/main_window.cpp" line="238"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="232"/>
+        <location filename="../app/gui/main_window.cpp" line="241"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="234"/>
+        <location filename="../app/gui/main_window.cpp" line="243"/>
         <source>Re&amp;fine Curves</source>
         <translation>Kurven &amp;verfeinern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="235"/>
+        <location filename="../app/gui/main_window.cpp" line="244"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="241"/>
+        <location filename="../app/gui/main_window.cpp" line="250"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>Ecken &amp;verschieben oder drehen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="241"/>
+        <location filename="../app/gui/main_window.cpp" line="250"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="280"/>
+        <location filename="../app/gui/main_window.cpp" line="290"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="281"/>
+        <location filename="../app/gui/main_window.cpp" line="291"/>
         <source>&amp;User Manual</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="288"/>
+        <location filename="../app/gui/main_window.cpp" line="298"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="294"/>
+        <location filename="../app/gui/main_window.cpp" line="304"/>
         <source>&amp;About DevSurf</source>
         <translation>&amp;Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="296"/>
+        <location filename="../app/gui/main_window.cpp" line="306"/>
         <source>About DevSurf</source>
         <translation>Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="297"/>
+        <location filename="../app/gui/main_window.cpp" line="307"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen mit Spline-Torsen (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="340"/>
+        <location filename="../app/gui/main_window.cpp" line="350"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="362"/>
+        <location filename="../app/gui/main_window.cpp" line="372"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="363"/>
+        <location filename="../app/gui/main_window.cpp" line="373"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
@@ -2037,8 +2042,8 @@
     </message>
     <message>
         <location filename="../app/gui/pattern_export_dialog.cpp" line="98"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="340"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="348"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="345"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="353"/>
         <source>Export Cutting Pattern</source>
         <translation>Schnittmuster exportieren</translation>
     </message>
@@ -2090,7 +2095,7 @@
     <message>
         <location filename="../app/gui/pattern_export_dialog.cpp" line="122"/>
         <location filename="../app/gui/pattern_export_dialog.cpp" line="140"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="156"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="159"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
@@ -2145,108 +2150,108 @@
         <translation>als &amp;Klebelaschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="145"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="146"/>
         <source>&amp;Seam allowance:</source>
         <translation>&amp;Nahtzugabe:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="163"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="166"/>
         <source>S&amp;heet:</source>
         <translation>&amp;Bogen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="166"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="171"/>
         <source>A4</source>
         <translation>A4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="166"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="171"/>
         <source>A3</source>
         <translation>A3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="166"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="171"/>
         <source>Letter</source>
         <translation>Letter</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
         <source>P&amp;aper (PDF):</source>
         <translation>P&amp;apier (PDF):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="179"/>
         <source>Piece</source>
         <translation>Teil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="179"/>
         <source>Sheet</source>
         <translation>Bogen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="179"/>
         <source>Size (mm)</source>
         <translation>Größe (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="180"/>
         <source>Area (mm²)</source>
         <translation>Fläche (mm²)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="180"/>
         <source>Isometry error (mm)</source>
         <translation>Isometriefehler (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="181"/>
         <source>Fits sheet</source>
         <translation>Passt auf Bogen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="181"/>
         <source>Overlaps</source>
         <translation>Überlappungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="180"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="185"/>
         <source>Fabrication report</source>
         <translation>Fertigungsbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="187"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="192"/>
         <source>&amp;Export…</source>
         <translation>&amp;Exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="298"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
         <source>itself</source>
         <translation>sich selbst</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="305"/>
         <location filename="../app/gui/pattern_export_dialog.cpp" line="310"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="315"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="306"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="311"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="314"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="314"/>
         <source>no</source>
         <translation>nein</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="315"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="320"/>
         <source>%n piece(s)</source>
         <translation>
             <numerusform>%n Teil</numerusform>
@@ -2254,7 +2259,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="316"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="321"/>
         <source>%n sheet(s)</source>
         <translation>
             <numerusform>%n Bogen</numerusform>
@@ -2262,34 +2267,34 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="318"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="323"/>
         <source>largest isometry error %1 mm</source>
         <translation>größter Isometriefehler %1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="338"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="343"/>
         <source>Some pieces overlap and cannot be cut as laid out. Export anyway?</source>
         <translation>Einige Teile überlappen sich und können so nicht geschnitten werden. Trotzdem exportieren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="339"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="344"/>
         <source>The pattern has problems (see the report). Export anyway?</source>
         <translation>Das Schnittmuster hat Probleme (siehe Bericht). Trotzdem exportieren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="373"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
         <source>Writing the cutting pattern…</source>
         <translation>Das Schnittmuster wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="373"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="359"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="369"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="384"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="364"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="374"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="389"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
@@ -2328,6 +2333,39 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::PinsPanel</name>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="22"/>
+        <source>Unpin</source>
+        <translation>Freigeben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="25"/>
+        <source>No vertex is pinned. Select vertices and choose Tools ▸ Pin Vertices (Ctrl+K): the solver then never moves them.</source>
+        <translation>Keine Ecke ist festgehalten. Wählen Sie Ecken aus und dann Werkzeuge ▸ Ecken festhalten (Ctrl+K): Der Löser bewegt sie dann nie.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="28"/>
+        <source>The pinned vertices: the solver never moves them. Selecting a row selects its vertex in the views.</source>
+        <translation>Die festgehaltenen Ecken: Der Löser bewegt sie nie. Eine Zeile auswählen wählt ihre Ecke in den Ansichten aus.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="31"/>
+        <source>Release the selected pinned vertices (one undo step).</source>
+        <translation>Die ausgewählten festgehaltenen Ecken freigeben (ein Rückgängig-Schritt).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="65"/>
+        <source>Vertex %1</source>
+        <translation>Ecke %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="66"/>
+        <source>Surface %1, vertex %2</source>
+        <translation>Fläche %1, Ecke %2</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::PrintPatternReaction</name>
     <message>
         <location filename="../app/gui/reactions/pattern_reactions.cpp" line="109"/>
@@ -2361,17 +2399,17 @@
         <translation>Grad %1, C%2, %3 Intervalle</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="143"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="150"/>
         <source>&lt;b&gt;Vertex %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;Ecke %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="154"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="162"/>
         <source>&lt;b&gt;Edge %1&lt;/b&gt; from vertex %2 to vertex %3&lt;br&gt;</source>
         <translation>&lt;b&gt;Kante %1&lt;/b&gt; von Ecke %2 zu Ecke %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="117"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
         <source>Nothing selected.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
         <translation>Nichts ausgewählt.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Klicken Sie auf eine Ecke, Kante oder ein Flächenstück, um es auszuwählen; Umschalt-Klick erweitert die Auswahl.&lt;/i&gt;</translation>
     </message>
@@ -2395,9 +2433,14 @@
         <source>Not folded.</source>
         <translation>Nicht gefaltet.</translation>
     </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="78"/>
+        <source>&lt;b&gt;Pinned&lt;/b&gt;: the solver never moves this vertex. Tools ▸ Unpin Vertices (Ctrl+Shift+K) releases it.</source>
+        <translation>&lt;b&gt;Festgehalten&lt;/b&gt;: Der Löser bewegt diese Ecke nie. Werkzeuge ▸ Ecken freigeben (Ctrl+Shift+K) gibt sie frei.</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="119"/>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="129"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="126"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="136"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -2405,7 +2448,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="120"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="127"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -2413,12 +2456,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="127"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="134"/>
         <source>Selected: %1, %2, %3.</source>
         <translation>Ausgewählt: %1, %2, %3.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="128"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="135"/>
         <source>%n vertex(es)</source>
         <translation>
             <numerusform>%n Ecke</numerusform>
@@ -2426,7 +2469,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="128"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="135"/>
         <source>%n edge(s)</source>
         <translation>
             <numerusform>%n Kante</numerusform>
@@ -2434,7 +2477,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="159"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="167"/>
         <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
         <translation>
             <numerusform>Spline-Kurve (S), %1, %n Kontrollpunkt.&lt;br&gt;</numerusform>
@@ -2442,27 +2485,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="165"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="173"/>
         <source>A boundary curve of patch %1.</source>
         <translation>Eine Randkurve des Flächenstücks %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="169"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="177"/>
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>Erzeugende (R), eine Strecke der Länge %1 mm.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="176"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="184"/>
         <source>Smooth between patches %1 and %2: the surface stays smooth across it.</source>
         <translation>Glatt zwischen den Flächenstücken %1 und %2: Die Fläche bleibt über sie hinweg glatt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="178"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="186"/>
         <source>Sharp between patches %1 and %2: the surface may fold along it.</source>
         <translation>Scharf zwischen den Flächenstücken %1 und %2: Die Fläche darf entlang ihr falten.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="188"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="196"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;Flächenstück %1&lt;/b&gt;: %2&lt;br&gt;Kantenbeschriftung entlang des Flächenstücks: %3&lt;br&gt;%n Ecke.</numerusform>
@@ -2470,7 +2513,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="227"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="235"/>
         <source>Cannot move</source>
         <translation>Verschieben nicht möglich</translation>
     </message>
@@ -3391,57 +3434,62 @@
         <translation>Fläche %1 ist ungültig und wird nicht angezeigt.</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="30"/>
+        <location filename="../views/scene_view_input.cpp" line="31"/>
+        <source>vertex %1, pinned</source>
+        <translation>Ecke %1, festgehalten</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view_input.cpp" line="32"/>
         <source>vertex %1</source>
         <translation>Ecke %1</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="39"/>
+        <location filename="../views/scene_view_input.cpp" line="41"/>
         <source>edge %1 (R)</source>
         <translation>Kante %1 (R)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="41"/>
+        <location filename="../views/scene_view_input.cpp" line="43"/>
         <source>edge %1 (S, crease)</source>
         <translation>Kante %1 (S, Falz)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="43"/>
+        <location filename="../views/scene_view_input.cpp" line="45"/>
         <source>edge %1 (S, boundary)</source>
         <translation>Kante %1 (S, Rand)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="54"/>
+        <location filename="../views/scene_view_input.cpp" line="56"/>
         <source>strip (SRSR)</source>
         <translation>Streifen (SRSR)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="57"/>
+        <location filename="../views/scene_view_input.cpp" line="59"/>
         <source>pointed strip (SRS)</source>
         <translation>spitzer Streifen (SRS)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="60"/>
+        <location filename="../views/scene_view_input.cpp" line="62"/>
         <source>cone (SRR)</source>
         <translation>Kegel (SRR)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="63"/>
+        <location filename="../views/scene_view_input.cpp" line="65"/>
         <source>planar patch</source>
         <translation>ebenes Flächenstück</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="66"/>
+        <location filename="../views/scene_view_input.cpp" line="68"/>
         <source>invalid patch</source>
         <translation>ungültiges Flächenstück</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="69"/>
+        <location filename="../views/scene_view_input.cpp" line="71"/>
         <source>patch %1 (%2)</source>
         <translation>Flächenstück %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="74"/>
+        <location filename="../views/scene_view_input.cpp" line="76"/>
         <source>surface %1: %2</source>
         <translation>Fläche %1: %2</translation>
     </message>

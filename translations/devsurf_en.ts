@@ -145,7 +145,7 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="377"/>
+        <location filename="../app/gui/main_window.cpp" line="387"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n surface</numerusform>
@@ -153,7 +153,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="378"/>
+        <location filename="../app/gui/main_window.cpp" line="388"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n patch</numerusform>
@@ -161,7 +161,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="379"/>
+        <location filename="../app/gui/main_window.cpp" line="389"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n control point</numerusform>
@@ -169,7 +169,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="380"/>
+        <location filename="../app/gui/main_window.cpp" line="390"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n selected</numerusform>
@@ -199,7 +199,7 @@
 <context>
     <name>devsurf::app::PatternExportDialog</name>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="315"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="320"/>
         <source>%n piece(s)</source>
         <translation>
             <numerusform>%n piece</numerusform>
@@ -207,7 +207,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="316"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="321"/>
         <source>%n sheet(s)</source>
         <translation>
             <numerusform>%n sheet</numerusform>
@@ -218,8 +218,8 @@
 <context>
     <name>devsurf::app::PropertiesPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="119"/>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="129"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="126"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="136"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n patch</numerusform>
@@ -227,7 +227,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="120"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="127"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n control point</numerusform>
@@ -235,7 +235,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="128"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="135"/>
         <source>%n vertex(es)</source>
         <translation>
             <numerusform>%n vertex</numerusform>
@@ -243,7 +243,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="128"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="135"/>
         <source>%n edge(s)</source>
         <translation>
             <numerusform>%n edge</numerusform>
@@ -251,7 +251,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="159"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="167"/>
         <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
         <translation>
             <numerusform>Spline curve (S), %1, %n control point.&lt;br&gt;</numerusform>
@@ -259,7 +259,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="188"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="196"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner.</numerusform>

@@ -1291,329 +1291,334 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="114"/>
+        <location filename="../app/gui/main_window.cpp" line="115"/>
         <source>Patches</source>
         <translation>パッチ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="120"/>
+        <location filename="../app/gui/main_window.cpp" line="121"/>
         <source>Properties</source>
         <translation>プロパティ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="128"/>
+        <location filename="../app/gui/main_window.cpp" line="127"/>
+        <source>Pins</source>
+        <translation>固定点</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="137"/>
         <source>Solver</source>
         <translation>ソルバー</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="141"/>
+        <location filename="../app/gui/main_window.cpp" line="150"/>
         <source>Main</source>
         <translation>メイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="148"/>
+        <location filename="../app/gui/main_window.cpp" line="157"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="150"/>
+        <location filename="../app/gui/main_window.cpp" line="159"/>
         <source>&amp;New from Example…</source>
         <translation>例から新規作成(&amp;N)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="152"/>
+        <location filename="../app/gui/main_window.cpp" line="161"/>
         <source>&amp;Open…</source>
         <translation>開く(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="154"/>
+        <location filename="../app/gui/main_window.cpp" line="163"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="158"/>
+        <location filename="../app/gui/main_window.cpp" line="167"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="161"/>
+        <location filename="../app/gui/main_window.cpp" line="170"/>
         <source>Save &amp;As…</source>
         <translation>名前を付けて保存(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="165"/>
+        <location filename="../app/gui/main_window.cpp" line="174"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>交換用 JSON をエクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="165"/>
+        <location filename="../app/gui/main_window.cpp" line="174"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="168"/>
+        <location filename="../app/gui/main_window.cpp" line="177"/>
         <source>Export &amp;3D Shape…</source>
         <translation>3D 形状をエクスポート(&amp;3)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="172"/>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="176"/>
+        <location filename="../app/gui/main_window.cpp" line="185"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="179"/>
+        <location filename="../app/gui/main_window.cpp" line="188"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="182"/>
+        <location filename="../app/gui/main_window.cpp" line="191"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="189"/>
+        <location filename="../app/gui/main_window.cpp" line="198"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="191"/>
+        <location filename="../app/gui/main_window.cpp" line="200"/>
         <source>Select &amp;None</source>
         <translation>選択を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="192"/>
+        <location filename="../app/gui/main_window.cpp" line="201"/>
         <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="196"/>
+        <location filename="../app/gui/main_window.cpp" line="205"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="198"/>
+        <location filename="../app/gui/main_window.cpp" line="207"/>
         <source>&amp;3D View</source>
         <translation>3D ビュー(&amp;3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="198"/>
+        <location filename="../app/gui/main_window.cpp" line="207"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="209"/>
         <source>&amp;Development View</source>
         <translation>展開図ビュー(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="209"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="201"/>
+        <location filename="../app/gui/main_window.cpp" line="210"/>
         <source>3D &amp;and Development</source>
         <translation>3D と展開図(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="202"/>
+        <location filename="../app/gui/main_window.cpp" line="211"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="206"/>
+        <location filename="../app/gui/main_window.cpp" line="215"/>
         <source>&amp;Control Polygons</source>
         <translation>制御多角形(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="206"/>
+        <location filename="../app/gui/main_window.cpp" line="215"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207"/>
+        <location filename="../app/gui/main_window.cpp" line="216"/>
         <source>&amp;Vertices</source>
         <translation>頂点(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="208"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="212"/>
+        <location filename="../app/gui/main_window.cpp" line="221"/>
         <source>&amp;Fit All</source>
         <translation>全体を表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="212"/>
+        <location filename="../app/gui/main_window.cpp" line="221"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="218"/>
+        <location filename="../app/gui/main_window.cpp" line="227"/>
         <source>Reset &amp;Layout</source>
         <translation>レイアウトをリセット(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="223"/>
+        <location filename="../app/gui/main_window.cpp" line="232"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="226"/>
+        <location filename="../app/gui/main_window.cpp" line="235"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>辺のラベルを変更 (R ↔ S)(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="226"/>
+        <location filename="../app/gui/main_window.cpp" line="235"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="228"/>
+        <location filename="../app/gui/main_window.cpp" line="237"/>
         <source>Add &amp;Crease…</source>
         <translation>折り線を追加(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="229"/>
+        <location filename="../app/gui/main_window.cpp" line="238"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="240"/>
         <source>Add R&amp;uling…</source>
         <translation>母線を追加(&amp;U)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="232"/>
+        <location filename="../app/gui/main_window.cpp" line="241"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="234"/>
+        <location filename="../app/gui/main_window.cpp" line="243"/>
         <source>Re&amp;fine Curves</source>
         <translation>曲線を細分化(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="235"/>
+        <location filename="../app/gui/main_window.cpp" line="244"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="241"/>
+        <location filename="../app/gui/main_window.cpp" line="250"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>頂点の移動・回転(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="241"/>
+        <location filename="../app/gui/main_window.cpp" line="250"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="244"/>
+        <location filename="../app/gui/main_window.cpp" line="253"/>
         <source>&amp;Pin Vertices</source>
         <translation>頂点を固定(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="245"/>
+        <location filename="../app/gui/main_window.cpp" line="254"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="247"/>
+        <location filename="../app/gui/main_window.cpp" line="256"/>
         <source>U&amp;npin Vertices</source>
         <translation>頂点の固定を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="248"/>
+        <location filename="../app/gui/main_window.cpp" line="257"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="250"/>
+        <location filename="../app/gui/main_window.cpp" line="260"/>
         <source>Hold the &amp;Sheet</source>
         <translation>シートを保持(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="251"/>
+        <location filename="../app/gui/main_window.cpp" line="261"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="280"/>
+        <location filename="../app/gui/main_window.cpp" line="290"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="281"/>
+        <location filename="../app/gui/main_window.cpp" line="291"/>
         <source>&amp;User Manual</source>
         <translation>ユーザーマニュアル(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="288"/>
+        <location filename="../app/gui/main_window.cpp" line="298"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="294"/>
+        <location filename="../app/gui/main_window.cpp" line="304"/>
         <source>&amp;About DevSurf</source>
         <translation>DevSurf について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="296"/>
+        <location filename="../app/gui/main_window.cpp" line="306"/>
         <source>About DevSurf</source>
         <translation>DevSurf について</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="297"/>
+        <location filename="../app/gui/main_window.cpp" line="307"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;スプライン可展面による可展面と曲線折り折り紙の設計 (Tang, Bo, Wallner, Pottmann 2015)。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="340"/>
+        <location filename="../app/gui/main_window.cpp" line="350"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="362"/>
+        <location filename="../app/gui/main_window.cpp" line="372"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="363"/>
+        <location filename="../app/gui/main_window.cpp" line="373"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="377"/>
+        <location filename="../app/gui/main_window.cpp" line="387"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>曲面 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="378"/>
+        <location filename="../app/gui/main_window.cpp" line="388"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="379"/>
+        <location filename="../app/gui/main_window.cpp" line="389"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="380"/>
+        <location filename="../app/gui/main_window.cpp" line="390"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n 個選択</numerusform>
@@ -2016,8 +2021,8 @@
     </message>
     <message>
         <location filename="../app/gui/pattern_export_dialog.cpp" line="98"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="340"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="348"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="345"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="353"/>
         <source>Export Cutting Pattern</source>
         <translation>型紙のエクスポート</translation>
     </message>
@@ -2069,7 +2074,7 @@
     <message>
         <location filename="../app/gui/pattern_export_dialog.cpp" line="122"/>
         <location filename="../app/gui/pattern_export_dialog.cpp" line="140"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="156"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="159"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
@@ -2124,149 +2129,149 @@
         <translation>のりしろとして(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="145"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="146"/>
         <source>&amp;Seam allowance:</source>
         <translation>縫い代(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="163"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="166"/>
         <source>S&amp;heet:</source>
         <translation>シート(&amp;H):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="166"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="171"/>
         <source>A4</source>
         <translation>A4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="166"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="171"/>
         <source>A3</source>
         <translation>A3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="166"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="171"/>
         <source>Letter</source>
         <translation>レター</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
         <source>P&amp;aper (PDF):</source>
         <translation>用紙 (PDF)(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="179"/>
         <source>Piece</source>
         <translation>ピース</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="179"/>
         <source>Sheet</source>
         <translation>シート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="179"/>
         <source>Size (mm)</source>
         <translation>サイズ (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="180"/>
         <source>Area (mm²)</source>
         <translation>面積 (mm²)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="180"/>
         <source>Isometry error (mm)</source>
         <translation>等長誤差 (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="181"/>
         <source>Fits sheet</source>
         <translation>シートに収まる</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="181"/>
         <source>Overlaps</source>
         <translation>重なり</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="180"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="185"/>
         <source>Fabrication report</source>
         <translation>製作レポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="187"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="192"/>
         <source>&amp;Export…</source>
         <translation>エクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="298"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
         <source>itself</source>
         <translation>自身</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="305"/>
         <location filename="../app/gui/pattern_export_dialog.cpp" line="310"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="315"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="306"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="311"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="314"/>
         <source>yes</source>
         <translation>はい</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="314"/>
         <source>no</source>
         <translation>いいえ</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="315"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="320"/>
         <source>%n piece(s)</source>
         <translation>
             <numerusform>ピース %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="316"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="321"/>
         <source>%n sheet(s)</source>
         <translation>
             <numerusform>シート %n 枚</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="318"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="323"/>
         <source>largest isometry error %1 mm</source>
         <translation>最大等長誤差 %1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="338"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="343"/>
         <source>Some pieces overlap and cannot be cut as laid out. Export anyway?</source>
         <translation>重なっているピースがあり、この配置では切断できません。それでもエクスポートしますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="339"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="344"/>
         <source>The pattern has problems (see the report). Export anyway?</source>
         <translation>型紙に問題があります (レポートを参照)。それでもエクスポートしますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="373"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
         <source>Writing the cutting pattern…</source>
         <translation>型紙を書き出しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="373"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="359"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="369"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="384"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="364"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="374"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="389"/>
         <source>Export failed</source>
         <translation>エクスポートに失敗しました</translation>
     </message>
@@ -2302,6 +2307,39 @@
         <location filename="../app/gui/reactions/pin_reactions.cpp" line="70"/>
         <source>Cannot unpin the vertices</source>
         <translation>頂点の固定を解除できません</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::PinsPanel</name>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="22"/>
+        <source>Unpin</source>
+        <translation>固定を解除</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="25"/>
+        <source>No vertex is pinned. Select vertices and choose Tools ▸ Pin Vertices (Ctrl+K): the solver then never moves them.</source>
+        <translation>固定された頂点はありません。頂点を選択してツール ▸ 頂点を固定 (Ctrl+K) を選ぶと、ソルバーはそれらを動かしません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="28"/>
+        <source>The pinned vertices: the solver never moves them. Selecting a row selects its vertex in the views.</source>
+        <translation>固定された頂点: ソルバーはこれらを動かしません。行を選択するとビューでその頂点が選択されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="31"/>
+        <source>Release the selected pinned vertices (one undo step).</source>
+        <translation>選択した固定頂点の固定を解除します (元に戻す 1 ステップ)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="65"/>
+        <source>Vertex %1</source>
+        <translation>頂点 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="66"/>
+        <source>Surface %1, vertex %2</source>
+        <translation>曲面 %1、頂点 %2</translation>
     </message>
 </context>
 <context>
@@ -2358,90 +2396,95 @@
         <translation>折れていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="117"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="78"/>
+        <source>&lt;b&gt;Pinned&lt;/b&gt;: the solver never moves this vertex. Tools ▸ Unpin Vertices (Ctrl+Shift+K) releases it.</source>
+        <translation>&lt;b&gt;固定&lt;/b&gt;: ソルバーはこの頂点を動かしません。ツール ▸ 頂点の固定を解除 (Ctrl+Shift+K) で解除します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
         <source>Nothing selected.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
         <translation>何も選択されていません。&lt;br&gt;%1、%2。&lt;br&gt;&lt;i&gt;頂点・辺・パッチをクリックすると選択されます。Shift+クリックで選択に追加します。&lt;/i&gt;</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="119"/>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="129"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="126"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="136"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="120"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="127"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="127"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="134"/>
         <source>Selected: %1, %2, %3.</source>
         <translation>選択: %1、%2、%3。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="128"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="135"/>
         <source>%n vertex(es)</source>
         <translation>
             <numerusform>頂点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="128"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="135"/>
         <source>%n edge(s)</source>
         <translation>
             <numerusform>辺 %n 本</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="143"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="150"/>
         <source>&lt;b&gt;Vertex %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;頂点 %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="154"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="162"/>
         <source>&lt;b&gt;Edge %1&lt;/b&gt; from vertex %2 to vertex %3&lt;br&gt;</source>
         <translation>&lt;b&gt;辺 %1&lt;/b&gt; 頂点 %2 から頂点 %3 まで&lt;br&gt;</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="159"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="167"/>
         <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
         <translation>
             <numerusform>スプライン曲線 (S)、%1、制御点 %n 個。&lt;br&gt;</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="165"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="173"/>
         <source>A boundary curve of patch %1.</source>
         <translation>パッチ %1 の境界曲線。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="169"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="177"/>
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>母線 (R)、長さ %1 mm の線分。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="176"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="184"/>
         <source>Smooth between patches %1 and %2: the surface stays smooth across it.</source>
         <translation>パッチ %1 と %2 の間で滑らか: 曲面はこの母線をまたいで滑らかに保たれます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="178"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="186"/>
         <source>Sharp between patches %1 and %2: the surface may fold along it.</source>
         <translation>パッチ %1 と %2 の間で鋭角: 曲面はこの母線に沿って折れてもかまいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="188"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="196"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;パッチ %1&lt;/b&gt;: %2&lt;br&gt;パッチに沿った辺のラベル: %3&lt;br&gt;角 %n 個。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="227"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="235"/>
         <source>Cannot move</source>
         <translation>移動できません</translation>
     </message>
@@ -3348,57 +3391,62 @@
         <translation>曲面 %1 は有効でないため表示されません。</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="30"/>
+        <location filename="../views/scene_view_input.cpp" line="31"/>
+        <source>vertex %1, pinned</source>
+        <translation>頂点 %1 (固定)</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view_input.cpp" line="32"/>
         <source>vertex %1</source>
         <translation>頂点 %1</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="39"/>
+        <location filename="../views/scene_view_input.cpp" line="41"/>
         <source>edge %1 (R)</source>
         <translation>辺 %1 (R)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="41"/>
+        <location filename="../views/scene_view_input.cpp" line="43"/>
         <source>edge %1 (S, crease)</source>
         <translation>辺 %1 (S、折り線)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="43"/>
+        <location filename="../views/scene_view_input.cpp" line="45"/>
         <source>edge %1 (S, boundary)</source>
         <translation>辺 %1 (S、境界)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="54"/>
+        <location filename="../views/scene_view_input.cpp" line="56"/>
         <source>strip (SRSR)</source>
         <translation>ストリップ (SRSR)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="57"/>
+        <location filename="../views/scene_view_input.cpp" line="59"/>
         <source>pointed strip (SRS)</source>
         <translation>尖ったストリップ (SRS)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="60"/>
+        <location filename="../views/scene_view_input.cpp" line="62"/>
         <source>cone (SRR)</source>
         <translation>錐面 (SRR)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="63"/>
+        <location filename="../views/scene_view_input.cpp" line="65"/>
         <source>planar patch</source>
         <translation>平面パッチ</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="66"/>
+        <location filename="../views/scene_view_input.cpp" line="68"/>
         <source>invalid patch</source>
         <translation>無効なパッチ</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="69"/>
+        <location filename="../views/scene_view_input.cpp" line="71"/>
         <source>patch %1 (%2)</source>
         <translation>パッチ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="74"/>
+        <location filename="../views/scene_view_input.cpp" line="76"/>
         <source>surface %1: %2</source>
         <translation>曲面 %1: %2</translation>
     </message>

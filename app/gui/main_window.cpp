@@ -6,6 +6,7 @@
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "panels/patch_panel.h"
+#include "panels/pins_panel.h"
 #include "panels/properties_panel.h"
 #include "panels/solver_panel.h"
 #include "reactions/crease_reactions.h"
@@ -121,6 +122,14 @@ void MainWindow::createDocks() {
     properties->setObjectName(QStringLiteral("PropertiesDock"));
     properties->setWidget(m_propertiesPanel);
     addDockWidget(Qt::LeftDockWidgetArea, properties);
+
+    m_pinsPanel = new PinsPanel(doc, selection, this);
+    auto* pins = new QDockWidget(tr("Pins"), this);
+    pins->setObjectName(QStringLiteral("PinsDock"));
+    pins->setWidget(m_pinsPanel);
+    addDockWidget(Qt::LeftDockWidgetArea, pins);
+    tabifyDockWidget(properties, pins); // a tab beside Properties: the left column stays readable
+    properties->raise();
 
     m_solveController = new SolveController(m_workspace, this);
     m_solverPanel = new SolverPanel(this);
@@ -247,6 +256,7 @@ void MainWindow::createMenus() {
     QAction* unpin = addAction(tools, QStringLiteral("actionUnpinVertices"), tr("U&npin Vertices"),
                                QKeySequence(tr("Ctrl+Shift+K")));
     new PinVerticesReaction(unpin, m_workspace, false);
+    m_pinsPanel->setUnpinAction(unpin);
     QAction* holdSheet = addAction(tools, QStringLiteral("actionHoldSheet"), tr("Hold the &Sheet"),
                                    QKeySequence(tr("Ctrl+Shift+H")));
     new HoldSheetReaction(holdSheet, m_workspace);
