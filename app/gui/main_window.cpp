@@ -3,6 +3,7 @@
 #include "autosaver.h"
 #include "camera_actions.h"
 #include "help_dialogs.h"
+#include "language_menu.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "panels/patch_panel.h"
@@ -314,6 +315,8 @@ void MainWindow::createMenus() {
     for (QDockWidget* dock : findChildren<QDockWidget*>()) {
         view->addAction(dock->toggleViewAction());
     }
+    view->addSeparator();
+    addLanguageMenu(view, m_workspace);
 
     const std::pair<QAction*, const char*> icons[] = {
         {newAction, "new"},       {open, "open"},   {save, "save"},
