@@ -2,6 +2,7 @@
 
 #include "dashed_line.h"
 #include "fabrication_report.h"
+#include "pattern_legend.h"
 
 #include <QFontMetricsF>
 #include <QPageLayout>
@@ -69,6 +70,7 @@ public:
     }
 
     QPainter& painter() { return m_p; }
+    double dpi() const { return m_dpi; }
 
 private:
     QPainter& m_p;
@@ -166,6 +168,7 @@ void drawPieces(PagePainter& pages, const model::CuttingPattern& pattern,
             p.drawText(QPointF(-0.5 * width, 0.0), text);
             p.restore();
         }
+        paintFoldAngles(p, pattern.pieces[std::size_t(index)], visible, pages.dpi());
     }
 }
 
@@ -190,7 +193,7 @@ void registrationMark(QPainter& p, const QPointF& c) {
 // outer edge of the line measures 50 mm and 1 inch), a large label, where the page belongs and
 // a note.
 void paintBand(PagePainter& pages, const PagePlan& plan, const QString& label, const QString& where,
-               const QString& note) {
+               const QString& note, const model::CuttingPattern* legendOf = nullptr) {
     QPainter& p = pages.painter();
     const QPointF band(plan.bandOrigin.x, plan.bandOrigin.y);
     const double line = 0.3;
@@ -222,6 +225,9 @@ void paintBand(PagePainter& pages, const PagePlan& plan, const QString& label, c
     pages.text(
         QRectF(box.topLeft() + QPointF(0.0, y + 8.0), QSizeF(box.width(), box.height() - y - 8.0)),
         3.0, note, Qt::AlignLeft | Qt::AlignTop);
+    if (legendOf != nullptr) {
+        paintLineLegend(p, box, *legendOf, pages.dpi());
+    }
 }
 
 void paintReportPage(PagePainter& pages, const PagePlan& plan, const FabricationReport& report,
@@ -445,7 +451,8 @@ void paintTile(PagePainter& pages, const model::CuttingPattern& pattern, const P
                              "measure 50 mm and 1 inch. Trim at the crop marks, overlap the "
                              "shaded strip, align the registration marks.")
                   .arg(pageNumber)
-                  .arg(pageCount));
+                  .arg(pageCount),
+              &pattern);
 }
 
 int reportPageCount(const model::CuttingPattern& pattern, const PagePlan& plan) {
