@@ -156,6 +156,64 @@
     </message>
 </context>
 <context>
+    <name>LanguageMenu</name>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="30"/>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="31"/>
+        <source>The interface will use this language from the next start of DevSurf.</source>
+        <translation>Die Oberfläche verwendet diese Sprache ab dem nächsten Start von DevSurf.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="37"/>
+        <source>&amp;Restart Now</source>
+        <translation>Jetzt &amp;neu starten</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="40"/>
+        <source>Save your changes and restart DevSurf to use it now.</source>
+        <translation>Speichern Sie Ihre Änderungen und starten Sie DevSurf neu, um sie jetzt zu verwenden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="42"/>
+        <source>&amp;Later</source>
+        <translation>&amp;Später</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="42"/>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="60"/>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="68"/>
+        <source>&amp;System Language</source>
+        <translation>Sprache des &amp;Systems</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="69"/>
+        <source>&amp;English</source>
+        <translation>&amp;Englisch (English)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="70"/>
+        <source>&amp;German (Deutsch)</source>
+        <translation>&amp;Deutsch</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="71"/>
+        <source>&amp;Japanese (日本語)</source>
+        <translation>&amp;Japanisch (日本語)</translation>
+    </message>
+</context>
+<context>
     <name>MoveVerticesCommand</name>
     <message>
         <location filename="../model/document/commands/move_vertices_command.cpp" line="20"/>
@@ -192,22 +250,22 @@
 <context>
     <name>OutputProblem</name>
     <message>
-        <location filename="../app/gui/output_problem_text.cpp" line="14"/>
+        <location filename="../app/gui/output_problem_text.cpp" line="16"/>
         <source>“%1” is the project file of this design: exporting over it would destroy the design. Choose another file name.</source>
         <translation>„%1“ ist die Projektdatei dieses Entwurfs: Ein Export darüber würde den Entwurf zerstören. Wählen Sie einen anderen Dateinamen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/output_problem_text.cpp" line="19"/>
+        <location filename="../app/gui/output_problem_text.cpp" line="21"/>
         <source>“%1” is a folder. Choose a file name.</source>
         <translation>„%1“ ist ein Ordner. Wählen Sie einen Dateinamen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/output_problem_text.cpp" line="22"/>
+        <location filename="../app/gui/output_problem_text.cpp" line="24"/>
         <source>“%1” is a device, pipe or socket, not a file. Choose a file name.</source>
         <translation>„%1“ ist ein Gerät, eine Pipe oder ein Socket, keine Datei. Wählen Sie einen Dateinamen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/output_problem_text.cpp" line="31"/>
+        <location filename="../app/gui/output_problem_text.cpp" line="43"/>
         <source>There is not enough memory to open “%1”.</source>
         <translation>Es ist nicht genug Speicher vorhanden, um „%1“ zu öffnen.</translation>
     </message>
@@ -521,7 +579,7 @@
     <message>
         <location filename="../app/text/problem_text.cpp" line="197"/>
         <source>No edge was given to relabel.</source>
-        <translation>Es wurde keine Kante zum Umbenennen angegeben.</translation>
+        <translation>Es wurde keine Kante angegeben, deren Kennzeichnung (R/S) geändert werden soll.</translation>
     </message>
     <message>
         <location filename="../app/text/problem_text.cpp" line="199"/>
@@ -670,27 +728,27 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="35"/>
         <source>Laser bed 600 × 400 mm</source>
         <translation>Laserbett 600 × 400 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="38"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="36"/>
         <source>A4 (210 × 297 mm)</source>
         <translation>A4 (210 × 297 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="39"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
         <source>A3 (297 × 420 mm)</source>
         <translation>A3 (297 × 420 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="40"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="38"/>
         <source>Letter (8.5 × 11 in)</source>
         <translation>Letter (8,5 × 11 in)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="41"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="39"/>
         <source>Custom</source>
         <translation>Benutzerdefiniert</translation>
     </message>
@@ -749,7 +807,7 @@
     <message>
         <location filename="../model/document/commands/relabel_edge_command.cpp" line="16"/>
         <source>Select at least one edge to relabel.</source>
-        <translation>Wählen Sie mindestens eine Kante zum Umbenennen aus.</translation>
+        <translation>Wählen Sie mindestens eine Kante aus, deren Kennzeichnung (R/S) geändert werden soll.</translation>
     </message>
     <message>
         <location filename="../model/document/commands/relabel_edge_command.cpp" line="23"/>
@@ -775,14 +833,14 @@
         <location filename="../model/document/commands/relabel_edge_command.cpp" line="28"/>
         <source>Relabel %n edges</source>
         <translation>
-            <numerusform>%n Kante umbenennen</numerusform>
-            <numerusform>%n Kanten umbenennen</numerusform>
+            <numerusform>Kennzeichnung von %n Kante ändern</numerusform>
+            <numerusform>Kennzeichnung von %n Kanten ändern</numerusform>
         </translation>
     </message>
     <message>
         <location filename="../model/document/commands/relabel_edge_command.cpp" line="29"/>
         <source>The edges cannot be relabelled</source>
-        <translation>Die Kanten können nicht umbenannt werden</translation>
+        <translation>Die Kennzeichnung der Kanten kann nicht geändert werden</translation>
     </message>
     <message>
         <location filename="../model/document/commands/relabel_edge_command.cpp" line="39"/>
@@ -1045,7 +1103,7 @@
     <message>
         <location filename="../app/gui/reactions/edit_reactions.cpp" line="10"/>
         <source>Deleting parts of a surface is not available yet: relabel an edge (Ctrl+L) or undo (Ctrl+Z) instead.</source>
-        <translation>Teile einer Fläche zu löschen ist noch nicht möglich: Benennen Sie stattdessen eine Kante um (Strg+L) oder machen Sie rückgängig (Strg+Z).</translation>
+        <translation>Teile einer Fläche zu löschen ist noch nicht möglich: ändern Sie stattdessen die Kennzeichnung einer Kante (Strg+L) oder machen Sie rückgängig (Strg+Z).</translation>
     </message>
 </context>
 <context>
@@ -1167,8 +1225,8 @@
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="533"/>
-        <location filename="../app/gui/drag_tool.cpp" line="546"/>
+        <location filename="../app/gui/drag_tool.cpp" line="536"/>
+        <location filename="../app/gui/drag_tool.cpp" line="550"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1306,233 +1364,238 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="114"/>
+        <location filename="../app/gui/main_window.cpp" line="116"/>
         <source>Patches</source>
         <translation>Flächenstücke</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="120"/>
+        <location filename="../app/gui/main_window.cpp" line="122"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="127"/>
+        <location filename="../app/gui/main_window.cpp" line="128"/>
+        <source>Pins</source>
+        <translation>Festgehaltene Ecken</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="138"/>
         <source>Solver</source>
         <translation>Löser</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="140"/>
+        <location filename="../app/gui/main_window.cpp" line="151"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="147"/>
+        <location filename="../app/gui/main_window.cpp" line="158"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="149"/>
+        <location filename="../app/gui/main_window.cpp" line="160"/>
         <source>&amp;New from Example…</source>
         <translation>&amp;Neu aus Beispiel…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="151"/>
+        <location filename="../app/gui/main_window.cpp" line="162"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="153"/>
+        <location filename="../app/gui/main_window.cpp" line="164"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="157"/>
+        <location filename="../app/gui/main_window.cpp" line="168"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="160"/>
+        <location filename="../app/gui/main_window.cpp" line="171"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="164"/>
+        <location filename="../app/gui/main_window.cpp" line="175"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>Austausch-JSON &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="164"/>
+        <location filename="../app/gui/main_window.cpp" line="175"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="167"/>
+        <location filename="../app/gui/main_window.cpp" line="178"/>
         <source>Export &amp;3D Shape…</source>
         <translation>&amp;3D-Form exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="171"/>
+        <location filename="../app/gui/main_window.cpp" line="182"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <location filename="../app/gui/main_window.cpp" line="186"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="178"/>
+        <location filename="../app/gui/main_window.cpp" line="189"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <location filename="../app/gui/main_window.cpp" line="192"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="188"/>
+        <location filename="../app/gui/main_window.cpp" line="199"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="190"/>
+        <location filename="../app/gui/main_window.cpp" line="201"/>
         <source>Select &amp;None</source>
         <translation>Auswahl &amp;aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="191"/>
+        <location filename="../app/gui/main_window.cpp" line="202"/>
         <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="195"/>
+        <location filename="../app/gui/main_window.cpp" line="206"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <location filename="../app/gui/main_window.cpp" line="208"/>
         <source>&amp;3D View</source>
         <translation>&amp;3D-Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <location filename="../app/gui/main_window.cpp" line="208"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="199"/>
+        <location filename="../app/gui/main_window.cpp" line="210"/>
         <source>&amp;Development View</source>
         <translation>&amp;Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="199"/>
+        <location filename="../app/gui/main_window.cpp" line="210"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="211"/>
         <source>3D &amp;and Development</source>
         <translation>3D &amp;und Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="201"/>
+        <location filename="../app/gui/main_window.cpp" line="212"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="205"/>
+        <location filename="../app/gui/main_window.cpp" line="216"/>
         <source>&amp;Control Polygons</source>
         <translation>&amp;Kontrollpolygone</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="205"/>
+        <location filename="../app/gui/main_window.cpp" line="216"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="206"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>&amp;Vertices</source>
         <translation>&amp;Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207"/>
+        <location filename="../app/gui/main_window.cpp" line="218"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="211"/>
+        <location filename="../app/gui/main_window.cpp" line="222"/>
         <source>&amp;Fit All</source>
         <translation>&amp;Alles zeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="211"/>
+        <location filename="../app/gui/main_window.cpp" line="222"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="228"/>
         <source>Reset &amp;Layout</source>
         <translation>&amp;Layout zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="222"/>
+        <location filename="../app/gui/main_window.cpp" line="233"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <location filename="../app/gui/main_window.cpp" line="236"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
-        <translation>Kante &amp;umbenennen (R ↔ S)</translation>
+        <translation>Kanten&amp;kennzeichnung ändern (R ↔ S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <location filename="../app/gui/main_window.cpp" line="236"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="227"/>
+        <location filename="../app/gui/main_window.cpp" line="238"/>
         <source>Add &amp;Crease…</source>
         <translation>&amp;Falz einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="230"/>
+        <location filename="../app/gui/main_window.cpp" line="241"/>
         <source>Add R&amp;uling…</source>
         <translation>&amp;Erzeugende einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="243"/>
+        <location filename="../app/gui/main_window.cpp" line="254"/>
         <source>&amp;Pin Vertices</source>
         <translation>Ecken &amp;festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="244"/>
+        <location filename="../app/gui/main_window.cpp" line="255"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="246"/>
+        <location filename="../app/gui/main_window.cpp" line="257"/>
         <source>U&amp;npin Vertices</source>
         <translation>Ecken &amp;freigeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="247"/>
+        <location filename="../app/gui/main_window.cpp" line="258"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="249"/>
+        <location filename="../app/gui/main_window.cpp" line="261"/>
         <source>Hold the &amp;Sheet</source>
         <translation>&amp;Bogen festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="250"/>
+        <location filename="../app/gui/main_window.cpp" line="262"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="376"/>
+        <location filename="../app/gui/main_window.cpp" line="390"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n Fläche</numerusform>
@@ -1540,7 +1603,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="377"/>
+        <location filename="../app/gui/main_window.cpp" line="391"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -1548,7 +1611,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="378"/>
+        <location filename="../app/gui/main_window.cpp" line="392"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -1556,7 +1619,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="379"/>
+        <location filename="../app/gui/main_window.cpp" line="393"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n ausgewählt</numerusform>
@@ -1564,77 +1627,77 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="228"/>
+        <location filename="../app/gui/main_window.cpp" line="239"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="242"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="233"/>
+        <location filename="../app/gui/main_window.cpp" line="244"/>
         <source>Re&amp;fine Curves</source>
         <translation>Kurven &amp;verfeinern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="234"/>
+        <location filename="../app/gui/main_window.cpp" line="245"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="240"/>
+        <location filename="../app/gui/main_window.cpp" line="251"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>Ecken &amp;verschieben oder drehen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="240"/>
+        <location filename="../app/gui/main_window.cpp" line="251"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="279"/>
+        <location filename="../app/gui/main_window.cpp" line="291"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="280"/>
+        <location filename="../app/gui/main_window.cpp" line="292"/>
         <source>&amp;User Manual</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="287"/>
+        <location filename="../app/gui/main_window.cpp" line="299"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="293"/>
+        <location filename="../app/gui/main_window.cpp" line="305"/>
         <source>&amp;About DevSurf</source>
         <translation>&amp;Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="295"/>
+        <location filename="../app/gui/main_window.cpp" line="307"/>
         <source>About DevSurf</source>
         <translation>Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="296"/>
+        <location filename="../app/gui/main_window.cpp" line="308"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen mit Spline-Torsen (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="339"/>
+        <location filename="../app/gui/main_window.cpp" line="353"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="361"/>
+        <location filename="../app/gui/main_window.cpp" line="375"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="362"/>
+        <location filename="../app/gui/main_window.cpp" line="376"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
@@ -2016,237 +2079,237 @@
 <context>
     <name>devsurf::app::PatternExportDialog</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="86"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="84"/>
         <source>DXF drawing (*.dxf)</source>
         <translation>DXF-Zeichnung (*.dxf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="88"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="86"/>
         <source>SVG image (*.svg)</source>
         <translation>SVG-Bild (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="90"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="88"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF-Dokument (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="92"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="90"/>
         <source>FOLD crease pattern (*.fold)</source>
         <translation>FOLD-Faltmuster (*.fold)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="342"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="351"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="98"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="345"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="353"/>
         <source>Export Cutting Pattern</source>
         <translation>Schnittmuster exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="102"/>
         <source>DXF (laser and plotter cutters)</source>
         <translation>DXF (Laser- und Plotterschneider)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="102"/>
         <source>SVG (vinyl and paper cutters)</source>
         <translation>SVG (Folien- und Papierschneider)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
         <source>PDF (print at 1:1, tiled)</source>
         <translation>PDF (Druck 1:1, gekachelt)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
         <source>FOLD (origami simulators)</source>
         <translation>FOLD (Origami-Simulatoren)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="106"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="108"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="106"/>
         <source>&amp;Polylines</source>
         <translation>&amp;Polylinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="109"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="107"/>
         <source>S&amp;plines</source>
         <translation>S&amp;plines</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="116"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="114"/>
         <source>DXF &amp;R12 (for old cutter software)</source>
         <translation>DXF &amp;R12 (für alte Schneidsoftware)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="118"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="116"/>
         <source>Curves:</source>
         <translation>Kurven:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="142"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="158"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="122"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="140"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="159"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="123"/>
         <source>&amp;Tolerance:</source>
         <translation>&amp;Toleranz:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
         <source>Cut</source>
         <translation>Schnitt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
         <source>Mountain</source>
         <translation>Berg</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
         <source>Valley</source>
         <translation>Tal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Crease</source>
         <translation>Falz</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Rulings (score)</source>
         <translation>Erzeugende (ritzen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Seam</source>
         <translation>Naht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="130"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Labels</source>
         <translation>Beschriftungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="138"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="136"/>
         <source>Layers:</source>
         <translation>Ebenen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="143"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="141"/>
         <source>as &amp;glue tabs</source>
         <translation>als &amp;Klebelaschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="147"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="146"/>
         <source>&amp;Seam allowance:</source>
         <translation>&amp;Nahtzugabe:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="165"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="166"/>
         <source>S&amp;heet:</source>
         <translation>&amp;Bogen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="171"/>
         <source>A4</source>
         <translation>A4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="171"/>
         <source>A3</source>
         <translation>A3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="171"/>
         <source>Letter</source>
         <translation>Letter</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="169"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
         <source>P&amp;aper (PDF):</source>
         <translation>P&amp;apier (PDF):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="179"/>
         <source>Piece</source>
         <translation>Teil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="179"/>
         <source>Sheet</source>
         <translation>Bogen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="179"/>
         <source>Size (mm)</source>
         <translation>Größe (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="180"/>
         <source>Area (mm²)</source>
         <translation>Fläche (mm²)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="180"/>
         <source>Isometry error (mm)</source>
         <translation>Isometriefehler (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="181"/>
         <source>Fits sheet</source>
         <translation>Passt auf Bogen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="181"/>
         <source>Overlaps</source>
         <translation>Überlappungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="182"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="185"/>
         <source>Fabrication report</source>
         <translation>Fertigungsbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="189"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="192"/>
         <source>&amp;Export…</source>
         <translation>&amp;Exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="300"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
         <source>itself</source>
         <translation>sich selbst</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="307"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="312"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="310"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="315"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="308"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="311"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="311"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="314"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="311"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="314"/>
         <source>no</source>
         <translation>nein</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="317"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="320"/>
         <source>%n piece(s)</source>
         <translation>
             <numerusform>%n Teil</numerusform>
@@ -2254,7 +2317,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="318"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="321"/>
         <source>%n sheet(s)</source>
         <translation>
             <numerusform>%n Bogen</numerusform>
@@ -2262,34 +2325,34 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="320"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="323"/>
         <source>largest isometry error %1 mm</source>
         <translation>größter Isometriefehler %1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="340"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="343"/>
         <source>Some pieces overlap and cannot be cut as laid out. Export anyway?</source>
         <translation>Einige Teile überlappen sich und können so nicht geschnitten werden. Trotzdem exportieren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="341"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="344"/>
         <source>The pattern has problems (see the report). Export anyway?</source>
         <translation>Das Schnittmuster hat Probleme (siehe Bericht). Trotzdem exportieren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="382"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
         <source>Writing the cutting pattern…</source>
         <translation>Das Schnittmuster wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="382"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="368"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="393"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="364"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="374"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="389"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
@@ -2328,6 +2391,39 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::PinsPanel</name>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="22"/>
+        <source>Unpin</source>
+        <translation>Freigeben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="25"/>
+        <source>No vertex is pinned. Select vertices and choose Tools ▸ Pin Vertices (Ctrl+K): the solver then never moves them.</source>
+        <translation>Keine Ecke ist festgehalten. Wählen Sie Ecken aus und dann Werkzeuge ▸ Ecken festhalten (Ctrl+K): Der Löser bewegt sie dann nie.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="28"/>
+        <source>The pinned vertices: the solver never moves them. Selecting a row selects its vertex in the views.</source>
+        <translation>Die festgehaltenen Ecken: Der Löser bewegt sie nie. Eine Zeile auswählen wählt ihre Ecke in den Ansichten aus.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="31"/>
+        <source>Release the selected pinned vertices (one undo step).</source>
+        <translation>Die ausgewählten festgehaltenen Ecken freigeben (ein Rückgängig-Schritt).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="65"/>
+        <source>Vertex %1</source>
+        <translation>Ecke %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="66"/>
+        <source>Surface %1, vertex %2</source>
+        <translation>Fläche %1, Ecke %2</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::PrintPatternReaction</name>
     <message>
         <location filename="../app/gui/reactions/pattern_reactions.cpp" line="109"/>
@@ -2361,17 +2457,17 @@
         <translation>Grad %1, C%2, %3 Intervalle</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="143"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="150"/>
         <source>&lt;b&gt;Vertex %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;Ecke %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="154"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="162"/>
         <source>&lt;b&gt;Edge %1&lt;/b&gt; from vertex %2 to vertex %3&lt;br&gt;</source>
         <translation>&lt;b&gt;Kante %1&lt;/b&gt; von Ecke %2 zu Ecke %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="117"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
         <source>Nothing selected.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
         <translation>Nichts ausgewählt.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Klicken Sie auf eine Ecke, Kante oder ein Flächenstück, um es auszuwählen; Umschalt-Klick erweitert die Auswahl.&lt;/i&gt;</translation>
     </message>
@@ -2395,9 +2491,14 @@
         <source>Not folded.</source>
         <translation>Nicht gefaltet.</translation>
     </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="78"/>
+        <source>&lt;b&gt;Pinned&lt;/b&gt;: the solver never moves this vertex. Tools ▸ Unpin Vertices (Ctrl+Shift+K) releases it.</source>
+        <translation>&lt;b&gt;Festgehalten&lt;/b&gt;: Der Löser bewegt diese Ecke nie. Werkzeuge ▸ Ecken freigeben (Ctrl+Shift+K) gibt sie frei.</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="119"/>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="129"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="126"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="136"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -2405,7 +2506,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="120"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="127"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -2413,12 +2514,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="127"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="134"/>
         <source>Selected: %1, %2, %3.</source>
         <translation>Ausgewählt: %1, %2, %3.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="128"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="135"/>
         <source>%n vertex(es)</source>
         <translation>
             <numerusform>%n Ecke</numerusform>
@@ -2426,7 +2527,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="128"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="135"/>
         <source>%n edge(s)</source>
         <translation>
             <numerusform>%n Kante</numerusform>
@@ -2434,7 +2535,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="159"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="167"/>
         <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
         <translation>
             <numerusform>Spline-Kurve (S), %1, %n Kontrollpunkt.&lt;br&gt;</numerusform>
@@ -2442,27 +2543,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="165"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="173"/>
         <source>A boundary curve of patch %1.</source>
         <translation>Eine Randkurve des Flächenstücks %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="169"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="177"/>
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>Erzeugende (R), eine Strecke der Länge %1 mm.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="176"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="184"/>
         <source>Smooth between patches %1 and %2: the surface stays smooth across it.</source>
         <translation>Glatt zwischen den Flächenstücken %1 und %2: Die Fläche bleibt über sie hinweg glatt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="178"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="186"/>
         <source>Sharp between patches %1 and %2: the surface may fold along it.</source>
         <translation>Scharf zwischen den Flächenstücken %1 und %2: Die Fläche darf entlang ihr falten.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="188"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="196"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;Flächenstück %1&lt;/b&gt;: %2&lt;br&gt;Kantenbeschriftung entlang des Flächenstücks: %3&lt;br&gt;%n Ecke.</numerusform>
@@ -2470,7 +2571,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="227"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="235"/>
         <source>Cannot move</source>
         <translation>Verschieben nicht möglich</translation>
     </message>
@@ -2493,7 +2594,7 @@
     <message>
         <location filename="../app/gui/reactions/tool_reactions.cpp" line="115"/>
         <source>Cannot relabel: %1</source>
-        <translation>Umbenennen nicht möglich: %1</translation>
+        <translation>Kennzeichnung kann nicht geändert werden: %1</translation>
     </message>
     <message>
         <location filename="../app/gui/reactions/tool_reactions.cpp" line="119"/>
@@ -2503,7 +2604,7 @@
     <message>
         <location filename="../app/gui/reactions/tool_reactions.cpp" line="126"/>
         <source>Cannot relabel</source>
-        <translation>Umbenennen nicht möglich</translation>
+        <translation>Kennzeichnung kann nicht geändert werden</translation>
     </message>
 </context>
 <context>
@@ -2586,156 +2687,156 @@
 <context>
     <name>devsurf::app::ShapeExportDialog</name>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="37"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="35"/>
         <source>The design has no surface to export.</source>
         <translation>Der Entwurf hat keine Fläche, die exportiert werden könnte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="39"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="37"/>
         <source>Patch %1 of surface %2 cannot be written as an exact surface.</source>
         <translation>Flächenstück %1 der Fläche %2 kann nicht als exakte Fläche geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="44"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="42"/>
         <source>The shape could not be translated into this format. Try another format.</source>
         <translation>Die Form ließ sich nicht in dieses Format übertragen. Versuchen Sie ein anderes Format.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="57"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="132"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="196"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="222"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="55"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="130"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="187"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="213"/>
         <source>Export 3D Shape</source>
         <translation>3D-Form exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="58"/>
         <source>STEP AP242: exact surfaces</source>
         <translation>STEP AP242: exakte Flächen</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="58"/>
         <source>STEP AP214: exact surfaces</source>
         <translation>STEP AP214: exakte Flächen</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="59"/>
         <source>IGES: exact surfaces</source>
         <translation>IGES: exakte Flächen</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="59"/>
         <source>OBJ mesh: a group per patch</source>
         <translation>OBJ-Netz: eine Gruppe je Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
         <source>STL mesh (binary)</source>
         <translation>STL-Netz (binär)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
         <source>PLY mesh (binary)</source>
         <translation>PLY-Netz (binär)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="69"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="76"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="67"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="74"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="70"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="68"/>
         <source>How far the mesh&apos;s triangles may stray from the exact surface.</source>
         <translation>Wie weit die Dreiecke des Netzes von der exakten Fläche abweichen dürfen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="77"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="75"/>
         <source>none (the surface)</source>
         <translation>keine (die Fläche)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="79"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="77"/>
         <source>A sheet of this thickness for 3D printing: both sides offset by half of it, the rim closed.</source>
         <translation>Eine Platte dieser Dicke für den 3D-Druck: beide Seiten um die Hälfte versetzt, der Rand geschlossen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="85"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="83"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="86"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="84"/>
         <source>Chord &amp;tolerance:</source>
         <translation>Sehnen&amp;toleranz:</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="87"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="85"/>
         <source>T&amp;hickness:</source>
         <translation>&amp;Dicke:</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="89"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="87"/>
         <source>&amp;Export…</source>
         <translation>&amp;Exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="122"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="120"/>
         <source>A triangle mesh for renderers, slicers and mesh tools; watertight wherever the design is.</source>
         <translation>Ein Dreiecksnetz für Renderer, Slicer und Netzwerkzeuge; wasserdicht überall dort, wo der Entwurf es ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="122"/>
         <source>Every patch as its exact B-spline surface, sewn into one shell per surface, in millimetres, faces named after their patches.</source>
         <translation>Jedes Flächenstück als seine exakte B-Spline-Fläche, je Fläche zu einer Schale vernäht, in Millimetern, die Flächen nach ihren Flächenstücken benannt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="134"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="131"/>
         <source>%1 files (*.%2)</source>
         <translation>%1-Dateien (*.%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="150"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="158"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="161"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="163"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="141"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="149"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="152"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="154"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="169"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="160"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="202"/>
         <source>Writing the 3D shape…</source>
         <translation>Die 3D-Form wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="169"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="160"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="202"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="187"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="178"/>
         <source>surface %1, edge %2 (%3 mm apart)</source>
         <translation>Fläche %1, Kante %2 (%3 mm auseinander)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="193"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="184"/>
         <source>faces: %1, shells: %2</source>
         <translation>Flächen: %1, Schalen: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="197"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="188"/>
         <source>The shape was written, but some patches could not be sewn together and stay apart in the file: %1.</source>
         <translation>Die Form wurde geschrieben, aber einige Flächenstücke ließen sich nicht vernähen und bleiben in der Datei getrennt: %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="220"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
         <source>triangles: %1</source>
         <translation>Dreiecke: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="223"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="214"/>
         <source>The mesh was written with %1 samples per curve interval, the most DevSurf writes, and is coarser than the tolerance asked for.</source>
         <translation>Das Netz wurde mit %1 Abtastpunkten je Kurvenintervall geschrieben, dem Höchstwert von DevSurf, und ist gröber als die verlangte Toleranz.</translation>
     </message>
@@ -2900,22 +3001,22 @@
         <translation>%1 fehlgeschlagen: %2 Nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="201"/>
+        <location filename="../app/gui/solve_controller.cpp" line="206"/>
         <source>the design changed</source>
         <translation>der Entwurf hat sich geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="208"/>
+        <location filename="../app/gui/solve_controller.cpp" line="213"/>
         <source>it stopped before a degenerate shape</source>
         <translation>es hielt vor einer entarteten Form an</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="211"/>
+        <location filename="../app/gui/solve_controller.cpp" line="216"/>
         <source>no convergence, residual %1</source>
         <translation>keine Konvergenz, Residuum %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="214"/>
+        <location filename="../app/gui/solve_controller.cpp" line="219"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>an %n Stelle zurückgefaltet</numerusform>
@@ -2923,117 +3024,117 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="217"/>
+        <location filename="../app/gui/solve_controller.cpp" line="222"/>
         <source>a development overlapping itself</source>
         <translation>eine sich selbst überlappende Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="220"/>
+        <location filename="../app/gui/solve_controller.cpp" line="225"/>
         <source>collapsed strips</source>
         <translation>zusammengefallene Streifen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="223"/>
+        <location filename="../app/gui/solve_controller.cpp" line="228"/>
         <source>a shape too degenerate to measure</source>
         <translation>eine zum Messen zu entartete Form</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="247"/>
+        <location filename="../app/gui/solve_controller.cpp" line="252"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="252"/>
+        <location filename="../app/gui/solve_controller.cpp" line="257"/>
         <source>The solve was cancelled.</source>
         <translation>Das Lösen wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="255"/>
+        <location filename="../app/gui/solve_controller.cpp" line="260"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 kann nicht gelöst werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="256"/>
+        <location filename="../app/gui/solve_controller.cpp" line="261"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 kann nicht gelöst werden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="260"/>
+        <location filename="../app/gui/solve_controller.cpp" line="265"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>Das Ziel der gezogenen Ecke %1 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="261"/>
+        <location filename="../app/gui/solve_controller.cpp" line="266"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>Das Ziel des gezogenen Kontrollpunkts %1 der Kante %2 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="267"/>
+        <location filename="../app/gui/solve_controller.cpp" line="272"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 konnte nicht gelöst werden: das lineare Gleichungssystem ließ sich nicht faktorisieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="269"/>
+        <location filename="../app/gui/solve_controller.cpp" line="274"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 konnte nicht gelöst werden: eine Iteration ergab Werte, die nicht endlich sind.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="273"/>
+        <location filename="../app/gui/solve_controller.cpp" line="278"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 konnte nicht gelöst werden: der Löser lieferte einen Wert, der nicht endlich ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="279"/>
+        <location filename="../app/gui/solve_controller.cpp" line="284"/>
         <source>(Solver: %1)</source>
         <translation>(Löser: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="294"/>
+        <location filename="../app/gui/solve_controller.cpp" line="299"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="298"/>
+        <location filename="../app/gui/solve_controller.cpp" line="303"/>
         <source>Failed: %1</source>
         <translation>Fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="312"/>
+        <location filename="../app/gui/solve_controller.cpp" line="317"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="316"/>
+        <location filename="../app/gui/solve_controller.cpp" line="321"/>
         <source>tolerance reached</source>
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="316"/>
+        <location filename="../app/gui/solve_controller.cpp" line="321"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="323"/>
+        <location filename="../app/gui/solve_controller.cpp" line="328"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="331"/>
+        <location filename="../app/gui/solve_controller.cpp" line="336"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="337"/>
+        <location filename="../app/gui/solve_controller.cpp" line="342"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; das Beibehalten der Längen schlug fehl (%1), daher wurde das Ziehen mit Dehnen des Blatts wiederholt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="345"/>
+        <location filename="../app/gui/solve_controller.cpp" line="350"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; vom Bogen um %1 mm zurückgehalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="357"/>
+        <location filename="../app/gui/solve_controller.cpp" line="362"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n Flächenstück faltet sich auf sich selbst zurück, wo die Fläche sich selbst überlappt: %1</numerusform>
@@ -3041,7 +3142,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="372"/>
+        <location filename="../app/gui/solve_controller.cpp" line="377"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; die Abwicklung überlappt sich selbst an %n Flächenstück (%1) und lässt sich nicht aus einem Bogen schneiden</numerusform>
@@ -3049,32 +3150,32 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="378"/>
+        <location filename="../app/gui/solve_controller.cpp" line="383"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="383"/>
+        <location filename="../app/gui/solve_controller.cpp" line="388"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="387"/>
+        <location filename="../app/gui/solve_controller.cpp" line="392"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="396"/>
+        <location filename="../app/gui/solve_controller.cpp" line="401"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="446"/>
+        <location filename="../app/gui/solve_controller.cpp" line="451"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>Lösen hat den Entwurf unverändert gelassen: das Lösen machte ihn weniger abwickelbar (größtes Abwickelbarkeitsresiduum %1 → %2).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="469"/>
+        <location filename="../app/gui/solve_controller.cpp" line="474"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n Fläche unverändert gelassen: das Lösen machte sie weniger abwickelbar.</numerusform>
@@ -3082,12 +3183,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="481"/>
+        <location filename="../app/gui/solve_controller.cpp" line="486"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 verworfen: Der Entwurf hat sich während des Lösens geändert; nichts wurde bewegt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="499"/>
+        <location filename="../app/gui/solve_controller.cpp" line="495"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, abwickelbar gehalten: %n Iteration, größtes Bedingungsresiduum %2.</numerusform>
@@ -3096,37 +3197,37 @@
     </message>
     <message>
         <location filename="../app/gui/solve_controller.cpp" line="178"/>
-        <location filename="../app/gui/solve_controller.cpp" line="438"/>
+        <location filename="../app/gui/solve_controller.cpp" line="443"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="230"/>
+        <location filename="../app/gui/solve_controller.cpp" line="235"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt auf der Geraden zwischen den festgehaltenen Ecken %2 und %3, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="237"/>
+        <location filename="../app/gui/solve_controller.cpp" line="242"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt im Dreieck der festgehaltenen Ecken %2, %3 und %4, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="319"/>
+        <location filename="../app/gui/solve_controller.cpp" line="324"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>beim letzten gültigen Zustand angehalten, bevor eine Erzeugende, eine Kurve oder ein Flächenstück kollabierte</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="327"/>
+        <location filename="../app/gui/solve_controller.cpp" line="332"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (endete bei Iteration %1, der mit dem kleinsten Residuum)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="415"/>
+        <location filename="../app/gui/solve_controller.cpp" line="420"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="465"/>
+        <location filename="../app/gui/solve_controller.cpp" line="470"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>
@@ -3137,62 +3238,67 @@
 <context>
     <name>devsurf::app::SolverPanel</name>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="14"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="19"/>
         <source>Select Patches to Check</source>
         <translation>Zu prüfende Flächenstücke auswählen</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="18"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="52"/>
         <source>No solve yet. Tools ▸ Solve (Ctrl+Return) makes the design developable; the Drag tool keeps it developable while you pull vertices.</source>
         <translation>Noch nicht gelöst. Werkzeuge ▸ Lösen (Ctrl+Return) macht den Entwurf abwickelbar; das Ziehwerkzeug hält ihn abwickelbar, während Sie Ecken ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="24"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
         <source>Surf.</source>
         <translation>Fl.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="24"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
         <source>Iter.</source>
         <translation>It.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="24"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
         <source>Residual</source>
         <translation>Residuum</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="24"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="25"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="27"/>
         <source>Surface</source>
         <translation>Fläche</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="25"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="27"/>
         <source>Iteration</source>
         <translation>Iteration</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="28"/>
         <source>Largest constraint residual after the iteration</source>
         <translation>Größtes Residuum der Bedingungen nach der Iteration</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="27"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="29"/>
         <source>Time of the iteration in milliseconds</source>
         <translation>Dauer der Iteration in Millisekunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="38"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="40"/>
         <source>Selects the patches the last solve names: the least developable ones and those that fold over onto themselves</source>
         <translation>Wählt die Flächenstücke aus, die das letzte Lösen nennt: die am wenigsten abwickelbaren und die, die sich auf sich selbst zurückfalten</translation>
     </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="88"/>
+        <source>No solve of the design as it is now: it was edited, or a step undone or redone, since the last report. Tools ▸ Solve (Ctrl+Return) reports on it.</source>
+        <translation>Kein Lösen des Entwurfs in seinem jetzigen Zustand: Er wurde seit dem letzten Bericht bearbeitet, oder ein Schritt wurde rückgängig gemacht oder wiederhergestellt. Werkzeuge ▸ Lösen (Ctrl+Return) berichtet über ihn.</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="55"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="120"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n Iteration in %3 ms.</numerusform>
@@ -3200,12 +3306,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="79"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="144"/>
         <source>&lt;br&gt;Crease conditions, sampled along the creases: largest residual %1.</source>
         <translation>&lt;br&gt;Falzbedingungen, entlang der Falze abgetastet: größtes Residuum %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="86"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="151"/>
         <source>&lt;br&gt;Tolerance not reached. Least developable patches (normalised residual): %1</source>
         <translation>&lt;br&gt;Toleranz nicht erreicht. Am wenigsten abwickelbare Flächenstücke (normiertes Residuum): %1</translation>
     </message>
@@ -3386,57 +3492,62 @@
         <translation>Fläche %1 ist ungültig und wird nicht angezeigt.</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="30"/>
+        <location filename="../views/scene_view_input.cpp" line="31"/>
+        <source>vertex %1, pinned</source>
+        <translation>Ecke %1, festgehalten</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view_input.cpp" line="32"/>
         <source>vertex %1</source>
         <translation>Ecke %1</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="39"/>
+        <location filename="../views/scene_view_input.cpp" line="41"/>
         <source>edge %1 (R)</source>
         <translation>Kante %1 (R)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="41"/>
+        <location filename="../views/scene_view_input.cpp" line="43"/>
         <source>edge %1 (S, crease)</source>
         <translation>Kante %1 (S, Falz)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="43"/>
+        <location filename="../views/scene_view_input.cpp" line="45"/>
         <source>edge %1 (S, boundary)</source>
         <translation>Kante %1 (S, Rand)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="54"/>
+        <location filename="../views/scene_view_input.cpp" line="56"/>
         <source>strip (SRSR)</source>
         <translation>Streifen (SRSR)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="57"/>
+        <location filename="../views/scene_view_input.cpp" line="59"/>
         <source>pointed strip (SRS)</source>
         <translation>spitzer Streifen (SRS)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="60"/>
+        <location filename="../views/scene_view_input.cpp" line="62"/>
         <source>cone (SRR)</source>
         <translation>Kegel (SRR)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="63"/>
+        <location filename="../views/scene_view_input.cpp" line="65"/>
         <source>planar patch</source>
         <translation>ebenes Flächenstück</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="66"/>
+        <location filename="../views/scene_view_input.cpp" line="68"/>
         <source>invalid patch</source>
         <translation>ungültiges Flächenstück</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="69"/>
+        <location filename="../views/scene_view_input.cpp" line="71"/>
         <source>patch %1 (%2)</source>
         <translation>Flächenstück %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="74"/>
+        <location filename="../views/scene_view_input.cpp" line="76"/>
         <source>surface %1: %2</source>
         <translation>Fläche %1: %2</translation>
     </message>
@@ -3490,17 +3601,17 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="28"/>
+        <location filename="../app/gui/main.cpp" line="29"/>
         <source>Design developable surfaces and curved-crease origami.</source>
         <translation>Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="32"/>
+        <location filename="../app/gui/main.cpp" line="33"/>
         <source>A project file to open.</source>
         <translation>Eine zu öffnende Projektdatei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="35"/>
+        <location filename="../app/gui/main.cpp" line="36"/>
         <source>Start with a built-in example.</source>
         <translation>Mit einem eingebauten Beispiel beginnen.</translation>
     </message>

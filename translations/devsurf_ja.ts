@@ -154,6 +154,64 @@
     </message>
 </context>
 <context>
+    <name>LanguageMenu</name>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="30"/>
+        <source>Language</source>
+        <translation>言語</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="31"/>
+        <source>The interface will use this language from the next start of DevSurf.</source>
+        <translation>次回 DevSurf を起動したときから、この言語で表示します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="37"/>
+        <source>&amp;Restart Now</source>
+        <translation>今すぐ再起動(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="40"/>
+        <source>Save your changes and restart DevSurf to use it now.</source>
+        <translation>今すぐ使うには、変更を保存して DevSurf を再起動してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="42"/>
+        <source>&amp;Later</source>
+        <translation>後で(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="42"/>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="60"/>
+        <source>&amp;Language</source>
+        <translation>言語(&amp;L)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="68"/>
+        <source>&amp;System Language</source>
+        <translation>システムの言語(&amp;S)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="69"/>
+        <source>&amp;English</source>
+        <translation>英語 (English)(&amp;E)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="70"/>
+        <source>&amp;German (Deutsch)</source>
+        <translation>ドイツ語 (Deutsch)(&amp;G)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/language_menu.cpp" line="71"/>
+        <source>&amp;Japanese (日本語)</source>
+        <translation>日本語(&amp;J)</translation>
+    </message>
+</context>
+<context>
     <name>MoveVerticesCommand</name>
     <message>
         <location filename="../model/document/commands/move_vertices_command.cpp" line="20"/>
@@ -188,22 +246,22 @@
 <context>
     <name>OutputProblem</name>
     <message>
-        <location filename="../app/gui/output_problem_text.cpp" line="14"/>
+        <location filename="../app/gui/output_problem_text.cpp" line="16"/>
         <source>“%1” is the project file of this design: exporting over it would destroy the design. Choose another file name.</source>
         <translation>「%1」はこのデザインのプロジェクトファイルです。上書きしてエクスポートするとデザインが失われます。別のファイル名を選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/output_problem_text.cpp" line="19"/>
+        <location filename="../app/gui/output_problem_text.cpp" line="21"/>
         <source>“%1” is a folder. Choose a file name.</source>
         <translation>「%1」はフォルダーです。ファイル名を選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/output_problem_text.cpp" line="22"/>
+        <location filename="../app/gui/output_problem_text.cpp" line="24"/>
         <source>“%1” is a device, pipe or socket, not a file. Choose a file name.</source>
         <translation>「%1」はデバイス、パイプまたはソケットで、ファイルではありません。ファイル名を選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/output_problem_text.cpp" line="31"/>
+        <location filename="../app/gui/output_problem_text.cpp" line="43"/>
         <source>There is not enough memory to open “%1”.</source>
         <translation>「%1」を開くためのメモリが足りません。</translation>
     </message>
@@ -663,27 +721,27 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="35"/>
         <source>Laser bed 600 × 400 mm</source>
         <translation>レーザー加工機のベッド 600 × 400 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="38"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="36"/>
         <source>A4 (210 × 297 mm)</source>
         <translation>A4 (210 × 297 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="39"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
         <source>A3 (297 × 420 mm)</source>
         <translation>A3 (297 × 420 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="40"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="38"/>
         <source>Letter (8.5 × 11 in)</source>
         <translation>レター (8.5 × 11 in)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="41"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="39"/>
         <source>Custom</source>
         <translation>カスタム</translation>
     </message>
@@ -1152,8 +1210,8 @@
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="533"/>
-        <location filename="../app/gui/drag_tool.cpp" line="546"/>
+        <location filename="../app/gui/drag_tool.cpp" line="536"/>
+        <location filename="../app/gui/drag_tool.cpp" line="550"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1291,329 +1349,334 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="114"/>
+        <location filename="../app/gui/main_window.cpp" line="116"/>
         <source>Patches</source>
         <translation>パッチ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="120"/>
+        <location filename="../app/gui/main_window.cpp" line="122"/>
         <source>Properties</source>
         <translation>プロパティ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="127"/>
+        <location filename="../app/gui/main_window.cpp" line="128"/>
+        <source>Pins</source>
+        <translation>固定点</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="138"/>
         <source>Solver</source>
         <translation>ソルバー</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="140"/>
+        <location filename="../app/gui/main_window.cpp" line="151"/>
         <source>Main</source>
         <translation>メイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="147"/>
+        <location filename="../app/gui/main_window.cpp" line="158"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="149"/>
+        <location filename="../app/gui/main_window.cpp" line="160"/>
         <source>&amp;New from Example…</source>
         <translation>例から新規作成(&amp;N)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="151"/>
+        <location filename="../app/gui/main_window.cpp" line="162"/>
         <source>&amp;Open…</source>
         <translation>開く(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="153"/>
+        <location filename="../app/gui/main_window.cpp" line="164"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="157"/>
+        <location filename="../app/gui/main_window.cpp" line="168"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="160"/>
+        <location filename="../app/gui/main_window.cpp" line="171"/>
         <source>Save &amp;As…</source>
         <translation>名前を付けて保存(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="164"/>
+        <location filename="../app/gui/main_window.cpp" line="175"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>交換用 JSON をエクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="164"/>
+        <location filename="../app/gui/main_window.cpp" line="175"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="167"/>
+        <location filename="../app/gui/main_window.cpp" line="178"/>
         <source>Export &amp;3D Shape…</source>
         <translation>3D 形状をエクスポート(&amp;3)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="171"/>
+        <location filename="../app/gui/main_window.cpp" line="182"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <location filename="../app/gui/main_window.cpp" line="186"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="178"/>
+        <location filename="../app/gui/main_window.cpp" line="189"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <location filename="../app/gui/main_window.cpp" line="192"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="188"/>
+        <location filename="../app/gui/main_window.cpp" line="199"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="190"/>
+        <location filename="../app/gui/main_window.cpp" line="201"/>
         <source>Select &amp;None</source>
         <translation>選択を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="191"/>
+        <location filename="../app/gui/main_window.cpp" line="202"/>
         <location filename="../app/gui/main_window_solver.cpp" line="98"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="195"/>
+        <location filename="../app/gui/main_window.cpp" line="206"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <location filename="../app/gui/main_window.cpp" line="208"/>
         <source>&amp;3D View</source>
         <translation>3D ビュー(&amp;3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <location filename="../app/gui/main_window.cpp" line="208"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="199"/>
+        <location filename="../app/gui/main_window.cpp" line="210"/>
         <source>&amp;Development View</source>
         <translation>展開図ビュー(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="199"/>
+        <location filename="../app/gui/main_window.cpp" line="210"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="211"/>
         <source>3D &amp;and Development</source>
         <translation>3D と展開図(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="201"/>
+        <location filename="../app/gui/main_window.cpp" line="212"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="205"/>
+        <location filename="../app/gui/main_window.cpp" line="216"/>
         <source>&amp;Control Polygons</source>
         <translation>制御多角形(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="205"/>
+        <location filename="../app/gui/main_window.cpp" line="216"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="206"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>&amp;Vertices</source>
         <translation>頂点(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207"/>
+        <location filename="../app/gui/main_window.cpp" line="218"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="211"/>
+        <location filename="../app/gui/main_window.cpp" line="222"/>
         <source>&amp;Fit All</source>
         <translation>全体を表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="211"/>
+        <location filename="../app/gui/main_window.cpp" line="222"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="228"/>
         <source>Reset &amp;Layout</source>
         <translation>レイアウトをリセット(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="222"/>
+        <location filename="../app/gui/main_window.cpp" line="233"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <location filename="../app/gui/main_window.cpp" line="236"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>辺のラベルを変更 (R ↔ S)(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <location filename="../app/gui/main_window.cpp" line="236"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="227"/>
+        <location filename="../app/gui/main_window.cpp" line="238"/>
         <source>Add &amp;Crease…</source>
         <translation>折り線を追加(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="228"/>
+        <location filename="../app/gui/main_window.cpp" line="239"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="230"/>
+        <location filename="../app/gui/main_window.cpp" line="241"/>
         <source>Add R&amp;uling…</source>
         <translation>母線を追加(&amp;U)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="242"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="233"/>
+        <location filename="../app/gui/main_window.cpp" line="244"/>
         <source>Re&amp;fine Curves</source>
         <translation>曲線を細分化(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="234"/>
+        <location filename="../app/gui/main_window.cpp" line="245"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="240"/>
+        <location filename="../app/gui/main_window.cpp" line="251"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>頂点の移動・回転(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="240"/>
+        <location filename="../app/gui/main_window.cpp" line="251"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="243"/>
+        <location filename="../app/gui/main_window.cpp" line="254"/>
         <source>&amp;Pin Vertices</source>
         <translation>頂点を固定(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="244"/>
+        <location filename="../app/gui/main_window.cpp" line="255"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="246"/>
+        <location filename="../app/gui/main_window.cpp" line="257"/>
         <source>U&amp;npin Vertices</source>
         <translation>頂点の固定を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="247"/>
+        <location filename="../app/gui/main_window.cpp" line="258"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="249"/>
+        <location filename="../app/gui/main_window.cpp" line="261"/>
         <source>Hold the &amp;Sheet</source>
         <translation>シートを保持(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="250"/>
+        <location filename="../app/gui/main_window.cpp" line="262"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="279"/>
+        <location filename="../app/gui/main_window.cpp" line="291"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="280"/>
+        <location filename="../app/gui/main_window.cpp" line="292"/>
         <source>&amp;User Manual</source>
         <translation>ユーザーマニュアル(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="287"/>
+        <location filename="../app/gui/main_window.cpp" line="299"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="293"/>
+        <location filename="../app/gui/main_window.cpp" line="305"/>
         <source>&amp;About DevSurf</source>
         <translation>DevSurf について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="295"/>
+        <location filename="../app/gui/main_window.cpp" line="307"/>
         <source>About DevSurf</source>
         <translation>DevSurf について</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="296"/>
+        <location filename="../app/gui/main_window.cpp" line="308"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;スプライン可展面による可展面と曲線折り折り紙の設計 (Tang, Bo, Wallner, Pottmann 2015)。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="339"/>
+        <location filename="../app/gui/main_window.cpp" line="353"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="361"/>
+        <location filename="../app/gui/main_window.cpp" line="375"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="362"/>
+        <location filename="../app/gui/main_window.cpp" line="376"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="376"/>
+        <location filename="../app/gui/main_window.cpp" line="390"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>曲面 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="377"/>
+        <location filename="../app/gui/main_window.cpp" line="391"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="378"/>
+        <location filename="../app/gui/main_window.cpp" line="392"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="379"/>
+        <location filename="../app/gui/main_window.cpp" line="393"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n 個選択</numerusform>
@@ -1995,278 +2058,278 @@
 <context>
     <name>devsurf::app::PatternExportDialog</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="86"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="84"/>
         <source>DXF drawing (*.dxf)</source>
         <translation>DXF 図面 (*.dxf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="88"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="86"/>
         <source>SVG image (*.svg)</source>
         <translation>SVG 画像 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="90"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="88"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文書 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="92"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="90"/>
         <source>FOLD crease pattern (*.fold)</source>
         <translation>FOLD 折り線図 (*.fold)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="342"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="351"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="98"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="345"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="353"/>
         <source>Export Cutting Pattern</source>
         <translation>型紙のエクスポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="102"/>
         <source>DXF (laser and plotter cutters)</source>
         <translation>DXF (レーザー・プロッターカッター用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="102"/>
         <source>SVG (vinyl and paper cutters)</source>
         <translation>SVG (カッティングマシン用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
         <source>PDF (print at 1:1, tiled)</source>
         <translation>PDF (原寸で印刷、分割)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
         <source>FOLD (origami simulators)</source>
         <translation>FOLD (折り紙シミュレーター用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="106"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
         <source>&amp;Format:</source>
         <translation>形式(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="108"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="106"/>
         <source>&amp;Polylines</source>
         <translation>ポリライン(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="109"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="107"/>
         <source>S&amp;plines</source>
         <translation>スプライン(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="116"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="114"/>
         <source>DXF &amp;R12 (for old cutter software)</source>
         <translation>DXF &amp;R12 (古いカッターソフト用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="118"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="116"/>
         <source>Curves:</source>
         <translation>曲線:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="142"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="158"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="122"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="140"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="159"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="123"/>
         <source>&amp;Tolerance:</source>
         <translation>許容誤差(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
         <source>Cut</source>
         <translation>切断</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
         <source>Mountain</source>
         <translation>山折り</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
         <source>Valley</source>
         <translation>谷折り</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Crease</source>
         <translation>折り線</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Rulings (score)</source>
         <translation>母線 (筋付け)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Seam</source>
         <translation>継ぎ目</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="130"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Labels</source>
         <translation>ラベル</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="138"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="136"/>
         <source>Layers:</source>
         <translation>レイヤー:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="143"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="141"/>
         <source>as &amp;glue tabs</source>
         <translation>のりしろとして(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="147"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="146"/>
         <source>&amp;Seam allowance:</source>
         <translation>縫い代(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="165"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="166"/>
         <source>S&amp;heet:</source>
         <translation>シート(&amp;H):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="171"/>
         <source>A4</source>
         <translation>A4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="171"/>
         <source>A3</source>
         <translation>A3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="171"/>
         <source>Letter</source>
         <translation>レター</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="169"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="172"/>
         <source>P&amp;aper (PDF):</source>
         <translation>用紙 (PDF)(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="179"/>
         <source>Piece</source>
         <translation>ピース</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="179"/>
         <source>Sheet</source>
         <translation>シート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="179"/>
         <source>Size (mm)</source>
         <translation>サイズ (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="180"/>
         <source>Area (mm²)</source>
         <translation>面積 (mm²)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="180"/>
         <source>Isometry error (mm)</source>
         <translation>等長誤差 (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="181"/>
         <source>Fits sheet</source>
         <translation>シートに収まる</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="181"/>
         <source>Overlaps</source>
         <translation>重なり</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="182"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="185"/>
         <source>Fabrication report</source>
         <translation>製作レポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="189"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="192"/>
         <source>&amp;Export…</source>
         <translation>エクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="300"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="303"/>
         <source>itself</source>
         <translation>自身</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="307"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="312"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="310"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="315"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="308"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="311"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="311"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="314"/>
         <source>yes</source>
         <translation>はい</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="311"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="314"/>
         <source>no</source>
         <translation>いいえ</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="317"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="320"/>
         <source>%n piece(s)</source>
         <translation>
             <numerusform>ピース %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="318"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="321"/>
         <source>%n sheet(s)</source>
         <translation>
             <numerusform>シート %n 枚</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="320"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="323"/>
         <source>largest isometry error %1 mm</source>
         <translation>最大等長誤差 %1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="340"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="343"/>
         <source>Some pieces overlap and cannot be cut as laid out. Export anyway?</source>
         <translation>重なっているピースがあり、この配置では切断できません。それでもエクスポートしますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="341"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="344"/>
         <source>The pattern has problems (see the report). Export anyway?</source>
         <translation>型紙に問題があります (レポートを参照)。それでもエクスポートしますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="382"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
         <source>Writing the cutting pattern…</source>
         <translation>型紙を書き出しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="382"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="368"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="393"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="364"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="374"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="389"/>
         <source>Export failed</source>
         <translation>エクスポートに失敗しました</translation>
     </message>
@@ -2302,6 +2365,39 @@
         <location filename="../app/gui/reactions/pin_reactions.cpp" line="70"/>
         <source>Cannot unpin the vertices</source>
         <translation>頂点の固定を解除できません</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::PinsPanel</name>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="22"/>
+        <source>Unpin</source>
+        <translation>固定を解除</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="25"/>
+        <source>No vertex is pinned. Select vertices and choose Tools ▸ Pin Vertices (Ctrl+K): the solver then never moves them.</source>
+        <translation>固定された頂点はありません。頂点を選択してツール ▸ 頂点を固定 (Ctrl+K) を選ぶと、ソルバーはそれらを動かしません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="28"/>
+        <source>The pinned vertices: the solver never moves them. Selecting a row selects its vertex in the views.</source>
+        <translation>固定された頂点: ソルバーはこれらを動かしません。行を選択するとビューでその頂点が選択されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="31"/>
+        <source>Release the selected pinned vertices (one undo step).</source>
+        <translation>選択した固定頂点の固定を解除します (元に戻す 1 ステップ)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="65"/>
+        <source>Vertex %1</source>
+        <translation>頂点 %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="66"/>
+        <source>Surface %1, vertex %2</source>
+        <translation>曲面 %1、頂点 %2</translation>
     </message>
 </context>
 <context>
@@ -2358,90 +2454,95 @@
         <translation>折れていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="117"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="78"/>
+        <source>&lt;b&gt;Pinned&lt;/b&gt;: the solver never moves this vertex. Tools ▸ Unpin Vertices (Ctrl+Shift+K) releases it.</source>
+        <translation>&lt;b&gt;固定&lt;/b&gt;: ソルバーはこの頂点を動かしません。ツール ▸ 頂点の固定を解除 (Ctrl+Shift+K) で解除します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
         <source>Nothing selected.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
         <translation>何も選択されていません。&lt;br&gt;%1、%2。&lt;br&gt;&lt;i&gt;頂点・辺・パッチをクリックすると選択されます。Shift+クリックで選択に追加します。&lt;/i&gt;</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="119"/>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="129"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="126"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="136"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="120"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="127"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="127"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="134"/>
         <source>Selected: %1, %2, %3.</source>
         <translation>選択: %1、%2、%3。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="128"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="135"/>
         <source>%n vertex(es)</source>
         <translation>
             <numerusform>頂点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="128"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="135"/>
         <source>%n edge(s)</source>
         <translation>
             <numerusform>辺 %n 本</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="143"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="150"/>
         <source>&lt;b&gt;Vertex %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;頂点 %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="154"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="162"/>
         <source>&lt;b&gt;Edge %1&lt;/b&gt; from vertex %2 to vertex %3&lt;br&gt;</source>
         <translation>&lt;b&gt;辺 %1&lt;/b&gt; 頂点 %2 から頂点 %3 まで&lt;br&gt;</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="159"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="167"/>
         <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
         <translation>
             <numerusform>スプライン曲線 (S)、%1、制御点 %n 個。&lt;br&gt;</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="165"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="173"/>
         <source>A boundary curve of patch %1.</source>
         <translation>パッチ %1 の境界曲線。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="169"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="177"/>
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>母線 (R)、長さ %1 mm の線分。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="176"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="184"/>
         <source>Smooth between patches %1 and %2: the surface stays smooth across it.</source>
         <translation>パッチ %1 と %2 の間で滑らか: 曲面はこの母線をまたいで滑らかに保たれます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="178"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="186"/>
         <source>Sharp between patches %1 and %2: the surface may fold along it.</source>
         <translation>パッチ %1 と %2 の間で鋭角: 曲面はこの母線に沿って折れてもかまいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="188"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="196"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;パッチ %1&lt;/b&gt;: %2&lt;br&gt;パッチに沿った辺のラベル: %3&lt;br&gt;角 %n 個。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="227"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="235"/>
         <source>Cannot move</source>
         <translation>移動できません</translation>
     </message>
@@ -2554,156 +2655,156 @@
 <context>
     <name>devsurf::app::ShapeExportDialog</name>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="37"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="35"/>
         <source>The design has no surface to export.</source>
         <translation>エクスポートする曲面がデザインにありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="39"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="37"/>
         <source>Patch %1 of surface %2 cannot be written as an exact surface.</source>
         <translation>曲面 %2 のパッチ %1 を厳密な曲面として書き出せません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="44"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="42"/>
         <source>The shape could not be translated into this format. Try another format.</source>
         <translation>形状をこの形式に変換できませんでした。別の形式をお試しください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="57"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="132"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="196"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="222"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="55"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="130"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="187"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="213"/>
         <source>Export 3D Shape</source>
         <translation>3D 形状のエクスポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="58"/>
         <source>STEP AP242: exact surfaces</source>
         <translation>STEP AP242: 厳密な曲面</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="58"/>
         <source>STEP AP214: exact surfaces</source>
         <translation>STEP AP214: 厳密な曲面</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="59"/>
         <source>IGES: exact surfaces</source>
         <translation>IGES: 厳密な曲面</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="59"/>
         <source>OBJ mesh: a group per patch</source>
         <translation>OBJ メッシュ: パッチごとに 1 グループ</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
         <source>STL mesh (binary)</source>
         <translation>STL メッシュ (バイナリ)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
         <source>PLY mesh (binary)</source>
         <translation>PLY メッシュ (バイナリ)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="69"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="76"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="67"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="74"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="70"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="68"/>
         <source>How far the mesh&apos;s triangles may stray from the exact surface.</source>
         <translation>メッシュの三角形が厳密な曲面から離れてよい距離。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="77"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="75"/>
         <source>none (the surface)</source>
         <translation>なし (曲面そのもの)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="79"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="77"/>
         <source>A sheet of this thickness for 3D printing: both sides offset by half of it, the rim closed.</source>
         <translation>3D プリント用にこの厚さの板にします: 両面を半分ずつオフセットし、縁を閉じます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="85"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="83"/>
         <source>&amp;Format:</source>
         <translation>形式(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="86"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="84"/>
         <source>Chord &amp;tolerance:</source>
         <translation>弦の許容誤差(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="87"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="85"/>
         <source>T&amp;hickness:</source>
         <translation>厚さ(&amp;H):</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="89"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="87"/>
         <source>&amp;Export…</source>
         <translation>エクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="122"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="120"/>
         <source>A triangle mesh for renderers, slicers and mesh tools; watertight wherever the design is.</source>
         <translation>レンダラー、スライサー、メッシュツール向けの三角形メッシュ。デザインが閉じている所では水密です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="122"/>
         <source>Every patch as its exact B-spline surface, sewn into one shell per surface, in millimetres, faces named after their patches.</source>
         <translation>各パッチを厳密な B スプライン曲面として、曲面ごとに 1 つのシェルに縫い合わせ、ミリメートル単位で、面にパッチ名を付けて書き出します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="134"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="131"/>
         <source>%1 files (*.%2)</source>
         <translation>%1 ファイル (*.%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="150"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="158"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="161"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="163"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="141"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="149"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="152"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="154"/>
         <source>Export failed</source>
         <translation>エクスポートに失敗しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="169"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="160"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="202"/>
         <source>Writing the 3D shape…</source>
         <translation>3D 形状を書き出しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="169"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="160"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="202"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="187"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="178"/>
         <source>surface %1, edge %2 (%3 mm apart)</source>
         <translation>曲面 %1、辺 %2 (%3 mm 離れています)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="193"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="184"/>
         <source>faces: %1, shells: %2</source>
         <translation>面: %1、シェル: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="197"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="188"/>
         <source>The shape was written, but some patches could not be sewn together and stay apart in the file: %1.</source>
         <translation>形状は書き出されましたが、縫い合わせられなかったパッチがあり、ファイル内で離れたままです: %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="220"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
         <source>triangles: %1</source>
         <translation>三角形: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="223"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="214"/>
         <source>The mesh was written with %1 samples per curve interval, the most DevSurf writes, and is coarser than the tolerance asked for.</source>
         <translation>メッシュは曲線区間あたり %1 サンプル (DevSurf の上限) で書き出され、指定の許容誤差より粗くなっています。</translation>
     </message>
@@ -2866,190 +2967,190 @@
         <translation>%1 に失敗しました: %2 何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="201"/>
+        <location filename="../app/gui/solve_controller.cpp" line="206"/>
         <source>the design changed</source>
         <translation>デザインが変更されました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="208"/>
+        <location filename="../app/gui/solve_controller.cpp" line="213"/>
         <source>it stopped before a degenerate shape</source>
         <translation>退化した形の手前で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="211"/>
+        <location filename="../app/gui/solve_controller.cpp" line="216"/>
         <source>no convergence, residual %1</source>
         <translation>収束せず、残差 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="214"/>
+        <location filename="../app/gui/solve_controller.cpp" line="219"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>%n 箇所で折り返し</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="217"/>
+        <location filename="../app/gui/solve_controller.cpp" line="222"/>
         <source>a development overlapping itself</source>
         <translation>展開図が自身と重なる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="220"/>
+        <location filename="../app/gui/solve_controller.cpp" line="225"/>
         <source>collapsed strips</source>
         <translation>帯がつぶれる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="223"/>
+        <location filename="../app/gui/solve_controller.cpp" line="228"/>
         <source>a shape too degenerate to measure</source>
         <translation>測定できないほど退化した形</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="247"/>
+        <location filename="../app/gui/solve_controller.cpp" line="252"/>
         <source>Surface %1</source>
         <translation>曲面 %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="252"/>
+        <location filename="../app/gui/solve_controller.cpp" line="257"/>
         <source>The solve was cancelled.</source>
         <translation>ソルブを中止しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="255"/>
+        <location filename="../app/gui/solve_controller.cpp" line="260"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 は解けません: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="256"/>
+        <location filename="../app/gui/solve_controller.cpp" line="261"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 は解けません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="260"/>
+        <location filename="../app/gui/solve_controller.cpp" line="265"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>頂点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="261"/>
+        <location filename="../app/gui/solve_controller.cpp" line="266"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>辺 %2 の制御点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="267"/>
+        <location filename="../app/gui/solve_controller.cpp" line="272"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 を解けませんでした: 連立一次方程式を分解できませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="269"/>
+        <location filename="../app/gui/solve_controller.cpp" line="274"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 を解けませんでした: 反復で有限でない値が生じました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="273"/>
+        <location filename="../app/gui/solve_controller.cpp" line="278"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 を解けませんでした: ソルバーが有限でない値を出しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="279"/>
+        <location filename="../app/gui/solve_controller.cpp" line="284"/>
         <source>(Solver: %1)</source>
         <translation>(ソルバー: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="294"/>
+        <location filename="../app/gui/solve_controller.cpp" line="299"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="298"/>
+        <location filename="../app/gui/solve_controller.cpp" line="303"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="312"/>
+        <location filename="../app/gui/solve_controller.cpp" line="317"/>
         <source>converged</source>
         <translation>収束</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="316"/>
+        <location filename="../app/gui/solve_controller.cpp" line="321"/>
         <source>tolerance reached</source>
         <translation>許容値に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="316"/>
+        <location filename="../app/gui/solve_controller.cpp" line="321"/>
         <source>iteration limit reached</source>
         <translation>反復回数の上限に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="323"/>
+        <location filename="../app/gui/solve_controller.cpp" line="328"/>
         <source>failed</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="331"/>
+        <location filename="../app/gui/solve_controller.cpp" line="336"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>。ソルブで可展性が悪化したため元のままにしました (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="337"/>
+        <location filename="../app/gui/solve_controller.cpp" line="342"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; 長さを保てなかったため (%1)、シートの伸びを許してドラッグをやり直しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="345"/>
+        <location filename="../app/gui/solve_controller.cpp" line="350"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; シートにより %1 mm 手前で止まりました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="357"/>
+        <location filename="../app/gui/solve_controller.cpp" line="362"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n 個のパッチが自身の上に折り返され、曲面が自己重複しています: %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="372"/>
+        <location filename="../app/gui/solve_controller.cpp" line="377"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; 展開図が %n 個のパッチで自身と重なっており (%1)、1 枚のシートから切り出せません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="378"/>
+        <location filename="../app/gui/solve_controller.cpp" line="383"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="383"/>
+        <location filename="../app/gui/solve_controller.cpp" line="388"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="387"/>
+        <location filename="../app/gui/solve_controller.cpp" line="392"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="396"/>
+        <location filename="../app/gui/solve_controller.cpp" line="401"/>
         <source>Solve</source>
         <translation>ソルブ</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="446"/>
+        <location filename="../app/gui/solve_controller.cpp" line="451"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>ソルブはデザインを元のままにしました。ソルブで可展性が悪化したためです (最大の可展性残差 %1 → %2)。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="469"/>
+        <location filename="../app/gui/solve_controller.cpp" line="474"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n 個のサーフェスを元のままにしました。ソルブで可展性が悪化したためです。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="481"/>
+        <location filename="../app/gui/solve_controller.cpp" line="486"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 を破棄しました: ソルブ中にデザインが変更されました。何も動いていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="499"/>
+        <location filename="../app/gui/solve_controller.cpp" line="495"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1、可展を維持: %n 回反復、最大の制約残差 %2。</numerusform>
@@ -3057,37 +3158,37 @@
     </message>
     <message>
         <location filename="../app/gui/solve_controller.cpp" line="178"/>
-        <location filename="../app/gui/solve_controller.cpp" line="438"/>
+        <location filename="../app/gui/solve_controller.cpp" line="443"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>ソルブに失敗しました: %1 デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="230"/>
+        <location filename="../app/gui/solve_controller.cpp" line="235"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2 と %3 を結ぶ直線上にあり、この 2 点の距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="237"/>
+        <location filename="../app/gui/solve_controller.cpp" line="242"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2、%3、%4 の三角形の内側にあり、これらの距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="319"/>
+        <location filename="../app/gui/solve_controller.cpp" line="324"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>母線、曲線またはパッチがつぶれる前の最後の有効な状態で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="327"/>
+        <location filename="../app/gui/solve_controller.cpp" line="332"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (残差が最小の反復 %1 で終了)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="415"/>
+        <location filename="../app/gui/solve_controller.cpp" line="420"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>ソルブ中にデザインが変更されたため、結果を破棄しました。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="465"/>
+        <location filename="../app/gui/solve_controller.cpp" line="470"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>ソルブ完了: %n 回反復、制約残差の最大値 %1。</numerusform>
@@ -3097,74 +3198,79 @@
 <context>
     <name>devsurf::app::SolverPanel</name>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="14"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="19"/>
         <source>Select Patches to Check</source>
         <translation>確認するパッチを選択</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="18"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="52"/>
         <source>No solve yet. Tools ▸ Solve (Ctrl+Return) makes the design developable; the Drag tool keeps it developable while you pull vertices.</source>
         <translation>まだソルブしていません。ツール ▸ ソルブ (Ctrl+Return) でデザインを可展面にします。ドラッグツールは頂点を引っ張る間も可展性を保ちます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="24"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
         <source>Surf.</source>
         <translation>曲面</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="24"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
         <source>Iter.</source>
         <translation>反復</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="24"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
         <source>Residual</source>
         <translation>残差</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="24"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="25"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="27"/>
         <source>Surface</source>
         <translation>曲面</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="25"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="27"/>
         <source>Iteration</source>
         <translation>反復</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="28"/>
         <source>Largest constraint residual after the iteration</source>
         <translation>反復後の制約残差の最大値</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="27"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="29"/>
         <source>Time of the iteration in milliseconds</source>
         <translation>反復の所要時間 (ミリ秒)</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="38"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="40"/>
         <source>Selects the patches the last solve names: the least developable ones and those that fold over onto themselves</source>
         <translation>直前のソルブが挙げたパッチ (可展性の最も低いものと自身の上に折り返されたもの) を選択します</translation>
     </message>
+    <message>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="88"/>
+        <source>No solve of the design as it is now: it was edited, or a step undone or redone, since the last report. Tools ▸ Solve (Ctrl+Return) reports on it.</source>
+        <translation>現在の形状はまだソルブしていません: 前回のレポートの後に編集、元に戻す、またはやり直しがありました。ツール ▸ ソルブ (Ctrl+Return) で現在の形状についてレポートします。</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="55"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="120"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n 回反復、%3 ms。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="79"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="144"/>
         <source>&lt;br&gt;Crease conditions, sampled along the creases: largest residual %1.</source>
         <translation>&lt;br&gt;折り線の条件 (折り線に沿ってサンプリング): 最大残差 %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="86"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="151"/>
         <source>&lt;br&gt;Tolerance not reached. Least developable patches (normalised residual): %1</source>
         <translation>&lt;br&gt;許容値に達しませんでした。可展性の最も低いパッチ (正規化残差): %1</translation>
     </message>
@@ -3343,57 +3449,62 @@
         <translation>曲面 %1 は有効でないため表示されません。</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="30"/>
+        <location filename="../views/scene_view_input.cpp" line="31"/>
+        <source>vertex %1, pinned</source>
+        <translation>頂点 %1 (固定)</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view_input.cpp" line="32"/>
         <source>vertex %1</source>
         <translation>頂点 %1</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="39"/>
+        <location filename="../views/scene_view_input.cpp" line="41"/>
         <source>edge %1 (R)</source>
         <translation>辺 %1 (R)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="41"/>
+        <location filename="../views/scene_view_input.cpp" line="43"/>
         <source>edge %1 (S, crease)</source>
         <translation>辺 %1 (S、折り線)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="43"/>
+        <location filename="../views/scene_view_input.cpp" line="45"/>
         <source>edge %1 (S, boundary)</source>
         <translation>辺 %1 (S、境界)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="54"/>
+        <location filename="../views/scene_view_input.cpp" line="56"/>
         <source>strip (SRSR)</source>
         <translation>ストリップ (SRSR)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="57"/>
+        <location filename="../views/scene_view_input.cpp" line="59"/>
         <source>pointed strip (SRS)</source>
         <translation>尖ったストリップ (SRS)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="60"/>
+        <location filename="../views/scene_view_input.cpp" line="62"/>
         <source>cone (SRR)</source>
         <translation>錐面 (SRR)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="63"/>
+        <location filename="../views/scene_view_input.cpp" line="65"/>
         <source>planar patch</source>
         <translation>平面パッチ</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="66"/>
+        <location filename="../views/scene_view_input.cpp" line="68"/>
         <source>invalid patch</source>
         <translation>無効なパッチ</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="69"/>
+        <location filename="../views/scene_view_input.cpp" line="71"/>
         <source>patch %1 (%2)</source>
         <translation>パッチ %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_input.cpp" line="74"/>
+        <location filename="../views/scene_view_input.cpp" line="76"/>
         <source>surface %1: %2</source>
         <translation>曲面 %1: %2</translation>
     </message>
@@ -3447,17 +3558,17 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="28"/>
+        <location filename="../app/gui/main.cpp" line="29"/>
         <source>Design developable surfaces and curved-crease origami.</source>
         <translation>可展面と曲線折り折り紙を設計します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="32"/>
+        <location filename="../app/gui/main.cpp" line="33"/>
         <source>A project file to open.</source>
         <translation>開くプロジェクトファイル。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="35"/>
+        <location filename="../app/gui/main.cpp" line="36"/>
         <source>Start with a built-in example.</source>
         <translation>組み込みの例で開始します。</translation>
     </message>

@@ -27,7 +27,9 @@ QString SceneView::describe(const Pick& pick) const {
     QString text;
     switch (pick.kind) {
     case Pick::Kind::Vertex:
-        text = tr("vertex %1").arg(pick.id);
+        text = surface.hasVertex(pick.id) && surface.isPinned(pick.id)
+                   ? tr("vertex %1, pinned").arg(pick.id)
+                   : tr("vertex %1").arg(pick.id);
         break;
     case Pick::Kind::Edge: {
         if (!surface.hasEdge(pick.id)) {

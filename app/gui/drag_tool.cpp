@@ -495,10 +495,11 @@ void DragTool::onResult(const solver::SolveResult& result) {
     }
     document::Document* doc = m_workspace->document();
     if (!outcome.ok) {
-        if (m_state == State::Finishing) {
+        const bool settling = m_state == State::Finishing;
+        abort(stoppedText(SolveController::failureText(outcome.failure)));
+        if (settling) {
             emit reportReady(SolveController::reportOf(result, undoText()));
         }
-        abort(stoppedText(SolveController::failureText(outcome.failure)));
         return;
     }
     if (doc->revision() != m_ownRevision) {
@@ -526,10 +527,12 @@ void DragTool::onResult(const solver::SolveResult& result) {
         return;
     }
     // The release: the settled shape becomes one undo step from the press.
+    // The report goes to the Solver panel once the design shows the result (its step pushed,
+    // or the press back): the panel files it under that undo state.
     const SolveReport report = SolveController::reportOf(result, undoText());
-    emit reportReady(report);
     if (shape == pressSurface()) {
         restorePress();
+        emit reportReady(report);
         end(false, tr("%1: %2").arg(undoText(), report.status));
         return;
     }
@@ -543,6 +546,7 @@ void DragTool::onResult(const solver::SolveResult& result) {
     }
     doc->undoStack()->push(edit.takeCommand().release());
     m_previewed = false;
+    emit reportReady(report);
     end(true, tr("%1: %2").arg(undoText(), report.status));
 }
 

@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
     QApplication::setApplicationVersion(QStringLiteral(DEVSURF_VERSION));
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/devsurf.svg")));
 
-    devsurf::app::installTranslations(QLocale());
+    // The language chosen in View ▸ Language, else the system's.
+    devsurf::app::installInterfaceTranslations();
 
     QCommandLineParser parser;
     parser.setApplicationDescription(

@@ -3,9 +3,11 @@
 #include "autosaver.h"
 #include "camera_actions.h"
 #include "help_dialogs.h"
+#include "language_menu.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "panels/patch_panel.h"
+#include "panels/pins_panel.h"
 #include "panels/properties_panel.h"
 #include "panels/solver_panel.h"
 #include "reactions/crease_reactions.h"
@@ -122,8 +124,17 @@ void MainWindow::createDocks() {
     properties->setWidget(m_propertiesPanel);
     addDockWidget(Qt::LeftDockWidgetArea, properties);
 
+    m_pinsPanel = new PinsPanel(doc, selection, this);
+    auto* pins = new QDockWidget(tr("Pins"), this);
+    pins->setObjectName(QStringLiteral("PinsDock"));
+    pins->setWidget(m_pinsPanel);
+    addDockWidget(Qt::LeftDockWidgetArea, pins);
+    tabifyDockWidget(properties, pins); // a tab beside Properties: the left column stays readable
+    properties->raise();
+
     m_solveController = new SolveController(m_workspace, this);
     m_solverPanel = new SolverPanel(this);
+    m_solverPanel->follow(doc);
     auto* solverDock = new QDockWidget(tr("Solver"), this);
     solverDock->setObjectName(QStringLiteral("SolverDock"));
     solverDock->setWidget(m_solverPanel);
@@ -246,6 +257,7 @@ void MainWindow::createMenus() {
     QAction* unpin = addAction(tools, QStringLiteral("actionUnpinVertices"), tr("U&npin Vertices"),
                                QKeySequence(tr("Ctrl+Shift+K")));
     new PinVerticesReaction(unpin, m_workspace, false);
+    m_pinsPanel->setUnpinAction(unpin);
     QAction* holdSheet = addAction(tools, QStringLiteral("actionHoldSheet"), tr("Hold the &Sheet"),
                                    QKeySequence(tr("Ctrl+Shift+H")));
     new HoldSheetReaction(holdSheet, m_workspace);
@@ -306,6 +318,8 @@ void MainWindow::createMenus() {
     for (QDockWidget* dock : findChildren<QDockWidget*>()) {
         view->addAction(dock->toggleViewAction());
     }
+    view->addSeparator();
+    addLanguageMenu(view, m_workspace);
 
     const std::pair<QAction*, const char*> icons[] = {
         {newAction, "new"},       {open, "open"},   {save, "save"},

@@ -18,6 +18,7 @@ class PatchPanel;
 class PropertiesPanel;
 class SolveController;
 class SolverPanel;
+class PinsPanel;
 class DragTool;
 class RotateTool;
 
@@ -34,6 +35,7 @@ public:
     views::DevelopmentView* developmentView() const { return m_developmentView; }
     PatchPanel* patchPanel() const { return m_patchPanel; }
     PropertiesPanel* propertiesPanel() const { return m_propertiesPanel; }
+    PinsPanel* pinsPanel() const { return m_pinsPanel; }
     SolverPanel* solverPanel() const { return m_solverPanel; }
     SolveController* solveController() const { return m_solveController; }
     DragTool* dragTool() const { return m_dragTool; }
@@ -70,6 +72,7 @@ private:
     views::DevelopmentView* m_developmentView = nullptr;
     PatchPanel* m_patchPanel = nullptr;
     PropertiesPanel* m_propertiesPanel = nullptr;
+    PinsPanel* m_pinsPanel = nullptr;
     SolverPanel* m_solverPanel = nullptr;
     SolveController* m_solveController = nullptr;
     DragTool* m_dragTool = nullptr;

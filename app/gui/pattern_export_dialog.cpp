@@ -142,7 +142,10 @@ PatternExportDialog::PatternExportDialog(const model::Project& project, const QS
     auto* seam = new QHBoxLayout;
     seam->addWidget(m_seam);
     seam->addWidget(m_glueTabs);
-    form->addRow(tr("&Seam allowance:"), seam);
+    // A row of several widgets: its label's mnemonic needs a buddy, else '&' shows.
+    auto* seamLabel = new QLabel(tr("&Seam allowance:"), this);
+    seamLabel->setBuddy(m_seam);
+    form->addRow(seamLabel, seam);
 
     m_sheet = new QComboBox(this);
     for (const SheetPreset& preset : sheetPresets()) {
@@ -160,7 +163,9 @@ PatternExportDialog::PatternExportDialog(const model::Project& project, const QS
     sheet->addWidget(m_sheetWidth);
     sheet->addWidget(new QLabel(QStringLiteral("×"), this));
     sheet->addWidget(m_sheetHeight);
-    form->addRow(tr("S&heet:"), sheet);
+    auto* sheetLabel = new QLabel(tr("S&heet:"), this);
+    sheetLabel->setBuddy(m_sheet);
+    form->addRow(sheetLabel, sheet);
 
     m_paper = new QComboBox(this);
     m_paper->addItems({tr("A4"), tr("A3"), tr("Letter")});

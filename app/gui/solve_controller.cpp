@@ -183,14 +183,19 @@ void SolveController::cancel(const QString& reason) {
         return;
     }
     m_worker->cancel();
-    stop(m_cancelledByChange ? Ending::CancelledByChange : Ending::Cancelled,
+    stop(nullptr, m_cancelledByChange ? Ending::CancelledByChange : Ending::Cancelled,
          cancelledSentence(reason));
     m_cancelledByChange = false;
 }
 
-void SolveController::stop(Ending ending, const QString& sentence) {
+void SolveController::stop(const SolveReport* report, Ending ending, const QString& sentence) {
     m_ending = ending;
     m_solving = false;
+    if (report != nullptr) {
+        // Once the design shows the result (its step pushed, or nothing changed): the Solver
+        // panel files the report under that undo state.
+        emit reportReady(*report);
+    }
     emit busyChanged(false);
     emit finished(sentence);
 }
@@ -395,14 +400,13 @@ void SolveController::onResult(const solver::SolveResult& result) {
     }
     const QString title = m_editSurface >= 0 ? m_editTitle : tr("Solve");
     const SolveReport report = reportOf(result, title);
-    emit reportReady(report);
     const solver::JobOutcome& outcome = result.outcome;
     if (outcome.cancelled()) {
-        stop(Ending::Cancelled, cancelledSentence(QString()));
+        stop(&report, Ending::Cancelled, cancelledSentence(QString()));
         return;
     }
     if (!outcome.ok) {
-        stop(Ending::Failed, failedSentence(failureText(outcome.failure)));
+        stop(&report, Ending::Failed, failedSentence(failureText(outcome.failure)));
         return;
     }
     if (m_editSurface >= 0) {
@@ -412,7 +416,8 @@ void SolveController::onResult(const solver::SolveResult& result) {
     document::Document* doc = m_workspace->document();
     if (doc->revision() != result.revision ||
         outcome.surfaces.size() != static_cast<std::size_t>(doc->surfaceCount())) {
-        stop(Ending::Discarded, tr("Solve result discarded: the design changed while solving."));
+        stop(nullptr, Ending::Discarded,
+             tr("Solve result discarded: the design changed while solving."));
         return;
     }
     // Every surface's command is made before any is pushed: one refused (the solved shape
@@ -434,7 +439,7 @@ void SolveController::onResult(const solver::SolveResult& result) {
         document::CommandOrError edit = document::ApplySurfaceCommand::create(
             *doc, static_cast<int>(s), outcome.surfaces[s], title);
         if (edit.isRefused()) {
-            stop(Ending::Failed,
+            stop(&report, Ending::Failed,
                  tr("Solve failed: %1 The design is unchanged.").arg(refusalText(edit)));
             return;
         }
@@ -442,7 +447,7 @@ void SolveController::onResult(const solver::SolveResult& result) {
     }
     if (keptCount > 0) {
         if (commands.empty()) {
-            stop(Ending::LeftAsItWas,
+            stop(&report, Ending::LeftAsItWas,
                  tr("Solve left the design as it was: solving made it less developable (largest "
                     "developability residual %1 → %2).")
                      .arg(QString::number(before, 'e', 1), QString::number(after, 'e', 1)));
@@ -469,7 +474,7 @@ void SolveController::onResult(const solver::SolveResult& result) {
                     tr("%n surface(s) left as they were: solving made them less developable.",
                        nullptr, keptCount);
     }
-    stop(Ending::Solved, sentence + checkShapeSentence(report));
+    stop(&report, Ending::Solved, sentence + checkShapeSentence(report));
 }
 
 void SolveController::applyEdit(const solver::SolveResult& result, const SolveReport& report) {
@@ -477,7 +482,7 @@ void SolveController::applyEdit(const solver::SolveResult& result, const SolveRe
     const auto s = static_cast<std::size_t>(m_editSurface);
     const solver::JobOutcome& outcome = result.outcome;
     if (doc->revision() != result.revision || s >= outcome.surfaces.size()) {
-        stop(Ending::Discarded,
+        stop(nullptr, Ending::Discarded,
              tr("%1 discarded: the design changed while solving; nothing moved.").arg(m_editTitle));
         return;
     }
@@ -485,21 +490,26 @@ void SolveController::applyEdit(const solver::SolveResult& result, const SolveRe
     for (const auto& [v, target] : m_heldTargets) {
         solved.moveVertex(v, target);
     }
+    const solver::Summary& summary = outcome.assessments[s].summary;
+    const QString sentence =
+        tr("%1, kept developable: %n iteration(s), largest constraint residual %2.", nullptr,
+           summary.iterationsCompleted)
+            .arg(m_editTitle, QString::number(summary.finalMaxConstraintResidual, 'e', 2)) +
+        checkShapeSentence(report);
+    if (solved == doc->surface(m_editSurface)) {
+        stop(&report, Ending::Solved, sentence); // nothing moved: no undo step, not modified
+        return;
+    }
     document::CommandOrError edit =
         document::ApplySurfaceCommand::create(*doc, m_editSurface, solved, m_editTitle);
     if (edit.isRefused()) {
-        stop(Ending::Failed, failedSentence(refusalText(edit)));
+        stop(&report, Ending::Failed, failedSentence(refusalText(edit)));
         return;
     }
     m_applying = true;
     doc->undoStack()->push(edit.takeCommand().release());
     m_applying = false;
-    const solver::Summary& summary = outcome.assessments[s].summary;
-    stop(Ending::Solved,
-         tr("%1, kept developable: %n iteration(s), largest constraint residual %2.", nullptr,
-            summary.iterationsCompleted)
-                 .arg(m_editTitle, QString::number(summary.finalMaxConstraintResidual, 'e', 2)) +
-             checkShapeSentence(report));
+    stop(&report, Ending::Solved, sentence);
 }
 
 } // namespace devsurf::app

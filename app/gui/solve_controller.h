@@ -92,7 +92,8 @@ signals:
 private:
     void onResult(const solver::SolveResult& result);
     void onDocumentChanged();
-    void stop(Ending ending, const QString& sentence);
+    // Ends the solve; shows `report` (if any) in the Solver panel, then says `sentence`.
+    void stop(const SolveReport* report, Ending ending, const QString& sentence);
     void applyEdit(const solver::SolveResult& result, const SolveReport& report);
     // The sentences of a solve or of an edit's solve.
     QString cancelledSentence(const QString& reason) const;

@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 #include <QLibraryInfo>
+#include <QSettings>
 #include <QTranslator>
 
 #include <memory>
@@ -49,6 +50,36 @@ bool installTranslations(const QLocale& locale) {
         ownTranslator() = std::move(own);
     }
     return found;
+}
+
+QString chosenLanguage() {
+    const QString code = QSettings().value(QStringLiteral("interface/language")).toString();
+    const QStringList known{QStringLiteral("en"), QStringLiteral("de"), QStringLiteral("ja")};
+    return known.contains(code) ? code : QString();
+}
+
+void setChosenLanguage(const QString& code) {
+    if (code.isEmpty()) {
+        QSettings().remove(QStringLiteral("interface/language"));
+    } else {
+        QSettings().setValue(QStringLiteral("interface/language"), code);
+    }
+}
+
+QLocale interfaceLocale() {
+    const QString code = chosenLanguage();
+    if (code.isEmpty()) {
+        return QLocale::system();
+    }
+    // English as in the United States, the language the interface is written in.
+    return code == QLatin1String("en") ? QLocale(QLocale::English, QLocale::UnitedStates)
+                                       : QLocale(code);
+}
+
+bool installInterfaceTranslations() {
+    const QLocale locale = interfaceLocale();
+    QLocale::setDefault(locale);
+    return installTranslations(locale);
 }
 
 } // namespace devsurf::app

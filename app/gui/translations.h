@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QLocale>
+#include <QString>
 
 namespace devsurf::app {
 
@@ -11,5 +12,14 @@ namespace devsurf::app {
 bool installTranslations(const QLocale& locale);
 // Removes what installTranslations() installed (tests switch languages).
 void removeTranslations();
+
+// View ▸ Language: the interface language chosen ("en", "de", "ja"), kept in the settings;
+// empty: the system's.
+QString chosenLanguage();
+void setChosenLanguage(const QString& code);
+// The locale the interface starts in: the chosen language, else the system's.
+QLocale interfaceLocale();
+// At start: makes interfaceLocale() the default locale and installs its translations.
+bool installInterfaceTranslations();
 
 } // namespace devsurf::app

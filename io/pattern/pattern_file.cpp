@@ -5,8 +5,8 @@
 #include "io/file_error.h"
 #include "io/output_file.h"
 
+#include <QBuffer>
 #include <QPdfWriter>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cctype>
@@ -77,29 +77,34 @@ bool savePatternFile(const model::CuttingPattern& pattern, PatternFormat format,
                         "': the cutting pattern has no pieces.");
     }
     if (format == PatternFormat::Pdf) {
-        QSaveFile file(path);
-        // Buffered: the PDF writer writes many small pieces.
-        openOutputFile(file, path, QIODevice::WriteOnly);
+        // Drawn into memory, then written as the other formats are: a file device reports a
+        // short write (the disk filling up within a large page) without an error and
+        // QPdfWriter then stops writing, so a streamed PDF could end truncated without a word.
+        QBuffer buffer;
+        buffer.open(QIODevice::WriteOnly);
         const PagePlan plan = planPages(pattern, paperSize(options.paper));
-        QPdfWriter writer(&file);
-        writer.setResolution(1200);
-        writer.setCreator(QStringLiteral("DevSurf"));
-        writer.setTitle(QStringLiteral("DevSurf cutting pattern"));
-        preparePagedDevice(writer, pageSizeOf(options.paper), plan);
         bool cancelled = false;
-        const PatternProgress watch = [&](int done, int total) {
-            cancelled = progress && !progress(done, total);
-            return !cancelled;
-        };
-        if (!paintPatternPages(writer, pattern, plan, options.problemTexts, watch)) {
-            file.cancelWriting();
+        bool drawn = false;
+        {
+            QPdfWriter writer(&buffer);
+            writer.setResolution(1200);
+            writer.setCreator(QStringLiteral("DevSurf"));
+            writer.setTitle(QStringLiteral("DevSurf cutting pattern"));
+            preparePagedDevice(writer, pageSizeOf(options.paper), plan);
+            const PatternProgress watch = [&](int done, int total) {
+                cancelled = progress && !progress(done, total);
+                return !cancelled;
+            };
+            drawn = paintPatternPages(writer, pattern, plan, options.problemTexts, watch);
+        }
+        if (!drawn) {
             if (cancelled) {
                 return false;
             }
             throw FileError("Cannot write '" + path.toStdString() +
                             "': the PDF pages could not be drawn.");
         }
-        commitOutputFile(file, path);
+        writeFileAtomically(path, buffer.data());
         return true;
     }
     QByteArray bytes;

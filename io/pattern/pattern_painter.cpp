@@ -1,6 +1,8 @@
 #include "pattern_painter.h"
 
+#include "dashed_line.h"
 #include "fabrication_report.h"
+#include "pattern_legend.h"
 
 #include <QFontMetricsF>
 #include <QPageLayout>
@@ -68,23 +70,41 @@ public:
     }
 
     QPainter& painter() { return m_p; }
+    double dpi() const { return m_dpi; }
 
 private:
     QPainter& m_p;
     double m_dpi;
 };
 
-QPen layerPen(const PagePainter& pages, const LayerStyle& style) {
-    QPen pen = pages.pen(colourOf(style.rgb), style.strokeWidth);
-    if (!style.dashes.empty()) {
-        // Qt's dash pattern counts in pen widths; a dot is a dash as long as it is wide.
-        QVector<qreal> dashes;
-        for (double d : style.dashes) {
-            dashes << std::max(d, 0.01) / style.strokeWidth;
+// A dashed layer is drawn as its dashes (dashed_line.h), each with a solid pen; dots are discs
+// as wide as the line.
+void drawLayerLine(PagePainter& pages, const LayerStyle& style, const QPolygonF& line,
+                   bool closed) {
+    QPainter& p = pages.painter();
+    const QColor colour = colourOf(style.rgb);
+    p.setPen(pages.pen(colour, style.strokeWidth));
+    p.setBrush(Qt::NoBrush);
+    if (style.dashes.empty()) {
+        if (closed) {
+            p.drawPolygon(line);
+        } else {
+            p.drawPolyline(line);
         }
-        pen.setDashPattern(dashes);
+        return;
     }
-    return pen;
+    const DashedLine dashed = dashLine(line, closed, style.dashes);
+    for (const QPolygonF& dash : dashed.dashes) {
+        p.drawPolyline(dash);
+    }
+    if (!dashed.dots.empty()) {
+        p.setPen(Qt::NoPen);
+        p.setBrush(colour);
+        const double r = 0.5 * style.strokeWidth;
+        for (const QPointF& dot : dashed.dots) {
+            p.drawEllipse(dot, r, r);
+        }
+    }
 }
 
 bool meets(const std::vector<Vec2>& points, const QRectF& visible) {
@@ -115,8 +135,6 @@ void drawPieces(PagePainter& pages, const model::CuttingPattern& pattern,
         if (cutOnly && layer != PatternLayer::Cut) {
             continue;
         }
-        p.setPen(layerPen(pages, layerStyle(layer)));
-        p.setBrush(Qt::NoBrush);
         for (int index : pieces) {
             for (const model::PatternPath& path : pattern.pieces[std::size_t(index)].paths) {
                 if (path.layer != layer || path.points.size() < 2 || !meets(path.points, visible)) {
@@ -126,11 +144,7 @@ void drawPieces(PagePainter& pages, const model::CuttingPattern& pattern,
                 for (const Vec2& q : path.points) {
                     polygon << QPointF(q.x, q.y);
                 }
-                if (path.closed) {
-                    p.drawPolygon(polygon);
-                } else {
-                    p.drawPolyline(polygon);
-                }
+                drawLayerLine(pages, layerStyle(layer), polygon, path.closed);
             }
         }
     }
@@ -154,6 +168,7 @@ void drawPieces(PagePainter& pages, const model::CuttingPattern& pattern,
             p.drawText(QPointF(-0.5 * width, 0.0), text);
             p.restore();
         }
+        paintFoldAngles(p, pattern.pieces[std::size_t(index)], visible, pages.dpi());
     }
 }
 
@@ -178,7 +193,7 @@ void registrationMark(QPainter& p, const QPointF& c) {
 // outer edge of the line measures 50 mm and 1 inch), a large label, where the page belongs and
 // a note.
 void paintBand(PagePainter& pages, const PagePlan& plan, const QString& label, const QString& where,
-               const QString& note) {
+               const QString& note, const model::CuttingPattern* legendOf = nullptr) {
     QPainter& p = pages.painter();
     const QPointF band(plan.bandOrigin.x, plan.bandOrigin.y);
     const double line = 0.3;
@@ -210,6 +225,9 @@ void paintBand(PagePainter& pages, const PagePlan& plan, const QString& label, c
     pages.text(
         QRectF(box.topLeft() + QPointF(0.0, y + 8.0), QSizeF(box.width(), box.height() - y - 8.0)),
         3.0, note, Qt::AlignLeft | Qt::AlignTop);
+    if (legendOf != nullptr) {
+        paintLineLegend(p, box, *legendOf, pages.dpi());
+    }
 }
 
 void paintReportPage(PagePainter& pages, const PagePlan& plan, const FabricationReport& report,
@@ -433,7 +451,8 @@ void paintTile(PagePainter& pages, const model::CuttingPattern& pattern, const P
                              "measure 50 mm and 1 inch. Trim at the crop marks, overlap the "
                              "shaded strip, align the registration marks.")
                   .arg(pageNumber)
-                  .arg(pageCount));
+                  .arg(pageCount),
+              &pattern);
 }
 
 int reportPageCount(const model::CuttingPattern& pattern, const PagePlan& plan) {

@@ -164,10 +164,18 @@ private slots:
         QVERIFY(std::isfinite(quality.developabilityMax));
 
         const std::string after = bytesOf(s.window);
+        const int rows = window(s)->solverPanel()->iterationRows();
         s.doc->undoStack()->undo();
         QCOMPARE(bytesOf(s.window), atPress);
+        // The Solver panel shows the design on screen: the undone drag's report goes, and
+        // comes back with the redo.
+        QVERIFY(!window(s)->solverPanel()->hasReport());
+        QCOMPARE(window(s)->solverPanel()->iterationRows(), 0);
         s.doc->undoStack()->redo();
         QCOMPARE(bytesOf(s.window), after);
+        QVERIFY(window(s)->solverPanel()->hasReport());
+        QCOMPARE(window(s)->solverPanel()->report().outcome.kind, solver::JobKind::VertexDrag);
+        QCOMPARE(window(s)->solverPanel()->iterationRows(), rows);
     }
 
     void anUndoDuringADragEndsItWithoutAStep() {

@@ -305,6 +305,25 @@ private slots:
         QCOMPARE(bytesOf(window), after);
     }
 
+    void aSolveThatChangesNothingAddsNoUndoStep() {
+        // mixed is developable as built: its Solve moves nothing, so it leaves no undo step
+        // and the document stays unmodified.
+        app::MainWindow window;
+        window.workspace()->newFromExample(QStringLiteral("mixed"), 0);
+        document::Document* doc = window.workspace()->document();
+        const std::string before = bytesOf(window);
+        const int steps = doc->undoStack()->count();
+        QVERIFY(!window.isWindowModified());
+        window.action(QStringLiteral("actionSolve"))->trigger();
+        const QString sentence = waitForSolve(window);
+        QVERIFY2(window.solveController()->lastEnding() == app::SolveController::Ending::Solved,
+                 qPrintable(sentence));
+        QCOMPARE(doc->undoStack()->count(), steps);
+        QVERIFY(doc->undoStack()->isClean());
+        QVERIFY(!window.isWindowModified());
+        QCOMPARE(bytesOf(window), before);
+    }
+
     void solveReportsTheCreaseResidualSampledAlongTheCreases() {
         // fig8 lifted by hand: Solve folds it; the panel gives the crease conditions' residual
         // sampled along the creases, which the solver's residual does not bound.

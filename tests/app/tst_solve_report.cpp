@@ -2,6 +2,7 @@
 // developments and drags replayed letting the sheet stretch, with the patches to check.
 #include "folded_strip.h"
 #include "main_window.h"
+#include "model/document/commands/move_vertices_command.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "panels/solver_panel.h"
@@ -9,10 +10,13 @@
 #include "solver/quality/shape_change.h"
 #include "solver/worker/solver_worker.h"
 #include "test_registry.h"
+#include "window_test_support.h"
 #include "workspace.h"
 
 #include <QPushButton>
+#include <QTemporaryDir>
 #include <QTest>
+#include <QUndoStack>
 
 #include <set>
 
@@ -143,4 +147,94 @@ private slots:
 };
 
 DEVSURF_REGISTER_TEST(TstSolveReport);
+
+// The Solver panel shows the design on screen: a new or opened design, an edit, undo or redo
+// leave no report of another state behind.
+class TstSolverPanelFollows : public QObject {
+    Q_OBJECT
+
+    // Lifts a vertex of the annulus and solves it: one "Solve" step with its report.
+    static bool liftAndSolve(app::MainWindow& window) {
+        document::Document* doc = window.workspace()->document();
+        doc->undoStack()->push(document::MoveVerticesCommand::createTranslation(
+                                   *doc, 0, {21}, model::Vec3(0.0, 0.0, 5.0))
+                                   .takeCommand()
+                                   .release());
+        window.action(QStringLiteral("actionSolve"))->trigger();
+        test::waitForSolve(window);
+        return window.solveController()->lastEnding() == app::SolveController::Ending::Solved &&
+               doc->undoStack()->count() == 2 && window.solverPanel()->hasReport();
+    }
+
+private slots:
+    void aNewDesignShowsNoReportOfTheOldOne() {
+        app::MainWindow window;
+        window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
+        QVERIFY(!window.solverPanel()->hasReport());
+        QVERIFY(liftAndSolve(window));
+        QVERIFY(window.solverPanel()->iterationRows() > 0);
+        const QString solvedText = window.solverPanel()->statusText();
+        window.workspace()->newFromExample(QStringLiteral("fig8"), 0);
+        QVERIFY(!window.solverPanel()->hasReport());
+        QCOMPARE(window.solverPanel()->iterationRows(), 0);
+        QVERIFY(window.solverPanel()->statusText() != solvedText);
+        QVERIFY(!window.solverPanel()->selectPatchesButton()->isEnabled());
+        QVERIFY(window.solverPanel()->report().summaries.empty());
+    }
+
+    void anOpenedDesignShowsNoReportOfTheOldOne() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath(QStringLiteral("fig8.devsurf"));
+        {
+            app::MainWindow saver;
+            saver.workspace()->newFromExample(QStringLiteral("fig8"), 0);
+            QVERIFY(saver.workspace()->saveTo(path));
+        }
+        app::MainWindow window;
+        window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
+        QVERIFY(liftAndSolve(window));
+        QVERIFY(window.workspace()->open(path));
+        QVERIFY(!window.solverPanel()->hasReport());
+        QCOMPARE(window.solverPanel()->iterationRows(), 0);
+        QVERIFY(!window.solverPanel()->selectPatchesButton()->isEnabled());
+    }
+
+    void undoAndRedoShowTheReportOfTheStateReached() {
+        app::MainWindow window;
+        window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
+        QVERIFY(liftAndSolve(window));
+        QUndoStack* stack = window.workspace()->document()->undoStack();
+        const int rows = window.solverPanel()->iterationRows();
+        const QString solvedText = window.solverPanel()->statusText();
+        stack->undo(); // the lift, not solved
+        QVERIFY(!window.solverPanel()->hasReport());
+        QCOMPARE(window.solverPanel()->iterationRows(), 0);
+        QVERIFY(window.solverPanel()->statusText() != solvedText);
+        stack->redo(); // the solved design again: its report
+        QVERIFY(window.solverPanel()->hasReport());
+        QCOMPARE(window.solverPanel()->iterationRows(), rows);
+        QCOMPARE(window.solverPanel()->statusText(), solvedText);
+        // An edit after the solve: the report no longer describes the design; its undo does.
+        document::Document* doc = window.workspace()->document();
+        stack->push(document::MoveVerticesCommand::createTranslation(*doc, 0, {3},
+                                                                     model::Vec3(1.0, 0.0, 0.0))
+                        .takeCommand()
+                        .release());
+        QVERIFY(!window.solverPanel()->hasReport());
+        stack->undo();
+        QVERIFY(window.solverPanel()->hasReport());
+        QCOMPARE(window.solverPanel()->statusText(), solvedText);
+        // Undoing to the lift and editing anew drops the solved state and its report.
+        stack->undo();
+        stack->push(document::MoveVerticesCommand::createTranslation(*doc, 0, {3},
+                                                                     model::Vec3(1.0, 0.0, 0.0))
+                        .takeCommand()
+                        .release());
+        QVERIFY(!window.solverPanel()->hasReport());
+        QVERIFY(!stack->canRedo());
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstSolverPanelFollows);
 #include "tst_solve_report.moc"

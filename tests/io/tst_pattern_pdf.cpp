@@ -186,6 +186,33 @@ private slots:
                           "PDF report page");
     }
 
+    void tilesCarryALegendAndTheFoldAngles() {
+        const QString file = m_dir.filePath(QStringLiteral("legend.pdf"));
+        QVERIFY(io::savePatternFile(test::fixturePattern(), io::PatternFormat::Pdf, file, {}));
+        const int pages = pdfInfo(file).pages;
+        auto pageText = [&file](int page) {
+            return test::runTool(QStringLiteral("pdftotext"),
+                                 {QStringLiteral("-f"), QString::number(page), QStringLiteral("-l"),
+                                  QString::number(page), file, QStringLiteral("-")})
+                .out;
+        };
+        // The last page: the one tile of the rectangle, with its 90° valley fold.
+        const QString tile = pageText(pages);
+        for (const char* line : {"Cut", "Mountain", "Valley", "Crease", "Seam", "Score"}) {
+            QVERIFY2(tile.contains(QString::fromLatin1(line)), line);
+        }
+        QVERIFY2(tile.contains(QStringLiteral("V 90.0°")), qPrintable(tile));
+        // The sector's tiles name its 20° mountain and valley folds.
+        QString sector;
+        for (int page = 4; page < pages; ++page) {
+            sector += pageText(page);
+        }
+        QVERIFY(sector.contains(QStringLiteral("M 20.0°")));
+        QVERIFY(sector.contains(QStringLiteral("V 20.0°")));
+        // The report page is no tile: no legend there.
+        QVERIFY(!pageText(1).contains(QStringLiteral("Mountain")));
+    }
+
     void cancellingKeepsNoFile() {
         const QString file = m_dir.filePath(QStringLiteral("cancelled.pdf"));
         QVERIFY(!io::savePatternFile(test::fixturePattern(), io::PatternFormat::Pdf, file, {},

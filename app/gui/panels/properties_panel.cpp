@@ -69,10 +69,15 @@ QString creaseText(const model::CompositeSurface& surface, model::EdgeId edge,
 PropertiesPanel::PropertiesPanel(document::Document* document, document::Selection* selection,
                                  QWidget* parent)
     : QWidget(parent), m_document(document), m_selection(selection), m_summary(new QLabel(this)),
-      m_positionBox(new QWidget(this)) {
+      m_pinned(new QLabel(this)), m_positionBox(new QWidget(this)) {
     m_summary->setWordWrap(true);
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_summary->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    m_pinned->setObjectName(QStringLiteral("pinnedLine"));
+    m_pinned->setWordWrap(true);
+    m_pinned->setText(tr("<b>Pinned</b>: the solver never moves this vertex. Tools ▸ Unpin "
+                         "Vertices (Ctrl+Shift+K) releases it."));
+    m_pinned->setVisible(false);
     auto* form = new QFormLayout(m_positionBox);
     const char* const names[3] = {"X", "Y", "Z"};
     for (int axis = 0; axis < 3; ++axis) {
@@ -88,6 +93,7 @@ PropertiesPanel::PropertiesPanel(document::Document* document, document::Selecti
     }
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_summary);
+    layout->addWidget(m_pinned);
     layout->addWidget(m_positionBox);
     layout->addStretch(1);
     connect(document, &document::Document::changed, this, &PropertiesPanel::refresh);
@@ -104,6 +110,7 @@ void PropertiesPanel::refresh() {
     const auto& picks = m_selection->picks();
     const auto& surfaces = m_document->project().surfaces;
     m_positionBox->setVisible(false);
+    m_pinned->setVisible(false);
     m_described.reset();
     m_crease.reset();
     QString text;
@@ -145,6 +152,7 @@ void PropertiesPanel::refresh() {
                     m_coordinates[axis]->setValue(p[axis]);
                 }
                 m_positionBox->setVisible(true);
+                m_pinned->setVisible(surface.isPinned(pick.id));
             }
             break;
         case document::Pick::Kind::Edge:

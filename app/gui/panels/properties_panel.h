@@ -28,6 +28,8 @@ public:
     // The position editors (x, y, z) of a single selected vertex; hidden otherwise.
     QDoubleSpinBox* coordinateEditor(int axis) const { return m_coordinates[axis]; }
     QString summaryText() const;
+    // The line that says a single selected vertex is pinned (hidden otherwise).
+    QLabel* pinnedLine() const { return m_pinned; }
     // The single selected entity the summary describes (none: nothing or several selected).
     const std::optional<document::Pick>& describedPick() const { return m_described; }
     // The crease the summary describes, with its fold as measured (none: no crease described).
@@ -40,6 +42,7 @@ private:
     document::Document* m_document;
     document::Selection* m_selection;
     QLabel* m_summary;
+    QLabel* m_pinned;
     QWidget* m_positionBox;
     QDoubleSpinBox* m_coordinates[3];
     bool m_refreshing = false;

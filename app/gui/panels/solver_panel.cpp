@@ -1,11 +1,16 @@
 #include "solver_panel.h"
 
+#include "model/document/document.h"
+
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
 #include <QPushButton>
 #include <QTableWidget>
+#include <QUndoStack>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace devsurf::app {
 
@@ -15,9 +20,6 @@ SolverPanel::SolverPanel(QWidget* parent)
     setObjectName(QStringLiteral("SolverPanel"));
     auto* layout = new QVBoxLayout(this);
     m_status->setWordWrap(true);
-    m_status->setText(tr("No solve yet. Tools ▸ Solve (Ctrl+Return) makes the design "
-                         "developable; the Drag tool keeps it developable while you pull "
-                         "vertices."));
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_table->setColumnCount(4);
     // Short headers: the dock is narrow. Their tooltips say what the columns are.
@@ -43,10 +45,73 @@ SolverPanel::SolverPanel(QWidget* parent)
     layout->addWidget(m_status);
     layout->addWidget(m_selectPatches);
     layout->addWidget(m_table, 1);
+    clearReport(noSolveYetText());
+}
+
+QString SolverPanel::noSolveYetText() {
+    return tr("No solve yet. Tools ▸ Solve (Ctrl+Return) makes the design developable; the Drag "
+              "tool keeps it developable while you pull vertices.");
+}
+
+void SolverPanel::follow(const document::Document* document) {
+    m_document = document;
+    m_reports.clear();
+    connect(document->undoStack(), &QUndoStack::indexChanged, this, &SolverPanel::followUndoState);
+    connect(document, &document::Document::projectReset, this, [this] {
+        m_reports.clear();
+        clearReport(noSolveYetText());
+    });
+}
+
+SolverPanel::State SolverPanel::currentState() const {
+    const QUndoStack* stack = m_document->undoStack();
+    const int index = stack->index();
+    return {index, index > 0 ? stack->command(index - 1) : nullptr};
+}
+
+void SolverPanel::followUndoState() {
+    const QUndoStack* stack = m_document->undoStack();
+    // Drop the reports of states that are gone (a push after undo deletes the redo tail).
+    const auto gone = [stack](const auto& entry) {
+        const State& state = entry.first;
+        return state.index > stack->count() ||
+               (state.index > 0 ? stack->command(state.index - 1) : nullptr) != state.command;
+    };
+    m_reports.erase(std::remove_if(m_reports.begin(), m_reports.end(), gone), m_reports.end());
+    const State now = currentState();
+    for (const auto& [state, report] : m_reports) {
+        if (state == now) {
+            display(report);
+            return;
+        }
+    }
+    clearReport(tr("No solve of the design as it is now: it was edited, or a step undone or "
+                   "redone, since the last report. Tools ▸ Solve (Ctrl+Return) reports on it."));
+}
+
+void SolverPanel::clearReport(const QString& text) {
+    m_report = SolveReport();
+    m_hasReport = false;
+    m_status->setText(text);
+    m_table->setRowCount(0);
+    m_patches.clear();
+    m_selectPatches->setEnabled(false);
+    m_worst.clear();
 }
 
 void SolverPanel::showReport(const SolveReport& report) {
+    if (m_document != nullptr) {
+        const State now = currentState();
+        const auto same = [now](const auto& entry) { return entry.first == now; };
+        m_reports.erase(std::remove_if(m_reports.begin(), m_reports.end(), same), m_reports.end());
+        m_reports.emplace_back(now, report);
+    }
+    display(report);
+}
+
+void SolverPanel::display(const SolveReport& report) {
     m_report = report;
+    m_hasReport = true;
     int iterations = 0;
     for (const solver::Summary& summary : report.summaries) {
         iterations += static_cast<int>(summary.iterations.size());

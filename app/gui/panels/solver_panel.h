@@ -12,6 +12,11 @@
 class QLabel;
 class QPushButton;
 class QTableWidget;
+class QUndoCommand;
+
+namespace devsurf::document {
+class Document;
+}
 
 namespace devsurf::app {
 
@@ -34,14 +39,21 @@ struct SolveReport {
 };
 
 // The dock "Solver": iterations, constraint residual and time of every iteration of the last
-// solve, its status sentence, and the worst patches when the tolerance was not reached.
+// solve, its status sentence, and the worst patches when the tolerance was not reached. It shows
+// the design on screen: a report belongs to the undo state it was shown in, and an edit, undo,
+// redo or a new document shows the report of the state reached, or says there is none.
 class SolverPanel : public QWidget {
     Q_OBJECT
 public:
     explicit SolverPanel(QWidget* parent = nullptr);
 
+    // Follows the undo state of `document` from now on (see the class comment).
+    void follow(const document::Document* document);
+    // Shows the report of the design as it is now (the solve's step already pushed).
     void showReport(const SolveReport& report);
-    // The report shown last.
+    // Whether a report is shown (false: none, or none of the design as it is now).
+    bool hasReport() const { return m_hasReport; }
+    // The report shown last (empty when hasReport() is false).
     const SolveReport& report() const { return m_report; }
     QString statusText() const;
     // Rows of the iteration table (one per iteration of every solved surface).
@@ -55,12 +67,29 @@ signals:
     void selectPatches(const std::set<devsurf::document::Pick>& patches);
 
 private:
+    // An undo state: the stack index and the command below it (null at index 0).
+    struct State {
+        int index = 0;
+        const QUndoCommand* command = nullptr;
+        bool operator==(const State& o) const { return index == o.index && command == o.command; }
+    };
+    static QString noSolveYetText();
+    State currentState() const;
+    void display(const SolveReport& report);
+    void clearReport(const QString& text);
+    void followUndoState();
+
     QLabel* m_status;
     QTableWidget* m_table;
     QPushButton* m_selectPatches;
     QString m_worst;
     SolveReport m_report;
     std::set<document::Pick> m_patches;
+    bool m_hasReport = false;
+    const document::Document* m_document = nullptr;
+    // The reports shown, each with the undo state it describes (states no longer on the
+    // stack are dropped).
+    std::vector<std::pair<State, SolveReport>> m_reports;
 };
 
 } // namespace devsurf::app
