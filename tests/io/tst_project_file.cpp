@@ -192,29 +192,6 @@ private slots:
         QVERIFY(project == expected);
     }
 
-    void versionFourSampleStaysLoadable() {
-        // Committed once with format version 4 (the sheet example with vertex 0 pinned, holding
-        // its sheet as it unfolded); it loads with a free sheet shape.
-        const QString path = QStringLiteral(DEVSURF_TEST_DATA_DIR "/sample-v4.devsurf");
-        const std::string bytes = readAll(path);
-        QCOMPARE(bytes.substr(8, 4), std::string("\x04\x00\x00\x00", 4));
-        const model::Project project = io::loadProjectFile(path);
-        const model::CompositeSurface& loaded = project.surfaces[0];
-        QVERIFY(loaded.keepsDevelopment());
-        QVERIFY(loaded.sheetDomain().isFree());
-        model::Project expected = model::makeExample("sheet", 0);
-        model::CompositeSurface& s = expected.surfaces[0];
-        s.setPinned(0, true);
-        s.setKeepsDevelopment(true);
-        s.setDevelopment(loaded.development());
-        QVERIFY(project == expected);
-        const model::SampledMesh mesh =
-            model::sampleSurface(loaded, model::kDevelopmentSamplesPerInterval);
-        model::Development development;
-        development.vertices = loaded.development();
-        QVERIFY(model::edgeLengthError(mesh, development) < 1e-12);
-    }
-
     void surfaceIdsRoundTripAndOldFilesGetThem() {
         model::Project project;
         project.addSurface(model::makeExample("sheet", 2).surfaces[0]);
