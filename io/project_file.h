@@ -12,8 +12,9 @@ namespace devsurf::io {
 // The .devsurf project file: a 24-byte envelope (magic "DEVSURF\0", format version,
 // payload length, CRC-32 of the payload; little endian) around the project archive.
 // 1: the first release. 2: pinned vertices. 3: smooth rulings, surface ids. 4: the kept
-// development of every surface (older files open without one, as they were).
-inline constexpr std::uint32_t kProjectFormatVersion = 4;
+// development of every surface (older files open without one, as they were). 5: the
+// project's reference curves (older files open without any).
+inline constexpr std::uint32_t kProjectFormatVersion = 5;
 inline constexpr std::size_t kProjectHeaderSize = 24;
 inline constexpr std::uint64_t kMaxProjectFileSize = 512ull * 1024 * 1024;
 

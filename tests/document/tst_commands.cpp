@@ -494,6 +494,10 @@ private slots:
         QVERIFY(ReferenceCurvesCommand::createRemoveAll(doc).isRefused());
         QVERIFY(doc.project() == original);
 
+        // Saved, the import and its undo are exact to the byte.
+        redoUndoRedo(doc, ReferenceCurvesCommand::createImport(doc, {line}), "import curves");
+        doc.undoStack()->undo();
+        QVERIFY(doc.project() == original);
         QSignalSpy spy(&doc, &Document::changed);
         QVERIFY(
             pushOrExplain(doc, ReferenceCurvesCommand::createImport(doc, {line, arc})).isEmpty());
