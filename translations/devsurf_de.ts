@@ -192,22 +192,22 @@
 <context>
     <name>OutputProblem</name>
     <message>
-        <location filename="../app/gui/output_problem_text.cpp" line="14"/>
+        <location filename="../app/gui/output_problem_text.cpp" line="16"/>
         <source>“%1” is the project file of this design: exporting over it would destroy the design. Choose another file name.</source>
         <translation>„%1“ ist die Projektdatei dieses Entwurfs: Ein Export darüber würde den Entwurf zerstören. Wählen Sie einen anderen Dateinamen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/output_problem_text.cpp" line="19"/>
+        <location filename="../app/gui/output_problem_text.cpp" line="21"/>
         <source>“%1” is a folder. Choose a file name.</source>
         <translation>„%1“ ist ein Ordner. Wählen Sie einen Dateinamen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/output_problem_text.cpp" line="22"/>
+        <location filename="../app/gui/output_problem_text.cpp" line="24"/>
         <source>“%1” is a device, pipe or socket, not a file. Choose a file name.</source>
         <translation>„%1“ ist ein Gerät, eine Pipe oder ein Socket, keine Datei. Wählen Sie einen Dateinamen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/output_problem_text.cpp" line="31"/>
+        <location filename="../app/gui/output_problem_text.cpp" line="43"/>
         <source>There is not enough memory to open “%1”.</source>
         <translation>Es ist nicht genug Speicher vorhanden, um „%1“ zu öffnen.</translation>
     </message>
@@ -670,27 +670,27 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="35"/>
         <source>Laser bed 600 × 400 mm</source>
         <translation>Laserbett 600 × 400 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="38"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="36"/>
         <source>A4 (210 × 297 mm)</source>
         <translation>A4 (210 × 297 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="39"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
         <source>A3 (297 × 420 mm)</source>
         <translation>A3 (297 × 420 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="40"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="38"/>
         <source>Letter (8.5 × 11 in)</source>
         <translation>Letter (8,5 × 11 in)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="41"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="39"/>
         <source>Custom</source>
         <translation>Benutzerdefiniert</translation>
     </message>
@@ -729,6 +729,44 @@
         <location filename="../app/gui/reactions/pattern_reactions.cpp" line="157"/>
         <source>Print Pre&amp;view…</source>
         <translation>Druck&amp;vorschau…</translation>
+    </message>
+</context>
+<context>
+    <name>ReferenceCurvesCommand</name>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="31"/>
+        <source>There are no curves to import.</source>
+        <translation>Es gibt keine Kurven zum Importieren.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="35"/>
+        <source>A curve to import has fewer than two points or a coordinate that is not a number.</source>
+        <translation>Eine zu importierende Kurve hat weniger als zwei Punkte oder eine Koordinate, die keine Zahl ist.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="44"/>
+        <source>Import Curves</source>
+        <translation>Kurven importieren</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="51"/>
+        <source>Select at least one reference curve to remove.</source>
+        <translation>Wählen Sie mindestens eine Referenzkurve zum Entfernen.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="55"/>
+        <source>Reference curve %1 does not exist.</source>
+        <translation>Die Referenzkurve %1 gibt es nicht.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="65"/>
+        <source>Remove Reference Curves</source>
+        <translation>Referenzkurven entfernen</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="71"/>
+        <source>The design has no reference curves.</source>
+        <translation>Der Entwurf hat keine Referenzkurven.</translation>
     </message>
 </context>
 <context>
@@ -1051,12 +1089,12 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="83"/>
+        <location filename="../app/gui/drag_tool.cpp" line="86"/>
         <source>Drag cancelled; the design is as it was.</source>
         <translation>Ziehen abgebrochen; der Entwurf ist wie zuvor.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="79"/>
+        <location filename="../app/gui/drag_tool.cpp" line="82"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>%n Ecke ziehen</numerusform>
@@ -1064,12 +1102,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="104"/>
+        <location filename="../app/gui/drag_tool.cpp" line="107"/>
         <source>Sliding crease %1 by %2 mm within the surface, as far as it goes: the patch it moves into keeps %3 % of its width. Release to finish, Esc cancels.</source>
         <translation>Falz %1 wird um %2 mm innerhalb der Fläche verschoben, so weit es geht: das Flächenstück, in das er sich bewegt, behält %3 % seiner Breite. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="126"/>
+        <location filename="../app/gui/drag_tool.cpp" line="129"/>
         <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm entlang X gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -1077,7 +1115,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="129"/>
+        <location filename="../app/gui/drag_tool.cpp" line="132"/>
         <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm entlang Y gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -1085,7 +1123,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="132"/>
+        <location filename="../app/gui/drag_tool.cpp" line="135"/>
         <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm entlang Z gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -1093,7 +1131,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="137"/>
+        <location filename="../app/gui/drag_tool.cpp" line="140"/>
         <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm in der Bildebene gezogen. Loslassen beendet, Esc bricht ab; X, Y oder Z gedrückt halten bewegt entlang dieser Achse.</numerusform>
@@ -1101,74 +1139,79 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="242"/>
+        <location filename="../app/gui/drag_tool.cpp" line="245"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>Ecke %1 ist festgehalten und kann nicht gezogen werden; geben Sie sie zuerst frei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="260"/>
-        <location filename="../app/gui/drag_tool.cpp" line="303"/>
+        <location filename="../app/gui/drag_tool.cpp" line="263"/>
+        <location filename="../app/gui/drag_tool.cpp" line="306"/>
         <source>a drag started</source>
         <translation>ein Ziehen hat begonnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="286"/>
+        <location filename="../app/gui/drag_tool.cpp" line="289"/>
         <source>There is no edge %1.</source>
         <translation>Es gibt keine Kante %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="289"/>
+        <location filename="../app/gui/drag_tool.cpp" line="292"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>Kante %1 ist kein Falz (eine Kurve zwischen zwei Flächenstücken); nur Falze lassen sich ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="294"/>
+        <location filename="../app/gui/drag_tool.cpp" line="297"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>Kante %1 kann sich nicht bewegen: beide Enden sind festgehalten und sie hat keinen weiteren Kontrollpunkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="400"/>
+        <location filename="../app/gui/drag_tool.cpp" line="366"/>
+        <source>Snapped to reference curve %1.</source>
+        <translation>An Referenzkurve %1 gefangen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="416"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>Die festgehaltenen Ecken %1 und %2 halten Ecke %3 auf der Geraden zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="406"/>
+        <location filename="../app/gui/drag_tool.cpp" line="422"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>Die festgehaltenen Ecken %1, %2 und %3 halten Ecke %4 im Dreieck zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="87"/>
+        <location filename="../app/gui/drag_tool.cpp" line="90"/>
         <source>Drag stopped: %1 The design is as it was.</source>
         <translation>Ziehen beendet: %1 Der Entwurf ist wie zuvor.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="77"/>
+        <location filename="../app/gui/drag_tool.cpp" line="80"/>
         <source>Drag crease %1</source>
         <translation>Falz %1 ziehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="91"/>
+        <location filename="../app/gui/drag_tool.cpp" line="94"/>
         <source>Drag tool: press on a vertex in the 3D view and move the mouse; the selected vertices of its surface follow. Press on a crease to slide it within its patches. Esc cancels a drag.</source>
         <translation>Ziehwerkzeug: Drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie die Maus; die ausgewählten Ecken ihrer Fläche folgen. Drücken Sie auf einen Falz, um ihn innerhalb seiner Flächenstücke zu verschieben. Esc bricht das Ziehen ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="97"/>
+        <location filename="../app/gui/drag_tool.cpp" line="100"/>
         <source>Drag stopped: the design changed during the drag.</source>
         <translation>Ziehen beendet: Der Entwurf hat sich während des Ziehens geändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="112"/>
+        <location filename="../app/gui/drag_tool.cpp" line="115"/>
         <source>Sliding crease %1 by %2 mm within the surface. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>Falz %1 wird um %2 mm innerhalb der Fläche verschoben. Loslassen beendet, Esc bricht ab; X, Y oder Z gedrückt halten bewegt entlang dieser Achse.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="116"/>
+        <location filename="../app/gui/drag_tool.cpp" line="119"/>
         <source>Moving crease %1 by %2 mm along the axis. Release to finish, Esc cancels.</source>
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="533"/>
-        <location filename="../app/gui/drag_tool.cpp" line="546"/>
+        <location filename="../app/gui/drag_tool.cpp" line="549"/>
+        <location filename="../app/gui/drag_tool.cpp" line="562"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1304,235 +1347,325 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::ImportCurvesReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="35"/>
+        <source>%1 is not a file DevSurf reads curves from; choose a DXF, STEP or IGES file.</source>
+        <translation>Aus %1 kann DevSurf keine Kurven lesen; wählen Sie eine DXF-, STEP- oder IGES-Datei.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="39"/>
+        <source>This build of DevSurf reads curves from DXF files only; save the curves as DXF.</source>
+        <translation>Diese DevSurf-Version liest Kurven nur aus DXF-Dateien; speichern Sie die Kurven als DXF.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="42"/>
+        <source>%1 cannot be read; check that it exists and that you may read it.</source>
+        <translation>%1 kann nicht gelesen werden; prüfen Sie, ob die Datei existiert und Sie sie lesen dürfen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="46"/>
+        <source>%1 is too large to import curves from.</source>
+        <translation>%1 ist zu groß, um Kurven daraus zu importieren.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="48"/>
+        <source>%1 is damaged or not a valid file of its type; nothing was imported.</source>
+        <translation>%1 ist beschädigt oder keine gültige Datei ihres Typs; es wurde nichts importiert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="52"/>
+        <source>%1 holds no lines, polylines, splines, arcs or circles to import.</source>
+        <translation>%1 enthält keine Linien, Polylinien, Splines, Bögen oder Kreise zum Importieren.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="58"/>
+        <source>The curves of %1 could not be imported.</source>
+        <translation>Die Kurven von %1 konnten nicht importiert werden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="81"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="110"/>
+        <source>Import Curves</source>
+        <translation>Kurven importieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="82"/>
+        <source>Curve files (*.dxf *.step *.stp *.iges *.igs);;DXF (*.dxf);;STEP (*.step *.stp);;IGES (*.iges *.igs)</source>
+        <translation>Kurvendateien (*.dxf *.step *.stp *.iges *.igs);;DXF (*.dxf);;STEP (*.step *.stp);;IGES (*.iges *.igs)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="107"/>
+        <source>Reading curves from %1…</source>
+        <translation>Kurven aus %1 werden gelesen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="108"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="147"/>
+        <source>Import of curves from %1 cancelled</source>
+        <translation>Import der Kurven aus %1 abgebrochen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="149"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="155"/>
+        <source>Cannot import curves</source>
+        <translation>Kurven können nicht importiert werden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="157"/>
+        <source>Imported the curves of %1</source>
+        <translation>Die Kurven von %1 wurden importiert</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="114"/>
+        <location filename="../app/gui/main_window.cpp" line="115"/>
         <source>Patches</source>
         <translation>Flächenstücke</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="120"/>
+        <location filename="../app/gui/main_window.cpp" line="121"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="127"/>
+        <location filename="../app/gui/main_window.cpp" line="128"/>
         <source>Solver</source>
         <translation>Löser</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="140"/>
+        <location filename="../app/gui/main_window.cpp" line="141"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="147"/>
+        <location filename="../app/gui/main_window.cpp" line="148"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="149"/>
+        <location filename="../app/gui/main_window.cpp" line="150"/>
         <source>&amp;New from Example…</source>
         <translation>&amp;Neu aus Beispiel…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="151"/>
+        <location filename="../app/gui/main_window.cpp" line="152"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="153"/>
+        <location filename="../app/gui/main_window.cpp" line="154"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="157"/>
+        <location filename="../app/gui/main_window.cpp" line="158"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="160"/>
+        <location filename="../app/gui/main_window.cpp" line="161"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="164"/>
+        <location filename="../app/gui/main_window.cpp" line="165"/>
+        <source>Import &amp;Curves…</source>
+        <translation>&amp;Kurven importieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="167"/>
+        <source>Add the curves of a DXF, STEP or IGES file as reference curves</source>
+        <translation>Die Kurven einer DXF-, STEP- oder IGES-Datei als Referenzkurven hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="170"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>Austausch-JSON &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="164"/>
+        <location filename="../app/gui/main_window.cpp" line="170"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="167"/>
+        <location filename="../app/gui/main_window.cpp" line="173"/>
         <source>Export &amp;3D Shape…</source>
         <translation>&amp;3D-Form exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="171"/>
+        <location filename="../app/gui/main_window.cpp" line="177"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="178"/>
+        <location filename="../app/gui/main_window.cpp" line="184"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <location filename="../app/gui/main_window.cpp" line="187"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="188"/>
+        <location filename="../app/gui/main_window.cpp" line="194"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="190"/>
+        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <source>Remove Reference &amp;Curves</source>
+        <translation>Referenz&amp;kurven entfernen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="199"/>
         <source>Select &amp;None</source>
         <translation>Auswahl &amp;aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="191"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
+        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="106"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="195"/>
+        <location filename="../app/gui/main_window.cpp" line="204"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <location filename="../app/gui/main_window.cpp" line="206"/>
         <source>&amp;3D View</source>
         <translation>&amp;3D-Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <location filename="../app/gui/main_window.cpp" line="206"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="199"/>
+        <location filename="../app/gui/main_window.cpp" line="208"/>
         <source>&amp;Development View</source>
         <translation>&amp;Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="199"/>
+        <location filename="../app/gui/main_window.cpp" line="208"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="209"/>
         <source>3D &amp;and Development</source>
         <translation>3D &amp;und Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="201"/>
+        <location filename="../app/gui/main_window.cpp" line="210"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="205"/>
+        <location filename="../app/gui/main_window.cpp" line="214"/>
         <source>&amp;Control Polygons</source>
         <translation>&amp;Kontrollpolygone</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="205"/>
+        <location filename="../app/gui/main_window.cpp" line="214"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="206"/>
+        <location filename="../app/gui/main_window.cpp" line="215"/>
         <source>&amp;Vertices</source>
         <translation>&amp;Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207"/>
+        <location filename="../app/gui/main_window.cpp" line="216"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="211"/>
+        <location filename="../app/gui/main_window.cpp" line="220"/>
         <source>&amp;Fit All</source>
         <translation>&amp;Alles zeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="211"/>
+        <location filename="../app/gui/main_window.cpp" line="220"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="226"/>
         <source>Reset &amp;Layout</source>
         <translation>&amp;Layout zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="222"/>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <location filename="../app/gui/main_window.cpp" line="234"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>Kante &amp;umbenennen (R ↔ S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <location filename="../app/gui/main_window.cpp" line="234"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="227"/>
+        <location filename="../app/gui/main_window.cpp" line="236"/>
         <source>Add &amp;Crease…</source>
         <translation>&amp;Falz einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="230"/>
+        <location filename="../app/gui/main_window.cpp" line="239"/>
         <source>Add R&amp;uling…</source>
         <translation>&amp;Erzeugende einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="243"/>
+        <location filename="../app/gui/main_window.cpp" line="252"/>
         <source>&amp;Pin Vertices</source>
         <translation>Ecken &amp;festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="244"/>
+        <location filename="../app/gui/main_window.cpp" line="253"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="246"/>
+        <location filename="../app/gui/main_window.cpp" line="255"/>
         <source>U&amp;npin Vertices</source>
         <translation>Ecken &amp;freigeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="247"/>
+        <location filename="../app/gui/main_window.cpp" line="256"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="249"/>
+        <location filename="../app/gui/main_window.cpp" line="258"/>
         <source>Hold the &amp;Sheet</source>
         <translation>&amp;Bogen festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="250"/>
+        <location filename="../app/gui/main_window.cpp" line="259"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="376"/>
+        <location filename="../app/gui/main_window.cpp" line="385"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n Fläche</numerusform>
@@ -1540,7 +1673,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="377"/>
+        <location filename="../app/gui/main_window.cpp" line="386"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -1548,7 +1681,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="378"/>
+        <location filename="../app/gui/main_window.cpp" line="387"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -1556,7 +1689,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="379"/>
+        <location filename="../app/gui/main_window.cpp" line="388"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n ausgewählt</numerusform>
@@ -1564,77 +1697,77 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="228"/>
+        <location filename="../app/gui/main_window.cpp" line="237"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="240"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="233"/>
+        <location filename="../app/gui/main_window.cpp" line="242"/>
         <source>Re&amp;fine Curves</source>
         <translation>Kurven &amp;verfeinern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="234"/>
+        <location filename="../app/gui/main_window.cpp" line="243"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="240"/>
+        <location filename="../app/gui/main_window.cpp" line="249"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>Ecken &amp;verschieben oder drehen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="240"/>
+        <location filename="../app/gui/main_window.cpp" line="249"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="279"/>
+        <location filename="../app/gui/main_window.cpp" line="288"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="280"/>
+        <location filename="../app/gui/main_window.cpp" line="289"/>
         <source>&amp;User Manual</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="287"/>
+        <location filename="../app/gui/main_window.cpp" line="296"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="293"/>
+        <location filename="../app/gui/main_window.cpp" line="302"/>
         <source>&amp;About DevSurf</source>
         <translation>&amp;Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="295"/>
+        <location filename="../app/gui/main_window.cpp" line="304"/>
         <source>About DevSurf</source>
         <translation>Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="296"/>
+        <location filename="../app/gui/main_window.cpp" line="305"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen mit Spline-Torsen (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="339"/>
+        <location filename="../app/gui/main_window.cpp" line="348"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="361"/>
+        <location filename="../app/gui/main_window.cpp" line="370"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="362"/>
+        <location filename="../app/gui/main_window.cpp" line="371"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
@@ -1677,22 +1810,22 @@
         <translation>Höchstzahl der Iterationen von Werkzeuge ▸ Lösen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="67"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="75"/>
         <source>R&amp;otate Vertices</source>
         <translation>Ecken dr&amp;ehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="76"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="71"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="79"/>
         <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
         <translation>Drehwerkzeug (R): Wählen Sie zwei oder mehr Ecken aus, drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie die Maus seitwärts; sie drehen sich um eine Achse durch ihren Schwerpunkt (senkrecht oder wie in der Werkzeugleiste gewählt), und die Fläche folgt. Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="89"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="97"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>Beenden Sie zuerst das Ziehen; es löst bereits während der Bewegung.</translation>
     </message>
@@ -1712,152 +1845,162 @@
         <translation>Ziehwerkzeug: Drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie sie, die Fläche folgt und bleibt abwickelbar; drücken Sie auf einen Falz, um ihn innerhalb seiner Flächenstücke zu verschieben. Die in der Werkzeugleiste gewählte Achse oder gedrückt gehaltenes X, Y oder Z bewegt entlang dieser Achse; Esc bricht das Ziehen ab (G).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="97"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="66"/>
+        <source>S&amp;nap to Reference Curves</source>
+        <translation>An Referenzkurven &amp;fangen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
+        <source>While dragging a vertex (no axis chosen), put it on the nearest reference curve drawn within 10 pixels of the mouse.</source>
+        <translation>Beim Ziehen eines Eckpunkts (ohne gewählte Achse) wird er auf die nächste Referenzkurve gesetzt, die höchstens 10 Pixel von der Maus entfernt gezeichnet ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="105"/>
         <source>&amp;Cancel Solve</source>
         <translation>Lösen &amp;abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="100"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="108"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>Das laufende Lösen beenden; der Entwurf bleibt, wie er ist (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="124"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="132"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>Lösen: Iteration %1 von %2, Residuum %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="137"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="145"/>
         <source>&amp;Lengths While Dragging</source>
         <translation>&amp;Längen beim Ziehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="149"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="157"/>
         <source>&amp;Automatic</source>
         <translation>&amp;Automatisch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="150"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="158"/>
         <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over, collapses a strip or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
         <translation>Das Ziehen und Drehen von Ecken behält die Längen bei. Wo das Blatt so nicht folgen kann (das Ziehen konvergiert nicht, faltet sich zurück, lässt einen Streifen zusammenfallen oder seine Abwicklung überlappt sich selbst), wird es beim Loslassen mit Dehnen des Blatts wiederholt, und das bessere der beiden Ergebnisse bleibt; das Löser-Fenster sagt es.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="154"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="162"/>
         <source>&amp;Keep Lengths</source>
         <translation>Längen &amp;beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="155"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="163"/>
         <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape and fold. A motion the sheet cannot make without stretching then may not converge. Dragged creases always resize their patches.</source>
         <translation>Beim Ziehen oder Drehen von Ecken biegt sich das Blatt, statt sich zu dehnen: entfernte Teile bleiben an ihrem Platz, und gekrümmte Falze behalten ihre Form und falten sich. Eine Bewegung, die das Blatt nicht ohne Dehnen ausführen kann, konvergiert dann unter Umständen nicht. Gezogene Falze ändern die Größe ihrer Flächenstücke immer.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="159"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="167"/>
         <source>Let &amp;Stretch</source>
         <translation>&amp;Dehnen zulassen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="160"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="168"/>
         <source>While dragging or rotating vertices, the sheet may stretch: it stays developable and its development changes, curved creases may be pulled straight and large drags may crumple it.</source>
         <translation>Beim Ziehen oder Drehen von Ecken darf sich das Blatt dehnen: es bleibt abwickelbar und seine Abwicklung ändert sich, gekrümmte Falze können gerade gezogen werden, und große Bewegungen können es zerknittern.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="182"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="190"/>
         <source>Motion &amp;Axis</source>
         <translation>Bewegungs&amp;achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="194"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
         <source>&amp;Free</source>
         <translation>&amp;Frei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="195"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="203"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>Freie Bewegung: Das Ziehwerkzeug bewegt Ecken in der Bildebene; das Drehwerkzeug dreht sie um die senkrechte Achse (Z) oder um die Blickachse, wenn Werkzeuge ▸ Bewegungsachse ▸ Um die Blickachse drehen eingeschaltet ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="198"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="206"/>
         <source>&amp;X Axis</source>
         <translation>&amp;X-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="199"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="207"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang X; das Drehwerkzeug dreht sie um eine zu X parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes Y oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="201"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="209"/>
         <source>&amp;Y Axis</source>
         <translation>&amp;Y-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="210"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Y; das Drehwerkzeug dreht sie um eine zu Y parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="204"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="212"/>
         <source>&amp;Z Axis</source>
         <translation>&amp;Z-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="205"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="213"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Z; das Drehwerkzeug dreht sie um eine zu Z parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Y hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="229"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="237"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>Um die &amp;Blickachse drehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="232"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="240"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>Bei der Achswahl „Frei“ dreht das Drehwerkzeug die Ecken um die Blickrichtung durch ihren Schwerpunkt statt um die senkrechte Achse.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="246"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
         <source>Colour &amp;By</source>
         <translation>&amp;Färben nach</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
         <source>&amp;Patch</source>
         <translation>&amp;Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
         <source>&amp;Developability</source>
         <translation>&amp;Abwickelbarkeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
         <source>&amp;Flatness</source>
         <translation>&amp;Ebenheit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="255"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="263"/>
         <source>&amp;Angle Defect</source>
         <translation>&amp;Winkeldefekt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="257"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="265"/>
         <source>Every patch in its own colour.</source>
         <translation>Jedes Flächenstück in seiner eigenen Farbe.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="258"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>Wie weit jedes abgetastete Streifenviereck von abwickelbar entfernt ist: das normierte |det(a−b, a′, b′)|, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="260"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="268"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>Ebenheit δ jedes abgetasteten Vierecks: der Abstand seiner Diagonalen durch das Mittel seiner zwei kürzesten Kanten, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="270"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>Winkeldefekt |K| = |2π − Σ Winkel| an den inneren Ecken des abgetasteten Netzes, im Bogenmaß, logarithmisch skaliert.</translation>
     </message>
@@ -2016,237 +2159,237 @@
 <context>
     <name>devsurf::app::PatternExportDialog</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="86"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="84"/>
         <source>DXF drawing (*.dxf)</source>
         <translation>DXF-Zeichnung (*.dxf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="88"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="86"/>
         <source>SVG image (*.svg)</source>
         <translation>SVG-Bild (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="90"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="88"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF-Dokument (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="92"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="90"/>
         <source>FOLD crease pattern (*.fold)</source>
         <translation>FOLD-Faltmuster (*.fold)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="342"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="351"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="98"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="340"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="348"/>
         <source>Export Cutting Pattern</source>
         <translation>Schnittmuster exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="102"/>
         <source>DXF (laser and plotter cutters)</source>
         <translation>DXF (Laser- und Plotterschneider)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="102"/>
         <source>SVG (vinyl and paper cutters)</source>
         <translation>SVG (Folien- und Papierschneider)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
         <source>PDF (print at 1:1, tiled)</source>
         <translation>PDF (Druck 1:1, gekachelt)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
         <source>FOLD (origami simulators)</source>
         <translation>FOLD (Origami-Simulatoren)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="106"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="108"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="106"/>
         <source>&amp;Polylines</source>
         <translation>&amp;Polylinien</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="109"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="107"/>
         <source>S&amp;plines</source>
         <translation>S&amp;plines</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="116"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="114"/>
         <source>DXF &amp;R12 (for old cutter software)</source>
         <translation>DXF &amp;R12 (für alte Schneidsoftware)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="118"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="116"/>
         <source>Curves:</source>
         <translation>Kurven:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="142"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="158"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="122"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="140"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="156"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="123"/>
         <source>&amp;Tolerance:</source>
         <translation>&amp;Toleranz:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
         <source>Cut</source>
         <translation>Schnitt</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
         <source>Mountain</source>
         <translation>Berg</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
         <source>Valley</source>
         <translation>Tal</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Crease</source>
         <translation>Falz</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Rulings (score)</source>
         <translation>Erzeugende (ritzen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Seam</source>
         <translation>Naht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="130"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Labels</source>
         <translation>Beschriftungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="138"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="136"/>
         <source>Layers:</source>
         <translation>Ebenen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="143"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="141"/>
         <source>as &amp;glue tabs</source>
         <translation>als &amp;Klebelaschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="147"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="145"/>
         <source>&amp;Seam allowance:</source>
         <translation>&amp;Nahtzugabe:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="165"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="163"/>
         <source>S&amp;heet:</source>
         <translation>&amp;Bogen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="166"/>
         <source>A4</source>
         <translation>A4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="166"/>
         <source>A3</source>
         <translation>A3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="166"/>
         <source>Letter</source>
         <translation>Letter</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="169"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
         <source>P&amp;aper (PDF):</source>
         <translation>P&amp;apier (PDF):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
         <source>Piece</source>
         <translation>Teil</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
         <source>Sheet</source>
         <translation>Bogen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
         <source>Size (mm)</source>
         <translation>Größe (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
         <source>Area (mm²)</source>
         <translation>Fläche (mm²)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
         <source>Isometry error (mm)</source>
         <translation>Isometriefehler (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Fits sheet</source>
         <translation>Passt auf Bogen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Overlaps</source>
         <translation>Überlappungen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="182"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="180"/>
         <source>Fabrication report</source>
         <translation>Fertigungsbericht</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="189"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="187"/>
         <source>&amp;Export…</source>
         <translation>&amp;Exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="300"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="298"/>
         <source>itself</source>
         <translation>sich selbst</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="307"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="312"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="305"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="310"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="308"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="306"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="311"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
         <source>yes</source>
         <translation>ja</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="311"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
         <source>no</source>
         <translation>nein</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="317"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="315"/>
         <source>%n piece(s)</source>
         <translation>
             <numerusform>%n Teil</numerusform>
@@ -2254,7 +2397,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="318"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="316"/>
         <source>%n sheet(s)</source>
         <translation>
             <numerusform>%n Bogen</numerusform>
@@ -2262,34 +2405,34 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="320"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="318"/>
         <source>largest isometry error %1 mm</source>
         <translation>größter Isometriefehler %1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="340"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="338"/>
         <source>Some pieces overlap and cannot be cut as laid out. Export anyway?</source>
         <translation>Einige Teile überlappen sich und können so nicht geschnitten werden. Trotzdem exportieren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="341"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="339"/>
         <source>The pattern has problems (see the report). Export anyway?</source>
         <translation>Das Schnittmuster hat Probleme (siehe Bericht). Trotzdem exportieren?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="382"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="373"/>
         <source>Writing the cutting pattern…</source>
         <translation>Das Schnittmuster wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="382"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="373"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="368"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="393"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="359"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="369"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="384"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
@@ -2507,6 +2650,14 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::RemoveReferenceCurvesReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="174"/>
+        <source>Cannot remove the reference curves</source>
+        <translation>Die Referenzkurven können nicht entfernt werden</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::RotateTool</name>
     <message>
         <location filename="../app/gui/rotate_tool.cpp" line="29"/>
@@ -2586,156 +2737,156 @@
 <context>
     <name>devsurf::app::ShapeExportDialog</name>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="37"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="35"/>
         <source>The design has no surface to export.</source>
         <translation>Der Entwurf hat keine Fläche, die exportiert werden könnte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="39"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="37"/>
         <source>Patch %1 of surface %2 cannot be written as an exact surface.</source>
         <translation>Flächenstück %1 der Fläche %2 kann nicht als exakte Fläche geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="44"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="42"/>
         <source>The shape could not be translated into this format. Try another format.</source>
         <translation>Die Form ließ sich nicht in dieses Format übertragen. Versuchen Sie ein anderes Format.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="57"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="132"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="196"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="222"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="55"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="130"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="187"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="213"/>
         <source>Export 3D Shape</source>
         <translation>3D-Form exportieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="58"/>
         <source>STEP AP242: exact surfaces</source>
         <translation>STEP AP242: exakte Flächen</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="58"/>
         <source>STEP AP214: exact surfaces</source>
         <translation>STEP AP214: exakte Flächen</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="59"/>
         <source>IGES: exact surfaces</source>
         <translation>IGES: exakte Flächen</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="59"/>
         <source>OBJ mesh: a group per patch</source>
         <translation>OBJ-Netz: eine Gruppe je Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
         <source>STL mesh (binary)</source>
         <translation>STL-Netz (binär)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
         <source>PLY mesh (binary)</source>
         <translation>PLY-Netz (binär)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="69"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="76"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="67"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="74"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="70"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="68"/>
         <source>How far the mesh&apos;s triangles may stray from the exact surface.</source>
         <translation>Wie weit die Dreiecke des Netzes von der exakten Fläche abweichen dürfen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="77"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="75"/>
         <source>none (the surface)</source>
         <translation>keine (die Fläche)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="79"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="77"/>
         <source>A sheet of this thickness for 3D printing: both sides offset by half of it, the rim closed.</source>
         <translation>Eine Platte dieser Dicke für den 3D-Druck: beide Seiten um die Hälfte versetzt, der Rand geschlossen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="85"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="83"/>
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="86"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="84"/>
         <source>Chord &amp;tolerance:</source>
         <translation>Sehnen&amp;toleranz:</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="87"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="85"/>
         <source>T&amp;hickness:</source>
         <translation>&amp;Dicke:</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="89"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="87"/>
         <source>&amp;Export…</source>
         <translation>&amp;Exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="122"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="120"/>
         <source>A triangle mesh for renderers, slicers and mesh tools; watertight wherever the design is.</source>
         <translation>Ein Dreiecksnetz für Renderer, Slicer und Netzwerkzeuge; wasserdicht überall dort, wo der Entwurf es ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="122"/>
         <source>Every patch as its exact B-spline surface, sewn into one shell per surface, in millimetres, faces named after their patches.</source>
         <translation>Jedes Flächenstück als seine exakte B-Spline-Fläche, je Fläche zu einer Schale vernäht, in Millimetern, die Flächen nach ihren Flächenstücken benannt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="134"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="131"/>
         <source>%1 files (*.%2)</source>
         <translation>%1-Dateien (*.%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="150"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="158"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="161"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="163"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="141"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="149"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="152"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="154"/>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="169"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="160"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="202"/>
         <source>Writing the 3D shape…</source>
         <translation>Die 3D-Form wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="169"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="160"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="202"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="187"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="178"/>
         <source>surface %1, edge %2 (%3 mm apart)</source>
         <translation>Fläche %1, Kante %2 (%3 mm auseinander)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="193"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="184"/>
         <source>faces: %1, shells: %2</source>
         <translation>Flächen: %1, Schalen: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="197"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="188"/>
         <source>The shape was written, but some patches could not be sewn together and stay apart in the file: %1.</source>
         <translation>Die Form wurde geschrieben, aber einige Flächenstücke ließen sich nicht vernähen und bleiben in der Datei getrennt: %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="220"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
         <source>triangles: %1</source>
         <translation>Dreiecke: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="223"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="214"/>
         <source>The mesh was written with %1 samples per curve interval, the most DevSurf writes, and is coarser than the tolerance asked for.</source>
         <translation>Das Netz wurde mit %1 Abtastpunkten je Kurvenintervall geschrieben, dem Höchstwert von DevSurf, und ist gröber als die verlangte Toleranz.</translation>
     </message>
@@ -3381,7 +3532,7 @@
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="586"/>
+        <location filename="../views/scene_view.cpp" line="594"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>Fläche %1 ist ungültig und wird nicht angezeigt.</translation>
     </message>

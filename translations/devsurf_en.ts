@@ -102,7 +102,7 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="79"/>
+        <location filename="../app/gui/drag_tool.cpp" line="82"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>Drag %n vertex</numerusform>
@@ -110,7 +110,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="126"/>
+        <location filename="../app/gui/drag_tool.cpp" line="129"/>
         <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along X. Release to finish, Esc cancels.</numerusform>
@@ -118,7 +118,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="129"/>
+        <location filename="../app/gui/drag_tool.cpp" line="132"/>
         <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along Y. Release to finish, Esc cancels.</numerusform>
@@ -126,7 +126,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="132"/>
+        <location filename="../app/gui/drag_tool.cpp" line="135"/>
         <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along Z. Release to finish, Esc cancels.</numerusform>
@@ -134,7 +134,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="137"/>
+        <location filename="../app/gui/drag_tool.cpp" line="140"/>
         <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</numerusform>
@@ -145,7 +145,7 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="376"/>
+        <location filename="../app/gui/main_window.cpp" line="385"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n surface</numerusform>
@@ -153,7 +153,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="377"/>
+        <location filename="../app/gui/main_window.cpp" line="386"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n patch</numerusform>
@@ -161,7 +161,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="378"/>
+        <location filename="../app/gui/main_window.cpp" line="387"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n control point</numerusform>
@@ -169,7 +169,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="379"/>
+        <location filename="../app/gui/main_window.cpp" line="388"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n selected</numerusform>
@@ -199,7 +199,7 @@
 <context>
     <name>devsurf::app::PatternExportDialog</name>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="317"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="315"/>
         <source>%n piece(s)</source>
         <translation>
             <numerusform>%n piece</numerusform>
@@ -207,7 +207,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="318"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="316"/>
         <source>%n sheet(s)</source>
         <translation>
             <numerusform>%n sheet</numerusform>

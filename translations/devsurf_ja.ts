@@ -188,22 +188,22 @@
 <context>
     <name>OutputProblem</name>
     <message>
-        <location filename="../app/gui/output_problem_text.cpp" line="14"/>
+        <location filename="../app/gui/output_problem_text.cpp" line="16"/>
         <source>“%1” is the project file of this design: exporting over it would destroy the design. Choose another file name.</source>
         <translation>「%1」はこのデザインのプロジェクトファイルです。上書きしてエクスポートするとデザインが失われます。別のファイル名を選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/output_problem_text.cpp" line="19"/>
+        <location filename="../app/gui/output_problem_text.cpp" line="21"/>
         <source>“%1” is a folder. Choose a file name.</source>
         <translation>「%1」はフォルダーです。ファイル名を選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/output_problem_text.cpp" line="22"/>
+        <location filename="../app/gui/output_problem_text.cpp" line="24"/>
         <source>“%1” is a device, pipe or socket, not a file. Choose a file name.</source>
         <translation>「%1」はデバイス、パイプまたはソケットで、ファイルではありません。ファイル名を選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/output_problem_text.cpp" line="31"/>
+        <location filename="../app/gui/output_problem_text.cpp" line="43"/>
         <source>There is not enough memory to open “%1”.</source>
         <translation>「%1」を開くためのメモリが足りません。</translation>
     </message>
@@ -663,27 +663,27 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="35"/>
         <source>Laser bed 600 × 400 mm</source>
         <translation>レーザー加工機のベッド 600 × 400 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="38"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="36"/>
         <source>A4 (210 × 297 mm)</source>
         <translation>A4 (210 × 297 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="39"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="37"/>
         <source>A3 (297 × 420 mm)</source>
         <translation>A3 (297 × 420 mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="40"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="38"/>
         <source>Letter (8.5 × 11 in)</source>
         <translation>レター (8.5 × 11 in)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="41"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="39"/>
         <source>Custom</source>
         <translation>カスタム</translation>
     </message>
@@ -722,6 +722,44 @@
         <location filename="../app/gui/reactions/pattern_reactions.cpp" line="157"/>
         <source>Print Pre&amp;view…</source>
         <translation>印刷プレビュー(&amp;V)…</translation>
+    </message>
+</context>
+<context>
+    <name>ReferenceCurvesCommand</name>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="31"/>
+        <source>There are no curves to import.</source>
+        <translation>読み込む曲線がありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="35"/>
+        <source>A curve to import has fewer than two points or a coordinate that is not a number.</source>
+        <translation>読み込む曲線に、点が 2 つ未満のもの、または数値でない座標を持つものがあります。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="44"/>
+        <source>Import Curves</source>
+        <translation>曲線を読み込む</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="51"/>
+        <source>Select at least one reference curve to remove.</source>
+        <translation>削除する参照曲線を 1 本以上選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="55"/>
+        <source>Reference curve %1 does not exist.</source>
+        <translation>参照曲線 %1 は存在しません。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="65"/>
+        <source>Remove Reference Curves</source>
+        <translation>参照曲線を削除</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="71"/>
+        <source>The design has no reference curves.</source>
+        <translation>デザインに参照曲線はありません。</translation>
     </message>
 </context>
 <context>
@@ -1041,119 +1079,124 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="83"/>
+        <location filename="../app/gui/drag_tool.cpp" line="86"/>
         <source>Drag cancelled; the design is as it was.</source>
         <translation>ドラッグを取り消しました。デザインは元のままです。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="79"/>
+        <location filename="../app/gui/drag_tool.cpp" line="82"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>%n 個の頂点をドラッグ</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="104"/>
+        <location filename="../app/gui/drag_tool.cpp" line="107"/>
         <source>Sliding crease %1 by %2 mm within the surface, as far as it goes: the patch it moves into keeps %3 % of its width. Release to finish, Esc cancels.</source>
         <translation>折り線 %1 を曲面の中で %2 mm 移動中 (これ以上は動きません。移動先のパッチは幅の %3 % を保ちます)。離すと終了、Esc で取り消し。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="126"/>
+        <location filename="../app/gui/drag_tool.cpp" line="129"/>
         <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を X 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="129"/>
+        <location filename="../app/gui/drag_tool.cpp" line="132"/>
         <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を Y 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="132"/>
+        <location filename="../app/gui/drag_tool.cpp" line="135"/>
         <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を Z 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="137"/>
+        <location filename="../app/gui/drag_tool.cpp" line="140"/>
         <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>
             <numerusform>%n 個の頂点を視平面内で %1 mm ドラッグ中。離すと確定、Esc で取り消し。X、Y、Z を押し続けるとその軸に沿って動きます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="242"/>
+        <location filename="../app/gui/drag_tool.cpp" line="245"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>頂点 %1 は固定されているためドラッグできません。先に固定を解除してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="260"/>
-        <location filename="../app/gui/drag_tool.cpp" line="303"/>
+        <location filename="../app/gui/drag_tool.cpp" line="263"/>
+        <location filename="../app/gui/drag_tool.cpp" line="306"/>
         <source>a drag started</source>
         <translation>ドラッグが始まりました</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="286"/>
+        <location filename="../app/gui/drag_tool.cpp" line="289"/>
         <source>There is no edge %1.</source>
         <translation>辺 %1 はありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="289"/>
+        <location filename="../app/gui/drag_tool.cpp" line="292"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>辺 %1 は折り線 (2 つのパッチの間の曲線) ではありません。ドラッグできるのは折り線だけです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="294"/>
+        <location filename="../app/gui/drag_tool.cpp" line="297"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>辺 %1 は動かせません: 両端が固定されていて、ほかに制御点がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="400"/>
+        <location filename="../app/gui/drag_tool.cpp" line="366"/>
+        <source>Snapped to reference curve %1.</source>
+        <translation>参照曲線 %1 にスナップしました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="416"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1 と %2 が頂点 %3 をその間の直線上に押さえています (2 点の距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="406"/>
+        <location filename="../app/gui/drag_tool.cpp" line="422"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1、%2、%3 が頂点 %4 をその三角形の中に押さえています (距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="87"/>
+        <location filename="../app/gui/drag_tool.cpp" line="90"/>
         <source>Drag stopped: %1 The design is as it was.</source>
         <translation>ドラッグを中止しました: %1 デザインは元のままです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="77"/>
+        <location filename="../app/gui/drag_tool.cpp" line="80"/>
         <source>Drag crease %1</source>
         <translation>折り線 %1 をドラッグ</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="91"/>
+        <location filename="../app/gui/drag_tool.cpp" line="94"/>
         <source>Drag tool: press on a vertex in the 3D view and move the mouse; the selected vertices of its surface follow. Press on a crease to slide it within its patches. Esc cancels a drag.</source>
         <translation>ドラッグツール: 3D ビューで頂点を押してマウスを動かすと、その曲面の選択した頂点が追従します。折り線を押すと、パッチの中で折り線を滑らせます。Esc でドラッグを取り消します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="97"/>
+        <location filename="../app/gui/drag_tool.cpp" line="100"/>
         <source>Drag stopped: the design changed during the drag.</source>
         <translation>ドラッグを中止しました: ドラッグ中にデザインが変更されました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="112"/>
+        <location filename="../app/gui/drag_tool.cpp" line="115"/>
         <source>Sliding crease %1 by %2 mm within the surface. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>折り線 %1 を曲面の中で %2 mm 移動中。離すと終了、Esc で取り消し。X、Y、Z を押したままにするとその軸に沿って動きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="116"/>
+        <location filename="../app/gui/drag_tool.cpp" line="119"/>
         <source>Moving crease %1 by %2 mm along the axis. Release to finish, Esc cancels.</source>
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="533"/>
-        <location filename="../app/gui/drag_tool.cpp" line="546"/>
+        <location filename="../app/gui/drag_tool.cpp" line="549"/>
+        <location filename="../app/gui/drag_tool.cpp" line="562"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1289,331 +1332,421 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::ImportCurvesReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="35"/>
+        <source>%1 is not a file DevSurf reads curves from; choose a DXF, STEP or IGES file.</source>
+        <translation>%1 は DevSurf が曲線を読み込めるファイルではありません。DXF、STEP または IGES ファイルを選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="39"/>
+        <source>This build of DevSurf reads curves from DXF files only; save the curves as DXF.</source>
+        <translation>この DevSurf は DXF ファイルからのみ曲線を読み込みます。曲線を DXF で保存してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="42"/>
+        <source>%1 cannot be read; check that it exists and that you may read it.</source>
+        <translation>%1 を読み込めません。ファイルが存在し、読み取り権限があるか確認してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="46"/>
+        <source>%1 is too large to import curves from.</source>
+        <translation>%1 は大きすぎて曲線を読み込めません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="48"/>
+        <source>%1 is damaged or not a valid file of its type; nothing was imported.</source>
+        <translation>%1 は壊れているか、その形式の有効なファイルではありません。何も読み込んでいません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="52"/>
+        <source>%1 holds no lines, polylines, splines, arcs or circles to import.</source>
+        <translation>%1 には読み込める線分、ポリライン、スプライン、円弧、円がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="58"/>
+        <source>The curves of %1 could not be imported.</source>
+        <translation>%1 の曲線を読み込めませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="81"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="110"/>
+        <source>Import Curves</source>
+        <translation>曲線を読み込む</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="82"/>
+        <source>Curve files (*.dxf *.step *.stp *.iges *.igs);;DXF (*.dxf);;STEP (*.step *.stp);;IGES (*.iges *.igs)</source>
+        <translation>曲線ファイル (*.dxf *.step *.stp *.iges *.igs);;DXF (*.dxf);;STEP (*.step *.stp);;IGES (*.iges *.igs)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="107"/>
+        <source>Reading curves from %1…</source>
+        <translation>%1 から曲線を読み込んでいます…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="108"/>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="147"/>
+        <source>Import of curves from %1 cancelled</source>
+        <translation>%1 からの曲線の読み込みを中止しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="149"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="155"/>
+        <source>Cannot import curves</source>
+        <translation>曲線を読み込めません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="157"/>
+        <source>Imported the curves of %1</source>
+        <translation>%1 の曲線を読み込みました</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="114"/>
+        <location filename="../app/gui/main_window.cpp" line="115"/>
         <source>Patches</source>
         <translation>パッチ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="120"/>
+        <location filename="../app/gui/main_window.cpp" line="121"/>
         <source>Properties</source>
         <translation>プロパティ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="127"/>
+        <location filename="../app/gui/main_window.cpp" line="128"/>
         <source>Solver</source>
         <translation>ソルバー</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="140"/>
+        <location filename="../app/gui/main_window.cpp" line="141"/>
         <source>Main</source>
         <translation>メイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="147"/>
+        <location filename="../app/gui/main_window.cpp" line="148"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="149"/>
+        <location filename="../app/gui/main_window.cpp" line="150"/>
         <source>&amp;New from Example…</source>
         <translation>例から新規作成(&amp;N)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="151"/>
+        <location filename="../app/gui/main_window.cpp" line="152"/>
         <source>&amp;Open…</source>
         <translation>開く(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="153"/>
+        <location filename="../app/gui/main_window.cpp" line="154"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="157"/>
+        <location filename="../app/gui/main_window.cpp" line="158"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="160"/>
+        <location filename="../app/gui/main_window.cpp" line="161"/>
         <source>Save &amp;As…</source>
         <translation>名前を付けて保存(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="164"/>
+        <location filename="../app/gui/main_window.cpp" line="165"/>
+        <source>Import &amp;Curves…</source>
+        <translation>曲線を読み込む(&amp;C)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="167"/>
+        <source>Add the curves of a DXF, STEP or IGES file as reference curves</source>
+        <translation>DXF、STEP または IGES ファイルの曲線を参照曲線として加えます</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="170"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>交換用 JSON をエクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="164"/>
+        <location filename="../app/gui/main_window.cpp" line="170"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="167"/>
+        <location filename="../app/gui/main_window.cpp" line="173"/>
         <source>Export &amp;3D Shape…</source>
         <translation>3D 形状をエクスポート(&amp;3)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="171"/>
+        <location filename="../app/gui/main_window.cpp" line="177"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="178"/>
+        <location filename="../app/gui/main_window.cpp" line="184"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <location filename="../app/gui/main_window.cpp" line="187"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="188"/>
+        <location filename="../app/gui/main_window.cpp" line="194"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="190"/>
+        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <source>Remove Reference &amp;Curves</source>
+        <translation>参照曲線を削除(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="199"/>
         <source>Select &amp;None</source>
         <translation>選択を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="191"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
+        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="106"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="195"/>
+        <location filename="../app/gui/main_window.cpp" line="204"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <location filename="../app/gui/main_window.cpp" line="206"/>
         <source>&amp;3D View</source>
         <translation>3D ビュー(&amp;3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="197"/>
+        <location filename="../app/gui/main_window.cpp" line="206"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="199"/>
+        <location filename="../app/gui/main_window.cpp" line="208"/>
         <source>&amp;Development View</source>
         <translation>展開図ビュー(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="199"/>
+        <location filename="../app/gui/main_window.cpp" line="208"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="209"/>
         <source>3D &amp;and Development</source>
         <translation>3D と展開図(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="201"/>
+        <location filename="../app/gui/main_window.cpp" line="210"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="205"/>
+        <location filename="../app/gui/main_window.cpp" line="214"/>
         <source>&amp;Control Polygons</source>
         <translation>制御多角形(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="205"/>
+        <location filename="../app/gui/main_window.cpp" line="214"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="206"/>
+        <location filename="../app/gui/main_window.cpp" line="215"/>
         <source>&amp;Vertices</source>
         <translation>頂点(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207"/>
+        <location filename="../app/gui/main_window.cpp" line="216"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="211"/>
+        <location filename="../app/gui/main_window.cpp" line="220"/>
         <source>&amp;Fit All</source>
         <translation>全体を表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="211"/>
+        <location filename="../app/gui/main_window.cpp" line="220"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="226"/>
         <source>Reset &amp;Layout</source>
         <translation>レイアウトをリセット(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="222"/>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <location filename="../app/gui/main_window.cpp" line="234"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>辺のラベルを変更 (R ↔ S)(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <location filename="../app/gui/main_window.cpp" line="234"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="227"/>
+        <location filename="../app/gui/main_window.cpp" line="236"/>
         <source>Add &amp;Crease…</source>
         <translation>折り線を追加(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="228"/>
+        <location filename="../app/gui/main_window.cpp" line="237"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="230"/>
+        <location filename="../app/gui/main_window.cpp" line="239"/>
         <source>Add R&amp;uling…</source>
         <translation>母線を追加(&amp;U)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="240"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="233"/>
+        <location filename="../app/gui/main_window.cpp" line="242"/>
         <source>Re&amp;fine Curves</source>
         <translation>曲線を細分化(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="234"/>
+        <location filename="../app/gui/main_window.cpp" line="243"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="240"/>
+        <location filename="../app/gui/main_window.cpp" line="249"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>頂点の移動・回転(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="240"/>
+        <location filename="../app/gui/main_window.cpp" line="249"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="243"/>
+        <location filename="../app/gui/main_window.cpp" line="252"/>
         <source>&amp;Pin Vertices</source>
         <translation>頂点を固定(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="244"/>
+        <location filename="../app/gui/main_window.cpp" line="253"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="246"/>
+        <location filename="../app/gui/main_window.cpp" line="255"/>
         <source>U&amp;npin Vertices</source>
         <translation>頂点の固定を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="247"/>
+        <location filename="../app/gui/main_window.cpp" line="256"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="249"/>
+        <location filename="../app/gui/main_window.cpp" line="258"/>
         <source>Hold the &amp;Sheet</source>
         <translation>シートを保持(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="250"/>
+        <location filename="../app/gui/main_window.cpp" line="259"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="279"/>
+        <location filename="../app/gui/main_window.cpp" line="288"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="280"/>
+        <location filename="../app/gui/main_window.cpp" line="289"/>
         <source>&amp;User Manual</source>
         <translation>ユーザーマニュアル(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="287"/>
+        <location filename="../app/gui/main_window.cpp" line="296"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="293"/>
+        <location filename="../app/gui/main_window.cpp" line="302"/>
         <source>&amp;About DevSurf</source>
         <translation>DevSurf について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="295"/>
+        <location filename="../app/gui/main_window.cpp" line="304"/>
         <source>About DevSurf</source>
         <translation>DevSurf について</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="296"/>
+        <location filename="../app/gui/main_window.cpp" line="305"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;スプライン可展面による可展面と曲線折り折り紙の設計 (Tang, Bo, Wallner, Pottmann 2015)。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="339"/>
+        <location filename="../app/gui/main_window.cpp" line="348"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="361"/>
+        <location filename="../app/gui/main_window.cpp" line="370"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="362"/>
+        <location filename="../app/gui/main_window.cpp" line="371"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="376"/>
+        <location filename="../app/gui/main_window.cpp" line="385"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>曲面 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="377"/>
+        <location filename="../app/gui/main_window.cpp" line="386"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="378"/>
+        <location filename="../app/gui/main_window.cpp" line="387"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="379"/>
+        <location filename="../app/gui/main_window.cpp" line="388"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n 個選択</numerusform>
@@ -1657,22 +1790,22 @@
         <translation>ツール ▸ ソルブの反復回数の上限:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="67"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="75"/>
         <source>R&amp;otate Vertices</source>
         <translation>頂点を回転(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="76"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="71"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="79"/>
         <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
         <translation>回転ツール (R): 2 個以上の頂点を選択し、3D ビューで頂点を押してマウスを横に動かすと、頂点が重心を通る軸 (鉛直、またはツールバーで選んだ軸) の周りに回転し、曲面が追従します。Esc で取り消します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="89"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="97"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>先にドラッグを終えてください。ドラッグ中も随時ソルブしています。</translation>
     </message>
@@ -1692,152 +1825,162 @@
         <translation>ドラッグツール: 3D ビューで頂点を押して動かすと、曲面が追従して可展のまま保たれます。折り線を押すと、パッチの中で折り線を滑らせます。ツールバーで選んだ軸、または X、Y、Z を押したままにすると、その軸に沿って動きます。Esc でドラッグを取り消します (G)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="97"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="66"/>
+        <source>S&amp;nap to Reference Curves</source>
+        <translation>参照曲線にスナップ(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
+        <source>While dragging a vertex (no axis chosen), put it on the nearest reference curve drawn within 10 pixels of the mouse.</source>
+        <translation>頂点をドラッグするとき (軸の指定なし)、マウスから 10 ピクセル以内に描かれた最も近い参照曲線の上に置きます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="105"/>
         <source>&amp;Cancel Solve</source>
         <translation>ソルブを中止(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="100"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="108"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>実行中のソルブを中止します。デザインはそのままです (Esc)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="124"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="132"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>ソルブ中: 反復 %1 / %2、残差 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="137"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="145"/>
         <source>&amp;Lengths While Dragging</source>
         <translation>ドラッグ中の長さ(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="149"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="157"/>
         <source>&amp;Automatic</source>
         <translation>自動(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="150"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="158"/>
         <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over, collapses a strip or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
         <translation>頂点のドラッグと回転は長さを保ちます。シートがそのままでは追従できない場合 (ドラッグが収束しない、折り返す、帯がつぶれる、または展開図が自身と重なる場合)、離したときにシートの伸びを許してドラッグをやり直し、二つのうち良い方を残します。ソルバーパネルにその旨が表示されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="154"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="162"/>
         <source>&amp;Keep Lengths</source>
         <translation>長さを保つ(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="155"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="163"/>
         <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape and fold. A motion the sheet cannot make without stretching then may not converge. Dragged creases always resize their patches.</source>
         <translation>頂点のドラッグや回転の間、シートは伸びずに曲がります。離れた部分はその場に留まり、曲がった折り線は形を保って折れます。シートが伸びずにはできない動きは収束しないことがあります。ドラッグした折り線は常にパッチの大きさを変えます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="159"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="167"/>
         <source>Let &amp;Stretch</source>
         <translation>伸びを許す(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="160"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="168"/>
         <source>While dragging or rotating vertices, the sheet may stretch: it stays developable and its development changes, curved creases may be pulled straight and large drags may crumple it.</source>
         <translation>頂点のドラッグや回転の間、シートは伸びることがあります。可展面のままで展開図が変わり、曲がった折り線はまっすぐに引き伸ばされることがあり、大きなドラッグではしわになることがあります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="182"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="190"/>
         <source>Motion &amp;Axis</source>
         <translation>移動の軸(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="194"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
         <source>&amp;Free</source>
         <translation>自由(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="195"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="203"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>自由な移動: ドラッグツールは頂点を視平面内で動かし、回転ツールは鉛直軸 (Z) の周り、または ツール ▸ 移動の軸 ▸ 視線軸の周りに回転 がオンのときは視線軸の周りに回転させます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="198"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="206"/>
         <source>&amp;X Axis</source>
         <translation>X 軸(&amp;X)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="199"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="207"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X 軸: ドラッグツールは頂点を X 方向にだけ動かし、回転ツールは重心を通る X に平行な軸の周りに回転させます。Y または Z を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="201"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="209"/>
         <source>&amp;Y Axis</source>
         <translation>Y 軸(&amp;Y)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="210"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y 軸: ドラッグツールは頂点を Y 方向にだけ動かし、回転ツールは重心を通る Y に平行な軸の周りに回転させます。X または Z を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="204"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="212"/>
         <source>&amp;Z Axis</source>
         <translation>Z 軸(&amp;Z)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="205"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="213"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z 軸: ドラッグツールは頂点を Z 方向にだけ動かし、回転ツールは重心を通る Z に平行な軸の周りに回転させます。X または Y を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="229"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="237"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>視線軸の周りに回転(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="232"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="240"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>軸が「自由」のとき、回転ツールは頂点を鉛直軸ではなく重心を通る視線方向の周りに回転させます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="246"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
         <source>Colour &amp;By</source>
         <translation>色分け(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
         <source>&amp;Patch</source>
         <translation>パッチ(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
         <source>&amp;Developability</source>
         <translation>可展性(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
         <source>&amp;Flatness</source>
         <translation>平面性(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="255"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="263"/>
         <source>&amp;Angle Defect</source>
         <translation>角度欠損(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="257"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="265"/>
         <source>Every patch in its own colour.</source>
         <translation>パッチごとに色分けします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="258"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>サンプルした各帯の四角形が可展からどれだけ離れているか: 正規化した |det(a−b, a′, b′)| を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="260"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="268"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>サンプルした各四角形の平面性 δ: 対角線間の距離を最も短い 2 辺の平均で割った値を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="270"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>サンプルしたメッシュの内部頂点での角度欠損 |K| = |2π − Σ 角度| (ラジアン) を対数スケールで表示します。</translation>
     </message>
@@ -1995,278 +2138,278 @@
 <context>
     <name>devsurf::app::PatternExportDialog</name>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="86"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="84"/>
         <source>DXF drawing (*.dxf)</source>
         <translation>DXF 図面 (*.dxf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="88"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="86"/>
         <source>SVG image (*.svg)</source>
         <translation>SVG 画像 (*.svg)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="90"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="88"/>
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文書 (*.pdf)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="92"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="90"/>
         <source>FOLD crease pattern (*.fold)</source>
         <translation>FOLD 折り線図 (*.fold)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="100"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="342"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="351"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="98"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="340"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="348"/>
         <source>Export Cutting Pattern</source>
         <translation>型紙のエクスポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="102"/>
         <source>DXF (laser and plotter cutters)</source>
         <translation>DXF (レーザー・プロッターカッター用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="102"/>
         <source>SVG (vinyl and paper cutters)</source>
         <translation>SVG (カッティングマシン用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
         <source>PDF (print at 1:1, tiled)</source>
         <translation>PDF (原寸で印刷、分割)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="105"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="103"/>
         <source>FOLD (origami simulators)</source>
         <translation>FOLD (折り紙シミュレーター用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="106"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="104"/>
         <source>&amp;Format:</source>
         <translation>形式(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="108"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="106"/>
         <source>&amp;Polylines</source>
         <translation>ポリライン(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="109"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="107"/>
         <source>S&amp;plines</source>
         <translation>スプライン(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="116"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="114"/>
         <source>DXF &amp;R12 (for old cutter software)</source>
         <translation>DXF &amp;R12 (古いカッターソフト用)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="118"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="116"/>
         <source>Curves:</source>
         <translation>曲線:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="124"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="142"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="158"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="122"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="140"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="156"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="125"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="123"/>
         <source>&amp;Tolerance:</source>
         <translation>許容誤差(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
         <source>Cut</source>
         <translation>切断</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
         <source>Mountain</source>
         <translation>山折り</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="126"/>
         <source>Valley</source>
         <translation>谷折り</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Crease</source>
         <translation>折り線</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Rulings (score)</source>
         <translation>母線 (筋付け)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="129"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="127"/>
         <source>Seam</source>
         <translation>継ぎ目</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="130"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="128"/>
         <source>Labels</source>
         <translation>ラベル</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="138"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="136"/>
         <source>Layers:</source>
         <translation>レイヤー:</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="143"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="141"/>
         <source>as &amp;glue tabs</source>
         <translation>のりしろとして(&amp;G)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="147"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="145"/>
         <source>&amp;Seam allowance:</source>
         <translation>縫い代(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="165"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="163"/>
         <source>S&amp;heet:</source>
         <translation>シート(&amp;H):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="166"/>
         <source>A4</source>
         <translation>A4</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="166"/>
         <source>A3</source>
         <translation>A3</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="168"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="166"/>
         <source>Letter</source>
         <translation>レター</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="169"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="167"/>
         <source>P&amp;aper (PDF):</source>
         <translation>用紙 (PDF)(&amp;A):</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
         <source>Piece</source>
         <translation>ピース</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
         <source>Sheet</source>
         <translation>シート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="174"/>
         <source>Size (mm)</source>
         <translation>サイズ (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
         <source>Area (mm²)</source>
         <translation>面積 (mm²)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="177"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="175"/>
         <source>Isometry error (mm)</source>
         <translation>等長誤差 (mm)</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Fits sheet</source>
         <translation>シートに収まる</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="178"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="176"/>
         <source>Overlaps</source>
         <translation>重なり</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="182"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="180"/>
         <source>Fabrication report</source>
         <translation>製作レポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="189"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="187"/>
         <source>&amp;Export…</source>
         <translation>エクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="300"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="298"/>
         <source>itself</source>
         <translation>自身</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="307"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="312"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="305"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="310"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="308"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="306"/>
         <source>%1 × %2</source>
         <translation>%1 × %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="311"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
         <source>yes</source>
         <translation>はい</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="311"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="309"/>
         <source>no</source>
         <translation>いいえ</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="317"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="315"/>
         <source>%n piece(s)</source>
         <translation>
             <numerusform>ピース %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="318"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="316"/>
         <source>%n sheet(s)</source>
         <translation>
             <numerusform>シート %n 枚</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="320"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="318"/>
         <source>largest isometry error %1 mm</source>
         <translation>最大等長誤差 %1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="340"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="338"/>
         <source>Some pieces overlap and cannot be cut as laid out. Export anyway?</source>
         <translation>重なっているピースがあり、この配置では切断できません。それでもエクスポートしますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="341"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="339"/>
         <source>The pattern has problems (see the report). Export anyway?</source>
         <translation>型紙に問題があります (レポートを参照)。それでもエクスポートしますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="382"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="373"/>
         <source>Writing the cutting pattern…</source>
         <translation>型紙を書き出しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="382"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="373"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="368"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="378"/>
-        <location filename="../app/gui/pattern_export_dialog.cpp" line="393"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="359"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="369"/>
+        <location filename="../app/gui/pattern_export_dialog.cpp" line="384"/>
         <source>Export failed</source>
         <translation>エクスポートに失敗しました</translation>
     </message>
@@ -2478,6 +2621,14 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::RemoveReferenceCurvesReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="174"/>
+        <source>Cannot remove the reference curves</source>
+        <translation>参照曲線を削除できません</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::RotateTool</name>
     <message>
         <location filename="../app/gui/rotate_tool.cpp" line="29"/>
@@ -2554,156 +2705,156 @@
 <context>
     <name>devsurf::app::ShapeExportDialog</name>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="37"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="35"/>
         <source>The design has no surface to export.</source>
         <translation>エクスポートする曲面がデザインにありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="39"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="37"/>
         <source>Patch %1 of surface %2 cannot be written as an exact surface.</source>
         <translation>曲面 %2 のパッチ %1 を厳密な曲面として書き出せません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="44"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="42"/>
         <source>The shape could not be translated into this format. Try another format.</source>
         <translation>形状をこの形式に変換できませんでした。別の形式をお試しください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="57"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="132"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="196"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="222"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="55"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="130"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="187"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="213"/>
         <source>Export 3D Shape</source>
         <translation>3D 形状のエクスポート</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="58"/>
         <source>STEP AP242: exact surfaces</source>
         <translation>STEP AP242: 厳密な曲面</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="58"/>
         <source>STEP AP214: exact surfaces</source>
         <translation>STEP AP214: 厳密な曲面</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="59"/>
         <source>IGES: exact surfaces</source>
         <translation>IGES: 厳密な曲面</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="61"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="59"/>
         <source>OBJ mesh: a group per patch</source>
         <translation>OBJ メッシュ: パッチごとに 1 グループ</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
         <source>STL mesh (binary)</source>
         <translation>STL メッシュ (バイナリ)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="62"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="60"/>
         <source>PLY mesh (binary)</source>
         <translation>PLY メッシュ (バイナリ)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="69"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="76"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="67"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="74"/>
         <source> mm</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="70"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="68"/>
         <source>How far the mesh&apos;s triangles may stray from the exact surface.</source>
         <translation>メッシュの三角形が厳密な曲面から離れてよい距離。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="77"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="75"/>
         <source>none (the surface)</source>
         <translation>なし (曲面そのもの)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="79"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="77"/>
         <source>A sheet of this thickness for 3D printing: both sides offset by half of it, the rim closed.</source>
         <translation>3D プリント用にこの厚さの板にします: 両面を半分ずつオフセットし、縁を閉じます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="85"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="83"/>
         <source>&amp;Format:</source>
         <translation>形式(&amp;F):</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="86"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="84"/>
         <source>Chord &amp;tolerance:</source>
         <translation>弦の許容誤差(&amp;T):</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="87"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="85"/>
         <source>T&amp;hickness:</source>
         <translation>厚さ(&amp;H):</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="89"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="87"/>
         <source>&amp;Export…</source>
         <translation>エクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="122"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="120"/>
         <source>A triangle mesh for renderers, slicers and mesh tools; watertight wherever the design is.</source>
         <translation>レンダラー、スライサー、メッシュツール向けの三角形メッシュ。デザインが閉じている所では水密です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="124"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="122"/>
         <source>Every patch as its exact B-spline surface, sewn into one shell per surface, in millimetres, faces named after their patches.</source>
         <translation>各パッチを厳密な B スプライン曲面として、曲面ごとに 1 つのシェルに縫い合わせ、ミリメートル単位で、面にパッチ名を付けて書き出します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="134"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="131"/>
         <source>%1 files (*.%2)</source>
         <translation>%1 ファイル (*.%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="150"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="158"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="161"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="163"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="141"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="149"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="152"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="154"/>
         <source>Export failed</source>
         <translation>エクスポートに失敗しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="169"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="160"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="202"/>
         <source>Writing the 3D shape…</source>
         <translation>3D 形状を書き出しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="169"/>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="160"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="202"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="187"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="178"/>
         <source>surface %1, edge %2 (%3 mm apart)</source>
         <translation>曲面 %1、辺 %2 (%3 mm 離れています)</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="193"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="184"/>
         <source>faces: %1, shells: %2</source>
         <translation>面: %1、シェル: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="197"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="188"/>
         <source>The shape was written, but some patches could not be sewn together and stay apart in the file: %1.</source>
         <translation>形状は書き出されましたが、縫い合わせられなかったパッチがあり、ファイル内で離れたままです: %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="220"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="211"/>
         <source>triangles: %1</source>
         <translation>三角形: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/shape_export_dialog.cpp" line="223"/>
+        <location filename="../app/gui/shape_export_dialog.cpp" line="214"/>
         <source>The mesh was written with %1 samples per curve interval, the most DevSurf writes, and is coarser than the tolerance asked for.</source>
         <translation>メッシュは曲線区間あたり %1 サンプル (DevSurf の上限) で書き出され、指定の許容誤差より粗くなっています。</translation>
     </message>
@@ -3338,7 +3489,7 @@
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="586"/>
+        <location filename="../views/scene_view.cpp" line="594"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>曲面 %1 は有効でないため表示されません。</translation>
     </message>
