@@ -66,8 +66,10 @@ ImportCurvesReaction::ImportCurvesReaction(QAction* action, Workspace* workspace
 
 ImportCurvesReaction::~ImportCurvesReaction() {
     if (m_thread != nullptr) {
+        // Closed while reading: stop the reader and wait for it, nothing is applied.
         m_job->cancel = true;
         m_thread->wait();
+        delete m_thread;
     }
 }
 
