@@ -11,12 +11,14 @@
 #include <boost/serialization/tracking.hpp>
 #include <boost/serialization/version.hpp>
 
+#include <cmath>
 #include <sstream>
 
 // Class versions of the archive. A reader refuses versions newer than these itself: Boost 1.74
 // passes any version through to the load functions.
 namespace devsurf::io::versions {
-inline constexpr unsigned kProject = 1;
+// 2: the reference curves (project file format 5).
+inline constexpr unsigned kProject = 2;
 // 2: pinned vertices (project file format 2). 3: the surface id (project file format 3).
 // 4: the kept development (project file format 4). 5: the sheet's shape (format 5).
 inline constexpr unsigned kSurface = 5;
@@ -327,6 +329,17 @@ template <class Archive> void save(Archive& ar, const Project& p, unsigned /*ver
     for (const CompositeSurface& s : p.surfaces) {
         ar << s;
     }
+    const auto curves = static_cast<std::uint32_t>(p.referenceCurves.size());
+    ar << curves;
+    for (const ReferenceCurve& curve : p.referenceCurves) {
+        devsurf::io::saveString(ar, curve.name);
+        devsurf::io::saveString(ar, curve.source);
+        const auto points = static_cast<std::uint32_t>(curve.points.size());
+        ar << points;
+        for (const Vec3& point : curve.points) {
+            ar << point;
+        }
+    }
 }
 
 template <class Archive> void load(Archive& ar, Project& p, unsigned version) {
@@ -343,6 +356,32 @@ template <class Archive> void load(Archive& ar, Project& p, unsigned version) {
     }
     // Files before format 3 hold no surface ids; a damaged file may repeat one.
     p.assignSurfaceIds();
+    p.referenceCurves.clear();
+    if (version >= 2) {
+        std::uint32_t curves = 0;
+        ar >> curves;
+        checkedCount(curves, 1'000'000, "reference curves", 4);
+        for (std::uint32_t i = 0; i < curves; ++i) {
+            ReferenceCurve curve;
+            curve.name = devsurf::io::loadString(ar, 4096);
+            curve.source = devsurf::io::loadString(ar, 4096);
+            std::uint32_t points = 0;
+            ar >> points;
+            checkedCount(points, 100'000'000, "curve points", 3);
+            if (points < 2) {
+                throw FileError("it holds a reference curve with fewer than two points");
+            }
+            curve.points.resize(points);
+            for (Vec3& point : curve.points) {
+                ar >> point;
+                if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z)) {
+                    throw FileError("it holds a reference curve with a coordinate that is not a "
+                                    "number");
+                }
+            }
+            p.referenceCurves.push_back(std::move(curve));
+        }
+    }
 }
 
 } // namespace boost::serialization

@@ -13,7 +13,8 @@ namespace devsurf::io {
 // payload length, CRC-32 of the payload; little endian) around the project archive.
 // 1: the first release. 2: pinned vertices. 3: smooth rulings, surface ids. 4: the kept
 // development of every surface (older files open without one, as they were). 5: the sheet
-// shape each kept development is confined to.
+// shape each kept development is confined to, the project's reference curves (older files
+// open with a free sheet and without curves).
 inline constexpr std::uint32_t kProjectFormatVersion = 5;
 inline constexpr std::size_t kProjectHeaderSize = 24;
 inline constexpr std::uint64_t kMaxProjectFileSize = 512ull * 1024 * 1024;

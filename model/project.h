@@ -1,6 +1,7 @@
 #pragma once
 
 #include "composite_surface.h"
+#include "reference_curve.h"
 
 #include <algorithm>
 #include <set>
@@ -9,10 +10,12 @@
 
 namespace devsurf::model {
 
-// Everything a project file holds: the composite developables of one design.
+// Everything a project file holds: the composite developables of one design and the curves
+// it refers to.
 struct Project {
     std::string units = "mm"; // the length unit of all coordinates
     std::vector<CompositeSurface> surfaces;
+    std::vector<ReferenceCurve> referenceCurves; // imported, shown, never solved for
 
     // Appends a surface with a new id (one more than the largest in use) and returns the id.
     SurfaceId addSurface(CompositeSurface surface) {
@@ -50,7 +53,8 @@ struct Project {
     }
 
     bool operator==(const Project& other) const {
-        return units == other.units && surfaces == other.surfaces;
+        return units == other.units && surfaces == other.surfaces &&
+               referenceCurves == other.referenceCurves;
     }
 };
 

@@ -155,6 +155,12 @@ SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
     lineStyle(*m_preview, 0.0, 0.75, 0.25, 5.0, spatial);
     m_preview->mapper->SetRelativeCoincidentTopologyLineOffsetParameters(-2.0, -2.0);
 
+    // Reference curves: thin and dark, drawn in front of the surface they may lie on. Not in
+    // the pick list: picking never returns them.
+    m_referenceCurves = &addLayer();
+    lineStyle(*m_referenceCurves, 0.12, 0.12, 0.16, 1.5, false);
+    m_referenceCurves->mapper->SetRelativeCoincidentTopologyLineOffsetParameters(-1.0, -1.0);
+
     m_controlPolygons->actor->SetVisibility(false);
     m_controlPoints->actor->SetVisibility(false);
     if (spatial) {
@@ -464,6 +470,11 @@ void SceneRenderer::setTargetPoints(const std::vector<Vec3>& points) {
 
 void SceneRenderer::setPreviewLines(const std::vector<std::vector<Vec3>>& lines) {
     m_preview->assign(polylineData(lines), false);
+}
+
+void SceneRenderer::setReferenceCurves(const std::vector<std::vector<Vec3>>& curves) {
+    m_referenceCurves->assign(polylineData(curves), false);
+    m_referenceCurveCount = static_cast<int>(m_referenceCurves->data->GetNumberOfCells());
 }
 
 const Vec3* SceneRenderer::vertexPosition(int surface, model::VertexId vertex) const {

@@ -72,6 +72,9 @@ public:
     void setTargetPoints(const std::vector<model::Vec3>& points);
     // Lines an edit in progress would add (drawn dashed-bright over everything else).
     void setPreviewLines(const std::vector<std::vector<model::Vec3>>& lines);
+    // The project's reference curves (3D only): thin dark lines, never picked.
+    void setReferenceCurves(const std::vector<std::vector<model::Vec3>>& curves);
+    int referenceCurveCount() const { return m_referenceCurveCount; }
 
     // Vertex within radius, else edge within radius * 0.6, else face under the point; in 3D
     // vertices and edges hidden behind the surface are not picked.
@@ -143,6 +146,8 @@ private:
     Layer* m_selectedEdges = nullptr;
     Layer* m_selectedVertices = nullptr;
     Layer* m_preview = nullptr;
+    Layer* m_referenceCurves = nullptr;
+    int m_referenceCurveCount = 0;
 
     std::unique_ptr<QualityColouring> m_quality; // 3D only
     std::shared_ptr<const SceneSet> m_set = std::make_shared<const SceneSet>();

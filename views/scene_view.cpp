@@ -512,6 +512,14 @@ void SceneView::onDocumentChanged(unsigned changes) {
         d->staleWhileHidden = true;
         return;
     }
+    if (changes == static_cast<unsigned>(document::Change::ReferenceCurves) &&
+        !d->scene->scenes().empty()) {
+        // Only the curves changed: the surfaces' actors stay as they are.
+        d->builtRevision = d->document->revision();
+        showReferenceCurves();
+        rerender();
+        return;
+    }
     const unsigned structural = static_cast<unsigned>(document::Change::Labels) |
                                 static_cast<unsigned>(document::Change::Topology);
     const bool firstBuild = d->scene->scenes().empty();
@@ -591,7 +599,22 @@ void SceneView::rebuild(bool geometryOnly) {
     d->anchorsValid = false;
     d->scene->setScenes(std::move(scenes), geometryOnly);
     d->scene->setSelection(d->selection ? d->selection->picks() : std::set<Pick>{});
+    showReferenceCurves();
     rerender();
+}
+
+void SceneView::showReferenceCurves() {
+    std::vector<std::vector<model::Vec3>> curves;
+    if (d->kind == Kind::Spatial && d->document != nullptr) {
+        for (const model::ReferenceCurve& curve : d->document->project().referenceCurves) {
+            curves.push_back(curve.points);
+        }
+    }
+    d->scene->setReferenceCurves(curves);
+}
+
+int SceneView::referenceCurvesDrawn() const {
+    return d->scene->referenceCurveCount();
 }
 
 } // namespace devsurf::views

@@ -114,6 +114,8 @@ public:
     double legendValue(const document::Pick& face) const;
     // The number of preview lines shown.
     int previewLineCount() const;
+    // The reference curves drawn (3D view: the project's; the development view: none).
+    int referenceCurvesDrawn() const;
 
 public slots:
     void fitAll();
@@ -153,6 +155,7 @@ private:
     void onProjectReset();
     void onSelectionChanged();
     void rebuild(bool geometryOnly);
+    void showReferenceCurves();
     QString describe(const document::Pick& pick) const;
     void selectInRectangle(const QRect& rect, bool add);
     // After each render: scale bar and patch labels for the camera just drawn.

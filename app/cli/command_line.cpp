@@ -129,6 +129,19 @@ std::string SubcommandArguments::onePositional(const char* what) const {
     return positional.front().toStdString();
 }
 
+std::vector<std::string> SubcommandArguments::positionals(std::size_t count,
+                                                          const char* what) const {
+    const QStringList positional = m_parser.positionalArguments();
+    if (static_cast<std::size_t>(positional.size()) != count) {
+        throw UsageError{std::string("expected ") + what};
+    }
+    std::vector<std::string> result;
+    for (const QString& text : positional) {
+        result.push_back(text.toStdString());
+    }
+    return result;
+}
+
 long parseWhole(const std::string& text, const std::string& option, long low, long high) {
     long value = 0;
     if (!parseAll(text, value) || value < low || value > high) {

@@ -61,6 +61,8 @@ public:
     // The one positional argument (UsageError "expected WHAT" otherwise).
     std::string onePositional(const char* what) const;
     std::size_t positionalCount() const;
+    // Exactly `count` positional arguments (UsageError "expected WHAT" otherwise).
+    std::vector<std::string> positionals(std::size_t count, const char* what) const;
 
 private:
     bool defines(const char* name) const;

@@ -10,6 +10,7 @@
 #include "cli_output.h"
 #include "command_line.h"
 #include "crease_command.h"
+#include "curve_commands.h"
 #include "drag_command.h"
 #include "io/file_error.h"
 #include "io/interchange_json.h"
@@ -118,7 +119,8 @@ int commandInfo(const SubcommandArguments& args) {
     std::cout << "File: " << path << "\n"
               << "Format version: " << io::kProjectFormatVersion << "\n"
               << "Units: " << project.units << "\n"
-              << "Surfaces: " << project.surfaces.size() << "\n";
+              << "Surfaces: " << project.surfaces.size() << "\n"
+              << "Reference curves: " << project.referenceCurves.size() << "\n";
     for (std::size_t i = 0; i < project.surfaces.size(); ++i) {
         const model::CompositeSurface& surface = project.surfaces[i];
         const model::SurfaceStatistics stats = model::surfaceStatistics(surface);
@@ -246,7 +248,7 @@ int run(const std::vector<std::string>& args) {
         {"validate", commandValidate}, {"export-json", commandExportJson},
         {"examples", commandExamples}, {"solve", commandSolve},
         {"drag", commandDrag},         {"export", runExportPatternCommand},
-        {"report", runReportCommand}};
+        {"report", runReportCommand},  {"import-curves", runImportCurvesCommand}};
     for (const auto& [name, runner] : runners) {
         if (command == name) {
             return runner(parsed);

@@ -172,6 +172,15 @@ const std::vector<SubcommandSpec>& subcommands() {
                          {"r12", "", "DXF: R12 instead of R2000."},
                          {"thickness", "MM", "Meshes: a sheet of this thickness."},
                          {"o", "OUT", "The file to write (- for standard output)."}})},
+        {"import-curves",
+         "import-curves FILE CURVES [--tolerance MM] -o OUT.devsurf",
+         "Add the curves of a DXF (LINE, POLYLINE, LWPOLYLINE, SPLINE, ARC,\n"
+         "CIRCLE), STEP or IGES file (every edge) to the project as reference\n"
+         "curves, sampled within MM (default 0.05), in mm. A file that cannot\n"
+         "be read changes nothing and writes nothing. The output may be the\n"
+         "project itself (its previous version is kept as FILE.bak), never\n"
+         "the curve file.",
+         {{"tolerance", "MM", "Sample curves within MM (default 0.05)."}, kOutputProject}},
         {"report", "report FILE [--json] [--sheet W,H | --paper NAME] [--tolerance MM] [--seam MM]",
          "Print the fabrication report: per piece its sheet, size, area,\n"
          "largest isometry error, overlaps, and whether it fits the sheet.",

@@ -1,4 +1,5 @@
 #include "drag_tool.h"
+#include "curve_snap.h"
 #include "edit_refusal.h"
 #include "problem_text.h"
 
@@ -30,6 +31,8 @@ namespace {
 
 // Pointer travel (logical pixels) below which a press and release on a vertex is a click.
 constexpr int kClickSlop = 3;
+// Logical pixels within which Snap to Reference Curves pulls a dragged vertex onto a curve.
+constexpr double kSnapPixels = 10.0;
 
 // Drags get session keys of their own, so that no drag continues another one's solver state.
 quint64 nextSessionKey() {
@@ -357,7 +360,11 @@ void DragTool::move(const QPoint& pos) {
         return;
     }
     m_moved = true;
-    emit statusMessage(heldText() + motionText());
+    emit statusMessage(
+        heldText() + motionText() +
+        (m_snappedCurve >= 0
+             ? QStringLiteral(" ") + tr("Snapped to reference curve %1.").arg(m_snappedCurve + 1)
+             : QString()));
     submit();
 }
 
@@ -383,6 +390,15 @@ bool DragTool::targetsAt(const QPoint& pos, std::vector<model::Vec3>& targets) {
             targets.push_back(handle.target);
         }
         return true;
+    }
+    m_snappedCurve = -1;
+    if (m_snapToCurves && axis() == Axis::Free) {
+        const std::optional<CurveSnap> snap = snapToCurves(
+            *m_view, m_workspace->document()->project().referenceCurves, pos, kSnapPixels);
+        if (snap) {
+            delta = snap->point - m_anchor; // the pressed vertex onto the curve
+            m_snappedCurve = snap->curve;
+        }
     }
     targets.resize(m_start.size());
     for (std::size_t i = 0; i < m_start.size(); ++i) {

@@ -65,6 +65,12 @@ public:
     void setChosenAxis(Axis axis) { m_chosenAxis = axis; }
     // The unit vector of an axis other than Free.
     static model::Vec3 unitVector(Axis axis);
+    // Tools ▸ Snap to Reference Curves: a dragged vertex (no axis chosen) goes to the nearest
+    // point of a reference curve drawn within 10 pixels of the mouse.
+    void setSnapToCurves(bool snap) { m_snapToCurves = snap; }
+    bool snapsToCurves() const { return m_snapToCurves; }
+    // The reference curve the last move snapped to, or -1.
+    int snappedCurve() const { return m_snappedCurve; }
 
 signals:
     // The drag ended: applied (one undo step), or not (cancelled, failed, or nothing moved).
@@ -133,6 +139,9 @@ private:
     void onResult(const solver::SolveResult& result);
     void end(bool applied, const QString& sentence);
     bool handleKey(QEvent* event);
+
+    bool m_snapToCurves = false;
+    int m_snappedCurve = -1;
 
     QAction* m_action;
     Workspace* m_workspace;

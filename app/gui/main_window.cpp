@@ -11,6 +11,7 @@
 #include "panels/properties_panel.h"
 #include "panels/solver_panel.h"
 #include "reactions/crease_reactions.h"
+#include "reactions/curve_reactions.h"
 #include "reactions/edit_reactions.h"
 #include "reactions/file_reactions.h"
 #include "reactions/pattern_reactions.h"
@@ -171,6 +172,11 @@ void MainWindow::createMenus() {
         addAction(file, QStringLiteral("actionSaveAs"), tr("Save &As…"), QKeySequence::SaveAs);
     new SaveAsReaction(saveAs, m_workspace);
     file->addSeparator();
+    QAction* importCurves =
+        addAction(file, QStringLiteral("actionImportCurves"), tr("Import &Curves…"));
+    importCurves->setStatusTip(
+        tr("Add the curves of a DXF, STEP or IGES file as reference curves"));
+    new ImportCurvesReaction(importCurves, m_workspace);
     QAction* exportJson = addAction(file, QStringLiteral("actionExportJson"),
                                     tr("&Export Interchange JSON…"), QKeySequence(tr("Ctrl+E")));
     new ExportJsonReaction(exportJson, m_workspace);
@@ -198,6 +204,9 @@ void MainWindow::createMenus() {
     QAction* deleteAction =
         addAction(edit, QStringLiteral("actionDelete"), tr("&Delete"), QKeySequence::Delete);
     new DeleteSelectionReaction(deleteAction, m_workspace);
+    QAction* removeCurves = addAction(edit, QStringLiteral("actionRemoveReferenceCurves"),
+                                      tr("Remove Reference &Curves"));
+    new RemoveReferenceCurvesReaction(removeCurves, m_workspace);
     QAction* selectNone = addAction(edit, QStringLiteral("actionSelectNone"), tr("Select &None"),
                                     QKeySequence(tr("Esc")));
     connect(selectNone, &QAction::triggered, m_workspace->selection(), &document::Selection::clear);

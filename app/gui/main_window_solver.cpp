@@ -62,6 +62,14 @@ QList<QAction*> MainWindow::createSolverActions(QMenu* tools, QAction* selectNon
     drag->setToolTip(dragTip);
     drag->setStatusTip(dragTip);
     m_dragTool = new DragTool(drag, m_workspace, m_surfaceView, m_solveController);
+    QAction* snap =
+        addAction(tools, QStringLiteral("actionSnapToCurves"), tr("S&nap to Reference Curves"));
+    snap->setCheckable(true);
+    const QString snapTip = tr("While dragging a vertex (no axis chosen), put it on the nearest "
+                               "reference curve drawn within 10 pixels of the mouse.");
+    snap->setToolTip(snapTip);
+    snap->setStatusTip(snapTip);
+    connect(snap, &QAction::toggled, m_dragTool, &DragTool::setSnapToCurves);
     createLengthsActions(tools);
 
     QAction* rotate = addAction(tools, QStringLiteral("actionRotateTool"), tr("R&otate Vertices"),

@@ -58,6 +58,12 @@ void Document::previewSurface(int index, const model::CompositeSurface& surface)
 
 void Document::notifyChanged(Changes changes, int surfaceIndex) {
     ++m_revision;
+    if (changes == Changes(Change::ReferenceCurves)) {
+        // No surface changed: their caches of derived geometry stay valid.
+        m_changedSurface = -1;
+        emit changed(changes);
+        return;
+    }
     if (surfaceIndex >= 0 && surfaceIndex < surfaceCount()) {
         m_surfaceRevisions[surface(surfaceIndex).id()] = m_revision;
         m_changedSurface = surfaceIndex;

@@ -3,6 +3,7 @@
 #include "model/document/commands/crease_condition_command.h"
 #include "model/document/commands/move_vertices_command.h"
 #include "model/document/commands/pin_vertices_command.h"
+#include "model/document/commands/reference_curves_command.h"
 #include "model/document/commands/refine_spline_class_command.h"
 #include "model/document/commands/relabel_edge_command.h"
 #include "model/document/commands/smooth_rulings_command.h"
@@ -18,6 +19,7 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include <cmath>
 #include <set>
 
 using namespace devsurf::document;
@@ -473,6 +475,57 @@ private slots:
         QVERIFY(!doc.surface(0).edge(*inner.begin()).smooth);
         doc.undoStack()->undo();
         QVERIFY(bytesOf(doc) == after);
+    }
+
+    void referenceCurvesImportAndRemove() {
+        Document doc;
+        doc.resetProject(makeExample("sheet"));
+        const Project original = doc.project();
+        const quint64 surfaceRevision = doc.surfaceRevision(0);
+        ReferenceCurve line{"LINE 1", "CUT", {{0, 0, 0}, {10, 0, 5}}};
+        ReferenceCurve arc{"ARC 2", "", {{1, 0, 0}, {0.5, 0.8660254037844386, 0}, {0, 1, 0.25}}};
+        // Refusals change nothing.
+        QVERIFY(ReferenceCurvesCommand::createImport(doc, {}).isRefused());
+        QVERIFY(ReferenceCurvesCommand::createImport(doc, {ReferenceCurve{"P", "", {{1, 2, 3}}}})
+                    .isRefused());
+        ReferenceCurve notANumber = line;
+        notANumber.points[1].y = std::nan("");
+        QVERIFY(ReferenceCurvesCommand::createImport(doc, {line, notANumber}).isRefused());
+        QVERIFY(ReferenceCurvesCommand::createRemoveAll(doc).isRefused());
+        QVERIFY(doc.project() == original);
+
+        // Saved, the import and its undo are exact to the byte.
+        redoUndoRedo(doc, ReferenceCurvesCommand::createImport(doc, {line}), "import curves");
+        doc.undoStack()->undo();
+        QVERIFY(doc.project() == original);
+        QSignalSpy spy(&doc, &Document::changed);
+        QVERIFY(
+            pushOrExplain(doc, ReferenceCurvesCommand::createImport(doc, {line, arc})).isEmpty());
+        QCOMPARE(doc.undoStack()->count(), 1); // one file, one step
+        QCOMPARE(spy.count(), 1);
+        QCOMPARE(spy.takeFirst().at(0).value<Changes>(), Changes(Change::ReferenceCurves));
+        QCOMPARE(doc.surfaceRevision(0), surfaceRevision); // no surface to resample
+        const Project imported = doc.project();
+        QCOMPARE(imported.referenceCurves.size(), std::size_t(2));
+        QVERIFY(imported.referenceCurves[1] == arc);
+        QVERIFY(!(imported == original));
+
+        QVERIFY(ReferenceCurvesCommand::createRemove(doc, {2}).isRefused());
+        QVERIFY(ReferenceCurvesCommand::createRemove(doc, {}).isRefused());
+        QVERIFY(pushOrExplain(doc, ReferenceCurvesCommand::createRemove(doc, {0})).isEmpty());
+        QCOMPARE(doc.project().referenceCurves.size(), std::size_t(1));
+        QVERIFY(doc.project().referenceCurves[0] == arc);
+        doc.undoStack()->undo();
+        QVERIFY(doc.project() == imported);
+        doc.undoStack()->undo();
+        QVERIFY(doc.project() == original);
+        doc.undoStack()->redo();
+        QVERIFY(doc.project() == imported);
+        doc.undoStack()->redo();
+        QCOMPARE(doc.project().referenceCurves.size(), std::size_t(1));
+        QVERIFY(pushOrExplain(doc, ReferenceCurvesCommand::createRemoveAll(doc)).isEmpty());
+        QVERIFY(doc.project().referenceCurves.empty());
+        QVERIFY(doc.project().surfaces == original.surfaces);
     }
 };
 

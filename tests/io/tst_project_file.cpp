@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <limits>
 #include <set>
 
 using namespace devsurf;
@@ -123,10 +124,10 @@ private slots:
         const std::string header = "serialization::archive ";
         const std::size_t at = payload.find(header);
         QVERIFY(at != std::string::npos);
-        // "22 serialization::archive 19 0 1 ..." : tracking 0, version 1 of Project.
+        // "22 serialization::archive 19 0 2 ..." : tracking 0, version 2 of Project.
         std::size_t pos = payload.find(' ', at + header.size()); // after library version
         pos = payload.find(' ', pos + 1);                        // after tracking level
-        QCOMPARE(payload[pos + 1], '1');
+        QCOMPARE(payload[pos + 1], '2');
         payload[pos + 1] = '9';
         std::string patched = bytes.substr(0, 20);
         const std::uint32_t crc = io::crc32(payload.data(), payload.size());
@@ -328,6 +329,65 @@ private slots:
                       error.problems().front().code == model::ProblemCode::DevelopmentSize;
         }
         QVERIFY(refused);
+    }
+
+    void versionFourSampleStaysLoadable() {
+        // Committed once with format version 4 (fig8 with vertex 0 pinned, holding its sheet:
+        // its kept development); it must load with every later version, without curves.
+        const QString path = QStringLiteral(DEVSURF_TEST_DATA_DIR "/sample-v4.devsurf");
+        const std::string bytes = readAll(path);
+        QCOMPARE(bytes.substr(8, 4), std::string("\x04\x00\x00\x00", 4));
+        const model::Project project = io::loadProjectFile(path);
+        QCOMPARE(project.surfaces.size(), std::size_t(1));
+        QVERIFY(project.referenceCurves.empty());
+        const model::CompositeSurface& s = project.surfaces[0];
+        QVERIFY(s.keepsDevelopment());
+        QVERIFY(s.sheetDomain().isFree());
+        QCOMPARE(s.development().size(), std::size_t(76));
+        QVERIFY(s.isPinned(0));
+        model::Project expected = model::makeExample("fig8", 0);
+        expected.surfaces[0].setPinned(0, true);
+        expected.surfaces[0].setKeepsDevelopment(true);
+        expected.surfaces[0].setDevelopment(s.development());
+        QVERIFY(project == expected);
+        // Saved again it is a file of the current format holding the same project.
+        const std::string again = io::encodeProject(project);
+        QCOMPARE(again.substr(8, 4), std::string("\x05\x00\x00\x00", 4));
+        QVERIFY(io::decodeProject(again) == project);
+    }
+
+    void referenceCurvesRoundTripByteIdentical() {
+        model::Project project = model::makeExample("sheet", 0);
+        project.referenceCurves.push_back(
+            {"SPLINE 1", "GUIDES", {{0, 0, 0}, {1.0 / 3.0, 2e-300, -7.25}, {1e6, -0.1, 5}}});
+        project.referenceCurves.push_back({"Edge 2", "", {{1, 2, 3}, {4, 5, 6}}});
+        const std::string bytes = io::encodeProject(project);
+        const model::Project loaded = io::decodeProject(bytes);
+        QCOMPARE(loaded.referenceCurves.size(), std::size_t(2));
+        QVERIFY(loaded.referenceCurves[0] == project.referenceCurves[0]); // every bit
+        QVERIFY(loaded == project);
+        QCOMPARE(io::encodeProject(loaded), bytes);
+        // Curves are part of the project: without them the file differs.
+        model::Project without = project;
+        without.referenceCurves.pop_back();
+        QVERIFY(!(without == project));
+        QVERIFY(io::encodeProject(without) != bytes);
+        // A project with no curves still round-trips.
+        model::Project none = model::makeExample("annulus", 0);
+        QVERIFY(io::decodeProject(io::encodeProject(none)) == none);
+    }
+
+    void damagedReferenceCurvesAreRefused() {
+        model::Project project = model::makeExample("sheet", 0);
+        project.referenceCurves.push_back({"L", "", {{0, 0, 0}, {1, 1, 1}}});
+        // A curve of one point (as a damaged file may hold) is refused with a sentence.
+        model::Project onePoint = project;
+        onePoint.referenceCurves[0].points.pop_back();
+        const std::string message = messageOf(io::encodeProject(onePoint));
+        QVERIFY2(message.find("fewer than two points") != std::string::npos, message.c_str());
+        model::Project notANumber = project;
+        notANumber.referenceCurves[0].points[1].x = std::numeric_limits<double>::infinity();
+        QVERIFY(!messageOf(io::encodeProject(notANumber)).empty());
     }
 };
 

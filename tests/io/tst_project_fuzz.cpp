@@ -7,6 +7,7 @@
 #include <QTest>
 
 #include <cctype>
+#include <cmath>
 #include <random>
 
 using namespace devsurf;
@@ -100,6 +101,14 @@ std::string mutate(const std::string& good, std::mt19937& rng, int kind) {
     }
 }
 
+// The project with two reference curves, so that mutations reach their counts and points.
+model::Project withReferenceCurves(model::Project project) {
+    project.referenceCurves.push_back({"LINE 1", "0", {{0, 0, 0}, {10, 20, 30}}});
+    project.referenceCurves.push_back(
+        {"SPLINE 2", "GUIDES", {{1, 2, 3}, {4.5, 5.25, -6}, {7, 8, 9.125}, {10, 11, 12}}});
+    return project;
+}
+
 } // namespace
 
 class TstProjectFuzz : public QObject {
@@ -111,6 +120,7 @@ private slots:
             io::encodeProject(model::makeExample("mixed", 1)),
             io::encodeProject(model::makeExample("sheet", 2)),
             io::encodeProject(model::makeExample("cylinder", 3)),
+            io::encodeProject(withReferenceCurves(model::makeExample("sheet", 1))),
         };
         std::mt19937 rng(20261121);
         int rejected = 0;
@@ -123,6 +133,12 @@ private slots:
                 const model::Project project = io::decodeProject(bytes);
                 for (const auto& surface : project.surfaces) {
                     QVERIFY2(surface.validate().empty(), qPrintable(QString::number(i)));
+                }
+                for (const auto& curve : project.referenceCurves) {
+                    QVERIFY2(curve.points.size() >= 2, qPrintable(QString::number(i)));
+                    for (const model::Vec3& p : curve.points) {
+                        QVERIFY(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+                    }
                 }
                 ++loaded;
             } catch (const io::FileError& error) {

@@ -1,0 +1,88 @@
+#include "curve_commands.h"
+
+#include "cli_output.h"
+#include "io/curves/curve_import.h"
+#include "io/file_error.h"
+#include "io/output_file.h"
+#include "io/project_file.h"
+
+#include <QString>
+
+#include <iostream>
+
+namespace devsurf::app {
+
+namespace {
+
+// One sentence for the terminal (the application words the same codes with tr()).
+std::string sentence(const io::CurveImportError& error, const std::string& path) {
+    using Code = io::CurveImportError::Code;
+    const std::string detail = error.detail.empty() ? std::string() : " (" + error.detail + ")";
+    switch (error.code) {
+    case Code::UnknownFormat:
+        return "cannot import curves from '" + path +
+               "': use a DXF (.dxf), STEP (.step, .stp) or IGES (.iges, .igs) file.";
+    case Code::NotAvailable:
+        return "cannot import curves from '" + path +
+               "': this build reads STEP and IGES without OpenCASCADE, so only DXF.";
+    case Code::Unreadable:
+        return "cannot read '" + path + "'" + detail + ".";
+    case Code::TooLarge:
+        return "cannot import curves from '" + path + "': it is too large" + detail + ".";
+    case Code::Damaged:
+        return "cannot import curves from '" + path + "': its contents are damaged" + detail + ".";
+    case Code::NoCurves:
+        return "'" + path + "' holds no lines, polylines, splines, arcs or circles to import.";
+    case Code::Cancelled:
+        return "the import of '" + path + "' was cancelled.";
+    }
+    return "cannot import curves from '" + path + "'.";
+}
+
+} // namespace
+
+int runImportCurvesCommand(const SubcommandArguments& args) {
+    const std::vector<std::string> files = args.positionals(2, "a project file and a curve file");
+    const std::string& input = files[0];
+    const std::string& curveFile = files[1];
+    const std::string output = args.required("o", "the output file is missing (use -o FILE)");
+    io::CurveImportOptions options;
+    if (const std::optional<std::string> text = args.value("tolerance")) {
+        options.tolerance = parseReal(*text, "--tolerance", 1e-6, 1e3, "a length in mm");
+    }
+    if (!io::curveFormatOf(QString::fromStdString(curveFile))) {
+        throw io::FileError(sentence({io::CurveImportError::Code::UnknownFormat, {}}, curveFile));
+    }
+    // The curve file is an input that is not a project: never written over.
+    if (io::outputProblem(QString::fromStdString(output), {QString::fromStdString(curveFile)}) ==
+        io::OutputProblem::SameAsInput) {
+        throw io::FileError("Refusing to write the project to '" + output +
+                            "': it is the curve file being read, which would be lost. Choose "
+                            "another output file.");
+    }
+    checkOutput(output, {input}, OutputKind::Project, "the project");
+    model::Project project = io::loadProjectFile(QString::fromStdString(input));
+    const io::CurveImportResult result =
+        io::importCurveFile(QString::fromStdString(curveFile), options);
+    if (result.error) {
+        std::cerr << "devsurf-cli: " << sentence(*result.error, curveFile) << "\n";
+        return 2;
+    }
+    project.referenceCurves.insert(project.referenceCurves.end(), result.curves.begin(),
+                                   result.curves.end());
+    writeProject(project, output);
+    std::size_t points = 0;
+    for (const model::ReferenceCurve& curve : result.curves) {
+        points += curve.points.size();
+    }
+    std::cout << "Wrote " << output << " (" << result.curves.size() << " reference curve"
+              << (result.curves.size() == 1 ? "" : "s") << " imported, " << points << " points";
+    if (result.skipped > 0) {
+        std::cout << "; " << result.skipped << " other entit" << (result.skipped == 1 ? "y" : "ies")
+                  << " skipped";
+    }
+    std::cout << "; " << project.referenceCurves.size() << " in the project)\n";
+    return 0;
+}
+
+} // namespace devsurf::app

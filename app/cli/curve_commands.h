@@ -1,0 +1,12 @@
+#pragma once
+
+#include "command_line.h"
+
+namespace devsurf::app {
+
+// `devsurf-cli import-curves FILE CURVES [--tolerance MM] -o OUT`: the project with the curves
+// of a DXF, STEP or IGES file added as reference curves. Nothing is written when the curves
+// cannot be read. Returns the exit code; throws UsageError and io::FileError.
+int runImportCurvesCommand(const SubcommandArguments& args);
+
+} // namespace devsurf::app

@@ -1,0 +1,180 @@
+#include "curve_reactions.h"
+
+#include "../workspace.h"
+#include "io/curves/curve_import.h"
+#include "model/document/commands/reference_curves_command.h"
+#include "model/document/document.h"
+
+#include <QAction>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QProgressDialog>
+#include <QThread>
+#include <QTimer>
+
+#include <algorithm>
+#include <atomic>
+
+namespace devsurf::app {
+
+// What the worker thread and the window share: the request, the progress as it goes, the
+// cancel flag and the result (read by the window only after the thread finished).
+struct ImportCurvesReaction::Job {
+    QString path;
+    std::atomic<int> permille{0};
+    std::atomic<bool> cancel{false};
+    io::CurveImportResult result;
+};
+
+namespace {
+
+QString errorSentence(const io::CurveImportError& error, const QString& path) {
+    using Code = io::CurveImportError::Code;
+    const QString name = QFileInfo(path).fileName();
+    switch (error.code) {
+    case Code::UnknownFormat:
+        return ImportCurvesReaction::tr(
+                   "%1 is not a file DevSurf reads curves from; choose a DXF, STEP or IGES file.")
+            .arg(name);
+    case Code::NotAvailable:
+        return ImportCurvesReaction::tr(
+            "This build of DevSurf reads curves from DXF files only; save the curves as DXF.");
+    case Code::Unreadable:
+        return ImportCurvesReaction::tr(
+                   "%1 cannot be read; check that it exists and that you may read it.")
+            .arg(name);
+    case Code::TooLarge:
+        return ImportCurvesReaction::tr("%1 is too large to import curves from.").arg(name);
+    case Code::Damaged:
+        return ImportCurvesReaction::tr(
+                   "%1 is damaged or not a valid file of its type; nothing was imported.")
+            .arg(name);
+    case Code::NoCurves:
+        return ImportCurvesReaction::tr(
+                   "%1 holds no lines, polylines, splines, arcs or circles to import.")
+            .arg(name);
+    case Code::Cancelled:
+        break;
+    }
+    return ImportCurvesReaction::tr("The curves of %1 could not be imported.").arg(name);
+}
+
+} // namespace
+
+ImportCurvesReaction::ImportCurvesReaction(QAction* action, Workspace* workspace)
+    : Reaction(action, workspace) {}
+
+ImportCurvesReaction::~ImportCurvesReaction() {
+    if (m_thread != nullptr) {
+        // Closed while reading: stop the reader and wait for it, nothing is applied.
+        m_job->cancel = true;
+        m_thread->wait();
+        delete m_thread;
+    }
+}
+
+void ImportCurvesReaction::onTriggered() {
+    if (isBusy()) {
+        return;
+    }
+    const QString path =
+        m_chooser
+            ? m_chooser()
+            : QFileDialog::getOpenFileName(
+                  workspace()->window(), tr("Import Curves"), workspace()->fileDialogDirectory(),
+                  tr("Curve files (*.dxf *.step *.stp *.iges *.igs);;DXF (*.dxf);;"
+                     "STEP (*.step *.stp);;IGES (*.iges *.igs)"));
+    if (!path.isEmpty()) {
+        importFile(path);
+    }
+}
+
+void ImportCurvesReaction::importFile(const QString& path) {
+    if (isBusy()) {
+        return;
+    }
+    m_job = std::make_shared<Job>();
+    m_job->path = path;
+    std::shared_ptr<Job> job = m_job;
+    m_thread = QThread::create([job] {
+        io::CurveImportOptions options;
+        options.progress = [&job](double fraction) {
+            job->permille = static_cast<int>(1000.0 * std::clamp(fraction, 0.0, 1.0));
+            return !job->cancel.load();
+        };
+        job->result = io::importCurveFile(job->path, options);
+    });
+    connect(m_thread, &QThread::finished, this, &ImportCurvesReaction::onRead);
+
+    // Shown only if reading takes a while; window-modal, so the design is not edited meanwhile.
+    m_progress = new QProgressDialog(tr("Reading curves from %1…").arg(QFileInfo(path).fileName()),
+                                     tr("Cancel"), 0, 1000, workspace()->window());
+    m_progress->setObjectName(QStringLiteral("importCurvesProgress"));
+    m_progress->setWindowTitle(tr("Import Curves"));
+    m_progress->setWindowModality(Qt::WindowModal);
+    m_progress->setMinimumDuration(400);
+    m_progress->setAutoClose(false);
+    m_progress->setAutoReset(false);
+    m_progress->setValue(0);
+    connect(m_progress, &QProgressDialog::canceled, this, [job] { job->cancel = true; });
+    m_poll = new QTimer(this);
+    connect(m_poll, &QTimer::timeout, this, [this, job] {
+        if (m_progress != nullptr && !job->cancel) {
+            m_progress->setValue(std::min(job->permille.load(), 999));
+        }
+    });
+    m_poll->start(50);
+    m_thread->start();
+}
+
+void ImportCurvesReaction::onRead() {
+    m_poll->stop();
+    m_poll->deleteLater();
+    m_poll = nullptr;
+    const bool cancelled = m_progress->wasCanceled();
+    m_progress->deleteLater();
+    m_progress->hide();
+    m_progress = nullptr;
+    m_thread->deleteLater();
+    m_thread = nullptr;
+    const std::shared_ptr<Job> job = std::move(m_job);
+    if (cancelled && !job->result.error) {
+        // Read before the cancel reached the reader: cancelled all the same.
+        job->result = {};
+        job->result.error = io::CurveImportError{io::CurveImportError::Code::Cancelled, {}};
+    }
+    bool imported = false;
+    const QString name = QFileInfo(job->path).fileName();
+    if (job->result.error) {
+        if (job->result.error->code == io::CurveImportError::Code::Cancelled) {
+            emit workspace()->statusMessage(tr("Import of curves from %1 cancelled").arg(name));
+        } else {
+            workspace()->showError(tr("Cannot import curves"),
+                                   errorSentence(*job->result.error, job->path));
+        }
+    } else {
+        imported = workspace()->apply(document::ReferenceCurvesCommand::createImport(
+                                          *workspace()->document(), std::move(job->result.curves)),
+                                      tr("Cannot import curves"));
+        if (imported) {
+            emit workspace()->statusMessage(tr("Imported the curves of %1").arg(name));
+        }
+    }
+    emit finished(imported);
+}
+
+RemoveReferenceCurvesReaction::RemoveReferenceCurvesReaction(QAction* action, Workspace* workspace)
+    : Reaction(action, workspace) {
+    followDocumentAndSelection();
+}
+
+void RemoveReferenceCurvesReaction::updateEnableState() {
+    action()->setEnabled(!workspace()->document()->project().referenceCurves.empty());
+}
+
+void RemoveReferenceCurvesReaction::onTriggered() {
+    workspace()->apply(document::ReferenceCurvesCommand::createRemoveAll(*workspace()->document()),
+                       tr("Cannot remove the reference curves"));
+}
+
+} // namespace devsurf::app

@@ -1,0 +1,64 @@
+#include "curve_import.h"
+
+#include <QFile>
+#include <QFileInfo>
+
+namespace devsurf::io {
+
+namespace {
+
+CurveImportResult failure(CurveImportError::Code code, std::string detail = {}) {
+    CurveImportResult result;
+    result.error = CurveImportError{code, std::move(detail)};
+    return result;
+}
+
+} // namespace
+
+std::optional<CurveFormat> curveFormatOf(const QString& path) {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix == QLatin1String("dxf")) {
+        return CurveFormat::Dxf;
+    }
+    if (suffix == QLatin1String("step") || suffix == QLatin1String("stp")) {
+        return CurveFormat::Step;
+    }
+    if (suffix == QLatin1String("iges") || suffix == QLatin1String("igs")) {
+        return CurveFormat::Iges;
+    }
+    return std::nullopt;
+}
+
+CurveImportResult importCurveFile(const QString& path, const CurveImportOptions& options) {
+    using Code = CurveImportError::Code;
+    const std::optional<CurveFormat> format = curveFormatOf(path);
+    if (!format) {
+        return failure(Code::UnknownFormat);
+    }
+    const QFileInfo info(path);
+    if (!info.exists() || !info.isFile()) {
+        return failure(Code::Unreadable, "it does not exist or is not a file");
+    }
+    if (static_cast<std::uint64_t>(info.size()) > kMaxCurveFileSize) {
+        return failure(Code::TooLarge);
+    }
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        return failure(Code::Unreadable, file.errorString().toStdString());
+    }
+    if (*format != CurveFormat::Dxf) {
+#ifdef DEVSURF_CAD_CURVES
+        file.close();
+        return readCadCurves(path, *format, options);
+#else
+        return failure(Code::NotAvailable);
+#endif
+    }
+    const QByteArray bytes = file.readAll();
+    if (file.error() != QFileDevice::NoError) {
+        return failure(Code::Unreadable, file.errorString().toStdString());
+    }
+    return readDxfCurves(bytes.toStdString(), options);
+}
+
+} // namespace devsurf::io
