@@ -522,157 +522,172 @@
         <translation>Ein Punkt der beibehaltenen Abwicklung ist keine endliche Zahl.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="154"/>
+        <location filename="../app/text/problem_text.cpp" line="155"/>
+        <source>The sheet&apos;s inner radius must be smaller than its outer radius.</source>
+        <translation>Der Innenradius des Bogens muss kleiner als sein Außenradius sein.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="158"/>
+        <source>The sheet&apos;s outline has no closed loop enclosing an area.</source>
+        <translation>Der Umriss des Bogens hat keine geschlossene Kontur, die eine Fläche umschließt.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="160"/>
+        <source>The sheet&apos;s sizes must be finite and greater than zero.</source>
+        <translation>Die Maße des Bogens müssen endlich und größer als null sein.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="162"/>
         <source>Vertex %1 (of %2) has a position that is not a finite number.</source>
         <translation>Ecke %1 (von %2) hat eine Lage, die keine endliche Zahl ist.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="158"/>
+        <location filename="../app/text/problem_text.cpp" line="166"/>
         <source>Vertex %1 (of %2) lies %3 mm from the origin; coordinates beyond %4 mm (1 km) are not accepted.</source>
         <translation>Ecke %1 (von %2) liegt %3 mm vom Ursprung entfernt; Koordinaten jenseits von %4 mm (1 km) werden nicht angenommen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="163"/>
+        <location filename="../app/text/problem_text.cpp" line="171"/>
         <source>Edge %1 (a curve of %2) has a control point beyond %3 mm from the origin.</source>
         <translation>Kante %1 (eine Kurve von %2) hat einen Kontrollpunkt weiter als %3 mm vom Ursprung.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="167"/>
+        <location filename="../app/text/problem_text.cpp" line="175"/>
         <source>Edge %1 (a curve of %2) has zero length.</source>
         <translation>Kante %1 (eine Kurve von %2) hat die Länge null.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="169"/>
+        <location filename="../app/text/problem_text.cpp" line="177"/>
         <source>Edge %1 (a ruling of %2) has zero length.</source>
         <translation>Kante %1 (eine Erzeugende von %2) hat die Länge null.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="171"/>
+        <location filename="../app/text/problem_text.cpp" line="179"/>
         <source>Patch %1 has coincident vertices %2 and %3.</source>
         <translation>Flächenstück %1 hat zusammenfallende Ecken %2 und %3.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="176"/>
+        <location filename="../app/text/problem_text.cpp" line="184"/>
         <source>Patch %1 has zero area.</source>
         <translation>Flächenstück %1 hat den Flächeninhalt null.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="178"/>
+        <location filename="../app/text/problem_text.cpp" line="186"/>
         <source>Patch %1 is a %2; only an SRSR strip can be cut by a new crease.</source>
         <translation>Flächenstück %1 ist vom Typ „%2“; nur ein SRSR-Streifen kann durch einen neuen Falz geteilt werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="182"/>
+        <location filename="../app/text/problem_text.cpp" line="190"/>
         <source>The new crease cannot continue across ruling edge %1 into patch %2, a %3; a row of strips can only be cut where its rulings border SRSR strips, planar patches or the boundary.</source>
         <translation>Der neue Falz kann nicht über die Erzeugende %1 in das Flächenstück %2 (Typ „%3“) weiterlaufen; eine Reihe von Streifen kann nur geteilt werden, wo ihre Erzeugenden an SRSR-Streifen, ebene Flächenstücke oder den Rand grenzen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="189"/>
+        <location filename="../app/text/problem_text.cpp" line="197"/>
         <source>The row of strips through patch %1 closes on itself with its sides swapped, so it cannot be cut at one distance between its curves.</source>
         <translation>Die Reihe von Streifen durch Flächenstück %1 schließt sich mit vertauschten Seiten, daher kann sie nicht in einem Abstand zwischen ihren Kurven geteilt werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="193"/>
+        <location filename="../app/text/problem_text.cpp" line="201"/>
         <source>The new crease must lie strictly between the strip&apos;s two curves (0 &lt; t &lt; 1, not %1).</source>
         <translation>Der neue Falz muss echt zwischen den beiden Kurven des Streifens liegen (0 &lt; t &lt; 1, nicht %1).</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="197"/>
+        <location filename="../app/text/problem_text.cpp" line="205"/>
         <source>No edge was given to relabel.</source>
         <translation>Es wurde keine Kante angegeben, deren Kennzeichnung (R/S) geändert werden soll.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="199"/>
+        <location filename="../app/text/problem_text.cpp" line="207"/>
         <source>Edge %1 is not a spline curve.</source>
         <translation>Kante %1 ist keine Splinekurve.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="201"/>
+        <location filename="../app/text/problem_text.cpp" line="209"/>
         <source>Patch %1 is a %2; a ruling can only be added to a strip or a cone.</source>
         <translation>Flächenstück %1 ist vom Typ „%2“; eine Erzeugende kann nur einem Streifen oder Kegel hinzugefügt werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="205"/>
+        <location filename="../app/text/problem_text.cpp" line="213"/>
         <source>The curves of patch %1 have a single interval; refine them before adding a ruling.</source>
         <translation>Die Kurven von Flächenstück %1 haben nur ein Intervall; verfeinern Sie sie, bevor Sie eine Erzeugende hinzufügen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="209"/>
+        <location filename="../app/text/problem_text.cpp" line="217"/>
         <source>A ruling can only be added at an interior breakpoint i/%1 of the curves of patch %2 (1 ≤ i ≤ %3, not %4); refine the curves for finer positions.</source>
         <translation>Eine Erzeugende kann nur an einem inneren Knoten i/%1 der Kurven von Flächenstück %2 hinzugefügt werden (1 ≤ i ≤ %3, nicht %4); verfeinern Sie die Kurven für feinere Positionen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="216"/>
+        <location filename="../app/text/problem_text.cpp" line="224"/>
         <source>The curves connected to patch %1 meet themselves reversed, so no ruling position is consistent across them.</source>
         <translation>Die mit Flächenstück %1 verbundenen Kurven treffen sich selbst umgekehrt, daher passt keine Position einer Erzeugenden zu allen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="220"/>
+        <location filename="../app/text/problem_text.cpp" line="228"/>
         <source>Curve %1 uses a different spline space from the curves of patch %2.</source>
         <translation>Kurve %1 hat einen anderen Splineraum als die Kurven von Flächenstück %2.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="224"/>
+        <location filename="../app/text/problem_text.cpp" line="232"/>
         <source>Refining needs a factor of at least 2, not %1.</source>
         <translation>Das Verfeinern braucht einen Faktor von mindestens 2, nicht %1.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="226"/>
+        <location filename="../app/text/problem_text.cpp" line="234"/>
         <source>The curves of edge %1 already have %2 intervals; refining them beyond %3 is not supported.</source>
         <translation>Die Kurven von Kante %1 haben schon %2 Intervalle; mehr als %3 werden nicht unterstützt.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="232"/>
+        <location filename="../app/text/problem_text.cpp" line="240"/>
         <source>No vertex was given to move.</source>
         <translation>Es wurde keine Ecke zum Verschieben angegeben.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="234"/>
+        <location filename="../app/text/problem_text.cpp" line="242"/>
         <source>A rotation needs a finite axis point, a non-zero axis direction and a finite angle.</source>
         <translation>Eine Drehung braucht einen endlichen Achsenpunkt, eine Achsenrichtung ungleich null und einen endlichen Winkel.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="241"/>
+        <location filename="../app/text/problem_text.cpp" line="249"/>
         <source>There is no example called “%1”; the examples are %2.</source>
         <translation>Es gibt kein Beispiel namens „%1“; die Beispiele sind %2.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="245"/>
+        <location filename="../app/text/problem_text.cpp" line="253"/>
         <source>The size of the example “%1” must be between %2 and %3, not %4.</source>
         <translation>Die Größe des Beispiels „%1“ muss zwischen %2 und %3 liegen, nicht %4.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="251"/>
+        <location filename="../app/text/problem_text.cpp" line="259"/>
         <source>The number of samples per spline interval must be between 1 and %1, not %2.</source>
         <translation>Die Zahl der Abtastpunkte je Splineintervall muss zwischen 1 und %1 liegen, nicht %2.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="255"/>
+        <location filename="../app/text/problem_text.cpp" line="263"/>
         <source>Patch %1 is not a strip or a cone.</source>
         <translation>Flächenstück %1 ist weder ein Streifen noch ein Kegel.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="257"/>
+        <location filename="../app/text/problem_text.cpp" line="265"/>
         <source>The two shapes do not have the same patches.</source>
         <translation>Die beiden Formen haben nicht dieselben Flächenstücke.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="259"/>
+        <location filename="../app/text/problem_text.cpp" line="267"/>
         <source>Edge %1 has a crease condition but is a boundary curve, not a crease.</source>
         <translation>Kante %1 hat eine Falzbedingung, ist aber eine Randkurve, kein Falz.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="262"/>
+        <location filename="../app/text/problem_text.cpp" line="270"/>
         <source>Edge %1 has a crease condition but a cone or planar patch lies beside it; crease conditions need a strip on either side.</source>
         <translation>Kante %1 hat eine Falzbedingung, aber neben ihr liegt ein Kegel oder ein ebenes Flächenstück; Falzbedingungen brauchen auf beiden Seiten einen Streifen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="267"/>
+        <location filename="../app/text/problem_text.cpp" line="275"/>
         <source>Edge %1 has a crease condition but its curve is of degree %2; a crease condition needs degree 2 or more.</source>
         <translation>Kante %1 hat eine Falzbedingung, aber ihre Kurve hat den Grad %2; eine Falzbedingung braucht Grad 2 oder mehr.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/text/problem_text.cpp" line="273"/>
+        <location filename="../app/text/problem_text.cpp" line="281"/>
         <source>The surface is not one sheet: it has %n separate part(s).</source>
         <translation>
             <numerusform>Die Fläche ist kein einzelner Bogen: sie hat %n getrennten Teil.</numerusform>
@@ -680,47 +695,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="277"/>
+        <location filename="../app/text/problem_text.cpp" line="285"/>
         <source>The surface is not one flat sheet: it unfolds onto a cylinder (a period of %1 mm).</source>
         <translation>Die Fläche ist kein einzelner ebener Bogen: sie wickelt sich auf einen Zylinder ab (Periode %1 mm).</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="281"/>
+        <location filename="../app/text/problem_text.cpp" line="289"/>
         <source>The surface is not one flat sheet: its unfolding misses closing up by %1 mm.</source>
         <translation>Die Fläche ist kein einzelner ebener Bogen: ihre Abwicklung schließt sich um %1 mm nicht.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="286"/>
+        <location filename="../app/text/problem_text.cpp" line="294"/>
         <source>DevSurf met an internal error (%1). Please report it.</source>
         <translation>DevSurf ist auf einen internen Fehler gestoßen (%1). Bitte melden Sie ihn.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="304"/>
+        <location filename="../app/text/problem_text.cpp" line="312"/>
         <source>The sheet size must be positive; the pieces are laid out side by side.</source>
         <translation>Die Bogengröße muss positiv sein; die Teile werden nebeneinander gelegt.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="306"/>
+        <location filename="../app/text/problem_text.cpp" line="314"/>
         <source>%1 is not valid and has no pattern: %2</source>
         <translation>%1 ist ungültig und hat kein Schnittmuster: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="309"/>
+        <location filename="../app/text/problem_text.cpp" line="317"/>
         <source>%1 could not be developed: %2</source>
         <translation>%1 konnte nicht abgewickelt werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="312"/>
+        <location filename="../app/text/problem_text.cpp" line="320"/>
         <source>Piece %1 (%2) overlaps itself at patches %3 and cannot be cut from one sheet.</source>
         <translation>Teil %1 (%2) überlappt sich selbst bei den Flächenstücken %3 und kann nicht aus einem Bogen geschnitten werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="315"/>
+        <location filename="../app/text/problem_text.cpp" line="323"/>
         <source>Pieces %1 (patches %2) and %3 (patches %4) overlap on sheet %5.</source>
         <translation>Die Teile %1 (Flächenstücke %2) und %3 (Flächenstücke %4) überlappen sich auf Bogen %5.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="320"/>
+        <location filename="../app/text/problem_text.cpp" line="328"/>
         <source>Piece %1 (%2) measures %3 × %4 mm and does not fit on the %5 × %6 mm sheet with a %7 mm gap.</source>
         <translation>Teil %1 (%2) misst %3 × %4 mm und passt mit %7 mm Abstand nicht auf den Bogen von %5 × %6 mm.</translation>
     </message>
@@ -787,6 +802,44 @@
         <location filename="../app/gui/reactions/pattern_reactions.cpp" line="157"/>
         <source>Print Pre&amp;view…</source>
         <translation>Druck&amp;vorschau…</translation>
+    </message>
+</context>
+<context>
+    <name>ReferenceCurvesCommand</name>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="31"/>
+        <source>There are no curves to import.</source>
+        <translation>Es gibt keine Kurven zum Importieren.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="35"/>
+        <source>A curve to import has fewer than two points or a coordinate that is not a number.</source>
+        <translation>Eine zu importierende Kurve hat weniger als zwei Punkte oder eine Koordinate, die keine Zahl ist.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="44"/>
+        <source>Import Curves</source>
+        <translation>Kurven importieren</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="51"/>
+        <source>Select at least one reference curve to remove.</source>
+        <translation>Wählen Sie mindestens eine Referenzkurve zum Entfernen.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="55"/>
+        <source>Reference curve %1 does not exist.</source>
+        <translation>Die Referenzkurve %1 gibt es nicht.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="65"/>
+        <source>Remove Reference Curves</source>
+        <translation>Referenzkurven entfernen</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="71"/>
+        <source>The design has no reference curves.</source>
+        <translation>Der Entwurf hat keine Referenzkurven.</translation>
     </message>
 </context>
 <context>
@@ -1109,12 +1162,12 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="83"/>
+        <location filename="../app/gui/drag_tool.cpp" line="86"/>
         <source>Drag cancelled; the design is as it was.</source>
         <translation>Ziehen abgebrochen; der Entwurf ist wie zuvor.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="79"/>
+        <location filename="../app/gui/drag_tool.cpp" line="82"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>%n Ecke ziehen</numerusform>
@@ -1122,12 +1175,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="104"/>
+        <location filename="../app/gui/drag_tool.cpp" line="107"/>
         <source>Sliding crease %1 by %2 mm within the surface, as far as it goes: the patch it moves into keeps %3 % of its width. Release to finish, Esc cancels.</source>
         <translation>Falz %1 wird um %2 mm innerhalb der Fläche verschoben, so weit es geht: das Flächenstück, in das er sich bewegt, behält %3 % seiner Breite. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="126"/>
+        <location filename="../app/gui/drag_tool.cpp" line="129"/>
         <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm entlang X gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -1135,7 +1188,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="129"/>
+        <location filename="../app/gui/drag_tool.cpp" line="132"/>
         <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm entlang Y gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -1143,7 +1196,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="132"/>
+        <location filename="../app/gui/drag_tool.cpp" line="135"/>
         <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm entlang Z gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -1151,7 +1204,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="137"/>
+        <location filename="../app/gui/drag_tool.cpp" line="140"/>
         <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm in der Bildebene gezogen. Loslassen beendet, Esc bricht ab; X, Y oder Z gedrückt halten bewegt entlang dieser Achse.</numerusform>
@@ -1159,74 +1212,79 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="242"/>
+        <location filename="../app/gui/drag_tool.cpp" line="245"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>Ecke %1 ist festgehalten und kann nicht gezogen werden; geben Sie sie zuerst frei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="260"/>
-        <location filename="../app/gui/drag_tool.cpp" line="303"/>
+        <location filename="../app/gui/drag_tool.cpp" line="263"/>
+        <location filename="../app/gui/drag_tool.cpp" line="306"/>
         <source>a drag started</source>
         <translation>ein Ziehen hat begonnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="286"/>
+        <location filename="../app/gui/drag_tool.cpp" line="289"/>
         <source>There is no edge %1.</source>
         <translation>Es gibt keine Kante %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="289"/>
+        <location filename="../app/gui/drag_tool.cpp" line="292"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>Kante %1 ist kein Falz (eine Kurve zwischen zwei Flächenstücken); nur Falze lassen sich ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="294"/>
+        <location filename="../app/gui/drag_tool.cpp" line="297"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>Kante %1 kann sich nicht bewegen: beide Enden sind festgehalten und sie hat keinen weiteren Kontrollpunkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="400"/>
+        <location filename="../app/gui/drag_tool.cpp" line="366"/>
+        <source>Snapped to reference curve %1.</source>
+        <translation>An Referenzkurve %1 gefangen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="416"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>Die festgehaltenen Ecken %1 und %2 halten Ecke %3 auf der Geraden zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="406"/>
+        <location filename="../app/gui/drag_tool.cpp" line="422"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>Die festgehaltenen Ecken %1, %2 und %3 halten Ecke %4 im Dreieck zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="87"/>
+        <location filename="../app/gui/drag_tool.cpp" line="90"/>
         <source>Drag stopped: %1 The design is as it was.</source>
         <translation>Ziehen beendet: %1 Der Entwurf ist wie zuvor.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="77"/>
+        <location filename="../app/gui/drag_tool.cpp" line="80"/>
         <source>Drag crease %1</source>
         <translation>Falz %1 ziehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="91"/>
+        <location filename="../app/gui/drag_tool.cpp" line="94"/>
         <source>Drag tool: press on a vertex in the 3D view and move the mouse; the selected vertices of its surface follow. Press on a crease to slide it within its patches. Esc cancels a drag.</source>
         <translation>Ziehwerkzeug: Drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie die Maus; die ausgewählten Ecken ihrer Fläche folgen. Drücken Sie auf einen Falz, um ihn innerhalb seiner Flächenstücke zu verschieben. Esc bricht das Ziehen ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="97"/>
+        <location filename="../app/gui/drag_tool.cpp" line="100"/>
         <source>Drag stopped: the design changed during the drag.</source>
         <translation>Ziehen beendet: Der Entwurf hat sich während des Ziehens geändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="112"/>
+        <location filename="../app/gui/drag_tool.cpp" line="115"/>
         <source>Sliding crease %1 by %2 mm within the surface. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>Falz %1 wird um %2 mm innerhalb der Fläche verschoben. Loslassen beendet, Esc bricht ab; X, Y oder Z gedrückt halten bewegt entlang dieser Achse.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="116"/>
+        <location filename="../app/gui/drag_tool.cpp" line="119"/>
         <source>Moving crease %1 by %2 mm along the axis. Release to finish, Esc cancels.</source>
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="536"/>
-        <location filename="../app/gui/drag_tool.cpp" line="550"/>
+        <location filename="../app/gui/drag_tool.cpp" line="552"/>
+        <location filename="../app/gui/drag_tool.cpp" line="566"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1324,278 +1382,373 @@
 <context>
     <name>devsurf::app::HoldSheetReaction</name>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="42"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="58"/>
         <source>Hold the sheet of a surface: select something on one surface first.</source>
         <translation>Den Bogen einer Fläche festhalten: zuerst etwas auf einer Fläche auswählen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="43"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="59"/>
         <source>The surface is folded from its sheet: solves and drags keep it isometric to its development, and a dragged vertex stays behind where the sheet cannot follow. Uncheck to let the sheet stretch again.</source>
         <translation>Die Fläche ist aus ihrem Bogen gefaltet: Lösen und Ziehen halten sie isometrisch zu ihrer Abwicklung, und ein gezogener Eckpunkt bleibt zurück, wo der Bogen nicht folgen kann. Abwählen, damit sich der Bogen wieder dehnen darf.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="46"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="62"/>
         <source>Fold the surface from its sheet: its development as it unfolds now is kept by every solve and drag; a dragged vertex stays behind where the sheet cannot follow, instead of the sheet stretching.</source>
         <translation>Die Fläche aus ihrem Bogen falten: ihre Abwicklung, wie sie sich jetzt abwickelt, wird von jedem Lösen und Ziehen beibehalten; ein gezogener Eckpunkt bleibt zurück, wo der Bogen nicht folgen kann, statt dass sich der Bogen dehnt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="62"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="78"/>
         <source>Hold the Sheet</source>
         <translation>Bogen festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="62"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="78"/>
         <source>Let the Sheet Stretch</source>
         <translation>Bogen dehnen lassen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="65"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="66"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="75"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="81"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="82"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="91"/>
         <source>Cannot hold the sheet</source>
         <translation>Der Bogen kann nicht festgehalten werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="75"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="91"/>
         <source>Cannot let the sheet stretch</source>
         <translation>Der Bogen kann nicht freigegeben werden</translation>
     </message>
 </context>
 <context>
+    <name>devsurf::app::ImportCurvesReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="36"/>
+        <source>%1 is not a file DevSurf reads curves from; choose a DXF, STEP or IGES file.</source>
+        <translation>Aus %1 kann DevSurf keine Kurven lesen; wählen Sie eine DXF-, STEP- oder IGES-Datei.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="40"/>
+        <source>This build of DevSurf reads curves from DXF files only; save the curves as DXF.</source>
+        <translation>Diese DevSurf-Version liest Kurven nur aus DXF-Dateien; speichern Sie die Kurven als DXF.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="43"/>
+        <source>%1 cannot be read; check that it exists and that you may read it.</source>
+        <translation>%1 kann nicht gelesen werden; prüfen Sie, ob die Datei existiert und Sie sie lesen dürfen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="47"/>
+        <source>%1 is too large to import curves from.</source>
+        <translation>%1 ist zu groß, um Kurven daraus zu importieren.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="49"/>
+        <source>%1 is damaged or not a valid file of its type; nothing was imported.</source>
+        <translation>%1 ist beschädigt oder keine gültige Datei ihres Typs; es wurde nichts importiert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="53"/>
+        <source>%1 holds no lines, polylines, splines, arcs or circles to import.</source>
+        <translation>%1 enthält keine Linien, Polylinien, Splines, Bögen oder Kreise zum Importieren.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="59"/>
+        <source>The curves of %1 could not be imported.</source>
+        <translation>Die Kurven von %1 konnten nicht importiert werden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="84"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="113"/>
+        <source>Import Curves</source>
+        <translation>Kurven importieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="85"/>
+        <source>Curve files (*.dxf *.step *.stp *.iges *.igs);;DXF (*.dxf);;STEP (*.step *.stp);;IGES (*.iges *.igs)</source>
+        <translation>Kurvendateien (*.dxf *.step *.stp *.iges *.igs);;DXF (*.dxf);;STEP (*.step *.stp);;IGES (*.iges *.igs)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="110"/>
+        <source>Reading curves from %1…</source>
+        <translation>Kurven aus %1 werden gelesen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="111"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="150"/>
+        <source>Import of curves from %1 cancelled</source>
+        <translation>Import der Kurven aus %1 abgebrochen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="152"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="158"/>
+        <source>Cannot import curves</source>
+        <translation>Kurven können nicht importiert werden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="160"/>
+        <source>Imported the curves of %1</source>
+        <translation>Die Kurven von %1 wurden importiert</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="116"/>
+        <location filename="../app/gui/main_window.cpp" line="117"/>
         <source>Patches</source>
         <translation>Flächenstücke</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="122"/>
+        <location filename="../app/gui/main_window.cpp" line="123"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="128"/>
+        <location filename="../app/gui/main_window.cpp" line="129"/>
         <source>Pins</source>
         <translation>Festgehaltene Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="138"/>
+        <location filename="../app/gui/main_window.cpp" line="139"/>
         <source>Solver</source>
         <translation>Löser</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="151"/>
+        <location filename="../app/gui/main_window.cpp" line="152"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="158"/>
+        <location filename="../app/gui/main_window.cpp" line="159"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="160"/>
+        <location filename="../app/gui/main_window.cpp" line="161"/>
         <source>&amp;New from Example…</source>
         <translation>&amp;Neu aus Beispiel…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="162"/>
+        <location filename="../app/gui/main_window.cpp" line="163"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="164"/>
+        <location filename="../app/gui/main_window.cpp" line="165"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="168"/>
+        <location filename="../app/gui/main_window.cpp" line="169"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="171"/>
+        <location filename="../app/gui/main_window.cpp" line="172"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <location filename="../app/gui/main_window.cpp" line="176"/>
+        <source>Import &amp;Curves…</source>
+        <translation>&amp;Kurven importieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="178"/>
+        <source>Add the curves of a DXF, STEP or IGES file as reference curves</source>
+        <translation>Die Kurven einer DXF-, STEP- oder IGES-Datei als Referenzkurven hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>Austausch-JSON &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="178"/>
+        <location filename="../app/gui/main_window.cpp" line="184"/>
         <source>Export &amp;3D Shape…</source>
         <translation>&amp;3D-Form exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="182"/>
+        <location filename="../app/gui/main_window.cpp" line="188"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="186"/>
+        <location filename="../app/gui/main_window.cpp" line="192"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="189"/>
+        <location filename="../app/gui/main_window.cpp" line="195"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="192"/>
+        <location filename="../app/gui/main_window.cpp" line="198"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="199"/>
+        <location filename="../app/gui/main_window.cpp" line="205"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="201"/>
+        <location filename="../app/gui/main_window.cpp" line="208"/>
+        <source>Remove Reference &amp;Curves</source>
+        <translation>Referenz&amp;kurven entfernen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="210"/>
         <source>Select &amp;None</source>
         <translation>Auswahl &amp;aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="202"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
+        <location filename="../app/gui/main_window.cpp" line="211"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="106"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="206"/>
+        <location filename="../app/gui/main_window.cpp" line="215"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="208"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>&amp;3D View</source>
         <translation>&amp;3D-Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="208"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="210"/>
+        <location filename="../app/gui/main_window.cpp" line="219"/>
         <source>&amp;Development View</source>
         <translation>&amp;Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="210"/>
+        <location filename="../app/gui/main_window.cpp" line="219"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="211"/>
+        <location filename="../app/gui/main_window.cpp" line="220"/>
         <source>3D &amp;and Development</source>
         <translation>3D &amp;und Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="212"/>
+        <location filename="../app/gui/main_window.cpp" line="221"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="216"/>
+        <location filename="../app/gui/main_window.cpp" line="225"/>
         <source>&amp;Control Polygons</source>
         <translation>&amp;Kontrollpolygone</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="216"/>
+        <location filename="../app/gui/main_window.cpp" line="225"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="226"/>
         <source>&amp;Vertices</source>
         <translation>&amp;Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="218"/>
+        <location filename="../app/gui/main_window.cpp" line="227"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="222"/>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>&amp;Fit All</source>
         <translation>&amp;Alles zeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="222"/>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="228"/>
+        <location filename="../app/gui/main_window.cpp" line="237"/>
         <source>Reset &amp;Layout</source>
         <translation>&amp;Layout zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="233"/>
+        <location filename="../app/gui/main_window.cpp" line="242"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="236"/>
+        <location filename="../app/gui/main_window.cpp" line="245"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>Kanten&amp;kennzeichnung ändern (R ↔ S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="236"/>
+        <location filename="../app/gui/main_window.cpp" line="245"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="238"/>
+        <location filename="../app/gui/main_window.cpp" line="247"/>
         <source>Add &amp;Crease…</source>
         <translation>&amp;Falz einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="241"/>
+        <location filename="../app/gui/main_window.cpp" line="250"/>
         <source>Add R&amp;uling…</source>
         <translation>&amp;Erzeugende einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="254"/>
+        <location filename="../app/gui/main_window.cpp" line="263"/>
         <source>&amp;Pin Vertices</source>
         <translation>Ecken &amp;festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="255"/>
+        <location filename="../app/gui/main_window.cpp" line="264"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="257"/>
+        <location filename="../app/gui/main_window.cpp" line="266"/>
         <source>U&amp;npin Vertices</source>
         <translation>Ecken &amp;freigeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="258"/>
+        <location filename="../app/gui/main_window.cpp" line="267"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="261"/>
+        <location filename="../app/gui/main_window.cpp" line="270"/>
         <source>Hold the &amp;Sheet</source>
         <translation>&amp;Bogen festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="262"/>
+        <location filename="../app/gui/main_window.cpp" line="271"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="274"/>
+        <source>Sheet S&amp;hape…</source>
+        <translation>Bogen&amp;form…</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="390"/>
+        <location filename="../app/gui/main_window.cpp" line="402"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n Fläche</numerusform>
@@ -1603,7 +1756,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="391"/>
+        <location filename="../app/gui/main_window.cpp" line="403"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -1611,7 +1764,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="392"/>
+        <location filename="../app/gui/main_window.cpp" line="404"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -1619,7 +1772,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="393"/>
+        <location filename="../app/gui/main_window.cpp" line="405"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n ausgewählt</numerusform>
@@ -1627,77 +1780,77 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="239"/>
+        <location filename="../app/gui/main_window.cpp" line="248"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="242"/>
+        <location filename="../app/gui/main_window.cpp" line="251"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="244"/>
+        <location filename="../app/gui/main_window.cpp" line="253"/>
         <source>Re&amp;fine Curves</source>
         <translation>Kurven &amp;verfeinern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="245"/>
+        <location filename="../app/gui/main_window.cpp" line="254"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="251"/>
+        <location filename="../app/gui/main_window.cpp" line="260"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>Ecken &amp;verschieben oder drehen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="251"/>
+        <location filename="../app/gui/main_window.cpp" line="260"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="291"/>
+        <location filename="../app/gui/main_window.cpp" line="303"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="292"/>
+        <location filename="../app/gui/main_window.cpp" line="304"/>
         <source>&amp;User Manual</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="299"/>
+        <location filename="../app/gui/main_window.cpp" line="311"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="305"/>
+        <location filename="../app/gui/main_window.cpp" line="317"/>
         <source>&amp;About DevSurf</source>
         <translation>&amp;Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="307"/>
+        <location filename="../app/gui/main_window.cpp" line="319"/>
         <source>About DevSurf</source>
         <translation>Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="308"/>
+        <location filename="../app/gui/main_window.cpp" line="320"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen mit Spline-Torsen (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="353"/>
+        <location filename="../app/gui/main_window.cpp" line="365"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="375"/>
+        <location filename="../app/gui/main_window.cpp" line="387"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="376"/>
+        <location filename="../app/gui/main_window.cpp" line="388"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
@@ -1740,22 +1893,22 @@
         <translation>Höchstzahl der Iterationen von Werkzeuge ▸ Lösen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="67"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="75"/>
         <source>R&amp;otate Vertices</source>
         <translation>Ecken dr&amp;ehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="76"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="71"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="79"/>
         <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
         <translation>Drehwerkzeug (R): Wählen Sie zwei oder mehr Ecken aus, drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie die Maus seitwärts; sie drehen sich um eine Achse durch ihren Schwerpunkt (senkrecht oder wie in der Werkzeugleiste gewählt), und die Fläche folgt. Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="89"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="97"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>Beenden Sie zuerst das Ziehen; es löst bereits während der Bewegung.</translation>
     </message>
@@ -1775,152 +1928,162 @@
         <translation>Ziehwerkzeug: Drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie sie, die Fläche folgt und bleibt abwickelbar; drücken Sie auf einen Falz, um ihn innerhalb seiner Flächenstücke zu verschieben. Die in der Werkzeugleiste gewählte Achse oder gedrückt gehaltenes X, Y oder Z bewegt entlang dieser Achse; Esc bricht das Ziehen ab (G).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="97"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="66"/>
+        <source>S&amp;nap to Reference Curves</source>
+        <translation>An Referenzkurven &amp;fangen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
+        <source>While dragging a vertex (no axis chosen), put it on the nearest reference curve drawn within 10 pixels of the mouse.</source>
+        <translation>Beim Ziehen eines Eckpunkts (ohne gewählte Achse) wird er auf die nächste Referenzkurve gesetzt, die höchstens 10 Pixel von der Maus entfernt gezeichnet ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="105"/>
         <source>&amp;Cancel Solve</source>
         <translation>Lösen &amp;abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="100"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="108"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>Das laufende Lösen beenden; der Entwurf bleibt, wie er ist (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="124"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="132"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>Lösen: Iteration %1 von %2, Residuum %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="137"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="145"/>
         <source>&amp;Lengths While Dragging</source>
         <translation>&amp;Längen beim Ziehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="149"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="157"/>
         <source>&amp;Automatic</source>
         <translation>&amp;Automatisch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="150"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="158"/>
         <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over, collapses a strip or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
         <translation>Das Ziehen und Drehen von Ecken behält die Längen bei. Wo das Blatt so nicht folgen kann (das Ziehen konvergiert nicht, faltet sich zurück, lässt einen Streifen zusammenfallen oder seine Abwicklung überlappt sich selbst), wird es beim Loslassen mit Dehnen des Blatts wiederholt, und das bessere der beiden Ergebnisse bleibt; das Löser-Fenster sagt es.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="154"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="162"/>
         <source>&amp;Keep Lengths</source>
         <translation>Längen &amp;beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="155"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="163"/>
         <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape and fold. A motion the sheet cannot make without stretching then may not converge. Dragged creases always resize their patches.</source>
         <translation>Beim Ziehen oder Drehen von Ecken biegt sich das Blatt, statt sich zu dehnen: entfernte Teile bleiben an ihrem Platz, und gekrümmte Falze behalten ihre Form und falten sich. Eine Bewegung, die das Blatt nicht ohne Dehnen ausführen kann, konvergiert dann unter Umständen nicht. Gezogene Falze ändern die Größe ihrer Flächenstücke immer.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="159"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="167"/>
         <source>Let &amp;Stretch</source>
         <translation>&amp;Dehnen zulassen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="160"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="168"/>
         <source>While dragging or rotating vertices, the sheet may stretch: it stays developable and its development changes, curved creases may be pulled straight and large drags may crumple it.</source>
         <translation>Beim Ziehen oder Drehen von Ecken darf sich das Blatt dehnen: es bleibt abwickelbar und seine Abwicklung ändert sich, gekrümmte Falze können gerade gezogen werden, und große Bewegungen können es zerknittern.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="182"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="190"/>
         <source>Motion &amp;Axis</source>
         <translation>Bewegungs&amp;achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="194"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
         <source>&amp;Free</source>
         <translation>&amp;Frei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="195"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="203"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>Freie Bewegung: Das Ziehwerkzeug bewegt Ecken in der Bildebene; das Drehwerkzeug dreht sie um die senkrechte Achse (Z) oder um die Blickachse, wenn Werkzeuge ▸ Bewegungsachse ▸ Um die Blickachse drehen eingeschaltet ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="198"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="206"/>
         <source>&amp;X Axis</source>
         <translation>&amp;X-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="199"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="207"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang X; das Drehwerkzeug dreht sie um eine zu X parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes Y oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="201"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="209"/>
         <source>&amp;Y Axis</source>
         <translation>&amp;Y-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="210"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Y; das Drehwerkzeug dreht sie um eine zu Y parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="204"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="212"/>
         <source>&amp;Z Axis</source>
         <translation>&amp;Z-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="205"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="213"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Z; das Drehwerkzeug dreht sie um eine zu Z parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Y hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="229"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="237"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>Um die &amp;Blickachse drehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="232"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="240"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>Bei der Achswahl „Frei“ dreht das Drehwerkzeug die Ecken um die Blickrichtung durch ihren Schwerpunkt statt um die senkrechte Achse.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="246"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
         <source>Colour &amp;By</source>
         <translation>&amp;Färben nach</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
         <source>&amp;Patch</source>
         <translation>&amp;Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
         <source>&amp;Developability</source>
         <translation>&amp;Abwickelbarkeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
         <source>&amp;Flatness</source>
         <translation>&amp;Ebenheit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="255"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="263"/>
         <source>&amp;Angle Defect</source>
         <translation>&amp;Winkeldefekt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="257"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="265"/>
         <source>Every patch in its own colour.</source>
         <translation>Jedes Flächenstück in seiner eigenen Farbe.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="258"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>Wie weit jedes abgetastete Streifenviereck von abwickelbar entfernt ist: das normierte |det(a−b, a′, b′)|, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="260"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="268"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>Ebenheit δ jedes abgetasteten Vierecks: der Abstand seiner Diagonalen durch das Mittel seiner zwei kürzesten Kanten, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="270"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>Winkeldefekt |K| = |2π − Σ Winkel| an den inneren Ecken des abgetasteten Netzes, im Bogenmaß, logarithmisch skaliert.</translation>
     </message>
@@ -2608,6 +2771,14 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::RemoveReferenceCurvesReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="177"/>
+        <source>Cannot remove the reference curves</source>
+        <translation>Die Referenzkurven können nicht entfernt werden</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::RotateTool</name>
     <message>
         <location filename="../app/gui/rotate_tool.cpp" line="29"/>
@@ -2839,6 +3010,120 @@
         <location filename="../app/gui/shape_export_dialog.cpp" line="214"/>
         <source>The mesh was written with %1 samples per curve interval, the most DevSurf writes, and is coarser than the tolerance asked for.</source>
         <translation>Das Netz wurde mit %1 Abtastpunkten je Kurvenintervall geschrieben, dem Höchstwert von DevSurf, und ist gröber als die verlangte Toleranz.</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::SheetShapeDialog</name>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="38"/>
+        <source>Sheet Shape</source>
+        <translation>Bogenform</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="41"/>
+        <source>Free: the development as it is</source>
+        <translation>Frei: die Abwicklung, wie sie ist</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="43"/>
+        <source>Rectangle</source>
+        <translation>Rechteck</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="44"/>
+        <source>Disk</source>
+        <translation>Kreisscheibe</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="45"/>
+        <source>Annulus</source>
+        <translation>Kreisring</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="62"/>
+        <source>The sheet the surface is folded from. Every solve and drag keeps the surface isometric to its development; with a shape, the development may change inside it, its boundary on the shape&apos;s and its corners at the shape&apos;s corners.</source>
+        <translation>Der Bogen, aus dem die Fläche gefaltet wird. Jedes Lösen und Ziehen hält die Fläche isometrisch zu ihrer Abwicklung; mit einer Form darf sich die Abwicklung innerhalb der Form ändern, ihr Rand liegt auf dem Rand der Form und ihre Ecken auf deren Ecken.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="69"/>
+        <source>Shape:</source>
+        <translation>Form:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="70"/>
+        <source>Width:</source>
+        <translation>Breite:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="71"/>
+        <source>Height:</source>
+        <translation>Höhe:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="72"/>
+        <source>Radius:</source>
+        <translation>Radius:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="73"/>
+        <source>Inner radius:</source>
+        <translation>Innenradius:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="132"/>
+        <source>The development covers %1 cm² and is held as it is.</source>
+        <translation>Die Abwicklung bedeckt %1 cm² und wird gehalten, wie sie ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="137"/>
+        <source>The inner radius must be smaller than the radius.</source>
+        <translation>Der Innenradius muss kleiner als der Radius sein.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="144"/>
+        <source>The development (%1 cm²) is larger than this sheet (%2 cm²): no solve can fold the design from it.</source>
+        <translation>Die Abwicklung (%1 cm²) ist größer als dieser Bogen (%2 cm²): kein Lösen kann die Form daraus falten.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="150"/>
+        <source>The development covers %1 cm² of this sheet&apos;s %2 cm². The next solve moves its boundary onto the sheet&apos;s.</source>
+        <translation>Die Abwicklung bedeckt %1 cm² der %2 cm² dieses Bogens. Das nächste Lösen legt ihren Rand auf den des Bogens.</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::SheetShapeReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="104"/>
+        <source>Choose the sheet the surface is folded from: its development as it is, or a rectangle, disk or annulus its development stays inside.</source>
+        <translation>Den Bogen wählen, aus dem die Fläche gefaltet wird: ihre Abwicklung, wie sie ist, oder ein Rechteck, eine Kreisscheibe oder ein Kreisring, in dem ihre Abwicklung bleibt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="106"/>
+        <source>Choose the sheet of a surface: select something on one surface first.</source>
+        <translation>Den Bogen einer Fläche wählen: zuerst etwas auf einer Fläche auswählen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="121"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="122"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="142"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="143"/>
+        <source>Cannot hold the sheet</source>
+        <translation>Der Bogen kann nicht festgehalten werden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="153"/>
+        <source>Set Sheet Shape</source>
+        <translation>Bogenform festlegen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="155"/>
+        <source>Cannot set the sheet shape</source>
+        <translation>Die Bogenform kann nicht festgelegt werden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="160"/>
+        <source>The development&apos;s boundary is up to %1 mm from the sheet&apos;s: Solve moves it onto the sheet.</source>
+        <translation>Der Rand der Abwicklung liegt bis zu %1 mm vom Rand des Bogens entfernt: Lösen legt ihn auf den Bogen.</translation>
     </message>
 </context>
 <context>
@@ -3487,7 +3772,7 @@
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="586"/>
+        <location filename="../views/scene_view.cpp" line="594"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>Fläche %1 ist ungültig und wird nicht angezeigt.</translation>
     </message>

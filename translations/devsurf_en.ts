@@ -61,7 +61,7 @@
 <context>
     <name>ProblemText</name>
     <message numerus="yes">
-        <location filename="../app/text/problem_text.cpp" line="273"/>
+        <location filename="../app/text/problem_text.cpp" line="281"/>
         <source>The surface is not one sheet: it has %n separate part(s).</source>
         <translation>
             <numerusform>The surface is not one sheet: it has %n separate part.</numerusform>
@@ -102,7 +102,7 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="79"/>
+        <location filename="../app/gui/drag_tool.cpp" line="82"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>Drag %n vertex</numerusform>
@@ -110,7 +110,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="126"/>
+        <location filename="../app/gui/drag_tool.cpp" line="129"/>
         <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along X. Release to finish, Esc cancels.</numerusform>
@@ -118,7 +118,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="129"/>
+        <location filename="../app/gui/drag_tool.cpp" line="132"/>
         <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along Y. Release to finish, Esc cancels.</numerusform>
@@ -126,7 +126,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="132"/>
+        <location filename="../app/gui/drag_tool.cpp" line="135"/>
         <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along Z. Release to finish, Esc cancels.</numerusform>
@@ -134,7 +134,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="137"/>
+        <location filename="../app/gui/drag_tool.cpp" line="140"/>
         <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</numerusform>
@@ -145,7 +145,7 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="390"/>
+        <location filename="../app/gui/main_window.cpp" line="402"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n surface</numerusform>
@@ -153,7 +153,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="391"/>
+        <location filename="../app/gui/main_window.cpp" line="403"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n patch</numerusform>
@@ -161,7 +161,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="392"/>
+        <location filename="../app/gui/main_window.cpp" line="404"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n control point</numerusform>
@@ -169,7 +169,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="393"/>
+        <location filename="../app/gui/main_window.cpp" line="405"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n selected</numerusform>

@@ -516,204 +516,219 @@
         <translation>保持された展開図の点に有限でない数があります。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="154"/>
+        <location filename="../app/text/problem_text.cpp" line="155"/>
+        <source>The sheet&apos;s inner radius must be smaller than its outer radius.</source>
+        <translation>シートの内径は外径より小さくなければなりません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="158"/>
+        <source>The sheet&apos;s outline has no closed loop enclosing an area.</source>
+        <translation>シートの輪郭に面積を囲む閉じたループがありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="160"/>
+        <source>The sheet&apos;s sizes must be finite and greater than zero.</source>
+        <translation>シートの寸法は有限で 0 より大きくなければなりません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="162"/>
         <source>Vertex %1 (of %2) has a position that is not a finite number.</source>
         <translation>頂点 %1（%2）の位置が有限の数ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="158"/>
+        <location filename="../app/text/problem_text.cpp" line="166"/>
         <source>Vertex %1 (of %2) lies %3 mm from the origin; coordinates beyond %4 mm (1 km) are not accepted.</source>
         <translation>頂点 %1（%2）は原点から %3 mm 離れています。%4 mm (1 km) を超える座標は受け付けません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="163"/>
+        <location filename="../app/text/problem_text.cpp" line="171"/>
         <source>Edge %1 (a curve of %2) has a control point beyond %3 mm from the origin.</source>
         <translation>辺 %1（%2 の曲線）に原点から %3 mm より遠い制御点があります。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="167"/>
+        <location filename="../app/text/problem_text.cpp" line="175"/>
         <source>Edge %1 (a curve of %2) has zero length.</source>
         <translation>辺 %1（%2 の曲線）の長さがゼロです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="169"/>
+        <location filename="../app/text/problem_text.cpp" line="177"/>
         <source>Edge %1 (a ruling of %2) has zero length.</source>
         <translation>辺 %1（%2 の母線）の長さがゼロです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="171"/>
+        <location filename="../app/text/problem_text.cpp" line="179"/>
         <source>Patch %1 has coincident vertices %2 and %3.</source>
         <translation>パッチ %1 の頂点 %2 と %3 が一致しています。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="176"/>
+        <location filename="../app/text/problem_text.cpp" line="184"/>
         <source>Patch %1 has zero area.</source>
         <translation>パッチ %1 の面積がゼロです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="178"/>
+        <location filename="../app/text/problem_text.cpp" line="186"/>
         <source>Patch %1 is a %2; only an SRSR strip can be cut by a new crease.</source>
         <translation>パッチ %1 は%2です。新しい折り線で分割できるのは SRSR ストリップだけです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="182"/>
+        <location filename="../app/text/problem_text.cpp" line="190"/>
         <source>The new crease cannot continue across ruling edge %1 into patch %2, a %3; a row of strips can only be cut where its rulings border SRSR strips, planar patches or the boundary.</source>
         <translation>新しい折り線は母線の辺 %1 を越えてパッチ %2（%3）へ続けられません。ストリップの列を分割できるのは、その母線が SRSR ストリップ、平面パッチまたは境界に接する場所だけです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="189"/>
+        <location filename="../app/text/problem_text.cpp" line="197"/>
         <source>The row of strips through patch %1 closes on itself with its sides swapped, so it cannot be cut at one distance between its curves.</source>
         <translation>パッチ %1 を通るストリップの列は左右が入れ替わって閉じているため、曲線間の一定の位置で分割できません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="193"/>
+        <location filename="../app/text/problem_text.cpp" line="201"/>
         <source>The new crease must lie strictly between the strip&apos;s two curves (0 &lt; t &lt; 1, not %1).</source>
         <translation>新しい折り線はストリップの 2 本の曲線の間になければなりません（0 &lt; t &lt; 1、%1 ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="197"/>
+        <location filename="../app/text/problem_text.cpp" line="205"/>
         <source>No edge was given to relabel.</source>
         <translation>ラベルを変更する辺が指定されていません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="199"/>
+        <location filename="../app/text/problem_text.cpp" line="207"/>
         <source>Edge %1 is not a spline curve.</source>
         <translation>辺 %1 はスプライン曲線ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="201"/>
+        <location filename="../app/text/problem_text.cpp" line="209"/>
         <source>Patch %1 is a %2; a ruling can only be added to a strip or a cone.</source>
         <translation>パッチ %1 は%2です。母線を追加できるのはストリップか錐面だけです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="205"/>
+        <location filename="../app/text/problem_text.cpp" line="213"/>
         <source>The curves of patch %1 have a single interval; refine them before adding a ruling.</source>
         <translation>パッチ %1 の曲線は区間が 1 つだけです。母線を追加する前に細分してください。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="209"/>
+        <location filename="../app/text/problem_text.cpp" line="217"/>
         <source>A ruling can only be added at an interior breakpoint i/%1 of the curves of patch %2 (1 ≤ i ≤ %3, not %4); refine the curves for finer positions.</source>
         <translation>母線を追加できるのはパッチ %2 の曲線の内部の区切り点 i/%1 だけです（1 ≤ i ≤ %3、%4 ではなく）。細かい位置には曲線を細分してください。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="216"/>
+        <location filename="../app/text/problem_text.cpp" line="224"/>
         <source>The curves connected to patch %1 meet themselves reversed, so no ruling position is consistent across them.</source>
         <translation>パッチ %1 につながる曲線は逆向きに自分自身と出会うため、すべてに合う母線の位置がありません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="220"/>
+        <location filename="../app/text/problem_text.cpp" line="228"/>
         <source>Curve %1 uses a different spline space from the curves of patch %2.</source>
         <translation>曲線 %1 のスプライン空間はパッチ %2 の曲線と異なります。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="224"/>
+        <location filename="../app/text/problem_text.cpp" line="232"/>
         <source>Refining needs a factor of at least 2, not %1.</source>
         <translation>細分には 2 以上の倍率が必要です（%1 ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="226"/>
+        <location filename="../app/text/problem_text.cpp" line="234"/>
         <source>The curves of edge %1 already have %2 intervals; refining them beyond %3 is not supported.</source>
         <translation>辺 %1 の曲線はすでに区間数 %2 です。%3 を超える細分には対応していません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="232"/>
+        <location filename="../app/text/problem_text.cpp" line="240"/>
         <source>No vertex was given to move.</source>
         <translation>移動する頂点が指定されていません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="234"/>
+        <location filename="../app/text/problem_text.cpp" line="242"/>
         <source>A rotation needs a finite axis point, a non-zero axis direction and a finite angle.</source>
         <translation>回転には有限の軸上の点、ゼロでない軸方向、有限の角度が必要です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="241"/>
+        <location filename="../app/text/problem_text.cpp" line="249"/>
         <source>There is no example called “%1”; the examples are %2.</source>
         <translation>「%1」という例はありません。例は %2 です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="245"/>
+        <location filename="../app/text/problem_text.cpp" line="253"/>
         <source>The size of the example “%1” must be between %2 and %3, not %4.</source>
         <translation>例「%1」のサイズは %2 から %3 の間でなければなりません（%4 ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="251"/>
+        <location filename="../app/text/problem_text.cpp" line="259"/>
         <source>The number of samples per spline interval must be between 1 and %1, not %2.</source>
         <translation>スプライン区間あたりのサンプル数は 1 から %1 の間でなければなりません（%2 ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="255"/>
+        <location filename="../app/text/problem_text.cpp" line="263"/>
         <source>Patch %1 is not a strip or a cone.</source>
         <translation>パッチ %1 はストリップでも錐面でもありません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="257"/>
+        <location filename="../app/text/problem_text.cpp" line="265"/>
         <source>The two shapes do not have the same patches.</source>
         <translation>2 つの形状のパッチが一致しません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="259"/>
+        <location filename="../app/text/problem_text.cpp" line="267"/>
         <source>Edge %1 has a crease condition but is a boundary curve, not a crease.</source>
         <translation>辺 %1 には折り線の条件がありますが、折り線ではなく境界曲線です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="262"/>
+        <location filename="../app/text/problem_text.cpp" line="270"/>
         <source>Edge %1 has a crease condition but a cone or planar patch lies beside it; crease conditions need a strip on either side.</source>
         <translation>辺 %1 には折り線の条件がありますが、隣に錐面または平面パッチがあります。折り線の条件には両側にストリップが必要です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="267"/>
+        <location filename="../app/text/problem_text.cpp" line="275"/>
         <source>Edge %1 has a crease condition but its curve is of degree %2; a crease condition needs degree 2 or more.</source>
         <translation>辺 %1 には折り線の条件がありますが、曲線の次数が %2 です。折り線の条件には次数 2 以上が必要です。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/text/problem_text.cpp" line="273"/>
+        <location filename="../app/text/problem_text.cpp" line="281"/>
         <source>The surface is not one sheet: it has %n separate part(s).</source>
         <translation>
             <numerusform>曲面は 1 枚のシートではありません: %n 個の部分に分かれています。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="277"/>
+        <location filename="../app/text/problem_text.cpp" line="285"/>
         <source>The surface is not one flat sheet: it unfolds onto a cylinder (a period of %1 mm).</source>
         <translation>曲面は 1 枚の平らなシートではありません: 円柱上に展開されます（周期 %1 mm）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="281"/>
+        <location filename="../app/text/problem_text.cpp" line="289"/>
         <source>The surface is not one flat sheet: its unfolding misses closing up by %1 mm.</source>
         <translation>曲面は 1 枚の平らなシートではありません: 展開図が %1 mm 閉じません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="286"/>
+        <location filename="../app/text/problem_text.cpp" line="294"/>
         <source>DevSurf met an internal error (%1). Please report it.</source>
         <translation>DevSurf で内部エラーが発生しました (%1)。報告してください。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="304"/>
+        <location filename="../app/text/problem_text.cpp" line="312"/>
         <source>The sheet size must be positive; the pieces are laid out side by side.</source>
         <translation>シートの大きさは正でなければなりません。ピースは横に並べて配置します。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="306"/>
+        <location filename="../app/text/problem_text.cpp" line="314"/>
         <source>%1 is not valid and has no pattern: %2</source>
         <translation>%1 は無効で型紙がありません: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="309"/>
+        <location filename="../app/text/problem_text.cpp" line="317"/>
         <source>%1 could not be developed: %2</source>
         <translation>%1 を展開できませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="312"/>
+        <location filename="../app/text/problem_text.cpp" line="320"/>
         <source>Piece %1 (%2) overlaps itself at patches %3 and cannot be cut from one sheet.</source>
         <translation>ピース %1（%2）はパッチ %3 で自分自身と重なっており、1 枚のシートから切り出せません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="315"/>
+        <location filename="../app/text/problem_text.cpp" line="323"/>
         <source>Pieces %1 (patches %2) and %3 (patches %4) overlap on sheet %5.</source>
         <translation>ピース %1（パッチ %2）と %3（パッチ %4）がシート %5 上で重なっています。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="320"/>
+        <location filename="../app/text/problem_text.cpp" line="328"/>
         <source>Piece %1 (%2) measures %3 × %4 mm and does not fit on the %5 × %6 mm sheet with a %7 mm gap.</source>
         <translation>ピース %1（%2）は %3 × %4 mm で、%7 mm の間隔をとると %5 × %6 mm のシートに収まりません。</translation>
     </message>
@@ -780,6 +795,44 @@
         <location filename="../app/gui/reactions/pattern_reactions.cpp" line="157"/>
         <source>Print Pre&amp;view…</source>
         <translation>印刷プレビュー(&amp;V)…</translation>
+    </message>
+</context>
+<context>
+    <name>ReferenceCurvesCommand</name>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="31"/>
+        <source>There are no curves to import.</source>
+        <translation>読み込む曲線がありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="35"/>
+        <source>A curve to import has fewer than two points or a coordinate that is not a number.</source>
+        <translation>読み込む曲線に、点が 2 つ未満のもの、または数値でない座標を持つものがあります。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="44"/>
+        <source>Import Curves</source>
+        <translation>曲線を読み込む</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="51"/>
+        <source>Select at least one reference curve to remove.</source>
+        <translation>削除する参照曲線を 1 本以上選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="55"/>
+        <source>Reference curve %1 does not exist.</source>
+        <translation>参照曲線 %1 は存在しません。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="65"/>
+        <source>Remove Reference Curves</source>
+        <translation>参照曲線を削除</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_curves_command.cpp" line="71"/>
+        <source>The design has no reference curves.</source>
+        <translation>デザインに参照曲線はありません。</translation>
     </message>
 </context>
 <context>
@@ -1099,119 +1152,124 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="83"/>
+        <location filename="../app/gui/drag_tool.cpp" line="86"/>
         <source>Drag cancelled; the design is as it was.</source>
         <translation>ドラッグを取り消しました。デザインは元のままです。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="79"/>
+        <location filename="../app/gui/drag_tool.cpp" line="82"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>%n 個の頂点をドラッグ</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="104"/>
+        <location filename="../app/gui/drag_tool.cpp" line="107"/>
         <source>Sliding crease %1 by %2 mm within the surface, as far as it goes: the patch it moves into keeps %3 % of its width. Release to finish, Esc cancels.</source>
         <translation>折り線 %1 を曲面の中で %2 mm 移動中 (これ以上は動きません。移動先のパッチは幅の %3 % を保ちます)。離すと終了、Esc で取り消し。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="126"/>
+        <location filename="../app/gui/drag_tool.cpp" line="129"/>
         <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を X 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="129"/>
+        <location filename="../app/gui/drag_tool.cpp" line="132"/>
         <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を Y 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="132"/>
+        <location filename="../app/gui/drag_tool.cpp" line="135"/>
         <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を Z 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="137"/>
+        <location filename="../app/gui/drag_tool.cpp" line="140"/>
         <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>
             <numerusform>%n 個の頂点を視平面内で %1 mm ドラッグ中。離すと確定、Esc で取り消し。X、Y、Z を押し続けるとその軸に沿って動きます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="242"/>
+        <location filename="../app/gui/drag_tool.cpp" line="245"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>頂点 %1 は固定されているためドラッグできません。先に固定を解除してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="260"/>
-        <location filename="../app/gui/drag_tool.cpp" line="303"/>
+        <location filename="../app/gui/drag_tool.cpp" line="263"/>
+        <location filename="../app/gui/drag_tool.cpp" line="306"/>
         <source>a drag started</source>
         <translation>ドラッグが始まりました</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="286"/>
+        <location filename="../app/gui/drag_tool.cpp" line="289"/>
         <source>There is no edge %1.</source>
         <translation>辺 %1 はありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="289"/>
+        <location filename="../app/gui/drag_tool.cpp" line="292"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>辺 %1 は折り線 (2 つのパッチの間の曲線) ではありません。ドラッグできるのは折り線だけです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="294"/>
+        <location filename="../app/gui/drag_tool.cpp" line="297"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>辺 %1 は動かせません: 両端が固定されていて、ほかに制御点がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="400"/>
+        <location filename="../app/gui/drag_tool.cpp" line="366"/>
+        <source>Snapped to reference curve %1.</source>
+        <translation>参照曲線 %1 にスナップしました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="416"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1 と %2 が頂点 %3 をその間の直線上に押さえています (2 点の距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="406"/>
+        <location filename="../app/gui/drag_tool.cpp" line="422"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1、%2、%3 が頂点 %4 をその三角形の中に押さえています (距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="87"/>
+        <location filename="../app/gui/drag_tool.cpp" line="90"/>
         <source>Drag stopped: %1 The design is as it was.</source>
         <translation>ドラッグを中止しました: %1 デザインは元のままです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="77"/>
+        <location filename="../app/gui/drag_tool.cpp" line="80"/>
         <source>Drag crease %1</source>
         <translation>折り線 %1 をドラッグ</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="91"/>
+        <location filename="../app/gui/drag_tool.cpp" line="94"/>
         <source>Drag tool: press on a vertex in the 3D view and move the mouse; the selected vertices of its surface follow. Press on a crease to slide it within its patches. Esc cancels a drag.</source>
         <translation>ドラッグツール: 3D ビューで頂点を押してマウスを動かすと、その曲面の選択した頂点が追従します。折り線を押すと、パッチの中で折り線を滑らせます。Esc でドラッグを取り消します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="97"/>
+        <location filename="../app/gui/drag_tool.cpp" line="100"/>
         <source>Drag stopped: the design changed during the drag.</source>
         <translation>ドラッグを中止しました: ドラッグ中にデザインが変更されました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="112"/>
+        <location filename="../app/gui/drag_tool.cpp" line="115"/>
         <source>Sliding crease %1 by %2 mm within the surface. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>折り線 %1 を曲面の中で %2 mm 移動中。離すと終了、Esc で取り消し。X、Y、Z を押したままにするとその軸に沿って動きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="116"/>
+        <location filename="../app/gui/drag_tool.cpp" line="119"/>
         <source>Moving crease %1 by %2 mm along the axis. Release to finish, Esc cancels.</source>
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="536"/>
-        <location filename="../app/gui/drag_tool.cpp" line="550"/>
+        <location filename="../app/gui/drag_tool.cpp" line="552"/>
+        <location filename="../app/gui/drag_tool.cpp" line="566"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1309,374 +1367,469 @@
 <context>
     <name>devsurf::app::HoldSheetReaction</name>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="42"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="58"/>
         <source>Hold the sheet of a surface: select something on one surface first.</source>
         <translation>曲面のシートを保持します: まず 1 つの曲面上の要素を選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="43"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="59"/>
         <source>The surface is folded from its sheet: solves and drags keep it isometric to its development, and a dragged vertex stays behind where the sheet cannot follow. Uncheck to let the sheet stretch again.</source>
         <translation>曲面はそのシートから折られています: ソルブとドラッグは展開図との等長性を保ち、シートが追従できない所ではドラッグした頂点が手前で止まります。チェックを外すとシートは再び伸びられます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="46"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="62"/>
         <source>Fold the surface from its sheet: its development as it unfolds now is kept by every solve and drag; a dragged vertex stays behind where the sheet cannot follow, instead of the sheet stretching.</source>
         <translation>曲面をそのシートから折ります: 現在の展開図がすべてのソルブとドラッグで保たれ、シートが追従できない所では、シートが伸びる代わりにドラッグした頂点が手前で止まります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="62"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="78"/>
         <source>Hold the Sheet</source>
         <translation>シートを保持</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="62"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="78"/>
         <source>Let the Sheet Stretch</source>
         <translation>シートの伸びを許す</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="65"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="66"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="75"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="81"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="82"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="91"/>
         <source>Cannot hold the sheet</source>
         <translation>シートを保持できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="75"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="91"/>
         <source>Cannot let the sheet stretch</source>
         <translation>シートの伸びを許せません</translation>
     </message>
 </context>
 <context>
+    <name>devsurf::app::ImportCurvesReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="36"/>
+        <source>%1 is not a file DevSurf reads curves from; choose a DXF, STEP or IGES file.</source>
+        <translation>%1 は DevSurf が曲線を読み込めるファイルではありません。DXF、STEP または IGES ファイルを選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="40"/>
+        <source>This build of DevSurf reads curves from DXF files only; save the curves as DXF.</source>
+        <translation>この DevSurf は DXF ファイルからのみ曲線を読み込みます。曲線を DXF で保存してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="43"/>
+        <source>%1 cannot be read; check that it exists and that you may read it.</source>
+        <translation>%1 を読み込めません。ファイルが存在し、読み取り権限があるか確認してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="47"/>
+        <source>%1 is too large to import curves from.</source>
+        <translation>%1 は大きすぎて曲線を読み込めません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="49"/>
+        <source>%1 is damaged or not a valid file of its type; nothing was imported.</source>
+        <translation>%1 は壊れているか、その形式の有効なファイルではありません。何も読み込んでいません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="53"/>
+        <source>%1 holds no lines, polylines, splines, arcs or circles to import.</source>
+        <translation>%1 には読み込める線分、ポリライン、スプライン、円弧、円がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="59"/>
+        <source>The curves of %1 could not be imported.</source>
+        <translation>%1 の曲線を読み込めませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="84"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="113"/>
+        <source>Import Curves</source>
+        <translation>曲線を読み込む</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="85"/>
+        <source>Curve files (*.dxf *.step *.stp *.iges *.igs);;DXF (*.dxf);;STEP (*.step *.stp);;IGES (*.iges *.igs)</source>
+        <translation>曲線ファイル (*.dxf *.step *.stp *.iges *.igs);;DXF (*.dxf);;STEP (*.step *.stp);;IGES (*.iges *.igs)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="110"/>
+        <source>Reading curves from %1…</source>
+        <translation>%1 から曲線を読み込んでいます…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="111"/>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="150"/>
+        <source>Import of curves from %1 cancelled</source>
+        <translation>%1 からの曲線の読み込みを中止しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="152"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="158"/>
+        <source>Cannot import curves</source>
+        <translation>曲線を読み込めません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="160"/>
+        <source>Imported the curves of %1</source>
+        <translation>%1 の曲線を読み込みました</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="116"/>
+        <location filename="../app/gui/main_window.cpp" line="117"/>
         <source>Patches</source>
         <translation>パッチ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="122"/>
+        <location filename="../app/gui/main_window.cpp" line="123"/>
         <source>Properties</source>
         <translation>プロパティ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="128"/>
+        <location filename="../app/gui/main_window.cpp" line="129"/>
         <source>Pins</source>
         <translation>固定点</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="138"/>
+        <location filename="../app/gui/main_window.cpp" line="139"/>
         <source>Solver</source>
         <translation>ソルバー</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="151"/>
+        <location filename="../app/gui/main_window.cpp" line="152"/>
         <source>Main</source>
         <translation>メイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="158"/>
+        <location filename="../app/gui/main_window.cpp" line="159"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="160"/>
+        <location filename="../app/gui/main_window.cpp" line="161"/>
         <source>&amp;New from Example…</source>
         <translation>例から新規作成(&amp;N)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="162"/>
+        <location filename="../app/gui/main_window.cpp" line="163"/>
         <source>&amp;Open…</source>
         <translation>開く(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="164"/>
+        <location filename="../app/gui/main_window.cpp" line="165"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="168"/>
+        <location filename="../app/gui/main_window.cpp" line="169"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="171"/>
+        <location filename="../app/gui/main_window.cpp" line="172"/>
         <source>Save &amp;As…</source>
         <translation>名前を付けて保存(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <location filename="../app/gui/main_window.cpp" line="176"/>
+        <source>Import &amp;Curves…</source>
+        <translation>曲線を読み込む(&amp;C)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="178"/>
+        <source>Add the curves of a DXF, STEP or IGES file as reference curves</source>
+        <translation>DXF、STEP または IGES ファイルの曲線を参照曲線として加えます</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>交換用 JSON をエクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="178"/>
+        <location filename="../app/gui/main_window.cpp" line="184"/>
         <source>Export &amp;3D Shape…</source>
         <translation>3D 形状をエクスポート(&amp;3)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="182"/>
+        <location filename="../app/gui/main_window.cpp" line="188"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="186"/>
+        <location filename="../app/gui/main_window.cpp" line="192"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="189"/>
+        <location filename="../app/gui/main_window.cpp" line="195"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="192"/>
+        <location filename="../app/gui/main_window.cpp" line="198"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="199"/>
+        <location filename="../app/gui/main_window.cpp" line="205"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="201"/>
+        <location filename="../app/gui/main_window.cpp" line="208"/>
+        <source>Remove Reference &amp;Curves</source>
+        <translation>参照曲線を削除(&amp;C)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="210"/>
         <source>Select &amp;None</source>
         <translation>選択を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="202"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="98"/>
+        <location filename="../app/gui/main_window.cpp" line="211"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="106"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="206"/>
+        <location filename="../app/gui/main_window.cpp" line="215"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="208"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>&amp;3D View</source>
         <translation>3D ビュー(&amp;3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="208"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="210"/>
+        <location filename="../app/gui/main_window.cpp" line="219"/>
         <source>&amp;Development View</source>
         <translation>展開図ビュー(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="210"/>
+        <location filename="../app/gui/main_window.cpp" line="219"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="211"/>
+        <location filename="../app/gui/main_window.cpp" line="220"/>
         <source>3D &amp;and Development</source>
         <translation>3D と展開図(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="212"/>
+        <location filename="../app/gui/main_window.cpp" line="221"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="216"/>
+        <location filename="../app/gui/main_window.cpp" line="225"/>
         <source>&amp;Control Polygons</source>
         <translation>制御多角形(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="216"/>
+        <location filename="../app/gui/main_window.cpp" line="225"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="226"/>
         <source>&amp;Vertices</source>
         <translation>頂点(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="218"/>
+        <location filename="../app/gui/main_window.cpp" line="227"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="222"/>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>&amp;Fit All</source>
         <translation>全体を表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="222"/>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="228"/>
+        <location filename="../app/gui/main_window.cpp" line="237"/>
         <source>Reset &amp;Layout</source>
         <translation>レイアウトをリセット(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="233"/>
+        <location filename="../app/gui/main_window.cpp" line="242"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="236"/>
+        <location filename="../app/gui/main_window.cpp" line="245"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>辺のラベルを変更 (R ↔ S)(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="236"/>
+        <location filename="../app/gui/main_window.cpp" line="245"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="238"/>
+        <location filename="../app/gui/main_window.cpp" line="247"/>
         <source>Add &amp;Crease…</source>
         <translation>折り線を追加(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="239"/>
+        <location filename="../app/gui/main_window.cpp" line="248"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="241"/>
+        <location filename="../app/gui/main_window.cpp" line="250"/>
         <source>Add R&amp;uling…</source>
         <translation>母線を追加(&amp;U)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="242"/>
+        <location filename="../app/gui/main_window.cpp" line="251"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="244"/>
+        <location filename="../app/gui/main_window.cpp" line="253"/>
         <source>Re&amp;fine Curves</source>
         <translation>曲線を細分化(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="245"/>
+        <location filename="../app/gui/main_window.cpp" line="254"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="251"/>
+        <location filename="../app/gui/main_window.cpp" line="260"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>頂点の移動・回転(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="251"/>
+        <location filename="../app/gui/main_window.cpp" line="260"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="254"/>
+        <location filename="../app/gui/main_window.cpp" line="263"/>
         <source>&amp;Pin Vertices</source>
         <translation>頂点を固定(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="255"/>
+        <location filename="../app/gui/main_window.cpp" line="264"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="257"/>
+        <location filename="../app/gui/main_window.cpp" line="266"/>
         <source>U&amp;npin Vertices</source>
         <translation>頂点の固定を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="258"/>
+        <location filename="../app/gui/main_window.cpp" line="267"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="261"/>
+        <location filename="../app/gui/main_window.cpp" line="270"/>
         <source>Hold the &amp;Sheet</source>
         <translation>シートを保持(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="262"/>
+        <location filename="../app/gui/main_window.cpp" line="271"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="291"/>
+        <location filename="../app/gui/main_window.cpp" line="274"/>
+        <source>Sheet S&amp;hape…</source>
+        <translation>シートの形(&amp;H)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="303"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="292"/>
+        <location filename="../app/gui/main_window.cpp" line="304"/>
         <source>&amp;User Manual</source>
         <translation>ユーザーマニュアル(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="299"/>
+        <location filename="../app/gui/main_window.cpp" line="311"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="305"/>
+        <location filename="../app/gui/main_window.cpp" line="317"/>
         <source>&amp;About DevSurf</source>
         <translation>DevSurf について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="307"/>
+        <location filename="../app/gui/main_window.cpp" line="319"/>
         <source>About DevSurf</source>
         <translation>DevSurf について</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="308"/>
+        <location filename="../app/gui/main_window.cpp" line="320"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;スプライン可展面による可展面と曲線折り折り紙の設計 (Tang, Bo, Wallner, Pottmann 2015)。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="353"/>
+        <location filename="../app/gui/main_window.cpp" line="365"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="375"/>
+        <location filename="../app/gui/main_window.cpp" line="387"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="376"/>
+        <location filename="../app/gui/main_window.cpp" line="388"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="390"/>
+        <location filename="../app/gui/main_window.cpp" line="402"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>曲面 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="391"/>
+        <location filename="../app/gui/main_window.cpp" line="403"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="392"/>
+        <location filename="../app/gui/main_window.cpp" line="404"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="393"/>
+        <location filename="../app/gui/main_window.cpp" line="405"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n 個選択</numerusform>
@@ -1720,22 +1873,22 @@
         <translation>ツール ▸ ソルブの反復回数の上限:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="67"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="75"/>
         <source>R&amp;otate Vertices</source>
         <translation>頂点を回転(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="76"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="71"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="79"/>
         <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
         <translation>回転ツール (R): 2 個以上の頂点を選択し、3D ビューで頂点を押してマウスを横に動かすと、頂点が重心を通る軸 (鉛直、またはツールバーで選んだ軸) の周りに回転し、曲面が追従します。Esc で取り消します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="89"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="97"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>先にドラッグを終えてください。ドラッグ中も随時ソルブしています。</translation>
     </message>
@@ -1755,152 +1908,162 @@
         <translation>ドラッグツール: 3D ビューで頂点を押して動かすと、曲面が追従して可展のまま保たれます。折り線を押すと、パッチの中で折り線を滑らせます。ツールバーで選んだ軸、または X、Y、Z を押したままにすると、その軸に沿って動きます。Esc でドラッグを取り消します (G)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="97"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="66"/>
+        <source>S&amp;nap to Reference Curves</source>
+        <translation>参照曲線にスナップ(&amp;N)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
+        <source>While dragging a vertex (no axis chosen), put it on the nearest reference curve drawn within 10 pixels of the mouse.</source>
+        <translation>頂点をドラッグするとき (軸の指定なし)、マウスから 10 ピクセル以内に描かれた最も近い参照曲線の上に置きます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="105"/>
         <source>&amp;Cancel Solve</source>
         <translation>ソルブを中止(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="100"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="108"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>実行中のソルブを中止します。デザインはそのままです (Esc)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="124"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="132"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>ソルブ中: 反復 %1 / %2、残差 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="137"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="145"/>
         <source>&amp;Lengths While Dragging</source>
         <translation>ドラッグ中の長さ(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="149"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="157"/>
         <source>&amp;Automatic</source>
         <translation>自動(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="150"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="158"/>
         <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over, collapses a strip or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
         <translation>頂点のドラッグと回転は長さを保ちます。シートがそのままでは追従できない場合 (ドラッグが収束しない、折り返す、帯がつぶれる、または展開図が自身と重なる場合)、離したときにシートの伸びを許してドラッグをやり直し、二つのうち良い方を残します。ソルバーパネルにその旨が表示されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="154"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="162"/>
         <source>&amp;Keep Lengths</source>
         <translation>長さを保つ(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="155"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="163"/>
         <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape and fold. A motion the sheet cannot make without stretching then may not converge. Dragged creases always resize their patches.</source>
         <translation>頂点のドラッグや回転の間、シートは伸びずに曲がります。離れた部分はその場に留まり、曲がった折り線は形を保って折れます。シートが伸びずにはできない動きは収束しないことがあります。ドラッグした折り線は常にパッチの大きさを変えます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="159"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="167"/>
         <source>Let &amp;Stretch</source>
         <translation>伸びを許す(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="160"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="168"/>
         <source>While dragging or rotating vertices, the sheet may stretch: it stays developable and its development changes, curved creases may be pulled straight and large drags may crumple it.</source>
         <translation>頂点のドラッグや回転の間、シートは伸びることがあります。可展面のままで展開図が変わり、曲がった折り線はまっすぐに引き伸ばされることがあり、大きなドラッグではしわになることがあります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="182"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="190"/>
         <source>Motion &amp;Axis</source>
         <translation>移動の軸(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="194"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
         <source>&amp;Free</source>
         <translation>自由(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="195"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="203"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>自由な移動: ドラッグツールは頂点を視平面内で動かし、回転ツールは鉛直軸 (Z) の周り、または ツール ▸ 移動の軸 ▸ 視線軸の周りに回転 がオンのときは視線軸の周りに回転させます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="198"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="206"/>
         <source>&amp;X Axis</source>
         <translation>X 軸(&amp;X)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="199"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="207"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X 軸: ドラッグツールは頂点を X 方向にだけ動かし、回転ツールは重心を通る X に平行な軸の周りに回転させます。Y または Z を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="201"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="209"/>
         <source>&amp;Y Axis</source>
         <translation>Y 軸(&amp;Y)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="210"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y 軸: ドラッグツールは頂点を Y 方向にだけ動かし、回転ツールは重心を通る Y に平行な軸の周りに回転させます。X または Z を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="204"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="212"/>
         <source>&amp;Z Axis</source>
         <translation>Z 軸(&amp;Z)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="205"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="213"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z 軸: ドラッグツールは頂点を Z 方向にだけ動かし、回転ツールは重心を通る Z に平行な軸の周りに回転させます。X または Y を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="229"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="237"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>視線軸の周りに回転(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="232"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="240"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>軸が「自由」のとき、回転ツールは頂点を鉛直軸ではなく重心を通る視線方向の周りに回転させます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="246"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
         <source>Colour &amp;By</source>
         <translation>色分け(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
         <source>&amp;Patch</source>
         <translation>パッチ(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
         <source>&amp;Developability</source>
         <translation>可展性(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
         <source>&amp;Flatness</source>
         <translation>平面性(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="255"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="263"/>
         <source>&amp;Angle Defect</source>
         <translation>角度欠損(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="257"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="265"/>
         <source>Every patch in its own colour.</source>
         <translation>パッチごとに色分けします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="258"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>サンプルした各帯の四角形が可展からどれだけ離れているか: 正規化した |det(a−b, a′, b′)| を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="260"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="268"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>サンプルした各四角形の平面性 δ: 対角線間の距離を最も短い 2 辺の平均で割った値を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="270"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>サンプルしたメッシュの内部頂点での角度欠損 |K| = |2π − Σ 角度| (ラジアン) を対数スケールで表示します。</translation>
     </message>
@@ -2579,6 +2742,14 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::RemoveReferenceCurvesReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="177"/>
+        <source>Cannot remove the reference curves</source>
+        <translation>参照曲線を削除できません</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::RotateTool</name>
     <message>
         <location filename="../app/gui/rotate_tool.cpp" line="29"/>
@@ -2807,6 +2978,120 @@
         <location filename="../app/gui/shape_export_dialog.cpp" line="214"/>
         <source>The mesh was written with %1 samples per curve interval, the most DevSurf writes, and is coarser than the tolerance asked for.</source>
         <translation>メッシュは曲線区間あたり %1 サンプル (DevSurf の上限) で書き出され、指定の許容誤差より粗くなっています。</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::SheetShapeDialog</name>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="38"/>
+        <source>Sheet Shape</source>
+        <translation>シートの形</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="41"/>
+        <source>Free: the development as it is</source>
+        <translation>自由: 展開図をそのまま</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="43"/>
+        <source>Rectangle</source>
+        <translation>長方形</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="44"/>
+        <source>Disk</source>
+        <translation>円板</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="45"/>
+        <source>Annulus</source>
+        <translation>円環</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="62"/>
+        <source>The sheet the surface is folded from. Every solve and drag keeps the surface isometric to its development; with a shape, the development may change inside it, its boundary on the shape&apos;s and its corners at the shape&apos;s corners.</source>
+        <translation>曲面を折り出すシートです。ソルブとドラッグは常に曲面を展開図と等長に保ちます。形を指定すると、展開図はその内側で変わることができ、境界は形の境界上に、角は形の角に置かれます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="69"/>
+        <source>Shape:</source>
+        <translation>形:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="70"/>
+        <source>Width:</source>
+        <translation>幅:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="71"/>
+        <source>Height:</source>
+        <translation>高さ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="72"/>
+        <source>Radius:</source>
+        <translation>半径:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="73"/>
+        <source>Inner radius:</source>
+        <translation>内径:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="132"/>
+        <source>The development covers %1 cm² and is held as it is.</source>
+        <translation>展開図の面積は %1 cm² で、そのまま保持されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="137"/>
+        <source>The inner radius must be smaller than the radius.</source>
+        <translation>内径は半径より小さくなければなりません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="144"/>
+        <source>The development (%1 cm²) is larger than this sheet (%2 cm²): no solve can fold the design from it.</source>
+        <translation>展開図 (%1 cm²) がこのシート (%2 cm²) より大きいため、どのソルブでもこのシートから折ることはできません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="150"/>
+        <source>The development covers %1 cm² of this sheet&apos;s %2 cm². The next solve moves its boundary onto the sheet&apos;s.</source>
+        <translation>展開図はこのシートの %2 cm² のうち %1 cm² を占めます。次のソルブで境界がシートの境界上に移ります。</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::SheetShapeReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="104"/>
+        <source>Choose the sheet the surface is folded from: its development as it is, or a rectangle, disk or annulus its development stays inside.</source>
+        <translation>曲面を折り出すシートを選びます: 展開図そのまま、または展開図が内側に収まる長方形・円板・円環。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="106"/>
+        <source>Choose the sheet of a surface: select something on one surface first.</source>
+        <translation>曲面のシートを選ぶには、まず 1 つの曲面上で何かを選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="121"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="122"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="142"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="143"/>
+        <source>Cannot hold the sheet</source>
+        <translation>シートを保持できません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="153"/>
+        <source>Set Sheet Shape</source>
+        <translation>シートの形を設定</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="155"/>
+        <source>Cannot set the sheet shape</source>
+        <translation>シートの形を設定できません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="160"/>
+        <source>The development&apos;s boundary is up to %1 mm from the sheet&apos;s: Solve moves it onto the sheet.</source>
+        <translation>展開図の境界はシートの境界から最大 %1 mm 離れています。ソルブで境界がシート上に移ります。</translation>
     </message>
 </context>
 <context>
@@ -3444,7 +3729,7 @@
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="586"/>
+        <location filename="../views/scene_view.cpp" line="594"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>曲面 %1 は有効でないため表示されません。</translation>
     </message>
