@@ -2983,79 +2983,84 @@
 <context>
     <name>devsurf::app::SheetShapeDialog</name>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="38"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="39"/>
         <source>Sheet Shape</source>
         <translation>シートの形</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="41"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="42"/>
         <source>Free: the development as it is</source>
         <translation>自由: 展開図をそのまま</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="43"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="44"/>
         <source>Rectangle</source>
         <translation>長方形</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="44"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="45"/>
         <source>Disk</source>
         <translation>円板</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="45"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="46"/>
         <source>Annulus</source>
         <translation>円環</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="62"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="63"/>
         <source>The sheet the surface is folded from. Every solve and drag keeps the surface isometric to its development; with a shape, the development may change inside it, its boundary on the shape&apos;s and its corners at the shape&apos;s corners.</source>
         <translation>曲面を折り出すシートです。ソルブとドラッグは常に曲面を展開図と等長に保ちます。形を指定すると、展開図はその内側で変わることができ、境界は形の境界上に、角は形の角に置かれます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="69"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="70"/>
         <source>Shape:</source>
         <translation>形:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="70"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="71"/>
         <source>Width:</source>
         <translation>幅:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="71"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="72"/>
         <source>Height:</source>
         <translation>高さ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="72"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="73"/>
         <source>Radius:</source>
         <translation>半径:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="73"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="74"/>
         <source>Inner radius:</source>
         <translation>内径:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="132"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="133"/>
         <source>The development covers %1 cm² and is held as it is.</source>
         <translation>展開図の面積は %1 cm² で、そのまま保持されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="137"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="138"/>
         <source>The inner radius must be smaller than the radius.</source>
         <translation>内径は半径より小さくなければなりません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="144"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="145"/>
         <source>The development (%1 cm²) is larger than this sheet (%2 cm²): no solve can fold the design from it.</source>
         <translation>展開図 (%1 cm²) がこのシート (%2 cm²) より大きいため、どのソルブでもこのシートから折ることはできません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="150"/>
-        <source>The development covers %1 cm² of this sheet&apos;s %2 cm². The next solve moves its boundary onto the sheet&apos;s.</source>
-        <translation>展開図はこのシートの %2 cm² のうち %1 cm² を占めます。次のソルブで境界がシートの境界上に移ります。</translation>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="154"/>
+        <source>The development (%1 cm²) fits this sheet (%2 cm²): its boundary lies on the sheet&apos;s.</source>
+        <translation>展開図 (%1 cm²) はこのシート (%2 cm²) に合っています: 境界はシートの境界上にあります。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="158"/>
+        <source>The development covers %1 cm² of this sheet&apos;s %2 cm²; its boundary is up to %3 mm from the sheet&apos;s, and the next Solve moves it onto the sheet.</source>
+        <translation>展開図はこのシートの %2 cm² のうち %1 cm² を占めます。境界はシートの境界から最大 %3 mm 離れており、次のソルブでシート上に移ります。</translation>
     </message>
 </context>
 <context>

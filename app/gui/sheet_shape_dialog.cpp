@@ -13,6 +13,7 @@ namespace devsurf::app {
 namespace {
 
 constexpr double kLargestSize = 1e6; // mm: a kilometre
+constexpr double kFits = 0.01;       // mm: a development this close to a sheet lies on it
 
 QDoubleSpinBox* sizeBox(QWidget* parent, const QString& name) {
     auto* box = new QDoubleSpinBox(parent);
@@ -147,9 +148,18 @@ void SheetShapeDialog::updateFit() {
         m_fit->setStyleSheet(QStringLiteral("color: #b00020;"));
         return;
     }
-    m_fit->setText(tr("The development covers %1 cm² of this sheet's %2 cm². The next solve "
-                      "moves its boundary onto the sheet's.")
-                       .arg(developed, sheet));
+    const double gap = model::largestDomainGap(model::placeDomain(d, m_mesh, m_development), m_mesh,
+                                               m_development);
+    if (gap <= kFits) {
+        m_fit->setText(tr("The development (%1 cm²) fits this sheet (%2 cm²): its boundary lies "
+                          "on the sheet's.")
+                           .arg(developed, sheet));
+    } else {
+        m_fit->setText(tr("The development covers %1 cm² of this sheet's %2 cm²; its boundary is "
+                          "up to %3 mm from the sheet's, and the next Solve moves it onto the "
+                          "sheet.")
+                           .arg(developed, sheet, locale.toString(gap, 'f', 1)));
+    }
     m_fit->setStyleSheet(QString());
 }
 
