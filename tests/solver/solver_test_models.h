@@ -4,6 +4,9 @@
 // code under test.
 
 #include "model/composite_surface.h"
+#include "model/sampled_mesh.h"
+
+#include <algorithm>
 
 #include <cmath>
 #include <random>
@@ -111,6 +114,31 @@ inline model::CompositeSurface makeTwoStrips(int intervals) {
             lineControls(space, surface.position(left[j]), surface.position(right[j])));
     }
     return surface;
+}
+
+// Largest relative difference between the length of an edge of a sampled face (all its vertex
+// pairs) on `surface`, sampled anew at the kept development's density, and in `development`:
+// the isometry measured from the geometry, not from a solver's residual.
+inline double pairLengthError(const model::CompositeSurface& surface,
+                              const std::vector<model::Vec2>& development) {
+    const model::SampledMesh mesh =
+        model::sampleSurface(surface, model::kDevelopmentSamplesPerInterval);
+    if (mesh.vertices.size() != development.size()) {
+        return 1.0;
+    }
+    double worst = 0.0;
+    for (const std::vector<int>& face : mesh.faces) {
+        for (std::size_t i = 0; i < face.size(); ++i) {
+            for (std::size_t j = i + 1; j < face.size(); ++j) {
+                const auto a = static_cast<std::size_t>(face[i]);
+                const auto b = static_cast<std::size_t>(face[j]);
+                const double space = model::distance(mesh.vertices[a], mesh.vertices[b]);
+                const double flat = (development[a] - development[b]).norm();
+                worst = std::max(worst, std::abs(space - flat) / space);
+            }
+        }
+    }
+    return worst;
 }
 
 } // namespace devsurf::solver::testing

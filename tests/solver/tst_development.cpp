@@ -12,6 +12,7 @@
 #include "solver/quality/quality_measures.h"
 #include "solver/session/solve_job.h"
 #include "solver/session/solve_session.h"
+#include "solver_test_models.h"
 #include "solver_test_problems.h"
 #include "test_registry.h"
 
@@ -24,33 +25,11 @@
 using namespace devsurf;
 using model::Vec3;
 using solver::testing::familyRows;
+using solver::testing::pairLengthError;
 
 namespace {
 
 constexpr int kSamples = 2; // per spline interval
-
-// Largest relative difference between the length of an edge of a sampled face (all its vertex
-// pairs) on `surface`, sampled anew, and in `development`.
-double pairLengthError(const model::CompositeSurface& surface,
-                       const std::vector<model::Vec2>& development) {
-    const model::SampledMesh mesh = model::sampleSurface(surface, kSamples);
-    if (mesh.vertices.size() != development.size()) {
-        return 1.0;
-    }
-    double worst = 0.0;
-    for (const std::vector<int>& face : mesh.faces) {
-        for (std::size_t i = 0; i < face.size(); ++i) {
-            for (std::size_t j = i + 1; j < face.size(); ++j) {
-                const auto a = static_cast<std::size_t>(face[i]);
-                const auto b = static_cast<std::size_t>(face[j]);
-                const double space = model::distance(mesh.vertices[a], mesh.vertices[b]);
-                const double flat = (development[a] - development[b]).norm();
-                worst = std::max(worst, std::abs(space - flat) / space);
-            }
-        }
-    }
-    return worst;
-}
 
 double largestCoordinateChange(const model::CompositeSurface& a, const model::CompositeSurface& b) {
     double worst = 0.0;

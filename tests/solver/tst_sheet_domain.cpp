@@ -11,6 +11,7 @@
 #include "solver/formulation/surface_formulation.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/session/solve_session.h"
+#include "solver_test_models.h"
 #include "solver_test_problems.h"
 #include "test_registry.h"
 
@@ -25,34 +26,12 @@ using model::SheetDomain;
 using model::SheetShape;
 using model::Vec2;
 using model::Vec3;
+using solver::testing::pairLengthError;
 
 namespace {
 
 constexpr int kSamples = model::kDevelopmentSamplesPerInterval;
 constexpr double kPi = 3.14159265358979323846;
-
-// Largest relative difference between the length of a vertex pair of a sampled face on
-// `surface`, sampled anew, and in `development`.
-double pairLengthError(const model::CompositeSurface& surface,
-                       const std::vector<Vec2>& development) {
-    const model::SampledMesh mesh = model::sampleSurface(surface, kSamples);
-    if (mesh.vertices.size() != development.size()) {
-        return 1.0;
-    }
-    double worst = 0.0;
-    for (const std::vector<int>& face : mesh.faces) {
-        for (std::size_t i = 0; i < face.size(); ++i) {
-            for (std::size_t j = i + 1; j < face.size(); ++j) {
-                const auto a = static_cast<std::size_t>(face[i]);
-                const auto b = static_cast<std::size_t>(face[j]);
-                const double space = model::distance(mesh.vertices[a], mesh.vertices[b]);
-                const double flat = (development[a] - development[b]).norm();
-                worst = std::max(worst, std::abs(space - flat) / space);
-            }
-        }
-    }
-    return worst;
-}
 
 // The largest deviation of a development's boundary vertices from the nearer of two circles.
 double largestOffCircles(const model::SampledMesh& mesh, const std::vector<Vec2>& development,
