@@ -12,10 +12,8 @@
 
 namespace devsurf::app {
 
-namespace {
-
 // One sentence for the terminal (the application words the same codes with tr()).
-std::string sentence(const io::CurveImportError& error, const std::string& path) {
+std::string curveImportSentence(const io::CurveImportError& error, const std::string& path) {
     using Code = io::CurveImportError::Code;
     const std::string detail = error.detail.empty() ? std::string() : " (" + error.detail + ")";
     switch (error.code) {
@@ -39,8 +37,6 @@ std::string sentence(const io::CurveImportError& error, const std::string& path)
     return "cannot import curves from '" + path + "'.";
 }
 
-} // namespace
-
 int runImportCurvesCommand(const SubcommandArguments& args) {
     const std::vector<std::string> files = args.positionals(2, "a project file and a curve file");
     const std::string& input = files[0];
@@ -51,7 +47,8 @@ int runImportCurvesCommand(const SubcommandArguments& args) {
         options.tolerance = parseReal(*text, "--tolerance", 1e-6, 1e3, "a length in mm");
     }
     if (!io::curveFormatOf(QString::fromStdString(curveFile))) {
-        throw io::FileError(sentence({io::CurveImportError::Code::UnknownFormat, {}}, curveFile));
+        throw io::FileError(
+            curveImportSentence({io::CurveImportError::Code::UnknownFormat, {}}, curveFile));
     }
     // The curve file is an input that is not a project: never written over.
     if (io::outputProblem(QString::fromStdString(output), {QString::fromStdString(curveFile)}) ==
@@ -65,7 +62,7 @@ int runImportCurvesCommand(const SubcommandArguments& args) {
     const io::CurveImportResult result =
         io::importCurveFile(QString::fromStdString(curveFile), options);
     if (result.error) {
-        std::cerr << "devsurf-cli: " << sentence(*result.error, curveFile) << "\n";
+        std::cerr << "devsurf-cli: " << curveImportSentence(*result.error, curveFile) << "\n";
         return 2;
     }
     project.referenceCurves.insert(project.referenceCurves.end(), result.curves.begin(),

@@ -1,8 +1,14 @@
 #pragma once
 
 #include "command_line.h"
+#include "io/curves/curve_import.h"
+
+#include <string>
 
 namespace devsurf::app {
+
+// The terminal's sentence for a curve file that cannot be read.
+std::string curveImportSentence(const io::CurveImportError& error, const std::string& path);
 
 // `devsurf-cli import-curves FILE CURVES [--tolerance MM] -o OUT`: the project with the curves
 // of a DXF, STEP or IGES file added as reference curves. Nothing is written when the curves

@@ -47,13 +47,15 @@ const std::vector<SubcommandSpec>& subcommands() {
           kSurface,
           kOutputProject}},
         {"sheet",
-         "sheet FILE (--free | --rectangle W,H | --disk R | --annulus R1,R2 | --off)\n"
-         "      [--surface K] -o OUT.devsurf",
+         "sheet FILE (--free | --rectangle W,H | --disk R | --annulus R1,R2 |\n"
+         "      --outline FILE.dxf | --off) [--surface K] -o OUT.devsurf",
          "Hold the sheet: the surface keeps its development, and every solve\n"
          "and drag keeps it isometric to that sheet (a dragged vertex lags\n"
          "where the sheet cannot follow, instead of the sheet stretching).\n"
-         "--free holds the development as it unfolds now. --rectangle, --disk\n"
-         "and --annulus confine it to that sheet, placed where it fits the\n"
+         "--free holds the development as it unfolds now. --rectangle, --disk,\n"
+         "--annulus and --outline (the closed curves of a DXF, STEP or IGES\n"
+         "file seen from above: the largest the outer boundary, the others\n"
+         "holes) confine it to that sheet, placed where it fits the\n"
          "development best: the development may then change inside the\n"
          "sheet, its boundary on the sheet's, its corners at the sheet's; the\n"
          "next solve moves a development that does not fit yet onto the\n"
@@ -63,6 +65,7 @@ const std::vector<SubcommandSpec>& subcommands() {
           {"rectangle", "W,H", "Confine it to a W x H rectangle."},
           {"disk", "R", "Confine it to a disk of radius R."},
           {"annulus", "R1,R2", "Confine it to an annulus between radii R1 and R2."},
+          {"outline", "FILE", "Confine it to the closed curves of a DXF, STEP or IGES file."},
           {"off", "", "No longer hold the sheet."},
           kSurface,
           kOutputProject}},

@@ -3,6 +3,7 @@
 
 #include "cli_output.h"
 #include "command_line.h"
+#include "curve_commands.h"
 #include "problem_text.h"
 
 #include "io/project_file.h"
@@ -198,16 +199,52 @@ std::string squareMillimetres(double value) {
     return QString::number(value, 'f', 0).toStdString() + " mm\u00b2";
 }
 
+// The closed curves of a DXF, STEP or IGES file, seen from above (z dropped), as a sheet's
+// outline: the largest the outer boundary, the others holes. InputError if it has none.
+std::vector<std::vector<model::Vec2>> outlineFrom(const std::string& path) {
+    const io::CurveImportResult read = io::importCurveFile(QString::fromStdString(path));
+    if (read.error) {
+        throw InputError(curveImportSentence(*read.error, path));
+    }
+    std::vector<std::vector<model::Vec2>> loops;
+    for (const model::ReferenceCurve& curve : read.curves) {
+        const std::vector<model::Vec3>& p = curve.points;
+        double length = 0.0;
+        for (std::size_t i = 1; i < p.size(); ++i) {
+            length += model::distance(p[i - 1], p[i]);
+        }
+        // Closed: it ends where it starts (a closed polyline, a circle).
+        if (p.size() < 4 || !(model::distance(p.front(), p.back()) <= 1e-6 * length)) {
+            continue;
+        }
+        std::vector<model::Vec2> loop;
+        for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+            loop.emplace_back(p[i].x, p[i].y);
+        }
+        loops.push_back(std::move(loop));
+    }
+    model::SheetDomain check;
+    check.shape = model::SheetShape::Outline;
+    check.outline = loops;
+    if (loops.empty() || model::domainProblem(check)) {
+        throw InputError("'" + path +
+                         "' holds no closed curve enclosing an area to be the sheet's "
+                         "outline.");
+    }
+    return loops;
+}
+
 // The sheet asked for on the command line: free (nullopt for --off) or a shape's sizes.
 std::optional<model::SheetDomain> requestedSheet(const SubcommandArguments& args) {
-    const char* const options[] = {"free", "rectangle", "disk", "annulus", "off"};
+    const char* const options[] = {"free", "rectangle", "disk", "annulus", "outline", "off"};
     int given = 0;
     for (const char* option : options) {
         given += args.isSet(option) ? 1 : 0;
     }
     if (given != 1) {
         throw UsageError{
-            "give one of --free, --rectangle W,H, --disk R, --annulus R1,R2 and --off"};
+            "give one of --free, --rectangle W,H, --disk R, --annulus R1,R2, --outline FILE and "
+            "--off"};
     }
     model::SheetDomain domain;
     constexpr double kLargest = 1e6; // mm: a kilometre
@@ -218,10 +255,13 @@ std::optional<model::SheetDomain> requestedSheet(const SubcommandArguments& args
         const std::vector<double> size =
             parseReals(*args.value("rectangle"), "--rectangle", 2, "300,200");
         domain.shape = model::SheetShape::Rectangle;
-        domain.width =
-            parseReal(std::to_string(size[0]), "--rectangle", 1e-3, kLargest, "lengths in mm");
-        domain.height =
-            parseReal(std::to_string(size[1]), "--rectangle", 1e-3, kLargest, "lengths in mm");
+        domain.width = size[0];
+        domain.height = size[1];
+        for (double length : size) {
+            if (!(length >= 1e-3 && length <= kLargest)) {
+                throw UsageError{"--rectangle needs a width and a height in mm, such as 300,200"};
+            }
+        }
     } else if (args.isSet("disk")) {
         domain.shape = model::SheetShape::Disk;
         domain.radius = parseReal(*args.value("disk"), "--disk", 1e-3, kLargest, "a radius in mm");
@@ -235,6 +275,9 @@ std::optional<model::SheetDomain> requestedSheet(const SubcommandArguments& args
             domain.radius > kLargest) {
             throw UsageError{"--annulus needs two different radii in mm, such as 100,250"};
         }
+    } else if (args.isSet("outline")) {
+        domain.shape = model::SheetShape::Outline;
+        domain.outline = outlineFrom(*args.value("outline"));
     }
     return domain;
 }

@@ -106,6 +106,35 @@ private slots:
         QCOMPARE(cli({"sheet", square, "--disk", "5", "--free", "-o", refused}).exitCode, 1);
         QVERIFY(!QFile::exists(refused));
     }
+
+    void outlineFromTheCuttingPattern() {
+        // The square's own cutting pattern (DXF) as the sheet's outline: one loop of 300 × 300
+        // mm, placed on the development. A file without a closed curve writes nothing.
+        const QString square = path("outline-square.devsurf");
+        QCOMPARE(cli({"example", "sheet", "-o", square}).exitCode, 0);
+        const QString dxf = path("outline-square.dxf");
+        QCOMPARE(cli({"export", square, "--format", "dxf", "-o", dxf}).exitCode, 0);
+        const QString onOutline = path("on-outline.devsurf");
+        QCOMPARE(cli({"sheet", square, "--outline", dxf, "-o", onOutline}).exitCode, 0);
+        const model::CompositeSurface held = io::loadProjectFile(onOutline).surfaces[0];
+        QCOMPARE(held.sheetDomain().shape, model::SheetShape::Outline);
+        QCOMPARE(static_cast<int>(held.sheetDomain().outline.size()), 1);
+        QVERIFY(std::abs(model::domainArea(held.sheetDomain()) - 90000.0) < 1.0);
+        const model::SampledMesh mesh =
+            model::sampleSurface(held, model::kDevelopmentSamplesPerInterval);
+        QVERIFY(model::largestDomainGap(held.sheetDomain(), mesh, held.development()) < 0.01);
+        const QString lines = path("open-lines.dxf");
+        QFile file(lines);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("0\nSECTION\n2\nENTITIES\n0\nLINE\n8\n0\n10\n0\n20\n0\n30\n0\n11\n100\n21\n0\n"
+                   "31\n0\n0\nENDSEC\n0\nEOF\n");
+        file.close();
+        const QString refused = path("outline-refused.devsurf");
+        const test::CliRun run = cli({"sheet", square, "--outline", lines, "-o", refused});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("closed curve")), qPrintable(run.err));
+        QVERIFY(!QFile::exists(refused));
+    }
 };
 
 DEVSURF_REGISTER_TEST(TstCliSheet);
