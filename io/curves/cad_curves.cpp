@@ -2,6 +2,7 @@
 // and the edges of surfaces and solids alike), sampled within the chord tolerance.
 
 #include "curve_import.h"
+#include "io/occt_support.h"
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRep_Tool.hxx>
@@ -9,10 +10,6 @@
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Reader.hxx>
 #include <Interface_Static.hxx>
-#include <Message.hxx>
-#include <Message_Messenger.hxx>
-#include <Message_Printer.hxx>
-#include <Message_ProgressIndicator.hxx>
 #include <OSD.hxx>
 #include <STEPControl_Controller.hxx>
 #include <STEPControl_Reader.hxx>
@@ -46,13 +43,6 @@ CurveImportResult failure(CurveImportError::Code code, std::string detail = {}) 
 std::mutex& readerMutex() {
     static std::mutex mutex;
     return mutex;
-}
-
-// The readers print parse errors and statistics; the import reports a typed error instead.
-void quietReaders() {
-    static std::once_flag once;
-    std::call_once(
-        once, [] { Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_Printer)); });
 }
 
 // While OpenCASCADE reads, signals become its exceptions (a damaged file can make its
@@ -103,27 +93,6 @@ private:
     stack_t m_previousStack = {};
     bool m_hasStack = false;
 };
-
-// Passes the transfer's progress to the caller's callback and its cancel back.
-class TransferProgress : public Message_ProgressIndicator {
-public:
-    TransferProgress(const std::function<bool(double)>& progress, double offset, double scale)
-        : m_progress(progress), m_offset(offset), m_scale(scale) {}
-    Standard_Boolean UserBreak() override { return m_cancelled; }
-    void Show(const Message_ProgressScope&, const Standard_Boolean) override {
-        if (m_progress && !m_progress(m_offset + m_scale * GetPosition())) {
-            m_cancelled = true;
-        }
-    }
-    bool cancelled() const { return m_cancelled; }
-
-private:
-    const std::function<bool(double)>& m_progress;
-    double m_offset;
-    double m_scale;
-    bool m_cancelled = false;
-};
-
 bool finite(const gp_Pnt& p) {
     return std::isfinite(p.X()) && std::isfinite(p.Y()) && std::isfinite(p.Z());
 }
@@ -153,7 +122,7 @@ CurveImportResult readLocked(const QString& path, CurveFormat format,
     if (!proceed(0.3)) {
         return failure(Code::Cancelled);
     }
-    Handle(TransferProgress) progress = new TransferProgress(options.progress, 0.3, 0.4);
+    Handle(OcctProgress) progress = new OcctProgress(options.progress, 0.3, 0.4);
     reader->TransferRoots(progress->Start());
     if (progress->cancelled()) {
         return failure(Code::Cancelled);
@@ -217,7 +186,7 @@ CurveImportResult readCadCurves(const QString& path, CurveFormat format,
         return failure(CurveImportError::Code::UnknownFormat);
     }
     const std::lock_guard<std::mutex> lock(readerMutex());
-    quietReaders();
+    quietOpenCascade();
     const SignalsAsExceptions signalGuard;
     try {
         OCC_CATCH_SIGNALS

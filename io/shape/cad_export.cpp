@@ -2,6 +2,7 @@
 
 #include "patch_surfaces.h"
 
+#include "io/occt_support.h"
 #include "io/output_file.h"
 #include "model/derived_geometry.h"
 
@@ -15,10 +16,6 @@
 #include <IGESCAFControl_Writer.hxx>
 #include <IGESControl_Controller.hxx>
 #include <Interface_Static.hxx>
-#include <Message.hxx>
-#include <Message_Messenger.hxx>
-#include <Message_Printer.hxx>
-#include <Message_ProgressIndicator.hxx>
 #include <STEPCAFControl_Controller.hxx>
 #include <STEPCAFControl_Writer.hxx>
 #include <Standard_Failure.hxx>
@@ -124,27 +121,6 @@ TopoDS_Face planarFace(const PatchSurface& patch) {
     }
     return face.Face();
 }
-
-// Passes OpenCASCADE's progress on to the caller's callback and its cancel back.
-class ProgressBridge : public Message_ProgressIndicator {
-public:
-    ProgressBridge(const ExportProgress& progress, double offset, double scale)
-        : m_progress(progress), m_offset(offset), m_scale(scale) {}
-    Standard_Boolean UserBreak() override { return m_cancelled; }
-    void Show(const Message_ProgressScope&, const Standard_Boolean) override {
-        if (m_progress && !m_progress(m_offset + m_scale * GetPosition())) {
-            m_cancelled = true;
-        }
-    }
-    bool cancelled() const { return m_cancelled; }
-
-private:
-    const ExportProgress& m_progress;
-    double m_offset;
-    double m_scale;
-    bool m_cancelled = false;
-};
-
 // The design's vertices sorted by x, to find the vertex at a point of the sewn shape.
 class VertexFinder {
 public:
@@ -248,8 +224,8 @@ SewnSurface sewSurface(const model::CompositeSurface& surface, bool severalSurfa
     for (const TopoDS_Face& face : faces) {
         sewing.Add(face);
     }
-    Handle(ProgressBridge) progress =
-        new ProgressBridge(options.progress, done + 0.3 * share, 0.7 * share);
+    Handle(OcctProgress) progress =
+        new OcctProgress(options.progress, done + 0.3 * share, 0.7 * share);
     sewing.Perform(progress->Start());
     if (progress->cancelled()) {
         throw ShapeExportError(ShapeExportError::Code::Cancelled);
@@ -364,17 +340,6 @@ std::mutex& writerSettingsMutex() {
     return mutex;
 }
 
-// The writers report their statistics on standard output; an export says only what it found.
-void quietWriters() {
-    static std::once_flag once;
-    std::call_once(once, [] {
-        for (Message_SequenceOfPrinters::Iterator printer(Message::DefaultMessenger()->Printers());
-             printer.More(); printer.Next()) {
-            printer.Value()->SetTraceLevel(Message_Fail);
-        }
-    });
-}
-
 QByteArray stepBytes(const Handle(TDocStd_Document) & document, CadFormat format) {
     STEPCAFControl_Controller::Init();
     Interface_Static::SetCVal("write.step.schema",
@@ -454,7 +419,7 @@ CadExportResult saveCadFile(const model::Project& project, const QString& path,
     QByteArray bytes;
     {
         const std::lock_guard<std::mutex> lock(writerSettingsMutex());
-        quietWriters();
+        quietOpenCascade();
         try {
             const OpenDocument document(cadDocument(project, sewn));
             bytes = options.format == CadFormat::Iges ? igesBytes(document.handle)

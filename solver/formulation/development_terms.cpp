@@ -1,6 +1,7 @@
 #include "development_terms.h"
 
 #include "model/bspline_curve.h"
+#include "solver/formulation/domain_terms.h"
 #include "solver/formulation/point_combinations.h"
 
 #include <memory>
@@ -132,11 +133,14 @@ DevelopmentVariables addDevelopment(const model::CompositeSurface& surface,
                 std::move(isometry));
     if (options.fixed) {
         problem.setBlockFixed("development");
-    } else if (fairness->rowCount() > 0) {
+        return result;
+    }
+    if (fairness->rowCount() > 0) {
         result.fairness = problem.add(
             problem.addFamily("developmentFairness", TermRole::Energy, options.fairnessWeight),
             std::move(fairness));
     }
+    addDomain(options.domain, result, problem, state);
     return result;
 }
 

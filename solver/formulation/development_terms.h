@@ -6,6 +6,7 @@
 #include "model/composite_surface.h"
 #include "model/development.h"
 #include "model/sampled_mesh.h"
+#include "model/sheet_domain.h"
 #include "solver/core/fairness_term.h"
 #include "solver/core/problem.h"
 #include "solver/core/squared_distance_term.h"
@@ -33,6 +34,8 @@ struct DevelopmentOptions {
     bool fixed = false; // the copy keeps its start values: the surface is folded from that sheet
     double weight = 1.0;
     double fairnessWeight = 0.01;
+    // A copy that is not fixed is confined to this sheet (addDomain); free: unconfined.
+    model::SheetDomain domain;
 };
 
 // Samples `surface` (model::sampleSurface) and appends to `problem` a block "development" with a
@@ -43,7 +46,8 @@ struct DevelopmentOptions {
 // "development" (constraints) gets (12) for every pair of vertices of every sampled face,
 // ‖v̄ᵢ − v̄ⱼ‖² − ‖vᵢ − vⱼ‖² = 0, divided by the pair's squared length at the start; unless the
 // copy is fixed, a family "developmentFairness" (an energy) gets the overfolding fairness
-// Σ‖v̄ᵢ₊₁ − 2v̄ᵢ + v̄ᵢ₋₁‖² along every sampled S-edge. State coordinates are model coordinates
+// Σ‖v̄ᵢ₊₁ − 2v̄ᵢ + v̄ᵢ₋₁‖² along every sampled S-edge and the copy is confined to
+// `options.domain` (addDomain). State coordinates are model coordinates
 // less the formulation's centre, divided by `scale`; `state` is resized and the block filled.
 DevelopmentVariables addDevelopment(const model::CompositeSurface& surface,
                                     const DevelopmentOptions& options,

@@ -13,7 +13,6 @@
 #include "solver/core/unit_norm_term.h"
 #include "solver/formulation/crease_conditions.h"
 #include "solver/formulation/curve_guards.h"
-#include "solver/formulation/domain_terms.h"
 #include "solver/formulation/normal_spline_start.h"
 #include "solver/formulation/point_combinations.h"
 #include "solver/formulation/smooth_rulings.h"
@@ -429,13 +428,8 @@ struct SurfaceFormulation::Builder {
                 surface,
                 {options.developmentSamplesPerInterval, start.empty() ? nullptr : &start,
                  options.fixedDevelopment, options.developmentWeight,
-                 options.developmentFairnessWeight},
+                 options.developmentFairnessWeight, options.developmentDomain},
                 vertexOffsets(), edgeOffsets, f.m_scale, f.m_problem, f.m_initialState);
-            f.m_developmentFairness = f.m_development.fairness;
-            if (!options.fixedDevelopment) {
-                addDomain(options.developmentDomain, f.m_development, f.m_problem,
-                          f.m_initialState);
-            }
         }
     }
 

@@ -328,7 +328,6 @@ private:
     int m_normalControlsOffset = 0;
     FairnessTerm* m_pointFairness = nullptr;
     FairnessTerm* m_normalFairness = nullptr;
-    FairnessTerm* m_developmentFairness = nullptr;
     DevelopmentVariables m_development;
     UnitNormTerm* m_unitControlNormals = nullptr;
     SquaredDistanceTerm* m_isometry = nullptr;

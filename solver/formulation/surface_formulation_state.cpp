@@ -211,8 +211,8 @@ bool SurfaceFormulation::writeBack(const std::vector<double>& x, model::Composit
 }
 
 void SurfaceFormulation::rebaseDevelopmentFairness(const std::vector<double>& x) {
-    if (m_developmentFairness && x.size() == m_initialState.size()) {
-        m_developmentFairness->setReference(x.data());
+    if (m_development.fairness && x.size() == m_initialState.size()) {
+        m_development.fairness->setReference(x.data());
     }
 }
 
@@ -288,8 +288,8 @@ void SurfaceFormulation::setReferenceState(const std::vector<double>& x) {
     if (m_normalFairness) {
         m_normalFairness->setReference(reference);
     }
-    if (m_developmentFairness) {
-        m_developmentFairness->setReference(reference);
+    if (m_development.fairness) {
+        m_development.fairness->setReference(reference);
     }
     if (m_unitControlNormals) {
         // Each control normal keeps its reference length (or, absolute, unit length).

@@ -41,6 +41,19 @@ std::optional<int> sheetTarget(const Workspace* workspace) {
     return surface;
 }
 
+// `surface` holding its sheet: its kept development, or the one it unfolds to now. Nothing, and
+// the reason told under `failure`, if it does not unfold into one flat sheet.
+std::optional<model::CompositeSurface>
+holdingItsSheet(Workspace* workspace, model::CompositeSurface surface, const QString& failure) {
+    if (!surface.keepsDevelopment() || surface.development().empty()) {
+        if (const auto problem = model::keepDevelopment(surface)) {
+            workspace->apply(document::CommandOrError(failure, *problem), failure);
+            return std::nullopt;
+        }
+    }
+    return surface;
+}
+
 } // namespace
 
 std::optional<int> HoldSheetReaction::targetSurface() const {
@@ -77,12 +90,13 @@ void HoldSheetReaction::onTriggered() {
     const bool hold = !changed.keepsDevelopment();
     const QString title = hold ? tr("Hold the Sheet") : tr("Let the Sheet Stretch");
     if (hold) {
-        if (const auto problem = model::keepDevelopment(changed)) {
-            workspace()->apply(document::CommandOrError(tr("Cannot hold the sheet"), *problem),
-                               tr("Cannot hold the sheet"));
+        std::optional<model::CompositeSurface> held =
+            holdingItsSheet(workspace(), changed, tr("Cannot hold the sheet"));
+        if (!held) {
             updateEnableState();
             return;
         }
+        changed = std::move(*held);
     } else {
         changed.setKeepsDevelopment(false);
     }
@@ -114,18 +128,15 @@ void SheetShapeReaction::onTriggered() {
         updateEnableState();
         return;
     }
-    // The development the sheet is fitted to: the kept one, or the surface as it unfolds now.
-    model::CompositeSurface held = workspace()->document()->surface(*surface);
-    if (!held.keepsDevelopment() || held.development().empty()) {
-        if (const auto problem = model::keepDevelopment(held)) {
-            workspace()->apply(document::CommandOrError(tr("Cannot hold the sheet"), *problem),
-                               tr("Cannot hold the sheet"));
-            return;
-        }
+    // The development the sheet is fitted to.
+    const std::optional<model::CompositeSurface> held = holdingItsSheet(
+        workspace(), workspace()->document()->surface(*surface), tr("Cannot hold the sheet"));
+    if (!held) {
+        return;
     }
     const model::SampledMesh mesh =
-        model::sampleSurface(held, model::kDevelopmentSamplesPerInterval);
-    SheetShapeDialog dialog(held.sheetDomain(), mesh, held.development(), workspace()->window());
+        model::sampleSurface(*held, model::kDevelopmentSamplesPerInterval);
+    SheetShapeDialog dialog(held->sheetDomain(), mesh, held->development(), workspace()->window());
     if (dialog.exec() == QDialog::Accepted) {
         applyShape(*surface, dialog.domain());
     }
@@ -136,14 +147,12 @@ bool SheetShapeReaction::applyShape(int index, const model::SheetDomain& domain)
     if (index < 0 || index >= doc->surfaceCount()) {
         return false;
     }
-    model::CompositeSurface changed = doc->surface(index);
-    if (!changed.keepsDevelopment() || changed.development().empty()) {
-        if (const auto problem = model::keepDevelopment(changed)) {
-            workspace()->apply(document::CommandOrError(tr("Cannot hold the sheet"), *problem),
-                               tr("Cannot hold the sheet"));
-            return false;
-        }
+    std::optional<model::CompositeSurface> held =
+        holdingItsSheet(workspace(), doc->surface(index), tr("Cannot hold the sheet"));
+    if (!held) {
+        return false;
     }
+    model::CompositeSurface changed = std::move(*held);
     changed.setSheetDomain(domain);
     const model::SampledMesh mesh =
         model::sampleSurface(changed, model::kDevelopmentSamplesPerInterval);
