@@ -1382,39 +1382,38 @@
 <context>
     <name>devsurf::app::HoldSheetReaction</name>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="58"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="71"/>
         <source>Hold the sheet of a surface: select something on one surface first.</source>
         <translation>Den Bogen einer Fläche festhalten: zuerst etwas auf einer Fläche auswählen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="59"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="72"/>
         <source>The surface is folded from its sheet: solves and drags keep it isometric to its development, and a dragged vertex stays behind where the sheet cannot follow. Uncheck to let the sheet stretch again.</source>
         <translation>Die Fläche ist aus ihrem Bogen gefaltet: Lösen und Ziehen halten sie isometrisch zu ihrer Abwicklung, und ein gezogener Eckpunkt bleibt zurück, wo der Bogen nicht folgen kann. Abwählen, damit sich der Bogen wieder dehnen darf.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="62"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="75"/>
         <source>Fold the surface from its sheet: its development as it unfolds now is kept by every solve and drag; a dragged vertex stays behind where the sheet cannot follow, instead of the sheet stretching.</source>
         <translation>Die Fläche aus ihrem Bogen falten: ihre Abwicklung, wie sie sich jetzt abwickelt, wird von jedem Lösen und Ziehen beibehalten; ein gezogener Eckpunkt bleibt zurück, wo der Bogen nicht folgen kann, statt dass sich der Bogen dehnt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="78"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="91"/>
         <source>Hold the Sheet</source>
         <translation>Bogen festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="78"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="91"/>
         <source>Let the Sheet Stretch</source>
         <translation>Bogen dehnen lassen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="81"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="82"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="91"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="94"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="105"/>
         <source>Cannot hold the sheet</source>
         <translation>Der Bogen kann nicht festgehalten werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="91"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="105"/>
         <source>Cannot let the sheet stretch</source>
         <translation>Der Bogen kann nicht freigegeben werden</translation>
     </message>
@@ -3098,35 +3097,33 @@
 <context>
     <name>devsurf::app::SheetShapeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="104"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="118"/>
         <source>Choose the sheet the surface is folded from: its development as it is, or a rectangle, disk or annulus its development stays inside.</source>
         <translation>Den Bogen wählen, aus dem die Fläche gefaltet wird: ihre Abwicklung, wie sie ist, oder ein Rechteck, eine Kreisscheibe oder ein Kreisring, in dem ihre Abwicklung bleibt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="106"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="120"/>
         <source>Choose the sheet of a surface: select something on one surface first.</source>
         <translation>Den Bogen einer Fläche wählen: zuerst etwas auf einer Fläche auswählen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="121"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="122"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="142"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="143"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="133"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="151"/>
         <source>Cannot hold the sheet</source>
         <translation>Der Bogen kann nicht festgehalten werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="153"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="162"/>
         <source>Set Sheet Shape</source>
         <translation>Bogenform festlegen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="155"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="164"/>
         <source>Cannot set the sheet shape</source>
         <translation>Die Bogenform kann nicht festgelegt werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="160"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="169"/>
         <source>The development&apos;s boundary is up to %1 mm from the sheet&apos;s: Solve moves it onto the sheet.</source>
         <translation>Der Rand der Abwicklung liegt bis zu %1 mm vom Rand des Bogens entfernt: Lösen legt ihn auf den Bogen.</translation>
     </message>
@@ -3767,17 +3764,17 @@
 <context>
     <name>devsurf::views::SceneView</name>
     <message>
-        <location filename="../views/scene_view.cpp" line="54"/>
+        <location filename="../views/scene_view.cpp" line="52"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="56"/>
+        <location filename="../views/scene_view.cpp" line="54"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="594"/>
+        <location filename="../views/scene_view_document.cpp" line="116"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>Fläche %1 ist ungültig und wird nicht angezeigt.</translation>
     </message>
@@ -3863,29 +3860,34 @@
         <translation>GA</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="130"/>
+        <location filename="../views/view_overlay.cpp" line="141"/>
         <source>Mountain fold</source>
         <translation>Bergfalte</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="134"/>
+        <location filename="../views/view_overlay.cpp" line="145"/>
         <source>Valley fold</source>
         <translation>Talfalte</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="138"/>
+        <location filename="../views/view_overlay.cpp" line="149"/>
         <source>Crease, not folded</source>
         <translation>Falz, nicht gefaltet</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="148"/>
+        <location filename="../views/view_overlay.cpp" line="159"/>
         <source>Smooth ruling</source>
         <translation>Glatte Erzeugende</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="151"/>
+        <location filename="../views/view_overlay.cpp" line="162"/>
         <source>Sharp ruling</source>
         <translation>Scharfe Erzeugende</translation>
+    </message>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="165"/>
+        <source>Sheet</source>
+        <translation>Bogen</translation>
     </message>
 </context>
 <context>

@@ -1367,39 +1367,38 @@
 <context>
     <name>devsurf::app::HoldSheetReaction</name>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="58"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="71"/>
         <source>Hold the sheet of a surface: select something on one surface first.</source>
         <translation>曲面のシートを保持します: まず 1 つの曲面上の要素を選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="59"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="72"/>
         <source>The surface is folded from its sheet: solves and drags keep it isometric to its development, and a dragged vertex stays behind where the sheet cannot follow. Uncheck to let the sheet stretch again.</source>
         <translation>曲面はそのシートから折られています: ソルブとドラッグは展開図との等長性を保ち、シートが追従できない所ではドラッグした頂点が手前で止まります。チェックを外すとシートは再び伸びられます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="62"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="75"/>
         <source>Fold the surface from its sheet: its development as it unfolds now is kept by every solve and drag; a dragged vertex stays behind where the sheet cannot follow, instead of the sheet stretching.</source>
         <translation>曲面をそのシートから折ります: 現在の展開図がすべてのソルブとドラッグで保たれ、シートが追従できない所では、シートが伸びる代わりにドラッグした頂点が手前で止まります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="78"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="91"/>
         <source>Hold the Sheet</source>
         <translation>シートを保持</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="78"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="91"/>
         <source>Let the Sheet Stretch</source>
         <translation>シートの伸びを許す</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="81"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="82"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="91"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="94"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="105"/>
         <source>Cannot hold the sheet</source>
         <translation>シートを保持できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="91"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="105"/>
         <source>Cannot let the sheet stretch</source>
         <translation>シートの伸びを許せません</translation>
     </message>
@@ -3066,35 +3065,33 @@
 <context>
     <name>devsurf::app::SheetShapeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="104"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="118"/>
         <source>Choose the sheet the surface is folded from: its development as it is, or a rectangle, disk or annulus its development stays inside.</source>
         <translation>曲面を折り出すシートを選びます: 展開図そのまま、または展開図が内側に収まる長方形・円板・円環。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="106"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="120"/>
         <source>Choose the sheet of a surface: select something on one surface first.</source>
         <translation>曲面のシートを選ぶには、まず 1 つの曲面上で何かを選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="121"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="122"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="142"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="143"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="133"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="151"/>
         <source>Cannot hold the sheet</source>
         <translation>シートを保持できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="153"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="162"/>
         <source>Set Sheet Shape</source>
         <translation>シートの形を設定</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="155"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="164"/>
         <source>Cannot set the sheet shape</source>
         <translation>シートの形を設定できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="160"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="169"/>
         <source>The development&apos;s boundary is up to %1 mm from the sheet&apos;s: Solve moves it onto the sheet.</source>
         <translation>展開図の境界はシートの境界から最大 %1 mm 離れています。ソルブで境界がシート上に移ります。</translation>
     </message>
@@ -3724,17 +3721,17 @@
 <context>
     <name>devsurf::views::SceneView</name>
     <message>
-        <location filename="../views/scene_view.cpp" line="54"/>
+        <location filename="../views/scene_view.cpp" line="52"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="56"/>
+        <location filename="../views/scene_view.cpp" line="54"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="594"/>
+        <location filename="../views/scene_view_document.cpp" line="116"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>曲面 %1 は有効でないため表示されません。</translation>
     </message>
@@ -3820,29 +3817,34 @@
         <translation>直</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="130"/>
+        <location filename="../views/view_overlay.cpp" line="141"/>
         <source>Mountain fold</source>
         <translation>山折り</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="134"/>
+        <location filename="../views/view_overlay.cpp" line="145"/>
         <source>Valley fold</source>
         <translation>谷折り</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="138"/>
+        <location filename="../views/view_overlay.cpp" line="149"/>
         <source>Crease, not folded</source>
         <translation>折れていない折り線</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="148"/>
+        <location filename="../views/view_overlay.cpp" line="159"/>
         <source>Smooth ruling</source>
         <translation>滑らかな母線</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="151"/>
+        <location filename="../views/view_overlay.cpp" line="162"/>
         <source>Sharp ruling</source>
         <translation>鋭角の母線</translation>
+    </message>
+    <message>
+        <location filename="../views/view_overlay.cpp" line="165"/>
+        <source>Sheet</source>
+        <translation>シート</translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,7 @@
 #include "model/pattern/cutting_pattern.h"
 #include "model/pattern/pattern_layout.h"
 #include "model/pattern/pattern_overlaps.h"
+#include "model/pattern/pattern_sheet.h"
 #include "model/sampled_mesh.h"
 #include "model/strip.h"
 #include "solver/quality/quality_measures.h"
@@ -312,6 +313,15 @@ DevelopmentScenes scenesOfPieces(const model::Project& project,
                     scene.overlapOutline.push_back(segment);
                 }
             }
+        }
+        // A held sheet of a shape, drawn behind its development (chords within 0.05 mm).
+        for (const std::vector<Vec2>& loop : model::pattern::sheetOnPiece(surface, piece, 0.05)) {
+            std::vector<Vec3> closed;
+            for (const Vec2& q : loop) {
+                closed.push_back(toScene(q));
+            }
+            closed.push_back(closed.front());
+            scene.sheet.push_back(std::move(closed));
         }
         for (const auto& [id, position] : piece.vertices) {
             if (surface.isPinned(id)) {

@@ -64,6 +64,9 @@ struct SurfaceScene {
     // and the outline of every piece that overlaps itself or another one (drawn in red).
     std::vector<model::Vec3> seamVertices;
     std::vector<std::pair<model::Vec3, model::Vec3>> overlapOutline;
+    // Development only: the boundary loops of the sheet a held development is confined to
+    // (closed polylines, the first point repeated), placed where the development is drawn.
+    std::vector<std::vector<model::Vec3>> sheet;
 };
 
 // Resolution of the curves drawn: samples per spline interval.

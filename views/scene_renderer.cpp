@@ -109,6 +109,11 @@ SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
         layer.mapper->ScalarVisibilityOff();
     };
 
+    // The sheet a held development is confined to: wide and warm, first, so that the
+    // development's own outline is drawn over it where its boundary lies on the sheet's.
+    m_sheet = &addLayer();
+    const QColor sheet = ViewOverlay::sheetColour();
+    lineStyle(*m_sheet, sheet.redF(), sheet.greenF(), sheet.blueF(), 5.0, false);
     m_rulings = &addLayer();
     lineStyle(*m_rulings, 0.62, 0.62, 0.62, 1.0, false);
     m_outline = &addLayer();
@@ -255,6 +260,7 @@ void SceneRenderer::setScenes(std::shared_ptr<const SceneSet> scenes, bool geome
     std::vector<std::pair<Vec3, Vec3>> rulings;
     std::vector<std::pair<Vec3, Vec3>> outline;
     std::vector<std::pair<Vec3, Vec3>> overlapOutline;
+    std::vector<std::vector<Vec3>> sheet;
     std::vector<std::vector<Vec3>> controlPolygons;
     std::vector<Vec3> controlPoints;
     std::vector<Vec3> vertices;
@@ -284,6 +290,7 @@ void SceneRenderer::setScenes(std::shared_ptr<const SceneSet> scenes, bool geome
         }
         rulings.insert(rulings.end(), scene.rulings.begin(), scene.rulings.end());
         outline.insert(outline.end(), scene.outline.begin(), scene.outline.end());
+        sheet.insert(sheet.end(), scene.sheet.begin(), scene.sheet.end());
         overlapOutline.insert(overlapOutline.end(), scene.overlapOutline.begin(),
                               scene.overlapOutline.end());
         vertices.insert(vertices.end(), scene.seamVertices.begin(), scene.seamVertices.end());
@@ -306,6 +313,8 @@ void SceneRenderer::setScenes(std::shared_ptr<const SceneSet> scenes, bool geome
     m_valleyLines = std::move(valleys);
     m_rulings->assign(segmentData(rulings), geometryOnly);
     m_outline->assign(segmentData(outline), geometryOnly);
+    m_sheetLoops = static_cast<int>(sheet.size());
+    m_sheet->assign(polylineData(sheet), geometryOnly);
     m_overlapOutline->assign(segmentData(overlapOutline), geometryOnly);
     m_controlPolygons->assign(polylineData(controlPolygons), geometryOnly);
     m_controlPoints->assign(pointData(controlPoints), geometryOnly);

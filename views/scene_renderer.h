@@ -75,6 +75,8 @@ public:
     // The project's reference curves (3D only): thin dark lines, never picked.
     void setReferenceCurves(const std::vector<std::vector<model::Vec3>>& curves);
     int referenceCurveCount() const { return m_referenceCurveCount; }
+    // Boundary loops of held sheets drawn (development view).
+    int sheetLoopCount() const { return m_sheetLoops; }
 
     // Vertex within radius, else edge within radius * 0.6, else face under the point; in 3D
     // vertices and edges hidden behind the surface are not picked.
@@ -137,6 +139,8 @@ private:
     void drawFolds();
     Layer* m_rulings = nullptr;
     Layer* m_outline = nullptr;
+    Layer* m_sheet = nullptr;
+    int m_sheetLoops = 0;
     Layer* m_overlapOutline = nullptr; // development: pieces that overlap, in red
     Layer* m_controlPolygons = nullptr;
     Layer* m_controlPoints = nullptr;

@@ -433,6 +433,7 @@ void SceneView::updateOverlay() {
     }
     const auto [mountains, valleys] = d->scene->foldCounts();
     d->overlay->setFoldLegend(mountains > 0, valleys > 0, d->scene->flatCreaseCount() > 0);
+    d->overlay->setSheetLegend(d->scene->sheetLoopCount() > 0);
     updateBadges();
     std::vector<ViewOverlay::Label> labels;
     if (d->showLabels) {

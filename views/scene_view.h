@@ -116,6 +116,8 @@ public:
     int previewLineCount() const;
     // The reference curves drawn (3D view: the project's; the development view: none).
     int referenceCurvesDrawn() const;
+    // Boundary loops of held sheets drawn behind the development (development view; 0 in 3D).
+    int sheetLoopsDrawn() const;
 
 public slots:
     void fitAll();

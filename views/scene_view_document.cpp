@@ -141,4 +141,8 @@ int SceneView::referenceCurvesDrawn() const {
     return d->scene->referenceCurveCount();
 }
 
+int SceneView::sheetLoopsDrawn() const {
+    return d->scene->sheetLoopCount();
+}
+
 } // namespace devsurf::views

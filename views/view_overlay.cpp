@@ -95,6 +95,17 @@ QColor ViewOverlay::smoothRulingColour() {
     return {255, 255, 255};
 }
 
+QColor ViewOverlay::sheetColour() {
+    return QColor::fromRgbF(0.86f, 0.62f, 0.30f);
+}
+
+void ViewOverlay::setSheetLegend(bool sheet) {
+    if (sheet != m_sheet) {
+        m_sheet = sheet;
+        update();
+    }
+}
+
 QColor ViewOverlay::sharpRulingColour() {
     return {89, 89, 89};
 }
@@ -149,6 +160,9 @@ std::vector<ViewOverlay::LegendEntry> ViewOverlay::legend() const {
     }
     if (m_sharpRulings) {
         entries.push_back({sharpRulingColour(), QString(), tr("Sharp ruling"), {}});
+    }
+    if (m_sheet) {
+        entries.push_back({sheetColour(), QString(), tr("Sheet"), {}});
     }
     return entries;
 }

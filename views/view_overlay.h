@@ -43,6 +43,8 @@ public:
     // How the views draw rulings between two patches: smooth ones light, sharp ones dark.
     static QColor smoothRulingColour();
     static QColor sharpRulingColour();
+    // The sheet a held development is confined to (development view).
+    static QColor sheetColour();
 
     // Scale bar of the given length on screen (logical pixels) and its text, e.g. "50 mm";
     // none when pixels is not positive.
@@ -56,6 +58,8 @@ public:
     // (if any) a dark line "Sharp ruling".
     void setMarkLegend(std::vector<model::CreaseCondition> conditions, bool smoothRulings,
                        bool sharpRulings);
+    // A last entry "Sheet" (a wide line in sheetColour()) when a held sheet is drawn.
+    void setSheetLegend(bool sheet);
     void setBadges(std::vector<Badge> badges);
     const std::vector<Badge>& badges() const { return m_badges; }
     // The legend's entries as written, top to bottom.
@@ -98,6 +102,7 @@ private:
     bool m_mountains = false;
     bool m_valleys = false;
     bool m_flatCreases = false;
+    bool m_sheet = false;
     std::vector<model::CreaseCondition> m_conditions;
     bool m_smoothRulings = false;
     bool m_sharpRulings = false;

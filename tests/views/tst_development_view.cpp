@@ -1,7 +1,10 @@
 #include "model/bspline_curve.h"
+#include "model/development.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "model/examples.h"
+#include "model/sampled_mesh.h"
+#include "model/sheet_domain.h"
 #include "side_by_side_views.h"
 #include "straight_control_points.h"
 #include "surface_transform.h"
@@ -294,6 +297,48 @@ private slots:
             }
         }
         QCOMPARE(seamVertices, 4); // the 4 vertices of the cut ruling (3 rows)
+    }
+
+    void heldSheetIsDrawnBehindItsDevelopment() {
+        // fig8 held on a disk of radius 250 mm around its 300 mm square.
+        devsurf::model::Project project = devsurf::model::makeExample("fig8");
+        CompositeSurface& held = project.surfaces[0];
+        QVERIFY(!devsurf::model::keepDevelopment(held));
+        devsurf::model::SheetDomain disk;
+        disk.shape = devsurf::model::SheetShape::Disk;
+        disk.radius = 250.0;
+        const auto mesh =
+            devsurf::model::sampleSurface(held, devsurf::model::kDevelopmentSamplesPerInterval);
+        held.setSheetDomain(devsurf::model::placeDomain(disk, mesh, held.development()));
+        Views views(project);
+        QVERIFY(views.show());
+        QCOMPARE(views.development->sheetLoopsDrawn(), 1);
+        QCOMPARE(views.spatial->sheetLoopsDrawn(), 0);
+        QVERIFY(views.development->legendEntries().contains(QStringLiteral("Sheet")));
+        QVERIFY(!views.spatial->legendEntries().contains(QStringLiteral("Sheet")));
+        // The disk is wider than the square: the fitted view shows it whole, in its colour.
+        const auto countSheetPixels = [&views] {
+            const QImage image = views.development->grabImage();
+            int count = 0;
+            for (int y = 0; y < image.height(); ++y) {
+                for (int x = 0; x < image.width(); ++x) {
+                    const QColor c = image.pixelColor(x, y);
+                    count += std::abs(c.red() - 219) < 25 && std::abs(c.green() - 158) < 25 &&
+                                     std::abs(c.blue() - 77) < 25
+                                 ? 1
+                                 : 0;
+                }
+            }
+            return count;
+        };
+        const int drawn = countSheetPixels();
+        QVERIFY2(drawn > 500, qPrintable(QString::number(drawn)));
+        // Letting the sheet stretch again takes the sheet away.
+        views.document.mutableProject().surfaces[0].setKeepsDevelopment(false);
+        views.document.notifyChanged(Change::Geometry);
+        QCOMPARE(views.development->sheetLoopsDrawn(), 0);
+        QTRY_VERIFY(!views.development->legendEntries().contains(QStringLiteral("Sheet")));
+        QVERIFY(countSheetPixels() < drawn / 20); // a few pixels of the patches' blending
     }
 
     void overlappingPiecesAreOutlinedInRed() {

@@ -1,0 +1,138 @@
+#include "pattern_sheet.h"
+
+#include "model/derived_geometry.h"
+#include "model/pattern/pattern_geometry.h"
+#include "model/sheet_domain.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace devsurf::model::pattern {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// p ↦ R(angle)·(mirror(p) − from) + to, with mirror(x, y) = (−x, y) when mirrored.
+struct SheetMotion {
+    bool mirrored = false;
+    double angle = 0.0;
+    Vec2 from;
+    Vec2 to;
+
+    Vec2 apply(const Vec2& p) const {
+        const Vec2 q = (mirrored ? Vec2{-p.x, p.y} : p) - from;
+        const double c = std::cos(angle), s = std::sin(angle);
+        return Vec2{c * q.x - s * q.y, s * q.x + c * q.y} + to;
+    }
+};
+
+// The best rotation and shift taking `source` (mirrored first if asked) onto `target`, and
+// its sum of squared distances (2D Procrustes).
+std::pair<SheetMotion, double> fitMotion(std::vector<Vec2> source, const std::vector<Vec2>& target,
+                                         bool mirrored) {
+    if (mirrored) {
+        for (Vec2& p : source) {
+            p.x = -p.x;
+        }
+    }
+    Vec2 cs, ct;
+    for (std::size_t i = 0; i < source.size(); ++i) {
+        cs = cs + source[i];
+        ct = ct + target[i];
+    }
+    const double n = static_cast<double>(source.size());
+    cs = cs * (1.0 / n);
+    ct = ct * (1.0 / n);
+    double a = 0.0, b = 0.0;
+    for (std::size_t i = 0; i < source.size(); ++i) {
+        const Vec2 s = source[i] - cs, t = target[i] - ct;
+        a += dot2(s, t);
+        b += cross2(s, t);
+    }
+    SheetMotion motion;
+    motion.angle = std::atan2(b, a);
+    motion.to = ct;
+    // `from` is in mirrored coordinates, as apply() mirrors before subtracting it; the
+    // residual is measured on the already mirrored source, so without a second mirror.
+    motion.from = cs;
+    double squared = 0.0;
+    for (std::size_t i = 0; i < source.size(); ++i) {
+        const Vec2 d = motion.apply(source[i]) - target[i];
+        squared += dot2(d, d);
+    }
+    motion.mirrored = mirrored;
+    return {motion, squared};
+}
+
+std::vector<Vec2> circlePolygon(const Vec2& centre, double radius, double chordTolerance) {
+    const double tolerance = std::clamp(chordTolerance, 1e-6, radius);
+    const double step = 2.0 * std::acos(std::max(-1.0, 1.0 - tolerance / radius));
+    const int n =
+        std::clamp(static_cast<int>(std::ceil(2.0 * kPi / std::max(step, 1e-9))), 32, 1440);
+    std::vector<Vec2> polygon;
+    for (int i = 0; i < n; ++i) {
+        const double t = 2.0 * kPi * i / n;
+        polygon.push_back(centre + Vec2{radius * std::cos(t), radius * std::sin(t)});
+    }
+    return polygon;
+}
+
+} // namespace
+
+std::vector<std::vector<Vec2>> sheetOnPiece(const CompositeSurface& surface,
+                                            const PatternPiece& piece, double chordTolerance) {
+    const SheetDomain& domain = surface.sheetDomain();
+    if (!surface.keepsDevelopment() || domain.isFree() || surface.development().empty() ||
+        domainProblem(domain)) {
+        return {};
+    }
+    const auto derived = DerivedGeometry::of(surface, kDevelopmentSamplesPerInterval);
+    const SampledMesh& mesh = derived->mesh();
+    const std::vector<Vec2>& development = surface.development();
+    if (development.size() != mesh.vertices.size()) {
+        return {}; // stale: the next solve derives it again
+    }
+    // Vertices the piece shows once (a vertex on a cut-open seam shows twice: ambiguous).
+    std::map<VertexId, int> shown;
+    for (const auto& [id, position] : piece.vertices) {
+        ++shown[id];
+    }
+    std::map<VertexId, Vec2> placed;
+    for (const auto& [id, position] : piece.vertices) {
+        if (shown[id] == 1) {
+            placed[id] = position;
+        }
+    }
+    std::vector<Vec2> source, target;
+    for (std::size_t i = 0; i < mesh.coarseVertexIds.size(); ++i) {
+        if (auto it = placed.find(mesh.coarseVertexIds[i]); it != placed.end()) {
+            source.push_back(development[i]);
+            target.push_back(it->second);
+        }
+    }
+    if (source.size() < 2) {
+        return {};
+    }
+    const auto proper = fitMotion(source, target, false);
+    const auto mirrored = fitMotion(source, target, true);
+    const SheetMotion& motion = proper.second <= mirrored.second ? proper.first : mirrored.first;
+
+    std::vector<std::vector<Vec2>> loops;
+    for (const DomainLoop& loop : domainLoops(domain)) {
+        std::vector<Vec2> polygon =
+            loop.circle ? circlePolygon(loop.centre, loop.radius, chordTolerance) : loop.polygon;
+        for (Vec2& p : polygon) {
+            p = motion.apply(p);
+        }
+        if (loop.outer) {
+            loops.insert(loops.begin(), std::move(polygon));
+        } else {
+            loops.push_back(std::move(polygon));
+        }
+    }
+    return loops;
+}
+
+} // namespace devsurf::model::pattern
