@@ -1421,14 +1421,14 @@
 <context>
     <name>devsurf::app::ImportCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="36"/>
-        <source>%1 is not a file DevSurf reads curves from; choose a DXF, STEP or IGES file.</source>
-        <translation>Aus %1 kann DevSurf keine Kurven lesen; wählen Sie eine DXF-, STEP- oder IGES-Datei.</translation>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="37"/>
+        <source>%1 is not a file DevSurf reads curves from; choose a DXF, SVG, STEP or IGES file.</source>
+        <translation>Aus %1 kann DevSurf keine Kurven lesen; wählen Sie eine DXF-, SVG-, STEP- oder IGES-Datei.</translation>
     </message>
     <message>
         <location filename="../app/gui/reactions/curve_reactions.cpp" line="40"/>
-        <source>This build of DevSurf reads curves from DXF files only; save the curves as DXF.</source>
-        <translation>Diese DevSurf-Version liest Kurven nur aus DXF-Dateien; speichern Sie die Kurven als DXF.</translation>
+        <source>This build of DevSurf reads curves from DXF and SVG files only; save the curves as DXF.</source>
+        <translation>Diese DevSurf-Version liest Kurven nur aus DXF- und SVG-Dateien; speichern Sie die Kurven als DXF.</translation>
     </message>
     <message>
         <location filename="../app/gui/reactions/curve_reactions.cpp" line="43"/>
@@ -1463,8 +1463,8 @@
     </message>
     <message>
         <location filename="../app/gui/reactions/curve_reactions.cpp" line="85"/>
-        <source>Curve files (*.dxf *.step *.stp *.iges *.igs);;DXF (*.dxf);;STEP (*.step *.stp);;IGES (*.iges *.igs)</source>
-        <translation>Kurvendateien (*.dxf *.step *.stp *.iges *.igs);;DXF (*.dxf);;STEP (*.step *.stp);;IGES (*.iges *.igs)</translation>
+        <source>Curve files (*.dxf *.svg *.step *.stp *.iges *.igs);;DXF (*.dxf);;SVG (*.svg);;STEP (*.step *.stp);;IGES (*.iges *.igs)</source>
+        <translation>Kurvendateien (*.dxf *.svg *.step *.stp *.iges *.igs);;DXF (*.dxf);;SVG (*.svg);;STEP (*.step *.stp);;IGES (*.iges *.igs)</translation>
     </message>
     <message>
         <location filename="../app/gui/reactions/curve_reactions.cpp" line="110"/>
@@ -1554,11 +1554,6 @@
         <location filename="../app/gui/main_window.cpp" line="176"/>
         <source>Import &amp;Curves…</source>
         <translation>&amp;Kurven importieren…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window.cpp" line="178"/>
-        <source>Add the curves of a DXF, STEP or IGES file as reference curves</source>
-        <translation>Die Kurven einer DXF-, STEP- oder IGES-Datei als Referenzkurven hinzufügen</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="181"/>
@@ -1782,6 +1777,11 @@
         <location filename="../app/gui/main_window.cpp" line="248"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="178"/>
+        <source>Add the curves of a DXF, SVG, STEP or IGES file as reference curves</source>
+        <translation>Die Kurven einer DXF-, SVG-, STEP- oder IGES-Datei als Referenzkurven hinzufügen</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="251"/>

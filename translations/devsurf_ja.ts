@@ -1406,14 +1406,14 @@
 <context>
     <name>devsurf::app::ImportCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="36"/>
-        <source>%1 is not a file DevSurf reads curves from; choose a DXF, STEP or IGES file.</source>
-        <translation>%1 は DevSurf が曲線を読み込めるファイルではありません。DXF、STEP または IGES ファイルを選んでください。</translation>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="37"/>
+        <source>%1 is not a file DevSurf reads curves from; choose a DXF, SVG, STEP or IGES file.</source>
+        <translation>%1 は DevSurf が曲線を読み込めるファイルではありません。DXF、SVG、STEP または IGES ファイルを選んでください。</translation>
     </message>
     <message>
         <location filename="../app/gui/reactions/curve_reactions.cpp" line="40"/>
-        <source>This build of DevSurf reads curves from DXF files only; save the curves as DXF.</source>
-        <translation>この DevSurf は DXF ファイルからのみ曲線を読み込みます。曲線を DXF で保存してください。</translation>
+        <source>This build of DevSurf reads curves from DXF and SVG files only; save the curves as DXF.</source>
+        <translation>この DevSurf は DXF と SVG ファイルからのみ曲線を読み込みます。曲線を DXF で保存してください。</translation>
     </message>
     <message>
         <location filename="../app/gui/reactions/curve_reactions.cpp" line="43"/>
@@ -1448,8 +1448,8 @@
     </message>
     <message>
         <location filename="../app/gui/reactions/curve_reactions.cpp" line="85"/>
-        <source>Curve files (*.dxf *.step *.stp *.iges *.igs);;DXF (*.dxf);;STEP (*.step *.stp);;IGES (*.iges *.igs)</source>
-        <translation>曲線ファイル (*.dxf *.step *.stp *.iges *.igs);;DXF (*.dxf);;STEP (*.step *.stp);;IGES (*.iges *.igs)</translation>
+        <source>Curve files (*.dxf *.svg *.step *.stp *.iges *.igs);;DXF (*.dxf);;SVG (*.svg);;STEP (*.step *.stp);;IGES (*.iges *.igs)</source>
+        <translation>曲線ファイル (*.dxf *.svg *.step *.stp *.iges *.igs);;DXF (*.dxf);;SVG (*.svg);;STEP (*.step *.stp);;IGES (*.iges *.igs)</translation>
     </message>
     <message>
         <location filename="../app/gui/reactions/curve_reactions.cpp" line="110"/>
@@ -1542,8 +1542,8 @@
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="178"/>
-        <source>Add the curves of a DXF, STEP or IGES file as reference curves</source>
-        <translation>DXF、STEP または IGES ファイルの曲線を参照曲線として加えます</translation>
+        <source>Add the curves of a DXF, SVG, STEP or IGES file as reference curves</source>
+        <translation>DXF、SVG、STEP または IGES ファイルの曲線を参照曲線として加えます</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="181"/>

@@ -19,10 +19,10 @@ std::string curveImportSentence(const io::CurveImportError& error, const std::st
     switch (error.code) {
     case Code::UnknownFormat:
         return "cannot import curves from '" + path +
-               "': use a DXF (.dxf), STEP (.step, .stp) or IGES (.iges, .igs) file.";
+               "': use a DXF (.dxf), SVG (.svg), STEP (.step, .stp) or IGES (.iges, .igs) file.";
     case Code::NotAvailable:
         return "cannot import curves from '" + path +
-               "': this build reads STEP and IGES without OpenCASCADE, so only DXF.";
+               "': this build has no OpenCASCADE to read STEP and IGES; use DXF or SVG.";
     case Code::Unreadable:
         return "cannot read '" + path + "'" + detail + ".";
     case Code::TooLarge:

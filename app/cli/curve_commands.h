@@ -11,7 +11,7 @@ namespace devsurf::app {
 std::string curveImportSentence(const io::CurveImportError& error, const std::string& path);
 
 // `devsurf-cli import-curves FILE CURVES [--tolerance MM] -o OUT`: the project with the curves
-// of a DXF, STEP or IGES file added as reference curves. Nothing is written when the curves
+// of a DXF, SVG, STEP or IGES file added as reference curves. Nothing is written when the curves
 // cannot be read. Returns the exit code; throws UsageError and io::FileError.
 int runImportCurvesCommand(const SubcommandArguments& args);
 

@@ -217,7 +217,12 @@ void quietHandler(QtMsgType type, const QMessageLogContext& context, const QStri
 } // namespace
 
 std::unique_ptr<QCoreApplication> makeCliApplication(int& argc, char** argv) {
-    if (argc > 1 && std::strcmp(argv[1], "export") == 0) {
+    // The pattern's writers paint text; SVG curves (import-curves, sheet --outline) are read
+    // by Qt's SVG renderer: both need a QGuiApplication, offscreen.
+    const bool painting = argc > 1 && (std::strcmp(argv[1], "export") == 0 ||
+                                       std::strcmp(argv[1], "import-curves") == 0 ||
+                                       std::strcmp(argv[1], "sheet") == 0);
+    if (painting) {
         if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) {
             qputenv("QT_QPA_PLATFORM", "offscreen");
         }

@@ -20,9 +20,9 @@ int runExportPatternCommand(const SubcommandArguments& args);
 // report.
 int runReportCommand(const SubcommandArguments& args);
 
-// The application object of the tool: exporting a PDF paints text, which needs a
-// QGuiApplication (on the offscreen platform unless one is chosen); everything else a
-// QCoreApplication.
+// The application object of the tool: exporting a PDF paints text and reading SVG curves
+// renders the drawing, which need a QGuiApplication (on the offscreen platform unless one is
+// chosen); everything else a QCoreApplication.
 std::unique_ptr<QCoreApplication> makeCliApplication(int& argc, char** argv);
 
 } // namespace devsurf::app

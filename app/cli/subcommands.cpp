@@ -48,13 +48,13 @@ const std::vector<SubcommandSpec>& subcommands() {
           kOutputProject}},
         {"sheet",
          "sheet FILE (--free | --rectangle W,H | --disk R | --annulus R1,R2 |\n"
-         "      --outline FILE.dxf | --off) [--surface K] -o OUT.devsurf",
+         "      --outline FILE.dxf|FILE.svg | --off) [--surface K] -o OUT.devsurf",
          "Hold the sheet: the surface keeps its development, and every solve\n"
          "and drag keeps it isometric to that sheet (a dragged vertex lags\n"
          "where the sheet cannot follow, instead of the sheet stretching).\n"
          "--free holds the development as it unfolds now. --rectangle, --disk,\n"
-         "--annulus and --outline (the closed curves of a DXF, STEP or IGES\n"
-         "file seen from above: the largest the outer boundary, the others\n"
+         "--annulus and --outline (the closed curves of a DXF, SVG, STEP or\n"
+         "IGES file seen from above: the largest the outer boundary, the others\n"
          "holes) confine it to that sheet, placed where it fits the\n"
          "development best: the development may then change inside the\n"
          "sheet, its boundary on the sheet's, its corners at the sheet's; the\n"
@@ -65,7 +65,7 @@ const std::vector<SubcommandSpec>& subcommands() {
           {"rectangle", "W,H", "Confine it to a W x H rectangle."},
           {"disk", "R", "Confine it to a disk of radius R."},
           {"annulus", "R1,R2", "Confine it to an annulus between radii R1 and R2."},
-          {"outline", "FILE", "Confine it to the closed curves of a DXF, STEP or IGES file."},
+          {"outline", "FILE", "Confine it to the closed curves of a DXF, SVG, STEP or IGES file."},
           {"off", "", "No longer hold the sheet."},
           kSurface,
           kOutputProject}},
@@ -178,8 +178,9 @@ const std::vector<SubcommandSpec>& subcommands() {
         {"import-curves",
          "import-curves FILE CURVES [--tolerance MM] -o OUT.devsurf",
          "Add the curves of a DXF (LINE, POLYLINE, LWPOLYLINE, SPLINE, ARC,\n"
-         "CIRCLE), STEP or IGES file (every edge) to the project as reference\n"
-         "curves, sampled within MM (default 0.05), in mm. A file that cannot\n"
+         "CIRCLE), SVG (every shape, in the plane z = 0), STEP or IGES file\n"
+         "(every edge) to the project as reference curves, sampled within MM\n"
+         "(default 0.05), in mm. A file that cannot\n"
          "be read changes nothing and writes nothing. The output may be the\n"
          "project itself (its previous version is kept as FILE.bak), never\n"
          "the curve file.",

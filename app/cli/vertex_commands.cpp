@@ -199,7 +199,7 @@ std::string squareMillimetres(double value) {
     return QString::number(value, 'f', 0).toStdString() + " mm\u00b2";
 }
 
-// The closed curves of a DXF, STEP or IGES file, seen from above (z dropped), as a sheet's
+// The closed curves of a DXF, SVG, STEP or IGES file, seen from above (z dropped), as a sheet's
 // outline: the largest the outer boundary, the others holes. InputError if it has none.
 std::vector<std::vector<model::Vec2>> outlineFrom(const std::string& path) {
     const io::CurveImportResult read = io::importCurveFile(QString::fromStdString(path));

@@ -175,7 +175,7 @@ void MainWindow::createMenus() {
     QAction* importCurves =
         addAction(file, QStringLiteral("actionImportCurves"), tr("Import &Curves…"));
     importCurves->setStatusTip(
-        tr("Add the curves of a DXF, STEP or IGES file as reference curves"));
+        tr("Add the curves of a DXF, SVG, STEP or IGES file as reference curves"));
     new ImportCurvesReaction(importCurves, m_workspace);
     QAction* exportJson = addAction(file, QStringLiteral("actionExportJson"),
                                     tr("&Export Interchange JSON…"), QKeySequence(tr("Ctrl+E")));

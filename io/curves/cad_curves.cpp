@@ -182,7 +182,7 @@ CurveImportResult readLocked(const QString& path, CurveFormat format,
 
 CurveImportResult readCadCurves(const QString& path, CurveFormat format,
                                 const CurveImportOptions& options) {
-    if (format == CurveFormat::Dxf) {
+    if (format != CurveFormat::Step && format != CurveFormat::Iges) {
         return failure(CurveImportError::Code::UnknownFormat);
     }
     const std::lock_guard<std::mutex> lock(readerMutex());

@@ -26,6 +26,9 @@ std::optional<CurveFormat> curveFormatOf(const QString& path) {
     if (suffix == QLatin1String("iges") || suffix == QLatin1String("igs")) {
         return CurveFormat::Iges;
     }
+    if (suffix == QLatin1String("svg")) {
+        return CurveFormat::Svg;
+    }
     return std::nullopt;
 }
 
@@ -46,7 +49,7 @@ CurveImportResult importCurveFile(const QString& path, const CurveImportOptions&
     if (!file.open(QIODevice::ReadOnly)) {
         return failure(Code::Unreadable, file.errorString().toStdString());
     }
-    if (*format != CurveFormat::Dxf) {
+    if (*format == CurveFormat::Step || *format == CurveFormat::Iges) {
 #ifdef DEVSURF_CAD_CURVES
         file.close();
         return readCadCurves(path, *format, options);
@@ -57,6 +60,9 @@ CurveImportResult importCurveFile(const QString& path, const CurveImportOptions&
     const QByteArray bytes = file.readAll();
     if (file.error() != QFileDevice::NoError) {
         return failure(Code::Unreadable, file.errorString().toStdString());
+    }
+    if (*format == CurveFormat::Svg) {
+        return readSvgCurves(bytes, options);
     }
     return readDxfCurves(bytes.toStdString(), options);
 }

@@ -1,11 +1,13 @@
 #pragma once
 
-// Reference curves from other programs' files: DXF (dxflib), STEP and IGES (OpenCASCADE).
+// Reference curves from other programs' files: DXF (dxflib), STEP and IGES (OpenCASCADE),
+// SVG (Qt's SVG renderer; needs a QGuiApplication).
 // Every reader returns the curves as polylines in mm or a typed error; none throws, and no
 // input, however damaged, may crash it.
 
 #include "model/reference_curve.h"
 
+#include <QByteArray>
 #include <QString>
 
 #include <cstdint>
@@ -16,11 +18,11 @@
 
 namespace devsurf::io {
 
-enum class CurveFormat { Dxf, Step, Iges };
+enum class CurveFormat { Dxf, Step, Iges, Svg };
 
 struct CurveImportError {
     enum class Code {
-        UnknownFormat, // the extension is none of .dxf, .step, .stp, .iges, .igs
+        UnknownFormat, // the extension is none of .dxf, .step, .stp, .iges, .igs, .svg
         NotAvailable,  // STEP or IGES in a build without OpenCASCADE
         Unreadable,    // the file cannot be opened or read
         TooLarge,      // larger than kMaxCurveFileSize
@@ -49,7 +51,7 @@ inline constexpr std::uint64_t kMaxCurveFileSize = 256ull * 1024 * 1024;
 // No curve is sampled to more points than this (a damaged knot vector cannot exhaust memory).
 inline constexpr std::size_t kMaxCurvePoints = 200'000;
 
-// By extension, case-insensitively: dxf; step, stp; iges, igs.
+// By extension, case-insensitively: dxf; step, stp; iges, igs; svg.
 std::optional<CurveFormat> curveFormatOf(const QString& path);
 
 // Reads the file in the format its extension names.
@@ -57,6 +59,9 @@ CurveImportResult importCurveFile(const QString& path, const CurveImportOptions&
 
 // The readers behind importCurveFile, for tests and callers that hold the bytes.
 CurveImportResult readDxfCurves(const std::string& bytes, const CurveImportOptions& options);
+// SVG: every shape drawn (paths, polygons, rectangles, circles, lines; text left out) in the
+// plane z = 0, in mm by the root's width and viewBox (CSS pixels without them), y up.
+CurveImportResult readSvgCurves(const QByteArray& bytes, const CurveImportOptions& options);
 // STEP or IGES from a file (OpenCASCADE reads paths only).
 CurveImportResult readCadCurves(const QString& path, CurveFormat format,
                                 const CurveImportOptions& options);

@@ -108,21 +108,25 @@ private slots:
     }
 
     void outlineFromTheCuttingPattern() {
-        // The square's own cutting pattern (DXF) as the sheet's outline: one loop of 300 × 300
-        // mm, placed on the development. A file without a closed curve writes nothing.
+        // The square's own cutting pattern, as DXF and as SVG, as the sheet's outline: one loop
+        // of 300 × 300 mm, placed on the development. A file without a closed curve writes
+        // nothing.
         const QString square = path("outline-square.devsurf");
         QCOMPARE(cli({"example", "sheet", "-o", square}).exitCode, 0);
-        const QString dxf = path("outline-square.dxf");
-        QCOMPARE(cli({"export", square, "--format", "dxf", "-o", dxf}).exitCode, 0);
-        const QString onOutline = path("on-outline.devsurf");
-        QCOMPARE(cli({"sheet", square, "--outline", dxf, "-o", onOutline}).exitCode, 0);
-        const model::CompositeSurface held = io::loadProjectFile(onOutline).surfaces[0];
-        QCOMPARE(held.sheetDomain().shape, model::SheetShape::Outline);
-        QCOMPARE(static_cast<int>(held.sheetDomain().outline.size()), 1);
-        QVERIFY(std::abs(model::domainArea(held.sheetDomain()) - 90000.0) < 1.0);
-        const model::SampledMesh mesh =
-            model::sampleSurface(held, model::kDevelopmentSamplesPerInterval);
-        QVERIFY(model::largestDomainGap(held.sheetDomain(), mesh, held.development()) < 0.01);
+        for (const char* format : {"dxf", "svg"}) {
+            const QString drawing = m_dir.filePath(QStringLiteral("outline-square.") + format);
+            QCOMPARE(cli({"export", square, "--format", format, "-o", drawing}).exitCode, 0);
+            const QString onOutline =
+                m_dir.filePath(QStringLiteral("on-outline-%1.devsurf").arg(format));
+            QCOMPARE(cli({"sheet", square, "--outline", drawing, "-o", onOutline}).exitCode, 0);
+            const model::CompositeSurface held = io::loadProjectFile(onOutline).surfaces[0];
+            QCOMPARE(held.sheetDomain().shape, model::SheetShape::Outline);
+            QCOMPARE(static_cast<int>(held.sheetDomain().outline.size()), 1);
+            QVERIFY(std::abs(model::domainArea(held.sheetDomain()) - 90000.0) < 1.0);
+            const model::SampledMesh mesh =
+                model::sampleSurface(held, model::kDevelopmentSamplesPerInterval);
+            QVERIFY(model::largestDomainGap(held.sheetDomain(), mesh, held.development()) < 0.01);
+        }
         const QString lines = path("open-lines.dxf");
         QFile file(lines);
         QVERIFY(file.open(QIODevice::WriteOnly));

@@ -33,12 +33,12 @@ QString errorSentence(const io::CurveImportError& error, const QString& path) {
     const QString name = QFileInfo(path).fileName();
     switch (error.code) {
     case Code::UnknownFormat:
-        return ImportCurvesReaction::tr(
-                   "%1 is not a file DevSurf reads curves from; choose a DXF, STEP or IGES file.")
-            .arg(name);
+        return ImportCurvesReaction::
+            tr("%1 is not a file DevSurf reads curves from; choose a DXF, SVG, STEP or IGES file.")
+                .arg(name);
     case Code::NotAvailable:
-        return ImportCurvesReaction::tr(
-            "This build of DevSurf reads curves from DXF files only; save the curves as DXF.");
+        return ImportCurvesReaction::tr("This build of DevSurf reads curves from DXF and SVG files "
+                                        "only; save the curves as DXF.");
     case Code::Unreadable:
         return ImportCurvesReaction::tr(
                    "%1 cannot be read; check that it exists and that you may read it.")
@@ -82,8 +82,8 @@ void ImportCurvesReaction::onTriggered() {
             ? m_chooser()
             : QFileDialog::getOpenFileName(
                   workspace()->window(), tr("Import Curves"), workspace()->fileDialogDirectory(),
-                  tr("Curve files (*.dxf *.step *.stp *.iges *.igs);;DXF (*.dxf);;"
-                     "STEP (*.step *.stp);;IGES (*.iges *.igs)"));
+                  tr("Curve files (*.dxf *.svg *.step *.stp *.iges *.igs);;DXF (*.dxf);;"
+                     "SVG (*.svg);;STEP (*.step *.stp);;IGES (*.iges *.igs)"));
     if (!path.isEmpty()) {
         importFile(path);
     }

@@ -13,7 +13,7 @@ class QTimer;
 
 namespace devsurf::app {
 
-// File ▸ Import Curves…: the curves of a DXF, STEP or IGES file become reference curves, one
+// File ▸ Import Curves…: the curves of a DXF, SVG, STEP or IGES file become reference curves, one
 // undo step. The file is read on a worker thread behind a progress dialog that can cancel; a
 // file that cannot be read is one message and changes nothing.
 class ImportCurvesReaction : public Reaction {
