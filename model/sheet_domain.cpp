@@ -452,4 +452,24 @@ double largestDomainGap(const SheetDomain& domain, const SampledMesh& mesh,
     return gap;
 }
 
+std::vector<std::vector<Vec2>> closedLoopsFromAbove(const std::vector<ReferenceCurve>& curves) {
+    std::vector<std::vector<Vec2>> loops;
+    for (const ReferenceCurve& curve : curves) {
+        const std::vector<Vec3>& p = curve.points;
+        double length = 0.0;
+        for (std::size_t i = 1; i < p.size(); ++i) {
+            length += distance(p[i - 1], p[i]);
+        }
+        if (p.size() < 4 || !(distance(p.front(), p.back()) <= 1e-6 * length)) {
+            continue;
+        }
+        std::vector<Vec2> loop;
+        for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+            loop.emplace_back(p[i].x, p[i].y);
+        }
+        loops.push_back(std::move(loop));
+    }
+    return loops;
+}
+
 } // namespace devsurf::model

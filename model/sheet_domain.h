@@ -6,6 +6,7 @@
 // development vertices nearest to them.
 
 #include "problem.h"
+#include "reference_curve.h"
 #include "vec3.h"
 
 #include <cstdint>
@@ -106,6 +107,11 @@ SheetDomain fittingDomain(SheetShape shape, const SampledMesh& mesh,
 
 // The area of a development of a mesh: the sum of its faces' areas (mm²).
 double developedArea(const SampledMesh& mesh, const std::vector<Vec2>& development);
+
+// The closed curves among `curves` seen from above (z dropped) as an outline's loops: a curve
+// is closed when it ends where it starts (within 1e-6 of its length) and has three points
+// or more; the repeated last point is dropped.
+std::vector<std::vector<Vec2>> closedLoopsFromAbove(const std::vector<ReferenceCurve>& curves);
 
 // The largest distance of a vertex the domain holds from its loop or corner (mm).
 double largestDomainGap(const SheetDomain& domain, const SampledMesh& mesh,

@@ -3014,82 +3014,154 @@
 <context>
     <name>devsurf::app::SheetShapeDialog</name>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="39"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="45"/>
+        <source>Choose…</source>
+        <translation>Auswählen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="47"/>
         <source>Sheet Shape</source>
         <translation>Bogenform</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="42"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="50"/>
         <source>Free: the development as it is</source>
         <translation>Frei: die Abwicklung, wie sie ist</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="44"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="52"/>
         <source>Rectangle</source>
         <translation>Rechteck</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="45"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="53"/>
         <source>Disk</source>
         <translation>Kreisscheibe</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="46"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="54"/>
         <source>Annulus</source>
         <translation>Kreisring</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="63"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="55"/>
+        <source>Outline of a drawing</source>
+        <translation>Umriss einer Zeichnung</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="62"/>
+        <source>The closed curves of a DXF, SVG, STEP or IGES file, seen from above: the largest is the sheet&apos;s boundary, the others its holes.</source>
+        <translation>Die geschlossenen Kurven einer DXF-, SVG-, STEP- oder IGES-Datei, von oben gesehen: die größte ist der Rand des Bogens, die anderen seine Löcher.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="80"/>
         <source>The sheet the surface is folded from. Every solve and drag keeps the surface isometric to its development; with a shape, the development may change inside it, its boundary on the shape&apos;s and its corners at the shape&apos;s corners.</source>
         <translation>Der Bogen, aus dem die Fläche gefaltet wird. Jedes Lösen und Ziehen hält die Fläche isometrisch zu ihrer Abwicklung; mit einer Form darf sich die Abwicklung innerhalb der Form ändern, ihr Rand liegt auf dem Rand der Form und ihre Ecken auf deren Ecken.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="70"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="87"/>
         <source>Shape:</source>
         <translation>Form:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="71"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="88"/>
         <source>Width:</source>
         <translation>Breite:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="72"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="89"/>
         <source>Height:</source>
         <translation>Höhe:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="73"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="90"/>
         <source>Radius:</source>
         <translation>Radius:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="74"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="91"/>
         <source>Inner radius:</source>
         <translation>Innenradius:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="133"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="95"/>
+        <source>Outline:</source>
+        <translation>Umriss:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="106"/>
+        <source>Sheet Outline</source>
+        <translation>Umriss des Bogens</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="107"/>
+        <source>Drawings (*.dxf *.svg *.step *.stp *.iges *.igs)</source>
+        <translation>Zeichnungen (*.dxf *.svg *.step *.stp *.iges *.igs)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="163"/>
+        <source>%1 cannot be read as a drawing: choose a DXF, SVG, STEP or IGES file.</source>
+        <translation>%1 kann nicht als Zeichnung gelesen werden: wählen Sie eine DXF-, SVG-, STEP- oder IGES-Datei.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="166"/>
+        <source>%1 holds no closed curve enclosing an area to be the sheet&apos;s outline.</source>
+        <translation>%1 enthält keine geschlossene Kurve, die eine Fläche umschließt und den Umriss des Bogens bilden könnte.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="171"/>
+        <source>%1: %n closed curve(s)</source>
+        <translation>
+            <numerusform>%1: %n geschlossene Kurve</numerusform>
+            <numerusform>%1: %n geschlossene Kurven</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="194"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="195"/>
+        <source>none chosen</source>
+        <translation>keiner gewählt</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="197"/>
+        <source>%n closed curve(s)</source>
+        <translation>
+            <numerusform>%n geschlossene Kurve</numerusform>
+            <numerusform>%n geschlossene Kurven</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="208"/>
         <source>The development covers %1 cm² and is held as it is.</source>
         <translation>Die Abwicklung bedeckt %1 cm² und wird gehalten, wie sie ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="138"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="215"/>
+        <source>Choose a drawing whose closed curves are the sheet&apos;s outline.</source>
+        <translation>Wählen Sie eine Zeichnung, deren geschlossene Kurven den Umriss des Bogens bilden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="224"/>
+        <source>The outline has no closed curve enclosing an area.</source>
+        <translation>Der Umriss hat keine geschlossene Kurve, die eine Fläche umschließt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="225"/>
         <source>The inner radius must be smaller than the radius.</source>
         <translation>Der Innenradius muss kleiner als der Radius sein.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="145"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="236"/>
         <source>The development (%1 cm²) is larger than this sheet (%2 cm²): no solve can fold the design from it.</source>
         <translation>Die Abwicklung (%1 cm²) ist größer als dieser Bogen (%2 cm²): kein Lösen kann die Form daraus falten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="154"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="245"/>
         <source>The development (%1 cm²) fits this sheet (%2 cm²): its boundary lies on the sheet&apos;s.</source>
         <translation>Die Abwicklung (%1 cm²) passt auf diesen Bogen (%2 cm²): ihr Rand liegt auf dem des Bogens.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="158"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="249"/>
         <source>The development covers %1 cm² of this sheet&apos;s %2 cm²; its boundary is up to %3 mm from the sheet&apos;s, and the next Solve moves it onto the sheet.</source>
         <translation>Die Abwicklung bedeckt %1 cm² der %2 cm² dieses Bogens; ihr Rand liegt bis zu %3 mm vom Rand des Bogens entfernt, und das nächste Lösen legt ihn auf den Bogen.</translation>
     </message>

@@ -295,6 +295,25 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::SheetShapeDialog</name>
+    <message numerus="yes">
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="171"/>
+        <source>%1: %n closed curve(s)</source>
+        <translation>
+            <numerusform>%1: %n closed curve</numerusform>
+            <numerusform>%1: %n closed curves</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="197"/>
+        <source>%n closed curve(s)</source>
+        <translation>
+            <numerusform>%n closed curve</numerusform>
+            <numerusform>%n closed curves</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::SolveController</name>
     <message numerus="yes">
         <location filename="../app/gui/solve_controller.cpp" line="161"/>

@@ -2982,82 +2982,152 @@
 <context>
     <name>devsurf::app::SheetShapeDialog</name>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="39"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="45"/>
+        <source>Choose…</source>
+        <translation>選択…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="47"/>
         <source>Sheet Shape</source>
         <translation>シートの形</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="42"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="50"/>
         <source>Free: the development as it is</source>
         <translation>自由: 展開図をそのまま</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="44"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="52"/>
         <source>Rectangle</source>
         <translation>長方形</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="45"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="53"/>
         <source>Disk</source>
         <translation>円板</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="46"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="54"/>
         <source>Annulus</source>
         <translation>円環</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="63"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="55"/>
+        <source>Outline of a drawing</source>
+        <translation>図面の輪郭</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="62"/>
+        <source>The closed curves of a DXF, SVG, STEP or IGES file, seen from above: the largest is the sheet&apos;s boundary, the others its holes.</source>
+        <translation>DXF、SVG、STEP または IGES ファイルの閉じた曲線を上から見たもの: 最大のものがシートの境界、ほかは穴です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="80"/>
         <source>The sheet the surface is folded from. Every solve and drag keeps the surface isometric to its development; with a shape, the development may change inside it, its boundary on the shape&apos;s and its corners at the shape&apos;s corners.</source>
         <translation>曲面を折り出すシートです。ソルブとドラッグは常に曲面を展開図と等長に保ちます。形を指定すると、展開図はその内側で変わることができ、境界は形の境界上に、角は形の角に置かれます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="70"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="87"/>
         <source>Shape:</source>
         <translation>形:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="71"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="88"/>
         <source>Width:</source>
         <translation>幅:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="72"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="89"/>
         <source>Height:</source>
         <translation>高さ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="73"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="90"/>
         <source>Radius:</source>
         <translation>半径:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="74"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="91"/>
         <source>Inner radius:</source>
         <translation>内径:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="133"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="95"/>
+        <source>Outline:</source>
+        <translation>輪郭:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="106"/>
+        <source>Sheet Outline</source>
+        <translation>シートの輪郭</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="107"/>
+        <source>Drawings (*.dxf *.svg *.step *.stp *.iges *.igs)</source>
+        <translation>図面 (*.dxf *.svg *.step *.stp *.iges *.igs)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="163"/>
+        <source>%1 cannot be read as a drawing: choose a DXF, SVG, STEP or IGES file.</source>
+        <translation>%1 を図面として読み込めません: DXF、SVG、STEP または IGES ファイルを選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="166"/>
+        <source>%1 holds no closed curve enclosing an area to be the sheet&apos;s outline.</source>
+        <translation>%1 にはシートの輪郭となる、面積を囲む閉じた曲線がありません。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="171"/>
+        <source>%1: %n closed curve(s)</source>
+        <translation>
+            <numerusform>%1: 閉じた曲線 %n 本</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="194"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="195"/>
+        <source>none chosen</source>
+        <translation>未選択</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="197"/>
+        <source>%n closed curve(s)</source>
+        <translation>
+            <numerusform>閉じた曲線 %n 本</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="208"/>
         <source>The development covers %1 cm² and is held as it is.</source>
         <translation>展開図の面積は %1 cm² で、そのまま保持されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="138"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="215"/>
+        <source>Choose a drawing whose closed curves are the sheet&apos;s outline.</source>
+        <translation>閉じた曲線がシートの輪郭となる図面を選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="224"/>
+        <source>The outline has no closed curve enclosing an area.</source>
+        <translation>輪郭に面積を囲む閉じた曲線がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="225"/>
         <source>The inner radius must be smaller than the radius.</source>
         <translation>内径は半径より小さくなければなりません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="145"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="236"/>
         <source>The development (%1 cm²) is larger than this sheet (%2 cm²): no solve can fold the design from it.</source>
         <translation>展開図 (%1 cm²) がこのシート (%2 cm²) より大きいため、どのソルブでもこのシートから折ることはできません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="154"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="245"/>
         <source>The development (%1 cm²) fits this sheet (%2 cm²): its boundary lies on the sheet&apos;s.</source>
         <translation>展開図 (%1 cm²) はこのシート (%2 cm²) に合っています: 境界はシートの境界上にあります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="158"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="249"/>
         <source>The development covers %1 cm² of this sheet&apos;s %2 cm²; its boundary is up to %3 mm from the sheet&apos;s, and the next Solve moves it onto the sheet.</source>
         <translation>展開図はこのシートの %2 cm² のうち %1 cm² を占めます。境界はシートの境界から最大 %3 mm 離れており、次のソルブでシート上に移ります。</translation>
     </message>

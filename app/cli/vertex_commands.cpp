@@ -206,23 +206,7 @@ std::vector<std::vector<model::Vec2>> outlineFrom(const std::string& path) {
     if (read.error) {
         throw InputError(curveImportSentence(*read.error, path));
     }
-    std::vector<std::vector<model::Vec2>> loops;
-    for (const model::ReferenceCurve& curve : read.curves) {
-        const std::vector<model::Vec3>& p = curve.points;
-        double length = 0.0;
-        for (std::size_t i = 1; i < p.size(); ++i) {
-            length += model::distance(p[i - 1], p[i]);
-        }
-        // Closed: it ends where it starts (a closed polyline, a circle).
-        if (p.size() < 4 || !(model::distance(p.front(), p.back()) <= 1e-6 * length)) {
-            continue;
-        }
-        std::vector<model::Vec2> loop;
-        for (std::size_t i = 0; i + 1 < p.size(); ++i) {
-            loop.emplace_back(p[i].x, p[i].y);
-        }
-        loops.push_back(std::move(loop));
-    }
+    std::vector<std::vector<model::Vec2>> loops = model::closedLoopsFromAbove(read.curves);
     model::SheetDomain check;
     check.shape = model::SheetShape::Outline;
     check.outline = loops;

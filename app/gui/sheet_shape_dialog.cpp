@@ -1,11 +1,18 @@
 #include "sheet_shape_dialog.h"
 
+#include "io/curves/curve_import.h"
+
+#include <QApplication>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
+#include <QPushButton>
 #include <QVBoxLayout>
 
 namespace devsurf::app {
@@ -34,7 +41,8 @@ SheetShapeDialog::SheetShapeDialog(const model::SheetDomain& current,
       m_shape(new QComboBox(this)), m_width(sizeBox(this, QStringLiteral("sheetWidth"))),
       m_height(sizeBox(this, QStringLiteral("sheetHeight"))),
       m_radius(sizeBox(this, QStringLiteral("sheetRadius"))),
-      m_innerRadius(sizeBox(this, QStringLiteral("sheetInnerRadius"))), m_fit(new QLabel(this)) {
+      m_innerRadius(sizeBox(this, QStringLiteral("sheetInnerRadius"))), m_fit(new QLabel(this)),
+      m_outlineName(new QLabel(this)), m_chooseOutline(new QPushButton(tr("Choose…"), this)) {
     setObjectName(QStringLiteral("sheetShapeDialog"));
     setWindowTitle(tr("Sheet Shape"));
     m_developedArea = model::developedArea(m_mesh, m_development);
@@ -44,6 +52,15 @@ SheetShapeDialog::SheetShapeDialog(const model::SheetDomain& current,
     m_shape->addItem(tr("Rectangle"), static_cast<int>(model::SheetShape::Rectangle));
     m_shape->addItem(tr("Disk"), static_cast<int>(model::SheetShape::Disk));
     m_shape->addItem(tr("Annulus"), static_cast<int>(model::SheetShape::Annulus));
+    m_shape->addItem(tr("Outline of a drawing"), static_cast<int>(model::SheetShape::Outline));
+    if (current.shape == model::SheetShape::Outline) {
+        m_outline = current.outline;
+    }
+    m_outlineName->setObjectName(QStringLiteral("sheetOutlineName"));
+    m_chooseOutline->setObjectName(QStringLiteral("sheetOutlineChoose"));
+    m_chooseOutline->setToolTip(
+        tr("The closed curves of a DXF, SVG, STEP or IGES file, seen from above: the largest "
+           "is the sheet's boundary, the others its holes."));
     // Sizes start at the sheets that just hold the development, or at the sheet kept now.
     const auto rectangle =
         model::fittingDomain(model::SheetShape::Rectangle, m_mesh, m_development);
@@ -72,11 +89,26 @@ SheetShapeDialog::SheetShapeDialog(const model::SheetDomain& current,
     form->addRow(tr("Height:"), m_height);
     form->addRow(tr("Radius:"), m_radius);
     form->addRow(tr("Inner radius:"), m_innerRadius);
+    auto* outlineRow = new QHBoxLayout;
+    outlineRow->addWidget(m_outlineName, 1);
+    outlineRow->addWidget(m_chooseOutline);
+    form->addRow(tr("Outline:"), outlineRow);
     m_fit->setObjectName(QStringLiteral("sheetFit"));
     m_fit->setWordWrap(true);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    m_ok = buttons->button(QDialogButtonBox::Ok);
+    connect(m_chooseOutline, &QPushButton::clicked, this, [this] {
+        const QString path = m_chooser
+                                 ? m_chooser()
+                                 : QFileDialog::getOpenFileName(
+                                       this, tr("Sheet Outline"), QString(),
+                                       tr("Drawings (*.dxf *.svg *.step *.stp *.iges *.igs)"));
+        if (!path.isEmpty()) {
+            loadOutline(path);
+        }
+    });
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(intro);
     layout->addLayout(form);
@@ -105,11 +137,46 @@ model::SheetDomain SheetShapeDialog::unplaced() const {
         d.radius = m_radius->value();
         d.innerRadius = m_innerRadius->value();
         break;
-    case model::SheetShape::Free:
     case model::SheetShape::Outline:
+        d.outline = m_outline;
+        break;
+    case model::SheetShape::Free:
         break;
     }
     return d;
+}
+
+bool SheetShapeDialog::loadOutline(const QString& path) {
+    const QString name = QFileInfo(path).fileName();
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    const io::CurveImportResult read = io::importCurveFile(path);
+    QApplication::restoreOverrideCursor();
+    std::vector<std::vector<model::Vec2>> loops;
+    if (!read.error) {
+        loops = model::closedLoopsFromAbove(read.curves);
+    }
+    model::SheetDomain check;
+    check.shape = model::SheetShape::Outline;
+    check.outline = loops;
+    if (read.error) {
+        m_outlineProblem =
+            tr("%1 cannot be read as a drawing: choose a DXF, SVG, STEP or IGES file.").arg(name);
+    } else if (loops.empty() || model::domainProblem(check)) {
+        m_outlineProblem =
+            tr("%1 holds no closed curve enclosing an area to be the sheet's outline.").arg(name);
+    } else {
+        m_outlineProblem.clear();
+        m_outline = std::move(loops);
+        m_outlineName->setText(
+            tr("%1: %n closed curve(s)", nullptr, static_cast<int>(m_outline.size())).arg(name));
+    }
+    const int index = m_shape->findData(static_cast<int>(model::SheetShape::Outline));
+    if (m_shape->currentIndex() != index) {
+        m_shape->setCurrentIndex(index); // updates the fit
+    } else {
+        updateFit();
+    }
+    return m_outlineProblem.isEmpty();
 }
 
 model::SheetDomain SheetShapeDialog::domain() const {
@@ -122,6 +189,13 @@ void SheetShapeDialog::onShapeChanged() {
     m_height->setEnabled(shape == model::SheetShape::Rectangle);
     m_radius->setEnabled(shape == model::SheetShape::Disk || shape == model::SheetShape::Annulus);
     m_innerRadius->setEnabled(shape == model::SheetShape::Annulus);
+    m_chooseOutline->setEnabled(shape == model::SheetShape::Outline);
+    if (m_outline.empty()) {
+        m_outlineName->setText(tr("none chosen"));
+    } else if (m_outlineName->text().isEmpty() || m_outlineName->text() == tr("none chosen")) {
+        m_outlineName->setText(
+            tr("%n closed curve(s)", nullptr, static_cast<int>(m_outline.size())));
+    }
     updateFit();
 }
 
@@ -129,15 +203,32 @@ void SheetShapeDialog::updateFit() {
     const model::SheetDomain d = unplaced();
     const QLocale locale;
     const QString developed = locale.toString(m_developedArea / 100.0, 'f', 0);
+    m_ok->setEnabled(true);
     if (d.isFree()) {
         m_fit->setText(tr("The development covers %1 cm² and is held as it is.").arg(developed));
         m_fit->setStyleSheet(QString());
         return;
     }
-    if (const auto problem = model::domainProblem(d)) {
-        m_fit->setText(tr("The inner radius must be smaller than the radius."));
+    const bool outline = d.shape == model::SheetShape::Outline;
+    if (outline && (!m_outlineProblem.isEmpty() || m_outline.empty())) {
+        m_fit->setText(m_outlineProblem.isEmpty()
+                           ? tr("Choose a drawing whose closed curves are the sheet's outline.")
+                           : m_outlineProblem);
+        m_fit->setStyleSheet(m_outlineProblem.isEmpty() ? QString()
+                                                        : QStringLiteral("color: #b00020;"));
+        m_ok->setEnabled(!m_outline.empty());
+        if (m_outline.empty()) {
+            return;
+        }
+    } else if (const auto problem = model::domainProblem(d)) {
+        m_fit->setText(outline ? tr("The outline has no closed curve enclosing an area.")
+                               : tr("The inner radius must be smaller than the radius."));
         m_fit->setStyleSheet(QStringLiteral("color: #b00020;"));
+        m_ok->setEnabled(false);
         return;
+    }
+    if (outline && !m_outlineProblem.isEmpty()) {
+        return; // the problem stays said; the outline chosen before is still the one used
     }
     const double area = model::domainArea(d);
     const QString sheet = locale.toString(area / 100.0, 'f', 0);

@@ -5,17 +5,20 @@
 
 #include <QDialog>
 
+#include <functional>
 #include <vector>
 
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QPushButton;
 
 namespace devsurf::app {
 
 // Tools ▸ Sheet Shape…: the sheet a surface is folded from — free (its development held as it
-// is) or a rectangle, disk or annulus its development is confined to. Sizes start at the sheet
-// that just holds the development; the dialog compares the two areas as the sizes change.
+// is) or a rectangle, disk, annulus or the outline of a drawing (the closed curves of a DXF,
+// SVG, STEP or IGES file) its development is confined to. Sizes start at the sheet that just
+// holds the development; the dialog compares the two areas as the sizes change.
 class SheetShapeDialog : public QDialog {
     Q_OBJECT
 public:
@@ -32,6 +35,14 @@ public:
     QDoubleSpinBox* radiusBox() const { return m_radius; }
     QDoubleSpinBox* innerRadiusBox() const { return m_innerRadius; }
     QLabel* fitLabel() const { return m_fit; }
+    QPushButton* outlineButton() const { return m_chooseOutline; }
+    QPushButton* okButton() const { return m_ok; }
+
+    // Reads the outline from a drawing's closed curves; false (said in the dialog, the outline
+    // kept as it was) if the file cannot be read or holds no closed curve enclosing an area.
+    bool loadOutline(const QString& path);
+    // What "Choose…" asks for the drawing with (default: a file dialog); for tests.
+    void setOutlineChooser(std::function<QString()> chooser) { m_chooser = std::move(chooser); }
 
 private:
     void onShapeChanged();
@@ -47,6 +58,12 @@ private:
     QDoubleSpinBox* m_radius;
     QDoubleSpinBox* m_innerRadius;
     QLabel* m_fit;
+    std::vector<std::vector<model::Vec2>> m_outline; // loops in the drawing's frame, mm
+    QLabel* m_outlineName;
+    QPushButton* m_chooseOutline;
+    QPushButton* m_ok = nullptr;
+    QString m_outlineProblem;
+    std::function<QString()> m_chooser;
 };
 
 } // namespace devsurf::app

@@ -25,9 +25,13 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFile>
+#include <QLabel>
 #include <QMenu>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 #include <QUndoStack>
@@ -165,6 +169,66 @@ private slots:
         QVERIFY(doc->surface(0).sheetDomain().isFree());
         doc->undoStack()->redo();
         QCOMPARE(doc->surface(0).sheetDomain().shape, model::SheetShape::Rectangle);
+    }
+
+    void sheetOutlineComesFromADrawing() {
+        // Outline of a drawing: a damaged file and a drawing without a closed curve are said
+        // in the dialog and OK stays off; a 300 mm square drawn in an SVG becomes the sheet.
+        QTemporaryDir dir;
+        const auto write = [&dir](const char* name, const QByteArray& bytes) {
+            QFile file(dir.filePath(QString::fromLatin1(name)));
+            return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size();
+        };
+        QVERIFY(write("square.svg", "<svg xmlns='http://www.w3.org/2000/svg' width='400mm' "
+                                    "height='400mm' viewBox='0 0 400 400'><rect x='50' y='50' "
+                                    "width='300' height='300'/></svg>"));
+        QVERIFY(write("open.svg", "<svg xmlns='http://www.w3.org/2000/svg' width='10mm' "
+                                  "height='10mm' viewBox='0 0 10 10'><path d='M0 0 L5 5'/></svg>"));
+        QVERIFY(write("damaged.svg", "<svg><rect"));
+        app::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.workspace()->newFromExample(QStringLiteral("sheet"), 0);
+        document::Document* doc = window.workspace()->document();
+        QStringList said;
+        bool okBeforeChoosing = true;
+        QTimer poll;
+        connect(&poll, &QTimer::timeout, &poll, [&] {
+            auto* dialog = qobject_cast<app::SheetShapeDialog*>(QApplication::activeModalWidget());
+            if (!dialog) {
+                return;
+            }
+            poll.stop();
+            dialog->shapeBox()->setCurrentIndex(
+                dialog->shapeBox()->findData(static_cast<int>(model::SheetShape::Outline)));
+            okBeforeChoosing = dialog->okButton()->isEnabled();
+            for (const char* name : {"damaged.svg", "open.svg"}) {
+                QVERIFY(!dialog->loadOutline(dir.filePath(QString::fromLatin1(name))));
+                said << dialog->fitLabel()->text();
+                QVERIFY(!dialog->okButton()->isEnabled());
+            }
+            QString chosen = dir.filePath(QStringLiteral("square.svg"));
+            dialog->setOutlineChooser([&chosen] { return chosen; });
+            QVERIFY(dialog->outlineButton()->isEnabled());
+            dialog->outlineButton()->click();
+            said << dialog->fitLabel()->text();
+            QVERIFY(dialog->okButton()->isEnabled());
+            dialog->okButton()->click();
+        });
+        poll.start(10);
+        window.action(QStringLiteral("actionSheetShape"))->trigger();
+        poll.stop();
+        QVERIFY(!okBeforeChoosing);
+        QCOMPARE(said.size(), 3);
+        QVERIFY2(said[0].contains(QStringLiteral("damaged.svg")), qPrintable(said[0]));
+        QVERIFY2(said[1].contains(QStringLiteral("no closed curve")), qPrintable(said[1]));
+        QVERIFY2(said[2].contains(QStringLiteral("fits this sheet")), qPrintable(said[2]));
+        const model::CompositeSurface& held = doc->surface(0);
+        QCOMPARE(held.sheetDomain().shape, model::SheetShape::Outline);
+        QVERIFY(std::abs(model::domainArea(held.sheetDomain()) - 90000.0) < 1e-6);
+        const model::SampledMesh mesh =
+            model::sampleSurface(held, model::kDevelopmentSamplesPerInterval);
+        QVERIFY(model::largestDomainGap(held.sheetDomain(), mesh, held.development()) < 1e-6);
     }
 
     void aCylinderIsNoFlatSheetToHold() {
