@@ -55,7 +55,7 @@ constexpr int kDgemmSize = 1000;
 
 // Single-core DGEMM rate of the BLAS the process uses (the one CHOLMOD calls), in GFLOP/s:
 // the best of three 1000×1000 products, the ceiling for a supernodal factorisation's flops.
-// A threaded BLAS is held to one thread for it.
+// A threaded BLAS is held to one thread for it (runBenchmark).
 double measureDgemmGflops() {
     using Dgemm = void (*)(const char*, const char*, const int*, const int*, const int*,
                            const double*, const double*, const int*, const double*, const int*,
@@ -399,13 +399,14 @@ std::string threadsJson(const ModelResult::Threads& t) {
 }
 
 void writeJson(const std::vector<ModelResult>& results, const solver::BlasInfo& blas, double dgemm,
-               const BenchmarkOptions& options, std::ostream& out) {
+               double dgemmTwo, const BenchmarkOptions& options, std::ostream& out) {
     out << "{\n  \"blas\": " << quoted(blas.describe())
         << ",\n  \"blas_kernel\": " << quoted(blas.kernel)
         << ",\n  \"blas_kernel_chosen_by\": " << quoted(blas.kernelChosenBy)
         << ",\n  \"blas_kernel_requested\": " << quoted(blas.kernelRequested)
         << ",\n  \"blas_threaded\": " << (blas.threaded ? "true" : "false")
         << ",\n  \"dgemm_gflops\": " << number(dgemm) << ",\n  \"dgemm_size\": " << kDgemmSize
+        << ",\n  \"dgemm_gflops_2_threads\": " << (dgemmTwo > 0.0 ? number(dgemmTwo) : "null")
         << ",\n  \"iterations\": " << options.iterations
         << ",\n  \"noise_fraction_of_diameter\": " << number(options.noise)
         << ",\n  \"small_noise_fraction_of_diameter\": " << number(options.smallNoise)
@@ -514,17 +515,23 @@ void writeJson(const std::vector<ModelResult>& results, const solver::BlasInfo& 
 }
 
 void writeTable(const std::vector<ModelResult>& results, const solver::BlasInfo& blas, double dgemm,
-                std::ostream& out) {
+                double dgemmTwo, std::ostream& out) {
     out << "BLAS: " << blas.describe() << "\n";
     if (!blas.kernel.empty()) {
         out << "BLAS kernel: " << blas.kernel << ", chosen by " << blas.kernelChosenBy;
-        if (!blas.kernelRequested.empty()) {
+        if (blas.kernelChosenBy == "OPENBLAS_CORETYPE") {
+            out << "=" << blas.kernelRequested;
+        } else if (!blas.kernelRequested.empty()) {
             out << " (OPENBLAS_CORETYPE=" << blas.kernelRequested << ")";
         }
         out << "\n";
     }
     out << "DGEMM " << kDgemmSize << "×" << kDgemmSize
-        << ", one thread, best of 3: " << number(dgemm) << " GFLOP/s\n";
+        << ", one thread, best of 3: " << number(dgemm) << " GFLOP/s";
+    if (dgemmTwo > 0.0) {
+        out << "; two threads " << number(dgemmTwo) << " GFLOP/s";
+    }
+    out << "\n";
     char line[512];
     std::snprintf(line, sizeof line, "%-18s %7s %7s %9s %9s %9s %9s %9s %9s %9s %9s\n", "model",
                   "vars", "rows", "ours ms", "fact ms", "bound ms", "paper ms", "base ms",
@@ -592,15 +599,21 @@ int runBenchmark(const BenchmarkOptions& options, std::ostream& out) {
     const solver::BlasInfo blas = solver::detectBlas();
     setBlasThreads(1);
     const double dgemm = measureDgemmGflops();
+    // With a threaded BLAS, DGEMM on two threads too: how much of a second core the machine
+    // gave during the run (the ceiling for the factorisation's speed-up on two threads).
+    double dgemmTwo = 0.0;
+    if (blas.threaded && setBlasThreads(2)) {
+        dgemmTwo = measureDgemmGflops();
+    }
     setBlasThreads(blas.threads);
     std::vector<ModelResult> results;
     for (const BenchModel& model : models) {
         results.push_back(runModel(model, effective, dgemm));
     }
     if (options.json) {
-        writeJson(results, blas, dgemm, effective, out);
+        writeJson(results, blas, dgemm, dgemmTwo, effective, out);
     } else {
-        writeTable(results, blas, dgemm, out);
+        writeTable(results, blas, dgemm, dgemmTwo, out);
     }
     return 0;
 }
