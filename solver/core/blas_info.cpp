@@ -144,14 +144,16 @@ CpuFeatures detectCpuFeatures() {
 }
 
 std::string recommendedCoreType(const std::string& kernel, const CpuFeatures& cpu) {
+    // An AVX2 kernel stays on an AVX-512 CPU: the factorisation gains nothing measurable from
+    // SkylakeX over Haswell, and a restart costs the start-up once more (docs/tuning.md).
     const int level = kernelLevel(kernel);
-    if (level < 0) {
+    if (level < 0 || level >= 2) {
         return {};
     }
-    if (cpu.avx512 && level < 3) {
+    if (cpu.avx512) {
         return "SkylakeX";
     }
-    if (cpu.avx2 && cpu.fma && level < 2) {
+    if (cpu.avx2 && cpu.fma) {
         return "Haswell";
     }
     return {};

@@ -36,9 +36,10 @@ struct CpuFeatures {
 CpuFeatures detectCpuFeatures();
 
 // The OPENBLAS_CORETYPE to ask for when OpenBLAS chose `kernel` (openblas_get_corename) on a
-// CPU with `cpu`: "SkylakeX" for AVX-512 and "Haswell" for AVX2 with FMA when the chosen
-// kernel uses less (a DYNAMIC_ARCH build that does not know a new CPU falls back to an older
-// kernel, "Prescott" at worst); empty if the kernel already fits or its name is not known.
+// CPU with `cpu`: when the kernel is older than AVX2 (a DYNAMIC_ARCH build that does not know
+// a new CPU falls back to one, "Prescott" at worst) while the CPU has AVX-512, "SkylakeX", or
+// AVX2 with FMA, "Haswell". Empty if the kernel uses AVX2 already, the CPU has nothing better
+// or the kernel's name is not known.
 std::string recommendedCoreType(const std::string& kernel, const CpuFeatures& cpu);
 
 // Called first thing in main() with main's argv: if OPENBLAS_CORETYPE is unset, the loaded

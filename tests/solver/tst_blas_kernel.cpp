@@ -71,9 +71,14 @@ private slots:
         QCOMPARE(recommendedCoreType("Core2", kAvx2Fma), std::string("Haswell"));
     }
 
-    void anAvx2KernelOnAnAvx512CpuAsksForSkylakeX() {
-        QCOMPARE(recommendedCoreType("Haswell", kAvx512), std::string("SkylakeX"));
-        QCOMPARE(recommendedCoreType("Zen", kAvx512), std::string("SkylakeX"));
+    void anAvxKernelOnAnAvx512CpuAsksForSkylakeX() {
+        QCOMPARE(recommendedCoreType("Sandybridge", kAvx512), std::string("SkylakeX"));
+        QCOMPARE(recommendedCoreType("Excavator", kAvx512), std::string("SkylakeX"));
+    }
+
+    void anAvx2KernelStaysOnAnAvx512Cpu() {
+        QCOMPARE(recommendedCoreType("Haswell", kAvx512), std::string());
+        QCOMPARE(recommendedCoreType("Zen", kAvx512), std::string());
     }
 
     void aKernelThatFitsTheCpuIsKept() {
