@@ -48,13 +48,18 @@ if [ "${#missing[@]}" -gt 0 ]; then
   as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${missing[@]}"
 fi
 
-# CHOLMOD calls the generic libblas.so.3: make it the single-threaded OpenBLAS, not the
-# reference BLAS (or ATLAS, which other packages may register).
-blas_alt=libblas.so.3-$(gcc -print-multiarch 2>/dev/null || echo x86_64-linux-gnu)
-openblas=$(update-alternatives --list "$blas_alt" 2>/dev/null | grep openblas-serial || true)
-if [ -n "$openblas" ] && [ "$(readlink -f /etc/alternatives/"$blas_alt")" != "$(readlink -f "$openblas")" ]; then
-  as_root update-alternatives --set "$blas_alt" "$openblas"
-fi
+# CHOLMOD calls the generic libblas.so.3 (and liblapack.so.3, which loads libopenblas.so.0):
+# make all three the single-threaded OpenBLAS, not the reference BLAS, ATLAS or a threaded
+# OpenBLAS (libopenblas0-pthread, which other packages may pull in, takes all three over in
+# auto mode).
+multiarch=$(gcc -print-multiarch 2>/dev/null || echo x86_64-linux-gnu)
+for lib in libblas.so.3 liblapack.so.3 libopenblas.so.0; do
+  alt=$lib-$multiarch
+  serial=$(update-alternatives --list "$alt" 2>/dev/null | grep openblas-serial || true)
+  if [ -n "$serial" ] && [ "$(readlink -f /etc/alternatives/"$alt")" != "$(readlink -f "$serial")" ]; then
+    as_root update-alternatives --set "$alt" "$serial"
+  fi
+done
 
 # The sanitizer builds keep line tables only (-g1): their reports still name file and line, and
 # compiling and linking with less debug information saves CI time (about a tenth of the compile

@@ -1,6 +1,7 @@
 // DevSurf desktop application.
 
 #include "main_window.h"
+#include "solver/core/blas_info.h"
 #include "translations.h"
 #include "views/vtk_opengl_widget.h"
 #include "workspace.h"
@@ -13,6 +14,8 @@
 #include <QTimer>
 
 int main(int argc, char** argv) {
+    // Before anything else: it may re-execute the program with a better BLAS kernel.
+    devsurf::solver::useBestBlasKernel(argv);
     // The VTK views need their OpenGL format before the application exists.
     QSurfaceFormat::setDefaultFormat(devsurf::views::VtkOpenGLWidget::defaultFormat());
     QApplication app(argc, argv);

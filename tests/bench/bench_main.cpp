@@ -6,6 +6,7 @@
 #include "quality_study.h"
 
 #include "model/examples.h"
+#include "solver/core/blas_info.h"
 #include "solver/formulation/perturbation.h"
 
 #include <cstdio>
@@ -132,6 +133,8 @@ int runStudy(const std::string& name, const bench::StudyStart& start,
 } // namespace
 
 int main(int argc, char** argv) {
+    // Before anything else: it may re-execute the program with a better BLAS kernel.
+    devsurf::solver::useBestBlasKernel(argv);
     devsurf::bench::BenchmarkOptions options;
     std::string study;
     bool drag = false;
@@ -148,6 +151,13 @@ int main(int argc, char** argv) {
             drag = true;
         } else if (arg == "--no-ceres") {
             options.runCeres = false;
+        } else if (arg == "--blas") {
+            // The timing, the kernel, the flop bound and the threads only.
+            options.runCeres = false;
+            options.runBaseline = false;
+            options.compareAuxiliary = false;
+            options.smallNoise = 0.0;
+            options.studySeeds = 0;
         } else if (arg == "--study" && i + 1 < argc) {
             study = argv[++i];
         } else if (arg == "--edge-noise" && i + 1 < argc) {
@@ -174,7 +184,7 @@ int main(int argc, char** argv) {
                 return 1;
             }
         } else {
-            std::cerr << "usage: devsurf-bench [--json] [--model NAME]... [--no-ceres]\n"
+            std::cerr << "usage: devsurf-bench [--json] [--model NAME]... [--no-ceres | --blas]\n"
                          "       devsurf-bench --drag [--json]\n"
                          "       devsurf-bench --study MODEL [--edge-noise F | --diameter-noise F]"
                          " [--seeds N] [--iterations N] [--set NAME=VALUE]... [--session | "

@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cstdio>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 namespace devsurf::bench {
@@ -50,8 +51,11 @@ std::string quoted(const std::string& text) {
     return out + "\"";
 }
 
+constexpr int kDgemmSize = 1000;
+
 // Single-core DGEMM rate of the BLAS the process uses (the one CHOLMOD calls), in GFLOP/s:
-// the best of several n×n products, the ceiling for a supernodal factorisation's flops.
+// the best of three 1000×1000 products, the ceiling for a supernodal factorisation's flops.
+// A threaded BLAS is held to one thread for it (runBenchmark).
 double measureDgemmGflops() {
     using Dgemm = void (*)(const char*, const char*, const int*, const int*, const int*,
                            const double*, const double*, const int*, const double*, const int*,
@@ -60,20 +64,41 @@ double measureDgemmGflops() {
     if (!dgemm) {
         return 0.0;
     }
-    const int n = 512;
+    const int n = kDgemmSize;
     std::vector<double> a(static_cast<std::size_t>(n) * n, 0.5);
     std::vector<double> b(a.size(), 0.25);
     std::vector<double> c(a.size(), 0.0);
     const double one = 1.0;
     const double zero = 0.0;
     double best = 0.0;
-    for (int repeat = 0; repeat < 8; ++repeat) {
+    for (int repeat = 0; repeat < 3; ++repeat) {
         const auto start = Clock::now();
         dgemm("N", "N", &n, &n, &n, &one, a.data(), &n, b.data(), &n, &zero, c.data(), &n);
         const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
         best = std::max(best, 2.0 * n * n * static_cast<double>(n) / seconds * 1e-9);
     }
     return best;
+}
+
+// openblas_set_num_threads of the loaded BLAS; false if it has none.
+bool setBlasThreads(int threads) {
+    using SetThreads = void (*)(int);
+    auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+    if (!set) {
+        return false;
+    }
+    set(threads);
+    return true;
+}
+
+// Amdahl's law: the speed-up on `threads` of a run whose `fraction` is parallel.
+double amdahl(double fraction, int threads) {
+    return 1.0 / ((1.0 - fraction) + fraction / threads);
+}
+
+// The parallel fraction that gives `speedup` on two threads (Amdahl's law solved for it).
+double parallelFractionFromTwo(double speedup) {
+    return speedup > 0.0 ? std::clamp(2.0 * (1.0 - 1.0 / speedup), 0.0, 1.0) : 0.0;
 }
 
 struct Timing {
@@ -132,6 +157,16 @@ struct ModelResult {
     };
     std::vector<Study> studies;
     std::string status;
+    // The iteration on one and on two BLAS threads (medians of three runs each); measured
+    // only with a threaded BLAS (`why` says otherwise).
+    struct Threads {
+        bool measured = false;
+        std::string why;
+        Timing one;
+        Timing two;
+        double factorizeSpeedup() const { return one.factorize / two.factorize; }
+        double iterationSpeedup() const { return one.total / two.total; }
+    } threads;
 };
 
 solver::Summary solveFrom(const solver::Problem& problem, std::vector<double>& x,
@@ -149,6 +184,41 @@ solver::Summary solveFrom(const solver::Problem& problem, std::vector<double>& x
     experimental.baseline = baseline;
     projection.setExperimentalOptions(experimental);
     return projection.solve(problem, x, o);
+}
+
+ModelResult::Threads measureThreads(const solver::Problem& problem,
+                                    const std::vector<double>& start,
+                                    const BenchmarkOptions& options) {
+    ModelResult::Threads t;
+    const solver::BlasInfo blas = solver::detectBlas();
+    if (!blas.threaded) {
+        t.why = "single-threaded BLAS";
+        return t;
+    }
+    if (std::thread::hardware_concurrency() < 2) {
+        t.why = "one CPU";
+        return t;
+    }
+    for (const int threads : {1, 2}) {
+        setBlasThreads(threads);
+        std::vector<double> assembly, factorize, solve, total;
+        for (int run = 0; run < 3; ++run) {
+            std::vector<double> x = start;
+            const Timing timing = medianTiming(solveFrom(problem, x, options, false));
+            assembly.push_back(timing.assembly);
+            factorize.push_back(timing.factorize);
+            solve.push_back(timing.solve);
+            total.push_back(timing.total);
+        }
+        Timing& measured = threads == 1 ? t.one : t.two;
+        measured.assembly = median(assembly);
+        measured.factorize = median(factorize);
+        measured.solve = median(solve);
+        measured.total = median(total);
+    }
+    setBlasThreads(blas.threads);
+    t.measured = t.two.factorize > 0.0 && t.two.total > 0.0;
+    return t;
 }
 
 ModelResult runModel(const BenchModel& model, const BenchmarkOptions& options, double dgemmGflops) {
@@ -213,10 +283,20 @@ ModelResult runModel(const BenchModel& model, const BenchmarkOptions& options, d
     log(r.name + ": ours " + number(r.ours.total) + " ms/iteration, residual " +
         number(r.finalResidual));
 
-    std::vector<double> x = start;
-    const solver::Summary baseline = solveFrom(formulation.problem(), x, options, true);
-    r.baseline = medianTiming(baseline);
-    log(r.name + ": baseline " + number(r.baseline.total) + " ms/iteration");
+    if (options.measureThreads) {
+        r.threads = measureThreads(formulation.problem(), start, options);
+        if (r.threads.measured) {
+            log(r.name + ": factorisation on 1 → 2 BLAS threads " +
+                number(r.threads.one.factorize) + " → " + number(r.threads.two.factorize) + " ms");
+        }
+    }
+
+    if (options.runBaseline) {
+        std::vector<double> x = start;
+        const solver::Summary baseline = solveFrom(formulation.problem(), x, options, true);
+        r.baseline = medianTiming(baseline);
+        log(r.name + ": baseline " + number(r.baseline.total) + " ms/iteration");
+    }
 
     if (options.compareAuxiliary) {
         solver::FormulationOptions auxiliaryOptions = formulationOptions;
@@ -298,10 +378,35 @@ double ratio(double a, double b) {
     return b > 0.0 ? a / b : 0.0;
 }
 
+// Per model: the factorisation and the iteration on 1 and 2 BLAS threads, the parallel
+// fraction that the speed-up implies and Amdahl's prediction for 8 threads.
+std::string threadsJson(const ModelResult::Threads& t) {
+    if (!t.measured) {
+        return "{ \"measured\": false, \"why\": " + quoted(t.why) + " }";
+    }
+    const double pf = parallelFractionFromTwo(t.factorizeSpeedup());
+    const double pi = parallelFractionFromTwo(t.iterationSpeedup());
+    return "{ \"measured\": true, \"factorize_ms_1\": " + number(t.one.factorize) +
+           ", \"factorize_ms_2\": " + number(t.two.factorize) +
+           ", \"factorize_speedup_2\": " + number(t.factorizeSpeedup()) +
+           ", \"factorize_parallel_fraction\": " + number(pf) +
+           ", \"factorize_predicted_speedup_8\": " + number(amdahl(pf, 8)) +
+           ", \"iteration_ms_1\": " + number(t.one.total) +
+           ", \"iteration_ms_2\": " + number(t.two.total) +
+           ", \"iteration_speedup_2\": " + number(t.iterationSpeedup()) +
+           ", \"iteration_parallel_fraction\": " + number(pi) +
+           ", \"iteration_predicted_speedup_8\": " + number(amdahl(pi, 8)) + " }";
+}
+
 void writeJson(const std::vector<ModelResult>& results, const solver::BlasInfo& blas, double dgemm,
-               const BenchmarkOptions& options, std::ostream& out) {
+               double dgemmTwo, const BenchmarkOptions& options, std::ostream& out) {
     out << "{\n  \"blas\": " << quoted(blas.describe())
-        << ",\n  \"dgemm_gflops\": " << number(dgemm)
+        << ",\n  \"blas_kernel\": " << quoted(blas.kernel)
+        << ",\n  \"blas_kernel_chosen_by\": " << quoted(blas.kernelChosenBy)
+        << ",\n  \"blas_kernel_requested\": " << quoted(blas.kernelRequested)
+        << ",\n  \"blas_threaded\": " << (blas.threaded ? "true" : "false")
+        << ",\n  \"dgemm_gflops\": " << number(dgemm) << ",\n  \"dgemm_size\": " << kDgemmSize
+        << ",\n  \"dgemm_gflops_2_threads\": " << (dgemmTwo > 0.0 ? number(dgemmTwo) : "null")
         << ",\n  \"iterations\": " << options.iterations
         << ",\n  \"noise_fraction_of_diameter\": " << number(options.noise)
         << ",\n  \"small_noise_fraction_of_diameter\": " << number(options.smallNoise)
@@ -332,6 +437,8 @@ void writeJson(const std::vector<ModelResult>& results, const solver::BlasInfo& 
             << "      \"lower_bound_ms\": " << number(r.lowerBoundMs) << ",\n"
             << "      \"factorize_over_lower_bound\": "
             << number(ratio(r.ours.factorize, r.lowerBoundMs)) << ",\n"
+            << "      \"assembly_share\": " << number(ratio(r.ours.assembly, r.ours.total)) << ",\n"
+            << "      \"threads\": " << threadsJson(r.threads) << ",\n"
             << "      \"paper_figure\": " << quoted(r.paper.figure) << ",\n"
             << "      \"paper_control_points\": " << r.paper.controlPoints << ",\n"
             << "      \"paper_strips\": " << r.paper.strips << ",\n"
@@ -408,8 +515,23 @@ void writeJson(const std::vector<ModelResult>& results, const solver::BlasInfo& 
 }
 
 void writeTable(const std::vector<ModelResult>& results, const solver::BlasInfo& blas, double dgemm,
-                std::ostream& out) {
-    out << "BLAS: " << blas.describe() << "; single-core DGEMM " << number(dgemm) << " GFLOP/s\n";
+                double dgemmTwo, std::ostream& out) {
+    out << "BLAS: " << blas.describe() << "\n";
+    if (!blas.kernel.empty()) {
+        out << "BLAS kernel: " << blas.kernel << ", chosen by " << blas.kernelChosenBy;
+        if (blas.kernelChosenBy == "OPENBLAS_CORETYPE") {
+            out << "=" << blas.kernelRequested;
+        } else if (!blas.kernelRequested.empty()) {
+            out << " (OPENBLAS_CORETYPE=" << blas.kernelRequested << ")";
+        }
+        out << "\n";
+    }
+    out << "DGEMM " << kDgemmSize << "×" << kDgemmSize
+        << ", one thread, best of 3: " << number(dgemm) << " GFLOP/s";
+    if (dgemmTwo > 0.0) {
+        out << "; two threads " << number(dgemmTwo) << " GFLOP/s";
+    }
+    out << "\n";
     char line[512];
     std::snprintf(line, sizeof line, "%-18s %7s %7s %9s %9s %9s %9s %9s %9s %9s %9s\n", "model",
                   "vars", "rows", "ours ms", "fact ms", "bound ms", "paper ms", "base ms",
@@ -425,6 +547,30 @@ void writeTable(const std::vector<ModelResult>& results, const solver::BlasInfo&
     }
     if (!ceresAvailable()) {
         out << runCeres(solver::Problem(), {}, 0.0, 0.0).message << "\n";
+    }
+    // The factorisation against its flop bound at the DGEMM rate, and on two BLAS threads.
+    out << "\nFactorisation (medians per iteration; bound = CHOLMOD's flops at the DGEMM rate)\n";
+    std::snprintf(line, sizeof line, "%-18s %11s %9s %8s %9s %10s %9s %7s %7s %7s\n", "model",
+                  "method", "Mflop", "fact ms", "GFLOP/s", "fact/bound", "assembly", "1→2 thr",
+                  "par", "8 thr");
+    out << line;
+    for (const ModelResult& r : results) {
+        char threads[64] = "      -       -       -";
+        if (r.threads.measured) {
+            const double p = parallelFractionFromTwo(r.threads.factorizeSpeedup());
+            std::snprintf(threads, sizeof threads, "%7.2f %7.2f %7.2f",
+                          r.threads.factorizeSpeedup(), p, amdahl(p, 8));
+        }
+        std::snprintf(line, sizeof line, "%-18s %11s %9.1f %8.3f %9.2f %10.2f %8.0f%% %s\n",
+                      r.name.c_str(), r.supernodal ? "supernodal" : "simplicial", r.flops * 1e-6,
+                      r.ours.factorize, r.gflops, ratio(r.ours.factorize, r.lowerBoundMs),
+                      100.0 * ratio(r.ours.assembly, r.ours.total), threads);
+        out << line;
+    }
+    if (!results.empty() && !results.front().threads.measured) {
+        out << "Threads not measured (" << results.front().threads.why
+            << "): run with a threaded OpenBLAS, e.g. "
+               "LD_LIBRARY_PATH=/usr/lib/x86_64-linux-gnu/openblas-pthread\n";
     }
 }
 
@@ -451,15 +597,23 @@ int runBenchmark(const BenchmarkOptions& options, std::ostream& out) {
         }
     }
     const solver::BlasInfo blas = solver::detectBlas();
+    setBlasThreads(1);
     const double dgemm = measureDgemmGflops();
+    // With a threaded BLAS, DGEMM on two threads too: how much of a second core the machine
+    // gave during the run (the ceiling for the factorisation's speed-up on two threads).
+    double dgemmTwo = 0.0;
+    if (blas.threaded && setBlasThreads(2)) {
+        dgemmTwo = measureDgemmGflops();
+    }
+    setBlasThreads(blas.threads);
     std::vector<ModelResult> results;
     for (const BenchModel& model : models) {
         results.push_back(runModel(model, effective, dgemm));
     }
     if (options.json) {
-        writeJson(results, blas, dgemm, effective, out);
+        writeJson(results, blas, dgemm, dgemmTwo, effective, out);
     } else {
-        writeTable(results, blas, dgemm, out);
+        writeTable(results, blas, dgemm, dgemmTwo, out);
     }
     return 0;
 }

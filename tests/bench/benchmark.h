@@ -19,6 +19,9 @@ struct BenchmarkOptions {
     double eps2 = 1e-3;
     double ceresCapSeconds = 60.0;
     bool runCeres = true;
+    bool runBaseline = true;
+    // The factorisation and the iteration on 1 and 2 BLAS threads (only with a threaded BLAS).
+    bool measureThreads = true;
     bool compareAuxiliary = true; // also time the auxiliary-variable formulation
     // Quality over seeds (quality_study.h): 10 iterations (20 on the ~40,000-variable model)
     // from σ = 10 % of the mean control-polygon edge length and from σ = 1 % of the diameter,
@@ -30,8 +33,9 @@ struct BenchmarkOptions {
 };
 
 // The solver benchmark (tests/bench): for each model, 10 iterations from the perturbed flat
-// model with three boundary vertices fixed; timing split, flops, DGEMM bound, quality, the
-// rebuild baseline and Ceres on the same start. Writes JSON or a table to `out`. Returns 0 on
+// model with three boundary vertices fixed; timing split, flops, the BLAS kernel, DGEMM rate
+// and bound, the speed-up on two BLAS threads, quality, the rebuild baseline and Ceres on the
+// same start. Writes JSON or a table to `out`. Returns 0 on
 // success.
 int runBenchmark(const BenchmarkOptions& options, std::ostream& out);
 

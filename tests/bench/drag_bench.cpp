@@ -5,6 +5,7 @@
 #include "model/document/commands/command_or_error.h"
 #include "model/document/document.h"
 #include "model/examples.h"
+#include "solver/core/blas_info.h"
 #include "solver/formulation/perturbation.h"
 #include "solver/quality/shape_change.h"
 #include "solver/worker/solver_worker.h"
@@ -289,8 +290,11 @@ DragBenchReport runDragBench(const DragBenchOptions& options) {
 
 void printDragBench(const DragBenchReport& report, bool json, std::ostream& out) {
     char line[512];
+    // The BLAS kernel the drags' factorisations ran (names without quotes or escapes).
+    const solver::BlasInfo blas = solver::detectBlas();
     if (json) {
-        out << "{\"drag\": {\"drags\": [";
+        out << "{\"drag\": {\"blas_kernel\": \"" << blas.kernel
+            << "\", \"blas_kernel_chosen_by\": \"" << blas.kernelChosenBy << "\", \"drags\": [";
         for (std::size_t i = 0; i < report.drags.size(); ++i) {
             const DragBenchRow& r = report.drags[i];
             std::snprintf(line, sizeof line,
@@ -316,6 +320,9 @@ void printDragBench(const DragBenchReport& report, bool json, std::ostream& out)
                       s.error.c_str());
         out << line;
         return;
+    }
+    if (!blas.kernel.empty()) {
+        out << "BLAS kernel: " << blas.kernel << ", chosen by " << blas.kernelChosenBy << "\n";
     }
     out << "Drag through the worker (move to result applied; targets: median <= 16 ms, stall "
            "<= 20 ms)\n";

@@ -32,6 +32,16 @@ private slots:
         const QJsonObject root = document.object();
         QVERIFY(!root.value("blas").toString().isEmpty());
         QVERIFY(root.value("dgemm_gflops").toDouble() > 0.0);
+        QCOMPARE(root.value("dgemm_size").toInt(), 1000);
+        // The kernel and who chose it, for an OpenBLAS (its name in the description then).
+        const QString kernel = root.value("blas_kernel").toString();
+        if (!kernel.isEmpty()) {
+            QVERIFY(root.value("blas").toString().contains(kernel));
+            const QString by = root.value("blas_kernel_chosen_by").toString();
+            QVERIFY2(by == "OpenBLAS" || by == "DevSurf" || by == "OPENBLAS_CORETYPE",
+                     qPrintable(by));
+        }
+        QVERIFY(root.value("blas_threaded").isBool());
         const QJsonArray models = root.value("models").toArray();
         QCOMPARE(models.size(), 1);
         const QJsonObject m = models.first().toObject();
@@ -51,6 +61,22 @@ private slots:
         const QString method = m.value("factorization").toString();
         QVERIFY(method == "simplicial" || method == "supernodal");
         QVERIFY(m.value("lower_bound_ms").toDouble() > 0.0);
+        QVERIFY(m.value("factorize_over_lower_bound").toDouble() > 0.0);
+        const double assemblyShare = m.value("assembly_share").toDouble();
+        QVERIFY(assemblyShare > 0.0 && assemblyShare < 1.0);
+        // Threads are measured with a threaded BLAS only; otherwise the report says why.
+        const QJsonObject threads = m.value("threads").toObject();
+        if (!root.value("blas_threaded").toBool()) {
+            QVERIFY(!threads.value("measured").toBool());
+        }
+        if (threads.value("measured").toBool()) {
+            QVERIFY(threads.value("factorize_speedup_2").toDouble() > 0.0);
+            const double p = threads.value("factorize_parallel_fraction").toDouble();
+            QVERIFY(p >= 0.0 && p <= 1.0);
+            QVERIFY(threads.value("factorize_predicted_speedup_8").toDouble() >= 1.0);
+        } else {
+            QVERIFY(!threads.value("why").toString().isEmpty());
+        }
         QCOMPARE(m.value("paper_s_per_iter").toDouble(), 0.04);
         QVERIFY(m.value("baseline_ms_per_iter").toDouble() > 0.0);
         // Quality, measured on the geometry: this model reaches the targets from 1 % noise.
