@@ -198,11 +198,20 @@ std::string interchangeJson(const model::Project& project, int samplesPerInterva
     for (const model::CompositeSurface& surface : project.surfaces) {
         surfaces.append(surfaceObject(surface, samplesPerInterval));
     }
+    QJsonArray curves;
+    for (const model::ReferenceCurve& curve : project.referenceCurves) {
+        curves.append(QJsonObject{
+            {"name", QString::fromStdString(curve.name)},
+            {"source", QString::fromStdString(curve.source)},
+            {"points", array(curve.points, [](const model::Vec3& p) { return point(p); })},
+        });
+    }
     const QJsonObject root{
         {"format", "devsurf-interchange"},
         {"version", kInterchangeVersion},
         {"units", QString::fromStdString(project.units)},
         {"surfaces", surfaces},
+        {"referenceCurves", curves},
     };
     return QJsonDocument(root).toJson(QJsonDocument::Compact).toStdString();
 }

@@ -302,6 +302,32 @@ private slots:
         QCOMPARE(corners[0].toArray()[0].toDouble(), 0.0);
         QCOMPARE(corners[2].toArray()[1].toDouble(), 200.0);
     }
+
+    void referenceCurvesAreWritten() {
+        model::Project project = model::makeExample("sheet");
+        QVERIFY(parse(io::interchangeJson(project, 2))["referenceCurves"].toArray().isEmpty());
+        project.referenceCurves.push_back({"SPLINE 1", "guides", {{0, 0, 0}, {0.1, 2, -3e-17}}});
+        project.referenceCurves.push_back({"circle", "", {{1, 2, 3}, {4, 5, 6}, {1, 2, 3}}});
+        const QJsonArray curves =
+            parse(io::interchangeJson(project, 2))["referenceCurves"].toArray();
+        QCOMPARE(curves.size(), 2);
+        for (qsizetype c = 0; c < curves.size(); ++c) {
+            const model::ReferenceCurve& curve =
+                project.referenceCurves[static_cast<std::size_t>(c)];
+            const QJsonObject object = curves[c].toObject();
+            QCOMPARE(object["name"].toString().toStdString(), curve.name);
+            QCOMPARE(object["source"].toString().toStdString(), curve.source);
+            const QJsonArray points = object["points"].toArray();
+            QCOMPARE(static_cast<std::size_t>(points.size()), curve.points.size());
+            for (qsizetype i = 0; i < points.size(); ++i) {
+                const model::Vec3& p = curve.points[static_cast<std::size_t>(i)];
+                const QJsonArray q = points[i].toArray();
+                QCOMPARE(q[0].toDouble(), p.x); // bit for bit
+                QCOMPARE(q[1].toDouble(), p.y);
+                QCOMPARE(q[2].toDouble(), p.z);
+            }
+        }
+    }
 };
 
 DEVSURF_REGISTER_TEST(TstInterchangeJson);
