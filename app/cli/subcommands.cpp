@@ -177,8 +177,8 @@ const std::vector<SubcommandSpec>& subcommands() {
                          {"o", "OUT", "The file to write (- for standard output)."}})},
         {"import-curves",
          "import-curves FILE CURVES [--tolerance MM] -o OUT.devsurf",
-         "Add the curves of a DXF (LINE, POLYLINE, LWPOLYLINE, SPLINE, ARC,\n"
-         "CIRCLE), SVG (every shape, in the plane z = 0), STEP or IGES file\n"
+         "Add the curves of a DXF (LINE, POLYLINE, LWPOLYLINE, SPLINE, ARC, CIRCLE,\n"
+         "ELLIPSE), SVG (every shape, in the plane z = 0), STEP or IGES file\n"
          "(every edge) to the project as reference curves, sampled within MM\n"
          "(default 0.05), in mm. A file that cannot\n"
          "be read changes nothing and writes nothing. The output may be the\n"

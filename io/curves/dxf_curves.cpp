@@ -145,6 +145,37 @@ public:
             circle("CIRCLE", {d.cx, d.cy, d.cz}, d.radius, 0.0, 2 * M_PI);
         }
     }
+    // An ellipse (or an arc of one) in world coordinates: centre, major axis as a vector, the
+    // minor axis ratio times as long, turned by 90° about the extrusion; angles are parameters.
+    void addEllipse(const DL_EllipseData& d) override {
+        if (!begin()) {
+            return;
+        }
+        const Vec3 centre{d.cx, d.cy, d.cz};
+        const Vec3 major{d.mx, d.my, d.mz};
+        const double a = major.norm();
+        double t0 = d.angle1, t1 = d.angle2;
+        while (std::isfinite(t0) && std::isfinite(t1) && t1 <= t0 && t0 - t1 < 1e6) {
+            t1 += 2 * M_PI;
+        }
+        if (!finite(centre) || !(a > 0.0) || !std::isfinite(a) || !(d.ratio > 0.0) ||
+            !(d.ratio <= 1.0) || !std::isfinite(t0) || !(t1 > t0) || t1 - t0 > 2 * M_PI + 1e-9) {
+            ++m_skipped;
+            return;
+        }
+        const Vec3 minor = cross(Ocs(extrusion()).z, major) * d.ratio;
+        // Chords of the circle of radius a (the largest radius of curvature's bound on the
+        // second derivative) stray no farther than the tolerance.
+        const std::vector<Vec3> circle =
+            sampleArc(Vec3(0, 0, 0), 1.0, Vec3(1, 0, 0), Vec3(0, 1, 0), t0, t1,
+                      std::min(m_tolerance / m_scale / a, 1.0));
+        std::vector<Vec3> points;
+        points.reserve(circle.size());
+        for (const Vec3& c : circle) {
+            points.push_back(centre + major * c.x + minor * c.y);
+        }
+        add("ELLIPSE", std::move(points));
+    }
     void addPolyline(const DL_PolylineData& d) override {
         if (!begin()) {
             return;
@@ -187,7 +218,6 @@ public:
     }
     // Everything else that is an entity ends the pending one and is not a curve.
     void addPoint(const DL_PointData&) override { other(); }
-    void addEllipse(const DL_EllipseData&) override { other(); }
     void addInsert(const DL_InsertData&) override { other(); }
     void addText(const DL_TextData&) override { other(); }
     void addMText(const DL_MTextData&) override { other(); }

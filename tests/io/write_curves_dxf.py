@@ -29,6 +29,9 @@ msp.add_circle((100, 100, 0), 25, dxfattribs={"layer": "CIRCLES"})
 msp.add_arc((0, 0, 0), 10, 0, 90, dxfattribs={"layer": "CIRCLES"})
 # Seen from below (extrusion -z): the OCS centre (10, 0) is (-10, 0) in the world.
 msp.add_arc((10, 0, 0), 5, 0, 180, dxfattribs={"layer": "FLIPPED", "extrusion": (0, 0, -1)})
+# Half an ellipse about (50, -40): semi-axes 30 (along x) and 15, from (80, -40) over the top.
+msp.add_ellipse((50, -40, 0), major_axis=(30, 0, 0), ratio=0.5, start_param=0,
+                end_param=math.pi, dxfattribs={"layer": "ELLIPSES"})
 msp.add_text("not a curve", dxfattribs={"layer": "TEXT"})
 block = doc.blocks.new(name="MARK")
 block.add_line((0, 0), (1, 1))

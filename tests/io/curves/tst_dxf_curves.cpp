@@ -72,14 +72,35 @@ private slots:
         for (const model::ReferenceCurve& curve : m_curves.curves) {
             names.push_back(curve.name);
         }
-        const std::vector<std::string> expected{"LINE 1",   "POLYLINE 2", "POLYLINE 3", "SPLINE 4",
-                                                "SPLINE 5", "CIRCLE 6",   "ARC 7",      "ARC 8"};
+        const std::vector<std::string> expected{"LINE 1",   "POLYLINE 2", "POLYLINE 3",
+                                                "SPLINE 4", "SPLINE 5",   "CIRCLE 6",
+                                                "ARC 7",    "ARC 8",      "ELLIPSE 9"};
         QCOMPARE(names, expected);
         // The text and the block insert are not curves; the line inside the block definition is
         // not drawn where it is defined.
         QCOMPARE(m_curves.skipped, 2);
         QCOMPARE(named(m_curves.curves, "LINE 1")->source, std::string("LINES"));
         QCOMPARE(named(m_curves.curves, "SPLINE 5")->source, std::string("SPLINES"));
+    }
+
+    void ellipsesLieOnTheirCurves() {
+        const auto* ellipse = named(m_curves.curves, "ELLIPSE 9");
+        QCOMPARE(ellipse->source, std::string("ELLIPSES"));
+        QVERIFY(model::distance(ellipse->points.front(), {80, -40, 0}) < 1e-9);
+        QVERIFY(model::distance(ellipse->points.back(), {20, -40, 0}) < 1e-9);
+        QVERIFY(ellipse->points.size() > 8);
+        for (const Vec3& p : ellipse->points) {
+            const double u = (p.x - 50) / 30, v = (p.y + 40) / 15;
+            QVERIFY(std::abs(u * u + v * v - 1.0) < 1e-9);
+            QVERIFY(p.y >= -40 - 1e-9 && p.z == 0.0);
+        }
+        // Within the tolerance between samples: the middle of every chord is near the curve.
+        for (std::size_t i = 0; i + 1 < ellipse->points.size(); ++i) {
+            const Vec3 m = (ellipse->points[i] + ellipse->points[i + 1]) * 0.5;
+            const double t = std::atan2((m.y + 40) / 15, (m.x - 50) / 30);
+            const Vec3 on(50 + 30 * std::cos(t), -40 + 15 * std::sin(t), 0);
+            QVERIFY(model::distance(m, on) < kTolerance * 1.01);
+        }
     }
 
     void lineAndPolylinesKeepTheirPoints() {
