@@ -1380,6 +1380,49 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::FitEdgeToCurveReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="219"/>
+        <source>Lay a crease or boundary onto a reference curve: import curves first (File ▸ Import Curves…).</source>
+        <translation>Eine Falz oder einen Rand an eine Referenzkurve anlegen: zuerst Kurven importieren (Datei ▸ Kurven importieren…).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="221"/>
+        <source>Lay a crease or boundary onto a reference curve: select one spline edge.</source>
+        <translation>Eine Falz oder einen Rand an eine Referenzkurve anlegen: wählen Sie eine Splinekante.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="222"/>
+        <source>Lay the selected crease or boundary onto the reference curve nearest it; Solve then makes the surface developable again.</source>
+        <translation>Die gewählte Falz oder den gewählten Rand an die nächstgelegene Referenzkurve anlegen; Lösen macht die Fläche danach wieder abwickelbar.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="253"/>
+        <source>Edge %1 was not fitted: both its ends are nearest the same point of %2.</source>
+        <translation>Kante %1 wurde nicht angelegt: beide Enden liegen demselben Punkt von %2 am nächsten.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="256"/>
+        <source>Edge %1 was not fitted: %2 has too few points.</source>
+        <translation>Kante %1 wurde nicht angelegt: %2 hat zu wenige Punkte.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="260"/>
+        <source>Fit Edge to Curve</source>
+        <translation>Kante an Kurve anlegen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="262"/>
+        <source>Cannot fit the edge to the curve</source>
+        <translation>Die Kante kann nicht an die Kurve angelegt werden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="267"/>
+        <source>Edge %1 lies on %2 within %3 mm; Solve (Ctrl+Return) makes the surface developable again.</source>
+        <translation>Kante %1 liegt bis auf %3 mm auf %2; Lösen (Ctrl+Return) macht die Fläche wieder abwickelbar.</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::HoldSheetReaction</name>
     <message>
         <location filename="../app/gui/reactions/sheet_reactions.cpp" line="71"/>
@@ -1421,74 +1464,74 @@
 <context>
     <name>devsurf::app::ImportCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="37"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="44"/>
         <source>%1 is not a file DevSurf reads curves from; choose a DXF, SVG, STEP or IGES file.</source>
         <translation>Aus %1 kann DevSurf keine Kurven lesen; wählen Sie eine DXF-, SVG-, STEP- oder IGES-Datei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="40"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="47"/>
         <source>This build of DevSurf reads curves from DXF and SVG files only; save the curves as DXF.</source>
         <translation>Diese DevSurf-Version liest Kurven nur aus DXF- und SVG-Dateien; speichern Sie die Kurven als DXF.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="43"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="50"/>
         <source>%1 cannot be read; check that it exists and that you may read it.</source>
         <translation>%1 kann nicht gelesen werden; prüfen Sie, ob die Datei existiert und Sie sie lesen dürfen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="47"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="54"/>
         <source>%1 is too large to import curves from.</source>
         <translation>%1 ist zu groß, um Kurven daraus zu importieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="49"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="56"/>
         <source>%1 is damaged or not a valid file of its type; nothing was imported.</source>
         <translation>%1 ist beschädigt oder keine gültige Datei ihres Typs; es wurde nichts importiert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="53"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="60"/>
         <source>%1 holds no lines, polylines, splines, arcs or circles to import.</source>
         <translation>%1 enthält keine Linien, Polylinien, Splines, Bögen oder Kreise zum Importieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="59"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="66"/>
         <source>The curves of %1 could not be imported.</source>
         <translation>Die Kurven von %1 konnten nicht importiert werden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="84"/>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="113"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="91"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="120"/>
         <source>Import Curves</source>
         <translation>Kurven importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="85"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="92"/>
         <source>Curve files (*.dxf *.svg *.step *.stp *.iges *.igs);;DXF (*.dxf);;SVG (*.svg);;STEP (*.step *.stp);;IGES (*.iges *.igs)</source>
         <translation>Kurvendateien (*.dxf *.svg *.step *.stp *.iges *.igs);;DXF (*.dxf);;SVG (*.svg);;STEP (*.step *.stp);;IGES (*.iges *.igs)</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="110"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="117"/>
         <source>Reading curves from %1…</source>
         <translation>Kurven aus %1 werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="111"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="118"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="150"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="157"/>
         <source>Import of curves from %1 cancelled</source>
         <translation>Import der Kurven aus %1 abgebrochen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="152"/>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="158"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="159"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="165"/>
         <source>Cannot import curves</source>
         <translation>Kurven können nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="160"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="167"/>
         <source>Imported the curves of %1</source>
         <translation>Die Kurven von %1 wurden importiert</translation>
     </message>
@@ -1607,7 +1650,7 @@
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="211"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="106"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="110"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
@@ -1854,17 +1897,17 @@
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="27"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="28"/>
         <source>&amp;Solve</source>
         <translation>&amp;Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="28"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="29"/>
         <source>Ctrl+Return</source>
         <translation>Ctrl+Return</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_solver.cpp" line="31"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="32"/>
         <source>Make every surface developable again: %n iteration(s) of the solver, one undo step. Pinned vertices stay where they are.</source>
         <translation>
             <numerusform>Macht jede Fläche wieder abwickelbar: %n Iteration des Lösers, ein Rückgängig-Schritt. Festgehaltene Ecken bleiben, wo sie sind.</numerusform>
@@ -1872,217 +1915,222 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="39"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
         <source>Solver &amp;Iterations…</source>
         <translation>Löser-&amp;Iterationen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="41"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="42"/>
         <source>The most solver iterations Tools ▸ Solve runs; it stops earlier once the surface has converged.</source>
         <translation>Höchstzahl der Iterationen von Werkzeuge ▸ Lösen; es endet früher, sobald die Fläche konvergiert ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="46"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="47"/>
         <source>Solver Iterations</source>
         <translation>Löser-Iterationen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="46"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="47"/>
         <source>Most iterations of Tools ▸ Solve:</source>
         <translation>Höchstzahl der Iterationen von Werkzeuge ▸ Lösen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="75"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="79"/>
         <source>R&amp;otate Vertices</source>
         <translation>Ecken dr&amp;ehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="76"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="80"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="79"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="83"/>
         <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
         <translation>Drehwerkzeug (R): Wählen Sie zwei oder mehr Ecken aus, drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie die Maus seitwärts; sie drehen sich um eine Achse durch ihren Schwerpunkt (senkrecht oder wie in der Werkzeugleiste gewählt), und die Fläche folgt. Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="97"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="101"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>Beenden Sie zuerst das Ziehen; es löst bereits während der Bewegung.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="55"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="55"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
         <source>&amp;Drag Vertices and Creases</source>
         <translation>Ecken und Falze &amp;ziehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="58"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="59"/>
         <source>Drag tool: press on a vertex in the 3D view and move it, the surface follows and stays developable; press on a crease to slide it within its patches. The axis chosen in the toolbar, or holding X, Y or Z, moves along that axis; Esc cancels the drag (G).</source>
         <translation>Ziehwerkzeug: Drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie sie, die Fläche folgt und bleibt abwickelbar; drücken Sie auf einen Falz, um ihn innerhalb seiner Flächenstücke zu verschieben. Die in der Werkzeugleiste gewählte Achse oder gedrückt gehaltenes X, Y oder Z bewegt entlang dieser Achse; Esc bricht das Ziehen ab (G).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="66"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="67"/>
         <source>S&amp;nap to Reference Curves</source>
         <translation>An Referenzkurven &amp;fangen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="69"/>
         <source>While dragging a vertex (no axis chosen), put it on the nearest reference curve drawn within 10 pixels of the mouse.</source>
         <translation>Beim Ziehen eines Eckpunkts (ohne gewählte Achse) wird er auf die nächste Referenzkurve gesetzt, die höchstens 10 Pixel von der Maus entfernt gezeichnet ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="105"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="75"/>
+        <source>&amp;Fit Edge to Reference Curve</source>
+        <translation>Kante an Referenzkurve an&amp;legen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="109"/>
         <source>&amp;Cancel Solve</source>
         <translation>Lösen &amp;abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="108"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="112"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>Das laufende Lösen beenden; der Entwurf bleibt, wie er ist (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="132"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="136"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>Lösen: Iteration %1 von %2, Residuum %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="145"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="149"/>
         <source>&amp;Lengths While Dragging</source>
         <translation>&amp;Längen beim Ziehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="157"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="161"/>
         <source>&amp;Automatic</source>
         <translation>&amp;Automatisch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="158"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="162"/>
         <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over, collapses a strip or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
         <translation>Das Ziehen und Drehen von Ecken behält die Längen bei. Wo das Blatt so nicht folgen kann (das Ziehen konvergiert nicht, faltet sich zurück, lässt einen Streifen zusammenfallen oder seine Abwicklung überlappt sich selbst), wird es beim Loslassen mit Dehnen des Blatts wiederholt, und das bessere der beiden Ergebnisse bleibt; das Löser-Fenster sagt es.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="162"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="166"/>
         <source>&amp;Keep Lengths</source>
         <translation>Längen &amp;beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="163"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="167"/>
         <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape and fold. A motion the sheet cannot make without stretching then may not converge. Dragged creases always resize their patches.</source>
         <translation>Beim Ziehen oder Drehen von Ecken biegt sich das Blatt, statt sich zu dehnen: entfernte Teile bleiben an ihrem Platz, und gekrümmte Falze behalten ihre Form und falten sich. Eine Bewegung, die das Blatt nicht ohne Dehnen ausführen kann, konvergiert dann unter Umständen nicht. Gezogene Falze ändern die Größe ihrer Flächenstücke immer.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="167"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="171"/>
         <source>Let &amp;Stretch</source>
         <translation>&amp;Dehnen zulassen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="168"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="172"/>
         <source>While dragging or rotating vertices, the sheet may stretch: it stays developable and its development changes, curved creases may be pulled straight and large drags may crumple it.</source>
         <translation>Beim Ziehen oder Drehen von Ecken darf sich das Blatt dehnen: es bleibt abwickelbar und seine Abwicklung ändert sich, gekrümmte Falze können gerade gezogen werden, und große Bewegungen können es zerknittern.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="190"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="194"/>
         <source>Motion &amp;Axis</source>
         <translation>Bewegungs&amp;achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="206"/>
         <source>&amp;Free</source>
         <translation>&amp;Frei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="203"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="207"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>Freie Bewegung: Das Ziehwerkzeug bewegt Ecken in der Bildebene; das Drehwerkzeug dreht sie um die senkrechte Achse (Z) oder um die Blickachse, wenn Werkzeuge ▸ Bewegungsachse ▸ Um die Blickachse drehen eingeschaltet ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="206"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="210"/>
         <source>&amp;X Axis</source>
         <translation>&amp;X-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="207"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="211"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang X; das Drehwerkzeug dreht sie um eine zu X parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes Y oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="209"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="213"/>
         <source>&amp;Y Axis</source>
         <translation>&amp;Y-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="210"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="214"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Y; das Drehwerkzeug dreht sie um eine zu Y parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="212"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="216"/>
         <source>&amp;Z Axis</source>
         <translation>&amp;Z-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="213"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="217"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Z; das Drehwerkzeug dreht sie um eine zu Z parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Y hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="237"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="241"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>Um die &amp;Blickachse drehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="240"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="244"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>Bei der Achswahl „Frei“ dreht das Drehwerkzeug die Ecken um die Blickrichtung durch ihren Schwerpunkt statt um die senkrechte Achse.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="258"/>
         <source>Colour &amp;By</source>
         <translation>&amp;Färben nach</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
         <source>&amp;Patch</source>
         <translation>&amp;Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
         <source>&amp;Developability</source>
         <translation>&amp;Abwickelbarkeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
         <source>&amp;Flatness</source>
         <translation>&amp;Ebenheit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="263"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="267"/>
         <source>&amp;Angle Defect</source>
         <translation>&amp;Winkeldefekt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="265"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="269"/>
         <source>Every patch in its own colour.</source>
         <translation>Jedes Flächenstück in seiner eigenen Farbe.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="270"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>Wie weit jedes abgetastete Streifenviereck von abwickelbar entfernt ist: das normierte |det(a−b, a′, b′)|, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="268"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="272"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>Ebenheit δ jedes abgetasteten Vierecks: der Abstand seiner Diagonalen durch das Mittel seiner zwei kürzesten Kanten, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="270"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="274"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>Winkeldefekt |K| = |2π − Σ Winkel| an den inneren Ecken des abgetasteten Netzes, im Bogenmaß, logarithmisch skaliert.</translation>
     </message>
@@ -2772,7 +2820,7 @@
 <context>
     <name>devsurf::app::RemoveReferenceCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="177"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="184"/>
         <source>Cannot remove the reference curves</source>
         <translation>Die Referenzkurven können nicht entfernt werden</translation>
     </message>
@@ -3965,17 +4013,17 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="29"/>
+        <location filename="../app/gui/main.cpp" line="32"/>
         <source>Design developable surfaces and curved-crease origami.</source>
         <translation>Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="33"/>
+        <location filename="../app/gui/main.cpp" line="36"/>
         <source>A project file to open.</source>
         <translation>Eine zu öffnende Projektdatei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="36"/>
+        <location filename="../app/gui/main.cpp" line="39"/>
         <source>Start with a built-in example.</source>
         <translation>Mit einem eingebauten Beispiel beginnen.</translation>
     </message>

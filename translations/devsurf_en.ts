@@ -177,7 +177,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_solver.cpp" line="31"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="32"/>
         <source>Make every surface developable again: %n iteration(s) of the solver, one undo step. Pinned vertices stay where they are.</source>
         <translation>
             <numerusform>Make every surface developable again: %n iteration of the solver, one undo step. Pinned vertices stay where they are.</numerusform>

@@ -1365,6 +1365,49 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::FitEdgeToCurveReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="219"/>
+        <source>Lay a crease or boundary onto a reference curve: import curves first (File ▸ Import Curves…).</source>
+        <translation>折り目または境界を参照曲線に合わせます: まず曲線を読み込んでください (ファイル ▸ 曲線を読み込む…)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="221"/>
+        <source>Lay a crease or boundary onto a reference curve: select one spline edge.</source>
+        <translation>折り目または境界を参照曲線に合わせます: スプライン辺を 1 本選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="222"/>
+        <source>Lay the selected crease or boundary onto the reference curve nearest it; Solve then makes the surface developable again.</source>
+        <translation>選んだ折り目または境界を最も近い参照曲線に合わせます。その後ソルブで曲面を再び可展にします。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="253"/>
+        <source>Edge %1 was not fitted: both its ends are nearest the same point of %2.</source>
+        <translation>辺 %1 は合わせられませんでした: 両端が %2 の同じ点に最も近いためです。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="256"/>
+        <source>Edge %1 was not fitted: %2 has too few points.</source>
+        <translation>辺 %1 は合わせられませんでした: %2 の点が少なすぎます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="260"/>
+        <source>Fit Edge to Curve</source>
+        <translation>辺を曲線に合わせる</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="262"/>
+        <source>Cannot fit the edge to the curve</source>
+        <translation>辺を曲線に合わせられません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="267"/>
+        <source>Edge %1 lies on %2 within %3 mm; Solve (Ctrl+Return) makes the surface developable again.</source>
+        <translation>辺 %1 は %2 に %3 mm 以内で重なりました。ソルブ (Ctrl+Return) で曲面を再び可展にします。</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::HoldSheetReaction</name>
     <message>
         <location filename="../app/gui/reactions/sheet_reactions.cpp" line="71"/>
@@ -1406,74 +1449,74 @@
 <context>
     <name>devsurf::app::ImportCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="37"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="44"/>
         <source>%1 is not a file DevSurf reads curves from; choose a DXF, SVG, STEP or IGES file.</source>
         <translation>%1 は DevSurf が曲線を読み込めるファイルではありません。DXF、SVG、STEP または IGES ファイルを選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="40"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="47"/>
         <source>This build of DevSurf reads curves from DXF and SVG files only; save the curves as DXF.</source>
         <translation>この DevSurf は DXF と SVG ファイルからのみ曲線を読み込みます。曲線を DXF で保存してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="43"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="50"/>
         <source>%1 cannot be read; check that it exists and that you may read it.</source>
         <translation>%1 を読み込めません。ファイルが存在し、読み取り権限があるか確認してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="47"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="54"/>
         <source>%1 is too large to import curves from.</source>
         <translation>%1 は大きすぎて曲線を読み込めません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="49"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="56"/>
         <source>%1 is damaged or not a valid file of its type; nothing was imported.</source>
         <translation>%1 は壊れているか、その形式の有効なファイルではありません。何も読み込んでいません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="53"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="60"/>
         <source>%1 holds no lines, polylines, splines, arcs or circles to import.</source>
         <translation>%1 には読み込める線分、ポリライン、スプライン、円弧、円がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="59"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="66"/>
         <source>The curves of %1 could not be imported.</source>
         <translation>%1 の曲線を読み込めませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="84"/>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="113"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="91"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="120"/>
         <source>Import Curves</source>
         <translation>曲線を読み込む</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="85"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="92"/>
         <source>Curve files (*.dxf *.svg *.step *.stp *.iges *.igs);;DXF (*.dxf);;SVG (*.svg);;STEP (*.step *.stp);;IGES (*.iges *.igs)</source>
         <translation>曲線ファイル (*.dxf *.svg *.step *.stp *.iges *.igs);;DXF (*.dxf);;SVG (*.svg);;STEP (*.step *.stp);;IGES (*.iges *.igs)</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="110"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="117"/>
         <source>Reading curves from %1…</source>
         <translation>%1 から曲線を読み込んでいます…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="111"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="118"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="150"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="157"/>
         <source>Import of curves from %1 cancelled</source>
         <translation>%1 からの曲線の読み込みを中止しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="152"/>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="158"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="159"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="165"/>
         <source>Cannot import curves</source>
         <translation>曲線を読み込めません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="160"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="167"/>
         <source>Imported the curves of %1</source>
         <translation>%1 の曲線を読み込みました</translation>
     </message>
@@ -1597,7 +1640,7 @@
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="211"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="106"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="110"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
@@ -1835,234 +1878,239 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="27"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="28"/>
         <source>&amp;Solve</source>
         <translation>ソルブ(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="28"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="29"/>
         <source>Ctrl+Return</source>
         <translation>Ctrl+Return</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_solver.cpp" line="31"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="32"/>
         <source>Make every surface developable again: %n iteration(s) of the solver, one undo step. Pinned vertices stay where they are.</source>
         <translation>
             <numerusform>すべての曲面を可展面に戻します: ソルバーを %n 回反復し、1 回の取り消し操作にまとめます。固定した頂点は動きません。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="39"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
         <source>Solver &amp;Iterations…</source>
         <translation>ソルバーの反復回数(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="41"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="42"/>
         <source>The most solver iterations Tools ▸ Solve runs; it stops earlier once the surface has converged.</source>
         <translation>ツール ▸ ソルブで実行する反復回数の上限。曲面が収束すればそれより前に終わります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="46"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="47"/>
         <source>Solver Iterations</source>
         <translation>ソルバーの反復回数</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="46"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="47"/>
         <source>Most iterations of Tools ▸ Solve:</source>
         <translation>ツール ▸ ソルブの反復回数の上限:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="75"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="79"/>
         <source>R&amp;otate Vertices</source>
         <translation>頂点を回転(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="76"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="80"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="79"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="83"/>
         <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
         <translation>回転ツール (R): 2 個以上の頂点を選択し、3D ビューで頂点を押してマウスを横に動かすと、頂点が重心を通る軸 (鉛直、またはツールバーで選んだ軸) の周りに回転し、曲面が追従します。Esc で取り消します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="97"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="101"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>先にドラッグを終えてください。ドラッグ中も随時ソルブしています。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="55"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="55"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
         <source>&amp;Drag Vertices and Creases</source>
         <translation>頂点と折り線をドラッグ(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="58"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="59"/>
         <source>Drag tool: press on a vertex in the 3D view and move it, the surface follows and stays developable; press on a crease to slide it within its patches. The axis chosen in the toolbar, or holding X, Y or Z, moves along that axis; Esc cancels the drag (G).</source>
         <translation>ドラッグツール: 3D ビューで頂点を押して動かすと、曲面が追従して可展のまま保たれます。折り線を押すと、パッチの中で折り線を滑らせます。ツールバーで選んだ軸、または X、Y、Z を押したままにすると、その軸に沿って動きます。Esc でドラッグを取り消します (G)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="66"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="67"/>
         <source>S&amp;nap to Reference Curves</source>
         <translation>参照曲線にスナップ(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="69"/>
         <source>While dragging a vertex (no axis chosen), put it on the nearest reference curve drawn within 10 pixels of the mouse.</source>
         <translation>頂点をドラッグするとき (軸の指定なし)、マウスから 10 ピクセル以内に描かれた最も近い参照曲線の上に置きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="105"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="75"/>
+        <source>&amp;Fit Edge to Reference Curve</source>
+        <translation>辺を参照曲線に合わせる(&amp;F)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="109"/>
         <source>&amp;Cancel Solve</source>
         <translation>ソルブを中止(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="108"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="112"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>実行中のソルブを中止します。デザインはそのままです (Esc)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="132"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="136"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>ソルブ中: 反復 %1 / %2、残差 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="145"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="149"/>
         <source>&amp;Lengths While Dragging</source>
         <translation>ドラッグ中の長さ(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="157"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="161"/>
         <source>&amp;Automatic</source>
         <translation>自動(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="158"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="162"/>
         <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over, collapses a strip or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
         <translation>頂点のドラッグと回転は長さを保ちます。シートがそのままでは追従できない場合 (ドラッグが収束しない、折り返す、帯がつぶれる、または展開図が自身と重なる場合)、離したときにシートの伸びを許してドラッグをやり直し、二つのうち良い方を残します。ソルバーパネルにその旨が表示されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="162"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="166"/>
         <source>&amp;Keep Lengths</source>
         <translation>長さを保つ(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="163"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="167"/>
         <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape and fold. A motion the sheet cannot make without stretching then may not converge. Dragged creases always resize their patches.</source>
         <translation>頂点のドラッグや回転の間、シートは伸びずに曲がります。離れた部分はその場に留まり、曲がった折り線は形を保って折れます。シートが伸びずにはできない動きは収束しないことがあります。ドラッグした折り線は常にパッチの大きさを変えます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="167"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="171"/>
         <source>Let &amp;Stretch</source>
         <translation>伸びを許す(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="168"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="172"/>
         <source>While dragging or rotating vertices, the sheet may stretch: it stays developable and its development changes, curved creases may be pulled straight and large drags may crumple it.</source>
         <translation>頂点のドラッグや回転の間、シートは伸びることがあります。可展面のままで展開図が変わり、曲がった折り線はまっすぐに引き伸ばされることがあり、大きなドラッグではしわになることがあります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="190"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="194"/>
         <source>Motion &amp;Axis</source>
         <translation>移動の軸(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="206"/>
         <source>&amp;Free</source>
         <translation>自由(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="203"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="207"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>自由な移動: ドラッグツールは頂点を視平面内で動かし、回転ツールは鉛直軸 (Z) の周り、または ツール ▸ 移動の軸 ▸ 視線軸の周りに回転 がオンのときは視線軸の周りに回転させます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="206"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="210"/>
         <source>&amp;X Axis</source>
         <translation>X 軸(&amp;X)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="207"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="211"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X 軸: ドラッグツールは頂点を X 方向にだけ動かし、回転ツールは重心を通る X に平行な軸の周りに回転させます。Y または Z を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="209"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="213"/>
         <source>&amp;Y Axis</source>
         <translation>Y 軸(&amp;Y)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="210"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="214"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y 軸: ドラッグツールは頂点を Y 方向にだけ動かし、回転ツールは重心を通る Y に平行な軸の周りに回転させます。X または Z を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="212"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="216"/>
         <source>&amp;Z Axis</source>
         <translation>Z 軸(&amp;Z)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="213"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="217"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z 軸: ドラッグツールは頂点を Z 方向にだけ動かし、回転ツールは重心を通る Z に平行な軸の周りに回転させます。X または Y を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="237"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="241"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>視線軸の周りに回転(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="240"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="244"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>軸が「自由」のとき、回転ツールは頂点を鉛直軸ではなく重心を通る視線方向の周りに回転させます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="258"/>
         <source>Colour &amp;By</source>
         <translation>色分け(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
         <source>&amp;Patch</source>
         <translation>パッチ(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
         <source>&amp;Developability</source>
         <translation>可展性(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
         <source>&amp;Flatness</source>
         <translation>平面性(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="263"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="267"/>
         <source>&amp;Angle Defect</source>
         <translation>角度欠損(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="265"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="269"/>
         <source>Every patch in its own colour.</source>
         <translation>パッチごとに色分けします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="270"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>サンプルした各帯の四角形が可展からどれだけ離れているか: 正規化した |det(a−b, a′, b′)| を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="268"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="272"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>サンプルした各四角形の平面性 δ: 対角線間の距離を最も短い 2 辺の平均で割った値を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="270"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="274"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>サンプルしたメッシュの内部頂点での角度欠損 |K| = |2π − Σ 角度| (ラジアン) を対数スケールで表示します。</translation>
     </message>
@@ -2743,7 +2791,7 @@
 <context>
     <name>devsurf::app::RemoveReferenceCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="177"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="184"/>
         <source>Cannot remove the reference curves</source>
         <translation>参照曲線を削除できません</translation>
     </message>
@@ -3920,17 +3968,17 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="29"/>
+        <location filename="../app/gui/main.cpp" line="32"/>
         <source>Design developable surfaces and curved-crease origami.</source>
         <translation>可展面と曲線折り折り紙を設計します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="33"/>
+        <location filename="../app/gui/main.cpp" line="36"/>
         <source>A project file to open.</source>
         <translation>開くプロジェクトファイル。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="36"/>
+        <location filename="../app/gui/main.cpp" line="39"/>
         <source>Start with a built-in example.</source>
         <translation>組み込みの例で開始します。</translation>
     </message>

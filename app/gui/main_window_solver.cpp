@@ -6,6 +6,7 @@
 #include "drag_tool.h"
 #include "main_window.h"
 #include "panels/solver_panel.h"
+#include "reactions/curve_reactions.h"
 #include "rotate_tool.h"
 #include "solve_controller.h"
 #include "views/surface_view.h"
@@ -70,6 +71,9 @@ QList<QAction*> MainWindow::createSolverActions(QMenu* tools, QAction* selectNon
     snap->setToolTip(snapTip);
     snap->setStatusTip(snapTip);
     connect(snap, &QAction::toggled, m_dragTool, &DragTool::setSnapToCurves);
+    new FitEdgeToCurveReaction(addAction(tools, QStringLiteral("actionFitEdgeToCurve"),
+                                         tr("&Fit Edge to Reference Curve")),
+                               m_workspace);
     createLengthsActions(tools);
 
     QAction* rotate = addAction(tools, QStringLiteral("actionRotateTool"), tr("R&otate Vertices"),

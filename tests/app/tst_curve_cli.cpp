@@ -43,21 +43,21 @@ private slots:
                                                path("curves.dxf"), "-o", path("with.devsurf")});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         QVERIFY2(
-            run.out.startsWith("Wrote " + path("with.devsurf") + " (8 reference curves imported, "),
+            run.out.startsWith("Wrote " + path("with.devsurf") + " (9 reference curves imported, "),
             qPrintable(run.out));
         QVERIFY(run.out.contains("2 other entities skipped"));
         QCOMPARE(contents(path("fig8.devsurf")), input); // the input is not touched
         const test::CliRun info = test::runCli({"info", path("with.devsurf")});
         QCOMPARE(info.exitCode, 0);
-        QVERIFY2(info.out.contains("Reference curves: 8\n"), qPrintable(info.out));
+        QVERIFY2(info.out.contains("Reference curves: 9\n"), qPrintable(info.out));
         QVERIFY(test::runCli({"info", path("fig8.devsurf")}).out.contains("Reference curves: 0\n"));
         // Importing again adds to them; a tolerance ten times finer gives more points.
         const test::CliRun again =
             test::runCli({"import-curves", path("with.devsurf"), path("curves.dxf"), "--tolerance",
                           "0.005", "-o", path("twice.devsurf")});
         QVERIFY2(again.exitCode == 0, qPrintable(again.err));
-        QVERIFY(again.out.contains("; 16 in the project)"));
-        QVERIFY(test::runCli({"info", path("twice.devsurf")}).out.contains("Reference curves: 16"));
+        QVERIFY(again.out.contains("; 18 in the project)"));
+        QVERIFY(test::runCli({"info", path("twice.devsurf")}).out.contains("Reference curves: 18"));
         auto pointsOf = [](const QString& out) {
             const int at = out.indexOf(" imported, ");
             return out.mid(at + 11).section(' ', 0, 0).toInt();

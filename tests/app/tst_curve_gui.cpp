@@ -25,6 +25,8 @@
 #include <QTimer>
 #include <QUndoStack>
 
+#include <cmath>
+
 using namespace devsurf;
 using document::Pick;
 
@@ -75,10 +77,10 @@ private slots:
         const std::string before = test::bytesOf(window);
         const int steps = doc->undoStack()->count();
         QVERIFY(importThroughAction(window, path("curves.dxf")));
-        QCOMPARE(doc->project().referenceCurves.size(), std::size_t(8));
+        QCOMPARE(doc->project().referenceCurves.size(), std::size_t(9));
         QCOMPARE(doc->undoStack()->count(), steps + 1);
         QVERIFY(test::undoCommand<document::ReferenceCurvesCommand>(*doc) != nullptr);
-        QCOMPARE(window.surfaceView()->referenceCurvesDrawn(), 8);
+        QCOMPARE(window.surfaceView()->referenceCurvesDrawn(), 9);
         QCOMPARE(window.developmentView()->referenceCurvesDrawn(), 0);
         QVERIFY(remove->isEnabled());
         const std::string imported = test::bytesOf(window);
@@ -98,7 +100,7 @@ private slots:
         QVERIFY(!remove->isEnabled());
         doc->undoStack()->redo();
         QVERIFY(test::bytesOf(window) == imported);
-        QCOMPARE(window.surfaceView()->referenceCurvesDrawn(), 8);
+        QCOMPARE(window.surfaceView()->referenceCurvesDrawn(), 9);
         remove->trigger();
         QVERIFY(doc->project().referenceCurves.empty());
         QCOMPARE(window.surfaceView()->referenceCurvesDrawn(), 0);
@@ -218,6 +220,51 @@ private slots:
             QVERIFY(test::waitForWorkerIdle(window, 60000));
             QCOMPARE(doc->surface(0).position(dragged), start);
         }
+    }
+
+    void creaseIsFittedToTheNearestCurve() {
+        // Two curves: a wave beside and above a crease of fig8, and a line far away. Fitting
+        // the selected crease lays it on the wave (one undo step); undo brings it back.
+        app::MainWindow window;
+        QVERIFY(test::showActiveWithExample(window, QStringLiteral("fig8")));
+        document::Document* doc = window.workspace()->document();
+        QAction* fit = window.action(QStringLiteral("actionFitEdgeToCurve"));
+        QVERIFY(fit != nullptr && !fit->isEnabled()); // no curves yet
+        model::EdgeId crease = model::kInvalidId;
+        for (const auto& [id, record] : doc->surface(0).edges()) {
+            if (record.isSpline() && doc->surface(0).facesOfEdge(id).size() == 2) {
+                crease = id;
+                break;
+            }
+        }
+        QVERIFY(crease != model::kInvalidId);
+        const model::EdgeRecord before = doc->surface(0).edge(crease);
+        model::ReferenceCurve wave{"wave", "", {}};
+        for (int i = 0; i <= 100; ++i) {
+            const double t = i / 100.0;
+            const model::Vec3 p =
+                before.controlPoints.front() * (1 - t) + before.controlPoints.back() * t;
+            wave.points.push_back(p + model::Vec3(0, 5, 10 * std::sin(3.14159265358979 * t)));
+        }
+        const model::ReferenceCurve away{"away", "", {{0, 0, 500}, {300, 0, 500}}};
+        document::CommandOrError add =
+            document::ReferenceCurvesCommand::createImport(*doc, {away, wave});
+        QVERIFY(document::push(*doc, add));
+        QVERIFY(!fit->isEnabled()); // nothing selected
+        window.workspace()->selection()->set({{Pick::Kind::Edge, 0, crease}});
+        QVERIFY(fit->isEnabled());
+        const int steps = doc->undoStack()->count();
+        QSignalSpy said(window.workspace(), &app::Workspace::statusMessage);
+        fit->trigger();
+        QCOMPARE(doc->undoStack()->count(), steps + 1);
+        QVERIFY(!said.isEmpty());
+        QVERIFY2(said.last().at(0).toString().contains(QStringLiteral("wave")),
+                 qPrintable(said.last().at(0).toString()));
+        const model::EdgeRecord& after = doc->surface(0).edge(crease);
+        const model::Vec3 middle = after.controlPoints[after.controlPoints.size() / 2];
+        QVERIFY2(middle.z > 5.0, qPrintable(QString::number(middle.z)));
+        doc->undoStack()->undo();
+        QVERIFY(doc->surface(0).edge(crease).controlPoints == before.controlPoints);
     }
 };
 

@@ -1,19 +1,26 @@
 #include "curve_reactions.h"
 
+#include "model/curve_fit.h"
+#include "model/document/commands/apply_surface_command.h"
+
 #include "../workspace.h"
 #include "io/curves/curve_import.h"
 #include "model/document/commands/reference_curves_command.h"
 #include "model/document/document.h"
+#include "model/document/selection.h"
 
 #include <QAction>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QLocale>
 #include <QProgressDialog>
 #include <QThread>
 #include <QTimer>
 
 #include <algorithm>
 #include <atomic>
+#include <limits>
+#include <optional>
 
 namespace devsurf::app {
 
@@ -175,6 +182,92 @@ void RemoveReferenceCurvesReaction::updateEnableState() {
 void RemoveReferenceCurvesReaction::onTriggered() {
     workspace()->apply(document::ReferenceCurvesCommand::createRemoveAll(*workspace()->document()),
                        tr("Cannot remove the reference curves"));
+}
+
+namespace {
+
+// The one spline edge selected (surface, edge), if exactly one edge is selected and it is one.
+std::optional<std::pair<int, model::EdgeId>> selectedSplineEdge(Workspace* workspace) {
+    std::optional<std::pair<int, model::EdgeId>> found;
+    for (const document::Pick& pick : workspace->selection()->picks()) {
+        if (pick.kind != document::Pick::Kind::Edge || found) {
+            return std::nullopt;
+        }
+        found = std::make_pair(pick.surface, pick.id);
+    }
+    const document::Document* doc = workspace->document();
+    if (!found || found->first < 0 || found->first >= doc->surfaceCount() ||
+        !doc->surface(found->first).hasEdge(found->second) ||
+        !doc->surface(found->first).edge(found->second).isSpline()) {
+        return std::nullopt;
+    }
+    return found;
+}
+
+} // namespace
+
+FitEdgeToCurveReaction::FitEdgeToCurveReaction(QAction* action, Workspace* workspace)
+    : Reaction(action, workspace) {
+    followDocumentAndSelection();
+}
+
+void FitEdgeToCurveReaction::updateEnableState() {
+    const bool curves = !workspace()->document()->project().referenceCurves.empty();
+    const bool edge = selectedSplineEdge(workspace()).has_value();
+    action()->setEnabled(curves && edge);
+    const QString tip =
+        !curves ? tr("Lay a crease or boundary onto a reference curve: import curves first "
+                     "(File ▸ Import Curves…).")
+        : !edge ? tr("Lay a crease or boundary onto a reference curve: select one spline edge.")
+                : tr("Lay the selected crease or boundary onto the reference curve nearest it; "
+                     "Solve then makes the surface developable again.");
+    action()->setToolTip(tip);
+    action()->setStatusTip(tip);
+}
+
+void FitEdgeToCurveReaction::onTriggered() {
+    const auto selected = selectedSplineEdge(workspace());
+    document::Document* doc = workspace()->document();
+    const std::vector<model::ReferenceCurve>& curves = doc->project().referenceCurves;
+    if (!selected || curves.empty()) {
+        updateEnableState();
+        return;
+    }
+    const auto [index, edge] = *selected;
+    const model::CompositeSurface& surface = doc->surface(index);
+    std::size_t nearest = 0;
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t c = 0; c < curves.size(); ++c) {
+        const double d = model::edgeCurveDistance(surface, edge, curves[c]);
+        if (d < best) {
+            best = d;
+            nearest = c;
+        }
+    }
+    model::CompositeSurface changed = surface;
+    const model::EdgeFit fit = model::fitEdgeToCurve(changed, edge, curves[nearest]);
+    const QString curveName = QString::fromStdString(curves[nearest].name);
+    if (fit.refused) {
+        emit workspace()->statusMessage(
+            fit.refused == model::EdgeFit::Refusal::EndsMeet
+                ? tr("Edge %1 was not fitted: both its ends are nearest the same point of %2.")
+                      .arg(edge)
+                      .arg(curveName)
+                : tr("Edge %1 was not fitted: %2 has too few points.").arg(edge).arg(curveName));
+        return;
+    }
+    if (!workspace()->apply(document::ApplySurfaceCommand::create(*doc, index, std::move(changed),
+                                                                  tr("Fit Edge to Curve"),
+                                                                  document::Change::Geometry),
+                            tr("Cannot fit the edge to the curve"))) {
+        return;
+    }
+    const QLocale locale;
+    emit workspace()->statusMessage(
+        tr("Edge %1 lies on %2 within %3 mm; Solve (Ctrl+Return) makes the surface developable "
+           "again.")
+            .arg(edge)
+            .arg(curveName, locale.toString(fit.largestDistance, 'g', 2)));
 }
 
 } // namespace devsurf::app

@@ -57,4 +57,17 @@ protected:
     void updateEnableState() override;
 };
 
+// Tools ▸ Fit Edge to Reference Curve: the one selected spline edge (a crease or a strip's
+// boundary) laid onto the reference curve nearest it (model::fitEdgeToCurve), one undo step;
+// the status bar says how close it lies, and that Solve makes the surface developable again.
+class FitEdgeToCurveReaction : public Reaction {
+    Q_OBJECT
+public:
+    FitEdgeToCurveReaction(QAction* action, Workspace* workspace);
+
+protected:
+    void onTriggered() override;
+    void updateEnableState() override;
+};
+
 } // namespace devsurf::app
