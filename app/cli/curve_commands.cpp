@@ -1,5 +1,7 @@
 #include "curve_commands.h"
 
+#include "model/curve_fit.h"
+
 #include "cli_output.h"
 #include "io/curves/curve_import.h"
 #include "io/file_error.h"
@@ -9,6 +11,7 @@
 #include <QString>
 
 #include <iostream>
+#include <limits>
 
 namespace devsurf::app {
 
@@ -79,6 +82,62 @@ int runImportCurvesCommand(const SubcommandArguments& args) {
                   << " skipped";
     }
     std::cout << "; " << project.referenceCurves.size() << " in the project)\n";
+    return 0;
+}
+
+int runFitEdgeCommand(const SubcommandArguments& args) {
+    const std::string input = args.onePositional("one project file");
+    const std::string edgeText = args.required("edge", "the edge is missing (use --edge ID)");
+    const std::string output = args.required("o", "the output file is missing (use -o FILE)");
+    const auto edge = static_cast<model::EdgeId>(parseWhole(edgeText, "--edge", 0, 4294967294L));
+    const std::optional<std::string> curveText = args.value("curve");
+    const std::optional<std::string> surfaceText = args.value("surface");
+    const int surfaceNumber =
+        surfaceText ? static_cast<int>(parseWhole(*surfaceText, "--surface", 1, 1000000)) : 0;
+    checkOutput(output, {input}, OutputKind::Project, "the project");
+    model::Project project = io::loadProjectFile(QString::fromStdString(input));
+    const std::size_t index = surfaceIndex(surfaceNumber, project, "fit an edge of");
+    model::CompositeSurface& surface = project.surfaces[index];
+    const std::vector<model::ReferenceCurve>& curves = project.referenceCurves;
+    if (curves.empty()) {
+        std::cerr << "devsurf-cli: '" << input
+                  << "' has no reference curves (add some with 'devsurf-cli import-curves').\n";
+        return 2;
+    }
+    if (!surface.hasEdge(edge) || !surface.edge(edge).isSpline()) {
+        std::cerr << "devsurf-cli: surface '" << surface.name() << "' has no spline edge " << edge
+                  << " (list the edges with 'devsurf-cli info FILE --edges').\n";
+        return 2;
+    }
+    std::size_t chosen = 0;
+    if (curveText) {
+        chosen = static_cast<std::size_t>(
+                     parseWhole(*curveText, "--curve", 1, static_cast<long>(curves.size()))) -
+                 1;
+    } else {
+        double best = std::numeric_limits<double>::infinity();
+        for (std::size_t c = 0; c < curves.size(); ++c) {
+            const double d = model::edgeCurveDistance(surface, edge, curves[c]);
+            if (d < best) {
+                best = d;
+                chosen = c;
+            }
+        }
+    }
+    const model::ReferenceCurve& curve = curves[chosen];
+    const model::EdgeFit fit = model::fitEdgeToCurve(surface, edge, curve);
+    if (fit.refused) {
+        std::cerr << "devsurf-cli: edge " << edge << " was not fitted to '" << curve.name << "': "
+                  << (fit.refused == model::EdgeFit::Refusal::EndsMeet
+                          ? "both its ends are nearest the same point of the curve"
+                          : "the curve has too few points")
+                  << ".\n";
+        return 2;
+    }
+    writeProject(project, output);
+    std::cout << "Wrote " << output << " (edge " << edge << " laid onto reference curve "
+              << chosen + 1 << " '" << curve.name << "' within " << fit.largestDistance
+              << " mm; solve to make the surface developable again)\n";
     return 0;
 }
 

@@ -15,4 +15,8 @@ std::string curveImportSentence(const io::CurveImportError& error, const std::st
 // cannot be read. Returns the exit code; throws UsageError and io::FileError.
 int runImportCurvesCommand(const SubcommandArguments& args);
 
+// `devsurf-cli fit-edge FILE --edge E [--curve K] [--surface K] -o OUT`: the spline edge laid
+// onto reference curve K (1-based; default the nearest), as Tools ▸ Fit Edge to Reference Curve.
+int runFitEdgeCommand(const SubcommandArguments& args);
+
 } // namespace devsurf::app

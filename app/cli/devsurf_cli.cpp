@@ -242,13 +242,14 @@ int run(const std::vector<std::string>& args) {
     }
     using Runner = int (*)(const SubcommandArguments&);
     static const std::pair<const char*, Runner> runners[] = {
-        {"example", commandExample},   {"info", commandInfo},
-        {"pin", runPinCommand},        {"sheet", runSheetCommand},
-        {"crease", runCreaseCommand},  {"smooth", runSmoothCommand},
-        {"validate", commandValidate}, {"export-json", commandExportJson},
-        {"examples", commandExamples}, {"solve", commandSolve},
-        {"drag", commandDrag},         {"export", runExportPatternCommand},
-        {"report", runReportCommand},  {"import-curves", runImportCurvesCommand}};
+        {"example", commandExample},    {"info", commandInfo},
+        {"pin", runPinCommand},         {"sheet", runSheetCommand},
+        {"crease", runCreaseCommand},   {"smooth", runSmoothCommand},
+        {"validate", commandValidate},  {"export-json", commandExportJson},
+        {"examples", commandExamples},  {"solve", commandSolve},
+        {"drag", commandDrag},          {"export", runExportPatternCommand},
+        {"report", runReportCommand},   {"import-curves", runImportCurvesCommand},
+        {"fit-edge", runFitEdgeCommand}};
     for (const auto& [name, runner] : runners) {
         if (command == name) {
             return runner(parsed);

@@ -185,6 +185,17 @@ const std::vector<SubcommandSpec>& subcommands() {
          "project itself (its previous version is kept as FILE.bak), never\n"
          "the curve file.",
          {{"tolerance", "MM", "Sample curves within MM (default 0.05)."}, kOutputProject}},
+        {"fit-edge",
+         "fit-edge FILE --edge E [--curve K] [--surface K] -o OUT.devsurf",
+         "Lay spline edge E (a crease or a boundary) onto reference curve K\n"
+         "(1-based, in the order they were imported; default: the one nearest\n"
+         "it): its unpinned ends onto the curve, its control points by least\n"
+         "squares along the piece between them. Solve afterwards to make the\n"
+         "surface developable again.",
+         {{"edge", "E", "The spline edge, such as 6."},
+          {"curve", "K", "The reference curve (default: the nearest)."},
+          kSurface,
+          kOutputProject}},
         {"report", "report FILE [--json] [--sheet W,H | --paper NAME] [--tolerance MM] [--seam MM]",
          "Print the fabrication report: per piece its sheet, size, area,\n"
          "largest isometry error, overlaps, and whether it fits the sheet.",

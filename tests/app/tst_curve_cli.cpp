@@ -4,6 +4,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -122,6 +123,43 @@ private slots:
         QVERIFY2(run.out.contains("(24 reference curves"), qPrintable(run.out));
     }
 #endif
+
+    void fitsAnEdgeToACurve() {
+        // fig8's crease 6 runs from (100, 121.65) to (200, 121.65) in the plane z = 0; an SVG
+        // curve drawn 10 mm beside it, bulging 5 mm further in the middle.
+        const QString svg = path("guide.svg");
+        QFile file(svg);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("<svg xmlns='http://www.w3.org/2000/svg' width='400mm' height='400mm' "
+                   "viewBox='0 -400 400 400'><path d='M 80 -131.65 Q 150 -141.65 220 -131.65' "
+                   "fill='none' stroke='black'/></svg>");
+        file.close();
+        const QString with = path("guide.devsurf");
+        QCOMPARE(test::runCli({"import-curves", path("fig8.devsurf"), svg, "-o", with}).exitCode,
+                 0);
+        const test::CliRun run =
+            test::runCli({"fit-edge", with, "--edge", "6", "-o", path("fitted.devsurf")});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        QVERIFY2(run.out.contains("edge 6 laid onto reference curve 1"), qPrintable(run.out));
+        const test::CliRun info = test::runCli({"info", path("fitted.devsurf"), "--vertices"});
+        // Vertices 5 and 6 moved onto the curve: about 12 mm in +y, still in the plane.
+        for (const char* vertex : {"5", "6"}) {
+            const QRegularExpressionMatch at =
+                QRegularExpression(QStringLiteral(R"(\n\s+%1 (\S+) (\S+) (\S+) )").arg(vertex))
+                    .match(info.out);
+            QVERIFY2(at.hasMatch(), qPrintable(info.out));
+            QVERIFY(at.captured(2).toDouble() > 131.0 && at.captured(2).toDouble() < 137.0);
+            QCOMPARE(at.captured(3).toDouble(), 0.0);
+        }
+        // A ruling, and a project without curves, are refused; nothing is written.
+        QCOMPARE(test::runCli({"fit-edge", with, "--edge", "1", "-o", path("no.devsurf")}).exitCode,
+                 2);
+        QCOMPARE(test::runCli(
+                     {"fit-edge", path("fig8.devsurf"), "--edge", "6", "-o", path("no.devsurf")})
+                     .exitCode,
+                 2);
+        QVERIFY(!QFile::exists(path("no.devsurf")));
+    }
 };
 
 DEVSURF_REGISTER_TEST(TstCurveCli);
