@@ -164,7 +164,7 @@ SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
     m_controlPolygons->actor->SetVisibility(false);
     m_controlPoints->actor->SetVisibility(false);
     if (spatial) {
-        m_quality = std::make_unique<QualityColouring>(renderer);
+        m_quality = std::make_unique<QualityColouring>();
     }
 
     m_picker->SetTolerance(0.0005);

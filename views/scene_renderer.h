@@ -93,8 +93,11 @@ public:
     const model::Vec3* vertexPosition(int surface, model::VertexId vertex) const;
 
     // Fits the camera to the scenes, keeping its direction (the development view always looks
-    // straight down at the plane).
+    // straight down at the plane): everything drawn (its bounding box, projected) lies inside
+    // the viewport by kFitMargin device pixels, so that the markers drawn at the outermost
+    // vertices (pins, 13 px) show whole, and left of the quality legend when it is shown.
     void resetCamera();
+    static constexpr double kFitMargin = 16.0;
     // The 3D view: looks along direction with the given up vector, then fits. Ignored by the
     // development view.
     void lookAlong(const model::Vec3& direction, const model::Vec3& up);
@@ -104,6 +107,9 @@ public:
     double pixelsPerUnit() const;
 
 private:
+    // Zooms and pans the camera so that the projected corners of the visible props' bounds
+    // fill the viewport less its margins (resetCamera).
+    void fitBoundsToViewport();
     struct Layer;
     Layer& addLayer();
     void rebuildHighlight();
