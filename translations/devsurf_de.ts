@@ -1105,8 +1105,8 @@
     </message>
     <message>
         <location filename="../app/text/verdict_text.cpp" line="93"/>
-        <source>Developable to within %1 mm of isometry</source>
-        <translation>Abwickelbar bis auf %1 mm Abweichung von der Isometrie</translation>
+        <source>Developable within %1 mm</source>
+        <translation>Abwickelbar auf %1 mm genau</translation>
     </message>
     <message>
         <location filename="../app/text/verdict_text.cpp" line="96"/>
@@ -3570,8 +3570,14 @@
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>Lösen hat den Entwurf unverändert gelassen: das Lösen machte ihn weniger abwickelbar (größtes Abwickelbarkeitsresiduum %1 → %2).</translation>
     </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="478"/>
+        <source>%1. %2</source>
+        <comment>a verdict, then a sentence</comment>
+        <translation>%1. %2</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="480"/>
+        <location filename="../app/gui/solve_controller.cpp" line="482"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n Fläche unverändert gelassen: das Lösen machte sie weniger abwickelbar.</numerusform>
@@ -3579,12 +3585,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="492"/>
+        <location filename="../app/gui/solve_controller.cpp" line="494"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 verworfen: Der Entwurf hat sich während des Lösens geändert; nichts wurde bewegt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="501"/>
+        <location filename="../app/gui/solve_controller.cpp" line="503"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, abwickelbar gehalten: %n Iteration, größtes Bedingungsresiduum %2.</numerusform>
@@ -3623,7 +3629,7 @@
         <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="476"/>
+        <location filename="../app/gui/solve_controller.cpp" line="475"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>

@@ -1095,8 +1095,8 @@
     </message>
     <message>
         <location filename="../app/text/verdict_text.cpp" line="93"/>
-        <source>Developable to within %1 mm of isometry</source>
-        <translation>等長から %1 mm 以内の可展</translation>
+        <source>Developable within %1 mm</source>
+        <translation>%1 mm 以内で可展</translation>
     </message>
     <message>
         <location filename="../app/text/verdict_text.cpp" line="96"/>
@@ -3533,20 +3533,26 @@
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>ソルブはデザインを元のままにしました。ソルブで可展性が悪化したためです (最大の可展性残差 %1 → %2)。</translation>
     </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="478"/>
+        <source>%1. %2</source>
+        <comment>a verdict, then a sentence</comment>
+        <translation>%1。%2</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="480"/>
+        <location filename="../app/gui/solve_controller.cpp" line="482"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n 個のサーフェスを元のままにしました。ソルブで可展性が悪化したためです。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="492"/>
+        <location filename="../app/gui/solve_controller.cpp" line="494"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 を破棄しました: ソルブ中にデザインが変更されました。何も動いていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="501"/>
+        <location filename="../app/gui/solve_controller.cpp" line="503"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1、可展を維持: %n 回反復、最大の制約残差 %2。</numerusform>
@@ -3584,7 +3590,7 @@
         <translation>ソルブ中にデザインが変更されたため、結果を破棄しました。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="476"/>
+        <location filename="../app/gui/solve_controller.cpp" line="475"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>ソルブ完了: %n 回反復、制約残差の最大値 %1。</numerusform>

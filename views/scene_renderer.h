@@ -93,8 +93,8 @@ public:
     const model::Vec3* vertexPosition(int surface, model::VertexId vertex) const;
 
     // Fits the camera to the scenes, keeping its direction (the development view always looks
-    // straight down at the plane): everything drawn (its bounding box, projected) lies inside
-    // the viewport by kFitMargin device pixels, so that the markers drawn at the outermost
+    // straight down at the plane): everything drawn (fitPoints(), projected) lies inside the
+    // viewport by kFitMargin device pixels, so that the markers drawn at the outermost
     // vertices (pins, 13 px) show whole, and left of the quality legend when it is shown.
     void resetCamera();
     static constexpr double kFitMargin = 16.0;
@@ -110,6 +110,10 @@ private:
     // Zooms and pans the camera so that the projected corners of the visible props' bounds
     // fill the viewport less its margins (resetCamera).
     void fitBoundsToViewport();
+    // What the fit keeps in view: the drawn surfaces' points (at most about kFitPoints of
+    // them), the control points when shown, and the corners of the reference curves' bounds.
+    std::vector<model::Vec3> fitPoints() const;
+    static constexpr std::size_t kFitPoints = 20000;
     struct Layer;
     Layer& addLayer();
     void rebuildHighlight();

@@ -100,6 +100,7 @@ void SceneRenderer::resetCamera() {
 void SceneRenderer::fitBoundsToViewport() {
     // ResetCamera fits the bounding sphere tangent to the view: a corner of the bounding box
     // (a pinned corner of a flat sheet) can touch the edge, and nothing keeps a legend free.
+    // The drawn points are fitted instead, tightly, with a margin for the markers.
     double bounds[6];
     m_renderer->ComputeVisiblePropBounds(bounds);
     const int* size = m_renderer->GetSize();
@@ -117,16 +118,22 @@ void SceneRenderer::fitBoundsToViewport() {
     const double bottom = kFitMargin;
     const double top = std::max(bottom + 1.0, size[1] - kFitMargin);
     vtkCamera* camera = m_renderer->GetActiveCamera();
+    // The drawn points, or the corners of everything's bounds when there are none.
+    std::vector<Vec3> points = fitPoints();
+    if (points.empty()) {
+        for (int corner = 0; corner < 8; ++corner) {
+            points.push_back({bounds[(corner & 1) != 0 ? 1 : 0], bounds[(corner & 2) != 0 ? 3 : 2],
+                              bounds[(corner & 4) != 0 ? 5 : 4]});
+        }
+    }
     // Perspective projection is not linear in the dolly: a few passes converge.
     for (int pass = 0; pass < 4; ++pass) {
         double minX = std::numeric_limits<double>::infinity();
         double minY = minX;
         double maxX = -minX;
         double maxY = -minX;
-        for (int corner = 0; corner < 8; ++corner) {
-            const Vec3 d =
-                toDisplay({bounds[(corner & 1) != 0 ? 1 : 0], bounds[(corner & 2) != 0 ? 3 : 2],
-                           bounds[(corner & 4) != 0 ? 5 : 4]});
+        for (const Vec3& point : points) {
+            const Vec3 d = toDisplay(point);
             minX = std::min(minX, d.x);
             maxX = std::max(maxX, d.x);
             minY = std::min(minY, d.y);

@@ -169,6 +169,9 @@ void ViewOverlay::setVerdict(const QString& text, const QColor& colour) {
     update();
 }
 
+// The verdict leaves this much of the width (logical pixels) to the legend in the upper left.
+constexpr double kVerdictClear = 180.0;
+
 QRectF ViewOverlay::verdictRect() const {
     if (m_verdict.isEmpty()) {
         return QRectF();
@@ -177,8 +180,8 @@ QRectF ViewOverlay::verdictRect() const {
     strong.setPointSizeF(strong.pointSizeF() * 0.9);
     strong.setBold(true);
     const QFontMetricsF metrics(strong);
-    const double width =
-        std::min(metrics.horizontalAdvance(m_verdict) + 12.0, std::max(40.0, 0.5 * this->width()));
+    const double width = std::min(metrics.horizontalAdvance(m_verdict) + 12.0,
+                                  std::max(40.0, this->width() - kVerdictClear));
     return QRectF(this->width() - 10.0 - width, 10.0, width, metrics.height() + 8.0);
 }
 
@@ -264,9 +267,9 @@ void ViewOverlay::paintQualityLegend(QPainter& painter, const QFont& font) const
     painter.setBrush(QColor(255, 255, 255, 235));
     painter.drawRect(labelBox);
     painter.setPen(QColor(0x1b, 0x7a, 0x2e));
-    painter.drawText(labelBox, Qt::AlignLeft | Qt::AlignVCenter,
-                     strongMetrics.elidedText(legend.toleranceLabel,
-                                              Qt::ElideRight, labelBox.width()));
+    painter.drawText(
+        labelBox, Qt::AlignLeft | Qt::AlignVCenter,
+        strongMetrics.elidedText(legend.toleranceLabel, Qt::ElideRight, labelBox.width()));
     painter.setFont(font);
 }
 

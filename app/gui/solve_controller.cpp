@@ -472,9 +472,11 @@ void SolveController::onResult(const solver::SolveResult& result) {
     // The verdict first: what the designer can do with the result; then the numbers.
     const QString verdict = VerdictText::brief(report.verdict);
     QString sentence =
-        (verdict.isEmpty() ? QString() : verdict + QStringLiteral(". ")) +
         tr("Solved: %n iteration(s), largest constraint residual %1.", nullptr, iterations)
             .arg(QString::number(residual, 'e', 2));
+    if (!verdict.isEmpty()) {
+        sentence = tr("%1. %2", "a verdict, then a sentence").arg(verdict, sentence);
+    }
     if (keptCount > 0) {
         sentence += QLatin1Char(' ') +
                     tr("%n surface(s) left as they were: solving made them less developable.",

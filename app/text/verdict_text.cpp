@@ -90,7 +90,7 @@ QString VerdictText::brief(const solver::Verdict& verdict) {
     case solver::VerdictKind::ReadyToCut:
         return tr("Developable — ready to cut");
     case solver::VerdictKind::WithinIsometry:
-        return tr("Developable to within %1 mm of isometry").arg(millimetres(verdict.isometryMm));
+        return tr("Developable within %1 mm").arg(millimetres(verdict.isometryMm));
     case solver::VerdictKind::NotDevelopable: {
         const QString where = places(verdict);
         return where.isEmpty() ? tr("Not developable") : tr("Not developable: %1").arg(where);

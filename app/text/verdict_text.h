@@ -17,8 +17,8 @@ public:
     // isometry over the sheet: the cut pattern is off by at most 0.02 mm.", or "Not
     // developable at patches 3, 4. Try: …"; empty for VerdictKind::None.
     static QString of(const solver::Verdict& verdict);
-    // A short form for the views' corner: "Ready to cut", "Within 0.02 mm of isometry",
-    // "Not developable: patches 3, 4".
+    // A short form for the views' corner and the status bar: "Developable — ready to cut",
+    // "Developable within 0.02 mm", "Not developable: patches 3, 4".
     static QString brief(const solver::Verdict& verdict);
     // The numbers: residual and tolerance, edge-length error and the sheet's extent.
     static QString details(const solver::Verdict& verdict);
