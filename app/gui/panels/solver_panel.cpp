@@ -7,6 +7,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QTableWidget>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -51,8 +52,20 @@ SolverPanel::SolverPanel(QWidget* parent)
     m_selectPatches->setEnabled(false);
     connect(m_selectPatches, &QPushButton::clicked, this,
             [this] { emit selectPatches(m_patches); });
-    layout->addWidget(m_verdict);
-    layout->addWidget(m_status);
+    // The sentences scroll when the dock is short, rather than being cut off.
+    auto* sentences = new QWidget;
+    auto* sentencesLayout = new QVBoxLayout(sentences);
+    sentencesLayout->setContentsMargins(0, 0, 0, 0);
+    sentencesLayout->addWidget(m_verdict);
+    sentencesLayout->addWidget(m_status);
+    sentencesLayout->addStretch();
+    auto* scroll = new QScrollArea(this);
+    scroll->setObjectName(QStringLiteral("SolverSentences"));
+    scroll->setWidget(sentences);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    layout->addWidget(scroll, 1);
     layout->addWidget(m_selectPatches);
     layout->addWidget(m_table, 1);
     clearReport(noSolveYetText());
