@@ -200,40 +200,6 @@ SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
 // its render window (with its context current).
 SceneRenderer::~SceneRenderer() = default;
 
-std::vector<Vec3> SceneRenderer::fitPoints() const {
-    std::size_t total = 0;
-    for (const SurfaceScene& scene : m_set->scenes) {
-        total += scene.points.size();
-    }
-    const std::size_t stride = std::max<std::size_t>(1, total / kFitPoints);
-    std::vector<Vec3> points;
-    points.reserve(total / stride + 8);
-    const bool controls = m_controlPoints->actor->GetVisibility() != 0;
-    for (const SurfaceScene& scene : m_set->scenes) {
-        for (std::size_t i = 0; i < scene.points.size(); i += stride) {
-            points.push_back(scene.points[i]);
-        }
-        // The outermost sampled points may be skipped by the stride: the vertices never are.
-        for (const auto& [id, position] : scene.vertices) {
-            (void)id;
-            points.push_back(position);
-        }
-        if (controls) {
-            points.insert(points.end(), scene.controlPoints.begin(), scene.controlPoints.end());
-        }
-    }
-    if (m_referenceCurves->actor->GetVisibility() != 0 &&
-        m_referenceCurves->data->GetNumberOfPoints() > 0) {
-        double b[6];
-        m_referenceCurves->data->GetBounds(b);
-        for (int corner = 0; corner < 8; ++corner) {
-            points.push_back({b[(corner & 1) != 0 ? 1 : 0], b[(corner & 2) != 0 ? 3 : 2],
-                              b[(corner & 4) != 0 ? 5 : 4]});
-        }
-    }
-    return points;
-}
-
 SceneRenderer::Layer& SceneRenderer::addLayer() {
     m_layers.push_back(std::make_unique<Layer>());
     Layer& layer = *m_layers.back();
@@ -492,6 +458,7 @@ void SceneRenderer::rebuildHighlight() {
 void SceneRenderer::setShowControlPolygons(bool show) {
     m_controlPolygons->actor->SetVisibility(show);
     m_controlPoints->actor->SetVisibility(show);
+    m_controlPointsShown = show;
 }
 
 void SceneRenderer::setShowVertices(bool show) {
@@ -509,6 +476,24 @@ void SceneRenderer::setPreviewLines(const std::vector<std::vector<Vec3>>& lines)
 void SceneRenderer::setReferenceCurves(const std::vector<std::vector<Vec3>>& curves) {
     m_referenceCurves->assign(polylineData(curves), false);
     m_referenceCurveCount = static_cast<int>(m_referenceCurves->data->GetNumberOfCells());
+    // Their bounding box's corners, for the fit (fitPoints).
+    m_referenceCorners.clear();
+    Vec3 low(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+             std::numeric_limits<double>::infinity());
+    Vec3 high = -low;
+    for (const auto& curve : curves) {
+        for (const Vec3& p : curve) {
+            low = Vec3(std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z));
+            high = Vec3(std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z));
+        }
+    }
+    if (low.x <= high.x) {
+        for (int corner = 0; corner < 8; ++corner) {
+            m_referenceCorners.push_back({(corner & 1) != 0 ? high.x : low.x,
+                                          (corner & 2) != 0 ? high.y : low.y,
+                                          (corner & 4) != 0 ? high.z : low.z});
+        }
+    }
 }
 
 const Vec3* SceneRenderer::vertexPosition(int surface, model::VertexId vertex) const {

@@ -94,10 +94,12 @@ public:
 
     // Fits the camera to the scenes, keeping its direction (the development view always looks
     // straight down at the plane): everything drawn (fitPoints(), projected) lies inside the
-    // viewport by kFitMargin device pixels, so that the markers drawn at the outermost
-    // vertices (pins, 13 px) show whole, and left of the quality legend when it is shown.
+    // viewport by kFitMargin device pixels (kFitAir of its size if more), so that the markers drawn
+    // at the outermost vertices (pins, 13 px) show whole, and left of the quality legend when it is
+    // shown.
     void resetCamera();
     static constexpr double kFitMargin = 16.0;
+    static constexpr double kFitAir = 0.04; // of the viewport's smaller side
     // The 3D view: looks along direction with the given up vector, then fits. Ignored by the
     // development view.
     void lookAlong(const model::Vec3& direction, const model::Vec3& up);
@@ -166,6 +168,8 @@ private:
     std::set<document::Pick> m_highlighted;
     std::set<document::Pick> m_pinnedDrawn;
     double m_sceneSize = 1.0;
+    bool m_controlPointsShown = false;
+    std::vector<model::Vec3> m_referenceCorners; // of the reference curves' bounding box
 };
 
 } // namespace devsurf::views

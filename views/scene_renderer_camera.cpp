@@ -107,16 +107,17 @@ void SceneRenderer::fitBoundsToViewport() {
     if (!(bounds[0] <= bounds[1]) || size[0] <= 0 || size[1] <= 0) {
         return;
     }
-    const double left = kFitMargin;
+    // At least the markers' margin, and a little air around the design in a large view.
+    const double margin = std::max(kFitMargin, kFitAir * std::min(size[0], size[1]));
+    const double left = margin;
     // The quality legend keeps the right of the viewport from its left edge on.
     double legendLeft = size[0];
     if (m_quality && m_quality->mode() != ColourBy::Patch) {
         legendLeft = m_quality->legendBox(size[0], size[1]).left;
     }
-    const double right =
-        std::max(left + 1.0, std::min(size[0] - kFitMargin, legendLeft - kFitMargin));
-    const double bottom = kFitMargin;
-    const double top = std::max(bottom + 1.0, size[1] - kFitMargin);
+    const double right = std::max(left + 1.0, std::min(size[0] - margin, legendLeft - kFitMargin));
+    const double bottom = margin;
+    const double top = std::max(bottom + 1.0, size[1] - margin);
     vtkCamera* camera = m_renderer->GetActiveCamera();
     // The drawn points, or the corners of everything's bounds when there are none.
     std::vector<Vec3> points = fitPoints();
@@ -177,6 +178,32 @@ void SceneRenderer::fitBoundsToViewport() {
             break;
         }
     }
+}
+
+std::vector<Vec3> SceneRenderer::fitPoints() const {
+    std::size_t total = 0;
+    for (const SurfaceScene& scene : m_set->scenes) {
+        total += scene.points.size();
+    }
+    const std::size_t stride = std::max<std::size_t>(1, total / kFitPoints);
+    std::vector<Vec3> points;
+    points.reserve(total / stride + 8);
+    const bool controls = m_controlPointsShown;
+    for (const SurfaceScene& scene : m_set->scenes) {
+        for (std::size_t i = 0; i < scene.points.size(); i += stride) {
+            points.push_back(scene.points[i]);
+        }
+        // The outermost sampled points may be skipped by the stride: the vertices never are.
+        for (const auto& [id, position] : scene.vertices) {
+            (void)id;
+            points.push_back(position);
+        }
+        if (controls) {
+            points.insert(points.end(), scene.controlPoints.begin(), scene.controlPoints.end());
+        }
+    }
+    points.insert(points.end(), m_referenceCorners.begin(), m_referenceCorners.end());
+    return points;
 }
 
 bool SceneRenderer::isHidden(const Vec3& point) const {
