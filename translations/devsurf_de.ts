@@ -1721,7 +1721,7 @@
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="223"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="106"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="122"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
@@ -1963,17 +1963,17 @@
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="27"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="28"/>
         <source>&amp;Solve</source>
         <translation>&amp;Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="28"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="29"/>
         <source>Ctrl+Return</source>
         <translation>Ctrl+Return</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_solver.cpp" line="31"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="32"/>
         <source>Make every surface developable again: %n iteration(s) of the solver, one undo step. Pinned vertices stay where they are.</source>
         <translation>
             <numerusform>Macht jede Fläche wieder abwickelbar: %n Iteration des Lösers, ein Rückgängig-Schritt. Festgehaltene Ecken bleiben, wo sie sind.</numerusform>
@@ -1981,217 +1981,242 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="39"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
         <source>Solver &amp;Iterations…</source>
         <translation>Löser-&amp;Iterationen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="41"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="42"/>
         <source>The most solver iterations Tools ▸ Solve runs; it stops earlier once the surface has converged.</source>
         <translation>Höchstzahl der Iterationen von Werkzeuge ▸ Lösen; es endet früher, sobald die Fläche konvergiert ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="46"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="47"/>
         <source>Solver Iterations</source>
         <translation>Löser-Iterationen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="46"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="47"/>
         <source>Most iterations of Tools ▸ Solve:</source>
         <translation>Höchstzahl der Iterationen von Werkzeuge ▸ Lösen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="75"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="76"/>
         <source>R&amp;otate Vertices</source>
         <translation>Ecken dr&amp;ehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="76"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="77"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="79"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="80"/>
         <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
         <translation>Drehwerkzeug (R): Wählen Sie zwei oder mehr Ecken aus, drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie die Maus seitwärts; sie drehen sich um eine Achse durch ihren Schwerpunkt (senkrecht oder wie in der Werkzeugleiste gewählt), und die Fläche folgt. Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="97"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="87"/>
+        <source>Measur&amp;e</source>
+        <translation>&amp;Messen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="113"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>Beenden Sie zuerst das Ziehen; es löst bereits während der Bewegung.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="55"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="55"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
         <source>&amp;Drag Vertices and Creases</source>
         <translation>Ecken und Falze &amp;ziehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="58"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="59"/>
         <source>Drag tool: press on a vertex in the 3D view and move it, the surface follows and stays developable; press on a crease to slide it within its patches. The axis chosen in the toolbar, or holding X, Y or Z, moves along that axis; Esc cancels the drag (G).</source>
         <translation>Ziehwerkzeug: Drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie sie, die Fläche folgt und bleibt abwickelbar; drücken Sie auf einen Falz, um ihn innerhalb seiner Flächenstücke zu verschieben. Die in der Werkzeugleiste gewählte Achse oder gedrückt gehaltenes X, Y oder Z bewegt entlang dieser Achse; Esc bricht das Ziehen ab (G).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="66"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="67"/>
         <source>S&amp;nap to Reference Curves</source>
         <translation>An Referenzkurven &amp;fangen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="69"/>
         <source>While dragging a vertex (no axis chosen), put it on the nearest reference curve drawn within 10 pixels of the mouse.</source>
         <translation>Beim Ziehen eines Eckpunkts (ohne gewählte Achse) wird er auf die nächste Referenzkurve gesetzt, die höchstens 10 Pixel von der Maus entfernt gezeichnet ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="105"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="89"/>
+        <source>Measure tool: click two points of the surface in the 3D view; their distance in space and along the sheet (as the cut pattern has it) is drawn and shown in the status bar.</source>
+        <translation>Messwerkzeug: klicken Sie in der 3D-Ansicht auf zwei Punkte der Fläche; ihr Abstand im Raum und entlang des Bogens (wie ihn das Schnittmuster hat) wird eingezeichnet und in der Statusleiste angezeigt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="95"/>
+        <source>Ctrl+C</source>
+        <translation>Ctrl+C</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="95"/>
+        <source>Cop&amp;y Measurement</source>
+        <translation>Messung kop&amp;ieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="96"/>
+        <source>Copy the last measurement to the clipboard (Ctrl+C).</source>
+        <translation>Die letzte Messung in die Zwischenablage kopieren (Ctrl+C).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="121"/>
         <source>&amp;Cancel Solve</source>
         <translation>Lösen &amp;abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="108"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="124"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>Das laufende Lösen beenden; der Entwurf bleibt, wie er ist (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="132"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="148"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>Lösen: Iteration %1 von %2, Residuum %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="145"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="161"/>
         <source>&amp;Lengths While Dragging</source>
         <translation>&amp;Längen beim Ziehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="157"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="173"/>
         <source>&amp;Automatic</source>
         <translation>&amp;Automatisch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="158"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="174"/>
         <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over, collapses a strip or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
         <translation>Das Ziehen und Drehen von Ecken behält die Längen bei. Wo das Blatt so nicht folgen kann (das Ziehen konvergiert nicht, faltet sich zurück, lässt einen Streifen zusammenfallen oder seine Abwicklung überlappt sich selbst), wird es beim Loslassen mit Dehnen des Blatts wiederholt, und das bessere der beiden Ergebnisse bleibt; das Löser-Fenster sagt es.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="162"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="178"/>
         <source>&amp;Keep Lengths</source>
         <translation>Längen &amp;beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="163"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="179"/>
         <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape and fold. A motion the sheet cannot make without stretching then may not converge. Dragged creases always resize their patches.</source>
         <translation>Beim Ziehen oder Drehen von Ecken biegt sich das Blatt, statt sich zu dehnen: entfernte Teile bleiben an ihrem Platz, und gekrümmte Falze behalten ihre Form und falten sich. Eine Bewegung, die das Blatt nicht ohne Dehnen ausführen kann, konvergiert dann unter Umständen nicht. Gezogene Falze ändern die Größe ihrer Flächenstücke immer.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="167"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="183"/>
         <source>Let &amp;Stretch</source>
         <translation>&amp;Dehnen zulassen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="168"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="184"/>
         <source>While dragging or rotating vertices, the sheet may stretch: it stays developable and its development changes, curved creases may be pulled straight and large drags may crumple it.</source>
         <translation>Beim Ziehen oder Drehen von Ecken darf sich das Blatt dehnen: es bleibt abwickelbar und seine Abwicklung ändert sich, gekrümmte Falze können gerade gezogen werden, und große Bewegungen können es zerknittern.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="190"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="206"/>
         <source>Motion &amp;Axis</source>
         <translation>Bewegungs&amp;achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="218"/>
         <source>&amp;Free</source>
         <translation>&amp;Frei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="203"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="219"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>Freie Bewegung: Das Ziehwerkzeug bewegt Ecken in der Bildebene; das Drehwerkzeug dreht sie um die senkrechte Achse (Z) oder um die Blickachse, wenn Werkzeuge ▸ Bewegungsachse ▸ Um die Blickachse drehen eingeschaltet ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="206"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="222"/>
         <source>&amp;X Axis</source>
         <translation>&amp;X-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="207"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="223"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang X; das Drehwerkzeug dreht sie um eine zu X parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes Y oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="209"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="225"/>
         <source>&amp;Y Axis</source>
         <translation>&amp;Y-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="210"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="226"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Y; das Drehwerkzeug dreht sie um eine zu Y parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="212"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="228"/>
         <source>&amp;Z Axis</source>
         <translation>&amp;Z-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="213"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="229"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Z; das Drehwerkzeug dreht sie um eine zu Z parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Y hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="237"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="253"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>Um die &amp;Blickachse drehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="240"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="256"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>Bei der Achswahl „Frei“ dreht das Drehwerkzeug die Ecken um die Blickrichtung durch ihren Schwerpunkt statt um die senkrechte Achse.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="270"/>
         <source>Colour &amp;By</source>
         <translation>&amp;Färben nach</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="278"/>
         <source>&amp;Patch</source>
         <translation>&amp;Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="278"/>
         <source>&amp;Developability</source>
         <translation>&amp;Abwickelbarkeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="278"/>
         <source>&amp;Flatness</source>
         <translation>&amp;Ebenheit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="263"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="279"/>
         <source>&amp;Angle Defect</source>
         <translation>&amp;Winkeldefekt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="265"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="281"/>
         <source>Every patch in its own colour.</source>
         <translation>Jedes Flächenstück in seiner eigenen Farbe.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="282"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>Wie weit jedes abgetastete Streifenviereck von abwickelbar entfernt ist: das normierte |det(a−b, a′, b′)|, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="268"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="284"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>Ebenheit δ jedes abgetasteten Vierecks: der Abstand seiner Diagonalen durch das Mittel seiner zwei kürzesten Kanten, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="270"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="286"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>Winkeldefekt |K| = |2π − Σ Winkel| an den inneren Ecken des abgetasteten Netzes, im Bogenmaß, logarithmisch skaliert.</translation>
     </message>
@@ -2202,6 +2227,44 @@
         <location filename="../app/gui/help_dialogs.cpp" line="56"/>
         <source>DevSurf User Manual</source>
         <translation>DevSurf-Benutzerhandbuch</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::MeasureTool</name>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="36"/>
+        <source>Measure: click two points of the surface in the 3D view.</source>
+        <translation>Messen: klicken Sie in der 3D-Ansicht auf zwei Punkte der Fläche.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="45"/>
+        <source>Copied: %1</source>
+        <translation>Kopiert: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="74"/>
+        <source>Measure: no surface under the mouse; click on the surface.</source>
+        <translation>Messen: unter der Maus liegt keine Fläche; klicken Sie auf die Fläche.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="105"/>
+        <source>Measure: first point picked; click the second.</source>
+        <translation>Messen: erster Punkt gewählt; klicken Sie den zweiten.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="124"/>
+        <source>3D %1 mm, along the sheet %2 mm</source>
+        <translation>3D %1 mm, entlang des Bogens %2 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="125"/>
+        <source>3D %1 mm (the points lie on different surfaces)</source>
+        <translation>3D %1 mm (die Punkte liegen auf verschiedenen Flächen)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="128"/>
+        <source>Distance: %1. Ctrl+C copies it.</source>
+        <translation>Abstand: %1. Ctrl+C kopiert ihn.</translation>
     </message>
 </context>
 <context>
@@ -3640,67 +3703,67 @@
 <context>
     <name>devsurf::app::SolverPanel</name>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="21"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="22"/>
         <source>Select Patches to Check</source>
         <translation>Zu prüfende Flächenstücke auswählen</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="62"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="75"/>
         <source>No solve yet. Tools ▸ Solve (Ctrl+Return) makes the design developable; the Drag tool keeps it developable while you pull vertices.</source>
         <translation>Noch nicht gelöst. Werkzeuge ▸ Lösen (Ctrl+Return) macht den Entwurf abwickelbar; das Ziehwerkzeug hält ihn abwickelbar, während Sie Ecken ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="35"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
         <source>Surf.</source>
         <translation>Fl.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="35"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
         <source>Iter.</source>
         <translation>It.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="35"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
         <source>Residual</source>
         <translation>Residuum</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="35"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="37"/>
         <source>Surface</source>
         <translation>Fläche</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="37"/>
         <source>Iteration</source>
         <translation>Iteration</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="37"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="38"/>
         <source>Largest constraint residual after the iteration</source>
         <translation>Größtes Residuum der Bedingungen nach der Iteration</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="38"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="39"/>
         <source>Time of the iteration in milliseconds</source>
         <translation>Dauer der Iteration in Millisekunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="49"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="50"/>
         <source>Selects the patches the last solve names: the least developable ones and those that fold over onto themselves</source>
         <translation>Wählt die Flächenstücke aus, die das letzte Lösen nennt: die am wenigsten abwickelbaren und die, die sich auf sich selbst zurückfalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="98"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="111"/>
         <source>No solve of the design as it is now: it was edited, or a step undone or redone, since the last report. Tools ▸ Solve (Ctrl+Return) reports on it.</source>
         <translation>Kein Lösen des Entwurfs in seinem jetzigen Zustand: Er wurde seit dem letzten Bericht bearbeitet, oder ein Schritt wurde rückgängig gemacht oder wiederhergestellt. Werkzeuge ▸ Lösen (Ctrl+Return) berichtet über ihn.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="134"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="147"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n Iteration in %3 ms.</numerusform>
@@ -3708,12 +3771,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="158"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="171"/>
         <source>&lt;br&gt;Crease conditions, sampled along the creases: largest residual %1.</source>
         <translation>&lt;br&gt;Falzbedingungen, entlang der Falze abgetastet: größtes Residuum %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="165"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="178"/>
         <source>&lt;br&gt;Least developable patches (normalised residual): %1</source>
         <translation>&lt;br&gt;Am wenigsten abwickelbare Flächenstücke (normiertes Residuum): %1</translation>
     </message>

@@ -177,7 +177,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_solver.cpp" line="31"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="32"/>
         <source>Make every surface developable again: %n iteration(s) of the solver, one undo step. Pinned vertices stay where they are.</source>
         <translation>
             <numerusform>Make every surface developable again: %n iteration of the solver, one undo step. Pinned vertices stay where they are.</numerusform>
@@ -364,7 +364,7 @@
 <context>
     <name>devsurf::app::SolverPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="134"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="147"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration in %3 ms.</numerusform>

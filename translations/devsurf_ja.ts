@@ -1706,7 +1706,7 @@
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="223"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="106"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="122"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
@@ -1944,234 +1944,259 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="27"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="28"/>
         <source>&amp;Solve</source>
         <translation>ソルブ(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="28"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="29"/>
         <source>Ctrl+Return</source>
         <translation>Ctrl+Return</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_solver.cpp" line="31"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="32"/>
         <source>Make every surface developable again: %n iteration(s) of the solver, one undo step. Pinned vertices stay where they are.</source>
         <translation>
             <numerusform>すべての曲面を可展面に戻します: ソルバーを %n 回反復し、1 回の取り消し操作にまとめます。固定した頂点は動きません。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="39"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
         <source>Solver &amp;Iterations…</source>
         <translation>ソルバーの反復回数(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="41"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="42"/>
         <source>The most solver iterations Tools ▸ Solve runs; it stops earlier once the surface has converged.</source>
         <translation>ツール ▸ ソルブで実行する反復回数の上限。曲面が収束すればそれより前に終わります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="46"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="47"/>
         <source>Solver Iterations</source>
         <translation>ソルバーの反復回数</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="46"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="47"/>
         <source>Most iterations of Tools ▸ Solve:</source>
         <translation>ツール ▸ ソルブの反復回数の上限:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="75"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="76"/>
         <source>R&amp;otate Vertices</source>
         <translation>頂点を回転(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="76"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="77"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="79"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="80"/>
         <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
         <translation>回転ツール (R): 2 個以上の頂点を選択し、3D ビューで頂点を押してマウスを横に動かすと、頂点が重心を通る軸 (鉛直、またはツールバーで選んだ軸) の周りに回転し、曲面が追従します。Esc で取り消します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="97"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="87"/>
+        <source>Measur&amp;e</source>
+        <translation>計測(&amp;Q)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="113"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>先にドラッグを終えてください。ドラッグ中も随時ソルブしています。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="55"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="55"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
         <source>&amp;Drag Vertices and Creases</source>
         <translation>頂点と折り線をドラッグ(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="58"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="59"/>
         <source>Drag tool: press on a vertex in the 3D view and move it, the surface follows and stays developable; press on a crease to slide it within its patches. The axis chosen in the toolbar, or holding X, Y or Z, moves along that axis; Esc cancels the drag (G).</source>
         <translation>ドラッグツール: 3D ビューで頂点を押して動かすと、曲面が追従して可展のまま保たれます。折り線を押すと、パッチの中で折り線を滑らせます。ツールバーで選んだ軸、または X、Y、Z を押したままにすると、その軸に沿って動きます。Esc でドラッグを取り消します (G)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="66"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="67"/>
         <source>S&amp;nap to Reference Curves</source>
         <translation>参照曲線にスナップ(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="69"/>
         <source>While dragging a vertex (no axis chosen), put it on the nearest reference curve drawn within 10 pixels of the mouse.</source>
         <translation>頂点をドラッグするとき (軸の指定なし)、マウスから 10 ピクセル以内に描かれた最も近い参照曲線の上に置きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="105"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="89"/>
+        <source>Measure tool: click two points of the surface in the 3D view; their distance in space and along the sheet (as the cut pattern has it) is drawn and shown in the status bar.</source>
+        <translation>計測ツール: 3D ビューで曲面上の 2 点をクリックすると、空間での距離とシートに沿った距離 (型紙上の距離) が描かれ、ステータスバーに表示されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="95"/>
+        <source>Ctrl+C</source>
+        <translation>Ctrl+C</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="95"/>
+        <source>Cop&amp;y Measurement</source>
+        <translation>計測値をコピー(&amp;Y)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="96"/>
+        <source>Copy the last measurement to the clipboard (Ctrl+C).</source>
+        <translation>最後の計測値をクリップボードにコピーします (Ctrl+C)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="121"/>
         <source>&amp;Cancel Solve</source>
         <translation>ソルブを中止(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="108"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="124"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>実行中のソルブを中止します。デザインはそのままです (Esc)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="132"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="148"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>ソルブ中: 反復 %1 / %2、残差 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="145"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="161"/>
         <source>&amp;Lengths While Dragging</source>
         <translation>ドラッグ中の長さ(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="157"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="173"/>
         <source>&amp;Automatic</source>
         <translation>自動(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="158"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="174"/>
         <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over, collapses a strip or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
         <translation>頂点のドラッグと回転は長さを保ちます。シートがそのままでは追従できない場合 (ドラッグが収束しない、折り返す、帯がつぶれる、または展開図が自身と重なる場合)、離したときにシートの伸びを許してドラッグをやり直し、二つのうち良い方を残します。ソルバーパネルにその旨が表示されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="162"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="178"/>
         <source>&amp;Keep Lengths</source>
         <translation>長さを保つ(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="163"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="179"/>
         <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape and fold. A motion the sheet cannot make without stretching then may not converge. Dragged creases always resize their patches.</source>
         <translation>頂点のドラッグや回転の間、シートは伸びずに曲がります。離れた部分はその場に留まり、曲がった折り線は形を保って折れます。シートが伸びずにはできない動きは収束しないことがあります。ドラッグした折り線は常にパッチの大きさを変えます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="167"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="183"/>
         <source>Let &amp;Stretch</source>
         <translation>伸びを許す(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="168"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="184"/>
         <source>While dragging or rotating vertices, the sheet may stretch: it stays developable and its development changes, curved creases may be pulled straight and large drags may crumple it.</source>
         <translation>頂点のドラッグや回転の間、シートは伸びることがあります。可展面のままで展開図が変わり、曲がった折り線はまっすぐに引き伸ばされることがあり、大きなドラッグではしわになることがあります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="190"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="206"/>
         <source>Motion &amp;Axis</source>
         <translation>移動の軸(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="202"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="218"/>
         <source>&amp;Free</source>
         <translation>自由(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="203"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="219"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>自由な移動: ドラッグツールは頂点を視平面内で動かし、回転ツールは鉛直軸 (Z) の周り、または ツール ▸ 移動の軸 ▸ 視線軸の周りに回転 がオンのときは視線軸の周りに回転させます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="206"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="222"/>
         <source>&amp;X Axis</source>
         <translation>X 軸(&amp;X)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="207"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="223"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X 軸: ドラッグツールは頂点を X 方向にだけ動かし、回転ツールは重心を通る X に平行な軸の周りに回転させます。Y または Z を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="209"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="225"/>
         <source>&amp;Y Axis</source>
         <translation>Y 軸(&amp;Y)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="210"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="226"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y 軸: ドラッグツールは頂点を Y 方向にだけ動かし、回転ツールは重心を通る Y に平行な軸の周りに回転させます。X または Z を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="212"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="228"/>
         <source>&amp;Z Axis</source>
         <translation>Z 軸(&amp;Z)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="213"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="229"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z 軸: ドラッグツールは頂点を Z 方向にだけ動かし、回転ツールは重心を通る Z に平行な軸の周りに回転させます。X または Y を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="237"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="253"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>視線軸の周りに回転(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="240"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="256"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>軸が「自由」のとき、回転ツールは頂点を鉛直軸ではなく重心を通る視線方向の周りに回転させます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="254"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="270"/>
         <source>Colour &amp;By</source>
         <translation>色分け(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="278"/>
         <source>&amp;Patch</source>
         <translation>パッチ(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="278"/>
         <source>&amp;Developability</source>
         <translation>可展性(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="278"/>
         <source>&amp;Flatness</source>
         <translation>平面性(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="263"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="279"/>
         <source>&amp;Angle Defect</source>
         <translation>角度欠損(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="265"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="281"/>
         <source>Every patch in its own colour.</source>
         <translation>パッチごとに色分けします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="282"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>サンプルした各帯の四角形が可展からどれだけ離れているか: 正規化した |det(a−b, a′, b′)| を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="268"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="284"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>サンプルした各四角形の平面性 δ: 対角線間の距離を最も短い 2 辺の平均で割った値を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="270"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="286"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>サンプルしたメッシュの内部頂点での角度欠損 |K| = |2π − Σ 角度| (ラジアン) を対数スケールで表示します。</translation>
     </message>
@@ -2182,6 +2207,44 @@
         <location filename="../app/gui/help_dialogs.cpp" line="56"/>
         <source>DevSurf User Manual</source>
         <translation>DevSurf ユーザーマニュアル</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::MeasureTool</name>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="36"/>
+        <source>Measure: click two points of the surface in the 3D view.</source>
+        <translation>計測: 3D ビューで曲面上の 2 点をクリックしてください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="45"/>
+        <source>Copied: %1</source>
+        <translation>コピーしました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="74"/>
+        <source>Measure: no surface under the mouse; click on the surface.</source>
+        <translation>計測: マウスの下に曲面がありません。曲面上をクリックしてください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="105"/>
+        <source>Measure: first point picked; click the second.</source>
+        <translation>計測: 1 点目を選びました。2 点目をクリックしてください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="124"/>
+        <source>3D %1 mm, along the sheet %2 mm</source>
+        <translation>3D %1 mm、シートに沿って %2 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="125"/>
+        <source>3D %1 mm (the points lie on different surfaces)</source>
+        <translation>3D %1 mm (2 点は別の曲面上にあります)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="128"/>
+        <source>Distance: %1. Ctrl+C copies it.</source>
+        <translation>距離: %1。Ctrl+C でコピーできます。</translation>
     </message>
 </context>
 <context>
@@ -3600,79 +3663,79 @@
 <context>
     <name>devsurf::app::SolverPanel</name>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="21"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="22"/>
         <source>Select Patches to Check</source>
         <translation>確認するパッチを選択</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="62"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="75"/>
         <source>No solve yet. Tools ▸ Solve (Ctrl+Return) makes the design developable; the Drag tool keeps it developable while you pull vertices.</source>
         <translation>まだソルブしていません。ツール ▸ ソルブ (Ctrl+Return) でデザインを可展面にします。ドラッグツールは頂点を引っ張る間も可展性を保ちます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="35"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
         <source>Surf.</source>
         <translation>曲面</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="35"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
         <source>Iter.</source>
         <translation>反復</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="35"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
         <source>Residual</source>
         <translation>残差</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="35"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="37"/>
         <source>Surface</source>
         <translation>曲面</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="37"/>
         <source>Iteration</source>
         <translation>反復</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="37"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="38"/>
         <source>Largest constraint residual after the iteration</source>
         <translation>反復後の制約残差の最大値</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="38"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="39"/>
         <source>Time of the iteration in milliseconds</source>
         <translation>反復の所要時間 (ミリ秒)</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="49"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="50"/>
         <source>Selects the patches the last solve names: the least developable ones and those that fold over onto themselves</source>
         <translation>直前のソルブが挙げたパッチ (可展性の最も低いものと自身の上に折り返されたもの) を選択します</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="98"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="111"/>
         <source>No solve of the design as it is now: it was edited, or a step undone or redone, since the last report. Tools ▸ Solve (Ctrl+Return) reports on it.</source>
         <translation>現在の形状はまだソルブしていません: 前回のレポートの後に編集、元に戻す、またはやり直しがありました。ツール ▸ ソルブ (Ctrl+Return) で現在の形状についてレポートします。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="134"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="147"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n 回反復、%3 ms。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="158"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="171"/>
         <source>&lt;br&gt;Crease conditions, sampled along the creases: largest residual %1.</source>
         <translation>&lt;br&gt;折り線の条件 (折り線に沿ってサンプリング): 最大残差 %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="165"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="178"/>
         <source>&lt;br&gt;Least developable patches (normalised residual): %1</source>
         <translation>&lt;br&gt;可展性の最も低いパッチ (正規化残差): %1</translation>
     </message>

@@ -81,6 +81,11 @@ public:
     std::optional<document::Pick> pick(double displayX, double displayY, double radius) const;
     // The patch drawn at a display position, if any (nothing hides it).
     std::optional<document::Pick> faceAt(double displayX, double displayY) const;
+    // The surface point under display coordinates and its patch (3D only).
+    std::optional<model::Vec3> surfacePoint(double displayX, double displayY,
+                                            std::optional<document::Pick>* face) const {
+        return surfaceHit(displayX, displayY, face);
+    }
     // Where the ray through a display point meets a plane (scene coordinates); nullopt if the
     // ray runs parallel to it.
     std::optional<model::Vec3> displayToPlane(double displayX, double displayY,

@@ -306,6 +306,30 @@ std::pair<int, int> SceneView::foldsDrawn() const {
     return d->scene->foldCounts();
 }
 
+std::optional<std::pair<model::Vec3, document::Pick>>
+SceneView::surfacePointAt(const QPoint& widgetPos) const {
+    if (d->kind != Kind::Spatial) {
+        return std::nullopt;
+    }
+    std::optional<Pick> face;
+    const std::optional<model::Vec3> hit =
+        d->scene->surfacePoint(d->displayX(widgetPos.x()), d->displayY(widgetPos.y()), &face);
+    if (!hit || !face) {
+        return std::nullopt;
+    }
+    return std::make_pair(*hit, *face);
+}
+
+void SceneView::setMeasurement(const std::vector<model::Vec3>& points, const QString& text) {
+    d->measurement = points;
+    d->measurementText = text;
+    rerender();
+}
+
+std::vector<model::Vec3> SceneView::measurementPoints() const {
+    return d->measurement;
+}
+
 QString SceneView::verdictText() const {
     return d->overlay->verdict();
 }
@@ -466,6 +490,12 @@ void SceneView::updateOverlay() {
         d->barLength = 0.0;
         d->overlay->setScaleBar(0.0, QString());
     }
+    std::vector<QPointF> measured;
+    for (const model::Vec3& point : d->measurement) {
+        const model::Vec3 display = d->scene->toDisplay(point);
+        measured.emplace_back(display.x / dpr, (d->deviceHeight() - 1.0 - display.y) / dpr);
+    }
+    d->overlay->setMeasurement(std::move(measured), d->measurementText);
     const QualityColouring* quality = d->scene->quality();
     if (quality != nullptr && quality->mode() != ColourBy::Patch) {
         d->overlay->setQualityLegend(ViewOverlay::QualityLegend{

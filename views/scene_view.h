@@ -82,6 +82,14 @@ public:
     double scaleBarLength() const;
     double scaleBarPixels() const;
     QString scaleBarText() const;
+    // The point of a surface under a widget position and its patch (3D view: the surface
+    // hit; the development view: none).
+    std::optional<std::pair<model::Vec3, document::Pick>>
+    surfacePointAt(const QPoint& widgetPos) const;
+    // A measurement drawn over the view: a line through the scene points, with its text at the
+    // last one (none when empty).
+    void setMeasurement(const std::vector<model::Vec3>& points, const QString& text);
+    std::vector<model::Vec3> measurementPoints() const;
     // The verdict of the design's last solve written in the upper right corner (empty: none),
     // and where it is drawn (widget coordinates of glWidget()).
     QString verdictText() const;

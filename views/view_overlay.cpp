@@ -185,6 +185,15 @@ QRectF ViewOverlay::verdictRect() const {
     return QRectF(this->width() - 10.0 - width, 10.0, width, metrics.height() + 8.0);
 }
 
+void ViewOverlay::setMeasurement(std::vector<QPointF> points, const QString& text) {
+    if (points == m_measured && text == m_measuredText) {
+        return;
+    }
+    m_measured = std::move(points);
+    m_measuredText = text;
+    update();
+}
+
 void ViewOverlay::setQualityLegend(std::optional<QualityLegend> legend) {
     const bool same =
         legend.has_value() == m_quality.has_value() &&
@@ -353,6 +362,34 @@ void ViewOverlay::paintEvent(QPaintEvent*) {
         painter.setPen(ink);
         painter.drawText(box.adjusted(58.0, 0, 0, 0), Qt::AlignVCenter | Qt::AlignLeft, entry.text);
         top += box.height() + 4.0;
+    }
+
+    // The measurement: a dark line with its picked points, its text beside the last one.
+    if (!m_measured.empty()) {
+        painter.setPen(QPen(QColor(20, 20, 20), 2.0));
+        for (std::size_t i = 1; i < m_measured.size(); ++i) {
+            painter.drawLine(m_measured[i - 1], m_measured[i]);
+        }
+        painter.setBrush(QColor(255, 200, 0));
+        for (const QPointF& point : m_measured) {
+            painter.drawEllipse(point, 4.0, 4.0);
+        }
+        if (!m_measuredText.isEmpty()) {
+            QRectF box = metrics.boundingRect(m_measuredText).adjusted(-4, -2, 4, 2);
+            box.moveTopLeft(m_measured.back() + QPointF(8.0, 8.0));
+            // Kept inside the view: left of the point, or above it, where it would leave it.
+            if (box.right() > width() - 4.0) {
+                box.moveRight(m_measured.back().x() - 8.0);
+            }
+            if (box.bottom() > height() - 4.0) {
+                box.moveBottom(m_measured.back().y() - 8.0);
+            }
+            painter.setPen(Qt::NoPen);
+            painter.setBrush(QColor(255, 255, 255, 230));
+            painter.drawRoundedRect(box, 3, 3);
+            painter.setPen(QColor(20, 20, 20));
+            painter.drawText(box, Qt::AlignCenter, m_measuredText);
+        }
     }
 
     if (m_quality) {

@@ -95,6 +95,9 @@ public:
     // Where it is drawn (widget coordinates); empty without one.
     QRectF qualityLegendRect() const;
 
+    // A measurement: a line through the points (widget coordinates) with the text at the last.
+    void setMeasurement(std::vector<QPointF> points, const QString& text);
+
     // A solve's verdict written in the upper right corner in `colour` (empty: none).
     void setVerdict(const QString& text, const QColor& colour);
     QString verdict() const { return m_verdict; }
@@ -130,6 +133,8 @@ private:
     QString m_verdict;
     QColor m_verdictColour;
     std::optional<QualityLegend> m_quality;
+    std::vector<QPointF> m_measured;
+    QString m_measuredText;
     void paintQualityLegend(QPainter& painter, const QFont& font) const;
 };
 
