@@ -909,7 +909,12 @@
 <context>
     <name>SceneView</name>
     <message>
-        <location filename="../views/quality_colours.cpp" line="84"/>
+        <location filename="../views/quality_colours.cpp" line="72"/>
+        <source>developable</source>
+        <translation>abwickelbar</translation>
+    </message>
+    <message>
+        <location filename="../views/quality_colours.cpp" line="89"/>
         <source>Developability
 |det(a-b, a&apos;, b&apos;)|
 (ratio)</source>
@@ -918,14 +923,14 @@
 (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="87"/>
+        <location filename="../views/quality_colours.cpp" line="92"/>
         <source>Flatness δ
 (ratio)</source>
         <translation>Ebenheit δ
 (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="89"/>
+        <location filename="../views/quality_colours.cpp" line="94"/>
         <source>Angle defect |K|
 (rad)</source>
         <translation>Winkeldefekt |K|
@@ -1013,6 +1018,110 @@
         <location filename="../model/document/commands/surface_edit_command.cpp" line="50"/>
         <source>There is no surface number %1 in the design.</source>
         <translation>Der Entwurf hat keine Fläche Nummer %1.</translation>
+    </message>
+</context>
+<context>
+    <name>VerdictText</name>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="26"/>
+        <source>patch %1</source>
+        <translation>Flächenstück %1</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="27"/>
+        <source>patches %1</source>
+        <translation>Flächenstücke %1</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="29"/>
+        <source>surface %1 %2</source>
+        <translation>Fläche %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="38"/>
+        <source>undo the last step and make a smaller change</source>
+        <translation>den letzten Schritt rückgängig machen und weniger ändern</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="41"/>
+        <source>solve with more iterations</source>
+        <translation>mit mehr Iterationen lösen</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="44"/>
+        <source>release pins that hold the sheet</source>
+        <translation>Fixierungen lösen, die den Bogen halten</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="47"/>
+        <source>solve again</source>
+        <translation>erneut lösen</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="49"/>
+        <source>; or </source>
+        <translation>; oder </translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="56"/>
+        <source>&lt; 0.0001</source>
+        <translation>&lt; 0,0001</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="66"/>
+        <source>Developable to the tolerance — ready to cut.</source>
+        <translation>Abwickelbar innerhalb der Toleranz — bereit zum Zuschnitt.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="69"/>
+        <source>Developable to within %1 mm of isometry over the sheet: the cut pattern is off by at most %1 mm.</source>
+        <translation>Abwickelbar bis auf %1 mm Abweichung von der Isometrie über den Bogen: das Schnittmuster weicht höchstens %1 mm ab.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="76"/>
+        <source>Not developable: the surface folds over or its development overlaps itself</source>
+        <translation>Nicht abwickelbar: die Fläche faltet sich über sich selbst oder ihre Abwicklung überlappt sich</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="78"/>
+        <location filename="../app/text/verdict_text.cpp" line="96"/>
+        <source>Not developable</source>
+        <translation>Nicht abwickelbar</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="79"/>
+        <source>%1. Try: %2.</source>
+        <translation>%1. Versuchen Sie: %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="80"/>
+        <source>%1 at %2. Try: %3.</source>
+        <translation>%1 bei %2. Versuchen Sie: %3.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="91"/>
+        <source>Developable — ready to cut</source>
+        <translation>Abwickelbar — bereit zum Zuschnitt</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="93"/>
+        <source>Developable within %1 mm</source>
+        <translation>Abwickelbar auf %1 mm genau</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="96"/>
+        <source>Not developable: %1</source>
+        <translation>Nicht abwickelbar: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="106"/>
+        <source>Largest constraint residual %1 (tolerance %2).</source>
+        <translation>Größtes Residuum der Bedingungen %1 (Toleranz %2).</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="111"/>
+        <source>Development: largest relative edge-length error %1 over a sheet of %2 mm, %3 mm from isometric.</source>
+        <translation>Abwicklung: größter relativer Kantenlängenfehler %1 über einen Bogen von %2 mm, %3 mm von der Isometrie entfernt.</translation>
     </message>
 </context>
 <context>
@@ -1539,253 +1648,253 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="117"/>
+        <location filename="../app/gui/main_window.cpp" line="122"/>
         <source>Patches</source>
         <translation>Flächenstücke</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="123"/>
+        <location filename="../app/gui/main_window.cpp" line="128"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="129"/>
+        <location filename="../app/gui/main_window.cpp" line="134"/>
         <source>Pins</source>
         <translation>Festgehaltene Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="139"/>
+        <location filename="../app/gui/main_window.cpp" line="144"/>
         <source>Solver</source>
         <translation>Löser</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="152"/>
+        <location filename="../app/gui/main_window.cpp" line="164"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="159"/>
+        <location filename="../app/gui/main_window.cpp" line="171"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="161"/>
+        <location filename="../app/gui/main_window.cpp" line="173"/>
         <source>&amp;New from Example…</source>
         <translation>&amp;Neu aus Beispiel…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="163"/>
+        <location filename="../app/gui/main_window.cpp" line="175"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="165"/>
+        <location filename="../app/gui/main_window.cpp" line="177"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="169"/>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="172"/>
+        <location filename="../app/gui/main_window.cpp" line="184"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="176"/>
+        <location filename="../app/gui/main_window.cpp" line="188"/>
         <source>Import &amp;Curves…</source>
         <translation>&amp;Kurven importieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <location filename="../app/gui/main_window.cpp" line="193"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>Austausch-JSON &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <location filename="../app/gui/main_window.cpp" line="193"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="184"/>
+        <location filename="../app/gui/main_window.cpp" line="196"/>
         <source>Export &amp;3D Shape…</source>
         <translation>&amp;3D-Form exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="188"/>
+        <location filename="../app/gui/main_window.cpp" line="200"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="192"/>
+        <location filename="../app/gui/main_window.cpp" line="204"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="195"/>
+        <location filename="../app/gui/main_window.cpp" line="207"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="198"/>
+        <location filename="../app/gui/main_window.cpp" line="210"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="205"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="208"/>
+        <location filename="../app/gui/main_window.cpp" line="220"/>
         <source>Remove Reference &amp;Curves</source>
         <translation>Referenz&amp;kurven entfernen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="210"/>
+        <location filename="../app/gui/main_window.cpp" line="222"/>
         <source>Select &amp;None</source>
         <translation>Auswahl &amp;aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="211"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="110"/>
+        <location filename="../app/gui/main_window.cpp" line="223"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="126"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="215"/>
+        <location filename="../app/gui/main_window.cpp" line="227"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="229"/>
         <source>&amp;3D View</source>
         <translation>&amp;3D-Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="229"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="219"/>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>&amp;Development View</source>
         <translation>&amp;Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="219"/>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="220"/>
+        <location filename="../app/gui/main_window.cpp" line="232"/>
         <source>3D &amp;and Development</source>
         <translation>3D &amp;und Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="221"/>
+        <location filename="../app/gui/main_window.cpp" line="233"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <location filename="../app/gui/main_window.cpp" line="237"/>
         <source>&amp;Control Polygons</source>
         <translation>&amp;Kontrollpolygone</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <location filename="../app/gui/main_window.cpp" line="237"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="226"/>
+        <location filename="../app/gui/main_window.cpp" line="238"/>
         <source>&amp;Vertices</source>
         <translation>&amp;Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="227"/>
+        <location filename="../app/gui/main_window.cpp" line="239"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="243"/>
         <source>&amp;Fit All</source>
         <translation>&amp;Alles zeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="243"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="237"/>
+        <location filename="../app/gui/main_window.cpp" line="249"/>
         <source>Reset &amp;Layout</source>
         <translation>&amp;Layout zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="242"/>
+        <location filename="../app/gui/main_window.cpp" line="254"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="245"/>
+        <location filename="../app/gui/main_window.cpp" line="257"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>Kanten&amp;kennzeichnung ändern (R ↔ S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="245"/>
+        <location filename="../app/gui/main_window.cpp" line="257"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="247"/>
+        <location filename="../app/gui/main_window.cpp" line="259"/>
         <source>Add &amp;Crease…</source>
         <translation>&amp;Falz einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="250"/>
+        <location filename="../app/gui/main_window.cpp" line="262"/>
         <source>Add R&amp;uling…</source>
         <translation>&amp;Erzeugende einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="263"/>
+        <location filename="../app/gui/main_window.cpp" line="275"/>
         <source>&amp;Pin Vertices</source>
         <translation>Ecken &amp;festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="264"/>
+        <location filename="../app/gui/main_window.cpp" line="276"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="266"/>
+        <location filename="../app/gui/main_window.cpp" line="278"/>
         <source>U&amp;npin Vertices</source>
         <translation>Ecken &amp;freigeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="267"/>
+        <location filename="../app/gui/main_window.cpp" line="279"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="270"/>
+        <location filename="../app/gui/main_window.cpp" line="282"/>
         <source>Hold the &amp;Sheet</source>
         <translation>&amp;Bogen festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="271"/>
+        <location filename="../app/gui/main_window.cpp" line="283"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="274"/>
+        <location filename="../app/gui/main_window.cpp" line="286"/>
         <source>Sheet S&amp;hape…</source>
         <translation>Bogen&amp;form…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="402"/>
+        <location filename="../app/gui/main_window.cpp" line="414"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n Fläche</numerusform>
@@ -1793,7 +1902,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="403"/>
+        <location filename="../app/gui/main_window.cpp" line="415"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -1801,7 +1910,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="404"/>
+        <location filename="../app/gui/main_window.cpp" line="416"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -1809,7 +1918,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="405"/>
+        <location filename="../app/gui/main_window.cpp" line="417"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n ausgewählt</numerusform>
@@ -1817,97 +1926,97 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="248"/>
+        <location filename="../app/gui/main_window.cpp" line="260"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="178"/>
+        <location filename="../app/gui/main_window.cpp" line="190"/>
         <source>Add the curves of a DXF, SVG, STEP or IGES file as reference curves</source>
         <translation>Die Kurven einer DXF-, SVG-, STEP- oder IGES-Datei als Referenzkurven hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="251"/>
+        <location filename="../app/gui/main_window.cpp" line="263"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="253"/>
+        <location filename="../app/gui/main_window.cpp" line="265"/>
         <source>Re&amp;fine Curves</source>
         <translation>Kurven &amp;verfeinern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="254"/>
+        <location filename="../app/gui/main_window.cpp" line="266"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="260"/>
+        <location filename="../app/gui/main_window.cpp" line="272"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>Ecken &amp;verschieben oder drehen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="260"/>
+        <location filename="../app/gui/main_window.cpp" line="272"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="303"/>
+        <location filename="../app/gui/main_window.cpp" line="315"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="304"/>
+        <location filename="../app/gui/main_window.cpp" line="316"/>
         <source>&amp;User Manual</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="311"/>
+        <location filename="../app/gui/main_window.cpp" line="323"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="317"/>
+        <location filename="../app/gui/main_window.cpp" line="329"/>
         <source>&amp;About DevSurf</source>
         <translation>&amp;Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="319"/>
+        <location filename="../app/gui/main_window.cpp" line="331"/>
         <source>About DevSurf</source>
         <translation>Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="320"/>
+        <location filename="../app/gui/main_window.cpp" line="332"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen mit Spline-Torsen (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="365"/>
+        <location filename="../app/gui/main_window.cpp" line="377"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="387"/>
+        <location filename="../app/gui/main_window.cpp" line="399"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="388"/>
+        <location filename="../app/gui/main_window.cpp" line="400"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="28"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="29"/>
         <source>&amp;Solve</source>
         <translation>&amp;Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="29"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="30"/>
         <source>Ctrl+Return</source>
         <translation>Ctrl+Return</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_solver.cpp" line="32"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="33"/>
         <source>Make every surface developable again: %n iteration(s) of the solver, one undo step. Pinned vertices stay where they are.</source>
         <translation>
             <numerusform>Macht jede Fläche wieder abwickelbar: %n Iteration des Lösers, ein Rückgängig-Schritt. Festgehaltene Ecken bleiben, wo sie sind.</numerusform>
@@ -1915,222 +2024,247 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="41"/>
         <source>Solver &amp;Iterations…</source>
         <translation>Löser-&amp;Iterationen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="42"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="43"/>
         <source>The most solver iterations Tools ▸ Solve runs; it stops earlier once the surface has converged.</source>
         <translation>Höchstzahl der Iterationen von Werkzeuge ▸ Lösen; es endet früher, sobald die Fläche konvergiert ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="47"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="48"/>
         <source>Solver Iterations</source>
         <translation>Löser-Iterationen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="47"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="48"/>
         <source>Most iterations of Tools ▸ Solve:</source>
         <translation>Höchstzahl der Iterationen von Werkzeuge ▸ Lösen:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="79"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="80"/>
         <source>R&amp;otate Vertices</source>
         <translation>Ecken dr&amp;ehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="80"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="81"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="83"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="84"/>
         <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
         <translation>Drehwerkzeug (R): Wählen Sie zwei oder mehr Ecken aus, drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie die Maus seitwärts; sie drehen sich um eine Achse durch ihren Schwerpunkt (senkrecht oder wie in der Werkzeugleiste gewählt), und die Fläche folgt. Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="101"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="117"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>Beenden Sie zuerst das Ziehen; es löst bereits während der Bewegung.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="57"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="57"/>
         <source>&amp;Drag Vertices and Creases</source>
         <translation>Ecken und Falze &amp;ziehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="59"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="60"/>
         <source>Drag tool: press on a vertex in the 3D view and move it, the surface follows and stays developable; press on a crease to slide it within its patches. The axis chosen in the toolbar, or holding X, Y or Z, moves along that axis; Esc cancels the drag (G).</source>
         <translation>Ziehwerkzeug: Drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie sie, die Fläche folgt und bleibt abwickelbar; drücken Sie auf einen Falz, um ihn innerhalb seiner Flächenstücke zu verschieben. Die in der Werkzeugleiste gewählte Achse oder gedrückt gehaltenes X, Y oder Z bewegt entlang dieser Achse; Esc bricht das Ziehen ab (G).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="67"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
         <source>S&amp;nap to Reference Curves</source>
         <translation>An Referenzkurven &amp;fangen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="69"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="70"/>
         <source>While dragging a vertex (no axis chosen), put it on the nearest reference curve drawn within 10 pixels of the mouse.</source>
         <translation>Beim Ziehen eines Eckpunkts (ohne gewählte Achse) wird er auf die nächste Referenzkurve gesetzt, die höchstens 10 Pixel von der Maus entfernt gezeichnet ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="75"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="76"/>
         <source>&amp;Fit Edge to Reference Curve</source>
         <translation>Kante an Referenzkurve an&amp;legen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="109"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="91"/>
+        <source>Measur&amp;e</source>
+        <translation>&amp;Messen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="93"/>
+        <source>Measure tool: click two points of the surface in the 3D view; their distance in space and along the sheet (as the cut pattern has it) is drawn and shown in the status bar.</source>
+        <translation>Messwerkzeug: klicken Sie in der 3D-Ansicht auf zwei Punkte der Fläche; ihr Abstand im Raum und entlang des Bogens (wie ihn das Schnittmuster hat) wird eingezeichnet und in der Statusleiste angezeigt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="99"/>
+        <source>Cop&amp;y Measurement</source>
+        <translation>Messung kop&amp;ieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="99"/>
+        <source>Ctrl+C</source>
+        <translation>Ctrl+C</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="100"/>
+        <source>Copy the last measurement to the clipboard (Ctrl+C).</source>
+        <translation>Die letzte Messung in die Zwischenablage kopieren (Ctrl+C).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="125"/>
         <source>&amp;Cancel Solve</source>
         <translation>Lösen &amp;abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="112"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="128"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>Das laufende Lösen beenden; der Entwurf bleibt, wie er ist (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="136"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="152"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>Lösen: Iteration %1 von %2, Residuum %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="149"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="165"/>
         <source>&amp;Lengths While Dragging</source>
         <translation>&amp;Längen beim Ziehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="161"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="177"/>
         <source>&amp;Automatic</source>
         <translation>&amp;Automatisch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="162"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="178"/>
         <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over, collapses a strip or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
         <translation>Das Ziehen und Drehen von Ecken behält die Längen bei. Wo das Blatt so nicht folgen kann (das Ziehen konvergiert nicht, faltet sich zurück, lässt einen Streifen zusammenfallen oder seine Abwicklung überlappt sich selbst), wird es beim Loslassen mit Dehnen des Blatts wiederholt, und das bessere der beiden Ergebnisse bleibt; das Löser-Fenster sagt es.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="166"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="182"/>
         <source>&amp;Keep Lengths</source>
         <translation>Längen &amp;beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="167"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="183"/>
         <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape and fold. A motion the sheet cannot make without stretching then may not converge. Dragged creases always resize their patches.</source>
         <translation>Beim Ziehen oder Drehen von Ecken biegt sich das Blatt, statt sich zu dehnen: entfernte Teile bleiben an ihrem Platz, und gekrümmte Falze behalten ihre Form und falten sich. Eine Bewegung, die das Blatt nicht ohne Dehnen ausführen kann, konvergiert dann unter Umständen nicht. Gezogene Falze ändern die Größe ihrer Flächenstücke immer.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="171"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="187"/>
         <source>Let &amp;Stretch</source>
         <translation>&amp;Dehnen zulassen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="172"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="188"/>
         <source>While dragging or rotating vertices, the sheet may stretch: it stays developable and its development changes, curved creases may be pulled straight and large drags may crumple it.</source>
         <translation>Beim Ziehen oder Drehen von Ecken darf sich das Blatt dehnen: es bleibt abwickelbar und seine Abwicklung ändert sich, gekrümmte Falze können gerade gezogen werden, und große Bewegungen können es zerknittern.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="194"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="210"/>
         <source>Motion &amp;Axis</source>
         <translation>Bewegungs&amp;achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="206"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="222"/>
         <source>&amp;Free</source>
         <translation>&amp;Frei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="207"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="223"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>Freie Bewegung: Das Ziehwerkzeug bewegt Ecken in der Bildebene; das Drehwerkzeug dreht sie um die senkrechte Achse (Z) oder um die Blickachse, wenn Werkzeuge ▸ Bewegungsachse ▸ Um die Blickachse drehen eingeschaltet ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="210"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="226"/>
         <source>&amp;X Axis</source>
         <translation>&amp;X-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="211"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="227"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang X; das Drehwerkzeug dreht sie um eine zu X parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes Y oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="213"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="229"/>
         <source>&amp;Y Axis</source>
         <translation>&amp;Y-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="214"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="230"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Y; das Drehwerkzeug dreht sie um eine zu Y parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Z hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="216"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="232"/>
         <source>&amp;Z Axis</source>
         <translation>&amp;Z-Achse</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="217"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="233"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z-Achse: Das Ziehwerkzeug bewegt Ecken nur entlang Z; das Drehwerkzeug dreht sie um eine zu Z parallele Achse durch ihren Schwerpunkt. Gedrückt gehaltenes X oder Y hat Vorrang.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="241"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="257"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>Um die &amp;Blickachse drehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="244"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="260"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>Bei der Achswahl „Frei“ dreht das Drehwerkzeug die Ecken um die Blickrichtung durch ihren Schwerpunkt statt um die senkrechte Achse.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="258"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="274"/>
         <source>Colour &amp;By</source>
         <translation>&amp;Färben nach</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="282"/>
         <source>&amp;Patch</source>
         <translation>&amp;Flächenstück</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="282"/>
         <source>&amp;Developability</source>
         <translation>&amp;Abwickelbarkeit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="282"/>
         <source>&amp;Flatness</source>
         <translation>&amp;Ebenheit</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="267"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="283"/>
         <source>&amp;Angle Defect</source>
         <translation>&amp;Winkeldefekt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="269"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="285"/>
         <source>Every patch in its own colour.</source>
         <translation>Jedes Flächenstück in seiner eigenen Farbe.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="270"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="286"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>Wie weit jedes abgetastete Streifenviereck von abwickelbar entfernt ist: das normierte |det(a−b, a′, b′)|, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="272"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="288"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>Ebenheit δ jedes abgetasteten Vierecks: der Abstand seiner Diagonalen durch das Mittel seiner zwei kürzesten Kanten, logarithmisch skaliert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="274"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="290"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>Winkeldefekt |K| = |2π − Σ Winkel| an den inneren Ecken des abgetasteten Netzes, im Bogenmaß, logarithmisch skaliert.</translation>
     </message>
@@ -2141,6 +2275,44 @@
         <location filename="../app/gui/help_dialogs.cpp" line="56"/>
         <source>DevSurf User Manual</source>
         <translation>DevSurf-Benutzerhandbuch</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::MeasureTool</name>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="36"/>
+        <source>Measure: click two points of the surface in the 3D view.</source>
+        <translation>Messen: klicken Sie in der 3D-Ansicht auf zwei Punkte der Fläche.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="45"/>
+        <source>Copied: %1</source>
+        <translation>Kopiert: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="74"/>
+        <source>Measure: no surface under the mouse; click on the surface.</source>
+        <translation>Messen: unter der Maus liegt keine Fläche; klicken Sie auf die Fläche.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="105"/>
+        <source>Measure: first point picked; click the second.</source>
+        <translation>Messen: erster Punkt gewählt; klicken Sie den zweiten.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="124"/>
+        <source>3D %1 mm, along the sheet %2 mm</source>
+        <translation>3D %1 mm, entlang des Bogens %2 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="125"/>
+        <source>3D %1 mm (the points lie on different surfaces)</source>
+        <translation>3D %1 mm (die Punkte liegen auf verschiedenen Flächen)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="128"/>
+        <source>Distance: %1. Ctrl+C copies it.</source>
+        <translation>Abstand: %1. Ctrl+C kopiert ihn.</translation>
     </message>
 </context>
 <context>
@@ -2608,27 +2780,27 @@
         <translation>Freigeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/pins_panel.cpp" line="25"/>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="26"/>
         <source>No vertex is pinned. Select vertices and choose Tools ▸ Pin Vertices (Ctrl+K): the solver then never moves them.</source>
         <translation>Keine Ecke ist festgehalten. Wählen Sie Ecken aus und dann Werkzeuge ▸ Ecken festhalten (Ctrl+K): Der Löser bewegt sie dann nie.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/pins_panel.cpp" line="28"/>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="29"/>
         <source>The pinned vertices: the solver never moves them. Selecting a row selects its vertex in the views.</source>
         <translation>Die festgehaltenen Ecken: Der Löser bewegt sie nie. Eine Zeile auswählen wählt ihre Ecke in den Ansichten aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/pins_panel.cpp" line="31"/>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="32"/>
         <source>Release the selected pinned vertices (one undo step).</source>
         <translation>Die ausgewählten festgehaltenen Ecken freigeben (ein Rückgängig-Schritt).</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/pins_panel.cpp" line="65"/>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="66"/>
         <source>Vertex %1</source>
         <translation>Ecke %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/pins_panel.cpp" line="66"/>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="67"/>
         <source>Surface %1, vertex %2</source>
         <translation>Fläche %1, Ecke %2</translation>
     </message>
@@ -2667,17 +2839,17 @@
         <translation>Grad %1, C%2, %3 Intervalle</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="150"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="152"/>
         <source>&lt;b&gt;Vertex %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;Ecke %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="162"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="164"/>
         <source>&lt;b&gt;Edge %1&lt;/b&gt; from vertex %2 to vertex %3&lt;br&gt;</source>
         <translation>&lt;b&gt;Kante %1&lt;/b&gt; von Ecke %2 zu Ecke %3&lt;br&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="126"/>
         <source>Nothing selected.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
         <translation>Nichts ausgewählt.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Klicken Sie auf eine Ecke, Kante oder ein Flächenstück, um es auszuwählen; Umschalt-Klick erweitert die Auswahl.&lt;/i&gt;</translation>
     </message>
@@ -2702,13 +2874,13 @@
         <translation>Nicht gefaltet.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="78"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="80"/>
         <source>&lt;b&gt;Pinned&lt;/b&gt;: the solver never moves this vertex. Tools ▸ Unpin Vertices (Ctrl+Shift+K) releases it.</source>
         <translation>&lt;b&gt;Festgehalten&lt;/b&gt;: Der Löser bewegt diese Ecke nie. Werkzeuge ▸ Ecken freigeben (Ctrl+Shift+K) gibt sie frei.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="126"/>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="136"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="128"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="138"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -2716,7 +2888,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="127"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="129"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -2724,12 +2896,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="134"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="136"/>
         <source>Selected: %1, %2, %3.</source>
         <translation>Ausgewählt: %1, %2, %3.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="135"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="137"/>
         <source>%n vertex(es)</source>
         <translation>
             <numerusform>%n Ecke</numerusform>
@@ -2737,7 +2909,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="135"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="137"/>
         <source>%n edge(s)</source>
         <translation>
             <numerusform>%n Kante</numerusform>
@@ -2745,7 +2917,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="167"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="169"/>
         <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
         <translation>
             <numerusform>Spline-Kurve (S), %1, %n Kontrollpunkt.&lt;br&gt;</numerusform>
@@ -2753,27 +2925,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="173"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="175"/>
         <source>A boundary curve of patch %1.</source>
         <translation>Eine Randkurve des Flächenstücks %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="177"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="179"/>
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>Erzeugende (R), eine Strecke der Länge %1 mm.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="184"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="186"/>
         <source>Smooth between patches %1 and %2: the surface stays smooth across it.</source>
         <translation>Glatt zwischen den Flächenstücken %1 und %2: Die Fläche bleibt über sie hinweg glatt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="186"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="188"/>
         <source>Sharp between patches %1 and %2: the surface may fold along it.</source>
         <translation>Scharf zwischen den Flächenstücken %1 und %2: Die Fläche darf entlang ihr falten.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="196"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="198"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;Flächenstück %1&lt;/b&gt;: %2&lt;br&gt;Kantenbeschriftung entlang des Flächenstücks: %3&lt;br&gt;%n Ecke.</numerusform>
@@ -2781,7 +2953,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="235"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="237"/>
         <source>Cannot move</source>
         <translation>Verschieben nicht möglich</translation>
     </message>
@@ -3357,37 +3529,37 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="91"/>
+        <location filename="../app/gui/solve_controller.cpp" line="93"/>
         <source>There is nothing to solve.</source>
         <translation>Es gibt nichts zu lösen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="115"/>
+        <location filename="../app/gui/solve_controller.cpp" line="117"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: Es gibt nichts zu lösen; nichts wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="151"/>
+        <location filename="../app/gui/solve_controller.cpp" line="153"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 abgebrochen; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="152"/>
+        <location filename="../app/gui/solve_controller.cpp" line="154"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 abgebrochen: %2; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="154"/>
+        <location filename="../app/gui/solve_controller.cpp" line="156"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>Lösen abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="155"/>
+        <location filename="../app/gui/solve_controller.cpp" line="157"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>Lösen abgebrochen: %1; der Entwurf ist unverändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="161"/>
+        <location filename="../app/gui/solve_controller.cpp" line="163"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Form prüfen: %n Flächenstück faltet sich auf sich selbst zurück (%1); rückgängig machen oder anders fixieren oder bewegen.</numerusform>
@@ -3395,7 +3567,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="168"/>
+        <location filename="../app/gui/solve_controller.cpp" line="170"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Form prüfen: die Abwicklung überlappt sich selbst an %n Flächenstück (%1); rückgängig machen oder anders fixieren oder bewegen.</numerusform>
@@ -3403,27 +3575,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="177"/>
+        <location filename="../app/gui/solve_controller.cpp" line="179"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 fehlgeschlagen: %2 Nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="206"/>
+        <location filename="../app/gui/solve_controller.cpp" line="208"/>
         <source>the design changed</source>
         <translation>der Entwurf hat sich geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="213"/>
+        <location filename="../app/gui/solve_controller.cpp" line="215"/>
         <source>it stopped before a degenerate shape</source>
         <translation>es hielt vor einer entarteten Form an</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="216"/>
+        <location filename="../app/gui/solve_controller.cpp" line="218"/>
         <source>no convergence, residual %1</source>
         <translation>keine Konvergenz, Residuum %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="219"/>
+        <location filename="../app/gui/solve_controller.cpp" line="221"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>an %n Stelle zurückgefaltet</numerusform>
@@ -3431,117 +3603,117 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="222"/>
+        <location filename="../app/gui/solve_controller.cpp" line="224"/>
         <source>a development overlapping itself</source>
         <translation>eine sich selbst überlappende Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="225"/>
+        <location filename="../app/gui/solve_controller.cpp" line="227"/>
         <source>collapsed strips</source>
         <translation>zusammengefallene Streifen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="228"/>
+        <location filename="../app/gui/solve_controller.cpp" line="230"/>
         <source>a shape too degenerate to measure</source>
         <translation>eine zum Messen zu entartete Form</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="252"/>
+        <location filename="../app/gui/solve_controller.cpp" line="254"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="257"/>
+        <location filename="../app/gui/solve_controller.cpp" line="259"/>
         <source>The solve was cancelled.</source>
         <translation>Das Lösen wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="260"/>
+        <location filename="../app/gui/solve_controller.cpp" line="262"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 kann nicht gelöst werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="261"/>
+        <location filename="../app/gui/solve_controller.cpp" line="263"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 kann nicht gelöst werden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="265"/>
+        <location filename="../app/gui/solve_controller.cpp" line="267"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>Das Ziel der gezogenen Ecke %1 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="266"/>
+        <location filename="../app/gui/solve_controller.cpp" line="268"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>Das Ziel des gezogenen Kontrollpunkts %1 der Kante %2 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="272"/>
+        <location filename="../app/gui/solve_controller.cpp" line="274"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 konnte nicht gelöst werden: das lineare Gleichungssystem ließ sich nicht faktorisieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="274"/>
+        <location filename="../app/gui/solve_controller.cpp" line="276"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 konnte nicht gelöst werden: eine Iteration ergab Werte, die nicht endlich sind.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="278"/>
+        <location filename="../app/gui/solve_controller.cpp" line="280"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 konnte nicht gelöst werden: der Löser lieferte einen Wert, der nicht endlich ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="284"/>
+        <location filename="../app/gui/solve_controller.cpp" line="286"/>
         <source>(Solver: %1)</source>
         <translation>(Löser: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="299"/>
+        <location filename="../app/gui/solve_controller.cpp" line="301"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="303"/>
+        <location filename="../app/gui/solve_controller.cpp" line="305"/>
         <source>Failed: %1</source>
         <translation>Fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="317"/>
+        <location filename="../app/gui/solve_controller.cpp" line="319"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="321"/>
+        <location filename="../app/gui/solve_controller.cpp" line="323"/>
         <source>tolerance reached</source>
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="321"/>
+        <location filename="../app/gui/solve_controller.cpp" line="323"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="328"/>
+        <location filename="../app/gui/solve_controller.cpp" line="330"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="336"/>
+        <location filename="../app/gui/solve_controller.cpp" line="338"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="342"/>
+        <location filename="../app/gui/solve_controller.cpp" line="344"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; das Beibehalten der Längen schlug fehl (%1), daher wurde das Ziehen mit Dehnen des Blatts wiederholt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="350"/>
+        <location filename="../app/gui/solve_controller.cpp" line="352"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; vom Bogen um %1 mm zurückgehalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="362"/>
+        <location filename="../app/gui/solve_controller.cpp" line="364"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n Flächenstück faltet sich auf sich selbst zurück, wo die Fläche sich selbst überlappt: %1</numerusform>
@@ -3549,7 +3721,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="377"/>
+        <location filename="../app/gui/solve_controller.cpp" line="379"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; die Abwicklung überlappt sich selbst an %n Flächenstück (%1) und lässt sich nicht aus einem Bogen schneiden</numerusform>
@@ -3557,32 +3729,38 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="383"/>
+        <location filename="../app/gui/solve_controller.cpp" line="385"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="388"/>
+        <location filename="../app/gui/solve_controller.cpp" line="390"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="392"/>
+        <location filename="../app/gui/solve_controller.cpp" line="395"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="401"/>
+        <location filename="../app/gui/solve_controller.cpp" line="404"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="451"/>
+        <location filename="../app/gui/solve_controller.cpp" line="454"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>Lösen hat den Entwurf unverändert gelassen: das Lösen machte ihn weniger abwickelbar (größtes Abwickelbarkeitsresiduum %1 → %2).</translation>
     </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="478"/>
+        <source>%1. %2</source>
+        <comment>a verdict, then a sentence</comment>
+        <translation>%1. %2</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="474"/>
+        <location filename="../app/gui/solve_controller.cpp" line="482"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n Fläche unverändert gelassen: das Lösen machte sie weniger abwickelbar.</numerusform>
@@ -3590,12 +3768,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="486"/>
+        <location filename="../app/gui/solve_controller.cpp" line="494"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 verworfen: Der Entwurf hat sich während des Lösens geändert; nichts wurde bewegt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="495"/>
+        <location filename="../app/gui/solve_controller.cpp" line="503"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, abwickelbar gehalten: %n Iteration, größtes Bedingungsresiduum %2.</numerusform>
@@ -3603,38 +3781,38 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="178"/>
-        <location filename="../app/gui/solve_controller.cpp" line="443"/>
+        <location filename="../app/gui/solve_controller.cpp" line="180"/>
+        <location filename="../app/gui/solve_controller.cpp" line="446"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="235"/>
+        <location filename="../app/gui/solve_controller.cpp" line="237"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt auf der Geraden zwischen den festgehaltenen Ecken %2 und %3, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="242"/>
+        <location filename="../app/gui/solve_controller.cpp" line="244"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt im Dreieck der festgehaltenen Ecken %2, %3 und %4, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="324"/>
+        <location filename="../app/gui/solve_controller.cpp" line="326"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>beim letzten gültigen Zustand angehalten, bevor eine Erzeugende, eine Kurve oder ein Flächenstück kollabierte</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="332"/>
+        <location filename="../app/gui/solve_controller.cpp" line="334"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (endete bei Iteration %1, der mit dem kleinsten Residuum)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="420"/>
+        <location filename="../app/gui/solve_controller.cpp" line="423"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="470"/>
+        <location filename="../app/gui/solve_controller.cpp" line="475"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>
@@ -3645,67 +3823,67 @@
 <context>
     <name>devsurf::app::SolverPanel</name>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="19"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="22"/>
         <source>Select Patches to Check</source>
         <translation>Zu prüfende Flächenstücke auswählen</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="52"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="75"/>
         <source>No solve yet. Tools ▸ Solve (Ctrl+Return) makes the design developable; the Drag tool keeps it developable while you pull vertices.</source>
         <translation>Noch nicht gelöst. Werkzeuge ▸ Lösen (Ctrl+Return) macht den Entwurf abwickelbar; das Ziehwerkzeug hält ihn abwickelbar, während Sie Ecken ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
         <source>Surf.</source>
         <translation>Fl.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
         <source>Iter.</source>
         <translation>It.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
         <source>Residual</source>
         <translation>Residuum</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="27"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="37"/>
         <source>Surface</source>
         <translation>Fläche</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="27"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="37"/>
         <source>Iteration</source>
         <translation>Iteration</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="28"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="38"/>
         <source>Largest constraint residual after the iteration</source>
         <translation>Größtes Residuum der Bedingungen nach der Iteration</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="29"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="39"/>
         <source>Time of the iteration in milliseconds</source>
         <translation>Dauer der Iteration in Millisekunden</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="40"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="50"/>
         <source>Selects the patches the last solve names: the least developable ones and those that fold over onto themselves</source>
         <translation>Wählt die Flächenstücke aus, die das letzte Lösen nennt: die am wenigsten abwickelbaren und die, die sich auf sich selbst zurückfalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="88"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="111"/>
         <source>No solve of the design as it is now: it was edited, or a step undone or redone, since the last report. Tools ▸ Solve (Ctrl+Return) reports on it.</source>
         <translation>Kein Lösen des Entwurfs in seinem jetzigen Zustand: Er wurde seit dem letzten Bericht bearbeitet, oder ein Schritt wurde rückgängig gemacht oder wiederhergestellt. Werkzeuge ▸ Lösen (Ctrl+Return) berichtet über ihn.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="120"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="147"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n Iteration in %3 ms.</numerusform>
@@ -3713,14 +3891,14 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="144"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="171"/>
         <source>&lt;br&gt;Crease conditions, sampled along the creases: largest residual %1.</source>
         <translation>&lt;br&gt;Falzbedingungen, entlang der Falze abgetastet: größtes Residuum %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="151"/>
-        <source>&lt;br&gt;Tolerance not reached. Least developable patches (normalised residual): %1</source>
-        <translation>&lt;br&gt;Toleranz nicht erreicht. Am wenigsten abwickelbare Flächenstücke (normiertes Residuum): %1</translation>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="178"/>
+        <source>&lt;br&gt;Least developable patches (normalised residual): %1</source>
+        <translation>&lt;br&gt;Am wenigsten abwickelbare Flächenstücke (normiertes Residuum): %1</translation>
     </message>
 </context>
 <context>
@@ -3884,12 +4062,12 @@
 <context>
     <name>devsurf::views::SceneView</name>
     <message>
-        <location filename="../views/scene_view.cpp" line="52"/>
+        <location filename="../views/scene_view.cpp" line="53"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="54"/>
+        <location filename="../views/scene_view.cpp" line="55"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
@@ -3962,50 +4140,50 @@
 <context>
     <name>devsurf::views::ViewOverlay</name>
     <message>
-        <location filename="../views/view_overlay.cpp" line="69"/>
+        <location filename="../views/view_overlay.cpp" line="71"/>
         <source>CF</source>
         <comment>badge: curved fold</comment>
         <translation>GF</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="71"/>
+        <location filename="../views/view_overlay.cpp" line="73"/>
         <source>G</source>
         <comment>badge: geodesic</comment>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="73"/>
+        <location filename="../views/view_overlay.cpp" line="75"/>
         <source>SU</source>
         <comment>badge: straight when unfolded</comment>
         <translation>GA</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="141"/>
+        <location filename="../views/view_overlay.cpp" line="143"/>
         <source>Mountain fold</source>
         <translation>Bergfalte</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="145"/>
+        <location filename="../views/view_overlay.cpp" line="147"/>
         <source>Valley fold</source>
         <translation>Talfalte</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="149"/>
+        <location filename="../views/view_overlay.cpp" line="151"/>
         <source>Crease, not folded</source>
         <translation>Falz, nicht gefaltet</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="159"/>
+        <location filename="../views/view_overlay.cpp" line="161"/>
         <source>Smooth ruling</source>
         <translation>Glatte Erzeugende</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="162"/>
+        <location filename="../views/view_overlay.cpp" line="164"/>
         <source>Sharp ruling</source>
         <translation>Scharfe Erzeugende</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="165"/>
+        <location filename="../views/view_overlay.cpp" line="167"/>
         <source>Sheet</source>
         <translation>Bogen</translation>
     </message>

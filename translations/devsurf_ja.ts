@@ -901,7 +901,12 @@
 <context>
     <name>SceneView</name>
     <message>
-        <location filename="../views/quality_colours.cpp" line="84"/>
+        <location filename="../views/quality_colours.cpp" line="72"/>
+        <source>developable</source>
+        <translation>可展</translation>
+    </message>
+    <message>
+        <location filename="../views/quality_colours.cpp" line="89"/>
         <source>Developability
 |det(a-b, a&apos;, b&apos;)|
 (ratio)</source>
@@ -910,14 +915,14 @@
 (比)</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="87"/>
+        <location filename="../views/quality_colours.cpp" line="92"/>
         <source>Flatness δ
 (ratio)</source>
         <translation>平面性 δ
 (比)</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="89"/>
+        <location filename="../views/quality_colours.cpp" line="94"/>
         <source>Angle defect |K|
 (rad)</source>
         <translation>角度欠損 |K|
@@ -1003,6 +1008,110 @@
         <location filename="../model/document/commands/surface_edit_command.cpp" line="50"/>
         <source>There is no surface number %1 in the design.</source>
         <translation>デザインに曲面 %1 はありません。</translation>
+    </message>
+</context>
+<context>
+    <name>VerdictText</name>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="26"/>
+        <source>patch %1</source>
+        <translation>パッチ %1</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="27"/>
+        <source>patches %1</source>
+        <translation>パッチ %1</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="29"/>
+        <source>surface %1 %2</source>
+        <translation>曲面 %1 %2</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="38"/>
+        <source>undo the last step and make a smaller change</source>
+        <translation>最後の操作を元に戻して小さく変更する</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="41"/>
+        <source>solve with more iterations</source>
+        <translation>反復回数を増やしてソルブする</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="44"/>
+        <source>release pins that hold the sheet</source>
+        <translation>シートを押さえている固定を解除する</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="47"/>
+        <source>solve again</source>
+        <translation>もう一度ソルブする</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="49"/>
+        <source>; or </source>
+        <translation>、または</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="56"/>
+        <source>&lt; 0.0001</source>
+        <translation>&lt; 0.0001</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="66"/>
+        <source>Developable to the tolerance — ready to cut.</source>
+        <translation>許容値の範囲で可展 — 切り出せます。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="69"/>
+        <source>Developable to within %1 mm of isometry over the sheet: the cut pattern is off by at most %1 mm.</source>
+        <translation>シート全体で等長から %1 mm 以内の可展: 型紙のずれは最大 %1 mm です。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="76"/>
+        <source>Not developable: the surface folds over or its development overlaps itself</source>
+        <translation>可展ではありません: 曲面が自身の上に折り返されているか、展開図が自身と重なっています</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="78"/>
+        <location filename="../app/text/verdict_text.cpp" line="96"/>
+        <source>Not developable</source>
+        <translation>可展ではありません</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="79"/>
+        <source>%1. Try: %2.</source>
+        <translation>%1。試すこと: %2。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="80"/>
+        <source>%1 at %2. Try: %3.</source>
+        <translation>%1 (%2)。試すこと: %3。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="91"/>
+        <source>Developable — ready to cut</source>
+        <translation>可展 — 切り出せます</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="93"/>
+        <source>Developable within %1 mm</source>
+        <translation>%1 mm 以内で可展</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="96"/>
+        <source>Not developable: %1</source>
+        <translation>可展ではありません: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="106"/>
+        <source>Largest constraint residual %1 (tolerance %2).</source>
+        <translation>制約の最大残差 %1 (許容値 %2)。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="111"/>
+        <source>Development: largest relative edge-length error %1 over a sheet of %2 mm, %3 mm from isometric.</source>
+        <translation>展開図: 辺の長さの最大相対誤差 %1、シートの大きさ %2 mm、等長から %3 mm。</translation>
     </message>
 </context>
 <context>
@@ -1524,593 +1633,618 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="117"/>
+        <location filename="../app/gui/main_window.cpp" line="122"/>
         <source>Patches</source>
         <translation>パッチ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="123"/>
+        <location filename="../app/gui/main_window.cpp" line="128"/>
         <source>Properties</source>
         <translation>プロパティ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="129"/>
+        <location filename="../app/gui/main_window.cpp" line="134"/>
         <source>Pins</source>
         <translation>固定点</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="139"/>
+        <location filename="../app/gui/main_window.cpp" line="144"/>
         <source>Solver</source>
         <translation>ソルバー</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="152"/>
+        <location filename="../app/gui/main_window.cpp" line="164"/>
         <source>Main</source>
         <translation>メイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="159"/>
+        <location filename="../app/gui/main_window.cpp" line="171"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="161"/>
+        <location filename="../app/gui/main_window.cpp" line="173"/>
         <source>&amp;New from Example…</source>
         <translation>例から新規作成(&amp;N)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="163"/>
+        <location filename="../app/gui/main_window.cpp" line="175"/>
         <source>&amp;Open…</source>
         <translation>開く(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="165"/>
+        <location filename="../app/gui/main_window.cpp" line="177"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="169"/>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="172"/>
+        <location filename="../app/gui/main_window.cpp" line="184"/>
         <source>Save &amp;As…</source>
         <translation>名前を付けて保存(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="176"/>
+        <location filename="../app/gui/main_window.cpp" line="188"/>
         <source>Import &amp;Curves…</source>
         <translation>曲線を読み込む(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="178"/>
+        <location filename="../app/gui/main_window.cpp" line="190"/>
         <source>Add the curves of a DXF, SVG, STEP or IGES file as reference curves</source>
         <translation>DXF、SVG、STEP または IGES ファイルの曲線を参照曲線として加えます</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <location filename="../app/gui/main_window.cpp" line="193"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>交換用 JSON をエクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <location filename="../app/gui/main_window.cpp" line="193"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="184"/>
+        <location filename="../app/gui/main_window.cpp" line="196"/>
         <source>Export &amp;3D Shape…</source>
         <translation>3D 形状をエクスポート(&amp;3)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="188"/>
+        <location filename="../app/gui/main_window.cpp" line="200"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="192"/>
+        <location filename="../app/gui/main_window.cpp" line="204"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="195"/>
+        <location filename="../app/gui/main_window.cpp" line="207"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="198"/>
+        <location filename="../app/gui/main_window.cpp" line="210"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="205"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="208"/>
+        <location filename="../app/gui/main_window.cpp" line="220"/>
         <source>Remove Reference &amp;Curves</source>
         <translation>参照曲線を削除(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="210"/>
+        <location filename="../app/gui/main_window.cpp" line="222"/>
         <source>Select &amp;None</source>
         <translation>選択を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="211"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="110"/>
+        <location filename="../app/gui/main_window.cpp" line="223"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="126"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="215"/>
+        <location filename="../app/gui/main_window.cpp" line="227"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="229"/>
         <source>&amp;3D View</source>
         <translation>3D ビュー(&amp;3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="229"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="219"/>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>&amp;Development View</source>
         <translation>展開図ビュー(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="219"/>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="220"/>
+        <location filename="../app/gui/main_window.cpp" line="232"/>
         <source>3D &amp;and Development</source>
         <translation>3D と展開図(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="221"/>
+        <location filename="../app/gui/main_window.cpp" line="233"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <location filename="../app/gui/main_window.cpp" line="237"/>
         <source>&amp;Control Polygons</source>
         <translation>制御多角形(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="225"/>
+        <location filename="../app/gui/main_window.cpp" line="237"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="226"/>
+        <location filename="../app/gui/main_window.cpp" line="238"/>
         <source>&amp;Vertices</source>
         <translation>頂点(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="227"/>
+        <location filename="../app/gui/main_window.cpp" line="239"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="243"/>
         <source>&amp;Fit All</source>
         <translation>全体を表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="243"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="237"/>
+        <location filename="../app/gui/main_window.cpp" line="249"/>
         <source>Reset &amp;Layout</source>
         <translation>レイアウトをリセット(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="242"/>
+        <location filename="../app/gui/main_window.cpp" line="254"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="245"/>
+        <location filename="../app/gui/main_window.cpp" line="257"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>辺のラベルを変更 (R ↔ S)(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="245"/>
+        <location filename="../app/gui/main_window.cpp" line="257"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="247"/>
+        <location filename="../app/gui/main_window.cpp" line="259"/>
         <source>Add &amp;Crease…</source>
         <translation>折り線を追加(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="248"/>
+        <location filename="../app/gui/main_window.cpp" line="260"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="250"/>
+        <location filename="../app/gui/main_window.cpp" line="262"/>
         <source>Add R&amp;uling…</source>
         <translation>母線を追加(&amp;U)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="251"/>
+        <location filename="../app/gui/main_window.cpp" line="263"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="253"/>
+        <location filename="../app/gui/main_window.cpp" line="265"/>
         <source>Re&amp;fine Curves</source>
         <translation>曲線を細分化(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="254"/>
+        <location filename="../app/gui/main_window.cpp" line="266"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="260"/>
+        <location filename="../app/gui/main_window.cpp" line="272"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>頂点の移動・回転(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="260"/>
+        <location filename="../app/gui/main_window.cpp" line="272"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="263"/>
+        <location filename="../app/gui/main_window.cpp" line="275"/>
         <source>&amp;Pin Vertices</source>
         <translation>頂点を固定(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="264"/>
+        <location filename="../app/gui/main_window.cpp" line="276"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="266"/>
+        <location filename="../app/gui/main_window.cpp" line="278"/>
         <source>U&amp;npin Vertices</source>
         <translation>頂点の固定を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="267"/>
+        <location filename="../app/gui/main_window.cpp" line="279"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="270"/>
+        <location filename="../app/gui/main_window.cpp" line="282"/>
         <source>Hold the &amp;Sheet</source>
         <translation>シートを保持(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="271"/>
+        <location filename="../app/gui/main_window.cpp" line="283"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="274"/>
+        <location filename="../app/gui/main_window.cpp" line="286"/>
         <source>Sheet S&amp;hape…</source>
         <translation>シートの形(&amp;H)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="303"/>
+        <location filename="../app/gui/main_window.cpp" line="315"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="304"/>
+        <location filename="../app/gui/main_window.cpp" line="316"/>
         <source>&amp;User Manual</source>
         <translation>ユーザーマニュアル(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="311"/>
+        <location filename="../app/gui/main_window.cpp" line="323"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="317"/>
+        <location filename="../app/gui/main_window.cpp" line="329"/>
         <source>&amp;About DevSurf</source>
         <translation>DevSurf について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="319"/>
+        <location filename="../app/gui/main_window.cpp" line="331"/>
         <source>About DevSurf</source>
         <translation>DevSurf について</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="320"/>
+        <location filename="../app/gui/main_window.cpp" line="332"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;スプライン可展面による可展面と曲線折り折り紙の設計 (Tang, Bo, Wallner, Pottmann 2015)。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="365"/>
+        <location filename="../app/gui/main_window.cpp" line="377"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="387"/>
+        <location filename="../app/gui/main_window.cpp" line="399"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="388"/>
+        <location filename="../app/gui/main_window.cpp" line="400"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="402"/>
+        <location filename="../app/gui/main_window.cpp" line="414"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>曲面 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="403"/>
+        <location filename="../app/gui/main_window.cpp" line="415"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="404"/>
+        <location filename="../app/gui/main_window.cpp" line="416"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="405"/>
+        <location filename="../app/gui/main_window.cpp" line="417"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n 個選択</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="28"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="29"/>
         <source>&amp;Solve</source>
         <translation>ソルブ(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="29"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="30"/>
         <source>Ctrl+Return</source>
         <translation>Ctrl+Return</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_solver.cpp" line="32"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="33"/>
         <source>Make every surface developable again: %n iteration(s) of the solver, one undo step. Pinned vertices stay where they are.</source>
         <translation>
             <numerusform>すべての曲面を可展面に戻します: ソルバーを %n 回反復し、1 回の取り消し操作にまとめます。固定した頂点は動きません。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="40"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="41"/>
         <source>Solver &amp;Iterations…</source>
         <translation>ソルバーの反復回数(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="42"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="43"/>
         <source>The most solver iterations Tools ▸ Solve runs; it stops earlier once the surface has converged.</source>
         <translation>ツール ▸ ソルブで実行する反復回数の上限。曲面が収束すればそれより前に終わります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="47"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="48"/>
         <source>Solver Iterations</source>
         <translation>ソルバーの反復回数</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="47"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="48"/>
         <source>Most iterations of Tools ▸ Solve:</source>
         <translation>ツール ▸ ソルブの反復回数の上限:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="79"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="80"/>
         <source>R&amp;otate Vertices</source>
         <translation>頂点を回転(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="80"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="81"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="83"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="84"/>
         <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
         <translation>回転ツール (R): 2 個以上の頂点を選択し、3D ビューで頂点を押してマウスを横に動かすと、頂点が重心を通る軸 (鉛直、またはツールバーで選んだ軸) の周りに回転し、曲面が追従します。Esc で取り消します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="101"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="117"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>先にドラッグを終えてください。ドラッグ中も随時ソルブしています。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="57"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="56"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="57"/>
         <source>&amp;Drag Vertices and Creases</source>
         <translation>頂点と折り線をドラッグ(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="59"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="60"/>
         <source>Drag tool: press on a vertex in the 3D view and move it, the surface follows and stays developable; press on a crease to slide it within its patches. The axis chosen in the toolbar, or holding X, Y or Z, moves along that axis; Esc cancels the drag (G).</source>
         <translation>ドラッグツール: 3D ビューで頂点を押して動かすと、曲面が追従して可展のまま保たれます。折り線を押すと、パッチの中で折り線を滑らせます。ツールバーで選んだ軸、または X、Y、Z を押したままにすると、その軸に沿って動きます。Esc でドラッグを取り消します (G)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="67"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
         <source>S&amp;nap to Reference Curves</source>
         <translation>参照曲線にスナップ(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="69"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="70"/>
         <source>While dragging a vertex (no axis chosen), put it on the nearest reference curve drawn within 10 pixels of the mouse.</source>
         <translation>頂点をドラッグするとき (軸の指定なし)、マウスから 10 ピクセル以内に描かれた最も近い参照曲線の上に置きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="75"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="76"/>
         <source>&amp;Fit Edge to Reference Curve</source>
         <translation>辺を参照曲線に合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="109"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="91"/>
+        <source>Measur&amp;e</source>
+        <translation>計測(&amp;Q)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="93"/>
+        <source>Measure tool: click two points of the surface in the 3D view; their distance in space and along the sheet (as the cut pattern has it) is drawn and shown in the status bar.</source>
+        <translation>計測ツール: 3D ビューで曲面上の 2 点をクリックすると、空間での距離とシートに沿った距離 (型紙上の距離) が描かれ、ステータスバーに表示されます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="99"/>
+        <source>Cop&amp;y Measurement</source>
+        <translation>計測値をコピー(&amp;Y)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="99"/>
+        <source>Ctrl+C</source>
+        <translation>Ctrl+C</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="100"/>
+        <source>Copy the last measurement to the clipboard (Ctrl+C).</source>
+        <translation>最後の計測値をクリップボードにコピーします (Ctrl+C)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="125"/>
         <source>&amp;Cancel Solve</source>
         <translation>ソルブを中止(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="112"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="128"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>実行中のソルブを中止します。デザインはそのままです (Esc)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="136"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="152"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>ソルブ中: 反復 %1 / %2、残差 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="149"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="165"/>
         <source>&amp;Lengths While Dragging</source>
         <translation>ドラッグ中の長さ(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="161"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="177"/>
         <source>&amp;Automatic</source>
         <translation>自動(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="162"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="178"/>
         <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over, collapses a strip or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
         <translation>頂点のドラッグと回転は長さを保ちます。シートがそのままでは追従できない場合 (ドラッグが収束しない、折り返す、帯がつぶれる、または展開図が自身と重なる場合)、離したときにシートの伸びを許してドラッグをやり直し、二つのうち良い方を残します。ソルバーパネルにその旨が表示されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="166"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="182"/>
         <source>&amp;Keep Lengths</source>
         <translation>長さを保つ(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="167"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="183"/>
         <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape and fold. A motion the sheet cannot make without stretching then may not converge. Dragged creases always resize their patches.</source>
         <translation>頂点のドラッグや回転の間、シートは伸びずに曲がります。離れた部分はその場に留まり、曲がった折り線は形を保って折れます。シートが伸びずにはできない動きは収束しないことがあります。ドラッグした折り線は常にパッチの大きさを変えます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="171"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="187"/>
         <source>Let &amp;Stretch</source>
         <translation>伸びを許す(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="172"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="188"/>
         <source>While dragging or rotating vertices, the sheet may stretch: it stays developable and its development changes, curved creases may be pulled straight and large drags may crumple it.</source>
         <translation>頂点のドラッグや回転の間、シートは伸びることがあります。可展面のままで展開図が変わり、曲がった折り線はまっすぐに引き伸ばされることがあり、大きなドラッグではしわになることがあります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="194"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="210"/>
         <source>Motion &amp;Axis</source>
         <translation>移動の軸(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="206"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="222"/>
         <source>&amp;Free</source>
         <translation>自由(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="207"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="223"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>自由な移動: ドラッグツールは頂点を視平面内で動かし、回転ツールは鉛直軸 (Z) の周り、または ツール ▸ 移動の軸 ▸ 視線軸の周りに回転 がオンのときは視線軸の周りに回転させます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="210"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="226"/>
         <source>&amp;X Axis</source>
         <translation>X 軸(&amp;X)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="211"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="227"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X 軸: ドラッグツールは頂点を X 方向にだけ動かし、回転ツールは重心を通る X に平行な軸の周りに回転させます。Y または Z を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="213"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="229"/>
         <source>&amp;Y Axis</source>
         <translation>Y 軸(&amp;Y)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="214"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="230"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y 軸: ドラッグツールは頂点を Y 方向にだけ動かし、回転ツールは重心を通る Y に平行な軸の周りに回転させます。X または Z を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="216"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="232"/>
         <source>&amp;Z Axis</source>
         <translation>Z 軸(&amp;Z)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="217"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="233"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z 軸: ドラッグツールは頂点を Z 方向にだけ動かし、回転ツールは重心を通る Z に平行な軸の周りに回転させます。X または Y を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="241"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="257"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>視線軸の周りに回転(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="244"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="260"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>軸が「自由」のとき、回転ツールは頂点を鉛直軸ではなく重心を通る視線方向の周りに回転させます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="258"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="274"/>
         <source>Colour &amp;By</source>
         <translation>色分け(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="282"/>
         <source>&amp;Patch</source>
         <translation>パッチ(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="282"/>
         <source>&amp;Developability</source>
         <translation>可展性(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="266"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="282"/>
         <source>&amp;Flatness</source>
         <translation>平面性(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="267"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="283"/>
         <source>&amp;Angle Defect</source>
         <translation>角度欠損(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="269"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="285"/>
         <source>Every patch in its own colour.</source>
         <translation>パッチごとに色分けします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="270"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="286"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>サンプルした各帯の四角形が可展からどれだけ離れているか: 正規化した |det(a−b, a′, b′)| を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="272"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="288"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>サンプルした各四角形の平面性 δ: 対角線間の距離を最も短い 2 辺の平均で割った値を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="274"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="290"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>サンプルしたメッシュの内部頂点での角度欠損 |K| = |2π − Σ 角度| (ラジアン) を対数スケールで表示します。</translation>
     </message>
@@ -2121,6 +2255,44 @@
         <location filename="../app/gui/help_dialogs.cpp" line="56"/>
         <source>DevSurf User Manual</source>
         <translation>DevSurf ユーザーマニュアル</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::MeasureTool</name>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="36"/>
+        <source>Measure: click two points of the surface in the 3D view.</source>
+        <translation>計測: 3D ビューで曲面上の 2 点をクリックしてください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="45"/>
+        <source>Copied: %1</source>
+        <translation>コピーしました: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="74"/>
+        <source>Measure: no surface under the mouse; click on the surface.</source>
+        <translation>計測: マウスの下に曲面がありません。曲面上をクリックしてください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="105"/>
+        <source>Measure: first point picked; click the second.</source>
+        <translation>計測: 1 点目を選びました。2 点目をクリックしてください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="124"/>
+        <source>3D %1 mm, along the sheet %2 mm</source>
+        <translation>3D %1 mm、シートに沿って %2 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="125"/>
+        <source>3D %1 mm (the points lie on different surfaces)</source>
+        <translation>3D %1 mm (2 点は別の曲面上にあります)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="128"/>
+        <source>Distance: %1. Ctrl+C copies it.</source>
+        <translation>距離: %1。Ctrl+C でコピーできます。</translation>
     </message>
 </context>
 <context>
@@ -2585,27 +2757,27 @@
         <translation>固定を解除</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/pins_panel.cpp" line="25"/>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="26"/>
         <source>No vertex is pinned. Select vertices and choose Tools ▸ Pin Vertices (Ctrl+K): the solver then never moves them.</source>
         <translation>固定された頂点はありません。頂点を選択してツール ▸ 頂点を固定 (Ctrl+K) を選ぶと、ソルバーはそれらを動かしません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/pins_panel.cpp" line="28"/>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="29"/>
         <source>The pinned vertices: the solver never moves them. Selecting a row selects its vertex in the views.</source>
         <translation>固定された頂点: ソルバーはこれらを動かしません。行を選択するとビューでその頂点が選択されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/pins_panel.cpp" line="31"/>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="32"/>
         <source>Release the selected pinned vertices (one undo step).</source>
         <translation>選択した固定頂点の固定を解除します (元に戻す 1 ステップ)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/pins_panel.cpp" line="65"/>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="66"/>
         <source>Vertex %1</source>
         <translation>頂点 %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/pins_panel.cpp" line="66"/>
+        <location filename="../app/gui/panels/pins_panel.cpp" line="67"/>
         <source>Surface %1, vertex %2</source>
         <translation>曲面 %1、頂点 %2</translation>
     </message>
@@ -2664,95 +2836,95 @@
         <translation>折れていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="78"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="80"/>
         <source>&lt;b&gt;Pinned&lt;/b&gt;: the solver never moves this vertex. Tools ▸ Unpin Vertices (Ctrl+Shift+K) releases it.</source>
         <translation>&lt;b&gt;固定&lt;/b&gt;: ソルバーはこの頂点を動かしません。ツール ▸ 頂点の固定を解除 (Ctrl+Shift+K) で解除します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="124"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="126"/>
         <source>Nothing selected.&lt;br&gt;%1, %2.&lt;br&gt;&lt;i&gt;Click a vertex, edge or patch to select it; Shift-click adds to the selection.&lt;/i&gt;</source>
         <translation>何も選択されていません。&lt;br&gt;%1、%2。&lt;br&gt;&lt;i&gt;頂点・辺・パッチをクリックすると選択されます。Shift+クリックで選択に追加します。&lt;/i&gt;</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="126"/>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="136"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="128"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="138"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="127"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="129"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="134"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="136"/>
         <source>Selected: %1, %2, %3.</source>
         <translation>選択: %1、%2、%3。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="135"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="137"/>
         <source>%n vertex(es)</source>
         <translation>
             <numerusform>頂点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="135"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="137"/>
         <source>%n edge(s)</source>
         <translation>
             <numerusform>辺 %n 本</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="150"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="152"/>
         <source>&lt;b&gt;Vertex %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;頂点 %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="162"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="164"/>
         <source>&lt;b&gt;Edge %1&lt;/b&gt; from vertex %2 to vertex %3&lt;br&gt;</source>
         <translation>&lt;b&gt;辺 %1&lt;/b&gt; 頂点 %2 から頂点 %3 まで&lt;br&gt;</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="167"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="169"/>
         <source>Spline curve (S), %1, %n control point(s).&lt;br&gt;</source>
         <translation>
             <numerusform>スプライン曲線 (S)、%1、制御点 %n 個。&lt;br&gt;</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="173"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="175"/>
         <source>A boundary curve of patch %1.</source>
         <translation>パッチ %1 の境界曲線。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="177"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="179"/>
         <source>Ruling (R), a straight segment of length %1 mm.</source>
         <translation>母線 (R)、長さ %1 mm の線分。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="184"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="186"/>
         <source>Smooth between patches %1 and %2: the surface stays smooth across it.</source>
         <translation>パッチ %1 と %2 の間で滑らか: 曲面はこの母線をまたいで滑らかに保たれます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="186"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="188"/>
         <source>Sharp between patches %1 and %2: the surface may fold along it.</source>
         <translation>パッチ %1 と %2 の間で鋭角: 曲面はこの母線に沿って折れてもかまいません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/properties_panel.cpp" line="196"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="198"/>
         <source>&lt;b&gt;Patch %1&lt;/b&gt;: %2&lt;br&gt;Edge labels along the patch: %3&lt;br&gt;%n corner(s).</source>
         <translation>
             <numerusform>&lt;b&gt;パッチ %1&lt;/b&gt;: %2&lt;br&gt;パッチに沿った辺のラベル: %3&lt;br&gt;角 %n 個。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/properties_panel.cpp" line="235"/>
+        <location filename="../app/gui/panels/properties_panel.cpp" line="237"/>
         <source>Cannot move</source>
         <translation>移動できません</translation>
     </message>
@@ -3323,277 +3495,283 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="91"/>
+        <location filename="../app/gui/solve_controller.cpp" line="93"/>
         <source>There is nothing to solve.</source>
         <translation>ソルブする対象がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="115"/>
+        <location filename="../app/gui/solve_controller.cpp" line="117"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: ソルブするものがありません。何も変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="151"/>
+        <location filename="../app/gui/solve_controller.cpp" line="153"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 を取り消しました。何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="152"/>
+        <location filename="../app/gui/solve_controller.cpp" line="154"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 を取り消しました: %2。何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="154"/>
+        <location filename="../app/gui/solve_controller.cpp" line="156"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>ソルブを中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="155"/>
+        <location filename="../app/gui/solve_controller.cpp" line="157"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>ソルブを中止しました: %1。デザインは変更されていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="161"/>
+        <location filename="../app/gui/solve_controller.cpp" line="163"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>形状を確認してください: %n 個のパッチが自身の上に折り返されています (%1)。元に戻すか、固定や移動の仕方を変えてください。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="168"/>
+        <location filename="../app/gui/solve_controller.cpp" line="170"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>形状を確認してください: 展開図が %n 個のパッチで自身と重なっています (%1)。元に戻すか、固定や移動の仕方を変えてください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="177"/>
+        <location filename="../app/gui/solve_controller.cpp" line="179"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 に失敗しました: %2 何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="206"/>
+        <location filename="../app/gui/solve_controller.cpp" line="208"/>
         <source>the design changed</source>
         <translation>デザインが変更されました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="213"/>
+        <location filename="../app/gui/solve_controller.cpp" line="215"/>
         <source>it stopped before a degenerate shape</source>
         <translation>退化した形の手前で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="216"/>
+        <location filename="../app/gui/solve_controller.cpp" line="218"/>
         <source>no convergence, residual %1</source>
         <translation>収束せず、残差 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="219"/>
+        <location filename="../app/gui/solve_controller.cpp" line="221"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>%n 箇所で折り返し</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="222"/>
+        <location filename="../app/gui/solve_controller.cpp" line="224"/>
         <source>a development overlapping itself</source>
         <translation>展開図が自身と重なる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="225"/>
+        <location filename="../app/gui/solve_controller.cpp" line="227"/>
         <source>collapsed strips</source>
         <translation>帯がつぶれる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="228"/>
+        <location filename="../app/gui/solve_controller.cpp" line="230"/>
         <source>a shape too degenerate to measure</source>
         <translation>測定できないほど退化した形</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="252"/>
+        <location filename="../app/gui/solve_controller.cpp" line="254"/>
         <source>Surface %1</source>
         <translation>曲面 %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="257"/>
+        <location filename="../app/gui/solve_controller.cpp" line="259"/>
         <source>The solve was cancelled.</source>
         <translation>ソルブを中止しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="260"/>
+        <location filename="../app/gui/solve_controller.cpp" line="262"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 は解けません: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="261"/>
+        <location filename="../app/gui/solve_controller.cpp" line="263"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 は解けません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="265"/>
+        <location filename="../app/gui/solve_controller.cpp" line="267"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>頂点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="266"/>
+        <location filename="../app/gui/solve_controller.cpp" line="268"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>辺 %2 の制御点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="272"/>
+        <location filename="../app/gui/solve_controller.cpp" line="274"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 を解けませんでした: 連立一次方程式を分解できませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="274"/>
+        <location filename="../app/gui/solve_controller.cpp" line="276"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 を解けませんでした: 反復で有限でない値が生じました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="278"/>
+        <location filename="../app/gui/solve_controller.cpp" line="280"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 を解けませんでした: ソルバーが有限でない値を出しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="284"/>
+        <location filename="../app/gui/solve_controller.cpp" line="286"/>
         <source>(Solver: %1)</source>
         <translation>(ソルバー: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="299"/>
+        <location filename="../app/gui/solve_controller.cpp" line="301"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="303"/>
+        <location filename="../app/gui/solve_controller.cpp" line="305"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="317"/>
+        <location filename="../app/gui/solve_controller.cpp" line="319"/>
         <source>converged</source>
         <translation>収束</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="321"/>
+        <location filename="../app/gui/solve_controller.cpp" line="323"/>
         <source>tolerance reached</source>
         <translation>許容値に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="321"/>
+        <location filename="../app/gui/solve_controller.cpp" line="323"/>
         <source>iteration limit reached</source>
         <translation>反復回数の上限に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="328"/>
+        <location filename="../app/gui/solve_controller.cpp" line="330"/>
         <source>failed</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="336"/>
+        <location filename="../app/gui/solve_controller.cpp" line="338"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>。ソルブで可展性が悪化したため元のままにしました (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="342"/>
+        <location filename="../app/gui/solve_controller.cpp" line="344"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; 長さを保てなかったため (%1)、シートの伸びを許してドラッグをやり直しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="350"/>
+        <location filename="../app/gui/solve_controller.cpp" line="352"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; シートにより %1 mm 手前で止まりました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="362"/>
+        <location filename="../app/gui/solve_controller.cpp" line="364"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n 個のパッチが自身の上に折り返され、曲面が自己重複しています: %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="377"/>
+        <location filename="../app/gui/solve_controller.cpp" line="379"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; 展開図が %n 個のパッチで自身と重なっており (%1)、1 枚のシートから切り出せません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="383"/>
+        <location filename="../app/gui/solve_controller.cpp" line="385"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="388"/>
+        <location filename="../app/gui/solve_controller.cpp" line="390"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="392"/>
+        <location filename="../app/gui/solve_controller.cpp" line="395"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="401"/>
+        <location filename="../app/gui/solve_controller.cpp" line="404"/>
         <source>Solve</source>
         <translation>ソルブ</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="451"/>
+        <location filename="../app/gui/solve_controller.cpp" line="454"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>ソルブはデザインを元のままにしました。ソルブで可展性が悪化したためです (最大の可展性残差 %1 → %2)。</translation>
     </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="478"/>
+        <source>%1. %2</source>
+        <comment>a verdict, then a sentence</comment>
+        <translation>%1。%2</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="474"/>
+        <location filename="../app/gui/solve_controller.cpp" line="482"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n 個のサーフェスを元のままにしました。ソルブで可展性が悪化したためです。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="486"/>
+        <location filename="../app/gui/solve_controller.cpp" line="494"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 を破棄しました: ソルブ中にデザインが変更されました。何も動いていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="495"/>
+        <location filename="../app/gui/solve_controller.cpp" line="503"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1、可展を維持: %n 回反復、最大の制約残差 %2。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="178"/>
-        <location filename="../app/gui/solve_controller.cpp" line="443"/>
+        <location filename="../app/gui/solve_controller.cpp" line="180"/>
+        <location filename="../app/gui/solve_controller.cpp" line="446"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>ソルブに失敗しました: %1 デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="235"/>
+        <location filename="../app/gui/solve_controller.cpp" line="237"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2 と %3 を結ぶ直線上にあり、この 2 点の距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="242"/>
+        <location filename="../app/gui/solve_controller.cpp" line="244"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2、%3、%4 の三角形の内側にあり、これらの距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="324"/>
+        <location filename="../app/gui/solve_controller.cpp" line="326"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>母線、曲線またはパッチがつぶれる前の最後の有効な状態で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="332"/>
+        <location filename="../app/gui/solve_controller.cpp" line="334"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (残差が最小の反復 %1 で終了)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="420"/>
+        <location filename="../app/gui/solve_controller.cpp" line="423"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>ソルブ中にデザインが変更されたため、結果を破棄しました。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="470"/>
+        <location filename="../app/gui/solve_controller.cpp" line="475"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>ソルブ完了: %n 回反復、制約残差の最大値 %1。</numerusform>
@@ -3603,81 +3781,81 @@
 <context>
     <name>devsurf::app::SolverPanel</name>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="19"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="22"/>
         <source>Select Patches to Check</source>
         <translation>確認するパッチを選択</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="52"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="75"/>
         <source>No solve yet. Tools ▸ Solve (Ctrl+Return) makes the design developable; the Drag tool keeps it developable while you pull vertices.</source>
         <translation>まだソルブしていません。ツール ▸ ソルブ (Ctrl+Return) でデザインを可展面にします。ドラッグツールは頂点を引っ張る間も可展性を保ちます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
         <source>Surf.</source>
         <translation>曲面</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
         <source>Iter.</source>
         <translation>反復</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
         <source>Residual</source>
         <translation>残差</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="26"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="36"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="27"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="37"/>
         <source>Surface</source>
         <translation>曲面</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="27"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="37"/>
         <source>Iteration</source>
         <translation>反復</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="28"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="38"/>
         <source>Largest constraint residual after the iteration</source>
         <translation>反復後の制約残差の最大値</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="29"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="39"/>
         <source>Time of the iteration in milliseconds</source>
         <translation>反復の所要時間 (ミリ秒)</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="40"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="50"/>
         <source>Selects the patches the last solve names: the least developable ones and those that fold over onto themselves</source>
         <translation>直前のソルブが挙げたパッチ (可展性の最も低いものと自身の上に折り返されたもの) を選択します</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="88"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="111"/>
         <source>No solve of the design as it is now: it was edited, or a step undone or redone, since the last report. Tools ▸ Solve (Ctrl+Return) reports on it.</source>
         <translation>現在の形状はまだソルブしていません: 前回のレポートの後に編集、元に戻す、またはやり直しがありました。ツール ▸ ソルブ (Ctrl+Return) で現在の形状についてレポートします。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="120"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="147"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n 回反復、%3 ms。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="144"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="171"/>
         <source>&lt;br&gt;Crease conditions, sampled along the creases: largest residual %1.</source>
         <translation>&lt;br&gt;折り線の条件 (折り線に沿ってサンプリング): 最大残差 %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="151"/>
-        <source>&lt;br&gt;Tolerance not reached. Least developable patches (normalised residual): %1</source>
-        <translation>&lt;br&gt;許容値に達しませんでした。可展性の最も低いパッチ (正規化残差): %1</translation>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="178"/>
+        <source>&lt;br&gt;Least developable patches (normalised residual): %1</source>
+        <translation>&lt;br&gt;可展性の最も低いパッチ (正規化残差): %1</translation>
     </message>
 </context>
 <context>
@@ -3839,12 +4017,12 @@
 <context>
     <name>devsurf::views::SceneView</name>
     <message>
-        <location filename="../views/scene_view.cpp" line="52"/>
+        <location filename="../views/scene_view.cpp" line="53"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="54"/>
+        <location filename="../views/scene_view.cpp" line="55"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
@@ -3917,50 +4095,50 @@
 <context>
     <name>devsurf::views::ViewOverlay</name>
     <message>
-        <location filename="../views/view_overlay.cpp" line="69"/>
+        <location filename="../views/view_overlay.cpp" line="71"/>
         <source>CF</source>
         <comment>badge: curved fold</comment>
         <translation>曲</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="71"/>
+        <location filename="../views/view_overlay.cpp" line="73"/>
         <source>G</source>
         <comment>badge: geodesic</comment>
         <translation>測</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="73"/>
+        <location filename="../views/view_overlay.cpp" line="75"/>
         <source>SU</source>
         <comment>badge: straight when unfolded</comment>
         <translation>直</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="141"/>
+        <location filename="../views/view_overlay.cpp" line="143"/>
         <source>Mountain fold</source>
         <translation>山折り</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="145"/>
+        <location filename="../views/view_overlay.cpp" line="147"/>
         <source>Valley fold</source>
         <translation>谷折り</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="149"/>
+        <location filename="../views/view_overlay.cpp" line="151"/>
         <source>Crease, not folded</source>
         <translation>折れていない折り線</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="159"/>
+        <location filename="../views/view_overlay.cpp" line="161"/>
         <source>Smooth ruling</source>
         <translation>滑らかな母線</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="162"/>
+        <location filename="../views/view_overlay.cpp" line="164"/>
         <source>Sharp ruling</source>
         <translation>鋭角の母線</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="165"/>
+        <location filename="../views/view_overlay.cpp" line="167"/>
         <source>Sheet</source>
         <translation>シート</translation>
     </message>

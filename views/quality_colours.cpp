@@ -1,11 +1,11 @@
 #include "quality_colours.h"
 
+#include "solver/core/options.h"
+
 #include <vtkLookupTable.h>
-#include <vtkRenderer.h>
-#include <vtkScalarBarActor.h>
-#include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <QColor>
 #include <QCoreApplication>
 
 #include <algorithm>
@@ -44,38 +44,43 @@ std::vector<double> qualityValues(const SurfaceScene& scene, ColourBy by) {
     return values;
 }
 
-QualityColouring::QualityColouring(vtkRenderer* renderer)
-    : m_table(vtkSmartPointer<vtkLookupTable>::New()),
-      m_bar(vtkSmartPointer<vtkScalarBarActor>::New()) {
+QualityColouring::QualityColouring()
+    : m_tolerance(solver::Options{}.reportTolerance),
+      m_table(vtkSmartPointer<vtkLookupTable>::New()) {
     m_table->SetScaleToLog10();
-    // Blue (good) through green and yellow to red (far from the goal).
-    m_table->SetHueRange(0.66, 0.0);
-    m_table->SetNumberOfTableValues(256);
-    m_table->Build();
-    m_bar->SetLookupTable(m_table);
-    m_bar->SetNumberOfLabels(5);
-    m_bar->SetLabelFormat("%.0e");
-    m_bar->SetPosition(0.88, 0.25);
-    m_bar->SetWidth(0.1);
-    m_bar->SetHeight(0.6);
-    m_bar->UnconstrainedFontSizeOn();
-    for (vtkTextProperty* text : {m_bar->GetTitleTextProperty(), m_bar->GetLabelTextProperty()}) {
-        text->SetColor(0.1, 0.1, 0.1);
-        text->ShadowOff();
-        text->ItalicOff();
-        text->BoldOff();
-        text->SetFontSize(12);
+    m_table->SetTableRange(m_low, m_high);
+    // Green up to the tolerance (developable), then yellow through orange to red (far from
+    // developable), on the logarithmic scale.
+    const double span = std::log10(m_high) - std::log10(m_low);
+    const double mark = (std::log10(m_tolerance) - std::log10(m_low)) / span;
+    m_table->SetNumberOfTableValues(kColours);
+    for (int i = 0; i < kColours; ++i) {
+        const double t = (i + 0.5) / kColours;
+        QColor colour;
+        if (t <= mark) {
+            colour = QColor::fromHsvF(0.33f, 0.75f, static_cast<float>(0.55 + 0.25 * t / mark));
+        } else {
+            const double above = (t - mark) / (1.0 - mark);
+            colour = QColor::fromHsvF(static_cast<float>(0.16 * (1.0 - above)), 0.9f, 0.95f);
+        }
+        m_table->SetTableValue(i, colour.redF(), colour.greenF(), colour.blueF(), 1.0);
+        m_colours.push_back(colour);
     }
-    m_bar->SetVisibility(false);
-    renderer->AddActor2D(m_bar);
+}
+
+QString QualityColouring::toleranceLabel() {
+    return QCoreApplication::translate("SceneView", "developable");
+}
+
+QualityColouring::Box QualityColouring::legendBox(int width, int height) {
+    return {kLegendLeft * width, kLegendBottom * height, width - kLegendRightMargin,
+            kLegendTop * height};
 }
 
 QualityColouring::~QualityColouring() = default;
 
 void QualityColouring::setMode(ColourBy by) {
     m_mode = by;
-    m_bar->SetVisibility(by != ColourBy::Patch);
-    m_bar->SetTitle(title().toUtf8().constData());
 }
 
 QString QualityColouring::title() const {
@@ -102,16 +107,7 @@ void QualityColouring::update(const std::vector<SurfaceScene>& scenes) {
         const std::vector<double> values = qualityValues(scene, m_mode);
         m_values.insert(m_values.end(), values.begin(), values.end());
     }
-    double high = 0.0;
-    for (double v : m_values) {
-        high = std::max(high, std::isfinite(v) ? v : 0.0);
-    }
-    // Ten decades below the worst value, and never below 1e-12: exact zeros (cones, flat
-    // designs) sit at the bottom of the scale.
-    m_high = std::max(high, 1e-10);
-    m_low = std::max(m_high * 1e-10, 1e-12);
-    m_table->SetTableRange(m_low, m_high);
-    m_table->Build();
+    // The scale stays fixed (kScaleLow to kScaleHigh): values beyond it take its ends' colours.
 }
 
 double QualityColouring::valueOfPatch(const std::vector<SurfaceScene>& scenes, int surface,

@@ -7,14 +7,13 @@
 
 #include <vtkSmartPointer.h>
 
+#include <QColor>
 #include <QString>
 
 #include <array>
 #include <vector>
 
 class vtkLookupTable;
-class vtkRenderer;
-class vtkScalarBarActor;
 class vtkUnsignedCharArray;
 
 namespace devsurf::views {
@@ -25,10 +24,12 @@ namespace devsurf::views {
 std::vector<double> qualityValues(const SurfaceScene& scene, ColourBy by);
 bool isPerPoint(ColourBy by);
 
-// The lookup table (logarithmic) and the scalar bar of a renderer.
+// The lookup table (logarithmic, fixed from kScaleLow to kScaleHigh: green below the tolerance,
+// yellow to red above it). The view's overlay draws its legend at the right of the viewport
+// (ViewOverlay::setQualityLegend).
 class QualityColouring {
 public:
-    explicit QualityColouring(vtkRenderer* renderer);
+    QualityColouring();
     ~QualityColouring();
 
     void setMode(ColourBy by);
@@ -47,15 +48,43 @@ public:
 
     double low() const { return m_low; }
     double high() const { return m_high; }
+    // The solve's tolerance (solver::Options::reportTolerance), marked on the legend: values
+    // below it are green, "developable".
+    double tolerance() const { return m_tolerance; }
+    // The legend's words at the tolerance mark.
+    static QString toleranceLabel();
     QString title() const;
+    // Where the legend is drawn in a viewport of width × height device pixels (display
+    // coordinates, origin at the bottom left).
+    struct Box {
+        double left = 0.0;
+        double bottom = 0.0;
+        double right = 0.0;
+        double top = 0.0;
+    };
+    static Box legendBox(int width, int height);
+    // The table's colours from kScaleLow to kScaleHigh, evenly on the logarithmic scale.
+    const std::vector<QColor>& colours() const { return m_colours; }
+
+    // The fixed scale of every design: the colours mean the same value whatever is shown.
+    static constexpr double kScaleLow = 1e-12;
+    static constexpr double kScaleHigh = 1e-2;
+    // The legend's box: its left edge, bottom and top as fractions of the viewport (from the
+    // bottom), its right edge this many pixels from the viewport's.
+    static constexpr double kLegendLeft = 0.78;
+    static constexpr double kLegendBottom = 0.1;
+    static constexpr double kLegendTop = 0.86;
+    static constexpr double kLegendRightMargin = 8.0;
+    static constexpr int kColours = 256;
 
 private:
     ColourBy m_mode = ColourBy::Patch;
     std::vector<double> m_values;
-    double m_low = 1e-12;
-    double m_high = 1.0;
+    double m_low = kScaleLow;
+    double m_high = kScaleHigh;
+    double m_tolerance = 1e-8;
     vtkSmartPointer<vtkLookupTable> m_table;
-    vtkSmartPointer<vtkScalarBarActor> m_bar;
+    std::vector<QColor> m_colours;
 };
 
 } // namespace devsurf::views

@@ -169,7 +169,7 @@ SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
     m_controlPolygons->actor->SetVisibility(false);
     m_controlPoints->actor->SetVisibility(false);
     if (spatial) {
-        m_quality = std::make_unique<QualityColouring>(renderer);
+        m_quality = std::make_unique<QualityColouring>();
     }
 
     m_picker->SetTolerance(0.0005);
@@ -467,6 +467,7 @@ void SceneRenderer::rebuildHighlight() {
 void SceneRenderer::setShowControlPolygons(bool show) {
     m_controlPolygons->actor->SetVisibility(show);
     m_controlPoints->actor->SetVisibility(show);
+    m_controlPointsShown = show;
 }
 
 void SceneRenderer::setShowVertices(bool show) {
@@ -484,6 +485,24 @@ void SceneRenderer::setPreviewLines(const std::vector<std::vector<Vec3>>& lines)
 void SceneRenderer::setReferenceCurves(const std::vector<std::vector<Vec3>>& curves) {
     m_referenceCurves->assign(polylineData(curves), false);
     m_referenceCurveCount = static_cast<int>(m_referenceCurves->data->GetNumberOfCells());
+    // Their bounding box's corners, for the fit (fitPoints).
+    m_referenceCorners.clear();
+    Vec3 low(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+             std::numeric_limits<double>::infinity());
+    Vec3 high = -low;
+    for (const auto& curve : curves) {
+        for (const Vec3& p : curve) {
+            low = Vec3(std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z));
+            high = Vec3(std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z));
+        }
+    }
+    if (low.x <= high.x) {
+        for (int corner = 0; corner < 8; ++corner) {
+            m_referenceCorners.push_back({(corner & 1) != 0 ? high.x : low.x,
+                                          (corner & 2) != 0 ? high.y : low.y,
+                                          (corner & 4) != 0 ? high.z : low.z});
+        }
+    }
 }
 
 const Vec3* SceneRenderer::vertexPosition(int surface, model::VertexId vertex) const {

@@ -83,6 +83,11 @@ public:
     std::optional<document::Pick> pick(double displayX, double displayY, double radius) const;
     // The patch drawn at a display position, if any (nothing hides it).
     std::optional<document::Pick> faceAt(double displayX, double displayY) const;
+    // The surface point under display coordinates and its patch (3D only).
+    std::optional<model::Vec3> surfacePoint(double displayX, double displayY,
+                                            std::optional<document::Pick>* face) const {
+        return surfaceHit(displayX, displayY, face);
+    }
     // Where the ray through a display point meets a plane (scene coordinates); nullopt if the
     // ray runs parallel to it.
     std::optional<model::Vec3> displayToPlane(double displayX, double displayY,
@@ -95,8 +100,13 @@ public:
     const model::Vec3* vertexPosition(int surface, model::VertexId vertex) const;
 
     // Fits the camera to the scenes, keeping its direction (the development view always looks
-    // straight down at the plane).
+    // straight down at the plane): everything drawn (fitPoints(), projected) lies inside the
+    // viewport by kFitMargin device pixels (kFitAir of its size if more), so that the markers drawn
+    // at the outermost vertices (pins, 13 px) show whole, and left of the quality legend when it is
+    // shown.
     void resetCamera();
+    static constexpr double kFitMargin = 16.0;
+    static constexpr double kFitAir = 0.04; // of the viewport's smaller side
     // The 3D view: looks along direction with the given up vector, then fits. Ignored by the
     // development view.
     void lookAlong(const model::Vec3& direction, const model::Vec3& up);
@@ -106,6 +116,13 @@ public:
     double pixelsPerUnit() const;
 
 private:
+    // Zooms and pans the camera so that the projected corners of the visible props' bounds
+    // fill the viewport less its margins (resetCamera).
+    void fitBoundsToViewport();
+    // What the fit keeps in view: the drawn surfaces' points (at most about kFitPoints of
+    // them), the control points when shown, and the corners of the reference curves' bounds.
+    std::vector<model::Vec3> fitPoints() const;
+    static constexpr std::size_t kFitPoints = 20000;
     struct Layer;
     Layer& addLayer();
     void rebuildHighlight();
@@ -160,6 +177,8 @@ private:
     std::set<document::Pick> m_highlighted;
     std::set<document::Pick> m_pinnedDrawn;
     double m_sceneSize = 1.0;
+    bool m_controlPointsShown = false;
+    std::vector<model::Vec3> m_referenceCorners; // of the reference curves' bounding box
 };
 
 } // namespace devsurf::views

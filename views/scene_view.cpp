@@ -16,6 +16,7 @@
 #include <vtkTextProperty.h>
 
 #include <QLocale>
+#include <QRectF>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -305,6 +306,42 @@ std::pair<int, int> SceneView::foldsDrawn() const {
     return d->scene->foldCounts();
 }
 
+std::optional<std::pair<model::Vec3, document::Pick>>
+SceneView::surfacePointAt(const QPoint& widgetPos) const {
+    if (d->kind != Kind::Spatial) {
+        return std::nullopt;
+    }
+    std::optional<Pick> face;
+    const std::optional<model::Vec3> hit =
+        d->scene->surfacePoint(d->displayX(widgetPos.x()), d->displayY(widgetPos.y()), &face);
+    if (!hit || !face) {
+        return std::nullopt;
+    }
+    return std::make_pair(*hit, *face);
+}
+
+void SceneView::setMeasurement(const std::vector<model::Vec3>& points, const QString& text) {
+    d->measurement = points;
+    d->measurementText = text;
+    rerender();
+}
+
+std::vector<model::Vec3> SceneView::measurementPoints() const {
+    return d->measurement;
+}
+
+QString SceneView::verdictText() const {
+    return d->overlay->verdict();
+}
+
+QRect SceneView::verdictRect() const {
+    return d->overlay->verdictRect().toAlignedRect();
+}
+
+void SceneView::setVerdict(const QString& text, const QColor& colour) {
+    d->overlay->setVerdict(text, colour);
+}
+
 std::pair<bool, bool> SceneView::foldLegend() const {
     return {d->overlay->showsMountainLegend(), d->overlay->showsValleyLegend()};
 }
@@ -382,6 +419,28 @@ QString SceneView::legendTitle() const {
     return d->scene->quality() ? d->scene->quality()->title() : QString();
 }
 
+QRect SceneView::legendRect() const {
+    return d->overlay->qualityLegendRect().toAlignedRect();
+}
+
+double SceneView::legendTolerance() const {
+    const QualityColouring* quality = d->scene->quality();
+    return quality && quality->mode() != ColourBy::Patch ? quality->tolerance() : 0.0;
+}
+
+QString SceneView::legendToleranceLabel() const {
+    return legendTolerance() > 0.0 ? QualityColouring::toleranceLabel() : QString();
+}
+
+QColor SceneView::legendColour(double value) const {
+    if (legendTolerance() <= 0.0) {
+        return QColor();
+    }
+    const std::array<double, 3> rgb = d->scene->quality()->colour(value);
+    return QColor::fromRgbF(static_cast<float>(rgb[0]), static_cast<float>(rgb[1]),
+                            static_cast<float>(rgb[2]));
+}
+
 std::pair<double, double> SceneView::legendRange() const {
     const QualityColouring* quality = d->scene->quality();
     return quality ? std::make_pair(quality->low(), quality->high()) : std::make_pair(0.0, 0.0);
@@ -430,6 +489,20 @@ void SceneView::updateOverlay() {
     } else {
         d->barLength = 0.0;
         d->overlay->setScaleBar(0.0, QString());
+    }
+    std::vector<QPointF> measured;
+    for (const model::Vec3& point : d->measurement) {
+        const model::Vec3 display = d->scene->toDisplay(point);
+        measured.emplace_back(display.x / dpr, (d->deviceHeight() - 1.0 - display.y) / dpr);
+    }
+    d->overlay->setMeasurement(std::move(measured), d->measurementText);
+    const QualityColouring* quality = d->scene->quality();
+    if (quality != nullptr && quality->mode() != ColourBy::Patch) {
+        d->overlay->setQualityLegend(ViewOverlay::QualityLegend{
+            quality->title(), quality->colours(), quality->low(), quality->high(),
+            quality->tolerance(), QualityColouring::toleranceLabel()});
+    } else {
+        d->overlay->setQualityLegend(std::nullopt);
     }
     const auto [mountains, valleys] = d->scene->foldCounts();
     d->overlay->setFoldLegend(mountains > 0, valleys > 0, d->scene->flatCreaseCount() > 0);

@@ -6,8 +6,10 @@
 #include "model/vec3.h"
 #include "view_overlay.h"
 
+#include <QColor>
 #include <QImage>
 #include <QPoint>
+#include <QRect>
 #include <QString>
 #include <QStringList>
 #include <QWidget>
@@ -80,6 +82,18 @@ public:
     double scaleBarLength() const;
     double scaleBarPixels() const;
     QString scaleBarText() const;
+    // The point of a surface under a widget position and its patch (3D view: the surface
+    // hit; the development view: none).
+    std::optional<std::pair<model::Vec3, document::Pick>>
+    surfacePointAt(const QPoint& widgetPos) const;
+    // A measurement drawn over the view: a line through the scene points, with its text at the
+    // last one (none when empty).
+    void setMeasurement(const std::vector<model::Vec3>& points, const QString& text);
+    std::vector<model::Vec3> measurementPoints() const;
+    // The verdict of the design's last solve written in the upper right corner (empty: none),
+    // and where it is drawn (widget coordinates of glWidget()).
+    QString verdictText() const;
+    QRect verdictRect() const;
     // Mountain and valley creases drawn, and whether the fold legend shows each.
     std::pair<int, int> foldsDrawn() const;
     std::pair<bool, bool> foldLegend() const;
@@ -106,6 +120,14 @@ public:
     // The 3D view colours its surfaces by patch (the default) or by a quality measure on a
     // logarithmic scale with a legend; the development view always shows patches.
     ColourBy colourBy() const;
+    // Where the quality legend is drawn (widget coordinates); empty when colouring by patch.
+    // View ▸ Fit keeps the design left of it.
+    QRect legendRect() const;
+    // The tolerance the legend marks (below it: green, "developable"); 0 by patch. Its
+    // words at the mark, and the colour a value is drawn in (invalid by patch).
+    double legendTolerance() const;
+    QString legendToleranceLabel() const;
+    QColor legendColour(double value) const;
     // The legend's title (empty when colouring by patch) and its range.
     QString legendTitle() const;
     std::pair<double, double> legendRange() const;
@@ -124,6 +146,8 @@ public slots:
     // The starting camera (3D: from the front right and above), fitted to the design.
     void resetView();
     void setShowPatchLabels(bool show);
+    // Writes a solve's verdict in the upper right corner in `colour` (empty text: none).
+    void setVerdict(const QString& text, const QColor& colour);
     void setColourBy(devsurf::views::ColourBy by);
     // Shows the lines an edit would add before it is made (3D scene coordinates; the
     // development view ignores them). An empty list removes the preview.

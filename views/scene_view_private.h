@@ -63,6 +63,8 @@ struct SceneView::Private {
     bool rightPressed = false;
 
     ViewOverlay* overlay = nullptr;
+    std::vector<model::Vec3> measurement; // scene points of the measurement drawn
+    QString measurementText;
     vtkSmartPointer<vtkRenderer> triad; // 3D view only
     vtkSmartPointer<vtkCallbackCommand> startObserver;
     vtkSmartPointer<vtkCallbackCommand> endObserver;

@@ -2,6 +2,7 @@
 
 #include "crease_marks.h"
 #include "model/document/commands/crease_condition_command.h"
+#include "quality_colours.h"
 
 #include <QFontMetricsF>
 #include <QPaintEvent>
@@ -9,6 +10,7 @@
 #include <QPainterPath>
 #include <QPen>
 
+#include <algorithm>
 #include <cmath>
 
 namespace devsurf::views {
@@ -175,6 +177,125 @@ QStringList ViewOverlay::legendEntries() const {
     return texts;
 }
 
+void ViewOverlay::setVerdict(const QString& text, const QColor& colour) {
+    m_verdict = text;
+    m_verdictColour = colour;
+    update();
+}
+
+// The verdict leaves this much of the width (logical pixels) to the legend in the upper left.
+constexpr double kVerdictClear = 180.0;
+
+QRectF ViewOverlay::verdictRect() const {
+    if (m_verdict.isEmpty()) {
+        return QRectF();
+    }
+    QFont strong = font();
+    strong.setPointSizeF(strong.pointSizeF() * 0.9);
+    strong.setBold(true);
+    const QFontMetricsF metrics(strong);
+    const double width = std::min(metrics.horizontalAdvance(m_verdict) + 12.0,
+                                  std::max(40.0, this->width() - kVerdictClear));
+    return QRectF(this->width() - 10.0 - width, 10.0, width, metrics.height() + 8.0);
+}
+
+void ViewOverlay::setMeasurement(std::vector<QPointF> points, const QString& text) {
+    if (points == m_measured && text == m_measuredText) {
+        return;
+    }
+    m_measured = std::move(points);
+    m_measuredText = text;
+    update();
+}
+
+void ViewOverlay::setQualityLegend(std::optional<QualityLegend> legend) {
+    const bool same =
+        legend.has_value() == m_quality.has_value() &&
+        (!legend || (legend->title == m_quality->title && legend->colours == m_quality->colours &&
+                     legend->tolerance == m_quality->tolerance &&
+                     legend->toleranceLabel == m_quality->toleranceLabel));
+    m_quality = std::move(legend);
+    if (!same) {
+        update();
+    }
+}
+
+QRectF ViewOverlay::qualityLegendRect() const {
+    if (!m_quality) {
+        return QRectF();
+    }
+    const QualityColouring::Box box = QualityColouring::legendBox(width(), height());
+    return QRectF(QPointF(box.left, height() - box.top), QPointF(box.right, height() - box.bottom));
+}
+
+void ViewOverlay::paintQualityLegend(QPainter& painter, const QFont& font) const {
+    const QualityLegend& legend = *m_quality;
+    const QRectF box = qualityLegendRect();
+    const QFontMetricsF metrics(font);
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(255, 255, 255, 200));
+    painter.drawRoundedRect(box, 4, 4);
+    // The title, line by line, elided to the box.
+    const QStringList lines = legend.title.split(QLatin1Char('\n'));
+    double y = box.top() + 4.0;
+    painter.setPen(QColor(25, 25, 25));
+    for (const QString& line : lines) {
+        painter.drawText(QRectF(box.left() + 4.0, y, box.width() - 8.0, metrics.height()),
+                         Qt::AlignLeft | Qt::AlignVCenter,
+                         metrics.elidedText(line, Qt::ElideRight, box.width() - 8.0));
+        y += metrics.height();
+    }
+    // The bar, low at the bottom; a value's height is linear in its logarithm.
+    const double top = y + 0.5 * metrics.height() + 4.0;
+    const double bottom = box.bottom() - 0.5 * metrics.height() - 6.0;
+    if (bottom <= top || legend.colours.empty() || legend.low <= 0.0 || legend.high <= legend.low) {
+        return;
+    }
+    const QRectF bar(box.left() + 6.0, top, 14.0, bottom - top);
+    const double lowLog = std::log10(legend.low);
+    const double span = std::log10(legend.high) - lowLog;
+    auto heightOf = [&](double value) {
+        return bottom - (std::log10(value) - lowLog) / span * (bottom - top);
+    };
+    const auto count = static_cast<double>(legend.colours.size());
+    for (std::size_t i = 0; i < legend.colours.size(); ++i) {
+        const double from = bottom - (static_cast<double>(i) + 1.0) / count * bar.height();
+        const double to = bottom - static_cast<double>(i) / count * bar.height();
+        painter.fillRect(QRectF(bar.left(), from, bar.width(), to - from + 0.5), legend.colours[i]);
+    }
+    painter.setPen(QPen(QColor(60, 60, 60), 1.0));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawRect(bar);
+    // A label every second decade.
+    for (int decade = static_cast<int>(std::ceil(lowLog - 1e-9));
+         decade <= static_cast<int>(std::floor(lowLog + span + 1e-9)); decade += 2) {
+        const double at = heightOf(std::pow(10.0, decade));
+        painter.drawLine(QPointF(bar.right(), at), QPointF(bar.right() + 4.0, at));
+        painter.drawText(QRectF(bar.right() + 6.0, at - metrics.height(), box.right() - bar.right(),
+                                2.0 * metrics.height()),
+                         Qt::AlignLeft | Qt::AlignVCenter, QStringLiteral("1e%1").arg(decade));
+    }
+    // The tolerance: a heavy line across the bar, "developable" beside the colours below it.
+    const double mark = heightOf(std::clamp(legend.tolerance, legend.low, legend.high));
+    painter.setPen(QPen(QColor(20, 20, 20), 2.5));
+    painter.drawLine(QPointF(bar.left() - 3.0, mark), QPointF(bar.right() + 3.0, mark));
+    QFont strong = font;
+    strong.setBold(true);
+    painter.setFont(strong);
+    const QFontMetricsF strongMetrics(strong);
+    const double below = heightOf(legend.tolerance / 10.0);
+    const QRectF labelBox(bar.right() + 6.0, below - 0.5 * strongMetrics.height(),
+                          box.right() - bar.right() - 8.0, strongMetrics.height());
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(255, 255, 255, 235));
+    painter.drawRect(labelBox);
+    painter.setPen(QColor(0x1b, 0x7a, 0x2e));
+    painter.drawText(
+        labelBox, Qt::AlignLeft | Qt::AlignVCenter,
+        strongMetrics.elidedText(legend.toleranceLabel, Qt::ElideRight, labelBox.width()));
+    painter.setFont(font);
+}
+
 void ViewOverlay::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     painter.setRenderHint(QPainter::Antialiasing);
@@ -255,6 +376,55 @@ void ViewOverlay::paintEvent(QPaintEvent*) {
         painter.setPen(ink);
         painter.drawText(box.adjusted(58.0, 0, 0, 0), Qt::AlignVCenter | Qt::AlignLeft, entry.text);
         top += box.height() + 4.0;
+    }
+
+    // The measurement: a dark line with its picked points, its text beside the last one.
+    if (!m_measured.empty()) {
+        painter.setPen(QPen(QColor(20, 20, 20), 2.0));
+        for (std::size_t i = 1; i < m_measured.size(); ++i) {
+            painter.drawLine(m_measured[i - 1], m_measured[i]);
+        }
+        painter.setBrush(QColor(255, 200, 0));
+        for (const QPointF& point : m_measured) {
+            painter.drawEllipse(point, 4.0, 4.0);
+        }
+        if (!m_measuredText.isEmpty()) {
+            QRectF box = metrics.boundingRect(m_measuredText).adjusted(-4, -2, 4, 2);
+            box.moveTopLeft(m_measured.back() + QPointF(8.0, 8.0));
+            // Kept inside the view: left of the point, or above it, where it would leave it.
+            if (box.right() > width() - 4.0) {
+                box.moveRight(m_measured.back().x() - 8.0);
+            }
+            if (box.bottom() > height() - 4.0) {
+                box.moveBottom(m_measured.back().y() - 8.0);
+            }
+            painter.setPen(Qt::NoPen);
+            painter.setBrush(QColor(255, 255, 255, 230));
+            painter.drawRoundedRect(box, 3, 3);
+            painter.setPen(QColor(20, 20, 20));
+            painter.drawText(box, Qt::AlignCenter, m_measuredText);
+        }
+    }
+
+    if (m_quality) {
+        paintQualityLegend(painter, font);
+    }
+
+    // The verdict of the last solve, upper right, in its colour; elided to half the width so
+    // that it never covers the legend.
+    if (!m_verdict.isEmpty()) {
+        QFont strong = font;
+        strong.setBold(true);
+        const QFontMetricsF strongMetrics(strong);
+        const QRectF box = verdictRect();
+        painter.setPen(QPen(m_verdictColour, 1.5));
+        painter.setBrush(halo);
+        painter.drawRoundedRect(box, 4, 4);
+        painter.setPen(m_verdictColour);
+        painter.setFont(strong);
+        painter.drawText(box, Qt::AlignCenter,
+                         strongMetrics.elidedText(m_verdict, Qt::ElideRight, box.width() - 12.0));
+        painter.setFont(font);
     }
 
     if (m_barPixels <= 0.0) {

@@ -5,11 +5,15 @@
 
 #include <QColor>
 #include <QPointF>
+#include <QRectF>
 #include <QString>
 #include <QStringList>
 #include <QWidget>
 
+#include <optional>
 #include <vector>
+
+class QPainter;
 
 namespace devsurf::views {
 
@@ -80,6 +84,30 @@ public:
     bool showsMountainLegend() const { return m_mountains; }
     bool showsValleyLegend() const { return m_valleys; }
 
+    // The legend of a quality colouring, drawn at the right (QualityColouring::legendBox):
+    // the colours from low to high on a logarithmic scale, a label every second decade, and
+    // the tolerance marked, the colours below it labelled `toleranceLabel`.
+    struct QualityLegend {
+        QString title;
+        std::vector<QColor> colours;
+        double low = 1e-12;
+        double high = 1e-2;
+        double tolerance = 1e-8;
+        QString toleranceLabel;
+    };
+    void setQualityLegend(std::optional<QualityLegend> legend);
+    // Where it is drawn (widget coordinates); empty without one.
+    QRectF qualityLegendRect() const;
+
+    // A measurement: a line through the points (widget coordinates) with the text at the last.
+    void setMeasurement(std::vector<QPointF> points, const QString& text);
+
+    // A solve's verdict written in the upper right corner in `colour` (empty: none).
+    void setVerdict(const QString& text, const QColor& colour);
+    QString verdict() const { return m_verdict; }
+    // Where the verdict is drawn (widget coordinates); empty without one.
+    QRectF verdictRect() const;
+
     double scaleBarPixels() const { return m_barPixels; }
     QString scaleBarText() const { return m_barText; }
     const std::vector<Label>& labels() const { return m_labels; }
@@ -107,6 +135,12 @@ private:
     bool m_smoothRulings = false;
     bool m_sharpRulings = false;
     std::vector<Badge> m_badges;
+    QString m_verdict;
+    QColor m_verdictColour;
+    std::optional<QualityLegend> m_quality;
+    std::vector<QPointF> m_measured;
+    QString m_measuredText;
+    void paintQualityLegend(QPainter& painter, const QFont& font) const;
 };
 
 } // namespace devsurf::views

@@ -7,6 +7,8 @@
 #include "solver/formulation/perturbation.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/session/solve_job.h"
+#include "solver/session/verdict.h"
+#include "verdict_text.h"
 
 #include <QString>
 
@@ -136,6 +138,12 @@ int runSolveCommand(const SolveArguments& args) {
         std::cout << describeFoldOvers(a.foldOvers) << "\n"
                   << describeSelfOverlap(a.overlapping) << "\n";
         project.surfaces[s] = outcome.surfaces[s];
+    }
+    // The same verdict as the Solver panel's, decided by the job's outcome.
+    const solver::Verdict verdict = solver::verdictOf(outcome);
+    if (verdict.kind != solver::VerdictKind::None) {
+        std::cout << "Verdict: " << VerdictText::of(verdict).toStdString() << "\n"
+                  << "  " << VerdictText::details(verdict).toStdString() << "\n";
     }
     writeProject(project, output);
     std::cout << "Wrote " << output << "\n";

@@ -2,6 +2,7 @@
 
 #include "autosaver.h"
 #include "camera_actions.h"
+#include "eliding_status_bar.h"
 #include "help_dialogs.h"
 #include "language_menu.h"
 #include "model/document/document.h"
@@ -47,6 +48,7 @@ namespace devsurf::app {
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_workspace(new Workspace(this)) {
     setObjectName(QStringLiteral("MainWindow"));
     setAcceptDrops(true);
+    setStatusBar(new ElidingStatusBar(this)); // before anything adds to it
     document::Document* doc = m_workspace->document();
     document::Selection* selection = m_workspace->selection();
 
@@ -64,6 +66,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_workspace(new W
 
     m_countsLabel = new QLabel(this);
     m_hoverLabel = new QLabel(this);
+    // The hover text never widens the bar into the counts: it is cut at the label's width.
+    m_hoverLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_hoverLabel->setMinimumWidth(0);
     statusBar()->addWidget(m_hoverLabel, 1);
     statusBar()->addPermanentWidget(m_countsLabel);
     connect(m_surfaceView, &views::SurfaceView::hoverChanged, m_hoverLabel, &QLabel::setText);
@@ -142,6 +147,13 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::LeftDockWidgetArea, solverDock);
     connect(m_solveController, &SolveController::reportReady, m_solverPanel,
             &SolverPanel::showReport);
+    // Both views write the verdict of the report the panel shows (it follows the undo state).
+    connect(m_solverPanel, &SolverPanel::verdictChanged, this,
+            [this](const QString& brief, solver::VerdictKind kind) {
+                const QColor colour = SolverPanel::verdictColour(kind);
+                m_surfaceView->setVerdict(brief, colour);
+                m_developmentView->setVerdict(brief, colour);
+            });
     connect(m_solverPanel, &SolverPanel::selectPatches, this,
             [this](const std::set<document::Pick>& patches) {
                 m_workspace->selection()->set(patches);

@@ -1,10 +1,11 @@
 // The main window's live-solving parts: Tools ▸ Solve, the Drag and Rotate tools with their
-// axis choice, the solve progress in the status bar, the Solver panel's updates, and View ▸
-// Colour By.
+// axis choice, the Measure tool, the solve progress in the status bar, the Solver panel's
+// updates, and View ▸ Colour By.
 
 #include "camera_actions.h"
 #include "drag_tool.h"
 #include "main_window.h"
+#include "measure_tool.h"
 #include "panels/solver_panel.h"
 #include "reactions/curve_reactions.h"
 #include "rotate_tool.h"
@@ -86,11 +87,26 @@ QList<QAction*> MainWindow::createSolverActions(QMenu* tools, QAction* selectNon
     rotate->setToolTip(rotateTip);
     rotate->setStatusTip(rotateTip);
     auto* rotateTool = new RotateTool(rotate, m_workspace, m_surfaceView, m_solveController);
+
+    QAction* measure = addAction(tools, QStringLiteral("actionMeasureTool"), tr("Measur&e"));
+    const QString measureTip =
+        tr("Measure tool: click two points of the surface in the 3D view; their distance in "
+           "space and along the sheet (as the cut pattern has it) is drawn and shown in the "
+           "status bar.");
+    measure->setToolTip(measureTip);
+    measure->setStatusTip(measureTip);
+    QAction* copyMeasurement = addAction(tools, QStringLiteral("actionCopyMeasurement"),
+                                         tr("Cop&y Measurement"), QKeySequence(tr("Ctrl+C")));
+    copyMeasurement->setToolTip(tr("Copy the last measurement to the clipboard (Ctrl+C)."));
+    auto* measureTool = new MeasureTool(measure, copyMeasurement, m_workspace, m_surfaceView);
+    connect(measureTool, &MeasureTool::statusMessage, this,
+            [this](const QString& text) { statusBar()->showMessage(text); });
     // One tool at a time, or none (the plain view).
     auto* toolGroup = new QActionGroup(this);
     toolGroup->setExclusionPolicy(QActionGroup::ExclusionPolicy::ExclusiveOptional);
     toolGroup->addAction(drag);
     toolGroup->addAction(rotate);
+    toolGroup->addAction(measure);
     for (DragTool* tool : {m_dragTool, static_cast<DragTool*>(rotateTool)}) {
         connect(tool, &DragTool::reportReady, m_solverPanel, &SolverPanel::showReport);
         connect(tool, &DragTool::statusMessage, this,

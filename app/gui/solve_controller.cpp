@@ -1,10 +1,12 @@
 #include "solve_controller.h"
 #include "edit_refusal.h"
 #include "problem_text.h"
+#include "verdict_text.h"
 
 #include "model/document/commands/apply_surface_command.h"
 #include "model/document/document.h"
 #include "solver/session/solve_session.h"
+#include "solver/session/verdict.h"
 #include "solver/worker/solver_worker.h"
 #include "workspace.h"
 
@@ -389,6 +391,7 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result, const Q
             report.patchesToCheck.insert({document::Pick::Kind::Face, surface, face});
         }
     }
+    report.verdict = solver::verdictOf(outcome);
     report.status = statuses.isEmpty() ? tr("nothing was solved.")
                                        : statuses.join(QStringLiteral("; ")) + QLatin1Char('.');
     return report;
@@ -466,9 +469,14 @@ void SolveController::onResult(const solver::SolveResult& result) {
     }
     const double residual = outcome.largestResidual();
     const int iterations = outcome.largestIterationCount();
+    // The verdict first: what the designer can do with the result; then the numbers.
+    const QString verdict = VerdictText::brief(report.verdict);
     QString sentence =
         tr("Solved: %n iteration(s), largest constraint residual %1.", nullptr, iterations)
             .arg(QString::number(residual, 'e', 2));
+    if (!verdict.isEmpty()) {
+        sentence = tr("%1. %2", "a verdict, then a sentence").arg(verdict, sentence);
+    }
     if (keptCount > 0) {
         sentence += QLatin1Char(' ') +
                     tr("%n surface(s) left as they were: solving made them less developable.",

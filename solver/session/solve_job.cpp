@@ -1,5 +1,6 @@
 #include "solver/session/solve_job.h"
 
+#include "model/derived_geometry.h"
 #include "model/geometry_checks.h"
 #include "model/model_error.h"
 #include "model/pattern/cutting_pattern.h"
@@ -12,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -154,6 +156,29 @@ void measureHandleGaps(SurfaceAssessment& assessment, const model::CompositeSurf
     }
 }
 
+// How far the sheet is from isometric to its development (SurfaceAssessment::isometryMm).
+void measureIsometry(SurfaceAssessment& assessment, const model::CompositeSurface& result) {
+    const auto derived = model::DerivedGeometry::of(result, kVerdictSamples);
+    const model::Development& development = derived->development();
+    double minX = std::numeric_limits<double>::infinity();
+    double minY = minX;
+    double maxX = -minX;
+    double maxY = -minX;
+    for (const model::Vec2& p : development.vertices) {
+        minX = std::min(minX, p.x);
+        minY = std::min(minY, p.y);
+        maxX = std::max(maxX, p.x);
+        maxY = std::max(maxY, p.y);
+    }
+    if (development.vertices.empty()) {
+        return;
+    }
+    assessment.sheetExtent = std::max(maxX - minX, maxY - minY);
+    assessment.edgeLengthError = development.maxEdgeLengthError;
+    assessment.isometryMm =
+        std::max(development.maxEdgeLengthError * assessment.sheetExtent, development.closureError);
+}
+
 // The geometry of a settled result: fold-overs, overlaps, creases, vertex stars, worst faces.
 // `press` is the drag's surface at the press (null for Solve and Edit); `knownOverlaps` those a
 // judged drag found already.
@@ -189,6 +214,11 @@ void measureSettled(SurfaceAssessment& assessment, const model::CompositeSurface
             assessment.largestVertexDefect = std::max(assessment.largestVertexDefect, d.defect);
         }
     } catch (const std::exception&) {
+    }
+    try {
+        measureIsometry(assessment, result);
+    } catch (const std::exception&) {
+        // Too degenerate to sample: left unmeasured.
     }
     if (!assessment.summary.toleranceReached) {
         auto faces = developabilityByFace(result);

@@ -110,7 +110,16 @@ struct SurfaceAssessment {
     // Up to kWorstFaces patches by sampled developability, worst first, when the tolerance was
     // not reached.
     std::vector<std::pair<model::FaceId, double>> worstFaces;
+    // The unfolded sampled mesh (kVerdictSamples per interval): its largest relative edge-length
+    // error, its largest extent (mm) and how far from isometric that makes the sheet (mm): the
+    // error times the extent, or the unfolding's closure gap if larger. -1: not measured.
+    double edgeLengthError = -1.0;
+    double sheetExtent = 0.0;
+    double isometryMm = -1.0;
 };
+
+// Samples per spline interval of the development the verdict measures (as the views draw it).
+inline constexpr int kVerdictSamples = 8;
 
 constexpr std::size_t kWorstFaces = 5;
 

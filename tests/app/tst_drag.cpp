@@ -239,7 +239,17 @@ private slots:
         QCOMPARE(w.surfaceView()->colourBy(), views::ColourBy::Developability);
         const QString developabilityTitle = w.surfaceView()->legendTitle();
         QVERIFY(!developabilityTitle.isEmpty());
-        const double flatHigh = w.surfaceView()->legendRange().second;
+        // The largest value the colouring gives a patch.
+        auto worstPatch = [&w, &s] {
+            double worst = 0.0;
+            for (const auto& [face, loop] : s.doc->surface(0).faces()) {
+                (void)loop;
+                worst = std::max(worst, w.surfaceView()->legendValue({Pick::Kind::Face, 0, face}));
+            }
+            return worst;
+        };
+        const double flatWorst = worstPatch();
+        const std::pair<double, double> scale = w.surfaceView()->legendRange();
         QSignalSpy finished(w.dragTool(), &app::DragTool::dragFinished);
         QSignalSpy changed(s.doc, &document::Document::changed);
         QTest::keyPress(s.gl, Qt::Key_Z); // lift along z
@@ -252,8 +262,9 @@ private slots:
         }
         QCOMPARE(w.dragTool()->axis(), app::DragTool::Axis::Z);
         QVERIFY(changed.wait(60000));
-        // The legend is refitted to the surface being dragged.
-        QVERIFY(w.surfaceView()->legendRange().second != flatHigh);
+        // The colours follow the surface being dragged, on the same fixed scale.
+        QVERIFY(worstPatch() > flatWorst);
+        QCOMPARE(w.surfaceView()->legendRange(), scale);
         QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(0, -30));
         QTest::keyRelease(s.gl, Qt::Key_Z);
         QVERIFY(finished.wait(60000));

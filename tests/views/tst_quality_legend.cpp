@@ -2,10 +2,13 @@
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "model/examples.h"
+#include "model/sampled_mesh.h"
 #include "model/strip.h"
+#include "solver/core/options.h"
 #include "solver/quality/quality_measures.h"
 #include "test_registry.h"
 #include "views/surface_view.h"
+#include "views/vtk_opengl_widget.h"
 
 #include <QHBoxLayout>
 #include <QTest>
@@ -122,8 +125,8 @@ private slots:
         if (vertex >= 0) {
             QVERIFY2(worst > 1e-4, qPrintable(QString::number(worst))); // really not developable
         }
-        // The top of the legend is the panel's least developable patch.
-        QCOMPARE(m_view->legendRange().second, std::max(worst, 1e-10));
+        // The scale is the same for every design: a colour means one value everywhere.
+        QCOMPARE(m_view->legendRange(), std::make_pair(1e-12, 1e-2));
 
         // Flatness and the angle defect: the largest value drawn is measureQuality's.
         const devsurf::solver::QualityMeasures measures = devsurf::solver::measureQuality(surface);
@@ -140,6 +143,76 @@ private slots:
         }
         m_view->setColourBy(ColourBy::Patch);
         QVERIFY(std::isnan(m_view->legendValue({Pick::Kind::Face, 0, panel.begin()->first})));
+    }
+
+    void theLegendMarksTheToleranceInGreen() {
+        m_document.resetProject(devsurf::model::makeExample("fig8"));
+        m_view->setColourBy(ColourBy::Developability);
+        m_view->grabImage();
+        const double tolerance = devsurf::solver::Options{}.reportTolerance;
+        QCOMPARE(m_view->legendTolerance(), tolerance);
+        QVERIFY(!m_view->legendToleranceLabel().isEmpty());
+        // Below the tolerance green, above it from yellow to red.
+        for (const double value : {0.0, 1e-12, 1e-10, 0.9 * tolerance}) {
+            const QColor colour = m_view->legendColour(value);
+            QVERIFY2(colour.green() > colour.red() && colour.green() > colour.blue(),
+                     qPrintable(colour.name()));
+        }
+        for (const double value : {2.0 * tolerance, 1e-6, 1e-4, 1e-2, 1.0}) {
+            const QColor colour = m_view->legendColour(value);
+            QVERIFY2(colour.red() > colour.blue() && colour.red() >= colour.green(),
+                     qPrintable(colour.name()));
+        }
+        QVERIFY(m_view->legendColour(1e-2).green() < m_view->legendColour(1e-7).green());
+        m_view->setColourBy(ColourBy::Patch);
+        m_view->grabImage();
+        QCOMPARE(m_view->legendTolerance(), 0.0);
+        QVERIFY(m_view->legendRect().isEmpty());
+    }
+
+    void afterFitTheLegendDoesNotOverlapTheDesign_data() {
+        QTest::addColumn<QString>("example");
+        QTest::addColumn<int>("colourBy");
+        QTest::newRow("sheet developability") << "sheet" << int(ColourBy::Developability);
+        QTest::newRow("annulus flatness") << "annulus" << int(ColourBy::Flatness);
+        QTest::newRow("cylinder angle defect") << "cylinder" << int(ColourBy::AngleDefect);
+        QTest::newRow("fig8 developability") << "fig8" << int(ColourBy::Developability);
+    }
+
+    void afterFitTheLegendDoesNotOverlapTheDesign() {
+        QFETCH(QString, example);
+        QFETCH(int, colourBy);
+        m_document.resetProject(devsurf::model::makeExample(example.toStdString()));
+        m_view->setColourBy(static_cast<ColourBy>(colourBy));
+        m_view->fitAll();
+        m_view->grabImage();
+        const QRect legend = m_view->legendRect();
+        const QRect viewport = m_view->glWidget()->rect();
+        QVERIFY(!legend.isEmpty());
+        QVERIFY(viewport.contains(legend));
+        // The design as drawn: every point of the sampled mesh the view shows.
+        const devsurf::model::SampledMesh mesh =
+            devsurf::model::sampleSurface(m_document.surface(0), 8);
+        QRect drawn;
+        for (const Vec3& point : mesh.vertices) {
+            const QPoint at = m_view->projectToWidget(point);
+            drawn = drawn.united(QRect(at, QSize(1, 1)));
+        }
+        QVERIFY2(!drawn.intersects(legend),
+                 qPrintable(QStringLiteral("design %1,%2 %3×%4, legend %5,%6 %7×%8")
+                                .arg(drawn.x())
+                                .arg(drawn.y())
+                                .arg(drawn.width())
+                                .arg(drawn.height())
+                                .arg(legend.x())
+                                .arg(legend.y())
+                                .arg(legend.width())
+                                .arg(legend.height())));
+        QVERIFY(viewport.contains(drawn));
+        // And it still fills the view: the fit is not simply zoomed far out.
+        QVERIFY2(drawn.width() > viewport.width() / 2 || drawn.height() > viewport.height() / 2,
+                 qPrintable(QStringLiteral("%1×%2").arg(drawn.width()).arg(drawn.height())));
+        m_view->setColourBy(ColourBy::Patch);
     }
 };
 

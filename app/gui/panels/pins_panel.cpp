@@ -22,6 +22,7 @@ PinsPanel::PinsPanel(document::Document* document, document::Selection* selectio
       m_list(new QListWidget(this)), m_unpin(new QPushButton(tr("Unpin"), this)) {
     setObjectName(QStringLiteral("PinsPanel"));
     m_hint->setWordWrap(true);
+    m_hint->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred); // wraps, never widens
     m_hint->setText(tr("No vertex is pinned. Select vertices and choose Tools ▸ Pin Vertices "
                        "(Ctrl+K): the solver then never moves them."));
     m_list->setSelectionMode(QAbstractItemView::ExtendedSelection);

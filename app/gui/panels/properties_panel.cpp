@@ -71,10 +71,12 @@ PropertiesPanel::PropertiesPanel(document::Document* document, document::Selecti
     : QWidget(parent), m_document(document), m_selection(selection), m_summary(new QLabel(this)),
       m_pinned(new QLabel(this)), m_positionBox(new QWidget(this)) {
     m_summary->setWordWrap(true);
+    m_summary->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred); // wraps, never widens
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_summary->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     m_pinned->setObjectName(QStringLiteral("pinnedLine"));
     m_pinned->setWordWrap(true);
+    m_pinned->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred); // wraps, never widens
     m_pinned->setText(tr("<b>Pinned</b>: the solver never moves this vertex. Tools ▸ Unpin "
                          "Vertices (Ctrl+Shift+K) releases it."));
     m_pinned->setVisible(false);

@@ -1,11 +1,13 @@
 #include "solver_panel.h"
 
 #include "model/document/document.h"
+#include "verdict_text.h"
 
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QTableWidget>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -15,11 +17,19 @@
 namespace devsurf::app {
 
 SolverPanel::SolverPanel(QWidget* parent)
-    : QWidget(parent), m_status(new QLabel(this)), m_table(new QTableWidget(this)),
+    : QWidget(parent), m_verdict(new QLabel(this)), m_status(new QLabel(this)),
+      m_table(new QTableWidget(this)),
       m_selectPatches(new QPushButton(tr("Select Patches to Check"), this)) {
     setObjectName(QStringLiteral("SolverPanel"));
     auto* layout = new QVBoxLayout(this);
+    // Both labels wrap within the dock's width: a long sentence never widens the dock.
+    m_verdict->setObjectName(QStringLiteral("SolverVerdict"));
+    m_verdict->setWordWrap(true);
+    m_verdict->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_verdict->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_verdict->hide();
     m_status->setWordWrap(true);
+    m_status->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_table->setColumnCount(4);
     // Short headers: the dock is narrow. Their tooltips say what the columns are.
@@ -42,7 +52,20 @@ SolverPanel::SolverPanel(QWidget* parent)
     m_selectPatches->setEnabled(false);
     connect(m_selectPatches, &QPushButton::clicked, this,
             [this] { emit selectPatches(m_patches); });
-    layout->addWidget(m_status);
+    // The sentences scroll when the dock is short, rather than being cut off.
+    auto* sentences = new QWidget;
+    auto* sentencesLayout = new QVBoxLayout(sentences);
+    sentencesLayout->setContentsMargins(0, 0, 0, 0);
+    sentencesLayout->addWidget(m_verdict);
+    sentencesLayout->addWidget(m_status);
+    sentencesLayout->addStretch();
+    auto* scroll = new QScrollArea(this);
+    scroll->setObjectName(QStringLiteral("SolverSentences"));
+    scroll->setWidget(sentences);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    layout->addWidget(scroll, 1);
     layout->addWidget(m_selectPatches);
     layout->addWidget(m_table, 1);
     clearReport(noSolveYetText());
@@ -93,6 +116,10 @@ void SolverPanel::clearReport(const QString& text) {
     m_report = SolveReport();
     m_hasReport = false;
     m_status->setText(text);
+    m_verdict->clear();
+    m_verdict->setToolTip(QString());
+    m_verdict->hide();
+    emit verdictChanged(QString(), solver::VerdictKind::None);
     m_table->setRowCount(0);
     m_patches.clear();
     m_selectPatches->setEnabled(false);
@@ -148,10 +175,36 @@ void SolverPanel::display(const SolveReport& report) {
     m_worst = report.worstFaces.join(QStringLiteral(", "));
     if (!m_worst.isEmpty()) {
         m_status->setText(m_status->text() +
-                          tr("<br>Tolerance not reached. Least developable patches "
-                             "(normalised residual): %1")
+                          tr("<br>Least developable patches (normalised residual): %1")
                               .arg(m_worst.toHtmlEscaped()));
     }
+    // The verdict first, in the colour of its kind; its numbers in the tooltip and below.
+    const QString verdict = VerdictText::of(report.verdict);
+    const QString details = VerdictText::details(report.verdict);
+    m_verdict->setVisible(!verdict.isEmpty());
+    m_verdict->setText(
+        QStringLiteral("<b><span style=\"color:%1\">%2</span></b>")
+            .arg(verdictColour(report.verdict.kind).name(), verdict.toHtmlEscaped()));
+    m_verdict->setToolTip(details);
+    emit verdictChanged(VerdictText::brief(report.verdict), report.verdict.kind);
+}
+
+QColor SolverPanel::verdictColour(solver::VerdictKind kind) {
+    switch (kind) {
+    case solver::VerdictKind::ReadyToCut:
+        return QColor(0x1b, 0x7a, 0x2e);
+    case solver::VerdictKind::WithinIsometry:
+        return QColor(0x9a, 0x60, 0x00);
+    case solver::VerdictKind::NotDevelopable:
+        return QColor(0xb0, 0x1c, 0x1c);
+    case solver::VerdictKind::None:
+        break;
+    }
+    return QColor(0x30, 0x30, 0x30);
+}
+
+QString SolverPanel::verdictText() const {
+    return m_hasReport ? VerdictText::of(m_report.verdict) : QString();
 }
 
 QString SolverPanel::statusText() const {

@@ -3,7 +3,9 @@
 #include "model/document/selection.h"
 #include "solver/core/summary.h"
 #include "solver/session/solve_job.h"
+#include "solver/session/verdict.h"
 
+#include <QColor>
 #include <QStringList>
 #include <QWidget>
 
@@ -24,6 +26,7 @@ namespace devsurf::app {
 struct SolveReport {
     solver::JobOutcome outcome; // what the sentences below word
     QString title;              // what ran: "Solve", "Drag 3 vertices"
+    solver::Verdict verdict;    // what the designer can do with the result (VerdictText)
     QString status; // one sentence: converged, iteration limit, cancelled, failed (and why)
     std::vector<solver::Summary> summaries; // per surface (empty summaries are skipped)
     QStringList worstFaces;                 // filled when the tolerance was not reached
@@ -56,13 +59,20 @@ public:
     // The report shown last (empty when hasReport() is false).
     const SolveReport& report() const { return m_report; }
     QString statusText() const;
+    // The verdict as the panel shows it (VerdictText::of), empty without a report or verdict.
+    QString verdictText() const;
     // Rows of the iteration table (one per iteration of every solved surface).
     int iterationRows() const;
     QString worstFacesText() const;
+    // The colour a verdict of this kind is written in (the panel and the views' corner).
+    static QColor verdictColour(solver::VerdictKind kind);
     // The button that selects the patches the last report names (disabled if it names none).
     QPushButton* selectPatchesButton() const { return m_selectPatches; }
 
 signals:
+    // The verdict of the report shown, worded briefly for the views' corner (empty: none), and
+    // its kind; sent whenever the panel shows a report or clears it.
+    void verdictChanged(const QString& brief, devsurf::solver::VerdictKind kind);
     // The designer asked to select the patches the last report names.
     void selectPatches(const std::set<devsurf::document::Pick>& patches);
 
@@ -79,6 +89,7 @@ private:
     void clearReport(const QString& text);
     void followUndoState();
 
+    QLabel* m_verdict;
     QLabel* m_status;
     QTableWidget* m_table;
     QPushButton* m_selectPatches;

@@ -1,0 +1,131 @@
+#include "measure_tool.h"
+
+#include "model/document/document.h"
+#include "model/sheet_position.h"
+#include "views/surface_view.h"
+#include "views/vtk_opengl_widget.h"
+#include "workspace.h"
+
+#include <QAction>
+#include <QClipboard>
+#include <QGuiApplication>
+#include <QLocale>
+#include <QMouseEvent>
+
+namespace devsurf::app {
+
+namespace {
+
+// A click moves the mouse at most this far (pixels) between press and release.
+constexpr int kClickSlack = 3;
+
+QString millimetres(double value) {
+    return QLocale().toString(value, 'f', 2);
+}
+
+} // namespace
+
+MeasureTool::MeasureTool(QAction* action, QAction* copy, Workspace* workspace,
+                         views::SurfaceView* view)
+    : QObject(action), m_action(action), m_copy(copy), m_workspace(workspace), m_view(view) {
+    m_action->setCheckable(true);
+    m_copy->setEnabled(false);
+    connect(m_action, &QAction::toggled, this, [this](bool on) {
+        if (on) {
+            m_view->glWidget()->installEventFilter(this);
+            emit statusMessage(tr("Measure: click two points of the surface in the 3D view."));
+        } else {
+            m_view->glWidget()->removeEventFilter(this);
+            clear();
+        }
+    });
+    connect(m_copy, &QAction::triggered, this, [this] {
+        if (!m_text.isEmpty()) {
+            QGuiApplication::clipboard()->setText(m_text);
+            emit statusMessage(tr("Copied: %1").arg(m_text));
+        }
+    });
+    // The points belong to the shape they were picked on.
+    connect(workspace->document(), &document::Document::changed, this, [this] { clear(); });
+    connect(workspace->document(), &document::Document::projectReset, this, [this] { clear(); });
+}
+
+bool MeasureTool::eventFilter(QObject* watched, QEvent* event) {
+    if (watched != m_view->glWidget() || !m_action->isChecked()) {
+        return false;
+    }
+    if (event->type() == QEvent::MouseButtonPress) {
+        auto* me = static_cast<QMouseEvent*>(event);
+        m_pressed = me->button() == Qt::LeftButton;
+        m_pressAt = me->position().toPoint();
+    } else if (event->type() == QEvent::MouseButtonRelease && m_pressed) {
+        m_pressed = false;
+        const QPoint at = static_cast<QMouseEvent*>(event)->position().toPoint();
+        if ((at - m_pressAt).manhattanLength() <= kClickSlack) {
+            pick(at);
+        }
+    }
+    return false; // the view still selects and turns the camera
+}
+
+void MeasureTool::pick(const QPoint& widgetPos) {
+    const auto hit = m_view->surfacePointAt(widgetPos);
+    if (!hit) {
+        emit statusMessage(tr("Measure: no surface under the mouse; click on the surface."));
+        return;
+    }
+    if (m_points.size() == 2) {
+        m_points.clear();
+    }
+    m_points.push_back({hit->first, hit->second});
+    show();
+}
+
+void MeasureTool::clear() {
+    if (m_points.empty() && m_text.isEmpty()) {
+        return;
+    }
+    m_points.clear();
+    m_text.clear();
+    m_space = -1.0;
+    m_sheet = -1.0;
+    m_copy->setEnabled(false);
+    m_view->setMeasurement({}, QString());
+}
+
+void MeasureTool::show() {
+    std::vector<model::Vec3> drawn;
+    for (const Point& point : m_points) {
+        drawn.push_back(point.space);
+    }
+    if (m_points.size() < 2) {
+        m_text.clear();
+        m_copy->setEnabled(false);
+        m_view->setMeasurement(drawn, QString());
+        emit statusMessage(tr("Measure: first point picked; click the second."));
+        return;
+    }
+    const Point& a = m_points[0];
+    const Point& b = m_points[1];
+    m_space = distance(a.space, b.space);
+    m_sheet = -1.0;
+    const document::Document* doc = m_workspace->document();
+    if (a.face.surface == b.face.surface && a.face.surface >= 0 &&
+        a.face.surface < doc->surfaceCount()) {
+        const model::CompositeSurface& surface = doc->surface(a.face.surface);
+        const auto onSheetA = model::sheetPosition(surface, a.face.id, a.space);
+        const auto onSheetB = model::sheetPosition(surface, b.face.id, b.space);
+        if (onSheetA && onSheetB) {
+            m_sheet = (*onSheetA - *onSheetB).norm();
+        }
+    }
+    m_text =
+        m_sheet >= 0.0
+            ? tr("3D %1 mm, along the sheet %2 mm").arg(millimetres(m_space), millimetres(m_sheet))
+            : tr("3D %1 mm (the points lie on different surfaces)").arg(millimetres(m_space));
+    m_copy->setEnabled(true);
+    m_view->setMeasurement(drawn, m_text);
+    emit statusMessage(tr("Distance: %1. Ctrl+C copies it.").arg(m_text));
+}
+
+} // namespace devsurf::app

@@ -1,0 +1,83 @@
+#include "solver/session/verdict.h"
+
+#include "solver/session/drag_lengths.h"
+
+#include <algorithm>
+
+namespace devsurf::solver {
+
+namespace {
+
+void addPatch(Verdict& verdict, int surface, model::FaceId face) {
+    const std::pair<int, model::FaceId> place{surface, face};
+    if (std::find(verdict.patches.begin(), verdict.patches.end(), place) == verdict.patches.end()) {
+        verdict.patches.push_back(place);
+    }
+}
+
+} // namespace
+
+Verdict verdictOf(const JobOutcome& outcome) {
+    Verdict verdict;
+    if (!outcome.ok || !outcome.settled) {
+        return verdict;
+    }
+    bool anySolved = false;
+    bool allReached = true;
+    bool notDevelopable = false;
+    for (std::size_t s = 0; s < outcome.assessments.size(); ++s) {
+        const SurfaceAssessment& a = outcome.assessments[s];
+        if (!a.solved || !a.measured) {
+            continue;
+        }
+        anySolved = true;
+        const int surface = static_cast<int>(s);
+        verdict.residual = std::max(verdict.residual, a.summary.finalMaxConstraintResidual);
+        verdict.tolerance = std::max(verdict.tolerance, a.summary.tolerance);
+        verdict.isometryMm = std::max(verdict.isometryMm, a.isometryMm);
+        verdict.sheetExtent = std::max(verdict.sheetExtent, a.sheetExtent);
+        verdict.edgeLengthError = std::max(verdict.edgeLengthError, a.edgeLengthError);
+        allReached = allReached && a.summary.toleranceReached;
+        // Folding over or overlapping cannot be cut, however small the residual.
+        for (const auto& [face, places] : a.foldOvers) {
+            (void)places;
+            addPatch(verdict, surface, face);
+            verdict.foldsOver = true;
+        }
+        for (model::FaceId face : a.overlapping) {
+            addPatch(verdict, surface, face);
+            verdict.foldsOver = true;
+        }
+        // Far off: the sheet would stretch by more than kDragConvergedResidual (relative) to
+        // lie on its development, or it could not be unfolded at all.
+        const bool farOff = (!a.summary.toleranceReached &&
+                             (a.edgeLengthError > kDragConvergedResidual || a.isometryMm < 0.0)) ||
+                            a.keptAsItWas.has_value();
+        if (farOff) {
+            for (const auto& [face, residual] : a.worstFaces) {
+                (void)residual;
+                addPatch(verdict, surface, face);
+            }
+            verdict.solveMore = verdict.solveMore || (a.summary.status == Status::IterationLimit &&
+                                                      !a.keptAsItWas.has_value());
+            const model::CompositeSurface* shape =
+                s < outcome.surfaces.size() ? &outcome.surfaces[s] : nullptr;
+            verdict.releasePins =
+                verdict.releasePins || (shape != nullptr && !shape->pinnedVertices().empty());
+        }
+        if (farOff || !a.foldOvers.empty() || !a.overlapping.empty()) {
+            notDevelopable = true;
+            verdict.undoLastStep = verdict.undoLastStep || a.keptAsItWas.has_value() ||
+                                   !a.foldOvers.empty() || !a.overlapping.empty();
+        }
+    }
+    if (!anySolved) {
+        return verdict;
+    }
+    verdict.kind = notDevelopable ? VerdictKind::NotDevelopable
+                   : allReached   ? VerdictKind::ReadyToCut
+                                  : VerdictKind::WithinIsometry;
+    return verdict;
+}
+
+} // namespace devsurf::solver

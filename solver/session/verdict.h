@@ -1,0 +1,48 @@
+#pragma once
+
+#include "model/ids.h"
+#include "solver/session/solve_job.h"
+
+#include <utility>
+#include <vector>
+
+namespace devsurf::solver {
+
+// What a designer can do with a settled outcome, decided here once for every front end (the
+// Solver panel, the views' corner, `devsurf-cli solve`); app/ words it.
+enum class VerdictKind {
+    None,           // no verdict: the job failed, was cancelled, or did not settle
+    ReadyToCut,     // every solved surface reached the solve's tolerance, nothing folds over
+    WithinIsometry, // developable up to isometryMm over the sheet: the cut is off by that much
+    NotDevelopable, // `patches` say where, the advice flags what to try
+};
+
+struct Verdict {
+    VerdictKind kind = VerdictKind::None;
+    // Measured on the sampled development of the solved surfaces (largest over them): the
+    // sheet's extent (mm), the largest relative edge-length error, and their product or the
+    // unfolding's closure gap, whichever is larger (mm): how far the cut pattern can be off.
+    double isometryMm = 0.0;
+    double sheetExtent = 0.0;
+    double edgeLengthError = 0.0;
+    // The largest final constraint residual and the solve's tolerance on it.
+    double residual = 0.0;
+    double tolerance = 0.0;
+    // NotDevelopable: the patches to look at (surface index, patch), worst first per surface.
+    std::vector<std::pair<int, model::FaceId>> patches;
+    bool foldsOver = false; // a patch folds over onto itself, or the development overlaps
+    // What to try: solve again (the iteration limit was reached), release pins (the surface
+    // is pinned), undo the last step (the edit made it fold over or solving made it worse).
+    bool solveMore = false;
+    bool releasePins = false;
+    bool undoLastStep = false;
+};
+
+// Ready to cut when every solved surface reached the solve's tolerance (Summary::tolerance)
+// and nothing folds over. Otherwise a surface whose development's relative edge-length error
+// exceeds kDragConvergedResidual (the strain at which a drag counts as not converged), that
+// cannot be unfolded, folds over or was left as it was is not developable; else isometryMm
+// says how close it is.
+Verdict verdictOf(const JobOutcome& outcome);
+
+} // namespace devsurf::solver
