@@ -12,6 +12,7 @@
 #include "views/crease_marks.h"
 #include "views/development_view.h"
 #include "views/surface_view.h"
+#include "views/view_overlay.h"
 #include "views/vtk_opengl_widget.h"
 
 #include <QApplication>
@@ -314,8 +315,9 @@ private slots:
         QVERIFY(views.show());
         QCOMPARE(views.development->sheetLoopsDrawn(), 1);
         QCOMPARE(views.spatial->sheetLoopsDrawn(), 0);
-        QVERIFY(views.development->legendEntries().contains(QStringLiteral("Sheet")));
-        QVERIFY(!views.spatial->legendEntries().contains(QStringLiteral("Sheet")));
+        QVERIFY(
+            views.development->legendEntries().contains(devsurf::views::ViewOverlay::tr("Sheet")));
+        QVERIFY(!views.spatial->legendEntries().contains(devsurf::views::ViewOverlay::tr("Sheet")));
         // The disk is wider than the square: the fitted view shows it whole, in its colour.
         const auto countSheetPixels = [&views] {
             const QImage image = views.development->grabImage();
@@ -337,7 +339,8 @@ private slots:
         views.document.mutableProject().surfaces[0].setKeepsDevelopment(false);
         views.document.notifyChanged(Change::Geometry);
         QCOMPARE(views.development->sheetLoopsDrawn(), 0);
-        QTRY_VERIFY(!views.development->legendEntries().contains(QStringLiteral("Sheet")));
+        QTRY_VERIFY(
+            !views.development->legendEntries().contains(devsurf::views::ViewOverlay::tr("Sheet")));
         QVERIFY(countSheetPixels() < drawn / 20); // a few pixels of the patches' blending
     }
 
