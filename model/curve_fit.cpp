@@ -100,6 +100,20 @@ double edgeCurveDistance(const CompositeSurface& surface, EdgeId edge,
     return sum / (kSamples + 1);
 }
 
+std::size_t nearestCurve(const CompositeSurface& surface, EdgeId edge,
+                         const std::vector<ReferenceCurve>& curves) {
+    std::size_t nearest = 0;
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t c = 0; c < curves.size(); ++c) {
+        const double d = edgeCurveDistance(surface, edge, curves[c]);
+        if (d < best) {
+            best = d;
+            nearest = c;
+        }
+    }
+    return nearest;
+}
+
 EdgeFit fitEdgeToCurve(CompositeSurface& surface, EdgeId edge, const ReferenceCurve& curve) {
     EdgeFit fit;
     if (!surface.hasEdge(edge) || !surface.edge(edge).isSpline()) {

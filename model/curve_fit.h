@@ -7,7 +7,9 @@
 #include "composite_surface.h"
 #include "reference_curve.h"
 
+#include <cstddef>
 #include <optional>
+#include <vector>
 
 namespace devsurf::model {
 
@@ -31,5 +33,8 @@ EdgeFit fitEdgeToCurve(CompositeSurface& surface, EdgeId edge, const ReferenceCu
 
 // The mean distance (mm) of an S-edge's spline from a curve, sampled: which curve is meant.
 double edgeCurveDistance(const CompositeSurface& surface, EdgeId edge, const ReferenceCurve& curve);
+// The index of the curve nearest the S-edge by that distance (0 for no curves).
+std::size_t nearestCurve(const CompositeSurface& surface, EdgeId edge,
+                         const std::vector<ReferenceCurve>& curves);
 
 } // namespace devsurf::model

@@ -109,21 +109,11 @@ int runFitEdgeCommand(const SubcommandArguments& args) {
                   << " (list the edges with 'devsurf-cli info FILE --edges').\n";
         return 2;
     }
-    std::size_t chosen = 0;
-    if (curveText) {
-        chosen = static_cast<std::size_t>(
-                     parseWhole(*curveText, "--curve", 1, static_cast<long>(curves.size()))) -
-                 1;
-    } else {
-        double best = std::numeric_limits<double>::infinity();
-        for (std::size_t c = 0; c < curves.size(); ++c) {
-            const double d = model::edgeCurveDistance(surface, edge, curves[c]);
-            if (d < best) {
-                best = d;
-                chosen = c;
-            }
-        }
-    }
+    const std::size_t chosen =
+        curveText ? static_cast<std::size_t>(
+                        parseWhole(*curveText, "--curve", 1, static_cast<long>(curves.size()))) -
+                        1
+                  : model::nearestCurve(surface, edge, curves);
     const model::ReferenceCurve& curve = curves[chosen];
     const model::EdgeFit fit = model::fitEdgeToCurve(surface, edge, curve);
     if (fit.refused) {

@@ -235,15 +235,7 @@ void FitEdgeToCurveReaction::onTriggered() {
     }
     const auto [index, edge] = *selected;
     const model::CompositeSurface& surface = doc->surface(index);
-    std::size_t nearest = 0;
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t c = 0; c < curves.size(); ++c) {
-        const double d = model::edgeCurveDistance(surface, edge, curves[c]);
-        if (d < best) {
-            best = d;
-            nearest = c;
-        }
-    }
+    const std::size_t nearest = model::nearestCurve(surface, edge, curves);
     model::CompositeSurface changed = surface;
     const model::EdgeFit fit = model::fitEdgeToCurve(changed, edge, curves[nearest]);
     const QString curveName = QString::fromStdString(curves[nearest].name);
