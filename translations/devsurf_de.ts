@@ -1506,27 +1506,27 @@
         <translation>Die gewählte Falz oder den gewählten Rand an die nächstgelegene Referenzkurve anlegen; Lösen macht die Fläche danach wieder abwickelbar.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="253"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="245"/>
         <source>Edge %1 was not fitted: both its ends are nearest the same point of %2.</source>
         <translation>Kante %1 wurde nicht angelegt: beide Enden liegen demselben Punkt von %2 am nächsten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="256"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="248"/>
         <source>Edge %1 was not fitted: %2 has too few points.</source>
         <translation>Kante %1 wurde nicht angelegt: %2 hat zu wenige Punkte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="260"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="252"/>
         <source>Fit Edge to Curve</source>
         <translation>Kante an Kurve anlegen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="262"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="254"/>
         <source>Cannot fit the edge to the curve</source>
         <translation>Die Kante kann nicht an die Kurve angelegt werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="267"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="259"/>
         <source>Edge %1 lies on %2 within %3 mm; Solve (Ctrl+Return) makes the surface developable again.</source>
         <translation>Kante %1 liegt bis auf %3 mm auf %2; Lösen (Ctrl+Return) macht die Fläche wieder abwickelbar.</translation>
     </message>
@@ -2059,6 +2059,11 @@
         <translation>Drehwerkzeug (R): Wählen Sie zwei oder mehr Ecken aus, drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie die Maus seitwärts; sie drehen sich um eine Achse durch ihren Schwerpunkt (senkrecht oder wie in der Werkzeugleiste gewählt), und die Fläche folgt. Esc bricht ab.</translation>
     </message>
     <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="93"/>
+        <source>Measure tool: click two points of the surface in the 3D view; their distance in space and along the sheet (as the cut pattern has it) is drawn and shown in the status bar. Select an edge for its length, two edges that meet for their angle.</source>
+        <translation>Messwerkzeug: klicken Sie in der 3D-Ansicht auf zwei Punkte der Fläche; ihr Abstand im Raum und entlang des Bogens (wie ihn das Schnittmuster hat) wird eingezeichnet und in der Statusleiste angezeigt. Wählen Sie eine Kante für ihre Länge, zwei sich treffende Kanten für ihren Winkel.</translation>
+    </message>
+    <message>
         <location filename="../app/gui/main_window_solver.cpp" line="117"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>Beenden Sie zuerst das Ziehen; es löst bereits während der Bewegung.</translation>
@@ -2097,11 +2102,6 @@
         <location filename="../app/gui/main_window_solver.cpp" line="91"/>
         <source>Measur&amp;e</source>
         <translation>&amp;Messen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="93"/>
-        <source>Measure tool: click two points of the surface in the 3D view; their distance in space and along the sheet (as the cut pattern has it) is drawn and shown in the status bar.</source>
-        <translation>Messwerkzeug: klicken Sie in der 3D-Ansicht auf zwei Punkte der Fläche; ihr Abstand im Raum und entlang des Bogens (wie ihn das Schnittmuster hat) wird eingezeichnet und in der Statusleiste angezeigt.</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_solver.cpp" line="99"/>
@@ -2280,37 +2280,52 @@
 <context>
     <name>devsurf::app::MeasureTool</name>
     <message>
-        <location filename="../app/gui/measure_tool.cpp" line="36"/>
+        <location filename="../app/gui/measure_tool.cpp" line="38"/>
         <source>Measure: click two points of the surface in the 3D view.</source>
         <translation>Messen: klicken Sie in der 3D-Ansicht auf zwei Punkte der Fläche.</translation>
     </message>
     <message>
-        <location filename="../app/gui/measure_tool.cpp" line="45"/>
+        <location filename="../app/gui/measure_tool.cpp" line="47"/>
         <source>Copied: %1</source>
         <translation>Kopiert: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/measure_tool.cpp" line="74"/>
+        <location filename="../app/gui/measure_tool.cpp" line="81"/>
         <source>Measure: no surface under the mouse; click on the surface.</source>
         <translation>Messen: unter der Maus liegt keine Fläche; klicken Sie auf die Fläche.</translation>
     </message>
     <message>
-        <location filename="../app/gui/measure_tool.cpp" line="105"/>
+        <location filename="../app/gui/measure_tool.cpp" line="113"/>
+        <source>Edge %1: %2 mm long</source>
+        <translation>Kante %1: %2 mm lang</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="121"/>
+        <source>Edges %1 and %2 meet at vertex %3 at %4°</source>
+        <translation>Kanten %1 und %2 treffen sich in Eckpunkt %3 unter %4°</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="128"/>
+        <source>Measured: %1. Ctrl+C copies it.</source>
+        <translation>Gemessen: %1. Ctrl+C kopiert es.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="153"/>
         <source>Measure: first point picked; click the second.</source>
         <translation>Messen: erster Punkt gewählt; klicken Sie den zweiten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/measure_tool.cpp" line="124"/>
+        <location filename="../app/gui/measure_tool.cpp" line="172"/>
         <source>3D %1 mm, along the sheet %2 mm</source>
         <translation>3D %1 mm, entlang des Bogens %2 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/measure_tool.cpp" line="125"/>
+        <location filename="../app/gui/measure_tool.cpp" line="173"/>
         <source>3D %1 mm (the points lie on different surfaces)</source>
         <translation>3D %1 mm (die Punkte liegen auf verschiedenen Flächen)</translation>
     </message>
     <message>
-        <location filename="../app/gui/measure_tool.cpp" line="128"/>
+        <location filename="../app/gui/measure_tool.cpp" line="176"/>
         <source>Distance: %1. Ctrl+C copies it.</source>
         <translation>Abstand: %1. Ctrl+C kopiert ihn.</translation>
     </message>

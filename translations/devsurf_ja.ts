@@ -1491,27 +1491,27 @@
         <translation>選んだ折り目または境界を最も近い参照曲線に合わせます。その後ソルブで曲面を再び可展にします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="253"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="245"/>
         <source>Edge %1 was not fitted: both its ends are nearest the same point of %2.</source>
         <translation>辺 %1 は合わせられませんでした: 両端が %2 の同じ点に最も近いためです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="256"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="248"/>
         <source>Edge %1 was not fitted: %2 has too few points.</source>
         <translation>辺 %1 は合わせられませんでした: %2 の点が少なすぎます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="260"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="252"/>
         <source>Fit Edge to Curve</source>
         <translation>辺を曲線に合わせる</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="262"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="254"/>
         <source>Cannot fit the edge to the curve</source>
         <translation>辺を曲線に合わせられません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="267"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="259"/>
         <source>Edge %1 lies on %2 within %3 mm; Solve (Ctrl+Return) makes the surface developable again.</source>
         <translation>辺 %1 は %2 に %3 mm 以内で重なりました。ソルブ (Ctrl+Return) で曲面を再び可展にします。</translation>
     </message>
@@ -2039,6 +2039,11 @@
         <translation>回転ツール (R): 2 個以上の頂点を選択し、3D ビューで頂点を押してマウスを横に動かすと、頂点が重心を通る軸 (鉛直、またはツールバーで選んだ軸) の周りに回転し、曲面が追従します。Esc で取り消します。</translation>
     </message>
     <message>
+        <location filename="../app/gui/main_window_solver.cpp" line="93"/>
+        <source>Measure tool: click two points of the surface in the 3D view; their distance in space and along the sheet (as the cut pattern has it) is drawn and shown in the status bar. Select an edge for its length, two edges that meet for their angle.</source>
+        <translation>計測ツール: 3D ビューで曲面上の 2 点をクリックすると、空間での距離とシートに沿った距離 (型紙上の距離) が描かれ、ステータスバーに表示されます。辺を 1 本選ぶとその長さを、交わる 2 本の辺を選ぶとその角度を計測します。</translation>
+    </message>
+    <message>
         <location filename="../app/gui/main_window_solver.cpp" line="117"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>先にドラッグを終えてください。ドラッグ中も随時ソルブしています。</translation>
@@ -2077,11 +2082,6 @@
         <location filename="../app/gui/main_window_solver.cpp" line="91"/>
         <source>Measur&amp;e</source>
         <translation>計測(&amp;Q)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="93"/>
-        <source>Measure tool: click two points of the surface in the 3D view; their distance in space and along the sheet (as the cut pattern has it) is drawn and shown in the status bar.</source>
-        <translation>計測ツール: 3D ビューで曲面上の 2 点をクリックすると、空間での距離とシートに沿った距離 (型紙上の距離) が描かれ、ステータスバーに表示されます。</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_solver.cpp" line="99"/>
@@ -2260,37 +2260,52 @@
 <context>
     <name>devsurf::app::MeasureTool</name>
     <message>
-        <location filename="../app/gui/measure_tool.cpp" line="36"/>
+        <location filename="../app/gui/measure_tool.cpp" line="38"/>
         <source>Measure: click two points of the surface in the 3D view.</source>
         <translation>計測: 3D ビューで曲面上の 2 点をクリックしてください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/measure_tool.cpp" line="45"/>
+        <location filename="../app/gui/measure_tool.cpp" line="47"/>
         <source>Copied: %1</source>
         <translation>コピーしました: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/measure_tool.cpp" line="74"/>
+        <location filename="../app/gui/measure_tool.cpp" line="81"/>
         <source>Measure: no surface under the mouse; click on the surface.</source>
         <translation>計測: マウスの下に曲面がありません。曲面上をクリックしてください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/measure_tool.cpp" line="105"/>
+        <location filename="../app/gui/measure_tool.cpp" line="113"/>
+        <source>Edge %1: %2 mm long</source>
+        <translation>辺 %1: 長さ %2 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="121"/>
+        <source>Edges %1 and %2 meet at vertex %3 at %4°</source>
+        <translation>辺 %1 と %2 は頂点 %3 で %4° の角度で交わります</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="128"/>
+        <source>Measured: %1. Ctrl+C copies it.</source>
+        <translation>計測: %1。Ctrl+C でコピーできます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/measure_tool.cpp" line="153"/>
         <source>Measure: first point picked; click the second.</source>
         <translation>計測: 1 点目を選びました。2 点目をクリックしてください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/measure_tool.cpp" line="124"/>
+        <location filename="../app/gui/measure_tool.cpp" line="172"/>
         <source>3D %1 mm, along the sheet %2 mm</source>
         <translation>3D %1 mm、シートに沿って %2 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/measure_tool.cpp" line="125"/>
+        <location filename="../app/gui/measure_tool.cpp" line="173"/>
         <source>3D %1 mm (the points lie on different surfaces)</source>
         <translation>3D %1 mm (2 点は別の曲面上にあります)</translation>
     </message>
     <message>
-        <location filename="../app/gui/measure_tool.cpp" line="128"/>
+        <location filename="../app/gui/measure_tool.cpp" line="176"/>
         <source>Distance: %1. Ctrl+C copies it.</source>
         <translation>距離: %1。Ctrl+C でコピーできます。</translation>
     </message>

@@ -92,7 +92,7 @@ QList<QAction*> MainWindow::createSolverActions(QMenu* tools, QAction* selectNon
     const QString measureTip =
         tr("Measure tool: click two points of the surface in the 3D view; their distance in "
            "space and along the sheet (as the cut pattern has it) is drawn and shown in the "
-           "status bar.");
+           "status bar. Select an edge for its length, two edges that meet for their angle.");
     measure->setToolTip(measureTip);
     measure->setStatusTip(measureTip);
     QAction* copyMeasurement = addAction(tools, QStringLiteral("actionCopyMeasurement"),

@@ -1,6 +1,8 @@
 #include "measure_tool.h"
 
 #include "model/document/document.h"
+#include "model/document/selection.h"
+#include "model/edge_measure.h"
 #include "model/sheet_position.h"
 #include "views/surface_view.h"
 #include "views/vtk_opengl_widget.h"
@@ -45,6 +47,11 @@ MeasureTool::MeasureTool(QAction* action, QAction* copy, Workspace* workspace,
             emit statusMessage(tr("Copied: %1").arg(m_text));
         }
     });
+    connect(workspace->selection(), &document::Selection::selectionChanged, this, [this] {
+        if (m_action->isChecked()) {
+            measureSelectedEdges();
+        }
+    });
     // The points belong to the shape they were picked on.
     connect(workspace->document(), &document::Document::changed, this, [this] { clear(); });
     connect(workspace->document(), &document::Document::projectReset, this, [this] { clear(); });
@@ -79,6 +86,47 @@ void MeasureTool::pick(const QPoint& widgetPos) {
     }
     m_points.push_back({hit->first, hit->second});
     show();
+}
+
+bool MeasureTool::measureSelectedEdges() {
+    std::vector<document::Pick> edges;
+    for (const document::Pick& pick : m_workspace->selection()->picks()) {
+        if (pick.kind != document::Pick::Kind::Edge) {
+            return false;
+        }
+        edges.push_back(pick);
+    }
+    const document::Document* doc = m_workspace->document();
+    if (edges.empty() || edges.size() > 2 || edges.front().surface < 0 ||
+        edges.front().surface >= doc->surfaceCount() ||
+        edges.back().surface != edges.front().surface) {
+        return false;
+    }
+    const model::CompositeSurface& surface = doc->surface(edges.front().surface);
+    for (const document::Pick& edge : edges) {
+        if (!surface.hasEdge(edge.id)) {
+            return false;
+        }
+    }
+    const QLocale locale;
+    if (edges.size() == 1) {
+        m_text = tr("Edge %1: %2 mm long")
+                     .arg(edges.front().id)
+                     .arg(millimetres(model::edgeLength(surface, edges.front().id)));
+    } else {
+        const auto angle = model::edgeAngle(surface, edges[0].id, edges[1].id);
+        if (!angle) {
+            return false;
+        }
+        m_text = tr("Edges %1 and %2 meet at vertex %3 at %4°")
+                     .arg(edges[0].id)
+                     .arg(edges[1].id)
+                     .arg(angle->vertex)
+                     .arg(locale.toString(angle->degrees, 'f', 2));
+    }
+    m_copy->setEnabled(true);
+    emit statusMessage(tr("Measured: %1. Ctrl+C copies it.").arg(m_text));
+    return true;
 }
 
 void MeasureTool::clear() {

@@ -23,7 +23,8 @@ class Workspace;
 // and along the sheet (between their places on the development, as the cut pattern has them),
 // drawn in the view and said in the status bar; Tools ▸ Copy Measurement (Ctrl+C) copies it.
 // A click without moving picks; dragging still turns the camera. A third click starts anew;
-// an edit of the design clears the measurement.
+// an edit of the design clears the measurement. With the tool on, selecting one edge measures
+// its length (along its curve) and two edges that meet the angle between them there.
 class MeasureTool : public QObject {
     Q_OBJECT
 public:
@@ -47,6 +48,8 @@ private:
         document::Pick face;
     };
     void pick(const QPoint& widgetPos);
+    // The length of one selected edge, or the angle of two that meet; false if neither.
+    bool measureSelectedEdges();
     void clear();
     void show();
 

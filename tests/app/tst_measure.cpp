@@ -5,9 +5,12 @@
 #include "io/project_file.h"
 #include "main_window.h"
 #include "measure_tool.h"
+#include "model/bspline_curve.h"
 #include "model/derived_geometry.h"
 #include "model/document/commands/pin_vertices_command.h"
 #include "model/document/document.h"
+#include "model/document/selection.h"
+#include "model/edge_measure.h"
 #include "model/examples.h"
 #include "model/sampled_mesh.h"
 #include "model/sheet_position.h"
@@ -20,6 +23,7 @@
 #include <QAction>
 #include <QClipboard>
 #include <QGuiApplication>
+#include <QLocale>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -27,6 +31,7 @@
 #include <QUndoStack>
 
 #include <cmath>
+#include <set>
 
 using namespace devsurf;
 
@@ -82,6 +87,54 @@ private slots:
         window.action(QStringLiteral("actionMeasureTool"))->setChecked(false);
         QVERIFY(window.surfaceView()->measurementPoints().empty());
         QVERIFY(!copy->isEnabled());
+    }
+
+    void edgeLengthsAndAngles() {
+        // The flat fig8: its boundary edge from vertex 0 to 1 is 100 mm long and meets the
+        // boundary ruling from vertex 0 to 4 at a right angle.
+        app::MainWindow window;
+        QVERIFY(test::showActiveWithExample(window, QStringLiteral("fig8")));
+        const model::CompositeSurface& surface = window.workspace()->document()->surface(0);
+        model::EdgeId bottom = model::kInvalidId, side = model::kInvalidId;
+        for (const auto& [id, record] : surface.edges()) {
+            const std::set<model::VertexId> ends{record.from, record.to};
+            bottom = ends == std::set<model::VertexId>{0, 1} ? id : bottom;
+            side = ends == std::set<model::VertexId>{0, 4} ? id : side;
+        }
+        QVERIFY(bottom != model::kInvalidId && side != model::kInvalidId);
+        window.action(QStringLiteral("actionMeasureTool"))->setChecked(true);
+        auto* tool =
+            window.action(QStringLiteral("actionMeasureTool"))->findChild<app::MeasureTool*>();
+        window.workspace()->selection()->set({{document::Pick::Kind::Edge, 0, bottom}});
+        QVERIFY2(tool->text().contains(QLocale().toString(100.0, 'f', 2)),
+                 qPrintable(tool->text()));
+        window.workspace()->selection()->set(
+            {{document::Pick::Kind::Edge, 0, bottom}, {document::Pick::Kind::Edge, 0, side}});
+        QVERIFY2(tool->text().contains(QLocale().toString(90.0, 'f', 2)), qPrintable(tool->text()));
+        QTest::keyClick(&window, Qt::Key_C, Qt::ControlModifier);
+        QCOMPARE(QGuiApplication::clipboard()->text(), tool->text());
+        // Measured independently on a curved crease: longer than its chord, as long as a fine
+        // polyline of its spline.
+        for (const auto& [id, record] : surface.edges()) {
+            if (record.isSpline() && surface.facesOfEdge(id).size() == 2) {
+                const double length = model::edgeLength(surface, id);
+                QVERIFY(length >
+                        distance(surface.position(record.from), surface.position(record.to)));
+                const model::BSplineCurve spline =
+                    model::BSplineCurve::uniform(record.space, record.controlPoints);
+                double polyline = 0.0;
+                for (int k = 1; k <= 20000; ++k) {
+                    const auto at = [&](int j) {
+                        return spline.evaluate(spline.domainBegin() +
+                                               (spline.domainEnd() - spline.domainBegin()) * j /
+                                                   20000.0);
+                    };
+                    polyline += distance(at(k - 1), at(k));
+                }
+                QVERIFY(std::abs(length - polyline) < 1e-6 * polyline);
+                break;
+            }
+        }
     }
 
     void onTheFoldedFig8TheSheetDistanceIsTheDevelopments() {
