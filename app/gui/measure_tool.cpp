@@ -1,5 +1,6 @@
 #include "measure_tool.h"
 
+#include "model/bspline_curve.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "model/edge_measure.h"
@@ -109,7 +110,16 @@ bool MeasureTool::measureSelectedEdges() {
         }
     }
     const QLocale locale;
+    model::Vec3 anchor; // where the view writes it: the edge's middle, or the common vertex
     if (edges.size() == 1) {
+        const model::EdgeRecord& record = surface.edge(edges.front().id);
+        if (record.isSpline()) {
+            const model::BSplineCurve spline =
+                model::BSplineCurve::uniform(record.space, record.controlPoints);
+            anchor = spline.evaluate(0.5 * (spline.domainBegin() + spline.domainEnd()));
+        } else {
+            anchor = (surface.position(record.from) + surface.position(record.to)) * 0.5;
+        }
         m_text = tr("Edge %1: %2 mm long")
                      .arg(edges.front().id)
                      .arg(millimetres(model::edgeLength(surface, edges.front().id)));
@@ -123,7 +133,10 @@ bool MeasureTool::measureSelectedEdges() {
                      .arg(edges[1].id)
                      .arg(angle->vertex)
                      .arg(locale.toString(angle->degrees, 'f', 2));
+        anchor = surface.position(angle->vertex);
     }
+    m_points.clear();
+    m_view->setMeasurement({anchor}, m_text);
     m_copy->setEnabled(true);
     emit statusMessage(tr("Measured: %1. Ctrl+C copies it.").arg(m_text));
     return true;

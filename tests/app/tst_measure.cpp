@@ -111,6 +111,9 @@ private slots:
         window.workspace()->selection()->set(
             {{document::Pick::Kind::Edge, 0, bottom}, {document::Pick::Kind::Edge, 0, side}});
         QVERIFY2(tool->text().contains(QLocale().toString(90.0, 'f', 2)), qPrintable(tool->text()));
+        // Written in the view at the common vertex.
+        QCOMPARE(window.surfaceView()->measurementPoints(),
+                 std::vector<model::Vec3>{surface.position(0)});
         QTest::keyClick(&window, Qt::Key_C, Qt::ControlModifier);
         QCOMPARE(QGuiApplication::clipboard()->text(), tool->text());
         // Measured independently on a curved crease: longer than its chord, as long as a fine
