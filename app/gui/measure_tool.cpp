@@ -136,6 +136,8 @@ bool MeasureTool::measureSelectedEdges() {
         anchor = surface.position(angle->vertex);
     }
     m_points.clear();
+    m_space = -1.0; // no point-to-point distance now
+    m_sheet = -1.0;
     m_view->setMeasurement({anchor}, m_text);
     m_copy->setEnabled(true);
     emit statusMessage(tr("Measured: %1. Ctrl+C copies it.").arg(m_text));
