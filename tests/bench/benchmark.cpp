@@ -1,6 +1,7 @@
 #include "benchmark.h"
 
 #include "bench_models.h"
+#include "blas_rates.h"
 #include "ceres_peer.h"
 #include "quality_study.h"
 
@@ -9,8 +10,6 @@
 #include "solver/formulation/perturbation.h"
 #include "solver/formulation/surface_formulation.h"
 #include "solver/quality/quality_measures.h"
-
-#include <dlfcn.h>
 
 #include <algorithm>
 #include <chrono>
@@ -49,56 +48,6 @@ std::string quoted(const std::string& text) {
         out += c >= 0 && c < 0x20 ? ' ' : c;
     }
     return out + "\"";
-}
-
-constexpr int kDgemmSize = 1000;
-
-// Single-core DGEMM rate of the BLAS the process uses (the one CHOLMOD calls), in GFLOP/s:
-// the best of three 1000×1000 products, the ceiling for a supernodal factorisation's flops.
-// A threaded BLAS is held to one thread for it (runBenchmark).
-double measureDgemmGflops() {
-    using Dgemm = void (*)(const char*, const char*, const int*, const int*, const int*,
-                           const double*, const double*, const int*, const double*, const int*,
-                           const double*, double*, const int*);
-    auto dgemm = reinterpret_cast<Dgemm>(dlsym(RTLD_DEFAULT, "dgemm_"));
-    if (!dgemm) {
-        return 0.0;
-    }
-    const int n = kDgemmSize;
-    std::vector<double> a(static_cast<std::size_t>(n) * n, 0.5);
-    std::vector<double> b(a.size(), 0.25);
-    std::vector<double> c(a.size(), 0.0);
-    const double one = 1.0;
-    const double zero = 0.0;
-    double best = 0.0;
-    for (int repeat = 0; repeat < 3; ++repeat) {
-        const auto start = Clock::now();
-        dgemm("N", "N", &n, &n, &n, &one, a.data(), &n, b.data(), &n, &zero, c.data(), &n);
-        const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-        best = std::max(best, 2.0 * n * n * static_cast<double>(n) / seconds * 1e-9);
-    }
-    return best;
-}
-
-// openblas_set_num_threads of the loaded BLAS; false if it has none.
-bool setBlasThreads(int threads) {
-    using SetThreads = void (*)(int);
-    auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-    if (!set) {
-        return false;
-    }
-    set(threads);
-    return true;
-}
-
-// Amdahl's law: the speed-up on `threads` of a run whose `fraction` is parallel.
-double amdahl(double fraction, int threads) {
-    return 1.0 / ((1.0 - fraction) + fraction / threads);
-}
-
-// The parallel fraction that gives `speedup` on two threads (Amdahl's law solved for it).
-double parallelFractionFromTwo(double speedup) {
-    return speedup > 0.0 ? std::clamp(2.0 * (1.0 - 1.0 / speedup), 0.0, 1.0) : 0.0;
 }
 
 struct Timing {
