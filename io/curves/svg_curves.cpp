@@ -223,8 +223,12 @@ void sampleCubic(QPointF p0, QPointF p1, QPointF p2, QPointF p3, // copies: out 
                  double tolerance, std::vector<QPointF>& out) {
     const auto norm = [](const QPointF& v) { return std::hypot(v.x(), v.y()); };
     const double bend = 6.0 * std::max(norm(p0 - 2 * p1 + p2), norm(p1 - 2 * p2 + p3));
-    const int n = std::clamp(static_cast<int>(std::ceil(std::sqrt(bend / (8.0 * tolerance)))), 1,
-                             static_cast<int>(kMaxCurvePoints));
+    // Clamped as a double: a hostile coordinate may make the bound infinite or not a number.
+    const double wanted = std::ceil(std::sqrt(bend / (8.0 * tolerance)));
+    const int n =
+        std::isfinite(wanted)
+            ? static_cast<int>(std::clamp(wanted, 1.0, static_cast<double>(kMaxCurvePoints)))
+            : static_cast<int>(kMaxCurvePoints);
     for (int i = 1; i <= n; ++i) {
         const double t = static_cast<double>(i) / n, s = 1.0 - t;
         out.push_back(s * s * s * p0 + 3 * s * s * t * p1 + 3 * s * t * t * p2 + t * t * t * p3);
@@ -275,8 +279,16 @@ CurveImportResult readSvgCurves(const QByteArray& bytes, const CurveImportOption
             if (points.size() >= 2 && total + points.size() <= 50 * kMaxCurvePoints) {
                 model::ReferenceCurve curve;
                 curve.name = "SVG path " + std::to_string(result.curves.size() + 1);
+                bool finite = true;
                 for (const QPointF& p : points) {
                     curve.points.emplace_back(p.x() * *scale, -p.y() * *scale, 0.0);
+                    finite = finite && std::isfinite(curve.points.back().x) &&
+                             std::isfinite(curve.points.back().y);
+                }
+                if (!finite) { // beyond what a double holds once in mm
+                    ++result.skipped;
+                    points.clear();
+                    return;
                 }
                 total += points.size();
                 result.curves.push_back(std::move(curve));
