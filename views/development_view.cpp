@@ -15,4 +15,9 @@ void DevelopmentView::setShowVertices(bool show) {
     setShowVerticesImpl(show);
 }
 
+void DevelopmentView::setShowSheet(bool show) {
+    m_showSheet = show;
+    setShowSheetImpl(show);
+}
+
 } // namespace devsurf::views

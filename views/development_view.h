@@ -18,12 +18,16 @@ public:
     ~DevelopmentView() override;
 
     bool showVertices() const { return m_showVertices; }
+    // The sheet a held development is confined to, drawn behind it (View ▸ Sheet).
+    bool showsSheet() const { return m_showSheet; }
 
 public slots:
     void setShowVertices(bool show);
+    void setShowSheet(bool show);
 
 private:
     bool m_showVertices = true;
+    bool m_showSheet = true;
 };
 
 } // namespace devsurf::views

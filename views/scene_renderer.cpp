@@ -464,6 +464,11 @@ void SceneRenderer::setShowVertices(bool show) {
     m_vertices->actor->SetVisibility(show);
 }
 
+void SceneRenderer::setShowSheet(bool show) {
+    m_showSheet = show;
+    m_sheet->actor->SetVisibility(show);
+}
+
 void SceneRenderer::setTargetPoints(const std::vector<Vec3>& points) {
     m_target->assign(pointData(points), false);
 }

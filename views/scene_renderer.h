@@ -69,6 +69,9 @@ public:
 
     void setShowControlPolygons(bool show);
     void setShowVertices(bool show);
+    // The held sheet behind the development (development view); shown by default.
+    void setShowSheet(bool show);
+    bool showsSheet() const { return m_showSheet; }
     void setTargetPoints(const std::vector<model::Vec3>& points);
     // Lines an edit in progress would add (drawn dashed-bright over everything else).
     void setPreviewLines(const std::vector<std::vector<model::Vec3>>& lines);
@@ -158,6 +161,7 @@ private:
     Layer* m_outline = nullptr;
     Layer* m_sheet = nullptr;
     int m_sheetLoops = 0;
+    bool m_showSheet = true;
     Layer* m_overlapOutline = nullptr; // development: pieces that overlap, in red
     Layer* m_controlPolygons = nullptr;
     Layer* m_controlPoints = nullptr;

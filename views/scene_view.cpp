@@ -506,7 +506,7 @@ void SceneView::updateOverlay() {
     }
     const auto [mountains, valleys] = d->scene->foldCounts();
     d->overlay->setFoldLegend(mountains > 0, valleys > 0, d->scene->flatCreaseCount() > 0);
-    d->overlay->setSheetLegend(d->scene->sheetLoopCount() > 0);
+    d->overlay->setSheetLegend(d->scene->sheetLoopCount() > 0 && d->scene->showsSheet());
     updateBadges();
     std::vector<ViewOverlay::Label> labels;
     if (d->showLabels) {
@@ -559,6 +559,11 @@ void SceneView::setShowControlPolygonsImpl(bool show) {
 
 void SceneView::setShowVerticesImpl(bool show) {
     d->scene->setShowVertices(show);
+    rerender();
+}
+
+void SceneView::setShowSheetImpl(bool show) {
+    d->scene->setShowSheet(show);
     rerender();
 }
 

@@ -173,6 +173,7 @@ protected:
 
     void setShowControlPolygonsImpl(bool show);
     void setShowVerticesImpl(bool show);
+    void setShowSheetImpl(bool show);
     void setTargetPointsImpl(const std::vector<model::Vec3>& points);
     void rerender();
 

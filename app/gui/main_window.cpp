@@ -238,6 +238,18 @@ void MainWindow::createMenus() {
     QAction* vertices = addAction(view, QStringLiteral("actionVertices"), tr("&Vertices"),
                                   QKeySequence(tr("Ctrl+Shift+V")));
     new ToggleDisplayReaction(polygons, vertices, m_surfaceView);
+    // The held sheet behind the development: on unless turned off (remembered).
+    QAction* sheet = addAction(view, QStringLiteral("actionShowSheet"), tr("S&heet Outline"));
+    sheet->setCheckable(true);
+    sheet->setChecked(QSettings().value(QStringLiteral("view/sheet"), true).toBool());
+    sheet->setToolTip(tr("Draw the sheet a held development is confined to behind it in the "
+                         "development view (Tools ▸ Sheet Shape…)."));
+    sheet->setStatusTip(sheet->toolTip());
+    m_developmentView->setShowSheet(sheet->isChecked());
+    connect(sheet, &QAction::toggled, m_developmentView, [this](bool on) {
+        m_developmentView->setShowSheet(on);
+        QSettings().setValue(QStringLiteral("view/sheet"), on);
+    });
     createColourActions(view);
     QAction* fit =
         addAction(view, QStringLiteral("actionFitAll"), tr("&Fit All"), QKeySequence(tr("F")));

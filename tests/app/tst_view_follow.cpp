@@ -11,6 +11,7 @@
 #include "solve_controller.h"
 #include "test_registry.h"
 #include "views/development_view.h"
+#include "views/scene_cache.h"
 #include "views/surface_view.h"
 #include "views/vtk_opengl_widget.h"
 #include "window_test_support.h"
@@ -105,6 +106,10 @@ private slots:
         QTest::mouseRelease(gl, Qt::LeftButton, {}, end);
         QVERIFY(finished.wait(120000));
         QVERIFY(test::waitForWorkerIdle(window, 120000));
+        // A large surface's scenes follow in the background: F fits what is drawn, so the
+        // views first catch up with the design.
+        views::SceneCache* cache = views::SceneCache::of(doc);
+        QTRY_VERIFY_WITH_TIMEOUT(!cache->spatialPending() && !cache->developmentPending(), 60000);
         surfaceView->grabImage();
         const QStringList left = cutOff(surfaceView, doc->surface(0));
         QVERIFY2(!left.isEmpty(), "the drag did not leave the view");

@@ -335,6 +335,13 @@ private slots:
         };
         const int drawn = countSheetPixels();
         QVERIFY2(drawn > 500, qPrintable(QString::number(drawn)));
+        // View ▸ Sheet Outline off hides it and its legend entry; on shows it again.
+        views.development->setShowSheet(false);
+        QVERIFY(countSheetPixels() < drawn / 20);
+        QTRY_VERIFY(
+            !views.development->legendEntries().contains(devsurf::views::ViewOverlay::tr("Sheet")));
+        views.development->setShowSheet(true);
+        QCOMPARE(countSheetPixels(), drawn);
         // Letting the sheet stretch again takes the sheet away.
         views.document.mutableProject().surfaces[0].setKeepsDevelopment(false);
         views.document.notifyChanged(Change::Geometry);
