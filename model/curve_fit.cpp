@@ -1,6 +1,7 @@
 #include "curve_fit.h"
 
 #include "bspline_curve.h"
+#include "edge_measure.h"
 
 #include <Eigen/Dense>
 
@@ -65,19 +66,6 @@ BSplineCurve splineOf(const EdgeRecord& record) {
     return BSplineCurve::uniform(record.space, record.controlPoints);
 }
 
-double splineLength(const BSplineCurve& spline, int samples) {
-    double length = 0.0;
-    Vec3 last = spline.evaluate(spline.domainBegin());
-    for (int i = 1; i <= samples; ++i) {
-        const double u = spline.domainBegin() + (spline.domainEnd() - spline.domainBegin()) * i /
-                                                    static_cast<double>(samples);
-        const Vec3 p = spline.evaluate(u);
-        length += distance(last, p);
-        last = p;
-    }
-    return length;
-}
-
 } // namespace
 
 double edgeCurveDistance(const CompositeSurface& surface, EdgeId edge,
@@ -126,7 +114,6 @@ EdgeFit fitEdgeToCurve(CompositeSurface& surface, EdgeId edge, const ReferenceCu
         return fit;
     }
     const EdgeRecord record = surface.edge(edge);
-    const BSplineCurve old = splineOf(record);
     const int n = static_cast<int>(record.controlPoints.size());
     // The ends: unpinned ones onto the curve; the piece between their nearest points.
     Vec3 ends[2] = {record.controlPoints.front(), record.controlPoints.back()};
@@ -146,10 +133,10 @@ EdgeFit fitEdgeToCurve(CompositeSurface& surface, EdgeId edge, const ReferenceCu
     const double total = measured.length();
     if (measured.closed()) {
         // Two pieces join the ends: the one whose length is nearest the edge's.
-        const double edgeLength = splineLength(old, 64);
+        const double length = edgeLength(surface, edge);
         const double direct = std::abs(s1 - s0);
         const double around = total - direct;
-        if (std::abs(around - edgeLength) < std::abs(direct - edgeLength)) {
+        if (std::abs(around - length) < std::abs(direct - length)) {
             s1 = s1 > s0 ? s1 - total : s1 + total; // run the other way, wrapping
         }
     }

@@ -57,6 +57,10 @@ SheetShapeDialog::SheetShapeDialog(const model::SheetDomain& current,
         m_outline = current.outline;
     }
     m_outlineName->setObjectName(QStringLiteral("sheetOutlineName"));
+    // The outline kept now (a file is named once one is chosen).
+    m_outlineName->setText(
+        m_outline.empty() ? tr("none chosen")
+                          : tr("%n closed curve(s)", nullptr, static_cast<int>(m_outline.size())));
     m_chooseOutline->setObjectName(QStringLiteral("sheetOutlineChoose"));
     m_chooseOutline->setToolTip(
         tr("The closed curves of a DXF, SVG, STEP or IGES file, seen from above: the largest "
@@ -190,12 +194,6 @@ void SheetShapeDialog::onShapeChanged() {
     m_radius->setEnabled(shape == model::SheetShape::Disk || shape == model::SheetShape::Annulus);
     m_innerRadius->setEnabled(shape == model::SheetShape::Annulus);
     m_chooseOutline->setEnabled(shape == model::SheetShape::Outline);
-    if (m_outline.empty()) {
-        m_outlineName->setText(tr("none chosen"));
-    } else if (m_outlineName->text().isEmpty() || m_outlineName->text() == tr("none chosen")) {
-        m_outlineName->setText(
-            tr("%n closed curve(s)", nullptr, static_cast<int>(m_outline.size())));
-    }
     updateFit();
 }
 

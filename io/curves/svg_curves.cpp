@@ -65,46 +65,47 @@ std::optional<double> lengthInMm(const QString& text) {
     return value * mm;
 }
 
-// mm per user unit, from the root element: width over the viewBox's width (each axis alike;
-// SVG keeps the aspect ratio by default), or CSS pixels without a size.
-std::optional<double> millimetresPerUnit(const QByteArray& bytes, QString& problem) {
-    QXmlStreamReader xml(bytes);
-    while (!xml.atEnd()) {
-        if (xml.readNext() != QXmlStreamReader::StartElement) {
-            continue;
-        }
-        if (xml.name() != QLatin1String("svg")) {
-            problem = QStringLiteral("the root element is not <svg>");
-            return std::nullopt;
-        }
-        const QXmlStreamAttributes attributes = xml.attributes();
-        const std::optional<double> width = lengthInMm(attributes.value("width").toString());
-        const QStringList box = attributes.value("viewBox").toString().split(
-            QRegularExpression(QStringLiteral("[\\s,]+")), Qt::SkipEmptyParts);
-        double boxWidth = 0.0;
-        if (box.size() == 4) {
-            boxWidth = box[2].toDouble();
-        }
-        if (width && boxWidth > 0.0 && std::isfinite(boxWidth)) {
-            return *width / boxWidth;
-        }
-        return 25.4 / 96.0; // user units are CSS pixels
+// mm per user unit, from the root element's attributes: width over the viewBox's width (each
+// axis alike; SVG keeps the aspect ratio by default), or CSS pixels without a size.
+double millimetresPerUnit(const QXmlStreamAttributes& attributes) {
+    const std::optional<double> width = lengthInMm(attributes.value("width").toString());
+    const QStringList box = attributes.value("viewBox").toString().split(
+        QRegularExpression(QStringLiteral("[\\s,]+")), Qt::SkipEmptyParts);
+    const double boxWidth = box.size() == 4 ? box[2].toDouble() : 0.0;
+    if (width && boxWidth > 0.0 && std::isfinite(boxWidth)) {
+        return *width / boxWidth;
     }
-    problem = xml.hasError() ? xml.errorString() : QStringLiteral("no <svg> element");
-    return std::nullopt;
+    return 25.4 / 96.0; // user units are CSS pixels
 }
 
-// The document without its text (text, and what only text holds): the renderer would draw
-// the glyphs as outlines, which are no curves of the drawing. Empty if it is not well-formed.
-QByteArray withoutText(const QByteArray& bytes) {
+// The drawing as the renderer gets it, in one pass over the document: its scale from the
+// root, and the document without its text (text, and what only text holds), whose glyphs the
+// renderer would draw as outlines that are no curves of the drawing.
+struct Prepared {
+    QByteArray drawing;
+    double scale = 0.0; // mm per user unit
+    QString problem;    // why it is not an SVG drawing; empty when it is
+};
+
+Prepared prepare(const QByteArray& bytes) {
+    Prepared prepared;
     QXmlStreamReader reader(bytes);
-    QByteArray out;
-    QXmlStreamWriter writer(&out);
+    QXmlStreamWriter writer(&prepared.drawing);
+    bool root = true;
     int skipping = 0; // depth inside a skipped element
     while (!reader.atEnd()) {
         reader.readNext();
         if (reader.hasError()) {
-            return {};
+            prepared.problem = reader.errorString();
+            return prepared;
+        }
+        if (reader.isStartElement() && root) {
+            root = false;
+            if (reader.name() != QLatin1String("svg")) {
+                prepared.problem = QStringLiteral("the root element is not <svg>");
+                return prepared;
+            }
+            prepared.scale = millimetresPerUnit(reader.attributes());
         }
         if (reader.isStartElement() && (skipping > 0 || reader.name() == QLatin1String("text") ||
                                         reader.name() == QLatin1String("flowRoot"))) {
@@ -119,7 +120,10 @@ QByteArray withoutText(const QByteArray& bytes) {
             writer.writeCurrentToken(reader);
         }
     }
-    return out;
+    if (root) {
+        prepared.problem = QStringLiteral("no <svg> element");
+    }
+    return prepared;
 }
 
 // A paint engine that records the outlines drawn, in user units (the painter's transform
@@ -245,14 +249,13 @@ CurveImportResult readSvgCurves(const QByteArray& bytes, const CurveImportOption
         return true;
     }();
     (void)quiet;
-    QString problem;
-    const std::optional<double> scale = millimetresPerUnit(bytes, problem);
-    if (!scale) {
-        return failure(Code::Damaged, problem.toStdString());
+    const Prepared prepared = prepare(bytes);
+    if (!prepared.problem.isEmpty()) {
+        return failure(Code::Damaged, prepared.problem.toStdString());
     }
-    const QByteArray drawing = withoutText(bytes);
+    const double scale = prepared.scale;
     QSvgRenderer renderer;
-    if (drawing.isEmpty() || !renderer.load(drawing) || !renderer.isValid()) {
+    if (!renderer.load(prepared.drawing) || !renderer.isValid()) {
         return failure(Code::Damaged, "the SVG renderer refused it");
     }
     if (options.progress && !options.progress(0.2)) {
@@ -270,7 +273,7 @@ CurveImportResult readSvgCurves(const QByteArray& bytes, const CurveImportOption
         return failure(Code::Cancelled);
     }
     // The tolerance in user units.
-    const double tolerance = std::max(options.tolerance, 1e-6) / *scale;
+    const double tolerance = std::max(options.tolerance, 1e-6) / scale;
     CurveImportResult result;
     std::size_t total = 0;
     for (const QPainterPath& path : device.engine.paths) {
@@ -281,7 +284,7 @@ CurveImportResult readSvgCurves(const QByteArray& bytes, const CurveImportOption
                 curve.name = "SVG path " + std::to_string(result.curves.size() + 1);
                 bool finite = true;
                 for (const QPointF& p : points) {
-                    curve.points.emplace_back(p.x() * *scale, -p.y() * *scale, 0.0);
+                    curve.points.emplace_back(p.x() * scale, -p.y() * scale, 0.0);
                     finite = finite && std::isfinite(curve.points.back().x) &&
                              std::isfinite(curve.points.back().y);
                 }
