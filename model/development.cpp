@@ -259,6 +259,29 @@ Development unfoldSampledMesh(const SampledMesh& mesh) {
     return dev;
 }
 
+double keptSheetStretch(const CompositeSurface& surface) {
+    if (!surface.keepsDevelopment()) {
+        return -1.0;
+    }
+    const std::vector<Vec2>& flat = surface.development();
+    const SampledMesh mesh = sampleSurface(surface, kDevelopmentSamplesPerInterval);
+    if (flat.size() != mesh.vertices.size()) {
+        return -1.0;
+    }
+    double worst = 0.0;
+    for (const auto& face : mesh.faces) {
+        for (std::size_t i = 0; i < face.size(); ++i) {
+            for (std::size_t j = i + 1; j < face.size(); ++j) {
+                const auto a = static_cast<std::size_t>(face[i]);
+                const auto b = static_cast<std::size_t>(face[j]);
+                worst = std::max(worst, std::abs(distance(mesh.vertices[a], mesh.vertices[b]) -
+                                                 (flat[a] - flat[b]).norm()));
+            }
+        }
+    }
+    return worst;
+}
+
 double edgeLengthError(const SampledMesh& mesh, const Development& development) {
     double worst = 0.0;
     for (const auto& face : mesh.faces) {

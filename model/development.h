@@ -35,6 +35,13 @@ inline constexpr double kOneSheetClosure = 1e-3;
 // problem why it is not one flat sheet (several parts, a period, a gap above kOneSheetClosure).
 std::optional<Problem> keepDevelopment(CompositeSurface& surface);
 
+// How far the surface is from its kept development (keepsDevelopment()), in mm: the largest
+// difference between a distance in space and in the development over every pair of vertices of
+// every face of sampleSurface(surface, kDevelopmentSamplesPerInterval), diagonals included, so
+// a face that bends or shears counts. -1 when the surface keeps no development (or one that no
+// longer matches its sampling).
+double keptSheetStretch(const CompositeSurface& surface);
+
 // Relative edge-length error between the mesh and a development of it (§8), using the
 // development's period where it has one.
 double edgeLengthError(const SampledMesh& mesh, const Development& development);

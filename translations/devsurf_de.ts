@@ -1083,45 +1083,55 @@
         <translation>Nicht abwickelbar: die Fläche faltet sich über sich selbst oder ihre Abwicklung überlappt sich</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="78"/>
-        <location filename="../app/text/verdict_text.cpp" line="96"/>
+        <location filename="../app/text/verdict_text.cpp" line="79"/>
+        <source>Not developable from its sheet: it lies %1 mm from the sheet it keeps</source>
+        <translation>Nicht aus seinem Bogen abwickelbar: die Fläche liegt %1 mm neben dem gehaltenen Bogen</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="81"/>
+        <location filename="../app/text/verdict_text.cpp" line="99"/>
         <source>Not developable</source>
         <translation>Nicht abwickelbar</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="79"/>
+        <location filename="../app/text/verdict_text.cpp" line="82"/>
         <source>%1. Try: %2.</source>
         <translation>%1. Versuchen Sie: %2.</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="80"/>
+        <location filename="../app/text/verdict_text.cpp" line="83"/>
         <source>%1 at %2. Try: %3.</source>
         <translation>%1 bei %2. Versuchen Sie: %3.</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="91"/>
+        <location filename="../app/text/verdict_text.cpp" line="94"/>
         <source>Developable — ready to cut</source>
         <translation>Abwickelbar — bereit zum Zuschnitt</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="93"/>
+        <location filename="../app/text/verdict_text.cpp" line="96"/>
         <source>Developable within %1 mm</source>
         <translation>Abwickelbar auf %1 mm genau</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="96"/>
+        <location filename="../app/text/verdict_text.cpp" line="99"/>
         <source>Not developable: %1</source>
         <translation>Nicht abwickelbar: %1</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="106"/>
+        <location filename="../app/text/verdict_text.cpp" line="109"/>
         <source>Largest constraint residual %1 (tolerance %2).</source>
         <translation>Größtes Residuum der Bedingungen %1 (Toleranz %2).</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="111"/>
+        <location filename="../app/text/verdict_text.cpp" line="114"/>
         <source>Development: largest relative edge-length error %1 over a sheet of %2 mm, %3 mm from isometric.</source>
         <translation>Abwicklung: größter relativer Kantenlängenfehler %1 über einen Bogen von %2 mm, %3 mm von der Isometrie entfernt.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="123"/>
+        <source>Distance from the sheet it keeps: %1 mm.</source>
+        <translation>Abstand zum gehaltenen Bogen: %1 mm.</translation>
     </message>
 </context>
 <context>
@@ -3294,67 +3304,67 @@
         <translation>Umriss einer Zeichnung</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="62"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="66"/>
         <source>The closed curves of a DXF, SVG, STEP or IGES file, seen from above: the largest is the sheet&apos;s boundary, the others its holes.</source>
         <translation>Die geschlossenen Kurven einer DXF-, SVG-, STEP- oder IGES-Datei, von oben gesehen: die größte ist der Rand des Bogens, die anderen seine Löcher.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="80"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="84"/>
         <source>The sheet the surface is folded from. Every solve and drag keeps the surface isometric to its development; with a shape, the development may change inside it, its boundary on the shape&apos;s and its corners at the shape&apos;s corners.</source>
         <translation>Der Bogen, aus dem die Fläche gefaltet wird. Jedes Lösen und Ziehen hält die Fläche isometrisch zu ihrer Abwicklung; mit einer Form darf sich die Abwicklung innerhalb der Form ändern, ihr Rand liegt auf dem Rand der Form und ihre Ecken auf deren Ecken.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="87"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="91"/>
         <source>Shape:</source>
         <translation>Form:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="88"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="92"/>
         <source>Width:</source>
         <translation>Breite:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="89"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="93"/>
         <source>Height:</source>
         <translation>Höhe:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="90"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="94"/>
         <source>Radius:</source>
         <translation>Radius:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="91"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="95"/>
         <source>Inner radius:</source>
         <translation>Innenradius:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="95"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="99"/>
         <source>Outline:</source>
         <translation>Umriss:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="106"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="110"/>
         <source>Sheet Outline</source>
         <translation>Umriss des Bogens</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="107"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="111"/>
         <source>Drawings (*.dxf *.svg *.step *.stp *.iges *.igs)</source>
         <translation>Zeichnungen (*.dxf *.svg *.step *.stp *.iges *.igs)</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="163"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="167"/>
         <source>%1 cannot be read as a drawing: choose a DXF, SVG, STEP or IGES file.</source>
         <translation>%1 kann nicht als Zeichnung gelesen werden: wählen Sie eine DXF-, SVG-, STEP- oder IGES-Datei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="166"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="170"/>
         <source>%1 holds no closed curve enclosing an area to be the sheet&apos;s outline.</source>
         <translation>%1 enthält keine geschlossene Kurve, die eine Fläche umschließt und den Umriss des Bogens bilden könnte.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="171"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="175"/>
         <source>%1: %n closed curve(s)</source>
         <translation>
             <numerusform>%1: %n geschlossene Kurve</numerusform>
@@ -3362,13 +3372,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="194"/>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="195"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="62"/>
         <source>none chosen</source>
         <translation>keiner gewählt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="197"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="63"/>
         <source>%n closed curve(s)</source>
         <translation>
             <numerusform>%n geschlossene Kurve</numerusform>
@@ -3376,37 +3385,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="208"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="206"/>
         <source>The development covers %1 cm² and is held as it is.</source>
         <translation>Die Abwicklung bedeckt %1 cm² und wird gehalten, wie sie ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="215"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="213"/>
         <source>Choose a drawing whose closed curves are the sheet&apos;s outline.</source>
         <translation>Wählen Sie eine Zeichnung, deren geschlossene Kurven den Umriss des Bogens bilden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="224"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="222"/>
         <source>The outline has no closed curve enclosing an area.</source>
         <translation>Der Umriss hat keine geschlossene Kurve, die eine Fläche umschließt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="225"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="223"/>
         <source>The inner radius must be smaller than the radius.</source>
         <translation>Der Innenradius muss kleiner als der Radius sein.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="236"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="234"/>
         <source>The development (%1 cm²) is larger than this sheet (%2 cm²): no solve can fold the design from it.</source>
         <translation>Die Abwicklung (%1 cm²) ist größer als dieser Bogen (%2 cm²): kein Lösen kann die Form daraus falten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="245"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="243"/>
         <source>The development (%1 cm²) fits this sheet (%2 cm²): its boundary lies on the sheet&apos;s.</source>
         <translation>Die Abwicklung (%1 cm²) passt auf diesen Bogen (%2 cm²): ihr Rand liegt auf dem des Bogens.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="249"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="247"/>
         <source>The development covers %1 cm² of this sheet&apos;s %2 cm²; its boundary is up to %3 mm from the sheet&apos;s, and the next Solve moves it onto the sheet.</source>
         <translation>Die Abwicklung bedeckt %1 cm² der %2 cm² dieses Bogens; ihr Rand liegt bis zu %3 mm vom Rand des Bogens entfernt, und das nächste Lösen legt ihn auf den Bogen.</translation>
     </message>

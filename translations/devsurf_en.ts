@@ -297,7 +297,7 @@
 <context>
     <name>devsurf::app::SheetShapeDialog</name>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="171"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="175"/>
         <source>%1: %n closed curve(s)</source>
         <translation>
             <numerusform>%1: %n closed curve</numerusform>
@@ -305,7 +305,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="197"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="63"/>
         <source>%n closed curve(s)</source>
         <translation>
             <numerusform>%n closed curve</numerusform>

@@ -1073,45 +1073,55 @@
         <translation>可展ではありません: 曲面が自身の上に折り返されているか、展開図が自身と重なっています</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="78"/>
-        <location filename="../app/text/verdict_text.cpp" line="96"/>
+        <location filename="../app/text/verdict_text.cpp" line="79"/>
+        <source>Not developable from its sheet: it lies %1 mm from the sheet it keeps</source>
+        <translation>保持しているシートから展開できません: シートから %1 mm 離れています</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="81"/>
+        <location filename="../app/text/verdict_text.cpp" line="99"/>
         <source>Not developable</source>
         <translation>可展ではありません</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="79"/>
+        <location filename="../app/text/verdict_text.cpp" line="82"/>
         <source>%1. Try: %2.</source>
         <translation>%1。試すこと: %2。</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="80"/>
+        <location filename="../app/text/verdict_text.cpp" line="83"/>
         <source>%1 at %2. Try: %3.</source>
         <translation>%1 (%2)。試すこと: %3。</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="91"/>
+        <location filename="../app/text/verdict_text.cpp" line="94"/>
         <source>Developable — ready to cut</source>
         <translation>可展 — 切り出せます</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="93"/>
+        <location filename="../app/text/verdict_text.cpp" line="96"/>
         <source>Developable within %1 mm</source>
         <translation>%1 mm 以内で可展</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="96"/>
+        <location filename="../app/text/verdict_text.cpp" line="99"/>
         <source>Not developable: %1</source>
         <translation>可展ではありません: %1</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="106"/>
+        <location filename="../app/text/verdict_text.cpp" line="109"/>
         <source>Largest constraint residual %1 (tolerance %2).</source>
         <translation>制約の最大残差 %1 (許容値 %2)。</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="111"/>
+        <location filename="../app/text/verdict_text.cpp" line="114"/>
         <source>Development: largest relative edge-length error %1 over a sheet of %2 mm, %3 mm from isometric.</source>
         <translation>展開図: 辺の長さの最大相対誤差 %1、シートの大きさ %2 mm、等長から %3 mm。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="123"/>
+        <source>Distance from the sheet it keeps: %1 mm.</source>
+        <translation>保持しているシートからの距離: %1 mm。</translation>
     </message>
 </context>
 <context>
@@ -3262,117 +3272,116 @@
         <translation>図面の輪郭</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="62"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="66"/>
         <source>The closed curves of a DXF, SVG, STEP or IGES file, seen from above: the largest is the sheet&apos;s boundary, the others its holes.</source>
         <translation>DXF、SVG、STEP または IGES ファイルの閉じた曲線を上から見たもの: 最大のものがシートの境界、ほかは穴です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="80"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="84"/>
         <source>The sheet the surface is folded from. Every solve and drag keeps the surface isometric to its development; with a shape, the development may change inside it, its boundary on the shape&apos;s and its corners at the shape&apos;s corners.</source>
         <translation>曲面を折り出すシートです。ソルブとドラッグは常に曲面を展開図と等長に保ちます。形を指定すると、展開図はその内側で変わることができ、境界は形の境界上に、角は形の角に置かれます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="87"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="91"/>
         <source>Shape:</source>
         <translation>形:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="88"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="92"/>
         <source>Width:</source>
         <translation>幅:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="89"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="93"/>
         <source>Height:</source>
         <translation>高さ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="90"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="94"/>
         <source>Radius:</source>
         <translation>半径:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="91"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="95"/>
         <source>Inner radius:</source>
         <translation>内径:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="95"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="99"/>
         <source>Outline:</source>
         <translation>輪郭:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="106"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="110"/>
         <source>Sheet Outline</source>
         <translation>シートの輪郭</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="107"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="111"/>
         <source>Drawings (*.dxf *.svg *.step *.stp *.iges *.igs)</source>
         <translation>図面 (*.dxf *.svg *.step *.stp *.iges *.igs)</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="163"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="167"/>
         <source>%1 cannot be read as a drawing: choose a DXF, SVG, STEP or IGES file.</source>
         <translation>%1 を図面として読み込めません: DXF、SVG、STEP または IGES ファイルを選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="166"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="170"/>
         <source>%1 holds no closed curve enclosing an area to be the sheet&apos;s outline.</source>
         <translation>%1 にはシートの輪郭となる、面積を囲む閉じた曲線がありません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="171"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="175"/>
         <source>%1: %n closed curve(s)</source>
         <translation>
             <numerusform>%1: 閉じた曲線 %n 本</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="194"/>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="195"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="62"/>
         <source>none chosen</source>
         <translation>未選択</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="197"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="63"/>
         <source>%n closed curve(s)</source>
         <translation>
             <numerusform>閉じた曲線 %n 本</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="208"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="206"/>
         <source>The development covers %1 cm² and is held as it is.</source>
         <translation>展開図の面積は %1 cm² で、そのまま保持されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="215"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="213"/>
         <source>Choose a drawing whose closed curves are the sheet&apos;s outline.</source>
         <translation>閉じた曲線がシートの輪郭となる図面を選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="224"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="222"/>
         <source>The outline has no closed curve enclosing an area.</source>
         <translation>輪郭に面積を囲む閉じた曲線がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="225"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="223"/>
         <source>The inner radius must be smaller than the radius.</source>
         <translation>内径は半径より小さくなければなりません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="236"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="234"/>
         <source>The development (%1 cm²) is larger than this sheet (%2 cm²): no solve can fold the design from it.</source>
         <translation>展開図 (%1 cm²) がこのシート (%2 cm²) より大きいため、どのソルブでもこのシートから折ることはできません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="245"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="243"/>
         <source>The development (%1 cm²) fits this sheet (%2 cm²): its boundary lies on the sheet&apos;s.</source>
         <translation>展開図 (%1 cm²) はこのシート (%2 cm²) に合っています: 境界はシートの境界上にあります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="249"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="247"/>
         <source>The development covers %1 cm² of this sheet&apos;s %2 cm²; its boundary is up to %3 mm from the sheet&apos;s, and the next Solve moves it onto the sheet.</source>
         <translation>展開図はこのシートの %2 cm² のうち %1 cm² を占めます。境界はシートの境界から最大 %3 mm 離れており、次のソルブでシート上に移ります。</translation>
     </message>

@@ -7,6 +7,7 @@
 #include "solver/quality/quality_measures.h"
 #include "solver/session/crease_drag.h"
 #include "solver/session/solve_job.h"
+#include "solver/session/verdict.h"
 
 #include <QString>
 
@@ -58,6 +59,14 @@ void printFoldAndShape(const solver::SurfaceAssessment& assessment) {
                   assessment.shortestRuling, assessment.slowestSpeed);
     std::cout << line << describeFoldOvers(assessment.foldOvers) << "\n"
               << describeSelfOverlap(assessment.overlapping) << "\n";
+    if (assessment.sheetStretchMm >= 0.0) {
+        const double limit = solver::kKeptSheetTolerance * std::max(assessment.sheetExtent, 1.0);
+        std::snprintf(line, sizeof line,
+                      "Distance from the sheet it keeps: %.2g mm (at most %.2g mm counts as "
+                      "kept).\n",
+                      assessment.sheetStretchMm, limit);
+        std::cout << line;
+    }
 }
 
 } // namespace
@@ -185,7 +194,10 @@ int runDragCommand(const DragArguments& args) {
         }
     };
     const bool keepLengths = !crease && lengths != solver::DragLengths::Stretch;
-    const int after = givenAfter ? givenAfterCount : solver::iterationsAfterDrag(keepLengths);
+    const int after =
+        givenAfter
+            ? givenAfterCount
+            : solver::iterationsAfterDrag(keepLengths, !crease && surface.keepsDevelopment());
     std::cout << "Surface " << index + 1 << " (" << surface.name() << "): dragging "
               << (crease ? "crease " + std::to_string(creaseEdge)
                          : std::to_string(start.size()) +

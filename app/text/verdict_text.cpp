@@ -72,10 +72,13 @@ QString VerdictText::of(const solver::Verdict& verdict) {
     }
     case solver::VerdictKind::NotDevelopable: {
         const QString where = places(verdict);
-        const QString what = verdict.foldsOver
-                                 ? tr("Not developable: the surface folds over or its "
-                                      "development overlaps itself")
-                                 : tr("Not developable");
+        const QString what =
+            verdict.foldsOver ? tr("Not developable: the surface folds over or its "
+                                   "development overlaps itself")
+            : verdict.sheetStretched
+                ? tr("Not developable from its sheet: it lies %1 mm from the sheet it keeps")
+                      .arg(millimetres(verdict.sheetStretchMm))
+                : tr("Not developable");
         return where.isEmpty() ? tr("%1. Try: %2.").arg(what, advice(verdict))
                                : tr("%1 at %2. Try: %3.").arg(what, where, advice(verdict));
     }
@@ -113,6 +116,11 @@ QString VerdictText::details(const solver::Verdict& verdict) {
                     .arg(QString::number(verdict.edgeLengthError, 'e', 1))
                     .arg(verdict.sheetExtent, 0, 'f', 0)
                     .arg(millimetres(verdict.isometryMm));
+    }
+    if (verdict.sheetStretchMm >= 0.0) {
+        text +=
+            QLatin1Char(' ') +
+            tr("Distance from the sheet it keeps: %1 mm.").arg(millimetres(verdict.sheetStretchMm));
     }
     return text;
 }

@@ -355,7 +355,9 @@ bool NormalEquations::evaluate(const Problem& problem, const double* x) {
         for (int r = m_termRowStart[t]; r < m_termRowStart[static_cast<std::size_t>(t) + 1]; ++r) {
             const double phi = m_residual[static_cast<std::size_t>(r)];
             if (family.role == TermRole::Constraint) {
-                maxResidual = std::max(maxResidual, std::abs(phi));
+                if (!family.judgedApart) {
+                    maxResidual = std::max(maxResidual, std::abs(phi));
+                }
                 merit += w2 * phi * phi;
             } else if (family.role == TermRole::Energy) {
                 energy += w2 * phi * phi;

@@ -105,6 +105,10 @@ void Problem::setFamilyDrivesEpsilon1(FamilyId id, bool drives) {
     m_families.at(static_cast<std::size_t>(id)).drivesEpsilon1 = drives;
 }
 
+void Problem::setFamilyJudgedApart(FamilyId id, bool apart) {
+    m_families.at(static_cast<std::size_t>(id)).judgedApart = apart;
+}
+
 Term* Problem::addTerm(FamilyId family, std::unique_ptr<Term> term) {
     if (family < 0 || family >= familyCount()) {
         throw std::out_of_range("Problem: unknown term family");

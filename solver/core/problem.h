@@ -34,6 +34,10 @@ struct TermFamily {
     // its weighted residual w|φ| caps ε₁ as the constraint residual does (Options::
     // eps1ResidualFactor), so that it still acts where every constraint holds.
     bool drivesEpsilon1 = false;
+    // A constraint judged apart, in geometric terms, rather than by the residual tolerance: the
+    // kept development (§5), which a sampled mesh matches only up to its discretisation. It
+    // weighs as a constraint in every step but leaves the largest constraint residual alone.
+    bool judgedApart = false;
 };
 
 using FamilyId = int;
@@ -72,6 +76,7 @@ public:
     }
     void setFamilyWeight(FamilyId id, double weight);
     void setFamilyDrivesEpsilon1(FamilyId id, bool drives);
+    void setFamilyJudgedApart(FamilyId id, bool apart);
 
     // Terms. The problem owns them; the returned pointer stays valid for the problem's
     // lifetime and may be used to change the term's values (not its pattern).

@@ -129,8 +129,9 @@ DevelopmentVariables addDevelopment(const model::CompositeSurface& surface,
         }
         fairness->addSequence(offsets);
     }
-    problem.add(problem.addFamily("development", TermRole::Constraint, options.weight),
-                std::move(isometry));
+    const FamilyId family = problem.addFamily("development", TermRole::Constraint, options.weight);
+    problem.setFamilyJudgedApart(family, true);
+    problem.add(family, std::move(isometry));
     if (options.fixed) {
         problem.setBlockFixed("development");
         return result;

@@ -31,8 +31,8 @@ struct DevelopmentVariables {
 struct DevelopmentOptions {
     int samplesPerInterval = 2;
     const std::vector<model::Vec2>* start = nullptr; // millimetres, indexed like the mesh
-    bool fixed = false; // the copy keeps its start values: the surface is folded from that sheet
-    double weight = 1.0;
+    bool fixed = false;   // the copy keeps its start values: the surface is folded from that sheet
+    double weight = 1e-2; // FormulationOptions::developmentWeight
     double fairnessWeight = 0.01;
     // A copy that is not fixed is confined to this sheet (addDomain); free: unconfined.
     model::SheetDomain domain;

@@ -160,8 +160,12 @@ struct FormulationOptions {
     // The development in the solve (addDevelopment): a flat copy of the surface sampled at this
     // many values per interval (0: none), starting at developmentStart (mm) or the unfolding;
     // fixedDevelopment keeps it there, so the surface is folded from that sheet.
+    // developmentWeight is low because the sampled mesh matches a developable spline only up to
+    // its sampling: at weight 1 a held fig8 folded 46° stalled at residual 8e-7 in Solve, at
+    // 1e-2 it reaches 5e-9 and stays within 1e-4 mm of its sheet (docs/tuning.md). The
+    // development is judged apart, in mm (Verdict::sheetStretchMm).
     int developmentSamplesPerInterval = 0;
-    double developmentWeight = 1.0;
+    double developmentWeight = 1e-2;
     double developmentFairnessWeight = 0.01;
     std::vector<model::Vec2> developmentStart;
     bool fixedDevelopment = false;

@@ -1,6 +1,7 @@
 #include "solver/session/solve_job.h"
 
 #include "model/derived_geometry.h"
+#include "model/development.h"
 #include "model/geometry_checks.h"
 #include "model/model_error.h"
 #include "model/pattern/cutting_pattern.h"
@@ -217,6 +218,7 @@ void measureSettled(SurfaceAssessment& assessment, const model::CompositeSurface
     }
     try {
         measureIsometry(assessment, result);
+        assessment.sheetStretchMm = model::keptSheetStretch(result);
     } catch (const std::exception&) {
         // Too degenerate to sample: left unmeasured.
     }
@@ -260,7 +262,7 @@ JobFailure targetFailure(int surface, model::VertexId vertex, model::EdgeId edge
 
 } // namespace
 
-int defaultIterations(JobKind kind, bool settle, DragLengths lengths) {
+int defaultIterations(JobKind kind, bool settle, DragLengths lengths, bool holdsSheet) {
     switch (kind) {
     case JobKind::Solve:
         return kSolveIterations;
@@ -272,7 +274,7 @@ int defaultIterations(JobKind kind, bool settle, DragLengths lengths) {
     case JobKind::Rotate:
         break;
     }
-    return settle ? iterationsAfterDrag(lengths != DragLengths::Stretch) : 1;
+    return settle ? iterationsAfterDrag(lengths != DragLengths::Stretch, holdsSheet) : 1;
 }
 
 double JobOutcome::largestResidual() const {
@@ -351,7 +353,11 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
     };
 
     const int iterations = std::max(
-        0, request.iterations.value_or(defaultIterations(request.kind, settle, request.lengths)));
+        0,
+        request.iterations.value_or(defaultIterations(
+            request.kind, settle, request.lengths,
+            std::any_of(request.surfaces.begin(), request.surfaces.end(),
+                        [](const model::CompositeSurface& s) { return s.keepsDevelopment(); }))));
     int solvedSurfaces = 0;
     for (std::size_t s = 0; s < count; ++s) {
         const int key = static_cast<int>(s);

@@ -46,15 +46,16 @@ struct JobRequest {
     std::map<int, std::vector<ControlPointHandle>> pulledControlPoints; // a dragged crease
     // Solve: vertices held where they are without pinning them in the document.
     std::map<int, std::vector<model::VertexId>> fixed;
-    // Iterations of this request; unset: defaultIterations(kind, settle, lengths).
+    // Iterations of this request; unset: defaultIterations(kind, settle, lengths, holdsSheet).
     std::optional<int> iterations;
     // Vertex drags and rotations: whether the sheet bends or stretches (crease drags stretch).
     DragLengths lengths = DragLengths::Automatic;
 };
 
 // The iterations a request runs when it does not say: Solve kSolveIterations (a limit, it stops
-// once converged), a drag's move 1, its release iterationsAfterDrag(), an edit 1.
-int defaultIterations(JobKind kind, bool settle, DragLengths lengths);
+// once converged), a drag's move 1, its release iterationsAfterDrag() (longer when a surface
+// holds its sheet), an edit 1.
+int defaultIterations(JobKind kind, bool settle, DragLengths lengths, bool holdsSheet = false);
 
 // How far a handle ended from its target (model units).
 struct HandleGap {
@@ -116,6 +117,11 @@ struct SurfaceAssessment {
     double edgeLengthError = -1.0;
     double sheetExtent = 0.0;
     double isometryMm = -1.0;
+    // A surface that keeps its development: how far it is from it (model::keptSheetStretch,
+    // mm), measured from the geometry. The development is held as a constraint judged apart
+    // (a sampled mesh matches a developable spline only up to its sampling), so this is what
+    // says whether the sheet held. -1: the surface keeps none.
+    double sheetStretchMm = -1.0;
 };
 
 // Samples per spline interval of the development the verdict measures (as the views draw it).

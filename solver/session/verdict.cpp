@@ -38,6 +38,10 @@ Verdict verdictOf(const JobOutcome& outcome) {
         verdict.sheetExtent = std::max(verdict.sheetExtent, a.sheetExtent);
         verdict.edgeLengthError = std::max(verdict.edgeLengthError, a.edgeLengthError);
         allReached = allReached && a.summary.toleranceReached;
+        verdict.sheetStretchMm = std::max(verdict.sheetStretchMm, a.sheetStretchMm);
+        const bool stretched =
+            a.sheetStretchMm > kKeptSheetTolerance * std::max(a.sheetExtent, 1.0);
+        verdict.sheetStretched = verdict.sheetStretched || stretched;
         // Folding over or overlapping cannot be cut, however small the residual.
         for (const auto& [face, places] : a.foldOvers) {
             (void)places;
@@ -65,7 +69,7 @@ Verdict verdictOf(const JobOutcome& outcome) {
             verdict.releasePins =
                 verdict.releasePins || (shape != nullptr && !shape->pinnedVertices().empty());
         }
-        if (farOff || !a.foldOvers.empty() || !a.overlapping.empty()) {
+        if (farOff || stretched || !a.foldOvers.empty() || !a.overlapping.empty()) {
             notDevelopable = true;
             verdict.undoLastStep = verdict.undoLastStep || a.keptAsItWas.has_value() ||
                                    !a.foldOvers.empty() || !a.overlapping.empty();

@@ -25,6 +25,12 @@ struct Verdict {
     double isometryMm = 0.0;
     double sheetExtent = 0.0;
     double edgeLengthError = 0.0;
+    // Surfaces that keep their development: the largest distance (mm) between the surface and
+    // its kept sheet (SurfaceAssessment::sheetStretchMm), -1 when none keeps one; and whether
+    // it exceeds kKeptSheetTolerance of the sheet's extent, which makes the result not
+    // developable from that sheet.
+    double sheetStretchMm = -1.0;
+    bool sheetStretched = false;
     // The largest final constraint residual and the solve's tolerance on it.
     double residual = 0.0;
     double tolerance = 0.0;
@@ -38,11 +44,17 @@ struct Verdict {
     bool undoLastStep = false;
 };
 
+// The kept development is held to this fraction of the sheet's extent (0.03 mm over a 300 mm
+// sheet, below a laser's kerf): a mesh sampled from a developable spline matches a flat copy
+// only up to its sampling, so the development cannot be held to the residual tolerance.
+inline constexpr double kKeptSheetTolerance = 1e-4;
+
 // Ready to cut when every solved surface reached the solve's tolerance (Summary::tolerance)
 // and nothing folds over. Otherwise a surface whose development's relative edge-length error
 // exceeds kDragConvergedResidual (the strain at which a drag counts as not converged), that
 // cannot be unfolded, folds over or was left as it was is not developable; else isometryMm
-// says how close it is.
+// says how close it is. A surface that keeps its development is not developable from its sheet
+// when it lies farther from it than kKeptSheetTolerance of the sheet's extent.
 Verdict verdictOf(const JobOutcome& outcome);
 
 } // namespace devsurf::solver
