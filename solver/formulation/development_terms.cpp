@@ -64,6 +64,17 @@ model::Development DevelopmentVariables::read(const std::vector<double>& x) cons
     return development;
 }
 
+bool DevelopmentVariables::setPullTarget(int meshVertex, const model::Vec2& target) {
+    const auto it = pullRow.find(meshVertex);
+    if (it == pullRow.end() || pulls == nullptr) {
+        return false;
+    }
+    const model::Vec2 p = (target - origin) * (1.0 / scale);
+    pulls->setTarget(it->second, p.x);
+    pulls->setTarget(it->second + 1, p.y);
+    return true;
+}
+
 DevelopmentVariables addDevelopment(const model::CompositeSurface& surface,
                                     const DevelopmentOptions& options,
                                     const std::map<model::VertexId, int>& vertexOffsets,
@@ -132,6 +143,23 @@ DevelopmentVariables addDevelopment(const model::CompositeSurface& surface,
     const FamilyId family = problem.addFamily("development", TermRole::Constraint, options.weight);
     problem.setFamilyJudgedApart(family, true);
     problem.add(family, std::move(isometry));
+    if (!options.pulls.empty()) {
+        auto pulls = std::make_unique<TargetTerm>();
+        for (const auto& [vertex, target] : options.pulls) {
+            if (vertex < 0 || static_cast<std::size_t>(vertex) >= mesh.vertices.size() ||
+                result.pullRow.count(vertex) != 0) {
+                throw std::invalid_argument("a pulled point of the development is not one of "
+                                            "its vertices");
+            }
+            const model::Vec2 p = (target - result.origin) * (1.0 / scale);
+            const double xy[2] = {p.x, p.y};
+            result.pullRow[vertex] = pulls->addPointTarget(result.offset + 2 * vertex, 2, xy);
+        }
+        const FamilyId pullFamily =
+            problem.addFamily("sheetPulls", TermRole::Energy, options.pullWeight);
+        problem.setFamilyDrivesEpsilon1(pullFamily, true);
+        result.pulls = problem.add(pullFamily, std::move(pulls));
+    }
     if (options.fixed) {
         problem.setBlockFixed("development");
         return result;

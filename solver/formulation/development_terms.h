@@ -10,6 +10,7 @@
 #include "solver/core/fairness_term.h"
 #include "solver/core/problem.h"
 #include "solver/core/squared_distance_term.h"
+#include "solver/core/target_term.h"
 
 #include <map>
 #include <vector>
@@ -23,8 +24,13 @@ struct DevelopmentVariables {
     model::Vec2 origin;      // a development point is origin + scale · (state values)
     double scale = 1.0;
     FairnessTerm* fairness = nullptr; // owned by the problem; null when the copy is fixed
+    // Pulled points of the copy (DevelopmentOptions::pulls): their first row in `pulls`.
+    TargetTerm* pulls = nullptr;
+    std::map<int, int> pullRow; // mesh vertex → row
 
     model::Development read(const std::vector<double>& x) const;
+    // Moves a pulled point's target (mm); false if that mesh vertex is not pulled.
+    bool setPullTarget(int meshVertex, const model::Vec2& target);
 };
 
 // How the flat copy enters a problem (FormulationOptions::development…).
@@ -36,6 +42,11 @@ struct DevelopmentOptions {
     double fairnessWeight = 0.01;
     // A copy that is not fixed is confined to this sheet (addDomain); free: unconfined.
     model::SheetDomain domain;
+    // Points of the copy pulled towards targets (mesh vertex, mm): an energy of pullWeight
+    // (family "sheetPulls", driving ε₁) that the surface follows as far as it can, the two-way
+    // editing of a held sheet in the development view.
+    std::vector<std::pair<int, model::Vec2>> pulls;
+    double pullWeight = 1.0;
 };
 
 // Samples `surface` (model::sampleSurface) and appends to `problem` a block "development" with a

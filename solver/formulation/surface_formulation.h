@@ -27,6 +27,13 @@ struct VertexHandle {
     model::Vec3 target; // only used when !fixed, in model coordinates
 };
 
+// A coarse vertex's place in a held sheet pulled towards a target (mm, in the coordinates of
+// the kept development, CompositeSurface::development()).
+struct SheetHandle {
+    model::VertexId vertex = model::kInvalidId;
+    model::Vec2 target;
+};
+
 // A user handle on an interior control point of an S-edge (a dragged crease): pulled towards
 // a target with the weight of the vertex handles.
 struct ControlPointHandle {
@@ -171,6 +178,10 @@ struct FormulationOptions {
     bool fixedDevelopment = false;
     // A development that is not fixed is confined to this sheet (addDomain); free: unconfined.
     model::SheetDomain developmentDomain;
+    // Coarse vertices whose place in the development is pulled (two-way editing: a point of
+    // the held sheet dragged in the development view); needs developmentSamplesPerInterval.
+    std::vector<SheetHandle> sheetHandles;
+    double sheetHandleWeight = 1.0;
 
     std::vector<VertexHandle> handles;
     std::vector<ControlPointHandle> controlPointHandles;
@@ -263,6 +274,9 @@ public:
     bool setHandleTarget(model::VertexId vertex, const model::Vec3& target);
     // The same for a pulled control point (false if it has no handle).
     bool setControlPointTarget(model::EdgeId edge, int index, const model::Vec3& target);
+    // Moves a pulled point of the development (FormulationOptions::sheetHandles; mm, in the
+    // development's own coordinates); false if that vertex's place is not pulled.
+    bool setSheetHandleTarget(model::VertexId vertex, const model::Vec2& target);
 
     // Writes the vertices and control points of state x into `surface` (which must have the
     // combinatorics of the formulated surface). Refuses a state of the wrong size or with a

@@ -134,6 +134,13 @@ bool SurfaceFormulation::setControlPointTarget(model::EdgeId edge, int index, co
     return true;
 }
 
+bool SurfaceFormulation::setSheetHandleTarget(VertexId vertex, const model::Vec2& target) {
+    const auto& vertices = m_development.mesh.coarseVertexIds;
+    const auto it = std::find(vertices.begin(), vertices.end(), vertex);
+    return it != vertices.end() &&
+           m_development.setPullTarget(static_cast<int>(it - vertices.begin()), target);
+}
+
 Vec3 SurfaceFormulation::toModel(const double* p) const {
     return Vec3(m_centre.x + m_scale * p[0], m_centre.y + m_scale * p[1],
                 m_centre.z + m_scale * p[2]);

@@ -157,6 +157,23 @@ void measureHandleGaps(SurfaceAssessment& assessment, const model::CompositeSurf
     }
 }
 
+// How far each vertex dragged in the held sheet lies from its target there (mm).
+void measureSheetGaps(SurfaceAssessment& assessment, const model::CompositeSurface& surface,
+                      const std::vector<SheetHandle>& sheet) {
+    const std::vector<model::Vec2>& flat = surface.development();
+    const auto& vertices = surface.vertices();
+    for (const SheetHandle& handle : sheet) {
+        const auto it = vertices.find(handle.vertex);
+        const auto index = static_cast<std::size_t>(std::distance(vertices.begin(), it));
+        if (it == vertices.end() || index >= flat.size()) {
+            continue;
+        }
+        const double gap = (flat[index] - handle.target).norm();
+        assessment.handleGaps.push_back({handle.vertex, model::kInvalidId, -1, gap});
+        assessment.largestHandleGap = std::max(assessment.largestHandleGap, gap);
+    }
+}
+
 // How far the sheet is from isometric to its development (SurfaceAssessment::isometryMm).
 void measureIsometry(SurfaceAssessment& assessment, const model::CompositeSurface& result) {
     const auto derived = model::DerivedGeometry::of(result, kVerdictSamples);
@@ -303,10 +320,12 @@ struct SolveJob::Drag {
     std::vector<model::CompositeSurface> built;
     std::vector<std::set<model::VertexId>> pulled;
     std::vector<std::set<std::pair<model::EdgeId, int>>> pulledPoints;
+    std::vector<std::set<model::VertexId>> pulledSheet;
     std::vector<std::vector<DragMove>> moves;
 
     explicit Drag(std::size_t count)
-        : sessions(count), built(count), pulled(count), pulledPoints(count), moves(count) {}
+        : sessions(count), built(count), pulled(count), pulledPoints(count), pulledSheet(count),
+          moves(count) {}
 };
 
 SolveJob::SolveJob() = default;
@@ -362,7 +381,8 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
     for (std::size_t s = 0; s < count; ++s) {
         const int key = static_cast<int>(s);
         if (request.kind == JobKind::Solve || !entryOf(request.pulled, key).empty() ||
-            !entryOf(request.pulledControlPoints, key).empty()) {
+            !entryOf(request.pulledControlPoints, key).empty() ||
+            !entryOf(request.pulledSheet, key).empty()) {
             ++solvedSurfaces;
         }
     }
@@ -374,8 +394,13 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
         const model::CompositeSurface& snapshot = request.surfaces[s];
         const std::vector<VertexHandle> handles = entryOf(request.pulled, key);
         const std::vector<ControlPointHandle> points = entryOf(request.pulledControlPoints, key);
+        const std::vector<SheetHandle> sheet = entryOf(request.pulledSheet, key);
+        std::set<model::VertexId> sheetVertices;
+        for (const SheetHandle& handle : sheet) {
+            sheetVertices.insert(handle.vertex);
+        }
         SurfaceAssessment assessment;
-        if (request.kind != JobKind::Solve && handles.empty() && points.empty()) {
+        if (request.kind != JobKind::Solve && handles.empty() && points.empty() && sheet.empty()) {
             // Nothing pulled on this surface: it stays as it is.
             if (!allFinite(snapshot)) {
                 return fail(failureOf(JobError::NotFinite, key));
@@ -388,8 +413,14 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
         std::unique_ptr<SolveSession>& session = d.sessions[s];
         const bool continues = drag && session && sameStructure(d.built[s], snapshot) &&
                                d.pulled[s] == vertexSet(handles) &&
-                               d.pulledPoints[s] == pointSet(points);
+                               d.pulledPoints[s] == pointSet(points) &&
+                               d.pulledSheet[s] == sheetVertices;
         if (continues) {
+            for (const SheetHandle& handle : sheet) {
+                if (!session->setSheetHandleTarget(handle.vertex, handle.target)) {
+                    return fail(targetFailure(key, handle.vertex, model::kInvalidId, -1));
+                }
+            }
             for (const VertexHandle& handle : handles) {
                 if (!isFinite(handle.target)) {
                     return fail(targetFailure(key, handle.vertex, model::kInvalidId, -1));
@@ -403,14 +434,16 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             }
         } else {
             try {
-                session = std::make_unique<SolveSession>(snapshot, handles, points,
-                                                         optionsFor(request, key));
+                SessionOptions options = optionsFor(request, key);
+                options.formulation.sheetHandles = sheet;
+                session = std::make_unique<SolveSession>(snapshot, handles, points, options);
             } catch (const std::exception& error) {
                 return fail(cannotSolve(key, error));
             }
             d.built[s] = snapshot;
             d.pulled[s] = vertexSet(handles);
             d.pulledPoints[s] = pointSet(points);
+            d.pulledSheet[s] = sheetVertices;
             d.moves[s].clear();
         }
         if (drag) {
@@ -512,6 +545,7 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             }
         }
         measureHandleGaps(assessment, *result, handles, points);
+        measureSheetGaps(assessment, *result, sheet);
         assessment.sheetHeld = result->keepsDevelopment();
         if (settle) {
             measureSettled(assessment, *result, drag ? &d.built[s] : nullptr, knownOverlaps);

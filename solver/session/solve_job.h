@@ -44,6 +44,9 @@ struct JobRequest {
     std::vector<model::CompositeSurface> surfaces;   // every surface of the project (pins inside)
     std::map<int, std::vector<VertexHandle>> pulled; // per surface index
     std::map<int, std::vector<ControlPointHandle>> pulledControlPoints; // a dragged crease
+    // Vertices' places in a held sheet pulled in the development view (a VertexDrag of
+    // surfaces that keep their development): the surface follows its sheet.
+    std::map<int, std::vector<SheetHandle>> pulledSheet;
     // Solve: vertices held where they are without pinning them in the document.
     std::map<int, std::vector<model::VertexId>> fixed;
     // Iterations of this request; unset: defaultIterations(kind, settle, lengths, holdsSheet).

@@ -151,7 +151,19 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
         }
         m_options.formulation.controlPointHandles.push_back(handle);
     }
-    m_dragging = !m_pulled.empty() || !pulledControlPoints.empty();
+    const std::vector<SheetHandle>& sheetHandles = m_options.formulation.sheetHandles;
+    if (!sheetHandles.empty() && !surface.keepsDevelopment()) {
+        throw std::invalid_argument("'" + surface.name() +
+                                    "' holds no sheet whose points could be dragged.");
+    }
+    for (const SheetHandle& handle : sheetHandles) {
+        if (!std::isfinite(handle.target.x) || !std::isfinite(handle.target.y)) {
+            throw std::invalid_argument("The drag target of vertex " +
+                                        std::to_string(handle.vertex) +
+                                        " in the sheet is not a finite point.");
+        }
+    }
+    m_dragging = !m_pulled.empty() || !pulledControlPoints.empty() || !sheetHandles.empty();
     if (m_dragging) {
         // See FormulationOptions::weighCreaseNormals: a drag keeps the bilinear crease rows.
         m_options.formulation.weighCreaseNormals = false;
@@ -185,7 +197,8 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
         FormulationOptions& f = m_options.formulation;
         f.developmentSamplesPerInterval = model::kDevelopmentSamplesPerInterval;
         f.developmentStart = surface.development();
-        f.fixedDevelopment = surface.sheetDomain().isFree();
+        // A free sheet is fixed, unless its points are dragged: then it changes with them.
+        f.fixedDevelopment = surface.sheetDomain().isFree() && sheetHandles.empty();
         f.developmentDomain = surface.sheetDomain();
         if (m_dragging && f.pulledHandleWeight == 0.0) {
             f.pulledHandleWeight = kSheetPullWeight;
@@ -206,6 +219,11 @@ bool SolveSession::setHandleTarget(model::VertexId vertex, const model::Vec3& ta
         return false;
     }
     return m_formulation->setHandleTarget(vertex, target);
+}
+
+bool SolveSession::setSheetHandleTarget(model::VertexId vertex, const model::Vec2& target) {
+    return std::isfinite(target.x) && std::isfinite(target.y) &&
+           m_formulation->setSheetHandleTarget(vertex, target);
 }
 
 bool SolveSession::setControlPointTarget(model::EdgeId edge, int index, const model::Vec3& target) {

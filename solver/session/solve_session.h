@@ -142,6 +142,9 @@ public:
     bool setHandleTarget(model::VertexId vertex, const model::Vec3& target);
     // The same for a pulled control point.
     bool setControlPointTarget(model::EdgeId edge, int index, const model::Vec3& target);
+    // The same for a vertex's place in the held sheet (SessionOptions::formulation.
+    // sheetHandles; mm, in the coordinates of the kept development).
+    bool setSheetHandleTarget(model::VertexId vertex, const model::Vec2& target);
 
     // Runs n iterations continuing the ε₁ schedule where the last call stopped; writes the
     // result into surface(). step(1) ten times equals step(10) bit for bit. `cancel` is

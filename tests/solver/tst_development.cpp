@@ -313,6 +313,73 @@ private slots:
         QVERIFY(std::abs(sheet.high.x - sheet.low.x - 300.0) < 1e-6);
         QVERIFY(std::abs(sheet.high.y - sheet.low.y - 300.0) < 1e-6);
     }
+
+    void draggingThePlaceInTheSheetMovesTheSurface() {
+        // Two-way editing: the flat `sheet` held on its 300 × 300 mm rectangle, its bottom
+        // corners pinned, lifted 60 mm in the middle first; then a middle vertex's place in
+        // the development dragged 20 mm along the sheet (as the development view does). The
+        // surface follows its sheet: the vertex moves in space, the result is developable,
+        // on the square and isometric to the changed development.
+        model::CompositeSurface s = model::makeExample("sheet").surfaces.front();
+        QVERIFY(!model::keepDevelopment(s).has_value());
+        model::SheetDomain square;
+        square.shape = model::SheetShape::Rectangle;
+        square.width = 300.0;
+        square.height = 300.0;
+        s.setSheetDomain(
+            model::placeDomain(square, model::sampleSurface(s, kSamples), s.development()));
+        std::vector<model::VertexId> middle;
+        for (const auto& [id, p] : s.vertices()) {
+            if (std::abs(p.y) < 1e-9 && (std::abs(p.x) < 1e-9 || std::abs(p.x - 300.0) < 1e-9)) {
+                s.setPinned(id, true);
+            }
+            if (std::abs(p.y - 100.0) < 1e-9 || std::abs(p.y - 200.0) < 1e-9) {
+                middle.push_back(id);
+            }
+        }
+        const model::CompositeSurface bent = dragUp(s, middle, 60.0).surface;
+        QVERIFY(bent.validate().empty());
+        const model::VertexId dragged = middle.at(1); // an inner vertex of the lower middle row
+        const auto& vertices = bent.vertices();
+        const auto index =
+            static_cast<std::size_t>(std::distance(vertices.begin(), vertices.find(dragged)));
+        const model::Vec2 from = bent.development().at(index);
+        const model::Vec2 to = from + model::Vec2(0.0, 20.0);
+        solver::SolveJob job;
+        solver::JobOutcome outcome;
+        for (int k = 1; k <= 21; ++k) {
+            solver::JobRequest request;
+            request.kind = solver::JobKind::VertexDrag;
+            request.drag = 11;
+            request.settle = k == 21;
+            request.surfaces = {bent};
+            const double t = std::min(k, 20) / 20.0;
+            request.pulledSheet[0].push_back({dragged, from + (to - from) * t});
+            outcome = job.run(request);
+            QVERIFY2(outcome.ok, outcome.failure.detail.c_str());
+        }
+        const model::CompositeSurface& result = outcome.surfaces.front();
+        const solver::SurfaceAssessment& a = outcome.assessments.front();
+        QVERIFY(a.sheetHeld);
+        QVERIFY2(a.largestHandleGap < 1e-3, qPrintable(QString::number(a.largestHandleGap)));
+        QVERIFY2(model::distance(result.position(dragged), bent.position(dragged)) > 10.0,
+                 qPrintable(QString::number(
+                     model::distance(result.position(dragged), bent.position(dragged)))));
+        QVERIFY(result.validate().empty());
+        QVERIFY(solver::measureQuality(result).developabilityMax < 1e-8);
+        QVERIFY2(pairLengthError(result, result.development()) < kHeldSheet,
+                 qPrintable(QString::number(pairLengthError(result, result.development()))));
+        const double gap = model::largestDomainGap(
+            result.sheetDomain(), model::sampleSurface(result, kSamples), result.development());
+        QVERIFY2(gap < 1e-6, qPrintable(QString::number(gap)));
+        QVERIFY(solver::foldOvers(result).empty());
+        // A surface that holds no sheet has no place in one to drag.
+        solver::JobRequest unheld;
+        unheld.kind = solver::JobKind::VertexDrag;
+        unheld.surfaces = {model::makeExample("sheet").surfaces.front()};
+        unheld.pulledSheet[0].push_back({dragged, to});
+        QVERIFY(!solver::SolveJob().run(unheld).ok);
+    }
 };
 
 DEVSURF_REGISTER_TEST(TstDevelopment);
