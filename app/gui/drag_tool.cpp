@@ -9,6 +9,7 @@
 #include "model/document/selection.h"
 #include "solve_controller.h"
 #include "solver/worker/solver_worker.h"
+#include "views/scene_view.h"
 #include "views/surface_view.h"
 #include "views/vtk_opengl_widget.h"
 #include "workspace.h"
@@ -76,6 +77,9 @@ DragTool::~DragTool() {
 }
 
 QString DragTool::undoText() const {
+    if (m_inSheet && !m_vertices.empty()) {
+        return tr("Drag vertex %1 in the sheet").arg(m_vertices.front());
+    }
     if (m_crease) {
         return tr("Drag crease %1").arg(m_crease->edge());
     }
@@ -101,6 +105,12 @@ QString DragTool::changedText() const {
 }
 
 QString DragTool::motionText() const {
+    if (m_inSheet && !m_vertices.empty()) {
+        return tr("Dragging vertex %1 %2 mm along its sheet; the surface follows. Release to "
+                  "finish, Esc cancels.")
+            .arg(m_vertices.front())
+            .arg(QString::number((m_sheetTarget - m_sheetStart).norm(), 'f', 2));
+    }
     if (m_crease) {
         const QString shift = QString::number(m_creaseShift.norm(), 'f', 2);
         if (axis() == Axis::Free && m_crease->reach(m_creaseDelta, true) < 1.0) {
@@ -196,15 +206,20 @@ bool DragTool::eventFilter(QObject* watched, QEvent* event) {
         type == QEvent::ShortcutOverride) {
         return m_action->isChecked() && handleKey(event);
     }
-    if (watched != m_view->glWidget() || !m_action->isChecked()) {
+    const bool inSheetView = m_sheetView != nullptr && watched == m_sheetView->glWidget();
+    if ((watched != m_view->glWidget() && !inSheetView) || !m_action->isChecked()) {
         return false;
+    }
+    if (m_state != State::Idle && inSheetView != m_inSheet) {
+        return false; // the other view's events during a drag
     }
     switch (type) {
     case QEvent::MouseButtonPress: {
         auto* me = static_cast<QMouseEvent*>(event);
         if (me->button() == Qt::LeftButton && m_state == State::Idle &&
             !(me->modifiers() & Qt::ControlModifier)) {
-            return press(me->position().toPoint());
+            return inSheetView ? pressSheet(me->position().toPoint())
+                               : press(me->position().toPoint());
         }
         return m_state == State::Dragging;
     }
@@ -227,7 +242,78 @@ bool DragTool::eventFilter(QObject* watched, QEvent* event) {
     }
 }
 
+bool DragTool::pressSheet(const QPoint& pos) {
+    const std::optional<Pick> pick = m_sheetView->pickAt(pos);
+    document::Document* doc = m_workspace->document();
+    if (!pick || pick->kind != Pick::Kind::Vertex || pick->surface < 0 ||
+        pick->surface >= doc->surfaceCount()) {
+        return false; // the view selects and pans as usual
+    }
+    const model::CompositeSurface& surface = doc->surface(pick->surface);
+    if (!surface.keepsDevelopment() || surface.development().empty()) {
+        emit statusMessage(tr("Points of the development can be dragged only where the surface "
+                              "holds its sheet (Tools ▸ Hold the Sheet)."));
+        return false;
+    }
+    // The view lays the development out (turned, moved, maybe mirrored): the motion from the
+    // kept development to that layout, fitted on the coarse vertices the view draws.
+    const auto& vertices = surface.vertices();
+    std::vector<model::Vec2> kept;
+    std::vector<model::Vec2> shown;
+    std::size_t index = 0;
+    std::size_t pressed = 0;
+    for (const auto& [id, p] : vertices) {
+        (void)p;
+        const std::optional<model::Vec3> at = m_sheetView->vertexScenePoint(pick->surface, id);
+        if (at && index < surface.development().size()) {
+            kept.push_back(surface.development()[index]);
+            shown.push_back({at->x, at->y});
+        }
+        if (id == pick->id) {
+            pressed = index;
+        }
+        ++index;
+    }
+    const std::optional<model::pattern::PlaneMotion> motion =
+        model::pattern::fitPlaneMotion(kept, shown);
+    if (!motion || pressed >= surface.development().size()) {
+        return false;
+    }
+    m_workspace->selection()->set({*pick});
+    if (m_solver->isSolving()) {
+        m_solver->cancel(tr("a drag started"));
+    }
+    m_inSheet = true;
+    m_sheetMotion = *motion;
+    m_sheetStart = surface.development()[pressed];
+    m_sheetTarget = m_sheetStart;
+    m_crease.reset();
+    m_held.reset();
+    m_surface = pick->surface;
+    m_vertices.assign(1, pick->id);
+    m_start.assign(1, surface.position(pick->id));
+    const model::Vec2 drawn = m_sheetMotion.apply(m_sheetStart);
+    start(pos, model::Vec3(drawn.x, drawn.y, 0.0));
+    m_normal = model::Vec3(0.0, 0.0, 1.0); // the development's plane
+    return true;
+}
+
+bool DragTool::sheetTargetAt(const QPoint& pos) {
+    const std::optional<model::Vec3> hit = m_sheetView->widgetToPlane(pos, m_anchor, m_normal);
+    if (!hit) {
+        return false;
+    }
+    model::Vec2 delta(hit->x - m_anchor.x, hit->y - m_anchor.y);
+    if (axis() == Axis::X || axis() == Axis::Y) {
+        delta = axis() == Axis::X ? model::Vec2(delta.x, 0.0) : model::Vec2(0.0, delta.y);
+    }
+    const model::Vec2 drawn = m_sheetMotion.apply(m_sheetStart) + delta;
+    m_sheetTarget = m_sheetMotion.applyInverse(drawn);
+    return true;
+}
+
 bool DragTool::press(const QPoint& pos) {
+    m_inSheet = false;
     const std::optional<Pick> pick = m_view->pickAt(pos);
     document::Document* doc = m_workspace->document();
     m_crease.reset();
@@ -356,7 +442,7 @@ void DragTool::move(const QPoint& pos) {
     if ((pos - m_pressPos).manhattanLength() <= kClickSlop && !m_moved) {
         return;
     }
-    if (!targetsAt(pos, m_targets)) {
+    if (m_inSheet ? !sheetTargetAt(pos) : !targetsAt(pos, m_targets)) {
         return;
     }
     m_moved = true;
@@ -440,9 +526,13 @@ void DragTool::submit(bool settle) {
     job.drag = m_sessionKey;
     job.settle = settle;
     job.surfaces = m_pressSurfaces;
-    std::vector<solver::VertexHandle>& handles = job.pulled[m_surface];
-    for (std::size_t i = 0; i < m_vertices.size(); ++i) {
-        handles.push_back({m_vertices[i], false, m_targets[i]});
+    if (m_inSheet) {
+        job.pulledSheet[m_surface].push_back({m_vertices.front(), m_sheetTarget});
+    } else {
+        std::vector<solver::VertexHandle>& handles = job.pulled[m_surface];
+        for (std::size_t i = 0; i < m_vertices.size(); ++i) {
+            handles.push_back({m_vertices[i], false, m_targets[i]});
+        }
     }
     if (m_crease) {
         job.pulledControlPoints[m_surface] =
@@ -467,7 +557,8 @@ void DragTool::release(const QPoint& pos, Qt::KeyboardModifiers modifiers) {
         // A click on a vertex selects as it does without the tool.
         m_state = State::Idle;
         finish();
-        const std::optional<Pick> pick = m_view->pickAt(pos);
+        const std::optional<Pick> pick =
+            (m_inSheet ? static_cast<views::SceneView*>(m_sheetView) : m_view)->pickAt(pos);
         if (pick && (modifiers & Qt::ShiftModifier)) {
             m_workspace->selection()->toggle(*pick);
         }

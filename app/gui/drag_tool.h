@@ -3,6 +3,7 @@
 #include "model/composite_surface.h"
 #include "model/document/selection.h"
 #include "model/held_by_pins.h"
+#include "model/pattern/pattern_sheet.h"
 #include "panels/solver_panel.h"
 #include "solver/session/crease_drag.h"
 #include "solver/session/solve_job.h"
@@ -23,6 +24,7 @@ struct SolveResult;
 } // namespace devsurf::solver
 
 namespace devsurf::views {
+class SceneView;
 class SurfaceView;
 } // namespace devsurf::views
 
@@ -71,6 +73,12 @@ public:
     bool snapsToCurves() const { return m_snapToCurves; }
     // The reference curve the last move snapped to, or -1.
     int snappedCurve() const { return m_snappedCurve; }
+    // Two-way editing: with the tool on, a press on a vertex of a surface that holds its sheet
+    // in this view (the development view) drags the vertex's place in the sheet, and the
+    // surface follows its sheet (solver::JobRequest::pulledSheet); one undo step.
+    void setSheetView(views::SceneView* view) { m_sheetView = view; }
+    // The drag moves a place in the sheet (pressed in the sheet view).
+    bool draggingSheet() const { return m_inSheet && m_state != State::Idle; }
 
 signals:
     // The drag ended: applied (one undo step), or not (cancelled, failed, or nothing moved).
@@ -120,6 +128,10 @@ protected:
 private:
     enum class State { Idle, Dragging, Finishing };
     bool press(const QPoint& pos);
+    // A press in the sheet view; false: not on a vertex (the view handles it as usual).
+    bool pressSheet(const QPoint& pos);
+    // The target in the kept development for the mouse at pos in the sheet view.
+    bool sheetTargetAt(const QPoint& pos);
     // A press on edge `pick` (which may or may not be a crease).
     bool pressCrease(const QPoint& pos, const document::Pick& pick);
     // The rest of a press once m_surface, m_vertices and m_start are set: the motion's plane
@@ -142,6 +154,12 @@ private:
 
     bool m_snapToCurves = false;
     int m_snappedCurve = -1;
+
+    views::SceneView* m_sheetView = nullptr;
+    bool m_inSheet = false;                    // this drag was pressed in the sheet view
+    model::pattern::PlaneMotion m_sheetMotion; // kept development → the view's layout
+    model::Vec2 m_sheetStart;                  // the pressed vertex in the kept development
+    model::Vec2 m_sheetTarget;
 
     QAction* m_action;
     Workspace* m_workspace;

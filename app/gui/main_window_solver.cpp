@@ -5,6 +5,7 @@
 #include "camera_actions.h"
 #include "drag_tool.h"
 #include "main_window.h"
+#include "views/development_view.h"
 #include "measure_tool.h"
 #include "panels/solver_panel.h"
 #include "reactions/curve_reactions.h"
@@ -64,6 +65,7 @@ QList<QAction*> MainWindow::createSolverActions(QMenu* tools, QAction* selectNon
     drag->setToolTip(dragTip);
     drag->setStatusTip(dragTip);
     m_dragTool = new DragTool(drag, m_workspace, m_surfaceView, m_solveController);
+    m_dragTool->setSheetView(m_developmentView);
     QAction* snap =
         addAction(tools, QStringLiteral("actionSnapToCurves"), tr("S&nap to Reference Curves"));
     snap->setCheckable(true);

@@ -10,28 +10,21 @@
 
 namespace devsurf::model::pattern {
 
-namespace {
+Vec2 PlaneMotion::apply(const Vec2& p) const {
+    const Vec2 q = (mirrored ? Vec2{-p.x, p.y} : p) - from;
+    const double c = std::cos(angle), s = std::sin(angle);
+    return Vec2{c * q.x - s * q.y, s * q.x + c * q.y} + to;
+}
 
-constexpr double kPi = 3.14159265358979323846;
+Vec2 PlaneMotion::applyInverse(const Vec2& p) const {
+    const Vec2 q = p - to;
+    const double c = std::cos(angle), s = std::sin(angle);
+    const Vec2 r = Vec2{c * q.x + s * q.y, -s * q.x + c * q.y} + from;
+    return mirrored ? Vec2{-r.x, r.y} : r;
+}
 
-// p ↦ R(angle)·(mirror(p) − from) + to, with mirror(x, y) = (−x, y) when mirrored.
-struct SheetMotion {
-    bool mirrored = false;
-    double angle = 0.0;
-    Vec2 from;
-    Vec2 to;
-
-    Vec2 apply(const Vec2& p) const {
-        const Vec2 q = (mirrored ? Vec2{-p.x, p.y} : p) - from;
-        const double c = std::cos(angle), s = std::sin(angle);
-        return Vec2{c * q.x - s * q.y, s * q.x + c * q.y} + to;
-    }
-};
-
-// The best rotation and shift taking `source` (mirrored first if asked) onto `target`, and
-// its sum of squared distances (2D Procrustes).
-std::pair<SheetMotion, double> fitMotion(std::vector<Vec2> source, const std::vector<Vec2>& target,
-                                         bool mirrored) {
+static std::pair<PlaneMotion, double>
+fitPlaneMotionMirrored(std::vector<Vec2> source, const std::vector<Vec2>& target, bool mirrored) {
     if (mirrored) {
         for (Vec2& p : source) {
             p.x = -p.x;
@@ -51,7 +44,7 @@ std::pair<SheetMotion, double> fitMotion(std::vector<Vec2> source, const std::ve
         a += dot2(s, t);
         b += cross2(s, t);
     }
-    SheetMotion motion;
+    PlaneMotion motion;
     motion.angle = std::atan2(b, a);
     motion.to = ct;
     // `from` is in mirrored coordinates, as apply() mirrors before subtracting it; the
@@ -65,6 +58,20 @@ std::pair<SheetMotion, double> fitMotion(std::vector<Vec2> source, const std::ve
     motion.mirrored = mirrored;
     return {motion, squared};
 }
+
+std::optional<PlaneMotion> fitPlaneMotion(const std::vector<Vec2>& from,
+                                          const std::vector<Vec2>& to) {
+    if (from.size() != to.size() || from.size() < 2) {
+        return std::nullopt;
+    }
+    const auto straight = fitPlaneMotionMirrored(from, to, false);
+    const auto mirrored = fitPlaneMotionMirrored(from, to, true);
+    return mirrored.second < straight.second ? mirrored.first : straight.first;
+}
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
 
 std::vector<Vec2> circlePolygon(const Vec2& centre, double radius, double chordTolerance) {
     const double tolerance = std::clamp(chordTolerance, 1e-6, radius);
@@ -112,12 +119,11 @@ std::vector<std::vector<Vec2>> sheetOnPiece(const CompositeSurface& surface,
             target.push_back(it->second);
         }
     }
-    if (source.size() < 2) {
+    const std::optional<PlaneMotion> fitted = fitPlaneMotion(source, target);
+    if (!fitted) {
         return {};
     }
-    const auto proper = fitMotion(source, target, false);
-    const auto mirrored = fitMotion(source, target, true);
-    const SheetMotion& motion = proper.second <= mirrored.second ? proper.first : mirrored.first;
+    const PlaneMotion& motion = *fitted;
 
     std::vector<std::vector<Vec2>> loops;
     for (const DomainLoop& loop : domainLoops(domain)) {

@@ -46,7 +46,7 @@ struct DevelopmentOptions {
     // (family "sheetPulls", driving ε₁) that the surface follows as far as it can, the two-way
     // editing of a held sheet in the development view.
     std::vector<std::pair<int, model::Vec2>> pulls;
-    double pullWeight = 1.0;
+    double pullWeight = 100.0; // FormulationOptions::sheetHandleWeight
 };
 
 // Samples `surface` (model::sampleSurface) and appends to `problem` a block "development" with a
