@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
+#include <thread>
 
 namespace devsurf::model::reference {
 
@@ -45,6 +46,24 @@ double distanceToSurface(const SurfaceSamples& samples, const PointIndex& index,
         best = std::min(best, closestOnPiece(samples, n.index, q).distance);
     }
     return best;
+}
+
+// Runs work(begin, end) over [0, count) split into one contiguous range per hardware thread.
+// The queries only read shared data and write their own slots, so the result does not depend on
+// the number of threads.
+template <class Work> void inParallel(std::size_t count, const Work& work) {
+    constexpr std::size_t kMinimumPerThread = 1024;
+    const std::size_t threads = std::clamp<std::size_t>(
+        std::min<std::size_t>(std::thread::hardware_concurrency(), count / kMinimumPerThread), 1,
+        64);
+    std::vector<std::thread> pool;
+    for (std::size_t t = 1; t < threads; ++t) {
+        pool.emplace_back(work, count * t / threads, count * (t + 1) / threads);
+    }
+    work(std::size_t{0}, count / threads);
+    for (std::thread& thread : pool) {
+        thread.join();
+    }
 }
 
 // Mean, 95th percentile and max of values with weights (all 1 when `weights` is empty).
@@ -105,24 +124,28 @@ DistanceReport measureDistance(const std::vector<CompositeSurface>& surfaces,
     report.surfaceSpacing = samples.coveringRadius;
 
     const PointIndex surfaceIndex(std::move(samples.positions));
-    std::vector<PointIndex::Neighbour> ball;
-    std::vector<std::uint32_t> refined;
-    report.targetDistances.reserve(target.size());
-    std::size_t covered = 0;
-    for (const Vec3& q : target) {
-        const double d = distanceToSurface(samples, surfaceIndex, q, ball, refined);
-        report.targetDistances.push_back(d);
-        covered += d <= report.tolerance ? 1 : 0;
-    }
+    report.targetDistances.resize(target.size());
+    inParallel(target.size(), [&](std::size_t begin, std::size_t end) {
+        std::vector<PointIndex::Neighbour> ball;
+        std::vector<std::uint32_t> refined;
+        for (std::size_t i = begin; i < end; ++i) {
+            report.targetDistances[i] =
+                distanceToSurface(samples, surfaceIndex, target[i], ball, refined);
+        }
+    });
+    const auto covered = std::count_if(report.targetDistances.begin(), report.targetDistances.end(),
+                                       [&report](double d) { return d <= report.tolerance; });
     report.coverage = static_cast<double>(covered) / static_cast<double>(target.size());
     report.targetToSurface = summarise(report.targetDistances, {}, report.diagonal);
 
     const PointIndex targetIndex(target);
-    std::vector<double> toTarget;
-    toTarget.reserve(surfaceIndex.size());
-    for (const Vec3& p : surfaceIndex.points()) {
-        toTarget.push_back(std::sqrt(targetIndex.nearest(p).squaredDistance));
-    }
+    const std::vector<Vec3>& onSurface = surfaceIndex.points();
+    std::vector<double> toTarget(onSurface.size());
+    inParallel(onSurface.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            toTarget[i] = std::sqrt(targetIndex.nearest(onSurface[i]).squaredDistance);
+        }
+    });
     report.surfaceToTarget = summarise(toTarget, samples.area, report.diagonal);
     return report;
 }
