@@ -258,6 +258,25 @@ private slots:
                          std::max(report.surfaceToTarget.max, report.targetToSurface.max)) == 0.0);
     }
 
+    void surfaceToTargetIsWeightedByArea() {
+        // The cone s(u,v) = (1−v) a(u) + v apex has |s_u × s_v| = (1−v) |a′ × (apex − a)|: over
+        // its area, v averages ∫v(1−v) / ∫(1−v) = 1/3, so its height (80 v) averages 80/3,
+        // where a mean over its (u,v) grid would give 40. The target: a fine grid 10 below.
+        const CompositeSurface surface = quarterCone();
+        std::vector<Vec3> target;
+        for (int i = 0; i <= 220; ++i) {
+            for (int j = 0; j <= 220; ++j) {
+                target.emplace_back(-5.0 + 0.5 * i, -5.0 + 0.5 * j, -10.0);
+            }
+        }
+        const DistanceReport report = measureDistance(surface, target, {1.0, 16});
+        const double mean = 10.0 + 80.0 / 3.0;
+        QVERIFY2(std::abs(report.surfaceToTarget.mean - mean) < 0.005 * mean,
+                 qPrintable(QString::number(report.surfaceToTarget.mean)));
+        QVERIFY(std::abs(report.surfaceToTarget.max - 90.0) < 1e-3);
+        QCOMPARE(report.coverage, 0.0);
+    }
+
     void coverageCountsPointsWithinTolerance() {
         const CompositeSurface surface = makeExample("cylinder").surfaces.front();
         const std::vector<Strip> strips = stripsOf(surface);
