@@ -36,8 +36,8 @@ using ThinningProgress = std::function<bool(std::size_t done, std::size_t total)
 // so the normal does not depend on the order of visits), and the ball's points are discarded.
 // A point without such a plane is dropped alone, so its neighbours still get their turn. Any
 // two kept points are at least ρ apart. m_j points away from the centroid of the reference
-// (outwards on a closed scan); eqs. (10) and (11) do not depend on its sign. Non-finite points
-// are skipped. ρ ≤ 0 means defaultThinningRadius (found on the same KD-tree, which saves
+// (outwards on a closed scan); eq. (10), which uses it, does not depend on its sign. Non-finite
+// points are skipped. ρ ≤ 0 means defaultThinningRadius (found on the same KD-tree, which saves
 // building a second one); a non-finite ρ throws std::invalid_argument.
 ThinningResult thinReference(const std::vector<Vec3>& points, double rho,
                              const ThinningProgress& progress = {});
