@@ -20,7 +20,7 @@ packages=(
   cmake g++ ninja-build ccache pkg-config
   qt6-base-dev libqt6opengl6-dev qt6-svg-dev qt6-tools-dev qt6-l10n-tools
   libvtk9-dev libeigen3-dev libsuitesparse-dev libopenmesh-dev libboost-serialization-dev
-  libopenblas0-serial libdxflib-dev
+  libopenblas0-serial libdxflib-dev libnanoflann-dev
   libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev
   libocct-foundation-dev libocct-ocaf-dev
   qt6-translations-l10n fonts-noto-cjk

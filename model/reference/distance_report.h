@@ -1,0 +1,61 @@
+#pragma once
+
+#include "model/composite_surface.h"
+#include "model/vec3.h"
+
+#include <vector>
+
+namespace devsurf::model::reference {
+
+struct DistanceOptions {
+    // Target points within this distance of the surface count as covered; 0 or less means 1 %
+    // of the target's bounding-box diagonal.
+    double tolerance = 0.0;
+    // Density of the surface samples: grid steps along each strip per spline interval.
+    int samplesPerInterval = 16;
+};
+
+// A one-sided distance: over the points of one shape, the distance to the other shape.
+struct OneSidedDistance {
+    double mean = 0.0; // document units
+    double percentile95 = 0.0;
+    double max = 0.0;
+    // The same as percentages of the target's bounding-box diagonal.
+    double meanPercent = 0.0;
+    double percentile95Percent = 0.0;
+    double maxPercent = 0.0;
+};
+
+// How far a design is from its target (§4.2, issue 42's distance report).
+struct DistanceReport {
+    // Target → surface: over the target points, the distance to the closest surface point.
+    OneSidedDistance targetToSurface;
+    // Surface → target: over the surface (weighted by area), the distance to the nearest target
+    // point. Sampled, so within DistanceReport::surfaceSpacing of the exact figures.
+    OneSidedDistance surfaceToTarget;
+    double diagonal = 0.0;  // of the target's bounding box
+    double tolerance = 0.0; // the one used for coverage
+    double coverage = 0.0;  // fraction of the target points within tolerance of the surface
+    // Per target point, the distance to the surface (for a colour map); in target order.
+    std::vector<double> targetDistances;
+    std::size_t surfaceSamples = 0;
+    double surfaceSpacing = 0.0; // every surface point is this close to a sample
+    double hausdorff() const { return std::max(targetToSurface.max, surfaceToTarget.max); }
+};
+
+// The distance report of one or more composite surfaces against target points (a thinned or
+// whole reference). Target → surface is exact up to Newton's convergence: the nearest surface
+// sample (KD-tree), then every piece with a sample close enough to hold a closer point, each
+// refined to its true closest point (closestPointOnStrip, closestPointOnTriangle). Surface →
+// target takes the dense samples to the nearest target point. The 95th percentile is the
+// smallest distance that at least 95 % of the points (of the area) do not exceed.
+// Throws ModelError for an invalid surface or samplesPerInterval outside [1, 1000], and
+// std::invalid_argument for an empty target, a target with non-finite points or a design
+// without faces.
+DistanceReport measureDistance(const std::vector<CompositeSurface>& surfaces,
+                               const std::vector<Vec3>& target,
+                               const DistanceOptions& options = {});
+DistanceReport measureDistance(const CompositeSurface& surface, const std::vector<Vec3>& target,
+                               const DistanceOptions& options = {});
+
+} // namespace devsurf::model::reference
