@@ -198,7 +198,8 @@ int main(int argc, char** argv) {
         } else {
             std::cerr << "usage: devsurf-bench [--json] [--model NAME]... [--no-ceres | --blas]\n"
                          "       devsurf-bench --drag [--json]\n"
-                         "       devsurf-bench --paper [--model ROW]... [--paper-size-cap N] [--edge-noise F | "
+                         "       devsurf-bench --paper [--model ROW]... [--paper-size-cap N] "
+                         "[--edge-noise F | "
                          "--diameter-noise F] [--iterations N] [--json]\n"
                          "       devsurf-bench --study MODEL [--edge-noise F | --diameter-noise F]"
                          " [--seeds N] [--iterations N] [--set NAME=VALUE]... [--session | "
@@ -223,8 +224,8 @@ int main(int argc, char** argv) {
             if (row.paper.figure == "12" && paperOptions.sizeCap == 0) {
                 devsurf::bench::DragBenchOptions dragOptions;
                 const auto d = devsurf::bench::runSurfaceDrag(row.name, row.surface, dragOptions);
-                report.drag = {true,        d.model,         d.variables, d.medianMs,
-                               d.p95Ms,     d.residualAfter, d.error};
+                report.drag = {true,    d.model,         d.variables, d.medianMs,
+                               d.p95Ms, d.residualAfter, d.error};
             }
         }
         devsurf::bench::printPaperBench(report, options.json, std::cout);

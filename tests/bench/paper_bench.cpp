@@ -138,7 +138,8 @@ model::CompositeSurface paperSurface(const PaperCandidate& c, int size) {
     if (const auto problem = model::keepDevelopment(surface)) {
         throw model::ModelError(*problem);
     }
-    const model::SampledMesh mesh = model::sampleSurface(surface, model::kDevelopmentSamplesPerInterval);
+    const model::SampledMesh mesh =
+        model::sampleSurface(surface, model::kDevelopmentSamplesPerInterval);
     surface.setSheetDomain(model::fittingDomain(c.shape, mesh, surface.development()));
     return surface;
 }
@@ -174,7 +175,8 @@ int nearestSize(const PaperCandidate& c, int cap, int& variables) {
     variables = -1;
     for (int size = first; size <= std::max(last, first); ++size) {
         const int n = variableCount(paperSurface(c, size));
-        if (variables < 0 || std::abs(n - c.paper.variables) < std::abs(variables - c.paper.variables)) {
+        if (variables < 0 ||
+            std::abs(n - c.paper.variables) < std::abs(variables - c.paper.variables)) {
             best = size;
             variables = n;
         }
@@ -264,10 +266,10 @@ double relativeSheetStretch(const model::CompositeSurface& surface) {
                 const auto b = static_cast<std::size_t>(face[j]);
                 const double inSheet = (flat[a] - flat[b]).norm();
                 if (inSheet > 0.0) {
-                    worst = std::max(worst, std::abs(model::distance(mesh.vertices[a],
-                                                                     mesh.vertices[b]) -
-                                                     inSheet) /
-                                                inSheet);
+                    worst = std::max(
+                        worst,
+                        std::abs(model::distance(mesh.vertices[a], mesh.vertices[b]) - inSheet) /
+                            inSheet);
                 }
             }
         }
@@ -336,8 +338,7 @@ PaperRowResult runRow(const PaperCandidate& c, const PaperBenchOptions& options)
         }
         r.baseline = medianOf(baseline);
         r.baselineRatio = r.ours.total > 0.0 ? r.baseline.total / r.ours.total : 0.0;
-        log("paper " + c.name + ": baseline " + std::to_string(r.baseline.total) +
-            " ms/iteration");
+        log("paper " + c.name + ": baseline " + std::to_string(r.baseline.total) + " ms/iteration");
     }
     return r;
 }
@@ -360,8 +361,8 @@ std::string quoted(const std::string& text) {
 }
 
 std::string timingJson(const PaperTiming& t) {
-    return "{ \"assembly_ms\": " + number(t.assembly) + ", \"factorize_ms\": " +
-           number(t.factorize) + ", \"solve_ms\": " + number(t.solve) +
+    return "{ \"assembly_ms\": " + number(t.assembly) +
+           ", \"factorize_ms\": " + number(t.factorize) + ", \"solve_ms\": " + number(t.solve) +
            ", \"total_ms\": " + number(t.total) + " }";
 }
 
@@ -369,13 +370,29 @@ std::string timingJson(const PaperTiming& t) {
 
 PaperReport runPaperBench(const PaperBenchOptions& options) {
     PaperReport report;
+    char start[160];
+    std::snprintf(start, sizeof start,
+                  "Gaussian noise sigma = %g x the %s on the control points, seed %u, three "
+                  "boundary vertices fixed",
+                  options.noise,
+                  options.noiseOfDiameter ? "diameter" : "mean control-polygon edge length",
+                  options.seed);
+    report.start = start;
+    report.iterations = options.iterations;
+    report.runs = std::max(1, options.runs);
     for (const PaperCandidate& c : candidates()) {
-        if (!options.models.empty() &&
-            std::find(options.models.begin(), options.models.end(), c.name) ==
-                options.models.end()) {
+        if (!options.models.empty() && std::find(options.models.begin(), options.models.end(),
+                                                 c.name) == options.models.end()) {
             continue;
         }
         report.rows.push_back(runRow(c, options));
+    }
+    // The timings are only as good as the machine was quiet: the load says how shared it was.
+    if (std::FILE* file = std::fopen("/proc/loadavg", "r")) {
+        if (std::fscanf(file, "%lf", &report.loadAverage) != 1) {
+            report.loadAverage = -1.0;
+        }
+        std::fclose(file);
     }
     return report;
 }
@@ -386,7 +403,10 @@ void printPaperBench(const PaperReport& report, bool json, std::ostream& out) {
         out << "{\n  \"blas\": " << quoted(blas.describe())
             << ",\n  \"blas_kernel\": " << quoted(blas.kernel)
             << ",\n  \"blas_kernel_chosen_by\": " << quoted(blas.kernelChosenBy)
-            << ",\n  \"rows\": [";
+            << ",\n  \"start\": " << quoted(report.start)
+            << ",\n  \"iterations\": " << report.iterations
+            << ",\n  \"timing_runs\": " << report.runs
+            << ",\n  \"load_average\": " << number(report.loadAverage) << ",\n  \"rows\": [";
         for (std::size_t i = 0; i < report.rows.size(); ++i) {
             const PaperRowResult& r = report.rows[i];
             const solver::QualityMeasures& q = r.quality;
@@ -427,25 +447,27 @@ void printPaperBench(const PaperReport& report, bool json, std::ostream& out) {
     if (!blas.kernel.empty()) {
         out << "BLAS kernel: " << blas.kernel << ", chosen by " << blas.kernelChosenBy << "\n";
     }
+    out << "Start: " << report.start << "; " << report.iterations << " iterations; timing: "
+        << "medians over iterations 2.." << report.iterations << ", then over " << report.runs
+        << " runs; load average " << number(report.loadAverage) << "\n";
     char line[512];
-    std::snprintf(line, sizeof line, "%-7s %-8s %4s %7s %7s %4s %8s %8s %8s %8s %8s %7s %7s\n",
-                  "row", "example", "size", "vars", "paper", "10%", "asm ms", "fact ms",
-                  "solve ms", "ms/iter", "base ms", "/paper", "base×");
+    std::snprintf(line, sizeof line, "%-7s %-10s %4s %7s %7s %4s %8s %8s %8s %8s %8s %7s %7s\n",
+                  "row", "example", "size", "vars", "paper", "10%", "asm ms", "fact ms", "solve ms",
+                  "ms/iter", "base ms", "/paper", "base×");
     out << line;
     for (const PaperRowResult& r : report.rows) {
         std::snprintf(line, sizeof line,
-                      "%-7s %-8s %4d %7d %7d %4s %8.3f %8.3f %8.3f %8.3f %8.3f %7.4f %7.1f\n",
+                      "%-7s %-10s %4d %7d %7d %4s %8.3f %8.3f %8.3f %8.3f %8.3f %7.4f %7.1f\n",
                       r.name.c_str(), r.example.c_str(), r.size, r.variables, r.paper.variables,
                       r.withinTenPercent ? "yes" : "no", r.ours.assembly, r.ours.factorize,
-                      r.ours.solve, r.ours.total, r.baseline.total, r.paperRatio,
-                      r.baselineRatio);
+                      r.ours.solve, r.ours.total, r.baseline.total, r.paperRatio, r.baselineRatio);
         out << line;
     }
     out << "\nQuality after the iterations (δ, |K| on the mesh sampled at 8 per interval; paper's "
            "δ from Fig. 17)\n";
-    std::snprintf(line, sizeof line, "%-7s %9s %9s %9s %9s %9s %9s %9s %9s %9s\n", "row",
-                  "δ mean", "δ max", "paper δ̄", "paper δ⁺", "|K| mean", "|K| max", "det max",
-                  "edge err", "residual");
+    std::snprintf(line, sizeof line, "%-7s %9s %9s %9s %9s %9s %9s %9s %9s %9s\n", "row", "δ mean",
+                  "δ max", "paper δ̄", "paper δ⁺", "|K| mean", "|K| max", "det max", "edge err",
+                  "residual");
     out << line;
     for (const PaperRowResult& r : report.rows) {
         const solver::QualityMeasures& q = r.quality;

@@ -65,8 +65,8 @@ struct PaperRowResult {
     std::string note; // why the row differs from the paper's figure, if it does
     std::string status;
     double residual = 0.0;
-    PaperTiming ours;     // per iteration, medians
-    PaperTiming baseline; // the rebuild baseline (ExperimentalOptions::baseline)
+    PaperTiming ours;           // per iteration, medians
+    PaperTiming baseline;       // the rebuild baseline (ExperimentalOptions::baseline)
     double paperRatio = 0.0;    // ours / the paper's s/iter
     double baselineRatio = 0.0; // baseline / ours
     solver::QualityMeasures quality;
@@ -79,6 +79,10 @@ struct PaperRowResult {
 struct PaperReport {
     std::vector<PaperRowResult> rows;
     PaperDrag drag;
+    std::string start;       // the start the rows were solved from, in words
+    int iterations = 0;      // per run
+    int runs = 0;            // timing runs per row (medians)
+    double loadAverage = -1; // the machine's 1-minute load average at the end (-1: unknown)
 };
 
 PaperReport runPaperBench(const PaperBenchOptions& options);
