@@ -221,12 +221,22 @@ int main(int argc, char** argv) {
         paperOptions.log = [](const std::string& line) { std::cerr << line << "\n"; };
         devsurf::bench::PaperReport report = devsurf::bench::runPaperBench(paperOptions);
         for (const auto& row : report.rows) {
-            if (row.paper.figure == "12" && paperOptions.sizeCap == 0) {
-                devsurf::bench::DragBenchOptions dragOptions;
-                const auto d = devsurf::bench::runSurfaceDrag(row.name, row.surface, dragOptions);
-                report.drag = {true,    d.model,         d.variables, d.medianMs,
-                               d.p95Ms, d.residualAfter, d.error};
+            if (row.paper.figure != "12" || paperOptions.sizeCap != 0) {
+                continue;
             }
+            auto drag = [&row](devsurf::model::CompositeSurface surface, const char* development) {
+                const auto d = devsurf::bench::runSurfaceDrag(row.name, surface, {});
+                return devsurf::bench::PaperDrag{true,       d.model, development,     d.variables,
+                                                 d.medianMs, d.p95Ms, d.residualAfter, d.error};
+            };
+            std::cerr << "paper: drag of " << row.name << "\n";
+            report.drag = drag(row.surface, "development on its sheet");
+            devsurf::model::CompositeSurface free = row.surface;
+            free.setSheetDomain({});
+            report.dragReferences.push_back(drag(free, "development on a free sheet (fixed)"));
+            devsurf::model::CompositeSurface without = row.surface;
+            without.setKeepsDevelopment(false);
+            report.dragReferences.push_back(drag(without, "without the development"));
         }
         devsurf::bench::printPaperBench(report, options.json, std::cout);
         return 0;

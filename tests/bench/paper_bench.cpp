@@ -435,12 +435,20 @@ void printPaperBench(const PaperReport& report, bool json, std::ostream& out) {
                 << ", \"sheet_stretch_mm\": " << number(r.sheetStretchMm) << " }";
         }
         out << "\n  ]";
-        const PaperDrag& d = report.drag;
-        out << ",\n  \"drag\": { \"measured\": " << (d.measured ? "true" : "false")
-            << ", \"model\": " << quoted(d.model) << ", \"variables\": " << d.variables
-            << ", \"median_ms\": " << number(d.medianMs) << ", \"p95_ms\": " << number(d.p95Ms)
-            << ", \"residual_after\": " << number(d.residualAfter)
-            << ", \"error\": " << quoted(d.error) << " }\n}\n";
+        auto dragJson = [](const PaperDrag& d) {
+            return "{ \"measured\": " + std::string(d.measured ? "true" : "false") +
+                   ", \"model\": " + quoted(d.model) +
+                   ", \"development\": " + quoted(d.development) +
+                   ", \"variables\": " + std::to_string(d.variables) +
+                   ", \"median_ms\": " + number(d.medianMs) + ", \"p95_ms\": " + number(d.p95Ms) +
+                   ", \"residual_after\": " + number(d.residualAfter) +
+                   ", \"error\": " + quoted(d.error) + " }";
+        };
+        out << ",\n  \"drag\": " << dragJson(report.drag) << ",\n  \"drag_references\": [";
+        for (std::size_t i = 0; i < report.dragReferences.size(); ++i) {
+            out << (i == 0 ? "\n    " : ",\n    ") << dragJson(report.dragReferences[i]);
+        }
+        out << "\n  ]\n}\n";
         return;
     }
     out << "BLAS: " << blas.describe() << "\n";
@@ -484,13 +492,17 @@ void printPaperBench(const PaperReport& report, bool json, std::ostream& out) {
             << r.developmentVariables << " development variables)"
             << (r.note.empty() ? "" : "; " + r.note) << "\n";
     }
-    const PaperDrag& d = report.drag;
-    if (d.measured) {
+    std::vector<PaperDrag> drags{report.drag};
+    drags.insert(drags.end(), report.dragReferences.begin(), report.dragReferences.end());
+    for (const PaperDrag& d : drags) {
+        if (!d.measured) {
+            continue;
+        }
         std::snprintf(line, sizeof line,
-                      "Drag of %s with its development (%d variables): move to applied median "
-                      "%.1f ms, p95 %.1f ms, residual after %.2e%s%s\n",
-                      d.model.c_str(), d.variables, d.medianMs, d.p95Ms, d.residualAfter,
-                      d.error.empty() ? "" : "; failed: ", d.error.c_str());
+                      "Drag of %s, %s (%d variables): move to applied median %.1f ms, p95 %.1f "
+                      "ms, residual after %.2e%s%s\n",
+                      d.model.c_str(), d.development.c_str(), d.variables, d.medianMs, d.p95Ms,
+                      d.residualAfter, d.error.empty() ? "" : "; failed: ", d.error.c_str());
         out << line;
     }
 }

@@ -46,6 +46,7 @@ struct PaperTiming {
 struct PaperDrag {
     bool measured = false;
     std::string model;
+    std::string development; // how the dragged surface keeps its development, in words
     int variables = 0;
     double medianMs = 0.0;
     double p95Ms = 0.0;
@@ -79,6 +80,9 @@ struct PaperRowResult {
 struct PaperReport {
     std::vector<PaperRowResult> rows;
     PaperDrag drag;
+    // The same drag with a free sheet (the development fixed) and without the development, to
+    // show what the sheet's shape and the development cost.
+    std::vector<PaperDrag> dragReferences;
     std::string start;       // the start the rows were solved from, in words
     int iterations = 0;      // per run
     int runs = 0;            // timing runs per row (medians)
