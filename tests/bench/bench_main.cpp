@@ -3,6 +3,7 @@
 #include "bench_models.h"
 #include "benchmark.h"
 #include "drag_bench.h"
+#include "paper_bench.h"
 #include "quality_study.h"
 
 #include "model/examples.h"
@@ -138,6 +139,10 @@ int main(int argc, char** argv) {
     devsurf::bench::BenchmarkOptions options;
     std::string study;
     bool drag = false;
+    bool paper = false;
+    bool haveStart = false;
+    bool haveIterations = false;
+    devsurf::bench::PaperBenchOptions paperOptions;
     devsurf::bench::StudyStart start;
     devsurf::bench::StudyOptions studyOptions;
     bool trace = false;
@@ -149,6 +154,10 @@ int main(int argc, char** argv) {
             options.models.push_back(argv[++i]);
         } else if (arg == "--drag") {
             drag = true;
+        } else if (arg == "--paper") {
+            paper = true;
+        } else if (arg == "--paper-size-cap" && i + 1 < argc) {
+            paperOptions.sizeCap = std::atoi(argv[++i]);
         } else if (arg == "--no-ceres") {
             options.runCeres = false;
         } else if (arg == "--blas") {
@@ -162,8 +171,10 @@ int main(int argc, char** argv) {
             study = argv[++i];
         } else if (arg == "--edge-noise" && i + 1 < argc) {
             start = {devsurf::bench::NoiseScale::EdgeLength, std::atof(argv[++i])};
+            haveStart = true;
         } else if (arg == "--diameter-noise" && i + 1 < argc) {
             start = {devsurf::bench::NoiseScale::Diameter, std::atof(argv[++i])};
+            haveStart = true;
         } else if (arg == "--ceres") {
             studyOptions.ceres = true;
         } else if (arg == "--session") {
@@ -174,6 +185,7 @@ int main(int argc, char** argv) {
             studyOptions.seeds = std::atoi(argv[++i]);
         } else if (arg == "--iterations" && i + 1 < argc) {
             studyOptions.iterations = std::atoi(argv[++i]);
+            haveIterations = true;
         } else if (arg == "--set" && i + 1 < argc) {
             const std::string assignment = argv[++i];
             const auto equals = assignment.find('=');
@@ -186,11 +198,48 @@ int main(int argc, char** argv) {
         } else {
             std::cerr << "usage: devsurf-bench [--json] [--model NAME]... [--no-ceres | --blas]\n"
                          "       devsurf-bench --drag [--json]\n"
+                         "       devsurf-bench --paper [--model ROW]... [--paper-size-cap N] "
+                         "[--edge-noise F | "
+                         "--diameter-noise F] [--iterations N] [--json]\n"
                          "       devsurf-bench --study MODEL [--edge-noise F | --diameter-noise F]"
                          " [--seeds N] [--iterations N] [--set NAME=VALUE]... [--session | "
                          "--ceres] [--trace]\n";
             return 1;
         }
+    }
+    if (paper) {
+        paperOptions.models = options.models;
+        if (haveStart) {
+            paperOptions.noiseOfDiameter = start.scale == devsurf::bench::NoiseScale::Diameter;
+            paperOptions.noise = start.fraction;
+        }
+        if (haveIterations) {
+            paperOptions.iterations = studyOptions.iterations;
+        }
+        // The Fig. 17 rows like for like, then the drag benchmark's drag on the Fig. 12 row's
+        // surface with its development (skipped on a capped, quick run).
+        paperOptions.log = [](const std::string& line) { std::cerr << line << "\n"; };
+        devsurf::bench::PaperReport report = devsurf::bench::runPaperBench(paperOptions);
+        for (const auto& row : report.rows) {
+            if (row.paper.figure != "12" || paperOptions.sizeCap != 0) {
+                continue;
+            }
+            auto drag = [&row](devsurf::model::CompositeSurface surface, const char* development) {
+                const auto d = devsurf::bench::runSurfaceDrag(row.name, surface, {});
+                return devsurf::bench::PaperDrag{true,       d.model, development,     d.variables,
+                                                 d.medianMs, d.p95Ms, d.residualAfter, d.error};
+            };
+            std::cerr << "paper: drag of " << row.name << "\n";
+            report.drag = drag(row.surface, "development on its sheet");
+            devsurf::model::CompositeSurface free = row.surface;
+            free.setSheetDomain({});
+            report.dragReferences.push_back(drag(free, "development on a free sheet (fixed)"));
+            devsurf::model::CompositeSurface without = row.surface;
+            without.setKeepsDevelopment(false);
+            report.dragReferences.push_back(drag(without, "without the development"));
+        }
+        devsurf::bench::printPaperBench(report, options.json, std::cout);
+        return 0;
     }
     if (drag) {
         devsurf::bench::DragBenchOptions dragOptions;

@@ -3,12 +3,15 @@
 #include "model/examples.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace devsurf::bench {
 
 using model::Vec3;
 
-model::CompositeSurface makeTwoStripSheet(int intervals) {
+constexpr double kPi = 3.14159265358979323846;
+
+model::CompositeSurface makeTwoStripSheet(int intervals, double bow) {
     const double width = 300.0;
     const double height = 100.0;
     const model::SplineSpace space{3, 2, intervals};
@@ -34,11 +37,16 @@ model::CompositeSurface makeTwoStripSheet(int intervals) {
             for (int k = 1; k <= space.degree; ++k) {
                 greville += knots[static_cast<std::size_t>(i + k)];
             }
-            points.push_back({width * greville / space.degree, height * j, 0.0});
+            const double x = width * greville / space.degree;
+            const double y = height * j + (j == 1 ? bow * std::sin(kPi * x / width) : 0.0);
+            points.push_back({x, y, 0.0});
         }
         points.front() = s.position(left[j]);
         points.back() = s.position(right[j]);
-        s.setSpline(left[j], right[j], space, points);
+        const model::EdgeId edge = s.setSpline(left[j], right[j], space, points);
+        if (j == 1 && bow != 0.0) {
+            s.setCreaseCondition(edge, model::CreaseCondition::CurvedFold);
+        }
     }
     return s;
 }

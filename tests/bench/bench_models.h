@@ -25,9 +25,11 @@ struct BenchModel {
     PaperRow paper;
 };
 
-// Two strips side by side between three parallel straight S-edges of `intervals` cubic C²
-// intervals each (Fig. 13: 36 control points for 9 intervals).
-model::CompositeSurface makeTwoStripSheet(int intervals);
+// Two strips side by side between three S-edges of `intervals` cubic C² intervals each
+// (Fig. 13: 36 control points for 9 intervals), straight and parallel; with `bow` (mm) the
+// middle one bows towards +y by up to that much and carries the curved-fold condition (one
+// curved crease in two strips, as in Fig. 13).
+model::CompositeSurface makeTwoStripSheet(int intervals, double bow = 0.0);
 
 // The benchmark's models: Fig. 8, Fig. 13, Fig. 12 and a model of about 40,000 variables
 // (compared with Fig. 15a, the paper's row of that size). `names` selects (empty: all).

@@ -258,14 +258,29 @@ SolveStallRow runSolve(const std::string& name, model::CompositeSurface surface,
 
 } // namespace
 
-DragBenchReport runDragBench(const DragBenchOptions& options) {
-    std::unique_ptr<QCoreApplication> application;
-    if (!QCoreApplication::instance()) {
-        static int argc = 1;
-        static char name[] = "devsurf-bench";
-        static char* argv[] = {name, nullptr};
-        application = std::make_unique<QCoreApplication>(argc, argv);
+namespace {
+
+// A QCoreApplication for the drags' event loops if the process has none yet.
+std::unique_ptr<QCoreApplication> ensureApplication() {
+    if (QCoreApplication::instance()) {
+        return nullptr;
     }
+    static int argc = 1;
+    static char name[] = "devsurf-bench";
+    static char* argv[] = {name, nullptr};
+    return std::make_unique<QCoreApplication>(argc, argv);
+}
+
+} // namespace
+
+DragBenchRow runSurfaceDrag(const std::string& name, const model::CompositeSurface& surface,
+                            const DragBenchOptions& options) {
+    const std::unique_ptr<QCoreApplication> application = ensureApplication();
+    return runDrag(name, surface, options);
+}
+
+DragBenchReport runDragBench(const DragBenchOptions& options) {
+    const std::unique_ptr<QCoreApplication> application = ensureApplication();
     auto log = [&options](const std::string& line) {
         if (options.log) {
             options.log(line);

@@ -63,6 +63,10 @@ struct DragBenchReport {
 
 // Runs on the calling thread's event loop (a QCoreApplication is made if there is none).
 DragBenchReport runDragBench(const DragBenchOptions& options);
+// The drag of runDragBench on one surface (as given: one that keeps its development is dragged
+// holding its sheet), through the worker on the calling thread's event loop.
+DragBenchRow runSurfaceDrag(const std::string& name, const model::CompositeSurface& surface,
+                            const DragBenchOptions& options);
 void printDragBench(const DragBenchReport& report, bool json, std::ostream& out);
 
 } // namespace devsurf::bench

@@ -1,5 +1,6 @@
 #include "bench_models.h"
 #include "benchmark.h"
+#include "paper_bench.h"
 #include "quality_study.h"
 
 #include "test_registry.h"
@@ -139,6 +140,55 @@ private slots:
         } else {
             QCOMPARE(withCeres.front().ceresResidual, -1.0);
         }
+    }
+
+    // devsurf-bench --paper on small sizes (capped at 2): every Fig. 17 row is reported with
+    // the fields the issue asks for; the development is counted among the variables.
+    void paperModeReportsEveryRow() {
+        bench::PaperBenchOptions options;
+        options.sizeCap = 2;
+        options.runs = 1;
+        options.iterations = 3;
+        const bench::PaperReport report = bench::runPaperBench(options);
+        std::ostringstream out;
+        bench::printPaperBench(report, true, out);
+        QJsonParseError error;
+        const QJsonDocument document =
+            QJsonDocument::fromJson(QByteArray::fromStdString(out.str()), &error);
+        QVERIFY2(error.error == QJsonParseError::NoError, qPrintable(error.errorString()));
+        const QJsonObject root = document.object();
+        QVERIFY(!root.value("blas").toString().isEmpty());
+        QVERIFY(root.contains("blas_kernel"));
+        QVERIFY(!root.value("start").toString().isEmpty());
+        QCOMPARE(root.value("iterations").toInt(), 3);
+        const QJsonArray rows = root.value("rows").toArray();
+        QCOMPARE(rows.size(), 4);
+        const char* figures[] = {"8", "13", "12", "15a"};
+        const int paperVariables[] = {6147, 3795, 29574, 39648};
+        for (int k = 0; k < 4; ++k) {
+            const QJsonObject row = rows[k].toObject();
+            QCOMPARE(row.value("paper_figure").toString(), QString(figures[k]));
+            QCOMPARE(row.value("paper_variables").toInt(), paperVariables[k]);
+            QVERIFY(row.value("size").toInt() >= 1 && row.value("size").toInt() <= 2);
+            // The sheet is a shape, so the development is variables of the problem.
+            QVERIFY(row.value("development_variables").toInt() > 0);
+            QVERIFY(row.value("variables").toInt() > row.value("development_variables").toInt());
+            QVERIFY(row.contains("within_10_percent"));
+            for (const char* timing : {"ours", "baseline"}) {
+                const QJsonObject t = row.value(timing).toObject();
+                for (const char* phase : {"assembly_ms", "factorize_ms", "solve_ms", "total_ms"}) {
+                    QVERIFY2(t.value(phase).toDouble(-1.0) >= 0.0, phase);
+                }
+            }
+            for (const char* field :
+                 {"paper_s_per_iter", "ratio_to_paper", "baseline_over_ours", "flatness_mean",
+                  "flatness_max", "paper_flatness_mean", "paper_flatness_max", "curvature_mean",
+                  "curvature_max", "det_max", "development_edge_error", "sheet_stretch_mm"}) {
+                QVERIFY2(row.value(field).isDouble(), field);
+            }
+            QVERIFY(row.value("development_edge_error").toDouble() >= 0.0);
+        }
+        QVERIFY(root.value("drag").toObject().contains("median_ms"));
     }
 
     void unknownModelIsRefused() {
