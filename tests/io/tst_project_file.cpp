@@ -356,6 +356,34 @@ private slots:
         QVERIFY(io::decodeProject(again) == project);
     }
 
+    void versionFiveSampleStaysLoadable() {
+        // Committed once with format version 5 (fig8 with vertices 0 and 3 pinned, holding its
+        // sheet on a 300 x 300 mm rectangle, and the two curves of an SVG drawing: a line and a
+        // circle); it must load with every later version.
+        const QString path = QStringLiteral(DEVSURF_TEST_DATA_DIR "/sample-v5.devsurf");
+        const std::string bytes = readAll(path);
+        QCOMPARE(bytes.substr(8, 4), std::string("\x05\x00\x00\x00", 4));
+        const model::Project project = io::loadProjectFile(path);
+        QCOMPARE(project.surfaces.size(), std::size_t(1));
+        const model::CompositeSurface& s = project.surfaces[0];
+        QCOMPARE(s.name(), std::string("fig8"));
+        QCOMPARE(s.pinnedVertices(), (std::set<model::VertexId>{0, 3}));
+        QVERIFY(s.keepsDevelopment());
+        QCOMPARE(s.development().size(), std::size_t(76));
+        QVERIFY(s.sheetDomain().shape == model::SheetShape::Rectangle);
+        QCOMPARE(s.sheetDomain().width, 300.0);
+        QCOMPARE(s.sheetDomain().height, 300.0);
+        QCOMPARE(project.referenceCurves.size(), std::size_t(2));
+        QCOMPARE(project.referenceCurves[0].name, std::string("SVG path 1"));
+        QCOMPARE(project.referenceCurves[0].points.size(), std::size_t(2));
+        QVERIFY(project.referenceCurves[0].points[0] == model::Vec3(0, 0, 0));
+        QCOMPARE(project.referenceCurves[1].points.size(), std::size_t(49));
+        QVERIFY(project.referenceCurves[1].points[0] == model::Vec3(70, -25, 0));
+        QVERIFY(s.validate().empty());
+        // Saved again it holds the same project.
+        QVERIFY(io::decodeProject(io::encodeProject(project)) == project);
+    }
+
     void referenceCurvesRoundTripByteIdentical() {
         model::Project project = model::makeExample("sheet", 0);
         project.referenceCurves.push_back(
