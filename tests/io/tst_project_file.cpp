@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <functional>
 #include <limits>
 #include <set>
 
@@ -124,10 +125,10 @@ private slots:
         const std::string header = "serialization::archive ";
         const std::size_t at = payload.find(header);
         QVERIFY(at != std::string::npos);
-        // "22 serialization::archive 19 0 2 ..." : tracking 0, version 2 of Project.
+        // "22 serialization::archive 19 0 3 ..." : tracking 0, version 3 of Project.
         std::size_t pos = payload.find(' ', at + header.size()); // after library version
         pos = payload.find(' ', pos + 1);                        // after tracking level
-        QCOMPARE(payload[pos + 1], '2');
+        QCOMPARE(payload[pos + 1], '3');
         payload[pos + 1] = '9';
         std::string patched = bytes.substr(0, 20);
         const std::uint32_t crc = io::crc32(payload.data(), payload.size());
@@ -352,7 +353,7 @@ private slots:
         QVERIFY(project == expected);
         // Saved again it is a file of the current format holding the same project.
         const std::string again = io::encodeProject(project);
-        QCOMPARE(again.substr(8, 4), std::string("\x05\x00\x00\x00", 4));
+        QCOMPARE(again.substr(8, 4), std::string("\x06\x00\x00\x00", 4));
         QVERIFY(io::decodeProject(again) == project);
     }
 
@@ -380,6 +381,7 @@ private slots:
         QCOMPARE(project.referenceCurves[1].points.size(), std::size_t(49));
         QVERIFY(project.referenceCurves[1].points[0] == model::Vec3(70, -25, 0));
         QVERIFY(s.validate().empty());
+        QVERIFY(project.referenceShapes.empty()); // format 5 had none
         // Saved again it holds the same project.
         QVERIFY(io::decodeProject(io::encodeProject(project)) == project);
     }
@@ -419,5 +421,86 @@ private slots:
     }
 };
 
+namespace {
+
+// A tetrahedron (a mesh with normals) and a point cloud without normals, with coordinates that
+// a decimal round trip could change.
+model::Project withReferenceShapes(model::Project project) {
+    model::ReferenceShape mesh;
+    mesh.name = "tetrahedron";
+    mesh.source = "/data/tet.obj";
+    mesh.points = {{0, 0, 0}, {1.0 / 3.0, 0, 0}, {0, 2e-300, 0}, {0, 0, -1e6}};
+    mesh.normals = {{0, 0, 1}, {0.6, 0.8, 0}, {0, -1, 0}, {-1.0 / 7.0, 0, 0}};
+    mesh.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+    project.referenceShapes.push_back(mesh);
+    model::ReferenceShape cloud;
+    cloud.name = "scan";
+    cloud.points = {{0.1, 0.2, 0.3}, {-4.5, 5.25, 6}, {7, 8, 9.125}};
+    project.referenceShapes.push_back(cloud);
+    return project;
+}
+
+} // namespace
+
+class TstProjectShapes : public QObject {
+    Q_OBJECT
+private slots:
+    void referenceShapesRoundTripByteIdentical() {
+        const model::Project project = withReferenceShapes(model::makeExample("sheet", 0));
+        const std::string bytes = io::encodeProject(project);
+        QCOMPARE(bytes.substr(8, 4), std::string("\x06\x00\x00\x00", 4));
+        const model::Project loaded = io::decodeProject(bytes);
+        QCOMPARE(loaded.referenceShapes.size(), std::size_t(2));
+        QVERIFY(loaded.referenceShapes[0] == project.referenceShapes[0]); // every bit
+        QVERIFY(!loaded.referenceShapes[0].isPointCloud());
+        QVERIFY(loaded.referenceShapes[1].isPointCloud());
+        QVERIFY(loaded.referenceShapes[1].normals.empty());
+        QVERIFY(loaded == project);
+        QCOMPARE(io::encodeProject(loaded), bytes);
+        // Shapes are part of the project: without one the file differs.
+        model::Project without = project;
+        without.referenceShapes.pop_back();
+        QVERIFY(!(without == project));
+        QVERIFY(io::encodeProject(without) != bytes);
+        // Through a file on disk as well.
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("shapes.devsurf"));
+        io::saveProjectFile(project, path);
+        QVERIFY(io::loadProjectFile(path) == project);
+        QCOMPARE(readAll(path), bytes);
+    }
+
+    void damagedReferenceShapesAreRefused() {
+        const model::Project good = withReferenceShapes(model::makeExample("sheet", 0));
+        auto refusal = [&good](const std::function<void(model::ReferenceShape&)>& damage) {
+            model::Project project = good;
+            damage(project.referenceShapes[0]);
+            return messageOf(io::encodeProject(project));
+        };
+        std::string message = refusal([](model::ReferenceShape& s) { s.triangles[2][1] = 4; });
+        QVERIFY2(message.find("triangle corner 4") != std::string::npos, message.c_str());
+        message = refusal([](model::ReferenceShape& s) { s.triangles[0][0] = -1; });
+        QVERIFY2(message.find("triangle corner -1") != std::string::npos, message.c_str());
+        // The text archive cannot even read a NaN or an infinity back: refused all the same.
+        message = refusal([](model::ReferenceShape& s) {
+            s.points[3].y = std::numeric_limits<double>::quiet_NaN();
+        });
+        QVERIFY2(message.find("damaged") != std::string::npos, message.c_str());
+        message = refusal([](model::ReferenceShape& s) {
+            s.normals[0].z = std::numeric_limits<double>::infinity();
+        });
+        QVERIFY2(message.find("damaged") != std::string::npos, message.c_str());
+        message = refusal([](model::ReferenceShape& s) { s.normals.pop_back(); });
+        QVERIFY2(message.find("3 normals for 4 points") != std::string::npos, message.c_str());
+        message = refusal([](model::ReferenceShape& s) {
+            s.points.clear();
+            s.normals.clear();
+            s.triangles.clear();
+        });
+        QVERIFY2(message.find("without points") != std::string::npos, message.c_str());
+    }
+};
+
 DEVSURF_REGISTER_TEST(TstProjectFile);
+DEVSURF_REGISTER_TEST(TstProjectShapes);
 #include "tst_project_file.moc"
