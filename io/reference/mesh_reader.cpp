@@ -54,10 +54,14 @@ private:
 
 // Polygons come out as triangle fans (OpenMesh's triangle mesh); faces that would make an edge
 // shared by more than two faces are left out by OpenMesh.
-ReferenceImportResult readMeshFile(const std::string& path, std::uint64_t expectedPoints) {
+ReferenceImportResult readMeshFile(const std::string& path, std::uint64_t expectedPoints,
+                                   bool pointNormals) {
     Mesh mesh;
-    mesh.request_vertex_normals();
-    OpenMesh::IO::Options options = OpenMesh::IO::Options::VertexNormal;
+    OpenMesh::IO::Options options;
+    if (pointNormals) {
+        mesh.request_vertex_normals();
+        options += OpenMesh::IO::Options::VertexNormal;
+    }
     bool read = false;
     try {
         const QuietOpenMesh quiet;
@@ -87,7 +91,7 @@ ReferenceImportResult readMeshFile(const std::string& path, std::uint64_t expect
             return failure(Code::NotANumber, "point " + std::to_string(vertex.idx() + 1));
         }
     }
-    if (options.check(OpenMesh::IO::Options::VertexNormal)) {
+    if (pointNormals && options.check(OpenMesh::IO::Options::VertexNormal)) {
         shape.normals.reserve(mesh.n_vertices());
         for (const auto vertex : mesh.vertices()) {
             const OpenMesh::Vec3d& n = mesh.normal(vertex);

@@ -103,7 +103,8 @@ ReferenceImportResult read(const std::string& path, ReferenceFormat format, std:
     if (!check.at(1.0)) {
         return failure(Code::Cancelled);
     }
-    ReferenceImportResult result = readMeshFile(path, checked.points);
+    ReferenceImportResult result =
+        readMeshFile(path, checked.points, format != ReferenceFormat::Stl);
     ProgressTicker done(progress, 0.95, 1.0);
     if (!result.error && !done.at(1.0)) {
         return failure(Code::Cancelled);

@@ -47,6 +47,8 @@ struct MeshCheck {
 };
 MeshCheck checkMeshFile(const std::string& path, ReferenceFormat format, std::uint64_t size,
                         ProgressTicker& progress);
-ReferenceImportResult readMeshFile(const std::string& path, std::uint64_t expectedPoints);
+// pointNormals: whether the format can give a normal per point (STL gives one per facet).
+ReferenceImportResult readMeshFile(const std::string& path, std::uint64_t expectedPoints,
+                                   bool pointNormals);
 
 } // namespace devsurf::io::reference

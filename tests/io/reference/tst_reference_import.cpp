@@ -228,6 +228,7 @@ private slots:
             QCOMPARE(shape.triangles.size(), std::size_t(4));
             QVERIFY2(orientedTriangles(shape) == expected, sample.name);
             QVERIFY(isSound(shape));
+            QVERIFY(shape.normals.empty()); // none in these files (STL's are per facet)
             QCOMPARE(shape.source, std::string(sample.name));
             QCOMPARE(shape.name, std::string(sample.name).substr(0, std::strlen(sample.name) - 4));
         }
@@ -258,6 +259,20 @@ private slots:
         QCOMPARE(result.shape.triangles.size(), std::size_t(12));
         QCOMPARE(result.shape.normals.size(), std::size_t(8));
         QCOMPARE(result.shape.points[7], model::Vec3(1, 1, 1));
+        // A PLY square with normals, one quad.
+        const std::string ply = "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\n"
+                                "property double y\nproperty double z\nproperty float nx\n"
+                                "property float ny\nproperty float nz\nelement face 1\n"
+                                "property list uchar uint vertex_indices\nend_header\n"
+                                "0 0 0 0 0 1\n1 0 0 0 0 1\n1 1 0 0 0 1\n0 1 0.125 0 0 1\n"
+                                "4 0 1 2 3\n";
+        const io::ReferenceImportResult square = io::readReferenceShape(write("square.ply", ply));
+        QVERIFY(!square.error);
+        QCOMPARE(square.shape.points.size(), std::size_t(4));
+        QCOMPARE(square.shape.triangles.size(), std::size_t(2));
+        QCOMPARE(square.shape.normals.size(), std::size_t(4));
+        QCOMPARE(square.shape.normals[3], model::Vec3(0, 0, 1));
+        QCOMPARE(square.shape.points[3], model::Vec3(0, 1, 0.125));
     }
 
     void pointCloudsWithAndWithoutNormals() {
