@@ -1,5 +1,6 @@
 #include "line_reader.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdlib>
 #include <cstring>
@@ -7,7 +8,7 @@
 namespace devsurf::io {
 
 LineReader::LineReader(const std::string& path)
-    : m_in(path, std::ios::binary), m_buffer(kMaxLineLength + 1) {}
+    : m_in(path, std::ios::binary), m_buffer(1u << 16) {}
 
 // Moves the unread rest to the front and reads more behind it; false when nothing was added.
 bool LineReader::fill() {
@@ -50,6 +51,10 @@ bool LineReader::next(std::string_view& line) {
         if (pending >= kMaxLineLength) {
             m_tooLong = true;
             return false;
+        }
+        if (pending == m_buffer.size()) {
+            // A line longer than the buffer: room for it, up to the limit.
+            m_buffer.resize(std::min(2 * m_buffer.size(), kMaxLineLength + 1));
         }
         if (!fill()) {
             if (m_end == m_begin) {

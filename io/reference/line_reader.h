@@ -8,8 +8,9 @@
 
 namespace devsurf::io {
 
-// Reads a text file line by line through one fixed buffer, so that files of hundreds of
-// megabytes stream without being held whole. A line longer than kMaxLineLength is an error.
+// Reads a text file line by line through one buffer (64 KB, larger only for a longer line), so
+// that files of hundreds of megabytes stream without being held whole. A line longer than
+// kMaxLineLength is an error.
 class LineReader {
 public:
     static constexpr std::size_t kMaxLineLength = 1u << 20;

@@ -124,9 +124,82 @@ Error checkObj(const std::string& path, std::uint64_t size, ProgressTicker& prog
     return std::nullopt;
 }
 
+// ASCII STL, line by line: solid, then per facet "facet normal", "outer loop", three
+// "vertex x y z", "endloop", "endfacet", and "endsolid". OpenMesh's reader keeps whatever it
+// finds in a line it cannot read (an uninitialised point), so every line is checked here.
+Error checkStlText(const std::string& path, std::uint64_t size, ProgressTicker& progress) {
+    LineReader reader(path);
+    if (!reader.isOpen()) {
+        return problem(Code::Unreadable);
+    }
+    enum class In { Nothing, Solid, Facet, Loop, LoopDone };
+    In state = In::Nothing;
+    int corners = 0;
+    std::uint64_t triangles = 0;
+    std::vector<std::string_view> fields;
+    std::string_view line;
+    auto numbers = [&fields](std::size_t from, model::Vec3& p) {
+        return fields.size() == from + 3 && parseNumber(fields[from], p.x) &&
+               parseNumber(fields[from + 1], p.y) && parseNumber(fields[from + 2], p.z);
+    };
+    while (reader.next(line)) {
+        if (!ticks(reader, progress, size)) {
+            return problem(Code::Cancelled);
+        }
+        splitFields(line, fields);
+        if (fields.empty()) {
+            continue;
+        }
+        const std::string_view word = fields[0];
+        model::Vec3 p;
+        bool fits = false;
+        if (state == In::Nothing) {
+            fits = word == "solid";
+            state = In::Solid;
+        } else if (state == In::Solid && word == "facet") {
+            fits = fields.size() >= 2 && fields[1] == "normal" && numbers(2, p);
+            state = In::Facet;
+        } else if (state == In::Solid && word == "endsolid") {
+            fits = true;
+            state = In::Nothing;
+        } else if (state == In::Facet) {
+            fits = word == "outer" && fields.size() == 2 && fields[1] == "loop";
+            state = In::Loop;
+            corners = 0;
+        } else if (state == In::Loop && word == "vertex") {
+            fits = numbers(1, p) && ++corners <= 3;
+            if (fits && !isSane(p)) {
+                return problem(Code::NotANumber, lineText(reader.lineNumber()));
+            }
+        } else if (state == In::Loop && word == "endloop") {
+            fits = corners == 3 && fields.size() == 1;
+            state = In::LoopDone;
+        } else if (state == In::LoopDone) {
+            fits = word == "endfacet" && fields.size() == 1;
+            state = In::Solid;
+            if (++triangles > kMaxReferenceTriangles) {
+                return problem(Code::TooLarge, "more than " +
+                                                   std::to_string(kMaxReferenceTriangles) +
+                                                   " triangles");
+            }
+        }
+        if (!fits) {
+            return problem(reader.lineWasEnded() ? Code::Damaged : Code::Truncated,
+                           lineText(reader.lineNumber()) + " is not what an STL file holds there");
+        }
+    }
+    if (reader.tooLong()) {
+        return problem(Code::Damaged, lineText(reader.lineNumber() + 1) + " is too long");
+    }
+    if (state != In::Nothing) {
+        return problem(Code::Truncated, "it does not end with 'endsolid'");
+    }
+    return triangles == 0 ? problem(Code::NoPoints) : std::nullopt;
+}
+
 // Binary STL: an 80-byte header, the triangle count, 50 bytes per triangle, and nothing else.
 // ASCII STL: "solid" … "endsolid".
-Error checkStl(const std::string& path, std::uint64_t size) {
+Error checkStl(const std::string& path, std::uint64_t size, ProgressTicker& progress) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         return problem(Code::Unreadable);
@@ -157,18 +230,8 @@ Error checkStl(const std::string& path, std::uint64_t size) {
         return problem(Code::Damaged, "it holds more bytes than its " + std::to_string(triangles) +
                                           " triangles need");
     }
-    // ASCII: the last word that is not white space must belong to "endsolid [name]".
-    const std::uint64_t tail = std::min<std::uint64_t>(size, 4096);
-    in.clear();
-    in.seekg(static_cast<std::streamoff>(size - tail));
-    std::string end(static_cast<std::size_t>(tail), '\0');
-    in.read(end.data(), static_cast<std::streamsize>(tail));
-    const std::size_t last = end.rfind("endsolid");
-    if (last == std::string::npos ||
-        end.find_first_of("\n", last) < end.find_last_not_of(" \t\r\n")) {
-        return problem(Code::Truncated, "it does not end with 'endsolid'");
-    }
-    return std::nullopt;
+    in.close();
+    return checkStlText(path, size, progress);
 }
 
 // Buffered big or little endian binary input for PLY bodies.
@@ -498,7 +561,7 @@ MeshCheck checkMeshFile(const std::string& path, ReferenceFormat format, std::ui
         check.error = checkPly(path, size, progress, check.points);
         break;
     case ReferenceFormat::Stl:
-        check.error = checkStl(path, size);
+        check.error = checkStl(path, size, progress);
         break;
     case ReferenceFormat::Off:
     case ReferenceFormat::Xyz:

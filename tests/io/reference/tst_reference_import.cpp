@@ -454,7 +454,12 @@ private slots:
             const std::string path =
                 write(std::string("m") + std::to_string(i) + "-" + sample.name, bytes);
             const io::ReferenceImportResult result = io::readReferenceShape(path);
+            // Read again, the same: no reader may keep what it did not find in the file.
+            const io::ReferenceImportResult again = io::readReferenceShape(path);
             QFile::remove(QString::fromStdString(path));
+            QVERIFY2(again.shape == result.shape &&
+                         again.error.has_value() == result.error.has_value(),
+                     qPrintable(QString::number(i)));
             if (result.error) {
                 QVERIFY2(result.error->detail.find('\n') == std::string::npos,
                          qPrintable(QString::number(i)));
