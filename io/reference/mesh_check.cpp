@@ -45,8 +45,18 @@ bool objIndexFits(std::string_view field, std::uint64_t count) {
                      : static_cast<std::uint64_t>(-(index + 1)) < count;
 }
 
+// The 0-based element an OBJ index that fits names.
+std::uint64_t objIndex(std::string_view field, std::uint64_t count) {
+    long long index = 0;
+    parseInteger(field, index);
+    return index > 0 ? static_cast<std::uint64_t>(index - 1)
+                     : count - static_cast<std::uint64_t>(-index);
+}
+
+// Also gathers the normal of every point from the faces' "v//n" corners (the first one named
+// for it): OpenMesh leaves a point's normal uninitialised where no face names one.
 Error checkObj(const std::string& path, std::uint64_t size, ProgressTicker& progress,
-               std::uint64_t& points) {
+               std::uint64_t& points, std::vector<model::Vec3>& pointNormals) {
     LineReader reader(path);
     if (!reader.isOpen()) {
         return problem(Code::Unreadable);
@@ -54,6 +64,8 @@ Error checkObj(const std::string& path, std::uint64_t size, ProgressTicker& prog
     std::uint64_t texture = 0;
     std::uint64_t normals = 0;
     std::uint64_t triangles = 0;
+    std::vector<model::Vec3> normalList;
+    std::vector<std::int64_t> normalOfPoint; // index into normalList, -1 for none
     std::vector<std::string_view> fields;
     std::string_view line;
     while (reader.next(line)) {
@@ -75,14 +87,32 @@ Error checkObj(const std::string& path, std::uint64_t size, ProgressTicker& prog
             if (!isSane(p)) {
                 return problem(Code::NotANumber, lineText(reader.lineNumber()));
             }
+            normalOfPoint.push_back(-1);
             if (++points > kMaxReferencePoints) {
                 return problem(Code::TooLarge,
                                "more than " + std::to_string(kMaxReferencePoints) + " points");
             }
-        } else if (fields[0] == "vt") {
-            ++texture;
-        } else if (fields[0] == "vn") {
-            ++normals;
+        } else if (fields[0] == "vt" || fields[0] == "vn") {
+            // Likewise a normal: OpenMesh keeps an uninitialised one for a line it cannot read.
+            const bool normal = fields[0] == "vn";
+            model::Vec3 v;
+            const bool read = normal
+                                  ? fields.size() >= 4 && parseNumber(fields[1], v.x) &&
+                                        parseNumber(fields[2], v.y) && parseNumber(fields[3], v.z)
+                                  : fields.size() >= 2 && parseNumber(fields[1], v.x) &&
+                                        (fields.size() < 3 || parseNumber(fields[2], v.y));
+            if (!read) {
+                return problem(reader.lineWasEnded() ? Code::Damaged : Code::Truncated,
+                               lineText(reader.lineNumber()) + " is not a " +
+                                   (normal ? "normal" : "texture coordinate"));
+            }
+            if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
+                return problem(Code::NotANumber, lineText(reader.lineNumber()));
+            }
+            ++(normal ? normals : texture);
+            if (normal) {
+                normalList.push_back(v);
+            }
         } else if (fields[0] == "f") {
             if (fields.size() < 4) {
                 return problem(reader.lineWasEnded() ? Code::BadFaces : Code::Truncated,
@@ -109,6 +139,13 @@ Error checkObj(const std::string& path, std::uint64_t size, ProgressTicker& prog
                                                        std::string(fields[i].substr(0, 40)) +
                                                        "' names no point of the file");
                 }
+                if (!parts[2].empty()) {
+                    const std::uint64_t point = objIndex(parts[0], points);
+                    if (normalOfPoint[point] < 0) {
+                        normalOfPoint[point] =
+                            static_cast<std::int64_t>(objIndex(parts[2], normals));
+                    }
+                }
             }
             triangles += fields.size() - 3;
             if (triangles > kMaxReferenceTriangles) {
@@ -120,6 +157,13 @@ Error checkObj(const std::string& path, std::uint64_t size, ProgressTicker& prog
     }
     if (reader.tooLong()) {
         return problem(Code::Damaged, lineText(reader.lineNumber() + 1) + " is too long");
+    }
+    if (!normalOfPoint.empty() && std::all_of(normalOfPoint.begin(), normalOfPoint.end(),
+                                              [](std::int64_t n) { return n >= 0; })) {
+        pointNormals.reserve(normalOfPoint.size());
+        for (std::int64_t n : normalOfPoint) {
+            pointNormals.push_back(normalList[static_cast<std::size_t>(n)]);
+        }
     }
     return std::nullopt;
 }
@@ -555,7 +599,7 @@ MeshCheck checkMeshFile(const std::string& path, ReferenceFormat format, std::ui
     MeshCheck check;
     switch (format) {
     case ReferenceFormat::Obj:
-        check.error = checkObj(path, size, progress, check.points);
+        check.error = checkObj(path, size, progress, check.points, check.normals);
         break;
     case ReferenceFormat::Ply:
         check.error = checkPly(path, size, progress, check.points);

@@ -104,7 +104,10 @@ ReferenceImportResult read(const std::string& path, ReferenceFormat format, std:
         return failure(Code::Cancelled);
     }
     ReferenceImportResult result =
-        readMeshFile(path, checked.points, format != ReferenceFormat::Stl);
+        readMeshFile(path, checked.points, format == ReferenceFormat::Ply);
+    if (!result.error && format == ReferenceFormat::Obj) {
+        result.shape.normals = std::move(checked.normals);
+    }
     ProgressTicker done(progress, 0.95, 1.0);
     if (!result.error && !done.at(1.0)) {
         return failure(Code::Cancelled);

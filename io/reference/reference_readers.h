@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace devsurf::io::reference {
 
@@ -43,11 +44,13 @@ ReferenceImportResult readOffFile(const std::string& path, std::uint64_t size,
 // a header they can parse), then read by OpenMesh.
 struct MeshCheck {
     std::optional<ReferenceImportError> error;
-    std::uint64_t points = 0; // as many as OpenMesh must read; 0 where it merges them (STL)
+    std::uint64_t points = 0;         // as many as OpenMesh must read; 0 where it merges them (STL)
+    std::vector<model::Vec3> normals; // OBJ: one per point where the faces name one for each
 };
 MeshCheck checkMeshFile(const std::string& path, ReferenceFormat format, std::uint64_t size,
                         ProgressTicker& progress);
-// pointNormals: whether the format can give a normal per point (STL gives one per facet).
+// pointNormals: whether OpenMesh's normals per point are the file's (PLY's are; STL gives one
+// per facet, OBJ's come from the check).
 ReferenceImportResult readMeshFile(const std::string& path, std::uint64_t expectedPoints,
                                    bool pointNormals);
 

@@ -133,6 +133,37 @@ std::string stlBinaryText() {
     return text;
 }
 
+// A unit cube of quads with a normal per corner, its faces in "v//n" form.
+std::string cubeObjText() {
+    std::string obj;
+    for (int i = 0; i < 8; ++i) {
+        obj += "v " + std::to_string(i & 1) + " " + std::to_string((i >> 1) & 1) + " " +
+               std::to_string((i >> 2) & 1) + "\n";
+    }
+    for (int i = 0; i < 8; ++i) {
+        obj += "vn " + num((i & 1) - 0.5) + " " + num(((i >> 1) & 1) - 0.5) + " " +
+               num(((i >> 2) & 1) - 0.5) + "\n";
+    }
+    for (const char* face : {"1 3 4 2", "5 6 8 7", "1 2 6 5", "3 7 8 4", "1 5 7 3", "2 4 8 6"}) {
+        obj += "f";
+        for (const QString& corner : QString(face).split(' ')) {
+            obj += " " + corner.toStdString() + "//" + corner.toStdString();
+        }
+        obj += "\n";
+    }
+    return obj;
+}
+
+// A square of one quad in a PLY file with a normal per point.
+std::string squarePlyText() {
+    return "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\n"
+           "property double y\nproperty double z\nproperty float nx\n"
+           "property float ny\nproperty float nz\nelement face 1\n"
+           "property list uchar uint vertex_indices\nend_header\n"
+           "0 0 0 0 0 1\n1 0 0 0 0 1\n1 1 0 0 0 1\n0 1 0.125 0 0 1\n"
+           "4 0 1 2 3\n";
+}
+
 struct Sample {
     const char* name;
     std::string bytes;
@@ -235,37 +266,22 @@ private slots:
     }
 
     void polygonsAreTriangulatedAndNormalsKept() {
-        // A cube of quads with per-vertex normals, its faces in "v//n" form.
-        std::string obj;
-        for (int i = 0; i < 8; ++i) {
-            obj += "v " + std::to_string(i & 1) + " " + std::to_string((i >> 1) & 1) + " " +
-                   std::to_string((i >> 2) & 1) + "\n";
-        }
-        for (int i = 0; i < 8; ++i) {
-            obj += "vn " + num((i & 1) - 0.5) + " " + num(((i >> 1) & 1) - 0.5) + " " +
-                   num(((i >> 2) & 1) - 0.5) + "\n";
-        }
-        for (const char* face :
-             {"1 3 4 2", "5 6 8 7", "1 2 6 5", "3 7 8 4", "1 5 7 3", "2 4 8 6"}) {
-            obj += "f";
-            for (const QString& corner : QString(face).split(' ')) {
-                obj += " " + corner.toStdString() + "//" + corner.toStdString();
-            }
-            obj += "\n";
-        }
+        const std::string obj = cubeObjText();
         const io::ReferenceImportResult result = io::readReferenceShape(write("cube.OBJ", obj));
         QVERIFY(!result.error);
         QCOMPARE(result.shape.points.size(), std::size_t(8));
         QCOMPARE(result.shape.triangles.size(), std::size_t(12));
         QCOMPARE(result.shape.normals.size(), std::size_t(8));
         QCOMPARE(result.shape.points[7], model::Vec3(1, 1, 1));
-        // A PLY square with normals, one quad.
-        const std::string ply = "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\n"
-                                "property double y\nproperty double z\nproperty float nx\n"
-                                "property float ny\nproperty float nz\nelement face 1\n"
-                                "property list uchar uint vertex_indices\nend_header\n"
-                                "0 0 0 0 0 1\n1 0 0 0 0 1\n1 1 0 0 0 1\n0 1 0.125 0 0 1\n"
-                                "4 0 1 2 3\n";
+        QCOMPARE(result.shape.normals[7], model::Vec3(0.5, 0.5, 0.5));
+        QCOMPARE(result.shape.normals[2], model::Vec3(-0.5, 0.5, -0.5));
+        // Without a normal named for every point there are none (OpenMesh would invent some).
+        const io::ReferenceImportResult partial =
+            io::readReferenceShape(write("partial.obj", cubeObjText() + "v 9 9 9\n"));
+        QVERIFY(!partial.error);
+        QCOMPARE(partial.shape.points.size(), std::size_t(9));
+        QVERIFY(partial.shape.normals.empty());
+        const std::string ply = squarePlyText();
         const io::ReferenceImportResult square = io::readReferenceShape(write("square.ply", ply));
         QVERIFY(!square.error);
         QCOMPARE(square.shape.points.size(), std::size_t(4));
@@ -412,12 +428,14 @@ private slots:
         // Thousands of damaged copies of every sample (truncated, bytes flipped, inserted,
         // deleted, digits changed): each is refused with a code or read as a sound shape.
         std::vector<Sample> samples = meshSamples();
+        samples.push_back({"cube.obj", cubeObjText()});
+        samples.push_back({"square.ply", squarePlyText()});
         samples.push_back({"cloud.xyz", "1 2 3 0 0 1\n4 5 6 1 0 0\n7 8 9 0 1 0\n"});
         samples.push_back({"cloud.pts", "3\n1 2 3 9 255 0 0\n4 5 6 9 0 255 0\n7 8 9 9 0 0 255\n"});
         std::mt19937 rng(20261128);
         int refused = 0;
         int loaded = 0;
-        const int total = 8000;
+        const int total = 12000;
         static const char* const hostile[] = {"-1",    "0",           "4294967295", "nan", "1e999",
                                               "99999", "-2147483649", "3",          "7",   "inf"};
         for (int i = 0; i < total; ++i) {
