@@ -13,6 +13,7 @@
 #include <QJsonObject>
 #include <QJsonValue>
 
+#include <array>
 #include <vector>
 
 namespace devsurf::io {
@@ -206,12 +207,27 @@ std::string interchangeJson(const model::Project& project, int samplesPerInterva
             {"points", array(curve.points, [](const model::Vec3& p) { return point(p); })},
         });
     }
+    QJsonArray shapes;
+    for (const model::ReferenceShape& shape : project.referenceShapes) {
+        shapes.append(QJsonObject{
+            {"name", QString::fromStdString(shape.name)},
+            {"source", QString::fromStdString(shape.source)},
+            {"pointCount", integer(static_cast<long long>(shape.points.size()))},
+            {"points", array(shape.points, [](const model::Vec3& p) { return point(p); })},
+            {"normals", array(shape.normals, [](const model::Vec3& n) { return point(n); })},
+            {"triangles", array(shape.triangles,
+                                [](const std::array<int, 3>& t) {
+                                    return QJsonArray{integer(t[0]), integer(t[1]), integer(t[2])};
+                                })},
+        });
+    }
     const QJsonObject root{
         {"format", "devsurf-interchange"},
         {"version", kInterchangeVersion},
         {"units", QString::fromStdString(project.units)},
         {"surfaces", surfaces},
         {"referenceCurves", curves},
+        {"referenceShapes", shapes},
     };
     return QJsonDocument(root).toJson(QJsonDocument::Compact).toStdString();
 }

@@ -17,8 +17,8 @@
 // Class versions of the archive. A reader refuses versions newer than these itself: Boost 1.74
 // passes any version through to the load functions.
 namespace devsurf::io::versions {
-// 2: the reference curves (project file format 5).
-inline constexpr unsigned kProject = 2;
+// 2: the reference curves (project file format 5). 3: the reference shapes (format 6).
+inline constexpr unsigned kProject = 3;
 // 2: pinned vertices (project file format 2). 3: the surface id (project file format 3).
 // 4: the kept development (project file format 4). 5: the sheet's shape (format 5).
 inline constexpr unsigned kSurface = 5;
@@ -101,6 +101,79 @@ template <class Archive> std::string loadString(Archive& ar, std::uint32_t limit
         text.push_back(static_cast<char>(code));
     }
     return text;
+}
+
+bool isFinite(const model::Vec3& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+// A reference shape: name, source, its points, its normals (none or one per point) and its
+// triangles (none for a point cloud) as indices into the points.
+template <class Archive> void saveShape(Archive& ar, const model::ReferenceShape& shape) {
+    saveString(ar, shape.name);
+    saveString(ar, shape.source);
+    const auto points = static_cast<std::uint32_t>(shape.points.size());
+    ar << points;
+    for (const model::Vec3& point : shape.points) {
+        ar << point;
+    }
+    const auto normals = static_cast<std::uint32_t>(shape.normals.size());
+    ar << normals;
+    for (const model::Vec3& normal : shape.normals) {
+        ar << normal;
+    }
+    const auto triangles = static_cast<std::uint32_t>(shape.triangles.size());
+    ar << triangles;
+    for (const std::array<int, 3>& t : shape.triangles) {
+        ar << t[0] << t[1] << t[2];
+    }
+}
+
+template <class Archive> model::ReferenceShape loadShape(Archive& ar) {
+    model::ReferenceShape shape;
+    shape.name = loadString(ar, 4096);
+    shape.source = loadString(ar, 4096);
+    std::uint32_t points = 0;
+    ar >> points;
+    checkedCount(points, 100'000'000, "points of a reference shape", 3);
+    if (points == 0) {
+        throw FileError("it holds a reference shape without points");
+    }
+    shape.points.resize(points);
+    for (model::Vec3& point : shape.points) {
+        ar >> point;
+        if (!isFinite(point)) {
+            throw FileError("it holds a reference shape with a coordinate that is not a number");
+        }
+    }
+    std::uint32_t normals = 0;
+    ar >> normals;
+    if (normals != 0 && normals != points) {
+        throw FileError("it holds a reference shape with " + std::to_string(normals) +
+                        " normals for " + std::to_string(points) + " points");
+    }
+    shape.normals.resize(normals);
+    for (model::Vec3& normal : shape.normals) {
+        ar >> normal;
+        if (!isFinite(normal)) {
+            throw FileError("it holds a reference shape with a normal that is not a number");
+        }
+    }
+    std::uint32_t triangles = 0;
+    ar >> triangles;
+    checkedCount(triangles, 200'000'000, "triangles of a reference shape", 3);
+    shape.triangles.resize(triangles);
+    for (std::array<int, 3>& t : shape.triangles) {
+        ar >> t[0] >> t[1] >> t[2];
+        for (int corner : t) {
+            if (corner < 0 || static_cast<std::uint32_t>(corner) >= points) {
+                throw FileError("it holds a reference shape with a triangle corner " +
+                                std::to_string(corner) + " that is not one of its " +
+                                std::to_string(points) + " points");
+            }
+        }
+    }
+    return shape;
 }
 
 } // namespace
@@ -340,6 +413,11 @@ template <class Archive> void save(Archive& ar, const Project& p, unsigned /*ver
             ar << point;
         }
     }
+    const auto shapes = static_cast<std::uint32_t>(p.referenceShapes.size());
+    ar << shapes;
+    for (const ReferenceShape& shape : p.referenceShapes) {
+        devsurf::io::saveShape(ar, shape);
+    }
 }
 
 template <class Archive> void load(Archive& ar, Project& p, unsigned version) {
@@ -380,6 +458,15 @@ template <class Archive> void load(Archive& ar, Project& p, unsigned version) {
                 }
             }
             p.referenceCurves.push_back(std::move(curve));
+        }
+    }
+    p.referenceShapes.clear();
+    if (version >= 3) {
+        std::uint32_t shapes = 0;
+        ar >> shapes;
+        checkedCount(shapes, 100'000, "reference shapes", 6);
+        for (std::uint32_t i = 0; i < shapes; ++i) {
+            p.referenceShapes.push_back(devsurf::io::loadShape(ar));
         }
     }
 }

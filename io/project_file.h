@@ -14,8 +14,9 @@ namespace devsurf::io {
 // 1: the first release. 2: pinned vertices. 3: smooth rulings, surface ids. 4: the kept
 // development of every surface (older files open without one, as they were). 5: the sheet
 // shape each kept development is confined to, the project's reference curves (older files
-// open with a free sheet and without curves).
-inline constexpr std::uint32_t kProjectFormatVersion = 5;
+// open with a free sheet and without curves). 6: the project's reference shapes, meshes and
+// point clouds (older files open without them).
+inline constexpr std::uint32_t kProjectFormatVersion = 6;
 inline constexpr std::size_t kProjectHeaderSize = 24;
 inline constexpr std::uint64_t kMaxProjectFileSize = 512ull * 1024 * 1024;
 

@@ -2,6 +2,7 @@
 
 #include "composite_surface.h"
 #include "reference_curve.h"
+#include "reference_shape.h"
 
 #include <algorithm>
 #include <set>
@@ -11,11 +12,12 @@
 namespace devsurf::model {
 
 // Everything a project file holds: the composite developables of one design and the curves
-// it refers to.
+// and shapes it refers to.
 struct Project {
     std::string units = "mm"; // the length unit of all coordinates
     std::vector<CompositeSurface> surfaces;
     std::vector<ReferenceCurve> referenceCurves; // imported, shown, never solved for
+    std::vector<ReferenceShape> referenceShapes; // meshes and point clouds to approximate
 
     // Appends a surface with a new id (one more than the largest in use) and returns the id.
     SurfaceId addSurface(CompositeSurface surface) {
@@ -54,7 +56,7 @@ struct Project {
 
     bool operator==(const Project& other) const {
         return units == other.units && surfaces == other.surfaces &&
-               referenceCurves == other.referenceCurves;
+               referenceCurves == other.referenceCurves && referenceShapes == other.referenceShapes;
     }
 };
 

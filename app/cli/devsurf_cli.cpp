@@ -19,6 +19,7 @@
 #include "model/model_error.h"
 #include "model/surface_statistics.h"
 #include "pattern_commands.h"
+#include "reference_commands.h"
 #include "solve_command.h"
 #include "subcommands.h"
 #include "vertex_commands.h"
@@ -120,7 +121,15 @@ int commandInfo(const SubcommandArguments& args) {
               << "Format version: " << io::kProjectFormatVersion << "\n"
               << "Units: " << project.units << "\n"
               << "Surfaces: " << project.surfaces.size() << "\n"
-              << "Reference curves: " << project.referenceCurves.size() << "\n";
+              << "Reference curves: " << project.referenceCurves.size() << "\n"
+              << "Reference shapes: " << project.referenceShapes.size() << "\n";
+    for (std::size_t i = 0; i < project.referenceShapes.size(); ++i) {
+        const model::ReferenceShape& shape = project.referenceShapes[i];
+        std::cout << "Reference shape " << i + 1 << ": " << shape.name << " ("
+                  << counted(shape.points.size(), "point", "points") << ", "
+                  << counted(shape.triangles.size(), "triangle", "triangles")
+                  << (shape.normals.empty() ? "" : ", with normals") << ")\n";
+    }
     for (std::size_t i = 0; i < project.surfaces.size(); ++i) {
         const model::CompositeSurface& surface = project.surfaces[i];
         const model::SurfaceStatistics stats = model::surfaceStatistics(surface);
@@ -242,14 +251,14 @@ int run(const std::vector<std::string>& args) {
     }
     using Runner = int (*)(const SubcommandArguments&);
     static const std::pair<const char*, Runner> runners[] = {
-        {"example", commandExample},    {"info", commandInfo},
-        {"pin", runPinCommand},         {"sheet", runSheetCommand},
-        {"crease", runCreaseCommand},   {"smooth", runSmoothCommand},
-        {"validate", commandValidate},  {"export-json", commandExportJson},
-        {"examples", commandExamples},  {"solve", commandSolve},
-        {"drag", commandDrag},          {"export", runExportPatternCommand},
-        {"report", runReportCommand},   {"import-curves", runImportCurvesCommand},
-        {"fit-edge", runFitEdgeCommand}};
+        {"example", commandExample},     {"info", commandInfo},
+        {"pin", runPinCommand},          {"sheet", runSheetCommand},
+        {"crease", runCreaseCommand},    {"smooth", runSmoothCommand},
+        {"validate", commandValidate},   {"export-json", commandExportJson},
+        {"examples", commandExamples},   {"solve", commandSolve},
+        {"drag", commandDrag},           {"export", runExportPatternCommand},
+        {"report", runReportCommand},    {"import-curves", runImportCurvesCommand},
+        {"fit-edge", runFitEdgeCommand}, {"import-reference", runImportReferenceCommand}};
     for (const auto& [name, runner] : runners) {
         if (command == name) {
             return runner(parsed);

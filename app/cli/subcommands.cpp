@@ -32,10 +32,10 @@ const std::vector<SubcommandSpec>& subcommands() {
         {"info",
          "info FILE [--vertices] [--edges] [--json]",
          "Print surfaces, faces per type, spline spaces, control points,\n"
-         "vertices and edges; --vertices lists every vertex (id, x y z,\n"
-         "pinned, boundary), --edges every edge (id, R or S, its vertices,\n"
-         "crease condition, smooth or sharp); --json prints those lists\n"
-         "as JSON.",
+         "vertices and edges, and every reference shape (name, points,\n"
+         "triangles); --vertices lists every vertex (id, x y z, pinned,\n"
+         "boundary), --edges every edge (id, R or S, its vertices, crease\n"
+         "condition, smooth or sharp); --json prints those lists as JSON.",
          {{"vertices", "", "List every vertex."},
           {"edges", "", "List every edge."},
           {"json", "", "Print the lists as JSON."}}},
@@ -185,6 +185,16 @@ const std::vector<SubcommandSpec>& subcommands() {
          "project itself (its previous version is kept as FILE.bak), never\n"
          "the curve file.",
          {{"tolerance", "MM", "Sample curves within MM (default 0.05)."}, kOutputProject}},
+        {"import-reference",
+         "import-reference FILE TARGET [--name NAME] -o OUT.devsurf",
+         "Add a mesh (OBJ, PLY, STL, OFF) or a point cloud (XYZ, PTS: one\n"
+         "point per line, x y z, optionally followed by a normal nx ny nz;\n"
+         "PTS may start with the number of points and carry more columns) to\n"
+         "the project as a reference shape, in mm, named NAME (default: the\n"
+         "file's name). Polygons become triangles. A file that cannot be read\n"
+         "changes nothing and writes nothing. The output may be the project\n"
+         "itself (its previous version is kept as FILE.bak), never the target.",
+         {{"name", "NAME", "The shape's name (default: the file's name)."}, kOutputProject}},
         {"fit-edge",
          "fit-edge FILE --edge E [--curve K] [--surface K] -o OUT.devsurf",
          "Lay spline edge E (a crease or a boundary) onto reference curve K\n"

@@ -328,6 +328,50 @@ private slots:
             }
         }
     }
+
+    void referenceShapesAreWritten() {
+        model::Project project = model::makeExample("sheet");
+        QVERIFY(parse(io::interchangeJson(project, 2))["referenceShapes"].toArray().isEmpty());
+        project.referenceShapes.push_back({"tet",
+                                           "tet.stl",
+                                           {{0, 0, 0}, {10, 0, 0}, {0, 1.0 / 3.0, 0}, {0, 0, -7}},
+                                           {},
+                                           {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}});
+        project.referenceShapes.push_back(
+            {"scan", "", {{1, 2, 3}, {-4, 5e-300, 6}}, {{0, 0, 1}, {0.6, 0.8, 0}}, {}});
+        const QJsonArray shapes =
+            parse(io::interchangeJson(project, 2))["referenceShapes"].toArray();
+        QCOMPARE(shapes.size(), 2);
+        for (qsizetype s = 0; s < shapes.size(); ++s) {
+            const model::ReferenceShape& shape =
+                project.referenceShapes[static_cast<std::size_t>(s)];
+            const QJsonObject object = shapes[s].toObject();
+            QCOMPARE(object["name"].toString().toStdString(), shape.name);
+            QCOMPARE(object["source"].toString().toStdString(), shape.source);
+            QCOMPARE(object["pointCount"].toInteger(), static_cast<qint64>(shape.points.size()));
+            auto compare = [](const QJsonArray& json, const std::vector<model::Vec3>& points) {
+                QCOMPARE(static_cast<std::size_t>(json.size()), points.size());
+                for (qsizetype i = 0; i < json.size(); ++i) {
+                    const model::Vec3& p = points[static_cast<std::size_t>(i)];
+                    const QJsonArray q = json[i].toArray();
+                    QCOMPARE(q[0].toDouble(), p.x); // bit for bit
+                    QCOMPARE(q[1].toDouble(), p.y);
+                    QCOMPARE(q[2].toDouble(), p.z);
+                }
+            };
+            compare(object["points"].toArray(), shape.points);
+            compare(object["normals"].toArray(), shape.normals);
+            const QJsonArray triangles = object["triangles"].toArray();
+            QCOMPARE(static_cast<std::size_t>(triangles.size()), shape.triangles.size());
+            for (qsizetype t = 0; t < triangles.size(); ++t) {
+                for (qsizetype k = 0; k < 3; ++k) {
+                    QCOMPARE(triangles[t].toArray()[k].toInteger(),
+                             static_cast<qint64>(shape.triangles[static_cast<std::size_t>(t)]
+                                                                [static_cast<std::size_t>(k)]));
+                }
+            }
+        }
+    }
 };
 
 DEVSURF_REGISTER_TEST(TstInterchangeJson);

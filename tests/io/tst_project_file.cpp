@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <functional>
 #include <limits>
 #include <set>
 
@@ -124,10 +125,10 @@ private slots:
         const std::string header = "serialization::archive ";
         const std::size_t at = payload.find(header);
         QVERIFY(at != std::string::npos);
-        // "22 serialization::archive 19 0 2 ..." : tracking 0, version 2 of Project.
+        // "22 serialization::archive 19 0 3 ..." : tracking 0, version 3 of Project.
         std::size_t pos = payload.find(' ', at + header.size()); // after library version
         pos = payload.find(' ', pos + 1);                        // after tracking level
-        QCOMPARE(payload[pos + 1], '2');
+        QCOMPARE(payload[pos + 1], '3');
         payload[pos + 1] = '9';
         std::string patched = bytes.substr(0, 20);
         const std::uint32_t crc = io::crc32(payload.data(), payload.size());
@@ -352,8 +353,37 @@ private slots:
         QVERIFY(project == expected);
         // Saved again it is a file of the current format holding the same project.
         const std::string again = io::encodeProject(project);
-        QCOMPARE(again.substr(8, 4), std::string("\x05\x00\x00\x00", 4));
+        QCOMPARE(again.substr(8, 4), std::string("\x06\x00\x00\x00", 4));
         QVERIFY(io::decodeProject(again) == project);
+    }
+
+    void versionFiveSampleStaysLoadable() {
+        // Committed once with format version 5 (fig8 with vertices 0 and 3 pinned, holding its
+        // sheet on a 300 x 300 mm rectangle, and the two curves of an SVG drawing: a line and a
+        // circle); it must load with every later version.
+        const QString path = QStringLiteral(DEVSURF_TEST_DATA_DIR "/sample-v5.devsurf");
+        const std::string bytes = readAll(path);
+        QCOMPARE(bytes.substr(8, 4), std::string("\x05\x00\x00\x00", 4));
+        const model::Project project = io::loadProjectFile(path);
+        QCOMPARE(project.surfaces.size(), std::size_t(1));
+        const model::CompositeSurface& s = project.surfaces[0];
+        QCOMPARE(s.name(), std::string("fig8"));
+        QCOMPARE(s.pinnedVertices(), (std::set<model::VertexId>{0, 3}));
+        QVERIFY(s.keepsDevelopment());
+        QCOMPARE(s.development().size(), std::size_t(76));
+        QVERIFY(s.sheetDomain().shape == model::SheetShape::Rectangle);
+        QCOMPARE(s.sheetDomain().width, 300.0);
+        QCOMPARE(s.sheetDomain().height, 300.0);
+        QCOMPARE(project.referenceCurves.size(), std::size_t(2));
+        QCOMPARE(project.referenceCurves[0].name, std::string("SVG path 1"));
+        QCOMPARE(project.referenceCurves[0].points.size(), std::size_t(2));
+        QVERIFY(project.referenceCurves[0].points[0] == model::Vec3(0, 0, 0));
+        QCOMPARE(project.referenceCurves[1].points.size(), std::size_t(49));
+        QVERIFY(project.referenceCurves[1].points[0] == model::Vec3(70, -25, 0));
+        QVERIFY(s.validate().empty());
+        QVERIFY(project.referenceShapes.empty()); // format 5 had none
+        // Saved again it holds the same project.
+        QVERIFY(io::decodeProject(io::encodeProject(project)) == project);
     }
 
     void referenceCurvesRoundTripByteIdentical() {
@@ -391,5 +421,86 @@ private slots:
     }
 };
 
+namespace {
+
+// A tetrahedron (a mesh with normals) and a point cloud without normals, with coordinates that
+// a decimal round trip could change.
+model::Project withReferenceShapes(model::Project project) {
+    model::ReferenceShape mesh;
+    mesh.name = "tetrahedron";
+    mesh.source = "/data/tet.obj";
+    mesh.points = {{0, 0, 0}, {1.0 / 3.0, 0, 0}, {0, 2e-300, 0}, {0, 0, -1e6}};
+    mesh.normals = {{0, 0, 1}, {0.6, 0.8, 0}, {0, -1, 0}, {-1.0 / 7.0, 0, 0}};
+    mesh.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+    project.referenceShapes.push_back(mesh);
+    model::ReferenceShape cloud;
+    cloud.name = "scan";
+    cloud.points = {{0.1, 0.2, 0.3}, {-4.5, 5.25, 6}, {7, 8, 9.125}};
+    project.referenceShapes.push_back(cloud);
+    return project;
+}
+
+} // namespace
+
+class TstProjectShapes : public QObject {
+    Q_OBJECT
+private slots:
+    void referenceShapesRoundTripByteIdentical() {
+        const model::Project project = withReferenceShapes(model::makeExample("sheet", 0));
+        const std::string bytes = io::encodeProject(project);
+        QCOMPARE(bytes.substr(8, 4), std::string("\x06\x00\x00\x00", 4));
+        const model::Project loaded = io::decodeProject(bytes);
+        QCOMPARE(loaded.referenceShapes.size(), std::size_t(2));
+        QVERIFY(loaded.referenceShapes[0] == project.referenceShapes[0]); // every bit
+        QVERIFY(!loaded.referenceShapes[0].isPointCloud());
+        QVERIFY(loaded.referenceShapes[1].isPointCloud());
+        QVERIFY(loaded.referenceShapes[1].normals.empty());
+        QVERIFY(loaded == project);
+        QCOMPARE(io::encodeProject(loaded), bytes);
+        // Shapes are part of the project: without one the file differs.
+        model::Project without = project;
+        without.referenceShapes.pop_back();
+        QVERIFY(!(without == project));
+        QVERIFY(io::encodeProject(without) != bytes);
+        // Through a file on disk as well.
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("shapes.devsurf"));
+        io::saveProjectFile(project, path);
+        QVERIFY(io::loadProjectFile(path) == project);
+        QCOMPARE(readAll(path), bytes);
+    }
+
+    void damagedReferenceShapesAreRefused() {
+        const model::Project good = withReferenceShapes(model::makeExample("sheet", 0));
+        auto refusal = [&good](const std::function<void(model::ReferenceShape&)>& damage) {
+            model::Project project = good;
+            damage(project.referenceShapes[0]);
+            return messageOf(io::encodeProject(project));
+        };
+        std::string message = refusal([](model::ReferenceShape& s) { s.triangles[2][1] = 4; });
+        QVERIFY2(message.find("triangle corner 4") != std::string::npos, message.c_str());
+        message = refusal([](model::ReferenceShape& s) { s.triangles[0][0] = -1; });
+        QVERIFY2(message.find("triangle corner -1") != std::string::npos, message.c_str());
+        // The text archive cannot even read a NaN or an infinity back: refused all the same.
+        message = refusal([](model::ReferenceShape& s) {
+            s.points[3].y = std::numeric_limits<double>::quiet_NaN();
+        });
+        QVERIFY2(message.find("damaged") != std::string::npos, message.c_str());
+        message = refusal([](model::ReferenceShape& s) {
+            s.normals[0].z = std::numeric_limits<double>::infinity();
+        });
+        QVERIFY2(message.find("damaged") != std::string::npos, message.c_str());
+        message = refusal([](model::ReferenceShape& s) { s.normals.pop_back(); });
+        QVERIFY2(message.find("3 normals for 4 points") != std::string::npos, message.c_str());
+        message = refusal([](model::ReferenceShape& s) {
+            s.points.clear();
+            s.normals.clear();
+            s.triangles.clear();
+        });
+        QVERIFY2(message.find("without points") != std::string::npos, message.c_str());
+    }
+};
+
 DEVSURF_REGISTER_TEST(TstProjectFile);
+DEVSURF_REGISTER_TEST(TstProjectShapes);
 #include "tst_project_file.moc"

@@ -109,6 +109,44 @@ model::Project withReferenceCurves(model::Project project) {
     return project;
 }
 
+// The project with a small mesh (with normals) and a point cloud, so that mutations reach their
+// counts, coordinates and triangle corners.
+model::Project withReferenceShapes(model::Project project) {
+    model::ReferenceShape mesh{"tetrahedron",
+                               "tet.off",
+                               {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {0, 0, 10}},
+                               {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {0.5, 0.5, 0.5}},
+                               {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}};
+    project.referenceShapes.push_back(mesh);
+    project.referenceShapes.push_back({"scan", "", {{1, 2, 3}, {-4.5, 5, 6.25}}, {}, {}});
+    return project;
+}
+
+// Whatever loads holds only shapes that the application can draw and measure.
+bool shapesAreSound(const model::Project& project) {
+    for (const model::ReferenceShape& shape : project.referenceShapes) {
+        if (shape.points.empty() ||
+            (!shape.normals.empty() && shape.normals.size() != shape.points.size())) {
+            return false;
+        }
+        for (const std::vector<model::Vec3>* list : {&shape.points, &shape.normals}) {
+            for (const model::Vec3& p : *list) {
+                if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+                    return false;
+                }
+            }
+        }
+        for (const std::array<int, 3>& t : shape.triangles) {
+            for (int corner : t) {
+                if (corner < 0 || static_cast<std::size_t>(corner) >= shape.points.size()) {
+                    return false;
+                }
+            }
+        }
+    }
+    return true;
+}
+
 } // namespace
 
 class TstProjectFuzz : public QObject {
@@ -121,11 +159,12 @@ private slots:
             io::encodeProject(model::makeExample("sheet", 2)),
             io::encodeProject(model::makeExample("cylinder", 3)),
             io::encodeProject(withReferenceCurves(model::makeExample("sheet", 1))),
+            io::encodeProject(withReferenceShapes(model::makeExample("sheet", 1))),
         };
         std::mt19937 rng(20261121);
         int rejected = 0;
         int loaded = 0;
-        const int total = 12000;
+        const int total = 15000;
         for (int i = 0; i < total; ++i) {
             const std::string& good = originals[static_cast<std::size_t>(i) % originals.size()];
             const std::string bytes = mutate(good, rng, i % 8);
@@ -140,6 +179,7 @@ private slots:
                         QVERIFY(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
                     }
                 }
+                QVERIFY2(shapesAreSound(project), qPrintable(QString::number(i)));
                 ++loaded;
             } catch (const io::FileError& error) {
                 const std::string message = error.what();

@@ -1,0 +1,109 @@
+#include "reference_commands.h"
+
+#include "cli_output.h"
+#include "io/file_error.h"
+#include "io/output_file.h"
+#include "io/project_file.h"
+
+#include <QString>
+
+#include <algorithm>
+#include <iostream>
+#include <limits>
+
+namespace devsurf::app {
+
+namespace {
+
+std::string millimetres(double value) {
+    return QString::number(value, 'g', 6).toStdString();
+}
+
+} // namespace
+
+std::string referenceImportSentence(const io::ReferenceImportError& error,
+                                    const std::string& path) {
+    using Code = io::ReferenceImportError::Code;
+    const std::string detail = error.detail.empty() ? std::string() : " (" + error.detail + ")";
+    const std::string cannot = "cannot import a reference shape from '" + path + "': ";
+    switch (error.code) {
+    case Code::UnknownFormat:
+        return cannot + "use a mesh (.obj, .ply, .stl, .off) or a point cloud (.xyz, .pts).";
+    case Code::Unreadable:
+        return "cannot read '" + path + "'" + detail + ".";
+    case Code::TooLarge:
+        return cannot + "it is too large" + detail + "; DevSurf takes up to " +
+               std::to_string(io::kMaxReferencePoints) + " points and " +
+               std::to_string(io::kMaxReferenceTriangles) + " triangles.";
+    case Code::Damaged:
+        return cannot + "its contents are damaged" + detail + ".";
+    case Code::Truncated:
+        return cannot + "it is truncated" + detail + "; copy or export it again.";
+    case Code::NotANumber:
+        return cannot + "it holds a coordinate that is not a finite number of sensible size" +
+               detail + ".";
+    case Code::BadFaces:
+        return cannot + "a face names a point the file does not have" + detail + ".";
+    case Code::NoPoints:
+        return "'" + path + "' holds no points to import.";
+    case Code::Cancelled:
+        return "the import of '" + path + "' was cancelled.";
+    }
+    return cannot + "it cannot be read.";
+}
+
+int runImportReferenceCommand(const SubcommandArguments& args) {
+    const std::vector<std::string> files = args.positionals(2, "a project file and a mesh or "
+                                                               "point cloud file");
+    const std::string& input = files[0];
+    const std::string& target = files[1];
+    const std::string output = args.required("o", "the output file is missing (use -o FILE)");
+    const std::optional<std::string> name = args.value("name");
+    if (name && (name->empty() || name->size() > 4096)) {
+        throw UsageError{"option '--name' needs a name of 1 to 4096 characters"};
+    }
+    if (!io::referenceFormatOf(target)) {
+        throw io::FileError(
+            referenceImportSentence({io::ReferenceImportError::Code::UnknownFormat, {}}, target));
+    }
+    // The target is an input that is not a project: never written over.
+    if (io::outputProblem(QString::fromStdString(output), {QString::fromStdString(target)}) ==
+        io::OutputProblem::SameAsInput) {
+        throw io::FileError("Refusing to write the project to '" + output +
+                            "': it is the reference shape being read, which would be lost. "
+                            "Choose another output file.");
+    }
+    checkOutput(output, {input}, OutputKind::Project, "the project");
+    model::Project project = io::loadProjectFile(QString::fromStdString(input));
+    io::ReferenceImportResult result = io::readReferenceShape(target);
+    if (result.error) {
+        std::cerr << "devsurf-cli: " << referenceImportSentence(*result.error, target) << "\n";
+        return 2;
+    }
+    model::ReferenceShape& shape = result.shape;
+    if (name) {
+        shape.name = *name;
+    }
+    model::Vec3 low{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+                    std::numeric_limits<double>::max()};
+    model::Vec3 high = -low;
+    for (const model::Vec3& p : shape.points) {
+        for (int k = 0; k < 3; ++k) {
+            low[k] = std::min(low[k], p[k]);
+            high[k] = std::max(high[k], p[k]);
+        }
+    }
+    const std::size_t points = shape.points.size();
+    const std::size_t triangles = shape.triangles.size();
+    const std::string shapeName = shape.name;
+    project.referenceShapes.push_back(std::move(shape));
+    writeProject(project, output);
+    std::cout << "Wrote " << output << " (reference shape '" << shapeName << "': " << points
+              << " point" << (points == 1 ? "" : "s") << ", " << triangles << " triangle"
+              << (triangles == 1 ? "" : "s") << ", " << millimetres(high.x - low.x) << " x "
+              << millimetres(high.y - low.y) << " x " << millimetres(high.z - low.z) << " mm; "
+              << project.referenceShapes.size() << " in the project)\n";
+    return 0;
+}
+
+} // namespace devsurf::app

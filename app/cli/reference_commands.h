@@ -1,0 +1,18 @@
+#pragma once
+
+#include "command_line.h"
+#include "io/reference/reference_import.h"
+
+#include <string>
+
+namespace devsurf::app {
+
+// The terminal's sentence for a mesh or point cloud that cannot be read.
+std::string referenceImportSentence(const io::ReferenceImportError& error, const std::string& path);
+
+// `devsurf-cli import-reference FILE TARGET [--name N] -o OUT`: the project with the mesh or
+// point cloud TARGET added as a reference shape. Nothing is written when it cannot be read.
+// Returns the exit code; throws UsageError and io::FileError.
+int runImportReferenceCommand(const SubcommandArguments& args);
+
+} // namespace devsurf::app
