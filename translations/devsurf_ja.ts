@@ -1271,124 +1271,140 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="86"/>
+        <location filename="../app/gui/drag_tool.cpp" line="90"/>
         <source>Drag cancelled; the design is as it was.</source>
         <translation>ドラッグを取り消しました。デザインは元のままです。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="82"/>
+        <location filename="../app/gui/drag_tool.cpp" line="86"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>%n 個の頂点をドラッグ</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="107"/>
+        <location filename="../app/gui/drag_tool.cpp" line="81"/>
+        <source>Drag vertex %1 in the sheet</source>
+        <translation>シート上で頂点 %1 をドラッグ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="109"/>
+        <source>Dragging vertex %1 %2 mm along its sheet; the surface follows. Release to finish, Esc cancels.</source>
+        <translation>頂点 %1 をシート上で %2 mm ドラッグ中。曲面が追従します。離すと確定、Esc で取り消し。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="117"/>
         <source>Sliding crease %1 by %2 mm within the surface, as far as it goes: the patch it moves into keeps %3 % of its width. Release to finish, Esc cancels.</source>
         <translation>折り線 %1 を曲面の中で %2 mm 移動中 (これ以上は動きません。移動先のパッチは幅の %3 % を保ちます)。離すと終了、Esc で取り消し。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="129"/>
+        <location filename="../app/gui/drag_tool.cpp" line="139"/>
         <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を X 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="132"/>
+        <location filename="../app/gui/drag_tool.cpp" line="142"/>
         <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を Y 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="135"/>
+        <location filename="../app/gui/drag_tool.cpp" line="145"/>
         <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を Z 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="140"/>
+        <location filename="../app/gui/drag_tool.cpp" line="150"/>
         <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>
             <numerusform>%n 個の頂点を視平面内で %1 mm ドラッグ中。離すと確定、Esc で取り消し。X、Y、Z を押し続けるとその軸に沿って動きます。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="245"/>
+        <location filename="../app/gui/drag_tool.cpp" line="254"/>
+        <source>Points of the development can be dragged only where the surface holds its sheet (Tools ▸ Hold the Sheet).</source>
+        <translation>展開図の点をドラッグできるのは、曲面がシートを保持しているときだけです (ツール ▸ シートを保持)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/drag_tool.cpp" line="331"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>頂点 %1 は固定されているためドラッグできません。先に固定を解除してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="263"/>
-        <location filename="../app/gui/drag_tool.cpp" line="306"/>
+        <location filename="../app/gui/drag_tool.cpp" line="284"/>
+        <location filename="../app/gui/drag_tool.cpp" line="349"/>
+        <location filename="../app/gui/drag_tool.cpp" line="392"/>
         <source>a drag started</source>
         <translation>ドラッグが始まりました</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="289"/>
+        <location filename="../app/gui/drag_tool.cpp" line="375"/>
         <source>There is no edge %1.</source>
         <translation>辺 %1 はありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="292"/>
+        <location filename="../app/gui/drag_tool.cpp" line="378"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>辺 %1 は折り線 (2 つのパッチの間の曲線) ではありません。ドラッグできるのは折り線だけです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="297"/>
+        <location filename="../app/gui/drag_tool.cpp" line="383"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>辺 %1 は動かせません: 両端が固定されていて、ほかに制御点がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="366"/>
+        <location filename="../app/gui/drag_tool.cpp" line="452"/>
         <source>Snapped to reference curve %1.</source>
         <translation>参照曲線 %1 にスナップしました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="416"/>
+        <location filename="../app/gui/drag_tool.cpp" line="502"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1 と %2 が頂点 %3 をその間の直線上に押さえています (2 点の距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="422"/>
+        <location filename="../app/gui/drag_tool.cpp" line="508"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1、%2、%3 が頂点 %4 をその三角形の中に押さえています (距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="90"/>
+        <location filename="../app/gui/drag_tool.cpp" line="94"/>
         <source>Drag stopped: %1 The design is as it was.</source>
         <translation>ドラッグを中止しました: %1 デザインは元のままです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="80"/>
+        <location filename="../app/gui/drag_tool.cpp" line="84"/>
         <source>Drag crease %1</source>
         <translation>折り線 %1 をドラッグ</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="94"/>
+        <location filename="../app/gui/drag_tool.cpp" line="98"/>
         <source>Drag tool: press on a vertex in the 3D view and move the mouse; the selected vertices of its surface follow. Press on a crease to slide it within its patches. Esc cancels a drag.</source>
         <translation>ドラッグツール: 3D ビューで頂点を押してマウスを動かすと、その曲面の選択した頂点が追従します。折り線を押すと、パッチの中で折り線を滑らせます。Esc でドラッグを取り消します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="100"/>
+        <location filename="../app/gui/drag_tool.cpp" line="104"/>
         <source>Drag stopped: the design changed during the drag.</source>
         <translation>ドラッグを中止しました: ドラッグ中にデザインが変更されました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="115"/>
+        <location filename="../app/gui/drag_tool.cpp" line="125"/>
         <source>Sliding crease %1 by %2 mm within the surface. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>折り線 %1 を曲面の中で %2 mm 移動中。離すと終了、Esc で取り消し。X、Y、Z を押したままにするとその軸に沿って動きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="119"/>
+        <location filename="../app/gui/drag_tool.cpp" line="129"/>
         <source>Moving crease %1 by %2 mm along the axis. Release to finish, Esc cancels.</source>
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="552"/>
-        <location filename="../app/gui/drag_tool.cpp" line="566"/>
+        <location filename="../app/gui/drag_tool.cpp" line="643"/>
+        <location filename="../app/gui/drag_tool.cpp" line="657"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1759,7 +1775,7 @@
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="223"/>
-        <location filename="../app/gui/main_window_solver.cpp" line="126"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="128"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
@@ -2007,264 +2023,264 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="29"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="30"/>
         <source>&amp;Solve</source>
         <translation>ソルブ(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="30"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="31"/>
         <source>Ctrl+Return</source>
         <translation>Ctrl+Return</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_solver.cpp" line="33"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="34"/>
         <source>Make every surface developable again: %n iteration(s) of the solver, one undo step. Pinned vertices stay where they are.</source>
         <translation>
             <numerusform>すべての曲面を可展面に戻します: ソルバーを %n 回反復し、1 回の取り消し操作にまとめます。固定した頂点は動きません。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="41"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="42"/>
         <source>Solver &amp;Iterations…</source>
         <translation>ソルバーの反復回数(&amp;I)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="43"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="44"/>
         <source>The most solver iterations Tools ▸ Solve runs; it stops earlier once the surface has converged.</source>
         <translation>ツール ▸ ソルブで実行する反復回数の上限。曲面が収束すればそれより前に終わります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="48"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="49"/>
         <source>Solver Iterations</source>
         <translation>ソルバーの反復回数</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="48"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="49"/>
         <source>Most iterations of Tools ▸ Solve:</source>
         <translation>ツール ▸ ソルブの反復回数の上限:</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="80"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="82"/>
         <source>R&amp;otate Vertices</source>
         <translation>頂点を回転(&amp;O)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="81"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="83"/>
         <source>R</source>
         <translation>R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="84"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="86"/>
         <source>Rotate tool (R): select two or more vertices, press on a vertex in the 3D view and move the mouse sideways; they turn about an axis through their centroid (vertical, or as chosen in the toolbar) and the surface follows. Esc cancels.</source>
         <translation>回転ツール (R): 2 個以上の頂点を選択し、3D ビューで頂点を押してマウスを横に動かすと、頂点が重心を通る軸 (鉛直、またはツールバーで選んだ軸) の周りに回転し、曲面が追従します。Esc で取り消します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="93"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="95"/>
         <source>Measure tool: click two points of the surface in the 3D view; their distance in space and along the sheet (as the cut pattern has it) is drawn and shown in the status bar. Select an edge for its length, two edges that meet for their angle.</source>
         <translation>計測ツール: 3D ビューで曲面上の 2 点をクリックすると、空間での距離とシートに沿った距離 (型紙上の距離) が描かれ、ステータスバーに表示されます。辺を 1 本選ぶとその長さを、交わる 2 本の辺を選ぶとその角度を計測します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="117"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="119"/>
         <source>Finish the drag first; it solves as it goes.</source>
         <translation>先にドラッグを終えてください。ドラッグ中も随時ソルブしています。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="57"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="58"/>
         <source>G</source>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="57"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="58"/>
         <source>&amp;Drag Vertices and Creases</source>
         <translation>頂点と折り線をドラッグ(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="60"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="61"/>
         <source>Drag tool: press on a vertex in the 3D view and move it, the surface follows and stays developable; press on a crease to slide it within its patches. The axis chosen in the toolbar, or holding X, Y or Z, moves along that axis; Esc cancels the drag (G).</source>
         <translation>ドラッグツール: 3D ビューで頂点を押して動かすと、曲面が追従して可展のまま保たれます。折り線を押すと、パッチの中で折り線を滑らせます。ツールバーで選んだ軸、または X、Y、Z を押したままにすると、その軸に沿って動きます。Esc でドラッグを取り消します (G)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="68"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="70"/>
         <source>S&amp;nap to Reference Curves</source>
         <translation>参照曲線にスナップ(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="70"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="72"/>
         <source>While dragging a vertex (no axis chosen), put it on the nearest reference curve drawn within 10 pixels of the mouse.</source>
         <translation>頂点をドラッグするとき (軸の指定なし)、マウスから 10 ピクセル以内に描かれた最も近い参照曲線の上に置きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="76"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="78"/>
         <source>&amp;Fit Edge to Reference Curve</source>
         <translation>辺を参照曲線に合わせる(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="91"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="93"/>
         <source>Measur&amp;e</source>
         <translation>計測(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="99"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="101"/>
         <source>Cop&amp;y Measurement</source>
         <translation>計測値をコピー(&amp;Y)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="99"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="101"/>
         <source>Ctrl+C</source>
         <translation>Ctrl+C</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="100"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="102"/>
         <source>Copy the last measurement to the clipboard (Ctrl+C).</source>
         <translation>最後の計測値をクリップボードにコピーします (Ctrl+C)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="125"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="127"/>
         <source>&amp;Cancel Solve</source>
         <translation>ソルブを中止(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="128"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="130"/>
         <source>Stop the running solve; the design stays as it is (Esc).</source>
         <translation>実行中のソルブを中止します。デザインはそのままです (Esc)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="152"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="154"/>
         <source>Solving: iteration %1 of %2, residual %3</source>
         <translation>ソルブ中: 反復 %1 / %2、残差 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="165"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="167"/>
         <source>&amp;Lengths While Dragging</source>
         <translation>ドラッグ中の長さ(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="177"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="179"/>
         <source>&amp;Automatic</source>
         <translation>自動(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="178"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="180"/>
         <source>Vertex drags and rotations keep lengths. Where the sheet cannot follow that way (the drag does not converge, folds over, collapses a strip or its development overlaps itself), the drag is replayed on release letting the sheet stretch, and the better of the two is kept; the Solver panel says so.</source>
         <translation>頂点のドラッグと回転は長さを保ちます。シートがそのままでは追従できない場合 (ドラッグが収束しない、折り返す、帯がつぶれる、または展開図が自身と重なる場合)、離したときにシートの伸びを許してドラッグをやり直し、二つのうち良い方を残します。ソルバーパネルにその旨が表示されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="182"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="184"/>
         <source>&amp;Keep Lengths</source>
         <translation>長さを保つ(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="183"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="185"/>
         <source>While dragging or rotating vertices, the sheet bends instead of stretching: far parts stay in place and curved creases keep their shape and fold. A motion the sheet cannot make without stretching then may not converge. Dragged creases always resize their patches.</source>
         <translation>頂点のドラッグや回転の間、シートは伸びずに曲がります。離れた部分はその場に留まり、曲がった折り線は形を保って折れます。シートが伸びずにはできない動きは収束しないことがあります。ドラッグした折り線は常にパッチの大きさを変えます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="187"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="189"/>
         <source>Let &amp;Stretch</source>
         <translation>伸びを許す(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="188"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="190"/>
         <source>While dragging or rotating vertices, the sheet may stretch: it stays developable and its development changes, curved creases may be pulled straight and large drags may crumple it.</source>
         <translation>頂点のドラッグや回転の間、シートは伸びることがあります。可展面のままで展開図が変わり、曲がった折り線はまっすぐに引き伸ばされることがあり、大きなドラッグではしわになることがあります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="210"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="212"/>
         <source>Motion &amp;Axis</source>
         <translation>移動の軸(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="222"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="224"/>
         <source>&amp;Free</source>
         <translation>自由(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="223"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="225"/>
         <source>Free motion: the Drag tool moves vertices in the view plane; the Rotate tool turns them about the vertical axis (Z), or about the view axis if Tools ▸ Motion Axis ▸ Rotate About the View Axis is on.</source>
         <translation>自由な移動: ドラッグツールは頂点を視平面内で動かし、回転ツールは鉛直軸 (Z) の周り、または ツール ▸ 移動の軸 ▸ 視線軸の周りに回転 がオンのときは視線軸の周りに回転させます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="226"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="228"/>
         <source>&amp;X Axis</source>
         <translation>X 軸(&amp;X)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="227"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="229"/>
         <source>X axis: the Drag tool moves vertices along X only; the Rotate tool turns them about an X-parallel axis through their centroid. Holding Y or Z overrides.</source>
         <translation>X 軸: ドラッグツールは頂点を X 方向にだけ動かし、回転ツールは重心を通る X に平行な軸の周りに回転させます。Y または Z を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="229"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="231"/>
         <source>&amp;Y Axis</source>
         <translation>Y 軸(&amp;Y)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="230"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="232"/>
         <source>Y axis: the Drag tool moves vertices along Y only; the Rotate tool turns them about a Y-parallel axis through their centroid. Holding X or Z overrides.</source>
         <translation>Y 軸: ドラッグツールは頂点を Y 方向にだけ動かし、回転ツールは重心を通る Y に平行な軸の周りに回転させます。X または Z を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="232"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="234"/>
         <source>&amp;Z Axis</source>
         <translation>Z 軸(&amp;Z)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="233"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="235"/>
         <source>Z axis: the Drag tool moves vertices along Z only; the Rotate tool turns them about a Z-parallel axis through their centroid. Holding X or Y overrides.</source>
         <translation>Z 軸: ドラッグツールは頂点を Z 方向にだけ動かし、回転ツールは重心を通る Z に平行な軸の周りに回転させます。X または Y を押し続けるとそちらが優先されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="257"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="259"/>
         <source>Rotate About the &amp;View Axis</source>
         <translation>視線軸の周りに回転(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="260"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="262"/>
         <source>With the axis choice Free, the Rotate tool turns the vertices about the viewing direction through their centroid instead of the vertical axis.</source>
         <translation>軸が「自由」のとき、回転ツールは頂点を鉛直軸ではなく重心を通る視線方向の周りに回転させます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="274"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="276"/>
         <source>Colour &amp;By</source>
         <translation>色分け(&amp;B)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="282"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="284"/>
         <source>&amp;Patch</source>
         <translation>パッチ(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="282"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="284"/>
         <source>&amp;Developability</source>
         <translation>可展性(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="282"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="284"/>
         <source>&amp;Flatness</source>
         <translation>平面性(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="283"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="285"/>
         <source>&amp;Angle Defect</source>
         <translation>角度欠損(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="285"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="287"/>
         <source>Every patch in its own colour.</source>
         <translation>パッチごとに色分けします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="286"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="288"/>
         <source>How far every sampled strip quad is from developable: the normalised |det(a−b, a′, b′)|, on a logarithmic scale.</source>
         <translation>サンプルした各帯の四角形が可展からどれだけ離れているか: 正規化した |det(a−b, a′, b′)| を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="288"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="290"/>
         <source>Flatness δ of every sampled quad: the distance of its diagonals over the mean of its two shortest edges, on a logarithmic scale.</source>
         <translation>サンプルした各四角形の平面性 δ: 対角線間の距離を最も短い 2 辺の平均で割った値を対数スケールで表示します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_solver.cpp" line="290"/>
+        <location filename="../app/gui/main_window_solver.cpp" line="292"/>
         <source>Angle defect |K| = |2π − Σ angles| at the interior vertices of the sampled mesh, in radians, on a logarithmic scale.</source>
         <translation>サンプルしたメッシュの内部頂点での角度欠損 |K| = |2π − Σ 角度| (ラジアン) を対数スケールで表示します。</translation>
     </message>

@@ -2,12 +2,15 @@
 #include "drag_tool.h"
 #include "io/project_file.h"
 #include "main_window.h"
+#include "model/development.h"
 #include "model/document/commands/apply_surface_command.h"
 #include "model/document/commands/move_vertices_command.h"
 #include "model/document/commands/pin_vertices_command.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "model/examples.h"
+#include "model/sampled_mesh.h"
+#include "model/sheet_domain.h"
 #include "panels/solver_panel.h"
 #include "solve_controller.h"
 #include "solver/quality/crease_quality.h"
@@ -108,6 +111,86 @@ private slots:
         QCOMPARE(app::SolveController::lengthsSetting(), Mode::Keep);
         QSettings().setValue(QStringLiteral("solver/keepLengths"), false);
         QCOMPARE(app::SolveController::lengthsSetting(), Mode::Stretch);
+    }
+
+    void aPointOfTheSheetIsDraggedInTheDevelopmentView() {
+        // Two-way editing: the flat `sheet` holding its sheet on its 300 × 300 mm rectangle,
+        // its bottom corners pinned. With the Drag tool on, a press on vertex 5 in the
+        // development view and a move drag its place in the sheet; the surface follows (one
+        // undo step), stays on the square, and undo and redo give the states byte for byte.
+        app::MainWindow window;
+        QVERIFY(showActiveWithExample(window, QStringLiteral("sheet")));
+        document::Document* doc = window.workspace()->document();
+        model::Project project = doc->project();
+        model::CompositeSurface& s = project.surfaces.front();
+        QVERIFY(!model::keepDevelopment(s).has_value());
+        model::SheetDomain square;
+        square.shape = model::SheetShape::Rectangle;
+        square.width = 300.0;
+        square.height = 300.0;
+        s.setSheetDomain(model::placeDomain(square, model::sampleSurface(s, 2), s.development()));
+        s.setPinned(0, true);
+        s.setPinned(3, true);
+        doc->resetProject(project);
+        constexpr model::VertexId kVertex = 5; // (100, 100): inside the sheet
+        views::DevelopmentView* view = window.developmentView();
+        view->grabImage();
+        const QPoint at = view->projectVertexToWidget(0, kVertex);
+        const auto pick = view->pickAt(at);
+        QVERIFY(pick && pick->kind == Pick::Kind::Vertex && pick->id == kVertex);
+        window.action(QStringLiteral("actionDragTool"))->setChecked(true);
+        const std::string atPress = bytesOf(window);
+        const int stackAtPress = doc->undoStack()->count();
+        const model::Vec3 start = doc->surface(0).position(kVertex);
+        QSignalSpy finished(window.dragTool(), &app::DragTool::dragFinished);
+        QWidget* gl = view->glWidget();
+        QTest::mousePress(gl, Qt::LeftButton, {}, at);
+        QVERIFY(window.dragTool()->isDragging());
+        QVERIFY(window.dragTool()->draggingSheet());
+        for (int i = 1; i <= 5; ++i) {
+            QTest::mouseMove(gl, at + QPoint(4 * i, 0));
+        }
+        QTest::mouseRelease(gl, Qt::LeftButton, {}, at + QPoint(20, 0));
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(finished.front().front().toBool(), true);
+        QCOMPARE(doc->undoStack()->count(), stackAtPress + 1);
+        QVERIFY(doc->undoStack()->undoText().contains(QStringLiteral("5")));
+        const model::CompositeSurface& result = doc->surface(0);
+        // 20 pixels along the sheet moved the vertex's place by several mm, and the vertex
+        // itself (the surface follows its sheet).
+        QVERIFY2(model::distance(result.position(kVertex), start) > 1.0,
+                 qPrintable(QString::number(model::distance(result.position(kVertex), start))));
+        QVERIFY(result.keepsDevelopment());
+        QVERIFY(model::keptSheetStretch(result) < 1e-3);
+        QVERIFY(model::largestDomainGap(result.sheetDomain(), model::sampleSurface(result, 2),
+                                        result.development()) < 1e-6);
+        QCOMPARE(result.position(0), project.surfaces.front().position(0)); // pinned
+        const std::string after = bytesOf(window);
+        doc->undoStack()->undo();
+        QCOMPARE(bytesOf(window), atPress);
+        doc->undoStack()->redo();
+        QCOMPARE(bytesOf(window), after);
+        window.action(QStringLiteral("actionDragTool"))->setChecked(false);
+    }
+
+    void aSheetThatIsNotHeldIsNotDraggedInTheDevelopmentView() {
+        app::MainWindow window;
+        QVERIFY(showActiveWithExample(window, QStringLiteral("sheet")));
+        views::DevelopmentView* view = window.developmentView();
+        view->grabImage();
+        const QPoint at = view->projectVertexToWidget(0, 5);
+        window.action(QStringLiteral("actionDragTool"))->setChecked(true);
+        QSignalSpy status(window.dragTool(), &app::DragTool::statusMessage);
+        QTest::mousePress(view->glWidget(), Qt::LeftButton, {}, at);
+        QVERIFY(!window.dragTool()->isDragging());
+        QVERIFY(!status.isEmpty());
+        // It names the menu command that holds the sheet, in the language shown.
+        const QString hold =
+            window.action(QStringLiteral("actionHoldSheet"))->text().remove(QLatin1Char('&'));
+        QVERIFY2(status.back().front().toString().contains(hold),
+                 qPrintable(status.back().front().toString()));
+        QTest::mouseRelease(view->glWidget(), Qt::LeftButton, {}, at);
+        window.action(QStringLiteral("actionDragTool"))->setChecked(false);
     }
 
     void dragIsOneUndoStepAndUndoGivesTheStateAtPress() {
