@@ -258,7 +258,8 @@ int run(const std::vector<std::string>& args) {
         {"examples", commandExamples},   {"solve", commandSolve},
         {"drag", commandDrag},           {"export", runExportPatternCommand},
         {"report", runReportCommand},    {"import-curves", runImportCurvesCommand},
-        {"fit-edge", runFitEdgeCommand}, {"import-reference", runImportReferenceCommand}};
+        {"fit-edge", runFitEdgeCommand}, {"import-reference", runImportReferenceCommand},
+        {"distance", runDistanceCommand}};
     for (const auto& [name, runner] : runners) {
         if (command == name) {
             return runner(parsed);

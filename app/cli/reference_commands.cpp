@@ -4,10 +4,14 @@
 #include "io/file_error.h"
 #include "io/output_file.h"
 #include "io/project_file.h"
+#include "model/reference/distance_report.h"
 
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QString>
 
 #include <algorithm>
+#include <cstdio>
 #include <iostream>
 #include <limits>
 
@@ -103,6 +107,83 @@ int runImportReferenceCommand(const SubcommandArguments& args) {
               << (triangles == 1 ? "" : "s") << ", " << millimetres(high.x - low.x) << " x "
               << millimetres(high.y - low.y) << " x " << millimetres(high.z - low.z) << " mm; "
               << project.referenceShapes.size() << " in the project)\n";
+    return 0;
+}
+
+namespace {
+
+QJsonObject oneSidedJson(const model::reference::OneSidedDistance& d) {
+    QJsonObject o;
+    o[QStringLiteral("mean")] = d.mean;
+    o[QStringLiteral("p95")] = d.percentile95;
+    o[QStringLiteral("max")] = d.max;
+    o[QStringLiteral("meanPercent")] = d.meanPercent;
+    o[QStringLiteral("p95Percent")] = d.percentile95Percent;
+    o[QStringLiteral("maxPercent")] = d.maxPercent;
+    return o;
+}
+
+std::string oneSidedLine(const model::reference::OneSidedDistance& d) {
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "mean %.4g mm (%.3g %%), 95th percentile %.4g mm (%.3g %%), max %.4g mm "
+                  "(%.3g %%)",
+                  d.mean, d.meanPercent, d.percentile95, d.percentile95Percent, d.max,
+                  d.maxPercent);
+    return line;
+}
+
+} // namespace
+
+int runDistanceCommand(const SubcommandArguments& args) {
+    const std::vector<std::string> files =
+        args.positionals(2, "a project file and a mesh or point cloud file");
+    const std::string& input = files[0];
+    const std::string& target = files[1];
+    model::reference::DistanceOptions options;
+    if (const auto tolerance = args.value("tolerance")) {
+        options.tolerance = parseReal(*tolerance, "tolerance", 1e-9, 1e9, "a length in mm");
+    }
+    if (!io::referenceFormatOf(target)) {
+        throw io::FileError(
+            referenceImportSentence({io::ReferenceImportError::Code::UnknownFormat, {}}, target));
+    }
+    const model::Project project = io::loadProjectFile(QString::fromStdString(input));
+    if (project.surfaces.empty()) {
+        throw io::FileError("'" + input + "' has no surface to measure.");
+    }
+    const io::ReferenceImportResult read = io::readReferenceShape(target);
+    if (read.error) {
+        std::cerr << "devsurf-cli: " << referenceImportSentence(*read.error, target) << "\n";
+        return 2;
+    }
+    const model::reference::DistanceReport report =
+        model::reference::measureDistance(project.surfaces, read.shape.points, options);
+    if (args.isSet("json")) {
+        QJsonObject o;
+        o[QStringLiteral("targetPoints")] = static_cast<double>(read.shape.points.size());
+        o[QStringLiteral("diagonal")] = report.diagonal;
+        o[QStringLiteral("targetToSurface")] = oneSidedJson(report.targetToSurface);
+        o[QStringLiteral("surfaceToTarget")] = oneSidedJson(report.surfaceToTarget);
+        o[QStringLiteral("hausdorff")] = report.hausdorff();
+        o[QStringLiteral("tolerance")] = report.tolerance;
+        o[QStringLiteral("coverage")] = report.coverage;
+        o[QStringLiteral("surfaceSamples")] = static_cast<double>(report.surfaceSamples);
+        o[QStringLiteral("surfaceSpacing")] = report.surfaceSpacing;
+        std::cout << QJsonDocument(o).toJson(QJsonDocument::Indented).toStdString();
+        return 0;
+    }
+    std::cout << "Target: " << read.shape.points.size() << " points, bounding-box diagonal "
+              << millimetres(report.diagonal) << " mm\n"
+              << "Target to surface: " << oneSidedLine(report.targetToSurface) << "\n"
+              << "Surface to target: " << oneSidedLine(report.surfaceToTarget) << " (sampled every "
+              << millimetres(report.surfaceSpacing) << " mm)\n";
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "Two-sided (Hausdorff) %.4g mm; coverage %.1f %% of the target within %.4g "
+                  "mm of the surface.\n",
+                  report.hausdorff(), 100.0 * report.coverage, report.tolerance);
+    std::cout << line;
     return 0;
 }
 

@@ -15,4 +15,9 @@ std::string referenceImportSentence(const io::ReferenceImportError& error, const
 // Returns the exit code; throws UsageError and io::FileError.
 int runImportReferenceCommand(const SubcommandArguments& args);
 
+// `devsurf-cli distance FILE TARGET [--json] [--tolerance MM]`: how far the project's surfaces
+// are from the mesh or point cloud TARGET (model::reference::measureDistance), both ways, and
+// how much of the target lies within the tolerance. Returns the exit code.
+int runDistanceCommand(const SubcommandArguments& args);
+
 } // namespace devsurf::app

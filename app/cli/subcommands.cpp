@@ -195,6 +195,17 @@ const std::vector<SubcommandSpec>& subcommands() {
          "changes nothing and writes nothing. The output may be the project\n"
          "itself (its previous version is kept as FILE.bak), never the target.",
          {{"name", "NAME", "The shape's name (default: the file's name)."}, kOutputProject}},
+        {"distance",
+         "distance FILE TARGET [--json] [--tolerance MM]",
+         "How far the project's surfaces are from a mesh or point cloud TARGET\n"
+         "(as import-reference reads it; a mesh by its vertices): target to\n"
+         "surface (each target point to its closest surface point) and surface\n"
+         "to target (sampled), each as mean, 95th percentile and max in mm and\n"
+         "in % of the target's bounding-box diagonal, and the coverage: the\n"
+         "fraction of target points within MM of the surface (default 1 % of\n"
+         "the diagonal).",
+         {{"json", "", "Print the report as JSON."},
+          {"tolerance", "MM", "The coverage tolerance (default 1 % of the diagonal)."}}},
         {"fit-edge",
          "fit-edge FILE --edge E [--curve K] [--surface K] -o OUT.devsurf",
          "Lay spline edge E (a crease or a boundary) onto reference curve K\n"

@@ -4,8 +4,12 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <cmath>
 
 using namespace devsurf;
 
@@ -101,6 +105,40 @@ private slots:
         QVERIFY(test::runCli({"import-reference", "--help"})
                     .out.contains("import-reference FILE TARGET [--name NAME] -o OUT.devsurf"));
         QVERIFY(test::runCli({"--help"}).out.contains("import-reference"));
+    }
+
+    void distanceToACloudAboveTheSheet() {
+        // 300 points 5 mm above the flat 300 × 300 mm sheet, inside its square, and 100 points
+        // 50 mm above: target to surface is 5 mm for the first and 50 mm for the others, so
+        // the mean is 16.25 mm, the max 50 mm, and a 6 mm tolerance covers three quarters.
+        QByteArray cloud;
+        for (int i = 0; i < 400; ++i) {
+            const double x = 10.0 + (i % 20) * 14.0;
+            const double y = 10.0 + (i / 20) * 14.0;
+            cloud += QByteArray::number(x) + ' ' + QByteArray::number(y) + ' ' +
+                     (i < 300 ? "5" : "50") + '\n';
+        }
+        QVERIFY(writeFile(path("above.xyz"), cloud));
+        const test::CliRun run = test::runCli(
+            {"distance", path("sheet.devsurf"), path("above.xyz"), "--json", "--tolerance", "6"});
+        QCOMPARE(run.exitCode, 0);
+        const QJsonObject report = QJsonDocument::fromJson(run.out.toUtf8()).object();
+        const QJsonObject toSurface = report.value("targetToSurface").toObject();
+        QVERIFY(std::abs(toSurface.value("mean").toDouble() - 16.25) < 1e-9);
+        QVERIFY(std::abs(toSurface.value("max").toDouble() - 50.0) < 1e-9);
+        QVERIFY(std::abs(report.value("coverage").toDouble() - 0.75) < 1e-12);
+        QCOMPARE(report.value("targetPoints").toInt(), 400);
+        // The surface's far corners are farther from the cloud than any cloud point is from it.
+        QVERIFY(report.value("hausdorff").toDouble() >= 50.0);
+        const test::CliRun text =
+            test::runCli({"distance", path("sheet.devsurf"), path("above.xyz")});
+        QCOMPARE(text.exitCode, 0);
+        QVERIFY(text.out.contains("Target to surface: mean 16.25 mm"));
+        // A target that cannot be read is said in one sentence.
+        const test::CliRun missing =
+            test::runCli({"distance", path("sheet.devsurf"), path("missing.xyz")});
+        QCOMPARE(missing.exitCode, 2);
+        QVERIFY(missing.err.contains("cannot read"));
     }
 };
 
