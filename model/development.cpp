@@ -259,7 +259,11 @@ Development unfoldSampledMesh(const SampledMesh& mesh) {
     return dev;
 }
 
-double keptSheetStretch(const CompositeSurface& surface) {
+namespace {
+
+// The largest difference between a distance in space and in the kept development over every
+// pair of every sampled face, absolute (mm) or relative to the distance in the sheet.
+double keptSheetPairError(const CompositeSurface& surface, bool relative) {
     if (!surface.keepsDevelopment()) {
         return -1.0;
     }
@@ -274,12 +278,27 @@ double keptSheetStretch(const CompositeSurface& surface) {
             for (std::size_t j = i + 1; j < face.size(); ++j) {
                 const auto a = static_cast<std::size_t>(face[i]);
                 const auto b = static_cast<std::size_t>(face[j]);
-                worst = std::max(worst, std::abs(distance(mesh.vertices[a], mesh.vertices[b]) -
-                                                 (flat[a] - flat[b]).norm()));
+                const double inSheet = (flat[a] - flat[b]).norm();
+                const double gap = std::abs(distance(mesh.vertices[a], mesh.vertices[b]) - inSheet);
+                if (!relative) {
+                    worst = std::max(worst, gap);
+                } else if (inSheet > 0.0) {
+                    worst = std::max(worst, gap / inSheet);
+                }
             }
         }
     }
     return worst;
+}
+
+} // namespace
+
+double keptSheetStretch(const CompositeSurface& surface) {
+    return keptSheetPairError(surface, false);
+}
+
+double keptSheetStretchRelative(const CompositeSurface& surface) {
+    return keptSheetPairError(surface, true);
 }
 
 double edgeLengthError(const SampledMesh& mesh, const Development& development) {

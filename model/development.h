@@ -41,6 +41,9 @@ std::optional<Problem> keepDevelopment(CompositeSurface& surface);
 // a face that bends or shears counts. -1 when the surface keeps no development (or one that no
 // longer matches its sampling).
 double keptSheetStretch(const CompositeSurface& surface);
+// The same pairs, each difference divided by the pair's length in the sheet: the largest
+// relative edge-length error of the surface against its kept development (-1 likewise).
+double keptSheetStretchRelative(const CompositeSurface& surface);
 
 // Relative edge-length error between the mesh and a development of it (§8), using the
 // development's period where it has one.

@@ -8,6 +8,11 @@
 
 namespace devsurf::io {
 
+// "line N", for the detail of a refusal.
+inline std::string lineText(std::uint64_t line) {
+    return "line " + std::to_string(line);
+}
+
 // Reads a text file line by line through one buffer (64 KB, larger only for a longer line), so
 // that files of hundreds of megabytes stream without being held whole. A line longer than
 // kMaxLineLength is an error.

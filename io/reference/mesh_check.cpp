@@ -25,10 +25,6 @@ Error problem(Code code, std::string detail = {}) {
     return ReferenceImportError{code, std::move(detail)};
 }
 
-std::string lineText(std::uint64_t line) {
-    return "line " + std::to_string(line);
-}
-
 bool ticks(LineReader& reader, ProgressTicker& progress, std::uint64_t size) {
     return (reader.lineNumber() & 0x3FFF) != 0 ||
            progress.at(static_cast<double>(reader.bytesRead()) / static_cast<double>(size));

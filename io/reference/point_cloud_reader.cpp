@@ -11,10 +11,6 @@ namespace {
 
 using Code = ReferenceImportError::Code;
 
-std::string lineText(std::uint64_t line) {
-    return "line " + std::to_string(line);
-}
-
 bool isComment(std::string_view line) {
     const std::size_t at = line.find_first_not_of(" \t");
     return at == std::string_view::npos || line[at] == '#' || line.substr(at, 2) == "//";

@@ -1,4 +1,5 @@
 #include "benchmark.h"
+#include "bench_json.h"
 
 #include "bench_models.h"
 #include "blas_rates.h"
@@ -31,23 +32,6 @@ double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
     const std::size_t n = values.size();
     return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-std::string number(double value) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.6g", value);
-    return buffer;
-}
-
-std::string quoted(const std::string& text) {
-    std::string out = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-        }
-        out += c >= 0 && c < 0x20 ? ' ' : c;
-    }
-    return out + "\"";
 }
 
 struct Timing {

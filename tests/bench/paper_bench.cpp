@@ -1,4 +1,5 @@
 #include "paper_bench.h"
+#include "bench_json.h"
 
 #include "model/development.h"
 #include "model/examples.h"
@@ -248,35 +249,6 @@ PaperTiming medianOf(const std::vector<PaperTiming>& runs) {
     return {median(a), median(f), median(s), median(t)};
 }
 
-// The largest relative difference between a distance in space and in the kept development over
-// every pair of vertices of every face sampled as the development is (keptSheetStretch's pairs,
-// divided by the pair's length in the sheet).
-double relativeSheetStretch(const model::CompositeSurface& surface) {
-    const std::vector<model::Vec2>& flat = surface.development();
-    const model::SampledMesh mesh =
-        model::sampleSurface(surface, model::kDevelopmentSamplesPerInterval);
-    if (!surface.keepsDevelopment() || flat.size() != mesh.vertices.size()) {
-        return -1.0;
-    }
-    double worst = 0.0;
-    for (const auto& face : mesh.faces) {
-        for (std::size_t i = 0; i < face.size(); ++i) {
-            for (std::size_t j = i + 1; j < face.size(); ++j) {
-                const auto a = static_cast<std::size_t>(face[i]);
-                const auto b = static_cast<std::size_t>(face[j]);
-                const double inSheet = (flat[a] - flat[b]).norm();
-                if (inSheet > 0.0) {
-                    worst = std::max(
-                        worst,
-                        std::abs(model::distance(mesh.vertices[a], mesh.vertices[b]) - inSheet) /
-                            inSheet);
-                }
-            }
-        }
-    }
-    return worst;
-}
-
 PaperRowResult runRow(const PaperCandidate& c, const PaperBenchOptions& options) {
     auto log = [&options](const std::string& line) {
         if (options.log) {
@@ -325,7 +297,7 @@ PaperRowResult runRow(const PaperCandidate& c, const PaperBenchOptions& options)
         r.status = "degenerate result: " + model::technicalKey(problems.front());
     } else {
         r.quality = solver::measureQuality(result);
-        r.developmentEdgeError = relativeSheetStretch(result);
+        r.developmentEdgeError = model::keptSheetStretchRelative(result);
         r.sheetStretchMm = model::keptSheetStretch(result);
     }
     log("paper " + c.name + ": " + std::to_string(r.ours.total) + " ms/iteration, residual " +
@@ -341,23 +313,6 @@ PaperRowResult runRow(const PaperCandidate& c, const PaperBenchOptions& options)
         log("paper " + c.name + ": baseline " + std::to_string(r.baseline.total) + " ms/iteration");
     }
     return r;
-}
-
-std::string number(double value) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.6g", value);
-    return buffer;
-}
-
-std::string quoted(const std::string& text) {
-    std::string out = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-        }
-        out += c >= 0 && c < 0x20 ? ' ' : c;
-    }
-    return out + "\"";
 }
 
 std::string timingJson(const PaperTiming& t) {
