@@ -552,7 +552,8 @@ void SceneRenderer::setPreviewLines(const std::vector<std::vector<Vec3>>& lines)
     m_preview->assign(polylineData(lines), false);
 }
 
-void SceneRenderer::setReferenceShapes(const std::vector<model::ReferenceShape>& shapes) {
+void SceneRenderer::setReferenceShapes(const std::vector<model::ReferenceShape>& shapes,
+                                       double devicePixelRatio) {
     // Poly data already built for these shapes, whichever actor drew them.
     std::vector<std::unique_ptr<ShapeActor>> previous = std::move(m_shapeActors);
     m_shapeActors.clear();
@@ -562,6 +563,8 @@ void SceneRenderer::setReferenceShapes(const std::vector<model::ReferenceShape>&
         });
         if (reused != previous.end()) {
             m_shapeActors.push_back(std::move(*reused));
+            m_shapeActors.back()->actor->GetProperty()->SetPointSize(
+                static_cast<float>(3.0 * devicePixelRatio));
             continue;
         }
         // A free actor (emptied below), else a new one.
@@ -592,7 +595,7 @@ void SceneRenderer::setReferenceShapes(const std::vector<model::ReferenceShape>&
         if (shape.isPointCloud()) {
             // Small unlit points: a dense cloud reads as a surface without hiding the design.
             p->SetRepresentationToPoints();
-            p->SetPointSize(3.0F);
+            p->SetPointSize(static_cast<float>(3.0 * devicePixelRatio));
             p->SetRenderPointsAsSpheres(false);
             p->SetLighting(false);
             p->SetColor(0.30, 0.36, 0.46);

@@ -84,7 +84,9 @@ public:
     // triangles in memory: commands move shapes, never copy them) keeps its poly data, so an
     // unrelated change does not rebuild millions of points; forgetReferenceShapes() drops
     // that cache when the shapes may have changed unseen.
-    void setReferenceShapes(const std::vector<model::ReferenceShape>& shapes);
+    // Point clouds are drawn 3 logical pixels wide (3 × devicePixelRatio device pixels).
+    void setReferenceShapes(const std::vector<model::ReferenceShape>& shapes,
+                            double devicePixelRatio = 1.0);
     void forgetReferenceShapes();
     void setShowReferenceShapes(bool show);
     bool showsReferenceShapes() const { return m_showReferenceShapes; }

@@ -154,7 +154,8 @@ void SceneView::showReferenceShapes() {
     static const std::vector<model::ReferenceShape> none;
     d->scene->setReferenceShapes(d->kind == Kind::Spatial && d->document != nullptr
                                      ? d->document->project().referenceShapes
-                                     : none);
+                                     : none,
+                                 d->gl->effectiveDevicePixelRatio());
 }
 
 int SceneView::referenceShapesDrawn() const {
