@@ -2,6 +2,54 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name></name>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="38"/>
+        <source>%1 is not a file DevSurf reads shapes from; choose a mesh (OBJ, PLY, STL, OFF) or a point cloud (XYZ, PTS).</source>
+        <translation>%1 ist keine Datei, aus der DevSurf Formen liest; wählen Sie ein Netz (OBJ, PLY, STL, OFF) oder eine Punktwolke (XYZ, PTS).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="42"/>
+        <source>%1 cannot be read; check that it exists and that you may read it.</source>
+        <translation>%1 kann nicht gelesen werden; prüfen Sie, ob die Datei existiert und Sie sie lesen dürfen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="44"/>
+        <source>%1 is too large; DevSurf takes up to %2 points and %3 triangles.</source>
+        <translation>%1 ist zu groß; DevSurf nimmt bis zu %2 Punkte und %3 Dreiecke.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="48"/>
+        <source>%1 is damaged or not a valid file of its type; nothing was imported.</source>
+        <translation>%1 ist beschädigt oder keine gültige Datei ihres Typs; nichts wurde importiert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="51"/>
+        <source>%1 ends before its last point or triangle; copy or export it again.</source>
+        <translation>%1 endet vor ihrem letzten Punkt oder Dreieck; kopieren oder exportieren Sie sie erneut.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="54"/>
+        <source>%1 holds a coordinate that is not a finite number of sensible size; nothing was imported.</source>
+        <translation>%1 enthält eine Koordinate, die keine endliche Zahl sinnvoller Größe ist; nichts wurde importiert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="58"/>
+        <source>A face of %1 names a point the file does not have; nothing was imported.</source>
+        <translation>Eine Fläche von %1 nennt einen Punkt, den die Datei nicht hat; nichts wurde importiert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="61"/>
+        <source>%1 holds no points to import.</source>
+        <translation>%1 enthält keine Punkte zum Importieren.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="65"/>
+        <source>No reference shape could be imported from %1.</source>
+        <translation>Aus %1 konnte keine Referenzform importiert werden.</translation>
+    </message>
+</context>
+<context>
     <name>ApplySurfaceCommand</name>
     <message>
         <location filename="../model/document/commands/apply_surface_command.cpp" line="20"/>
@@ -843,6 +891,29 @@
     </message>
 </context>
 <context>
+    <name>ReferenceShapesCommand</name>
+    <message>
+        <location filename="../model/document/commands/reference_shapes_command.cpp" line="39"/>
+        <source>The shape to import has no points, a coordinate that is not a number or a triangle naming a point it does not have.</source>
+        <translation>Die zu importierende Form hat keine Punkte, eine Koordinate, die keine Zahl ist, oder ein Dreieck, das einen Punkt nennt, den sie nicht hat.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_shapes_command.cpp" line="45"/>
+        <source>Import Reference Shape</source>
+        <translation>Referenzform importieren</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_shapes_command.cpp" line="50"/>
+        <source>The design has no reference shapes.</source>
+        <translation>Der Entwurf hat keine Referenzformen.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_shapes_command.cpp" line="53"/>
+        <source>Remove Reference Shapes</source>
+        <translation>Referenzformen entfernen</translation>
+    </message>
+</context>
+<context>
     <name>RefineSplineClassCommand</name>
     <message>
         <location filename="../model/document/commands/refine_spline_class_command.cpp" line="9"/>
@@ -1672,265 +1743,346 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::ImportReferenceShapeReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="89"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="119"/>
+        <source>Import Reference Shape</source>
+        <translation>Referenzform importieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="91"/>
+        <source>Meshes and point clouds (*.obj *.ply *.stl *.off *.xyz *.pts);;Meshes (*.obj *.ply *.stl *.off);;Point clouds (*.xyz *.pts)</source>
+        <translation>Netze und Punktwolken (*.obj *.ply *.stl *.off *.xyz *.pts);;Netze (*.obj *.ply *.stl *.off);;Punktwolken (*.xyz *.pts)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="116"/>
+        <source>Reading reference shape %1…</source>
+        <translation>Referenzform %1 wird gelesen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="117"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="157"/>
+        <source>Import of reference shape %1 cancelled</source>
+        <translation>Import der Referenzform %1 abgebrochen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="159"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="168"/>
+        <source>Cannot import the reference shape</source>
+        <translation>Die Referenzform kann nicht importiert werden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="170"/>
+        <source>Imported reference shape %1: %2, %3</source>
+        <translation>Referenzform %1 importiert: %2, %3</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="171"/>
+        <source>%n point(s)</source>
+        <translation>
+            <numerusform>%n Punkt</numerusform>
+            <numerusform>%n Punkte</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="172"/>
+        <source>%n triangle(s)</source>
+        <translation>
+            <numerusform>%n Dreieck</numerusform>
+            <numerusform>%n Dreiecke</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="122"/>
+        <location filename="../app/gui/main_window.cpp" line="123"/>
         <source>Patches</source>
         <translation>Flächenstücke</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="128"/>
+        <location filename="../app/gui/main_window.cpp" line="129"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="134"/>
+        <location filename="../app/gui/main_window.cpp" line="135"/>
         <source>Pins</source>
         <translation>Festgehaltene Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="144"/>
+        <location filename="../app/gui/main_window.cpp" line="145"/>
         <source>Solver</source>
         <translation>Löser</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="164"/>
+        <location filename="../app/gui/main_window.cpp" line="165"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="171"/>
+        <location filename="../app/gui/main_window.cpp" line="172"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="173"/>
+        <location filename="../app/gui/main_window.cpp" line="174"/>
         <source>&amp;New from Example…</source>
         <translation>&amp;Neu aus Beispiel…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <location filename="../app/gui/main_window.cpp" line="176"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="177"/>
+        <location filename="../app/gui/main_window.cpp" line="178"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <location filename="../app/gui/main_window.cpp" line="182"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="184"/>
+        <location filename="../app/gui/main_window.cpp" line="185"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="188"/>
+        <location filename="../app/gui/main_window.cpp" line="189"/>
         <source>Import &amp;Curves…</source>
         <translation>&amp;Kurven importieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="193"/>
+        <location filename="../app/gui/main_window.cpp" line="194"/>
+        <source>Import Reference S&amp;hape…</source>
+        <translation>Referenz&amp;form importieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="195"/>
+        <source>Add a mesh (OBJ, PLY, STL, OFF) or a point cloud (XYZ, PTS) the design is to follow, as a reference shape</source>
+        <translation>Ein Netz (OBJ, PLY, STL, OFF) oder eine Punktwolke (XYZ, PTS), der der Entwurf folgen soll, als Referenzform hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="199"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>Austausch-JSON &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="193"/>
+        <location filename="../app/gui/main_window.cpp" line="199"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="196"/>
+        <location filename="../app/gui/main_window.cpp" line="202"/>
         <source>Export &amp;3D Shape…</source>
         <translation>&amp;3D-Form exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="206"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="204"/>
+        <location filename="../app/gui/main_window.cpp" line="210"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207"/>
+        <location filename="../app/gui/main_window.cpp" line="213"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="210"/>
+        <location filename="../app/gui/main_window.cpp" line="216"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="223"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="220"/>
+        <location filename="../app/gui/main_window.cpp" line="226"/>
         <source>Remove Reference &amp;Curves</source>
         <translation>Referenz&amp;kurven entfernen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="222"/>
+        <location filename="../app/gui/main_window.cpp" line="229"/>
+        <source>Remove Reference S&amp;hapes</source>
+        <translation>Referenz&amp;formen entfernen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>Select &amp;None</source>
         <translation>Auswahl &amp;aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="223"/>
+        <location filename="../app/gui/main_window.cpp" line="232"/>
         <location filename="../app/gui/main_window_solver.cpp" line="128"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="227"/>
+        <location filename="../app/gui/main_window.cpp" line="236"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="229"/>
+        <location filename="../app/gui/main_window.cpp" line="238"/>
         <source>&amp;3D View</source>
         <translation>&amp;3D-Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="229"/>
+        <location filename="../app/gui/main_window.cpp" line="238"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="240"/>
         <source>&amp;Development View</source>
         <translation>&amp;Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="240"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="232"/>
+        <location filename="../app/gui/main_window.cpp" line="241"/>
         <source>3D &amp;and Development</source>
         <translation>3D &amp;und Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="233"/>
+        <location filename="../app/gui/main_window.cpp" line="242"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="237"/>
+        <location filename="../app/gui/main_window.cpp" line="246"/>
         <source>&amp;Control Polygons</source>
         <translation>&amp;Kontrollpolygone</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="237"/>
+        <location filename="../app/gui/main_window.cpp" line="246"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="238"/>
+        <location filename="../app/gui/main_window.cpp" line="247"/>
         <source>&amp;Vertices</source>
         <translation>&amp;Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="239"/>
+        <location filename="../app/gui/main_window.cpp" line="248"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="242"/>
+        <location filename="../app/gui/main_window.cpp" line="251"/>
         <source>S&amp;heet Outline</source>
         <translation>&amp;Bogenumriss</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="245"/>
+        <location filename="../app/gui/main_window.cpp" line="254"/>
         <source>Draw the sheet a held development is confined to behind it in the development view (Tools ▸ Sheet Shape…).</source>
         <translation>Den Bogen, auf den eine gehaltene Abwicklung beschränkt ist, in der Abwicklungsansicht dahinter zeichnen (Werkzeuge ▸ Bogenform…).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="255"/>
+        <location filename="../app/gui/main_window.cpp" line="264"/>
+        <source>&amp;Reference Shapes</source>
+        <translation>&amp;Referenzformen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="267"/>
+        <source>Draw the imported meshes and point clouds in the 3D view (File ▸ Import Reference Shape…).</source>
+        <translation>Die importierten Netze und Punktwolken in der 3D-Ansicht zeichnen (Datei ▸ Referenzform importieren…).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="277"/>
         <source>&amp;Fit All</source>
         <translation>&amp;Alles zeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="255"/>
+        <location filename="../app/gui/main_window.cpp" line="277"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="261"/>
+        <location filename="../app/gui/main_window.cpp" line="283"/>
         <source>Reset &amp;Layout</source>
         <translation>&amp;Layout zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="266"/>
+        <location filename="../app/gui/main_window.cpp" line="288"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="269"/>
+        <location filename="../app/gui/main_window.cpp" line="291"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>Kanten&amp;kennzeichnung ändern (R ↔ S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="269"/>
+        <location filename="../app/gui/main_window.cpp" line="291"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="271"/>
+        <location filename="../app/gui/main_window.cpp" line="293"/>
         <source>Add &amp;Crease…</source>
         <translation>&amp;Falz einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="274"/>
+        <location filename="../app/gui/main_window.cpp" line="296"/>
         <source>Add R&amp;uling…</source>
         <translation>&amp;Erzeugende einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="287"/>
+        <location filename="../app/gui/main_window.cpp" line="309"/>
         <source>&amp;Pin Vertices</source>
         <translation>Ecken &amp;festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="288"/>
+        <location filename="../app/gui/main_window.cpp" line="310"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="290"/>
+        <location filename="../app/gui/main_window.cpp" line="312"/>
         <source>U&amp;npin Vertices</source>
         <translation>Ecken &amp;freigeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="291"/>
+        <location filename="../app/gui/main_window.cpp" line="313"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="294"/>
+        <location filename="../app/gui/main_window.cpp" line="316"/>
         <source>Hold the &amp;Sheet</source>
         <translation>&amp;Bogen festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="295"/>
+        <location filename="../app/gui/main_window.cpp" line="317"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="298"/>
+        <location filename="../app/gui/main_window.cpp" line="320"/>
         <source>Sheet S&amp;hape…</source>
         <translation>Bogen&amp;form…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="426"/>
+        <location filename="../app/gui/main_window.cpp" line="448"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n Fläche</numerusform>
@@ -1938,7 +2090,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="427"/>
+        <location filename="../app/gui/main_window.cpp" line="449"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -1946,7 +2098,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="428"/>
+        <location filename="../app/gui/main_window.cpp" line="450"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -1954,7 +2106,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="429"/>
+        <location filename="../app/gui/main_window.cpp" line="451"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n ausgewählt</numerusform>
@@ -1962,82 +2114,82 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="272"/>
+        <location filename="../app/gui/main_window.cpp" line="294"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="190"/>
+        <location filename="../app/gui/main_window.cpp" line="191"/>
         <source>Add the curves of a DXF, SVG, STEP or IGES file as reference curves</source>
         <translation>Die Kurven einer DXF-, SVG-, STEP- oder IGES-Datei als Referenzkurven hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="275"/>
+        <location filename="../app/gui/main_window.cpp" line="297"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="277"/>
+        <location filename="../app/gui/main_window.cpp" line="299"/>
         <source>Re&amp;fine Curves</source>
         <translation>Kurven &amp;verfeinern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="278"/>
+        <location filename="../app/gui/main_window.cpp" line="300"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="284"/>
+        <location filename="../app/gui/main_window.cpp" line="306"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>Ecken &amp;verschieben oder drehen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="284"/>
+        <location filename="../app/gui/main_window.cpp" line="306"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="327"/>
+        <location filename="../app/gui/main_window.cpp" line="349"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="328"/>
+        <location filename="../app/gui/main_window.cpp" line="350"/>
         <source>&amp;User Manual</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="335"/>
+        <location filename="../app/gui/main_window.cpp" line="357"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="341"/>
+        <location filename="../app/gui/main_window.cpp" line="363"/>
         <source>&amp;About DevSurf</source>
         <translation>&amp;Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="343"/>
+        <location filename="../app/gui/main_window.cpp" line="365"/>
         <source>About DevSurf</source>
         <translation>Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="344"/>
+        <location filename="../app/gui/main_window.cpp" line="366"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen mit Spline-Torsen (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="389"/>
+        <location filename="../app/gui/main_window.cpp" line="411"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="411"/>
+        <location filename="../app/gui/main_window.cpp" line="433"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="412"/>
+        <location filename="../app/gui/main_window.cpp" line="434"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
@@ -3046,6 +3198,14 @@
         <location filename="../app/gui/reactions/curve_reactions.cpp" line="184"/>
         <source>Cannot remove the reference curves</source>
         <translation>Die Referenzkurven können nicht entfernt werden</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::RemoveReferenceShapesReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="189"/>
+        <source>Cannot remove the reference shapes</source>
+        <translation>Die Referenzformen können nicht entfernt werden</translation>
     </message>
 </context>
 <context>
@@ -4122,7 +4282,7 @@
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_document.cpp" line="116"/>
+        <location filename="../views/scene_view_document.cpp" line="124"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>Fläche %1 ist ungültig und wird nicht angezeigt.</translation>
     </message>

@@ -143,9 +143,28 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::ImportReferenceShapeReaction</name>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="171"/>
+        <source>%n point(s)</source>
+        <translation>
+            <numerusform>%n point</numerusform>
+            <numerusform>%n points</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="172"/>
+        <source>%n triangle(s)</source>
+        <translation>
+            <numerusform>%n triangle</numerusform>
+            <numerusform>%n triangles</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="426"/>
+        <location filename="../app/gui/main_window.cpp" line="448"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n surface</numerusform>
@@ -153,7 +172,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="427"/>
+        <location filename="../app/gui/main_window.cpp" line="449"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n patch</numerusform>
@@ -161,7 +180,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="428"/>
+        <location filename="../app/gui/main_window.cpp" line="450"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n control point</numerusform>
@@ -169,7 +188,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="429"/>
+        <location filename="../app/gui/main_window.cpp" line="451"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n selected</numerusform>

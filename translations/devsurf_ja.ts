@@ -2,6 +2,54 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ja_JP">
 <context>
+    <name></name>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="38"/>
+        <source>%1 is not a file DevSurf reads shapes from; choose a mesh (OBJ, PLY, STL, OFF) or a point cloud (XYZ, PTS).</source>
+        <translation>%1 は DevSurf が形状を読み込めるファイルではありません。メッシュ (OBJ、PLY、STL、OFF) か点群 (XYZ、PTS) を選んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="42"/>
+        <source>%1 cannot be read; check that it exists and that you may read it.</source>
+        <translation>%1 を読めません。ファイルが存在し、読み取り権限があるか確認してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="44"/>
+        <source>%1 is too large; DevSurf takes up to %2 points and %3 triangles.</source>
+        <translation>%1 は大きすぎます。DevSurf が扱えるのは %2 点、%3 三角形までです。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="48"/>
+        <source>%1 is damaged or not a valid file of its type; nothing was imported.</source>
+        <translation>%1 は壊れているか、その形式の正しいファイルではありません。何も読み込まれませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="51"/>
+        <source>%1 ends before its last point or triangle; copy or export it again.</source>
+        <translation>%1 は最後の点または三角形の前で終わっています。もう一度コピーするか書き出してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="54"/>
+        <source>%1 holds a coordinate that is not a finite number of sensible size; nothing was imported.</source>
+        <translation>%1 に妥当な大きさの有限な数でない座標があります。何も読み込まれませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="58"/>
+        <source>A face of %1 names a point the file does not have; nothing was imported.</source>
+        <translation>%1 の面が、ファイルにない点を指しています。何も読み込まれませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="61"/>
+        <source>%1 holds no points to import.</source>
+        <translation>%1 には読み込む点がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="65"/>
+        <source>No reference shape could be imported from %1.</source>
+        <translation>%1 から参照形状を読み込めませんでした。</translation>
+    </message>
+</context>
+<context>
     <name>ApplySurfaceCommand</name>
     <message>
         <location filename="../model/document/commands/apply_surface_command.cpp" line="20"/>
@@ -836,6 +884,29 @@
     </message>
 </context>
 <context>
+    <name>ReferenceShapesCommand</name>
+    <message>
+        <location filename="../model/document/commands/reference_shapes_command.cpp" line="39"/>
+        <source>The shape to import has no points, a coordinate that is not a number or a triangle naming a point it does not have.</source>
+        <translation>読み込む形状に点がないか、数値でない座標があるか、存在しない点を指す三角形があります。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_shapes_command.cpp" line="45"/>
+        <source>Import Reference Shape</source>
+        <translation>参照形状を読み込む</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_shapes_command.cpp" line="50"/>
+        <source>The design has no reference shapes.</source>
+        <translation>デザインに参照形状がありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/reference_shapes_command.cpp" line="53"/>
+        <source>Remove Reference Shapes</source>
+        <translation>参照形状を削除</translation>
+    </message>
+</context>
+<context>
     <name>RefineSplineClassCommand</name>
     <message>
         <location filename="../model/document/commands/refine_spline_class_command.cpp" line="9"/>
@@ -1657,366 +1728,445 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::ImportReferenceShapeReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="89"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="119"/>
+        <source>Import Reference Shape</source>
+        <translation>参照形状を読み込む</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="91"/>
+        <source>Meshes and point clouds (*.obj *.ply *.stl *.off *.xyz *.pts);;Meshes (*.obj *.ply *.stl *.off);;Point clouds (*.xyz *.pts)</source>
+        <translation>メッシュと点群 (*.obj *.ply *.stl *.off *.xyz *.pts);;メッシュ (*.obj *.ply *.stl *.off);;点群 (*.xyz *.pts)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="116"/>
+        <source>Reading reference shape %1…</source>
+        <translation>参照形状 %1 を読み込み中…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="117"/>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="157"/>
+        <source>Import of reference shape %1 cancelled</source>
+        <translation>参照形状 %1 の読み込みを中止しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="159"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="168"/>
+        <source>Cannot import the reference shape</source>
+        <translation>参照形状を読み込めません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="170"/>
+        <source>Imported reference shape %1: %2, %3</source>
+        <translation>参照形状 %1 を読み込みました: %2、%3</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="171"/>
+        <source>%n point(s)</source>
+        <translation>
+            <numerusform>%n 点</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="172"/>
+        <source>%n triangle(s)</source>
+        <translation>
+            <numerusform>%n 個の三角形</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="122"/>
+        <location filename="../app/gui/main_window.cpp" line="123"/>
         <source>Patches</source>
         <translation>パッチ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="128"/>
+        <location filename="../app/gui/main_window.cpp" line="129"/>
         <source>Properties</source>
         <translation>プロパティ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="134"/>
+        <location filename="../app/gui/main_window.cpp" line="135"/>
         <source>Pins</source>
         <translation>固定点</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="144"/>
+        <location filename="../app/gui/main_window.cpp" line="145"/>
         <source>Solver</source>
         <translation>ソルバー</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="164"/>
+        <location filename="../app/gui/main_window.cpp" line="165"/>
         <source>Main</source>
         <translation>メイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="171"/>
+        <location filename="../app/gui/main_window.cpp" line="172"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="173"/>
+        <location filename="../app/gui/main_window.cpp" line="174"/>
         <source>&amp;New from Example…</source>
         <translation>例から新規作成(&amp;N)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <location filename="../app/gui/main_window.cpp" line="176"/>
         <source>&amp;Open…</source>
         <translation>開く(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="177"/>
+        <location filename="../app/gui/main_window.cpp" line="178"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="181"/>
+        <location filename="../app/gui/main_window.cpp" line="182"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="184"/>
+        <location filename="../app/gui/main_window.cpp" line="185"/>
         <source>Save &amp;As…</source>
         <translation>名前を付けて保存(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="188"/>
+        <location filename="../app/gui/main_window.cpp" line="189"/>
         <source>Import &amp;Curves…</source>
         <translation>曲線を読み込む(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="190"/>
+        <location filename="../app/gui/main_window.cpp" line="191"/>
         <source>Add the curves of a DXF, SVG, STEP or IGES file as reference curves</source>
         <translation>DXF、SVG、STEP または IGES ファイルの曲線を参照曲線として加えます</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="193"/>
+        <location filename="../app/gui/main_window.cpp" line="194"/>
+        <source>Import Reference S&amp;hape…</source>
+        <translation>参照形状を読み込む(&amp;H)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="195"/>
+        <source>Add a mesh (OBJ, PLY, STL, OFF) or a point cloud (XYZ, PTS) the design is to follow, as a reference shape</source>
+        <translation>デザインが従うべきメッシュ (OBJ、PLY、STL、OFF) または点群 (XYZ、PTS) を参照形状として追加</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="199"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>交換用 JSON をエクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="193"/>
+        <location filename="../app/gui/main_window.cpp" line="199"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="196"/>
+        <location filename="../app/gui/main_window.cpp" line="202"/>
         <source>Export &amp;3D Shape…</source>
         <translation>3D 形状をエクスポート(&amp;3)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="206"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="204"/>
+        <location filename="../app/gui/main_window.cpp" line="210"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207"/>
+        <location filename="../app/gui/main_window.cpp" line="213"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="210"/>
+        <location filename="../app/gui/main_window.cpp" line="216"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="223"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="220"/>
+        <location filename="../app/gui/main_window.cpp" line="226"/>
         <source>Remove Reference &amp;Curves</source>
         <translation>参照曲線を削除(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="222"/>
+        <location filename="../app/gui/main_window.cpp" line="229"/>
+        <source>Remove Reference S&amp;hapes</source>
+        <translation>参照形状を削除(&amp;H)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="231"/>
         <source>Select &amp;None</source>
         <translation>選択を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="223"/>
+        <location filename="../app/gui/main_window.cpp" line="232"/>
         <location filename="../app/gui/main_window_solver.cpp" line="128"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="227"/>
+        <location filename="../app/gui/main_window.cpp" line="236"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="229"/>
+        <location filename="../app/gui/main_window.cpp" line="238"/>
         <source>&amp;3D View</source>
         <translation>3D ビュー(&amp;3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="229"/>
+        <location filename="../app/gui/main_window.cpp" line="238"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="240"/>
         <source>&amp;Development View</source>
         <translation>展開図ビュー(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="240"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="232"/>
+        <location filename="../app/gui/main_window.cpp" line="241"/>
         <source>3D &amp;and Development</source>
         <translation>3D と展開図(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="233"/>
+        <location filename="../app/gui/main_window.cpp" line="242"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="237"/>
+        <location filename="../app/gui/main_window.cpp" line="246"/>
         <source>&amp;Control Polygons</source>
         <translation>制御多角形(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="237"/>
+        <location filename="../app/gui/main_window.cpp" line="246"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="238"/>
+        <location filename="../app/gui/main_window.cpp" line="247"/>
         <source>&amp;Vertices</source>
         <translation>頂点(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="239"/>
+        <location filename="../app/gui/main_window.cpp" line="248"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="242"/>
+        <location filename="../app/gui/main_window.cpp" line="251"/>
         <source>S&amp;heet Outline</source>
         <translation>シートの輪郭(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="245"/>
+        <location filename="../app/gui/main_window.cpp" line="254"/>
         <source>Draw the sheet a held development is confined to behind it in the development view (Tools ▸ Sheet Shape…).</source>
         <translation>保持した展開図を収めるシートを展開図ビューで展開図の後ろに描きます (ツール ▸ シートの形…)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="255"/>
+        <location filename="../app/gui/main_window.cpp" line="264"/>
+        <source>&amp;Reference Shapes</source>
+        <translation>参照形状(&amp;R)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="267"/>
+        <source>Draw the imported meshes and point clouds in the 3D view (File ▸ Import Reference Shape…).</source>
+        <translation>読み込んだメッシュと点群を 3D ビューに描く (ファイル ▸ 参照形状を読み込む…)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="277"/>
         <source>&amp;Fit All</source>
         <translation>全体を表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="255"/>
+        <location filename="../app/gui/main_window.cpp" line="277"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="261"/>
+        <location filename="../app/gui/main_window.cpp" line="283"/>
         <source>Reset &amp;Layout</source>
         <translation>レイアウトをリセット(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="266"/>
+        <location filename="../app/gui/main_window.cpp" line="288"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="269"/>
+        <location filename="../app/gui/main_window.cpp" line="291"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>辺のラベルを変更 (R ↔ S)(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="269"/>
+        <location filename="../app/gui/main_window.cpp" line="291"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="271"/>
+        <location filename="../app/gui/main_window.cpp" line="293"/>
         <source>Add &amp;Crease…</source>
         <translation>折り線を追加(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="272"/>
+        <location filename="../app/gui/main_window.cpp" line="294"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="274"/>
+        <location filename="../app/gui/main_window.cpp" line="296"/>
         <source>Add R&amp;uling…</source>
         <translation>母線を追加(&amp;U)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="275"/>
+        <location filename="../app/gui/main_window.cpp" line="297"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="277"/>
+        <location filename="../app/gui/main_window.cpp" line="299"/>
         <source>Re&amp;fine Curves</source>
         <translation>曲線を細分化(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="278"/>
+        <location filename="../app/gui/main_window.cpp" line="300"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="284"/>
+        <location filename="../app/gui/main_window.cpp" line="306"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>頂点の移動・回転(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="284"/>
+        <location filename="../app/gui/main_window.cpp" line="306"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="287"/>
+        <location filename="../app/gui/main_window.cpp" line="309"/>
         <source>&amp;Pin Vertices</source>
         <translation>頂点を固定(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="288"/>
+        <location filename="../app/gui/main_window.cpp" line="310"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="290"/>
+        <location filename="../app/gui/main_window.cpp" line="312"/>
         <source>U&amp;npin Vertices</source>
         <translation>頂点の固定を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="291"/>
+        <location filename="../app/gui/main_window.cpp" line="313"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="294"/>
+        <location filename="../app/gui/main_window.cpp" line="316"/>
         <source>Hold the &amp;Sheet</source>
         <translation>シートを保持(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="295"/>
+        <location filename="../app/gui/main_window.cpp" line="317"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="298"/>
+        <location filename="../app/gui/main_window.cpp" line="320"/>
         <source>Sheet S&amp;hape…</source>
         <translation>シートの形(&amp;H)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="327"/>
+        <location filename="../app/gui/main_window.cpp" line="349"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="328"/>
+        <location filename="../app/gui/main_window.cpp" line="350"/>
         <source>&amp;User Manual</source>
         <translation>ユーザーマニュアル(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="335"/>
+        <location filename="../app/gui/main_window.cpp" line="357"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="341"/>
+        <location filename="../app/gui/main_window.cpp" line="363"/>
         <source>&amp;About DevSurf</source>
         <translation>DevSurf について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="343"/>
+        <location filename="../app/gui/main_window.cpp" line="365"/>
         <source>About DevSurf</source>
         <translation>DevSurf について</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="344"/>
+        <location filename="../app/gui/main_window.cpp" line="366"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;スプライン可展面による可展面と曲線折り折り紙の設計 (Tang, Bo, Wallner, Pottmann 2015)。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="389"/>
+        <location filename="../app/gui/main_window.cpp" line="411"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="411"/>
+        <location filename="../app/gui/main_window.cpp" line="433"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="412"/>
+        <location filename="../app/gui/main_window.cpp" line="434"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="426"/>
+        <location filename="../app/gui/main_window.cpp" line="448"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>曲面 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="427"/>
+        <location filename="../app/gui/main_window.cpp" line="449"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="428"/>
+        <location filename="../app/gui/main_window.cpp" line="450"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="429"/>
+        <location filename="../app/gui/main_window.cpp" line="451"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n 個選択</numerusform>
@@ -3017,6 +3167,14 @@
         <location filename="../app/gui/reactions/curve_reactions.cpp" line="184"/>
         <source>Cannot remove the reference curves</source>
         <translation>参照曲線を削除できません</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::RemoveReferenceShapesReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="189"/>
+        <source>Cannot remove the reference shapes</source>
+        <translation>参照形状を削除できません</translation>
     </message>
 </context>
 <context>
@@ -4077,7 +4235,7 @@
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_document.cpp" line="116"/>
+        <location filename="../views/scene_view_document.cpp" line="124"/>
         <source>Surface %1 is not valid and is not shown.</source>
         <translation>曲面 %1 は有効でないため表示されません。</translation>
     </message>

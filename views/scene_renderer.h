@@ -4,6 +4,7 @@
 
 #include "crease_marks.h"
 #include "model/document/selection.h"
+#include "model/reference_shape.h"
 #include "quality_colours.h"
 #include "scene_geometry.h"
 
@@ -78,6 +79,19 @@ public:
     // The project's reference curves (3D only): thin dark lines, never picked.
     void setReferenceCurves(const std::vector<std::vector<model::Vec3>>& curves);
     int referenceCurveCount() const { return m_referenceCurveCount; }
+    // The project's reference shapes (3D only): a mesh translucent, a point cloud as small
+    // points, never picked. A shape whose storage is the one drawn before (the same points and
+    // triangles in memory: commands move shapes, never copy them) keeps its poly data, so an
+    // unrelated change does not rebuild millions of points; forgetReferenceShapes() drops
+    // that cache when the shapes may have changed unseen.
+    // Point clouds are drawn 3 logical pixels wide (3 × devicePixelRatio device pixels).
+    void setReferenceShapes(const std::vector<model::ReferenceShape>& shapes,
+                            double devicePixelRatio = 1.0);
+    void forgetReferenceShapes();
+    void setShowReferenceShapes(bool show);
+    bool showsReferenceShapes() const { return m_showReferenceShapes; }
+    // The shapes drawn: 0 while hidden.
+    int referenceShapeCount() const;
     // Boundary loops of held sheets drawn (development view).
     int sheetLoopCount() const { return m_sheetLoops; }
 
@@ -173,6 +187,13 @@ private:
     Layer* m_preview = nullptr;
     Layer* m_referenceCurves = nullptr;
     int m_referenceCurveCount = 0;
+    struct ShapeActor;
+    // One actor per shape drawn; never removed from the renderer (that needs the GL context),
+    // an unused one is hidden and emptied.
+    std::vector<std::unique_ptr<ShapeActor>> m_shapeActors;
+    int m_shapesDrawn = 0;
+    std::vector<model::Vec3> m_shapeCorners; // of each drawn shape's bounding box (the fit)
+    bool m_showReferenceShapes = true;
 
     std::unique_ptr<QualityColouring> m_quality; // 3D only
     std::shared_ptr<const SceneSet> m_set = std::make_shared<const SceneSet>();

@@ -203,6 +203,9 @@ std::vector<Vec3> SceneRenderer::fitPoints() const {
         }
     }
     points.insert(points.end(), m_referenceCorners.begin(), m_referenceCorners.end());
+    if (m_showReferenceShapes) {
+        points.insert(points.end(), m_shapeCorners.begin(), m_shapeCorners.end());
+    }
     return points;
 }
 

@@ -138,6 +138,10 @@ public:
     int previewLineCount() const;
     // The reference curves drawn (3D view: the project's; the development view: none).
     int referenceCurvesDrawn() const;
+    // The reference shapes drawn (3D view: the project's while shown; the development view:
+    // none).
+    int referenceShapesDrawn() const;
+    bool showsReferenceShapes() const;
     // Boundary loops of held sheets drawn behind the development (development view; 0 in 3D).
     int sheetLoopsDrawn() const;
 
@@ -152,6 +156,8 @@ public slots:
     // Shows the lines an edit would add before it is made (3D scene coordinates; the
     // development view ignores them). An empty list removes the preview.
     void setPreviewLines(const std::vector<std::vector<model::Vec3>>& lines);
+    // Shows or hides the reference shapes (View ▸ Reference Shapes; shown by default).
+    void setShowReferenceShapes(bool show);
 
 signals:
     // What the mouse is over, e.g. "vertex 12", "edge 7 (S, crease)", "patch 3 (strip (SRSR))";
@@ -183,6 +189,7 @@ private:
     void onSelectionChanged();
     void rebuild(bool geometryOnly);
     void showReferenceCurves();
+    void showReferenceShapes();
     QString describe(const document::Pick& pick) const;
     void selectInRectangle(const QRect& rect, bool add);
     // After each render: scale bar and patch labels for the camera just drawn.

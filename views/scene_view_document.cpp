@@ -1,5 +1,5 @@
 // How a view follows its document: which changes rebuild its scene, on the GUI thread or in
-// the background (SceneCache), and the reference curves drawn with it.
+// the background (SceneCache), and the reference curves and shapes drawn with it.
 
 #include "scene_view.h"
 
@@ -32,18 +32,23 @@ void SceneView::onDocumentChanged(unsigned changes) {
         d->staleWhileHidden = true;
         return;
     }
-    if (changes == static_cast<unsigned>(document::Change::ReferenceCurves) &&
-        !d->scene->scenes().empty()) {
-        // Only the curves changed: the surfaces' actors stay as they are.
+    const unsigned references = static_cast<unsigned>(document::Change::ReferenceCurves) |
+                                static_cast<unsigned>(document::Change::ReferenceShapes);
+    if (changes != 0 && (changes & ~references) == 0 && !d->scene->scenes().empty()) {
+        // Only reference curves or shapes changed: the surfaces' actors stay as they are.
         d->builtRevision = d->document->revision();
-        showReferenceCurves();
+        if ((changes & static_cast<unsigned>(document::Change::ReferenceCurves)) != 0) {
+            showReferenceCurves();
+        }
+        if ((changes & static_cast<unsigned>(document::Change::ReferenceShapes)) != 0) {
+            showReferenceShapes();
+        }
         rerender();
         return;
     }
-    // Curves changed with something else (a new document): built with everything.
+    // References changed with something else (a new document): built with everything.
     const unsigned structural = static_cast<unsigned>(document::Change::Labels) |
-                                static_cast<unsigned>(document::Change::Topology) |
-                                static_cast<unsigned>(document::Change::ReferenceCurves);
+                                static_cast<unsigned>(document::Change::Topology) | references;
     const bool firstBuild = d->scene->scenes().empty();
     // A run of geometry changes of one surface that merge into one undo step (a drag: a solver
     // result per mouse move) is developed in the background, so that the GUI thread only
@@ -84,12 +89,15 @@ void SceneView::showEvent(QShowEvent* event) {
     if (d->staleWhileHidden) {
         d->staleWhileHidden = false;
         if (d->document != nullptr && d->document->revision() != d->builtRevision) {
+            // Shapes may have been freed and others stored where they were meanwhile.
+            d->scene->forgetReferenceShapes();
             rebuild(false);
         }
     }
 }
 
 void SceneView::onProjectReset() {
+    d->scene->forgetReferenceShapes();
     rebuild(false);
     fitAll();
 }
@@ -123,6 +131,7 @@ void SceneView::rebuild(bool geometryOnly) {
     d->scene->setSelection(d->selection ? d->selection->picks() : std::set<Pick>{});
     if (!geometryOnly) {
         showReferenceCurves(); // not again for every move of a drag: the curves did not change
+        showReferenceShapes(); // rebuilt only for shapes not drawn before (SceneRenderer)
     }
     rerender();
 }
@@ -139,6 +148,27 @@ void SceneView::showReferenceCurves() {
 
 int SceneView::referenceCurvesDrawn() const {
     return d->scene->referenceCurveCount();
+}
+
+void SceneView::showReferenceShapes() {
+    static const std::vector<model::ReferenceShape> none;
+    d->scene->setReferenceShapes(d->kind == Kind::Spatial && d->document != nullptr
+                                     ? d->document->project().referenceShapes
+                                     : none,
+                                 d->gl->effectiveDevicePixelRatio());
+}
+
+int SceneView::referenceShapesDrawn() const {
+    return d->scene->referenceShapeCount();
+}
+
+bool SceneView::showsReferenceShapes() const {
+    return d->scene->showsReferenceShapes();
+}
+
+void SceneView::setShowReferenceShapes(bool show) {
+    d->scene->setShowReferenceShapes(show);
+    rerender();
 }
 
 int SceneView::sheetLoopsDrawn() const {

@@ -17,6 +17,7 @@
 #include "reactions/file_reactions.h"
 #include "reactions/pattern_reactions.h"
 #include "reactions/pin_reactions.h"
+#include "reactions/reference_shape_reactions.h"
 #include "reactions/shape_reactions.h"
 #include "reactions/sheet_reactions.h"
 #include "reactions/tool_reactions.h"
@@ -189,6 +190,11 @@ void MainWindow::createMenus() {
     importCurves->setStatusTip(
         tr("Add the curves of a DXF, SVG, STEP or IGES file as reference curves"));
     new ImportCurvesReaction(importCurves, m_workspace);
+    QAction* importShape = addAction(file, QStringLiteral("actionImportReferenceShape"),
+                                     tr("Import Reference S&hape…"));
+    importShape->setStatusTip(tr("Add a mesh (OBJ, PLY, STL, OFF) or a point cloud (XYZ, PTS) "
+                                 "the design is to follow, as a reference shape"));
+    new ImportReferenceShapeReaction(importShape, m_workspace);
     QAction* exportJson = addAction(file, QStringLiteral("actionExportJson"),
                                     tr("&Export Interchange JSON…"), QKeySequence(tr("Ctrl+E")));
     new ExportJsonReaction(exportJson, m_workspace);
@@ -219,6 +225,9 @@ void MainWindow::createMenus() {
     QAction* removeCurves = addAction(edit, QStringLiteral("actionRemoveReferenceCurves"),
                                       tr("Remove Reference &Curves"));
     new RemoveReferenceCurvesReaction(removeCurves, m_workspace);
+    QAction* removeShapes = addAction(edit, QStringLiteral("actionRemoveReferenceShapes"),
+                                      tr("Remove Reference S&hapes"));
+    new RemoveReferenceShapesReaction(removeShapes, m_workspace);
     QAction* selectNone = addAction(edit, QStringLiteral("actionSelectNone"), tr("Select &None"),
                                     QKeySequence(tr("Esc")));
     connect(selectNone, &QAction::triggered, m_workspace->selection(), &document::Selection::clear);
@@ -249,6 +258,19 @@ void MainWindow::createMenus() {
     connect(sheet, &QAction::toggled, m_developmentView, [this](bool on) {
         m_developmentView->setShowSheet(on);
         QSettings().setValue(QStringLiteral("view/sheet"), on);
+    });
+    // The reference shapes in the 3D view: on unless turned off (remembered).
+    QAction* shapes =
+        addAction(view, QStringLiteral("actionShowReferenceShapes"), tr("&Reference Shapes"));
+    shapes->setCheckable(true);
+    shapes->setChecked(QSettings().value(QStringLiteral("view/referenceShapes"), true).toBool());
+    shapes->setToolTip(tr("Draw the imported meshes and point clouds in the 3D view (File ▸ "
+                          "Import Reference Shape…)."));
+    shapes->setStatusTip(shapes->toolTip());
+    m_surfaceView->setShowReferenceShapes(shapes->isChecked());
+    connect(shapes, &QAction::toggled, m_surfaceView, [this](bool on) {
+        m_surfaceView->setShowReferenceShapes(on);
+        QSettings().setValue(QStringLiteral("view/referenceShapes"), on);
     });
     createColourActions(view);
     QAction* fit =

@@ -11,7 +11,8 @@ enum class Change : unsigned {
     Topology = 0x4,         // vertices, edges or faces added or removed
     Pins = 0x8,             // vertices pinned or released
     ReferenceCurves = 0x10, // reference curves added or removed (no surface changed)
-    Everything = 0x1f,
+    ReferenceShapes = 0x20, // reference meshes or point clouds added or removed (idem)
+    Everything = 0x3f,
 };
 Q_DECLARE_FLAGS(Changes, Change)
 Q_DECLARE_OPERATORS_FOR_FLAGS(Changes)

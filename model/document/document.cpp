@@ -58,7 +58,7 @@ void Document::previewSurface(int index, const model::CompositeSurface& surface)
 
 void Document::notifyChanged(Changes changes, int surfaceIndex) {
     ++m_revision;
-    if (changes == Changes(Change::ReferenceCurves)) {
+    if ((changes & ~Changes(Change::ReferenceCurves | Change::ReferenceShapes)) == Changes()) {
         // No surface changed: their caches of derived geometry stay valid.
         m_changedSurface = -1;
         emit changed(changes);

@@ -4,6 +4,7 @@
 #include "model/document/commands/move_vertices_command.h"
 #include "model/document/commands/pin_vertices_command.h"
 #include "model/document/commands/reference_curves_command.h"
+#include "model/document/commands/reference_shapes_command.h"
 #include "model/document/commands/refine_spline_class_command.h"
 #include "model/document/commands/relabel_edge_command.h"
 #include "model/document/commands/smooth_rulings_command.h"
@@ -526,6 +527,53 @@ private slots:
         QVERIFY(pushOrExplain(doc, ReferenceCurvesCommand::createRemoveAll(doc)).isEmpty());
         QVERIFY(doc.project().referenceCurves.empty());
         QVERIFY(doc.project().surfaces == original.surfaces);
+    }
+
+    void referenceShapesImportAndRemoveAll() {
+        Document doc;
+        doc.resetProject(makeExample("sheet"));
+        const Project original = doc.project();
+        const quint64 surfaceRevision = doc.surfaceRevision(0);
+        ReferenceShape tet{"tet",
+                           "tet.obj",
+                           {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                           {},
+                           {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}};
+        ReferenceShape cloud{"scan", "", {{1, 2, 3}, {4, 5, 6}}, {{0, 0, 1}, {0, 1, 0}}, {}};
+        // Refusals change nothing.
+        QVERIFY(ReferenceShapesCommand::createImport(doc, ReferenceShape{}).isRefused());
+        ReferenceShape badFace = tet;
+        badFace.triangles[2][1] = 4;
+        QVERIFY(ReferenceShapesCommand::createImport(doc, badFace).isRefused());
+        ReferenceShape notANumber = cloud;
+        notANumber.points[1].z = std::nan("");
+        QVERIFY(ReferenceShapesCommand::createImport(doc, notANumber).isRefused());
+        QVERIFY(ReferenceShapesCommand::createRemoveAll(doc).isRefused());
+        QVERIFY(doc.project() == original);
+
+        // Saved, the import and its undo are exact to the byte.
+        redoUndoRedo(doc, ReferenceShapesCommand::createImport(doc, tet), "import shape");
+        QSignalSpy spy(&doc, &Document::changed);
+        QVERIFY(pushOrExplain(doc, ReferenceShapesCommand::createImport(doc, cloud)).isEmpty());
+        QCOMPARE(spy.count(), 1);
+        QCOMPARE(spy.takeFirst().at(0).value<Changes>(), Changes(Change::ReferenceShapes));
+        QCOMPARE(doc.surfaceRevision(0), surfaceRevision); // no surface to resample
+        const Project both = doc.project();
+        QCOMPARE(both.referenceShapes.size(), std::size_t(2));
+        QVERIFY(both.referenceShapes[0] == tet && both.referenceShapes[1] == cloud);
+        QVERIFY(pushOrExplain(doc, ReferenceShapesCommand::createRemoveAll(doc)).isEmpty());
+        QVERIFY(doc.project().referenceShapes.empty());
+        QVERIFY(doc.project().surfaces == original.surfaces);
+        doc.undoStack()->undo();
+        QVERIFY(doc.project() == both);
+        doc.undoStack()->undo();
+        doc.undoStack()->undo();
+        QVERIFY(doc.project() == original);
+        doc.undoStack()->redo();
+        doc.undoStack()->redo();
+        QVERIFY(doc.project() == both);
+        doc.undoStack()->redo();
+        QVERIFY(doc.project().referenceShapes.empty());
     }
 };
 

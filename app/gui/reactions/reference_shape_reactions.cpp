@@ -1,0 +1,192 @@
+#include "reference_shape_reactions.h"
+
+#include "../workspace.h"
+#include "io/reference/reference_import.h"
+#include "model/document/commands/reference_shapes_command.h"
+#include "model/document/document.h"
+
+#include <QAction>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLocale>
+#include <QProgressDialog>
+#include <QThread>
+#include <QTimer>
+
+#include <algorithm>
+#include <atomic>
+
+namespace devsurf::app {
+
+// What the worker thread and the window share: the request, the progress as it goes, the
+// cancel flag and the result (read by the window only after the thread finished).
+struct ImportReferenceShapeReaction::Job {
+    QString path;
+    std::atomic<int> permille{0};
+    std::atomic<bool> cancel{false};
+    io::ReferenceImportResult result;
+};
+
+namespace {
+
+QString errorSentence(const io::ReferenceImportError& error, const QString& path) {
+    using Code = io::ReferenceImportError::Code;
+    using R = ImportReferenceShapeReaction;
+    const QString name = QFileInfo(path).fileName();
+    switch (error.code) {
+    case Code::UnknownFormat:
+        return R::tr("%1 is not a file DevSurf reads shapes from; choose a mesh (OBJ, PLY, STL, "
+                     "OFF) or a point cloud (XYZ, PTS).")
+            .arg(name);
+    case Code::Unreadable:
+        return R::tr("%1 cannot be read; check that it exists and that you may read it.").arg(name);
+    case Code::TooLarge:
+        return R::tr("%1 is too large; DevSurf takes up to %2 points and %3 triangles.")
+            .arg(name, QLocale().toString(static_cast<qulonglong>(io::kMaxReferencePoints)),
+                 QLocale().toString(static_cast<qulonglong>(io::kMaxReferenceTriangles)));
+    case Code::Damaged:
+        return R::tr("%1 is damaged or not a valid file of its type; nothing was imported.")
+            .arg(name);
+    case Code::Truncated:
+        return R::tr("%1 ends before its last point or triangle; copy or export it again.")
+            .arg(name);
+    case Code::NotANumber:
+        return R::tr("%1 holds a coordinate that is not a finite number of sensible size; nothing "
+                     "was imported.")
+            .arg(name);
+    case Code::BadFaces:
+        return R::tr("A face of %1 names a point the file does not have; nothing was imported.")
+            .arg(name);
+    case Code::NoPoints:
+        return R::tr("%1 holds no points to import.").arg(name);
+    case Code::Cancelled:
+        break;
+    }
+    return R::tr("No reference shape could be imported from %1.").arg(name);
+}
+
+} // namespace
+
+ImportReferenceShapeReaction::ImportReferenceShapeReaction(QAction* action, Workspace* workspace)
+    : Reaction(action, workspace) {}
+
+ImportReferenceShapeReaction::~ImportReferenceShapeReaction() {
+    if (m_thread != nullptr) {
+        // Closed while reading: stop the reader and wait for it, nothing is applied.
+        m_job->cancel = true;
+        m_thread->wait();
+        delete m_thread;
+    }
+}
+
+void ImportReferenceShapeReaction::onTriggered() {
+    if (isBusy()) {
+        return;
+    }
+    const QString path =
+        m_chooser ? m_chooser()
+                  : QFileDialog::getOpenFileName(
+                        workspace()->window(), tr("Import Reference Shape"),
+                        workspace()->fileDialogDirectory(),
+                        tr("Meshes and point clouds (*.obj *.ply *.stl *.off *.xyz *.pts);;"
+                           "Meshes (*.obj *.ply *.stl *.off);;Point clouds (*.xyz *.pts)"));
+    if (!path.isEmpty()) {
+        importFile(path);
+    }
+}
+
+void ImportReferenceShapeReaction::importFile(const QString& path) {
+    if (isBusy()) {
+        return;
+    }
+    m_job = std::make_shared<Job>();
+    m_job->path = path;
+    std::shared_ptr<Job> job = m_job;
+    m_thread = QThread::create([job] {
+        const io::ReferenceProgress progress = [&job](double fraction) {
+            job->permille = static_cast<int>(1000.0 * std::clamp(fraction, 0.0, 1.0));
+            return !job->cancel.load();
+        };
+        job->result = io::readReferenceShape(job->path.toStdString(), progress);
+    });
+    connect(m_thread, &QThread::finished, this, &ImportReferenceShapeReaction::onRead);
+
+    // Shown only if reading takes a while; window-modal, so the design is not edited meanwhile.
+    m_progress =
+        new QProgressDialog(tr("Reading reference shape %1…").arg(QFileInfo(path).fileName()),
+                            tr("Cancel"), 0, 1000, workspace()->window());
+    m_progress->setObjectName(QStringLiteral("importReferenceShapeProgress"));
+    m_progress->setWindowTitle(tr("Import Reference Shape"));
+    m_progress->setWindowModality(Qt::WindowModal);
+    m_progress->setMinimumDuration(400);
+    m_progress->setAutoClose(false);
+    m_progress->setAutoReset(false);
+    m_progress->setValue(0);
+    connect(m_progress, &QProgressDialog::canceled, this, [job] { job->cancel = true; });
+    m_poll = new QTimer(this);
+    connect(m_poll, &QTimer::timeout, this, [this, job] {
+        if (m_progress != nullptr && !job->cancel) {
+            m_progress->setValue(std::min(job->permille.load(), 999));
+        }
+    });
+    m_poll->start(50);
+    m_thread->start();
+}
+
+void ImportReferenceShapeReaction::onRead() {
+    m_poll->stop();
+    m_poll->deleteLater();
+    m_poll = nullptr;
+    const bool cancelled = m_progress->wasCanceled();
+    m_progress->deleteLater();
+    m_progress->hide();
+    m_progress = nullptr;
+    m_thread->deleteLater();
+    m_thread = nullptr;
+    const std::shared_ptr<Job> job = std::move(m_job);
+    if (cancelled && !job->result.error) {
+        // Read before the cancel reached the reader: cancelled all the same.
+        job->result = {};
+        job->result.error = io::ReferenceImportError{io::ReferenceImportError::Code::Cancelled, {}};
+    }
+    bool imported = false;
+    const QString fileName = QFileInfo(job->path).fileName();
+    if (job->result.error) {
+        if (job->result.error->code == io::ReferenceImportError::Code::Cancelled) {
+            emit workspace()->statusMessage(
+                tr("Import of reference shape %1 cancelled").arg(fileName));
+        } else {
+            workspace()->showError(tr("Cannot import the reference shape"),
+                                   errorSentence(*job->result.error, job->path));
+        }
+    } else {
+        const QString name = QString::fromStdString(job->result.shape.name);
+        const int points = static_cast<int>(job->result.shape.points.size());
+        const int triangles = static_cast<int>(job->result.shape.triangles.size());
+        imported = workspace()->apply(document::ReferenceShapesCommand::createImport(
+                                          *workspace()->document(), std::move(job->result.shape)),
+                                      tr("Cannot import the reference shape"));
+        if (imported) {
+            emit workspace()->statusMessage(tr("Imported reference shape %1: %2, %3")
+                                                .arg(name, tr("%n point(s)", nullptr, points),
+                                                     tr("%n triangle(s)", nullptr, triangles)));
+        }
+    }
+    emit finished(imported);
+}
+
+RemoveReferenceShapesReaction::RemoveReferenceShapesReaction(QAction* action, Workspace* workspace)
+    : Reaction(action, workspace) {
+    followDocumentAndSelection();
+}
+
+void RemoveReferenceShapesReaction::updateEnableState() {
+    action()->setEnabled(!workspace()->document()->project().referenceShapes.empty());
+}
+
+void RemoveReferenceShapesReaction::onTriggered() {
+    workspace()->apply(document::ReferenceShapesCommand::createRemoveAll(*workspace()->document()),
+                       tr("Cannot remove the reference shapes"));
+}
+
+} // namespace devsurf::app

@@ -1,0 +1,60 @@
+#pragma once
+
+#include "reaction.h"
+
+#include <QString>
+
+#include <functional>
+#include <memory>
+
+class QProgressDialog;
+class QThread;
+class QTimer;
+
+namespace devsurf::app {
+
+// File ▸ Import Reference Shape…: a mesh (OBJ, PLY, STL, OFF) or point cloud (XYZ, PTS) becomes
+// a reference shape, one undo step. The file is read on a worker thread behind a progress
+// dialog that can cancel; a file that cannot be read is one message and changes nothing.
+class ImportReferenceShapeReaction : public Reaction {
+    Q_OBJECT
+public:
+    ImportReferenceShapeReaction(QAction* action, Workspace* workspace);
+    ~ImportReferenceShapeReaction() override;
+
+    // Replaces the file dialog (tests): returns the file to import, or empty for none.
+    void setFileChooser(std::function<QString()> chooser) { m_chooser = std::move(chooser); }
+    // Starts reading the file; finished() follows when it is read and applied, refused or
+    // cancelled.
+    void importFile(const QString& path);
+    bool isBusy() const { return m_thread != nullptr; }
+
+signals:
+    void finished(bool imported);
+
+protected:
+    void onTriggered() override;
+
+private:
+    struct Job;
+    void onRead();
+
+    std::function<QString()> m_chooser;
+    std::shared_ptr<Job> m_job;
+    QThread* m_thread = nullptr;
+    QProgressDialog* m_progress = nullptr;
+    QTimer* m_poll = nullptr;
+};
+
+// Edit ▸ Remove Reference Shapes: every reference shape, one undo step.
+class RemoveReferenceShapesReaction : public Reaction {
+    Q_OBJECT
+public:
+    RemoveReferenceShapesReaction(QAction* action, Workspace* workspace);
+
+protected:
+    void onTriggered() override;
+    void updateEnableState() override;
+};
+
+} // namespace devsurf::app
