@@ -5,12 +5,12 @@
 #include "camera_actions.h"
 #include "drag_tool.h"
 #include "main_window.h"
-#include "views/development_view.h"
 #include "measure_tool.h"
 #include "panels/solver_panel.h"
 #include "reactions/curve_reactions.h"
 #include "rotate_tool.h"
 #include "solve_controller.h"
+#include "views/development_view.h"
 #include "views/surface_view.h"
 
 #include <QAction>
