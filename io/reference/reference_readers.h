@@ -49,6 +49,9 @@ struct MeshCheck {
 };
 MeshCheck checkMeshFile(const std::string& path, ReferenceFormat format, std::uint64_t size,
                         ProgressTicker& progress);
+// The PLY part of checkMeshFile (ply_check.cpp); pointCount: the vertices OpenMesh must read.
+std::optional<ReferenceImportError> checkPly(const std::string& path, std::uint64_t size,
+                                             ProgressTicker& progress, std::uint64_t& pointCount);
 // pointNormals: whether OpenMesh's normals per point are the file's (PLY's are; STL gives one
 // per facet, OBJ's come from the check).
 ReferenceImportResult readMeshFile(const std::string& path, std::uint64_t expectedPoints,

@@ -4,6 +4,7 @@
 #include "solver/formulation/domain_terms.h"
 #include "solver/formulation/point_combinations.h"
 
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 
@@ -64,8 +65,8 @@ model::Development DevelopmentVariables::read(const std::vector<double>& x) cons
     return development;
 }
 
-bool DevelopmentVariables::setPullTarget(int meshVertex, const model::Vec2& target) {
-    const auto it = pullRow.find(meshVertex);
+bool DevelopmentVariables::setPullTarget(model::VertexId vertex, const model::Vec2& target) {
+    const auto it = pullRow.find(vertex);
     if (it == pullRow.end() || pulls == nullptr) {
         return false;
     }
@@ -145,15 +146,18 @@ DevelopmentVariables addDevelopment(const model::CompositeSurface& surface,
     problem.add(family, std::move(isometry));
     if (!options.pulls.empty()) {
         auto pulls = std::make_unique<TargetTerm>();
-        for (const auto& [vertex, target] : options.pulls) {
-            if (vertex < 0 || static_cast<std::size_t>(vertex) >= mesh.vertices.size() ||
-                result.pullRow.count(vertex) != 0) {
-                throw std::invalid_argument("a pulled point of the development is not one of "
-                                            "its vertices");
+        const std::vector<model::VertexId>& coarse = mesh.coarseVertexIds;
+        for (const SheetHandle& handle : options.pulls) {
+            // Coarse vertices come first in the sampled mesh.
+            const auto it = std::find(coarse.begin(), coarse.end(), handle.vertex);
+            if (it == coarse.end() || result.pullRow.count(handle.vertex) != 0) {
+                throw std::invalid_argument("vertex " + std::to_string(handle.vertex) +
+                                            " of the sheet does not exist.");
             }
-            const model::Vec2 p = (target - result.origin) * (1.0 / scale);
+            const int index = static_cast<int>(it - coarse.begin());
+            const model::Vec2 p = (handle.target - result.origin) * (1.0 / scale);
             const double xy[2] = {p.x, p.y};
-            result.pullRow[vertex] = pulls->addPointTarget(result.offset + 2 * vertex, 2, xy);
+            result.pullRow[handle.vertex] = pulls->addPointTarget(result.offset + 2 * index, 2, xy);
         }
         const FamilyId pullFamily =
             problem.addFamily("sheetPulls", TermRole::Energy, options.pullWeight);

@@ -17,6 +17,13 @@
 
 namespace devsurf::solver {
 
+// A coarse vertex's place in a held sheet pulled towards a target (mm, in the coordinates of
+// the kept development, CompositeSurface::development()).
+struct SheetHandle {
+    model::VertexId vertex = model::kInvalidId;
+    model::Vec2 target;
+};
+
 // Where the flat copy lives in the state, and how to read it back in millimetres.
 struct DevelopmentVariables {
     model::SampledMesh mesh; // the sampled mesh the copy is of
@@ -26,11 +33,11 @@ struct DevelopmentVariables {
     FairnessTerm* fairness = nullptr; // owned by the problem; null when the copy is fixed
     // Pulled points of the copy (DevelopmentOptions::pulls): their first row in `pulls`.
     TargetTerm* pulls = nullptr;
-    std::map<int, int> pullRow; // mesh vertex → row
+    std::map<model::VertexId, int> pullRow; // coarse vertex → row
 
     model::Development read(const std::vector<double>& x) const;
-    // Moves a pulled point's target (mm); false if that mesh vertex is not pulled.
-    bool setPullTarget(int meshVertex, const model::Vec2& target);
+    // Moves a pulled point's target (mm); false if that vertex's place is not pulled.
+    bool setPullTarget(model::VertexId vertex, const model::Vec2& target);
 };
 
 // How the flat copy enters a problem (FormulationOptions::development…).
@@ -42,10 +49,10 @@ struct DevelopmentOptions {
     double fairnessWeight = 0.01;
     // A copy that is not fixed is confined to this sheet (addDomain); free: unconfined.
     model::SheetDomain domain;
-    // Points of the copy pulled towards targets (mesh vertex, mm): an energy of pullWeight
+    // Coarse vertices' places pulled towards targets (mm): an energy of pullWeight
     // (family "sheetPulls", driving ε₁) that the surface follows as far as it can, the two-way
     // editing of a held sheet in the development view.
-    std::vector<std::pair<int, model::Vec2>> pulls;
+    std::vector<SheetHandle> pulls;
     double pullWeight = 100.0; // FormulationOptions::sheetHandleWeight
 };
 

@@ -424,25 +424,14 @@ struct SurfaceFormulation::Builder {
     void addDevelopment() {
         if (options.developmentSamplesPerInterval > 0) {
             const std::vector<model::Vec2>& start = options.developmentStart;
-            DevelopmentOptions development{options.developmentSamplesPerInterval,
-                                           start.empty() ? nullptr : &start,
-                                           options.fixedDevelopment,
-                                           options.developmentWeight,
-                                           options.developmentFairnessWeight,
-                                           options.developmentDomain,
-                                           {},
-                                           options.sheetHandleWeight};
-            // Coarse vertices come first in the sampled mesh, in id order.
-            for (const SheetHandle& handle : options.sheetHandles) {
-                const auto& vertices = surface.vertices();
-                const auto it = vertices.find(handle.vertex);
-                if (it == vertices.end()) {
-                    throw std::invalid_argument("vertex " + std::to_string(handle.vertex) +
-                                                " of the sheet does not exist.");
-                }
-                development.pulls.emplace_back(
-                    static_cast<int>(std::distance(vertices.begin(), it)), handle.target);
-            }
+            const DevelopmentOptions development{options.developmentSamplesPerInterval,
+                                                 start.empty() ? nullptr : &start,
+                                                 options.fixedDevelopment,
+                                                 options.developmentWeight,
+                                                 options.developmentFairnessWeight,
+                                                 options.developmentDomain,
+                                                 options.sheetHandles,
+                                                 options.sheetHandleWeight};
             f.m_development =
                 solver::addDevelopment(surface, development, vertexOffsets(), edgeOffsets,
                                        f.m_scale, f.m_problem, f.m_initialState);

@@ -27,13 +27,6 @@ struct VertexHandle {
     model::Vec3 target; // only used when !fixed, in model coordinates
 };
 
-// A coarse vertex's place in a held sheet pulled towards a target (mm, in the coordinates of
-// the kept development, CompositeSurface::development()).
-struct SheetHandle {
-    model::VertexId vertex = model::kInvalidId;
-    model::Vec2 target;
-};
-
 // A user handle on an interior control point of an S-edge (a dragged crease): pulled towards
 // a target with the weight of the vertex handles.
 struct ControlPointHandle {

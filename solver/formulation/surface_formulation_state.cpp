@@ -135,10 +135,7 @@ bool SurfaceFormulation::setControlPointTarget(model::EdgeId edge, int index, co
 }
 
 bool SurfaceFormulation::setSheetHandleTarget(VertexId vertex, const model::Vec2& target) {
-    const auto& vertices = m_development.mesh.coarseVertexIds;
-    const auto it = std::find(vertices.begin(), vertices.end(), vertex);
-    return it != vertices.end() &&
-           m_development.setPullTarget(static_cast<int>(it - vertices.begin()), target);
+    return m_development.setPullTarget(vertex, target);
 }
 
 Vec3 SurfaceFormulation::toModel(const double* p) const {
