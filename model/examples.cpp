@@ -1,8 +1,12 @@
 #include "examples.h"
 
 #include "bspline_curve.h"
+#include "development.h"
 #include "model_error.h"
+#include "sampled_mesh.h"
+#include "sheet_domain.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -30,6 +34,30 @@ std::vector<Vec3> controlPointsAlong(const SplineSpace& space, const Vec3& start
     }
     points.front() = start;
     points.back() = end;
+    return points;
+}
+
+// As controlPointsAlong, then corrected a few times by what the curve misses at the Greville
+// abscissae, so that a curve such as a circular arc lies on f to a fraction of a micrometre
+// rather than inside it by the control polygon's sag.
+std::vector<Vec3> controlPointsThrough(const SplineSpace& space, const Vec3& start, const Vec3& end,
+                                       const std::function<Vec3(double)>& f) {
+    std::vector<Vec3> points = controlPointsAlong(space, start, end, f);
+    const std::vector<double> knots = space.knots(false);
+    const int m = space.degree;
+    for (int round = 0; round < 20; ++round) {
+        const BSplineCurve curve = BSplineCurve::uniform(space, points);
+        std::vector<Vec3> corrected = points;
+        for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+            double greville = 0.0;
+            for (int j = 1; j <= m; ++j) {
+                greville += knots[i + static_cast<std::size_t>(j)];
+            }
+            greville /= m;
+            corrected[i] = points[i] + (f(greville) - curve.evaluate(greville));
+        }
+        points = std::move(corrected);
+    }
     return points;
 }
 
@@ -302,12 +330,103 @@ CompositeSurface makeFig6(int intervals) {
     return s;
 }
 
+// A flat disk of radius 150 mm with one curved crease (the paper's Fig. 13): the crease runs
+// from the leftmost to the rightmost point of the circle, bowing 40 mm up, with the curved-fold
+// condition, and divides the disk into two strips, each ruled straight across from the crease
+// to its half of the circle and cut by those rulings into size faces (the outer two ending in
+// the crease's end points). The disk keeps its development on a disk-shaped sheet, so that its
+// rulings can move in the sheet as it folds (with the development fixed, a flat sheet whose
+// rulings are not those of a curved fold cannot start folding).
+CompositeSurface makeFig13(int size) {
+    const double radius = 150.0;
+    const double bow = 40.0;
+    const SplineSpace space{3, 2, 2};
+    CompositeSurface s;
+    s.setName("fig13");
+    // Point k of size + 1 along the crease and both arcs shares its x: the rulings are vertical
+    // in the sheet and meet the crease from both sides at its interior vertices.
+    // (Sines of the smaller angle, so that the middle and the ends come out exact.)
+    auto xAt = [&](double k) { return radius * std::sin(kPi * (k / size - 0.5)); };
+    auto crease = [&](double k) {
+        const double x = xAt(k);
+        return Vec3(x, bow * (1.0 - (x / radius) * (x / radius)), 0.0);
+    };
+    auto creaseTangent = [&](double k) {
+        const Vec3 t(1.0, -2.0 * bow * xAt(k) / (radius * radius), 0.0);
+        return t / t.norm();
+    };
+    auto arc = [&](double k, double side) { // side +1: the upper half, −1: the lower
+        return Vec3(xAt(k), side * radius * std::sin(kPi * std::min(k, size - k) / size), 0.0);
+    };
+    std::vector<VertexId> onCrease(size + 1);
+    std::vector<VertexId> upper(size + 1);
+    std::vector<VertexId> lower(size + 1);
+    for (int k = 0; k <= size; ++k) {
+        onCrease[k] = s.addVertex(crease(k));
+        upper[k] = (k == 0 || k == size) ? onCrease[k] : s.addVertex(arc(k, 1.0));
+        lower[k] = (k == 0 || k == size) ? onCrease[k] : s.addVertex(arc(k, -1.0));
+    }
+    // Both halves counter-clockwise seen from +z; the outer faces end in the crease's ends.
+    auto addLoop = [&s](std::vector<VertexId> loop) {
+        loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
+        if (loop.front() == loop.back()) {
+            loop.pop_back();
+        }
+        s.addFace(loop);
+    };
+    for (int k = 0; k < size; ++k) {
+        addLoop({onCrease[k], onCrease[k + 1], upper[k + 1], upper[k]});
+        addLoop({lower[k], lower[k + 1], onCrease[k + 1], onCrease[k]});
+    }
+    for (int k = 0; k < size; ++k) {
+        const double k0 = k;
+        auto along = [&](VertexId from, VertexId to, const std::function<Vec3(double)>& f) {
+            return controlPointsAlong(space, s.position(from), s.position(to), f);
+        };
+        std::vector<Vec3> points =
+            along(onCrease[k], onCrease[k + 1], [&](double t) { return crease(k0 + t); });
+        // Tangent-continuous through the interior crease vertices, as fig8's creases.
+        const std::size_t last = points.size() - 1;
+        if (k > 0) {
+            points[1] = points[0] + creaseTangent(k) * (points[1] - points[0]).norm();
+        }
+        if (k + 1 < size) {
+            points[last - 1] =
+                points[last] - creaseTangent(k + 1) * (points[last] - points[last - 1]).norm();
+        }
+        const EdgeId fold = s.setSpline(onCrease[k], onCrease[k + 1], space, points);
+        s.setCreaseCondition(fold, CreaseCondition::CurvedFold);
+        // The rim on the circle, so that the development starts on its sheet.
+        s.setSpline(upper[k], upper[k + 1], space,
+                    controlPointsThrough(space, s.position(upper[k]), s.position(upper[k + 1]),
+                                         [&](double t) { return arc(k0 + t, 1.0); }));
+        s.setSpline(lower[k], lower[k + 1], space,
+                    controlPointsThrough(space, s.position(lower[k]), s.position(lower[k + 1]),
+                                         [&](double t) { return arc(k0 + t, -1.0); }));
+    }
+    // The crease's middle vertex and the rim point below it pinned: lifting the rim point
+    // above them folds the disk. (Two pins with the straight line between them across rulings
+    // would keep the strips around that line planar, and a curved crease with a planar side
+    // cannot fold.)
+    s.setPinned(onCrease[size / 2], true);
+    s.setPinned(lower[size / 2], true);
+    if (const auto problem = keepDevelopment(s)) {
+        throw ModelError(*problem);
+    }
+    SheetDomain disk;
+    disk.shape = SheetShape::Disk;
+    disk.radius = radius;
+    s.setSheetDomain(
+        placeDomain(disk, sampleSurface(s, kDevelopmentSamplesPerInterval), s.development()));
+    return s;
+}
+
 } // namespace
 
 const std::vector<ExampleInfo>& builtInExamples() {
     static const std::vector<ExampleInfo> examples{
-        {"sheet", 3, 1, 60}, {"annulus", 6, 1, 60}, {"cylinder", 6, 3, 120},
-        {"mixed", 2, 1, 50}, {"fig8", 3, 2, 30},    {"fig6", 4, 1, 40},
+        {"sheet", 3, 1, 60}, {"annulus", 6, 1, 60}, {"cylinder", 6, 3, 120}, {"mixed", 2, 1, 50},
+        {"fig8", 3, 2, 30},  {"fig6", 4, 1, 40},    {"fig13", 6, 3, 40},
     };
     return examples;
 }
@@ -339,6 +458,8 @@ Project makeExample(const std::string& name, int size) {
             project.addSurface(makeMixed(size));
         } else if (name == "fig8") {
             project.addSurface(makeFig8(size));
+        } else if (name == "fig13") {
+            project.addSurface(makeFig13(size));
         } else {
             project.addSurface(makeFig6(size));
         }

@@ -170,7 +170,12 @@
         <translation>Zwei Streifen, verbunden durch einen gekrümmten Falz mit der Bedingung „Gekrümmte Faltung“, die unteren Ecken festgehalten; Größe Intervalle je Kurve. Ziehen Sie eine obere Ecke nach oben, um ihn zu falten.</translation>
     </message>
     <message>
-        <location filename="../app/text/example_text.cpp" line="33"/>
+        <location filename="../app/text/example_text.cpp" line="34"/>
+        <source>A disk with one curved crease between two strips, folded from a disk-shaped sheet it keeps; the crease&apos;s middle and the rim below it pinned; size faces per strip. Drag the top of the rim up and in towards the crease to fold it.</source>
+        <translation>Eine Kreisscheibe mit einem gekrümmten Falz zwischen zwei Streifen, gefaltet aus einem kreisförmigen Bogen, den sie festhält; die Mitte des Falzes und der Randpunkt darunter fixiert; size Flächenstücke je Streifen. Ziehen Sie den obersten Randpunkt nach oben und zum Falz hin, um die Scheibe zu falten.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="40"/>
         <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
         <translation>Ein Streifen, ein spitzer Streifen, ein Kegel und ein ebenes Flächenstück; Größe Intervalle je Kurve.</translation>
     </message>
@@ -1412,49 +1417,49 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="254"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="24"/>
         <source>Points of the development can be dragged only where the surface holds its sheet (Tools ▸ Hold the Sheet).</source>
         <translation>Punkte der Abwicklung lassen sich nur ziehen, wo die Fläche ihren Bogen festhält (Werkzeuge ▸ Bogen festhalten).</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="331"/>
+        <location filename="../app/gui/drag_tool.cpp" line="261"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>Ecke %1 ist festgehalten und kann nicht gezogen werden; geben Sie sie zuerst frei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="284"/>
-        <location filename="../app/gui/drag_tool.cpp" line="349"/>
-        <location filename="../app/gui/drag_tool.cpp" line="392"/>
+        <location filename="../app/gui/drag_tool.cpp" line="279"/>
+        <location filename="../app/gui/drag_tool.cpp" line="322"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="54"/>
         <source>a drag started</source>
         <translation>ein Ziehen hat begonnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="375"/>
+        <location filename="../app/gui/drag_tool.cpp" line="305"/>
         <source>There is no edge %1.</source>
         <translation>Es gibt keine Kante %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="378"/>
+        <location filename="../app/gui/drag_tool.cpp" line="308"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>Kante %1 ist kein Falz (eine Kurve zwischen zwei Flächenstücken); nur Falze lassen sich ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="383"/>
+        <location filename="../app/gui/drag_tool.cpp" line="313"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>Kante %1 kann sich nicht bewegen: beide Enden sind festgehalten und sie hat keinen weiteren Kontrollpunkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="452"/>
+        <location filename="../app/gui/drag_tool.cpp" line="382"/>
         <source>Snapped to reference curve %1.</source>
         <translation>An Referenzkurve %1 gefangen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="502"/>
+        <location filename="../app/gui/drag_tool.cpp" line="432"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>Die festgehaltenen Ecken %1 und %2 halten Ecke %3 auf der Geraden zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="508"/>
+        <location filename="../app/gui/drag_tool.cpp" line="438"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>Die festgehaltenen Ecken %1, %2 und %3 halten Ecke %4 im Dreieck zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
@@ -1489,8 +1494,8 @@
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="643"/>
-        <location filename="../app/gui/drag_tool.cpp" line="657"/>
+        <location filename="../app/gui/drag_tool.cpp" line="573"/>
+        <location filename="../app/gui/drag_tool.cpp" line="587"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

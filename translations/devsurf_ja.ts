@@ -168,7 +168,12 @@
         <translation>曲線折りの条件をもつ 1 本の曲がった折り線でつながった 2 つのストリップ。下の角は固定、曲線ごとに サイズ 個の区間。上の角を上へドラッグすると折れます。</translation>
     </message>
     <message>
-        <location filename="../app/text/example_text.cpp" line="33"/>
+        <location filename="../app/text/example_text.cpp" line="34"/>
+        <source>A disk with one curved crease between two strips, folded from a disk-shaped sheet it keeps; the crease&apos;s middle and the rim below it pinned; size faces per strip. Drag the top of the rim up and in towards the crease to fold it.</source>
+        <translation>2 枚の帯の間に曲線の折り線が 1 本ある円板で、保持している円板の形のシートから折られます。折り線の中点とその下の縁の点が固定されています。帯ごとに size 個の面。縁の一番上の点を上へ、折り線の方へドラッグすると折れます。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="40"/>
         <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
         <translation>ストリップ、尖ったストリップ、錐面、平面パッチ。曲線ごとにサイズ個の区間。</translation>
     </message>
@@ -1397,49 +1402,49 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="254"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="24"/>
         <source>Points of the development can be dragged only where the surface holds its sheet (Tools ▸ Hold the Sheet).</source>
         <translation>展開図の点をドラッグできるのは、曲面がシートを保持しているときだけです (ツール ▸ シートを保持)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="331"/>
+        <location filename="../app/gui/drag_tool.cpp" line="261"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>頂点 %1 は固定されているためドラッグできません。先に固定を解除してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="284"/>
-        <location filename="../app/gui/drag_tool.cpp" line="349"/>
-        <location filename="../app/gui/drag_tool.cpp" line="392"/>
+        <location filename="../app/gui/drag_tool.cpp" line="279"/>
+        <location filename="../app/gui/drag_tool.cpp" line="322"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="54"/>
         <source>a drag started</source>
         <translation>ドラッグが始まりました</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="375"/>
+        <location filename="../app/gui/drag_tool.cpp" line="305"/>
         <source>There is no edge %1.</source>
         <translation>辺 %1 はありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="378"/>
+        <location filename="../app/gui/drag_tool.cpp" line="308"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>辺 %1 は折り線 (2 つのパッチの間の曲線) ではありません。ドラッグできるのは折り線だけです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="383"/>
+        <location filename="../app/gui/drag_tool.cpp" line="313"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>辺 %1 は動かせません: 両端が固定されていて、ほかに制御点がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="452"/>
+        <location filename="../app/gui/drag_tool.cpp" line="382"/>
         <source>Snapped to reference curve %1.</source>
         <translation>参照曲線 %1 にスナップしました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="502"/>
+        <location filename="../app/gui/drag_tool.cpp" line="432"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1 と %2 が頂点 %3 をその間の直線上に押さえています (2 点の距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="508"/>
+        <location filename="../app/gui/drag_tool.cpp" line="438"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1、%2、%3 が頂点 %4 をその三角形の中に押さえています (距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
@@ -1474,8 +1479,8 @@
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="643"/>
-        <location filename="../app/gui/drag_tool.cpp" line="657"/>
+        <location filename="../app/gui/drag_tool.cpp" line="573"/>
+        <location filename="../app/gui/drag_tool.cpp" line="587"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

@@ -30,6 +30,13 @@ QString exampleDescription(const std::string& name) {
             "Two strips joined by one curved crease with the curved-fold condition, the bottom "
             "corners pinned; size intervals per curve. Drag a top corner up to fold it.");
     }
+    if (name == "fig13") {
+        return QCoreApplication::translate(
+            "ExampleDialog",
+            "A disk with one curved crease between two strips, folded from a disk-shaped sheet "
+            "it keeps; the crease's middle and the rim below it pinned; size faces per strip. "
+            "Drag the top of the rim up and in towards the crease to fold it.");
+    }
     return QCoreApplication::translate("ExampleDialog",
                                        "A strip, a pointed strip, a cone and a planar patch; size "
                                        "intervals per curve.");

@@ -1,4 +1,5 @@
 #include "model/examples.h"
+#include "model/sheet_domain.h"
 #include "model/strip.h"
 #include "solver/core/guided_projection.h"
 #include "solver/formulation/perturbation.h"
@@ -35,6 +36,24 @@ model::CompositeSurface scaledCopy(const model::CompositeSurface& surface, doubl
             out.setControlPoints(id, std::move(points));
         }
     }
+    // A kept development and its sheet scale with the design.
+    std::vector<model::Vec2> development = surface.development();
+    for (model::Vec2& p : development) {
+        p = p * s;
+    }
+    out.setDevelopment(std::move(development));
+    model::SheetDomain domain = surface.sheetDomain();
+    domain.width *= s;
+    domain.height *= s;
+    domain.radius *= s;
+    domain.innerRadius *= s;
+    domain.centre = domain.centre * s;
+    for (auto& loop : domain.outline) {
+        for (model::Vec2& p : loop) {
+            p = p * s;
+        }
+    }
+    out.setSheetDomain(std::move(domain));
     return out;
 }
 
@@ -112,7 +131,11 @@ private slots:
         QVERIFY2(summary.succeeded(), summary.briefReport().c_str());
         const double diameter = surfaceDiameter(surface);
         const double move = largestMove(surface, session.surface());
-        QVERIFY2(move <= 1e-6 * diameter,
+        // A design held on a sheet of a given shape moves onto it: fig13's rim is a spline
+        // within 6e-4 mm of its 150 mm circle, and Solve puts it on (measured 3.5e-6 of the
+        // diameter at every scale).
+        const double limit = surface.sheetDomain().isFree() ? 1e-6 : 1e-5;
+        QVERIFY2(move <= limit * diameter,
                  qPrintable(QString("moved %1 of the diameter").arg(move / diameter)));
     }
 
