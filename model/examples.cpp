@@ -330,6 +330,65 @@ CompositeSurface makeFig6(int intervals) {
     return s;
 }
 
+// A torus (major radius 150 mm, minor 60 mm) of size bands around the tube, each a cone
+// between two parallel circles cut by rulings in the meridian planes into 2 × size sectors (the
+// paper's Fig. 15b). Every band's top curve is its bottom curve scaled about the axis and
+// lifted, so a′ ∥ b′ and the band is exactly developable; the circles are tangent-continuous
+// through the vertices, where the rulings in the meridian planes meet them at right angles, so
+// every vertex is developable too. The surface as a whole unfolds into no flat sheet: it has
+// local conditions only.
+CompositeSurface makeTorus(int size) {
+    const int bands = size;
+    const int sectors = 2 * size;
+    const double majorRadius = 150.0;
+    const double minorRadius = 60.0;
+    const SplineSpace space{3, 2, 2};
+    CompositeSurface s;
+    s.setName("torus");
+    auto around = [sectors](int i) { return 2.0 * kPi * i / sectors; };
+    // The circle of band boundary j: its radius about the z-axis and its height.
+    auto radiusOf = [&](int j) {
+        return majorRadius + minorRadius * std::cos(2.0 * kPi * j / bands);
+    };
+    auto heightOf = [&](int j) { return minorRadius * std::sin(2.0 * kPi * j / bands); };
+    auto onCircle = [&](int j, double phi) {
+        return Vec3(radiusOf(j) * std::cos(phi), radiusOf(j) * std::sin(phi), heightOf(j));
+    };
+    std::vector<std::vector<VertexId>> grid(bands, std::vector<VertexId>(sectors));
+    for (int j = 0; j < bands; ++j) {
+        for (int i = 0; i < sectors; ++i) {
+            grid[j][i] = s.addVertex(onCircle(j, around(i)));
+        }
+    }
+    for (int j = 0; j < bands; ++j) {
+        const int up = (j + 1) % bands;
+        for (int i = 0; i < sectors; ++i) {
+            const int next = (i + 1) % sectors;
+            // Counter-clockwise seen from outside the tube: the normals point out of it.
+            s.addFace({grid[j][i], grid[j][next], grid[up][next], grid[up][i]});
+        }
+    }
+    for (int j = 0; j < bands; ++j) {
+        for (int i = 0; i < sectors; ++i) {
+            const int next = (i + 1) % sectors;
+            const double phi0 = around(i);
+            const double phi1 = around(i + 1);
+            std::vector<Vec3> points =
+                controlPointsAlong(space, s.position(grid[j][i]), s.position(grid[j][next]),
+                                   [&](double t) { return onCircle(j, phi0 + t * (phi1 - phi0)); });
+            // The curve's ends along the circle's tangent, so that the circles pass smoothly
+            // through the vertices and the four right angles there sum to 2π.
+            const std::size_t last = points.size() - 1;
+            const Vec3 t0(-std::sin(phi0), std::cos(phi0), 0.0);
+            const Vec3 t1(-std::sin(phi1), std::cos(phi1), 0.0);
+            points[1] = points[0] + t0 * (points[1] - points[0]).norm();
+            points[last - 1] = points[last] - t1 * (points[last] - points[last - 1]).norm();
+            s.setSpline(grid[j][i], grid[j][next], space, points);
+        }
+    }
+    return s;
+}
+
 // A flat disk of radius 150 mm with one curved crease (the paper's Fig. 13): the crease runs
 // from the leftmost to the rightmost point of the circle, bowing 40 mm up, with the curved-fold
 // condition, and divides the disk into two strips, each ruled straight across from the crease
@@ -426,7 +485,7 @@ CompositeSurface makeFig13(int size) {
 const std::vector<ExampleInfo>& builtInExamples() {
     static const std::vector<ExampleInfo> examples{
         {"sheet", 3, 1, 60}, {"annulus", 6, 1, 60}, {"cylinder", 6, 3, 120}, {"mixed", 2, 1, 50},
-        {"fig8", 3, 2, 30},  {"fig6", 4, 1, 40},    {"fig13", 6, 3, 40},
+        {"fig8", 3, 2, 30},  {"fig6", 4, 1, 40},    {"fig13", 6, 3, 40},     {"torus", 6, 3, 40},
     };
     return examples;
 }
@@ -460,6 +519,8 @@ Project makeExample(const std::string& name, int size) {
             project.addSurface(makeFig8(size));
         } else if (name == "fig13") {
             project.addSurface(makeFig13(size));
+        } else if (name == "torus") {
+            project.addSurface(makeTorus(size));
         } else {
             project.addSurface(makeFig6(size));
         }

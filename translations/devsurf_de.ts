@@ -175,7 +175,12 @@
         <translation>Eine Kreisscheibe mit einem gekrümmten Falz zwischen zwei Streifen, gefaltet aus einem kreisförmigen Bogen, den sie festhält; die Mitte des Falzes und der Randpunkt darunter fixiert; size Flächenstücke je Streifen. Ziehen Sie den obersten Randpunkt nach oben und zum Falz hin, um die Scheibe zu falten.</translation>
     </message>
     <message>
-        <location filename="../app/text/example_text.cpp" line="40"/>
+        <location filename="../app/text/example_text.cpp" line="41"/>
+        <source>A closed torus of size bands of cones, 2 × size strips around: developable strip by strip but not from one sheet; its cutting pattern has one piece per band.</source>
+        <translation>Ein geschlossener Torus aus size Bändern von Kegeln, 2 × size Streifen rundherum: Streifen für Streifen abwickelbar, aber nicht aus einem Bogen; sein Schnittmuster hat ein Teil je Band.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="46"/>
         <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
         <translation>Ein Streifen, ein spitzer Streifen, ein Kegel und ein ebenes Flächenstück; Größe Intervalle je Kurve.</translation>
     </message>

@@ -173,7 +173,12 @@
         <translation>2 枚の帯の間に曲線の折り線が 1 本ある円板で、保持している円板の形のシートから折られます。折り線の中点とその下の縁の点が固定されています。帯ごとに size 個の面。縁の一番上の点を上へ、折り線の方へドラッグすると折れます。</translation>
     </message>
     <message>
-        <location filename="../app/text/example_text.cpp" line="40"/>
+        <location filename="../app/text/example_text.cpp" line="41"/>
+        <source>A closed torus of size bands of cones, 2 × size strips around: developable strip by strip but not from one sheet; its cutting pattern has one piece per band.</source>
+        <translation>錐面の帯 size 本からなる閉じたトーラスで、周方向に 2 × size 枚の帯があります。帯ごとには可展ですが 1 枚のシートからは作れません。型紙は帯ごとに 1 枚の部品になります。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="46"/>
         <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
         <translation>ストリップ、尖ったストリップ、錐面、平面パッチ。曲線ごとにサイズ個の区間。</translation>
     </message>

@@ -37,6 +37,12 @@ QString exampleDescription(const std::string& name) {
             "it keeps; the crease's middle and the rim below it pinned; size faces per strip. "
             "Drag the top of the rim up and in towards the crease to fold it.");
     }
+    if (name == "torus") {
+        return QCoreApplication::translate(
+            "ExampleDialog",
+            "A closed torus of size bands of cones, 2 × size strips around: developable strip by "
+            "strip but not from one sheet; its cutting pattern has one piece per band.");
+    }
     return QCoreApplication::translate("ExampleDialog",
                                        "A strip, a pointed strip, a cone and a planar patch; size "
                                        "intervals per curve.");

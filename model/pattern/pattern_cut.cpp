@@ -36,7 +36,7 @@ private:
 
 } // namespace
 
-std::set<EdgeId> chooseCutEdges(const CompositeSurface& surface) {
+std::set<EdgeId> chooseCutEdges(const CompositeSurface& surface, bool alongCreases) {
     std::map<FaceId, std::size_t> faceIndex;
     for (const auto& [id, loop] : surface.faces()) {
         faceIndex.emplace(id, faceIndex.size());
@@ -60,7 +60,8 @@ std::set<EdgeId> chooseCutEdges(const CompositeSurface& surface) {
     std::set<EdgeId> cut;
     for (EdgeId edge : interior) {
         const std::vector<FaceId> faces = surface.facesOfEdge(edge);
-        if (!components.unite(faceIndex.at(faces[0]), faceIndex.at(faces[1]))) {
+        if ((alongCreases && surface.edge(edge).isSpline()) ||
+            !components.unite(faceIndex.at(faces[0]), faceIndex.at(faces[1]))) {
             cut.insert(edge);
         }
     }

@@ -15,8 +15,11 @@ namespace devsurf::model::pattern {
 // topological disk: the edges not crossed by a spanning tree of the patches (built across
 // S-edges first, so the cut runs along rulings where it can), pruned of every edge that ends at
 // an interior vertex. Empty for a surface that is a disk already; one chain of rulings from
-// boundary to boundary for a closed cylinder or an annulus.
-std::set<EdgeId> chooseCutEdges(const CompositeSurface& surface);
+// boundary to boundary for a closed cylinder or an annulus. With alongCreases, every crease (an
+// S-edge between two patches) is cut too and the tree runs across rulings only, so that every
+// row of strips becomes its own piece (a closed surface such as a torus, whose rows develop onto
+// cones of different angles that overlap when joined).
+std::set<EdgeId> chooseCutEdges(const CompositeSurface& surface, bool alongCreases = false);
 
 // The sampled segments {min, max} of mesh vertices that lie on the given coarse edges.
 std::set<std::pair<int, int>> cutSegments(const CompositeSurface& surface, const SampledMesh& mesh,

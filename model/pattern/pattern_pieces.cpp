@@ -8,6 +8,7 @@
 #include "pattern_cut.h"
 #include "pattern_geometry.h"
 #include "pattern_labels.h"
+#include "pattern_overlaps.h"
 
 #include <algorithm>
 #include <cmath>
@@ -180,14 +181,17 @@ int samplesForTolerance(const CompositeSurface& surface, double tolerance) {
     return samples;
 }
 
-std::vector<PieceBuild> developSurface(const CompositeSurface& surface, int surfaceIndex,
-                                       const PatternOptions& options, int& nameIndex) {
+namespace {
+
+// The pieces of the surface cut open along cutEdges (fewer where the cut is not needed).
+std::vector<PieceBuild> developAlong(const CompositeSurface& surface, int surfaceIndex,
+                                     const PatternOptions& options, int& nameIndex,
+                                     std::set<EdgeId> cutEdges) {
     const int samples = options.samplesPerInterval > 0
                             ? std::min(options.samplesPerInterval, 1000)
                             : samplesForTolerance(surface, options.tolerance);
     const auto derived = DerivedGeometry::of(surface, samples);
     const SampledMesh& mesh = derived->mesh();
-    std::set<EdgeId> cutEdges = chooseCutEdges(surface);
     CutMesh cut = splitAlong(mesh, cutSegments(surface, mesh, cutEdges));
     Development development = unfoldSampledMesh(cut.mesh);
     if (!cutEdges.empty() && copiesCoincide(cut, development, options.tolerance)) {
@@ -428,6 +432,44 @@ std::vector<PieceBuild> developSurface(const CompositeSurface& surface, int surf
         choosePrimarySides(build);
         addPieceLabel(build.piece);
         addSeamLabels(build);
+    }
+    return builds;
+}
+
+bool isClosed(const CompositeSurface& surface) {
+    for (const auto& [id, record] : surface.edges()) {
+        (void)record;
+        if (surface.facesOfEdge(id).size() != 2) {
+            return false;
+        }
+    }
+    return !surface.edges().empty();
+}
+
+bool anyOverlapsItself(const std::vector<PieceBuild>& builds) {
+    std::vector<FaceId> faces;
+    return std::any_of(builds.begin(), builds.end(), [&faces](const PieceBuild& build) {
+        return selfOverlaps(build.piece, faces);
+    });
+}
+
+} // namespace
+
+std::vector<PieceBuild> developSurface(const CompositeSurface& surface, int surfaceIndex,
+                                       const PatternOptions& options, int& nameIndex) {
+    const int first = nameIndex;
+    std::vector<PieceBuild> builds =
+        developAlong(surface, surfaceIndex, options, nameIndex, chooseCutEdges(surface));
+    // A closed surface has no one sheet to keep: where its pieces overlap themselves, it is
+    // cut along its creases too (a torus of cones: one annular sector per row of strips).
+    if (isClosed(surface) && anyOverlapsItself(builds)) {
+        int next = first;
+        std::vector<PieceBuild> rows =
+            developAlong(surface, surfaceIndex, options, next, chooseCutEdges(surface, true));
+        if (!anyOverlapsItself(rows)) {
+            nameIndex = next;
+            return rows;
+        }
     }
     return builds;
 }

@@ -195,6 +195,39 @@ void measureIsometry(SurfaceAssessment& assessment, const model::CompositeSurfac
     assessment.edgeLengthError = development.maxEdgeLengthError;
     assessment.isometryMm =
         std::max(development.maxEdgeLengthError * assessment.sheetExtent, development.closureError);
+    // A closed surface that unfolds into no one sheet (a torus) is measured on the pieces of its
+    // cutting pattern instead: how far each piece is from isometric, relative to the largest.
+    const auto& edges = result.edges();
+    const bool closed = std::all_of(edges.begin(), edges.end(), [&result](const auto& edge) {
+        return result.facesOfEdge(edge.first).size() == 2;
+    });
+    if (development.closureError > model::kOneSheetClosure && !development.period && closed) {
+        model::PatternOptions options;
+        options.layout = false;
+        options.samplesPerInterval = kVerdictSamples;
+        int names = 0;
+        double extent = 0.0;
+        double isometry = 0.0;
+        for (const model::PatternPiece& piece :
+             model::developSurfacePieces(result, 0, options, names)) {
+            isometry = std::max(isometry, piece.maxIsometryError);
+            double low[2] = {std::numeric_limits<double>::infinity(),
+                             std::numeric_limits<double>::infinity()};
+            double high[2] = {-low[0], -low[1]};
+            for (const model::Vec2& p : piece.mesh.vertices) {
+                low[0] = std::min(low[0], p.x);
+                low[1] = std::min(low[1], p.y);
+                high[0] = std::max(high[0], p.x);
+                high[1] = std::max(high[1], p.y);
+            }
+            extent = std::max({extent, high[0] - low[0], high[1] - low[1]});
+        }
+        if (extent > 0.0) {
+            assessment.sheetExtent = extent;
+            assessment.isometryMm = isometry;
+            assessment.edgeLengthError = isometry / extent;
+        }
+    }
 }
 
 // The geometry of a settled result: fold-overs, overlaps, creases, vertex stars, worst faces.

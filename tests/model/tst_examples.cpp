@@ -134,6 +134,26 @@ private slots:
         }
     }
 
+    void theTorusIsClosed() {
+        // size bands of 2 × size strips around a closed tube: every edge borders two patches,
+        // every circle is a crease, nothing is pinned and no sheet is held.
+        for (int size : {3, 6}) {
+            const CompositeSurface torus = makeExample("torus", size).surfaces[0];
+            QCOMPARE(torus.faces().size(), std::size_t(2 * size * size));
+            for (const auto& [id, record] : torus.edges()) {
+                QCOMPARE(torus.facesOfEdge(id).size(), std::size_t(2));
+                QCOMPARE(record.condition, CreaseCondition::None);
+            }
+            QVERIFY(torus.pinnedVertices().empty());
+            QVERIFY(!torus.keepsDevelopment());
+            // Every vertex on its circle: 150 ± 60 mm from the axis, 60 mm from the tube's core.
+            for (const auto& [id, p] : torus.vertices()) {
+                const double fromCore = std::hypot(std::hypot(p.x, p.y) - 150.0, p.z);
+                QVERIFY(std::abs(fromCore - 60.0) < 1e-9);
+            }
+        }
+    }
+
     void foldExamplesCarryConditionsAndPins() {
         // fig8: 3 × 3 flat strips; the 2 interior rows of 3 creases carry the curved fold, the
         // two corners of the bottom edge of the 300 mm square are pinned, the boundary curves

@@ -13,8 +13,10 @@
 #include "solver/quality/crease_quality.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
+#include "solver/quality/vertex_stars.h"
 #include "solver/session/solve_job.h"
 #include "solver/session/solve_session.h"
+#include "solver/session/verdict.h"
 #include "solver_test_models.h"
 #include "solver_test_problems.h"
 #include "test_registry.h"
@@ -456,6 +458,35 @@ private slots:
               creases.meanFoldDegrees, developability, creases.residualMax, gap);
         QVERIFY2(gap < 1e-4, qPrintable(QString::number(gap))); // measured 2e-6 mm
         QCOMPARE(s.sheetDomain().radius, 150.0);
+    }
+
+    void aTorusHasNoOneSheetButIsReadyToCut() {
+        // The paper's Fig. 15b: a torus of cone bands has local conditions only. It cannot hold
+        // a sheet; Solve leaves it where it is and judges it ready to cut, its development
+        // measured on the pieces of its cutting pattern (one per band), not on one unfolding
+        // that cannot close up.
+        model::CompositeSurface torus = model::makeExample("torus").surfaces.front();
+        const auto refused = model::keepDevelopment(torus);
+        QVERIFY(refused && refused->code == model::ProblemCode::NotOneSheet);
+        QVERIFY2(sampledDevelopability(torus) < 1e-9,
+                 qPrintable(QString::number(sampledDevelopability(torus))));
+        double defect = 0.0;
+        for (const solver::VertexAngleDefect& star : solver::vertexAngleDefects(torus)) {
+            defect = std::max(defect, star.defect);
+        }
+        QVERIFY2(defect < 1e-9, qPrintable(QString::number(defect)));
+        solver::JobRequest request;
+        request.surfaces = {torus};
+        const solver::JobOutcome outcome = solver::SolveJob().run(request);
+        QVERIFY2(outcome.ok, outcome.failure.detail.c_str());
+        const solver::SurfaceAssessment& a = outcome.assessments.front();
+        QVERIFY(a.overlapping.empty());
+        QVERIFY(a.foldOvers.empty());
+        QVERIFY2(a.isometryMm >= 0.0 && a.isometryMm < 1e-6,
+                 qPrintable(QString::number(a.isometryMm)));
+        QVERIFY(a.sheetExtent > 100.0 && a.sheetExtent < 1000.0); // a band, not the torus unrolled
+        QCOMPARE(solver::verdictOf(outcome).kind, solver::VerdictKind::ReadyToCut);
+        QVERIFY(largestCoordinateChange(torus, outcome.surfaces.front()) < 1e-6);
     }
 };
 
