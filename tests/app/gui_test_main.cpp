@@ -4,6 +4,9 @@
 #include "window_test_support.h"
 
 #include <QApplication>
+#include <QDir>
+#include <QFile>
+#include <QSettings>
 #include <QStandardPaths>
 
 // The application tests run the real main window: OpenGL format first, then a QApplication.
@@ -14,11 +17,19 @@ int main(int argc, char** argv) {
     QStandardPaths::setTestModeEnabled(true);
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("DevSurfTests"));
-    // A run in another language keeps its settings and recovery files apart (CTest may run
-    // both at once).
+    // Every run keeps its settings and recovery files apart, named by its process: CTest runs
+    // the languages at once, and so may two checkouts on one machine. Removed at the end.
     const QString language = qEnvironmentVariable("DEVSURF_TEST_LANGUAGE");
-    QApplication::setApplicationName(language.isEmpty() ? QStringLiteral("tst_app")
-                                                        : QStringLiteral("tst_app_") + language);
+    QApplication::setApplicationName(QStringLiteral("tst_app_%1_%2")
+                                         .arg(language.isEmpty() ? QStringLiteral("en") : language)
+                                         .arg(QCoreApplication::applicationPid()));
     devsurf::test::installTestLanguage();
-    return devsurf::test::runAll(argc, argv);
+    const int failed = devsurf::test::runAll(argc, argv);
+    const QString settingsFile = QSettings().fileName();
+    QFile::remove(settingsFile);
+    const QString data = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+    if (data.contains(QCoreApplication::applicationName())) {
+        QDir(data).removeRecursively();
+    }
+    return failed;
 }

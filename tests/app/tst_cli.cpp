@@ -107,7 +107,7 @@ private slots:
              QList<QStringList>{{},
                                 {"frobnicate"},
                                 {"example", "annulus"},
-                                {"example", "torus", "-o", path("t.devsurf")},
+                                {"example", "klein-bottle", "-o", path("t.devsurf")},
                                 {"example", "sheet", "--size", "abc", "-o", path("t.devsurf")},
                                 {"example", "sheet", "--size", "0", "-o", path("t.devsurf")},
                                 {"info"},

@@ -160,13 +160,15 @@ private slots:
     }
 
     void solveNeverLeavesADesignLessDevelopable() {
-        // The lifted Fig. 8 folded along curved creases by a drag that kept lengths, 16
-        // iterations after the release (det about 3e-6, not nearly valid): a fresh Solve's
-        // fairness pulls it towards flat through a crumpled shape (det about 3e-3 after 10
-        // iterations): the worker returns it as it was and says so.
-        const model::CompositeSurface folded = testing::liftedFig8(16);
+        // The lifted Fig. 8 folded along curved creases by a drag that kept lengths, 10
+        // iterations after the release (det about 1.3e-4, not nearly valid): a fresh Solve's
+        // fairness pulls it towards flat through a crumpled shape: the worker returns it as it
+        // was and says so. (16 iterations after the release, det 3e-6, is nearly valid since
+        // kNearlyValidResidual is 1e-4, and Solve improves it a little: 2.9e-6.)
+        const model::CompositeSurface folded = testing::liftedFig8(10);
         const double before = measureQuality(folded).developabilityMax;
-        QVERIFY2(before < 1e-5, qPrintable(QString::number(before)));
+        QVERIFY2(before > kNearlyValidResidual && before < 1e-3,
+                 qPrintable(QString::number(before)));
 
         const SolveResult result = solveOnce(folded, 10);
         QVERIFY2(result.outcome.ok, qPrintable(why(result)));
