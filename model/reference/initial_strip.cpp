@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 
 namespace devsurf::model::reference {
@@ -111,28 +110,68 @@ CompositeSurface initialStrip(const std::vector<Vec3>& points, const SplineSpace
     return s;
 }
 
-std::vector<std::vector<std::size_t>> slabsAlongPrincipalAxis(const std::vector<Vec3>& points,
-                                                              int count) {
+std::vector<std::vector<std::size_t>> clusterPoints(const std::vector<Vec3>& points, int count) {
     if (count < 1 || static_cast<std::size_t>(count) * 3 > points.size()) {
-        throw std::invalid_argument("each slab needs at least 3 points");
+        throw std::invalid_argument("each group needs at least 3 points");
     }
+    const auto k = static_cast<std::size_t>(count);
     const PrincipalFrame frame = principalFrame(points);
-    std::vector<double> along(points.size());
+    // Farthest-point start: deterministic and spread over the shape.
+    std::vector<Vec3> centres;
+    std::vector<double> nearest(points.size(), std::numeric_limits<double>::max());
+    Vec3 next = frame.centroid;
+    for (std::size_t c = 0; c < k; ++c) {
+        std::size_t farthest = 0;
+        double best = -1.0;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const double d = c == 0 ? (points[i] - next).norm() : nearest[i];
+            if (d > best) {
+                best = d;
+                farthest = i;
+            }
+        }
+        centres.push_back(points[farthest]);
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            nearest[i] = std::min(nearest[i], (points[i] - centres.back()).norm());
+        }
+    }
+    std::vector<std::size_t> label(points.size(), 0);
+    for (int round = 0; round < 50; ++round) {
+        bool changed = false;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            std::size_t best = 0;
+            for (std::size_t c = 1; c < k; ++c) {
+                if ((points[i] - centres[c]).squaredNorm() <
+                    (points[i] - centres[best]).squaredNorm()) {
+                    best = c;
+                }
+            }
+            changed = changed || best != label[i];
+            label[i] = best;
+        }
+        if (!changed && round > 0) {
+            break;
+        }
+        std::vector<Vec3> sum(k);
+        std::vector<std::size_t> members(k, 0);
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            sum[label[i]] += points[i];
+            ++members[label[i]];
+        }
+        for (std::size_t c = 0; c < k; ++c) {
+            if (members[c] > 0) {
+                centres[c] = sum[c] / static_cast<double>(members[c]);
+            }
+        }
+    }
+    std::vector<std::vector<std::size_t>> groups(k);
     for (std::size_t i = 0; i < points.size(); ++i) {
-        along[i] = dot(points[i] - frame.centroid, frame.axes[0]);
+        groups[label[i]].push_back(i);
     }
-    std::vector<std::size_t> order(points.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t i, std::size_t j) { return along[i] < along[j]; });
-    std::vector<std::vector<std::size_t>> slabs(static_cast<std::size_t>(count));
-    for (std::size_t k = 0; k < order.size(); ++k) {
-        slabs[k * static_cast<std::size_t>(count) / order.size()].push_back(order[k]);
-    }
-    for (std::vector<std::size_t>& slab : slabs) {
-        std::sort(slab.begin(), slab.end());
-    }
-    return slabs;
+    groups.erase(std::remove_if(groups.begin(), groups.end(),
+                                [](const std::vector<std::size_t>& g) { return g.empty(); }),
+                 groups.end());
+    return groups;
 }
 
 } // namespace devsurf::model::reference

@@ -32,12 +32,13 @@ PrincipalFrame principalFrame(const std::vector<Vec3>& points);
 CompositeSurface initialStrip(const std::vector<Vec3>& points, const SplineSpace& space,
                               double margin = 0.05);
 
-// A simple automatic split of a shape into `count` groups for as many initial strips: slabs
-// of equal point counts along the principal axis of all points (the groups hold indices into
-// `points`, in slab order). Meant for elongated or gently curved shapes; a closed shape such as
-// the bunny gets stacked slabs, each approximated by its own strip. Throws
-// std::invalid_argument if count < 1 or count > points.size() / 3.
-std::vector<std::vector<std::size_t>> slabsAlongPrincipalAxis(const std::vector<Vec3>& points,
-                                                              int count);
+// A simple automatic split of a shape into `count` groups for as many initial strips: k-means
+// on the positions (Lloyd's iteration, at most 50 rounds) from a deterministic farthest-point
+// start (the point farthest from the centroid, then each time the point farthest from the
+// centres chosen). Its groups are compact patches, which a flat strip can start on even on a
+// closed shape (slabs of a closed shape are rings, which no strip covers: measured on the
+// bunny, slab strips diverged). The groups (at most `count`; none empty) hold indices into
+// `points`, ascending. Throws std::invalid_argument if count < 1 or count > points.size() / 3.
+std::vector<std::vector<std::size_t>> clusterPoints(const std::vector<Vec3>& points, int count);
 
 } // namespace devsurf::model::reference

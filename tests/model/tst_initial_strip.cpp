@@ -1,4 +1,4 @@
-// The initial strips of §4.2: a flat rectangle over the PCA plane of points, and the slabs
+// The initial strips of §4.2: a flat rectangle over the PCA plane of points, and the clusters
 // that split a shape for several strips.
 
 #include "model/reference/distance_report.h"
@@ -55,27 +55,40 @@ private slots:
                                  initialStrip({Vec3(0, 0, 0), Vec3(1, 0, 0)}, {3, 2, 4}));
         const std::vector<Vec3> plane = grid(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), 3, 3);
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, initialStrip(plane, {3, 2, 4}, -1.0));
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, slabsAlongPrincipalAxis(plane, 0));
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, slabsAlongPrincipalAxis(plane, 6));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, clusterPoints(plane, 0));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, clusterPoints(plane, 6));
     }
 
-    void slabsSplitAlongTheLongestAxis() {
-        const std::vector<Vec3> points =
-            grid(Vec3(0, 0, 0), Vec3(0, 200, 0), Vec3(10, 0, 0), 20, 4);
-        const auto slabs = slabsAlongPrincipalAxis(points, 3);
-        QCOMPARE(static_cast<int>(slabs.size()), 3);
+    void clustersAreCompactPatches() {
+        // Three separate squares of points far apart: three clusters, one per square, whatever
+        // the order of the points.
+        std::vector<Vec3> points;
+        for (const Vec3& origin : {Vec3(0, 0, 0), Vec3(500, 0, 0), Vec3(0, 500, 100)}) {
+            const std::vector<Vec3> square = grid(origin, Vec3(40, 0, 0), Vec3(0, 40, 0), 5, 5);
+            points.insert(points.end(), square.begin(), square.end());
+        }
+        const auto clusters = clusterPoints(points, 3);
+        QCOMPARE(static_cast<int>(clusters.size()), 3);
         std::size_t total = 0;
-        for (const auto& slab : slabs) {
-            total += slab.size();
-            double low = 1e9;
-            double high = -1e9;
-            for (std::size_t i : slab) {
-                low = std::min(low, points[i].y);
-                high = std::max(high, points[i].y);
+        for (const auto& cluster : clusters) {
+            QCOMPARE(cluster.size(), std::size_t(36));
+            total += cluster.size();
+            for (std::size_t i : cluster) {
+                QVERIFY((points[i] - points[cluster.front()]).norm() < 60.0);
             }
-            QVERIFY(high - low < 80.0); // about a third of the length, not all of it
         }
         QCOMPARE(total, points.size());
+        // A long strip of points in two: halves, not interleaved.
+        const std::vector<Vec3> line = grid(Vec3(0, 0, 0), Vec3(0, 200, 0), Vec3(10, 0, 0), 20, 4);
+        for (const auto& half : clusterPoints(line, 2)) {
+            double low = 1e9;
+            double high = -1e9;
+            for (std::size_t i : half) {
+                low = std::min(low, line[i].y);
+                high = std::max(high, line[i].y);
+            }
+            QVERIFY(high - low < 120.0);
+        }
     }
 };
 
