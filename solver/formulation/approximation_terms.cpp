@@ -31,7 +31,7 @@ ApproximationFit::ApproximationFit(const model::CompositeSurface& surface,
                                    std::vector<ApproximatedStrip> strips, const model::Vec3& centre,
                                    double scale)
     : m_strips(std::move(strips)), m_centre(centre), m_scale(scale),
-      m_borderReach(target.borderReach) {
+      m_borderReach(target.borderReach), m_falloff(target.falloff) {
     if (m_strips.empty() || target.points.empty()) {
         return;
     }
@@ -108,7 +108,8 @@ void ApproximationFit::refresh(const model::CompositeSurface& current) {
         const bool border = foot.u <= kBorder || foot.u >= 1.0 - kBorder || foot.v <= kBorder ||
                             foot.v >= 1.0 - kBorder;
         if (!border) {
-            foot.weight = 1.0;
+            const double d = m_falloff > 0.0 ? closest.distance / m_falloff : 0.0;
+            foot.weight = 1.0 / (1.0 + d * d);
         } else if (m_borderReach > 0.0) {
             const double d = closest.distance / m_borderReach;
             foot.weight = std::exp(-d * d);

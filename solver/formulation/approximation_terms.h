@@ -24,6 +24,12 @@ struct ApproximationTarget {
     // this much per iteration towards the uncovered reference (Fig. 11) while points far
     // beyond it (another part of the shape) do not drag it along. 0: such points do not pull.
     double borderReach = 0.0;
+    // A point over the strip at distance d (mm) pulls with weight 1 / (1 + (d / falloff)²): far
+    // points, which a flat start on a curved target has many of, pull less, so the first
+    // linearised steps stay near where they are valid, and every weight tends to 1 as the
+    // strip reaches its points. Without it a flat start on a patch of the bunny jumped away
+    // (residual 9 in the first iteration). 0: weight 1 whatever the distance.
+    double falloff = 0.0;
 };
 
 // The weights of the three families (constraint roles judged apart, so that the largest
@@ -100,6 +106,7 @@ private:
     model::Vec3 m_centre;
     double m_scale = 1.0;
     double m_borderReach = 0.0;
+    double m_falloff = 0.0;
 };
 
 // The rows of one of eqs. (9)–(11) for every point of an ApproximationFit, each multiplied by
