@@ -125,9 +125,9 @@ private slots:
         // The cone from the apex (0, −20, −60) over the parabola above: exact in cubic splines.
         // Not reached yet: the flat start's rectangle overhangs the narrow end of the patch,
         // and while its rulings turn towards the apex the strip slides off the wide end's
-        // corners, whose points then lie beyond its border and stop pulling (max distance 0.16
+        // corners, whose points then lie beyond its border and stop pulling (max distance 0.05
         // of the diameter after 30 iterations; a border reach of 3 or 10 ρ was worse), and the
-        // fade then ends before the residual converges (sampled det 1e-4).
+        // fade then ends before the residual converges (sampled det 1e-2).
         const Vec3 apex(0, -20, -60);
         const std::vector<Vec3> points = sampleGrid(
             [&apex](double s, double t) {
