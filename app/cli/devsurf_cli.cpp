@@ -6,6 +6,7 @@
 #include "example_text.h"
 #include "problem_text.h"
 
+#include "approximate_command.h"
 #include "cli_arguments.h"
 #include "cli_output.h"
 #include "command_line.h"
@@ -251,15 +252,24 @@ int run(const std::vector<std::string>& args) {
     }
     using Runner = int (*)(const SubcommandArguments&);
     static const std::pair<const char*, Runner> runners[] = {
-        {"example", commandExample},     {"info", commandInfo},
-        {"pin", runPinCommand},          {"sheet", runSheetCommand},
-        {"crease", runCreaseCommand},    {"smooth", runSmoothCommand},
-        {"validate", commandValidate},   {"export-json", commandExportJson},
-        {"examples", commandExamples},   {"solve", commandSolve},
-        {"drag", commandDrag},           {"export", runExportPatternCommand},
-        {"report", runReportCommand},    {"import-curves", runImportCurvesCommand},
-        {"fit-edge", runFitEdgeCommand}, {"import-reference", runImportReferenceCommand},
-        {"distance", runDistanceCommand}};
+        {"example", commandExample},
+        {"info", commandInfo},
+        {"pin", runPinCommand},
+        {"sheet", runSheetCommand},
+        {"crease", runCreaseCommand},
+        {"smooth", runSmoothCommand},
+        {"validate", commandValidate},
+        {"export-json", commandExportJson},
+        {"examples", commandExamples},
+        {"solve", commandSolve},
+        {"drag", commandDrag},
+        {"export", runExportPatternCommand},
+        {"report", runReportCommand},
+        {"import-curves", runImportCurvesCommand},
+        {"fit-edge", runFitEdgeCommand},
+        {"import-reference", runImportReferenceCommand},
+        {"distance", runDistanceCommand},
+        {"approximate", runApproximateCommand}};
     for (const auto& [name, runner] : runners) {
         if (command == name) {
             return runner(parsed);

@@ -135,6 +135,20 @@ std::string oneSidedLine(const model::reference::OneSidedDistance& d) {
 
 } // namespace
 
+void printDistanceReport(const model::reference::DistanceReport& report, std::size_t targetPoints) {
+    std::cout << "Target: " << targetPoints << " points, bounding-box diagonal "
+              << millimetres(report.diagonal) << " mm\n"
+              << "Target to surface: " << oneSidedLine(report.targetToSurface) << "\n"
+              << "Surface to target: " << oneSidedLine(report.surfaceToTarget) << " (sampled every "
+              << millimetres(report.surfaceSpacing) << " mm)\n";
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "Two-sided (Hausdorff) %.4g mm; coverage %.1f %% of the target within %.4g "
+                  "mm of the surface.\n",
+                  report.hausdorff(), 100.0 * report.coverage, report.tolerance);
+    std::cout << line;
+}
+
 int runDistanceCommand(const SubcommandArguments& args) {
     const std::vector<std::string> files =
         args.positionals(2, "a project file and a mesh or point cloud file");
@@ -173,17 +187,7 @@ int runDistanceCommand(const SubcommandArguments& args) {
         std::cout << QJsonDocument(o).toJson(QJsonDocument::Indented).toStdString();
         return 0;
     }
-    std::cout << "Target: " << read.shape.points.size() << " points, bounding-box diagonal "
-              << millimetres(report.diagonal) << " mm\n"
-              << "Target to surface: " << oneSidedLine(report.targetToSurface) << "\n"
-              << "Surface to target: " << oneSidedLine(report.surfaceToTarget) << " (sampled every "
-              << millimetres(report.surfaceSpacing) << " mm)\n";
-    char line[200];
-    std::snprintf(line, sizeof line,
-                  "Two-sided (Hausdorff) %.4g mm; coverage %.1f %% of the target within %.4g "
-                  "mm of the surface.\n",
-                  report.hausdorff(), 100.0 * report.coverage, report.tolerance);
-    std::cout << line;
+    printDistanceReport(report, read.shape.points.size());
     return 0;
 }
 

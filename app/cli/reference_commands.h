@@ -2,6 +2,7 @@
 
 #include "command_line.h"
 #include "io/reference/reference_import.h"
+#include "model/reference/distance_report.h"
 
 #include <string>
 
@@ -19,5 +20,8 @@ int runImportReferenceCommand(const SubcommandArguments& args);
 // are from the mesh or point cloud TARGET (model::reference::measureDistance), both ways, and
 // how much of the target lies within the tolerance. Returns the exit code.
 int runDistanceCommand(const SubcommandArguments& args);
+
+// The distance report's lines for a terminal (as `distance` prints them).
+void printDistanceReport(const model::reference::DistanceReport& report, std::size_t targetPoints);
 
 } // namespace devsurf::app

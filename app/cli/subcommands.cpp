@@ -206,6 +206,24 @@ const std::vector<SubcommandSpec>& subcommands() {
          "the diagonal).",
          {{"json", "", "Print the report as JSON."},
           {"tolerance", "MM", "The coverage tolerance (default 1 % of the diagonal)."}}},
+        {"approximate",
+         "approximate TARGET [--from START.devsurf] [--strips K] [--intervals N]\n"
+         "            [--iterations N] [--rho R] -o OUT.devsurf",
+         "Developable strips pulled towards a mesh or point cloud TARGET (as\n"
+         "import-reference reads it): the target is thinned to points at least\n"
+         "R mm apart (default 2 % of its bounding-box diagonal), each with the\n"
+         "normal of a plane fitted to its neighbours; the strips of START, or K\n"
+         "flat strips fitted to K patches of the target (k-means on the points;\n"
+         "default 1), are pulled towards the points they are nearest to for N\n"
+         "iterations (default 30), then the pull fades out over 10 more so the\n"
+         "strips end exactly developable. Writes the strips and the target to\n"
+         "OUT and prints the residual and the distance report.",
+         {{"from", "START.devsurf", "Start from the surfaces of this project."},
+          {"strips", "K", "Start from K flat strips (default 1)."},
+          {"intervals", "N", "Spline intervals of each flat strip (default 4)."},
+          {"iterations", "N", "Iterations of the pull (default 30)."},
+          {"rho", "R", "The thinning radius in mm."},
+          kOutputProject}},
         {"fit-edge",
          "fit-edge FILE --edge E [--curve K] [--surface K] -o OUT.devsurf",
          "Lay spline edge E (a crease or a boundary) onto reference curve K\n"

@@ -381,6 +381,34 @@ struct SurfaceFormulation::Builder {
         }
     }
 
+    // The closest points of the approximation target (§4.2) on the strips (not cones).
+    void addApproximationFit() {
+        if (!options.approximation) {
+            return;
+        }
+        std::vector<ApproximatedStrip> columns;
+        for (const model::Strip& strip : strips) {
+            const auto normals = stripNormals.find(strip.face);
+            if (strip.isCone() || strip.bSide.edge == model::kInvalidId ||
+                normals == stripNormals.end()) {
+                continue;
+            }
+            ApproximatedStrip c;
+            c.face = strip.face;
+            for (int point : sidePoints(strip.aSide)) {
+                c.a.push_back(f.pointOffset(point));
+            }
+            for (int point : sidePoints(strip.bSide)) {
+                c.b.push_back(f.pointOffset(point));
+            }
+            c.normalOffset = normals->second.offset;
+            c.normalCurve = normals->second.curve;
+            columns.push_back(std::move(c));
+        }
+        f.m_approximation = std::make_unique<ApproximationFit>(
+            surface, *options.approximation, std::move(columns), f.m_centre, f.m_scale);
+    }
+
     // State offsets of every coarse vertex, once the points are placed.
     std::map<VertexId, int> vertexOffsets() const {
         std::map<VertexId, int> offsets;
@@ -587,6 +615,7 @@ SurfaceFormulation::SurfaceFormulation(const model::CompositeSurface& surface,
     builder.collectEdgeOffsets();
     builder.allocateNormals();
     builder.addStrips();
+    builder.addApproximationFit();
     builder.addCreaseConditions();
     builder.addPlanarFaces();
     builder.addSmoothRulings();
@@ -598,7 +627,23 @@ SurfaceFormulation::SurfaceFormulation(const model::CompositeSurface& surface,
     builder.addProximity();
     builder.addFairness();
     builder.hand();
+    if (m_approximation) {
+        m_approximationFamilies =
+            addApproximation(*m_approximation, m_options.approximationWeights, m_problem);
+    }
     setReferenceState(m_initialState);
+}
+
+void SurfaceFormulation::refreshApproximation(const model::CompositeSurface& current) {
+    if (m_approximation) {
+        m_approximation->refresh(current);
+    }
+}
+
+void SurfaceFormulation::scaleApproximationWeights(double factor) {
+    for (FamilyId id : m_approximationFamilies) {
+        m_problem.setFamilyWeight(id, m_problem.family(id).weight * factor);
+    }
 }
 
 } // namespace devsurf::solver

@@ -3,10 +3,12 @@
 #include "model/composite_surface.h"
 #include "solver/core/options.h"
 #include "solver/core/problem.h"
+#include "solver/formulation/approximation_terms.h"
 #include "solver/formulation/development_terms.h"
 #include "solver/formulation/normal_spline_start.h"
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -188,6 +190,12 @@ struct FormulationOptions {
     // Above 0: pulled vertex handles are an energy of this weight ("pulls", driving ε₁, faded by
     // fadeDragEnergies) instead of constraints, so a vertex lags where the sheet cannot follow.
     double pulledHandleWeight = 0.0;
+
+    // Approximation of a reference shape (§4.2, eqs. 9–11): the strips are pulled towards
+    // these points through their closest points, refreshed before every iteration
+    // (refreshApproximation). Null: none.
+    std::shared_ptr<const ApproximationTarget> approximation;
+    ApproximationWeights approximationWeights;
 };
 
 // The configuration for rough starts (a design dragged far, a noisy import): proximity to the
@@ -248,6 +256,14 @@ public:
     // energy (proximityEnergyWeight); from now on ε₁ follows the constraint residual alone.
     // Nothing without them.
     void fadeDragEnergies(double factor);
+    // Finds the closest points of the approximation target (FormulationOptions::approximation)
+    // on `current`, the surface at the state about to be iterated from. No-op without one.
+    void refreshApproximation(const model::CompositeSurface& current);
+    // Multiplies the weights of eqs. (9)–(11) by `factor` (the approximation fading out so
+    // that the hard conditions converge exactly at its end).
+    void scaleApproximationWeights(double factor);
+    // The closest points of the target; null without one.
+    const ApproximationFit* approximationFit() const { return m_approximation.get(); }
     // Whether those rows damp length changes (lengthDampingWeight) rather than keep lengths.
     bool isometryDamps() const {
         return m_isometryFamily >= 0 &&
@@ -361,6 +377,8 @@ private:
     std::vector<model::FaceId> m_creaseFaces;
     std::vector<model::FaceId> m_straightCreaseFaces;
     std::vector<model::Vec3> m_originalPoints; // model coordinates of the given surface
+    std::unique_ptr<ApproximationFit> m_approximation;
+    std::vector<FamilyId> m_approximationFamilies;
 };
 
 } // namespace devsurf::solver

@@ -100,12 +100,31 @@ bool keepsLengths(const JobRequest& request) {
            request.lengths != DragLengths::Stretch;
 }
 
+template <typename Map> typename Map::mapped_type entryOf(const Map& map, int key) {
+    const auto it = map.find(key);
+    return it == map.end() ? typename Map::mapped_type{} : it->second;
+}
+
+// The weight of the unit length of the control normals in an approximation (see optionsFor).
+constexpr double kApproximationUnitNormalWeight = 1.0;
+
 SessionOptions optionsFor(const JobRequest& request, int surface) {
     SessionOptions options;
     if (keepsLengths(request)) {
         options = keepLengthsSessionOptions();
     } else if (request.kind == JobKind::CreaseDrag) {
         options = creaseDragSessionOptions();
+    }
+    if (request.kind == JobKind::Approximate) {
+        options.formulation.approximation = entryOf(request.targets, surface);
+        // No fairness of points or normals: the pull shapes the strips, and fairness held them
+        // flat against it (developability residual 2e-3, docs/tuning.md). The control normals
+        // are held near unit length instead (an energy that fades with the residual): without
+        // it the normal spline shrank towards zero beyond the target, where (4) then held
+        // without making the strip developable (sampled det 3e-3 at solver residual 2e-9).
+        options.formulation.fairnessWeight = 0.0;
+        options.formulation.normalFairnessWeight = 0.0;
+        options.formulation.unitControlNormalWeight = kApproximationUnitNormalWeight;
     }
     if (request.kind == JobKind::Solve) {
         options.stopResidual = kSolveStopResidual;
@@ -123,11 +142,6 @@ SessionOptions optionsFor(const JobRequest& request, int surface) {
 double worstDevelopability(const model::CompositeSurface& surface) {
     const auto faces = developabilityByFace(surface);
     return faces.empty() ? 0.0 : faces.front().second;
-}
-
-template <typename Map> typename Map::mapped_type entryOf(const Map& map, int key) {
-    const auto it = map.find(key);
-    return it == map.end() ? typename Map::mapped_type{} : it->second;
 }
 
 void measureHandleGaps(SurfaceAssessment& assessment, const model::CompositeSurface& surface,
@@ -318,6 +332,8 @@ int defaultIterations(JobKind kind, bool settle, DragLengths lengths, bool holds
         return kSolveIterations;
     case JobKind::Edit:
         return 1;
+    case JobKind::Approximate:
+        return kApproximationIterations;
     case JobKind::CreaseDrag:
         return settle ? iterationsAfterDrag(false) : 1;
     case JobKind::VertexDrag:
@@ -413,13 +429,17 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
     int solvedSurfaces = 0;
     for (std::size_t s = 0; s < count; ++s) {
         const int key = static_cast<int>(s);
-        if (request.kind == JobKind::Solve || !entryOf(request.pulled, key).empty() ||
+        if (request.kind == JobKind::Solve || entryOf(request.targets, key) ||
+            !entryOf(request.pulled, key).empty() ||
             !entryOf(request.pulledControlPoints, key).empty() ||
             !entryOf(request.pulledSheet, key).empty()) {
             ++solvedSurfaces;
         }
     }
-    const int total = iterations * solvedSurfaces;
+    // An approximation fades its pull in iterations of its own after those asked for.
+    const bool approximate = request.kind == JobKind::Approximate;
+    const int steps = iterations + (approximate ? kApproximationFadeIterations : 0);
+    const int total = steps * solvedSurfaces;
     int done = 0;
 
     for (std::size_t s = 0; s < count; ++s) {
@@ -433,7 +453,9 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             sheetVertices.insert(handle.vertex);
         }
         SurfaceAssessment assessment;
-        if (request.kind != JobKind::Solve && handles.empty() && points.empty() && sheet.empty()) {
+        const std::shared_ptr<const ApproximationTarget> target = entryOf(request.targets, key);
+        if (request.kind != JobKind::Solve && handles.empty() && points.empty() && sheet.empty() &&
+            !target) {
             // Nothing pulled on this surface: it stays as it is.
             if (!allFinite(snapshot)) {
                 return fail(failureOf(JobError::NotFinite, key));
@@ -469,6 +491,9 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             try {
                 SessionOptions options = optionsFor(request, key);
                 options.formulation.sheetHandles = sheet;
+                if (target) {
+                    options.approximationFadeAfter = iterations;
+                }
                 session = std::make_unique<SolveSession>(snapshot, handles, points, options);
             } catch (const std::exception& error) {
                 return fail(cannotSolve(key, error));
@@ -500,7 +525,7 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
                           problem.rowCount(), &stats, replaying ? nullptr : &session->surface()});
             }
         };
-        Summary summary = session->step(iterations, cancel, perIteration);
+        Summary summary = session->step(steps, cancel, perIteration);
         if (request.kind == JobKind::Solve && summary.succeeded()) {
             assessment.bestIteration = session->returnToBestIterate(&summary).iteration;
         }

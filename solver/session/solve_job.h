@@ -20,11 +20,12 @@ namespace devsurf::solver {
 
 // What a solve is for. The job chooses the options, the iteration count and the guards from it.
 enum class JobKind {
-    Solve,      // Tools ▸ Solve, `devsurf-cli solve`: every surface, stops once converged
-    VertexDrag, // the Drag tool on vertices, `devsurf-cli drag --vertices`
-    CreaseDrag, // the Drag tool on a crease, `devsurf-cli drag --crease`
-    Rotate,     // the Rotate tool, `devsurf-cli drag --rotate` (a vertex drag along an arc)
-    Edit,       // an exact move or rotation kept developable (Tools ▸ Move or Rotate Vertices)
+    Solve,       // Tools ▸ Solve, `devsurf-cli solve`: every surface, stops once converged
+    VertexDrag,  // the Drag tool on vertices, `devsurf-cli drag --vertices`
+    CreaseDrag,  // the Drag tool on a crease, `devsurf-cli drag --crease`
+    Rotate,      // the Rotate tool, `devsurf-cli drag --rotate` (a vertex drag along an arc)
+    Edit,        // an exact move or rotation kept developable (Tools ▸ Move or Rotate Vertices)
+    Approximate, // strips pulled towards a reference shape (§4.2), `devsurf-cli approximate`
 };
 
 // Drags and rotations come as many requests (one per mouse move) and a settling one (the
@@ -53,11 +54,18 @@ struct JobRequest {
     std::optional<int> iterations;
     // Vertex drags and rotations: whether the sheet bends or stretches (crease drags stretch).
     DragLengths lengths = DragLengths::Automatic;
+    // Approximate: per surface index, the (thinned) reference points it is pulled towards;
+    // surfaces without an entry stay as they are. The iterations are those of the pull; the
+    // job adds kApproximationFadeIterations in which the pull fades (solve_session.h).
+    std::map<int, std::shared_ptr<const ApproximationTarget>> targets;
 };
+
+// The iterations of an approximation's pull when the request does not say.
+constexpr int kApproximationIterations = 30;
 
 // The iterations a request runs when it does not say: Solve kSolveIterations (a limit, it stops
 // once converged), a drag's move 1, its release iterationsAfterDrag() (longer when a surface
-// holds its sheet), an edit 1.
+// holds its sheet), an edit 1, an approximation kApproximationIterations (plus its fading).
 int defaultIterations(JobKind kind, bool settle, DragLengths lengths, bool holdsSheet = false);
 
 // How far a handle ended from its target (model units).

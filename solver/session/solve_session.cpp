@@ -182,7 +182,7 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
         // Its strips keep their exact normals (see FormulationOptions::developableStartLimit).
         m_options.formulation.developableStartLimit =
             std::max(m_options.formulation.developableStartLimit, kNearlyValidResidual);
-    } else if (m_options.solver.proximityFactor == 0.0) {
+    } else if (m_options.solver.proximityFactor == 0.0 && !m_options.formulation.approximation) {
         // Nothing pulled and a rough start (see kRoughSolveProximity).
         m_options.solver.proximityFactor = kRoughSolveProximity;
         m_options.solver.proximityThreshold = kRoughSolveProximityThreshold;
@@ -266,6 +266,12 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         // The net's lengths before this step (a no-op without the isometry energy).
         m_formulation->rebaseIsometry(m_x);
         m_formulation->rebaseDevelopmentFairness(m_x);
+        // (§4.2) The closest points of the target on the surface about to be iterated from.
+        m_formulation->refreshApproximation(m_surface);
+        if (m_options.approximationFadeAfter >= 0 &&
+            m_iterationsDone >= m_options.approximationFadeAfter) {
+            m_formulation->scaleApproximationWeights(kApproximationFade);
+        }
         if (m_settling) {
             m_formulation->scaleIsometryWeight(kKeepLengthsFade);
             m_formulation->fadeDragEnergies(kCreaseDragFade);

@@ -80,6 +80,14 @@ constexpr double kDragFactorizationReuseFlops = 1e7;
 // does not depend on it (docs/tuning.md, "Holding the sheet").
 constexpr double kSheetPullWeight = 1.0;
 
+// An approximation (§4.2) runs its iterations with eqs. (9)–(11) at their weights; from
+// SessionOptions::approximationFadeAfter on, every iteration multiplies those weights by
+// kApproximationFade, so that developability and the other hard conditions converge exactly at
+// the end while the surface stays where the target pulled it (10 fading iterations: the
+// weights end at 1e-5 of theirs).
+constexpr double kApproximationFade = 0.3;
+constexpr int kApproximationFadeIterations = 10;
+
 struct SessionOptions {
     // Its `handles` are extended by the session: every pinned vertex becomes a fixed handle,
     // every pulled vertex a pulled one.
@@ -89,6 +97,9 @@ struct SessionOptions {
     // step(n) ends early, with Status::Converged, after the first iteration whose largest
     // constraint residual is at most this (0: it always runs n iterations).
     double stopResidual = 0.0;
+    // With FormulationOptions::approximation: the iterations (over all step() calls) after
+    // which the approximation weights fade (kApproximationFade); negative: never.
+    int approximationFadeAfter = -1;
 };
 
 // A Solve stops once its largest residual is at most kSolveStopResidual; its iterations

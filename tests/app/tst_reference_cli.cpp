@@ -1,5 +1,6 @@
 #include "cli_run.h"
 #include "io/project_file.h"
+#include "model/reference/distance_report.h"
 #include "test_registry.h"
 
 #include <QFile>
@@ -23,6 +24,27 @@ QByteArray contents(const QString& path) {
 bool writeFile(const QString& path, const QByteArray& bytes) {
     QFile file(path);
     return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size();
+}
+
+// A cylinder over the parabola y = x² / 100, x in [−50, 50], z in [0, 60]: 41 × 25 points.
+std::vector<model::Vec3> parabolicCylinder() {
+    std::vector<model::Vec3> points;
+    for (int i = 0; i <= 40; ++i) {
+        for (int j = 0; j <= 24; ++j) {
+            const double x = -50.0 + 2.5 * i;
+            points.emplace_back(x, 0.01 * x * x, 2.5 * j);
+        }
+    }
+    return points;
+}
+
+QByteArray xyz(const std::vector<model::Vec3>& points) {
+    QByteArray text;
+    for (const model::Vec3& p : points) {
+        text += QByteArray::number(p.x, 'g', 17) + ' ' + QByteArray::number(p.y, 'g', 17) + ' ' +
+                QByteArray::number(p.z, 'g', 17) + '\n';
+    }
+    return text;
 }
 
 } // namespace
@@ -139,6 +161,78 @@ private slots:
             test::runCli({"distance", path("sheet.devsurf"), path("missing.xyz")});
         QCOMPARE(missing.exitCode, 2);
         QVERIFY(missing.err.contains("cannot read"));
+    }
+
+    void approximateFitsAStripToACloud() {
+        const std::vector<model::Vec3> points = parabolicCylinder();
+        QVERIFY(writeFile(path("cylinder.xyz"), xyz(points)));
+        const test::CliRun run =
+            test::runCli({"approximate", path("cylinder.xyz"), "-o", path("approximated.devsurf")});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        QVERIFY2(run.out.contains("Surface 1: 40 iterations"), qPrintable(run.out));
+        QVERIFY2(run.out.contains("(within the tolerance"), qPrintable(run.out));
+        QVERIFY(run.out.contains("Target to surface: mean "));
+        QVERIFY(run.out.contains("coverage 100.0 %"));
+        // The result holds one strip and the target, and lies on the cloud (measured here).
+        const model::Project project = io::loadProjectFile(path("approximated.devsurf"));
+        QCOMPARE(project.surfaces.size(), std::size_t(1));
+        QVERIFY(project.surfaces.front().validate().empty());
+        QCOMPARE(project.referenceShapes.size(), std::size_t(1));
+        QCOMPARE(project.referenceShapes.front().points.size(), points.size());
+        const auto report = model::reference::measureDistance(project.surfaces, points);
+        QVERIFY2(report.targetToSurface.max < 1e-5 * report.diagonal,
+                 qPrintable(QString::number(report.targetToSurface.max)));
+        // The other commands work on it.
+        QCOMPARE(test::runCli({"solve", path("approximated.devsurf"), "-o", path("solved.devsurf")})
+                     .exitCode,
+                 0);
+        QCOMPARE(
+            test::runCli({"distance", path("approximated.devsurf"), path("cylinder.xyz")}).exitCode,
+            0);
+        QCOMPARE(test::runCli({"drag", path("approximated.devsurf"), "--vertices", "1", "--by",
+                               "0,0,5", "-o", path("dragged.devsurf")})
+                     .exitCode,
+                 0);
+    }
+
+    void approximateWithSeveralStripsAndFromAProject() {
+        QVERIFY(writeFile(path("cylinder.xyz"), xyz(parabolicCylinder())));
+        test::CliRun run = test::runCli({"approximate", path("cylinder.xyz"), "--strips", "2",
+                                         "--iterations", "10", "-o", path("two.devsurf")});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        QCOMPARE(io::loadProjectFile(path("two.devsurf")).surfaces.size(), std::size_t(2));
+        run = test::runCli({"approximate", path("cylinder.xyz"), "--from", path("two.devsurf"),
+                            "--iterations", "5", "-o", path("again.devsurf")});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        const model::Project again = io::loadProjectFile(path("again.devsurf"));
+        QCOMPARE(again.surfaces.size(), std::size_t(2));
+        QCOMPARE(again.referenceShapes.size(), std::size_t(1)); // not stored twice
+    }
+
+    void approximateRefusesBadInput() {
+        QVERIFY(writeFile(path("cylinder.xyz"), xyz(parabolicCylinder())));
+        // Usage: no output, both starts, a bad count.
+        QCOMPARE(test::runCli({"approximate", path("cylinder.xyz")}).exitCode, 1);
+        QCOMPARE(test::runCli({"approximate", path("cylinder.xyz"), "--from", path("two.devsurf"),
+                               "--strips", "2", "-o", path("x.devsurf")})
+                     .exitCode,
+                 1);
+        QCOMPARE(test::runCli({"approximate", path("cylinder.xyz"), "--strips", "0", "-o",
+                               path("x.devsurf")})
+                     .exitCode,
+                 1);
+        // A target that cannot be read, or too few points for the strips asked for.
+        test::CliRun run =
+            test::runCli({"approximate", path("missing.xyz"), "-o", path("x.devsurf")});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY(run.err.contains("cannot read"));
+        QVERIFY(writeFile(path("three.xyz"), "0 0 0\n1 0 0\n0 1 0\n"));
+        run = test::runCli({"approximate", path("three.xyz"), "-o", path("x.devsurf")});
+        QVERIFY(run.exitCode != 0);
+        QVERIFY2(run.err.startsWith("devsurf-cli: ") && run.err.count('\n') == 1,
+                 qPrintable(run.err));
+        QVERIFY(!QFileInfo::exists(path("x.devsurf")));
+        QVERIFY(test::runCli({"approximate", "--help"}).out.contains("approximate TARGET"));
     }
 };
 

@@ -1,0 +1,96 @@
+// The initial strips of §4.2: a flat rectangle over the PCA plane of points, and the clusters
+// that split a shape for several strips.
+
+#include "model/reference/distance_report.h"
+#include "model/reference/initial_strip.h"
+#include "test_registry.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <stdexcept>
+
+using namespace devsurf::model;
+using namespace devsurf::model::reference;
+
+namespace {
+
+std::vector<Vec3> grid(const Vec3& origin, const Vec3& along, const Vec3& across, int nu, int nv) {
+    std::vector<Vec3> points;
+    for (int i = 0; i <= nu; ++i) {
+        for (int j = 0; j <= nv; ++j) {
+            points.push_back(origin + along * (static_cast<double>(i) / nu) +
+                             across * (static_cast<double>(j) / nv));
+        }
+    }
+    return points;
+}
+
+} // namespace
+
+class TstInitialStrip : public QObject {
+    Q_OBJECT
+
+private slots:
+    void flatStripCoversItsPoints() {
+        for (double scale : {1e-3, 1.0, 1e3}) {
+            const std::vector<Vec3> points = grid(Vec3(5, 10, 0) * scale, Vec3(100, 0, 0.2) * scale,
+                                                  Vec3(0, 40, -0.1) * scale, 10, 6);
+            const CompositeSurface strip = initialStrip(points, {3, 2, 4}, 0.05);
+            QVERIFY(strip.validate().empty());
+            QCOMPARE(static_cast<int>(strip.faces().size()), 1);
+            const DistanceReport report = measureDistance(strip, points);
+            QVERIFY(report.targetToSurface.max < 1e-9 * scale);
+            QCOMPARE(report.coverage, 1.0);
+            // Larger than the points' extent by the margin: 5 % of 100 and of 40 beyond.
+            QVERIFY(report.surfaceToTarget.max > 2.0 * scale);
+            QVERIFY(report.surfaceToTarget.max < 6.0 * scale);
+        }
+    }
+
+    void refusesPointsWithoutAPlane() {
+        const std::vector<Vec3> line = grid(Vec3(0, 0, 0), Vec3(1, 2, 3), Vec3(0, 0, 0), 5, 1);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, initialStrip(line, {3, 2, 4}));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 initialStrip({Vec3(0, 0, 0), Vec3(1, 0, 0)}, {3, 2, 4}));
+        const std::vector<Vec3> plane = grid(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), 3, 3);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, initialStrip(plane, {3, 2, 4}, -1.0));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, clusterPoints(plane, 0));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, clusterPoints(plane, 6));
+    }
+
+    void clustersAreCompactPatches() {
+        // Three separate squares of points far apart: three clusters, one per square, whatever
+        // the order of the points.
+        std::vector<Vec3> points;
+        for (const Vec3& origin : {Vec3(0, 0, 0), Vec3(500, 0, 0), Vec3(0, 500, 100)}) {
+            const std::vector<Vec3> square = grid(origin, Vec3(40, 0, 0), Vec3(0, 40, 0), 5, 5);
+            points.insert(points.end(), square.begin(), square.end());
+        }
+        const auto clusters = clusterPoints(points, 3);
+        QCOMPARE(static_cast<int>(clusters.size()), 3);
+        std::size_t total = 0;
+        for (const auto& cluster : clusters) {
+            QCOMPARE(cluster.size(), std::size_t(36));
+            total += cluster.size();
+            for (std::size_t i : cluster) {
+                QVERIFY((points[i] - points[cluster.front()]).norm() < 60.0);
+            }
+        }
+        QCOMPARE(total, points.size());
+        // A long strip of points in two: halves, not interleaved.
+        const std::vector<Vec3> line = grid(Vec3(0, 0, 0), Vec3(0, 200, 0), Vec3(10, 0, 0), 20, 4);
+        for (const auto& half : clusterPoints(line, 2)) {
+            double low = 1e9;
+            double high = -1e9;
+            for (std::size_t i : half) {
+                low = std::min(low, line[i].y);
+                high = std::max(high, line[i].y);
+            }
+            QVERIFY(high - low < 120.0);
+        }
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstInitialStrip);
+#include "tst_initial_strip.moc"

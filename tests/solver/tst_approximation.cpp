@@ -1,0 +1,206 @@
+// Approximation of a reference shape (§4.2, eqs. 9–11): strips pulled towards points sampled
+// from known developables recover them, and stay exactly developable, measured here
+// independently of the solver.
+
+#include "model/reference/distance_report.h"
+#include "model/reference/initial_strip.h"
+#include "model/reference/thinning.h"
+#include "model/strip.h"
+#include "solver/session/solve_job.h"
+#include "test_registry.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <functional>
+#include <memory>
+
+using namespace devsurf;
+using model::Vec3;
+
+namespace {
+
+// The largest |det(a − b, a′, b′)| / (|a − b| |a′| |b′|) over every strip, 50 values per
+// interval (MATH.md §8), from the splines alone.
+double sampledDevelopability(const model::CompositeSurface& surface) {
+    double worst = 0.0;
+    for (const model::Strip& strip : model::stripsOf(surface)) {
+        const int intervals = static_cast<int>(strip.a.knots().size()) - 2 * strip.a.degree() - 1;
+        const int samples = 50 * std::max(1, intervals);
+        for (int i = 0; i <= samples; ++i) {
+            const double u = static_cast<double>(i) / samples;
+            const Vec3 ruling = strip.a.evaluate(u) - strip.b.evaluate(u);
+            const Vec3 da = strip.a.derivative(u, 1);
+            const Vec3 db = strip.b.derivative(u, 1);
+            const double scale = ruling.norm() * da.norm() * db.norm();
+            const double det = std::abs(dot(ruling, cross(da, db))) / scale;
+            worst = std::max(worst, det);
+        }
+    }
+    return worst;
+}
+
+// Points on a grid of the surface f over [0, 1]².
+std::vector<Vec3> sampleGrid(const std::function<Vec3(double, double)>& f, int nu, int nv) {
+    std::vector<Vec3> points;
+    for (int i = 0; i <= nu; ++i) {
+        for (int j = 0; j <= nv; ++j) {
+            points.push_back(f(static_cast<double>(i) / nu, static_cast<double>(j) / nv));
+        }
+    }
+    return points;
+}
+
+struct Recovery {
+    model::CompositeSurface surface;
+    solver::JobOutcome outcome;
+    model::reference::DistanceReport distance;
+    double developability = 0.0;
+};
+
+// Thins `points` (ρ: 2 % of their diagonal), fits a flat strip with `intervals` intervals and
+// runs the approximation job.
+Recovery approximate(const std::vector<Vec3>& points, int intervals, int iterations) {
+    const model::reference::ThinningResult thinned = model::reference::thinReference(points, 0.0);
+    auto target = std::make_shared<solver::ApproximationTarget>();
+    for (const model::reference::ThinnedPoint& p : thinned.points) {
+        target->points.push_back(p.position);
+        target->normals.push_back(p.normal);
+    }
+    target->borderReach = thinned.radius;
+    target->falloff = 3.0 * thinned.radius; // as devsurf-cli approximate
+    solver::JobRequest request;
+    request.kind = solver::JobKind::Approximate;
+    request.iterations = iterations;
+    request.surfaces = {model::reference::initialStrip(target->points, {3, 2, intervals})};
+    request.targets[0] = target;
+    solver::SolveJob job;
+    Recovery r;
+    r.outcome = job.run(request);
+    if (r.outcome.ok) {
+        r.surface = r.outcome.surfaces.front();
+        r.distance = model::reference::measureDistance(r.surface, points);
+        r.developability = sampledDevelopability(r.surface);
+    }
+    return r;
+}
+
+} // namespace
+
+class TstApproximation : public QObject {
+    Q_OBJECT
+
+private slots:
+    void recoversAParabolicCylinder_data() {
+        QTest::addColumn<double>("scale");
+        QTest::newRow("1e-3") << 1e-3;
+        QTest::newRow("1") << 1.0;
+        QTest::newRow("1e3") << 1e3;
+    }
+
+    void recoversAParabolicCylinder() {
+        // A cylinder over the parabola y = x² / 100: cubic splines hold it exactly.
+        QFETCH(double, scale);
+        const std::vector<Vec3> points = sampleGrid(
+            [scale](double s, double t) {
+                const double x = -50 + 100 * s;
+                return Vec3(x, 0.01 * x * x, 60 * t) * scale;
+            },
+            80, 48);
+        const Recovery r = approximate(points, 4, 30);
+        QVERIFY(r.outcome.ok);
+        const double diameter = r.distance.diagonal;
+        qInfo("cylinder x %g: target to surface max %.3g of the diameter (mean %.3g); "
+              "developability %.3g; residual %.3g; %d iterations, %.0f ms",
+              scale, r.distance.targetToSurface.max / diameter,
+              r.distance.targetToSurface.mean / diameter, r.developability,
+              r.outcome.largestResidual(), r.outcome.largestIterationCount(), r.outcome.elapsedMs);
+        QVERIFY(r.distance.targetToSurface.max <= 1e-6 * diameter);
+        QCOMPARE(r.distance.coverage, 1.0);
+        QVERIFY(r.developability <= 1e-8);
+        QVERIFY(r.outcome.assessments.front().summary.toleranceReached);
+    }
+
+    void recoversAConePatch() {
+        // The cone from the apex (0, −20, −60) over the parabola above: exact in cubic splines.
+        // Not reached yet: the flat start's rectangle overhangs the narrow end of the patch,
+        // and while its rulings turn towards the apex the strip slides off the wide end's
+        // corners, whose points then lie beyond its border and stop pulling (max distance 0.05
+        // of the diameter after 30 iterations; a border reach of 3 or 10 ρ was worse), and the
+        // fade then ends before the residual converges (sampled det 1e-2).
+        const Vec3 apex(0, -20, -60);
+        const std::vector<Vec3> points = sampleGrid(
+            [&apex](double s, double t) {
+                const double x = -50 + 100 * s;
+                const Vec3 directrix(x, 0.01 * x * x, 60);
+                return apex + (directrix - apex) * (0.5 + 0.5 * t);
+            },
+            80, 40);
+        const Recovery r = approximate(points, 4, 30);
+        QVERIFY(r.outcome.ok);
+        const double diameter = r.distance.diagonal;
+        qInfo("cone: target to surface max %.3g of the diameter (mean %.3g); developability "
+              "%.3g; residual %.3g",
+              r.distance.targetToSurface.max / diameter, r.distance.targetToSurface.mean / diameter,
+              r.developability, r.outcome.largestResidual());
+        QEXPECT_FAIL("", "the strip slides off the cone patch's corners (see above)", Continue);
+        QVERIFY(r.distance.targetToSurface.max <= 1e-6 * diameter);
+    }
+
+    void approachesACircularCylinder() {
+        // A quarter of a circular cylinder, which cubic splines hold only approximately: the
+        // strip ends near the spline's approximation error (6e-5 of the diameter), and
+        // developable up to what the fading pull leaves (4e-7 sampled; docs/tuning.md).
+        const double radius = 50.0;
+        const std::vector<Vec3> points = sampleGrid(
+            [radius](double s, double t) {
+                const double phi = 1.5707963267948966 * (s - 0.5);
+                return Vec3(radius * std::sin(phi), radius * (1.0 - std::cos(phi)), 60 * t);
+            },
+            80, 48);
+        const Recovery r = approximate(points, 4, 30);
+        QVERIFY(r.outcome.ok);
+        const double diameter = r.distance.diagonal;
+        qInfo("circular cylinder: target to surface max %.3g of the diameter (mean %.3g); "
+              "developability %.3g",
+              r.distance.targetToSurface.max / diameter, r.distance.targetToSurface.mean / diameter,
+              r.developability);
+        QVERIFY(r.distance.targetToSurface.max <= 1e-4 * diameter);
+        QVERIFY(r.developability <= 1e-6);
+    }
+
+    void pointsBeyondTheBorderDoNotDragTheStrip() {
+        // Half the target is a far-away blob beside the strip's points, and the border reach
+        // keeps the strip on its own points.
+        std::vector<Vec3> points =
+            sampleGrid([](double s, double t) { return Vec3(100 * s, 60 * t, 0.0); }, 40, 24);
+        auto target = std::make_shared<solver::ApproximationTarget>();
+        const model::CompositeSurface start = model::reference::initialStrip(points, {3, 2, 2});
+        for (const Vec3& p : points) {
+            target->points.push_back(p + Vec3(0, 0, 1.0)); // the strip is pulled up by 1
+            target->normals.push_back(Vec3(0, 0, 1));
+        }
+        for (int i = 0; i < 200; ++i) {
+            target->points.push_back(Vec3(400 + i, 30, 200));
+            target->normals.push_back(Vec3(0, 0, 1));
+        }
+        target->borderReach = 5.0;
+        solver::JobRequest request;
+        request.kind = solver::JobKind::Approximate;
+        request.surfaces = {start};
+        request.targets[0] = target;
+        solver::SolveJob job;
+        const solver::JobOutcome outcome = job.run(request);
+        QVERIFY(outcome.ok);
+        points.resize(41 * 25);
+        for (Vec3& p : points) {
+            p.z += 1.0;
+        }
+        const auto report = model::reference::measureDistance(outcome.surfaces.front(), points);
+        QVERIFY2(report.targetToSurface.max < 1e-3,
+                 qPrintable(QString::number(report.targetToSurface.max)));
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstApproximation);
+#include "tst_approximation.moc"
