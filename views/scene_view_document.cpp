@@ -156,6 +156,7 @@ void SceneView::showReferenceShapes() {
                                      ? d->document->project().referenceShapes
                                      : none,
                                  d->gl->effectiveDevicePixelRatio());
+    showReferenceDistances(); // shapes built anew take their colours again
 }
 
 int SceneView::referenceShapesDrawn() const {
