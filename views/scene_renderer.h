@@ -96,7 +96,8 @@ public:
     // Colours the points (and mesh vertices) of each drawn shape by its distances (one per
     // point, in the shape's order; null or of another size: the shape's own colour), on the
     // colouring's scale, faded when stale. A null colouring gives every shape its own colour.
-    void setReferenceColours(const std::vector<const std::vector<double>*>& distances,
+    // True if anything drawn changed (a frame is due).
+    bool setReferenceColours(const std::vector<const std::vector<double>*>& distances,
                              const DistanceColouring* colouring, bool stale);
     // The colour a point of a drawn shape is drawn in by distance; invalid when the shape is
     // not coloured so.

@@ -161,8 +161,9 @@ void SceneRenderer::setReferenceShapes(const std::vector<model::ReferenceShape>&
     setShowReferenceShapes(m_showReferenceShapes);
 }
 
-void SceneRenderer::setReferenceColours(const std::vector<const std::vector<double>*>& distances,
+bool SceneRenderer::setReferenceColours(const std::vector<const std::vector<double>*>& distances,
                                         const DistanceColouring* colouring, bool stale) {
+    bool changed = false;
     for (int i = 0; i < m_shapesDrawn; ++i) {
         ShapeActor& shape = *m_shapeActors[static_cast<std::size_t>(i)];
         const std::vector<double>* values =
@@ -170,6 +171,10 @@ void SceneRenderer::setReferenceColours(const std::vector<const std::vector<doub
                 ? distances[static_cast<std::size_t>(i)]
                 : nullptr;
         const bool colour = values != nullptr && values->size() == shape.pointCount;
+        if (!colour && !shape.coloured) {
+            continue; // drawn in its own colour, as it was
+        }
+        changed = true;
         if (colour) {
             shape.data->GetPointData()->SetScalars(colouring->pointColours(*values, stale));
             shape.mapper->SetColorModeToDirectScalars();
@@ -186,6 +191,7 @@ void SceneRenderer::setReferenceColours(const std::vector<const std::vector<doub
         shape.coloured = colour;
         shape.data->Modified();
     }
+    return changed;
 }
 
 QColor SceneRenderer::referencePointColour(int shape, int point) const {

@@ -51,9 +51,13 @@ void SceneView::showReferenceDistances() {
             distances.push_back(&report.targetDistances);
         }
     }
-    d->scene->setReferenceColours(distances, colour ? &d->distanceColouring : nullptr,
-                                  d->distanceMap == DistanceMap::Stale);
-    rerender(); // the legend follows after the render (updateOverlay)
+    // A frame only when colours changed: a large shape takes a while to draw, and a
+    // measurement just started changes nothing in the scene, only the legend.
+    if (d->scene->setReferenceColours(distances, colour ? &d->distanceColouring : nullptr,
+                                      d->distanceMap == DistanceMap::Stale)) {
+        rerender();
+    }
+    d->overlay->setDistanceLegend(distanceLegend());
 }
 
 SceneView::DistanceMap SceneView::distanceMap() const {

@@ -2,6 +2,7 @@
 // figures against measureDistance() computed here, the map marked stale while the design
 // changes, the action's disabled state.
 #include "distance_report_dialog.h"
+#include "io/reference/reference_import.h"
 #include "main_window.h"
 #include "model/document/commands/command_or_error.h"
 #include "model/document/commands/reference_shapes_command.h"
@@ -21,6 +22,7 @@
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTest>
+#include <QTimer>
 #include <QUndoStack>
 
 #include <cmath>
@@ -210,6 +212,65 @@ private slots:
         QVERIFY(!view->referencePointColour(0, 0).isValid());
         QVERIFY(waitForMap(window, Map::Current));
         QVERIFY(view->referencePointColour(1, 0).isValid());
+    }
+
+    // 40,000 points (or the file DEVSURF_TEST_LARGE_REFERENCE names, e.g. the Stanford bunny
+    // in mm) coloured while the window keeps answering: the toggle returns at once, with
+    // nothing measured yet. The longest pause of the event loop is printed, not checked: under
+    // Xvfb it is one software-rendered frame of the shape (as long without the measurement).
+    void largeReferenceDoesNotStallTheWindow() {
+        app::MainWindow window;
+        QVERIFY(test::showActiveWithExample(window, QStringLiteral("cylinder")));
+        document::Document* doc = window.workspace()->document();
+        model::ReferenceShape shape{"large", "", {}, {}, {}};
+        const QString file = qEnvironmentVariable("DEVSURF_TEST_LARGE_REFERENCE");
+        if (!file.isEmpty()) {
+            io::ReferenceImportResult read = io::readReferenceShape(file.toStdString());
+            QVERIFY(!read.error);
+            shape = std::move(read.shape);
+        } else {
+            for (int i = 0; i < 200; ++i) {
+                for (int j = 0; j < 200; ++j) {
+                    const double angle = 2.0 * M_PI * i / 200.0;
+                    shape.points.push_back(
+                        {90.0 * std::cos(angle), 90.0 * std::sin(angle), 0.9 * j});
+                }
+            }
+        }
+        QVERIFY(addShape(*doc, shape));
+        window.surfaceView()->grabImage();
+        QElapsedTimer clock;
+        clock.start();
+        window.surfaceView()->grabImage();
+        const qint64 frame = clock.elapsed();
+        qint64 last = 0;
+        qint64 longest = 0;
+        qint64 longestEnd = 0;
+        QTimer tick;
+        connect(&tick, &QTimer::timeout, [&] {
+            if (clock.elapsed() - last > longest) {
+                longest = clock.elapsed() - last;
+                longestEnd = clock.elapsed();
+            }
+            last = clock.elapsed();
+        });
+        tick.start(5);
+        clock.start();
+        window.action(QStringLiteral("actionColourReferenceByDistance"))->trigger();
+        const qint64 toggled = clock.elapsed();
+        QCOMPARE(window.surfaceView()->distanceMap(), Map::Measuring);
+        QVERIFY(waitForMap(window, Map::Current));
+        const qint64 coloured = clock.elapsed();
+        window.surfaceView()->grabImage();
+        const qint64 drawn = clock.elapsed();
+        const auto result = views::ReferenceDistances::of(doc)->latest();
+        qInfo("%zu points: toggle returned after %lld ms, measured in %.0f ms off the GUI "
+              "thread, coloured after %lld ms, drawn after %lld ms; longest pause of the event "
+              "loop meanwhile %lld ms (ending at %lld ms; one frame before: %lld ms)",
+              shape.points.size(), toggled, result->milliseconds, coloured, drawn, longest,
+              longestEnd, frame);
+        QVERIFY2(toggled < 1000, qPrintable(QString::number(toggled)));
+        QVERIFY(window.surfaceView()->referencePointColour(0, 0).isValid());
     }
 
     void reportMatchesMeasureDistance() {
