@@ -63,11 +63,21 @@ void paintDistanceLegend(QPainter& painter, const QRectF& box, const DistanceLeg
     painter.setBrush(Qt::NoBrush);
     painter.drawRect(bar);
     auto heightOf = [&](double mm) { return bottom - mm / legend.high * bar.height(); };
+    QFont strong = font;
+    strong.setBold(true);
+    const QFontMetricsF strongMetrics(strong);
+    // The tolerance's label sits just below its mark (inside the bar's height).
+    const double mark = heightOf(std::clamp(legend.tolerance, 0.0, legend.high));
+    const double labelCentre =
+        std::min(bottom - 0.5 * strongMetrics.height(), mark + 0.5 * strongMetrics.height() + 2.0);
     // Five steps of a fifth of the top (a round length, so are they), "mm" at the top.
     for (int step = 0; step <= 5; ++step) {
         const double mm = legend.high * step / 5.0;
         const double at = heightOf(mm);
         painter.drawLine(QPointF(bar.right(), at), QPointF(bar.right() + 4.0, at));
+        if (std::abs(at - labelCentre) < 0.5 * (metrics.height() + strongMetrics.height())) {
+            continue; // the tolerance's label is written there
+        }
         const QString text =
             step == 5 ? QCoreApplication::translate("SceneView", "%1 mm").arg(lengthLabel(mm))
                       : lengthLabel(mm);
@@ -76,16 +86,10 @@ void paintDistanceLegend(QPainter& painter, const QRectF& box, const DistanceLeg
                          Qt::AlignLeft | Qt::AlignVCenter, text);
     }
     // The tolerance: a heavy line across the bar, its label beside the colours below it.
-    const double mark = heightOf(std::clamp(legend.tolerance, 0.0, legend.high));
     painter.setPen(QPen(QColor(20, 20, 20), 2.5));
     painter.drawLine(QPointF(bar.left() - 3.0, mark), QPointF(bar.right() + 3.0, mark));
-    QFont strong = font;
-    strong.setBold(true);
     painter.setFont(strong);
-    const QFontMetricsF strongMetrics(strong);
-    const double below =
-        std::min(bottom - 0.5 * strongMetrics.height(), mark + 0.5 * strongMetrics.height() + 2.0);
-    const QRectF labelBox(bar.right() + 6.0, below - 0.5 * strongMetrics.height(),
+    const QRectF labelBox(bar.right() + 6.0, labelCentre - 0.5 * strongMetrics.height(),
                           box.right() - bar.right() - 8.0, strongMetrics.height());
     painter.setPen(Qt::NoPen);
     painter.setBrush(QColor(255, 255, 255, 235));

@@ -102,6 +102,8 @@ public:
     // The colour a point of a drawn shape is drawn in by distance; invalid when the shape is
     // not coloured so.
     QColor referencePointColour(int shape, int point) const;
+    // Whether a shown shape is coloured by distance (its legend is drawn).
+    bool drawsDistanceColours() const;
     // Boundary loops of held sheets drawn (development view).
     int sheetLoopCount() const { return m_sheetLoops; }
 

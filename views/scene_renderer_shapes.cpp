@@ -194,6 +194,15 @@ bool SceneRenderer::setReferenceColours(const std::vector<const std::vector<doub
     return changed;
 }
 
+bool SceneRenderer::drawsDistanceColours() const {
+    for (int i = 0; i < m_shapesDrawn && m_showReferenceShapes; ++i) {
+        if (m_shapeActors[static_cast<std::size_t>(i)]->coloured) {
+            return true;
+        }
+    }
+    return false;
+}
+
 QColor SceneRenderer::referencePointColour(int shape, int point) const {
     if (shape < 0 || shape >= m_shapesDrawn) {
         return QColor();
