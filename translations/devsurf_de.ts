@@ -2127,11 +2127,6 @@
         <translation>Die importierten Netze und Punktwolken in der 3D-Ansicht zeichnen (Datei ▸ Referenzform importieren…).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="278"/>
-        <source>Colour Reference by &amp;Distance</source>
-        <translation>Referenzform nach &amp;Abstand färben</translation>
-    </message>
-    <message>
         <location filename="../app/gui/main_window.cpp" line="282"/>
         <source>Colour the points of the reference shapes by their distance to the design, in mm, with a legend (green: within the coverage tolerance of Tools ▸ Distance to Reference…).</source>
         <translation>Färbt die Punkte der Referenzformen nach ihrem Abstand zum Entwurf, in mm, mit Legende (grün: innerhalb der Abdeckungstoleranz von Werkzeuge ▸ Abstand zur Referenzform…).</translation>
@@ -2211,11 +2206,6 @@
         <source>Sheet S&amp;hape…</source>
         <translation>Bogen&amp;form…</translation>
     </message>
-    <message>
-        <location filename="../app/gui/main_window.cpp" line="340"/>
-        <source>Distance to Re&amp;ference…</source>
-        <translation>Abstand zur Re&amp;ferenzform…</translation>
-    </message>
     <message numerus="yes">
         <location filename="../app/gui/main_window.cpp" line="468"/>
         <source>%n surface(s)</source>
@@ -2259,6 +2249,11 @@
         <translation>Die Kurven einer DXF-, SVG-, STEP- oder IGES-Datei als Referenzkurven hinzufügen</translation>
     </message>
     <message>
+        <location filename="../app/gui/main_window.cpp" line="278"/>
+        <source>Colour Reference by Dis&amp;tance</source>
+        <translation>Referenzform nach Abs&amp;tand färben</translation>
+    </message>
+    <message>
         <location filename="../app/gui/main_window.cpp" line="313"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
@@ -2282,6 +2277,11 @@
         <location filename="../app/gui/main_window.cpp" line="322"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="340"/>
+        <source>Dis&amp;tance to Reference…</source>
+        <translation>Abs&amp;tand zur Referenzform…</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="369"/>
@@ -4482,24 +4482,24 @@
         <translation>Fläche %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_distances.cpp" line="91"/>
+        <location filename="../views/scene_view_distances.cpp" line="95"/>
         <source>Distance to design
 (mm)</source>
         <translation>Abstand zum Entwurf
 (mm)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_distances.cpp" line="92"/>
+        <location filename="../views/scene_view_distances.cpp" line="96"/>
         <source>covered</source>
         <translation>abgedeckt</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_distances.cpp" line="94"/>
+        <location filename="../views/scene_view_distances.cpp" line="98"/>
         <source>Measuring…</source>
         <translation>Wird gemessen…</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_distances.cpp" line="101"/>
+        <location filename="../views/scene_view_distances.cpp" line="105"/>
         <source>Updating…</source>
         <translation>Wird aktualisiert…</translation>
     </message>

@@ -2115,8 +2115,13 @@
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="278"/>
-        <source>Colour Reference by &amp;Distance</source>
-        <translation>参照形状を距離で色分け(&amp;D)</translation>
+        <source>Colour Reference by Dis&amp;tance</source>
+        <translation>参照形状を距離で色分け(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="340"/>
+        <source>Dis&amp;tance to Reference…</source>
+        <translation>参照形状までの距離(&amp;T)…</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="282"/>
@@ -2227,11 +2232,6 @@
         <location filename="../app/gui/main_window.cpp" line="336"/>
         <source>Sheet S&amp;hape…</source>
         <translation>シートの形(&amp;H)…</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window.cpp" line="340"/>
-        <source>Distance to Re&amp;ference…</source>
-        <translation>参照形状までの距離(&amp;F)…</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="369"/>
@@ -4434,24 +4434,24 @@
         <translation>曲面 %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_distances.cpp" line="91"/>
+        <location filename="../views/scene_view_distances.cpp" line="95"/>
         <source>Distance to design
 (mm)</source>
         <translation>デザインまでの距離
 (mm)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_distances.cpp" line="92"/>
+        <location filename="../views/scene_view_distances.cpp" line="96"/>
         <source>covered</source>
         <translation>被覆</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_distances.cpp" line="94"/>
+        <location filename="../views/scene_view_distances.cpp" line="98"/>
         <source>Measuring…</source>
         <translation>計測中…</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_distances.cpp" line="101"/>
+        <location filename="../views/scene_view_distances.cpp" line="105"/>
         <source>Updating…</source>
         <translation>更新中…</translation>
     </message>

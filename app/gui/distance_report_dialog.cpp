@@ -60,6 +60,10 @@ QTableWidget* reportTable(const DistanceReport& report, QWidget* parent) {
     table->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     table->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     table->resizeColumnsToContents();
+    table->resizeRowsToContents();
+    // Exactly as high as its two rows: no empty band below them.
+    table->setFixedHeight(table->horizontalHeader()->sizeHint().height() + table->rowHeight(0) +
+                          table->rowHeight(1) + 2 * table->frameWidth());
     table->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
     return table;
 }
@@ -89,7 +93,7 @@ DistanceReportDialog::DistanceReportDialog(document::Document* document, QWidget
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);
-    resize(640, 360);
+    resize(660, 260);
 
     connect(m_source, &views::ReferenceDistances::changed, this, &DistanceReportDialog::refresh);
     m_source->use(this, true);

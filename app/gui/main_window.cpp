@@ -275,7 +275,7 @@ void MainWindow::createMenus() {
     // The reference shapes coloured by their distance to the design: off unless turned on
     // (remembered); measured in the background while on.
     QAction* byDistance = addAction(view, QStringLiteral("actionColourReferenceByDistance"),
-                                    tr("Colour Reference by &Distance"));
+                                    tr("Colour Reference by Dis&tance"));
     byDistance->setCheckable(true);
     byDistance->setChecked(
         QSettings().value(QStringLiteral("view/referenceDistances"), false).toBool());
@@ -337,7 +337,7 @@ void MainWindow::createMenus() {
     new SheetShapeReaction(sheetShape, m_workspace);
     tools->addSeparator();
     QAction* distance = addAction(tools, QStringLiteral("actionDistanceToReference"),
-                                  tr("Distance to Re&ference…"));
+                                  tr("Dis&tance to Reference…"));
     new DistanceReportReaction(distance, m_workspace);
     tools->addSeparator();
     const QList<QAction*> solverActions = createSolverActions(tools, selectNone);
