@@ -14,7 +14,9 @@ void SceneView::setColourReferenceByDistance(bool on) {
     }
     d->byDistance = on;
     if (ReferenceDistances* source = ReferenceDistances::of(d->document)) {
-        source->use(this, on); // starts a measurement if none is current
+        // Starts a measurement if none is current; none for hidden shapes (a drag would
+        // measure at every step for nothing).
+        source->use(this, on && d->scene->showsReferenceShapes());
     }
     showReferenceDistances();
 }
@@ -27,7 +29,9 @@ void SceneView::showReferenceDistances() {
     if (d->kind != Kind::Spatial) {
         return;
     }
-    ReferenceDistances* source = d->byDistance ? ReferenceDistances::of(d->document) : nullptr;
+    ReferenceDistances* source = d->byDistance && d->scene->showsReferenceShapes()
+                                     ? ReferenceDistances::of(d->document)
+                                     : nullptr;
     const std::shared_ptr<const ReferenceDistanceResult> result =
         source != nullptr ? source->latest() : nullptr;
     const std::size_t shapes =

@@ -170,6 +170,9 @@ bool SceneView::showsReferenceShapes() const {
 void SceneView::setShowReferenceShapes(bool show) {
     d->scene->setShowReferenceShapes(show);
     rerender();
+    if (d->byDistance) {
+        setColourReferenceByDistance(true); // measures only while the shapes are shown
+    }
 }
 
 int SceneView::sheetLoopsDrawn() const {

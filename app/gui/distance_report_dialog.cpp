@@ -101,15 +101,18 @@ DistanceReportDialog::DistanceReportDialog(document::Document* document, QWidget
 }
 
 DistanceReportDialog::~DistanceReportDialog() {
-    m_source->use(this, false);
+    if (m_source != nullptr) {
+        m_source->use(this, false);
+    }
 }
 
 bool DistanceReportDialog::showsCurrent() const {
-    return m_shown != nullptr && m_shown == m_source->latest() && m_source->isCurrent();
+    return m_source != nullptr && m_shown != nullptr && m_shown == m_source->latest() &&
+           m_source->isCurrent();
 }
 
 bool DistanceReportDialog::isMeasuring() const {
-    return m_source->isMeasuring();
+    return m_source != nullptr && m_source->isMeasuring();
 }
 
 QTableWidget* DistanceReportDialog::table(int shape) const {
@@ -119,6 +122,9 @@ QTableWidget* DistanceReportDialog::table(int shape) const {
 }
 
 void DistanceReportDialog::refresh() {
+    if (m_source == nullptr) {
+        return;
+    }
     const std::shared_ptr<const views::ReferenceDistanceResult> latest = m_source->latest();
     if (latest != m_shown) {
         m_shown = latest;

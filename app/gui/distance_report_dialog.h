@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QDialog>
+#include <QPointer>
 
 #include <memory>
 #include <vector>
@@ -53,7 +54,8 @@ private:
     void rebuildReports(const views::ReferenceDistanceResult& result);
 
     document::Document* m_document;
-    views::ReferenceDistances* m_source;
+    // Owned by the document, which may go first when the window closes.
+    QPointer<views::ReferenceDistances> m_source;
     std::shared_ptr<const views::ReferenceDistanceResult> m_shown;
     QLabel* m_status = nullptr;
     QProgressBar* m_busy = nullptr;

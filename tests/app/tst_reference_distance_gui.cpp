@@ -153,6 +153,15 @@ private slots:
         view->grabImage();
         QVERIFY(!view->distanceLegendRect().isEmpty());
 
+        // Shapes hidden: no map (and nothing measured); shown again, the colours come back.
+        QAction* shapes = window.action(QStringLiteral("actionShowReferenceShapes"));
+        shapes->trigger();
+        QCOMPARE(view->distanceMap(), Map::Hidden);
+        QVERIFY(!views::ReferenceDistances::of(doc)->isUsed());
+        shapes->trigger();
+        QVERIFY(waitForMap(window, Map::Current));
+        QVERIFY(view->referencePointColour(0, 0).isValid());
+
         toggle->trigger();
         QCOMPARE(view->distanceMap(), Map::Hidden);
         QVERIFY(!view->referencePointColour(0, 0).isValid());
@@ -328,6 +337,9 @@ private slots:
         QCOMPARE(reaction->dialog(), dialog);
         dialog->close();
         QTRY_VERIFY(reaction->dialog() == nullptr);
+        // Left open while the window closes (the document goes first): no harm.
+        action->trigger();
+        QVERIFY(reaction->dialog() != nullptr);
     }
 };
 
