@@ -13,8 +13,10 @@ namespace devsurf::views {
 
 namespace {
 
+// Four significant digits, whole millimetres from a metre on (no exponent).
 QString lengthLabel(double millimetres) {
-    return QLocale().toString(millimetres, 'g', 4);
+    return std::abs(millimetres) >= 1000.0 ? QLocale().toString(millimetres, 'f', 0)
+                                           : QLocale().toString(millimetres, 'g', 4);
 }
 
 } // namespace

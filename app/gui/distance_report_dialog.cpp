@@ -14,6 +14,8 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <cmath>
+
 namespace devsurf::app {
 
 using model::reference::DistanceReport;
@@ -21,8 +23,11 @@ using model::reference::OneSidedDistance;
 
 namespace {
 
+// Four significant digits, but whole millimetres from a metre on (no exponent for a building).
 QString millimetres(double value) {
-    return DistanceReportDialog::tr("%1 mm").arg(QLocale().toString(value, 'g', 4));
+    return DistanceReportDialog::tr("%1 mm").arg(std::abs(value) >= 1000.0
+                                                     ? QLocale().toString(value, 'f', 0)
+                                                     : QLocale().toString(value, 'g', 4));
 }
 
 QString percent(double value) {

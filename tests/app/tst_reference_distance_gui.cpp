@@ -92,6 +92,8 @@ class TstReferenceDistanceGui : public QObject {
 
 private slots:
     void init() { QSettings().clear(); }
+    // The toggle is remembered: leave it off for the classes that follow.
+    void cleanupTestCase() { QSettings().clear(); }
 
     void actionDisabledWithoutShapeOrSurface() {
         app::MainWindow window;
