@@ -4,47 +4,47 @@
 <context>
     <name></name>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="38"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="39"/>
         <source>%1 is not a file DevSurf reads shapes from; choose a mesh (OBJ, PLY, STL, OFF) or a point cloud (XYZ, PTS).</source>
         <translation>%1 ist keine Datei, aus der DevSurf Formen liest; wählen Sie ein Netz (OBJ, PLY, STL, OFF) oder eine Punktwolke (XYZ, PTS).</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="42"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="43"/>
         <source>%1 cannot be read; check that it exists and that you may read it.</source>
         <translation>%1 kann nicht gelesen werden; prüfen Sie, ob die Datei existiert und Sie sie lesen dürfen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="44"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="45"/>
         <source>%1 is too large; DevSurf takes up to %2 points and %3 triangles.</source>
         <translation>%1 ist zu groß; DevSurf nimmt bis zu %2 Punkte und %3 Dreiecke.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="48"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="49"/>
         <source>%1 is damaged or not a valid file of its type; nothing was imported.</source>
         <translation>%1 ist beschädigt oder keine gültige Datei ihres Typs; nichts wurde importiert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="51"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="52"/>
         <source>%1 ends before its last point or triangle; copy or export it again.</source>
         <translation>%1 endet vor ihrem letzten Punkt oder Dreieck; kopieren oder exportieren Sie sie erneut.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="54"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="55"/>
         <source>%1 holds a coordinate that is not a finite number of sensible size; nothing was imported.</source>
         <translation>%1 enthält eine Koordinate, die keine endliche Zahl sinnvoller Größe ist; nichts wurde importiert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="58"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="59"/>
         <source>A face of %1 names a point the file does not have; nothing was imported.</source>
         <translation>Eine Fläche von %1 nennt einen Punkt, den die Datei nicht hat; nichts wurde importiert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="61"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="62"/>
         <source>%1 holds no points to import.</source>
         <translation>%1 enthält keine Punkte zum Importieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="65"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="66"/>
         <source>No reference shape could be imported from %1.</source>
         <translation>Aus %1 konnte keine Referenzform importiert werden.</translation>
     </message>
@@ -990,12 +990,12 @@
 <context>
     <name>SceneView</name>
     <message>
-        <location filename="../views/quality_colours.cpp" line="72"/>
+        <location filename="../views/quality_colours.cpp" line="81"/>
         <source>developable</source>
         <translation>abwickelbar</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="89"/>
+        <location filename="../views/quality_colours.cpp" line="98"/>
         <source>Developability
 |det(a-b, a&apos;, b&apos;)|
 (ratio)</source>
@@ -1004,18 +1004,23 @@
 (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="92"/>
+        <location filename="../views/quality_colours.cpp" line="101"/>
         <source>Flatness δ
 (ratio)</source>
         <translation>Ebenheit δ
 (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="94"/>
+        <location filename="../views/quality_colours.cpp" line="103"/>
         <source>Angle defect |K|
 (rad)</source>
         <translation>Winkeldefekt |K|
 (rad)</translation>
+    </message>
+    <message>
+        <location filename="../views/distance_legend.cpp" line="72"/>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
     </message>
 </context>
 <context>
@@ -1357,6 +1362,121 @@
         <location filename="../app/gui/reactions/edit_reactions.cpp" line="10"/>
         <source>Deleting parts of a surface is not available yet: relabel an edge (Ctrl+L) or undo (Ctrl+Z) instead.</source>
         <translation>Teile einer Fläche zu löschen ist noch nicht möglich: ändern Sie stattdessen die Kennzeichnung einer Kante (Strg+L) oder machen Sie rückgängig (Strg+Z).</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::DistanceReportDialog</name>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="25"/>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="29"/>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="35"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="45"/>
+        <source>Mean</source>
+        <translation>Mittel</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="46"/>
+        <source>95th percentile</source>
+        <translation>95. Perzentil</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="47"/>
+        <source>Largest</source>
+        <translation>Größter</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="48"/>
+        <source>Reference shape → design</source>
+        <translation>Referenzform → Entwurf</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="49"/>
+        <source>Design → reference shape</source>
+        <translation>Entwurf → Referenzform</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="72"/>
+        <source>Distance to Reference</source>
+        <translation>Abstand zur Referenzform</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="133"/>
+        <source>The project has no reference shape; import one with File ▸ Import Reference Shape….</source>
+        <translation>Das Projekt hat keine Referenzform; importieren Sie eine mit Datei ▸ Referenzform importieren….</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="135"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="141"/>
+        <source>The design has no surface to measure.</source>
+        <translation>Der Entwurf hat keine Fläche zum Messen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="137"/>
+        <source>Measuring the distance between the design and the reference shapes…</source>
+        <translation>Der Abstand zwischen Entwurf und Referenzformen wird gemessen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="139"/>
+        <source>A surface of the design is not valid; solve or undo, then measure again.</source>
+        <translation>Eine Fläche des Entwurfs ist ungültig; lösen Sie oder machen Sie rückgängig, dann messen Sie erneut.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="143"/>
+        <source>The design changed: measuring again. The figures below are out of date.</source>
+        <translation>Der Entwurf hat sich geändert: Es wird neu gemessen. Die Werte unten sind veraltet.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="146"/>
+        <source>Measured in %1 s.</source>
+        <translation>Gemessen in %1 s.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="170"/>
+        <source>Reference shape %1</source>
+        <translation>Referenzform %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/distance_report_dialog.cpp" line="177"/>
+        <source>Coverage: %1 of the %n point(s) lie within %2 of the design.</source>
+        <translation>
+            <numerusform>Abdeckung: %1 des %n Punkts liegt innerhalb von %2 am Entwurf.</numerusform>
+            <numerusform>Abdeckung: %1 der %n Punkte liegen innerhalb von %2 am Entwurf.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="187"/>
+        <source>Two-sided (Hausdorff) distance %1; bounding-box diagonal %2; the design sampled every %3.</source>
+        <translation>Beidseitiger (Hausdorff-)Abstand %1; Diagonale des umgebenden Quaders %2; der Entwurf alle %3 abgetastet.</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::DistanceReportReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="210"/>
+        <source>Measure how far the design is from a reference shape: import one first (File ▸ Import Reference Shape…).</source>
+        <translation>Misst, wie weit der Entwurf von einer Referenzform entfernt ist: Importieren Sie zuerst eine (Datei ▸ Referenzform importieren…).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="212"/>
+        <source>Measure how far the design is from the reference shapes: the design has no surface yet.</source>
+        <translation>Misst, wie weit der Entwurf von den Referenzformen entfernt ist: Der Entwurf hat noch keine Fläche.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="214"/>
+        <source>Show how far the design is from each reference shape, both ways (mean, 95th percentile, largest), and how much of the shape it covers.</source>
+        <translation>Zeigt, wie weit der Entwurf von jeder Referenzform entfernt ist, in beide Richtungen (Mittel, 95. Perzentil, größter Wert), und wie viel der Form er abdeckt.</translation>
     </message>
 </context>
 <context>
@@ -1755,44 +1875,44 @@
 <context>
     <name>devsurf::app::ImportReferenceShapeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="89"/>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="119"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="90"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="120"/>
         <source>Import Reference Shape</source>
         <translation>Referenzform importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="91"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="92"/>
         <source>Meshes and point clouds (*.obj *.ply *.stl *.off *.xyz *.pts);;Meshes (*.obj *.ply *.stl *.off);;Point clouds (*.xyz *.pts)</source>
         <translation>Netze und Punktwolken (*.obj *.ply *.stl *.off *.xyz *.pts);;Netze (*.obj *.ply *.stl *.off);;Punktwolken (*.xyz *.pts)</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="116"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="117"/>
         <source>Reading reference shape %1…</source>
         <translation>Referenzform %1 wird gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="117"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="118"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="157"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="158"/>
         <source>Import of reference shape %1 cancelled</source>
         <translation>Import der Referenzform %1 abgebrochen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="159"/>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="168"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="160"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="169"/>
         <source>Cannot import the reference shape</source>
         <translation>Die Referenzform kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="170"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="171"/>
         <source>Imported reference shape %1: %2, %3</source>
         <translation>Referenzform %1 importiert: %2, %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="171"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="172"/>
         <source>%n point(s)</source>
         <translation>
             <numerusform>%n Punkt</numerusform>
@@ -1800,7 +1920,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="172"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="173"/>
         <source>%n triangle(s)</source>
         <translation>
             <numerusform>%n Dreieck</numerusform>
@@ -2017,82 +2137,87 @@
         <translation>Die importierten Netze und Punktwolken in der 3D-Ansicht zeichnen (Datei ▸ Referenzform importieren…).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="277"/>
+        <location filename="../app/gui/main_window.cpp" line="282"/>
+        <source>Colour the points of the reference shapes by their distance to the design, in mm, with a legend (green: within the coverage tolerance of Tools ▸ Distance to Reference…).</source>
+        <translation>Färbt die Punkte der Referenzformen nach ihrem Abstand zum Entwurf, in mm, mit Legende (grün: innerhalb der Abdeckungstoleranz von Werkzeuge ▸ Abstand zur Referenzform…).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="293"/>
         <source>&amp;Fit All</source>
         <translation>&amp;Alles zeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="277"/>
+        <location filename="../app/gui/main_window.cpp" line="293"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="283"/>
+        <location filename="../app/gui/main_window.cpp" line="299"/>
         <source>Reset &amp;Layout</source>
         <translation>&amp;Layout zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="288"/>
+        <location filename="../app/gui/main_window.cpp" line="304"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="291"/>
+        <location filename="../app/gui/main_window.cpp" line="307"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>Kanten&amp;kennzeichnung ändern (R ↔ S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="291"/>
+        <location filename="../app/gui/main_window.cpp" line="307"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="293"/>
+        <location filename="../app/gui/main_window.cpp" line="309"/>
         <source>Add &amp;Crease…</source>
         <translation>&amp;Falz einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="296"/>
+        <location filename="../app/gui/main_window.cpp" line="312"/>
         <source>Add R&amp;uling…</source>
         <translation>&amp;Erzeugende einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="309"/>
+        <location filename="../app/gui/main_window.cpp" line="325"/>
         <source>&amp;Pin Vertices</source>
         <translation>Ecken &amp;festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="310"/>
+        <location filename="../app/gui/main_window.cpp" line="326"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="312"/>
+        <location filename="../app/gui/main_window.cpp" line="328"/>
         <source>U&amp;npin Vertices</source>
         <translation>Ecken &amp;freigeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="313"/>
+        <location filename="../app/gui/main_window.cpp" line="329"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="316"/>
+        <location filename="../app/gui/main_window.cpp" line="332"/>
         <source>Hold the &amp;Sheet</source>
         <translation>&amp;Bogen festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="317"/>
+        <location filename="../app/gui/main_window.cpp" line="333"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="320"/>
+        <location filename="../app/gui/main_window.cpp" line="336"/>
         <source>Sheet S&amp;hape…</source>
         <translation>Bogen&amp;form…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="448"/>
+        <location filename="../app/gui/main_window.cpp" line="468"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n Fläche</numerusform>
@@ -2100,7 +2225,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="449"/>
+        <location filename="../app/gui/main_window.cpp" line="469"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -2108,7 +2233,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="450"/>
+        <location filename="../app/gui/main_window.cpp" line="470"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -2116,7 +2241,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="451"/>
+        <location filename="../app/gui/main_window.cpp" line="471"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n ausgewählt</numerusform>
@@ -2124,7 +2249,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="294"/>
+        <location filename="../app/gui/main_window.cpp" line="310"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
@@ -2134,72 +2259,82 @@
         <translation>Die Kurven einer DXF-, SVG-, STEP- oder IGES-Datei als Referenzkurven hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="297"/>
+        <location filename="../app/gui/main_window.cpp" line="278"/>
+        <source>Colour Reference by Dis&amp;tance</source>
+        <translation>Referenzform nach Abs&amp;tand färben</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="313"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="299"/>
+        <location filename="../app/gui/main_window.cpp" line="315"/>
         <source>Re&amp;fine Curves</source>
         <translation>Kurven &amp;verfeinern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="300"/>
+        <location filename="../app/gui/main_window.cpp" line="316"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="306"/>
+        <location filename="../app/gui/main_window.cpp" line="322"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>Ecken &amp;verschieben oder drehen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="306"/>
+        <location filename="../app/gui/main_window.cpp" line="322"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="349"/>
+        <location filename="../app/gui/main_window.cpp" line="340"/>
+        <source>Dis&amp;tance to Reference…</source>
+        <translation>Abs&amp;tand zur Referenzform…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="369"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="350"/>
+        <location filename="../app/gui/main_window.cpp" line="370"/>
         <source>&amp;User Manual</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="357"/>
+        <location filename="../app/gui/main_window.cpp" line="377"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="363"/>
+        <location filename="../app/gui/main_window.cpp" line="383"/>
         <source>&amp;About DevSurf</source>
         <translation>&amp;Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="365"/>
+        <location filename="../app/gui/main_window.cpp" line="385"/>
         <source>About DevSurf</source>
         <translation>Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="366"/>
+        <location filename="../app/gui/main_window.cpp" line="386"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen mit Spline-Torsen (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="411"/>
+        <location filename="../app/gui/main_window.cpp" line="431"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="433"/>
+        <location filename="../app/gui/main_window.cpp" line="453"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="434"/>
+        <location filename="../app/gui/main_window.cpp" line="454"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
@@ -3213,7 +3348,7 @@
 <context>
     <name>devsurf::app::RemoveReferenceShapesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="189"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="190"/>
         <source>Cannot remove the reference shapes</source>
         <translation>Die Referenzformen können nicht entfernt werden</translation>
     </message>
@@ -4282,12 +4417,12 @@
 <context>
     <name>devsurf::views::SceneView</name>
     <message>
-        <location filename="../views/scene_view.cpp" line="53"/>
+        <location filename="../views/scene_view.cpp" line="54"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="55"/>
+        <location filename="../views/scene_view.cpp" line="56"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
@@ -4355,6 +4490,28 @@
         <location filename="../views/scene_view_input.cpp" line="76"/>
         <source>surface %1: %2</source>
         <translation>Fläche %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view_distances.cpp" line="95"/>
+        <source>Distance to design
+(mm)</source>
+        <translation>Abstand zum Entwurf
+(mm)</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view_distances.cpp" line="96"/>
+        <source>covered</source>
+        <translation>abgedeckt</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view_distances.cpp" line="98"/>
+        <source>Measuring…</source>
+        <translation>Wird gemessen…</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view_distances.cpp" line="105"/>
+        <source>Updating…</source>
+        <translation>Wird aktualisiert…</translation>
     </message>
 </context>
 <context>

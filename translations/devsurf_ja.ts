@@ -4,47 +4,47 @@
 <context>
     <name></name>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="38"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="39"/>
         <source>%1 is not a file DevSurf reads shapes from; choose a mesh (OBJ, PLY, STL, OFF) or a point cloud (XYZ, PTS).</source>
         <translation>%1 は DevSurf が形状を読み込めるファイルではありません。メッシュ (OBJ、PLY、STL、OFF) か点群 (XYZ、PTS) を選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="42"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="43"/>
         <source>%1 cannot be read; check that it exists and that you may read it.</source>
         <translation>%1 を読めません。ファイルが存在し、読み取り権限があるか確認してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="44"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="45"/>
         <source>%1 is too large; DevSurf takes up to %2 points and %3 triangles.</source>
         <translation>%1 は大きすぎます。DevSurf が扱えるのは %2 点、%3 三角形までです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="48"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="49"/>
         <source>%1 is damaged or not a valid file of its type; nothing was imported.</source>
         <translation>%1 は壊れているか、その形式の正しいファイルではありません。何も読み込まれませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="51"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="52"/>
         <source>%1 ends before its last point or triangle; copy or export it again.</source>
         <translation>%1 は最後の点または三角形の前で終わっています。もう一度コピーするか書き出してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="54"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="55"/>
         <source>%1 holds a coordinate that is not a finite number of sensible size; nothing was imported.</source>
         <translation>%1 に妥当な大きさの有限な数でない座標があります。何も読み込まれませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="58"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="59"/>
         <source>A face of %1 names a point the file does not have; nothing was imported.</source>
         <translation>%1 の面が、ファイルにない点を指しています。何も読み込まれませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="61"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="62"/>
         <source>%1 holds no points to import.</source>
         <translation>%1 には読み込む点がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="65"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="66"/>
         <source>No reference shape could be imported from %1.</source>
         <translation>%1 から参照形状を読み込めませんでした。</translation>
     </message>
@@ -982,12 +982,12 @@
 <context>
     <name>SceneView</name>
     <message>
-        <location filename="../views/quality_colours.cpp" line="72"/>
+        <location filename="../views/quality_colours.cpp" line="81"/>
         <source>developable</source>
         <translation>可展</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="89"/>
+        <location filename="../views/quality_colours.cpp" line="98"/>
         <source>Developability
 |det(a-b, a&apos;, b&apos;)|
 (ratio)</source>
@@ -996,18 +996,23 @@
 (比)</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="92"/>
+        <location filename="../views/quality_colours.cpp" line="101"/>
         <source>Flatness δ
 (ratio)</source>
         <translation>平面性 δ
 (比)</translation>
     </message>
     <message>
-        <location filename="../views/quality_colours.cpp" line="94"/>
+        <location filename="../views/quality_colours.cpp" line="103"/>
         <source>Angle defect |K|
 (rad)</source>
         <translation>角度欠損 |K|
 (rad)</translation>
+    </message>
+    <message>
+        <location filename="../views/distance_legend.cpp" line="72"/>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
     </message>
 </context>
 <context>
@@ -1347,6 +1352,120 @@
         <location filename="../app/gui/reactions/edit_reactions.cpp" line="10"/>
         <source>Deleting parts of a surface is not available yet: relabel an edge (Ctrl+L) or undo (Ctrl+Z) instead.</source>
         <translation>曲面の一部の削除はまだできません。代わりに辺のラベルを変更する (Ctrl+L) か、元に戻して (Ctrl+Z) ください。</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::DistanceReportDialog</name>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="25"/>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="29"/>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="35"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="45"/>
+        <source>Mean</source>
+        <translation>平均</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="46"/>
+        <source>95th percentile</source>
+        <translation>95 パーセンタイル</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="47"/>
+        <source>Largest</source>
+        <translation>最大</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="48"/>
+        <source>Reference shape → design</source>
+        <translation>参照形状 → デザイン</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="49"/>
+        <source>Design → reference shape</source>
+        <translation>デザイン → 参照形状</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="72"/>
+        <source>Distance to Reference</source>
+        <translation>参照形状までの距離</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="133"/>
+        <source>The project has no reference shape; import one with File ▸ Import Reference Shape….</source>
+        <translation>プロジェクトに参照形状がありません。ファイル ▸ 参照形状を読み込む… で読み込んでください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="135"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="141"/>
+        <source>The design has no surface to measure.</source>
+        <translation>デザインに計測する曲面がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="137"/>
+        <source>Measuring the distance between the design and the reference shapes…</source>
+        <translation>デザインと参照形状の距離を計測しています…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="139"/>
+        <source>A surface of the design is not valid; solve or undo, then measure again.</source>
+        <translation>デザインの曲面が有効ではありません。ソルブするか元に戻してから、もう一度計測してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="143"/>
+        <source>The design changed: measuring again. The figures below are out of date.</source>
+        <translation>デザインが変更されました。計測し直しています。下の数値は古いものです。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="146"/>
+        <source>Measured in %1 s.</source>
+        <translation>%1 秒で計測しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="170"/>
+        <source>Reference shape %1</source>
+        <translation>参照形状 %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/distance_report_dialog.cpp" line="177"/>
+        <source>Coverage: %1 of the %n point(s) lie within %2 of the design.</source>
+        <translation>
+            <numerusform>被覆率: %n 点のうち %1 がデザインから %2 以内にあります。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="187"/>
+        <source>Two-sided (Hausdorff) distance %1; bounding-box diagonal %2; the design sampled every %3.</source>
+        <translation>両側 (ハウスドルフ) 距離 %1、バウンディングボックスの対角線 %2、デザインのサンプル間隔 %3。</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::DistanceReportReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="210"/>
+        <source>Measure how far the design is from a reference shape: import one first (File ▸ Import Reference Shape…).</source>
+        <translation>デザインが参照形状からどれだけ離れているかを計測します。先に参照形状を読み込んでください (ファイル ▸ 参照形状を読み込む…)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="212"/>
+        <source>Measure how far the design is from the reference shapes: the design has no surface yet.</source>
+        <translation>デザインが参照形状からどれだけ離れているかを計測します。デザインにまだ曲面がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="214"/>
+        <source>Show how far the design is from each reference shape, both ways (mean, 95th percentile, largest), and how much of the shape it covers.</source>
+        <translation>デザインが各参照形状からどれだけ離れているかを両方向 (平均、95 パーセンタイル、最大) で示し、形状のどれだけを覆っているかを示します。</translation>
     </message>
 </context>
 <context>
@@ -1740,51 +1859,51 @@
 <context>
     <name>devsurf::app::ImportReferenceShapeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="89"/>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="119"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="90"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="120"/>
         <source>Import Reference Shape</source>
         <translation>参照形状を読み込む</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="91"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="92"/>
         <source>Meshes and point clouds (*.obj *.ply *.stl *.off *.xyz *.pts);;Meshes (*.obj *.ply *.stl *.off);;Point clouds (*.xyz *.pts)</source>
         <translation>メッシュと点群 (*.obj *.ply *.stl *.off *.xyz *.pts);;メッシュ (*.obj *.ply *.stl *.off);;点群 (*.xyz *.pts)</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="116"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="117"/>
         <source>Reading reference shape %1…</source>
         <translation>参照形状 %1 を読み込み中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="117"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="118"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="157"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="158"/>
         <source>Import of reference shape %1 cancelled</source>
         <translation>参照形状 %1 の読み込みを中止しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="159"/>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="168"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="160"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="169"/>
         <source>Cannot import the reference shape</source>
         <translation>参照形状を読み込めません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="170"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="171"/>
         <source>Imported reference shape %1: %2, %3</source>
         <translation>参照形状 %1 を読み込みました: %2、%3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="171"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="172"/>
         <source>%n point(s)</source>
         <translation>
             <numerusform>%n 点</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="172"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="173"/>
         <source>%n triangle(s)</source>
         <translation>
             <numerusform>%n 個の三角形</numerusform>
@@ -2005,178 +2124,193 @@
         <translation>読み込んだメッシュと点群を 3D ビューに描く (ファイル ▸ 参照形状を読み込む…)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="277"/>
+        <location filename="../app/gui/main_window.cpp" line="278"/>
+        <source>Colour Reference by Dis&amp;tance</source>
+        <translation>参照形状を距離で色分け(&amp;T)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="340"/>
+        <source>Dis&amp;tance to Reference…</source>
+        <translation>参照形状までの距離(&amp;T)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="282"/>
+        <source>Colour the points of the reference shapes by their distance to the design, in mm, with a legend (green: within the coverage tolerance of Tools ▸ Distance to Reference…).</source>
+        <translation>参照形状の点をデザインまでの距離 (mm) で色分けし、凡例を表示します (緑: ツール ▸ 参照形状までの距離… の被覆許容差以内)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="293"/>
         <source>&amp;Fit All</source>
         <translation>全体を表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="277"/>
+        <location filename="../app/gui/main_window.cpp" line="293"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="283"/>
+        <location filename="../app/gui/main_window.cpp" line="299"/>
         <source>Reset &amp;Layout</source>
         <translation>レイアウトをリセット(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="288"/>
+        <location filename="../app/gui/main_window.cpp" line="304"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="291"/>
+        <location filename="../app/gui/main_window.cpp" line="307"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>辺のラベルを変更 (R ↔ S)(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="291"/>
+        <location filename="../app/gui/main_window.cpp" line="307"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="293"/>
+        <location filename="../app/gui/main_window.cpp" line="309"/>
         <source>Add &amp;Crease…</source>
         <translation>折り線を追加(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="294"/>
+        <location filename="../app/gui/main_window.cpp" line="310"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="296"/>
+        <location filename="../app/gui/main_window.cpp" line="312"/>
         <source>Add R&amp;uling…</source>
         <translation>母線を追加(&amp;U)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="297"/>
+        <location filename="../app/gui/main_window.cpp" line="313"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="299"/>
+        <location filename="../app/gui/main_window.cpp" line="315"/>
         <source>Re&amp;fine Curves</source>
         <translation>曲線を細分化(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="300"/>
+        <location filename="../app/gui/main_window.cpp" line="316"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="306"/>
+        <location filename="../app/gui/main_window.cpp" line="322"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>頂点の移動・回転(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="306"/>
+        <location filename="../app/gui/main_window.cpp" line="322"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="309"/>
+        <location filename="../app/gui/main_window.cpp" line="325"/>
         <source>&amp;Pin Vertices</source>
         <translation>頂点を固定(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="310"/>
+        <location filename="../app/gui/main_window.cpp" line="326"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="312"/>
+        <location filename="../app/gui/main_window.cpp" line="328"/>
         <source>U&amp;npin Vertices</source>
         <translation>頂点の固定を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="313"/>
+        <location filename="../app/gui/main_window.cpp" line="329"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="316"/>
+        <location filename="../app/gui/main_window.cpp" line="332"/>
         <source>Hold the &amp;Sheet</source>
         <translation>シートを保持(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="317"/>
+        <location filename="../app/gui/main_window.cpp" line="333"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="320"/>
+        <location filename="../app/gui/main_window.cpp" line="336"/>
         <source>Sheet S&amp;hape…</source>
         <translation>シートの形(&amp;H)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="349"/>
+        <location filename="../app/gui/main_window.cpp" line="369"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="350"/>
+        <location filename="../app/gui/main_window.cpp" line="370"/>
         <source>&amp;User Manual</source>
         <translation>ユーザーマニュアル(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="357"/>
+        <location filename="../app/gui/main_window.cpp" line="377"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="363"/>
+        <location filename="../app/gui/main_window.cpp" line="383"/>
         <source>&amp;About DevSurf</source>
         <translation>DevSurf について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="365"/>
+        <location filename="../app/gui/main_window.cpp" line="385"/>
         <source>About DevSurf</source>
         <translation>DevSurf について</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="366"/>
+        <location filename="../app/gui/main_window.cpp" line="386"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;スプライン可展面による可展面と曲線折り折り紙の設計 (Tang, Bo, Wallner, Pottmann 2015)。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="411"/>
+        <location filename="../app/gui/main_window.cpp" line="431"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="433"/>
+        <location filename="../app/gui/main_window.cpp" line="453"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="434"/>
+        <location filename="../app/gui/main_window.cpp" line="454"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="448"/>
+        <location filename="../app/gui/main_window.cpp" line="468"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>曲面 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="449"/>
+        <location filename="../app/gui/main_window.cpp" line="469"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="450"/>
+        <location filename="../app/gui/main_window.cpp" line="470"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="451"/>
+        <location filename="../app/gui/main_window.cpp" line="471"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n 個選択</numerusform>
@@ -3182,7 +3316,7 @@
 <context>
     <name>devsurf::app::RemoveReferenceShapesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="189"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="190"/>
         <source>Cannot remove the reference shapes</source>
         <translation>参照形状を削除できません</translation>
     </message>
@@ -4235,12 +4369,12 @@
 <context>
     <name>devsurf::views::SceneView</name>
     <message>
-        <location filename="../views/scene_view.cpp" line="53"/>
+        <location filename="../views/scene_view.cpp" line="54"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="55"/>
+        <location filename="../views/scene_view.cpp" line="56"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
@@ -4308,6 +4442,28 @@
         <location filename="../views/scene_view_input.cpp" line="76"/>
         <source>surface %1: %2</source>
         <translation>曲面 %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view_distances.cpp" line="95"/>
+        <source>Distance to design
+(mm)</source>
+        <translation>デザインまでの距離
+(mm)</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view_distances.cpp" line="96"/>
+        <source>covered</source>
+        <translation>被覆</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view_distances.cpp" line="98"/>
+        <source>Measuring…</source>
+        <translation>計測中…</translation>
+    </message>
+    <message>
+        <location filename="../views/scene_view_distances.cpp" line="105"/>
+        <source>Updating…</source>
+        <translation>更新中…</translation>
     </message>
 </context>
 <context>

@@ -44,6 +44,22 @@ std::vector<double> qualityValues(const SurfaceScene& scene, ColourBy by) {
     return values;
 }
 
+std::vector<QColor> toleranceScale(double mark, int count) {
+    std::vector<QColor> colours;
+    for (int i = 0; i < count; ++i) {
+        const double t = (i + 0.5) / count;
+        if (t <= mark) {
+            colours.push_back(
+                QColor::fromHsvF(0.33f, 0.75f, static_cast<float>(0.55 + 0.25 * t / mark)));
+        } else {
+            const double above = (t - mark) / (1.0 - mark);
+            colours.push_back(
+                QColor::fromHsvF(static_cast<float>(0.16 * (1.0 - above)), 0.9f, 0.95f));
+        }
+    }
+    return colours;
+}
+
 QualityColouring::QualityColouring()
     : m_tolerance(solver::Options{}.reportTolerance),
       m_table(vtkSmartPointer<vtkLookupTable>::New()) {
@@ -53,18 +69,11 @@ QualityColouring::QualityColouring()
     // developable), on the logarithmic scale.
     const double span = std::log10(m_high) - std::log10(m_low);
     const double mark = (std::log10(m_tolerance) - std::log10(m_low)) / span;
+    m_colours = toleranceScale(mark, kColours);
     m_table->SetNumberOfTableValues(kColours);
     for (int i = 0; i < kColours; ++i) {
-        const double t = (i + 0.5) / kColours;
-        QColor colour;
-        if (t <= mark) {
-            colour = QColor::fromHsvF(0.33f, 0.75f, static_cast<float>(0.55 + 0.25 * t / mark));
-        } else {
-            const double above = (t - mark) / (1.0 - mark);
-            colour = QColor::fromHsvF(static_cast<float>(0.16 * (1.0 - above)), 0.9f, 0.95f);
-        }
+        const QColor& colour = m_colours[static_cast<std::size_t>(i)];
         m_table->SetTableValue(i, colour.redF(), colour.greenF(), colour.blueF(), 1.0);
-        m_colours.push_back(colour);
     }
 }
 

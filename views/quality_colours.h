@@ -24,6 +24,11 @@ namespace devsurf::views {
 std::vector<double> qualityValues(const SurfaceScene& scene, ColourBy by);
 bool isPerPoint(ColourBy by);
 
+// The colours of a scale whose mark (the tolerance, a fraction 0..1 of the scale) parts what is
+// good enough from what is not: `count` colours from bottom to top, green up to the mark, then
+// yellow through orange to red. Shared by the quality colouring and the distance colour map.
+std::vector<QColor> toleranceScale(double mark, int count);
+
 // The lookup table (logarithmic, fixed from kScaleLow to kScaleHigh: green below the tolerance,
 // yellow to red above it). The view's overlay draws its legend at the right of the viewport
 // (ViewOverlay::setQualityLegend).

@@ -3,6 +3,7 @@
 // Internal to views/: includes VTK.
 
 #include "crease_marks.h"
+#include "distance_colours.h"
 #include "model/document/selection.h"
 #include "model/reference_shape.h"
 #include "quality_colours.h"
@@ -92,6 +93,17 @@ public:
     bool showsReferenceShapes() const { return m_showReferenceShapes; }
     // The shapes drawn: 0 while hidden.
     int referenceShapeCount() const;
+    // Colours the points (and mesh vertices) of each drawn shape by its distances (one per
+    // point, in the shape's order; null or of another size: the shape's own colour), on the
+    // colouring's scale, faded when stale. A null colouring gives every shape its own colour.
+    // True if anything drawn changed (a frame is due).
+    bool setReferenceColours(const std::vector<const std::vector<double>*>& distances,
+                             const DistanceColouring* colouring, bool stale);
+    // The colour a point of a drawn shape is drawn in by distance; invalid when the shape is
+    // not coloured so.
+    QColor referencePointColour(int shape, int point) const;
+    // Whether a shown shape is coloured by distance (its legend is drawn).
+    bool drawsDistanceColours() const;
     // Boundary loops of held sheets drawn (development view).
     int sheetLoopCount() const { return m_sheetLoops; }
 

@@ -110,10 +110,14 @@ void SceneRenderer::fitBoundsToViewport() {
     // At least the markers' margin, and a little air around the design in a large view.
     const double margin = std::max(kFitMargin, kFitAir * std::min(size[0], size[1]));
     const double left = margin;
-    // The quality legend keeps the right of the viewport from its left edge on.
+    // The legends keep the right of the viewport from their left edge on: the quality legend,
+    // and the distance legend left of it (ViewOverlay::distanceLegendRect).
     double legendLeft = size[0];
-    if (m_quality && m_quality->mode() != ColourBy::Patch) {
-        legendLeft = m_quality->legendBox(size[0], size[1]).left;
+    const bool quality = m_quality && m_quality->mode() != ColourBy::Patch;
+    const bool distance = drawsDistanceColours();
+    if (quality || distance) {
+        const QualityColouring::Box box = QualityColouring::legendBox(size[0], size[1]);
+        legendLeft = box.left - (quality && distance ? box.right - box.left + 8.0 : 0.0);
     }
     const double right = std::max(left + 1.0, std::min(size[0] - margin, legendLeft - kFitMargin));
     const double bottom = margin;

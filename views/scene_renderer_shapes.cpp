@@ -5,9 +5,11 @@
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkIdTypeArray.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
 #include <memory>
@@ -107,6 +109,8 @@ void SceneRenderer::setReferenceShapes(const std::vector<model::ReferenceShape>&
         actor->pointCount = shape.points.size();
         actor->triangles = shape.triangles.data();
         actor->triangleCount = shape.triangles.size();
+        actor->isCloud = shape.isPointCloud();
+        actor->coloured = false;
         double bounds[6];
         actor->data->GetBounds(bounds);
         actor->low = Vec3(bounds[0], bounds[2], bounds[4]);
@@ -155,6 +159,63 @@ void SceneRenderer::setReferenceShapes(const std::vector<model::ReferenceShape>&
         }
     }
     setShowReferenceShapes(m_showReferenceShapes);
+}
+
+bool SceneRenderer::setReferenceColours(const std::vector<const std::vector<double>*>& distances,
+                                        const DistanceColouring* colouring, bool stale) {
+    bool changed = false;
+    for (int i = 0; i < m_shapesDrawn; ++i) {
+        ShapeActor& shape = *m_shapeActors[static_cast<std::size_t>(i)];
+        const std::vector<double>* values =
+            colouring != nullptr && i < static_cast<int>(distances.size())
+                ? distances[static_cast<std::size_t>(i)]
+                : nullptr;
+        const bool colour = values != nullptr && values->size() == shape.pointCount;
+        if (!colour && !shape.coloured) {
+            continue; // drawn in its own colour, as it was
+        }
+        changed = true;
+        if (colour) {
+            shape.data->GetPointData()->SetScalars(colouring->pointColours(*values, stale));
+            shape.mapper->SetColorModeToDirectScalars();
+            shape.mapper->SetScalarModeToUsePointData();
+            shape.mapper->ScalarVisibilityOn();
+        } else if (shape.coloured) {
+            shape.data->GetPointData()->SetScalars(nullptr);
+            shape.mapper->ScalarVisibilityOff();
+        }
+        if (!shape.isCloud) {
+            // Coloured, a mesh is less translucent: its colours must read over the design.
+            shape.actor->GetProperty()->SetOpacity(colour ? 0.8 : 0.35);
+        }
+        shape.coloured = colour;
+        shape.data->Modified();
+    }
+    return changed;
+}
+
+bool SceneRenderer::drawsDistanceColours() const {
+    for (int i = 0; i < m_shapesDrawn && m_showReferenceShapes; ++i) {
+        if (m_shapeActors[static_cast<std::size_t>(i)]->coloured) {
+            return true;
+        }
+    }
+    return false;
+}
+
+QColor SceneRenderer::referencePointColour(int shape, int point) const {
+    if (shape < 0 || shape >= m_shapesDrawn) {
+        return QColor();
+    }
+    const ShapeActor& actor = *m_shapeActors[static_cast<std::size_t>(shape)];
+    vtkDataArray* scalars = actor.data->GetPointData()->GetScalars();
+    if (!actor.coloured || scalars == nullptr || point < 0 ||
+        point >= scalars->GetNumberOfTuples()) {
+        return QColor();
+    }
+    double rgb[3];
+    scalars->GetTuple(point, rgb);
+    return QColor(static_cast<int>(rgb[0]), static_cast<int>(rgb[1]), static_cast<int>(rgb[2]));
 }
 
 void SceneRenderer::forgetReferenceShapes() {

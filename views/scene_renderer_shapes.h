@@ -25,6 +25,8 @@ struct SceneRenderer::ShapeActor {
     const std::array<int, 3>* triangles = nullptr;
     std::size_t triangleCount = 0;
     model::Vec3 low, high; // bounding box
+    bool isCloud = false;
+    bool coloured = false; // by distance (setReferenceColours)
 
     bool builtFrom(const model::ReferenceShape& shape) const {
         return data != nullptr && points == shape.points.data() &&

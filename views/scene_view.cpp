@@ -1,6 +1,7 @@
 #include "scene_view.h"
 
 #include "model/model_error.h"
+#include "reference_distances.h"
 #include "scene_cache.h"
 #include "scene_view_private.h"
 #include "vtk_interactor_styles.h"
@@ -152,6 +153,12 @@ SceneView::SceneView(Kind kind, document::Document* document, document::Selectio
     });
     d->endTag = d->renderer->AddObserver(vtkCommand::EndEvent, d->endObserver);
 
+    if (kind == Kind::Spatial && document != nullptr) {
+        // Created before this view follows the document, so that it has taken in a change
+        // (e.g. dropped the distances of shapes just replaced) when the view rebuilds.
+        connect(ReferenceDistances::of(document), &ReferenceDistances::changed, this,
+                &SceneView::showReferenceDistances);
+    }
     if (document != nullptr) {
         connect(document, &document::Document::changed, this,
                 [this](document::Changes changes) { onDocumentChanged(changes.toInt()); });
@@ -504,6 +511,7 @@ void SceneView::updateOverlay() {
     } else {
         d->overlay->setQualityLegend(std::nullopt);
     }
+    d->overlay->setDistanceLegend(distanceLegend());
     const auto [mountains, valleys] = d->scene->foldCounts();
     d->overlay->setFoldLegend(mountains > 0, valleys > 0, d->scene->flatCreaseCount() > 0);
     d->overlay->setSheetLegend(d->scene->sheetLoopCount() > 0 && d->scene->showsSheet());

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "colour_by.h"
+#include "distance_legend.h"
 #include "model/document/selection.h"
 #include "model/ids.h"
 #include "model/vec3.h"
@@ -145,6 +146,25 @@ public:
     // Boundary loops of held sheets drawn behind the development (development view; 0 in 3D).
     int sheetLoopsDrawn() const;
 
+    // The colour map of the reference shapes by their distance to the design (3D view, View ▸
+    // Colour Reference by Distance), measured in the background (ReferenceDistances):
+    // Hidden when off or with nothing to measure; Measuring before the first result (no
+    // colours); Stale while the design changed since the colours shown were measured (they
+    // are drawn faded and the legend says it updates); Current.
+    enum class DistanceMap { Hidden, Measuring, Stale, Current };
+    DistanceMap distanceMap() const;
+    bool coloursReferenceByDistance() const;
+    // The legend's scale in mm (0 to its top) and the coverage tolerance it marks; zeros
+    // without colours.
+    std::pair<double, double> distanceLegendRange() const;
+    double distanceLegendTolerance() const;
+    // Where the legend is drawn (widget coordinates of glWidget()); empty without one.
+    QRect distanceLegendRect() const;
+    // The colour a point of a reference shape is drawn in by distance (invalid when not), and
+    // the colour the scale gives a distance in mm (invalid without colours).
+    QColor referencePointColour(int shape, int point) const;
+    QColor distanceColour(double millimetres) const;
+
 public slots:
     void fitAll();
     // The starting camera (3D: from the front right and above), fitted to the design.
@@ -158,6 +178,8 @@ public slots:
     void setPreviewLines(const std::vector<std::vector<model::Vec3>>& lines);
     // Shows or hides the reference shapes (View ▸ Reference Shapes; shown by default).
     void setShowReferenceShapes(bool show);
+    // Colours the reference shapes by their distance to the design, with a legend (3D view).
+    void setColourReferenceByDistance(bool on);
 
 signals:
     // What the mouse is over, e.g. "vertex 12", "edge 7 (S, crease)", "patch 3 (strip (SRSR))";
@@ -190,6 +212,10 @@ private:
     void rebuild(bool geometryOnly);
     void showReferenceCurves();
     void showReferenceShapes();
+    // Applies the latest distances (ReferenceDistances) to the shapes drawn and the legend.
+    void showReferenceDistances();
+    // The colour map's legend as it should be drawn now (none when hidden).
+    std::optional<DistanceLegend> distanceLegend() const;
     QString describe(const document::Pick& pick) const;
     void selectInRectangle(const QRect& rect, bool add);
     // After each render: scale bar and patch labels for the camera just drawn.

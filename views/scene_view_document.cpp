@@ -156,6 +156,7 @@ void SceneView::showReferenceShapes() {
                                      ? d->document->project().referenceShapes
                                      : none,
                                  d->gl->effectiveDevicePixelRatio());
+    showReferenceDistances(); // shapes built anew take their colours again
 }
 
 int SceneView::referenceShapesDrawn() const {
@@ -169,6 +170,9 @@ bool SceneView::showsReferenceShapes() const {
 void SceneView::setShowReferenceShapes(bool show) {
     d->scene->setShowReferenceShapes(show);
     rerender();
+    if (d->byDistance) {
+        setColourReferenceByDistance(true); // measures only while the shapes are shown
+    }
 }
 
 int SceneView::sheetLoopsDrawn() const {

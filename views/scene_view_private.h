@@ -75,6 +75,9 @@ struct SceneView::Private {
     bool anchorsValid = false;
     double barLength = 0.0;
     int previewLines = 0;
+    bool byDistance = false; // View ▸ Colour Reference by Distance
+    DistanceMap distanceMap = DistanceMap::Hidden;
+    DistanceColouring distanceColouring;
 
     double displayX(double widgetX) const { return widgetX * gl->effectiveDevicePixelRatio(); }
     double displayY(double widgetY) const {

@@ -220,6 +220,26 @@ void ViewOverlay::setQualityLegend(std::optional<QualityLegend> legend) {
     }
 }
 
+void ViewOverlay::setDistanceLegend(std::optional<DistanceLegend> legend) {
+    if (legend == m_distance) {
+        return;
+    }
+    m_distance = std::move(legend);
+    update();
+}
+
+QRectF ViewOverlay::distanceLegendRect() const {
+    if (!m_distance) {
+        return QRectF();
+    }
+    const QualityColouring::Box box = QualityColouring::legendBox(width(), height());
+    QRectF rect(QPointF(box.left, height() - box.top), QPointF(box.right, height() - box.bottom));
+    if (m_quality) {
+        rect.translate(-(rect.width() + 8.0), 0.0);
+    }
+    return rect;
+}
+
 QRectF ViewOverlay::qualityLegendRect() const {
     if (!m_quality) {
         return QRectF();
@@ -408,6 +428,9 @@ void ViewOverlay::paintEvent(QPaintEvent*) {
 
     if (m_quality) {
         paintQualityLegend(painter, font);
+    }
+    if (m_distance) {
+        paintDistanceLegend(painter, distanceLegendRect(), *m_distance, font);
     }
 
     // The verdict of the last solve, upper right, in its colour; elided to half the width so

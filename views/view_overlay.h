@@ -1,5 +1,6 @@
 #pragma once
 
+#include "distance_legend.h"
 #include "model/composite_surface.h"
 #include "model/creases.h"
 
@@ -99,6 +100,13 @@ public:
     // Where it is drawn (widget coordinates); empty without one.
     QRectF qualityLegendRect() const;
 
+    // The legend of the reference shapes' colour map by distance, at the right, left of the
+    // quality legend when both are shown.
+    void setDistanceLegend(std::optional<DistanceLegend> legend);
+    const std::optional<DistanceLegend>& distanceLegend() const { return m_distance; }
+    // Where it is drawn (widget coordinates); empty without one.
+    QRectF distanceLegendRect() const;
+
     // A measurement: a line through the points (widget coordinates) with the text at the last.
     void setMeasurement(std::vector<QPointF> points, const QString& text);
 
@@ -138,6 +146,7 @@ private:
     QString m_verdict;
     QColor m_verdictColour;
     std::optional<QualityLegend> m_quality;
+    std::optional<DistanceLegend> m_distance;
     std::vector<QPointF> m_measured;
     QString m_measuredText;
     void paintQualityLegend(QPainter& painter, const QFont& font) const;

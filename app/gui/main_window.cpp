@@ -272,6 +272,22 @@ void MainWindow::createMenus() {
         m_surfaceView->setShowReferenceShapes(on);
         QSettings().setValue(QStringLiteral("view/referenceShapes"), on);
     });
+    // The reference shapes coloured by their distance to the design: off unless turned on
+    // (remembered); measured in the background while on.
+    QAction* byDistance = addAction(view, QStringLiteral("actionColourReferenceByDistance"),
+                                    tr("Colour Reference by Dis&tance"));
+    byDistance->setCheckable(true);
+    byDistance->setChecked(
+        QSettings().value(QStringLiteral("view/referenceDistances"), false).toBool());
+    byDistance->setToolTip(tr("Colour the points of the reference shapes by their distance to "
+                              "the design, in mm, with a legend (green: within the coverage "
+                              "tolerance of Tools ▸ Distance to Reference…)."));
+    byDistance->setStatusTip(byDistance->toolTip());
+    m_surfaceView->setColourReferenceByDistance(byDistance->isChecked());
+    connect(byDistance, &QAction::toggled, m_surfaceView, [this](bool on) {
+        m_surfaceView->setColourReferenceByDistance(on);
+        QSettings().setValue(QStringLiteral("view/referenceDistances"), on);
+    });
     createColourActions(view);
     QAction* fit =
         addAction(view, QStringLiteral("actionFitAll"), tr("&Fit All"), QKeySequence(tr("F")));
@@ -319,6 +335,10 @@ void MainWindow::createMenus() {
     QAction* sheetShape =
         addAction(tools, QStringLiteral("actionSheetShape"), tr("Sheet S&hape…"), QKeySequence());
     new SheetShapeReaction(sheetShape, m_workspace);
+    tools->addSeparator();
+    QAction* distance = addAction(tools, QStringLiteral("actionDistanceToReference"),
+                                  tr("Dis&tance to Reference…"));
+    new DistanceReportReaction(distance, m_workspace);
     tools->addSeparator();
     const QList<QAction*> solverActions = createSolverActions(tools, selectNone);
     // A right click in either view offers what applies to the entity under the cursor.

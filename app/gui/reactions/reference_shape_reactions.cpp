@@ -1,5 +1,6 @@
 #include "reference_shape_reactions.h"
 
+#include "../distance_report_dialog.h"
 #include "../workspace.h"
 #include "io/reference/reference_import.h"
 #include "model/document/commands/reference_shapes_command.h"
@@ -187,6 +188,43 @@ void RemoveReferenceShapesReaction::updateEnableState() {
 void RemoveReferenceShapesReaction::onTriggered() {
     workspace()->apply(document::ReferenceShapesCommand::createRemoveAll(*workspace()->document()),
                        tr("Cannot remove the reference shapes"));
+}
+
+DistanceReportReaction::DistanceReportReaction(QAction* action, Workspace* workspace)
+    : Reaction(action, workspace) {
+    followDocumentAndSelection();
+}
+
+DistanceReportDialog* DistanceReportReaction::dialog() const {
+    return m_dialog;
+}
+
+void DistanceReportReaction::updateEnableState() {
+    const model::Project& project = workspace()->document()->project();
+    const bool shapes = !project.referenceShapes.empty();
+    const bool surface =
+        std::any_of(project.surfaces.begin(), project.surfaces.end(),
+                    [](const model::CompositeSurface& s) { return !s.faces().empty(); });
+    action()->setEnabled(shapes && surface);
+    const QString tip =
+        !shapes    ? tr("Measure how far the design is from a reference shape: import one first "
+                           "(File ▸ Import Reference Shape…).")
+        : !surface ? tr("Measure how far the design is from the reference shapes: the design "
+                        "has no surface yet.")
+                   : tr("Show how far the design is from each reference shape, both ways (mean, "
+                        "95th percentile, largest), and how much of the shape it covers.");
+    action()->setToolTip(tip);
+    action()->setStatusTip(tip);
+}
+
+void DistanceReportReaction::onTriggered() {
+    if (m_dialog == nullptr) {
+        m_dialog = new DistanceReportDialog(workspace()->document(), workspace()->window());
+        m_dialog->setAttribute(Qt::WA_DeleteOnClose);
+    }
+    m_dialog->show();
+    m_dialog->raise();
+    m_dialog->activateWindow();
 }
 
 } // namespace devsurf::app

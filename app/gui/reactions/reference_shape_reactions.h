@@ -2,6 +2,7 @@
 
 #include "reaction.h"
 
+#include <QPointer>
 #include <QString>
 
 #include <functional>
@@ -12,6 +13,8 @@ class QThread;
 class QTimer;
 
 namespace devsurf::app {
+
+class DistanceReportDialog;
 
 // File ▸ Import Reference Shape…: a mesh (OBJ, PLY, STL, OFF) or point cloud (XYZ, PTS) becomes
 // a reference shape, one undo step. The file is read on a worker thread behind a progress
@@ -55,6 +58,23 @@ public:
 protected:
     void onTriggered() override;
     void updateEnableState() override;
+};
+
+// Tools ▸ Distance to Reference…: the distance report (DistanceReportDialog), one window at a
+// time. Disabled, with a tooltip that says why, without a reference shape or a surface.
+class DistanceReportReaction : public Reaction {
+    Q_OBJECT
+public:
+    DistanceReportReaction(QAction* action, Workspace* workspace);
+    // The window shown, if open.
+    DistanceReportDialog* dialog() const;
+
+protected:
+    void onTriggered() override;
+    void updateEnableState() override;
+
+private:
+    QPointer<DistanceReportDialog> m_dialog;
 };
 
 } // namespace devsurf::app
