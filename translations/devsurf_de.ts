@@ -1018,7 +1018,7 @@
 (rad)</translation>
     </message>
     <message>
-        <location filename="../views/distance_legend.cpp" line="72"/>
+        <location filename="../views/distance_legend.cpp" line="84"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
@@ -1367,88 +1367,88 @@
 <context>
     <name>devsurf::app::DistanceReportDialog</name>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="25"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="28"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="29"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="34"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="35"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="40"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="45"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="50"/>
         <source>Mean</source>
         <translation>Mittel</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="46"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="51"/>
         <source>95th percentile</source>
         <translation>95. Perzentil</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="47"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="52"/>
         <source>Largest</source>
         <translation>Größter</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="48"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="53"/>
         <source>Reference shape → design</source>
         <translation>Referenzform → Entwurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="49"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="54"/>
         <source>Design → reference shape</source>
         <translation>Entwurf → Referenzform</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="72"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="81"/>
         <source>Distance to Reference</source>
         <translation>Abstand zur Referenzform</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="133"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="148"/>
         <source>The project has no reference shape; import one with File ▸ Import Reference Shape….</source>
         <translation>Das Projekt hat keine Referenzform; importieren Sie eine mit Datei ▸ Referenzform importieren….</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="135"/>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="141"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="150"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="156"/>
         <source>The design has no surface to measure.</source>
         <translation>Der Entwurf hat keine Fläche zum Messen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="137"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="152"/>
         <source>Measuring the distance between the design and the reference shapes…</source>
         <translation>Der Abstand zwischen Entwurf und Referenzformen wird gemessen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="139"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="154"/>
         <source>A surface of the design is not valid; solve or undo, then measure again.</source>
         <translation>Eine Fläche des Entwurfs ist ungültig; lösen Sie oder machen Sie rückgängig, dann messen Sie erneut.</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="143"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="158"/>
         <source>The design changed: measuring again. The figures below are out of date.</source>
         <translation>Der Entwurf hat sich geändert: Es wird neu gemessen. Die Werte unten sind veraltet.</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="146"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="161"/>
         <source>Measured in %1 s.</source>
         <translation>Gemessen in %1 s.</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="170"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="185"/>
         <source>Reference shape %1</source>
         <translation>Referenzform %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/distance_report_dialog.cpp" line="177"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="192"/>
         <source>Coverage: %1 of the %n point(s) lie within %2 of the design.</source>
         <translation>
             <numerusform>Abdeckung: %1 des %n Punkts liegt innerhalb von %2 am Entwurf.</numerusform>
@@ -1456,7 +1456,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="187"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="202"/>
         <source>Two-sided (Hausdorff) distance %1; bounding-box diagonal %2; the design sampled every %3.</source>
         <translation>Beidseitiger (Hausdorff-)Abstand %1; Diagonale des umgebenden Quaders %2; der Entwurf alle %3 abgetastet.</translation>
     </message>
@@ -4492,24 +4492,24 @@
         <translation>Fläche %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_distances.cpp" line="95"/>
+        <location filename="../views/scene_view_distances.cpp" line="99"/>
         <source>Distance to design
 (mm)</source>
         <translation>Abstand zum Entwurf
 (mm)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_distances.cpp" line="96"/>
+        <location filename="../views/scene_view_distances.cpp" line="100"/>
         <source>covered</source>
         <translation>abgedeckt</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_distances.cpp" line="98"/>
+        <location filename="../views/scene_view_distances.cpp" line="102"/>
         <source>Measuring…</source>
         <translation>Wird gemessen…</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_distances.cpp" line="105"/>
+        <location filename="../views/scene_view_distances.cpp" line="109"/>
         <source>Updating…</source>
         <translation>Wird aktualisiert…</translation>
     </message>

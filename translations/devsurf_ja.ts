@@ -1010,7 +1010,7 @@
 (rad)</translation>
     </message>
     <message>
-        <location filename="../views/distance_legend.cpp" line="72"/>
+        <location filename="../views/distance_legend.cpp" line="84"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
@@ -1357,95 +1357,95 @@
 <context>
     <name>devsurf::app::DistanceReportDialog</name>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="25"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="28"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="29"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="34"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="35"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="40"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="45"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="50"/>
         <source>Mean</source>
         <translation>平均</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="46"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="51"/>
         <source>95th percentile</source>
         <translation>95 パーセンタイル</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="47"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="52"/>
         <source>Largest</source>
         <translation>最大</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="48"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="53"/>
         <source>Reference shape → design</source>
         <translation>参照形状 → デザイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="49"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="54"/>
         <source>Design → reference shape</source>
         <translation>デザイン → 参照形状</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="72"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="81"/>
         <source>Distance to Reference</source>
         <translation>参照形状までの距離</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="133"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="148"/>
         <source>The project has no reference shape; import one with File ▸ Import Reference Shape….</source>
         <translation>プロジェクトに参照形状がありません。ファイル ▸ 参照形状を読み込む… で読み込んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="135"/>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="141"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="150"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="156"/>
         <source>The design has no surface to measure.</source>
         <translation>デザインに計測する曲面がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="137"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="152"/>
         <source>Measuring the distance between the design and the reference shapes…</source>
         <translation>デザインと参照形状の距離を計測しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="139"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="154"/>
         <source>A surface of the design is not valid; solve or undo, then measure again.</source>
         <translation>デザインの曲面が有効ではありません。ソルブするか元に戻してから、もう一度計測してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="143"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="158"/>
         <source>The design changed: measuring again. The figures below are out of date.</source>
         <translation>デザインが変更されました。計測し直しています。下の数値は古いものです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="146"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="161"/>
         <source>Measured in %1 s.</source>
         <translation>%1 秒で計測しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="170"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="185"/>
         <source>Reference shape %1</source>
         <translation>参照形状 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/distance_report_dialog.cpp" line="177"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="192"/>
         <source>Coverage: %1 of the %n point(s) lie within %2 of the design.</source>
         <translation>
             <numerusform>被覆率: %n 点のうち %1 がデザインから %2 以内にあります。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="187"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="202"/>
         <source>Two-sided (Hausdorff) distance %1; bounding-box diagonal %2; the design sampled every %3.</source>
         <translation>両側 (ハウスドルフ) 距離 %1、バウンディングボックスの対角線 %2、デザインのサンプル間隔 %3。</translation>
     </message>
@@ -4444,24 +4444,24 @@
         <translation>曲面 %1: %2</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_distances.cpp" line="95"/>
+        <location filename="../views/scene_view_distances.cpp" line="99"/>
         <source>Distance to design
 (mm)</source>
         <translation>デザインまでの距離
 (mm)</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_distances.cpp" line="96"/>
+        <location filename="../views/scene_view_distances.cpp" line="100"/>
         <source>covered</source>
         <translation>被覆</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_distances.cpp" line="98"/>
+        <location filename="../views/scene_view_distances.cpp" line="102"/>
         <source>Measuring…</source>
         <translation>計測中…</translation>
     </message>
     <message>
-        <location filename="../views/scene_view_distances.cpp" line="105"/>
+        <location filename="../views/scene_view_distances.cpp" line="109"/>
         <source>Updating…</source>
         <translation>更新中…</translation>
     </message>
