@@ -87,19 +87,26 @@ void paintDistanceLegend(QPainter& painter, const QRectF& box, const DistanceLeg
                                 2.0 * metrics.height()),
                          Qt::AlignLeft | Qt::AlignVCenter, text);
     }
-    // The tolerance: a heavy line across the bar, its label beside the colours below it.
+    // The tolerance, its label beside the colours below it.
+    paintLegendTolerance(painter, box, bar, mark, labelCentre, legend.toleranceLabel, font);
+}
+
+void paintLegendTolerance(QPainter& painter, const QRectF& box, const QRectF& bar, double mark,
+                          double labelCentre, const QString& label, const QFont& font) {
     painter.setPen(QPen(QColor(20, 20, 20), 2.5));
     painter.drawLine(QPointF(bar.left() - 3.0, mark), QPointF(bar.right() + 3.0, mark));
+    QFont strong = font;
+    strong.setBold(true);
     painter.setFont(strong);
+    const QFontMetricsF strongMetrics(strong);
     const QRectF labelBox(bar.right() + 6.0, labelCentre - 0.5 * strongMetrics.height(),
                           box.right() - bar.right() - 8.0, strongMetrics.height());
     painter.setPen(Qt::NoPen);
     painter.setBrush(QColor(255, 255, 255, 235));
     painter.drawRect(labelBox);
     painter.setPen(QColor(0x1b, 0x7a, 0x2e));
-    painter.drawText(
-        labelBox, Qt::AlignLeft | Qt::AlignVCenter,
-        strongMetrics.elidedText(legend.toleranceLabel, Qt::ElideRight, labelBox.width()));
+    painter.drawText(labelBox, Qt::AlignLeft | Qt::AlignVCenter,
+                     strongMetrics.elidedText(label, Qt::ElideRight, labelBox.width()));
     painter.setFont(font);
 }
 

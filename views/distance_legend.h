@@ -35,6 +35,12 @@ struct DistanceLegend {
 void paintDistanceLegend(QPainter& painter, const QRectF& box, const DistanceLegend& legend,
                          const QFont& font);
 
+// The tolerance on a legend's colour bar (this one and the quality legend): a heavy line across
+// `bar` at height `mark`, and `label` in bold green on white beside the bar within `box`,
+// centred at height labelCentre. Leaves the painter's font at `font`.
+void paintLegendTolerance(QPainter& painter, const QRectF& box, const QRectF& bar, double mark,
+                          double labelCentre, const QString& label, const QFont& font);
+
 // A stale colour: faded half way towards grey.
 QColor fadedColour(const QColor& colour);
 

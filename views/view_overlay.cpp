@@ -297,23 +297,8 @@ void ViewOverlay::paintQualityLegend(QPainter& painter, const QFont& font) const
     }
     // The tolerance: a heavy line across the bar, "developable" beside the colours below it.
     const double mark = heightOf(std::clamp(legend.tolerance, legend.low, legend.high));
-    painter.setPen(QPen(QColor(20, 20, 20), 2.5));
-    painter.drawLine(QPointF(bar.left() - 3.0, mark), QPointF(bar.right() + 3.0, mark));
-    QFont strong = font;
-    strong.setBold(true);
-    painter.setFont(strong);
-    const QFontMetricsF strongMetrics(strong);
-    const double below = heightOf(legend.tolerance / 10.0);
-    const QRectF labelBox(bar.right() + 6.0, below - 0.5 * strongMetrics.height(),
-                          box.right() - bar.right() - 8.0, strongMetrics.height());
-    painter.setPen(Qt::NoPen);
-    painter.setBrush(QColor(255, 255, 255, 235));
-    painter.drawRect(labelBox);
-    painter.setPen(QColor(0x1b, 0x7a, 0x2e));
-    painter.drawText(
-        labelBox, Qt::AlignLeft | Qt::AlignVCenter,
-        strongMetrics.elidedText(legend.toleranceLabel, Qt::ElideRight, labelBox.width()));
-    painter.setFont(font);
+    paintLegendTolerance(painter, box, bar, mark, heightOf(legend.tolerance / 10.0),
+                         legend.toleranceLabel, font);
 }
 
 void ViewOverlay::paintEvent(QPaintEvent*) {

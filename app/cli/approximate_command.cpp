@@ -79,16 +79,7 @@ int runApproximateCommand(const SubcommandArguments& args) {
     if (const auto r = args.value("rho")) {
         rho = parseReal(*r, "rho", 1e-9, 1e9, "a length in mm");
     }
-    if (!io::referenceFormatOf(target)) {
-        throw io::FileError(
-            referenceImportSentence({io::ReferenceImportError::Code::UnknownFormat, {}}, target));
-    }
-    if (io::outputProblem(QString::fromStdString(output), {QString::fromStdString(target)}) ==
-        io::OutputProblem::SameAsInput) {
-        throw io::FileError("Refusing to write the project to '" + output +
-                            "': it is the reference shape being read, which would be lost. "
-                            "Choose another output file.");
-    }
+    checkReferenceTarget(target, output);
     checkOutput(output, from ? std::vector<std::string>{*from} : std::vector<std::string>{},
                 OutputKind::Project, "the project");
     model::Project project;

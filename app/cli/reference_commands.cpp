@@ -56,6 +56,21 @@ std::string referenceImportSentence(const io::ReferenceImportError& error,
     return cannot + "it cannot be read.";
 }
 
+void checkReferenceTarget(const std::string& target, const std::string& output) {
+    if (!io::referenceFormatOf(target)) {
+        throw io::FileError(
+            referenceImportSentence({io::ReferenceImportError::Code::UnknownFormat, {}}, target));
+    }
+    // The target is an input that is not a project: never written over.
+    if (!output.empty() &&
+        io::outputProblem(QString::fromStdString(output), {QString::fromStdString(target)}) ==
+            io::OutputProblem::SameAsInput) {
+        throw io::FileError("Refusing to write the project to '" + output +
+                            "': it is the reference shape being read, which would be lost. "
+                            "Choose another output file.");
+    }
+}
+
 int runImportReferenceCommand(const SubcommandArguments& args) {
     const std::vector<std::string> files = args.positionals(2, "a project file and a mesh or "
                                                                "point cloud file");
@@ -66,17 +81,7 @@ int runImportReferenceCommand(const SubcommandArguments& args) {
     if (name && (name->empty() || name->size() > 4096)) {
         throw UsageError{"option '--name' needs a name of 1 to 4096 characters"};
     }
-    if (!io::referenceFormatOf(target)) {
-        throw io::FileError(
-            referenceImportSentence({io::ReferenceImportError::Code::UnknownFormat, {}}, target));
-    }
-    // The target is an input that is not a project: never written over.
-    if (io::outputProblem(QString::fromStdString(output), {QString::fromStdString(target)}) ==
-        io::OutputProblem::SameAsInput) {
-        throw io::FileError("Refusing to write the project to '" + output +
-                            "': it is the reference shape being read, which would be lost. "
-                            "Choose another output file.");
-    }
+    checkReferenceTarget(target, output);
     checkOutput(output, {input}, OutputKind::Project, "the project");
     model::Project project = io::loadProjectFile(QString::fromStdString(input));
     io::ReferenceImportResult result = io::readReferenceShape(target);
@@ -158,10 +163,7 @@ int runDistanceCommand(const SubcommandArguments& args) {
     if (const auto tolerance = args.value("tolerance")) {
         options.tolerance = parseReal(*tolerance, "tolerance", 1e-9, 1e9, "a length in mm");
     }
-    if (!io::referenceFormatOf(target)) {
-        throw io::FileError(
-            referenceImportSentence({io::ReferenceImportError::Code::UnknownFormat, {}}, target));
-    }
+    checkReferenceTarget(target);
     const model::Project project = io::loadProjectFile(QString::fromStdString(input));
     if (project.surfaces.empty()) {
         throw io::FileError("'" + input + "' has no surface to measure.");
