@@ -6,6 +6,7 @@
 #include "model/pattern/pattern_seams.h"
 #include "model/pattern/sampling_bound.h"
 #include "model/sampled_mesh.h"
+#include "pattern_test_geometry.h"
 #include "surface_transform.h"
 #include "test_registry.h"
 
@@ -20,17 +21,6 @@ using namespace devsurf::model;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// The test's own plane geometry, independent of the pattern code.
-double shoelace(const std::vector<Vec2>& polygon) {
-    double area = 0.0;
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
-        const Vec2& p = polygon[i];
-        const Vec2& q = polygon[(i + 1) % polygon.size()];
-        area += p.x * q.y - p.y * q.x;
-    }
-    return area / 2;
-}
 
 double segmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
     const Vec2 d = b - a;
@@ -47,20 +37,6 @@ double distanceToLoop(const Vec2& p, const std::vector<Vec2>& loop, bool closed 
         best = std::min(best, segmentDistance(p, loop[i], loop[(i + 1) % loop.size()]));
     }
     return best;
-}
-
-// Area of the sampled surface in space (its faces split into fans of triangles).
-double spatialArea(const CompositeSurface& surface) {
-    const SampledMesh mesh = sampleSurface(surface, 64);
-    double area = 0.0;
-    for (const auto& face : mesh.faces) {
-        for (std::size_t i = 1; i + 1 < face.size(); ++i) {
-            area += 0.5 * cross(mesh.vertices[face[i]] - mesh.vertices[face[0]],
-                                mesh.vertices[face[i + 1]] - mesh.vertices[face[0]])
-                              .norm();
-        }
-    }
-    return area;
 }
 
 // 18 flat trapezoids between the circles of radius 100 and 160, 30° each, winding 540° round
@@ -149,54 +125,6 @@ private slots:
         QCOMPARE(QString(patternLayerName(PatternLayer::Score)), QString("SCORE"));
         QCOMPARE(QString(patternLayerName(PatternLayer::Seam)), QString("SEAM"));
         QCOMPARE(QString(patternLayerName(PatternLayer::Labels)), QString("LABELS"));
-    }
-
-    void examplesDevelopIsometrically() {
-        for (const ExampleInfo& info : builtInExamples()) {
-            const Project project = makeExample(info.name);
-            const CuttingPattern pattern = buildCuttingPattern(project, sideBySide());
-            const QByteArray name = info.name.c_str();
-            QVERIFY2(pattern.problems.empty(), name);
-            QVERIFY2(pattern.overlaps.empty(), name);
-            // One piece each, but the torus: a closed surface of cones, cut along its creases
-            // into one annular sector per band (joined, the bands would overlap).
-            const std::size_t expected =
-                info.name == "torus" ? static_cast<std::size_t>(info.defaultSize) : 1;
-            QCOMPARE(pattern.pieces.size(), expected);
-            double developed = 0.0;
-            double pieceAreas = 0.0;
-            for (std::size_t p = 0; p < pattern.pieces.size(); ++p) {
-                const PatternPiece& piece = pattern.pieces[p];
-                QVERIFY2(
-                    piece.maxIsometryError <= 1e-6,
-                    qPrintable(
-                        QString("%1: %2 mm").arg(info.name.c_str()).arg(piece.maxIsometryError)));
-                // Closed, counter-clockwise outline, drawn on the cut layer; holes inside it.
-                QVERIFY(piece.outline.size() >= 3);
-                QVERIFY(!(piece.outline.front() == piece.outline.back()));
-                const double outlineArea = shoelace(piece.outline);
-                QVERIFY(outlineArea > 0);
-                developed += outlineArea;
-                for (const auto& hole : piece.holes) {
-                    developed += shoelace(hole);
-                }
-                pieceAreas += piece.area;
-                QVERIFY(std::any_of(piece.paths.begin(), piece.paths.end(),
-                                    [&piece](const PatternPath& path) {
-                                        return path.layer == PatternLayer::Cut && path.closed &&
-                                               path.points == piece.outline;
-                                    }));
-                QCOMPARE(piece.labels.front().text, std::string(1, static_cast<char>('A' + p)));
-            }
-            // The developed area equals the surface's area in space (sampled independently,
-            // finer) up to the chord error of the outline.
-            const double area3d = spatialArea(project.surfaces.front());
-            QVERIFY2(
-                std::abs(developed - area3d) < 1e-3 * area3d,
-                qPrintable(
-                    QString("%1: %2 vs %3").arg(info.name.c_str()).arg(developed).arg(area3d)));
-            QVERIFY(std::abs(pieceAreas - area3d) < 1e-3 * area3d);
-        }
     }
 
     void chordErrorWithinTolerance() {

@@ -1,0 +1,33 @@
+#pragma once
+
+// What a solve job measures on its results (SurfaceAssessment): how far the handles ended from
+// their targets and, once settled, the geometry the verdict judges. Used by SolveJob only.
+
+#include "model/composite_surface.h"
+#include "solver/session/solve_job.h"
+
+#include <optional>
+#include <vector>
+
+namespace devsurf::solver {
+
+// How far each pulled vertex and control point ended from its target (model units).
+void measureHandleGaps(SurfaceAssessment& assessment, const model::CompositeSurface& surface,
+                       const std::vector<VertexHandle>& handles,
+                       const std::vector<ControlPointHandle>& points);
+
+// How far each vertex dragged in the held sheet lies from its target there (mm).
+void measureSheetGaps(SurfaceAssessment& assessment, const model::CompositeSurface& surface,
+                      const std::vector<SheetHandle>& sheet);
+
+// How far the sheet is from isometric to its development (SurfaceAssessment::isometryMm).
+void measureIsometry(SurfaceAssessment& assessment, const model::CompositeSurface& result);
+
+// The geometry of a settled result: fold-overs, overlaps, creases, vertex stars, worst faces.
+// `press` is the drag's surface at the press (null for Solve and Edit); `knownOverlaps` those a
+// judged drag found already.
+void measureSettled(SurfaceAssessment& assessment, const model::CompositeSurface& result,
+                    const model::CompositeSurface* press,
+                    const std::optional<std::vector<model::FaceId>>& knownOverlaps);
+
+} // namespace devsurf::solver

@@ -1,0 +1,94 @@
+// The cutting pattern of every built-in example: isometric pieces whose area is the surface's.
+
+#include "model/examples.h"
+#include "model/pattern/cutting_pattern.h"
+#include "model/sampled_mesh.h"
+#include "pattern_test_geometry.h"
+#include "test_registry.h"
+
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace devsurf::model;
+
+namespace {
+
+// Area of the sampled surface in space (its faces split into fans of triangles).
+double spatialArea(const CompositeSurface& surface) {
+    const SampledMesh mesh = sampleSurface(surface, 64);
+    double area = 0.0;
+    for (const auto& face : mesh.faces) {
+        for (std::size_t i = 1; i + 1 < face.size(); ++i) {
+            area += 0.5 * cross(mesh.vertices[face[i]] - mesh.vertices[face[0]],
+                                mesh.vertices[face[i + 1]] - mesh.vertices[face[0]])
+                              .norm();
+        }
+    }
+    return area;
+}
+
+PatternOptions sideBySide() {
+    PatternOptions options;
+    options.layout = false;
+    return options;
+}
+
+} // namespace
+
+class TstExamplePieces : public QObject {
+    Q_OBJECT
+private slots:
+    void examplesDevelopIsometrically() {
+        for (const ExampleInfo& info : builtInExamples()) {
+            const Project project = makeExample(info.name);
+            const CuttingPattern pattern = buildCuttingPattern(project, sideBySide());
+            const QByteArray name = info.name.c_str();
+            QVERIFY2(pattern.problems.empty(), name);
+            QVERIFY2(pattern.overlaps.empty(), name);
+            // One piece each, but the torus: a closed surface of cones, cut along its creases
+            // into one annular sector per band (joined, the bands would overlap).
+            const std::size_t expected =
+                info.name == "torus" ? static_cast<std::size_t>(info.defaultSize) : 1;
+            QCOMPARE(pattern.pieces.size(), expected);
+            double developed = 0.0;
+            double pieceAreas = 0.0;
+            for (std::size_t p = 0; p < pattern.pieces.size(); ++p) {
+                const PatternPiece& piece = pattern.pieces[p];
+                QVERIFY2(
+                    piece.maxIsometryError <= 1e-6,
+                    qPrintable(
+                        QString("%1: %2 mm").arg(info.name.c_str()).arg(piece.maxIsometryError)));
+                // Closed, counter-clockwise outline, drawn on the cut layer; holes inside it.
+                QVERIFY(piece.outline.size() >= 3);
+                QVERIFY(!(piece.outline.front() == piece.outline.back()));
+                const double outlineArea = shoelace(piece.outline);
+                QVERIFY(outlineArea > 0);
+                developed += outlineArea;
+                for (const auto& hole : piece.holes) {
+                    developed += shoelace(hole);
+                }
+                pieceAreas += piece.area;
+                QVERIFY(std::any_of(piece.paths.begin(), piece.paths.end(),
+                                    [&piece](const PatternPath& path) {
+                                        return path.layer == PatternLayer::Cut && path.closed &&
+                                               path.points == piece.outline;
+                                    }));
+                QCOMPARE(piece.labels.front().text, std::string(1, static_cast<char>('A' + p)));
+            }
+            // The developed area equals the surface's area in space (sampled independently,
+            // finer) up to the chord error of the outline.
+            const double area3d = spatialArea(project.surfaces.front());
+            QVERIFY2(
+                std::abs(developed - area3d) < 1e-3 * area3d,
+                qPrintable(
+                    QString("%1: %2 vs %3").arg(info.name.c_str()).arg(developed).arg(area3d)));
+            QVERIFY(std::abs(pieceAreas - area3d) < 1e-3 * area3d);
+        }
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstExamplePieces);
+
+#include "tst_example_pieces.moc"
