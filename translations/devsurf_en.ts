@@ -100,6 +100,17 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::DistanceReportDialog</name>
+    <message numerus="yes">
+        <location filename="../app/gui/distance_report_dialog.cpp" line="192"/>
+        <source>Coverage: %1 of the %n point(s) lie within %2 of the design.</source>
+        <translation>
+            <numerusform>Coverage: %1 of the %n point lies within %2 of the design.</numerusform>
+            <numerusform>Coverage: %1 of the %n points lie within %2 of the design.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::DragTool</name>
     <message numerus="yes">
         <location filename="../app/gui/drag_tool.cpp" line="86"/>
@@ -145,7 +156,7 @@
 <context>
     <name>devsurf::app::ImportReferenceShapeReaction</name>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="171"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="172"/>
         <source>%n point(s)</source>
         <translation>
             <numerusform>%n point</numerusform>
@@ -153,7 +164,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="172"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="173"/>
         <source>%n triangle(s)</source>
         <translation>
             <numerusform>%n triangle</numerusform>
@@ -164,7 +175,7 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="448"/>
+        <location filename="../app/gui/main_window.cpp" line="468"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n surface</numerusform>
@@ -172,7 +183,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="449"/>
+        <location filename="../app/gui/main_window.cpp" line="469"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n patch</numerusform>
@@ -180,7 +191,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="450"/>
+        <location filename="../app/gui/main_window.cpp" line="470"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n control point</numerusform>
@@ -188,7 +199,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="451"/>
+        <location filename="../app/gui/main_window.cpp" line="471"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n selected</numerusform>
