@@ -84,16 +84,22 @@ void ApproximationFit::refresh(const model::CompositeSurface& current) {
         std::unique_ptr<model::reference::PointIndex> index;
     };
     std::vector<StripSamples> perStrip(m_strips.size());
+    std::map<model::FaceId, std::size_t> stripOf;
     for (std::size_t s = 0; s < m_strips.size(); ++s) {
         perStrip[s].strip = model::stripOfFace(current, m_strips[s].face);
-        std::vector<model::Vec3> positions;
-        for (std::size_t i = 0; i < samples.positions.size(); ++i) {
-            if (samples.pieces[samples.piece[i]].face == m_strips[s].face) {
-                perStrip[s].sample.push_back(i);
-                positions.push_back(samples.positions[i]);
-            }
+        stripOf[m_strips[s].face] = s;
+    }
+    // One pass over the samples, each to its strip.
+    std::vector<std::vector<model::Vec3>> positions(m_strips.size());
+    for (std::size_t i = 0; i < samples.positions.size(); ++i) {
+        const auto it = stripOf.find(samples.pieces[samples.piece[i]].face);
+        if (it != stripOf.end()) {
+            perStrip[it->second].sample.push_back(i);
+            positions[it->second].push_back(samples.positions[i]);
         }
-        perStrip[s].index = std::make_unique<model::reference::PointIndex>(std::move(positions));
+    }
+    for (std::size_t s = 0; s < m_strips.size(); ++s) {
+        perStrip[s].index = std::make_unique<model::reference::PointIndex>(std::move(positions[s]));
     }
     for (std::size_t j = 0; j < m_feet.size(); ++j) {
         Foot& foot = m_feet[j];
