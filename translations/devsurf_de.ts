@@ -4,47 +4,47 @@
 <context>
     <name></name>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="39"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="34"/>
         <source>%1 is not a file DevSurf reads shapes from; choose a mesh (OBJ, PLY, STL, OFF) or a point cloud (XYZ, PTS).</source>
         <translation>%1 ist keine Datei, aus der DevSurf Formen liest; wählen Sie ein Netz (OBJ, PLY, STL, OFF) oder eine Punktwolke (XYZ, PTS).</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="43"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="38"/>
         <source>%1 cannot be read; check that it exists and that you may read it.</source>
         <translation>%1 kann nicht gelesen werden; prüfen Sie, ob die Datei existiert und Sie sie lesen dürfen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="45"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="40"/>
         <source>%1 is too large; DevSurf takes up to %2 points and %3 triangles.</source>
         <translation>%1 ist zu groß; DevSurf nimmt bis zu %2 Punkte und %3 Dreiecke.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="49"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="44"/>
         <source>%1 is damaged or not a valid file of its type; nothing was imported.</source>
         <translation>%1 ist beschädigt oder keine gültige Datei ihres Typs; nichts wurde importiert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="52"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="47"/>
         <source>%1 ends before its last point or triangle; copy or export it again.</source>
         <translation>%1 endet vor ihrem letzten Punkt oder Dreieck; kopieren oder exportieren Sie sie erneut.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="55"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="50"/>
         <source>%1 holds a coordinate that is not a finite number of sensible size; nothing was imported.</source>
         <translation>%1 enthält eine Koordinate, die keine endliche Zahl sinnvoller Größe ist; nichts wurde importiert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="59"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="54"/>
         <source>A face of %1 names a point the file does not have; nothing was imported.</source>
         <translation>Eine Fläche von %1 nennt einen Punkt, den die Datei nicht hat; nichts wurde importiert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="62"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="57"/>
         <source>%1 holds no points to import.</source>
         <translation>%1 enthält keine Punkte zum Importieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="66"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="61"/>
         <source>No reference shape could be imported from %1.</source>
         <translation>Aus %1 konnte keine Referenzform importiert werden.</translation>
     </message>
@@ -1221,6 +1221,14 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::BackgroundRead</name>
+    <message>
+        <location filename="../app/gui/reactions/background_read.cpp" line="28"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::CameraActions</name>
     <message>
         <location filename="../app/gui/camera_actions.cpp" line="23"/>
@@ -1464,17 +1472,17 @@
 <context>
     <name>devsurf::app::DistanceReportReaction</name>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="210"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="174"/>
         <source>Measure how far the design is from a reference shape: import one first (File ▸ Import Reference Shape…).</source>
         <translation>Misst, wie weit der Entwurf von einer Referenzform entfernt ist: Importieren Sie zuerst eine (Datei ▸ Referenzform importieren…).</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="212"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="176"/>
         <source>Measure how far the design is from the reference shapes: the design has no surface yet.</source>
         <translation>Misst, wie weit der Entwurf von den Referenzformen entfernt ist: Der Entwurf hat noch keine Fläche.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="214"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="178"/>
         <source>Show how far the design is from each reference shape, both ways (mean, 95th percentile, largest), and how much of the shape it covers.</source>
         <translation>Zeigt, wie weit der Entwurf von jeder Referenzform entfernt ist, in beide Richtungen (Mittel, 95. Perzentil, größter Wert), und wie viel der Form er abdeckt.</translation>
     </message>
@@ -1718,42 +1726,42 @@
 <context>
     <name>devsurf::app::FitEdgeToCurveReaction</name>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="219"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="185"/>
         <source>Lay a crease or boundary onto a reference curve: import curves first (File ▸ Import Curves…).</source>
         <translation>Eine Falz oder einen Rand an eine Referenzkurve anlegen: zuerst Kurven importieren (Datei ▸ Kurven importieren…).</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="221"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="187"/>
         <source>Lay a crease or boundary onto a reference curve: select one spline edge.</source>
         <translation>Eine Falz oder einen Rand an eine Referenzkurve anlegen: wählen Sie eine Splinekante.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="222"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="188"/>
         <source>Lay the selected crease or boundary onto the reference curve nearest it; Solve then makes the surface developable again.</source>
         <translation>Die gewählte Falz oder den gewählten Rand an die nächstgelegene Referenzkurve anlegen; Lösen macht die Fläche danach wieder abwickelbar.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="245"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="211"/>
         <source>Edge %1 was not fitted: both its ends are nearest the same point of %2.</source>
         <translation>Kante %1 wurde nicht angelegt: beide Enden liegen demselben Punkt von %2 am nächsten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="248"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="214"/>
         <source>Edge %1 was not fitted: %2 has too few points.</source>
         <translation>Kante %1 wurde nicht angelegt: %2 hat zu wenige Punkte.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="252"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="218"/>
         <source>Fit Edge to Curve</source>
         <translation>Kante an Kurve anlegen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="254"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="220"/>
         <source>Cannot fit the edge to the curve</source>
         <translation>Die Kante kann nicht an die Kurve angelegt werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="259"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="225"/>
         <source>Edge %1 lies on %2 within %3 mm; Solve (Ctrl+Return) makes the surface developable again.</source>
         <translation>Kante %1 liegt bis auf %3 mm auf %2; Lösen (Ctrl+Return) macht die Fläche wieder abwickelbar.</translation>
     </message>
@@ -1800,74 +1808,69 @@
 <context>
     <name>devsurf::app::ImportCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="44"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="39"/>
         <source>%1 is not a file DevSurf reads curves from; choose a DXF, SVG, STEP or IGES file.</source>
         <translation>Aus %1 kann DevSurf keine Kurven lesen; wählen Sie eine DXF-, SVG-, STEP- oder IGES-Datei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="47"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="42"/>
         <source>This build of DevSurf reads curves from DXF and SVG files only; save the curves as DXF.</source>
         <translation>Diese DevSurf-Version liest Kurven nur aus DXF- und SVG-Dateien; speichern Sie die Kurven als DXF.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="50"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="45"/>
         <source>%1 cannot be read; check that it exists and that you may read it.</source>
         <translation>%1 kann nicht gelesen werden; prüfen Sie, ob die Datei existiert und Sie sie lesen dürfen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="54"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="49"/>
         <source>%1 is too large to import curves from.</source>
         <translation>%1 ist zu groß, um Kurven daraus zu importieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="56"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="51"/>
         <source>%1 is damaged or not a valid file of its type; nothing was imported.</source>
         <translation>%1 ist beschädigt oder keine gültige Datei ihres Typs; es wurde nichts importiert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="60"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="55"/>
         <source>%1 holds no lines, polylines, splines, arcs or circles to import.</source>
         <translation>%1 enthält keine Linien, Polylinien, Splines, Bögen oder Kreise zum Importieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="66"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="61"/>
         <source>The curves of %1 could not be imported.</source>
         <translation>Die Kurven von %1 konnten nicht importiert werden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="91"/>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="120"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="82"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="99"/>
         <source>Import Curves</source>
         <translation>Kurven importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="92"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="83"/>
         <source>Curve files (*.dxf *.svg *.step *.stp *.iges *.igs);;DXF (*.dxf);;SVG (*.svg);;STEP (*.step *.stp);;IGES (*.iges *.igs)</source>
         <translation>Kurvendateien (*.dxf *.svg *.step *.stp *.iges *.igs);;DXF (*.dxf);;SVG (*.svg);;STEP (*.step *.stp);;IGES (*.iges *.igs)</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="117"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="98"/>
         <source>Reading curves from %1…</source>
         <translation>Kurven aus %1 werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="118"/>
-        <source>Cancel</source>
-        <translation>Abbrechen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="157"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="123"/>
         <source>Import of curves from %1 cancelled</source>
         <translation>Import der Kurven aus %1 abgebrochen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="159"/>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="165"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="125"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="131"/>
         <source>Cannot import curves</source>
         <translation>Kurven können nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="167"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="133"/>
         <source>Imported the curves of %1</source>
         <translation>Die Kurven von %1 wurden importiert</translation>
     </message>
@@ -1875,44 +1878,39 @@
 <context>
     <name>devsurf::app::ImportReferenceShapeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="90"/>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="120"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="81"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="99"/>
         <source>Import Reference Shape</source>
         <translation>Referenzform importieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="92"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="83"/>
         <source>Meshes and point clouds (*.obj *.ply *.stl *.off *.xyz *.pts);;Meshes (*.obj *.ply *.stl *.off);;Point clouds (*.xyz *.pts)</source>
         <translation>Netze und Punktwolken (*.obj *.ply *.stl *.off *.xyz *.pts);;Netze (*.obj *.ply *.stl *.off);;Punktwolken (*.xyz *.pts)</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="117"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="98"/>
         <source>Reading reference shape %1…</source>
         <translation>Referenzform %1 wird gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="118"/>
-        <source>Cancel</source>
-        <translation>Abbrechen</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="158"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="122"/>
         <source>Import of reference shape %1 cancelled</source>
         <translation>Import der Referenzform %1 abgebrochen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="160"/>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="169"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="124"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="133"/>
         <source>Cannot import the reference shape</source>
         <translation>Die Referenzform kann nicht importiert werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="171"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="135"/>
         <source>Imported reference shape %1: %2, %3</source>
         <translation>Referenzform %1 importiert: %2, %3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="172"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="136"/>
         <source>%n point(s)</source>
         <translation>
             <numerusform>%n Punkt</numerusform>
@@ -1920,7 +1918,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="173"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="137"/>
         <source>%n triangle(s)</source>
         <translation>
             <numerusform>%n Dreieck</numerusform>
@@ -3340,7 +3338,7 @@
 <context>
     <name>devsurf::app::RemoveReferenceCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="184"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="150"/>
         <source>Cannot remove the reference curves</source>
         <translation>Die Referenzkurven können nicht entfernt werden</translation>
     </message>
@@ -3348,7 +3346,7 @@
 <context>
     <name>devsurf::app::RemoveReferenceShapesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="190"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="154"/>
         <source>Cannot remove the reference shapes</source>
         <translation>Die Referenzformen können nicht entfernt werden</translation>
     </message>

@@ -4,47 +4,47 @@
 <context>
     <name></name>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="39"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="34"/>
         <source>%1 is not a file DevSurf reads shapes from; choose a mesh (OBJ, PLY, STL, OFF) or a point cloud (XYZ, PTS).</source>
         <translation>%1 は DevSurf が形状を読み込めるファイルではありません。メッシュ (OBJ、PLY、STL、OFF) か点群 (XYZ、PTS) を選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="43"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="38"/>
         <source>%1 cannot be read; check that it exists and that you may read it.</source>
         <translation>%1 を読めません。ファイルが存在し、読み取り権限があるか確認してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="45"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="40"/>
         <source>%1 is too large; DevSurf takes up to %2 points and %3 triangles.</source>
         <translation>%1 は大きすぎます。DevSurf が扱えるのは %2 点、%3 三角形までです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="49"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="44"/>
         <source>%1 is damaged or not a valid file of its type; nothing was imported.</source>
         <translation>%1 は壊れているか、その形式の正しいファイルではありません。何も読み込まれませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="52"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="47"/>
         <source>%1 ends before its last point or triangle; copy or export it again.</source>
         <translation>%1 は最後の点または三角形の前で終わっています。もう一度コピーするか書き出してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="55"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="50"/>
         <source>%1 holds a coordinate that is not a finite number of sensible size; nothing was imported.</source>
         <translation>%1 に妥当な大きさの有限な数でない座標があります。何も読み込まれませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="59"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="54"/>
         <source>A face of %1 names a point the file does not have; nothing was imported.</source>
         <translation>%1 の面が、ファイルにない点を指しています。何も読み込まれませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="62"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="57"/>
         <source>%1 holds no points to import.</source>
         <translation>%1 には読み込む点がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="66"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="61"/>
         <source>No reference shape could be imported from %1.</source>
         <translation>%1 から参照形状を読み込めませんでした。</translation>
     </message>
@@ -1211,6 +1211,14 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::BackgroundRead</name>
+    <message>
+        <location filename="../app/gui/reactions/background_read.cpp" line="28"/>
+        <source>Cancel</source>
+        <translation>キャンセル</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::CameraActions</name>
     <message>
         <location filename="../app/gui/camera_actions.cpp" line="23"/>
@@ -1453,17 +1461,17 @@
 <context>
     <name>devsurf::app::DistanceReportReaction</name>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="210"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="174"/>
         <source>Measure how far the design is from a reference shape: import one first (File ▸ Import Reference Shape…).</source>
         <translation>デザインが参照形状からどれだけ離れているかを計測します。先に参照形状を読み込んでください (ファイル ▸ 参照形状を読み込む…)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="212"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="176"/>
         <source>Measure how far the design is from the reference shapes: the design has no surface yet.</source>
         <translation>デザインが参照形状からどれだけ離れているかを計測します。デザインにまだ曲面がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="214"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="178"/>
         <source>Show how far the design is from each reference shape, both ways (mean, 95th percentile, largest), and how much of the shape it covers.</source>
         <translation>デザインが各参照形状からどれだけ離れているかを両方向 (平均、95 パーセンタイル、最大) で示し、形状のどれだけを覆っているかを示します。</translation>
     </message>
@@ -1702,42 +1710,42 @@
 <context>
     <name>devsurf::app::FitEdgeToCurveReaction</name>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="219"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="185"/>
         <source>Lay a crease or boundary onto a reference curve: import curves first (File ▸ Import Curves…).</source>
         <translation>折り目または境界を参照曲線に合わせます: まず曲線を読み込んでください (ファイル ▸ 曲線を読み込む…)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="221"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="187"/>
         <source>Lay a crease or boundary onto a reference curve: select one spline edge.</source>
         <translation>折り目または境界を参照曲線に合わせます: スプライン辺を 1 本選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="222"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="188"/>
         <source>Lay the selected crease or boundary onto the reference curve nearest it; Solve then makes the surface developable again.</source>
         <translation>選んだ折り目または境界を最も近い参照曲線に合わせます。その後ソルブで曲面を再び可展にします。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="245"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="211"/>
         <source>Edge %1 was not fitted: both its ends are nearest the same point of %2.</source>
         <translation>辺 %1 は合わせられませんでした: 両端が %2 の同じ点に最も近いためです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="248"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="214"/>
         <source>Edge %1 was not fitted: %2 has too few points.</source>
         <translation>辺 %1 は合わせられませんでした: %2 の点が少なすぎます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="252"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="218"/>
         <source>Fit Edge to Curve</source>
         <translation>辺を曲線に合わせる</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="254"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="220"/>
         <source>Cannot fit the edge to the curve</source>
         <translation>辺を曲線に合わせられません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="259"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="225"/>
         <source>Edge %1 lies on %2 within %3 mm; Solve (Ctrl+Return) makes the surface developable again.</source>
         <translation>辺 %1 は %2 に %3 mm 以内で重なりました。ソルブ (Ctrl+Return) で曲面を再び可展にします。</translation>
     </message>
@@ -1784,74 +1792,69 @@
 <context>
     <name>devsurf::app::ImportCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="44"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="39"/>
         <source>%1 is not a file DevSurf reads curves from; choose a DXF, SVG, STEP or IGES file.</source>
         <translation>%1 は DevSurf が曲線を読み込めるファイルではありません。DXF、SVG、STEP または IGES ファイルを選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="47"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="42"/>
         <source>This build of DevSurf reads curves from DXF and SVG files only; save the curves as DXF.</source>
         <translation>この DevSurf は DXF と SVG ファイルからのみ曲線を読み込みます。曲線を DXF で保存してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="50"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="45"/>
         <source>%1 cannot be read; check that it exists and that you may read it.</source>
         <translation>%1 を読み込めません。ファイルが存在し、読み取り権限があるか確認してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="54"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="49"/>
         <source>%1 is too large to import curves from.</source>
         <translation>%1 は大きすぎて曲線を読み込めません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="56"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="51"/>
         <source>%1 is damaged or not a valid file of its type; nothing was imported.</source>
         <translation>%1 は壊れているか、その形式の有効なファイルではありません。何も読み込んでいません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="60"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="55"/>
         <source>%1 holds no lines, polylines, splines, arcs or circles to import.</source>
         <translation>%1 には読み込める線分、ポリライン、スプライン、円弧、円がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="66"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="61"/>
         <source>The curves of %1 could not be imported.</source>
         <translation>%1 の曲線を読み込めませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="91"/>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="120"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="82"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="99"/>
         <source>Import Curves</source>
         <translation>曲線を読み込む</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="92"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="83"/>
         <source>Curve files (*.dxf *.svg *.step *.stp *.iges *.igs);;DXF (*.dxf);;SVG (*.svg);;STEP (*.step *.stp);;IGES (*.iges *.igs)</source>
         <translation>曲線ファイル (*.dxf *.svg *.step *.stp *.iges *.igs);;DXF (*.dxf);;SVG (*.svg);;STEP (*.step *.stp);;IGES (*.iges *.igs)</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="117"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="98"/>
         <source>Reading curves from %1…</source>
         <translation>%1 から曲線を読み込んでいます…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="118"/>
-        <source>Cancel</source>
-        <translation>キャンセル</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="157"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="123"/>
         <source>Import of curves from %1 cancelled</source>
         <translation>%1 からの曲線の読み込みを中止しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="159"/>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="165"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="125"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="131"/>
         <source>Cannot import curves</source>
         <translation>曲線を読み込めません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="167"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="133"/>
         <source>Imported the curves of %1</source>
         <translation>%1 の曲線を読み込みました</translation>
     </message>
@@ -1859,51 +1862,46 @@
 <context>
     <name>devsurf::app::ImportReferenceShapeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="90"/>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="120"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="81"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="99"/>
         <source>Import Reference Shape</source>
         <translation>参照形状を読み込む</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="92"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="83"/>
         <source>Meshes and point clouds (*.obj *.ply *.stl *.off *.xyz *.pts);;Meshes (*.obj *.ply *.stl *.off);;Point clouds (*.xyz *.pts)</source>
         <translation>メッシュと点群 (*.obj *.ply *.stl *.off *.xyz *.pts);;メッシュ (*.obj *.ply *.stl *.off);;点群 (*.xyz *.pts)</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="117"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="98"/>
         <source>Reading reference shape %1…</source>
         <translation>参照形状 %1 を読み込み中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="118"/>
-        <source>Cancel</source>
-        <translation>キャンセル</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="158"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="122"/>
         <source>Import of reference shape %1 cancelled</source>
         <translation>参照形状 %1 の読み込みを中止しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="160"/>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="169"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="124"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="133"/>
         <source>Cannot import the reference shape</source>
         <translation>参照形状を読み込めません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="171"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="135"/>
         <source>Imported reference shape %1: %2, %3</source>
         <translation>参照形状 %1 を読み込みました: %2、%3</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="172"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="136"/>
         <source>%n point(s)</source>
         <translation>
             <numerusform>%n 点</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="173"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="137"/>
         <source>%n triangle(s)</source>
         <translation>
             <numerusform>%n 個の三角形</numerusform>
@@ -3308,7 +3306,7 @@
 <context>
     <name>devsurf::app::RemoveReferenceCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/curve_reactions.cpp" line="184"/>
+        <location filename="../app/gui/reactions/curve_reactions.cpp" line="150"/>
         <source>Cannot remove the reference curves</source>
         <translation>参照曲線を削除できません</translation>
     </message>
@@ -3316,7 +3314,7 @@
 <context>
     <name>devsurf::app::RemoveReferenceShapesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="190"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="154"/>
         <source>Cannot remove the reference shapes</source>
         <translation>参照形状を削除できません</translation>
     </message>

@@ -7,11 +7,9 @@
 #include <functional>
 #include <memory>
 
-class QProgressDialog;
-class QThread;
-class QTimer;
-
 namespace devsurf::app {
+
+class BackgroundRead;
 
 // File ▸ Import Curves…: the curves of a DXF, SVG, STEP or IGES file become reference curves, one
 // undo step. The file is read on a worker thread behind a progress dialog that can cancel; a
@@ -27,7 +25,7 @@ public:
     // Starts reading the file; finished() follows when it is read and applied, refused or
     // cancelled.
     void importFile(const QString& path);
-    bool isBusy() const { return m_thread != nullptr; }
+    bool isBusy() const { return m_read != nullptr; }
 
 signals:
     void finished(bool imported);
@@ -41,9 +39,7 @@ private:
 
     std::function<QString()> m_chooser;
     std::shared_ptr<Job> m_job;
-    QThread* m_thread = nullptr;
-    QProgressDialog* m_progress = nullptr;
-    QTimer* m_poll = nullptr;
+    BackgroundRead* m_read = nullptr;
 };
 
 // Edit ▸ Remove Reference Curves: every reference curve, one undo step.

@@ -2,6 +2,7 @@
 
 #include "../distance_report_dialog.h"
 #include "../workspace.h"
+#include "background_read.h"
 #include "io/reference/reference_import.h"
 #include "model/document/commands/reference_shapes_command.h"
 #include "model/document/document.h"
@@ -10,12 +11,8 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLocale>
-#include <QProgressDialog>
-#include <QThread>
-#include <QTimer>
 
 #include <algorithm>
-#include <atomic>
 
 namespace devsurf::app {
 
@@ -23,8 +20,6 @@ namespace devsurf::app {
 // cancel flag and the result (read by the window only after the thread finished).
 struct ImportReferenceShapeReaction::Job {
     QString path;
-    std::atomic<int> permille{0};
-    std::atomic<bool> cancel{false};
     io::ReferenceImportResult result;
 };
 
@@ -72,12 +67,8 @@ ImportReferenceShapeReaction::ImportReferenceShapeReaction(QAction* action, Work
     : Reaction(action, workspace) {}
 
 ImportReferenceShapeReaction::~ImportReferenceShapeReaction() {
-    if (m_thread != nullptr) {
-        // Closed while reading: stop the reader and wait for it, nothing is applied.
-        m_job->cancel = true;
-        m_thread->wait();
-        delete m_thread;
-    }
+    // Closed while reading: the reader is stopped and waited for, nothing is applied.
+    delete m_read;
 }
 
 void ImportReferenceShapeReaction::onTriggered() {
@@ -103,47 +94,20 @@ void ImportReferenceShapeReaction::importFile(const QString& path) {
     m_job = std::make_shared<Job>();
     m_job->path = path;
     std::shared_ptr<Job> job = m_job;
-    m_thread = QThread::create([job] {
-        const io::ReferenceProgress progress = [&job](double fraction) {
-            job->permille = static_cast<int>(1000.0 * std::clamp(fraction, 0.0, 1.0));
-            return !job->cancel.load();
-        };
-        job->result = io::readReferenceShape(job->path.toStdString(), progress);
-    });
-    connect(m_thread, &QThread::finished, this, &ImportReferenceShapeReaction::onRead);
-
-    // Shown only if reading takes a while; window-modal, so the design is not edited meanwhile.
-    m_progress =
-        new QProgressDialog(tr("Reading reference shape %1…").arg(QFileInfo(path).fileName()),
-                            tr("Cancel"), 0, 1000, workspace()->window());
-    m_progress->setObjectName(QStringLiteral("importReferenceShapeProgress"));
-    m_progress->setWindowTitle(tr("Import Reference Shape"));
-    m_progress->setWindowModality(Qt::WindowModal);
-    m_progress->setMinimumDuration(400);
-    m_progress->setAutoClose(false);
-    m_progress->setAutoReset(false);
-    m_progress->setValue(0);
-    connect(m_progress, &QProgressDialog::canceled, this, [job] { job->cancel = true; });
-    m_poll = new QTimer(this);
-    connect(m_poll, &QTimer::timeout, this, [this, job] {
-        if (m_progress != nullptr && !job->cancel) {
-            m_progress->setValue(std::min(job->permille.load(), 999));
-        }
-    });
-    m_poll->start(50);
-    m_thread->start();
+    m_read = new BackgroundRead(
+        workspace()->window(), tr("Reading reference shape %1…").arg(QFileInfo(path).fileName()),
+        tr("Import Reference Shape"), QStringLiteral("importReferenceShapeProgress"),
+        [job](const BackgroundRead::Progress& progress) {
+            job->result = io::readReferenceShape(job->path.toStdString(), progress);
+        },
+        this);
+    connect(m_read, &BackgroundRead::done, this, &ImportReferenceShapeReaction::onRead);
 }
 
 void ImportReferenceShapeReaction::onRead() {
-    m_poll->stop();
-    m_poll->deleteLater();
-    m_poll = nullptr;
-    const bool cancelled = m_progress->wasCanceled();
-    m_progress->deleteLater();
-    m_progress->hide();
-    m_progress = nullptr;
-    m_thread->deleteLater();
-    m_thread = nullptr;
+    const bool cancelled = m_read->wasCancelled();
+    m_read->deleteLater();
+    m_read = nullptr;
     const std::shared_ptr<Job> job = std::move(m_job);
     if (cancelled && !job->result.error) {
         // Read before the cancel reached the reader: cancelled all the same.

@@ -8,11 +8,9 @@
 #include <functional>
 #include <memory>
 
-class QProgressDialog;
-class QThread;
-class QTimer;
-
 namespace devsurf::app {
+
+class BackgroundRead;
 
 class DistanceReportDialog;
 
@@ -30,7 +28,7 @@ public:
     // Starts reading the file; finished() follows when it is read and applied, refused or
     // cancelled.
     void importFile(const QString& path);
-    bool isBusy() const { return m_thread != nullptr; }
+    bool isBusy() const { return m_read != nullptr; }
 
 signals:
     void finished(bool imported);
@@ -44,9 +42,7 @@ private:
 
     std::function<QString()> m_chooser;
     std::shared_ptr<Job> m_job;
-    QThread* m_thread = nullptr;
-    QProgressDialog* m_progress = nullptr;
-    QTimer* m_poll = nullptr;
+    BackgroundRead* m_read = nullptr;
 };
 
 // Edit ▸ Remove Reference Shapes: every reference shape, one undo step.
