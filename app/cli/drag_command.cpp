@@ -259,9 +259,23 @@ int runDragCommand(const DragArguments& args) {
                   << ": " << (replay.taken ? "taken" : "not taken") << " (" << now
                   << (now == 1 ? " problem" : " problems") << " against " << before << ").\n";
     }
+    if (assessment.takenBack) {
+        const solver::SurfaceAssessment& refused = *assessment.takenBack;
+        std::cout << "Taken back: the drag " << describeTakenBack(refused)
+                  << ", so the surface stays as it was before the drag (its last developable "
+                     "state)"
+                  << (refused.sheetHeld && refused.largestHandleGap > solver::kNegligibleLag
+                          ? "; where the sheet cannot follow, drag less far"
+                          : "")
+                  << ".\n";
+    }
     const solver::Summary& last = assessment.summary;
     char line[256];
-    if (last.iterations.empty()) {
+    if (assessment.takenBack) {
+        std::snprintf(line, sizeof line,
+                      "As before the drag: largest sampled developability residual %.2e.\n",
+                      last.finalMaxConstraintResidual);
+    } else if (last.iterations.empty()) {
         std::snprintf(line, sizeof line,
                       "No iteration completed; dragged points within %.3g of their targets.\n",
                       assessment.largestHandleGap);
@@ -274,7 +288,8 @@ int runDragCommand(const DragArguments& args) {
                       assessment.largestHandleGap);
     }
     std::cout << line;
-    if (assessment.sheetHeld && assessment.largestHandleGap > solver::kNegligibleLag) {
+    if (assessment.sheetHeld && !assessment.takenBack &&
+        assessment.largestHandleGap > solver::kNegligibleLag) {
         std::snprintf(line, sizeof line,
                       "The sheet is kept: the dragged points are held back %.1f mm by it.\n",
                       assessment.largestHandleGap);

@@ -2,6 +2,7 @@
 #include "problem_text.h"
 
 #include "solver/quality/shape_change.h"
+#include "solver/session/verdict.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -102,6 +103,47 @@ std::string describeOutcome(const solver::DragOutcome& outcome) {
     }
     if (parts.empty()) {
         return "ended without a problem";
+    }
+    std::string sentence;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        sentence += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
+    }
+    return sentence;
+}
+
+std::string describeTakenBack(const solver::SurfaceAssessment& refused) {
+    std::vector<std::string> parts;
+    char text[200];
+    if (!refused.summary.toleranceReached && !refused.worstFaces.empty() &&
+        refused.worstFaces.front().second > solver::kDragConvergedResidual) {
+        std::snprintf(text, sizeof text,
+                      "did not reach the tolerance (residual %.1e; patch %d sampled %.1e from "
+                      "developable)",
+                      refused.summary.finalMaxConstraintResidual,
+                      static_cast<int>(refused.worstFaces.front().first),
+                      refused.worstFaces.front().second);
+        parts.push_back(text);
+    }
+    if (refused.sheetStretchMm > 0.0 &&
+        refused.sheetStretchMm > solver::kKeptSheetTolerance * std::max(refused.sheetExtent, 1.0)) {
+        std::snprintf(text, sizeof text, "left its kept sheet by %.2g mm", refused.sheetStretchMm);
+        parts.push_back(text);
+    }
+    int foldPlaces = 0;
+    for (const auto& [face, count] : refused.foldOvers) {
+        (void)face;
+        foldPlaces += count;
+    }
+    if (foldPlaces > 0) {
+        parts.push_back("folded over in " + places(foldPlaces));
+    }
+    if (!refused.overlapping.empty()) {
+        std::snprintf(text, sizeof text, "left a development overlapping itself at %zu patch%s",
+                      refused.overlapping.size(), refused.overlapping.size() == 1 ? "" : "es");
+        parts.push_back(text);
+    }
+    if (parts.empty()) {
+        return "ended not developable";
     }
     std::string sentence;
     for (std::size_t i = 0; i < parts.size(); ++i) {

@@ -25,6 +25,11 @@ std::string describeHeld(const model::HeldVertex& held);
 // What went wrong at the end of a drag, continuing "the drag …": "did not converge (residual
 // 1.4e-04), folded over in 2 places", or "ended without a problem".
 std::string describeOutcome(const solver::DragOutcome& outcome);
+// Why a drag's release was taken back (SurfaceAssessment::takenBack, the refused result's
+// assessment): "did not reach the tolerance (residual 8.8e-02; patch 7 sampled 3.1e-02 from
+// developable), folded over in 38 places and left a development overlapping itself at 18
+// patches".
+std::string describeTakenBack(const solver::SurfaceAssessment& refused);
 // Why a crease cannot be dragged: "edge 3 is not a crease (…); only creases can be dragged."
 std::string describeCreaseRefusal(const solver::CreaseDragRefused& refused);
 // "flatness mean … max …, |K| mean … max …, det mean … max …"

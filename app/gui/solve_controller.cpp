@@ -232,6 +232,39 @@ QString SolveController::problemsText(const solver::DragOutcome& outcome) {
     return parts.join(QStringLiteral(", "));
 }
 
+QString SolveController::takenBackText(const solver::SurfaceAssessment& refused) {
+    QStringList parts;
+    if (!refused.summary.toleranceReached && !refused.worstFaces.empty() &&
+        refused.worstFaces.front().second > solver::kDragConvergedResidual) {
+        parts << tr("did not reach the tolerance (residual %1; patch %2 sampled %3 from "
+                    "developable)")
+                     .arg(QString::number(refused.summary.finalMaxConstraintResidual, 'e', 1))
+                     .arg(refused.worstFaces.front().first)
+                     .arg(QString::number(refused.worstFaces.front().second, 'e', 1));
+    }
+    if (refused.sheetStretchMm > 0.0 &&
+        refused.sheetStretchMm > solver::kKeptSheetTolerance * std::max(refused.sheetExtent, 1.0)) {
+        parts << tr("left its kept sheet by %1 mm")
+                     .arg(QString::number(refused.sheetStretchMm, 'g', 2));
+    }
+    int foldPlaces = 0;
+    for (const auto& [face, count] : refused.foldOvers) {
+        (void)face;
+        foldPlaces += count;
+    }
+    if (foldPlaces > 0) {
+        parts << tr("folded over in %n place(s)", nullptr, foldPlaces);
+    }
+    if (!refused.overlapping.empty()) {
+        parts << tr("left a development overlapping itself at %n patch(es)", nullptr,
+                    static_cast<int>(refused.overlapping.size()));
+    }
+    if (parts.isEmpty()) {
+        parts << tr("ended not developable");
+    }
+    return parts.join(QStringLiteral(", "));
+}
+
 QString SolveController::heldText(const model::HeldVertex& held) {
     if (held.pins.size() == 2) {
         return tr("; vertex %1 lies on the straight line between the pinned vertices %2 and %3, "
@@ -348,7 +381,12 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result, const Q
         if (a.held) {
             status += heldText(*a.held);
         }
-        if (a.sheetHeld && a.largestHandleGap > solver::kNegligibleLag) {
+        if (a.takenBack) {
+            // The status of the refused result's iterations, then why it was refused.
+            status += tr("; taken back to where the drag started, since the drag %1: the "
+                         "design stays at its last developable state")
+                          .arg(takenBackText(*a.takenBack));
+        } else if (a.sheetHeld && a.largestHandleGap > solver::kNegligibleLag) {
             status += tr("; held back %1 mm by the sheet")
                           .arg(QString::number(a.largestHandleGap, 'f', 1));
         }

@@ -65,6 +65,10 @@ public:
     // What went wrong keeping lengths, for the report: "folded over in 2 places, a development
     // overlapping itself".
     static QString problemsText(const solver::DragOutcome& outcome);
+    // Why a drag's release was taken back (SurfaceAssessment::takenBack): "did not reach the
+    // tolerance (residual 8.8e-02; patch 7 sampled 3.1e-02 from developable), folded over in
+    // 38 places, …".
+    static QString takenBackText(const solver::SurfaceAssessment& refused);
     // Why keeping lengths could not follow a drag (model::findVertexHeldByPins), continuing a
     // status sentence: "; vertex 5 lies inside the triangle of the pinned vertices 0, 3 and 12,
     // …".

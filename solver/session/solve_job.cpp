@@ -11,6 +11,7 @@
 #include "solver/quality/shape_change.h"
 #include "solver/quality/vertex_stars.h"
 #include "solver/session/solve_session.h"
+#include "solver/session/verdict.h"
 
 #include <algorithm>
 #include <chrono>
@@ -173,6 +174,30 @@ JobFailure targetFailure(int surface, model::VertexId vertex, model::EdgeId edge
     failure.edge = edge;
     failure.index = index;
     return failure;
+}
+
+// A drag's press measured as a settled result, for the comparison with the release. Its
+// "residual" is its largest sampled developability residual (normalised, worstDevelopability):
+// the drag's session does not evaluate the press's constraints without its handles.
+SurfaceAssessment assessPress(const model::CompositeSurface& press, const Summary& dragSummary) {
+    const double residual = worstDevelopability(press);
+    SurfaceAssessment assessment;
+    assessment.solved = true;
+    assessment.sheetHeld = press.keepsDevelopment();
+    Summary& summary = assessment.summary;
+    summary.tolerance = dragSummary.tolerance;
+    summary.initialMaxConstraintResidual = residual;
+    summary.finalMaxConstraintResidual = residual;
+    summary.toleranceReached = residual <= dragSummary.tolerance;
+    summary.variables = dragSummary.variables;
+    summary.rows = dragSummary.rows;
+    std::vector<model::FaceId> overlapping;
+    try {
+        overlapping = model::selfOverlappingPatches(press);
+    } catch (const std::exception&) {
+    }
+    measureSettled(assessment, press, nullptr, overlapping);
+    return assessment;
 }
 
 } // namespace
@@ -458,6 +483,18 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
         assessment.sheetHeld = result->keepsDevelopment();
         if (settle) {
             measureSettled(assessment, *result, drag ? &d.built[s] : nullptr, knownOverlaps);
+        }
+        if (drag && settle && broken(assessment)) {
+            // A drag never ends broken: where the sheet cannot follow, the result is refused
+            // and the design stays as at the press, if that was not broken.
+            SurfaceAssessment press = assessPress(d.built[s], summary);
+            if (!broken(press)) {
+                measureHandleGaps(press, d.built[s], handles, points);
+                measureSheetGaps(press, d.built[s], sheet);
+                press.takenBack = std::make_shared<const SurfaceAssessment>(std::move(assessment));
+                assessment = std::move(press);
+                result = &d.built[s];
+            }
         }
         outcome.surfaces.push_back(*result);
         outcome.assessments.push_back(std::move(assessment));

@@ -128,6 +128,12 @@ struct SurfaceAssessment {
     double edgeLengthError = -1.0;
     double sheetExtent = 0.0;
     double isometryMm = -1.0;
+    // A drag's release that would have ended broken (verdict.h: folded over, off its kept
+    // sheet or not developable patch by patch) from a press that was not: the surface
+    // stays as at the press (the last developable state; this assessment measures it, its
+    // summary's residual the press's sampled developability), and this is how the refused
+    // result measured.
+    std::shared_ptr<const SurfaceAssessment> takenBack;
     // A surface that keeps its development: how far it is from it (model::keptSheetStretch,
     // mm), measured from the geometry. The development is held as a constraint judged apart
     // (a sampled mesh matches a developable spline only up to its sampling), so this is what

@@ -15,7 +15,34 @@ void addPatch(Verdict& verdict, int surface, model::FaceId face) {
     }
 }
 
+// Far off: the sheet would stretch by more than kDragConvergedResidual (relative) to lie on its
+// development, it could not be unfolded at all, or a patch's sampled developability residual
+// exceeds kDragConvergedResidual (a narrow strip's sampled mesh unfolds without stretching
+// however little developable it is, so the unfolding alone can miss it: the torus's bands).
+bool worstFaceOff(const SurfaceAssessment& a) {
+    return !a.summary.toleranceReached && !a.worstFaces.empty() &&
+           a.worstFaces.front().second > kDragConvergedResidual;
+}
+
+bool farOff(const SurfaceAssessment& a) {
+    return (!a.summary.toleranceReached &&
+            (a.edgeLengthError > kDragConvergedResidual || a.isometryMm < 0.0)) ||
+           worstFaceOff(a) || a.keptAsItWas.has_value();
+}
+
+bool sheetStretched(const SurfaceAssessment& a) {
+    return a.sheetStretchMm > kKeptSheetTolerance * std::max(a.sheetExtent, 1.0);
+}
+
 } // namespace
+
+bool broken(const SurfaceAssessment& a) {
+    return worstFaceOff(a) || sheetStretched(a) || !a.foldOvers.empty();
+}
+
+bool notDevelopable(const SurfaceAssessment& a) {
+    return farOff(a) || sheetStretched(a) || !a.foldOvers.empty() || !a.overlapping.empty();
+}
 
 Verdict verdictOf(const JobOutcome& outcome) {
     Verdict verdict;
@@ -24,7 +51,7 @@ Verdict verdictOf(const JobOutcome& outcome) {
     }
     bool anySolved = false;
     bool allReached = true;
-    bool notDevelopable = false;
+    bool anyNotDevelopable = false;
     for (std::size_t s = 0; s < outcome.assessments.size(); ++s) {
         const SurfaceAssessment& a = outcome.assessments[s];
         if (!a.solved || !a.measured) {
@@ -39,9 +66,7 @@ Verdict verdictOf(const JobOutcome& outcome) {
         verdict.edgeLengthError = std::max(verdict.edgeLengthError, a.edgeLengthError);
         allReached = allReached && a.summary.toleranceReached;
         verdict.sheetStretchMm = std::max(verdict.sheetStretchMm, a.sheetStretchMm);
-        const bool stretched =
-            a.sheetStretchMm > kKeptSheetTolerance * std::max(a.sheetExtent, 1.0);
-        verdict.sheetStretched = verdict.sheetStretched || stretched;
+        verdict.sheetStretched = verdict.sheetStretched || sheetStretched(a);
         // Folding over or overlapping cannot be cut, however small the residual.
         for (const auto& [face, places] : a.foldOvers) {
             (void)places;
@@ -52,12 +77,7 @@ Verdict verdictOf(const JobOutcome& outcome) {
             addPatch(verdict, surface, face);
             verdict.foldsOver = true;
         }
-        // Far off: the sheet would stretch by more than kDragConvergedResidual (relative) to
-        // lie on its development, or it could not be unfolded at all.
-        const bool farOff = (!a.summary.toleranceReached &&
-                             (a.edgeLengthError > kDragConvergedResidual || a.isometryMm < 0.0)) ||
-                            a.keptAsItWas.has_value();
-        if (farOff) {
+        if (farOff(a)) {
             for (const auto& [face, residual] : a.worstFaces) {
                 (void)residual;
                 addPatch(verdict, surface, face);
@@ -69,8 +89,8 @@ Verdict verdictOf(const JobOutcome& outcome) {
             verdict.releasePins =
                 verdict.releasePins || (shape != nullptr && !shape->pinnedVertices().empty());
         }
-        if (farOff || stretched || !a.foldOvers.empty() || !a.overlapping.empty()) {
-            notDevelopable = true;
+        if (notDevelopable(a)) {
+            anyNotDevelopable = true;
             verdict.undoLastStep = verdict.undoLastStep || a.keptAsItWas.has_value() ||
                                    !a.foldOvers.empty() || !a.overlapping.empty();
         }
@@ -78,9 +98,9 @@ Verdict verdictOf(const JobOutcome& outcome) {
     if (!anySolved) {
         return verdict;
     }
-    verdict.kind = notDevelopable ? VerdictKind::NotDevelopable
-                   : allReached   ? VerdictKind::ReadyToCut
-                                  : VerdictKind::WithinIsometry;
+    verdict.kind = anyNotDevelopable ? VerdictKind::NotDevelopable
+                   : allReached      ? VerdictKind::ReadyToCut
+                                     : VerdictKind::WithinIsometry;
     return verdict;
 }
 

@@ -51,10 +51,25 @@ inline constexpr double kKeptSheetTolerance = 1e-4;
 
 // Ready to cut when every solved surface reached the solve's tolerance (Summary::tolerance)
 // and nothing folds over. Otherwise a surface whose development's relative edge-length error
-// exceeds kDragConvergedResidual (the strain at which a drag counts as not converged), that
-// cannot be unfolded, folds over or was left as it was is not developable; else isometryMm
+// exceeds kDragConvergedResidual (the strain at which a drag counts as not converged), whose
+// worst patch's sampled developability residual exceeds it, that cannot be unfolded, folds
+// over or was left as it was is not developable; else isometryMm
 // says how close it is. A surface that keeps its development is not developable from its sheet
 // when it lies farther from it than kKeptSheetTolerance of the sheet's extent.
 Verdict verdictOf(const JobOutcome& outcome);
+
+// Whether one settled surface is not developable as verdictOf judges it: far off (its sheet
+// would stretch by more than kDragConvergedResidual, a patch's sampled developability exceeds
+// it, or it cannot be unfolded) without reaching
+// the tolerance, left as it was by Solve, off its kept sheet, folded over, or its development
+// overlapping itself.
+bool notDevelopable(const SurfaceAssessment& a);
+
+// Whether a settled surface is broken: folded over onto itself, off its kept sheet, or, short
+// of the tolerance, a patch sampled farther than kDragConvergedResidual from developable. A
+// surface that is developable patch by patch but does not unfold into one sheet (a lifted
+// annulus whose development overlaps itself) is not broken, only not cut from one piece. A
+// drag never ends broken from a press that was not: SolveJob takes it back.
+bool broken(const SurfaceAssessment& a);
 
 } // namespace devsurf::solver

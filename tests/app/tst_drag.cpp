@@ -15,6 +15,7 @@
 #include "solve_controller.h"
 #include "solver/quality/crease_quality.h"
 #include "solver/quality/quality_measures.h"
+#include "solver/session/verdict.h"
 #include "solver/worker/solver_worker.h"
 #include "test_registry.h"
 #include "views/development_view.h"
@@ -421,6 +422,50 @@ private slots:
         QVERIFY(finished.wait(60000));
         QVERIFY(w.solverPanel()->report().outcome.settled);
         QVERIFY(!w.solverPanel()->report().outcome.assessments.front().held);
+    }
+
+    void aDragThatWouldEndBrokenIsTakenBack() {
+        // The torus, nothing pinned: a vertex dragged far cannot end developable (its cone
+        // bands do not bend that way). The release is taken back: no undo step, the design as
+        // at the press byte for byte, and the status and the Solver panel say why.
+        app::MainWindow w;
+        QVERIFY(showActiveWithExample(w, QStringLiteral("torus")));
+        document::Document* doc = w.workspace()->document();
+        w.action(QStringLiteral("actionDragTool"))->setChecked(true);
+        QWidget* gl = w.surfaceView()->glWidget();
+        w.surfaceView()->grabImage();
+        constexpr model::VertexId kVertex = 0;
+        const QPoint at = w.surfaceView()->projectVertexToWidget(0, kVertex);
+        const auto pick = w.surfaceView()->pickAt(at);
+        QVERIFY(pick && pick->kind == Pick::Kind::Vertex && pick->id == kVertex);
+        const int stackAtPress = doc->undoStack()->count();
+        const std::string atPress = bytesOf(w);
+        QSignalSpy status(w.dragTool(), &app::DragTool::statusMessage);
+        QSignalSpy finished(w.dragTool(), &app::DragTool::dragFinished);
+        QSignalSpy changed(doc, &document::Document::changed);
+        QTest::mousePress(gl, Qt::LeftButton, {}, at);
+        for (int i = 1; i <= 8; ++i) {
+            QTest::mouseMove(gl, at + QPoint(0, -15 * i));
+            if (i == 2) {
+                QVERIFY(changed.wait(60000)); // the moves are shown while dragging
+            }
+        }
+        QTest::mouseRelease(gl, Qt::LeftButton, {}, at + QPoint(0, -120));
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(finished.back().front().toBool(), false);
+        QCOMPARE(doc->undoStack()->count(), stackAtPress);
+        QCOMPARE(bytesOf(w), atPress);
+        const app::SolveReport& shown = w.solverPanel()->report();
+        QVERIFY(shown.outcome.settled);
+        const solver::SurfaceAssessment& a = shown.outcome.assessments.front();
+        QVERIFY(a.takenBack);
+        QVERIFY(solver::broken(*a.takenBack));
+        QVERIFY(!solver::broken(a));
+        const QString text = w.solverPanel()->statusText();
+        QVERIFY2(text.contains(QStringLiteral("taken back")), qPrintable(text));
+        QVERIFY(!status.isEmpty());
+        QVERIFY2(status.back().front().toString().contains(QStringLiteral("taken back")),
+                 qPrintable(status.back().front().toString()));
     }
 
 private:

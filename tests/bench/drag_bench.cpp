@@ -167,13 +167,17 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
             row.variables = assessment.summary.variables;
             if (result.revision == release) {
                 row.releaseMs = now - releasedAt;
-                row.residualAfter = assessment.summary.finalMaxConstraintResidual;
-                for (const auto& [face, places] : assessment.foldOvers) {
+                // A release taken back: what the drag reached, which the design did not keep.
+                const solver::SurfaceAssessment& reached =
+                    assessment.takenBack ? *assessment.takenBack : assessment;
+                row.takenBack = assessment.takenBack != nullptr;
+                row.residualAfter = reached.summary.finalMaxConstraintResidual;
+                for (const auto& [face, places] : reached.foldOvers) {
                     (void)face;
                     row.foldOvers += places;
                 }
-                row.replayedStretching = assessment.replay && assessment.replay->taken;
-                row.overlappingPatches = static_cast<int>(assessment.overlapping.size());
+                row.replayedStretching = reached.replay && reached.replay->taken;
+                row.overlappingPatches = static_cast<int>(reached.overlapping.size());
                 stalls.quitOnNextTick(loop);
                 return;
             }
@@ -319,12 +323,12 @@ void printDragBench(const DragBenchReport& report, bool json, std::ostream& out)
                           "\"largest_stall_ms\": %.3f, \"release_ms\": %.3f, "
                           "\"residual_after\": %.3e, \"fold_overs\": %d, "
                           "\"development_overlap_patches\": %d, \"replayed_stretching\": %s, "
-                          "\"error\": \"%s\"}",
+                          "\"taken_back\": %s, \"error\": \"%s\"}",
                           i == 0 ? "" : ", ", r.model.c_str(), r.variables, r.moves, r.solved,
                           r.applied, r.firstResultMs, r.medianMs, r.p95Ms, r.appliedPerSecond,
                           r.largestStallMs, r.releaseMs, r.residualAfter, r.foldOvers,
                           r.overlappingPatches, r.replayedStretching ? "true" : "false",
-                          r.error.c_str());
+                          r.takenBack ? "true" : "false", r.error.c_str());
             out << line;
         }
         const SolveStallRow& s = report.solve;
@@ -348,10 +352,11 @@ void printDragBench(const DragBenchReport& report, bool json, std::ostream& out)
     for (const DragBenchRow& r : report.drags) {
         std::snprintf(
             line, sizeof line,
-            "%-14s %9d %6d %6d %7d %9.1f %9.1f %9.1f %9.1f %9.1f %10.1f %9.2e %6d %8d%s%s%s\n",
+            "%-14s %9d %6d %6d %7d %9.1f %9.1f %9.1f %9.1f %9.1f %10.1f %9.2e %6d %8d%s%s%s%s\n",
             r.model.c_str(), r.variables, r.moves, r.solved, r.applied, r.firstResultMs, r.medianMs,
             r.p95Ms, r.appliedPerSecond, r.largestStallMs, r.releaseMs, r.residualAfter,
             r.foldOvers, r.overlappingPatches, r.replayedStretching ? "  replayed stretching" : "",
+            r.takenBack ? "  taken back to the press" : "",
             r.error.empty() ? "" : "  failed: ", r.error.c_str());
         out << line;
     }

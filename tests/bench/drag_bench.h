@@ -44,6 +44,9 @@ struct DragBenchRow {
     int overlappingPatches = 0;
     // The release's result is the drag replayed stretching (SolveResult::stretched).
     bool replayedStretching = false;
+    // The release ended broken and was taken back to the press (SurfaceAssessment::takenBack);
+    // the residual, fold-overs and overlaps above are then those of the refused result.
+    bool takenBack = false;
     std::string error; // empty unless the drag failed
 };
 
