@@ -11,9 +11,10 @@
 #include "model/reference/distance_report.h"
 #include "solver/session/approximation_setup.h"
 #include "solver/worker/solver_worker.h"
-#include "verdict_text.h"
 
 #include <QAction>
+#include <QElapsedTimer>
+#include <QLocale>
 #include <QThread>
 #include <QUndoCommand>
 
@@ -35,6 +36,7 @@ struct ApproximateReaction::Run {
     enum class Step { Preparing, Solving, Measuring } step = Step::Preparing;
     solver::SolveResult result;
     std::optional<model::reference::DistanceReport> distance; // the measuring thread's
+    double measureMs = 0.0;
 };
 
 namespace {
@@ -174,16 +176,21 @@ void ApproximateReaction::onJobDone(const solver::SolveResult& result) {
     }
     m_run->step = Run::Step::Measuring;
     m_run->result = result;
+    emit workspace()->statusMessage(
+        tr("Measuring the distance of the result to the reference shape…"));
     // The distance of the result to the whole shape, as Tools ▸ Distance to Reference… measures
     // it, on a thread of its own (tens of thousands of points).
     std::shared_ptr<Run> run = m_run;
     m_measure = QThread::create([run] {
+        QElapsedTimer clock;
+        clock.start();
         try {
             run->distance =
                 model::reference::measureDistance(run->result.outcome.surfaces, run->points);
         } catch (const std::exception&) {
             run->distance.reset(); // not measurable: the sentence goes without it
         }
+        run->measureMs = static_cast<double>(clock.nsecsElapsed()) / 1e6;
     });
     connect(m_measure, &QThread::finished, this, &ApproximateReaction::onMeasured);
     m_measure->start();
@@ -239,35 +246,39 @@ void ApproximateReaction::onMeasured() {
         within += a.solved && a.summary.toleranceReached ? 1 : 0;
     }
     const int count = static_cast<int>(outcome.surfaces.size());
+    // The distance first (what the designer asked for), then whether the strips are
+    // developable to the solver's tolerance.
     const QString residual = QString::number(outcome.largestResidual(), 'e', 2);
-    QString sentence =
+    const QString developable =
         within == solved
-            ? tr("Approximated the reference shape with %n surface(s): largest constraint "
-                 "residual %1, within the tolerance.",
-                 nullptr, count)
-                  .arg(residual)
-            : tr("Approximated the reference shape with %n surface(s): largest constraint "
-                 "residual %1, not within the tolerance; Tools ▸ Solve may make them "
-                 "developable.",
-                 nullptr, count)
+            ? tr("largest constraint residual %1, within the tolerance").arg(residual)
+            : tr("largest constraint residual %1, not within the tolerance (Tools ▸ Solve may "
+                 "help)")
                   .arg(residual);
+    QString sentence;
+    if (run.distance) {
+        const QString distance =
+            tr("the reference shape is %1 from the %n surface(s) on average, %2 at most", nullptr,
+               count)
+                .arg(DistanceReportDialog::millimetres(run.distance->targetToSurface.mean),
+                     DistanceReportDialog::millimetres(run.distance->targetToSurface.max));
+        sentence = tr("Approximated: %1; %2.").arg(distance, developable);
+        report.status += QLatin1Char(' ') + tr("Afterwards %1.").arg(distance);
+    } else {
+        sentence = tr("Approximated with %n surface(s): %1.", nullptr, count).arg(developable);
+    }
     if (solved < count) {
         sentence += QLatin1Char(' ') + tr("%n surface(s) too far from the shape were left as they "
                                           "were.",
                                           nullptr, count - solved);
     }
-    if (run.distance) {
-        const QString distance =
-            tr("The reference shape is %1 from them on average, %2 at most.")
-                .arg(DistanceReportDialog::millimetres(run.distance->targetToSurface.mean),
-                     DistanceReportDialog::millimetres(run.distance->targetToSurface.max));
-        sentence += QLatin1Char(' ') + distance;
-        report.status += QLatin1Char(' ') + distance;
-    }
-    const QString verdict = VerdictText::brief(report.verdict);
-    if (!verdict.isEmpty()) {
-        sentence = tr("%1. %2", "a verdict, then a sentence").arg(verdict, sentence);
-    }
+    // The verdict is in the Solver panel and the views' corner; the status bar keeps the
+    // figures, which a verdict naming many patches would push out of sight.
+    report.status +=
+        QLatin1Char(' ') + tr("Set up in %1 s, solved in %2 s, measured in %3 s.")
+                               .arg(QLocale().toString(run.setup.milliseconds / 1000.0, 'f', 2),
+                                    QLocale().toString(outcome.elapsedMs / 1000.0, 'f', 2),
+                                    QLocale().toString(run.measureMs / 1000.0, 'f', 2));
     const bool applied = !commands.empty();
     run.step = Run::Step::Preparing; // ending: onControllerFinished() leaves it to end()
     m_solve->finishJob(SolveController::Ending::Solved, report, sentence, std::move(commands));
