@@ -3,6 +3,7 @@
 // strips the shared setup and job give outside the window, as one undo step that undo and redo
 // take back and re-apply byte for byte; Cancel and the dialog's Cancel change nothing.
 #include "approximate_dialog.h"
+#include "io/reference/reference_import.h"
 #include "main_window.h"
 #include "model/document/commands/command_or_error.h"
 #include "model/document/commands/reference_shapes_command.h"
@@ -15,6 +16,7 @@
 #include "solver/session/approximation_setup.h"
 #include "solver/session/solve_job.h"
 #include "test_registry.h"
+#include "views/surface_view.h"
 #include "window_test_support.h"
 #include "workspace.h"
 
@@ -22,6 +24,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QElapsedTimer>
 #include <QRadioButton>
 #include <QSettings>
 #include <QSignalSpy>
@@ -30,6 +33,8 @@
 #include <QTimer>
 #include <QUndoStack>
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 
 using namespace devsurf;
@@ -269,6 +274,72 @@ private slots:
         QCOMPARE(doc->undoStack()->count(), steps);
         QVERIFY(!doc->isModified());
         QVERIFY(window.action(QStringLiteral("actionApproximateReference"))->isEnabled());
+    }
+
+    // 40,000 points on a cylinder (or the file DEVSURF_TEST_LARGE_REFERENCE names, e.g. the
+    // Stanford bunny in mm, with DEVSURF_TEST_STRIPS strips of 2 intervals): start() hands every
+    // step to other threads, so it returns with the design untouched; the times of the steps
+    // and the longest pause of the event loop are printed, not checked.
+    void largeReferenceIsSetUpOffTheGuiThread() {
+        app::MainWindow window;
+        QVERIFY(test::showActiveWithExample(window, QStringLiteral("sheet")));
+        model::Project project;
+        model::ReferenceShape shape{"large", "", {}, {}, {}};
+        const QString file = qEnvironmentVariable("DEVSURF_TEST_LARGE_REFERENCE");
+        app::ApproximationChoice choice;
+        if (!file.isEmpty()) {
+            io::ReferenceImportResult read = io::readReferenceShape(file.toStdString());
+            QVERIFY(!read.error);
+            shape = std::move(read.shape);
+            choice.strips = qEnvironmentVariableIntValue("DEVSURF_TEST_STRIPS");
+            choice.strips = choice.strips > 0 ? choice.strips : 30;
+            choice.intervals = 2;
+        } else {
+            // Half a cylinder of radius 90 mm, 180 mm long.
+            for (int i = 0; i < 200; ++i) {
+                for (int j = 0; j < 200; ++j) {
+                    const double angle = M_PI * i / 199.0;
+                    shape.points.push_back(
+                        {90.0 * std::cos(angle), 90.0 * std::sin(angle), 0.9 * j});
+                }
+            }
+        }
+        project.referenceShapes.push_back(shape);
+        document::Document* doc = window.workspace()->document();
+        doc->resetProject(project);
+        app::ApproximateDialog dialog(doc->project(), &window);
+        choice.rho = dialog.defaultRho();
+        const std::string before = test::bytesOf(window);
+        app::ApproximateReaction* reaction = reactionOf(window);
+        QSignalSpy finished(reaction, &app::ApproximateReaction::finished);
+        window.surfaceView()->grabImage(); // the shape's first frame, before the clock starts
+        QElapsedTimer clock;
+        qint64 last = 0;
+        qint64 longest = 0;
+        qint64 longestEnd = 0;
+        QTimer tick;
+        connect(&tick, &QTimer::timeout, [&] {
+            if (clock.elapsed() - last > longest) {
+                longest = clock.elapsed() - last;
+                longestEnd = clock.elapsed();
+            }
+            last = clock.elapsed();
+        });
+        clock.start();
+        tick.start(5);
+        reaction->start(choice);
+        const qint64 returned = clock.elapsed();
+        QVERIFY(reaction->isBusy());
+        QCOMPARE(test::bytesOf(window), before); // nothing done on this thread yet
+        QVERIFY(finished.wait(600000));
+        const qint64 total = clock.elapsed();
+        const app::ApproximateReaction::Timings t = reaction->lastTimings();
+        qInfo("%zu points, %d strip(s) of %d interval(s): start() returned after %lld ms; set up "
+              "in %.0f ms, solved in %.0f ms, measured in %.0f ms, %lld ms in all; longest pause "
+              "of the event loop %lld ms (ending at %lld ms); %s",
+              shape.points.size(), choice.strips, choice.intervals, returned, t.setup, t.solve,
+              t.measure, total, longest, longestEnd, qPrintable(finished.front().at(1).toString()));
+        QVERIFY(!reaction->isBusy());
     }
 
     void dialogCancelChangesNothing() {

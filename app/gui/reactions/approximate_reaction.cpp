@@ -279,6 +279,7 @@ void ApproximateReaction::onMeasured() {
                                .arg(QLocale().toString(run.setup.milliseconds / 1000.0, 'f', 2),
                                     QLocale().toString(outcome.elapsedMs / 1000.0, 'f', 2),
                                     QLocale().toString(run.measureMs / 1000.0, 'f', 2));
+    m_timings = {run.setup.milliseconds, outcome.elapsedMs, run.measureMs};
     const bool applied = !commands.empty();
     run.step = Run::Step::Preparing; // ending: onControllerFinished() leaves it to end()
     m_solve->finishJob(SolveController::Ending::Solved, report, sentence, std::move(commands));

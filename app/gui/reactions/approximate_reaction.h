@@ -37,6 +37,13 @@ public:
     void start(const ApproximationChoice& choice);
     // Preparing, solving or measuring.
     bool isBusy() const;
+    // How long the steps of the last applied approximation took (ms).
+    struct Timings {
+        double setup = 0.0;
+        double solve = 0.0;
+        double measure = 0.0;
+    };
+    Timings lastTimings() const { return m_timings; }
 
 signals:
     // The approximation ended: applied (one undo step) or not; `sentence` says how.
@@ -58,6 +65,7 @@ private:
     std::shared_ptr<Run> m_run;
     BackgroundRead* m_setup = nullptr;
     QThread* m_measure = nullptr;
+    Timings m_timings;
 };
 
 } // namespace devsurf::app
