@@ -1332,37 +1332,37 @@
 <context>
     <name>devsurf::app::ApproximateReaction</name>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="45"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="47"/>
         <source>Approximate Reference Shape</source>
         <translation>Referenzform annähern</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="78"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="82"/>
         <source>Fit developable strips to a reference shape: import one first (File ▸ Import Reference Shape…).</source>
         <translation>Abwickelbare Streifen an eine Referenzform anpassen: zuerst eine importieren (Datei ▸ Referenzform importieren…).</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="80"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="84"/>
         <source>Fit developable strips to a reference shape: wait until the solver has finished, or cancel it (Esc).</source>
         <translation>Abwickelbare Streifen an eine Referenzform anpassen: warten, bis der Löser fertig ist, oder ihn abbrechen (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="82"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="86"/>
         <source>Fit developable strips to a reference shape, or pull the design&apos;s surfaces towards it; one undo step.</source>
         <translation>Abwickelbare Streifen an eine Referenzform anpassen oder die Flächen des Entwurfs zu ihr ziehen; ein Rückgängig-Schritt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="116"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="120"/>
         <source>Preparing the approximation: thinning the reference shape and placing the strips…</source>
         <translation>Annäherung wird vorbereitet: Referenzform ausdünnen und Streifen platzieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="139"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="147"/>
         <source>Approximation cancelled; the design is unchanged.</source>
         <translation>Annäherung abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="147"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="162"/>
         <source>Thinning the reference shape with radius %1 kept %n point(s), too few for the strips asked for; choose a smaller radius or fewer strips.</source>
         <translation>
             <numerusform>Das Ausdünnen der Referenzform mit Radius %1 behielt %n Punkt, zu wenige für die gewünschten Streifen; wählen Sie einen kleineren Radius oder weniger Streifen.</numerusform>
@@ -1370,47 +1370,53 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="153"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="168"/>
         <source>The points of the reference shape lie on a line; no strip can be fitted to them.</source>
         <translation>Die Punkte der Referenzform liegen auf einer Geraden; kein Streifen lässt sich an sie anpassen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="157"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="172"/>
         <source>No surface of the design is near enough to the reference shape to be pulled towards it; start from new strips instead.</source>
         <translation>Keine Fläche des Entwurfs liegt nahe genug an der Referenzform, um zu ihr gezogen zu werden; beginnen Sie stattdessen mit neuen Streifen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="161"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="153"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="176"/>
         <source>Cannot approximate the reference shape</source>
         <translation>Die Referenzform kann nicht angenähert werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="166"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="151"/>
+        <source>The approximation could not be set up: %1</source>
+        <translation>Die Annäherung konnte nicht vorbereitet werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="181"/>
         <source>Approximation discarded: the design changed meanwhile; it is unchanged.</source>
         <translation>Annäherung verworfen: der Entwurf hat sich inzwischen geändert; er ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="180"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="195"/>
         <source>Measuring the distance of the result to the reference shape…</source>
         <translation>Abstand des Ergebnisses zur Referenzform wird gemessen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="214"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="230"/>
         <source>%1 failed: %2 The design is unchanged.</source>
         <translation>%1 fehlgeschlagen: %2 Der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="254"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="270"/>
         <source>largest constraint residual %1, within the tolerance</source>
         <translation>größtes Bedingungsresiduum %1, innerhalb der Toleranz</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="255"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="271"/>
         <source>largest constraint residual %1, not within the tolerance (Tools ▸ Solve may help)</source>
         <translation>größtes Bedingungsresiduum %1, nicht innerhalb der Toleranz (Werkzeuge ▸ Lösen kann helfen)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="261"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="277"/>
         <source>the reference shape is %1 from the %n surface(s) on average, %2 at most</source>
         <translation>
             <numerusform>die Referenzform ist im Mittel %1 von der Fläche entfernt, höchstens %2</numerusform>
@@ -1418,17 +1424,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="265"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="281"/>
         <source>Approximated: %1; %2.</source>
         <translation>Angenähert: %1; %2.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="266"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="282"/>
         <source>Afterwards %1.</source>
         <translation>Danach: %1.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="268"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="284"/>
         <source>Approximated with %n surface(s): %1.</source>
         <translation>
             <numerusform>Mit %n Fläche angenähert: %1.</numerusform>
@@ -1436,7 +1442,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="271"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="287"/>
         <source>%n surface(s) too far from the shape were left as they were.</source>
         <translation>
             <numerusform>%n Fläche, zu weit von der Form entfernt, blieb unverändert.</numerusform>
@@ -1444,7 +1450,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="278"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="294"/>
         <source>Set up in %1 s, solved in %2 s, measured in %3 s.</source>
         <translation>Vorbereitet in %1 s, gelöst in %2 s, gemessen in %3 s.</translation>
     </message>

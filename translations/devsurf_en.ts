@@ -113,7 +113,7 @@
 <context>
     <name>devsurf::app::ApproximateReaction</name>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="147"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="162"/>
         <source>Thinning the reference shape with radius %1 kept %n point(s), too few for the strips asked for; choose a smaller radius or fewer strips.</source>
         <translation>
             <numerusform>Thinning the reference shape with radius %1 kept %n point, too few for the strips asked for; choose a smaller radius or fewer strips.</numerusform>
@@ -121,7 +121,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="261"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="277"/>
         <source>the reference shape is %1 from the %n surface(s) on average, %2 at most</source>
         <translation>
             <numerusform>the reference shape is %1 from the surface on average, %2 at most</numerusform>
@@ -129,7 +129,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="268"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="284"/>
         <source>Approximated with %n surface(s): %1.</source>
         <translation>
             <numerusform>Approximated with %n surface: %1.</numerusform>
@@ -137,7 +137,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="271"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="287"/>
         <source>%n surface(s) too far from the shape were left as they were.</source>
         <translation>
             <numerusform>%n surface too far from the shape was left as it was.</numerusform>

@@ -1321,115 +1321,121 @@
 <context>
     <name>devsurf::app::ApproximateReaction</name>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="45"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="47"/>
         <source>Approximate Reference Shape</source>
         <translation>参照形状を近似</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="78"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="82"/>
         <source>Fit developable strips to a reference shape: import one first (File ▸ Import Reference Shape…).</source>
         <translation>参照形状に可展ストリップを当てはめます: まず読み込んでください (ファイル ▸ 参照形状をインポート…)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="80"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="84"/>
         <source>Fit developable strips to a reference shape: wait until the solver has finished, or cancel it (Esc).</source>
         <translation>参照形状に可展ストリップを当てはめます: ソルバーの終了を待つか、中止してください (Esc)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="82"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="86"/>
         <source>Fit developable strips to a reference shape, or pull the design&apos;s surfaces towards it; one undo step.</source>
         <translation>参照形状に可展ストリップを当てはめるか、デザインの曲面をそれへ引き寄せます。元に戻す操作は 1 回です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="116"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="120"/>
         <source>Preparing the approximation: thinning the reference shape and placing the strips…</source>
         <translation>近似を準備中: 参照形状を間引いてストリップを配置しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="139"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="147"/>
         <source>Approximation cancelled; the design is unchanged.</source>
         <translation>近似を中止しました。デザインは変更されていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="147"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="162"/>
         <source>Thinning the reference shape with radius %1 kept %n point(s), too few for the strips asked for; choose a smaller radius or fewer strips.</source>
         <translation>
             <numerusform>半径 %1 で参照形状を間引いた結果 %n 点しか残らず、指定したストリップ数には足りません。半径を小さくするか、ストリップを減らしてください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="153"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="168"/>
         <source>The points of the reference shape lie on a line; no strip can be fitted to them.</source>
         <translation>参照形状の点が一直線上にあるため、ストリップを当てはめられません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="157"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="172"/>
         <source>No surface of the design is near enough to the reference shape to be pulled towards it; start from new strips instead.</source>
         <translation>参照形状へ引き寄せられるほど近いデザインの曲面がありません。代わりに新しいストリップから始めてください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="161"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="153"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="176"/>
         <source>Cannot approximate the reference shape</source>
         <translation>参照形状を近似できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="166"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="151"/>
+        <source>The approximation could not be set up: %1</source>
+        <translation>近似を準備できませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="181"/>
         <source>Approximation discarded: the design changed meanwhile; it is unchanged.</source>
         <translation>近似を破棄しました: その間にデザインが変更されました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="180"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="195"/>
         <source>Measuring the distance of the result to the reference shape…</source>
         <translation>結果と参照形状の距離を測定中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="214"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="230"/>
         <source>%1 failed: %2 The design is unchanged.</source>
         <translation>%1 に失敗しました: %2 デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="254"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="270"/>
         <source>largest constraint residual %1, within the tolerance</source>
         <translation>最大の制約残差 %1、許容範囲内</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="255"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="271"/>
         <source>largest constraint residual %1, not within the tolerance (Tools ▸ Solve may help)</source>
         <translation>最大の制約残差 %1、許容範囲外 (ツール ▸ ソルブが役立つ場合があります)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="261"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="277"/>
         <source>the reference shape is %1 from the %n surface(s) on average, %2 at most</source>
         <translation>
             <numerusform>参照形状と %n 個の曲面の距離は平均 %1、最大 %2</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="265"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="281"/>
         <source>Approximated: %1; %2.</source>
         <translation>近似しました: %1。%2。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="266"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="282"/>
         <source>Afterwards %1.</source>
         <translation>近似後: %1。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="268"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="284"/>
         <source>Approximated with %n surface(s): %1.</source>
         <translation>
             <numerusform>%n 個の曲面で近似しました: %1。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="271"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="287"/>
         <source>%n surface(s) too far from the shape were left as they were.</source>
         <translation>
             <numerusform>形状から遠すぎる %n 個の曲面はそのままです。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="278"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="294"/>
         <source>Set up in %1 s, solved in %2 s, measured in %3 s.</source>
         <translation>準備 %1 秒、求解 %2 秒、測定 %3 秒。</translation>
     </message>

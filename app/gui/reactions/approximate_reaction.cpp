@@ -20,6 +20,7 @@
 
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 namespace devsurf::app {
 
@@ -31,7 +32,8 @@ struct ApproximateReaction::Run {
     std::vector<model::Vec3> points;
     std::vector<model::CompositeSurface> start; // empty: new strips
     int firstNumber = 1;
-    solver::ApproximationSetup setup; // the setup thread's
+    solver::ApproximationSetup setup;        // the setup thread's
+    std::optional<std::string> setupFailure; // the setup threw (the model's own words)
     quint64 ticket = 0;
     enum class Step { Preparing, Solving, Measuring } step = Step::Preparing;
     solver::SolveResult result;
@@ -66,7 +68,9 @@ ApproximateReaction::~ApproximateReaction() {
 }
 
 bool ApproximateReaction::isBusy() const {
-    return m_run != nullptr;
+    // A measurement cancelled with its approximation runs to its end (measureDistance cannot
+    // stop early); a new approximation waits for it.
+    return m_run != nullptr || m_measure != nullptr;
 }
 
 void ApproximateReaction::updateEnableState() {
@@ -121,8 +125,12 @@ void ApproximateReaction::start(const ApproximationChoice& choice) {
             options.intervals = run->choice.intervals;
             options.rho = run->choice.rho;
             options.iterations = run->choice.iterations;
-            run->setup = solver::prepareApproximation(run->points, run->start, options, progress,
-                                                      run->firstNumber);
+            try {
+                run->setup = solver::prepareApproximation(run->points, run->start, options,
+                                                          progress, run->firstNumber);
+            } catch (const std::exception& e) {
+                run->setupFailure = e.what(); // e.g. a design surface that is not valid
+            }
         },
         this);
     connect(m_setup, &BackgroundRead::done, this, &ApproximateReaction::onPrepared);
@@ -137,6 +145,13 @@ void ApproximateReaction::onPrepared() {
     using Error = solver::ApproximationSetup::Error;
     if (cancelled || run.setup.error == Error::Cancelled) {
         end(false, tr("Approximation cancelled; the design is unchanged."));
+        return;
+    }
+    if (run.setupFailure) {
+        const QString sentence = tr("The approximation could not be set up: %1")
+                                     .arg(QString::fromStdString(*run.setupFailure));
+        workspace()->showError(tr("Cannot approximate the reference shape"), sentence);
+        end(false, sentence);
         return;
     }
     if (run.setup.error != Error::None) {
@@ -201,7 +216,8 @@ void ApproximateReaction::onMeasured() {
     m_measure->deleteLater();
     m_measure = nullptr;
     if (!m_run || m_solve->runningTicket() != m_run->ticket) {
-        return; // cancelled meanwhile: onControllerFinished() ended it
+        updateEnableState(); // cancelled meanwhile: onControllerFinished() ended it
+        return;
     }
     Run& run = *m_run;
     document::Document* doc = workspace()->document();

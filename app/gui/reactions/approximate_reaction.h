@@ -35,7 +35,7 @@ public:
 
     // Runs an approximation as the dialog's choice asks; finished() follows.
     void start(const ApproximationChoice& choice);
-    // Preparing, solving or measuring.
+    // Preparing, solving or measuring (also a measurement whose approximation was cancelled).
     bool isBusy() const;
     // How long the steps of the last applied approximation took (ms).
     struct Timings {
