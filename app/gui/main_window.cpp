@@ -342,7 +342,13 @@ void MainWindow::createMenus() {
     new DistanceReportReaction(distance, m_workspace);
     QAction* approximate = addAction(tools, QStringLiteral("actionApproximateReference"),
                                      tr("A&pproximate Reference Shape…"));
-    new ApproximateReaction(approximate, m_workspace, m_solveController);
+    auto* approximation = new ApproximateReaction(approximate, m_workspace, m_solveController);
+    // New strips unfold beside the sheets, out of the development view's frame: show them all.
+    connect(approximation, &ApproximateReaction::finished, m_developmentView, [this](bool applied) {
+        if (applied) {
+            m_developmentView->fitAll();
+        }
+    });
     tools->addSeparator();
     const QList<QAction*> solverActions = createSolverActions(tools, selectNone);
     // A right click in either view offers what applies to the entity under the cursor.
