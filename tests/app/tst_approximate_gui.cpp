@@ -25,6 +25,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QMessageBox>
 #include <QRadioButton>
 #include <QSettings>
 #include <QSignalSpy>
@@ -340,6 +341,41 @@ private slots:
               shape.points.size(), choice.strips, choice.intervals, returned, t.setup, t.solve,
               t.measure, total, longest, longestEnd, qPrintable(finished.front().at(1).toString()));
         QVERIFY(!reaction->isBusy());
+    }
+
+    void tooFewPointsIsOneSentence() {
+        // ρ of 50 mm on a 119 mm wide cloud keeps a handful of points, too few for 100 strips:
+        // refused in one sentence (a message box, then the status bar), nothing changed.
+        app::MainWindow window;
+        QVERIFY(test::showActiveWithExample(window, QStringLiteral("sheet")));
+        openCylinderOnly(window);
+        document::Document* doc = window.workspace()->document();
+        const std::string before = test::bytesOf(window);
+        app::ApproximateReaction* reaction = reactionOf(window);
+        QSignalSpy finished(reaction, &app::ApproximateReaction::finished);
+        QString shown;
+        QTimer poll;
+        connect(&poll, &QTimer::timeout, &poll, [&poll, &shown] {
+            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+                poll.stop();
+                shown = box->text();
+                box->accept();
+            }
+        });
+        poll.start(10);
+        app::ApproximationChoice choice;
+        choice.strips = 100;
+        choice.rho = 50.0;
+        reaction->start(choice);
+        QVERIFY(finished.wait(60000));
+        QVERIFY(!finished.front().at(0).toBool());
+        const QString sentence = finished.front().at(1).toString();
+        QCOMPARE(shown, sentence);
+        QVERIFY(sentence.endsWith(QLatin1Char('.')) || sentence.endsWith(QChar(0x3002)));
+        QCOMPARE(test::bytesOf(window), before);
+        QCOMPARE(doc->undoStack()->count(), 0);
+        QVERIFY(!window.solveController()->isSolving());
+        QVERIFY(window.action(QStringLiteral("actionApproximateReference"))->isEnabled());
     }
 
     void dialogCancelChangesNothing() {
