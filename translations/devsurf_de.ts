@@ -50,6 +50,19 @@
     </message>
 </context>
 <context>
+    <name>AddSurfacesCommand</name>
+    <message>
+        <location filename="../model/document/commands/add_surfaces_command.cpp" line="19"/>
+        <source>There is no surface to add.</source>
+        <translation>Es gibt keine Fläche zum Hinzufügen.</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/add_surfaces_command.cpp" line="24"/>
+        <source>A surface to add is not valid.</source>
+        <translation>Eine hinzuzufügende Fläche ist nicht gültig.</translation>
+    </message>
+</context>
+<context>
     <name>ApplySurfaceCommand</name>
     <message>
         <location filename="../model/document/commands/apply_surface_command.cpp" line="20"/>
@@ -1221,6 +1234,228 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::ApproximateDialog</name>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="29"/>
+        <source>Approximate Reference Shape</source>
+        <translation>Referenzform annähern</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/approximate_dialog.cpp" line="36"/>
+        <source>%1 (%n point(s))</source>
+        <translation>
+            <numerusform>%1 (%n Punkt)</numerusform>
+            <numerusform>%1 (%n Punkte)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="40"/>
+        <source>Reference &amp;shape:</source>
+        <translation>Referenz&amp;form:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="44"/>
+        <source>&amp;New flat strips:</source>
+        <translation>&amp;Neue ebene Streifen:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="46"/>
+        <source>Fit flat strips to as many patches of the shape (k-means clusters) and add them to the design.</source>
+        <translation>Ebene Streifen an ebenso viele Bereiche der Form legen (k-Means-Cluster) und dem Entwurf hinzufügen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="56"/>
+        <source>The &amp;design&apos;s surfaces</source>
+        <translation>Die Flächen des &amp;Entwurfs</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="58"/>
+        <source>Pull the surfaces of the design towards the shape; each is pulled by the points nearest to it.</source>
+        <translation>Die Flächen des Entwurfs zur Form ziehen; jede wird von den ihr nächsten Punkten gezogen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="65"/>
+        <source>The design has no surface yet.</source>
+        <translation>Der Entwurf hat noch keine Fläche.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="71"/>
+        <source>Start from:</source>
+        <translation>Beginnen mit:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="77"/>
+        <source>Spline intervals along each new strip: more follow finer detail and take longer.</source>
+        <translation>Spline-Intervalle entlang jedes neuen Streifens: mehr folgen feineren Details und dauern länger.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="79"/>
+        <source>&amp;Intervals per strip:</source>
+        <translation>&amp;Intervalle pro Streifen:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="89"/>
+        <source>Iterations of the pull towards the shape; a few more follow in which the pull fades.</source>
+        <translation>Iterationen des Zugs zur Form; einige weitere folgen, in denen der Zug abklingt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="91"/>
+        <source>I&amp;terations:</source>
+        <translation>I&amp;terationen:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="95"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="96"/>
+        <source>Thinning radius ρ: the shape is thinned to points at least ρ apart, each with the normal of the points around it.</source>
+        <translation>Ausdünnungsradius ρ: die Form wird auf Punkte im Abstand von mindestens ρ ausgedünnt, jeder mit der Normalen der Punkte um ihn.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="98"/>
+        <source>Thinning radius &amp;ρ:</source>
+        <translation>Ausdünnungsradius &amp;ρ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="107"/>
+        <source>&amp;Approximate</source>
+        <translation>&amp;Annähern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="133"/>
+        <source>Default: %1 % of the shape&apos;s bounding-box diagonal (%2), or more where its points are sparse.</source>
+        <translation>Vorgabe: %1 % der Diagonale des umgebenden Quaders der Form (%2), oder mehr, wo ihre Punkte dünn liegen.</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::ApproximateReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="47"/>
+        <source>Approximate Reference Shape</source>
+        <translation>Referenzform annähern</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="82"/>
+        <source>Fit developable strips to a reference shape: import one first (File ▸ Import Reference Shape…).</source>
+        <translation>Abwickelbare Streifen an eine Referenzform anpassen: zuerst eine importieren (Datei ▸ Referenzform importieren…).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="84"/>
+        <source>Fit developable strips to a reference shape: wait until the solver has finished, or cancel it (Esc).</source>
+        <translation>Abwickelbare Streifen an eine Referenzform anpassen: warten, bis der Löser fertig ist, oder ihn abbrechen (Esc).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="86"/>
+        <source>Fit developable strips to a reference shape, or pull the design&apos;s surfaces towards it; one undo step.</source>
+        <translation>Abwickelbare Streifen an eine Referenzform anpassen oder die Flächen des Entwurfs zu ihr ziehen; ein Rückgängig-Schritt.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="120"/>
+        <source>Preparing the approximation: thinning the reference shape and placing the strips…</source>
+        <translation>Annäherung wird vorbereitet: Referenzform ausdünnen und Streifen platzieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="147"/>
+        <source>Approximation cancelled; the design is unchanged.</source>
+        <translation>Annäherung abgebrochen; der Entwurf ist unverändert.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="162"/>
+        <source>Thinning the reference shape with radius %1 kept %n point(s), too few for the strips asked for; choose a smaller radius or fewer strips.</source>
+        <translation>
+            <numerusform>Das Ausdünnen der Referenzform mit Radius %1 behielt %n Punkt, zu wenige für die gewünschten Streifen; wählen Sie einen kleineren Radius oder weniger Streifen.</numerusform>
+            <numerusform>Das Ausdünnen der Referenzform mit Radius %1 behielt %n Punkte, zu wenige für die gewünschten Streifen; wählen Sie einen kleineren Radius oder weniger Streifen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="168"/>
+        <source>The points of the reference shape lie on a line; no strip can be fitted to them.</source>
+        <translation>Die Punkte der Referenzform liegen auf einer Geraden; kein Streifen lässt sich an sie anpassen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="172"/>
+        <source>No surface of the design is near enough to the reference shape to be pulled towards it; start from new strips instead.</source>
+        <translation>Keine Fläche des Entwurfs liegt nahe genug an der Referenzform, um zu ihr gezogen zu werden; beginnen Sie stattdessen mit neuen Streifen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="153"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="176"/>
+        <source>Cannot approximate the reference shape</source>
+        <translation>Die Referenzform kann nicht angenähert werden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="151"/>
+        <source>The approximation could not be set up: %1</source>
+        <translation>Die Annäherung konnte nicht vorbereitet werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="181"/>
+        <source>Approximation discarded: the design changed meanwhile; it is unchanged.</source>
+        <translation>Annäherung verworfen: der Entwurf hat sich inzwischen geändert; er ist unverändert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="195"/>
+        <source>Measuring the distance of the result to the reference shape…</source>
+        <translation>Abstand des Ergebnisses zur Referenzform wird gemessen…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="230"/>
+        <source>%1 failed: %2 The design is unchanged.</source>
+        <translation>%1 fehlgeschlagen: %2 Der Entwurf ist unverändert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="270"/>
+        <source>largest constraint residual %1, within the tolerance</source>
+        <translation>größtes Bedingungsresiduum %1, innerhalb der Toleranz</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="271"/>
+        <source>largest constraint residual %1, not within the tolerance (Tools ▸ Solve may help)</source>
+        <translation>größtes Bedingungsresiduum %1, nicht innerhalb der Toleranz (Werkzeuge ▸ Lösen kann helfen)</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="277"/>
+        <source>the reference shape is %1 from the %n surface(s) on average, %2 at most</source>
+        <translation>
+            <numerusform>die Referenzform ist im Mittel %1 von der Fläche entfernt, höchstens %2</numerusform>
+            <numerusform>die Referenzform ist im Mittel %1 von den %n Flächen entfernt, höchstens %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="281"/>
+        <source>Approximated: %1; %2.</source>
+        <translation>Angenähert: %1; %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="282"/>
+        <source>Afterwards %1.</source>
+        <translation>Danach: %1.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="284"/>
+        <source>Approximated with %n surface(s): %1.</source>
+        <translation>
+            <numerusform>Mit %n Fläche angenähert: %1.</numerusform>
+            <numerusform>Mit %n Flächen angenähert: %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="287"/>
+        <source>%n surface(s) too far from the shape were left as they were.</source>
+        <translation>
+            <numerusform>%n Fläche, zu weit von der Form entfernt, blieb unverändert.</numerusform>
+            <numerusform>%n Flächen, zu weit von der Form entfernt, blieben unverändert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="294"/>
+        <source>Set up in %1 s, solved in %2 s, measured in %3 s.</source>
+        <translation>Vorbereitet in %1 s, gelöst in %2 s, gemessen in %3 s.</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::BackgroundRead</name>
     <message>
         <location filename="../app/gui/reactions/background_read.cpp" line="28"/>
@@ -1375,88 +1610,88 @@
 <context>
     <name>devsurf::app::DistanceReportDialog</name>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="28"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="26"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="34"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="31"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="40"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="41"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="50"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="51"/>
         <source>Mean</source>
         <translation>Mittel</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="51"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="52"/>
         <source>95th percentile</source>
         <translation>95. Perzentil</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="52"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="53"/>
         <source>Largest</source>
         <translation>Größter</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="53"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="54"/>
         <source>Reference shape → design</source>
         <translation>Referenzform → Entwurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="54"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="55"/>
         <source>Design → reference shape</source>
         <translation>Entwurf → Referenzform</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="81"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="82"/>
         <source>Distance to Reference</source>
         <translation>Abstand zur Referenzform</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="148"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="149"/>
         <source>The project has no reference shape; import one with File ▸ Import Reference Shape….</source>
         <translation>Das Projekt hat keine Referenzform; importieren Sie eine mit Datei ▸ Referenzform importieren….</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="150"/>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="156"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="151"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="157"/>
         <source>The design has no surface to measure.</source>
         <translation>Der Entwurf hat keine Fläche zum Messen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="152"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="153"/>
         <source>Measuring the distance between the design and the reference shapes…</source>
         <translation>Der Abstand zwischen Entwurf und Referenzformen wird gemessen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="154"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="155"/>
         <source>A surface of the design is not valid; solve or undo, then measure again.</source>
         <translation>Eine Fläche des Entwurfs ist ungültig; lösen Sie oder machen Sie rückgängig, dann messen Sie erneut.</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="158"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="159"/>
         <source>The design changed: measuring again. The figures below are out of date.</source>
         <translation>Der Entwurf hat sich geändert: Es wird neu gemessen. Die Werte unten sind veraltet.</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="161"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="162"/>
         <source>Measured in %1 s.</source>
         <translation>Gemessen in %1 s.</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="185"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="186"/>
         <source>Reference shape %1</source>
         <translation>Referenzform %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/distance_report_dialog.cpp" line="192"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="193"/>
         <source>Coverage: %1 of the %n point(s) lie within %2 of the design.</source>
         <translation>
             <numerusform>Abdeckung: %1 des %n Punkts liegt innerhalb von %2 am Entwurf.</numerusform>
@@ -1464,7 +1699,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="202"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="203"/>
         <source>Two-sided (Hausdorff) distance %1; bounding-box diagonal %2; the design sampled every %3.</source>
         <translation>Beidseitiger (Hausdorff-)Abstand %1; Diagonale des umgebenden Quaders %2; der Entwurf alle %3 abgetastet.</translation>
     </message>
@@ -1929,293 +2164,298 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="123"/>
+        <location filename="../app/gui/main_window.cpp" line="124"/>
         <source>Patches</source>
         <translation>Flächenstücke</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="129"/>
+        <location filename="../app/gui/main_window.cpp" line="130"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="135"/>
+        <location filename="../app/gui/main_window.cpp" line="136"/>
         <source>Pins</source>
         <translation>Festgehaltene Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="145"/>
+        <location filename="../app/gui/main_window.cpp" line="146"/>
         <source>Solver</source>
         <translation>Löser</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="165"/>
+        <location filename="../app/gui/main_window.cpp" line="166"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="172"/>
+        <location filename="../app/gui/main_window.cpp" line="173"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="174"/>
+        <location filename="../app/gui/main_window.cpp" line="175"/>
         <source>&amp;New from Example…</source>
         <translation>&amp;Neu aus Beispiel…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="176"/>
+        <location filename="../app/gui/main_window.cpp" line="177"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="178"/>
+        <location filename="../app/gui/main_window.cpp" line="179"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="182"/>
+        <location filename="../app/gui/main_window.cpp" line="183"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="185"/>
+        <location filename="../app/gui/main_window.cpp" line="186"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="189"/>
+        <location filename="../app/gui/main_window.cpp" line="190"/>
         <source>Import &amp;Curves…</source>
         <translation>&amp;Kurven importieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="194"/>
+        <location filename="../app/gui/main_window.cpp" line="195"/>
         <source>Import Reference S&amp;hape…</source>
         <translation>Referenz&amp;form importieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="195"/>
+        <location filename="../app/gui/main_window.cpp" line="196"/>
         <source>Add a mesh (OBJ, PLY, STL, OFF) or a point cloud (XYZ, PTS) the design is to follow, as a reference shape</source>
         <translation>Ein Netz (OBJ, PLY, STL, OFF) oder eine Punktwolke (XYZ, PTS), der der Entwurf folgen soll, als Referenzform hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="199"/>
+        <location filename="../app/gui/main_window.cpp" line="200"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>Austausch-JSON &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="199"/>
+        <location filename="../app/gui/main_window.cpp" line="200"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="202"/>
+        <location filename="../app/gui/main_window.cpp" line="203"/>
         <source>Export &amp;3D Shape…</source>
         <translation>&amp;3D-Form exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="206"/>
+        <location filename="../app/gui/main_window.cpp" line="207"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="210"/>
+        <location filename="../app/gui/main_window.cpp" line="211"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="213"/>
+        <location filename="../app/gui/main_window.cpp" line="214"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="216"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="223"/>
+        <location filename="../app/gui/main_window.cpp" line="224"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="226"/>
+        <location filename="../app/gui/main_window.cpp" line="227"/>
         <source>Remove Reference &amp;Curves</source>
         <translation>Referenz&amp;kurven entfernen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="229"/>
+        <location filename="../app/gui/main_window.cpp" line="230"/>
         <source>Remove Reference S&amp;hapes</source>
         <translation>Referenz&amp;formen entfernen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="232"/>
         <source>Select &amp;None</source>
         <translation>Auswahl &amp;aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="232"/>
+        <location filename="../app/gui/main_window.cpp" line="233"/>
         <location filename="../app/gui/main_window_solver.cpp" line="128"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="236"/>
+        <location filename="../app/gui/main_window.cpp" line="237"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="238"/>
+        <location filename="../app/gui/main_window.cpp" line="239"/>
         <source>&amp;3D View</source>
         <translation>&amp;3D-Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="238"/>
+        <location filename="../app/gui/main_window.cpp" line="239"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="240"/>
+        <location filename="../app/gui/main_window.cpp" line="241"/>
         <source>&amp;Development View</source>
         <translation>&amp;Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="240"/>
+        <location filename="../app/gui/main_window.cpp" line="241"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="241"/>
+        <location filename="../app/gui/main_window.cpp" line="242"/>
         <source>3D &amp;and Development</source>
         <translation>3D &amp;und Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="242"/>
+        <location filename="../app/gui/main_window.cpp" line="243"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="246"/>
+        <location filename="../app/gui/main_window.cpp" line="247"/>
         <source>&amp;Control Polygons</source>
         <translation>&amp;Kontrollpolygone</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="246"/>
+        <location filename="../app/gui/main_window.cpp" line="247"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="247"/>
+        <location filename="../app/gui/main_window.cpp" line="248"/>
         <source>&amp;Vertices</source>
         <translation>&amp;Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="248"/>
+        <location filename="../app/gui/main_window.cpp" line="249"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="251"/>
+        <location filename="../app/gui/main_window.cpp" line="252"/>
         <source>S&amp;heet Outline</source>
         <translation>&amp;Bogenumriss</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="254"/>
+        <location filename="../app/gui/main_window.cpp" line="255"/>
         <source>Draw the sheet a held development is confined to behind it in the development view (Tools ▸ Sheet Shape…).</source>
         <translation>Den Bogen, auf den eine gehaltene Abwicklung beschränkt ist, in der Abwicklungsansicht dahinter zeichnen (Werkzeuge ▸ Bogenform…).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="264"/>
+        <location filename="../app/gui/main_window.cpp" line="265"/>
         <source>&amp;Reference Shapes</source>
         <translation>&amp;Referenzformen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="267"/>
+        <location filename="../app/gui/main_window.cpp" line="268"/>
         <source>Draw the imported meshes and point clouds in the 3D view (File ▸ Import Reference Shape…).</source>
         <translation>Die importierten Netze und Punktwolken in der 3D-Ansicht zeichnen (Datei ▸ Referenzform importieren…).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="282"/>
+        <location filename="../app/gui/main_window.cpp" line="283"/>
         <source>Colour the points of the reference shapes by their distance to the design, in mm, with a legend (green: within the coverage tolerance of Tools ▸ Distance to Reference…).</source>
         <translation>Färbt die Punkte der Referenzformen nach ihrem Abstand zum Entwurf, in mm, mit Legende (grün: innerhalb der Abdeckungstoleranz von Werkzeuge ▸ Abstand zur Referenzform…).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="293"/>
+        <location filename="../app/gui/main_window.cpp" line="294"/>
         <source>&amp;Fit All</source>
         <translation>&amp;Alles zeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="293"/>
+        <location filename="../app/gui/main_window.cpp" line="294"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="299"/>
+        <location filename="../app/gui/main_window.cpp" line="300"/>
         <source>Reset &amp;Layout</source>
         <translation>&amp;Layout zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="304"/>
+        <location filename="../app/gui/main_window.cpp" line="305"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="307"/>
+        <location filename="../app/gui/main_window.cpp" line="308"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>Kanten&amp;kennzeichnung ändern (R ↔ S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="307"/>
+        <location filename="../app/gui/main_window.cpp" line="308"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="309"/>
+        <location filename="../app/gui/main_window.cpp" line="310"/>
         <source>Add &amp;Crease…</source>
         <translation>&amp;Falz einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="312"/>
+        <location filename="../app/gui/main_window.cpp" line="313"/>
         <source>Add R&amp;uling…</source>
         <translation>&amp;Erzeugende einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="325"/>
+        <location filename="../app/gui/main_window.cpp" line="326"/>
         <source>&amp;Pin Vertices</source>
         <translation>Ecken &amp;festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="326"/>
+        <location filename="../app/gui/main_window.cpp" line="327"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="328"/>
+        <location filename="../app/gui/main_window.cpp" line="329"/>
         <source>U&amp;npin Vertices</source>
         <translation>Ecken &amp;freigeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="329"/>
+        <location filename="../app/gui/main_window.cpp" line="330"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="332"/>
+        <location filename="../app/gui/main_window.cpp" line="333"/>
         <source>Hold the &amp;Sheet</source>
         <translation>&amp;Bogen festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="333"/>
+        <location filename="../app/gui/main_window.cpp" line="334"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="336"/>
+        <location filename="../app/gui/main_window.cpp" line="337"/>
         <source>Sheet S&amp;hape…</source>
         <translation>Bogen&amp;form…</translation>
     </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="344"/>
+        <source>A&amp;pproximate Reference Shape…</source>
+        <translation>Referenzform an&amp;nähern…</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="468"/>
+        <location filename="../app/gui/main_window.cpp" line="472"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n Fläche</numerusform>
@@ -2223,7 +2463,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="469"/>
+        <location filename="../app/gui/main_window.cpp" line="473"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -2231,7 +2471,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="470"/>
+        <location filename="../app/gui/main_window.cpp" line="474"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -2239,7 +2479,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="471"/>
+        <location filename="../app/gui/main_window.cpp" line="475"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n ausgewählt</numerusform>
@@ -2247,92 +2487,92 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="310"/>
+        <location filename="../app/gui/main_window.cpp" line="311"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="191"/>
+        <location filename="../app/gui/main_window.cpp" line="192"/>
         <source>Add the curves of a DXF, SVG, STEP or IGES file as reference curves</source>
         <translation>Die Kurven einer DXF-, SVG-, STEP- oder IGES-Datei als Referenzkurven hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="278"/>
+        <location filename="../app/gui/main_window.cpp" line="279"/>
         <source>Colour Reference by Dis&amp;tance</source>
         <translation>Referenzform nach Abs&amp;tand färben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="313"/>
+        <location filename="../app/gui/main_window.cpp" line="314"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="315"/>
+        <location filename="../app/gui/main_window.cpp" line="316"/>
         <source>Re&amp;fine Curves</source>
         <translation>Kurven &amp;verfeinern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="316"/>
+        <location filename="../app/gui/main_window.cpp" line="317"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="322"/>
+        <location filename="../app/gui/main_window.cpp" line="323"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>Ecken &amp;verschieben oder drehen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="322"/>
+        <location filename="../app/gui/main_window.cpp" line="323"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="340"/>
+        <location filename="../app/gui/main_window.cpp" line="341"/>
         <source>Dis&amp;tance to Reference…</source>
         <translation>Abs&amp;tand zur Referenzform…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="369"/>
+        <location filename="../app/gui/main_window.cpp" line="373"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="370"/>
+        <location filename="../app/gui/main_window.cpp" line="374"/>
         <source>&amp;User Manual</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="377"/>
+        <location filename="../app/gui/main_window.cpp" line="381"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="383"/>
+        <location filename="../app/gui/main_window.cpp" line="387"/>
         <source>&amp;About DevSurf</source>
         <translation>&amp;Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="385"/>
+        <location filename="../app/gui/main_window.cpp" line="389"/>
         <source>About DevSurf</source>
         <translation>Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="386"/>
+        <location filename="../app/gui/main_window.cpp" line="390"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen mit Spline-Torsen (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="431"/>
+        <location filename="../app/gui/main_window.cpp" line="435"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="453"/>
+        <location filename="../app/gui/main_window.cpp" line="457"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="454"/>
+        <location filename="../app/gui/main_window.cpp" line="458"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
@@ -3887,32 +4127,42 @@
         <translation>Es gibt nichts zu lösen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="117"/>
+        <location filename="../app/gui/solve_controller.cpp" line="118"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: Es gibt nichts zu lösen; nichts wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="153"/>
+        <location filename="../app/gui/solve_controller.cpp" line="192"/>
+        <source>%1 cancelled; the design is unchanged.</source>
+        <translation>%1 abgebrochen; der Entwurf ist unverändert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="193"/>
+        <source>%1 cancelled: %2; the design is unchanged.</source>
+        <translation>%1 abgebrochen: %2; der Entwurf ist unverändert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="196"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 abgebrochen; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="154"/>
+        <location filename="../app/gui/solve_controller.cpp" line="197"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 abgebrochen: %2; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="156"/>
+        <location filename="../app/gui/solve_controller.cpp" line="199"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>Lösen abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="157"/>
+        <location filename="../app/gui/solve_controller.cpp" line="200"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>Lösen abgebrochen: %1; der Entwurf ist unverändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="163"/>
+        <location filename="../app/gui/solve_controller.cpp" line="206"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Form prüfen: %n Flächenstück faltet sich auf sich selbst zurück (%1); rückgängig machen oder anders fixieren oder bewegen.</numerusform>
@@ -3920,7 +4170,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="170"/>
+        <location filename="../app/gui/solve_controller.cpp" line="213"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Form prüfen: die Abwicklung überlappt sich selbst an %n Flächenstück (%1); rückgängig machen oder anders fixieren oder bewegen.</numerusform>
@@ -3928,27 +4178,32 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="179"/>
+        <location filename="../app/gui/solve_controller.cpp" line="223"/>
+        <source>%1 failed: %2 The design is unchanged.</source>
+        <translation>%1 fehlgeschlagen: %2 Der Entwurf ist unverändert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="225"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 fehlgeschlagen: %2 Nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="208"/>
+        <location filename="../app/gui/solve_controller.cpp" line="254"/>
         <source>the design changed</source>
         <translation>der Entwurf hat sich geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="215"/>
+        <location filename="../app/gui/solve_controller.cpp" line="261"/>
         <source>it stopped before a degenerate shape</source>
         <translation>es hielt vor einer entarteten Form an</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="218"/>
+        <location filename="../app/gui/solve_controller.cpp" line="264"/>
         <source>no convergence, residual %1</source>
         <translation>keine Konvergenz, Residuum %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="221"/>
+        <location filename="../app/gui/solve_controller.cpp" line="267"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>an %n Stelle zurückgefaltet</numerusform>
@@ -3956,117 +4211,117 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="224"/>
+        <location filename="../app/gui/solve_controller.cpp" line="270"/>
         <source>a development overlapping itself</source>
         <translation>eine sich selbst überlappende Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="227"/>
+        <location filename="../app/gui/solve_controller.cpp" line="273"/>
         <source>collapsed strips</source>
         <translation>zusammengefallene Streifen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="230"/>
+        <location filename="../app/gui/solve_controller.cpp" line="276"/>
         <source>a shape too degenerate to measure</source>
         <translation>eine zum Messen zu entartete Form</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="254"/>
+        <location filename="../app/gui/solve_controller.cpp" line="300"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="259"/>
+        <location filename="../app/gui/solve_controller.cpp" line="305"/>
         <source>The solve was cancelled.</source>
         <translation>Das Lösen wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="262"/>
+        <location filename="../app/gui/solve_controller.cpp" line="308"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 kann nicht gelöst werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="263"/>
+        <location filename="../app/gui/solve_controller.cpp" line="309"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 kann nicht gelöst werden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="267"/>
+        <location filename="../app/gui/solve_controller.cpp" line="313"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>Das Ziel der gezogenen Ecke %1 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="268"/>
+        <location filename="../app/gui/solve_controller.cpp" line="314"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>Das Ziel des gezogenen Kontrollpunkts %1 der Kante %2 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="274"/>
+        <location filename="../app/gui/solve_controller.cpp" line="320"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 konnte nicht gelöst werden: das lineare Gleichungssystem ließ sich nicht faktorisieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="276"/>
+        <location filename="../app/gui/solve_controller.cpp" line="322"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 konnte nicht gelöst werden: eine Iteration ergab Werte, die nicht endlich sind.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="280"/>
+        <location filename="../app/gui/solve_controller.cpp" line="326"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 konnte nicht gelöst werden: der Löser lieferte einen Wert, der nicht endlich ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="286"/>
+        <location filename="../app/gui/solve_controller.cpp" line="332"/>
         <source>(Solver: %1)</source>
         <translation>(Löser: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="301"/>
+        <location filename="../app/gui/solve_controller.cpp" line="347"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="305"/>
+        <location filename="../app/gui/solve_controller.cpp" line="351"/>
         <source>Failed: %1</source>
         <translation>Fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="319"/>
+        <location filename="../app/gui/solve_controller.cpp" line="365"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="323"/>
+        <location filename="../app/gui/solve_controller.cpp" line="369"/>
         <source>tolerance reached</source>
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="323"/>
+        <location filename="../app/gui/solve_controller.cpp" line="369"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="330"/>
+        <location filename="../app/gui/solve_controller.cpp" line="376"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="338"/>
+        <location filename="../app/gui/solve_controller.cpp" line="384"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="344"/>
+        <location filename="../app/gui/solve_controller.cpp" line="390"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; das Beibehalten der Längen schlug fehl (%1), daher wurde das Ziehen mit Dehnen des Blatts wiederholt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="352"/>
+        <location filename="../app/gui/solve_controller.cpp" line="398"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; vom Bogen um %1 mm zurückgehalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="364"/>
+        <location filename="../app/gui/solve_controller.cpp" line="410"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n Flächenstück faltet sich auf sich selbst zurück, wo die Fläche sich selbst überlappt: %1</numerusform>
@@ -4074,7 +4329,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="379"/>
+        <location filename="../app/gui/solve_controller.cpp" line="425"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; die Abwicklung überlappt sich selbst an %n Flächenstück (%1) und lässt sich nicht aus einem Bogen schneiden</numerusform>
@@ -4082,38 +4337,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="385"/>
+        <location filename="../app/gui/solve_controller.cpp" line="431"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="390"/>
+        <location filename="../app/gui/solve_controller.cpp" line="436"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="395"/>
+        <location filename="../app/gui/solve_controller.cpp" line="441"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="404"/>
+        <location filename="../app/gui/solve_controller.cpp" line="450"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="454"/>
+        <location filename="../app/gui/solve_controller.cpp" line="468"/>
+        <source>%1 discarded: the design changed meanwhile; it is unchanged.</source>
+        <translation>%1 verworfen: der Entwurf hat sich inzwischen geändert; er ist unverändert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="509"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>Lösen hat den Entwurf unverändert gelassen: das Lösen machte ihn weniger abwickelbar (größtes Abwickelbarkeitsresiduum %1 → %2).</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="478"/>
+        <location filename="../app/gui/solve_controller.cpp" line="533"/>
         <source>%1. %2</source>
         <comment>a verdict, then a sentence</comment>
         <translation>%1. %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="482"/>
+        <location filename="../app/gui/solve_controller.cpp" line="537"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n Fläche unverändert gelassen: das Lösen machte sie weniger abwickelbar.</numerusform>
@@ -4121,12 +4381,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="494"/>
+        <location filename="../app/gui/solve_controller.cpp" line="549"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 verworfen: Der Entwurf hat sich während des Lösens geändert; nichts wurde bewegt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="503"/>
+        <location filename="../app/gui/solve_controller.cpp" line="558"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, abwickelbar gehalten: %n Iteration, größtes Bedingungsresiduum %2.</numerusform>
@@ -4134,38 +4394,38 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="180"/>
-        <location filename="../app/gui/solve_controller.cpp" line="446"/>
+        <location filename="../app/gui/solve_controller.cpp" line="226"/>
+        <location filename="../app/gui/solve_controller.cpp" line="501"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="237"/>
+        <location filename="../app/gui/solve_controller.cpp" line="283"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt auf der Geraden zwischen den festgehaltenen Ecken %2 und %3, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="244"/>
+        <location filename="../app/gui/solve_controller.cpp" line="290"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt im Dreieck der festgehaltenen Ecken %2, %3 und %4, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="326"/>
+        <location filename="../app/gui/solve_controller.cpp" line="372"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>beim letzten gültigen Zustand angehalten, bevor eine Erzeugende, eine Kurve oder ein Flächenstück kollabierte</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="334"/>
+        <location filename="../app/gui/solve_controller.cpp" line="380"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (endete bei Iteration %1, der mit dem kleinsten Residuum)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="423"/>
+        <location filename="../app/gui/solve_controller.cpp" line="478"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="475"/>
+        <location filename="../app/gui/solve_controller.cpp" line="530"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>

@@ -100,9 +100,55 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::ApproximateDialog</name>
+    <message numerus="yes">
+        <location filename="../app/gui/approximate_dialog.cpp" line="36"/>
+        <source>%1 (%n point(s))</source>
+        <translation>
+            <numerusform>%1 (%n point)</numerusform>
+            <numerusform>%1 (%n points)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::ApproximateReaction</name>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="162"/>
+        <source>Thinning the reference shape with radius %1 kept %n point(s), too few for the strips asked for; choose a smaller radius or fewer strips.</source>
+        <translation>
+            <numerusform>Thinning the reference shape with radius %1 kept %n point, too few for the strips asked for; choose a smaller radius or fewer strips.</numerusform>
+            <numerusform>Thinning the reference shape with radius %1 kept %n points, too few for the strips asked for; choose a smaller radius or fewer strips.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="277"/>
+        <source>the reference shape is %1 from the %n surface(s) on average, %2 at most</source>
+        <translation>
+            <numerusform>the reference shape is %1 from the surface on average, %2 at most</numerusform>
+            <numerusform>the reference shape is %1 from the %n surfaces on average, %2 at most</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="284"/>
+        <source>Approximated with %n surface(s): %1.</source>
+        <translation>
+            <numerusform>Approximated with %n surface: %1.</numerusform>
+            <numerusform>Approximated with %n surfaces: %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="287"/>
+        <source>%n surface(s) too far from the shape were left as they were.</source>
+        <translation>
+            <numerusform>%n surface too far from the shape was left as it was.</numerusform>
+            <numerusform>%n surfaces too far from the shape were left as they were.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::DistanceReportDialog</name>
     <message numerus="yes">
-        <location filename="../app/gui/distance_report_dialog.cpp" line="192"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="193"/>
         <source>Coverage: %1 of the %n point(s) lie within %2 of the design.</source>
         <translation>
             <numerusform>Coverage: %1 of the %n point lies within %2 of the design.</numerusform>
@@ -156,7 +202,7 @@
 <context>
     <name>devsurf::app::ImportReferenceShapeReaction</name>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="172"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="136"/>
         <source>%n point(s)</source>
         <translation>
             <numerusform>%n point</numerusform>
@@ -164,7 +210,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="173"/>
+        <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="137"/>
         <source>%n triangle(s)</source>
         <translation>
             <numerusform>%n triangle</numerusform>
@@ -175,7 +221,7 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="468"/>
+        <location filename="../app/gui/main_window.cpp" line="472"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n surface</numerusform>
@@ -183,7 +229,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="469"/>
+        <location filename="../app/gui/main_window.cpp" line="473"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n patch</numerusform>
@@ -191,7 +237,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="470"/>
+        <location filename="../app/gui/main_window.cpp" line="474"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n control point</numerusform>
@@ -199,7 +245,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="471"/>
+        <location filename="../app/gui/main_window.cpp" line="475"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n selected</numerusform>
@@ -346,7 +392,7 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="163"/>
+        <location filename="../app/gui/solve_controller.cpp" line="206"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Check the shape: %n patch folds over onto itself (%1); undo, or pin or move differently.</numerusform>
@@ -354,7 +400,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="170"/>
+        <location filename="../app/gui/solve_controller.cpp" line="213"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Check the shape: the development overlaps itself at %n patch (%1); undo, or pin or move differently.</numerusform>
@@ -362,7 +408,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="221"/>
+        <location filename="../app/gui/solve_controller.cpp" line="267"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>folded over in %n place</numerusform>
@@ -370,7 +416,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="364"/>
+        <location filename="../app/gui/solve_controller.cpp" line="410"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n patch folds over onto itself, where the surface overlaps itself: %1</numerusform>
@@ -378,7 +424,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="379"/>
+        <location filename="../app/gui/solve_controller.cpp" line="425"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; the development overlaps itself at %n patch (%1) and cannot be cut from one sheet</numerusform>
@@ -386,7 +432,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="475"/>
+        <location filename="../app/gui/solve_controller.cpp" line="530"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Solved: %n iteration, largest constraint residual %1.</numerusform>
@@ -394,7 +440,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="482"/>
+        <location filename="../app/gui/solve_controller.cpp" line="537"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n surface left as it was: solving made it less developable.</numerusform>
@@ -402,7 +448,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="503"/>
+        <location filename="../app/gui/solve_controller.cpp" line="558"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, kept developable: %n iteration, largest constraint residual %2.</numerusform>

@@ -50,6 +50,19 @@
     </message>
 </context>
 <context>
+    <name>AddSurfacesCommand</name>
+    <message>
+        <location filename="../model/document/commands/add_surfaces_command.cpp" line="19"/>
+        <source>There is no surface to add.</source>
+        <translation>追加する曲面がありません。</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/add_surfaces_command.cpp" line="24"/>
+        <source>A surface to add is not valid.</source>
+        <translation>追加する曲面が有効ではありません。</translation>
+    </message>
+</context>
+<context>
     <name>ApplySurfaceCommand</name>
     <message>
         <location filename="../model/document/commands/apply_surface_command.cpp" line="20"/>
@@ -1211,6 +1224,223 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::ApproximateDialog</name>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="29"/>
+        <source>Approximate Reference Shape</source>
+        <translation>参照形状を近似</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/approximate_dialog.cpp" line="36"/>
+        <source>%1 (%n point(s))</source>
+        <translation>
+            <numerusform>%1 (%n 点)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="40"/>
+        <source>Reference &amp;shape:</source>
+        <translation>参照形状(&amp;S):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="44"/>
+        <source>&amp;New flat strips:</source>
+        <translation>新しい平らなストリップ(&amp;N):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="46"/>
+        <source>Fit flat strips to as many patches of the shape (k-means clusters) and add them to the design.</source>
+        <translation>形状の同数の領域 (k-means クラスタ) に平らなストリップを当てはめ、デザインに追加します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="56"/>
+        <source>The &amp;design&apos;s surfaces</source>
+        <translation>デザインの曲面(&amp;D)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="58"/>
+        <source>Pull the surfaces of the design towards the shape; each is pulled by the points nearest to it.</source>
+        <translation>デザインの曲面を形状へ引き寄せます。各曲面はそれに最も近い点に引かれます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="65"/>
+        <source>The design has no surface yet.</source>
+        <translation>デザインにはまだ曲面がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="71"/>
+        <source>Start from:</source>
+        <translation>開始:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="77"/>
+        <source>Spline intervals along each new strip: more follow finer detail and take longer.</source>
+        <translation>新しい各ストリップに沿ったスプライン区間: 多いほど細部に追従しますが時間がかかります。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="79"/>
+        <source>&amp;Intervals per strip:</source>
+        <translation>ストリップごとの区間(&amp;I):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="89"/>
+        <source>Iterations of the pull towards the shape; a few more follow in which the pull fades.</source>
+        <translation>形状へ引き寄せる反復回数。その後、引力が弱まる反復が数回続きます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="91"/>
+        <source>I&amp;terations:</source>
+        <translation>反復回数(&amp;T):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="95"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="96"/>
+        <source>Thinning radius ρ: the shape is thinned to points at least ρ apart, each with the normal of the points around it.</source>
+        <translation>間引き半径 ρ: 形状を互いに ρ 以上離れた点に間引き、各点に周囲の点の法線を付けます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="98"/>
+        <source>Thinning radius &amp;ρ:</source>
+        <translation>間引き半径 ρ(&amp;R):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="107"/>
+        <source>&amp;Approximate</source>
+        <translation>近似(&amp;A)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="133"/>
+        <source>Default: %1 % of the shape&apos;s bounding-box diagonal (%2), or more where its points are sparse.</source>
+        <translation>既定値: 形状のバウンディングボックス対角線 (%2) の %1 %、点がまばらな場合はそれ以上。</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::ApproximateReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="47"/>
+        <source>Approximate Reference Shape</source>
+        <translation>参照形状を近似</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="82"/>
+        <source>Fit developable strips to a reference shape: import one first (File ▸ Import Reference Shape…).</source>
+        <translation>参照形状に可展ストリップを当てはめます: まず読み込んでください (ファイル ▸ 参照形状をインポート…)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="84"/>
+        <source>Fit developable strips to a reference shape: wait until the solver has finished, or cancel it (Esc).</source>
+        <translation>参照形状に可展ストリップを当てはめます: ソルバーの終了を待つか、中止してください (Esc)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="86"/>
+        <source>Fit developable strips to a reference shape, or pull the design&apos;s surfaces towards it; one undo step.</source>
+        <translation>参照形状に可展ストリップを当てはめるか、デザインの曲面をそれへ引き寄せます。元に戻す操作は 1 回です。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="120"/>
+        <source>Preparing the approximation: thinning the reference shape and placing the strips…</source>
+        <translation>近似を準備中: 参照形状を間引いてストリップを配置しています…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="147"/>
+        <source>Approximation cancelled; the design is unchanged.</source>
+        <translation>近似を中止しました。デザインは変更されていません。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="162"/>
+        <source>Thinning the reference shape with radius %1 kept %n point(s), too few for the strips asked for; choose a smaller radius or fewer strips.</source>
+        <translation>
+            <numerusform>半径 %1 で参照形状を間引いた結果 %n 点しか残らず、指定したストリップ数には足りません。半径を小さくするか、ストリップを減らしてください。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="168"/>
+        <source>The points of the reference shape lie on a line; no strip can be fitted to them.</source>
+        <translation>参照形状の点が一直線上にあるため、ストリップを当てはめられません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="172"/>
+        <source>No surface of the design is near enough to the reference shape to be pulled towards it; start from new strips instead.</source>
+        <translation>参照形状へ引き寄せられるほど近いデザインの曲面がありません。代わりに新しいストリップから始めてください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="153"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="176"/>
+        <source>Cannot approximate the reference shape</source>
+        <translation>参照形状を近似できません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="151"/>
+        <source>The approximation could not be set up: %1</source>
+        <translation>近似を準備できませんでした: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="181"/>
+        <source>Approximation discarded: the design changed meanwhile; it is unchanged.</source>
+        <translation>近似を破棄しました: その間にデザインが変更されました。デザインは変更されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="195"/>
+        <source>Measuring the distance of the result to the reference shape…</source>
+        <translation>結果と参照形状の距離を測定中…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="230"/>
+        <source>%1 failed: %2 The design is unchanged.</source>
+        <translation>%1 に失敗しました: %2 デザインは変更されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="270"/>
+        <source>largest constraint residual %1, within the tolerance</source>
+        <translation>最大の制約残差 %1、許容範囲内</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="271"/>
+        <source>largest constraint residual %1, not within the tolerance (Tools ▸ Solve may help)</source>
+        <translation>最大の制約残差 %1、許容範囲外 (ツール ▸ ソルブが役立つ場合があります)</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="277"/>
+        <source>the reference shape is %1 from the %n surface(s) on average, %2 at most</source>
+        <translation>
+            <numerusform>参照形状と %n 個の曲面の距離は平均 %1、最大 %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="281"/>
+        <source>Approximated: %1; %2.</source>
+        <translation>近似しました: %1。%2。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="282"/>
+        <source>Afterwards %1.</source>
+        <translation>近似後: %1。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="284"/>
+        <source>Approximated with %n surface(s): %1.</source>
+        <translation>
+            <numerusform>%n 個の曲面で近似しました: %1。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="287"/>
+        <source>%n surface(s) too far from the shape were left as they were.</source>
+        <translation>
+            <numerusform>形状から遠すぎる %n 個の曲面はそのままです。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="294"/>
+        <source>Set up in %1 s, solved in %2 s, measured in %3 s.</source>
+        <translation>準備 %1 秒、求解 %2 秒、測定 %3 秒。</translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::BackgroundRead</name>
     <message>
         <location filename="../app/gui/reactions/background_read.cpp" line="28"/>
@@ -1365,95 +1595,95 @@
 <context>
     <name>devsurf::app::DistanceReportDialog</name>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="28"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="26"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="34"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="31"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="40"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="41"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="50"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="51"/>
         <source>Mean</source>
         <translation>平均</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="51"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="52"/>
         <source>95th percentile</source>
         <translation>95 パーセンタイル</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="52"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="53"/>
         <source>Largest</source>
         <translation>最大</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="53"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="54"/>
         <source>Reference shape → design</source>
         <translation>参照形状 → デザイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="54"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="55"/>
         <source>Design → reference shape</source>
         <translation>デザイン → 参照形状</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="81"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="82"/>
         <source>Distance to Reference</source>
         <translation>参照形状までの距離</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="148"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="149"/>
         <source>The project has no reference shape; import one with File ▸ Import Reference Shape….</source>
         <translation>プロジェクトに参照形状がありません。ファイル ▸ 参照形状を読み込む… で読み込んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="150"/>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="156"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="151"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="157"/>
         <source>The design has no surface to measure.</source>
         <translation>デザインに計測する曲面がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="152"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="153"/>
         <source>Measuring the distance between the design and the reference shapes…</source>
         <translation>デザインと参照形状の距離を計測しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="154"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="155"/>
         <source>A surface of the design is not valid; solve or undo, then measure again.</source>
         <translation>デザインの曲面が有効ではありません。ソルブするか元に戻してから、もう一度計測してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="158"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="159"/>
         <source>The design changed: measuring again. The figures below are out of date.</source>
         <translation>デザインが変更されました。計測し直しています。下の数値は古いものです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="161"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="162"/>
         <source>Measured in %1 s.</source>
         <translation>%1 秒で計測しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="185"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="186"/>
         <source>Reference shape %1</source>
         <translation>参照形状 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/distance_report_dialog.cpp" line="192"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="193"/>
         <source>Coverage: %1 of the %n point(s) lie within %2 of the design.</source>
         <translation>
             <numerusform>被覆率: %n 点のうち %1 がデザインから %2 以内にあります。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/distance_report_dialog.cpp" line="202"/>
+        <location filename="../app/gui/distance_report_dialog.cpp" line="203"/>
         <source>Two-sided (Hausdorff) distance %1; bounding-box diagonal %2; the design sampled every %3.</source>
         <translation>両側 (ハウスドルフ) 距離 %1、バウンディングボックスの対角線 %2、デザインのサンプル間隔 %3。</translation>
     </message>
@@ -1911,404 +2141,409 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="123"/>
+        <location filename="../app/gui/main_window.cpp" line="124"/>
         <source>Patches</source>
         <translation>パッチ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="129"/>
+        <location filename="../app/gui/main_window.cpp" line="130"/>
         <source>Properties</source>
         <translation>プロパティ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="135"/>
+        <location filename="../app/gui/main_window.cpp" line="136"/>
         <source>Pins</source>
         <translation>固定点</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="145"/>
+        <location filename="../app/gui/main_window.cpp" line="146"/>
         <source>Solver</source>
         <translation>ソルバー</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="165"/>
+        <location filename="../app/gui/main_window.cpp" line="166"/>
         <source>Main</source>
         <translation>メイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="172"/>
+        <location filename="../app/gui/main_window.cpp" line="173"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="174"/>
+        <location filename="../app/gui/main_window.cpp" line="175"/>
         <source>&amp;New from Example…</source>
         <translation>例から新規作成(&amp;N)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="176"/>
+        <location filename="../app/gui/main_window.cpp" line="177"/>
         <source>&amp;Open…</source>
         <translation>開く(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="178"/>
+        <location filename="../app/gui/main_window.cpp" line="179"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="182"/>
+        <location filename="../app/gui/main_window.cpp" line="183"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="185"/>
+        <location filename="../app/gui/main_window.cpp" line="186"/>
         <source>Save &amp;As…</source>
         <translation>名前を付けて保存(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="189"/>
+        <location filename="../app/gui/main_window.cpp" line="190"/>
         <source>Import &amp;Curves…</source>
         <translation>曲線を読み込む(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="191"/>
+        <location filename="../app/gui/main_window.cpp" line="192"/>
         <source>Add the curves of a DXF, SVG, STEP or IGES file as reference curves</source>
         <translation>DXF、SVG、STEP または IGES ファイルの曲線を参照曲線として加えます</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="194"/>
+        <location filename="../app/gui/main_window.cpp" line="195"/>
         <source>Import Reference S&amp;hape…</source>
         <translation>参照形状を読み込む(&amp;H)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="195"/>
+        <location filename="../app/gui/main_window.cpp" line="196"/>
         <source>Add a mesh (OBJ, PLY, STL, OFF) or a point cloud (XYZ, PTS) the design is to follow, as a reference shape</source>
         <translation>デザインが従うべきメッシュ (OBJ、PLY、STL、OFF) または点群 (XYZ、PTS) を参照形状として追加</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="199"/>
+        <location filename="../app/gui/main_window.cpp" line="200"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>交換用 JSON をエクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="199"/>
+        <location filename="../app/gui/main_window.cpp" line="200"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="202"/>
+        <location filename="../app/gui/main_window.cpp" line="203"/>
         <source>Export &amp;3D Shape…</source>
         <translation>3D 形状をエクスポート(&amp;3)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="206"/>
+        <location filename="../app/gui/main_window.cpp" line="207"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="210"/>
+        <location filename="../app/gui/main_window.cpp" line="211"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="213"/>
+        <location filename="../app/gui/main_window.cpp" line="214"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="216"/>
+        <location filename="../app/gui/main_window.cpp" line="217"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="223"/>
+        <location filename="../app/gui/main_window.cpp" line="224"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="226"/>
+        <location filename="../app/gui/main_window.cpp" line="227"/>
         <source>Remove Reference &amp;Curves</source>
         <translation>参照曲線を削除(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="229"/>
+        <location filename="../app/gui/main_window.cpp" line="230"/>
         <source>Remove Reference S&amp;hapes</source>
         <translation>参照形状を削除(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="231"/>
+        <location filename="../app/gui/main_window.cpp" line="232"/>
         <source>Select &amp;None</source>
         <translation>選択を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="232"/>
+        <location filename="../app/gui/main_window.cpp" line="233"/>
         <location filename="../app/gui/main_window_solver.cpp" line="128"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="236"/>
+        <location filename="../app/gui/main_window.cpp" line="237"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="238"/>
+        <location filename="../app/gui/main_window.cpp" line="239"/>
         <source>&amp;3D View</source>
         <translation>3D ビュー(&amp;3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="238"/>
+        <location filename="../app/gui/main_window.cpp" line="239"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="240"/>
+        <location filename="../app/gui/main_window.cpp" line="241"/>
         <source>&amp;Development View</source>
         <translation>展開図ビュー(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="240"/>
+        <location filename="../app/gui/main_window.cpp" line="241"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="241"/>
+        <location filename="../app/gui/main_window.cpp" line="242"/>
         <source>3D &amp;and Development</source>
         <translation>3D と展開図(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="242"/>
+        <location filename="../app/gui/main_window.cpp" line="243"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="246"/>
+        <location filename="../app/gui/main_window.cpp" line="247"/>
         <source>&amp;Control Polygons</source>
         <translation>制御多角形(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="246"/>
+        <location filename="../app/gui/main_window.cpp" line="247"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="247"/>
+        <location filename="../app/gui/main_window.cpp" line="248"/>
         <source>&amp;Vertices</source>
         <translation>頂点(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="248"/>
+        <location filename="../app/gui/main_window.cpp" line="249"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="251"/>
+        <location filename="../app/gui/main_window.cpp" line="252"/>
         <source>S&amp;heet Outline</source>
         <translation>シートの輪郭(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="254"/>
+        <location filename="../app/gui/main_window.cpp" line="255"/>
         <source>Draw the sheet a held development is confined to behind it in the development view (Tools ▸ Sheet Shape…).</source>
         <translation>保持した展開図を収めるシートを展開図ビューで展開図の後ろに描きます (ツール ▸ シートの形…)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="264"/>
+        <location filename="../app/gui/main_window.cpp" line="265"/>
         <source>&amp;Reference Shapes</source>
         <translation>参照形状(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="267"/>
+        <location filename="../app/gui/main_window.cpp" line="268"/>
         <source>Draw the imported meshes and point clouds in the 3D view (File ▸ Import Reference Shape…).</source>
         <translation>読み込んだメッシュと点群を 3D ビューに描く (ファイル ▸ 参照形状を読み込む…)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="278"/>
+        <location filename="../app/gui/main_window.cpp" line="279"/>
         <source>Colour Reference by Dis&amp;tance</source>
         <translation>参照形状を距離で色分け(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="340"/>
+        <location filename="../app/gui/main_window.cpp" line="341"/>
         <source>Dis&amp;tance to Reference…</source>
         <translation>参照形状までの距離(&amp;T)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="282"/>
+        <location filename="../app/gui/main_window.cpp" line="283"/>
         <source>Colour the points of the reference shapes by their distance to the design, in mm, with a legend (green: within the coverage tolerance of Tools ▸ Distance to Reference…).</source>
         <translation>参照形状の点をデザインまでの距離 (mm) で色分けし、凡例を表示します (緑: ツール ▸ 参照形状までの距離… の被覆許容差以内)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="293"/>
+        <location filename="../app/gui/main_window.cpp" line="294"/>
         <source>&amp;Fit All</source>
         <translation>全体を表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="293"/>
+        <location filename="../app/gui/main_window.cpp" line="294"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="299"/>
+        <location filename="../app/gui/main_window.cpp" line="300"/>
         <source>Reset &amp;Layout</source>
         <translation>レイアウトをリセット(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="304"/>
+        <location filename="../app/gui/main_window.cpp" line="305"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="307"/>
+        <location filename="../app/gui/main_window.cpp" line="308"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>辺のラベルを変更 (R ↔ S)(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="307"/>
+        <location filename="../app/gui/main_window.cpp" line="308"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="309"/>
+        <location filename="../app/gui/main_window.cpp" line="310"/>
         <source>Add &amp;Crease…</source>
         <translation>折り線を追加(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="310"/>
+        <location filename="../app/gui/main_window.cpp" line="311"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="312"/>
+        <location filename="../app/gui/main_window.cpp" line="313"/>
         <source>Add R&amp;uling…</source>
         <translation>母線を追加(&amp;U)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="313"/>
+        <location filename="../app/gui/main_window.cpp" line="314"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="315"/>
+        <location filename="../app/gui/main_window.cpp" line="316"/>
         <source>Re&amp;fine Curves</source>
         <translation>曲線を細分化(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="316"/>
+        <location filename="../app/gui/main_window.cpp" line="317"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="322"/>
+        <location filename="../app/gui/main_window.cpp" line="323"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>頂点の移動・回転(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="322"/>
+        <location filename="../app/gui/main_window.cpp" line="323"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="325"/>
+        <location filename="../app/gui/main_window.cpp" line="326"/>
         <source>&amp;Pin Vertices</source>
         <translation>頂点を固定(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="326"/>
+        <location filename="../app/gui/main_window.cpp" line="327"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="328"/>
+        <location filename="../app/gui/main_window.cpp" line="329"/>
         <source>U&amp;npin Vertices</source>
         <translation>頂点の固定を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="329"/>
+        <location filename="../app/gui/main_window.cpp" line="330"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="332"/>
+        <location filename="../app/gui/main_window.cpp" line="333"/>
         <source>Hold the &amp;Sheet</source>
         <translation>シートを保持(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="333"/>
+        <location filename="../app/gui/main_window.cpp" line="334"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="336"/>
+        <location filename="../app/gui/main_window.cpp" line="337"/>
         <source>Sheet S&amp;hape…</source>
         <translation>シートの形(&amp;H)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="369"/>
+        <location filename="../app/gui/main_window.cpp" line="344"/>
+        <source>A&amp;pproximate Reference Shape…</source>
+        <translation>参照形状を近似(&amp;P)…</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="373"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="370"/>
+        <location filename="../app/gui/main_window.cpp" line="374"/>
         <source>&amp;User Manual</source>
         <translation>ユーザーマニュアル(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="377"/>
+        <location filename="../app/gui/main_window.cpp" line="381"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="383"/>
+        <location filename="../app/gui/main_window.cpp" line="387"/>
         <source>&amp;About DevSurf</source>
         <translation>DevSurf について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="385"/>
+        <location filename="../app/gui/main_window.cpp" line="389"/>
         <source>About DevSurf</source>
         <translation>DevSurf について</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="386"/>
+        <location filename="../app/gui/main_window.cpp" line="390"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;スプライン可展面による可展面と曲線折り折り紙の設計 (Tang, Bo, Wallner, Pottmann 2015)。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="431"/>
+        <location filename="../app/gui/main_window.cpp" line="435"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="453"/>
+        <location filename="../app/gui/main_window.cpp" line="457"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="454"/>
+        <location filename="../app/gui/main_window.cpp" line="458"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="468"/>
+        <location filename="../app/gui/main_window.cpp" line="472"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>曲面 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="469"/>
+        <location filename="../app/gui/main_window.cpp" line="473"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="470"/>
+        <location filename="../app/gui/main_window.cpp" line="474"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="471"/>
+        <location filename="../app/gui/main_window.cpp" line="475"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n 個選択</numerusform>
@@ -3850,278 +4085,298 @@
         <translation>ソルブする対象がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="117"/>
+        <location filename="../app/gui/solve_controller.cpp" line="118"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: ソルブするものがありません。何も変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="153"/>
+        <location filename="../app/gui/solve_controller.cpp" line="192"/>
+        <source>%1 cancelled; the design is unchanged.</source>
+        <translation>%1 を中止しました。デザインは変更されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="193"/>
+        <source>%1 cancelled: %2; the design is unchanged.</source>
+        <translation>%1 を中止しました: %2。デザインは変更されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="196"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 を取り消しました。何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="154"/>
+        <location filename="../app/gui/solve_controller.cpp" line="197"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 を取り消しました: %2。何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="156"/>
+        <location filename="../app/gui/solve_controller.cpp" line="199"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>ソルブを中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="157"/>
+        <location filename="../app/gui/solve_controller.cpp" line="200"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>ソルブを中止しました: %1。デザインは変更されていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="163"/>
+        <location filename="../app/gui/solve_controller.cpp" line="206"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>形状を確認してください: %n 個のパッチが自身の上に折り返されています (%1)。元に戻すか、固定や移動の仕方を変えてください。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="170"/>
+        <location filename="../app/gui/solve_controller.cpp" line="213"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>形状を確認してください: 展開図が %n 個のパッチで自身と重なっています (%1)。元に戻すか、固定や移動の仕方を変えてください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="179"/>
+        <location filename="../app/gui/solve_controller.cpp" line="223"/>
+        <source>%1 failed: %2 The design is unchanged.</source>
+        <translation>%1 に失敗しました: %2 デザインは変更されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="225"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 に失敗しました: %2 何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="208"/>
+        <location filename="../app/gui/solve_controller.cpp" line="254"/>
         <source>the design changed</source>
         <translation>デザインが変更されました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="215"/>
+        <location filename="../app/gui/solve_controller.cpp" line="261"/>
         <source>it stopped before a degenerate shape</source>
         <translation>退化した形の手前で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="218"/>
+        <location filename="../app/gui/solve_controller.cpp" line="264"/>
         <source>no convergence, residual %1</source>
         <translation>収束せず、残差 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="221"/>
+        <location filename="../app/gui/solve_controller.cpp" line="267"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>%n 箇所で折り返し</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="224"/>
+        <location filename="../app/gui/solve_controller.cpp" line="270"/>
         <source>a development overlapping itself</source>
         <translation>展開図が自身と重なる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="227"/>
+        <location filename="../app/gui/solve_controller.cpp" line="273"/>
         <source>collapsed strips</source>
         <translation>帯がつぶれる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="230"/>
+        <location filename="../app/gui/solve_controller.cpp" line="276"/>
         <source>a shape too degenerate to measure</source>
         <translation>測定できないほど退化した形</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="254"/>
+        <location filename="../app/gui/solve_controller.cpp" line="300"/>
         <source>Surface %1</source>
         <translation>曲面 %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="259"/>
+        <location filename="../app/gui/solve_controller.cpp" line="305"/>
         <source>The solve was cancelled.</source>
         <translation>ソルブを中止しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="262"/>
+        <location filename="../app/gui/solve_controller.cpp" line="308"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 は解けません: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="263"/>
+        <location filename="../app/gui/solve_controller.cpp" line="309"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 は解けません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="267"/>
+        <location filename="../app/gui/solve_controller.cpp" line="313"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>頂点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="268"/>
+        <location filename="../app/gui/solve_controller.cpp" line="314"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>辺 %2 の制御点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="274"/>
+        <location filename="../app/gui/solve_controller.cpp" line="320"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 を解けませんでした: 連立一次方程式を分解できませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="276"/>
+        <location filename="../app/gui/solve_controller.cpp" line="322"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 を解けませんでした: 反復で有限でない値が生じました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="280"/>
+        <location filename="../app/gui/solve_controller.cpp" line="326"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 を解けませんでした: ソルバーが有限でない値を出しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="286"/>
+        <location filename="../app/gui/solve_controller.cpp" line="332"/>
         <source>(Solver: %1)</source>
         <translation>(ソルバー: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="301"/>
+        <location filename="../app/gui/solve_controller.cpp" line="347"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="305"/>
+        <location filename="../app/gui/solve_controller.cpp" line="351"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="319"/>
+        <location filename="../app/gui/solve_controller.cpp" line="365"/>
         <source>converged</source>
         <translation>収束</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="323"/>
+        <location filename="../app/gui/solve_controller.cpp" line="369"/>
         <source>tolerance reached</source>
         <translation>許容値に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="323"/>
+        <location filename="../app/gui/solve_controller.cpp" line="369"/>
         <source>iteration limit reached</source>
         <translation>反復回数の上限に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="330"/>
+        <location filename="../app/gui/solve_controller.cpp" line="376"/>
         <source>failed</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="338"/>
+        <location filename="../app/gui/solve_controller.cpp" line="384"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>。ソルブで可展性が悪化したため元のままにしました (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="344"/>
+        <location filename="../app/gui/solve_controller.cpp" line="390"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; 長さを保てなかったため (%1)、シートの伸びを許してドラッグをやり直しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="352"/>
+        <location filename="../app/gui/solve_controller.cpp" line="398"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; シートにより %1 mm 手前で止まりました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="364"/>
+        <location filename="../app/gui/solve_controller.cpp" line="410"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n 個のパッチが自身の上に折り返され、曲面が自己重複しています: %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="379"/>
+        <location filename="../app/gui/solve_controller.cpp" line="425"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; 展開図が %n 個のパッチで自身と重なっており (%1)、1 枚のシートから切り出せません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="385"/>
+        <location filename="../app/gui/solve_controller.cpp" line="431"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="390"/>
+        <location filename="../app/gui/solve_controller.cpp" line="436"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="395"/>
+        <location filename="../app/gui/solve_controller.cpp" line="441"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="404"/>
+        <location filename="../app/gui/solve_controller.cpp" line="450"/>
         <source>Solve</source>
         <translation>ソルブ</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="454"/>
+        <location filename="../app/gui/solve_controller.cpp" line="468"/>
+        <source>%1 discarded: the design changed meanwhile; it is unchanged.</source>
+        <translation>%1 を破棄しました: その間にデザインが変更されました。デザインは変更されていません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="509"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>ソルブはデザインを元のままにしました。ソルブで可展性が悪化したためです (最大の可展性残差 %1 → %2)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="478"/>
+        <location filename="../app/gui/solve_controller.cpp" line="533"/>
         <source>%1. %2</source>
         <comment>a verdict, then a sentence</comment>
         <translation>%1。%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="482"/>
+        <location filename="../app/gui/solve_controller.cpp" line="537"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n 個のサーフェスを元のままにしました。ソルブで可展性が悪化したためです。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="494"/>
+        <location filename="../app/gui/solve_controller.cpp" line="549"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 を破棄しました: ソルブ中にデザインが変更されました。何も動いていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="503"/>
+        <location filename="../app/gui/solve_controller.cpp" line="558"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1、可展を維持: %n 回反復、最大の制約残差 %2。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="180"/>
-        <location filename="../app/gui/solve_controller.cpp" line="446"/>
+        <location filename="../app/gui/solve_controller.cpp" line="226"/>
+        <location filename="../app/gui/solve_controller.cpp" line="501"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>ソルブに失敗しました: %1 デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="237"/>
+        <location filename="../app/gui/solve_controller.cpp" line="283"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2 と %3 を結ぶ直線上にあり、この 2 点の距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="244"/>
+        <location filename="../app/gui/solve_controller.cpp" line="290"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2、%3、%4 の三角形の内側にあり、これらの距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="326"/>
+        <location filename="../app/gui/solve_controller.cpp" line="372"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>母線、曲線またはパッチがつぶれる前の最後の有効な状態で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="334"/>
+        <location filename="../app/gui/solve_controller.cpp" line="380"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (残差が最小の反復 %1 で終了)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="423"/>
+        <location filename="../app/gui/solve_controller.cpp" line="478"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>ソルブ中にデザインが変更されたため、結果を破棄しました。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="475"/>
+        <location filename="../app/gui/solve_controller.cpp" line="530"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>ソルブ完了: %n 回反復、制約残差の最大値 %1。</numerusform>

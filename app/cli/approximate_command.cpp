@@ -5,15 +5,11 @@
 #include "io/output_file.h"
 #include "io/project_file.h"
 #include "io/reference/reference_import.h"
-#include "model/reference/bounding_box.h"
 #include "model/reference/distance_report.h"
-#include "model/reference/initial_strip.h"
-#include "model/reference/point_index.h"
-#include "model/reference/surface_samples.h"
-#include "model/reference/thinning.h"
 #include "outcome_text.h"
 #include "reference_commands.h"
 #include "solver/quality/quality_measures.h"
+#include "solver/session/approximation_setup.h"
 #include "solver/session/solve_job.h"
 
 #include <QString>
@@ -24,41 +20,6 @@
 #include <memory>
 
 namespace devsurf::app {
-
-namespace {
-
-// The thinning radius when none is given: 2 % of the target's bounding-box diagonal, so that a
-// strip of a few spline intervals is pulled by tens to hundreds of points, or more where the
-// target is so sparse that a ball of that radius holds too few points to fit a plane to
-// (defaultThinningRadius).
-constexpr double kDefaultRhoPercent = 2.0;
-
-// The falloff of the pull with distance (ApproximationTarget::falloff), in thinning radii.
-constexpr double kFalloffRhos = 3.0;
-
-struct Targets {
-    std::vector<std::vector<model::Vec3>> points; // per surface
-    std::vector<std::vector<model::Vec3>> normals;
-};
-
-// Every thinned point to the surface nearest to it (its nearest dense sample).
-Targets assignToSurfaces(const std::vector<model::CompositeSurface>& surfaces,
-                         const model::reference::ThinningResult& thinned) {
-    const model::reference::SurfaceSamples samples = model::reference::sampleDensely(surfaces, 8);
-    const model::reference::PointIndex index(samples.positions);
-    Targets targets;
-    targets.points.resize(surfaces.size());
-    targets.normals.resize(surfaces.size());
-    for (const model::reference::ThinnedPoint& p : thinned.points) {
-        const std::size_t sample = index.nearest(p.position).index;
-        const std::size_t s = samples.pieces[samples.piece[sample]].surface;
-        targets.points[s].push_back(p.position);
-        targets.normals[s].push_back(p.normal);
-    }
-    return targets;
-}
-
-} // namespace
 
 int runApproximateCommand(const SubcommandArguments& args) {
     const std::string target = args.positionals(1, "a mesh or point cloud file").front();
@@ -97,13 +58,11 @@ int runApproximateCommand(const SubcommandArguments& args) {
         return 2;
     }
     const std::vector<model::Vec3>& points = read.shape.points;
-    const double diagonal = model::reference::boundingBoxDiagonal(points);
-    if (rho == 0.0) {
-        rho = std::max(kDefaultRhoPercent / 100.0 * diagonal,
-                       model::reference::defaultThinningRadius(points));
-    }
-    const model::reference::ThinningResult thinned = model::reference::thinReference(points, rho);
-    if (thinned.points.size() < 3 * static_cast<std::size_t>(strips)) {
+    const solver::ThinnedTarget thinnedTarget = solver::thinTarget(points, rho);
+    const model::reference::ThinningResult& thinned = thinnedTarget.thinned;
+    const double diagonal = thinnedTarget.diagonal;
+    rho = thinnedTarget.rho;
+    if (!solver::enoughPointsFor(thinnedTarget, strips)) {
         throw InputError("thinning '" + target + "' with radius " +
                          QString::number(rho, 'g', 6).toStdString() + " mm kept " +
                          std::to_string(thinned.points.size()) + " points, too few for " +
@@ -117,24 +76,8 @@ int runApproximateCommand(const SubcommandArguments& args) {
 
     if (!from) {
         // K clusters of the thinned points (k-means), one PCA strip each.
-        std::vector<model::Vec3> positions;
-        for (const model::reference::ThinnedPoint& p : thinned.points) {
-            positions.push_back(p.position);
-        }
-        const model::SplineSpace space{3, 2, intervals};
-        for (const std::vector<std::size_t>& cluster :
-             model::reference::clusterPoints(positions, strips)) {
-            std::vector<model::Vec3> patch;
-            for (std::size_t i : cluster) {
-                patch.push_back(positions[i]);
-            }
-            model::CompositeSurface strip;
-            try {
-                strip = model::reference::initialStrip(patch, space);
-            } catch (const std::invalid_argument&) {
-                continue; // a cluster on a line or of fewer than 3 points: no strip
-            }
-            strip.setName("strip " + std::to_string(project.surfaces.size() + 1));
+        for (model::CompositeSurface& strip :
+             solver::initialStrips(thinnedTarget, strips, intervals)) {
             project.addSurface(std::move(strip));
         }
         if (project.surfaces.empty()) {
@@ -142,23 +85,9 @@ int runApproximateCommand(const SubcommandArguments& args) {
                              "' lie on a line; no strip can be fitted to them.");
         }
     }
-    const Targets targets = assignToSurfaces(project.surfaces, thinned);
-
-    solver::JobRequest request;
-    request.kind = solver::JobKind::Approximate;
-    request.iterations = iterations;
-    request.surfaces = project.surfaces;
-    for (std::size_t s = 0; s < project.surfaces.size(); ++s) {
-        if (targets.points[s].size() < 3) {
-            continue; // too far from the target to be pulled: stays as it is
-        }
-        auto t = std::make_shared<solver::ApproximationTarget>();
-        t->points = targets.points[s];
-        t->normals = targets.normals[s];
-        t->borderReach = rho;
-        t->falloff = kFalloffRhos * rho;
-        request.targets[static_cast<int>(s)] = std::move(t);
-    }
+    const solver::SurfaceTargets targets = solver::assignToSurfaces(project.surfaces, thinned);
+    const solver::JobRequest request =
+        solver::approximationRequest(project.surfaces, targets, rho, iterations);
     int surfaceShown = -1;
     auto progress = [&](const solver::JobProgress& step) {
         if (step.surface != surfaceShown) {

@@ -21,23 +21,24 @@ namespace devsurf::app {
 using model::reference::DistanceReport;
 using model::reference::OneSidedDistance;
 
-namespace {
-
 // Four significant digits, but whole millimetres from a metre on (no exponent for a building).
-QString millimetres(double value) {
-    return DistanceReportDialog::tr("%1 mm").arg(std::abs(value) >= 1000.0
-                                                     ? QLocale().toString(value, 'f', 0)
+QString DistanceReportDialog::millimetres(double value) {
+    return tr("%1 mm").arg(std::abs(value) >= 1000.0 ? QLocale().toString(value, 'f', 0)
                                                      : QLocale().toString(value, 'g', 4));
 }
 
-QString percent(double value) {
-    return DistanceReportDialog::tr("%1 %").arg(QLocale().toString(value, 'g', 3));
+QString DistanceReportDialog::percent(double value) {
+    return tr("%1 %").arg(QLocale().toString(value, 'g', 3));
 }
+
+namespace {
+
+using Dialog = DistanceReportDialog;
 
 // A cell "1.234 mm (0.56 %)" holding both values as data (tests read state, not words).
 QTableWidgetItem* cell(double mm, double pct) {
     auto* item = new QTableWidgetItem(
-        DistanceReportDialog::tr("%1 (%2)").arg(millimetres(mm), percent(pct)));
+        DistanceReportDialog::tr("%1 (%2)").arg(Dialog::millimetres(mm), Dialog::percent(pct)));
     item->setData(Qt::UserRole, mm);
     item->setData(Qt::UserRole + 1, pct);
     item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);

@@ -43,6 +43,10 @@ public:
     // diagonal as Qt::UserRole + 1.
     QTableWidget* table(int shape) const;
     bool isMeasuring() const;
+    // How the report words a length ("1.234 mm": four significant digits, whole millimetres
+    // from a metre on) and a percentage; the approximation's sentences word theirs alike.
+    static QString millimetres(double value);
+    static QString percent(double value);
 
 signals:
     // The figures shown changed (a measurement arrived or the design changed).

@@ -11,6 +11,7 @@
 #include "panels/pins_panel.h"
 #include "panels/properties_panel.h"
 #include "panels/solver_panel.h"
+#include "reactions/approximate_reaction.h"
 #include "reactions/crease_reactions.h"
 #include "reactions/curve_reactions.h"
 #include "reactions/edit_reactions.h"
@@ -339,6 +340,15 @@ void MainWindow::createMenus() {
     QAction* distance = addAction(tools, QStringLiteral("actionDistanceToReference"),
                                   tr("Dis&tance to Reference…"));
     new DistanceReportReaction(distance, m_workspace);
+    QAction* approximate = addAction(tools, QStringLiteral("actionApproximateReference"),
+                                     tr("A&pproximate Reference Shape…"));
+    auto* approximation = new ApproximateReaction(approximate, m_workspace, m_solveController);
+    // New strips unfold beside the sheets, out of the development view's frame: show them all.
+    connect(approximation, &ApproximateReaction::finished, m_developmentView, [this](bool applied) {
+        if (applied) {
+            m_developmentView->fitAll();
+        }
+    });
     tools->addSeparator();
     const QList<QAction*> solverActions = createSolverActions(tools, selectNone);
     // A right click in either view offers what applies to the entity under the cursor.

@@ -102,6 +102,7 @@ void SolveController::solve() {
     m_revision = request.revision;
     m_ticket = request.ticket;
     m_editSurface = -1;
+    m_job = false;
     m_worker->submit(std::move(request));
     if (!m_solving) {
         m_solving = true;
@@ -141,6 +142,7 @@ void SolveController::solveEdit(int surfaceIndex, model::CompositeSurface edited
     m_ticket = request.ticket;
     m_editSurface = surfaceIndex;
     m_editTitle = title;
+    m_job = false;
     m_worker->submit(std::move(request));
     if (!m_solving) {
         m_solving = true;
@@ -148,7 +150,48 @@ void SolveController::solveEdit(int surfaceIndex, model::CompositeSurface edited
     }
 }
 
+quint64 SolveController::runJob(solver::JobRequest job, const QString& title) {
+    solver::SolveRequest request;
+    request.revision = m_workspace->document()->revision();
+    request.ticket = nextTicket();
+    request.job = std::move(job);
+    m_revision = request.revision;
+    m_ticket = request.ticket;
+    m_editSurface = -1;
+    m_editTitle = title;
+    m_job = true;
+    m_worker->submit(std::move(request));
+    if (!m_solving) {
+        m_solving = true;
+        emit busyChanged(true);
+    }
+    return m_ticket;
+}
+
+void SolveController::finishJob(Ending ending, const SolveReport& report, const QString& sentence,
+                                std::vector<std::unique_ptr<QUndoCommand>> commands) {
+    if (!m_solving || !m_job) {
+        return;
+    }
+    if (!commands.empty()) {
+        m_applying = true;
+        QUndoStack* stack = m_workspace->document()->undoStack();
+        stack->beginMacro(m_editTitle);
+        for (auto& command : commands) {
+            stack->push(command.release());
+        }
+        stack->endMacro();
+        m_applying = false;
+    }
+    stop(&report, ending, sentence);
+}
+
 QString SolveController::cancelledSentence(const QString& reason) const {
+    if (m_job) {
+        return reason.isEmpty()
+                   ? tr("%1 cancelled; the design is unchanged.").arg(m_editTitle)
+                   : tr("%1 cancelled: %2; the design is unchanged.").arg(m_editTitle, reason);
+    }
     if (m_editSurface >= 0) {
         return reason.isEmpty() ? tr("%1 cancelled; nothing moved.").arg(m_editTitle)
                                 : tr("%1 cancelled: %2; nothing moved.").arg(m_editTitle, reason);
@@ -176,6 +219,9 @@ QString SolveController::checkShapeSentence(const SolveReport& report) const {
 }
 
 QString SolveController::failedSentence(const QString& error) const {
+    if (m_job) {
+        return tr("%1 failed: %2 The design is unchanged.").arg(m_editTitle, error);
+    }
     return m_editSurface >= 0 ? tr("%1 failed: %2 Nothing moved.").arg(m_editTitle, error)
                               : tr("Solve failed: %1 The design is unchanged.").arg(error);
 }
@@ -439,7 +485,7 @@ void SolveController::onResult(const solver::SolveResult& result) {
     if (result.ticket != m_ticket || !m_solving || result.revision != m_revision) {
         return; // a drag's result, or one of a solve that was cancelled or superseded
     }
-    const QString title = m_editSurface >= 0 ? m_editTitle : tr("Solve");
+    const QString title = m_editSurface >= 0 || m_job ? m_editTitle : tr("Solve");
     const SolveReport report = reportOf(result, title);
     const solver::JobOutcome& outcome = result.outcome;
     if (outcome.cancelled()) {
@@ -452,6 +498,15 @@ void SolveController::onResult(const solver::SolveResult& result) {
     }
     if (m_editSurface >= 0) {
         applyEdit(result, report);
+        return;
+    }
+    if (m_job) {
+        if (m_workspace->document()->revision() != result.revision) {
+            stop(nullptr, Ending::Discarded,
+                 tr("%1 discarded: the design changed meanwhile; it is unchanged.").arg(title));
+            return;
+        }
+        emit jobDone(result); // still busy: the caller ends it with finishJob()
         return;
     }
     document::Document* doc = m_workspace->document();

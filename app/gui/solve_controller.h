@@ -7,14 +7,18 @@
 
 #include <QObject>
 #include <QString>
+#include <QUndoCommand>
 
 #include <map>
+#include <memory>
 #include <set>
+#include <vector>
 
 namespace devsurf::solver {
 class SolverWorker;
 struct SolveResult;
 struct JobFailure;
+struct JobRequest;
 } // namespace devsurf::solver
 
 namespace devsurf::app {
@@ -73,6 +77,18 @@ public:
     // status sentence: "; vertex 5 lies inside the triangle of the pinned vertices 0, 3 and 12,
     // …".
     static QString heldText(const model::HeldVertex& held);
+    // Runs a job whose result its caller applies (Tools ▸ Approximate Reference Shape…): busy,
+    // progress, Cancel and cancelling on any edit as for a solve, every sentence naming `title`.
+    // A successful outcome of the design as it still is goes to jobDone(); the controller stays
+    // busy (an edit still cancels) until the caller ends it with finishJob(). Returns the
+    // request's ticket.
+    quint64 runJob(solver::JobRequest job, const QString& title);
+    // The ticket of the running solve or job (0 when idle).
+    quint64 runningTicket() const { return m_solving ? m_ticket : 0; }
+    // Ends the job of runJob(): pushes `commands` as one undo step named by its title (none:
+    // no step), shows `report` in the Solver panel and says `sentence`.
+    void finishJob(Ending ending, const SolveReport& report, const QString& sentence,
+                   std::vector<std::unique_ptr<QUndoCommand>> commands = {});
 
 public slots:
     void solve();
@@ -92,6 +108,8 @@ signals:
     // A solve ended (applied, cancelled, failed or discarded): the sentence says which.
     void finished(const QString& sentence);
     void reportReady(const devsurf::app::SolveReport& report);
+    // runJob()'s outcome, not applied yet (see there).
+    void jobDone(const devsurf::solver::SolveResult& result);
 
 private:
     void onResult(const solver::SolveResult& result);
@@ -117,6 +135,8 @@ private:
     quint64 m_ticket = 0;
     int m_editSurface = -1;
     QString m_editTitle;
+    // A job of runJob() (its title is m_editTitle).
+    bool m_job = false;
     // The held vertices that the edit's snapshot pinned and its result must release.
     std::map<model::VertexId, model::Vec3> m_heldTargets;
 };

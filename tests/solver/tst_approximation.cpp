@@ -5,7 +5,7 @@
 #include "model/reference/distance_report.h"
 #include "model/reference/initial_strip.h"
 #include "model/reference/thinning.h"
-#include "model/strip.h"
+#include "sampled_developability.h"
 #include "solver/session/solve_job.h"
 #include "test_registry.h"
 
@@ -17,28 +17,9 @@
 
 using namespace devsurf;
 using model::Vec3;
+using test::sampledDevelopability;
 
 namespace {
-
-// The largest |det(a − b, a′, b′)| / (|a − b| |a′| |b′|) over every strip, 50 values per
-// interval (MATH.md §8), from the splines alone.
-double sampledDevelopability(const model::CompositeSurface& surface) {
-    double worst = 0.0;
-    for (const model::Strip& strip : model::stripsOf(surface)) {
-        const int intervals = static_cast<int>(strip.a.knots().size()) - 2 * strip.a.degree() - 1;
-        const int samples = 50 * std::max(1, intervals);
-        for (int i = 0; i <= samples; ++i) {
-            const double u = static_cast<double>(i) / samples;
-            const Vec3 ruling = strip.a.evaluate(u) - strip.b.evaluate(u);
-            const Vec3 da = strip.a.derivative(u, 1);
-            const Vec3 db = strip.b.derivative(u, 1);
-            const double scale = ruling.norm() * da.norm() * db.norm();
-            const double det = std::abs(dot(ruling, cross(da, db))) / scale;
-            worst = std::max(worst, det);
-        }
-    }
-    return worst;
-}
 
 // Points on a grid of the surface f over [0, 1]².
 std::vector<Vec3> sampleGrid(const std::function<Vec3(double, double)>& f, int nu, int nv) {

@@ -1,0 +1,147 @@
+#include "solver/session/approximation_setup.h"
+
+#include "model/reference/bounding_box.h"
+#include "model/reference/initial_strip.h"
+#include "model/reference/point_index.h"
+#include "model/reference/surface_samples.h"
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace devsurf::solver {
+
+double defaultApproximationRadius(const std::vector<model::Vec3>& points, double diagonal) {
+    return std::max(kDefaultRhoPercent / 100.0 * diagonal,
+                    model::reference::defaultThinningRadius(points));
+}
+
+ThinnedTarget thinTarget(const std::vector<model::Vec3>& points, double rho,
+                         const model::reference::ThinningProgress& progress) {
+    ThinnedTarget target;
+    target.diagonal = model::reference::boundingBoxDiagonal(points);
+    target.rho = rho > 0.0 ? rho : defaultApproximationRadius(points, target.diagonal);
+    target.thinned = model::reference::thinReference(points, target.rho, progress);
+    return target;
+}
+
+bool enoughPointsFor(const ThinnedTarget& target, int strips) {
+    return target.thinned.points.size() >= 3 * static_cast<std::size_t>(std::max(strips, 1));
+}
+
+std::vector<model::CompositeSurface> initialStrips(const ThinnedTarget& target, int count,
+                                                   int intervals, int firstNumber) {
+    std::vector<model::Vec3> positions;
+    positions.reserve(target.thinned.points.size());
+    for (const model::reference::ThinnedPoint& p : target.thinned.points) {
+        positions.push_back(p.position);
+    }
+    const model::SplineSpace space{3, 2, intervals};
+    std::vector<model::CompositeSurface> strips;
+    for (const std::vector<std::size_t>& cluster :
+         model::reference::clusterPoints(positions, count)) {
+        std::vector<model::Vec3> patch;
+        patch.reserve(cluster.size());
+        for (std::size_t i : cluster) {
+            patch.push_back(positions[i]);
+        }
+        model::CompositeSurface strip;
+        try {
+            strip = model::reference::initialStrip(patch, space);
+        } catch (const std::invalid_argument&) {
+            continue; // a cluster on a line or of fewer than 3 points: no strip
+        }
+        strip.setName("strip " + std::to_string(firstNumber + static_cast<int>(strips.size())));
+        strips.push_back(std::move(strip));
+    }
+    return strips;
+}
+
+SurfaceTargets assignToSurfaces(const std::vector<model::CompositeSurface>& surfaces,
+                                const model::reference::ThinningResult& thinned) {
+    const model::reference::SurfaceSamples samples = model::reference::sampleDensely(surfaces, 8);
+    const model::reference::PointIndex index(samples.positions);
+    SurfaceTargets targets;
+    targets.points.resize(surfaces.size());
+    targets.normals.resize(surfaces.size());
+    for (const model::reference::ThinnedPoint& p : thinned.points) {
+        const std::size_t sample = index.nearest(p.position).index;
+        const std::size_t s = samples.pieces[samples.piece[sample]].surface;
+        targets.points[s].push_back(p.position);
+        targets.normals[s].push_back(p.normal);
+    }
+    return targets;
+}
+
+JobRequest approximationRequest(const std::vector<model::CompositeSurface>& surfaces,
+                                const SurfaceTargets& targets, double rho,
+                                std::optional<int> iterations) {
+    JobRequest request;
+    request.kind = JobKind::Approximate;
+    request.iterations = iterations;
+    request.surfaces = surfaces;
+    for (std::size_t s = 0; s < surfaces.size() && s < targets.points.size(); ++s) {
+        if (targets.points[s].size() < kFewestTargetPoints) {
+            continue; // too far from the target to be pulled: stays as it is
+        }
+        auto t = std::make_shared<ApproximationTarget>();
+        t->points = targets.points[s];
+        t->normals = targets.normals[s];
+        t->borderReach = rho;
+        t->falloff = kFalloffRhos * rho;
+        request.targets[static_cast<int>(s)] = std::move(t);
+    }
+    return request;
+}
+
+ApproximationSetup prepareApproximation(const std::vector<model::Vec3>& points,
+                                        const std::vector<model::CompositeSurface>& start,
+                                        const ApproximationOptions& options,
+                                        const SetupProgress& progress, int firstNumber) {
+    const auto begin = std::chrono::steady_clock::now();
+    // The thinning is most of the setup's time: 90 % of the bar.
+    const auto report = [&progress](double fraction) { return !progress || progress(fraction); };
+    bool stop = false;
+    const auto cancelled = [&](double fraction) {
+        stop = stop || !report(fraction);
+        return stop;
+    };
+    ApproximationSetup setup;
+    setup.newStrips = start.empty();
+    const int strips = setup.newStrips ? options.strips : 1;
+    setup.target = thinTarget(points, options.rho, [&](std::size_t done, std::size_t total) {
+        return !cancelled(total > 0 ? 0.9 * static_cast<double>(done) / total : 0.0);
+    });
+    if (setup.target.thinned.cancelled || cancelled(0.9)) {
+        setup.error = ApproximationSetup::Error::Cancelled;
+        return setup;
+    }
+    if (!enoughPointsFor(setup.target, strips)) {
+        setup.error = ApproximationSetup::Error::TooFewPoints;
+        return setup;
+    }
+    setup.surfaces = setup.newStrips
+                         ? initialStrips(setup.target, strips, options.intervals, firstNumber)
+                         : start;
+    if (setup.surfaces.empty()) {
+        setup.error = ApproximationSetup::Error::Collinear;
+        return setup;
+    }
+    if (cancelled(0.95)) {
+        setup.error = ApproximationSetup::Error::Cancelled;
+        return setup;
+    }
+    setup.targets = assignToSurfaces(setup.surfaces, setup.target.thinned);
+    setup.request =
+        approximationRequest(setup.surfaces, setup.targets, setup.target.rho, options.iterations);
+    if (setup.request.targets.empty()) {
+        setup.error = ApproximationSetup::Error::NothingNear;
+    }
+    setup.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+    return setup;
+}
+
+} // namespace devsurf::solver

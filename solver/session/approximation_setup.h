@@ -1,0 +1,105 @@
+#pragma once
+
+#include "model/composite_surface.h"
+#include "model/reference/thinning.h"
+#include "model/vec3.h"
+#include "solver/session/solve_job.h"
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace devsurf::solver {
+
+// The setup of an approximation (§4.2) that `devsurf-cli approximate` and Tools ▸ Approximate
+// Reference Shape… share, so that both pull the same strips towards the same points: the
+// thinning radius, the thinning, the K-means flat strips, the points per surface and the
+// job's request. The steps are separate functions so that the command line can say what it
+// found between them; prepareApproximation() runs them all.
+
+// The thinning radius when none is given, in % of the target's bounding-box diagonal: a strip
+// of a few spline intervals is then pulled by tens to hundreds of points.
+inline constexpr double kDefaultRhoPercent = 2.0;
+
+// The falloff of the pull with distance (ApproximationTarget::falloff), in thinning radii.
+inline constexpr double kFalloffRhos = 3.0;
+
+// The default thinning radius of a target with this bounding-box diagonal: kDefaultRhoPercent
+// of it, or more where the target is so sparse that a ball of that radius holds too few points
+// to fit a plane to (model::reference::defaultThinningRadius).
+double defaultApproximationRadius(const std::vector<model::Vec3>& points, double diagonal);
+
+// The target thinned with radius ρ (rho ≤ 0: the default above).
+struct ThinnedTarget {
+    double diagonal = 0.0; // of the whole target's bounding box
+    double rho = 0.0;
+    model::reference::ThinningResult thinned;
+};
+ThinnedTarget thinTarget(const std::vector<model::Vec3>& points, double rho,
+                         const model::reference::ThinningProgress& progress = {});
+
+// Whether `thinned` keeps enough points for `strips` strips (3 each).
+bool enoughPointsFor(const ThinnedTarget& target, int strips);
+
+// `count` flat strips with `intervals` spline intervals (cubic, degree-2 rulings space), one on
+// each K-means cluster of the thinned points (model::reference::clusterPoints, initialStrip),
+// named "strip N" from N = firstNumber. A cluster on a line gets no strip, so fewer may come
+// back (none if every point lies on one line). Requires enoughPointsFor(target, count).
+std::vector<model::CompositeSurface> initialStrips(const ThinnedTarget& target, int count,
+                                                   int intervals, int firstNumber = 1);
+
+// Every thinned point goes to the surface nearest to it (its nearest dense sample).
+struct SurfaceTargets {
+    std::vector<std::vector<model::Vec3>> points; // per surface
+    std::vector<std::vector<model::Vec3>> normals;
+};
+SurfaceTargets assignToSurfaces(const std::vector<model::CompositeSurface>& surfaces,
+                                const model::reference::ThinningResult& thinned);
+
+// A surface pulled by fewer points stays as it is: too far from the target.
+inline constexpr std::size_t kFewestTargetPoints = 3;
+
+// The Approximate job for `surfaces` pulled towards their points (unset iterations: the job's
+// default, kApproximationIterations).
+JobRequest approximationRequest(const std::vector<model::CompositeSurface>& surfaces,
+                                const SurfaceTargets& targets, double rho,
+                                std::optional<int> iterations);
+
+// Everything at once, for a front end that runs it off its GUI thread.
+struct ApproximationOptions {
+    int strips = 4;    // new flat strips, when `start` is empty
+    int intervals = 4; // spline intervals per new strip
+    double rho = 0.0;  // thinning radius; ≤ 0: defaultApproximationRadius
+    std::optional<int> iterations;
+};
+
+struct ApproximationSetup {
+    enum class Error {
+        None,
+        Cancelled,
+        TooFewPoints, // thinning kept fewer than 3 points per strip
+        Collinear,    // every cluster lies on a line: no strip
+        NothingNear,  // no surface has kFewestTargetPoints points nearest to it
+    };
+    Error error = Error::None;
+    ThinnedTarget target;
+    std::vector<model::CompositeSurface> surfaces; // the start: `start` or the new strips
+    bool newStrips = false;
+    SurfaceTargets targets;
+    JobRequest request;
+    double milliseconds = 0.0; // the setup's time
+};
+
+// Called now and then with the fraction done (0 … 1); returning false cancels.
+using SetupProgress = std::function<bool(double fraction)>;
+
+// Thins `points`, starts from `start` (the design's surfaces) or, if it is empty, from
+// options.strips new flat strips numbered from firstNumber, assigns the points and builds the
+// request. `progress` is called during the thinning and between the steps.
+ApproximationSetup prepareApproximation(const std::vector<model::Vec3>& points,
+                                        const std::vector<model::CompositeSurface>& start,
+                                        const ApproximationOptions& options,
+                                        const SetupProgress& progress = {}, int firstNumber = 1);
+
+} // namespace devsurf::solver
