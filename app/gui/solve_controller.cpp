@@ -374,7 +374,8 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result, const Q
     report.outcome = outcome;
     report.elapsedMs = outcome.elapsedMs;
     for (const solver::SurfaceAssessment& a : outcome.assessments) {
-        report.summaries.push_back(a.summary);
+        // A drag taken back lists the iterations it ran, not the press's none.
+        report.summaries.push_back(a.takenBack ? a.takenBack->summary : a.summary);
     }
     if (outcome.cancelled()) {
         report.status = tr("Cancelled; the design is unchanged.");
@@ -428,10 +429,10 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result, const Q
             status += heldText(*a.held);
         }
         if (a.takenBack) {
-            // The status of the refused result's iterations, then why it was refused.
-            status += tr("; taken back to where the drag started, since the drag %1: the "
-                         "design stays at its last developable state")
-                          .arg(takenBackText(*a.takenBack));
+            // The design is as at the press: what the refused iterations reached is the news.
+            status = tr("taken back to where the drag started, since the drag %1: the design "
+                        "stays at its last developable state")
+                         .arg(takenBackText(*a.takenBack));
         } else if (a.sheetHeld && a.largestHandleGap > solver::kNegligibleLag) {
             status += tr("; held back %1 mm by the sheet")
                           .arg(QString::number(a.largestHandleGap, 'f', 1));

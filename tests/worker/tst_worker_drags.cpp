@@ -3,7 +3,6 @@
 #include "model/examples.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/session/crease_drag.h"
-#include "solver/session/verdict.h"
 #include "solver/worker/solver_worker.h"
 #include "worker_test_support.h"
 
@@ -234,9 +233,9 @@ private slots:
     void dragStopsBeforeADegenerateSurface() {
         // fig8 lifted 85 mm (stretching, its two corners pinned), then its four middle
         // vertices turned by −30° about the vertical through their centre in 20 moves: in the
-        // 7th of the 10 iterations after the release patch 1 flattens to a line. The release
-        // stops at the valid state before it, where it used to be a shape the document refuses;
-        // that state is not developable, so the drag is taken back to the press, said so.
+        // 7th of the 10 iterations after the release patch 1 flattens to a line. The release's
+        // result is the valid state before it, said so (the status ends a drag in the desktop
+        // application), where it used to be a shape the document refuses.
         const std::vector<model::VertexId> moved{5, 6, 9, 10};
         model::CompositeSurface lifted = model::makeExample("fig8").surfaces.front();
         {
@@ -287,18 +286,11 @@ private slots:
         }
         const SolveResult result = resultAt(finished, 20);
         QVERIFY2(result.outcome.ok, qPrintable(why(result)));
-        const SurfaceAssessment& assessment = result.outcome.assessments.front();
-        QVERIFY(assessment.takenBack);
-        const Summary& summary = assessment.takenBack->summary;
-        QVERIFY(summary.status == Status::StoppedBeforeDegenerate);
-        const auto& refused = assessment.takenBack->refusedIterate;
+        const Summary& summary = result.outcome.assessments.front().summary;
+        QCOMPARE(summary.status, Status::StoppedBeforeDegenerate);
+        const auto& refused = result.outcome.assessments.front().refusedIterate;
         QVERIFY2(refused && refused->code == model::ProblemCode::ZeroArea, summary.detail.c_str());
         QVERIFY(summary.iterationsCompleted < 10);
-        QVERIFY(notDevelopable(*assessment.takenBack));
-        // The design stays as at the press, which is developable and valid.
-        QVERIFY(result.outcome.surfaces.front() == lifted);
-        QVERIFY(!notDevelopable(assessment));
-        QCOMPARE(verdictOf(result.outcome).kind == VerdictKind::NotDevelopable, false);
         const auto problems = result.outcome.surfaces.front().validate();
         QVERIFY2(problems.empty(),
                  problems.empty() ? "" : model::technicalKey(problems.front()).c_str());
