@@ -66,11 +66,11 @@ private slots:
         QTest::addColumn<QString>("example");
         QTest::addColumn<int>("dragged");
         QTest::addColumn<QList<int>>("pinned");
-        // fig6 (its bottom corners pinned) pulled up out of the view by a top corner, keeping
-        // lengths (the default): it ends developable at any height. (The annulus pinned at two
-        // vertices or fig8 pulled that far fold over, and such a drag is taken back.)
-        QTest::newRow("fig6 left") << "fig6" << 4 << QList<int>{0, 1};
-        QTest::newRow("fig6 right") << "fig6" << 5 << QList<int>{0, 1};
+        // fig6 (its bottom corners pinned) pulled up out of the view by its top left corner,
+        // keeping lengths (the default): it ends developable. (The annulus pinned at two
+        // vertices, fig8, or fig6 by its other top corner, pulled that far, fold over, and
+        // such a drag is taken back.)
+        QTest::newRow("fig6") << "fig6" << 4 << QList<int>{0, 1};
     }
 
     void fitAfterADragOutOfTheViewShowsEveryVertexWhole() {
@@ -99,10 +99,16 @@ private slots:
 
         // A real drag with the mouse, out of the top of the view.
         QSignalSpy finished(window.dragTool(), &app::DragTool::dragFinished);
+        QSignalSpy changed(doc, &document::Document::changed);
         QTest::mousePress(gl, Qt::LeftButton, {}, at);
         const QPoint end(at.x(), -gl->height() / 2);
         for (int i = 1; i <= 10; ++i) {
+            // Each move shown before the next: the same ten steps in every run (moves that
+            // came faster than the solver were coalesced, and a drag of two big steps could
+            // fold over and be taken back).
+            changed.clear();
             QTest::mouseMove(gl, at + (end - at) * i / 10);
+            QVERIFY(changed.wait(60000));
         }
         QTest::mouseRelease(gl, Qt::LeftButton, {}, end);
         QVERIFY(finished.wait(120000));
@@ -113,7 +119,9 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(!cache->spatialPending() && !cache->developmentPending(), 60000);
         surfaceView->grabImage();
         const QStringList left = cutOff(surfaceView, doc->surface(0));
-        QVERIFY2(!left.isEmpty(), "the drag did not leave the view");
+        QVERIFY2(!left.isEmpty(),
+                 qPrintable(QStringLiteral("the drag did not leave the view: ") +
+                            window.solverPanel()->statusText()));
 
         // View ▸ Fit (F): every vertex, the pins too, is drawn whole in both views.
         QCOMPARE(window.action(QStringLiteral("actionFitAll"))->shortcut(),
