@@ -15,14 +15,18 @@ namespace {
 // Measures every shape against every surface; runs on the job's thread, on copies.
 std::shared_ptr<const ReferenceDistanceResult>
 measure(const std::vector<model::CompositeSurface>& surfaces,
-        const std::vector<std::vector<model::Vec3>>& shapes) {
+        const std::vector<std::vector<model::Vec3>>& shapes, const std::atomic<bool>* cancel) {
     QElapsedTimer clock;
     clock.start();
     auto result = std::make_shared<ReferenceDistanceResult>();
+    model::reference::DistanceOptions options;
+    options.cancel = cancel;
     try {
         for (const std::vector<model::Vec3>& points : shapes) {
-            result->reports.push_back(model::reference::measureDistance(surfaces, points));
+            result->reports.push_back(model::reference::measureDistance(surfaces, points, options));
         }
+    } catch (const model::reference::DistanceCancelled&) {
+        result->failure = ReferenceDistanceResult::Failure::Cancelled;
     } catch (const model::ModelError&) {
         result->failure = ReferenceDistanceResult::Failure::InvalidSurface;
     } catch (const std::exception&) {
@@ -64,8 +68,11 @@ ReferenceDistances::ReferenceDistances(document::Document* document)
 }
 
 ReferenceDistances::~ReferenceDistances() {
-    // A running job posts its result to this object: let it finish first (the posted event is
-    // dropped with the object).
+    // A running job posts its result to this object: stop it and let it finish first (the
+    // posted event is dropped with the object).
+    if (m_cancel) {
+        m_cancel->store(true);
+    }
     m_pool.waitForDone();
 }
 
@@ -106,9 +113,13 @@ bool ReferenceDistances::isCurrent() const {
 
 void ReferenceDistances::onDocumentChanged(unsigned changes) {
     if ((changes & static_cast<unsigned>(document::Change::ReferenceShapes)) != 0) {
-        // Other points: the distances measured belong to none of them.
+        // Other points: the distances measured belong to none of them, nor will the running
+        // job's.
         ++m_shapesGeneration;
         m_latest.reset();
+        if (m_running && m_cancel) {
+            m_cancel->store(true);
+        }
     }
     if (isCurrent()) {
         return; // e.g. pins or reference curves changed
@@ -140,9 +151,11 @@ void ReferenceDistances::startJob() {
         shapes.push_back(shape.points);
     }
     m_running = true;
+    m_cancel = std::make_shared<std::atomic<bool>>(false);
     m_pool.start([this, key = currentKey(), surfaces = m_document->project().surfaces,
-                  shapes = std::move(shapes)] {
-        std::shared_ptr<const ReferenceDistanceResult> result = measure(surfaces, shapes);
+                  shapes = std::move(shapes), cancel = m_cancel] {
+        std::shared_ptr<const ReferenceDistanceResult> result =
+            measure(surfaces, shapes, cancel.get());
         QMetaObject::invokeMethod(
             this, [this, key, result] { onMeasured(key, result); }, Qt::QueuedConnection);
     });
@@ -152,7 +165,8 @@ void ReferenceDistances::onMeasured(Key key,
                                     std::shared_ptr<const ReferenceDistanceResult> result) {
     m_running = false;
     // A result for shapes since replaced is dropped; one for an older design is kept as stale.
-    if (key.shapes == m_shapesGeneration) {
+    if (key.shapes == m_shapesGeneration &&
+        result->failure != ReferenceDistanceResult::Failure::Cancelled) {
         m_latest = std::move(result);
         m_latestKey = std::move(key);
     }

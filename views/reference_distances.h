@@ -10,6 +10,7 @@
 #include <QPointer>
 #include <QThreadPool>
 
+#include <atomic>
 #include <memory>
 #include <set>
 #include <vector>
@@ -23,7 +24,8 @@ namespace devsurf::views {
 // One measurement of every reference shape against every surface of the design.
 struct ReferenceDistanceResult {
     // Why a shape could not be measured.
-    enum class Failure { None, NoSurface, InvalidSurface };
+    // Cancelled: the shapes changed or the document closed meanwhile (never kept as latest()).
+    enum class Failure { None, NoSurface, InvalidSurface, Cancelled };
     Failure failure = Failure::None;
     // One report per reference shape, in the project's order (empty on failure).
     std::vector<model::reference::DistanceReport> reports;
@@ -95,6 +97,9 @@ private:
     Key m_latestKey;
     bool m_running = false;
     bool m_wanted = false; // a change arrived while a job ran
+    // The running job's cancel flag: set when the shapes change (its result would be dropped)
+    // or this object goes, so that closing a document does not wait for a whole measurement.
+    std::shared_ptr<std::atomic<bool>> m_cancel;
     QThreadPool m_pool;
 };
 

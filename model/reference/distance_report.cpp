@@ -113,6 +113,17 @@ DistanceReport measureDistance(const std::vector<CompositeSurface>& surfaces,
     if (!std::all_of(target.begin(), target.end(), [](const Vec3& p) { return p.isFinite(); })) {
         throw std::invalid_argument("measureDistance: the target has non-finite points");
     }
+    // Cancelled: checked every kCancelStride points in the loops below, thrown after them.
+    constexpr std::size_t kCancelStride = 256;
+    auto cancelled = [&options] {
+        return options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed);
+    };
+    auto stopIfCancelled = [&cancelled] {
+        if (cancelled()) {
+            throw DistanceCancelled();
+        }
+    };
+    stopIfCancelled();
     SurfaceSamples samples = sampleDensely(surfaces, options.samplesPerInterval);
     if (samples.positions.empty()) {
         throw std::invalid_argument("measureDistance: the design has no faces");
@@ -129,10 +140,14 @@ DistanceReport measureDistance(const std::vector<CompositeSurface>& surfaces,
         std::vector<PointIndex::Neighbour> ball;
         std::vector<std::uint32_t> refined;
         for (std::size_t i = begin; i < end; ++i) {
+            if ((i - begin) % kCancelStride == 0 && cancelled()) {
+                return;
+            }
             report.targetDistances[i] =
                 distanceToSurface(samples, surfaceIndex, target[i], ball, refined);
         }
     });
+    stopIfCancelled();
     const auto covered = std::count_if(report.targetDistances.begin(), report.targetDistances.end(),
                                        [&report](double d) { return d <= report.tolerance; });
     report.coverage = static_cast<double>(covered) / static_cast<double>(target.size());
@@ -143,9 +158,13 @@ DistanceReport measureDistance(const std::vector<CompositeSurface>& surfaces,
     std::vector<double> toTarget(onSurface.size());
     inParallel(onSurface.size(), [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
+            if ((i - begin) % kCancelStride == 0 && cancelled()) {
+                return;
+            }
             toTarget[i] = std::sqrt(targetIndex.nearest(onSurface[i]).squaredDistance);
         }
     });
+    stopIfCancelled();
     report.surfaceToTarget = summarise(toTarget, samples.area, report.diagonal);
     return report;
 }

@@ -3,6 +3,8 @@
 #include "model/composite_surface.h"
 #include "model/vec3.h"
 
+#include <atomic>
+#include <stdexcept>
 #include <vector>
 
 namespace devsurf::model::reference {
@@ -13,6 +15,13 @@ struct DistanceOptions {
     double tolerance = 0.0;
     // Density of the surface samples: grid steps along each strip per spline interval.
     int samplesPerInterval = 16;
+    // Checked every few hundred points; once set, measureDistance throws DistanceCancelled.
+    const std::atomic<bool>* cancel = nullptr;
+};
+
+// measureDistance stopped because DistanceOptions::cancel was set.
+struct DistanceCancelled : std::runtime_error {
+    DistanceCancelled() : std::runtime_error("measureDistance: cancelled") {}
 };
 
 // A one-sided distance: over the points of one shape, the distance to the other shape.
@@ -49,9 +58,9 @@ struct DistanceReport {
 // refined to its true closest point (closestPointOnStrip, closestPointOnTriangle). Surface →
 // target takes the dense samples to the nearest target point. The 95th percentile is the
 // smallest distance that at least 95 % of the points (of the area) do not exceed.
-// Throws ModelError for an invalid surface or samplesPerInterval outside [1, 1000], and
-// std::invalid_argument for an empty target, a target with non-finite points or a design
-// without faces.
+// Throws ModelError for an invalid surface or samplesPerInterval outside [1, 1000],
+// DistanceCancelled once options.cancel is set, and std::invalid_argument for an empty target, a
+// target with non-finite points or a design without faces.
 DistanceReport measureDistance(const std::vector<CompositeSurface>& surfaces,
                                const std::vector<Vec3>& target,
                                const DistanceOptions& options = {});

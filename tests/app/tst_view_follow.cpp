@@ -119,9 +119,8 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(!cache->spatialPending() && !cache->developmentPending(), 60000);
         surfaceView->grabImage();
         const QStringList left = cutOff(surfaceView, doc->surface(0));
-        QVERIFY2(!left.isEmpty(),
-                 qPrintable(QStringLiteral("the drag did not leave the view: ") +
-                            window.solverPanel()->statusText()));
+        QVERIFY2(!left.isEmpty(), qPrintable(QStringLiteral("the drag did not leave the view: ") +
+                                             window.solverPanel()->statusText()));
 
         // View ▸ Fit (F): every vertex, the pins too, is drawn whole in both views.
         QCOMPARE(window.action(QStringLiteral("actionFitAll"))->shortcut(),

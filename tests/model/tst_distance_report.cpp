@@ -310,6 +310,19 @@ private slots:
             measureDistance(std::vector<CompositeSurface>{surface, lifted}, {Vec3(150, 150, 7)});
         QVERIFY(std::abs(report.targetDistances.front() - 3.0) < 1e-9);
     }
+
+    void aSetCancelFlagStopsTheMeasurement() {
+        const CompositeSurface surface = makeExample("sheet").surfaces.front();
+        const std::vector<Vec3> target{Vec3(10, 20, 5), Vec3(150, 150, -3)};
+        std::atomic<bool> cancel{false};
+        DistanceOptions options;
+        options.cancel = &cancel;
+        // Not set: the same report as without a flag.
+        const DistanceReport measured = measureDistance(surface, target, options);
+        QCOMPARE(measured.targetDistances, measureDistance(surface, target).targetDistances);
+        cancel = true;
+        QVERIFY_THROWS_EXCEPTION(DistanceCancelled, measureDistance(surface, target, options));
+    }
 };
 
 DEVSURF_REGISTER_TEST(TstDistanceReport);

@@ -39,6 +39,9 @@ struct ApproximateReaction::Run {
     solver::SolveResult result;
     std::optional<model::reference::DistanceReport> distance; // the measuring thread's
     double measureMs = 0.0;
+    // Set when the approximation ends before its measurement (cancelled, closed): the
+    // measuring thread then stops within a few hundred points instead of measuring on.
+    std::atomic<bool> stopMeasuring{false};
 };
 
 namespace {
@@ -61,6 +64,9 @@ ApproximateReaction::ApproximateReaction(QAction* action, Workspace* workspace,
 ApproximateReaction::~ApproximateReaction() {
     // Closed while working: the setup is cancelled and waited for, the measuring waited for.
     delete m_setup;
+    if (m_run) {
+        m_run->stopMeasuring = true;
+    }
     if (m_measure != nullptr) {
         m_measure->wait();
         delete m_measure;
@@ -199,9 +205,11 @@ void ApproximateReaction::onJobDone(const solver::SolveResult& result) {
     m_measure = QThread::create([run] {
         QElapsedTimer clock;
         clock.start();
+        model::reference::DistanceOptions options;
+        options.cancel = &run->stopMeasuring;
         try {
-            run->distance =
-                model::reference::measureDistance(run->result.outcome.surfaces, run->points);
+            run->distance = model::reference::measureDistance(run->result.outcome.surfaces,
+                                                              run->points, options);
         } catch (const std::exception&) {
             run->distance.reset(); // not measurable: the sentence goes without it
         }
@@ -310,6 +318,9 @@ void ApproximateReaction::onControllerFinished(const QString& sentence) {
 }
 
 void ApproximateReaction::end(bool applied, const QString& sentence) {
+    if (m_run) {
+        m_run->stopMeasuring = true; // a measurement still running is of no use now
+    }
     m_run.reset();
     updateEnableState();
     emit workspace()->statusMessage(sentence);
