@@ -1332,37 +1332,37 @@
 <context>
     <name>devsurf::app::ApproximateReaction</name>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="47"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="50"/>
         <source>Approximate Reference Shape</source>
         <translation>Referenzform annähern</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="82"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="88"/>
         <source>Fit developable strips to a reference shape: import one first (File ▸ Import Reference Shape…).</source>
         <translation>Abwickelbare Streifen an eine Referenzform anpassen: zuerst eine importieren (Datei ▸ Referenzform importieren…).</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="84"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="90"/>
         <source>Fit developable strips to a reference shape: wait until the solver has finished, or cancel it (Esc).</source>
         <translation>Abwickelbare Streifen an eine Referenzform anpassen: warten, bis der Löser fertig ist, oder ihn abbrechen (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="86"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="92"/>
         <source>Fit developable strips to a reference shape, or pull the design&apos;s surfaces towards it; one undo step.</source>
         <translation>Abwickelbare Streifen an eine Referenzform anpassen oder die Flächen des Entwurfs zu ihr ziehen; ein Rückgängig-Schritt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="120"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="126"/>
         <source>Preparing the approximation: thinning the reference shape and placing the strips…</source>
         <translation>Annäherung wird vorbereitet: Referenzform ausdünnen und Streifen platzieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="147"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="153"/>
         <source>Approximation cancelled; the design is unchanged.</source>
         <translation>Annäherung abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="162"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="168"/>
         <source>Thinning the reference shape with radius %1 kept %n point(s), too few for the strips asked for; choose a smaller radius or fewer strips.</source>
         <translation>
             <numerusform>Das Ausdünnen der Referenzform mit Radius %1 behielt %n Punkt, zu wenige für die gewünschten Streifen; wählen Sie einen kleineren Radius oder weniger Streifen.</numerusform>
@@ -1370,53 +1370,53 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="168"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="174"/>
         <source>The points of the reference shape lie on a line; no strip can be fitted to them.</source>
         <translation>Die Punkte der Referenzform liegen auf einer Geraden; kein Streifen lässt sich an sie anpassen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="172"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="178"/>
         <source>No surface of the design is near enough to the reference shape to be pulled towards it; start from new strips instead.</source>
         <translation>Keine Fläche des Entwurfs liegt nahe genug an der Referenzform, um zu ihr gezogen zu werden; beginnen Sie stattdessen mit neuen Streifen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="153"/>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="176"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="159"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="182"/>
         <source>Cannot approximate the reference shape</source>
         <translation>Die Referenzform kann nicht angenähert werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="151"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="157"/>
         <source>The approximation could not be set up: %1</source>
         <translation>Die Annäherung konnte nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="181"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="187"/>
         <source>Approximation discarded: the design changed meanwhile; it is unchanged.</source>
         <translation>Annäherung verworfen: der Entwurf hat sich inzwischen geändert; er ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="195"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="201"/>
         <source>Measuring the distance of the result to the reference shape…</source>
         <translation>Abstand des Ergebnisses zur Referenzform wird gemessen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="230"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="238"/>
         <source>%1 failed: %2 The design is unchanged.</source>
         <translation>%1 fehlgeschlagen: %2 Der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="270"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="278"/>
         <source>largest constraint residual %1, within the tolerance</source>
         <translation>größtes Bedingungsresiduum %1, innerhalb der Toleranz</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="271"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="279"/>
         <source>largest constraint residual %1, not within the tolerance (Tools ▸ Solve may help)</source>
         <translation>größtes Bedingungsresiduum %1, nicht innerhalb der Toleranz (Werkzeuge ▸ Lösen kann helfen)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="277"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="285"/>
         <source>the reference shape is %1 from the %n surface(s) on average, %2 at most</source>
         <translation>
             <numerusform>die Referenzform ist im Mittel %1 von der Fläche entfernt, höchstens %2</numerusform>
@@ -1424,17 +1424,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="281"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="289"/>
         <source>Approximated: %1; %2.</source>
         <translation>Angenähert: %1; %2.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="282"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
         <source>Afterwards %1.</source>
         <translation>Danach: %1.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="284"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="292"/>
         <source>Approximated with %n surface(s): %1.</source>
         <translation>
             <numerusform>Mit %n Fläche angenähert: %1.</numerusform>
@@ -1442,7 +1442,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="287"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="295"/>
         <source>%n surface(s) too far from the shape were left as they were.</source>
         <translation>
             <numerusform>%n Fläche, zu weit von der Form entfernt, blieb unverändert.</numerusform>
@@ -1450,7 +1450,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="294"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="302"/>
         <source>Set up in %1 s, solved in %2 s, measured in %3 s.</source>
         <translation>Vorbereitet in %1 s, gelöst in %2 s, gemessen in %3 s.</translation>
     </message>
@@ -4122,47 +4122,47 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="93"/>
+        <location filename="../app/gui/solve_controller.cpp" line="99"/>
         <source>There is nothing to solve.</source>
         <translation>Es gibt nichts zu lösen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="118"/>
+        <location filename="../app/gui/solve_controller.cpp" line="124"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: Es gibt nichts zu lösen; nichts wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="192"/>
+        <location filename="../app/gui/solve_controller.cpp" line="198"/>
         <source>%1 cancelled; the design is unchanged.</source>
         <translation>%1 abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="193"/>
+        <location filename="../app/gui/solve_controller.cpp" line="199"/>
         <source>%1 cancelled: %2; the design is unchanged.</source>
         <translation>%1 abgebrochen: %2; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="196"/>
+        <location filename="../app/gui/solve_controller.cpp" line="202"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 abgebrochen; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="197"/>
+        <location filename="../app/gui/solve_controller.cpp" line="203"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 abgebrochen: %2; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="199"/>
+        <location filename="../app/gui/solve_controller.cpp" line="205"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>Lösen abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="200"/>
+        <location filename="../app/gui/solve_controller.cpp" line="206"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>Lösen abgebrochen: %1; der Entwurf ist unverändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="206"/>
+        <location filename="../app/gui/solve_controller.cpp" line="212"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Form prüfen: %n Flächenstück faltet sich auf sich selbst zurück (%1); rückgängig machen oder anders fixieren oder bewegen.</numerusform>
@@ -4170,7 +4170,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="213"/>
+        <location filename="../app/gui/solve_controller.cpp" line="219"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Form prüfen: die Abwicklung überlappt sich selbst an %n Flächenstück (%1); rückgängig machen oder anders fixieren oder bewegen.</numerusform>
@@ -4178,33 +4178,33 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="223"/>
+        <location filename="../app/gui/solve_controller.cpp" line="229"/>
         <source>%1 failed: %2 The design is unchanged.</source>
         <translation>%1 fehlgeschlagen: %2 Der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="225"/>
+        <location filename="../app/gui/solve_controller.cpp" line="231"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 fehlgeschlagen: %2 Nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="254"/>
+        <location filename="../app/gui/solve_controller.cpp" line="260"/>
         <source>the design changed</source>
         <translation>der Entwurf hat sich geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="261"/>
+        <location filename="../app/gui/solve_controller.cpp" line="267"/>
         <source>it stopped before a degenerate shape</source>
         <translation>es hielt vor einer entarteten Form an</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="264"/>
+        <location filename="../app/gui/solve_controller.cpp" line="270"/>
         <source>no convergence, residual %1</source>
         <translation>keine Konvergenz, Residuum %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="267"/>
-        <location filename="../app/gui/solve_controller.cpp" line="302"/>
+        <location filename="../app/gui/solve_controller.cpp" line="273"/>
+        <location filename="../app/gui/solve_controller.cpp" line="308"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>an %n Stelle zurückgefaltet</numerusform>
@@ -4212,32 +4212,32 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="270"/>
+        <location filename="../app/gui/solve_controller.cpp" line="276"/>
         <source>a development overlapping itself</source>
         <translation>eine sich selbst überlappende Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="273"/>
+        <location filename="../app/gui/solve_controller.cpp" line="279"/>
         <source>collapsed strips</source>
         <translation>zusammengefallene Streifen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="276"/>
+        <location filename="../app/gui/solve_controller.cpp" line="282"/>
         <source>a shape too degenerate to measure</source>
         <translation>eine zum Messen zu entartete Form</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="285"/>
+        <location filename="../app/gui/solve_controller.cpp" line="291"/>
         <source>did not reach the tolerance (residual %1; patch %2 sampled %3 from developable)</source>
         <translation>Toleranz nicht erreicht (Residuum %1; Flächenstück %2 abgetastet %3 von abwickelbar entfernt)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="293"/>
+        <location filename="../app/gui/solve_controller.cpp" line="299"/>
         <source>left its kept sheet by %1 mm</source>
         <translation>um %1 mm vom gehaltenen Bogen abgewichen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="305"/>
+        <location filename="../app/gui/solve_controller.cpp" line="311"/>
         <source>left a development overlapping itself at %n patch(es)</source>
         <translation>
             <numerusform>Abwicklung an %n Flächenstück mit sich selbst überlappend</numerusform>
@@ -4245,107 +4245,107 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="309"/>
+        <location filename="../app/gui/solve_controller.cpp" line="315"/>
         <source>ended not developable</source>
         <translation>nicht abwickelbar geendet</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="333"/>
+        <location filename="../app/gui/solve_controller.cpp" line="339"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="338"/>
+        <location filename="../app/gui/solve_controller.cpp" line="344"/>
         <source>The solve was cancelled.</source>
         <translation>Das Lösen wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="341"/>
+        <location filename="../app/gui/solve_controller.cpp" line="347"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 kann nicht gelöst werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="342"/>
+        <location filename="../app/gui/solve_controller.cpp" line="348"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 kann nicht gelöst werden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="346"/>
+        <location filename="../app/gui/solve_controller.cpp" line="352"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>Das Ziel der gezogenen Ecke %1 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="347"/>
+        <location filename="../app/gui/solve_controller.cpp" line="353"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>Das Ziel des gezogenen Kontrollpunkts %1 der Kante %2 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="353"/>
+        <location filename="../app/gui/solve_controller.cpp" line="359"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 konnte nicht gelöst werden: das lineare Gleichungssystem ließ sich nicht faktorisieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="355"/>
+        <location filename="../app/gui/solve_controller.cpp" line="361"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 konnte nicht gelöst werden: eine Iteration ergab Werte, die nicht endlich sind.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="359"/>
+        <location filename="../app/gui/solve_controller.cpp" line="365"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 konnte nicht gelöst werden: der Löser lieferte einen Wert, der nicht endlich ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="365"/>
+        <location filename="../app/gui/solve_controller.cpp" line="371"/>
         <source>(Solver: %1)</source>
         <translation>(Löser: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="381"/>
+        <location filename="../app/gui/solve_controller.cpp" line="387"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="385"/>
+        <location filename="../app/gui/solve_controller.cpp" line="391"/>
         <source>Failed: %1</source>
         <translation>Fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="399"/>
+        <location filename="../app/gui/solve_controller.cpp" line="405"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="403"/>
+        <location filename="../app/gui/solve_controller.cpp" line="409"/>
         <source>tolerance reached</source>
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="403"/>
+        <location filename="../app/gui/solve_controller.cpp" line="409"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="410"/>
+        <location filename="../app/gui/solve_controller.cpp" line="416"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="418"/>
+        <location filename="../app/gui/solve_controller.cpp" line="424"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="424"/>
+        <location filename="../app/gui/solve_controller.cpp" line="430"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; das Beibehalten der Längen schlug fehl (%1), daher wurde das Ziehen mit Dehnen des Blatts wiederholt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="437"/>
+        <location filename="../app/gui/solve_controller.cpp" line="443"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; vom Bogen um %1 mm zurückgehalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="449"/>
+        <location filename="../app/gui/solve_controller.cpp" line="455"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n Flächenstück faltet sich auf sich selbst zurück, wo die Fläche sich selbst überlappt: %1</numerusform>
@@ -4353,7 +4353,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="464"/>
+        <location filename="../app/gui/solve_controller.cpp" line="470"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; die Abwicklung überlappt sich selbst an %n Flächenstück (%1) und lässt sich nicht aus einem Bogen schneiden</numerusform>
@@ -4361,43 +4361,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="470"/>
+        <location filename="../app/gui/solve_controller.cpp" line="476"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="475"/>
+        <location filename="../app/gui/solve_controller.cpp" line="481"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="480"/>
+        <location filename="../app/gui/solve_controller.cpp" line="486"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="489"/>
+        <location filename="../app/gui/solve_controller.cpp" line="495"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="507"/>
+        <location filename="../app/gui/solve_controller.cpp" line="513"/>
         <source>%1 discarded: the design changed meanwhile; it is unchanged.</source>
         <translation>%1 verworfen: der Entwurf hat sich inzwischen geändert; er ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="548"/>
+        <location filename="../app/gui/solve_controller.cpp" line="554"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>Lösen hat den Entwurf unverändert gelassen: das Lösen machte ihn weniger abwickelbar (größtes Abwickelbarkeitsresiduum %1 → %2).</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="572"/>
+        <location filename="../app/gui/solve_controller.cpp" line="578"/>
         <source>%1. %2</source>
         <comment>a verdict, then a sentence</comment>
         <translation>%1. %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="576"/>
+        <location filename="../app/gui/solve_controller.cpp" line="582"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n Fläche unverändert gelassen: das Lösen machte sie weniger abwickelbar.</numerusform>
@@ -4405,12 +4405,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="588"/>
+        <location filename="../app/gui/solve_controller.cpp" line="594"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 verworfen: Der Entwurf hat sich während des Lösens geändert; nichts wurde bewegt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="597"/>
+        <location filename="../app/gui/solve_controller.cpp" line="603"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, abwickelbar gehalten: %n Iteration, größtes Bedingungsresiduum %2.</numerusform>
@@ -4418,43 +4418,48 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="226"/>
-        <location filename="../app/gui/solve_controller.cpp" line="540"/>
+        <location filename="../app/gui/solve_controller.cpp" line="232"/>
+        <location filename="../app/gui/solve_controller.cpp" line="546"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="316"/>
+        <location filename="../app/gui/solve_controller.cpp" line="94"/>
+        <source>Solve is not started while %1 runs; cancel it first (Esc).</source>
+        <translation>Lösen wird nicht gestartet, solange %1 läuft; zuerst abbrechen (Esc).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="322"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt auf der Geraden zwischen den festgehaltenen Ecken %2 und %3, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="323"/>
+        <location filename="../app/gui/solve_controller.cpp" line="329"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt im Dreieck der festgehaltenen Ecken %2, %3 und %4, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="406"/>
+        <location filename="../app/gui/solve_controller.cpp" line="412"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>beim letzten gültigen Zustand angehalten, bevor eine Erzeugende, eine Kurve oder ein Flächenstück kollabierte</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="414"/>
+        <location filename="../app/gui/solve_controller.cpp" line="420"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (endete bei Iteration %1, der mit dem kleinsten Residuum)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="433"/>
+        <location filename="../app/gui/solve_controller.cpp" line="439"/>
         <source>taken back to where the drag started, since the drag %1: the design stays at its last developable state</source>
         <translation>zurückgenommen auf den Stand beim Drücken, denn das Ziehen hätte so geendet: %1; der Entwurf bleibt in seinem letzten abwickelbaren Zustand</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="517"/>
+        <location filename="../app/gui/solve_controller.cpp" line="523"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="569"/>
+        <location filename="../app/gui/solve_controller.cpp" line="575"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>

@@ -113,7 +113,7 @@
 <context>
     <name>devsurf::app::ApproximateReaction</name>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="162"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="168"/>
         <source>Thinning the reference shape with radius %1 kept %n point(s), too few for the strips asked for; choose a smaller radius or fewer strips.</source>
         <translation>
             <numerusform>Thinning the reference shape with radius %1 kept %n point, too few for the strips asked for; choose a smaller radius or fewer strips.</numerusform>
@@ -121,7 +121,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="277"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="285"/>
         <source>the reference shape is %1 from the %n surface(s) on average, %2 at most</source>
         <translation>
             <numerusform>the reference shape is %1 from the surface on average, %2 at most</numerusform>
@@ -129,7 +129,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="284"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="292"/>
         <source>Approximated with %n surface(s): %1.</source>
         <translation>
             <numerusform>Approximated with %n surface: %1.</numerusform>
@@ -137,7 +137,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="287"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="295"/>
         <source>%n surface(s) too far from the shape were left as they were.</source>
         <translation>
             <numerusform>%n surface too far from the shape was left as it was.</numerusform>
@@ -392,7 +392,7 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="206"/>
+        <location filename="../app/gui/solve_controller.cpp" line="212"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Check the shape: %n patch folds over onto itself (%1); undo, or pin or move differently.</numerusform>
@@ -400,7 +400,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="213"/>
+        <location filename="../app/gui/solve_controller.cpp" line="219"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Check the shape: the development overlaps itself at %n patch (%1); undo, or pin or move differently.</numerusform>
@@ -408,8 +408,8 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="267"/>
-        <location filename="../app/gui/solve_controller.cpp" line="302"/>
+        <location filename="../app/gui/solve_controller.cpp" line="273"/>
+        <location filename="../app/gui/solve_controller.cpp" line="308"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>folded over in %n place</numerusform>
@@ -417,7 +417,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="305"/>
+        <location filename="../app/gui/solve_controller.cpp" line="311"/>
         <source>left a development overlapping itself at %n patch(es)</source>
         <translation>
             <numerusform>left a development overlapping itself at %n patch</numerusform>
@@ -425,7 +425,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="449"/>
+        <location filename="../app/gui/solve_controller.cpp" line="455"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n patch folds over onto itself, where the surface overlaps itself: %1</numerusform>
@@ -433,7 +433,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="464"/>
+        <location filename="../app/gui/solve_controller.cpp" line="470"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; the development overlaps itself at %n patch (%1) and cannot be cut from one sheet</numerusform>
@@ -441,7 +441,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="569"/>
+        <location filename="../app/gui/solve_controller.cpp" line="575"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Solved: %n iteration, largest constraint residual %1.</numerusform>
@@ -449,7 +449,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="576"/>
+        <location filename="../app/gui/solve_controller.cpp" line="582"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n surface left as it was: solving made it less developable.</numerusform>
@@ -457,7 +457,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="597"/>
+        <location filename="../app/gui/solve_controller.cpp" line="603"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, kept developable: %n iteration, largest constraint residual %2.</numerusform>

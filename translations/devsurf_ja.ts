@@ -1321,121 +1321,121 @@
 <context>
     <name>devsurf::app::ApproximateReaction</name>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="47"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="50"/>
         <source>Approximate Reference Shape</source>
         <translation>参照形状を近似</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="82"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="88"/>
         <source>Fit developable strips to a reference shape: import one first (File ▸ Import Reference Shape…).</source>
         <translation>参照形状に可展ストリップを当てはめます: まず読み込んでください (ファイル ▸ 参照形状をインポート…)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="84"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="90"/>
         <source>Fit developable strips to a reference shape: wait until the solver has finished, or cancel it (Esc).</source>
         <translation>参照形状に可展ストリップを当てはめます: ソルバーの終了を待つか、中止してください (Esc)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="86"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="92"/>
         <source>Fit developable strips to a reference shape, or pull the design&apos;s surfaces towards it; one undo step.</source>
         <translation>参照形状に可展ストリップを当てはめるか、デザインの曲面をそれへ引き寄せます。元に戻す操作は 1 回です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="120"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="126"/>
         <source>Preparing the approximation: thinning the reference shape and placing the strips…</source>
         <translation>近似を準備中: 参照形状を間引いてストリップを配置しています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="147"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="153"/>
         <source>Approximation cancelled; the design is unchanged.</source>
         <translation>近似を中止しました。デザインは変更されていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="162"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="168"/>
         <source>Thinning the reference shape with radius %1 kept %n point(s), too few for the strips asked for; choose a smaller radius or fewer strips.</source>
         <translation>
             <numerusform>半径 %1 で参照形状を間引いた結果 %n 点しか残らず、指定したストリップ数には足りません。半径を小さくするか、ストリップを減らしてください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="168"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="174"/>
         <source>The points of the reference shape lie on a line; no strip can be fitted to them.</source>
         <translation>参照形状の点が一直線上にあるため、ストリップを当てはめられません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="172"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="178"/>
         <source>No surface of the design is near enough to the reference shape to be pulled towards it; start from new strips instead.</source>
         <translation>参照形状へ引き寄せられるほど近いデザインの曲面がありません。代わりに新しいストリップから始めてください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="153"/>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="176"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="159"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="182"/>
         <source>Cannot approximate the reference shape</source>
         <translation>参照形状を近似できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="151"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="157"/>
         <source>The approximation could not be set up: %1</source>
         <translation>近似を準備できませんでした: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="181"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="187"/>
         <source>Approximation discarded: the design changed meanwhile; it is unchanged.</source>
         <translation>近似を破棄しました: その間にデザインが変更されました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="195"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="201"/>
         <source>Measuring the distance of the result to the reference shape…</source>
         <translation>結果と参照形状の距離を測定中…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="230"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="238"/>
         <source>%1 failed: %2 The design is unchanged.</source>
         <translation>%1 に失敗しました: %2 デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="270"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="278"/>
         <source>largest constraint residual %1, within the tolerance</source>
         <translation>最大の制約残差 %1、許容範囲内</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="271"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="279"/>
         <source>largest constraint residual %1, not within the tolerance (Tools ▸ Solve may help)</source>
         <translation>最大の制約残差 %1、許容範囲外 (ツール ▸ ソルブが役立つ場合があります)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="277"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="285"/>
         <source>the reference shape is %1 from the %n surface(s) on average, %2 at most</source>
         <translation>
             <numerusform>参照形状と %n 個の曲面の距離は平均 %1、最大 %2</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="281"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="289"/>
         <source>Approximated: %1; %2.</source>
         <translation>近似しました: %1。%2。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="282"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
         <source>Afterwards %1.</source>
         <translation>近似後: %1。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="284"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="292"/>
         <source>Approximated with %n surface(s): %1.</source>
         <translation>
             <numerusform>%n 個の曲面で近似しました: %1。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="287"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="295"/>
         <source>%n surface(s) too far from the shape were left as they were.</source>
         <translation>
             <numerusform>形状から遠すぎる %n 個の曲面はそのままです。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="294"/>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="302"/>
         <source>Set up in %1 s, solved in %2 s, measured in %3 s.</source>
         <translation>準備 %1 秒、求解 %2 秒、測定 %3 秒。</translation>
     </message>
@@ -4080,331 +4080,336 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="93"/>
+        <location filename="../app/gui/solve_controller.cpp" line="99"/>
         <source>There is nothing to solve.</source>
         <translation>ソルブする対象がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="118"/>
+        <location filename="../app/gui/solve_controller.cpp" line="124"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: ソルブするものがありません。何も変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="192"/>
+        <location filename="../app/gui/solve_controller.cpp" line="198"/>
         <source>%1 cancelled; the design is unchanged.</source>
         <translation>%1 を中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="193"/>
+        <location filename="../app/gui/solve_controller.cpp" line="199"/>
         <source>%1 cancelled: %2; the design is unchanged.</source>
         <translation>%1 を中止しました: %2。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="196"/>
+        <location filename="../app/gui/solve_controller.cpp" line="202"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 を取り消しました。何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="197"/>
+        <location filename="../app/gui/solve_controller.cpp" line="203"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 を取り消しました: %2。何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="199"/>
+        <location filename="../app/gui/solve_controller.cpp" line="205"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>ソルブを中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="200"/>
+        <location filename="../app/gui/solve_controller.cpp" line="206"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>ソルブを中止しました: %1。デザインは変更されていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="206"/>
+        <location filename="../app/gui/solve_controller.cpp" line="212"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>形状を確認してください: %n 個のパッチが自身の上に折り返されています (%1)。元に戻すか、固定や移動の仕方を変えてください。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="213"/>
+        <location filename="../app/gui/solve_controller.cpp" line="219"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>形状を確認してください: 展開図が %n 個のパッチで自身と重なっています (%1)。元に戻すか、固定や移動の仕方を変えてください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="223"/>
+        <location filename="../app/gui/solve_controller.cpp" line="229"/>
         <source>%1 failed: %2 The design is unchanged.</source>
         <translation>%1 に失敗しました: %2 デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="225"/>
+        <location filename="../app/gui/solve_controller.cpp" line="231"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 に失敗しました: %2 何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="254"/>
+        <location filename="../app/gui/solve_controller.cpp" line="260"/>
         <source>the design changed</source>
         <translation>デザインが変更されました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="261"/>
+        <location filename="../app/gui/solve_controller.cpp" line="267"/>
         <source>it stopped before a degenerate shape</source>
         <translation>退化した形の手前で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="264"/>
+        <location filename="../app/gui/solve_controller.cpp" line="270"/>
         <source>no convergence, residual %1</source>
         <translation>収束せず、残差 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="267"/>
-        <location filename="../app/gui/solve_controller.cpp" line="302"/>
+        <location filename="../app/gui/solve_controller.cpp" line="273"/>
+        <location filename="../app/gui/solve_controller.cpp" line="308"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>%n 箇所で折り返し</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="270"/>
+        <location filename="../app/gui/solve_controller.cpp" line="276"/>
         <source>a development overlapping itself</source>
         <translation>展開図が自身と重なる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="273"/>
+        <location filename="../app/gui/solve_controller.cpp" line="279"/>
         <source>collapsed strips</source>
         <translation>帯がつぶれる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="276"/>
+        <location filename="../app/gui/solve_controller.cpp" line="282"/>
         <source>a shape too degenerate to measure</source>
         <translation>測定できないほど退化した形</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="285"/>
+        <location filename="../app/gui/solve_controller.cpp" line="291"/>
         <source>did not reach the tolerance (residual %1; patch %2 sampled %3 from developable)</source>
         <translation>許容誤差に達せず (残差 %1、パッチ %2 のサンプル値は可展から %3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="293"/>
+        <location filename="../app/gui/solve_controller.cpp" line="299"/>
         <source>left its kept sheet by %1 mm</source>
         <translation>保持したシートから %1 mm ずれ</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="305"/>
+        <location filename="../app/gui/solve_controller.cpp" line="311"/>
         <source>left a development overlapping itself at %n patch(es)</source>
         <translation>
             <numerusform>%n 個のパッチで展開図が自己重複</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="309"/>
+        <location filename="../app/gui/solve_controller.cpp" line="315"/>
         <source>ended not developable</source>
         <translation>可展でない状態で終了</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="333"/>
+        <location filename="../app/gui/solve_controller.cpp" line="339"/>
         <source>Surface %1</source>
         <translation>曲面 %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="338"/>
+        <location filename="../app/gui/solve_controller.cpp" line="344"/>
         <source>The solve was cancelled.</source>
         <translation>ソルブを中止しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="341"/>
+        <location filename="../app/gui/solve_controller.cpp" line="347"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 は解けません: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="342"/>
+        <location filename="../app/gui/solve_controller.cpp" line="348"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 は解けません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="346"/>
+        <location filename="../app/gui/solve_controller.cpp" line="352"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>頂点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="347"/>
+        <location filename="../app/gui/solve_controller.cpp" line="353"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>辺 %2 の制御点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="353"/>
+        <location filename="../app/gui/solve_controller.cpp" line="359"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 を解けませんでした: 連立一次方程式を分解できませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="355"/>
+        <location filename="../app/gui/solve_controller.cpp" line="361"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 を解けませんでした: 反復で有限でない値が生じました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="359"/>
+        <location filename="../app/gui/solve_controller.cpp" line="365"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 を解けませんでした: ソルバーが有限でない値を出しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="365"/>
+        <location filename="../app/gui/solve_controller.cpp" line="371"/>
         <source>(Solver: %1)</source>
         <translation>(ソルバー: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="381"/>
+        <location filename="../app/gui/solve_controller.cpp" line="387"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="385"/>
+        <location filename="../app/gui/solve_controller.cpp" line="391"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="399"/>
+        <location filename="../app/gui/solve_controller.cpp" line="405"/>
         <source>converged</source>
         <translation>収束</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="403"/>
+        <location filename="../app/gui/solve_controller.cpp" line="409"/>
         <source>tolerance reached</source>
         <translation>許容値に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="403"/>
+        <location filename="../app/gui/solve_controller.cpp" line="409"/>
         <source>iteration limit reached</source>
         <translation>反復回数の上限に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="410"/>
+        <location filename="../app/gui/solve_controller.cpp" line="416"/>
         <source>failed</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="418"/>
+        <location filename="../app/gui/solve_controller.cpp" line="424"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>。ソルブで可展性が悪化したため元のままにしました (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="424"/>
+        <location filename="../app/gui/solve_controller.cpp" line="430"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; 長さを保てなかったため (%1)、シートの伸びを許してドラッグをやり直しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="437"/>
+        <location filename="../app/gui/solve_controller.cpp" line="443"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; シートにより %1 mm 手前で止まりました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="449"/>
+        <location filename="../app/gui/solve_controller.cpp" line="455"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n 個のパッチが自身の上に折り返され、曲面が自己重複しています: %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="464"/>
+        <location filename="../app/gui/solve_controller.cpp" line="470"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; 展開図が %n 個のパッチで自身と重なっており (%1)、1 枚のシートから切り出せません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="470"/>
+        <location filename="../app/gui/solve_controller.cpp" line="476"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="475"/>
+        <location filename="../app/gui/solve_controller.cpp" line="481"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="480"/>
+        <location filename="../app/gui/solve_controller.cpp" line="486"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="489"/>
+        <location filename="../app/gui/solve_controller.cpp" line="495"/>
         <source>Solve</source>
         <translation>ソルブ</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="507"/>
+        <location filename="../app/gui/solve_controller.cpp" line="513"/>
         <source>%1 discarded: the design changed meanwhile; it is unchanged.</source>
         <translation>%1 を破棄しました: その間にデザインが変更されました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="548"/>
+        <location filename="../app/gui/solve_controller.cpp" line="554"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>ソルブはデザインを元のままにしました。ソルブで可展性が悪化したためです (最大の可展性残差 %1 → %2)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="572"/>
+        <location filename="../app/gui/solve_controller.cpp" line="578"/>
         <source>%1. %2</source>
         <comment>a verdict, then a sentence</comment>
         <translation>%1。%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="576"/>
+        <location filename="../app/gui/solve_controller.cpp" line="582"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n 個のサーフェスを元のままにしました。ソルブで可展性が悪化したためです。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="588"/>
+        <location filename="../app/gui/solve_controller.cpp" line="594"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 を破棄しました: ソルブ中にデザインが変更されました。何も動いていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="597"/>
+        <location filename="../app/gui/solve_controller.cpp" line="603"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1、可展を維持: %n 回反復、最大の制約残差 %2。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="226"/>
-        <location filename="../app/gui/solve_controller.cpp" line="540"/>
+        <location filename="../app/gui/solve_controller.cpp" line="232"/>
+        <location filename="../app/gui/solve_controller.cpp" line="546"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>ソルブに失敗しました: %1 デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="316"/>
+        <location filename="../app/gui/solve_controller.cpp" line="94"/>
+        <source>Solve is not started while %1 runs; cancel it first (Esc).</source>
+        <translation>%1 の実行中はソルブを開始しません。先に中止してください (Esc)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="322"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2 と %3 を結ぶ直線上にあり、この 2 点の距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="323"/>
+        <location filename="../app/gui/solve_controller.cpp" line="329"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2、%3、%4 の三角形の内側にあり、これらの距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="406"/>
+        <location filename="../app/gui/solve_controller.cpp" line="412"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>母線、曲線またはパッチがつぶれる前の最後の有効な状態で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="414"/>
+        <location filename="../app/gui/solve_controller.cpp" line="420"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (残差が最小の反復 %1 で終了)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="433"/>
+        <location filename="../app/gui/solve_controller.cpp" line="439"/>
         <source>taken back to where the drag started, since the drag %1: the design stays at its last developable state</source>
         <translation>ドラッグ開始時の状態に戻しました (ドラッグの結果: %1)、デザインは最後の可展な状態のままです</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="517"/>
+        <location filename="../app/gui/solve_controller.cpp" line="523"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>ソルブ中にデザインが変更されたため、結果を破棄しました。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="569"/>
+        <location filename="../app/gui/solve_controller.cpp" line="575"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>ソルブ完了: %n 回反復、制約残差の最大値 %1。</numerusform>

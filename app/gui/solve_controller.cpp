@@ -88,6 +88,12 @@ bool SolveController::stretchesWhereLengthsFail() {
 }
 
 void SolveController::solve() {
+    if (m_solving && m_job) {
+        // A job of its own (an approximation) runs: a Solve would supersede it without a word.
+        emit m_workspace->statusMessage(
+            tr("Solve is not started while %1 runs; cancel it first (Esc).").arg(m_editTitle));
+        return;
+    }
     const document::Document* doc = m_workspace->document();
     if (doc->surfaceCount() == 0) {
         emit finished(tr("There is nothing to solve."));

@@ -277,6 +277,42 @@ private slots:
         QVERIFY(window.action(QStringLiteral("actionApproximateReference"))->isEnabled());
     }
 
+    void solveWaitsForTheApproximation() {
+        // Tools ▸ Solve while the approximation's job runs is not started, said so; the
+        // approximation goes on and ends as one undo step.
+        app::MainWindow window;
+        QVERIFY(test::showActiveWithExample(window, QStringLiteral("sheet")));
+        openCylinderOnly(window);
+        document::Document* doc = window.workspace()->document();
+        const int steps = doc->undoStack()->count();
+        app::ApproximateReaction* reaction = reactionOf(window);
+        QSignalSpy finished(reaction, &app::ApproximateReaction::finished);
+        QSignalSpy status(window.workspace(), &app::Workspace::statusMessage);
+        int reported = 0;
+        connect(window.solveController(), &app::SolveController::progress, this,
+                [&reported, &window] {
+                    if (reported++ == 0) {
+                        window.solveController()->solve();
+                    }
+                });
+        QTimer poll;
+        whenDialogOpens(poll, oneStrip(30));
+        window.action(QStringLiteral("actionApproximateReference"))->trigger();
+        QVERIFY(finished.wait(120000));
+        QVERIFY(reported > 0);
+        QVERIFY2(finished.front().at(0).toBool(), qPrintable(finished.front().at(1).toString()));
+        QCOMPARE(doc->undoStack()->count(), steps + 1);
+        const QString refused =
+            app::SolveController::tr("Solve is not started while %1 runs; cancel it first (Esc).")
+                .arg(app::ApproximateReaction::tr("Approximate Reference Shape"));
+        QStringList messages;
+        for (const QList<QVariant>& message : status) {
+            messages << message.front().toString();
+        }
+        QVERIFY2(messages.contains(refused), qPrintable(messages.join(QStringLiteral(" | "))));
+        QVERIFY(test::waitForWorkerIdle(window, 60000));
+    }
+
     // 40,000 points on a cylinder (or the file DEVSURF_TEST_LARGE_REFERENCE names, e.g. the
     // Stanford bunny in mm, with DEVSURF_TEST_STRIPS strips of 2 intervals): start() hands every
     // step to other threads, so it returns with the design untouched; the times of the steps
