@@ -77,6 +77,8 @@ public:
     // status sentence: "; vertex 5 lies inside the triangle of the pinned vertices 0, 3 and 12,
     // …".
     static QString heldText(const model::HeldVertex& held);
+    // "1, 2, 6" for the patches a report names.
+    static QString patchList(const QList<int>& faces);
     // Runs a job whose result its caller applies (Tools ▸ Approximate Reference Shape…): busy,
     // progress, Cancel and cancelling on any edit as for a solve, every sentence naming `title`.
     // A successful outcome of the design as it still is goes to jobDone(); the controller stays

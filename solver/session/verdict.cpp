@@ -15,15 +15,17 @@ void addPatch(Verdict& verdict, int surface, model::FaceId face) {
     }
 }
 
-// Far off: the sheet would stretch by more than kDragConvergedResidual (relative) to lie on its
-// development, it could not be unfolded at all, or a patch's sampled developability residual
-// exceeds kDragConvergedResidual (a narrow strip's sampled mesh unfolds without stretching
-// however little developable it is, so the unfolding alone can miss it: the torus's bands).
+// Short of the tolerance, a patch's sampled developability residual exceeds
+// kDragConvergedResidual. (A narrow strip's sampled mesh unfolds without stretching however
+// little developable it is, so the unfolding alone can miss it: the torus's bands.)
 bool worstFaceOff(const SurfaceAssessment& a) {
     return !a.summary.toleranceReached && !a.worstFaces.empty() &&
            a.worstFaces.front().second > kDragConvergedResidual;
 }
 
+// Far off: the sheet would stretch by more than kDragConvergedResidual (relative) to lie on its
+// development, it could not be unfolded at all, a patch is far from developable, or Solve left
+// the design as it was.
 bool farOff(const SurfaceAssessment& a) {
     return (!a.summary.toleranceReached &&
             (a.edgeLengthError > kDragConvergedResidual || a.isometryMm < 0.0)) ||
