@@ -99,14 +99,7 @@ struct SurfaceFormulation::Builder {
     // values per interval: most of the time a session on a large design took to build).
     std::set<FaceId> developableStarts;
 
-    // Point indices of a strip side's curve in the order the strip traverses it.
-    std::vector<int> sidePoints(const model::StripSide& side) const {
-        std::vector<int> points = f.m_edgePoints.at(side.edge);
-        if (side.reversed) {
-            std::reverse(points.begin(), points.end());
-        }
-        return points;
-    }
+    std::vector<int> sidePoints(const model::StripSide& side) const { return f.sidePoints(side); }
 
     VertexId startVertex(const model::StripSide& side) const {
         const model::EdgeRecord& record = surface.edge(side.edge);
@@ -381,34 +374,6 @@ struct SurfaceFormulation::Builder {
         }
     }
 
-    // The closest points of the approximation target (§4.2) on the strips (not cones).
-    void addApproximationFit() {
-        if (!options.approximation) {
-            return;
-        }
-        std::vector<ApproximatedStrip> columns;
-        for (const model::Strip& strip : strips) {
-            const auto normals = stripNormals.find(strip.face);
-            if (strip.isCone() || strip.bSide.edge == model::kInvalidId ||
-                normals == stripNormals.end()) {
-                continue;
-            }
-            ApproximatedStrip c;
-            c.face = strip.face;
-            for (int point : sidePoints(strip.aSide)) {
-                c.a.push_back(f.pointOffset(point));
-            }
-            for (int point : sidePoints(strip.bSide)) {
-                c.b.push_back(f.pointOffset(point));
-            }
-            c.normalOffset = normals->second.offset;
-            c.normalCurve = normals->second.curve;
-            columns.push_back(std::move(c));
-        }
-        f.m_approximation = std::make_unique<ApproximationFit>(
-            surface, *options.approximation, std::move(columns), f.m_centre, f.m_scale);
-    }
-
     // State offsets of every coarse vertex, once the points are placed.
     std::map<VertexId, int> vertexOffsets() const {
         std::map<VertexId, int> offsets;
@@ -615,7 +580,9 @@ SurfaceFormulation::SurfaceFormulation(const model::CompositeSurface& surface,
     builder.collectEdgeOffsets();
     builder.allocateNormals();
     builder.addStrips();
-    builder.addApproximationFit();
+    if (m_options.approximation) {
+        addApproximationFit(surface, builder.strips, builder.stripNormals);
+    }
     builder.addCreaseConditions();
     builder.addPlanarFaces();
     builder.addSmoothRulings();
@@ -634,16 +601,12 @@ SurfaceFormulation::SurfaceFormulation(const model::CompositeSurface& surface,
     setReferenceState(m_initialState);
 }
 
-void SurfaceFormulation::refreshApproximation(const model::CompositeSurface& current) {
-    if (m_approximation) {
-        m_approximation->refresh(current);
+std::vector<int> SurfaceFormulation::sidePoints(const model::StripSide& side) const {
+    std::vector<int> points = m_edgePoints.at(side.edge);
+    if (side.reversed) {
+        std::reverse(points.begin(), points.end());
     }
-}
-
-void SurfaceFormulation::scaleApproximationWeights(double factor) {
-    for (FamilyId id : m_approximationFamilies) {
-        m_problem.setFamilyWeight(id, m_problem.family(id).weight * factor);
-    }
+    return points;
 }
 
 } // namespace devsurf::solver

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "model/composite_surface.h"
+#include "model/strip.h"
 #include "solver/core/options.h"
 #include "solver/core/problem.h"
 #include "solver/formulation/approximation_terms.h"
@@ -13,6 +14,8 @@
 #include <vector>
 
 namespace devsurf::solver {
+
+struct StripNormalSpline; // crease_conditions.h
 
 class BilinearTerm;
 class BisectorTerm;
@@ -328,6 +331,13 @@ private:
     void addHandles(TargetTerm& handles, TargetTerm& controlPointHandles);
     int pointOffset(int point) const { return m_pointsOffset + 3 * point; }
     model::Vec3 toModel(const double* p) const;
+    // Point indices of a strip side's curve in the order the strip traverses it.
+    std::vector<int> sidePoints(const model::StripSide& side) const;
+    // The closest points of the approximation target (§4.2) on the strips (not cones), with
+    // each strip's normal spline (surface_formulation_approximation.cpp).
+    void addApproximationFit(const model::CompositeSurface& surface,
+                             const std::vector<model::Strip>& strips,
+                             const std::map<model::FaceId, StripNormalSpline>& stripNormals);
 
     FormulationOptions m_options;
     Problem m_problem;

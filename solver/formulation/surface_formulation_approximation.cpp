@@ -1,0 +1,48 @@
+// The approximation's part of SurfaceFormulation (§4.2): its closest-point fit over the strips,
+// refreshed between iterations, and the weights that fade it. Split from
+// surface_formulation.cpp, which assembles the surface's own terms.
+#include "solver/formulation/surface_formulation.h"
+
+#include "solver/formulation/crease_conditions.h"
+
+namespace devsurf::solver {
+
+void SurfaceFormulation::addApproximationFit(
+    const model::CompositeSurface& surface, const std::vector<model::Strip>& strips,
+    const std::map<model::FaceId, StripNormalSpline>& stripNormals) {
+    std::vector<ApproximatedStrip> columns;
+    for (const model::Strip& strip : strips) {
+        const auto normals = stripNormals.find(strip.face);
+        if (strip.isCone() || strip.bSide.edge == model::kInvalidId ||
+            normals == stripNormals.end()) {
+            continue;
+        }
+        ApproximatedStrip c;
+        c.face = strip.face;
+        for (int point : sidePoints(strip.aSide)) {
+            c.a.push_back(pointOffset(point));
+        }
+        for (int point : sidePoints(strip.bSide)) {
+            c.b.push_back(pointOffset(point));
+        }
+        c.normalOffset = normals->second.offset;
+        c.normalCurve = normals->second.curve;
+        columns.push_back(std::move(c));
+    }
+    m_approximation = std::make_unique<ApproximationFit>(surface, *m_options.approximation,
+                                                         std::move(columns), m_centre, m_scale);
+}
+
+void SurfaceFormulation::refreshApproximation(const model::CompositeSurface& current) {
+    if (m_approximation) {
+        m_approximation->refresh(current);
+    }
+}
+
+void SurfaceFormulation::scaleApproximationWeights(double factor) {
+    for (FamilyId id : m_approximationFamilies) {
+        m_problem.setFamilyWeight(id, m_problem.family(id).weight * factor);
+    }
+}
+
+} // namespace devsurf::solver
