@@ -409,7 +409,7 @@
     </message>
     <message numerus="yes">
         <location filename="../app/gui/solve_report_text.cpp" line="26"/>
-        <location filename="../app/gui/solve_report_text.cpp" line="61"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="55"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>folded over in %n place</numerusform>
@@ -417,7 +417,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="64"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="58"/>
         <source>left a development overlapping itself at %n patch(es)</source>
         <translation>
             <numerusform>left a development overlapping itself at %n patch</numerusform>
@@ -425,7 +425,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="208"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="202"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n patch folds over onto itself, where the surface overlaps itself: %1</numerusform>
@@ -433,7 +433,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="223"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="217"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; the development overlaps itself at %n patch (%1) and cannot be cut from one sheet</numerusform>

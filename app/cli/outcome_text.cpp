@@ -25,6 +25,15 @@ std::string places(int count) {
     return std::to_string(count) + (count == 1 ? " place" : " places");
 }
 
+// "a, b and c".
+std::string joinParts(const std::vector<std::string>& parts) {
+    std::string sentence;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        sentence += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
+    }
+    return sentence;
+}
+
 } // namespace
 
 std::string describeFoldOvers(const std::vector<std::pair<model::FaceId, int>>& foldOvers) {
@@ -101,55 +110,34 @@ std::string describeOutcome(const solver::DragOutcome& outcome) {
     if (!outcome.measurable) {
         parts.push_back("left a shape too degenerate to measure");
     }
-    if (parts.empty()) {
-        return "ended without a problem";
-    }
-    std::string sentence;
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-        sentence += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
-    }
-    return sentence;
+    return parts.empty() ? "ended without a problem" : joinParts(parts);
 }
 
 std::string describeTakenBack(const solver::SurfaceAssessment& refused) {
+    const solver::BrokenBy by = solver::brokenBy(refused);
     std::vector<std::string> parts;
     char text[200];
-    if (!refused.summary.toleranceReached && !refused.worstFaces.empty() &&
-        refused.worstFaces.front().second > solver::kDragConvergedResidual) {
+    if (by.worstFace) {
         std::snprintf(text, sizeof text,
                       "did not reach the tolerance (residual %.1e; patch %d sampled %.1e from "
                       "developable)",
                       refused.summary.finalMaxConstraintResidual,
-                      static_cast<int>(refused.worstFaces.front().first),
-                      refused.worstFaces.front().second);
+                      static_cast<int>(by.worstFace->first), by.worstFace->second);
         parts.push_back(text);
     }
-    if (refused.sheetStretchMm > 0.0 &&
-        refused.sheetStretchMm > solver::kKeptSheetTolerance * std::max(refused.sheetExtent, 1.0)) {
+    if (by.offSheet) {
         std::snprintf(text, sizeof text, "left its kept sheet by %.2g mm", refused.sheetStretchMm);
         parts.push_back(text);
     }
-    int foldPlaces = 0;
-    for (const auto& [face, count] : refused.foldOvers) {
-        (void)face;
-        foldPlaces += count;
-    }
-    if (foldPlaces > 0) {
-        parts.push_back("folded over in " + places(foldPlaces));
+    if (by.foldOverPlaces > 0) {
+        parts.push_back("folded over in " + places(by.foldOverPlaces));
     }
     if (!refused.overlapping.empty()) {
         std::snprintf(text, sizeof text, "left a development overlapping itself at %zu patch%s",
                       refused.overlapping.size(), refused.overlapping.size() == 1 ? "" : "es");
         parts.push_back(text);
     }
-    if (parts.empty()) {
-        return "ended not developable";
-    }
-    std::string sentence;
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-        sentence += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
-    }
-    return sentence;
+    return parts.empty() ? "ended not developable" : joinParts(parts);
 }
 
 std::string describeCreaseRefusal(const solver::CreaseDragRefused& refused) {

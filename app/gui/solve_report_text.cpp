@@ -38,27 +38,21 @@ QString SolveController::problemsText(const solver::DragOutcome& outcome) {
 }
 
 QString SolveController::takenBackText(const solver::SurfaceAssessment& refused) {
+    const solver::BrokenBy by = solver::brokenBy(refused);
     QStringList parts;
-    if (!refused.summary.toleranceReached && !refused.worstFaces.empty() &&
-        refused.worstFaces.front().second > solver::kDragConvergedResidual) {
+    if (by.worstFace) {
         parts << tr("did not reach the tolerance (residual %1; patch %2 sampled %3 from "
                     "developable)")
                      .arg(QString::number(refused.summary.finalMaxConstraintResidual, 'e', 1))
-                     .arg(refused.worstFaces.front().first)
-                     .arg(QString::number(refused.worstFaces.front().second, 'e', 1));
+                     .arg(by.worstFace->first)
+                     .arg(QString::number(by.worstFace->second, 'e', 1));
     }
-    if (refused.sheetStretchMm > 0.0 &&
-        refused.sheetStretchMm > solver::kKeptSheetTolerance * std::max(refused.sheetExtent, 1.0)) {
+    if (by.offSheet) {
         parts << tr("left its kept sheet by %1 mm")
                      .arg(QString::number(refused.sheetStretchMm, 'g', 2));
     }
-    int foldPlaces = 0;
-    for (const auto& [face, count] : refused.foldOvers) {
-        (void)face;
-        foldPlaces += count;
-    }
-    if (foldPlaces > 0) {
-        parts << tr("folded over in %n place(s)", nullptr, foldPlaces);
+    if (by.foldOverPlaces > 0) {
+        parts << tr("folded over in %n place(s)", nullptr, by.foldOverPlaces);
     }
     if (!refused.overlapping.empty()) {
         parts << tr("left a development overlapping itself at %n patch(es)", nullptr,

@@ -38,8 +38,21 @@ bool sheetStretched(const SurfaceAssessment& a) {
 
 } // namespace
 
+BrokenBy brokenBy(const SurfaceAssessment& a) {
+    BrokenBy by;
+    if (worstFaceOff(a)) {
+        by.worstFace = a.worstFaces.front();
+    }
+    by.offSheet = sheetStretched(a);
+    for (const auto& [face, places] : a.foldOvers) {
+        (void)face;
+        by.foldOverPlaces += places;
+    }
+    return by;
+}
+
 bool broken(const SurfaceAssessment& a) {
-    return worstFaceOff(a) || sheetStretched(a) || !a.foldOvers.empty();
+    return brokenBy(a).any();
 }
 
 bool notDevelopable(const SurfaceAssessment& a) {

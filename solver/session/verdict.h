@@ -3,6 +3,7 @@
 #include "model/ids.h"
 #include "solver/session/solve_job.h"
 
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -71,5 +72,17 @@ bool notDevelopable(const SurfaceAssessment& a);
 // annulus whose development overlaps itself) is not broken, only not cut from one piece. A
 // drag never ends broken from a press that was not: SolveJob takes it back.
 bool broken(const SurfaceAssessment& a);
+
+// What makes a settled surface broken (broken() holds when any does), for the front ends to
+// word.
+struct BrokenBy {
+    // Short of the tolerance, the patch sampled farthest from developable beyond
+    // kDragConvergedResidual, and its normalised residual.
+    std::optional<std::pair<model::FaceId, double>> worstFace;
+    bool offSheet = false; // farther from its kept sheet than kKeptSheetTolerance
+    int foldOverPlaces = 0;
+    bool any() const { return worstFace || offSheet || foldOverPlaces > 0; }
+};
+BrokenBy brokenBy(const SurfaceAssessment& a);
 
 } // namespace devsurf::solver
