@@ -64,7 +64,8 @@ QJsonObject creaseSideObject(const model::CreaseSide& side) {
 // The sheet a kept development is confined to: its shape, sizes, placement and, for an
 // outline, its loops as the development's plane sees them.
 QJsonObject sheetJson(const model::SheetDomain& d) {
-    static const char* const names[] = {"free", "rectangle", "disk", "annulus", "outline"};
+    static const char* const names[] = {"free",    "rectangle", "disk",
+                                        "annulus", "outline",   "cylinder"};
     QJsonObject sheet{{"shape", names[static_cast<int>(d.shape)]}};
     switch (d.shape) {
     case model::SheetShape::Free:
@@ -81,6 +82,11 @@ QJsonObject sheetJson(const model::SheetDomain& d) {
         sheet["innerRadius"] = d.innerRadius;
         break;
     case model::SheetShape::Outline:
+        break;
+    case model::SheetShape::Cylinder:
+        // The development's coordinates are read modulo this translation.
+        sheet["radius"] = d.radius;
+        sheet["period"] = point(*model::domainPeriod(d));
         break;
     }
     sheet["centre"] = point(d.centre);

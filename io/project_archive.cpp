@@ -376,7 +376,7 @@ template <class Archive> void load(Archive& ar, CompositeSurface& s, unsigned ve
         std::uint32_t loops = 0;
         ar >> shape >> d.width >> d.height >> d.radius >> d.innerRadius >> d.centre.x >>
             d.centre.y >> d.angle >> loops;
-        if (shape > static_cast<std::uint8_t>(devsurf::model::SheetShape::Outline)) {
+        if (shape > static_cast<std::uint8_t>(devsurf::model::SheetShape::Cylinder)) {
             throw FileError("it has an unknown sheet shape " + std::to_string(shape));
         }
         d.shape = static_cast<devsurf::model::SheetShape>(shape);

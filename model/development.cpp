@@ -89,15 +89,22 @@ void alignToProjection(const SampledMesh& mesh, const std::vector<int>& componen
 std::optional<Problem> keepDevelopment(CompositeSurface& surface) {
     const Development unfolded =
         unfoldSampledMesh(sampleSurface(surface, kDevelopmentSamplesPerInterval));
-    if (unfolded.components != 1 || unfolded.period || unfolded.closureError > kOneSheetClosure) {
+    if (unfolded.components != 1 || unfolded.closureError > kOneSheetClosure) {
         Problem problem = problemOf(ProblemCode::NotOneSheet);
         problem.count = unfolded.components;
-        problem.value = unfolded.period ? unfolded.period->norm() : unfolded.closureError;
-        problem.limit = unfolded.period ? 1.0 : 0.0; // 1: closes up with a period
+        problem.value = unfolded.closureError;
         return problem;
     }
     surface.setKeepsDevelopment(true);
     surface.setDevelopment(unfolded.vertices);
+    if (unfolded.period) {
+        // Closed around (Fig. 14): the sheet is the cylinder it unrolls from.
+        SheetDomain cylinder;
+        cylinder.shape = SheetShape::Cylinder;
+        cylinder.radius = unfolded.period->norm() / (2.0 * 3.14159265358979323846);
+        cylinder.angle = std::atan2(unfolded.period->y, unfolded.period->x);
+        surface.setSheetDomain(cylinder);
+    }
     return std::nullopt;
 }
 
@@ -272,13 +279,14 @@ double keptSheetPairError(const CompositeSurface& surface, bool relative) {
     if (flat.size() != mesh.vertices.size()) {
         return -1.0;
     }
+    const std::optional<Vec2> period = domainPeriod(surface.sheetDomain());
     double worst = 0.0;
     for (const auto& face : mesh.faces) {
         for (std::size_t i = 0; i < face.size(); ++i) {
             for (std::size_t j = i + 1; j < face.size(); ++j) {
                 const auto a = static_cast<std::size_t>(face[i]);
                 const auto b = static_cast<std::size_t>(face[j]);
-                const double inSheet = (flat[a] - flat[b]).norm();
+                const double inSheet = reduce(flat[a] - flat[b], period).norm();
                 const double gap = std::abs(distance(mesh.vertices[a], mesh.vertices[b]) - inSheet);
                 if (!relative) {
                     worst = std::max(worst, gap);

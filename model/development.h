@@ -31,8 +31,9 @@ Development unfoldSampledMesh(const SampledMesh& mesh);
 // The largest gap (mm) at which an unfolding still counts as one flat sheet (closure error).
 inline constexpr double kOneSheetClosure = 1e-3;
 
-// Makes `surface` hold its sheet (keepsDevelopment) as it unfolds now; or, changing nothing, the
-// problem why it is not one flat sheet (several parts, a period, a gap above kOneSheetClosure).
+// Makes `surface` hold its sheet (keepsDevelopment) as it unfolds now, on a cylinder sheet
+// (SheetShape::Cylinder) of the unfolding's period where it closes around; or, changing
+// nothing, the problem why it is not one sheet (several parts, a gap above kOneSheetClosure).
 std::optional<Problem> keepDevelopment(CompositeSurface& surface);
 
 // How far the surface is from its kept development (keepsDevelopment()), in mm: the largest

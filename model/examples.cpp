@@ -480,12 +480,67 @@ CompositeSurface makeFig13(int size) {
     return s;
 }
 
+// A pleated column after Huffman's hexagonal column (the paper's Fig. 14): a tube folded along
+// `sectors` upright creases (sectors / 2 ridges, sectors / 2 valleys, their cross-section a
+// star), each crease split into four S-edges with the curved-fold condition, the strips
+// between them ruled across. As built every strip is planar and every crease straight; drags
+// curve them. It closes around, so its development is periodic: it holds that sheet, a
+// cylinder whose circumference is the star's perimeter (SheetShape::Cylinder), and three
+// vertices of its bottom rim are pinned.
+CompositeSurface makeColumn(int sectors) {
+    const double ridgeRadius = 100.0;
+    const double valleyRadius = 70.0;
+    const double height = 240.0;
+    const int rows = 4;
+    const SplineSpace space{3, 2, 2};
+    CompositeSurface s;
+    s.setName("column");
+    auto at = [&](int i, int j) {
+        const double phi = 2.0 * kPi * i / sectors;
+        const double r = i % 2 == 0 ? ridgeRadius : valleyRadius;
+        return Vec3(r * std::cos(phi), r * std::sin(phi), height * j / rows);
+    };
+    std::vector<std::vector<VertexId>> grid(rows + 1, std::vector<VertexId>(sectors));
+    for (int j = 0; j <= rows; ++j) {
+        for (int i = 0; i < sectors; ++i) {
+            grid[j][i] = s.addVertex(at(i, j));
+        }
+    }
+    for (int j = 0; j < rows; ++j) {
+        for (int i = 0; i < sectors; ++i) {
+            const int next = (i + 1) % sectors;
+            // Counter-clockwise around the axis, then up: the normals point out of the tube.
+            s.addFace({grid[j][i], grid[j][next], grid[j + 1][next], grid[j + 1][i]});
+        }
+    }
+    for (int j = 0; j < rows; ++j) {
+        for (int i = 0; i < sectors; ++i) {
+            const Vec3 from = s.position(grid[j][i]);
+            const Vec3 to = s.position(grid[j + 1][i]);
+            const EdgeId edge = s.setSpline(
+                grid[j][i], grid[j + 1][i], space,
+                controlPointsAlong(space, from, to, [&](double t) { return lerp(from, to, t); }));
+            s.setCreaseCondition(edge, CreaseCondition::CurvedFold);
+        }
+    }
+    // Three rim vertices a third of the way around from each other. (With the whole rim
+    // pinned the held sheet allows no motion near this state: a drag is held back in full.)
+    for (int k = 0; k < 3; ++k) {
+        s.setPinned(grid[0][k * sectors / 3], true);
+    }
+    if (const auto problem = keepDevelopment(s)) {
+        throw ModelError(*problem);
+    }
+    return s;
+}
+
 } // namespace
 
 const std::vector<ExampleInfo>& builtInExamples() {
     static const std::vector<ExampleInfo> examples{
-        {"sheet", 3, 1, 60}, {"annulus", 6, 1, 60}, {"cylinder", 6, 3, 120}, {"mixed", 2, 1, 50},
-        {"fig8", 3, 2, 30},  {"fig6", 4, 1, 40},    {"fig13", 6, 3, 40},     {"torus", 6, 3, 40},
+        {"sheet", 3, 1, 60}, {"annulus", 6, 1, 60}, {"cylinder", 6, 3, 120},
+        {"mixed", 2, 1, 50}, {"fig8", 3, 2, 30},    {"fig6", 4, 1, 40},
+        {"fig13", 6, 3, 40}, {"torus", 6, 3, 40},   {"column", 12, 6, 48},
     };
     return examples;
 }
@@ -521,6 +576,8 @@ Project makeExample(const std::string& name, int size) {
             project.addSurface(makeFig13(size));
         } else if (name == "torus") {
             project.addSurface(makeTorus(size));
+        } else if (name == "column") {
+            project.addSurface(makeColumn(size));
         } else {
             project.addSurface(makeFig6(size));
         }

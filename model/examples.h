@@ -14,9 +14,10 @@ struct ExampleInfo {
     int maxSize;
 };
 
-// The built-in examples: sheet, annulus, cylinder, mixed, fig8, fig6, fig13, torus. Each is
-// exactly developable as built; fig8, fig6 and fig13 carry curved-fold conditions and pinned
-// vertices; fig13 keeps its development on a disk; the torus unfolds into no one sheet.
+// The built-in examples: sheet, annulus, cylinder, mixed, fig8, fig6, fig13, torus, column.
+// Each is exactly developable as built; fig8, fig6, fig13 and column carry curved-fold
+// conditions and pinned vertices; fig13 keeps its development on a disk, column around a
+// cylinder; the torus unfolds into no one sheet.
 const std::vector<ExampleInfo>& builtInExamples();
 
 // Builds an example; size is its resolution (see builtInExamples()), 0 means the default.

@@ -76,8 +76,8 @@ enum class ProblemCode {
     ConditionOnBoundary,     // edge has a crease condition but is a boundary curve
     ConditionBesideNonStrip, // edge has a crease condition beside a cone or planar patch
     ConditionNeedsDegree,    // edge has a crease condition but its curve's degree is `count`
-    NotOneSheet, // not one flat sheet: count parts; limit 1: closes with period `value` mm, else
-                 // its unfolding misses closing up by `value` mm
+    NotOneSheet, // not one sheet: count parts, or its unfolding (flat or around a cylinder)
+                 // misses closing up by `value` mm
     Internal,    // a bug; detail says where
 };
 

@@ -128,6 +128,7 @@ std::vector<DomainLoop> domainLoops(const SheetDomain& d) {
     };
     switch (d.shape) {
     case SheetShape::Free:
+    case SheetShape::Cylinder: // no boundary: only closed up around
         break;
     case SheetShape::Rectangle: {
         const double w = 0.5 * d.width;
@@ -190,6 +191,25 @@ DomainFoot footPoint(const DomainLoop& loop, const Vec2& p) {
     return best;
 }
 
+std::optional<Vec2> domainPeriod(const SheetDomain& domain) {
+    if (domain.shape != SheetShape::Cylinder) {
+        return std::nullopt;
+    }
+    return turned(Vec2(2.0 * kPi * domain.radius, 0.0), domain.angle);
+}
+
+int periodShift(const Vec2& near, const Vec2& p, const std::optional<Vec2>& period) {
+    if (!period) {
+        return 0;
+    }
+    const double length2 = dot2(*period, *period);
+    if (!(length2 > 0.0)) {
+        return 0;
+    }
+    const double k = std::round(dot2(near - p, *period) / length2);
+    return std::isfinite(k) ? static_cast<int>(k) : 0;
+}
+
 std::vector<Vec2> domainCorners(const SheetDomain& domain) {
     std::vector<Vec2> corners;
     for (const DomainLoop& loop : domainLoops(domain)) {
@@ -229,6 +249,8 @@ std::optional<Problem> domainProblem(const SheetDomain& d) {
     switch (d.shape) {
     case SheetShape::Free:
         return std::nullopt;
+    case SheetShape::Cylinder:
+        return usable(d.radius) ? std::nullopt : std::optional(problem(1));
     case SheetShape::Rectangle:
         return usable(d.width) && usable(d.height) ? std::nullopt : std::optional(problem(1));
     case SheetShape::Disk:
@@ -317,8 +339,8 @@ DomainAssignment assignToDomain(const SheetDomain& domain, const SampledMesh& me
 SheetDomain placeDomain(SheetDomain domain, const SampledMesh& mesh,
                         const std::vector<Vec2>& development) {
     const std::vector<std::vector<int>> boundary = developmentLoops(mesh, development);
-    if (domain.isFree() || boundary.empty()) {
-        return domain;
+    if (domain.isFree() || domain.shape == SheetShape::Cylinder || boundary.empty()) {
+        return domain; // a cylinder's period is the development's own, wherever it lies
     }
     const std::vector<Vec2> outer = pointsOf(boundary.front(), development);
     const Vec2 centroid = centroidOf(outer);
@@ -377,7 +399,8 @@ SheetDomain fittingDomain(SheetShape shape, const SampledMesh& mesh,
                           const std::vector<Vec2>& development) {
     SheetDomain domain;
     const std::vector<std::vector<int>> boundary = developmentLoops(mesh, development);
-    if (boundary.empty() || shape == SheetShape::Free || shape == SheetShape::Outline) {
+    if (boundary.empty() || shape == SheetShape::Free || shape == SheetShape::Outline ||
+        shape == SheetShape::Cylinder) {
         return domain;
     }
     domain.shape = shape;

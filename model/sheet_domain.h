@@ -3,7 +3,8 @@
 // The sheet a kept development is confined to (§5, "isometric mapping to a domain", Fig. 12,
 // 13): a rectangle, a disk, an annulus or an imported outline, placed in the development's
 // plane. Its boundary curves confine the development's boundary loops; its corners fix the
-// development vertices nearest to them.
+// development vertices nearest to them. Or a cylinder (Fig. 14): the development of a surface
+// that closes around is periodic, its coordinates read modulo (2πr, 0), and otherwise free.
 
 #include "problem.h"
 #include "reference_curve.h"
@@ -22,14 +23,15 @@ enum class SheetShape : std::uint8_t {
     Rectangle = 1,
     Disk = 2,
     Annulus = 3,
-    Outline = 4
+    Outline = 4,
+    Cylinder = 5
 };
 
 struct SheetDomain {
     SheetShape shape = SheetShape::Free;
     double width = 0.0;       // Rectangle
     double height = 0.0;      // Rectangle
-    double radius = 0.0;      // Disk; the outer circle of an Annulus
+    double radius = 0.0;      // Disk; the outer circle of an Annulus; Cylinder
     double innerRadius = 0.0; // Annulus
     // Outline: closed loops in mm in their own frame, the largest the outer boundary, the
     // others holes; a loop does not repeat its first point.
@@ -44,6 +46,14 @@ struct SheetDomain {
     bool operator==(const SheetDomain& other) const;
     bool operator!=(const SheetDomain& other) const { return !(*this == other); }
 };
+
+// The period of a cylinder's development, (2πr, 0) turned by its angle; none for the others.
+std::optional<Vec2> domainPeriod(const SheetDomain& domain);
+
+// The whole number k for which `p` + k · period lies nearest to `near` (0 without a period):
+// where a face or curve of a periodic development crosses the cut, its vertices are read
+// shifted so that they lie together.
+int periodShift(const Vec2& near, const Vec2& p, const std::optional<Vec2>& period);
 
 // One boundary curve of a placed domain: a circle, or a closed polygon.
 struct DomainLoop {
@@ -61,7 +71,7 @@ struct DomainFoot {
     Vec2 normal;
 };
 
-// The boundary loops of the placed domain (empty for a free sheet).
+// The boundary loops of the placed domain (empty for a free sheet and a cylinder).
 std::vector<DomainLoop> domainLoops(const SheetDomain& domain);
 DomainFoot footPoint(const DomainLoop& loop, const Vec2& p);
 // The placed domain's corners: a rectangle's four, an outline's vertices turning by 30° or more.
@@ -94,14 +104,15 @@ DomainAssignment assignToDomain(const SheetDomain& domain, const SampledMesh& me
 
 // The domain moved and turned so that its boundary lies closest (least squares) to the
 // development's boundary: circles centred on the outer loop's area centroid; a rectangle or
-// an outline centred there too and turned to the best of a search over the angle.
+// an outline centred there too and turned to the best of a search over the angle. A cylinder
+// stays as it is.
 SheetDomain placeDomain(SheetDomain domain, const SampledMesh& mesh,
                         const std::vector<Vec2>& development);
 
 // A sheet of `shape` that just holds the development, placed on it: the smallest-area
 // rectangle around it, the disk around its outer loop's centroid through its farthest vertex,
 // the annulus from that to the nearest vertex of its holes (half the outer radius without
-// holes). Free for Free and Outline.
+// holes). Free for Free, Outline and Cylinder (whose radius is the unfolding's period).
 SheetDomain fittingDomain(SheetShape shape, const SampledMesh& mesh,
                           const std::vector<Vec2>& development);
 

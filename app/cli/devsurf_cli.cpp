@@ -100,6 +100,8 @@ std::string sheetShapeText(const model::SheetDomain& d) {
         return ", on an annulus of radii " + mm(d.innerRadius) + " and " + mm(d.radius) + " mm";
     case model::SheetShape::Outline:
         return ", on an outline of " + std::to_string(d.outline.size()) + " loop(s)";
+    case model::SheetShape::Cylinder:
+        return ", around a cylinder of radius " + mm(d.radius) + " mm";
     }
     return "";
 }

@@ -271,7 +271,7 @@ std::optional<model::SheetDomain> requestedSheet(const SubcommandArguments& args
 int runSheetCommand(const SubcommandArguments& args) {
     const std::string input = args.onePositional("one project file");
     const std::string output = args.required("o", "the output file is missing (use -o FILE)");
-    const std::optional<model::SheetDomain> requested = requestedSheet(args);
+    std::optional<model::SheetDomain> requested = requestedSheet(args);
     const int surfaceNumber =
         args.isSet("surface")
             ? static_cast<int>(parseWhole(*args.value("surface"), "--surface", 1, 1000000))
@@ -297,11 +297,24 @@ int runSheetCommand(const SubcommandArguments& args) {
     }
     const model::SampledMesh mesh =
         model::sampleSurface(surface, model::kDevelopmentSamplesPerInterval);
+    if (surface.sheetDomain().shape == model::SheetShape::Cylinder) {
+        // Closed around: its sheet is the cylinder it unrolls from, never a flat shape.
+        if (!requested->isFree()) {
+            throw InputError("cannot confine '" + surface.name() +
+                             "' to a flat sheet: it closes around a cylinder of radius " +
+                             millimetres(surface.sheetDomain().radius));
+        }
+        requested = surface.sheetDomain();
+    }
     const model::SheetDomain domain = model::placeDomain(*requested, mesh, surface.development());
     surface.setSheetDomain(domain);
     writeProject(project, output);
     std::cout << "Wrote " << output << " ('" << surface.name()
               << "' keeps its development: " << surface.development().size() << " points, ";
+    if (domain.shape == model::SheetShape::Cylinder) {
+        std::cout << "periodic around a cylinder of radius " << millimetres(domain.radius) << ")\n";
+        return 0;
+    }
     if (domain.isFree()) {
         std::cout << "no boundary confined)\n";
         return 0;

@@ -145,6 +145,7 @@ model::SheetDomain SheetShapeDialog::unplaced() const {
         d.outline = m_outline;
         break;
     case model::SheetShape::Free:
+    case model::SheetShape::Cylinder: // never offered: a surface that closes around keeps it
         break;
     }
     return d;

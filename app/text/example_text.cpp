@@ -43,6 +43,13 @@ QString exampleDescription(const std::string& name) {
             "A closed torus of size bands of cones, 2 × size strips around: developable strip by "
             "strip but not from one sheet; its cutting pattern has one piece per band.");
     }
+    if (name == "column") {
+        return QCoreApplication::translate(
+            "ExampleDialog",
+            "A pleated column after Huffman's hexagonal column: a tube folded along size upright "
+            "creases with the curved-fold condition, three bottom vertices pinned. It keeps its "
+            "development around the cylinder it unrolls from. Drag a top vertex up or in.");
+    }
     return QCoreApplication::translate("ExampleDialog",
                                        "A strip, a pointed strip, a cone and a planar patch; size "
                                        "intervals per curve.");

@@ -281,11 +281,6 @@ QString ProblemText::of(const model::Problem& p) {
             return tr("The surface is not one sheet: it has %n separate part(s).", nullptr,
                       static_cast<int>(p.count));
         }
-        if (p.limit > 0.0) {
-            return tr("The surface is not one flat sheet: it unfolds onto a cylinder (a period of "
-                      "%1 mm).")
-                .arg(QString::number(p.value, 'f', 1));
-        }
         return tr("The surface is not one flat sheet: its unfolding misses closing up by %1 mm.")
             .arg(QString::number(p.value, 'g', 3));
     case ProblemCode::Internal:

@@ -114,6 +114,22 @@ DevelopmentVariables addDevelopment(const model::CompositeSurface& surface,
         state[static_cast<std::size_t>(result.offset) + 2 * i] = p.x;
         state[static_cast<std::size_t>(result.offset) + 2 * i + 1] = p.y;
     }
+    // Around a cylinder (Fig. 14) the copy is periodic: a face or curve across the cut reads
+    // some of its vertices shifted by whole periods, a fixed pair of variables, so that it lies
+    // together; the shifts are those of the start, which no iteration moves by half a period.
+    const std::optional<model::Vec2> period = model::domainPeriod(options.domain);
+    int periodOffset = -1;
+    if (period) {
+        periodOffset = problem.addVariableBlock("developmentPeriod", 2);
+        state.resize(static_cast<std::size_t>(problem.variableCount()), 0.0);
+        state[static_cast<std::size_t>(periodOffset)] = period->x / scale;
+        state[static_cast<std::size_t>(periodOffset) + 1] = period->y / scale;
+        problem.setBlockFixed("developmentPeriod");
+    }
+    auto shiftOf = [&](int near, int vertex) {
+        return model::periodShift(flat[static_cast<std::size_t>(near)],
+                                  flat[static_cast<std::size_t>(vertex)], period);
+    };
     auto flatOf = [&result](int vertex) {
         return PointCombination{{result.offset + 2 * vertex, 1.0}};
     };
@@ -129,17 +145,31 @@ DevelopmentVariables addDevelopment(const model::CompositeSurface& surface,
                 if (!(length > 0.0)) {
                     continue; // coincident samples (a pointed end): no pair to keep
                 }
-                const int row = isometry->addRow(plus(flatOf(a), flatOf(b), -1.0), space, 0.0);
+                PointCombination inSheet = plus(flatOf(a), flatOf(b), -1.0);
+                const int shifts = shiftOf(face[0], a) - shiftOf(face[0], b);
+                if (shifts != 0) {
+                    inSheet.push_back({periodOffset, static_cast<double>(shifts)});
+                }
+                const int row = isometry->addRow(inSheet, space, 0.0);
                 isometry->setRowScale(row, 1.0 / (length * length));
             }
         }
     }
     for (const model::SampledMesh::Polyline& line : mesh.splineEdges) {
+        // Split where a curve crosses the cut: its second differences there would span a period.
         std::vector<int> offsets;
-        for (int v : line.vertices) {
-            offsets.push_back(result.offset + 2 * v);
+        for (std::size_t k = 0; k < line.vertices.size(); ++k) {
+            if (k > 0 && shiftOf(line.vertices[k - 1], line.vertices[k]) != 0) {
+                if (offsets.size() >= 3) {
+                    fairness->addSequence(offsets);
+                }
+                offsets.clear();
+            }
+            offsets.push_back(result.offset + 2 * line.vertices[k]);
         }
-        fairness->addSequence(offsets);
+        if (offsets.size() >= 3) {
+            fairness->addSequence(offsets);
+        }
     }
     const FamilyId family = problem.addFamily("development", TermRole::Constraint, options.weight);
     problem.setFamilyJudgedApart(family, true);

@@ -110,6 +110,8 @@ std::string shapeName(model::SheetShape shape) {
         return "annulus";
     case model::SheetShape::Outline:
         return "outline";
+    case model::SheetShape::Cylinder:
+        return "cylinder";
     }
     return "?";
 }

@@ -2,6 +2,7 @@
 // drags that keep the surface isometric to its development, measured from the written-back
 // geometry (model::sampleSurface), not from the solver's residuals.
 
+#include "model/bspline_curve.h"
 #include "model/composite_surface.h"
 #include "model/development.h"
 #include "model/examples.h"
@@ -151,6 +152,33 @@ std::vector<model::VertexId> innerVertices(const model::CompositeSurface& s) {
     return inner;
 }
 
+constexpr double kPi = 3.14159265358979323846;
+
+// The length of a design's rim at height z: its edges whose ends both lie there, rulings
+// straight, S-edges as the chords between their samples at kSamples per interval (the sampled
+// mesh a sheet is held on): the circumference of the cylinder a tube unrolls onto.
+double rimLength(const model::CompositeSurface& s, double z) {
+    double length = 0.0;
+    for (const auto& [id, record] : s.edges()) {
+        if (std::abs(s.position(record.from).z - z) > 1e-9 ||
+            std::abs(s.position(record.to).z - z) > 1e-9) {
+            continue;
+        }
+        if (!record.isSpline()) {
+            length += model::distance(s.position(record.from), s.position(record.to));
+            continue;
+        }
+        const model::BSplineCurve curve =
+            model::BSplineCurve::uniform(record.space, record.controlPoints);
+        const int steps = record.space.intervals * kSamples;
+        for (int k = 0; k < steps; ++k) {
+            length += model::distance(curve.evaluate(static_cast<double>(k) / steps),
+                                      curve.evaluate(static_cast<double>(k + 1) / steps));
+        }
+    }
+    return length;
+}
+
 solver::FormulationOptions withDevelopment() {
     solver::FormulationOptions options;
     options.developmentSamplesPerInterval = kSamples;
@@ -293,11 +321,85 @@ private slots:
         QVERIFY2(pairLengthError(result, result.development()) < kHeldSheet,
                  qPrintable(QString::number(pairLengthError(result, result.development()))));
         QVERIFY(solver::measureQuality(result).developabilityMax < 1e-8);
-        // A cylinder is no flat sheet: keepDevelopment refuses it and changes nothing.
+        // A cylinder is no flat sheet: keepDevelopment holds it around the cylinder it unrolls
+        // from, whose circumference is the length of its rim (measured here on the splines).
         model::CompositeSurface cylinder = model::makeExample("cylinder").surfaces.front();
-        const auto refused = model::keepDevelopment(cylinder);
-        QVERIFY(refused && refused->code == model::ProblemCode::NotOneSheet);
-        QVERIFY(!cylinder.keepsDevelopment() && cylinder.development().empty());
+        QVERIFY(!model::keepDevelopment(cylinder).has_value());
+        QVERIFY(cylinder.keepsDevelopment());
+        QCOMPARE(cylinder.sheetDomain().shape, model::SheetShape::Cylinder);
+        QVERIFY2(std::abs(2.0 * kPi * cylinder.sheetDomain().radius - rimLength(cylinder, 0.0)) <
+                     1e-6,
+                 qPrintable(QString::number(cylinder.sheetDomain().radius)));
+    }
+
+    void theColumnStaysOnItsCylinder() {
+        // The paper's Fig. 14: a pleated column keeps its development around a cylinder, the
+        // development periodic modulo (2πr, 0). A top vertex lifted 30 mm through the solve
+        // job: the column changes (its creases fold less), stays developable, and unrolls, as
+        // measured from the geometry by a fresh unfolding, onto the same cylinder.
+        const model::CompositeSurface start = model::makeExample("column").surfaces.front();
+        QVERIFY(start.validate().empty());
+        QVERIFY(start.keepsDevelopment());
+        QCOMPARE(start.sheetDomain().shape, model::SheetShape::Cylinder);
+        const double circumference = rimLength(start, 0.0);
+        QVERIFY2(std::abs(2.0 * kPi * start.sheetDomain().radius - circumference) < 1e-9,
+                 qPrintable(QString::number(circumference)));
+        QVERIFY2(sampledDevelopability(start) < 1e-9,
+                 qPrintable(QString::number(sampledDevelopability(start))));
+        // The top vertex of a valley (odd index around), unpinned.
+        model::VertexId top = model::kInvalidId;
+        double highest = -1e300;
+        for (const auto& [id, p] : start.vertices()) {
+            if (p.z > highest - 1e-9 && std::abs(std::hypot(p.x, p.y) - 70.0) < 1e-9 && p.y > 0.0 &&
+                p.x > 0.0) {
+                highest = p.z;
+                top = id;
+            }
+        }
+        QVERIFY(top != model::kInvalidId);
+        const Vec3 target = start.position(top) + Vec3(0.0, 0.0, 30.0);
+        solver::SolveJob job;
+        solver::JobOutcome outcome;
+        constexpr int kMoves = 20;
+        for (int k = 1; k <= kMoves + 1; ++k) {
+            solver::JobRequest request;
+            request.kind = solver::JobKind::VertexDrag;
+            request.drag = 14;
+            request.settle = k > kMoves;
+            request.surfaces = {start};
+            const double t = std::min(k, kMoves) / static_cast<double>(kMoves);
+            request.pulled[0].push_back(
+                {top, false, start.position(top) + (target - start.position(top)) * t});
+            outcome = job.run(request);
+            QVERIFY2(outcome.ok, outcome.failure.detail.c_str());
+        }
+        const model::CompositeSurface& s = outcome.surfaces.front();
+        QVERIFY(!outcome.assessments.front().takenBack);
+        QVERIFY(outcome.assessments.front().sheetHeld);
+        const double rise = s.position(top).z - start.position(top).z;
+        QVERIFY2(rise > 15.0, qPrintable(QString::number(rise)));
+        const double developability = sampledDevelopability(s);
+        QVERIFY2(developability < 1e-6, qPrintable(QString::number(developability)));
+        const solver::CreaseQuality creases = solver::measureCreaseQuality(s);
+        QVERIFY2(creases.residualMax < 1e-4, qPrintable(QString::number(creases.residualMax)));
+        QVERIFY(solver::foldOvers(s).empty());
+        const model::Development unrolled =
+            model::unfoldSampledMesh(model::sampleSurface(s, kSamples));
+        QCOMPARE(unrolled.components, 1);
+        QVERIFY(unrolled.period.has_value());
+        const double period = unrolled.period->norm();
+        qInfo("rose %.1f mm, fold %.1f°, det %.2g, period %.9g mm of %.9g, closure %.2g mm, "
+              "edge error %.2g",
+              rise, creases.meanFoldDegrees, developability, period, circumference,
+              unrolled.closureError, unrolled.maxEdgeLengthError);
+        QVERIFY2(std::abs(period - circumference) < 1e-6 * circumference,
+                 qPrintable(QString::number(period - circumference)));
+        QVERIFY2(unrolled.closureError < 1e-6, qPrintable(QString::number(unrolled.closureError)));
+        QVERIFY2(unrolled.maxEdgeLengthError < 1e-6,
+                 qPrintable(QString::number(unrolled.maxEdgeLengthError)));
+        // The kept development itself: periodic with the cylinder's period, isometric.
+        QVERIFY2(model::keptSheetStretchRelative(s) < kHeldSheet,
+                 qPrintable(QString::number(model::keptSheetStretchRelative(s))));
     }
 
     void fig8LiftFoldsTheSquare() {

@@ -56,6 +56,13 @@ holdingItsSheet(Workspace* workspace, model::CompositeSurface surface, const QSt
 
 } // namespace
 
+QString SheetShapeReaction::cylinderText(const model::CompositeSurface& surface) {
+    return tr("%1 closes around: it is folded from a cylinder of radius %2 mm, its development "
+              "read modulo the cylinder's circumference, and no flat sheet shape applies.")
+        .arg(QString::fromStdString(surface.name()),
+             QLocale().toString(surface.sheetDomain().radius, 'f', 1));
+}
+
 std::optional<int> HoldSheetReaction::targetSurface() const {
     return sheetTarget(workspace());
 }
@@ -134,6 +141,13 @@ void SheetShapeReaction::onTriggered() {
     if (!held) {
         return;
     }
+    if (held->sheetDomain().shape == model::SheetShape::Cylinder) {
+        if (!workspace()->document()->surface(*surface).keepsDevelopment()) {
+            applyShape(*surface, held->sheetDomain()); // now held, around its cylinder
+        }
+        emit workspace()->statusMessage(cylinderText(*held));
+        return;
+    }
     const model::SampledMesh mesh =
         model::sampleSurface(*held, model::kDevelopmentSamplesPerInterval);
     SheetShapeDialog dialog(held->sheetDomain(), mesh, held->development(), workspace()->window());
@@ -150,6 +164,10 @@ bool SheetShapeReaction::applyShape(int index, const model::SheetDomain& domain)
     std::optional<model::CompositeSurface> held =
         holdingItsSheet(workspace(), doc->surface(index), tr("Cannot hold the sheet"));
     if (!held) {
+        return false;
+    }
+    if (held->sheetDomain().shape == model::SheetShape::Cylinder && domain != held->sheetDomain()) {
+        emit workspace()->statusMessage(cylinderText(*held));
         return false;
     }
     model::CompositeSurface changed = std::move(*held);

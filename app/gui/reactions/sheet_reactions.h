@@ -2,6 +2,7 @@
 
 #include "reaction.h"
 
+#include "model/composite_surface.h"
 #include "model/sheet_domain.h"
 
 #include <optional>
@@ -35,6 +36,8 @@ public:
     // Gives surface `index` the sheet `domain` (placed), holding its development; false and a
     // sentence in the status bar if it cannot hold one. Public for the tests.
     bool applyShape(int index, const model::SheetDomain& domain);
+    // Why a surface held around a cylinder gets no flat sheet shape.
+    static QString cylinderText(const model::CompositeSurface& surface);
 
 protected:
     void onTriggered() override;
