@@ -142,9 +142,10 @@ SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
     pointStyle(*m_pinned, 0.85, 0.05, 0.05, 13.0);
     m_target = &addLayer();
     pointStyle(*m_target, 0.1, 0.7, 0.2, 4.0);
-    // Marked points of a reference shape: orange and larger than the shape's own points.
+    // Marked points of a reference shape: magenta (neither the selection's orange nor a colour
+    // of the distance map) and larger than the shape's own points.
     m_marked = &addLayer();
-    pointStyle(*m_marked, 1.0, 0.45, 0.0, 7.0);
+    pointStyle(*m_marked, 0.85, 0.0, 0.85, 7.0);
     m_selectedEdges = &addLayer();
     lineStyle(*m_selectedEdges, kSelectionRgb[0], kSelectionRgb[1], kSelectionRgb[2], 6.0, true);
     m_selectedVertices = &addLayer();

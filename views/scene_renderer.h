@@ -75,7 +75,7 @@ public:
     void setShowSheet(bool show);
     bool showsSheet() const { return m_showSheet; }
     void setTargetPoints(const std::vector<model::Vec3>& points);
-    // Points of the reference shapes marked by a lasso (3D only): large orange points, shown
+    // Points of the reference shapes marked by a lasso (3D only): large magenta points, shown
     // and hidden with the reference shapes.
     void setMarkedPoints(const std::vector<model::Vec3>& points);
     int markedPointCount() const;

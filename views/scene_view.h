@@ -99,7 +99,7 @@ public:
     // A lasso being drawn over the view (widget coordinates; empty: none).
     void setLasso(const std::vector<QPointF>& points);
     std::vector<QPointF> lasso() const;
-    // Points of the reference shapes marked with the lasso, drawn orange and larger (3D view;
+    // Points of the reference shapes marked with the lasso, drawn magenta and larger (3D view;
     // hidden with the reference shapes), and how many are drawn.
     void setMarkedPoints(const std::vector<model::Vec3>& points);
     int markedPointsDrawn() const;

@@ -420,13 +420,13 @@ void ViewOverlay::paintEvent(QPaintEvent*) {
         }
     }
 
-    // The lasso: closed, dark under a dashed orange line, so that it reads on any background.
+    // The lasso: closed, dark under a dashed magenta line, so that it reads on any background.
     if (m_lasso.size() >= 2) {
         const QPolygonF polygon(QList<QPointF>(m_lasso.begin(), m_lasso.end()));
-        painter.setBrush(QColor(255, 140, 0, 40));
+        painter.setBrush(QColor(215, 0, 215, 40));
         painter.setPen(QPen(QColor(20, 20, 20), 3.0));
         painter.drawPolygon(polygon);
-        QPen dashed(QColor(255, 140, 0), 2.0, Qt::DashLine);
+        QPen dashed(QColor(215, 0, 215), 2.0, Qt::DashLine);
         painter.setPen(dashed);
         painter.setBrush(Qt::NoBrush);
         painter.drawPolygon(polygon);

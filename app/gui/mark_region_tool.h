@@ -23,7 +23,7 @@ class Workspace;
 // 42): with the tool on, pressing the left button in the 3D view and dragging draws a closed
 // lasso; on release the points of the shown reference shapes (a mesh's vertices) inside it
 // that face the camera (model::reference::pointsInLasso) become the marked region, drawn
-// orange. Shift adds to the mark, a click without dragging clears it; Esc drops a lasso in
+// magenta. Shift adds to the mark, a click without dragging clears it; Esc drops a lasso in
 // progress, else leaves the tool (the mark stays); Enter adds the strip. The strip is the flat
 // PCA rectangle of the marked points (model::reference::initialStrip, with the spline space of
 // the approximation's strips), added as one undo step and named "strip N"; the mark is then
