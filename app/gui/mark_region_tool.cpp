@@ -8,10 +8,15 @@
 #include "views/vtk_opengl_widget.h"
 #include "workspace.h"
 
+#include <QAbstractSpinBox>
 #include <QAction>
 #include <QApplication>
+#include <QComboBox>
 #include <QKeyEvent>
+#include <QLineEdit>
 #include <QMouseEvent>
+#include <QPlainTextEdit>
+#include <QTextEdit>
 
 #include <algorithm>
 #include <iterator>
@@ -117,11 +122,31 @@ void MarkRegionTool::onToggled(bool on) {
     }
 }
 
-bool MarkRegionTool::eventFilter(QObject* watched, QEvent* event) {
-    if (!m_mark->isChecked() || watched != m_view->glWidget()) {
+bool MarkRegionTool::takesKeysOf(QObject* watched) const {
+    // Esc and Enter wherever the keyboard focus is in the window (the view, or a panel after
+    // the menu turned the tool on), except in a field that edits text.
+    auto* widget = qobject_cast<QWidget*>(watched);
+    if (widget == nullptr || widget->window() != m_view->window()) {
         return false;
     }
-    switch (event->type()) {
+    return widget == m_view->glWidget() || (qobject_cast<QLineEdit*>(widget) == nullptr &&
+                                            qobject_cast<QAbstractSpinBox*>(widget) == nullptr &&
+                                            qobject_cast<QTextEdit*>(widget) == nullptr &&
+                                            qobject_cast<QPlainTextEdit*>(widget) == nullptr &&
+                                            qobject_cast<QComboBox*>(widget) == nullptr);
+}
+
+bool MarkRegionTool::eventFilter(QObject* watched, QEvent* event) {
+    if (!m_mark->isChecked()) {
+        return false;
+    }
+    const QEvent::Type type = event->type();
+    if ((type == QEvent::ShortcutOverride || type == QEvent::KeyPress)
+            ? !takesKeysOf(watched)
+            : watched != m_view->glWidget()) {
+        return false;
+    }
+    switch (type) {
     case QEvent::ShortcutOverride:
     case QEvent::KeyPress: {
         auto* key = static_cast<QKeyEvent*>(event);

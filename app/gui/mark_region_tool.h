@@ -58,6 +58,8 @@ protected:
 
 private:
     void onToggled(bool on);
+    // Whether Esc and Enter sent to `watched` are the tool's.
+    bool takesKeysOf(QObject* watched) const;
     void updateActions();
     void finishLasso(bool add);
     void cancelLasso();

@@ -23,6 +23,7 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QTest>
+#include <QTreeView>
 #include <QUndoStack>
 
 #include <algorithm>
@@ -474,6 +475,14 @@ private slots:
         QVERIFY(!markAction->isChecked());
         QCOMPARE(tool->markedCount(), marked);
         QCOMPARE(view->markedPointsDrawn(), static_cast<int>(marked));
+
+        // Turned on from the menu with the keyboard focus in a panel, Esc still leaves it.
+        markAction->setChecked(true);
+        auto* panel = window.findChild<QTreeView*>();
+        QVERIFY(panel != nullptr);
+        panel->setFocus();
+        QTest::keyClick(panel, Qt::Key_Escape);
+        QVERIFY(!markAction->isChecked());
 
         // A click without dragging clears it.
         markAction->setChecked(true);
