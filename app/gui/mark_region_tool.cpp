@@ -179,6 +179,7 @@ bool MarkRegionTool::eventFilter(QObject* watched, QEvent* event) {
             return m_drawing;
         }
         m_drawing = true;
+        m_shiftAtPress = me->modifiers().testFlag(Qt::ShiftModifier);
         m_lasso = {me->position()};
         m_view->setLasso(m_lasso);
         return true;
@@ -200,7 +201,8 @@ bool MarkRegionTool::eventFilter(QObject* watched, QEvent* event) {
             return m_drawing;
         }
         m_lasso.push_back(me->position());
-        finishLasso(me->modifiers().testFlag(Qt::ShiftModifier));
+        // Shift held at the press or at the release adds.
+        finishLasso(m_shiftAtPress || me->modifiers().testFlag(Qt::ShiftModifier));
         return true;
     }
     default:

@@ -73,6 +73,7 @@ private:
     std::vector<std::vector<std::size_t>> m_marked; // per reference shape
     std::vector<QPointF> m_lasso;                   // widget coordinates, while drawing
     bool m_drawing = false;
+    bool m_shiftAtPress = false;
 };
 
 } // namespace devsurf::app

@@ -85,7 +85,7 @@ void lookFromTop(app::MainWindow& window) {
 // Draws a lasso through the corners of `rect` (widget coordinates), with intermediate moves
 // along its sides, as a user drags it.
 void drawLasso(views::SurfaceView* view, const QRect& rect,
-               Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+               Qt::KeyboardModifiers modifiers = Qt::NoModifier, bool heldToTheEnd = true) {
     QWidget* gl = view->glWidget();
     const QPoint corners[] = {rect.topLeft(), rect.topRight(), rect.bottomRight(),
                               rect.bottomLeft(), rect.topLeft()};
@@ -96,7 +96,7 @@ void drawLasso(views::SurfaceView* view, const QRect& rect,
             QTest::mouseMove(gl, at.toPoint());
         }
     }
-    QTest::mouseRelease(gl, Qt::LeftButton, modifiers, corners[4]);
+    QTest::mouseRelease(gl, Qt::LeftButton, heldToTheEnd ? modifiers : Qt::NoModifier, corners[4]);
 }
 
 // The points of `shape` the view draws inside `rect` (its own projection, point by point).
@@ -281,6 +281,9 @@ private slots:
         QCOMPARE(tool->marked()[0], std::vector<std::size_t>(both.begin(), both.end()));
         drawLasso(view, upper);
         QCOMPARE(tool->marked()[0], projectedInside(view, plane, upper));
+        // Shift held at the press only adds too.
+        drawLasso(view, left, Qt::ShiftModifier, false);
+        QCOMPARE(tool->marked()[0], std::vector<std::size_t>(both.begin(), both.end()));
 
         // Seen from below the plane faces away: a lasso around all of it marks nothing.
         window.action(QStringLiteral("actionViewBottom"))->trigger();
