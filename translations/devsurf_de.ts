@@ -2866,52 +2866,52 @@
 <context>
     <name>devsurf::app::MarkRegionTool</name>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="87"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="92"/>
         <source>Mark a region of the reference shape: drag a lasso around it in the 3D view (Shift adds to the mark, a click clears it, Esc leaves the tool), then Enter adds a flat strip over it (L).</source>
         <translation>Einen Bereich der Referenzform markieren: in der 3D-Ansicht ein Lasso darum ziehen (Umschalt fügt zur Markierung hinzu, ein Klick löscht sie, Esc verlässt das Werkzeug), dann fügt Eingabe einen ebenen Streifen darüber hinzu (L).</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="90"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="95"/>
         <source>Mark a region of the reference shape with a lasso: import one first (File ▸ Import Reference Shape…).</source>
         <translation>Einen Bereich der Referenzform mit einem Lasso markieren: zuerst eine importieren (Datei ▸ Referenzform importieren…).</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="97"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="102"/>
         <source>Add a flat strip fitted to the marked points (their PCA plane), one undo step; Tools ▸ Approximate Reference Shape… with the design&apos;s surfaces then pulls it onto the shape.</source>
         <translation>Einen ebenen Streifen, an die markierten Punkte angepasst (ihre PCA-Ebene), hinzufügen, ein Rückgängig-Schritt; Werkzeuge ▸ Referenzform annähern… mit den Flächen des Entwurfs zieht ihn dann auf die Form.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="100"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="105"/>
         <source>Add a flat strip over a marked region of the reference shape: mark one first (Tools ▸ Mark Region of Reference Shape).</source>
         <translation>Einen ebenen Streifen über einem markierten Bereich der Referenzform hinzufügen: zuerst einen markieren (Werkzeuge ▸ Bereich der Referenzform markieren).</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="112"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="117"/>
         <source>Mark region: drag a lasso around part of the reference shape in the 3D view; Shift adds to the mark, Enter adds a strip over it, Esc leaves the tool.</source>
         <translation>Bereich markieren: in der 3D-Ansicht ein Lasso um einen Teil der Referenzform ziehen; Umschalt fügt zur Markierung hinzu, Eingabe fügt einen Streifen darüber hinzu, Esc verlässt das Werkzeug.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="141"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="166"/>
         <source>Lasso dropped; the mark is as it was.</source>
         <translation>Lasso verworfen; die Markierung ist wie zuvor.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="207"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="234"/>
         <source>Mark cleared.</source>
         <translation>Markierung gelöscht.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="212"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="239"/>
         <source>The reference shapes are hidden: show them (View ▸ Reference Shapes) to mark a region.</source>
         <translation>Die Referenzformen sind ausgeblendet: zum Markieren einblenden (Ansicht ▸ Referenzformen).</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="233"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="260"/>
         <source>No point of the reference shape facing the camera lies inside the lasso; nothing is marked.</source>
         <translation>Kein der Kamera zugewandter Punkt der Referenzform liegt im Lasso; nichts ist markiert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mark_region_tool.cpp" line="247"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="274"/>
         <source>%Ln point(s) of %1 marked.</source>
         <translation>
             <numerusform>%Ln Punkt von %1 markiert.</numerusform>
@@ -2919,7 +2919,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mark_region_tool.cpp" line="249"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="276"/>
         <source>%Ln point(s) of the reference shapes marked.</source>
         <translation>
             <numerusform>%Ln Punkt der Referenzformen markiert.</numerusform>
@@ -2927,37 +2927,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="251"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="278"/>
         <source>%1 Enter adds a strip over them; Shift and a lasso add to the mark.</source>
         <translation>%1 Eingabe fügt einen Streifen darüber hinzu; Umschalt und ein Lasso fügen zur Markierung hinzu.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="270"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="297"/>
         <source>No region is marked: draw a lasso around part of the reference shape first (Tools ▸ Mark Region of Reference Shape).</source>
         <translation>Kein Bereich ist markiert: zuerst ein Lasso um einen Teil der Referenzform ziehen (Werkzeuge ▸ Bereich der Referenzform markieren).</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="275"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="302"/>
         <source>Too few points are marked for a strip: mark at least three points that do not lie on a line.</source>
         <translation>Für einen Streifen sind zu wenige Punkte markiert: mindestens drei Punkte markieren, die nicht auf einer Geraden liegen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="283"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="310"/>
         <source>The marked points lie on a line, so no plane fits them: mark a region that is wide in two directions.</source>
         <translation>Die markierten Punkte liegen auf einer Geraden, also passt keine Ebene zu ihnen: einen Bereich markieren, der in zwei Richtungen breit ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="292"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="319"/>
         <source>Add Strip Over Marked Region</source>
         <translation>Streifen über markiertem Bereich hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="293"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="320"/>
         <source>Cannot add the strip</source>
         <translation>Der Streifen kann nicht hinzugefügt werden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mark_region_tool.cpp" line="298"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="325"/>
         <source>Added strip %1 over %Ln marked point(s); Tools ▸ Approximate Reference Shape… with the design&apos;s surfaces pulls it onto the shape.</source>
         <translation>
             <numerusform>Streifen %1 über %Ln markiertem Punkt hinzugefügt; Werkzeuge ▸ Referenzform annähern… mit den Flächen des Entwurfs zieht ihn auf die Form.</numerusform>

@@ -264,7 +264,7 @@
 <context>
     <name>devsurf::app::MarkRegionTool</name>
     <message numerus="yes">
-        <location filename="../app/gui/mark_region_tool.cpp" line="247"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="274"/>
         <source>%Ln point(s) of %1 marked.</source>
         <translation>
             <numerusform>%Ln point of %1 marked.</numerusform>
@@ -272,7 +272,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mark_region_tool.cpp" line="249"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="276"/>
         <source>%Ln point(s) of the reference shapes marked.</source>
         <translation>
             <numerusform>%Ln point of the reference shapes marked.</numerusform>
@@ -280,11 +280,11 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mark_region_tool.cpp" line="298"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="325"/>
         <source>Added strip %1 over %Ln marked point(s); Tools ▸ Approximate Reference Shape… with the design&apos;s surfaces pulls it onto the shape.</source>
         <translation>
-            <numerusform>Added strip %1 over %Ln marked point; Tools ▸ Approximate Reference Shape… with the design's surfaces pulls it onto the shape.</numerusform>
-            <numerusform>Added strip %1 over %Ln marked points; Tools ▸ Approximate Reference Shape… with the design's surfaces pulls it onto the shape.</numerusform>
+            <numerusform>Added strip %1 over %Ln marked point; Tools ▸ Approximate Reference Shape… with the design&apos;s surfaces pulls it onto the shape.</numerusform>
+            <numerusform>Added strip %1 over %Ln marked points; Tools ▸ Approximate Reference Shape… with the design&apos;s surfaces pulls it onto the shape.</numerusform>
         </translation>
     </message>
 </context>

@@ -2838,96 +2838,96 @@
 <context>
     <name>devsurf::app::MarkRegionTool</name>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="87"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="92"/>
         <source>Mark a region of the reference shape: drag a lasso around it in the 3D view (Shift adds to the mark, a click clears it, Esc leaves the tool), then Enter adds a flat strip over it (L).</source>
         <translation>参照形状の領域をマーク: 3D ビューで投げ縄で囲み (Shift でマークに追加、クリックでマークを消去、Esc でツールを終了)、Enter でその上に平らなストリップを追加します (L)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="90"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="95"/>
         <source>Mark a region of the reference shape with a lasso: import one first (File ▸ Import Reference Shape…).</source>
         <translation>参照形状の領域を投げ縄でマーク: まず読み込んでください (ファイル ▸ 参照形状を読み込む…)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="97"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="102"/>
         <source>Add a flat strip fitted to the marked points (their PCA plane), one undo step; Tools ▸ Approximate Reference Shape… with the design&apos;s surfaces then pulls it onto the shape.</source>
         <translation>マークした点に当てはめた平らなストリップ (PCA 平面) を追加します (元に戻す 1 段階)。その後 ツール ▸ 参照形状を近似… でデザインの曲面を選ぶと形状に引き寄せられます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="100"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="105"/>
         <source>Add a flat strip over a marked region of the reference shape: mark one first (Tools ▸ Mark Region of Reference Shape).</source>
         <translation>参照形状のマークした領域に平らなストリップを追加: まず領域をマークしてください (ツール ▸ 参照形状の領域をマーク)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="112"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="117"/>
         <source>Mark region: drag a lasso around part of the reference shape in the 3D view; Shift adds to the mark, Enter adds a strip over it, Esc leaves the tool.</source>
         <translation>領域をマーク: 3D ビューで参照形状の一部を投げ縄で囲んでください。Shift でマークに追加、Enter でその上にストリップを追加、Esc でツールを終了します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="141"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="166"/>
         <source>Lasso dropped; the mark is as it was.</source>
         <translation>投げ縄を破棄しました。マークは元のままです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="207"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="234"/>
         <source>Mark cleared.</source>
         <translation>マークを消去しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="212"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="239"/>
         <source>The reference shapes are hidden: show them (View ▸ Reference Shapes) to mark a region.</source>
         <translation>参照形状が非表示です: 領域をマークするには表示してください (表示 ▸ 参照形状)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="233"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="260"/>
         <source>No point of the reference shape facing the camera lies inside the lasso; nothing is marked.</source>
         <translation>カメラの方を向いた参照形状の点が投げ縄の内側にありません。何もマークされていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mark_region_tool.cpp" line="247"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="274"/>
         <source>%Ln point(s) of %1 marked.</source>
         <translation>
             <numerusform>%1 の %Ln 点をマークしました。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mark_region_tool.cpp" line="249"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="276"/>
         <source>%Ln point(s) of the reference shapes marked.</source>
         <translation>
             <numerusform>参照形状の %Ln 点をマークしました。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="251"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="278"/>
         <source>%1 Enter adds a strip over them; Shift and a lasso add to the mark.</source>
         <translation>%1 Enter でその上にストリップを追加、Shift を押しながら囲むとマークに追加します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="270"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="297"/>
         <source>No region is marked: draw a lasso around part of the reference shape first (Tools ▸ Mark Region of Reference Shape).</source>
         <translation>領域がマークされていません: まず参照形状の一部を投げ縄で囲んでください (ツール ▸ 参照形状の領域をマーク)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="275"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="302"/>
         <source>Too few points are marked for a strip: mark at least three points that do not lie on a line.</source>
         <translation>ストリップには点が少なすぎます: 一直線上にない 3 点以上をマークしてください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="283"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="310"/>
         <source>The marked points lie on a line, so no plane fits them: mark a region that is wide in two directions.</source>
         <translation>マークした点は一直線上にあるので平面を当てはめられません: 2 方向に広がった領域をマークしてください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="292"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="319"/>
         <source>Add Strip Over Marked Region</source>
         <translation>マークした領域にストリップを追加</translation>
     </message>
     <message>
-        <location filename="../app/gui/mark_region_tool.cpp" line="293"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="320"/>
         <source>Cannot add the strip</source>
         <translation>ストリップを追加できません</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/mark_region_tool.cpp" line="298"/>
+        <location filename="../app/gui/mark_region_tool.cpp" line="325"/>
         <source>Added strip %1 over %Ln marked point(s); Tools ▸ Approximate Reference Shape… with the design&apos;s surfaces pulls it onto the shape.</source>
         <translation>
             <numerusform>マークした %Ln 点の上にストリップ %1 を追加しました。ツール ▸ 参照形状を近似… でデザインの曲面を選ぶと形状に引き寄せられます。</numerusform>
