@@ -2164,298 +2164,313 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="124"/>
+        <location filename="../app/gui/main_window.cpp" line="126"/>
         <source>Patches</source>
         <translation>Flächenstücke</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="130"/>
+        <location filename="../app/gui/main_window.cpp" line="132"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="136"/>
+        <location filename="../app/gui/main_window.cpp" line="138"/>
         <source>Pins</source>
         <translation>Festgehaltene Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="146"/>
+        <location filename="../app/gui/main_window.cpp" line="148"/>
         <source>Solver</source>
         <translation>Löser</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="166"/>
+        <location filename="../app/gui/main_window.cpp" line="168"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="173"/>
+        <location filename="../app/gui/main_window.cpp" line="175"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <location filename="../app/gui/main_window.cpp" line="177"/>
         <source>&amp;New from Example…</source>
         <translation>&amp;Neu aus Beispiel…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="177"/>
+        <location filename="../app/gui/main_window.cpp" line="179"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="179"/>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="183"/>
+        <location filename="../app/gui/main_window.cpp" line="185"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="186"/>
+        <location filename="../app/gui/main_window.cpp" line="188"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="190"/>
+        <location filename="../app/gui/main_window.cpp" line="192"/>
         <source>Import &amp;Curves…</source>
         <translation>&amp;Kurven importieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="195"/>
+        <location filename="../app/gui/main_window.cpp" line="197"/>
         <source>Import Reference S&amp;hape…</source>
         <translation>Referenz&amp;form importieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="196"/>
+        <location filename="../app/gui/main_window.cpp" line="198"/>
         <source>Add a mesh (OBJ, PLY, STL, OFF) or a point cloud (XYZ, PTS) the design is to follow, as a reference shape</source>
         <translation>Ein Netz (OBJ, PLY, STL, OFF) oder eine Punktwolke (XYZ, PTS), der der Entwurf folgen soll, als Referenzform hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="202"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>Austausch-JSON &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="202"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="203"/>
+        <location filename="../app/gui/main_window.cpp" line="205"/>
         <source>Export &amp;3D Shape…</source>
         <translation>&amp;3D-Form exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207"/>
+        <location filename="../app/gui/main_window.cpp" line="209"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="211"/>
+        <location filename="../app/gui/main_window.cpp" line="213"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="214"/>
+        <location filename="../app/gui/main_window.cpp" line="216"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="219"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="224"/>
+        <location filename="../app/gui/main_window.cpp" line="226"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="227"/>
+        <location filename="../app/gui/main_window.cpp" line="229"/>
         <source>Remove Reference &amp;Curves</source>
         <translation>Referenz&amp;kurven entfernen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="230"/>
+        <location filename="../app/gui/main_window.cpp" line="232"/>
         <source>Remove Reference S&amp;hapes</source>
         <translation>Referenz&amp;formen entfernen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="232"/>
+        <location filename="../app/gui/main_window.cpp" line="234"/>
         <source>Select &amp;None</source>
         <translation>Auswahl &amp;aufheben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="233"/>
+        <location filename="../app/gui/main_window.cpp" line="235"/>
         <location filename="../app/gui/main_window_solver.cpp" line="128"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="237"/>
+        <location filename="../app/gui/main_window.cpp" line="239"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="239"/>
+        <location filename="../app/gui/main_window.cpp" line="241"/>
         <source>&amp;3D View</source>
         <translation>&amp;3D-Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="239"/>
+        <location filename="../app/gui/main_window.cpp" line="241"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="241"/>
+        <location filename="../app/gui/main_window.cpp" line="243"/>
         <source>&amp;Development View</source>
         <translation>&amp;Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="241"/>
+        <location filename="../app/gui/main_window.cpp" line="243"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="242"/>
+        <location filename="../app/gui/main_window.cpp" line="244"/>
         <source>3D &amp;and Development</source>
         <translation>3D &amp;und Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="243"/>
+        <location filename="../app/gui/main_window.cpp" line="245"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="247"/>
+        <location filename="../app/gui/main_window.cpp" line="249"/>
         <source>&amp;Control Polygons</source>
         <translation>&amp;Kontrollpolygone</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="247"/>
+        <location filename="../app/gui/main_window.cpp" line="249"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="248"/>
+        <location filename="../app/gui/main_window.cpp" line="250"/>
         <source>&amp;Vertices</source>
         <translation>&amp;Ecken</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="249"/>
+        <location filename="../app/gui/main_window.cpp" line="251"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="252"/>
+        <location filename="../app/gui/main_window.cpp" line="254"/>
         <source>S&amp;heet Outline</source>
         <translation>&amp;Bogenumriss</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="255"/>
+        <location filename="../app/gui/main_window.cpp" line="257"/>
         <source>Draw the sheet a held development is confined to behind it in the development view (Tools ▸ Sheet Shape…).</source>
         <translation>Den Bogen, auf den eine gehaltene Abwicklung beschränkt ist, in der Abwicklungsansicht dahinter zeichnen (Werkzeuge ▸ Bogenform…).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="265"/>
+        <location filename="../app/gui/main_window.cpp" line="267"/>
         <source>&amp;Reference Shapes</source>
         <translation>&amp;Referenzformen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="268"/>
+        <location filename="../app/gui/main_window.cpp" line="270"/>
         <source>Draw the imported meshes and point clouds in the 3D view (File ▸ Import Reference Shape…).</source>
         <translation>Die importierten Netze und Punktwolken in der 3D-Ansicht zeichnen (Datei ▸ Referenzform importieren…).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="283"/>
+        <location filename="../app/gui/main_window.cpp" line="285"/>
         <source>Colour the points of the reference shapes by their distance to the design, in mm, with a legend (green: within the coverage tolerance of Tools ▸ Distance to Reference…).</source>
         <translation>Färbt die Punkte der Referenzformen nach ihrem Abstand zum Entwurf, in mm, mit Legende (grün: innerhalb der Abdeckungstoleranz von Werkzeuge ▸ Abstand zur Referenzform…).</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="294"/>
+        <location filename="../app/gui/main_window.cpp" line="296"/>
         <source>&amp;Fit All</source>
         <translation>&amp;Alles zeigen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="294"/>
+        <location filename="../app/gui/main_window.cpp" line="296"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="300"/>
+        <location filename="../app/gui/main_window.cpp" line="302"/>
         <source>Reset &amp;Layout</source>
         <translation>&amp;Layout zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="305"/>
+        <location filename="../app/gui/main_window.cpp" line="307"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="308"/>
+        <location filename="../app/gui/main_window.cpp" line="310"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>Kanten&amp;kennzeichnung ändern (R ↔ S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="308"/>
+        <location filename="../app/gui/main_window.cpp" line="310"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="310"/>
+        <location filename="../app/gui/main_window.cpp" line="312"/>
         <source>Add &amp;Crease…</source>
         <translation>&amp;Falz einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="313"/>
+        <location filename="../app/gui/main_window.cpp" line="315"/>
         <source>Add R&amp;uling…</source>
         <translation>&amp;Erzeugende einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="326"/>
+        <location filename="../app/gui/main_window.cpp" line="328"/>
         <source>&amp;Pin Vertices</source>
         <translation>Ecken &amp;festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="327"/>
+        <location filename="../app/gui/main_window.cpp" line="329"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="329"/>
+        <location filename="../app/gui/main_window.cpp" line="331"/>
         <source>U&amp;npin Vertices</source>
         <translation>Ecken &amp;freigeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="330"/>
+        <location filename="../app/gui/main_window.cpp" line="332"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="333"/>
+        <location filename="../app/gui/main_window.cpp" line="335"/>
         <source>Hold the &amp;Sheet</source>
         <translation>&amp;Bogen festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="334"/>
+        <location filename="../app/gui/main_window.cpp" line="336"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="337"/>
+        <location filename="../app/gui/main_window.cpp" line="339"/>
         <source>Sheet S&amp;hape…</source>
         <translation>Bogen&amp;form…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="344"/>
+        <location filename="../app/gui/main_window.cpp" line="346"/>
         <source>A&amp;pproximate Reference Shape…</source>
         <translation>Referenzform an&amp;nähern…</translation>
     </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="356"/>
+        <source>Mar&amp;k Region of Reference Shape</source>
+        <translation>Bereich der Referenzform mar&amp;kieren</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="356"/>
+        <source>L</source>
+        <translation>L</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="358"/>
+        <source>Add Strip O&amp;ver Marked Region</source>
+        <translation>Streifen über markiertem Bereich hin&amp;zufügen</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="478"/>
+        <location filename="../app/gui/main_window.cpp" line="494"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n Fläche</numerusform>
@@ -2463,7 +2478,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="479"/>
+        <location filename="../app/gui/main_window.cpp" line="495"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -2471,7 +2486,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="480"/>
+        <location filename="../app/gui/main_window.cpp" line="496"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -2479,7 +2494,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="481"/>
+        <location filename="../app/gui/main_window.cpp" line="497"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n ausgewählt</numerusform>
@@ -2487,92 +2502,92 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="311"/>
+        <location filename="../app/gui/main_window.cpp" line="313"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="192"/>
+        <location filename="../app/gui/main_window.cpp" line="194"/>
         <source>Add the curves of a DXF, SVG, STEP or IGES file as reference curves</source>
         <translation>Die Kurven einer DXF-, SVG-, STEP- oder IGES-Datei als Referenzkurven hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="279"/>
+        <location filename="../app/gui/main_window.cpp" line="281"/>
         <source>Colour Reference by Dis&amp;tance</source>
         <translation>Referenzform nach Abs&amp;tand färben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="314"/>
+        <location filename="../app/gui/main_window.cpp" line="316"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="316"/>
+        <location filename="../app/gui/main_window.cpp" line="318"/>
         <source>Re&amp;fine Curves</source>
         <translation>Kurven &amp;verfeinern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="317"/>
+        <location filename="../app/gui/main_window.cpp" line="319"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="323"/>
+        <location filename="../app/gui/main_window.cpp" line="325"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>Ecken &amp;verschieben oder drehen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="323"/>
+        <location filename="../app/gui/main_window.cpp" line="325"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="341"/>
+        <location filename="../app/gui/main_window.cpp" line="343"/>
         <source>Dis&amp;tance to Reference…</source>
         <translation>Abs&amp;tand zur Referenzform…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="379"/>
+        <location filename="../app/gui/main_window.cpp" line="395"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="380"/>
+        <location filename="../app/gui/main_window.cpp" line="396"/>
         <source>&amp;User Manual</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="387"/>
+        <location filename="../app/gui/main_window.cpp" line="403"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="393"/>
+        <location filename="../app/gui/main_window.cpp" line="409"/>
         <source>&amp;About DevSurf</source>
         <translation>&amp;Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="395"/>
+        <location filename="../app/gui/main_window.cpp" line="411"/>
         <source>About DevSurf</source>
         <translation>Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="396"/>
+        <location filename="../app/gui/main_window.cpp" line="412"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen mit Spline-Torsen (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="441"/>
+        <location filename="../app/gui/main_window.cpp" line="457"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="463"/>
+        <location filename="../app/gui/main_window.cpp" line="479"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="464"/>
+        <location filename="../app/gui/main_window.cpp" line="480"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
@@ -2846,6 +2861,108 @@
         <location filename="../app/gui/help_dialogs.cpp" line="56"/>
         <source>DevSurf User Manual</source>
         <translation>DevSurf-Benutzerhandbuch</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::MarkRegionTool</name>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="92"/>
+        <source>Mark a region of the reference shape: drag a lasso around it in the 3D view (Shift adds to the mark, a click clears it, Esc leaves the tool), then Enter adds a flat strip over it (L).</source>
+        <translation>Einen Bereich der Referenzform markieren: in der 3D-Ansicht ein Lasso darum ziehen (Umschalt fügt zur Markierung hinzu, ein Klick löscht sie, Esc verlässt das Werkzeug), dann fügt Eingabe einen ebenen Streifen darüber hinzu (L).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="95"/>
+        <source>Mark a region of the reference shape with a lasso: import one first (File ▸ Import Reference Shape…).</source>
+        <translation>Einen Bereich der Referenzform mit einem Lasso markieren: zuerst eine importieren (Datei ▸ Referenzform importieren…).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="102"/>
+        <source>Add a flat strip fitted to the marked points (their PCA plane), one undo step; Tools ▸ Approximate Reference Shape… with the design&apos;s surfaces then pulls it onto the shape.</source>
+        <translation>Einen ebenen Streifen, an die markierten Punkte angepasst (ihre PCA-Ebene), hinzufügen, ein Rückgängig-Schritt; Werkzeuge ▸ Referenzform annähern… mit den Flächen des Entwurfs zieht ihn dann auf die Form.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="105"/>
+        <source>Add a flat strip over a marked region of the reference shape: mark one first (Tools ▸ Mark Region of Reference Shape).</source>
+        <translation>Einen ebenen Streifen über einem markierten Bereich der Referenzform hinzufügen: zuerst einen markieren (Werkzeuge ▸ Bereich der Referenzform markieren).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="117"/>
+        <source>Mark region: drag a lasso around part of the reference shape in the 3D view; Shift adds to the mark, Enter adds a strip over it, Esc leaves the tool.</source>
+        <translation>Bereich markieren: in der 3D-Ansicht ein Lasso um einen Teil der Referenzform ziehen; Umschalt fügt zur Markierung hinzu, Eingabe fügt einen Streifen darüber hinzu, Esc verlässt das Werkzeug.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="166"/>
+        <source>Lasso dropped; the mark is as it was.</source>
+        <translation>Lasso verworfen; die Markierung ist wie zuvor.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="234"/>
+        <source>Mark cleared.</source>
+        <translation>Markierung gelöscht.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="239"/>
+        <source>The reference shapes are hidden: show them (View ▸ Reference Shapes) to mark a region.</source>
+        <translation>Die Referenzformen sind ausgeblendet: zum Markieren einblenden (Ansicht ▸ Referenzformen).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="260"/>
+        <source>No point of the reference shape facing the camera lies inside the lasso; nothing is marked.</source>
+        <translation>Kein der Kamera zugewandter Punkt der Referenzform liegt im Lasso; nichts ist markiert.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/mark_region_tool.cpp" line="274"/>
+        <source>%Ln point(s) of %1 marked.</source>
+        <translation>
+            <numerusform>%Ln Punkt von %1 markiert.</numerusform>
+            <numerusform>%Ln Punkte von %1 markiert.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/mark_region_tool.cpp" line="276"/>
+        <source>%Ln point(s) of the reference shapes marked.</source>
+        <translation>
+            <numerusform>%Ln Punkt der Referenzformen markiert.</numerusform>
+            <numerusform>%Ln Punkte der Referenzformen markiert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="278"/>
+        <source>%1 Enter adds a strip over them; Shift and a lasso add to the mark.</source>
+        <translation>%1 Eingabe fügt einen Streifen darüber hinzu; Umschalt und ein Lasso fügen zur Markierung hinzu.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="297"/>
+        <source>No region is marked: draw a lasso around part of the reference shape first (Tools ▸ Mark Region of Reference Shape).</source>
+        <translation>Kein Bereich ist markiert: zuerst ein Lasso um einen Teil der Referenzform ziehen (Werkzeuge ▸ Bereich der Referenzform markieren).</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="302"/>
+        <source>Too few points are marked for a strip: mark at least three points that do not lie on a line.</source>
+        <translation>Für einen Streifen sind zu wenige Punkte markiert: mindestens drei Punkte markieren, die nicht auf einer Geraden liegen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="310"/>
+        <source>The marked points lie on a line, so no plane fits them: mark a region that is wide in two directions.</source>
+        <translation>Die markierten Punkte liegen auf einer Geraden, also passt keine Ebene zu ihnen: einen Bereich markieren, der in zwei Richtungen breit ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="319"/>
+        <source>Add Strip Over Marked Region</source>
+        <translation>Streifen über markiertem Bereich hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="320"/>
+        <source>Cannot add the strip</source>
+        <translation>Der Streifen kann nicht hinzugefügt werden</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/mark_region_tool.cpp" line="325"/>
+        <source>Added strip %1 over %Ln marked point(s); Tools ▸ Approximate Reference Shape… with the design&apos;s surfaces pulls it onto the shape.</source>
+        <translation>
+            <numerusform>Streifen %1 über %Ln markiertem Punkt hinzugefügt; Werkzeuge ▸ Referenzform annähern… mit den Flächen des Entwurfs zieht ihn auf die Form.</numerusform>
+            <numerusform>Streifen %1 über %Ln markierten Punkten hinzugefügt; Werkzeuge ▸ Referenzform annähern… mit den Flächen des Entwurfs zieht ihn auf die Form.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4709,12 +4826,12 @@
 <context>
     <name>devsurf::views::SceneView</name>
     <message>
-        <location filename="../views/scene_view.cpp" line="54"/>
+        <location filename="../views/scene_view.cpp" line="55"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="56"/>
+        <location filename="../views/scene_view.cpp" line="57"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
@@ -4809,50 +4926,50 @@
 <context>
     <name>devsurf::views::ViewOverlay</name>
     <message>
-        <location filename="../views/view_overlay.cpp" line="71"/>
+        <location filename="../views/view_overlay.cpp" line="72"/>
         <source>CF</source>
         <comment>badge: curved fold</comment>
         <translation>GF</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="73"/>
+        <location filename="../views/view_overlay.cpp" line="74"/>
         <source>G</source>
         <comment>badge: geodesic</comment>
         <translation>G</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="75"/>
+        <location filename="../views/view_overlay.cpp" line="76"/>
         <source>SU</source>
         <comment>badge: straight when unfolded</comment>
         <translation>GA</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="143"/>
+        <location filename="../views/view_overlay.cpp" line="144"/>
         <source>Mountain fold</source>
         <translation>Bergfalte</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="147"/>
+        <location filename="../views/view_overlay.cpp" line="148"/>
         <source>Valley fold</source>
         <translation>Talfalte</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="151"/>
+        <location filename="../views/view_overlay.cpp" line="152"/>
         <source>Crease, not folded</source>
         <translation>Falz, nicht gefaltet</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="161"/>
+        <location filename="../views/view_overlay.cpp" line="162"/>
         <source>Smooth ruling</source>
         <translation>Glatte Erzeugende</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="164"/>
+        <location filename="../views/view_overlay.cpp" line="165"/>
         <source>Sharp ruling</source>
         <translation>Scharfe Erzeugende</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="167"/>
+        <location filename="../views/view_overlay.cpp" line="168"/>
         <source>Sheet</source>
         <translation>Bogen</translation>
     </message>

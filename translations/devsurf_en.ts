@@ -221,7 +221,7 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="478"/>
+        <location filename="../app/gui/main_window.cpp" line="494"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n surface</numerusform>
@@ -229,7 +229,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="479"/>
+        <location filename="../app/gui/main_window.cpp" line="495"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n patch</numerusform>
@@ -237,7 +237,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="480"/>
+        <location filename="../app/gui/main_window.cpp" line="496"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n control point</numerusform>
@@ -245,7 +245,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="481"/>
+        <location filename="../app/gui/main_window.cpp" line="497"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n selected</numerusform>
@@ -258,6 +258,33 @@
         <translation>
             <numerusform>Make every surface developable again: %n iteration of the solver, one undo step. Pinned vertices stay where they are.</numerusform>
             <numerusform>Make every surface developable again: %n iterations of the solver, one undo step. Pinned vertices stay where they are.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::MarkRegionTool</name>
+    <message numerus="yes">
+        <location filename="../app/gui/mark_region_tool.cpp" line="274"/>
+        <source>%Ln point(s) of %1 marked.</source>
+        <translation>
+            <numerusform>%Ln point of %1 marked.</numerusform>
+            <numerusform>%Ln points of %1 marked.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/mark_region_tool.cpp" line="276"/>
+        <source>%Ln point(s) of the reference shapes marked.</source>
+        <translation>
+            <numerusform>%Ln point of the reference shapes marked.</numerusform>
+            <numerusform>%Ln points of the reference shapes marked.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/mark_region_tool.cpp" line="325"/>
+        <source>Added strip %1 over %Ln marked point(s); Tools ▸ Approximate Reference Shape… with the design&apos;s surfaces pulls it onto the shape.</source>
+        <translation>
+            <numerusform>Added strip %1 over %Ln marked point; Tools ▸ Approximate Reference Shape… with the design&apos;s surfaces pulls it onto the shape.</numerusform>
+            <numerusform>Added strip %1 over %Ln marked points; Tools ▸ Approximate Reference Shape… with the design&apos;s surfaces pulls it onto the shape.</numerusform>
         </translation>
     </message>
 </context>

@@ -2141,409 +2141,424 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="124"/>
+        <location filename="../app/gui/main_window.cpp" line="126"/>
         <source>Patches</source>
         <translation>パッチ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="130"/>
+        <location filename="../app/gui/main_window.cpp" line="132"/>
         <source>Properties</source>
         <translation>プロパティ</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="136"/>
+        <location filename="../app/gui/main_window.cpp" line="138"/>
         <source>Pins</source>
         <translation>固定点</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="146"/>
+        <location filename="../app/gui/main_window.cpp" line="148"/>
         <source>Solver</source>
         <translation>ソルバー</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="166"/>
+        <location filename="../app/gui/main_window.cpp" line="168"/>
         <source>Main</source>
         <translation>メイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="173"/>
+        <location filename="../app/gui/main_window.cpp" line="175"/>
         <source>&amp;File</source>
         <translation>ファイル(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="175"/>
+        <location filename="../app/gui/main_window.cpp" line="177"/>
         <source>&amp;New from Example…</source>
         <translation>例から新規作成(&amp;N)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="177"/>
+        <location filename="../app/gui/main_window.cpp" line="179"/>
         <source>&amp;Open…</source>
         <translation>開く(&amp;O)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="179"/>
+        <location filename="../app/gui/main_window.cpp" line="181"/>
         <source>Open &amp;Recent</source>
         <translation>最近使ったファイル(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="183"/>
+        <location filename="../app/gui/main_window.cpp" line="185"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="186"/>
+        <location filename="../app/gui/main_window.cpp" line="188"/>
         <source>Save &amp;As…</source>
         <translation>名前を付けて保存(&amp;A)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="190"/>
+        <location filename="../app/gui/main_window.cpp" line="192"/>
         <source>Import &amp;Curves…</source>
         <translation>曲線を読み込む(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="192"/>
+        <location filename="../app/gui/main_window.cpp" line="194"/>
         <source>Add the curves of a DXF, SVG, STEP or IGES file as reference curves</source>
         <translation>DXF、SVG、STEP または IGES ファイルの曲線を参照曲線として加えます</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="195"/>
+        <location filename="../app/gui/main_window.cpp" line="197"/>
         <source>Import Reference S&amp;hape…</source>
         <translation>参照形状を読み込む(&amp;H)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="196"/>
+        <location filename="../app/gui/main_window.cpp" line="198"/>
         <source>Add a mesh (OBJ, PLY, STL, OFF) or a point cloud (XYZ, PTS) the design is to follow, as a reference shape</source>
         <translation>デザインが従うべきメッシュ (OBJ、PLY、STL、OFF) または点群 (XYZ、PTS) を参照形状として追加</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="202"/>
         <source>&amp;Export Interchange JSON…</source>
         <translation>交換用 JSON をエクスポート(&amp;E)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="200"/>
+        <location filename="../app/gui/main_window.cpp" line="202"/>
         <source>Ctrl+E</source>
         <translation>Ctrl+E</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="203"/>
+        <location filename="../app/gui/main_window.cpp" line="205"/>
         <source>Export &amp;3D Shape…</source>
         <translation>3D 形状をエクスポート(&amp;3)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="207"/>
+        <location filename="../app/gui/main_window.cpp" line="209"/>
         <source>&amp;Quit</source>
         <translation>終了(&amp;Q)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="211"/>
+        <location filename="../app/gui/main_window.cpp" line="213"/>
         <source>&amp;Edit</source>
         <translation>編集(&amp;E)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="214"/>
+        <location filename="../app/gui/main_window.cpp" line="216"/>
         <source>&amp;Undo</source>
         <translation>元に戻す(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="217"/>
+        <location filename="../app/gui/main_window.cpp" line="219"/>
         <source>&amp;Redo</source>
         <translation>やり直す(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="224"/>
+        <location filename="../app/gui/main_window.cpp" line="226"/>
         <source>&amp;Delete</source>
         <translation>削除(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="227"/>
+        <location filename="../app/gui/main_window.cpp" line="229"/>
         <source>Remove Reference &amp;Curves</source>
         <translation>参照曲線を削除(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="230"/>
+        <location filename="../app/gui/main_window.cpp" line="232"/>
         <source>Remove Reference S&amp;hapes</source>
         <translation>参照形状を削除(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="232"/>
+        <location filename="../app/gui/main_window.cpp" line="234"/>
         <source>Select &amp;None</source>
         <translation>選択を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="233"/>
+        <location filename="../app/gui/main_window.cpp" line="235"/>
         <location filename="../app/gui/main_window_solver.cpp" line="128"/>
         <source>Esc</source>
         <translation>Esc</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="237"/>
+        <location filename="../app/gui/main_window.cpp" line="239"/>
         <source>&amp;View</source>
         <translation>表示(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="239"/>
+        <location filename="../app/gui/main_window.cpp" line="241"/>
         <source>&amp;3D View</source>
         <translation>3D ビュー(&amp;3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="239"/>
+        <location filename="../app/gui/main_window.cpp" line="241"/>
         <source>Ctrl+1</source>
         <translation>Ctrl+1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="241"/>
+        <location filename="../app/gui/main_window.cpp" line="243"/>
         <source>&amp;Development View</source>
         <translation>展開図ビュー(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="241"/>
+        <location filename="../app/gui/main_window.cpp" line="243"/>
         <source>Ctrl+2</source>
         <translation>Ctrl+2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="242"/>
+        <location filename="../app/gui/main_window.cpp" line="244"/>
         <source>3D &amp;and Development</source>
         <translation>3D と展開図(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="243"/>
+        <location filename="../app/gui/main_window.cpp" line="245"/>
         <source>Ctrl+3</source>
         <translation>Ctrl+3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="247"/>
+        <location filename="../app/gui/main_window.cpp" line="249"/>
         <source>&amp;Control Polygons</source>
         <translation>制御多角形(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="247"/>
+        <location filename="../app/gui/main_window.cpp" line="249"/>
         <source>Ctrl+Shift+P</source>
         <translation>Ctrl+Shift+P</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="248"/>
+        <location filename="../app/gui/main_window.cpp" line="250"/>
         <source>&amp;Vertices</source>
         <translation>頂点(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="249"/>
+        <location filename="../app/gui/main_window.cpp" line="251"/>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="252"/>
+        <location filename="../app/gui/main_window.cpp" line="254"/>
         <source>S&amp;heet Outline</source>
         <translation>シートの輪郭(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="255"/>
+        <location filename="../app/gui/main_window.cpp" line="257"/>
         <source>Draw the sheet a held development is confined to behind it in the development view (Tools ▸ Sheet Shape…).</source>
         <translation>保持した展開図を収めるシートを展開図ビューで展開図の後ろに描きます (ツール ▸ シートの形…)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="265"/>
+        <location filename="../app/gui/main_window.cpp" line="267"/>
         <source>&amp;Reference Shapes</source>
         <translation>参照形状(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="268"/>
+        <location filename="../app/gui/main_window.cpp" line="270"/>
         <source>Draw the imported meshes and point clouds in the 3D view (File ▸ Import Reference Shape…).</source>
         <translation>読み込んだメッシュと点群を 3D ビューに描く (ファイル ▸ 参照形状を読み込む…)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="279"/>
+        <location filename="../app/gui/main_window.cpp" line="281"/>
         <source>Colour Reference by Dis&amp;tance</source>
         <translation>参照形状を距離で色分け(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="341"/>
+        <location filename="../app/gui/main_window.cpp" line="343"/>
         <source>Dis&amp;tance to Reference…</source>
         <translation>参照形状までの距離(&amp;T)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="283"/>
+        <location filename="../app/gui/main_window.cpp" line="285"/>
         <source>Colour the points of the reference shapes by their distance to the design, in mm, with a legend (green: within the coverage tolerance of Tools ▸ Distance to Reference…).</source>
         <translation>参照形状の点をデザインまでの距離 (mm) で色分けし、凡例を表示します (緑: ツール ▸ 参照形状までの距離… の被覆許容差以内)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="294"/>
+        <location filename="../app/gui/main_window.cpp" line="296"/>
         <source>&amp;Fit All</source>
         <translation>全体を表示(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="294"/>
+        <location filename="../app/gui/main_window.cpp" line="296"/>
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="300"/>
+        <location filename="../app/gui/main_window.cpp" line="302"/>
         <source>Reset &amp;Layout</source>
         <translation>レイアウトをリセット(&amp;L)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="305"/>
+        <location filename="../app/gui/main_window.cpp" line="307"/>
         <source>&amp;Tools</source>
         <translation>ツール(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="308"/>
+        <location filename="../app/gui/main_window.cpp" line="310"/>
         <source>&amp;Relabel Edge (R ↔ S)</source>
         <translation>辺のラベルを変更 (R ↔ S)(&amp;R)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="308"/>
+        <location filename="../app/gui/main_window.cpp" line="310"/>
         <source>Ctrl+L</source>
         <translation>Ctrl+L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="310"/>
+        <location filename="../app/gui/main_window.cpp" line="312"/>
         <source>Add &amp;Crease…</source>
         <translation>折り線を追加(&amp;C)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="311"/>
+        <location filename="../app/gui/main_window.cpp" line="313"/>
         <source>Ctrl+D</source>
         <translation>Ctrl+D</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="313"/>
+        <location filename="../app/gui/main_window.cpp" line="315"/>
         <source>Add R&amp;uling…</source>
         <translation>母線を追加(&amp;U)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="314"/>
+        <location filename="../app/gui/main_window.cpp" line="316"/>
         <source>Ctrl+R</source>
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="316"/>
+        <location filename="../app/gui/main_window.cpp" line="318"/>
         <source>Re&amp;fine Curves</source>
         <translation>曲線を細分化(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="317"/>
+        <location filename="../app/gui/main_window.cpp" line="319"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="323"/>
+        <location filename="../app/gui/main_window.cpp" line="325"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>頂点の移動・回転(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="323"/>
+        <location filename="../app/gui/main_window.cpp" line="325"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="326"/>
+        <location filename="../app/gui/main_window.cpp" line="328"/>
         <source>&amp;Pin Vertices</source>
         <translation>頂点を固定(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="327"/>
+        <location filename="../app/gui/main_window.cpp" line="329"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="329"/>
+        <location filename="../app/gui/main_window.cpp" line="331"/>
         <source>U&amp;npin Vertices</source>
         <translation>頂点の固定を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="330"/>
+        <location filename="../app/gui/main_window.cpp" line="332"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="333"/>
+        <location filename="../app/gui/main_window.cpp" line="335"/>
         <source>Hold the &amp;Sheet</source>
         <translation>シートを保持(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="334"/>
+        <location filename="../app/gui/main_window.cpp" line="336"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="337"/>
+        <location filename="../app/gui/main_window.cpp" line="339"/>
         <source>Sheet S&amp;hape…</source>
         <translation>シートの形(&amp;H)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="344"/>
+        <location filename="../app/gui/main_window.cpp" line="346"/>
         <source>A&amp;pproximate Reference Shape…</source>
         <translation>参照形状を近似(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="379"/>
+        <location filename="../app/gui/main_window.cpp" line="356"/>
+        <source>Mar&amp;k Region of Reference Shape</source>
+        <translation>参照形状の領域をマーク(&amp;K)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="356"/>
+        <source>L</source>
+        <translation>L</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="358"/>
+        <source>Add Strip O&amp;ver Marked Region</source>
+        <translation>マークした領域にストリップを追加(&amp;V)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="395"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="380"/>
+        <location filename="../app/gui/main_window.cpp" line="396"/>
         <source>&amp;User Manual</source>
         <translation>ユーザーマニュアル(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="387"/>
+        <location filename="../app/gui/main_window.cpp" line="403"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="393"/>
+        <location filename="../app/gui/main_window.cpp" line="409"/>
         <source>&amp;About DevSurf</source>
         <translation>DevSurf について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="395"/>
+        <location filename="../app/gui/main_window.cpp" line="411"/>
         <source>About DevSurf</source>
         <translation>DevSurf について</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="396"/>
+        <location filename="../app/gui/main_window.cpp" line="412"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;スプライン可展面による可展面と曲線折り折り紙の設計 (Tang, Bo, Wallner, Pottmann 2015)。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="441"/>
+        <location filename="../app/gui/main_window.cpp" line="457"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="463"/>
+        <location filename="../app/gui/main_window.cpp" line="479"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="464"/>
+        <location filename="../app/gui/main_window.cpp" line="480"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="478"/>
+        <location filename="../app/gui/main_window.cpp" line="494"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>曲面 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="479"/>
+        <location filename="../app/gui/main_window.cpp" line="495"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="480"/>
+        <location filename="../app/gui/main_window.cpp" line="496"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="481"/>
+        <location filename="../app/gui/main_window.cpp" line="497"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n 個選択</numerusform>
@@ -2818,6 +2833,105 @@
         <location filename="../app/gui/help_dialogs.cpp" line="56"/>
         <source>DevSurf User Manual</source>
         <translation>DevSurf ユーザーマニュアル</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::MarkRegionTool</name>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="92"/>
+        <source>Mark a region of the reference shape: drag a lasso around it in the 3D view (Shift adds to the mark, a click clears it, Esc leaves the tool), then Enter adds a flat strip over it (L).</source>
+        <translation>参照形状の領域をマーク: 3D ビューで投げ縄で囲み (Shift でマークに追加、クリックでマークを消去、Esc でツールを終了)、Enter でその上に平らなストリップを追加します (L)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="95"/>
+        <source>Mark a region of the reference shape with a lasso: import one first (File ▸ Import Reference Shape…).</source>
+        <translation>参照形状の領域を投げ縄でマーク: まず読み込んでください (ファイル ▸ 参照形状を読み込む…)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="102"/>
+        <source>Add a flat strip fitted to the marked points (their PCA plane), one undo step; Tools ▸ Approximate Reference Shape… with the design&apos;s surfaces then pulls it onto the shape.</source>
+        <translation>マークした点に当てはめた平らなストリップ (PCA 平面) を追加します (元に戻す 1 段階)。その後 ツール ▸ 参照形状を近似… でデザインの曲面を選ぶと形状に引き寄せられます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="105"/>
+        <source>Add a flat strip over a marked region of the reference shape: mark one first (Tools ▸ Mark Region of Reference Shape).</source>
+        <translation>参照形状のマークした領域に平らなストリップを追加: まず領域をマークしてください (ツール ▸ 参照形状の領域をマーク)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="117"/>
+        <source>Mark region: drag a lasso around part of the reference shape in the 3D view; Shift adds to the mark, Enter adds a strip over it, Esc leaves the tool.</source>
+        <translation>領域をマーク: 3D ビューで参照形状の一部を投げ縄で囲んでください。Shift でマークに追加、Enter でその上にストリップを追加、Esc でツールを終了します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="166"/>
+        <source>Lasso dropped; the mark is as it was.</source>
+        <translation>投げ縄を破棄しました。マークは元のままです。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="234"/>
+        <source>Mark cleared.</source>
+        <translation>マークを消去しました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="239"/>
+        <source>The reference shapes are hidden: show them (View ▸ Reference Shapes) to mark a region.</source>
+        <translation>参照形状が非表示です: 領域をマークするには表示してください (表示 ▸ 参照形状)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="260"/>
+        <source>No point of the reference shape facing the camera lies inside the lasso; nothing is marked.</source>
+        <translation>カメラの方を向いた参照形状の点が投げ縄の内側にありません。何もマークされていません。</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/mark_region_tool.cpp" line="274"/>
+        <source>%Ln point(s) of %1 marked.</source>
+        <translation>
+            <numerusform>%1 の %Ln 点をマークしました。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/mark_region_tool.cpp" line="276"/>
+        <source>%Ln point(s) of the reference shapes marked.</source>
+        <translation>
+            <numerusform>参照形状の %Ln 点をマークしました。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="278"/>
+        <source>%1 Enter adds a strip over them; Shift and a lasso add to the mark.</source>
+        <translation>%1 Enter でその上にストリップを追加、Shift を押しながら囲むとマークに追加します。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="297"/>
+        <source>No region is marked: draw a lasso around part of the reference shape first (Tools ▸ Mark Region of Reference Shape).</source>
+        <translation>領域がマークされていません: まず参照形状の一部を投げ縄で囲んでください (ツール ▸ 参照形状の領域をマーク)。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="302"/>
+        <source>Too few points are marked for a strip: mark at least three points that do not lie on a line.</source>
+        <translation>ストリップには点が少なすぎます: 一直線上にない 3 点以上をマークしてください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="310"/>
+        <source>The marked points lie on a line, so no plane fits them: mark a region that is wide in two directions.</source>
+        <translation>マークした点は一直線上にあるので平面を当てはめられません: 2 方向に広がった領域をマークしてください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="319"/>
+        <source>Add Strip Over Marked Region</source>
+        <translation>マークした領域にストリップを追加</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/mark_region_tool.cpp" line="320"/>
+        <source>Cannot add the strip</source>
+        <translation>ストリップを追加できません</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/mark_region_tool.cpp" line="325"/>
+        <source>Added strip %1 over %Ln marked point(s); Tools ▸ Approximate Reference Shape… with the design&apos;s surfaces pulls it onto the shape.</source>
+        <translation>
+            <numerusform>マークした %Ln 点の上にストリップ %1 を追加しました。ツール ▸ 参照形状を近似… でデザインの曲面を選ぶと形状に引き寄せられます。</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4655,12 +4769,12 @@
 <context>
     <name>devsurf::views::SceneView</name>
     <message>
-        <location filename="../views/scene_view.cpp" line="54"/>
+        <location filename="../views/scene_view.cpp" line="55"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location filename="../views/scene_view.cpp" line="56"/>
+        <location filename="../views/scene_view.cpp" line="57"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
@@ -4755,50 +4869,50 @@
 <context>
     <name>devsurf::views::ViewOverlay</name>
     <message>
-        <location filename="../views/view_overlay.cpp" line="71"/>
+        <location filename="../views/view_overlay.cpp" line="72"/>
         <source>CF</source>
         <comment>badge: curved fold</comment>
         <translation>曲</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="73"/>
+        <location filename="../views/view_overlay.cpp" line="74"/>
         <source>G</source>
         <comment>badge: geodesic</comment>
         <translation>測</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="75"/>
+        <location filename="../views/view_overlay.cpp" line="76"/>
         <source>SU</source>
         <comment>badge: straight when unfolded</comment>
         <translation>直</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="143"/>
+        <location filename="../views/view_overlay.cpp" line="144"/>
         <source>Mountain fold</source>
         <translation>山折り</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="147"/>
+        <location filename="../views/view_overlay.cpp" line="148"/>
         <source>Valley fold</source>
         <translation>谷折り</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="151"/>
+        <location filename="../views/view_overlay.cpp" line="152"/>
         <source>Crease, not folded</source>
         <translation>折れていない折り線</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="161"/>
+        <location filename="../views/view_overlay.cpp" line="162"/>
         <source>Smooth ruling</source>
         <translation>滑らかな母線</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="164"/>
+        <location filename="../views/view_overlay.cpp" line="165"/>
         <source>Sharp ruling</source>
         <translation>鋭角の母線</translation>
     </message>
     <message>
-        <location filename="../views/view_overlay.cpp" line="167"/>
+        <location filename="../views/view_overlay.cpp" line="168"/>
         <source>Sheet</source>
         <translation>シート</translation>
     </message>

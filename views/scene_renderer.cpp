@@ -142,6 +142,10 @@ SceneRenderer::SceneRenderer(Mode mode, vtkRenderer* renderer)
     pointStyle(*m_pinned, 0.85, 0.05, 0.05, 13.0);
     m_target = &addLayer();
     pointStyle(*m_target, 0.1, 0.7, 0.2, 4.0);
+    // Marked points of a reference shape: magenta (neither the selection's orange nor a colour
+    // of the distance map) and larger than the shape's own points.
+    m_marked = &addLayer();
+    pointStyle(*m_marked, 0.85, 0.0, 0.85, 7.0);
     m_selectedEdges = &addLayer();
     lineStyle(*m_selectedEdges, kSelectionRgb[0], kSelectionRgb[1], kSelectionRgb[2], 6.0, true);
     m_selectedVertices = &addLayer();
@@ -473,6 +477,18 @@ void SceneRenderer::setShowSheet(bool show) {
 
 void SceneRenderer::setTargetPoints(const std::vector<Vec3>& points) {
     m_target->assign(pointData(points), false);
+}
+
+void SceneRenderer::setMarkedPoints(const std::vector<Vec3>& points) {
+    m_marked->assign(pointData(points), false);
+}
+
+void SceneRenderer::showMarkedPoints(bool show) {
+    m_marked->actor->SetVisibility(show);
+}
+
+int SceneRenderer::markedPointCount() const {
+    return m_showReferenceShapes ? static_cast<int>(m_marked->data->GetNumberOfPoints()) : 0;
 }
 
 void SceneRenderer::setPreviewLines(const std::vector<std::vector<Vec3>>& lines) {

@@ -75,6 +75,10 @@ public:
     void setShowSheet(bool show);
     bool showsSheet() const { return m_showSheet; }
     void setTargetPoints(const std::vector<model::Vec3>& points);
+    // Points of the reference shapes marked by a lasso (3D only): large magenta points, shown
+    // and hidden with the reference shapes.
+    void setMarkedPoints(const std::vector<model::Vec3>& points);
+    int markedPointCount() const;
     // Lines an edit in progress would add (drawn dashed-bright over everything else).
     void setPreviewLines(const std::vector<std::vector<model::Vec3>>& lines);
     // The project's reference curves (3D only): thin dark lines, never picked.
@@ -194,6 +198,8 @@ private:
     Layer* m_vertices = nullptr;
     Layer* m_pinned = nullptr;
     Layer* m_target = nullptr;
+    Layer* m_marked = nullptr;
+    void showMarkedPoints(bool show);
     Layer* m_selectedEdges = nullptr;
     Layer* m_selectedVertices = nullptr;
     Layer* m_preview = nullptr;

@@ -232,6 +232,7 @@ void SceneRenderer::setShowReferenceShapes(bool show) {
     for (int i = 0; i < static_cast<int>(m_shapeActors.size()); ++i) {
         m_shapeActors[static_cast<std::size_t>(i)]->actor->SetVisibility(show && i < m_shapesDrawn);
     }
+    showMarkedPoints(show);
 }
 
 int SceneRenderer::referenceShapeCount() const {

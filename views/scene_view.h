@@ -4,12 +4,14 @@
 #include "distance_legend.h"
 #include "model/document/selection.h"
 #include "model/ids.h"
+#include "model/reference/lasso_marking.h"
 #include "model/vec3.h"
 #include "view_overlay.h"
 
 #include <QColor>
 #include <QImage>
 #include <QPoint>
+#include <QPointF>
 #include <QRect>
 #include <QString>
 #include <QStringList>
@@ -91,6 +93,16 @@ public:
     // last one (none when empty).
     void setMeasurement(const std::vector<model::Vec3>& points, const QString& text);
     std::vector<model::Vec3> measurementPoints() const;
+    // The camera as a lasso drawn in widget coordinates needs it (model::reference::
+    // pointsInLasso): scene point → widget position, and where the camera looks from.
+    model::reference::LassoCamera lassoCamera() const;
+    // A lasso being drawn over the view (widget coordinates; empty: none).
+    void setLasso(const std::vector<QPointF>& points);
+    std::vector<QPointF> lasso() const;
+    // Points of the reference shapes marked with the lasso, drawn magenta and larger (3D view;
+    // hidden with the reference shapes), and how many are drawn.
+    void setMarkedPoints(const std::vector<model::Vec3>& points);
+    int markedPointsDrawn() const;
     // The verdict of the design's last solve written in the upper right corner (empty: none),
     // and where it is drawn (widget coordinates of glWidget()).
     QString verdictText() const;

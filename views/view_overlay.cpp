@@ -9,6 +9,7 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QPen>
+#include <QPolygonF>
 
 #include <algorithm>
 #include <cmath>
@@ -205,6 +206,14 @@ void ViewOverlay::setMeasurement(std::vector<QPointF> points, const QString& tex
     }
     m_measured = std::move(points);
     m_measuredText = text;
+    update();
+}
+
+void ViewOverlay::setLasso(std::vector<QPointF> points) {
+    if (points == m_lasso) {
+        return;
+    }
+    m_lasso = std::move(points);
     update();
 }
 
@@ -409,6 +418,18 @@ void ViewOverlay::paintEvent(QPaintEvent*) {
             painter.setPen(QColor(20, 20, 20));
             painter.drawText(box, Qt::AlignCenter, m_measuredText);
         }
+    }
+
+    // The lasso: closed, dark under a dashed magenta line, so that it reads on any background.
+    if (m_lasso.size() >= 2) {
+        const QPolygonF polygon(QList<QPointF>(m_lasso.begin(), m_lasso.end()));
+        painter.setBrush(QColor(215, 0, 215, 40));
+        painter.setPen(QPen(QColor(20, 20, 20), 3.0));
+        painter.drawPolygon(polygon);
+        QPen dashed(QColor(215, 0, 215), 2.0, Qt::DashLine);
+        painter.setPen(dashed);
+        painter.setBrush(Qt::NoBrush);
+        painter.drawPolygon(polygon);
     }
 
     if (m_quality) {

@@ -110,6 +110,11 @@ public:
     // A measurement: a line through the points (widget coordinates) with the text at the last.
     void setMeasurement(std::vector<QPointF> points, const QString& text);
 
+    // A lasso being drawn (Tools ▸ Mark Region of Reference Shape): a closed line through the
+    // points (widget coordinates); none when empty.
+    void setLasso(std::vector<QPointF> points);
+    const std::vector<QPointF>& lasso() const { return m_lasso; }
+
     // A solve's verdict written in the upper right corner in `colour` (empty: none).
     void setVerdict(const QString& text, const QColor& colour);
     QString verdict() const { return m_verdict; }
@@ -148,6 +153,7 @@ private:
     std::optional<QualityLegend> m_quality;
     std::optional<DistanceLegend> m_distance;
     std::vector<QPointF> m_measured;
+    std::vector<QPointF> m_lasso;
     QString m_measuredText;
     void paintQualityLegend(QPainter& painter, const QFont& font) const;
 };

@@ -5,6 +5,7 @@
 #include "eliding_status_bar.h"
 #include "help_dialogs.h"
 #include "language_menu.h"
+#include "mark_region_tool.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "panels/patch_panel.h"
@@ -30,6 +31,7 @@
 #include "workspace.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -349,8 +351,22 @@ void MainWindow::createMenus() {
             m_developmentView->fitAll();
         }
     });
+    // Issue 42: a region of the reference shape marked by hand, a flat strip over it.
+    QAction* markRegion = addAction(tools, QStringLiteral("actionMarkRegion"),
+                                    tr("Mar&k Region of Reference Shape"), QKeySequence(tr("L")));
+    QAction* stripOverMark = addAction(tools, QStringLiteral("actionAddStripOverMark"),
+                                       tr("Add Strip O&ver Marked Region"));
+    auto* markTool = new MarkRegionTool(markRegion, stripOverMark, m_workspace, m_surfaceView);
+    connect(markTool, &MarkRegionTool::statusMessage, this,
+            [this](const QString& text) { statusBar()->showMessage(text); });
+    connect(markTool, &MarkRegionTool::stripAdded, m_developmentView,
+            &views::DevelopmentView::fitAll);
     tools->addSeparator();
     const QList<QAction*> solverActions = createSolverActions(tools, selectNone);
+    // One tool at a time (createSolverActions groups the others).
+    if (QActionGroup* group = action(QStringLiteral("actionMeasureTool"))->actionGroup()) {
+        group->addAction(markRegion);
+    }
     // A right click in either view offers what applies to the entity under the cursor.
     for (views::SceneView* sceneView : {static_cast<views::SceneView*>(m_surfaceView),
                                         static_cast<views::SceneView*>(m_developmentView)}) {
