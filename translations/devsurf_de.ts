@@ -193,7 +193,12 @@
         <translation>Ein geschlossener Torus aus size Bändern von Kegeln, 2 × size Streifen rundherum: Streifen für Streifen abwickelbar, aber nicht aus einem Bogen; sein Schnittmuster hat ein Teil je Band.</translation>
     </message>
     <message>
-        <location filename="../app/text/example_text.cpp" line="46"/>
+        <location filename="../app/text/example_text.cpp" line="47"/>
+        <source>A pleated column after Huffman&apos;s hexagonal column: a tube folded along size upright creases with the curved-fold condition, three bottom vertices pinned. It keeps its development around the cylinder it unrolls from. Drag a top vertex up or in.</source>
+        <translation>Eine gefaltete Säule nach Huffmans sechseckiger Säule: ein Rohr, entlang size aufrechter Falten mit der Bedingung der gekrümmten Faltung gefaltet, drei untere Eckpunkte fixiert. Sie behält ihre Abwicklung um den Zylinder, von dem sie sich abrollt. Ziehen Sie einen oberen Eckpunkt nach oben oder nach innen.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="53"/>
         <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
         <translation>Ein Streifen, ein spitzer Streifen, ein Kegel und ein ebenes Flächenstück; Größe Intervalle je Kurve.</translation>
     </message>
@@ -766,47 +771,42 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="285"/>
-        <source>The surface is not one flat sheet: it unfolds onto a cylinder (a period of %1 mm).</source>
-        <translation>Die Fläche ist kein einzelner ebener Bogen: sie wickelt sich auf einen Zylinder ab (Periode %1 mm).</translation>
-    </message>
-    <message>
-        <location filename="../app/text/problem_text.cpp" line="289"/>
+        <location filename="../app/text/problem_text.cpp" line="284"/>
         <source>The surface is not one flat sheet: its unfolding misses closing up by %1 mm.</source>
         <translation>Die Fläche ist kein einzelner ebener Bogen: ihre Abwicklung schließt sich um %1 mm nicht.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="294"/>
+        <location filename="../app/text/problem_text.cpp" line="289"/>
         <source>DevSurf met an internal error (%1). Please report it.</source>
         <translation>DevSurf ist auf einen internen Fehler gestoßen (%1). Bitte melden Sie ihn.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="312"/>
+        <location filename="../app/text/problem_text.cpp" line="307"/>
         <source>The sheet size must be positive; the pieces are laid out side by side.</source>
         <translation>Die Bogengröße muss positiv sein; die Teile werden nebeneinander gelegt.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="314"/>
+        <location filename="../app/text/problem_text.cpp" line="309"/>
         <source>%1 is not valid and has no pattern: %2</source>
         <translation>%1 ist ungültig und hat kein Schnittmuster: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="317"/>
+        <location filename="../app/text/problem_text.cpp" line="312"/>
         <source>%1 could not be developed: %2</source>
         <translation>%1 konnte nicht abgewickelt werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="320"/>
+        <location filename="../app/text/problem_text.cpp" line="315"/>
         <source>Piece %1 (%2) overlaps itself at patches %3 and cannot be cut from one sheet.</source>
         <translation>Teil %1 (%2) überlappt sich selbst bei den Flächenstücken %3 und kann nicht aus einem Bogen geschnitten werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="323"/>
+        <location filename="../app/text/problem_text.cpp" line="318"/>
         <source>Pieces %1 (patches %2) and %3 (patches %4) overlap on sheet %5.</source>
         <translation>Die Teile %1 (Flächenstücke %2) und %3 (Flächenstücke %4) überlappen sich auf Bogen %5.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="328"/>
+        <location filename="../app/text/problem_text.cpp" line="323"/>
         <source>Piece %1 (%2) measures %3 × %4 mm and does not fit on the %5 × %6 mm sheet with a %7 mm gap.</source>
         <translation>Teil %1 (%2) misst %3 × %4 mm und passt mit %7 mm Abstand nicht auf den Bogen von %5 × %6 mm.</translation>
     </message>
@@ -2004,38 +2004,38 @@
 <context>
     <name>devsurf::app::HoldSheetReaction</name>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="71"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="78"/>
         <source>Hold the sheet of a surface: select something on one surface first.</source>
         <translation>Den Bogen einer Fläche festhalten: zuerst etwas auf einer Fläche auswählen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="72"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="79"/>
         <source>The surface is folded from its sheet: solves and drags keep it isometric to its development, and a dragged vertex stays behind where the sheet cannot follow. Uncheck to let the sheet stretch again.</source>
         <translation>Die Fläche ist aus ihrem Bogen gefaltet: Lösen und Ziehen halten sie isometrisch zu ihrer Abwicklung, und ein gezogener Eckpunkt bleibt zurück, wo der Bogen nicht folgen kann. Abwählen, damit sich der Bogen wieder dehnen darf.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="75"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="82"/>
         <source>Fold the surface from its sheet: its development as it unfolds now is kept by every solve and drag; a dragged vertex stays behind where the sheet cannot follow, instead of the sheet stretching.</source>
         <translation>Die Fläche aus ihrem Bogen falten: ihre Abwicklung, wie sie sich jetzt abwickelt, wird von jedem Lösen und Ziehen beibehalten; ein gezogener Eckpunkt bleibt zurück, wo der Bogen nicht folgen kann, statt dass sich der Bogen dehnt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="91"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="98"/>
         <source>Hold the Sheet</source>
         <translation>Bogen festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="91"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="98"/>
         <source>Let the Sheet Stretch</source>
         <translation>Bogen dehnen lassen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="94"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="105"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="101"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="112"/>
         <source>Cannot hold the sheet</source>
         <translation>Der Bogen kann nicht festgehalten werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="105"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="112"/>
         <source>Cannot let the sheet stretch</source>
         <translation>Der Bogen kann nicht freigegeben werden</translation>
     </message>
@@ -4030,17 +4030,17 @@
         <translation>Zeichnungen (*.dxf *.svg *.step *.stp *.iges *.igs)</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="167"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="168"/>
         <source>%1 cannot be read as a drawing: choose a DXF, SVG, STEP or IGES file.</source>
         <translation>%1 kann nicht als Zeichnung gelesen werden: wählen Sie eine DXF-, SVG-, STEP- oder IGES-Datei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="170"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="171"/>
         <source>%1 holds no closed curve enclosing an area to be the sheet&apos;s outline.</source>
         <translation>%1 enthält keine geschlossene Kurve, die eine Fläche umschließt und den Umriss des Bogens bilden könnte.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="175"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="176"/>
         <source>%1: %n closed curve(s)</source>
         <translation>
             <numerusform>%1: %n geschlossene Kurve</numerusform>
@@ -4061,37 +4061,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="206"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="207"/>
         <source>The development covers %1 cm² and is held as it is.</source>
         <translation>Die Abwicklung bedeckt %1 cm² und wird gehalten, wie sie ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="213"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="214"/>
         <source>Choose a drawing whose closed curves are the sheet&apos;s outline.</source>
         <translation>Wählen Sie eine Zeichnung, deren geschlossene Kurven den Umriss des Bogens bilden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="222"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="223"/>
         <source>The outline has no closed curve enclosing an area.</source>
         <translation>Der Umriss hat keine geschlossene Kurve, die eine Fläche umschließt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="223"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="224"/>
         <source>The inner radius must be smaller than the radius.</source>
         <translation>Der Innenradius muss kleiner als der Radius sein.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="234"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="235"/>
         <source>The development (%1 cm²) is larger than this sheet (%2 cm²): no solve can fold the design from it.</source>
         <translation>Die Abwicklung (%1 cm²) ist größer als dieser Bogen (%2 cm²): kein Lösen kann die Form daraus falten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="243"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="244"/>
         <source>The development (%1 cm²) fits this sheet (%2 cm²): its boundary lies on the sheet&apos;s.</source>
         <translation>Die Abwicklung (%1 cm²) passt auf diesen Bogen (%2 cm²): ihr Rand liegt auf dem des Bogens.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="247"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="248"/>
         <source>The development covers %1 cm² of this sheet&apos;s %2 cm²; its boundary is up to %3 mm from the sheet&apos;s, and the next Solve moves it onto the sheet.</source>
         <translation>Die Abwicklung bedeckt %1 cm² der %2 cm² dieses Bogens; ihr Rand liegt bis zu %3 mm vom Rand des Bogens entfernt, und das nächste Lösen legt ihn auf den Bogen.</translation>
     </message>
@@ -4099,33 +4099,38 @@
 <context>
     <name>devsurf::app::SheetShapeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="118"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="60"/>
+        <source>%1 closes around: it is folded from a cylinder of radius %2 mm, its development read modulo the cylinder&apos;s circumference, and no flat sheet shape applies.</source>
+        <translation>%1 schließt sich ringsum: es ist aus einem Zylinder mit Radius %2 mm gefaltet, seine Abwicklung wird modulo des Zylinderumfangs gelesen, und keine ebene Blattform ist anwendbar.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="125"/>
         <source>Choose the sheet the surface is folded from: its development as it is, or a rectangle, disk or annulus its development stays inside.</source>
         <translation>Den Bogen wählen, aus dem die Fläche gefaltet wird: ihre Abwicklung, wie sie ist, oder ein Rechteck, eine Kreisscheibe oder ein Kreisring, in dem ihre Abwicklung bleibt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="120"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="127"/>
         <source>Choose the sheet of a surface: select something on one surface first.</source>
         <translation>Den Bogen einer Fläche wählen: zuerst etwas auf einer Fläche auswählen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="133"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="151"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="140"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="165"/>
         <source>Cannot hold the sheet</source>
         <translation>Der Bogen kann nicht festgehalten werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="162"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="180"/>
         <source>Set Sheet Shape</source>
         <translation>Bogenform festlegen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="164"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="182"/>
         <source>Cannot set the sheet shape</source>
         <translation>Die Bogenform kann nicht festgelegt werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="169"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="187"/>
         <source>The development&apos;s boundary is up to %1 mm from the sheet&apos;s: Solve moves it onto the sheet.</source>
         <translation>Der Rand der Abwicklung liegt bis zu %1 mm vom Rand des Bogens entfernt: Lösen legt ihn auf den Bogen.</translation>
     </message>

@@ -400,7 +400,7 @@
 <context>
     <name>devsurf::app::SheetShapeDialog</name>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="175"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="176"/>
         <source>%1: %n closed curve(s)</source>
         <translation>
             <numerusform>%1: %n closed curve</numerusform>

@@ -191,7 +191,12 @@
         <translation>錐面の帯 size 本からなる閉じたトーラスで、周方向に 2 × size 枚の帯があります。帯ごとには可展ですが 1 枚のシートからは作れません。型紙は帯ごとに 1 枚の部品になります。</translation>
     </message>
     <message>
-        <location filename="../app/text/example_text.cpp" line="46"/>
+        <location filename="../app/text/example_text.cpp" line="47"/>
+        <source>A pleated column after Huffman&apos;s hexagonal column: a tube folded along size upright creases with the curved-fold condition, three bottom vertices pinned. It keeps its development around the cylinder it unrolls from. Drag a top vertex up or in.</source>
+        <translation>ハフマンの六角柱にならったプリーツ状の柱: 曲線折りの条件を持つ size 本の縦の折り目に沿って折った筒で、下端の頂点 3 つを固定しています。展開図は、巻き戻すと得られる円柱の周りに保持されます。上端の頂点を上または内側にドラッグしてください。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="53"/>
         <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
         <translation>ストリップ、尖ったストリップ、錐面、平面パッチ。曲線ごとにサイズ個の区間。</translation>
     </message>
@@ -759,47 +764,42 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="285"/>
-        <source>The surface is not one flat sheet: it unfolds onto a cylinder (a period of %1 mm).</source>
-        <translation>曲面は 1 枚の平らなシートではありません: 円柱上に展開されます（周期 %1 mm）。</translation>
-    </message>
-    <message>
-        <location filename="../app/text/problem_text.cpp" line="289"/>
+        <location filename="../app/text/problem_text.cpp" line="284"/>
         <source>The surface is not one flat sheet: its unfolding misses closing up by %1 mm.</source>
         <translation>曲面は 1 枚の平らなシートではありません: 展開図が %1 mm 閉じません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="294"/>
+        <location filename="../app/text/problem_text.cpp" line="289"/>
         <source>DevSurf met an internal error (%1). Please report it.</source>
         <translation>DevSurf で内部エラーが発生しました (%1)。報告してください。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="312"/>
+        <location filename="../app/text/problem_text.cpp" line="307"/>
         <source>The sheet size must be positive; the pieces are laid out side by side.</source>
         <translation>シートの大きさは正でなければなりません。ピースは横に並べて配置します。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="314"/>
+        <location filename="../app/text/problem_text.cpp" line="309"/>
         <source>%1 is not valid and has no pattern: %2</source>
         <translation>%1 は無効で型紙がありません: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="317"/>
+        <location filename="../app/text/problem_text.cpp" line="312"/>
         <source>%1 could not be developed: %2</source>
         <translation>%1 を展開できませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="320"/>
+        <location filename="../app/text/problem_text.cpp" line="315"/>
         <source>Piece %1 (%2) overlaps itself at patches %3 and cannot be cut from one sheet.</source>
         <translation>ピース %1（%2）はパッチ %3 で自分自身と重なっており、1 枚のシートから切り出せません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="323"/>
+        <location filename="../app/text/problem_text.cpp" line="318"/>
         <source>Pieces %1 (patches %2) and %3 (patches %4) overlap on sheet %5.</source>
         <translation>ピース %1（パッチ %2）と %3（パッチ %4）がシート %5 上で重なっています。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="328"/>
+        <location filename="../app/text/problem_text.cpp" line="323"/>
         <source>Piece %1 (%2) measures %3 × %4 mm and does not fit on the %5 × %6 mm sheet with a %7 mm gap.</source>
         <translation>ピース %1（%2）は %3 × %4 mm で、%7 mm の間隔をとると %5 × %6 mm のシートに収まりません。</translation>
     </message>
@@ -1983,38 +1983,38 @@
 <context>
     <name>devsurf::app::HoldSheetReaction</name>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="71"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="78"/>
         <source>Hold the sheet of a surface: select something on one surface first.</source>
         <translation>曲面のシートを保持します: まず 1 つの曲面上の要素を選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="72"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="79"/>
         <source>The surface is folded from its sheet: solves and drags keep it isometric to its development, and a dragged vertex stays behind where the sheet cannot follow. Uncheck to let the sheet stretch again.</source>
         <translation>曲面はそのシートから折られています: ソルブとドラッグは展開図との等長性を保ち、シートが追従できない所ではドラッグした頂点が手前で止まります。チェックを外すとシートは再び伸びられます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="75"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="82"/>
         <source>Fold the surface from its sheet: its development as it unfolds now is kept by every solve and drag; a dragged vertex stays behind where the sheet cannot follow, instead of the sheet stretching.</source>
         <translation>曲面をそのシートから折ります: 現在の展開図がすべてのソルブとドラッグで保たれ、シートが追従できない所では、シートが伸びる代わりにドラッグした頂点が手前で止まります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="91"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="98"/>
         <source>Hold the Sheet</source>
         <translation>シートを保持</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="91"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="98"/>
         <source>Let the Sheet Stretch</source>
         <translation>シートの伸びを許す</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="94"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="105"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="101"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="112"/>
         <source>Cannot hold the sheet</source>
         <translation>シートを保持できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="105"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="112"/>
         <source>Cannot let the sheet stretch</source>
         <translation>シートの伸びを許せません</translation>
     </message>
@@ -3987,17 +3987,17 @@
         <translation>図面 (*.dxf *.svg *.step *.stp *.iges *.igs)</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="167"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="168"/>
         <source>%1 cannot be read as a drawing: choose a DXF, SVG, STEP or IGES file.</source>
         <translation>%1 を図面として読み込めません: DXF、SVG、STEP または IGES ファイルを選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="170"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="171"/>
         <source>%1 holds no closed curve enclosing an area to be the sheet&apos;s outline.</source>
         <translation>%1 にはシートの輪郭となる、面積を囲む閉じた曲線がありません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="175"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="176"/>
         <source>%1: %n closed curve(s)</source>
         <translation>
             <numerusform>%1: 閉じた曲線 %n 本</numerusform>
@@ -4016,37 +4016,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="206"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="207"/>
         <source>The development covers %1 cm² and is held as it is.</source>
         <translation>展開図の面積は %1 cm² で、そのまま保持されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="213"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="214"/>
         <source>Choose a drawing whose closed curves are the sheet&apos;s outline.</source>
         <translation>閉じた曲線がシートの輪郭となる図面を選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="222"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="223"/>
         <source>The outline has no closed curve enclosing an area.</source>
         <translation>輪郭に面積を囲む閉じた曲線がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="223"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="224"/>
         <source>The inner radius must be smaller than the radius.</source>
         <translation>内径は半径より小さくなければなりません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="234"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="235"/>
         <source>The development (%1 cm²) is larger than this sheet (%2 cm²): no solve can fold the design from it.</source>
         <translation>展開図 (%1 cm²) がこのシート (%2 cm²) より大きいため、どのソルブでもこのシートから折ることはできません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="243"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="244"/>
         <source>The development (%1 cm²) fits this sheet (%2 cm²): its boundary lies on the sheet&apos;s.</source>
         <translation>展開図 (%1 cm²) はこのシート (%2 cm²) に合っています: 境界はシートの境界上にあります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="247"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="248"/>
         <source>The development covers %1 cm² of this sheet&apos;s %2 cm²; its boundary is up to %3 mm from the sheet&apos;s, and the next Solve moves it onto the sheet.</source>
         <translation>展開図はこのシートの %2 cm² のうち %1 cm² を占めます。境界はシートの境界から最大 %3 mm 離れており、次のソルブでシート上に移ります。</translation>
     </message>
@@ -4054,33 +4054,38 @@
 <context>
     <name>devsurf::app::SheetShapeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="118"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="60"/>
+        <source>%1 closes around: it is folded from a cylinder of radius %2 mm, its development read modulo the cylinder&apos;s circumference, and no flat sheet shape applies.</source>
+        <translation>%1 は一周して閉じています: 半径 %2 mm の円柱から折られ、展開図は円柱の周長を法として読まれるため、平面のシート形状は適用できません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="125"/>
         <source>Choose the sheet the surface is folded from: its development as it is, or a rectangle, disk or annulus its development stays inside.</source>
         <translation>曲面を折り出すシートを選びます: 展開図そのまま、または展開図が内側に収まる長方形・円板・円環。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="120"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="127"/>
         <source>Choose the sheet of a surface: select something on one surface first.</source>
         <translation>曲面のシートを選ぶには、まず 1 つの曲面上で何かを選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="133"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="151"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="140"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="165"/>
         <source>Cannot hold the sheet</source>
         <translation>シートを保持できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="162"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="180"/>
         <source>Set Sheet Shape</source>
         <translation>シートの形を設定</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="164"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="182"/>
         <source>Cannot set the sheet shape</source>
         <translation>シートの形を設定できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="169"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="187"/>
         <source>The development&apos;s boundary is up to %1 mm from the sheet&apos;s: Solve moves it onto the sheet.</source>
         <translation>展開図の境界はシートの境界から最大 %1 mm 離れています。ソルブで境界がシート上に移ります。</translation>
     </message>

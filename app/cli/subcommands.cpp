@@ -26,7 +26,7 @@ const std::vector<SubcommandSpec>& subcommands() {
         {"example",
          "example NAME [--size K] -o FILE.devsurf",
          "Write a built-in example (sheet, annulus, cylinder, mixed,\n"
-         "fig8, fig6, fig13, torus; `devsurf-cli examples` lists them).",
+         "fig8, fig6, fig13, torus, column; `devsurf-cli examples` lists them).",
          {{"size", "K", "The example's size."},
           {"o", "FILE.devsurf", "The project file to write."}}},
         {"info",

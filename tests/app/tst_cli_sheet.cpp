@@ -45,13 +45,28 @@ private slots:
         const model::CompositeSurface after = io::loadProjectFile(lifted).surfaces[0];
         QVERIFY(after.development() == surface.development());
         QVERIFY(std::abs(after.position(5).z - surface.position(5).z) < 1.0);
-        // --off lets it stretch again; a cylinder is no flat sheet (exit 2, nothing written).
+        // --off lets it stretch again.
         QCOMPARE(cli({"sheet", held, "--off", "-o", held}).exitCode, 0);
         QVERIFY(!io::loadProjectFile(held).surfaces[0].keepsDevelopment());
+        // A cylinder holds the cylinder it unrolls onto; a flat shape for it is refused (exit
+        // 2, nothing written), and so is a torus, which unrolls onto no one sheet.
         const QString cylinder = path("tube.devsurf");
         QCOMPARE(cli({"example", "cylinder", "-o", cylinder}).exitCode, 0);
-        const QString refused = path("tube-held.devsurf");
-        QCOMPARE(cli({"sheet", cylinder, "--free", "-o", refused}).exitCode, 2);
+        const QString around = path("tube-held.devsurf");
+        run = cli({"sheet", cylinder, "--free", "-o", around});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains(QStringLiteral("around a cylinder of radius")),
+                 qPrintable(run.out));
+        QCOMPARE(io::loadProjectFile(around).surfaces[0].sheetDomain().shape,
+                 model::SheetShape::Cylinder);
+        const QString refused = path("tube-flat.devsurf");
+        run = cli({"sheet", cylinder, "--rectangle", "700,200", "-o", refused});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("closes around a cylinder")), qPrintable(run.err));
+        QVERIFY(!QFile::exists(refused));
+        const QString torus = path("torus.devsurf");
+        QCOMPARE(cli({"example", "torus", "-o", torus}).exitCode, 0);
+        QCOMPARE(cli({"sheet", torus, "--free", "-o", refused}).exitCode, 2);
         QVERIFY(!QFile::exists(refused));
         QCOMPARE(cli({"sheet", cylinder, "-o", refused}).exitCode, 1);
     }

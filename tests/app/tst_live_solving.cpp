@@ -9,6 +9,7 @@
 #include "model/examples.h"
 #include "model/sampled_mesh.h"
 #include "panels/solver_panel.h"
+#include "reactions/sheet_reactions.h"
 #include "sheet_shape_dialog.h"
 #include "solve_controller.h"
 #include "solver/quality/crease_quality.h"
@@ -171,6 +172,38 @@ private slots:
         QCOMPARE(doc->surface(0).sheetDomain().shape, model::SheetShape::Rectangle);
     }
 
+    void aTubeHoldsTheCylinderItUnrollsOnto() {
+        // Hold the Sheet on the cylinder example holds it around a cylinder (one undo step);
+        // Sheet Shape… then opens no dialog and says why no flat shape applies.
+        app::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.workspace()->newFromExample(QStringLiteral("cylinder"), 0);
+        document::Document* doc = window.workspace()->document();
+        const int steps = doc->undoStack()->count();
+        window.action(QStringLiteral("actionHoldSheet"))->trigger();
+        QCOMPARE(doc->undoStack()->count(), steps + 1);
+        QVERIFY(doc->surface(0).keepsDevelopment());
+        QCOMPARE(doc->surface(0).sheetDomain().shape, model::SheetShape::Cylinder);
+        QSignalSpy said(window.workspace(), &app::Workspace::statusMessage);
+        bool dialogShown = false;
+        QTimer poll;
+        connect(&poll, &QTimer::timeout, &poll, [&] {
+            if (auto* dialog = QApplication::activeModalWidget()) {
+                dialogShown = true;
+                dialog->close();
+            }
+        });
+        poll.start(10);
+        window.action(QStringLiteral("actionSheetShape"))->trigger();
+        poll.stop();
+        QVERIFY(!dialogShown);
+        QCOMPARE(doc->undoStack()->count(), steps + 1);
+        QVERIFY(!said.isEmpty());
+        QCOMPARE(said.last().at(0).toString(),
+                 app::SheetShapeReaction::cylinderText(doc->surface(0)));
+    }
+
     void sheetOutlineComesFromADrawing() {
         // Outline of a drawing: a damaged file and a drawing without a closed curve are said
         // in the dialog and OK stays off; a 300 mm square drawn in an SVG becomes the sheet.
@@ -231,11 +264,13 @@ private slots:
         QVERIFY(model::largestDomainGap(held.sheetDomain(), mesh, held.development()) < 1e-6);
     }
 
-    void aCylinderIsNoFlatSheetToHold() {
+    void aTorusIsNoSheetToHold() {
+        // A torus unrolls onto no one sheet, flat or around a cylinder: refused with a message,
+        // nothing changed.
         app::MainWindow window;
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        window.workspace()->newFromExample(QStringLiteral("cylinder"), 0);
+        window.workspace()->newFromExample(QStringLiteral("torus"), 0);
         document::Document* doc = window.workspace()->document();
         const int steps = doc->undoStack()->count();
         bool warned = false;

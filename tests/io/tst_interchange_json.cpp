@@ -117,7 +117,8 @@ private slots:
                             index.toInt() < mesh["vertices"].toArray().size());
                 }
             }
-            QCOMPARE(development["period"].isNull(), info.name != "cylinder");
+            QCOMPARE(development["period"].isNull(),
+                     info.name != "cylinder" && info.name != "column");
         }
     }
 
@@ -259,6 +260,25 @@ private slots:
         QCOMPARE(mixed["planarFaces"].toArray().size(), qsizetype(1));
         QCOMPARE(mixed["planarFaces"].toArray()[0].toObject()["polygon"].toArray().size(),
                  qsizetype(4));
+    }
+
+    void aCylinderSheetIsWrittenWithItsPeriod() {
+        // The column holds its sheet around a cylinder: its shape, radius and the period the
+        // development is read modulo, (2πr, 0) as it unrolls.
+        const model::Project project = model::makeExample("column");
+        const QJsonObject sheet = parse(io::interchangeJson(project, 4))["surfaces"]
+                                      .toArray()[0]
+                                      .toObject()["keptDevelopment"]
+                                      .toObject()["sheet"]
+                                      .toObject();
+        QCOMPARE(sheet["shape"].toString(), QStringLiteral("cylinder"));
+        const double radius = sheet["radius"].toDouble();
+        QCOMPARE(radius, project.surfaces[0].sheetDomain().radius);
+        const QJsonArray period = sheet["period"].toArray();
+        QCOMPARE(period.size(), qsizetype(2));
+        QVERIFY(std::abs(period[0].toDouble() - 2.0 * 3.14159265358979323846 * radius) < 1e-9);
+        QVERIFY(std::abs(period[1].toDouble()) < 1e-9);
+        QVERIFY(!sheet.contains("loops"));
     }
 
     void keptDevelopmentIsWritten() {

@@ -272,8 +272,9 @@ private slots:
         model::SheetDomain d;
         d.centre = {1.0 / 3.0, -2.0 / 7.0};
         d.angle = 0.1;
-        for (model::SheetShape shape : {model::SheetShape::Rectangle, model::SheetShape::Disk,
-                                        model::SheetShape::Annulus, model::SheetShape::Outline}) {
+        for (model::SheetShape shape :
+             {model::SheetShape::Rectangle, model::SheetShape::Disk, model::SheetShape::Annulus,
+              model::SheetShape::Outline, model::SheetShape::Cylinder}) {
             d.shape = shape;
             d.width = 300.0 / 7.0;
             d.height = 200.0 / 3.0;
