@@ -21,7 +21,11 @@ BackgroundRead::BackgroundRead(QWidget* window, const QString& label, const QStr
     });
     connect(m_thread, &QThread::finished, this, [this] {
         m_poll->stop();
-        m_progress->hide();
+        // Gone, not hidden: a hidden progress dialog still shows itself once its minimum
+        // duration is up, over the message that may follow.
+        m_cancelledInDialog = m_progress->wasCanceled();
+        delete m_progress;
+        m_progress = nullptr;
         emit done();
     });
     // Window-modal, so the design is not edited meanwhile.
@@ -36,7 +40,7 @@ BackgroundRead::BackgroundRead(QWidget* window, const QString& label, const QStr
     connect(m_progress, &QProgressDialog::canceled, this, [shared] { shared->cancel = true; });
     m_poll = new QTimer(this);
     connect(m_poll, &QTimer::timeout, this, [this] {
-        if (!m_shared->cancel) {
+        if (!m_shared->cancel && m_progress != nullptr) {
             m_progress->setValue(std::min(m_shared->permille.load(), 999));
         }
     });
@@ -49,11 +53,14 @@ BackgroundRead::~BackgroundRead() {
     m_shared->cancel = true;
     m_thread->wait();
     delete m_thread;
-    m_progress->deleteLater();
+    if (m_progress != nullptr) {
+        m_progress->deleteLater();
+    }
 }
 
 bool BackgroundRead::wasCancelled() const {
-    return m_shared->cancel.load() || m_progress->wasCanceled();
+    return m_shared->cancel.load() || m_cancelledInDialog ||
+           (m_progress != nullptr && m_progress->wasCanceled());
 }
 
 } // namespace devsurf::app

@@ -43,7 +43,8 @@ private:
     };
     std::shared_ptr<Shared> m_shared;
     QThread* m_thread = nullptr;
-    QProgressDialog* m_progress = nullptr;
+    QProgressDialog* m_progress = nullptr; // until the reader returns
+    bool m_cancelledInDialog = false;
     QTimer* m_poll = nullptr;
 };
 
