@@ -259,7 +259,15 @@ int runDragCommand(const DragArguments& args) {
                   << ": " << (replay.taken ? "taken" : "not taken") << " (" << now
                   << (now == 1 ? " problem" : " problems") << " against " << before << ").\n";
     }
-    if (assessment.takenBack) {
+    if (assessment.takenBack && assessment.followed > 0.0) {
+        char share[160];
+        std::snprintf(share, sizeof share,
+                      "Held back: the surface follows %.0f %% of the drag (the dragged points "
+                      "are %.1f mm from their targets), since the whole drag ",
+                      100.0 * assessment.followed, assessment.largestHandleGap);
+        std::cout << share << describeTakenBack(*assessment.takenBack)
+                  << "; it stays at its last developable state.\n";
+    } else if (assessment.takenBack) {
         const solver::SurfaceAssessment& refused = *assessment.takenBack;
         std::cout << "Taken back: the drag " << describeTakenBack(refused)
                   << ", so the surface stays as it was before the drag (its last developable "
@@ -271,7 +279,7 @@ int runDragCommand(const DragArguments& args) {
     }
     const solver::Summary& last = assessment.summary;
     char line[256];
-    if (assessment.takenBack) {
+    if (assessment.takenBack && assessment.followed == 0.0) {
         std::snprintf(line, sizeof line,
                       "As before the drag: largest sampled developability residual %.2e.\n",
                       last.finalMaxConstraintResidual);

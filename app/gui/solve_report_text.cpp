@@ -11,6 +11,7 @@
 #include <QStringList>
 
 #include <algorithm>
+#include <cmath>
 
 namespace devsurf::app {
 
@@ -181,7 +182,14 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result, const Q
         if (a.held) {
             status += heldText(*a.held);
         }
-        if (a.takenBack) {
+        if (a.takenBack && a.followed > 0.0) {
+            // The design follows the start of the drag that ends well; the rest is refused.
+            status = tr("followed %1 % of the drag and held back %2 mm, since the whole drag "
+                        "%3: the design stays at its last developable state")
+                         .arg(QString::number(std::round(100.0 * a.followed)))
+                         .arg(QString::number(a.largestHandleGap, 'f', 1))
+                         .arg(takenBackText(*a.takenBack));
+        } else if (a.takenBack) {
             // The design is as at the press: what the refused iterations reached is the news.
             status = tr("taken back to where the drag started, since the drag %1: the design "
                         "stays at its last developable state")

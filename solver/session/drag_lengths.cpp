@@ -53,6 +53,12 @@ ReplayedDrag replayStretching(const model::CompositeSurface& start,
                               const std::vector<DragMove>& moves, int after,
                               const std::atomic<bool>* cancel,
                               const std::function<void(const IterationStats&)>& perIteration) {
+    return replayDrag(start, moves, SessionOptions{}, after, cancel, perIteration);
+}
+
+ReplayedDrag replayDrag(const model::CompositeSurface& start, const std::vector<DragMove>& moves,
+                        const SessionOptions& options, int after, const std::atomic<bool>* cancel,
+                        const std::function<void(const IterationStats&)>& perIteration) {
     ReplayedDrag replay;
     if (moves.empty()) {
         throw std::invalid_argument("there is no move to replay.");
@@ -64,8 +70,8 @@ ReplayedDrag replayStretching(const model::CompositeSurface& start,
             {handle.vertex, false,
              start.hasVertex(handle.vertex) ? start.position(handle.vertex) : handle.target});
     }
-    replay.session = std::make_unique<SolveSession>(start, pulled, moves.front().controlPoints,
-                                                    SessionOptions{});
+    replay.session =
+        std::make_unique<SolveSession>(start, pulled, moves.front().controlPoints, options);
     SolveSession& session = *replay.session;
     for (std::size_t index : replayedMoves(moves.size())) {
         for (const VertexHandle& handle : moves[index].vertices) {

@@ -73,11 +73,16 @@ struct ReplayedDrag {
     int iterations = 0;                    // all it ran
 };
 
-// Replays a drag on `start` (the surface at the press) letting the sheet stretch: a fresh
-// session pulled along `moves` (replayedMoves of them, one iteration each), then settle() and
-// `after` iterations. Throws std::invalid_argument as SolveSession does. `cancel` is checked
-// between iterations (the settling summary is then Cancelled); `perIteration` is called after
-// each.
+// Replays a drag on `start` (the surface at the press) with `options`: a fresh session pulled
+// along `moves` (replayedMoves of them, one iteration each), then settle() and `after`
+// iterations. Throws std::invalid_argument as SolveSession does. `cancel` is checked between
+// iterations (the settling summary is then Cancelled); `perIteration` is called after each.
+ReplayedDrag replayDrag(const model::CompositeSurface& start, const std::vector<DragMove>& moves,
+                        const SessionOptions& options, int after,
+                        const std::atomic<bool>* cancel = nullptr,
+                        const std::function<void(const IterationStats&)>& perIteration = {});
+
+// replayDrag letting the sheet stretch (SessionOptions{}).
 ReplayedDrag replayStretching(const model::CompositeSurface& start,
                               const std::vector<DragMove>& moves, int after,
                               const std::atomic<bool>* cancel = nullptr,

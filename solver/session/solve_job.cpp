@@ -18,6 +18,8 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -198,6 +200,68 @@ SurfaceAssessment assessPress(const model::CompositeSurface& press, const Summar
     }
     measureSettled(assessment, press, nullptr, overlapping);
     return assessment;
+}
+
+// How much a drag whose release would end broken may spend on finding how far it can follow
+// (solveJob's release): at most kPartwayProbes replays of a start of the drag, none begun
+// after kPartwayBudget. Each halves the range of moves still in question.
+constexpr int kPartwayProbes = 3;
+constexpr std::chrono::milliseconds kPartwayBudget{1500};
+
+struct Partway {
+    std::unique_ptr<SolveSession> session; // its surface() is the result
+    SurfaceAssessment assessment;
+};
+
+// The longest start of a drag's moves (a bisection over their number, within the budget) whose
+// replay from the press, settled as the release is, does not end broken: the dragged points
+// then lag behind the release's targets instead of the whole drag being taken back. Nothing
+// when no start tried ends well.
+std::optional<Partway>
+followPartway(const model::CompositeSurface& press, const std::vector<DragMove>& moves,
+              const SessionOptions& options, int after, const std::vector<VertexHandle>& handles,
+              const std::vector<ControlPointHandle>& points, const std::atomic<bool>* cancel) {
+    const auto start = std::chrono::steady_clock::now();
+    std::optional<Partway> best;
+    std::size_t good = 0;           // moves known to end well (0: the press)
+    std::size_t bad = moves.size(); // moves known to end broken (all: the release)
+    for (int probe = 0; probe < kPartwayProbes && bad - good > 1; ++probe) {
+        if (std::chrono::steady_clock::now() - start > kPartwayBudget ||
+            (cancel != nullptr && cancel->load())) {
+            break;
+        }
+        const std::size_t count = good + (bad - good) / 2;
+        const std::vector<DragMove> prefix(moves.begin(),
+                                           moves.begin() + static_cast<std::ptrdiff_t>(count));
+        ReplayedDrag replay;
+        try {
+            replay = replayDrag(press, prefix, options, after, cancel);
+        } catch (const std::exception&) {
+            break;
+        }
+        if (replay.settling.status == Status::Cancelled) {
+            break;
+        }
+        SurfaceAssessment a;
+        const model::CompositeSurface& surface = replay.session->surface();
+        bool ended = replay.settling.succeeded() && allFinite(surface);
+        if (ended) {
+            a.solved = true;
+            a.summary = replay.settling;
+            measureHandleGaps(a, surface, handles, points);
+            a.sheetHeld = surface.keepsDevelopment();
+            measureSettled(a, surface, &press, std::nullopt);
+            ended = !broken(a);
+        }
+        if (ended) {
+            good = count;
+            a.followed = static_cast<double>(count) / static_cast<double>(moves.size());
+            best = Partway{std::move(replay.session), std::move(a)};
+        } else {
+            bad = count;
+        }
+    }
+    return best;
 }
 
 } // namespace
@@ -486,14 +550,27 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
         }
         if (drag && settle && broken(assessment)) {
             // A drag never ends broken: where the sheet cannot follow, the result is refused
-            // and the design stays as at the press, if that was not broken.
+            // and the design follows the drag only as far as it ends well, or stays as at the
+            // press, if that was not broken.
             SurfaceAssessment press = assessPress(d.built[s], summary);
             if (!broken(press)) {
-                measureHandleGaps(press, d.built[s], handles, points);
-                measureSheetGaps(press, d.built[s], sheet);
-                press.takenBack = std::make_shared<const SurfaceAssessment>(std::move(assessment));
-                assessment = std::move(press);
-                result = &d.built[s];
+                auto refused = std::make_shared<const SurfaceAssessment>(std::move(assessment));
+                std::optional<Partway> partway;
+                if (sheet.empty() && d.moves[s].size() > 1) {
+                    partway = followPartway(d.built[s], d.moves[s], optionsFor(request, key), steps,
+                                            handles, points, cancel);
+                }
+                if (partway) {
+                    session = std::move(partway->session);
+                    assessment = std::move(partway->assessment);
+                    result = &session->surface();
+                } else {
+                    measureHandleGaps(press, d.built[s], handles, points);
+                    measureSheetGaps(press, d.built[s], sheet);
+                    assessment = std::move(press);
+                    result = &d.built[s];
+                }
+                assessment.takenBack = std::move(refused);
             }
         }
         outcome.surfaces.push_back(*result);
