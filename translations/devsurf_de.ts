@@ -1458,7 +1458,7 @@
 <context>
     <name>devsurf::app::BackgroundRead</name>
     <message>
-        <location filename="../app/gui/reactions/background_read.cpp" line="28"/>
+        <location filename="../app/gui/reactions/background_read.cpp" line="32"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -4315,18 +4315,18 @@
         <translation>der Entwurf hat sich geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="20"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="21"/>
         <source>it stopped before a degenerate shape</source>
         <translation>es hielt vor einer entarteten Form an</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="23"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="24"/>
         <source>no convergence, residual %1</source>
         <translation>keine Konvergenz, Residuum %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="26"/>
-        <location filename="../app/gui/solve_report_text.cpp" line="55"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="27"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="56"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>an %n Stelle zurückgefaltet</numerusform>
@@ -4334,32 +4334,32 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="29"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="30"/>
         <source>a development overlapping itself</source>
         <translation>eine sich selbst überlappende Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="32"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="33"/>
         <source>collapsed strips</source>
         <translation>zusammengefallene Streifen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="35"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="36"/>
         <source>a shape too degenerate to measure</source>
         <translation>eine zum Messen zu entartete Form</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="44"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="45"/>
         <source>did not reach the tolerance (residual %1; patch %2 sampled %3 from developable)</source>
         <translation>Toleranz nicht erreicht (Residuum %1; Flächenstück %2 abgetastet %3 von abwickelbar entfernt)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="51"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="52"/>
         <source>left its kept sheet by %1 mm</source>
         <translation>um %1 mm vom gehaltenen Bogen abgewichen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="58"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="59"/>
         <source>left a development overlapping itself at %n patch(es)</source>
         <translation>
             <numerusform>Abwicklung an %n Flächenstück mit sich selbst überlappend</numerusform>
@@ -4367,107 +4367,112 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="62"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="63"/>
         <source>ended not developable</source>
         <translation>nicht abwickelbar geendet</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="86"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="87"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="91"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="92"/>
         <source>The solve was cancelled.</source>
         <translation>Das Lösen wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="94"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="95"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 kann nicht gelöst werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="95"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="96"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 kann nicht gelöst werden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="99"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="100"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>Das Ziel der gezogenen Ecke %1 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="100"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="101"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>Das Ziel des gezogenen Kontrollpunkts %1 der Kante %2 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="106"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="107"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 konnte nicht gelöst werden: das lineare Gleichungssystem ließ sich nicht faktorisieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="108"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="109"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 konnte nicht gelöst werden: eine Iteration ergab Werte, die nicht endlich sind.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="112"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="113"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 konnte nicht gelöst werden: der Löser lieferte einen Wert, der nicht endlich ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="118"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="119"/>
         <source>(Solver: %1)</source>
         <translation>(Löser: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="134"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="135"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="138"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="139"/>
         <source>Failed: %1</source>
         <translation>Fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="152"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="153"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="156"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="157"/>
         <source>tolerance reached</source>
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="156"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="157"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="163"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="164"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="171"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="172"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="177"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="178"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; das Beibehalten der Längen schlug fehl (%1), daher wurde das Ziehen mit Dehnen des Blatts wiederholt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="190"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="187"/>
+        <source>followed %1 % of the drag and held back %2 mm, since the whole drag %3: the design stays at its last developable state</source>
+        <translation>folgt %1 % des Ziehens und bleibt %2 mm zurück, denn das ganze Ziehen hätte so geendet: %3; der Entwurf bleibt in seinem letzten abwickelbaren Zustand</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_report_text.cpp" line="198"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; vom Bogen um %1 mm zurückgehalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="202"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="210"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n Flächenstück faltet sich auf sich selbst zurück, wo die Fläche sich selbst überlappt: %1</numerusform>
@@ -4475,7 +4480,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="217"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="225"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; die Abwicklung überlappt sich selbst an %n Flächenstück (%1) und lässt sich nicht aus einem Bogen schneiden</numerusform>
@@ -4483,17 +4488,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="223"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="231"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="228"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="236"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="233"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="241"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
@@ -4551,27 +4556,27 @@
         <translation>Lösen wird nicht gestartet, solange %1 läuft; zuerst abbrechen (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="69"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="70"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt auf der Geraden zwischen den festgehaltenen Ecken %2 und %3, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="76"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="77"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt im Dreieck der festgehaltenen Ecken %2, %3 und %4, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="159"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="160"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>beim letzten gültigen Zustand angehalten, bevor eine Erzeugende, eine Kurve oder ein Flächenstück kollabierte</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="167"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="168"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (endete bei Iteration %1, der mit dem kleinsten Residuum)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="186"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="194"/>
         <source>taken back to where the drag started, since the drag %1: the design stays at its last developable state</source>
         <translation>zurückgenommen auf den Stand beim Drücken, denn das Ziehen hätte so geendet: %1; der Entwurf bleibt in seinem letzten abwickelbaren Zustand</translation>
     </message>

@@ -435,8 +435,8 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="26"/>
-        <location filename="../app/gui/solve_report_text.cpp" line="55"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="27"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="56"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>folded over in %n place</numerusform>
@@ -444,7 +444,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="58"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="59"/>
         <source>left a development overlapping itself at %n patch(es)</source>
         <translation>
             <numerusform>left a development overlapping itself at %n patch</numerusform>
@@ -452,7 +452,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="202"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="210"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n patch folds over onto itself, where the surface overlaps itself: %1</numerusform>
@@ -460,7 +460,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="217"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="225"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; the development overlaps itself at %n patch (%1) and cannot be cut from one sheet</numerusform>

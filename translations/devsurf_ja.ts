@@ -1443,7 +1443,7 @@
 <context>
     <name>devsurf::app::BackgroundRead</name>
     <message>
-        <location filename="../app/gui/reactions/background_read.cpp" line="28"/>
+        <location filename="../app/gui/reactions/background_read.cpp" line="32"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
@@ -4268,181 +4268,186 @@
         <translation>デザインが変更されました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="20"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="21"/>
         <source>it stopped before a degenerate shape</source>
         <translation>退化した形の手前で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="23"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="24"/>
         <source>no convergence, residual %1</source>
         <translation>収束せず、残差 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="26"/>
-        <location filename="../app/gui/solve_report_text.cpp" line="55"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="27"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="56"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>%n 箇所で折り返し</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="29"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="30"/>
         <source>a development overlapping itself</source>
         <translation>展開図が自身と重なる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="32"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="33"/>
         <source>collapsed strips</source>
         <translation>帯がつぶれる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="35"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="36"/>
         <source>a shape too degenerate to measure</source>
         <translation>測定できないほど退化した形</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="44"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="45"/>
         <source>did not reach the tolerance (residual %1; patch %2 sampled %3 from developable)</source>
         <translation>許容誤差に達せず (残差 %1、パッチ %2 のサンプル値は可展から %3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="51"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="52"/>
         <source>left its kept sheet by %1 mm</source>
         <translation>保持したシートから %1 mm ずれ</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="58"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="59"/>
         <source>left a development overlapping itself at %n patch(es)</source>
         <translation>
             <numerusform>%n 個のパッチで展開図が自己重複</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="62"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="63"/>
         <source>ended not developable</source>
         <translation>可展でない状態で終了</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="86"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="87"/>
         <source>Surface %1</source>
         <translation>曲面 %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="91"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="92"/>
         <source>The solve was cancelled.</source>
         <translation>ソルブを中止しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="94"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="95"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 は解けません: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="95"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="96"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 は解けません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="99"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="100"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>頂点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="100"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="101"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>辺 %2 の制御点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="106"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="107"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 を解けませんでした: 連立一次方程式を分解できませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="108"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="109"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 を解けませんでした: 反復で有限でない値が生じました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="112"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="113"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 を解けませんでした: ソルバーが有限でない値を出しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="118"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="119"/>
         <source>(Solver: %1)</source>
         <translation>(ソルバー: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="134"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="135"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="138"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="139"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="152"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="153"/>
         <source>converged</source>
         <translation>収束</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="156"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="157"/>
         <source>tolerance reached</source>
         <translation>許容値に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="156"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="157"/>
         <source>iteration limit reached</source>
         <translation>反復回数の上限に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="163"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="164"/>
         <source>failed</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="171"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="172"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>。ソルブで可展性が悪化したため元のままにしました (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="177"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="178"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; 長さを保てなかったため (%1)、シートの伸びを許してドラッグをやり直しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="190"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="187"/>
+        <source>followed %1 % of the drag and held back %2 mm, since the whole drag %3: the design stays at its last developable state</source>
+        <translation>ドラッグの %1 % まで追従し、%2 mm 手前で止めました (ドラッグ全体の結果: %3)、デザインは最後の可展な状態のままです</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_report_text.cpp" line="198"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; シートにより %1 mm 手前で止まりました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="202"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="210"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n 個のパッチが自身の上に折り返され、曲面が自己重複しています: %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="217"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="225"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; 展開図が %n 個のパッチで自身と重なっており (%1)、1 枚のシートから切り出せません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="223"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="231"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="228"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="236"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="233"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="241"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
@@ -4498,27 +4503,27 @@
         <translation>%1 の実行中はソルブを開始しません。先に中止してください (Esc)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="69"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="70"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2 と %3 を結ぶ直線上にあり、この 2 点の距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="76"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="77"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2、%3、%4 の三角形の内側にあり、これらの距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="159"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="160"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>母線、曲線またはパッチがつぶれる前の最後の有効な状態で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="167"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="168"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (残差が最小の反復 %1 で終了)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="186"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="194"/>
         <source>taken back to where the drag started, since the drag %1: the design stays at its last developable state</source>
         <translation>ドラッグ開始時の状態に戻しました (ドラッグの結果: %1)、デザインは最後の可展な状態のままです</translation>
     </message>

@@ -203,62 +203,125 @@ SurfaceAssessment assessPress(const model::CompositeSurface& press, const Summar
 }
 
 // How much a drag whose release would end broken may spend on finding how far it can follow
-// (solveJob's release): at most kPartwayProbes replays of a start of the drag, none begun
-// after kPartwayBudget. Each halves the range of moves still in question.
-constexpr int kPartwayProbes = 3;
+// (SolveJob::run's release): at most kPartwayProbes settlings of a state the drag passed
+// through, each halving the range of moves still in question, all stopped at kPartwayBudget
+// (docs/tuning.md, "A drag too far follows part of the way").
+constexpr int kPartwayProbes = 6;
 constexpr std::chrono::milliseconds kPartwayBudget{1500};
+// States a drag passed through that are kept for that (evenly spread over the drag; the
+// latest always).
+constexpr std::size_t kReachedKept = 32;
+// A state passed through is settled with this many times the release's iterations: it starts
+// farther from converged than the drag's own last state.
+constexpr int kPartwaySettleFactor = 3;
+// The angle defect (rad) a star may end with where the press's were smaller, as the sessions'
+// vertexStartDefectLimit.
+constexpr double kPartwayStarDefect = 1e-6;
+// The largest sampled developability residual (normalised, worstDevelopability) a state may end
+// with where the press was better: a partial drag is kept only if it ends developable.
+constexpr double kPartwayDevelopability = 1e-5;
+
+// A surface as a drag left it after `moves` of its moves.
+struct Reached {
+    std::size_t moves = 0;
+    model::CompositeSurface surface;
+};
+
+// Keeps `state` and thins the kept ones to every other when there are too many.
+void keep(std::vector<Reached>& reached, Reached state) {
+    reached.push_back(std::move(state));
+    if (reached.size() > kReachedKept) {
+        std::vector<Reached> thinned;
+        for (std::size_t i = 0; i < reached.size(); ++i) {
+            if (i % 2 == 1 || i + 1 == reached.size()) {
+                thinned.push_back(std::move(reached[i]));
+            }
+        }
+        reached = std::move(thinned);
+    }
+}
 
 struct Partway {
     std::unique_ptr<SolveSession> session; // its surface() is the result
     SurfaceAssessment assessment;
 };
 
-// The longest start of a drag's moves (a bisection over their number, within the budget) whose
-// replay from the press, settled as the release is, does not end broken: the dragged points
+// The latest state a drag passed through (a bisection over the kept ones, within the budget)
+// that, released there and settled as the release is, does not end broken: the dragged points
 // then lag behind the release's targets instead of the whole drag being taken back. Nothing
-// when no start tried ends well.
+// when no state tried ends well.
 std::optional<Partway>
-followPartway(const model::CompositeSurface& press, const std::vector<DragMove>& moves,
+followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atPress,
+              const std::vector<Reached>& reached, const std::vector<DragMove>& moves,
               const SessionOptions& options, int after, const std::vector<VertexHandle>& handles,
               const std::vector<ControlPointHandle>& points, const std::atomic<bool>* cancel) {
     const auto start = std::chrono::steady_clock::now();
+    // Vertex developability where it held at the press, also at stars a state passed through
+    // has opened (a fresh session would impose it only where it holds at its start).
+    SessionOptions settleOptions = options;
+    if (atPress.largestVertexDefect <= settleOptions.formulation.vertexStartDefectLimit) {
+        settleOptions.formulation.vertexStartDefectLimit =
+            FormulationOptions{}.vertexStartDefectLimit;
+    }
+    // Ends well: not broken, no star opened beyond the press's (or kPartwayStarDefect), and
+    // sampled as developable as the press within kPartwayDevelopability (or 10 times it).
+    const double defectLimit = std::max(atPress.largestVertexDefect, kPartwayStarDefect);
+    const double developabilityLimit =
+        std::max(10.0 * atPress.summary.finalMaxConstraintResidual, kPartwayDevelopability);
     std::optional<Partway> best;
-    std::size_t good = 0;           // moves known to end well (0: the press)
-    std::size_t bad = moves.size(); // moves known to end broken (all: the release)
+    // reached[good] known to end well (-1: the press), reached[bad] known to end broken.
+    long good = -1;
+    long bad = static_cast<long>(reached.size());
+    if (!reached.empty() && reached.back().moves >= moves.size()) {
+        --bad; // the release itself
+    }
     for (int probe = 0; probe < kPartwayProbes && bad - good > 1; ++probe) {
         if (std::chrono::steady_clock::now() - start > kPartwayBudget ||
             (cancel != nullptr && cancel->load())) {
             break;
         }
-        const std::size_t count = good + (bad - good) / 2;
-        const std::vector<DragMove> prefix(moves.begin(),
-                                           moves.begin() + static_cast<std::ptrdiff_t>(count));
-        ReplayedDrag replay;
+        const long index = good + (bad - good + 1) / 2;
+        const Reached& state = reached[static_cast<std::size_t>(index)];
+        const DragMove& move = moves.at(state.moves - 1);
+        std::unique_ptr<SolveSession> session;
+        Summary settling;
         try {
-            replay = replayDrag(press, prefix, options, after, cancel);
+            session = std::make_unique<SolveSession>(state.surface, move.vertices,
+                                                     move.controlPoints, settleOptions);
+            session->settle();
+            // Stopped where the budget runs out, even within a settling.
+            std::atomic<bool> stop{false};
+            settling =
+                session->step(kPartwaySettleFactor * after, &stop, [&](const IterationStats&) {
+                    if ((cancel != nullptr && cancel->load()) ||
+                        std::chrono::steady_clock::now() - start > kPartwayBudget) {
+                        stop = true;
+                    }
+                });
         } catch (const std::exception&) {
             break;
         }
-        if (replay.settling.status == Status::Cancelled) {
+        if (settling.status == Status::Cancelled) {
             break;
         }
         SurfaceAssessment a;
-        const model::CompositeSurface& surface = replay.session->surface();
-        bool ended = replay.settling.succeeded() && allFinite(surface);
+        const model::CompositeSurface& surface = session->surface();
+        bool ended = settling.succeeded() && allFinite(surface);
         if (ended) {
             a.solved = true;
-            a.summary = replay.settling;
+            a.summary = settling;
             measureHandleGaps(a, surface, handles, points);
             a.sheetHeld = surface.keepsDevelopment();
             measureSettled(a, surface, &press, std::nullopt);
-            ended = !broken(a);
+            ended = !broken(a) && a.largestVertexDefect <= defectLimit &&
+                    worstDevelopability(surface) <= developabilityLimit;
         }
         if (ended) {
-            good = count;
-            a.followed = static_cast<double>(count) / static_cast<double>(moves.size());
-            best = Partway{std::move(replay.session), std::move(a)};
+            good = index;
+            a.followed = static_cast<double>(state.moves) / static_cast<double>(moves.size());
+            best = Partway{std::move(session), std::move(a)};
         } else {
-            bad = count;
+            bad = index;
         }
     }
     return best;
@@ -311,10 +374,11 @@ struct SolveJob::Drag {
     std::vector<std::set<std::pair<model::EdgeId, int>>> pulledPoints;
     std::vector<std::set<model::VertexId>> pulledSheet;
     std::vector<std::vector<DragMove>> moves;
+    std::vector<std::vector<Reached>> reached; // states passed through, for followPartway
 
     explicit Drag(std::size_t count)
         : sessions(count), built(count), pulled(count), pulledPoints(count), pulledSheet(count),
-          moves(count) {}
+          moves(count), reached(count) {}
 };
 
 SolveJob::SolveJob() = default;
@@ -443,6 +507,7 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             d.pulledPoints[s] = pointSet(points);
             d.pulledSheet[s] = sheetVertices;
             d.moves[s].clear();
+            d.reached[s].clear();
         }
         if (drag) {
             // The release at the last move's position is no move of its own: the replay then
@@ -466,6 +531,10 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             }
         };
         Summary summary = session->step(steps, cancel, perIteration);
+        if (drag && !request.settle && summary.succeeded() && !d.moves[s].empty() &&
+            (d.reached[s].empty() || d.reached[s].back().moves != d.moves[s].size())) {
+            keep(d.reached[s], {d.moves[s].size(), session->surface()});
+        }
         if (request.kind == JobKind::Solve && summary.succeeded()) {
             assessment.bestIteration = session->returnToBestIterate(&summary).iteration;
         }
@@ -556,9 +625,10 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             if (!broken(press)) {
                 auto refused = std::make_shared<const SurfaceAssessment>(std::move(assessment));
                 std::optional<Partway> partway;
-                if (sheet.empty() && d.moves[s].size() > 1) {
-                    partway = followPartway(d.built[s], d.moves[s], optionsFor(request, key), steps,
-                                            handles, points, cancel);
+                if (sheet.empty() && !d.reached[s].empty()) {
+                    partway =
+                        followPartway(d.built[s], press, d.reached[s], d.moves[s],
+                                      optionsFor(request, key), steps, handles, points, cancel);
                 }
                 if (partway) {
                     session = std::move(partway->session);

@@ -49,6 +49,31 @@ class TstSolveReport : public QObject {
     Q_OBJECT
 
 private slots:
+    void aDragFollowedPartOfTheWaySaysHowFarAndWhy() {
+        // A release that would have folded over, followed instead to a state a quarter of the
+        // way: the status says the share, the lag and what the whole drag would have broken.
+        solver::SolveResult result = solvedResult(test::flatStrip(100.0));
+        solver::SurfaceAssessment refused;
+        refused.solved = true;
+        refused.measured = true;
+        refused.foldOvers = {{0, 2}};
+        solver::SurfaceAssessment& a = result.outcome.assessments[0];
+        a.takenBack = std::make_shared<const solver::SurfaceAssessment>(refused);
+        a.followed = 0.25;
+        a.largestHandleGap = 12.5;
+        const app::SolveReport report =
+            app::SolveController::reportOf(result, QStringLiteral("Drag 1 vertex"));
+        const QString why = app::SolveController::takenBackText(refused);
+        QVERIFY2(!why.isEmpty() && report.status.contains(why), qPrintable(report.status));
+        QVERIFY2(report.status.contains(QStringLiteral("25")), qPrintable(report.status));
+        QVERIFY2(report.status.contains(QStringLiteral("12.5")), qPrintable(report.status));
+        // Taken back whole (followed 0), it says so instead.
+        a.followed = 0.0;
+        const app::SolveReport whole =
+            app::SolveController::reportOf(result, QStringLiteral("Drag 1 vertex"));
+        QVERIFY(whole.status != report.status && whole.status.contains(why));
+    }
+
     void aResultThatFoldsOverOntoItselfIsReportedWithItsPatches() {
         app::MainWindow window;
         solver::SolveResult result = solvedResult(test::flatStrip(-150.0));

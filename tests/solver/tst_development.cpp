@@ -630,7 +630,7 @@ private slots:
         const double developability = sampledDevelopability(s);
         qInfo("followed %.0f %%, held back %.1f mm, det %.2g", 100.0 * a.followed,
               a.largestHandleGap, developability);
-        QVERIFY2(developability < 1e-4, qPrintable(QString::number(developability)));
+        QVERIFY2(developability < 1e-5, qPrintable(QString::number(developability)));
         QVERIFY(solver::foldOvers(s).empty());
     }
 
