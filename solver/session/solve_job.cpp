@@ -530,7 +530,9 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
                           problem.rowCount(), &stats, replaying ? nullptr : &session->surface()});
             }
         };
+        const auto stepped = std::chrono::steady_clock::now();
         Summary summary = session->step(steps, cancel, perIteration);
+        const auto stepTime = std::chrono::steady_clock::now() - stepped;
         if (drag && !request.settle && summary.succeeded() && !d.moves[s].empty() &&
             (d.reached[s].empty() || d.reached[s].back().moves != d.moves[s].size())) {
             keep(d.reached[s], {d.moves[s].size(), session->surface()});
@@ -625,7 +627,10 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             if (!broken(press)) {
                 auto refused = std::make_shared<const SurfaceAssessment>(std::move(assessment));
                 std::optional<Partway> partway;
-                if (sheet.empty() && !d.reached[s].empty()) {
+                // Only where two settlings of states passed through fit the budget (each as
+                // long as the release's own, kPartwaySettleFactor times).
+                if (sheet.empty() && !d.reached[s].empty() &&
+                    2 * kPartwaySettleFactor * stepTime < kPartwayBudget) {
                     partway =
                         followPartway(d.built[s], press, d.reached[s], d.moves[s],
                                       optionsFor(request, key), steps, handles, points, cancel);
