@@ -69,6 +69,8 @@ const char* codeName(ProblemCode code) {
         DEVSURF_CODE(ConditionBesideNonStrip)
         DEVSURF_CODE(ConditionNeedsDegree)
         DEVSURF_CODE(NotOneSheet)
+        DEVSURF_CODE(WeldNeedsBoundaryEdges)
+        DEVSURF_CODE(EdgesTooFarApart)
         DEVSURF_CODE(Internal)
 #undef DEVSURF_CODE
     }
