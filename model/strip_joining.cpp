@@ -279,9 +279,11 @@ Weld weldEdges(const CompositeSurface& surface, EdgeId first, EdgeId second, dou
     for (const auto& [id, record] : source.edges()) {
         if (id != second) {
             copyEdge(result, record, vertexOf.at(record.from), vertexOf.at(record.to));
+            weld.edgeOf[id] = result.edgeBetween(vertexOf.at(record.from), vertexOf.at(record.to));
         }
     }
     weld.shared = result.edgeBetween(vertexOf.at(one.from), vertexOf.at(one.to));
+    weld.edgeOf[second] = weld.shared;
     if (one.isSpline()) {
         // The welded curve has no crease condition yet: it was a boundary on either side.
         result.setSpline(vertexOf.at(one.from), vertexOf.at(one.to), one.space, averaged);

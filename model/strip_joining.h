@@ -52,10 +52,11 @@ std::optional<NearestCurves> nearestBoundaryCurves(const CompositeSurface& surfa
 // The result of welding two boundary edges.
 struct Weld {
     CompositeSurface surface;
-    EdgeId shared = kInvalidId; // the welded edge, shared by the two faces
-    double gap = 0.0;           // the largest distance of matched control points before (mm)
-    bool reversed = false;      // the edges were matched against their stored orientations
-    bool flipped = false;       // the part of `second` was turned over to match orientations
+    EdgeId shared = kInvalidId;      // the welded edge, shared by the two faces
+    double gap = 0.0;                // the largest distance of matched control points before (mm)
+    bool reversed = false;           // the edges were matched against their stored orientations
+    bool flipped = false;            // the part of `second` was turned over to match orientations
+    std::map<EdgeId, EdgeId> edgeOf; // every old edge's new id (`second`'s: `shared`)
 };
 
 // Welds the boundary edges `first` and `second` of `surface` (two S-edges or two R-edges of

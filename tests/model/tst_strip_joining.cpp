@@ -124,6 +124,9 @@ private slots:
         QCOMPARE(weld.surface.vertices().size(), std::size_t(6));
         QCOMPARE(weld.surface.faces().size(), std::size_t(2));
         QCOMPARE(weld.surface.edges().size(), std::size_t(7));
+        QCOMPARE(weld.edgeOf.size(), std::size_t(8));
+        QCOMPARE(weld.edgeOf.at(upper), weld.shared);
+        QCOMPARE(weld.edgeOf.at(lower), weld.shared);
         const EdgeRecord& shared = weld.surface.edge(weld.shared);
         QVERIFY(shared.isSpline());
         QCOMPARE(weld.surface.facesOfEdge(weld.shared).size(), std::size_t(2));
