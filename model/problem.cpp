@@ -71,6 +71,7 @@ const char* codeName(ProblemCode code) {
         DEVSURF_CODE(NotOneSheet)
         DEVSURF_CODE(WeldNeedsBoundaryEdges)
         DEVSURF_CODE(EdgesTooFarApart)
+        DEVSURF_CODE(MergeNeedsStrips)
         DEVSURF_CODE(Internal)
 #undef DEVSURF_CODE
     }

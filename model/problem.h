@@ -80,6 +80,7 @@ enum class ProblemCode {
                  // misses closing up by `value` mm
     WeldNeedsBoundaryEdges, // edge: a weld joins two boundary edges of one kind, of two faces
     EdgesTooFarApart, // edge and otherEdge lie `value` mm apart, more than `limit` to weld them
+    MergeNeedsStrips, // edge: not a ruling between two SRSR strips with boundary curves alone
     Internal,         // a bug; detail says where
 };
 

@@ -4,6 +4,8 @@
 #include "model_error.h"
 #include "topology_edits.h"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <set>
 #include <utility>
@@ -81,6 +83,48 @@ void throwFirstProblem(const CompositeSurface& surface) {
     if (!problems.empty()) {
         throw ModelError(problems.front());
     }
+}
+
+// `first` (in S(n1)) and `second` (in S(n2)) joined at first.back() == second.front() in
+// S(n1 + n2): ends kept, inner control points by least squares on samples of both.
+std::vector<Vec3> joinedCurve(const std::vector<Vec3>& first, const SplineSpace& firstSpace,
+                              const std::vector<Vec3>& second, const SplineSpace& secondSpace) {
+    const SplineSpace space{firstSpace.degree, firstSpace.smoothness,
+                            firstSpace.intervals + secondSpace.intervals};
+    const BSplineCurve a = BSplineCurve::uniform(firstSpace, first);
+    const BSplineCurve b = BSplineCurve::uniform(secondSpace, second);
+    const double split = static_cast<double>(firstSpace.intervals) / space.intervals;
+    const int n = space.controlPointCount(false);
+    const int samples = 16 * space.intervals;
+    Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(samples + 1, n);
+    Eigen::MatrixXd target(samples + 1, 3);
+    const BSplineCurve joined =
+        BSplineCurve::uniform(space, std::vector<Vec3>(static_cast<std::size_t>(n), Vec3()));
+    for (int i = 0; i <= samples; ++i) {
+        const double u = static_cast<double>(i) / samples;
+        const Vec3 p = u <= split ? a.evaluate(u / split) : b.evaluate((u - split) / (1.0 - split));
+        const DeBoorRows rows = joined.deBoorRows(u);
+        for (std::size_t j = 0; j < rows.indices.size(); ++j) {
+            basis(i, rows.indices[j]) += rows.point[j];
+        }
+        const Vec3 rest = p - first.front() * basis(i, 0) - second.back() * basis(i, n - 1);
+        target.row(i) << rest.x, rest.y, rest.z;
+    }
+    std::vector<Vec3> points(static_cast<std::size_t>(n));
+    points.front() = first.front();
+    points.back() = second.back();
+    const Eigen::MatrixXd inner = basis.middleCols(1, n - 2);
+    const Eigen::MatrixXd x = (inner.transpose() * inner).ldlt().solve(inner.transpose() * target);
+    for (int j = 1; j + 1 < n; ++j) {
+        points[static_cast<std::size_t>(j)] = Vec3(x(j - 1, 0), x(j - 1, 1), x(j - 1, 2));
+    }
+    return points;
+}
+
+// `loop` rotated to start at `vertex`.
+std::vector<VertexId> startingAt(std::vector<VertexId> loop, VertexId vertex) {
+    std::rotate(loop.begin(), std::find(loop.begin(), loop.end(), vertex), loop.end());
+    return loop;
 }
 
 } // namespace
@@ -296,6 +340,97 @@ Weld weldEdges(const CompositeSurface& surface, EdgeId first, EdgeId second, dou
     result.setSheetDomain(source.sheetDomain());
     throwFirstProblem(result);
     return weld;
+}
+
+CompositeSurface mergeStrips(const CompositeSurface& surface, EdgeId ruling) {
+    const auto refuse = [ruling]() {
+        throw ModelError(edgeProblem(ProblemCode::MergeNeedsStrips, ruling));
+    };
+    if (!surface.hasEdge(ruling) || surface.edge(ruling).isSpline() ||
+        surface.facesOfEdge(ruling).size() != 2) {
+        refuse();
+    }
+    const std::vector<FaceId> faces = surface.facesOfEdge(ruling);
+    const VertexId p = surface.edge(ruling).from;
+    const VertexId q = surface.edge(ruling).to;
+    for (FaceId f : faces) {
+        if (surface.faceType(f) != FaceType::StripSRSR) {
+            refuse();
+        }
+    }
+    for (const auto& [face, loop] : surface.faces()) {
+        const bool touches = std::find(loop.begin(), loop.end(), p) != loop.end() ||
+                             std::find(loop.begin(), loop.end(), q) != loop.end();
+        if (touches && face != faces[0] && face != faces[1]) {
+            refuse();
+        }
+    }
+    // The first face runs u → w along the ruling, the second w → u. Rotated, the first is
+    // [w, r1, r2, u] and the second [u, s1, s2, w]: the merged loop is [r1, r2, s1, s2], with
+    // the curves r2 → u → s1 and s2 → w → r1.
+    const VertexId u = loopRuns(surface, faces[0], p, q) ? p : q;
+    const VertexId w = u == p ? q : p;
+    const std::vector<VertexId> first = startingAt(surface.faceLoop(faces[0]), w);
+    const std::vector<VertexId> second = startingAt(surface.faceLoop(faces[1]), u);
+    const VertexId r1 = first[1], r2 = first[2], s1 = second[1], s2 = second[2];
+    const EdgeId curves[4] = {surface.edgeBetween(r2, u), surface.edgeBetween(u, s1),
+                              surface.edgeBetween(s2, w), surface.edgeBetween(w, r1)};
+    for (EdgeId e : curves) {
+        if (e == kInvalidId || !surface.edge(e).isSpline() || surface.facesOfEdge(e).size() != 1) {
+            refuse();
+        }
+    }
+    const SplineSpace& firstSpace = surface.edge(curves[0]).space;
+    const SplineSpace& secondSpace = surface.edge(curves[1]).space;
+    if (firstSpace.degree != secondSpace.degree ||
+        firstSpace.smoothness != secondSpace.smoothness) {
+        refuse();
+    }
+    const SplineSpace joinedSpace{firstSpace.degree, firstSpace.smoothness,
+                                  firstSpace.intervals + secondSpace.intervals};
+
+    CompositeSurface result;
+    result.setName(surface.name());
+    result.setId(surface.id());
+    std::map<VertexId, VertexId> vertexOf;
+    for (const auto& [id, position] : surface.vertices()) {
+        if (id != u && id != w) {
+            vertexOf[id] = result.addVertex(position);
+        }
+    }
+    for (const auto& [id, loop] : surface.faces()) {
+        if (id == faces[1]) {
+            continue;
+        }
+        const std::vector<VertexId> old =
+            id == faces[0] ? std::vector<VertexId>{r1, r2, s1, s2} : loop;
+        std::vector<VertexId> mapped;
+        for (VertexId v : old) {
+            mapped.push_back(vertexOf.at(v));
+        }
+        result.addFace(mapped);
+    }
+    for (const auto& [id, record] : surface.edges()) {
+        if (id != ruling &&
+            std::find(std::begin(curves), std::end(curves), id) == std::end(curves)) {
+            copyEdge(result, record, vertexOf.at(record.from), vertexOf.at(record.to));
+        }
+    }
+    result.setSpline(vertexOf.at(r2), vertexOf.at(s1), joinedSpace,
+                     joinedCurve(surface.controlPointsFrom(r2, u), firstSpace,
+                                 surface.controlPointsFrom(u, s1), secondSpace));
+    result.setSpline(vertexOf.at(s2), vertexOf.at(r1), joinedSpace,
+                     joinedCurve(surface.controlPointsFrom(s2, w), secondSpace,
+                                 surface.controlPointsFrom(w, r1), firstSpace));
+    for (VertexId v : surface.pinnedVertices()) {
+        if (v != u && v != w) {
+            result.setPinned(vertexOf.at(v), true);
+        }
+    }
+    result.setKeepsDevelopment(surface.keepsDevelopment());
+    result.setSheetDomain(surface.sheetDomain());
+    throwFirstProblem(result);
+    return result;
 }
 
 } // namespace devsurf::model

@@ -75,4 +75,16 @@ struct Weld {
 Weld weldEdges(const CompositeSurface& surface, EdgeId first, EdgeId second,
                double tolerance = kWeldTolerance);
 
+// Merges the two strips on either side of the ruling `ruling` into one strip (§4.2, "merge two
+// strips by joining their control sequences"): each curve of the result is the two curves that
+// meet at an end of the ruling joined there, in S(n₁ + n₂, m, k) for curves in S(n₁, m, k) and
+// S(n₂, m, k), its first n₁ intervals along the first curve. Its end control points are the far
+// ends of the two curves, its inner ones fitted to both by least squares: exact when the two
+// are pieces of one such spline (as splitAtRuling cuts them), otherwise the nearest spline of
+// the joined space, which a Solve makes developable again. The ruling and its two vertices go;
+// every vertex, edge and face gets a new id. Throws ModelError (MergeNeedsStrips) unless the
+// ruling lies between two SRSR strips whose four curves are boundaries of one degree and
+// smoothness and whose ruling's vertices belong to no other face.
+CompositeSurface mergeStrips(const CompositeSurface& surface, EdgeId ruling);
+
 } // namespace devsurf::model

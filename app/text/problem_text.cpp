@@ -293,6 +293,11 @@ QString ProblemText::of(const model::Problem& p) {
             .arg(p.edge)
             .arg(p.otherEdge)
             .arg(millimetres(p.value), millimetres(p.limit));
+    case ProblemCode::MergeNeedsStrips:
+        return tr("The strips beside edge %1 cannot be merged: it must be a ruling between two "
+                  "strips whose curves are boundary curves of the same degree and smoothness, "
+                  "and its ends may belong to no other patch.")
+            .arg(p.edge);
     case ProblemCode::Internal:
         break;
     }

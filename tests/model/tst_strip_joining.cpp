@@ -3,9 +3,14 @@
 
 #include "model/model_error.h"
 #include "model/strip_joining.h"
+#include "model/topology_edits.h"
 #include "test_registry.h"
 
+#include "model/bspline_curve.h"
+
 #include <QTest>
+
+#include <cmath>
 
 using namespace devsurf::model;
 
@@ -201,6 +206,104 @@ private slots:
         QCOMPARE(weld.gap, 0.0);
         QCOMPARE(refusal(weld.surface, weld.shared, edgeNear(weld.surface, Vec3(50, 0, 0))),
                  ProblemCode::WeldNeedsBoundaryEdges);
+    }
+
+    void mergesTheTwoPartsOfASplitStripBack_data() {
+        QTest::addColumn<int>("breakpoint");
+        QTest::newRow("2 + 2 intervals") << 2;
+        QTest::newRow("1 + 3 intervals") << 1;
+    }
+
+    void mergesTheTwoPartsOfASplitStripBack() {
+        // A curved strip in S(4, 3, 2), cut at a ruling (exactly: two uniform pieces) and merged
+        // again: the joined control sequences are the original ones.
+        QFETCH(int, breakpoint);
+        CompositeSurface strip;
+        const SplineSpace space{3, 2, 4};
+        std::vector<Vec3> a, b;
+        for (int i = 0; i < space.controlPointCount(false); ++i) {
+            a.emplace_back(25.0 * i, 3.0 * (i % 3), 0.4 * i * i);
+            b.emplace_back(25.0 * i + 2.0, 40.0 + (i % 2), 5.0 - 0.3 * i);
+        }
+        const VertexId v0 = strip.addVertex(a.front());
+        const VertexId v1 = strip.addVertex(a.back());
+        const VertexId v2 = strip.addVertex(b.back());
+        const VertexId v3 = strip.addVertex(b.front());
+        const FaceId face = strip.addFace({v0, v1, v2, v3});
+        strip.setSpline(v0, v1, space, a);
+        strip.setSpline(v3, v2, space, b);
+        QVERIFY(strip.validate().empty());
+        const CompositeSurface split = splitAtRuling(strip, face, breakpoint);
+        QCOMPARE(split.faces().size(), std::size_t(2));
+        EdgeId ruling = kInvalidId;
+        for (const auto& [id, record] : split.edges()) {
+            if (!record.isSpline() && split.facesOfEdge(id).size() == 2) {
+                ruling = id;
+            }
+        }
+        QVERIFY(ruling != kInvalidId);
+        const CompositeSurface merged = mergeStrips(split, ruling);
+        QVERIFY(merged.validate().empty());
+        QCOMPARE(merged.faces().size(), std::size_t(1));
+        QCOMPARE(merged.vertices().size(), std::size_t(4));
+        int curves = 0;
+        for (const auto& [id, record] : merged.edges()) {
+            if (!record.isSpline()) {
+                continue;
+            }
+            ++curves;
+            QCOMPARE(record.space, space);
+            // The original curve with these ends, in the orientation they run.
+            std::vector<Vec3> original = record.controlPoints.front() == a.front() ? a
+                                         : record.controlPoints.front() == a.back()
+                                             ? std::vector<Vec3>(a.rbegin(), a.rend())
+                                         : record.controlPoints.front() == b.front()
+                                             ? b
+                                             : std::vector<Vec3>(b.rbegin(), b.rend());
+            for (std::size_t i = 0; i < original.size(); ++i) {
+                QVERIFY((record.controlPoints[i] - original[i]).norm() < 1e-9);
+            }
+        }
+        QCOMPARE(curves, 2);
+        // A boundary ruling has a strip on one side only.
+        EdgeId boundary = kInvalidId;
+        for (const auto& [id, record] : merged.edges()) {
+            boundary = record.isSpline() ? boundary : id;
+        }
+        try {
+            mergeStrips(merged, boundary);
+            QFAIL("a boundary ruling was merged");
+        } catch (const ModelError& error) {
+            QCOMPARE(error.problem().code, ProblemCode::MergeNeedsStrips);
+        }
+    }
+
+    void weldsTwoStripsEndToEndAndMergesThem() {
+        // The end ruling of one strip meets the start ruling of the other: welded, then merged
+        // into one strip of 2 + 2 intervals whose curves pass through the welded vertices.
+        const CompositeSurface one = flatStrip(Vec3(0, 0, 0), Vec3(100, 0, 0), Vec3(0, 40, 0), 2);
+        const CompositeSurface two =
+            flatStrip(Vec3(100.5, 0, 0), Vec3(100, 0, 0), Vec3(0, 40, 0), 2);
+        const SurfacesSideBySide both = placeSideBySide(one, two);
+        const Weld weld = weldEdges(both.surface, edgeNear(both.surface, Vec3(100, 20, 0), false),
+                                    edgeNear(both.surface, Vec3(100.5, 20, 0), false));
+        const CompositeSurface merged = mergeStrips(weld.surface, weld.shared);
+        QVERIFY(merged.validate().empty());
+        QCOMPARE(merged.faces().size(), std::size_t(1));
+        for (const auto& [id, record] : merged.edges()) {
+            if (record.isSpline()) {
+                QCOMPARE(record.space.intervals, 4);
+                const BSplineCurve curve =
+                    BSplineCurve::uniform(record.space, record.controlPoints);
+                // Straight along x from 0 to 200.5, through x = 100.25 at the weld.
+                for (int i = 0; i <= 20; ++i) {
+                    const Vec3 p = curve.evaluate(i / 20.0);
+                    QVERIFY(std::abs(p.z) < 1e-12);
+                    QVERIFY(std::abs(p.y) < 1e-9 || std::abs(p.y - 40.0) < 1e-9);
+                }
+                QVERIFY(std::abs(curve.evaluate(0.5).x - 100.25) < 0.2);
+            }
+        }
     }
 };
 
