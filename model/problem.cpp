@@ -69,6 +69,9 @@ const char* codeName(ProblemCode code) {
         DEVSURF_CODE(ConditionBesideNonStrip)
         DEVSURF_CODE(ConditionNeedsDegree)
         DEVSURF_CODE(NotOneSheet)
+        DEVSURF_CODE(WeldNeedsBoundaryEdges)
+        DEVSURF_CODE(EdgesTooFarApart)
+        DEVSURF_CODE(MergeNeedsStrips)
         DEVSURF_CODE(Internal)
 #undef DEVSURF_CODE
     }

@@ -78,7 +78,10 @@ enum class ProblemCode {
     ConditionNeedsDegree,    // edge has a crease condition but its curve's degree is `count`
     NotOneSheet, // not one sheet: count parts, or its unfolding (flat or around a cylinder)
                  // misses closing up by `value` mm
-    Internal,    // a bug; detail says where
+    WeldNeedsBoundaryEdges, // edge: a weld joins two boundary edges of one kind, of two faces
+    EdgesTooFarApart, // edge and otherEdge lie `value` mm apart, more than `limit` to weld them
+    MergeNeedsStrips, // edge: not a ruling between two SRSR strips with boundary curves alone
+    Internal,         // a bug; detail says where
 };
 
 // What a problem's `element` and `id` name for the codes that concern any kind of entity.

@@ -776,37 +776,52 @@
         <translation>Die Fläche ist kein einzelner ebener Bogen: ihre Abwicklung schließt sich um %1 mm nicht.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="289"/>
+        <location filename="../app/text/problem_text.cpp" line="287"/>
+        <source>Edge %1 cannot be welded: a weld joins two boundary edges of the same kind (two curves or two rulings) of two different patches.</source>
+        <translation>Kante %1 kann nicht verschweißt werden: eine Verschweißung verbindet zwei Randkanten derselben Art (zwei Kurven oder zwei Erzeugende) zweier verschiedener Flächenstücke.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="291"/>
+        <source>Edges %1 and %2 lie up to %3 mm apart, more than the %4 mm within which they can be welded.</source>
+        <translation>Die Kanten %1 und %2 liegen bis zu %3 mm auseinander, mehr als die %4 mm, innerhalb derer sie verschweißt werden können.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="297"/>
+        <source>The strips beside edge %1 cannot be merged: it must be a ruling between two strips whose curves are boundary curves of the same degree and smoothness, and its ends may belong to no other patch.</source>
+        <translation>Die Streifen neben Kante %1 können nicht zusammengeführt werden: sie muss eine Erzeugende zwischen zwei Streifen sein, deren Kurven Randkurven desselben Grades und derselben Glattheit sind, und ihre Enden dürfen zu keinem anderen Flächenstück gehören.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="304"/>
         <source>DevSurf met an internal error (%1). Please report it.</source>
         <translation>DevSurf ist auf einen internen Fehler gestoßen (%1). Bitte melden Sie ihn.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="307"/>
+        <location filename="../app/text/problem_text.cpp" line="322"/>
         <source>The sheet size must be positive; the pieces are laid out side by side.</source>
         <translation>Die Bogengröße muss positiv sein; die Teile werden nebeneinander gelegt.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="309"/>
+        <location filename="../app/text/problem_text.cpp" line="324"/>
         <source>%1 is not valid and has no pattern: %2</source>
         <translation>%1 ist ungültig und hat kein Schnittmuster: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="312"/>
+        <location filename="../app/text/problem_text.cpp" line="327"/>
         <source>%1 could not be developed: %2</source>
         <translation>%1 konnte nicht abgewickelt werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="315"/>
+        <location filename="../app/text/problem_text.cpp" line="330"/>
         <source>Piece %1 (%2) overlaps itself at patches %3 and cannot be cut from one sheet.</source>
         <translation>Teil %1 (%2) überlappt sich selbst bei den Flächenstücken %3 und kann nicht aus einem Bogen geschnitten werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="318"/>
+        <location filename="../app/text/problem_text.cpp" line="333"/>
         <source>Pieces %1 (patches %2) and %3 (patches %4) overlap on sheet %5.</source>
         <translation>Die Teile %1 (Flächenstücke %2) und %3 (Flächenstücke %4) überlappen sich auf Bogen %5.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="323"/>
+        <location filename="../app/text/problem_text.cpp" line="338"/>
         <source>Piece %1 (%2) measures %3 × %4 mm and does not fit on the %5 × %6 mm sheet with a %7 mm gap.</source>
         <translation>Teil %1 (%2) misst %3 × %4 mm und passt mit %7 mm Abstand nicht auf den Bogen von %5 × %6 mm.</translation>
     </message>

@@ -769,37 +769,52 @@
         <translation>曲面は 1 枚の平らなシートではありません: 展開図が %1 mm 閉じません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="289"/>
+        <location filename="../app/text/problem_text.cpp" line="287"/>
+        <source>Edge %1 cannot be welded: a weld joins two boundary edges of the same kind (two curves or two rulings) of two different patches.</source>
+        <translation>辺 %1 は溶接できません。溶接できるのは、異なる二つのパッチの同じ種類（二本の曲線または二本の母線）の境界辺どうしです。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="291"/>
+        <source>Edges %1 and %2 lie up to %3 mm apart, more than the %4 mm within which they can be welded.</source>
+        <translation>辺 %1 と %2 は最大 %3 mm 離れており、溶接できる %4 mm を超えています。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="297"/>
+        <source>The strips beside edge %1 cannot be merged: it must be a ruling between two strips whose curves are boundary curves of the same degree and smoothness, and its ends may belong to no other patch.</source>
+        <translation>辺 %1 の両側のストリップは結合できません。辺は、曲線が同じ次数と滑らかさの境界曲線である二つのストリップの間の母線でなければならず、その端点は他のパッチに属してはいけません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="304"/>
         <source>DevSurf met an internal error (%1). Please report it.</source>
         <translation>DevSurf で内部エラーが発生しました (%1)。報告してください。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="307"/>
+        <location filename="../app/text/problem_text.cpp" line="322"/>
         <source>The sheet size must be positive; the pieces are laid out side by side.</source>
         <translation>シートの大きさは正でなければなりません。ピースは横に並べて配置します。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="309"/>
+        <location filename="../app/text/problem_text.cpp" line="324"/>
         <source>%1 is not valid and has no pattern: %2</source>
         <translation>%1 は無効で型紙がありません: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="312"/>
+        <location filename="../app/text/problem_text.cpp" line="327"/>
         <source>%1 could not be developed: %2</source>
         <translation>%1 を展開できませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="315"/>
+        <location filename="../app/text/problem_text.cpp" line="330"/>
         <source>Piece %1 (%2) overlaps itself at patches %3 and cannot be cut from one sheet.</source>
         <translation>ピース %1（%2）はパッチ %3 で自分自身と重なっており、1 枚のシートから切り出せません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="318"/>
+        <location filename="../app/text/problem_text.cpp" line="333"/>
         <source>Pieces %1 (patches %2) and %3 (patches %4) overlap on sheet %5.</source>
         <translation>ピース %1（パッチ %2）と %3（パッチ %4）がシート %5 上で重なっています。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="323"/>
+        <location filename="../app/text/problem_text.cpp" line="338"/>
         <source>Piece %1 (%2) measures %3 × %4 mm and does not fit on the %5 × %6 mm sheet with a %7 mm gap.</source>
         <translation>ピース %1（%2）は %3 × %4 mm で、%7 mm の間隔をとると %5 × %6 mm のシートに収まりません。</translation>
     </message>

@@ -6,7 +6,9 @@
 #include "io/project_file.h"
 #include "io/reference/reference_import.h"
 #include "model/reference/distance_report.h"
+#include "model/strip_joining.h"
 #include "outcome_text.h"
+#include "problem_text.h"
 #include "reference_commands.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/session/approximation_setup.h"
@@ -20,6 +22,74 @@
 #include <memory>
 
 namespace devsurf::app {
+
+namespace {
+
+// --join (§4.2, "Composite"): the strips as one surface, the curves that face each other paired
+// in a second approximation, then welded into shared curves and the result solved.
+std::vector<model::CompositeSurface>
+joinStrips(const std::vector<model::CompositeSurface>& surfaces,
+           const model::reference::ThinningResult& thinned, double rho,
+           std::optional<int> iterations, solver::SolveJob& job,
+           const solver::JobProgressFn& progress,
+           const std::vector<model::CompositeSurface>*& shownSurfaces,
+           const solver::SurfaceTargets*& shownTargets) {
+    if (surfaces.size() < 2) {
+        std::cout << "Join: a single surface, nothing to join.\n";
+        return surfaces;
+    }
+    const solver::JoinPlan plan = solver::planJoin(surfaces);
+    if (plan.pairs.empty()) {
+        std::cout << "Join: no two strips have boundary curves facing each other (within "
+                  << solver::kJoinReach * 100.0 << " % of their length); left separate.\n";
+        return surfaces;
+    }
+    for (std::size_t p = 0; p < plan.pairs.size(); ++p) {
+        std::cout << "Join: pairing curves " << plan.pairs[p].first << " and "
+                  << plan.pairs[p].second << " (" << plan.separations[p] << " mm apart)\n";
+    }
+    const std::vector<model::CompositeSurface> one = {plan.surface};
+    const solver::SurfaceTargets targets = solver::assignToSurfaces(one, thinned);
+    solver::JobRequest request = solver::approximationRequest(one, targets, rho, iterations);
+    request.curvePairs[0] = plan.pairs;
+    shownSurfaces = &one;
+    shownTargets = &targets;
+    const solver::JobOutcome paired = job.run(request, nullptr, progress);
+    if (!paired.ok) {
+        throw InputError("the solver stopped while pairing curves (" +
+                         describeFailure(paired.failure) + "); nothing was written.");
+    }
+    const solver::JoinedSurface joined = solver::weldPairs(paired.surfaces.front(), plan.pairs);
+    for (const model::Problem& problem : joined.refused) {
+        std::cout << "Join: not welded: " << ProblemText::of(problem).toStdString() << "\n";
+    }
+    solver::JobRequest solve;
+    solve.kind = solver::JobKind::Solve;
+    solve.surfaces = {joined.surface};
+    const solver::JobOutcome solved = job.run(solve);
+    if (!solved.ok) {
+        throw InputError("the solver stopped on the joined surface (" +
+                         describeFailure(solved.failure) + "); nothing was written.");
+    }
+    const model::CompositeSurface& result = solved.surfaces.front();
+    const solver::SurfaceAssessment& a = solved.assessments.front();
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "Join: %d of %zu curve pairs welded; one surface of %zu part(s), %zu "
+                  "patches; solved in %d iterations, largest residual %.2e (%s the tolerance); "
+                  "developability sampled: max %.2e\n",
+                  joined.welded, plan.pairs.size(), model::surfaceParts(result).size(),
+                  result.faces().size(), a.summary.iterationsCompleted,
+                  a.summary.finalMaxConstraintResidual,
+                  a.summary.toleranceReached ? "within" : "NOT within",
+                  solver::measureQuality(result).developabilityMax);
+    std::cout << line;
+    shownSurfaces = nullptr;
+    shownTargets = nullptr;
+    return {result};
+}
+
+} // namespace
 
 int runApproximateCommand(const SubcommandArguments& args) {
     const std::string target = args.positionals(1, "a mesh or point cloud file").front();
@@ -89,13 +159,15 @@ int runApproximateCommand(const SubcommandArguments& args) {
     const solver::JobRequest request =
         solver::approximationRequest(project.surfaces, targets, rho, iterations);
     int surfaceShown = -1;
+    const std::vector<model::CompositeSurface>* shownSurfaces = &project.surfaces;
+    const solver::SurfaceTargets* shownTargets = &targets;
     auto progress = [&](const solver::JobProgress& step) {
         if (step.surface != surfaceShown) {
             surfaceShown = step.surface;
             const std::size_t s = static_cast<std::size_t>(step.surface);
-            std::cout << "Surface " << step.surface + 1 << " (" << project.surfaces[s].name()
-                      << "): " << targets.points[s].size() << " target points, " << step.variables
-                      << " variables, " << step.rows << " rows\n";
+            std::cout << "Surface " << step.surface + 1 << " (" << (*shownSurfaces)[s].name()
+                      << "): " << shownTargets->points[s].size() << " target points, "
+                      << step.variables << " variables, " << step.rows << " rows\n";
         }
         const solver::IterationStats& it = *step.stats;
         char line[256];
@@ -133,6 +205,10 @@ int runApproximateCommand(const SubcommandArguments& args) {
     }
     std::cout << "Time: " << static_cast<long>(outcome.elapsedMs) << " ms\n";
     project.surfaces = outcome.surfaces;
+    if (args.isSet("join")) {
+        project.surfaces = joinStrips(project.surfaces, thinned, rho, iterations, job, progress,
+                                      shownSurfaces, shownTargets);
+    }
     if (std::find(project.referenceShapes.begin(), project.referenceShapes.end(), read.shape) ==
         project.referenceShapes.end()) {
         project.referenceShapes.push_back(read.shape);

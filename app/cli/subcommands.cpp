@@ -215,7 +215,7 @@ const std::vector<SubcommandSpec>& subcommands() {
           {"tolerance", "MM", "The coverage tolerance (default 1 % of the diagonal)."}}},
         {"approximate",
          "approximate TARGET [--from START.devsurf] [--strips K] [--intervals N]\n"
-         "            [--iterations N] [--rho R] -o OUT.devsurf",
+         "            [--iterations N] [--rho R] [--join] -o OUT.devsurf",
          "Developable strips pulled towards a mesh or point cloud TARGET (as\n"
          "import-reference reads it): the target is thinned to points at least\n"
          "R mm apart (default 2 % of its bounding-box diagonal), each with the\n"
@@ -224,12 +224,18 @@ const std::vector<SubcommandSpec>& subcommands() {
          "default 1), are pulled towards the points they are nearest to for N\n"
          "iterations (default 30), then the pull fades out over 10 more so the\n"
          "strips end exactly developable. Writes the strips and the target to\n"
-         "OUT and prints the residual and the distance report.",
+         "OUT and prints the residual and the distance report. With --join,\n"
+         "the strips become one surface: the boundary curves of two strips that\n"
+         "face each other (ends and middles apart by at most 20 % of their\n"
+         "length) are pulled onto each other in a second approximation, welded\n"
+         "into one shared curve and the result solved; strips that meet only\n"
+         "along rulings, or face no other strip, stay separate parts.",
          {{"from", "START.devsurf", "Start from the surfaces of this project."},
           {"strips", "K", "Start from K flat strips (default 1)."},
           {"intervals", "N", "Spline intervals of each flat strip (default 4)."},
           {"iterations", "N", "Iterations of the pull (default 30)."},
           {"rho", "R", "The thinning radius in mm."},
+          {"join", "", "Join strips whose curves face each other into one surface."},
           kOutputProject}},
         {"fit-edge",
          "fit-edge FILE --edge E [--curve K] [--surface K] -o OUT.devsurf",

@@ -283,6 +283,21 @@ QString ProblemText::of(const model::Problem& p) {
         }
         return tr("The surface is not one flat sheet: its unfolding misses closing up by %1 mm.")
             .arg(QString::number(p.value, 'g', 3));
+    case ProblemCode::WeldNeedsBoundaryEdges:
+        return tr("Edge %1 cannot be welded: a weld joins two boundary edges of the same kind "
+                  "(two curves or two rulings) of two different patches.")
+            .arg(p.edge);
+    case ProblemCode::EdgesTooFarApart:
+        return tr("Edges %1 and %2 lie up to %3 mm apart, more than the %4 mm within which they "
+                  "can be welded.")
+            .arg(p.edge)
+            .arg(p.otherEdge)
+            .arg(millimetres(p.value), millimetres(p.limit));
+    case ProblemCode::MergeNeedsStrips:
+        return tr("The strips beside edge %1 cannot be merged: it must be a ruling between two "
+                  "strips whose curves are boundary curves of the same degree and smoothness, "
+                  "and its ends may belong to no other patch.")
+            .arg(p.edge);
     case ProblemCode::Internal:
         break;
     }

@@ -598,6 +598,9 @@ SurfaceFormulation::SurfaceFormulation(const model::CompositeSurface& surface,
         m_approximationFamilies =
             addApproximation(*m_approximation, m_options.approximationWeights, m_problem);
     }
+    if (!m_options.curvePairs.empty()) {
+        addCurvePairs(surface);
+    }
     setReferenceState(m_initialState);
 }
 

@@ -5,6 +5,7 @@
 #include "solver/core/options.h"
 #include "solver/core/problem.h"
 #include "solver/formulation/approximation_terms.h"
+#include "solver/formulation/curve_pairing.h"
 #include "solver/formulation/development_terms.h"
 #include "solver/formulation/normal_spline_start.h"
 
@@ -199,6 +200,12 @@ struct FormulationOptions {
     // (refreshApproximation). Null: none.
     std::shared_ptr<const ApproximationTarget> approximation;
     ApproximationWeights approximationWeights;
+
+    // Pairs of boundary S-edges pulled together (§4.2, "Composite"; CurvePairingFit), their
+    // closest points refreshed before every iteration with the approximation's. A constraint
+    // judged apart, not faded: the curves end on each other, ready to be welded.
+    std::vector<CurvePair> curvePairs;
+    double curvePairingWeight = 1.0;
 };
 
 // The configuration for rough starts (a design dragged far, a noisy import): proximity to the
@@ -260,13 +267,16 @@ public:
     // Nothing without them.
     void fadeDragEnergies(double factor);
     // Finds the closest points of the approximation target (FormulationOptions::approximation)
-    // on `current`, the surface at the state about to be iterated from. No-op without one.
+    // and of the paired curves (curvePairs) on `current`, the surface at the state about to be
+    // iterated from. No-op without them.
     void refreshApproximation(const model::CompositeSurface& current);
     // Multiplies the weights of eqs. (9)–(11) by `factor` (the approximation fading out so
     // that the hard conditions converge exactly at its end).
     void scaleApproximationWeights(double factor);
     // The closest points of the target; null without one.
     const ApproximationFit* approximationFit() const { return m_approximation.get(); }
+    // The paired curves' samples and closest points; null without pairs.
+    const CurvePairingFit* curvePairing() const { return m_pairing.get(); }
     // Whether those rows damp length changes (lengthDampingWeight) rather than keep lengths.
     bool isometryDamps() const {
         return m_isometryFamily >= 0 &&
@@ -338,6 +348,9 @@ private:
     void addApproximationFit(const model::CompositeSurface& surface,
                              const std::vector<model::Strip>& strips,
                              const std::map<model::FaceId, StripNormalSpline>& stripNormals);
+    // The pairing of FormulationOptions::curvePairs (throws std::invalid_argument for an edge
+    // that is not a boundary S-edge of the surface).
+    void addCurvePairs(const model::CompositeSurface& surface);
 
     FormulationOptions m_options;
     Problem m_problem;
@@ -389,6 +402,7 @@ private:
     std::vector<model::Vec3> m_originalPoints; // model coordinates of the given surface
     std::unique_ptr<ApproximationFit> m_approximation;
     std::vector<FamilyId> m_approximationFamilies;
+    std::unique_ptr<CurvePairingFit> m_pairing;
 };
 
 } // namespace devsurf::solver

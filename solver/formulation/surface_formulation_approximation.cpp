@@ -5,6 +5,9 @@
 
 #include "solver/formulation/crease_conditions.h"
 
+#include <stdexcept>
+#include <string>
+
 namespace devsurf::solver {
 
 void SurfaceFormulation::addApproximationFit(
@@ -37,6 +40,30 @@ void SurfaceFormulation::refreshApproximation(const model::CompositeSurface& cur
     if (m_approximation) {
         m_approximation->refresh(current);
     }
+    if (m_pairing) {
+        m_pairing->refresh(current);
+    }
+}
+
+void SurfaceFormulation::addCurvePairs(const model::CompositeSurface& surface) {
+    std::vector<PairedCurveColumns> curves;
+    for (const CurvePair& pair : m_options.curvePairs) {
+        for (model::EdgeId edge : {pair.first, pair.second}) {
+            if (!surface.hasEdge(edge) || !surface.edge(edge).isSpline() ||
+                surface.facesOfEdge(edge).size() != 1 || pair.first == pair.second) {
+                throw std::invalid_argument("edge " + std::to_string(edge) +
+                                            " is not a boundary curve that can be paired");
+            }
+            PairedCurveColumns c;
+            c.edge = edge;
+            for (int point : m_edgePoints.at(edge)) {
+                c.points.push_back(pointOffset(point));
+            }
+            curves.push_back(std::move(c));
+        }
+    }
+    m_pairing = std::make_unique<CurvePairingFit>(surface, m_options.curvePairs, std::move(curves));
+    addCurvePairing(*m_pairing, m_options.curvePairingWeight, m_problem);
 }
 
 void SurfaceFormulation::scaleApproximationWeights(double factor) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "model/composite_surface.h"
+#include "model/problem.h"
 #include "model/reference/thinning.h"
 #include "model/vec3.h"
 #include "solver/session/solve_job.h"
@@ -65,6 +66,31 @@ inline constexpr std::size_t kFewestTargetPoints = 3;
 JobRequest approximationRequest(const std::vector<model::CompositeSurface>& surfaces,
                                 const SurfaceTargets& targets, double rho,
                                 std::optional<int> iterations);
+
+// Joining the strips of an approximation into one composite (§4.2, "Composite"): the surfaces
+// side by side in one (model::placeSideBySide), per two of its parts the boundary curves that
+// face each other (model::nearestBoundaryCurves) paired in an Approximate job
+// (JobRequest::curvePairs), then welded (model::weldEdges).
+
+// Facing curves are paired when their separation is at most this fraction of their length.
+inline constexpr double kJoinReach = 0.2;
+
+struct JoinPlan {
+    model::CompositeSurface surface; // every surface, side by side
+    std::vector<CurvePair> pairs;    // nearest first; each curve in one pair at most
+    std::vector<double> separations; // per pair (mm), before the pairing
+};
+// Requires at least one surface. Parts that face no other part within kJoinReach stay apart.
+JoinPlan planJoin(const std::vector<model::CompositeSurface>& surfaces);
+
+struct JoinedSurface {
+    model::CompositeSurface surface;
+    int welded = 0;                      // pairs welded into shared curves
+    std::vector<model::Problem> refused; // why the other pairs were not
+};
+// Welds every pair of `surface` (in order) that model::weldEdges accepts.
+JoinedSurface weldPairs(const model::CompositeSurface& surface,
+                        const std::vector<CurvePair>& pairs);
 
 // Everything at once, for a front end that runs it off its GUI thread.
 struct ApproximationOptions {

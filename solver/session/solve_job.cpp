@@ -131,6 +131,7 @@ SessionOptions optionsFor(const JobRequest& request, int surface) {
         options.formulation.normalFairnessWeight = 0.0;
         options.formulation.unitControlNormalWeight = kApproximationUnitNormalWeight;
     }
+    options.formulation.curvePairs = entryOf(request.curvePairs, surface);
     if (request.kind == JobKind::Solve) {
         options.stopResidual = kSolveStopResidual;
         if (const auto it = request.fixed.find(surface); it != request.fixed.end()) {
@@ -434,7 +435,7 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
     for (std::size_t s = 0; s < count; ++s) {
         const int key = static_cast<int>(s);
         if (request.kind == JobKind::Solve || entryOf(request.targets, key) ||
-            !entryOf(request.pulled, key).empty() ||
+            !entryOf(request.curvePairs, key).empty() || !entryOf(request.pulled, key).empty() ||
             !entryOf(request.pulledControlPoints, key).empty() ||
             !entryOf(request.pulledSheet, key).empty()) {
             ++solvedSurfaces;
@@ -459,7 +460,7 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
         SurfaceAssessment assessment;
         const std::shared_ptr<const ApproximationTarget> target = entryOf(request.targets, key);
         if (request.kind != JobKind::Solve && handles.empty() && points.empty() && sheet.empty() &&
-            !target) {
+            !target && entryOf(request.curvePairs, key).empty()) {
             // Nothing pulled on this surface: it stays as it is.
             if (!allFinite(snapshot)) {
                 return fail(failureOf(JobError::NotFinite, key));

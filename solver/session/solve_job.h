@@ -58,6 +58,9 @@ struct JobRequest {
     // surfaces without an entry stay as they are. The iterations are those of the pull; the
     // job adds kApproximationFadeIterations in which the pull fades (solve_session.h).
     std::map<int, std::shared_ptr<const ApproximationTarget>> targets;
+    // Approximate (or Solve): per surface index, boundary curves pulled together
+    // (FormulationOptions::curvePairs), to be welded afterwards (model::weldEdges).
+    std::map<int, std::vector<CurvePair>> curvePairs;
 };
 
 // The iterations of an approximation's pull when the request does not say.

@@ -38,6 +38,20 @@ std::vector<model::Vec3> parabolicCylinder() {
     return points;
 }
 
+// A tall patch of the circular cylinder of radius 100 about the z-axis: the angle within ±60°,
+// z in [0, 240], 61 × 49 points. Two k-means clusters split it into a lower and an upper half,
+// whose strips run around the cylinder and face each other along a curve near z = 120.
+std::vector<model::Vec3> circularCylinder() {
+    std::vector<model::Vec3> points;
+    for (int i = 0; i <= 60; ++i) {
+        const double phi = (2.0 * i / 60 - 1.0) * 1.0471975511965976;
+        for (int j = 0; j <= 48; ++j) {
+            points.emplace_back(100.0 * std::cos(phi), 100.0 * std::sin(phi), 5.0 * j);
+        }
+    }
+    return points;
+}
+
 QByteArray xyz(const std::vector<model::Vec3>& points) {
     QByteArray text;
     for (const model::Vec3& p : points) {
@@ -207,6 +221,31 @@ private slots:
         const model::Project again = io::loadProjectFile(path("again.devsurf"));
         QCOMPARE(again.surfaces.size(), std::size_t(2));
         QCOMPARE(again.referenceShapes.size(), std::size_t(1)); // not stored twice
+    }
+
+    void approximateJoinsStripsIntoOneSurface() {
+        const std::vector<model::Vec3> points = circularCylinder();
+        QVERIFY(writeFile(path("circular.xyz"), xyz(points)));
+        const test::CliRun run = test::runCli({"approximate", path("circular.xyz"), "--strips", "2",
+                                               "--join", "-o", path("joined.devsurf")});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        QVERIFY2(run.out.contains("Join: 1 of 1 curve pairs welded; one surface of 1 part(s)"),
+                 qPrintable(run.out));
+        // One surface of two patches sharing one curve, valid, on the cloud (measured here).
+        const model::Project project = io::loadProjectFile(path("joined.devsurf"));
+        QCOMPARE(project.surfaces.size(), std::size_t(1));
+        const model::CompositeSurface& joined = project.surfaces.front();
+        QVERIFY(joined.validate().empty());
+        QCOMPARE(joined.faces().size(), std::size_t(2));
+        int sharedCurves = 0;
+        for (const auto& [id, record] : joined.edges()) {
+            sharedCurves += record.isSpline() && joined.facesOfEdge(id).size() == 2 ? 1 : 0;
+        }
+        QCOMPARE(sharedCurves, 1);
+        const auto report = model::reference::measureDistance(project.surfaces, points);
+        QVERIFY2(report.targetToSurface.max < 0.5,
+                 qPrintable(QString::number(report.targetToSurface.max)));
+        QVERIFY(test::runCli({"approximate", "--help"}).out.contains("--join"));
     }
 
     void approximateRefusesBadInput() {
