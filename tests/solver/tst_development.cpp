@@ -115,6 +115,29 @@ double sampledDevelopability(const model::CompositeSurface& surface) {
     return worst;
 }
 
+// `vertex` of `start` pulled to `target` in `moves` evenly spaced moves through the solve job,
+// as the Drag tool does, then released there; the first outcome that failed, or the release's.
+solver::JobOutcome dragInJob(const model::CompositeSurface& start, model::VertexId vertex,
+                             const Vec3& target, int moves) {
+    solver::SolveJob job;
+    solver::JobOutcome outcome;
+    for (int k = 1; k <= moves + 1; ++k) {
+        solver::JobRequest request;
+        request.kind = solver::JobKind::VertexDrag;
+        request.drag = 1;
+        request.settle = k > moves;
+        request.surfaces = {start};
+        const double t = std::min(k, moves) / static_cast<double>(moves);
+        request.pulled[0].push_back(
+            {vertex, false, start.position(vertex) + (target - start.position(vertex)) * t});
+        outcome = job.run(request);
+        if (!outcome.ok) {
+            break;
+        }
+    }
+    return outcome;
+}
+
 // The bounding box in x and y of a design's vertices or of a development.
 struct Box {
     model::Vec2 low{1e300, 1e300};
@@ -358,21 +381,8 @@ private slots:
         }
         QVERIFY(top != model::kInvalidId);
         const Vec3 target = start.position(top) + Vec3(0.0, 0.0, 30.0);
-        solver::SolveJob job;
-        solver::JobOutcome outcome;
-        constexpr int kMoves = 20;
-        for (int k = 1; k <= kMoves + 1; ++k) {
-            solver::JobRequest request;
-            request.kind = solver::JobKind::VertexDrag;
-            request.drag = 14;
-            request.settle = k > kMoves;
-            request.surfaces = {start};
-            const double t = std::min(k, kMoves) / static_cast<double>(kMoves);
-            request.pulled[0].push_back(
-                {top, false, start.position(top) + (target - start.position(top)) * t});
-            outcome = job.run(request);
-            QVERIFY2(outcome.ok, outcome.failure.detail.c_str());
-        }
+        const solver::JobOutcome outcome = dragInJob(start, top, target, 20);
+        QVERIFY2(outcome.ok, outcome.failure.detail.c_str());
         const model::CompositeSurface& s = outcome.surfaces.front();
         QVERIFY(!outcome.assessments.front().takenBack);
         QVERIFY(outcome.assessments.front().sheetHeld);
@@ -525,21 +535,8 @@ private slots:
         }
         QVERIFY(top != model::kInvalidId);
         const Vec3 target = start.position(top) + Vec3(0.0, -60.0, 60.0);
-        solver::SolveJob job;
-        solver::JobOutcome outcome;
-        constexpr int kMoves = 100;
-        for (int k = 1; k <= kMoves + 1; ++k) {
-            solver::JobRequest request;
-            request.kind = solver::JobKind::VertexDrag;
-            request.drag = 13;
-            request.settle = k > kMoves;
-            request.surfaces = {start};
-            const double t = std::min(k, kMoves) / static_cast<double>(kMoves);
-            request.pulled[0].push_back(
-                {top, false, start.position(top) + (target - start.position(top)) * t});
-            outcome = job.run(request);
-            QVERIFY2(outcome.ok, outcome.failure.detail.c_str());
-        }
+        const solver::JobOutcome outcome = dragInJob(start, top, target, 100);
+        QVERIFY2(outcome.ok, outcome.failure.detail.c_str());
         const model::CompositeSurface& s = outcome.surfaces.front();
         QVERIFY(s.validate().empty());
         QVERIFY(outcome.assessments.front().sheetHeld);
