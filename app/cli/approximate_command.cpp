@@ -199,6 +199,10 @@ int runApproximateCommand(const SubcommandArguments& args) {
                       a.summary.toleranceReached ? "within" : "NOT within", a.summary.tolerance,
                       quality.developabilityMax);
         std::cout << line;
+        if (a.dampedApproximation) {
+            std::cout << "  pulled again, damped: the strip cannot follow this part of the "
+                         "target closely and stay developable\n";
+        }
         if (a.summary.status == solver::Status::StoppedBeforeDegenerate) {
             std::cout << "  stopped at the last valid state" << refusedText(a) << "\n";
         }

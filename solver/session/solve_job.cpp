@@ -8,9 +8,11 @@
 #include "model/geometry_checks.h"
 #include "model/model_error.h"
 #include "model/pattern/cutting_pattern.h"
+#include "model/reference/surface_samples.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
 #include "solver/quality/vertex_stars.h"
+#include "solver/session/drag_lengths.h"
 #include "solver/session/solve_session.h"
 #include "solver/session/verdict.h"
 
@@ -114,7 +116,7 @@ template <typename Map> typename Map::mapped_type entryOf(const Map& map, int ke
 // The weight of the unit length of the control normals in an approximation (see optionsFor).
 constexpr double kApproximationUnitNormalWeight = 1.0;
 
-SessionOptions optionsFor(const JobRequest& request, int surface) {
+SessionOptions optionsFor(const JobRequest& request, int surface, bool damped = false) {
     SessionOptions options;
     if (keepsLengths(request)) {
         options = keepLengthsSessionOptions();
@@ -131,6 +133,13 @@ SessionOptions optionsFor(const JobRequest& request, int surface) {
         options.formulation.fairnessWeight = 0.0;
         options.formulation.normalFairnessWeight = 0.0;
         options.formulation.unitControlNormalWeight = kApproximationUnitNormalWeight;
+        if (damped) {
+            ApproximationWeights& w = options.formulation.approximationWeights;
+            w.position *= kDampedApproximationWeightScale;
+            w.tangency *= kDampedApproximationWeightScale;
+            w.normalDistance *= kDampedApproximationWeightScale;
+            options.approximationDamping = kDampedApproximationEps2;
+        }
     }
     options.formulation.curvePairs = entryOf(request.curvePairs, surface);
     if (request.kind == JobKind::Solve) {
@@ -149,6 +158,38 @@ SessionOptions optionsFor(const JobRequest& request, int surface) {
 double worstDevelopability(const model::CompositeSurface& surface) {
     const auto faces = developabilityByFace(surface);
     return faces.empty() ? 0.0 : faces.front().second;
+}
+
+// Whether an approximation's pull failed, so that the damped recipe runs: it stopped, it
+// missed the tolerance with a patch sampled farther than kDragConvergedResidual from
+// developable, or the surface ran away, i.e. a sample lies farther than kApproximationRunaway
+// times the target's bounding-box diagonal outside that box (also within the tolerance: a
+// developable strip can leave its points). Missing the tolerance alone is no failure: a
+// quarter circle, which splines hold only approximately, ends 6e-5 of its diameter away and
+// 4e-7 from developable, far nearer than the damped recipe brings it.
+constexpr double kApproximationRunaway = 0.5;
+bool approximationFailed(const model::CompositeSurface& result, const ApproximationTarget& target,
+                         const Summary& summary) {
+    if (!summary.succeeded() || !allFinite(result) ||
+        (!summary.toleranceReached && worstDevelopability(result) > kDragConvergedResidual)) {
+        return true;
+    }
+    model::Vec3 low = target.points.front();
+    model::Vec3 high = low;
+    for (const model::Vec3& p : target.points) {
+        low = model::Vec3(std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z));
+        high = model::Vec3(std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z));
+    }
+    const double reach = kApproximationRunaway * (high - low).norm();
+    for (const model::Vec3& p : model::reference::sampleDensely({result}, 4).positions) {
+        const model::Vec3 outside(std::max({low.x - p.x, 0.0, p.x - high.x}),
+                                  std::max({low.y - p.y, 0.0, p.y - high.y}),
+                                  std::max({low.z - p.z, 0.0, p.z - high.z}));
+        if (outside.norm() > reach) {
+            return true;
+        }
+    }
+    return false;
 }
 
 JobFailure failureOf(JobError error, int surface, Status status = Status::IterationLimit,
@@ -320,7 +361,7 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
     // An approximation fades its pull in iterations of its own after those asked for.
     const bool approximate = request.kind == JobKind::Approximate;
     const int steps = iterations + (approximate ? kApproximationFadeIterations : 0);
-    const int total = steps * solvedSurfaces;
+    int total = steps * solvedSurfaces;
     int done = 0;
 
     for (std::size_t s = 0; s < count; ++s) {
@@ -409,6 +450,21 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
         };
         const auto stepped = std::chrono::steady_clock::now();
         Summary summary = session->step(steps, cancel, perIteration);
+        if (target && !target->points.empty() && summary.status != Status::Cancelled &&
+            approximationFailed(session->surface(), *target, summary)) {
+            // The target pulled the strips where they cannot stay developable: the damped
+            // recipe from the start (kDampedApproximationWeightScale).
+            try {
+                SessionOptions options = optionsFor(request, key, true);
+                options.approximationFadeAfter = iterations;
+                session = std::make_unique<SolveSession>(snapshot, handles, points, options);
+            } catch (const std::exception& error) {
+                return fail(cannotSolve(key, error));
+            }
+            total += steps;
+            summary = session->step(steps, cancel, perIteration);
+            assessment.dampedApproximation = true;
+        }
         const auto stepTime = std::chrono::steady_clock::now() - stepped;
         if (drag && !request.settle && summary.succeeded() && !d.moves[s].empty() &&
             (d.reached[s].empty() || d.reached[s].back().moves != d.moves[s].size())) {

@@ -147,6 +147,10 @@ struct SurfaceAssessment {
     // (a sampled mesh matches a developable spline only up to its sampling), so this is what
     // says whether the sheet held. -1: the surface keeps none.
     double sheetStretchMm = -1.0;
+    // An approximation whose pull missed the tolerance and ran again with the damped recipe
+    // (kDampedApproximationWeightScale): the target is farther from developable than the
+    // strips can follow closely.
+    bool dampedApproximation = false;
 };
 
 // Samples per spline interval of the development the verdict measures (as the views draw it).

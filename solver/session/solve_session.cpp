@@ -282,6 +282,16 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         if (m_lengthDampingFades && m_formulation->isometryDamps()) {
             m_formulation->scaleIsometryWeight(kRoughSolveLengthDampingFade);
         }
+        if (m_options.approximationDamping > 0.0) {
+            const int fadeAfter = m_options.approximationFadeAfter;
+            const int fading = fadeAfter >= 0 ? std::max(0, m_iterationsDone - fadeAfter + 1) : 0;
+            const double floor =
+                m_options.approximationDamping * std::pow(kApproximationFade, fading);
+            options.eps2 = std::max(m_options.solver.eps2, floor);
+            options.eps2Schedule = [floor, solver = m_options.solver](int i, double r) {
+                return std::max(floor, epsilon2(solver, i, r));
+            };
+        }
         before = m_x;
         const Summary summary = m_projection.solve(m_formulation->problem(), m_x, options);
         if (i == 0) {

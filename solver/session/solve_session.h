@@ -88,6 +88,20 @@ constexpr double kSheetPullWeight = 1.0;
 constexpr double kApproximationFade = 0.3;
 constexpr int kApproximationFadeIterations = 10;
 
+// The damped recipe of an approximation, for a target that a developable strip cannot follow
+// closely (a doubly curved part of a scan): eqs. (9)–(11) at kDampedApproximationWeightScale of
+// their weights, and ε₂ at least kDampedApproximationEps2 while they pull, fading by
+// kApproximationFade with them (SessionOptions::approximationDamping). At full weight and the
+// session's small ε₂ such a pull leaves the strip far from developable (residual 0.3), and the
+// fade's first undamped step jumped to residual 2–30 and ran away (the Stanford bunny with 94
+// strips: 16 of 94 strips within the tolerance, parts of strips 30 m away). Damped: 94 of 94,
+// no strip beyond 12 mm of the target (docs/tuning.md, "The damped recipe"). It converges only
+// linearly, so a target a strip can fit exactly (a cylinder patch, to 1e-6 of its diameter)
+// keeps the undamped recipe, and the job falls back to this one where that misses the
+// tolerance.
+constexpr double kDampedApproximationWeightScale = 0.01;
+constexpr double kDampedApproximationEps2 = 1.0;
+
 struct SessionOptions {
     // Its `handles` are extended by the session: every pinned vertex becomes a fixed handle,
     // every pulled vertex a pulled one.
@@ -100,6 +114,10 @@ struct SessionOptions {
     // With FormulationOptions::approximation: the iterations (over all step() calls) after
     // which the approximation weights fade (kApproximationFade); negative: never.
     int approximationFadeAfter = -1;
+    // With FormulationOptions::approximation: ε₂ is at least this while the target pulls, and
+    // this times kApproximationFade^k in the k-th fading iteration (0: no floor; see
+    // kDampedApproximationEps2).
+    double approximationDamping = 0.0;
 };
 
 // A Solve stops once its largest residual is at most kSolveStopResidual; its iterations
