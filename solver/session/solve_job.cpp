@@ -8,6 +8,7 @@
 #include "model/geometry_checks.h"
 #include "model/model_error.h"
 #include "model/pattern/cutting_pattern.h"
+#include "model/reference/bounding_box.h"
 #include "model/reference/surface_samples.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
@@ -174,22 +175,11 @@ bool approximationFailed(const model::CompositeSurface& result, const Approximat
         (!summary.toleranceReached && worstDevelopability(result) > kDragConvergedResidual)) {
         return true;
     }
-    model::Vec3 low = target.points.front();
-    model::Vec3 high = low;
-    for (const model::Vec3& p : target.points) {
-        low = model::Vec3(std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z));
-        high = model::Vec3(std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z));
-    }
-    const double reach = kApproximationRunaway * (high - low).norm();
-    for (const model::Vec3& p : model::reference::sampleDensely({result}, 4).positions) {
-        const model::Vec3 outside(std::max({low.x - p.x, 0.0, p.x - high.x}),
-                                  std::max({low.y - p.y, 0.0, p.y - high.y}),
-                                  std::max({low.z - p.z, 0.0, p.z - high.z}));
-        if (outside.norm() > reach) {
-            return true;
-        }
-    }
-    return false;
+    const model::reference::BoundingBox box = model::reference::boundingBox(target.points);
+    const double reach = kApproximationRunaway * box.diagonal();
+    const auto samples = model::reference::sampleDensely({result}, 4).positions;
+    return std::any_of(samples.begin(), samples.end(),
+                       [&](const model::Vec3& p) { return box.distanceOutside(p) > reach; });
 }
 
 JobFailure failureOf(JobError error, int surface, Status status = Status::IterationLimit,
