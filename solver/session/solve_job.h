@@ -147,9 +147,9 @@ struct SurfaceAssessment {
     // (a sampled mesh matches a developable spline only up to its sampling), so this is what
     // says whether the sheet held. -1: the surface keeps none.
     double sheetStretchMm = -1.0;
-    // An approximation whose pull missed the tolerance and ran again with the damped recipe
-    // (kDampedApproximationWeightScale): the target is farther from developable than the
-    // strips can follow closely.
+    // An approximation whose pull failed (stopped, not developable or run away from its
+    // points) and ran again with the damped recipe (kDampedApproximationWeightScale): the
+    // target is farther from developable than the strip can follow closely.
     bool dampedApproximation = false;
 };
 

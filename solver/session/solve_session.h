@@ -92,13 +92,9 @@ constexpr int kApproximationFadeIterations = 10;
 // closely (a doubly curved part of a scan): eqs. (9)–(11) at kDampedApproximationWeightScale of
 // their weights, and ε₂ at least kDampedApproximationEps2 while they pull, fading by
 // kApproximationFade with them (SessionOptions::approximationDamping). At full weight and the
-// session's small ε₂ such a pull leaves the strip far from developable (residual 0.3), and the
-// fade's first undamped step jumped to residual 2–30 and ran away (the Stanford bunny with 94
-// strips: 16 of 94 strips within the tolerance, parts of strips 30 m away). Damped: 94 of 94,
-// no strip beyond 12 mm of the target (docs/tuning.md, "The damped recipe"). It converges only
-// linearly, so a target a strip can fit exactly (a cylinder patch, to 1e-6 of its diameter)
-// keeps the undamped recipe, and the job falls back to this one where that misses the
-// tolerance.
+// session's small ε₂ such a pull holds the strip far from developable, and the fade's first,
+// undamped step throws it off its points. The damped recipe converges only linearly, so the
+// solve job runs it only where the usual pull failed (docs/tuning.md, "The damped recipe").
 constexpr double kDampedApproximationWeightScale = 0.01;
 constexpr double kDampedApproximationEps2 = 1.0;
 
