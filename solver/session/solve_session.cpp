@@ -288,8 +288,8 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
             const double floor =
                 m_options.approximationDamping * std::pow(kApproximationFade, fading);
             options.eps2 = std::max(m_options.solver.eps2, floor);
-            options.eps2Schedule = [floor, solver = m_options.solver](int i, double r) {
-                return std::max(floor, epsilon2(solver, i, r));
+            options.eps2Schedule = [this, floor](int i, double r) {
+                return std::max(floor, epsilon2(m_options.solver, i, r));
             };
         }
         before = m_x;
