@@ -21,4 +21,12 @@ private:
     std::vector<model::Problem> m_problems;
 };
 
+// A reason without its final period and spaces, to be quoted inside a longer sentence.
+inline std::string withoutFinalPeriod(std::string text) {
+    while (!text.empty() && (text.back() == '.' || text.back() == ' ')) {
+        text.pop_back();
+    }
+    return text;
+}
+
 } // namespace devsurf::io

@@ -13,13 +13,6 @@ namespace devsurf::io {
 
 namespace {
 
-std::string withoutFinalPeriod(std::string text) {
-    while (!text.empty() && (text.back() == '.' || text.back() == ' ')) {
-        text.pop_back();
-    }
-    return text;
-}
-
 [[noreturn]] void cannotWrite(const QString& path, const std::string& reason) {
     throw FileError("Cannot write '" + path.toStdString() + "': " + withoutFinalPeriod(reason) +
                     ".");

@@ -103,10 +103,6 @@ template <class Archive> std::string loadString(Archive& ar, std::uint32_t limit
     return text;
 }
 
-bool isFinite(const model::Vec3& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
 // A reference shape: name, source, its points, its normals (none or one per point) and its
 // triangles (none for a point cloud) as indices into the points.
 template <class Archive> void saveShape(Archive& ar, const model::ReferenceShape& shape) {
@@ -142,7 +138,7 @@ template <class Archive> model::ReferenceShape loadShape(Archive& ar) {
     shape.points.resize(points);
     for (model::Vec3& point : shape.points) {
         ar >> point;
-        if (!isFinite(point)) {
+        if (!point.isFinite()) {
             throw FileError("it holds a reference shape with a coordinate that is not a number");
         }
     }
@@ -155,7 +151,7 @@ template <class Archive> model::ReferenceShape loadShape(Archive& ar) {
     shape.normals.resize(normals);
     for (model::Vec3& normal : shape.normals) {
         ar >> normal;
-        if (!isFinite(normal)) {
+        if (!normal.isFinite()) {
             throw FileError("it holds a reference shape with a normal that is not a number");
         }
     }

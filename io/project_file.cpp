@@ -32,13 +32,6 @@ std::uint64_t getLittleEndian(const std::string& in, std::size_t offset, int byt
     return value;
 }
 
-std::string withoutFinalPeriod(std::string text) {
-    while (!text.empty() && (text.back() == '.' || text.back() == ' ')) {
-        text.pop_back();
-    }
-    return text;
-}
-
 std::string quoted(const QString& path) {
     return "'" + path.toStdString() + "'";
 }

@@ -16,10 +16,6 @@ struct Triangle {
     bool placed = false;
 };
 
-double cross2(const Vec2& a, const Vec2& b) {
-    return a.x * b.y - a.y * b.x;
-}
-
 // Places c on the left of the directed segment pa→pb with |c−pa| = da and |c−pb| = db.
 Vec2 placeApex(const Vec2& pa, const Vec2& pb, double da, double db) {
     const Vec2 d = pb - pa;

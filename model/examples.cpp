@@ -2,6 +2,7 @@
 
 #include "bspline_curve.h"
 #include "development.h"
+#include "model/math_constants.h"
 #include "model_error.h"
 #include "sampled_mesh.h"
 #include "sheet_domain.h"
@@ -13,8 +14,6 @@
 namespace devsurf::model {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Control points of a curve in the given space whose Greville abscissae lie on f; this
 // reproduces lines exactly and approximates other curves closely. The end points are the

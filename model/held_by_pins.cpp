@@ -29,10 +29,6 @@ constexpr int kLineSamples = 32;
 // three (their number grows with the cube: 300 pins make 4.5 million).
 constexpr std::size_t kMostPinsForTriangles = 300;
 
-double cross2(const Vec2& a, const Vec2& b) {
-    return a.x * b.y - a.y * b.x;
-}
-
 // The development as triangles in a uniform grid of cells, to test quickly whether a point lies
 // in the sheet.
 class Outline {

@@ -1,5 +1,6 @@
 #include "sheet_domain.h"
 
+#include "model/math_constants.h"
 #include "pattern/pattern_geometry.h"
 #include "sampled_mesh.h"
 
@@ -11,11 +12,8 @@ namespace devsurf::model {
 
 namespace {
 
-using pattern::cross2;
-using pattern::dot2;
 using pattern::signedArea;
 
-constexpr double kPi = 3.14159265358979323846;
 // An outline vertex turning by this much or more is a corner (fixed, not slid along).
 constexpr double kCornerTurn = 30.0 * kPi / 180.0;
 

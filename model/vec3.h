@@ -63,6 +63,10 @@ constexpr double det(const Vec3& a, const Vec3& b, const Vec3& c) {
 inline double distance(const Vec3& a, const Vec3& b) {
     return (a - b).norm();
 }
+// The angle between two vectors in [0, π], accurate also near 0 and π.
+inline double angleBetween(const Vec3& a, const Vec3& b) {
+    return std::atan2(cross(a, b).norm(), dot(a, b));
+}
 
 // A point of the plane (developments).
 struct Vec2 {
@@ -76,5 +80,12 @@ struct Vec2 {
     double norm() const { return std::sqrt(x * x + y * y); }
     constexpr bool operator==(const Vec2& o) const { return x == o.x && y == o.y; }
 };
+
+constexpr double cross2(const Vec2& a, const Vec2& b) {
+    return a.x * b.y - a.y * b.x;
+}
+constexpr double dot2(const Vec2& a, const Vec2& b) {
+    return a.x * b.x + a.y * b.y;
+}
 
 } // namespace devsurf::model

@@ -9,8 +9,6 @@ namespace devsurf::app {
 
 namespace {
 
-constexpr const char* kMissingOutput = "the output file is missing (use -o FILE)";
-
 int wholeOption(const SubcommandArguments& args, const char* name, long low, long high,
                 int fallback) {
     const std::optional<std::string> text = args.value(name);

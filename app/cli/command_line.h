@@ -17,6 +17,14 @@
 
 namespace devsurf::app {
 
+// devsurf-cli's exit codes: done; bad usage; an input that cannot do what was asked.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitUsage = 1;
+inline constexpr int kExitInput = 2;
+
+// The message of a subcommand that writes a file and was given no -o.
+inline constexpr const char* kMissingOutput = "the output file is missing (use -o FILE)";
+
 struct UsageError {
     std::string message;
 };

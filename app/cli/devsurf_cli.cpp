@@ -38,12 +38,6 @@ namespace devsurf::app {
 
 namespace {
 
-constexpr int kExitOk = 0;
-constexpr int kExitUsage = 1;
-constexpr int kExitInput = 2;
-
-constexpr const char* kMissingOutput = "the output file is missing (use -o FILE)";
-
 int commandExample(const SubcommandArguments& args) {
     const std::string name = args.onePositional("one example name");
     int size = 0;

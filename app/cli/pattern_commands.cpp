@@ -28,8 +28,6 @@ namespace devsurf::app {
 
 namespace {
 
-constexpr int kExitOk = 0;
-
 struct Settings {
     model::PatternOptions pattern;
     io::PatternWriteOptions write;

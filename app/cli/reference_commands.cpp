@@ -19,7 +19,7 @@ namespace devsurf::app {
 
 namespace {
 
-std::string millimetres(double value) {
+std::string plainMillimetres(double value) {
     return QString::number(value, 'g', 6).toStdString();
 }
 
@@ -109,9 +109,9 @@ int runImportReferenceCommand(const SubcommandArguments& args) {
     writeProject(project, output);
     std::cout << "Wrote " << output << " (reference shape '" << shapeName << "': " << points
               << " point" << (points == 1 ? "" : "s") << ", " << triangles << " triangle"
-              << (triangles == 1 ? "" : "s") << ", " << millimetres(high.x - low.x) << " x "
-              << millimetres(high.y - low.y) << " x " << millimetres(high.z - low.z) << " mm; "
-              << project.referenceShapes.size() << " in the project)\n";
+              << (triangles == 1 ? "" : "s") << ", " << plainMillimetres(high.x - low.x) << " x "
+              << plainMillimetres(high.y - low.y) << " x " << plainMillimetres(high.z - low.z)
+              << " mm; " << project.referenceShapes.size() << " in the project)\n";
     return 0;
 }
 
@@ -142,10 +142,10 @@ std::string oneSidedLine(const model::reference::OneSidedDistance& d) {
 
 void printDistanceReport(const model::reference::DistanceReport& report, std::size_t targetPoints) {
     std::cout << "Target: " << targetPoints << " points, bounding-box diagonal "
-              << millimetres(report.diagonal) << " mm\n"
+              << plainMillimetres(report.diagonal) << " mm\n"
               << "Target to surface: " << oneSidedLine(report.targetToSurface) << "\n"
               << "Surface to target: " << oneSidedLine(report.surfaceToTarget) << " (sampled every "
-              << millimetres(report.surfaceSpacing) << " mm)\n";
+              << plainMillimetres(report.surfaceSpacing) << " mm)\n";
     char line[200];
     std::snprintf(line, sizeof line,
                   "Two-sided (Hausdorff) %.4g mm; coverage %.1f %% of the target within %.4g "

@@ -20,8 +20,6 @@ namespace devsurf::app {
 
 namespace {
 
-constexpr int kExitOk = 0;
-
 // The sentence for a stopped export (the command line is English only).
 std::string shapeErrorText(const io::ShapeExportError& error, const std::string& file) {
     switch (error.code()) {

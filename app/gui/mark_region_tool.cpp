@@ -28,7 +28,7 @@ namespace devsurf::app {
 namespace {
 
 // A lasso no wider or higher than this (logical pixels) is a click: it clears the mark.
-constexpr double kClickSlack = 3.0;
+constexpr double kMarkClickSlack = 3.0;
 // While dragging, a point joins the lasso once the mouse moved this far from the last one.
 constexpr double kLassoStep = 2.0;
 
@@ -228,7 +228,7 @@ void MarkRegionTool::finishLasso(bool add) {
         bottom = std::max(bottom, p.y());
     }
     cancelLasso();
-    if (right - left <= kClickSlack && bottom - top <= kClickSlack) {
+    if (right - left <= kMarkClickSlack && bottom - top <= kMarkClickSlack) {
         if (!add && markedCount() > 0) {
             clearMark();
             emit statusMessage(tr("Mark cleared."));

@@ -20,7 +20,7 @@ namespace devsurf::app {
 namespace {
 
 // A click moves the mouse at most this far (pixels) between press and release.
-constexpr int kClickSlack = 3;
+constexpr int kMeasureClickSlack = 3;
 
 QString millimetres(double value) {
     return QLocale().toString(value, 'f', 2);
@@ -69,7 +69,7 @@ bool MeasureTool::eventFilter(QObject* watched, QEvent* event) {
     } else if (event->type() == QEvent::MouseButtonRelease && m_pressed) {
         m_pressed = false;
         const QPoint at = static_cast<QMouseEvent*>(event)->position().toPoint();
-        if ((at - m_pressAt).manhattanLength() <= kClickSlack) {
+        if ((at - m_pressAt).manhattanLength() <= kMeasureClickSlack) {
             pick(at);
         }
     }

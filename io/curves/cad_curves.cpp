@@ -32,12 +32,6 @@ namespace devsurf::io {
 
 namespace {
 
-CurveImportResult failure(CurveImportError::Code code, std::string detail = {}) {
-    CurveImportResult result;
-    result.error = CurveImportError{code, std::move(detail)};
-    return result;
-}
-
 // OpenCASCADE's readers take their settings from one global table and report on standard
 // output: one reader at a time, and only failures reported.
 std::mutex& readerMutex() {
@@ -104,7 +98,7 @@ CurveImportResult readLocked(const QString& path, CurveFormat format,
         return !options.progress || options.progress(fraction);
     };
     if (!proceed(0.0)) {
-        return failure(Code::Cancelled);
+        return curveImportFailure(Code::Cancelled);
     }
     std::unique_ptr<XSControl_Reader> reader;
     if (format == CurveFormat::Step) {
@@ -117,15 +111,15 @@ CurveImportResult readLocked(const QString& path, CurveFormat format,
     Interface_Static::SetCVal("xstep.cascade.unit", "MM");
     const QByteArray name = QFile::encodeName(path);
     if (reader->ReadFile(name.constData()) != IFSelect_RetDone) {
-        return failure(Code::Damaged, "OpenCASCADE could not read it");
+        return curveImportFailure(Code::Damaged, "OpenCASCADE could not read it");
     }
     if (!proceed(0.3)) {
-        return failure(Code::Cancelled);
+        return curveImportFailure(Code::Cancelled);
     }
     Handle(OcctProgress) progress = new OcctProgress(options.progress, 0.3, 0.4);
     reader->TransferRoots(progress->Start());
     if (progress->cancelled()) {
-        return failure(Code::Cancelled);
+        return curveImportFailure(Code::Cancelled);
     }
     const TopoDS_Shape shape = reader->OneShape();
     TopTools_IndexedMapOfShape edges;
@@ -136,7 +130,7 @@ CurveImportResult readLocked(const QString& path, CurveFormat format,
     const double tolerance = options.tolerance > 0.0 ? options.tolerance : 0.05;
     for (int i = 1; i <= edges.Extent(); ++i) {
         if (!proceed(0.7 + 0.3 * (i - 1) / edges.Extent())) {
-            return failure(Code::Cancelled);
+            return curveImportFailure(Code::Cancelled);
         }
         const TopoDS_Edge& edge = TopoDS::Edge(edges(i));
         if (BRep_Tool::Degenerated(edge) || !BRep_Tool::IsGeometric(edge)) {
@@ -170,10 +164,10 @@ CurveImportResult readLocked(const QString& path, CurveFormat format,
         }
     }
     if (result.curves.empty()) {
-        return failure(Code::NoCurves);
+        return curveImportFailure(Code::NoCurves);
     }
     if (!proceed(1.0)) {
-        return failure(Code::Cancelled);
+        return curveImportFailure(Code::Cancelled);
     }
     return result;
 }
@@ -183,7 +177,7 @@ CurveImportResult readLocked(const QString& path, CurveFormat format,
 CurveImportResult readCadCurves(const QString& path, CurveFormat format,
                                 const CurveImportOptions& options) {
     if (format != CurveFormat::Step && format != CurveFormat::Iges) {
-        return failure(CurveImportError::Code::UnknownFormat);
+        return curveImportFailure(CurveImportError::Code::UnknownFormat);
     }
     const std::lock_guard<std::mutex> lock(readerMutex());
     quietOpenCascade();
@@ -192,14 +186,14 @@ CurveImportResult readCadCurves(const QString& path, CurveFormat format,
         OCC_CATCH_SIGNALS
         return readLocked(path, format, options);
     } catch (const Standard_Failure& error) {
-        return failure(CurveImportError::Code::Damaged,
-                       error.GetMessageString() ? error.GetMessageString() : "");
+        return curveImportFailure(CurveImportError::Code::Damaged,
+                                  error.GetMessageString() ? error.GetMessageString() : "");
     } catch (const std::bad_alloc&) {
-        return failure(CurveImportError::Code::TooLarge, "not enough memory");
+        return curveImportFailure(CurveImportError::Code::TooLarge, "not enough memory");
     } catch (const std::exception& error) {
-        return failure(CurveImportError::Code::Damaged, error.what());
+        return curveImportFailure(CurveImportError::Code::Damaged, error.what());
     } catch (...) {
-        return failure(CurveImportError::Code::Damaged);
+        return curveImportFailure(CurveImportError::Code::Damaged);
     }
 }
 

@@ -5,15 +5,7 @@
 
 namespace devsurf::io {
 
-namespace {
-
-CurveImportResult failure(CurveImportError::Code code, std::string detail = {}) {
-    CurveImportResult result;
-    result.error = CurveImportError{code, std::move(detail)};
-    return result;
-}
-
-} // namespace
+namespace {} // namespace
 
 std::optional<CurveFormat> curveFormatOf(const QString& path) {
     const QString suffix = QFileInfo(path).suffix().toLower();
@@ -36,30 +28,30 @@ CurveImportResult importCurveFile(const QString& path, const CurveImportOptions&
     using Code = CurveImportError::Code;
     const std::optional<CurveFormat> format = curveFormatOf(path);
     if (!format) {
-        return failure(Code::UnknownFormat);
+        return curveImportFailure(Code::UnknownFormat);
     }
     const QFileInfo info(path);
     if (!info.exists() || !info.isFile()) {
-        return failure(Code::Unreadable, "it does not exist or is not a file");
+        return curveImportFailure(Code::Unreadable, "it does not exist or is not a file");
     }
     if (static_cast<std::uint64_t>(info.size()) > kMaxCurveFileSize) {
-        return failure(Code::TooLarge);
+        return curveImportFailure(Code::TooLarge);
     }
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        return failure(Code::Unreadable, file.errorString().toStdString());
+        return curveImportFailure(Code::Unreadable, file.errorString().toStdString());
     }
     if (*format == CurveFormat::Step || *format == CurveFormat::Iges) {
 #ifdef DEVSURF_CAD_CURVES
         file.close();
         return readCadCurves(path, *format, options);
 #else
-        return failure(Code::NotAvailable);
+        return curveImportFailure(Code::NotAvailable);
 #endif
     }
     const QByteArray bytes = file.readAll();
     if (file.error() != QFileDevice::NoError) {
-        return failure(Code::Unreadable, file.errorString().toStdString());
+        return curveImportFailure(Code::Unreadable, file.errorString().toStdString());
     }
     if (*format == CurveFormat::Svg) {
         return readSvgCurves(bytes, options);

@@ -47,6 +47,13 @@ struct CurveImportResult {
     int skipped = 0; // entities that were not curves DevSurf can read (texts, meshes, damaged)
 };
 
+// A result that carries only the error: what every reader returns when it gives up.
+inline CurveImportResult curveImportFailure(CurveImportError::Code code, std::string detail = {}) {
+    CurveImportResult result;
+    result.error = CurveImportError{code, std::move(detail)};
+    return result;
+}
+
 inline constexpr std::uint64_t kMaxCurveFileSize = 256ull * 1024 * 1024;
 // No curve is sampled to more points than this (a damaged knot vector cannot exhaust memory).
 inline constexpr std::size_t kMaxCurvePoints = 200'000;

@@ -9,10 +9,6 @@ using model::Vec3;
 
 namespace {
 
-bool finite(const Vec3& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
 double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
     const Vec3 d = b - a;
     const double length2 = d.x * d.x + d.y * d.y + d.z * d.z;
@@ -33,7 +29,7 @@ public:
     bool span(double t0, const Vec3& p0, double t1, const Vec3& p1, int depth) {
         const double tm = 0.5 * (t0 + t1);
         const Vec3 pm = nurbsPoint(m_curve, tm);
-        if (!finite(pm)) {
+        if (!pm.isFinite()) {
             return false;
         }
         if (depth < 2 || (depth < 24 && distanceToSegment(pm, p0, p1) > m_tolerance)) {
@@ -68,7 +64,7 @@ bool isValidNurbs(const Nurbs& curve) {
         }
     }
     for (std::size_t i = 0; i < n; ++i) {
-        if (!finite(curve.controlPoints[i]) ||
+        if (!curve.controlPoints[i].isFinite() ||
             (!curve.weights.empty() &&
              !(curve.weights[i] > 0.0 && std::isfinite(curve.weights[i])))) {
             return false;
@@ -123,7 +119,7 @@ std::optional<std::vector<Vec3>> sampleNurbs(const Nurbs& curve, double toleranc
     const std::size_t n = curve.controlPoints.size();
     double t0 = curve.knots[static_cast<std::size_t>(curve.degree)];
     Vec3 p0 = nurbsPoint(curve, t0);
-    if (!finite(p0)) {
+    if (!p0.isFinite()) {
         return std::nullopt;
     }
     sampler.points.push_back(p0);
@@ -133,7 +129,7 @@ std::optional<std::vector<Vec3>> sampleNurbs(const Nurbs& curve, double toleranc
             continue;
         }
         const Vec3 p1 = nurbsPoint(curve, t1);
-        if (!finite(p1) || !sampler.span(t0, p0, t1, p1, 0)) {
+        if (!p1.isFinite() || !sampler.span(t0, p0, t1, p1, 0)) {
             return std::nullopt;
         }
         t0 = t1;

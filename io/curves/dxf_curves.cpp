@@ -66,10 +66,6 @@ double millimetresPer(int insunits) {
     }
 }
 
-bool finite(const Vec3& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
 // Serves the bytes to dxflib in chunks, reporting progress per chunk; a cancel ends the
 // stream, so dxflib stops at the next read.
 class ProgressBuffer : public std::streambuf {
@@ -158,7 +154,7 @@ public:
         while (std::isfinite(t0) && std::isfinite(t1) && t1 <= t0 && t0 - t1 < 1e6) {
             t1 += 2 * M_PI;
         }
-        if (!finite(centre) || !(a > 0.0) || !std::isfinite(a) || !(d.ratio > 0.0) ||
+        if (!centre.isFinite() || !(a > 0.0) || !std::isfinite(a) || !(d.ratio > 0.0) ||
             !(d.ratio <= 1.0) || !std::isfinite(t0) || !(t1 > t0) || t1 - t0 > 2 * M_PI + 1e-9) {
             ++m_skipped;
             return;
@@ -271,13 +267,13 @@ private:
         }
         const double* d = e->getDirection();
         const Vec3 n(d[0], d[1], d[2]);
-        return finite(n) && (n.x != 0 || n.y != 0 || n.z != 0) ? n : Vec3(0, 0, 1);
+        return n.isFinite() && (n.x != 0 || n.y != 0 || n.z != 0) ? n : Vec3(0, 0, 1);
     }
 
     void add(const char* type, std::vector<Vec3> points, std::string layer = {}) {
         bool ok = points.size() >= 2;
         for (const Vec3& p : points) {
-            ok = ok && finite(p);
+            ok = ok && p.isFinite();
         }
         if (!ok) {
             ++m_skipped;
@@ -291,7 +287,7 @@ private:
     }
 
     void circle(const char* type, const Vec3& centre, double radius, double a0, double a1) {
-        if (!(radius > 0.0) || !std::isfinite(radius) || !finite(centre) || !std::isfinite(a0) ||
+        if (!(radius > 0.0) || !std::isfinite(radius) || !centre.isFinite() || !std::isfinite(a0) ||
             !std::isfinite(a1) || !(a1 > a0)) {
             ++m_skipped;
             return;
@@ -403,21 +399,15 @@ private:
     int m_skipped = 0;
 };
 
-CurveImportResult failure(CurveImportError::Code code, std::string detail = {}) {
-    CurveImportResult result;
-    result.error = CurveImportError{code, std::move(detail)};
-    return result;
-}
-
 } // namespace
 
 CurveImportResult readDxfCurves(const std::string& bytes, const CurveImportOptions& options) {
     using Code = CurveImportError::Code;
     if (bytes.size() > kMaxCurveFileSize) {
-        return failure(Code::TooLarge);
+        return curveImportFailure(Code::TooLarge);
     }
     if (const std::optional<std::string> unsafe = unsafeDxfContent(bytes)) {
-        return failure(Code::Damaged, *unsafe);
+        return curveImportFailure(Code::Damaged, *unsafe);
     }
     try {
         CurveCollector collector(options.tolerance > 0.0 ? options.tolerance : 0.05);
@@ -426,27 +416,27 @@ CurveImportResult readDxfCurves(const std::string& bytes, const CurveImportOptio
         DL_Dxf dxf;
         const bool read = dxf.in(stream, &collector);
         if (buffer.cancelled()) {
-            return failure(Code::Cancelled);
+            return curveImportFailure(Code::Cancelled);
         }
         if (!read) {
-            return failure(Code::Damaged, "dxflib could not read it");
+            return curveImportFailure(Code::Damaged, "dxflib could not read it");
         }
         CurveImportResult result;
         result.curves = collector.takeCurves();
         result.skipped = collector.skipped();
         if (result.curves.empty()) {
-            return failure(Code::NoCurves);
+            return curveImportFailure(Code::NoCurves);
         }
         if (options.progress && !options.progress(1.0)) {
-            return failure(Code::Cancelled);
+            return curveImportFailure(Code::Cancelled);
         }
         return result;
     } catch (const std::bad_alloc&) {
-        return failure(Code::TooLarge, "not enough memory");
+        return curveImportFailure(Code::TooLarge, "not enough memory");
     } catch (const std::exception& error) {
-        return failure(Code::Damaged, error.what());
+        return curveImportFailure(Code::Damaged, error.what());
     } catch (...) {
-        return failure(Code::Damaged);
+        return curveImportFailure(Code::Damaged);
     }
 }
 

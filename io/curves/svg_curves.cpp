@@ -26,12 +26,6 @@ namespace {
 
 using Code = CurveImportError::Code;
 
-CurveImportResult failure(Code code, std::string detail = {}) {
-    CurveImportResult result;
-    result.error = CurveImportError{code, std::move(detail)};
-    return result;
-}
-
 // A length attribute ("300mm", "21cm", "8.5in", "600", "600px") in mm; nullopt if it has
 // none or a relative unit (%, em), which give no absolute size.
 std::optional<double> lengthInMm(const QString& text) {
@@ -251,15 +245,15 @@ CurveImportResult readSvgCurves(const QByteArray& bytes, const CurveImportOption
     (void)quiet;
     const Prepared prepared = prepare(bytes);
     if (!prepared.problem.isEmpty()) {
-        return failure(Code::Damaged, prepared.problem.toStdString());
+        return curveImportFailure(Code::Damaged, prepared.problem.toStdString());
     }
     const double scale = prepared.scale;
     QSvgRenderer renderer;
     if (!renderer.load(prepared.drawing) || !renderer.isValid()) {
-        return failure(Code::Damaged, "the SVG renderer refused it");
+        return curveImportFailure(Code::Damaged, "the SVG renderer refused it");
     }
     if (options.progress && !options.progress(0.2)) {
-        return failure(Code::Cancelled);
+        return curveImportFailure(Code::Cancelled);
     }
     OutlineDevice device;
     {
@@ -270,7 +264,7 @@ CurveImportResult readSvgCurves(const QByteArray& bytes, const CurveImportOption
                         box.isValid() ? box : QRectF(QPointF(0, 0), renderer.defaultSize()));
     }
     if (options.progress && !options.progress(0.6)) {
-        return failure(Code::Cancelled);
+        return curveImportFailure(Code::Cancelled);
     }
     // The tolerance in user units.
     const double tolerance = std::max(options.tolerance, 1e-6) / scale;
@@ -303,7 +297,7 @@ CurveImportResult readSvgCurves(const QByteArray& bytes, const CurveImportOption
         for (int i = 0; i < path.elementCount(); ++i) {
             const QPainterPath::Element e = path.elementAt(i);
             if (!std::isfinite(e.x) || !std::isfinite(e.y)) {
-                return failure(Code::Damaged, "a coordinate is not finite");
+                return curveImportFailure(Code::Damaged, "a coordinate is not finite");
             }
             if (e.isMoveTo()) {
                 flush();
@@ -318,16 +312,16 @@ CurveImportResult readSvgCurves(const QByteArray& bytes, const CurveImportOption
                 i += 2;
             }
             if (points.size() > kMaxCurvePoints) {
-                return failure(Code::Damaged, "a curve has too many points");
+                return curveImportFailure(Code::Damaged, "a curve has too many points");
             }
         }
         flush();
     }
     if (result.curves.empty()) {
-        return failure(Code::NoCurves);
+        return curveImportFailure(Code::NoCurves);
     }
     if (options.progress && !options.progress(1.0)) {
-        return failure(Code::Cancelled);
+        return curveImportFailure(Code::Cancelled);
     }
     return result;
 }

@@ -24,10 +24,6 @@ QFont fontOf(double size, double dpi) {
     return font;
 }
 
-QColor colourOf(std::uint32_t rgb) {
-    return QColor(int(rgb >> 16) & 0xff, int(rgb >> 8) & 0xff, int(rgb) & 0xff);
-}
-
 // A short stretch of the layer's line as the tiles draw it.
 void sample(QPainter& p, const LayerStyle& style, const QLineF& line) {
     QPen pen(colourOf(style.rgb), style.strokeWidth);
@@ -75,6 +71,10 @@ QLineF middleOf(const std::vector<model::Vec2>& points) {
 }
 
 } // namespace
+
+QColor colourOf(std::uint32_t rgb) {
+    return QColor(int(rgb >> 16) & 0xff, int(rgb >> 8) & 0xff, int(rgb) & 0xff);
+}
 
 void paintLineLegend(QPainter& painter, const QRectF& box, const model::CuttingPattern& pattern,
                      double dpi) {

@@ -8,11 +8,17 @@
 
 #include "model/pattern/cutting_pattern.h"
 
+#include <QColor>
 #include <QRectF>
+
+#include <cstdint>
 
 class QPainter;
 
 namespace devsurf::io {
+
+// The colour of a layer style's 0xRRGGBB value.
+QColor colourOf(std::uint32_t rgb);
 
 // Rows of line samples with their names at the bottom of `box` (page millimetres).
 void paintLineLegend(QPainter& painter, const QRectF& box, const model::CuttingPattern& pattern,

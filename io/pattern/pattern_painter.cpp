@@ -30,10 +30,6 @@ int reportRows(const PagePlan& plan, bool firstPage) {
     return std::max(1, int((plan.content.y - 11.0 - reserved - kRowHeight) / kRowHeight));
 }
 
-QColor colourOf(std::uint32_t rgb) {
-    return QColor(int(rgb >> 16) & 0xff, int(rgb >> 8) & 0xff, int(rgb) & 0xff);
-}
-
 // Draws in millimetres from the page's top-left corner whatever the device resolution.
 class PagePainter {
 public:

@@ -9,10 +9,6 @@ using model::Vec2;
 
 namespace {
 
-double dot2(const Vec2& a, const Vec2& b) {
-    return a.x * b.x + a.y * b.y;
-}
-
 double pointSegmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
     const Vec2 ab = b - a;
     const double length2 = dot2(ab, ab);

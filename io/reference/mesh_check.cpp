@@ -21,10 +21,6 @@ namespace {
 using Code = ReferenceImportError::Code;
 using Error = std::optional<ReferenceImportError>;
 
-Error problem(Code code, std::string detail = {}) {
-    return ReferenceImportError{code, std::move(detail)};
-}
-
 bool ticks(LineReader& reader, ProgressTicker& progress, std::uint64_t size) {
     return (reader.lineNumber() & 0x3FFF) != 0 ||
            progress.at(static_cast<double>(reader.bytesRead()) / static_cast<double>(size));
@@ -55,7 +51,7 @@ Error checkObj(const std::string& path, std::uint64_t size, ProgressTicker& prog
                std::uint64_t& points, std::vector<model::Vec3>& pointNormals) {
     LineReader reader(path);
     if (!reader.isOpen()) {
-        return problem(Code::Unreadable);
+        return importProblem(Code::Unreadable);
     }
     std::uint64_t texture = 0;
     std::uint64_t normals = 0;
@@ -66,7 +62,7 @@ Error checkObj(const std::string& path, std::uint64_t size, ProgressTicker& prog
     std::string_view line;
     while (reader.next(line)) {
         if (!ticks(reader, progress, size)) {
-            return problem(Code::Cancelled);
+            return importProblem(Code::Cancelled);
         }
         splitFields(line, fields);
         if (fields.empty()) {
@@ -77,16 +73,16 @@ Error checkObj(const std::string& path, std::uint64_t size, ProgressTicker& prog
             model::Vec3 p;
             if (fields.size() < 4 || !parseNumber(fields[1], p.x) || !parseNumber(fields[2], p.y) ||
                 !parseNumber(fields[3], p.z)) {
-                return problem(reader.lineWasEnded() ? Code::Damaged : Code::Truncated,
-                               lineText(reader.lineNumber()) + " is not a point");
+                return importProblem(reader.lineWasEnded() ? Code::Damaged : Code::Truncated,
+                                     lineText(reader.lineNumber()) + " is not a point");
             }
             if (!isSane(p)) {
-                return problem(Code::NotANumber, lineText(reader.lineNumber()));
+                return importProblem(Code::NotANumber, lineText(reader.lineNumber()));
             }
             normalOfPoint.push_back(-1);
             if (++points > kMaxReferencePoints) {
-                return problem(Code::TooLarge,
-                               "more than " + std::to_string(kMaxReferencePoints) + " points");
+                return importProblem(
+                    Code::TooLarge, "more than " + std::to_string(kMaxReferencePoints) + " points");
             }
         } else if (fields[0] == "vt" || fields[0] == "vn") {
             // Likewise a normal: OpenMesh keeps an uninitialised one for a line it cannot read.
@@ -98,12 +94,12 @@ Error checkObj(const std::string& path, std::uint64_t size, ProgressTicker& prog
                                   : fields.size() >= 2 && parseNumber(fields[1], v.x) &&
                                         (fields.size() < 3 || parseNumber(fields[2], v.y));
             if (!read) {
-                return problem(reader.lineWasEnded() ? Code::Damaged : Code::Truncated,
-                               lineText(reader.lineNumber()) + " is not a " +
-                                   (normal ? "normal" : "texture coordinate"));
+                return importProblem(reader.lineWasEnded() ? Code::Damaged : Code::Truncated,
+                                     lineText(reader.lineNumber()) + " is not a " +
+                                         (normal ? "normal" : "texture coordinate"));
             }
             if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
-                return problem(Code::NotANumber, lineText(reader.lineNumber()));
+                return importProblem(Code::NotANumber, lineText(reader.lineNumber()));
             }
             ++(normal ? normals : texture);
             if (normal) {
@@ -111,9 +107,10 @@ Error checkObj(const std::string& path, std::uint64_t size, ProgressTicker& prog
             }
         } else if (fields[0] == "f") {
             if (fields.size() < 4) {
-                return problem(reader.lineWasEnded() ? Code::BadFaces : Code::Truncated,
-                               lineText(reader.lineNumber()) + " has a face of fewer than three "
-                                                               "corners");
+                return importProblem(reader.lineWasEnded() ? Code::BadFaces : Code::Truncated,
+                                     lineText(reader.lineNumber()) +
+                                         " has a face of fewer than three "
+                                         "corners");
             }
             for (std::size_t i = 1; i < fields.size(); ++i) {
                 // v, v/t, v//n or v/t/n
@@ -131,9 +128,9 @@ Error checkObj(const std::string& path, std::uint64_t size, ProgressTicker& prog
                 if (!rest.empty() || !objIndexFits(parts[0], points) ||
                     (!parts[1].empty() && !objIndexFits(parts[1], texture)) ||
                     (!parts[2].empty() && !objIndexFits(parts[2], normals))) {
-                    return problem(Code::BadFaces, lineText(reader.lineNumber()) + ": '" +
-                                                       std::string(fields[i].substr(0, 40)) +
-                                                       "' names no point of the file");
+                    return importProblem(Code::BadFaces, lineText(reader.lineNumber()) + ": '" +
+                                                             std::string(fields[i].substr(0, 40)) +
+                                                             "' names no point of the file");
                 }
                 if (!parts[2].empty()) {
                     const std::uint64_t point = objIndex(parts[0], points);
@@ -145,14 +142,14 @@ Error checkObj(const std::string& path, std::uint64_t size, ProgressTicker& prog
             }
             triangles += fields.size() - 3;
             if (triangles > kMaxReferenceTriangles) {
-                return problem(Code::TooLarge, "more than " +
-                                                   std::to_string(kMaxReferenceTriangles) +
-                                                   " triangles");
+                return importProblem(Code::TooLarge, "more than " +
+                                                         std::to_string(kMaxReferenceTriangles) +
+                                                         " triangles");
             }
         }
     }
     if (reader.tooLong()) {
-        return problem(Code::Damaged, lineText(reader.lineNumber() + 1) + " is too long");
+        return importProblem(Code::Damaged, lineText(reader.lineNumber() + 1) + " is too long");
     }
     if (!normalOfPoint.empty() && std::all_of(normalOfPoint.begin(), normalOfPoint.end(),
                                               [](std::int64_t n) { return n >= 0; })) {
@@ -170,7 +167,7 @@ Error checkObj(const std::string& path, std::uint64_t size, ProgressTicker& prog
 Error checkStlText(const std::string& path, std::uint64_t size, ProgressTicker& progress) {
     LineReader reader(path);
     if (!reader.isOpen()) {
-        return problem(Code::Unreadable);
+        return importProblem(Code::Unreadable);
     }
     enum class In { Nothing, Solid, Facet, Loop, LoopDone };
     In state = In::Nothing;
@@ -184,7 +181,7 @@ Error checkStlText(const std::string& path, std::uint64_t size, ProgressTicker& 
     };
     while (reader.next(line)) {
         if (!ticks(reader, progress, size)) {
-            return problem(Code::Cancelled);
+            return importProblem(Code::Cancelled);
         }
         splitFields(line, fields);
         if (fields.empty()) {
@@ -209,7 +206,7 @@ Error checkStlText(const std::string& path, std::uint64_t size, ProgressTicker& 
         } else if (state == In::Loop && word == "vertex") {
             fits = numbers(1, p) && ++corners <= 3;
             if (fits && !isSane(p)) {
-                return problem(Code::NotANumber, lineText(reader.lineNumber()));
+                return importProblem(Code::NotANumber, lineText(reader.lineNumber()));
             }
         } else if (state == In::Loop && word == "endloop") {
             fits = corners == 3 && fields.size() == 1;
@@ -218,23 +215,24 @@ Error checkStlText(const std::string& path, std::uint64_t size, ProgressTicker& 
             fits = word == "endfacet" && fields.size() == 1;
             state = In::Solid;
             if (++triangles > kMaxReferenceTriangles) {
-                return problem(Code::TooLarge, "more than " +
-                                                   std::to_string(kMaxReferenceTriangles) +
-                                                   " triangles");
+                return importProblem(Code::TooLarge, "more than " +
+                                                         std::to_string(kMaxReferenceTriangles) +
+                                                         " triangles");
             }
         }
         if (!fits) {
-            return problem(reader.lineWasEnded() ? Code::Damaged : Code::Truncated,
-                           lineText(reader.lineNumber()) + " is not what an STL file holds there");
+            return importProblem(reader.lineWasEnded() ? Code::Damaged : Code::Truncated,
+                                 lineText(reader.lineNumber()) +
+                                     " is not what an STL file holds there");
         }
     }
     if (reader.tooLong()) {
-        return problem(Code::Damaged, lineText(reader.lineNumber() + 1) + " is too long");
+        return importProblem(Code::Damaged, lineText(reader.lineNumber() + 1) + " is too long");
     }
     if (state != In::Nothing) {
-        return problem(Code::Truncated, "it does not end with 'endsolid'");
+        return importProblem(Code::Truncated, "it does not end with 'endsolid'");
     }
-    return triangles == 0 ? problem(Code::NoPoints) : std::nullopt;
+    return triangles == 0 ? importProblem(Code::NoPoints) : std::nullopt;
 }
 
 // Binary STL: an 80-byte header, the triangle count, 50 bytes per triangle, and nothing else.
@@ -242,7 +240,7 @@ Error checkStlText(const std::string& path, std::uint64_t size, ProgressTicker& 
 Error checkStl(const std::string& path, std::uint64_t size, ProgressTicker& progress) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
-        return problem(Code::Unreadable);
+        return importProblem(Code::Unreadable);
     }
     std::array<unsigned char, 84> head{};
     in.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
@@ -253,10 +251,10 @@ Error checkStl(const std::string& path, std::uint64_t size, ProgressTicker& prog
     }
     if (got == head.size() && size == 84 + 50 * triangles) {
         if (triangles == 0) {
-            return problem(Code::NoPoints);
+            return importProblem(Code::NoPoints);
         }
         if (triangles > kMaxReferenceTriangles) {
-            return problem(Code::TooLarge, std::to_string(triangles) + " triangles");
+            return importProblem(Code::TooLarge, std::to_string(triangles) + " triangles");
         }
         return std::nullopt;
     }
@@ -264,11 +262,12 @@ Error checkStl(const std::string& path, std::uint64_t size, ProgressTicker& prog
     const std::size_t first = start.find_first_not_of(" \t\r\n");
     if (first == std::string::npos || start.compare(first, 5, "solid") != 0) {
         if (got < head.size() || size < 84 + 50 * triangles) {
-            return problem(Code::Truncated, "it holds fewer bytes than its " +
-                                                std::to_string(triangles) + " triangles need");
+            return importProblem(Code::Truncated, "it holds fewer bytes than its " +
+                                                      std::to_string(triangles) +
+                                                      " triangles need");
         }
-        return problem(Code::Damaged, "it holds more bytes than its " + std::to_string(triangles) +
-                                          " triangles need");
+        return importProblem(Code::Damaged, "it holds more bytes than its " +
+                                                std::to_string(triangles) + " triangles need");
     }
     in.close();
     return checkStlText(path, size, progress);

@@ -14,7 +14,7 @@ namespace {
 
 using Code = ReferenceImportError::Code;
 
-bool isComment(std::string_view line) {
+bool isOffComment(std::string_view line) {
     const std::size_t at = line.find_first_not_of(" \t");
     return at == std::string_view::npos || line[at] == '#';
 }
@@ -35,7 +35,7 @@ ReferenceImportResult readOffFile(const std::string& path, std::uint64_t size,
     std::string_view line;
     auto nextLine = [&]() {
         while (reader.next(line)) {
-            if (!isComment(line)) {
+            if (!isOffComment(line)) {
                 splitFields(line.substr(0, line.find('#')), fields);
                 return true;
             }

@@ -19,10 +19,6 @@ namespace {
 using Code = ReferenceImportError::Code;
 using Error = std::optional<ReferenceImportError>;
 
-Error problem(Code code, std::string detail = {}) {
-    return ReferenceImportError{code, std::move(detail)};
-}
-
 // Buffered big or little endian binary input for PLY bodies.
 class BinaryInput {
 public:
@@ -127,7 +123,7 @@ Error checkPly(const std::string& path, std::uint64_t size, ProgressTicker& prog
                std::uint64_t& pointCount) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
-        return problem(Code::Unreadable);
+        return importProblem(Code::Unreadable);
     }
     std::string line;
     std::vector<std::string_view> fields;
@@ -141,12 +137,12 @@ Error checkPly(const std::string& path, std::uint64_t size, ProgressTicker& prog
         }
         if (++lines == 1) {
             if (line != "ply") {
-                return problem(Code::Damaged, "it does not start with 'ply'");
+                return importProblem(Code::Damaged, "it does not start with 'ply'");
             }
             continue;
         }
         if (line.size() > 4096 || lines > 10'000) {
-            return problem(Code::Damaged, "its header is damaged");
+            return importProblem(Code::Damaged, "its header is damaged");
         }
         splitFields(line, fields);
         if (fields.empty() || fields[0] == "comment" || fields[0] == "obj_info") {
@@ -162,7 +158,7 @@ Error checkPly(const std::string& path, std::uint64_t size, ProgressTicker& prog
         } else if (fields[0] == "element" && fields.size() == 3) {
             long long count = 0;
             if (!parseInteger(fields[2], count) || count < 0) {
-                return problem(Code::Damaged, "its header gives an invalid element count");
+                return importProblem(Code::Damaged, "its header gives an invalid element count");
             }
             elements.push_back({std::string(fields[1]), static_cast<std::uint64_t>(count), {}});
         } else if (fields[0] == "property" && !elements.empty() && fields.size() == 3 &&
@@ -175,29 +171,30 @@ Error checkPly(const std::string& path, std::uint64_t size, ProgressTicker& prog
             elements.back().properties.push_back(
                 {std::string(fields[4]), *plyType(fields[3]), true, *plyType(fields[2])});
         } else {
-            return problem(Code::Damaged,
-                           "its header line '" + line.substr(0, 60) + "' is not understood");
+            return importProblem(Code::Damaged,
+                                 "its header line '" + line.substr(0, 60) + "' is not understood");
         }
     }
     if (!ended) {
-        return problem(Code::Truncated, "its header does not end");
+        return importProblem(Code::Truncated, "its header does not end");
     }
     const bool ascii = format == "ascii";
     if (!ascii && format != "binary_little_endian" && format != "binary_big_endian") {
-        return problem(Code::Damaged, "its format '" + format.substr(0, 40) + "' is not known");
+        return importProblem(Code::Damaged,
+                             "its format '" + format.substr(0, 40) + "' is not known");
     }
     const auto vertex = std::find_if(elements.begin(), elements.end(),
                                      [](const PlyElement& e) { return e.name == "vertex"; });
     if (vertex == elements.end() || vertex->count == 0) {
-        return problem(Code::NoPoints);
+        return importProblem(Code::NoPoints);
     }
     if (vertex != elements.begin()) {
-        return problem(Code::Damaged, "its vertices are not its first element");
+        return importProblem(Code::Damaged, "its vertices are not its first element");
     }
     for (const char* axis : {"x", "y", "z"}) {
         if (std::none_of(vertex->properties.begin(), vertex->properties.end(),
                          [axis](const PlyProperty& p) { return !p.list && p.name == axis; })) {
-            return problem(Code::Damaged, std::string("its vertices have no ") + axis);
+            return importProblem(Code::Damaged, std::string("its vertices have no ") + axis);
         }
     }
     // Every record takes at least one byte per property (two in ASCII).
@@ -205,17 +202,17 @@ Error checkPly(const std::string& path, std::uint64_t size, ProgressTicker& prog
     for (const PlyElement& e : elements) {
         const std::uint64_t perRecord = std::max<std::size_t>(e.properties.size(), 1);
         if (e.count > size || e.count * perRecord > size) {
-            return problem(Code::Damaged, "it announces " + std::to_string(e.count) + " " +
-                                              e.name.substr(0, 40) +
-                                              " elements, more than the file can hold");
+            return importProblem(Code::Damaged, "it announces " + std::to_string(e.count) + " " +
+                                                    e.name.substr(0, 40) +
+                                                    " elements, more than the file can hold");
         }
         least += e.count * perRecord;
     }
     if (least > size) {
-        return problem(Code::Damaged, "its header announces more than the file can hold");
+        return importProblem(Code::Damaged, "its header announces more than the file can hold");
     }
     if (vertex->count > kMaxReferencePoints) {
-        return problem(Code::TooLarge, std::to_string(vertex->count) + " points");
+        return importProblem(Code::TooLarge, std::to_string(vertex->count) + " points");
     }
     const std::uint64_t points = vertex->count;
     pointCount = points;
@@ -233,9 +230,9 @@ Error checkPly(const std::string& path, std::uint64_t size, ProgressTicker& prog
         for (const PlyElement& e : elements) {
             for (std::uint64_t r = 0; r < e.count; ++r) {
                 if (!reader.next(text)) {
-                    return problem(Code::Truncated, "it holds " + std::to_string(r) + " of " +
-                                                        std::to_string(e.count) + " " +
-                                                        e.name.substr(0, 40) + " elements");
+                    return importProblem(Code::Truncated, "it holds " + std::to_string(r) + " of " +
+                                                              std::to_string(e.count) + " " +
+                                                              e.name.substr(0, 40) + " elements");
                 }
                 splitFields(text, fields);
                 std::size_t at = 0;
@@ -243,15 +240,16 @@ Error checkPly(const std::string& path, std::uint64_t size, ProgressTicker& prog
                     long long n = 1;
                     if (p.list) {
                         if (at >= fields.size() || !parseInteger(fields[at], n) || n < 0) {
-                            return problem(reader.lineWasEnded() ? Code::Damaged : Code::Truncated,
-                                           lineText(reader.lineNumber()) + " is damaged");
+                            return importProblem(reader.lineWasEnded() ? Code::Damaged
+                                                                       : Code::Truncated,
+                                                 lineText(reader.lineNumber()) + " is damaged");
                         }
                         ++at;
                         if (faceCorner(e, p)) {
                             if (n < 3) {
-                                return problem(Code::BadFaces,
-                                               lineText(reader.lineNumber()) +
-                                                   " has a face of fewer than three corners");
+                                return importProblem(Code::BadFaces,
+                                                     lineText(reader.lineNumber()) +
+                                                         " has a face of fewer than three corners");
                             }
                             triangles += static_cast<std::uint64_t>(n - 2);
                         }
@@ -259,25 +257,27 @@ Error checkPly(const std::string& path, std::uint64_t size, ProgressTicker& prog
                     for (long long k = 0; k < n; ++k, ++at) {
                         double value = 0.0;
                         if (at >= fields.size() || !parseNumber(fields[at], value)) {
-                            return problem(reader.lineWasEnded() ? Code::Damaged : Code::Truncated,
-                                           lineText(reader.lineNumber()) + " is damaged");
+                            return importProblem(reader.lineWasEnded() ? Code::Damaged
+                                                                       : Code::Truncated,
+                                                 lineText(reader.lineNumber()) + " is damaged");
                         }
                         if (p.list && faceCorner(e, p) &&
                             (value < 0 || value >= static_cast<double>(points) ||
                              value != std::floor(value))) {
-                            return problem(Code::BadFaces,
-                                           lineText(reader.lineNumber()) +
-                                               ": a face names a point the file does not have");
+                            return importProblem(
+                                Code::BadFaces,
+                                lineText(reader.lineNumber()) +
+                                    ": a face names a point the file does not have");
                         }
                     }
                 }
                 if (at != fields.size()) {
-                    return problem(Code::Damaged,
-                                   lineText(reader.lineNumber()) + " does not fit the header");
+                    return importProblem(Code::Damaged, lineText(reader.lineNumber()) +
+                                                            " does not fit the header");
                 }
                 if ((++done & 0x3FFF) == 0 && !progress.at(static_cast<double>(reader.bytesRead()) /
                                                            static_cast<double>(size))) {
-                    return problem(Code::Cancelled);
+                    return importProblem(Code::Cancelled);
                 }
             }
         }
@@ -290,17 +290,18 @@ Error checkPly(const std::string& path, std::uint64_t size, ProgressTicker& prog
                     long long n = 1;
                     if (p.list) {
                         if (!input.value(p.countType.kind, p.countType.bytes, n)) {
-                            return problem(Code::Truncated,
-                                           "its " + e.name.substr(0, 40) + " elements end early");
+                            return importProblem(Code::Truncated, "its " + e.name.substr(0, 40) +
+                                                                      " elements end early");
                         }
                         if (n < 0 || n > 1'000'000) {
-                            return problem(Code::Damaged,
-                                           "it holds a list of " + std::to_string(n) + " values");
+                            return importProblem(Code::Damaged, "it holds a list of " +
+                                                                    std::to_string(n) + " values");
                         }
                         if (faceCorner(e, p)) {
                             if (n < 3 || p.type.kind == 'f') {
-                                return problem(Code::BadFaces, "face " + std::to_string(r) +
-                                                                   " is not a polygon of points");
+                                return importProblem(Code::BadFaces,
+                                                     "face " + std::to_string(r) +
+                                                         " is not a polygon of points");
                             }
                             triangles += static_cast<std::uint64_t>(n - 2);
                         }
@@ -311,30 +312,30 @@ Error checkPly(const std::string& path, std::uint64_t size, ProgressTicker& prog
                                             ? input.value(p.type.kind, p.type.bytes, index)
                                             : input.read(skip.data(), p.type.bytes);
                         if (!ok) {
-                            return problem(Code::Truncated,
-                                           "its " + e.name.substr(0, 40) + " elements end early");
+                            return importProblem(Code::Truncated, "its " + e.name.substr(0, 40) +
+                                                                      " elements end early");
                         }
                         if (p.list && faceCorner(e, p) &&
                             (index < 0 || static_cast<std::uint64_t>(index) >= points)) {
-                            return problem(Code::BadFaces, "face " + std::to_string(r) +
-                                                               " names point " +
-                                                               std::to_string(index) + " of " +
-                                                               std::to_string(points));
+                            return importProblem(Code::BadFaces,
+                                                 "face " + std::to_string(r) + " names point " +
+                                                     std::to_string(index) + " of " +
+                                                     std::to_string(points));
                         }
                     }
                 }
                 if ((++done & 0x3FFF) == 0 && !progress.at(static_cast<double>(input.consumed()) /
                                                            static_cast<double>(size))) {
-                    return problem(Code::Cancelled);
+                    return importProblem(Code::Cancelled);
                 }
             }
         }
         if (!input.atEnd()) {
-            return problem(Code::Damaged, "it holds data after its last element");
+            return importProblem(Code::Damaged, "it holds data after its last element");
         }
     }
     if (triangles > kMaxReferenceTriangles) {
-        return problem(Code::TooLarge, std::to_string(triangles) + " triangles");
+        return importProblem(Code::TooLarge, std::to_string(triangles) + " triangles");
     }
     return std::nullopt;
 }

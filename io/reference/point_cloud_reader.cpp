@@ -11,7 +11,7 @@ namespace {
 
 using Code = ReferenceImportError::Code;
 
-bool isComment(std::string_view line) {
+bool isCloudComment(std::string_view line) {
     const std::size_t at = line.find_first_not_of(" \t");
     return at == std::string_view::npos || line[at] == '#' || line.substr(at, 2) == "//";
 }
@@ -40,7 +40,7 @@ ReferenceImportResult readPointCloud(const std::string& path, ReferenceFormat fo
             !progress.at(static_cast<double>(reader.bytesRead()) / static_cast<double>(size))) {
             return failure(Code::Cancelled);
         }
-        if (isComment(line)) {
+        if (isCloudComment(line)) {
             continue;
         }
         splitFields(line, fields);

@@ -5,12 +5,19 @@
 #include "reference_import.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace devsurf::io::reference {
 
 ReferenceImportResult failure(ReferenceImportError::Code code, std::string detail = {});
+
+// The error a file check found, as the checks return it (none: the file is sound so far).
+inline std::optional<ReferenceImportError> importProblem(ReferenceImportError::Code code,
+                                                         std::string detail = {}) {
+    return ReferenceImportError{code, std::move(detail)};
+}
 
 // A coordinate DevSurf can draw and measure: finite and within kMaxReferenceCoordinate.
 bool isSane(const model::Vec3& p);

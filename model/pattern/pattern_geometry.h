@@ -8,13 +8,6 @@
 
 namespace devsurf::model::pattern {
 
-inline double cross2(const Vec2& a, const Vec2& b) {
-    return a.x * b.y - a.y * b.x;
-}
-inline double dot2(const Vec2& a, const Vec2& b) {
-    return a.x * b.x + a.y * b.y;
-}
-
 // Signed area of a closed polygon (positive when counter-clockwise).
 double signedArea(const std::vector<Vec2>& polygon);
 

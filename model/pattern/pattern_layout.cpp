@@ -1,5 +1,6 @@
 #include "pattern_layout.h"
 
+#include "model/math_constants.h"
 #include "pattern_geometry.h"
 
 #include <algorithm>
@@ -12,7 +13,6 @@ namespace devsurf::model::pattern {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kEpsilon = 1e-9;
 
 struct Rect {

@@ -1,6 +1,7 @@
 #include "pattern_sheet.h"
 
 #include "model/derived_geometry.h"
+#include "model/math_constants.h"
 #include "model/pattern/pattern_geometry.h"
 #include "model/sheet_domain.h"
 
@@ -70,8 +71,6 @@ std::optional<PlaneMotion> fitPlaneMotion(const std::vector<Vec2>& from,
 }
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::vector<Vec2> circlePolygon(const Vec2& centre, double radius, double chordTolerance) {
     const double tolerance = std::clamp(chordTolerance, 1e-6, radius);

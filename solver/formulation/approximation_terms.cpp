@@ -14,7 +14,7 @@ namespace devsurf::solver {
 namespace {
 
 // Samples per spline interval for the start of the closest-point search.
-constexpr int kStartSamples = 8;
+constexpr int kClosestStartSamples = 8;
 // (u, v) this close to 0 or 1 lie on the border of the strip.
 constexpr double kBorder = 1e-9;
 // Above this many points, the weights shrink as 1/√points (ApproximationWeights).
@@ -41,7 +41,7 @@ ApproximationFit::ApproximationFit(const model::CompositeSurface& surface,
     }
     // Each point to the strip of its nearest sample.
     const model::reference::SurfaceSamples samples =
-        model::reference::sampleDensely({surface}, kStartSamples);
+        model::reference::sampleDensely({surface}, kClosestStartSamples);
     const model::reference::PointIndex index(samples.positions);
     int size = 0;
     for (std::size_t j = 0; j < target.points.size(); ++j) {
@@ -76,7 +76,7 @@ void ApproximationFit::refresh(const model::CompositeSurface& current) {
         return;
     }
     const model::reference::SurfaceSamples samples =
-        model::reference::sampleDensely({current}, kStartSamples);
+        model::reference::sampleDensely({current}, kClosestStartSamples);
     // Per strip: its samples and a KD-tree on them.
     struct StripSamples {
         model::Strip strip;

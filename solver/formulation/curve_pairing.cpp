@@ -11,7 +11,7 @@ namespace devsurf::solver {
 namespace {
 
 // Closest-point search: samples per interval for the start, then Newton steps on t.
-constexpr int kStartSamples = 16;
+constexpr int kPairingStartSamples = 16;
 constexpr int kNewtonSteps = 20;
 // t this close to 0 or 1 is an end of the curve.
 constexpr double kEnd = 1e-9;
@@ -24,7 +24,7 @@ model::BSplineCurve curveOf(const model::CompositeSurface& surface, model::EdgeI
 // The parameter of the point of `curve` nearest p: the nearest of dense samples, refined by
 // Newton's method on ⟨c(t) − p, c′(t)⟩ = 0 within [0, 1].
 double closestParameter(const model::BSplineCurve& curve, int intervals, const model::Vec3& p) {
-    const int count = kStartSamples * intervals;
+    const int count = kPairingStartSamples * intervals;
     double best = 0.0;
     double bestDistance = 1e300;
     for (int i = 0; i <= count; ++i) {

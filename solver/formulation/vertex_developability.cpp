@@ -1,5 +1,6 @@
 #include "solver/formulation/vertex_developability.h"
 
+#include "model/math_constants.h"
 #include "solver/core/term.h"
 #include "solver/quality/vertex_stars.h"
 
@@ -16,7 +17,7 @@ model::Vec3 valueAt(const std::vector<double>& state, int offset) {
     return {state[o], state[o + 1], state[o + 2]};
 }
 
-constexpr double kPi = 3.14159265358979323846;
+using devsurf::model::kPi;
 
 struct StarOffsets {
     int centre = 0;
@@ -78,11 +79,6 @@ int creaseThrough(const VertexStar& star) {
         }
     }
     return -1;
-}
-
-// The angle between a and b in [0, π].
-double angleBetween(const model::Vec3& a, const model::Vec3& b) {
-    return std::atan2(cross(a, b).norm(), dot(a, b));
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #include "solver/quality/quality_measures.h"
 
 #include "model/derived_geometry.h"
+#include "model/math_constants.h"
 #include "model/sampled_mesh.h"
 #include "model/strip.h"
 
@@ -19,11 +20,7 @@ using model::Vec3;
 
 namespace {
 
-constexpr double kTwoPi = 6.28318530717958647692;
-
-double angleBetween(const Vec3& u, const Vec3& v) {
-    return std::atan2(cross(u, v).norm(), dot(u, v));
-}
+using devsurf::model::kTwoPi;
 
 // δ of a quad p0 p1 p2 p3: distance of the diagonal lines p0p2 and p1p3 over the mean of the
 // two shortest edges. Returns -1 for a quad whose diagonals are parallel (degenerate).
@@ -217,6 +214,11 @@ developabilityByFace(const model::CompositeSurface& surface, int samplesPerInter
     std::sort(result.begin(), result.end(),
               [](const auto& a, const auto& b) { return a.second > b.second; });
     return result;
+}
+
+double worstDevelopability(const model::CompositeSurface& surface) {
+    const auto faces = developabilityByFace(surface);
+    return faces.empty() ? 0.0 : faces.front().second;
 }
 
 } // namespace devsurf::solver

@@ -43,6 +43,9 @@ QualityMeasures measureQuality(const model::CompositeSurface& surface,
 std::vector<std::pair<model::FaceId, double>>
 developabilityByFace(const model::CompositeSurface& surface, int samplesPerInterval = 20);
 
+// The largest of developabilityByFace's residuals (0 for a surface without strip patches).
+double worstDevelopability(const model::CompositeSurface& surface);
+
 // The developability of one strip patch as the Solver panel and the 3D view's colouring report it:
 // the normalised residual at samplesPerInterval midpoints per spline interval; `worst` is their
 // maximum (developabilityByFace's value), and segments[i] the maximum of the samples with u in

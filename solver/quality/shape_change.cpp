@@ -30,10 +30,6 @@ Vec3 faceNormal(const model::SampledMesh& mesh, const std::vector<int>& face) {
     return length > 0.0 ? normal / length : normal;
 }
 
-double angleBetween(const Vec3& u, const Vec3& v) {
-    return std::atan2(cross(u, v).norm(), dot(u, v));
-}
-
 // The faces on either side of every mesh edge (an edge with one face maps to {f, -1}).
 std::map<std::pair<int, int>, std::pair<int, int>> edgeFaces(const model::SampledMesh& mesh) {
     std::map<std::pair<int, int>, std::pair<int, int>> result;

@@ -1,5 +1,6 @@
 #include "solver/quality/vertex_stars.h"
 
+#include "model/math_constants.h"
 #include "model/model_error.h"
 
 #include <cmath>
@@ -8,15 +9,7 @@
 
 namespace devsurf::solver {
 
-namespace {
-
-constexpr double kTwoPi = 6.283185307179586476925;
-
-double angleBetween(const model::Vec3& a, const model::Vec3& b) {
-    return std::atan2(cross(a, b).norm(), dot(a, b));
-}
-
-} // namespace
+using devsurf::model::kTwoPi;
 
 std::vector<VertexStar> creaseVertexStars(const model::CompositeSurface& surface) {
     // For every vertex the (next, previous) neighbours of each face corner at it: the face's

@@ -31,12 +31,6 @@ constexpr double kPartwayStarDefect = 1e-6;
 // with where the press was better: a partial drag is kept only if it ends developable.
 constexpr double kPartwayDevelopability = 1e-5;
 
-// The largest normalised developability residual sampled over the surface's strips.
-double worstDevelopability(const model::CompositeSurface& surface) {
-    const auto faces = developabilityByFace(surface);
-    return faces.empty() ? 0.0 : faces.front().second;
-}
-
 } // namespace
 
 bool partwayFits(std::chrono::steady_clock::duration releaseStep) {

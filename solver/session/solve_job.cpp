@@ -31,10 +31,6 @@ namespace devsurf::solver {
 
 namespace {
 
-bool isFinite(const model::Vec3& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
 bool allFinite(const model::CompositeSurface& surface) {
     return model::allCoordinatesFinite(surface);
 }
@@ -152,13 +148,6 @@ SessionOptions optionsFor(const JobRequest& request, int surface, bool damped = 
         }
     }
     return options;
-}
-
-// The largest normalised developability residual sampled over the surface's strips (0 for a
-// surface without strips).
-double worstDevelopability(const model::CompositeSurface& surface) {
-    const auto faces = developabilityByFace(surface);
-    return faces.empty() ? 0.0 : faces.front().second;
 }
 
 // Whether an approximation's pull failed, so that the damped recipe runs: it stopped, it
@@ -389,7 +378,7 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
                 }
             }
             for (const VertexHandle& handle : handles) {
-                if (!isFinite(handle.target)) {
+                if (!handle.target.isFinite()) {
                     return fail(targetFailure(key, handle.vertex, model::kInvalidId, -1));
                 }
                 session->setHandleTarget(handle.vertex, handle.target);

@@ -16,21 +16,17 @@ namespace devsurf::solver {
 
 namespace {
 
-bool isFinite(const model::Vec3& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
 // Throws if a coordinate of the surface is not finite (the solver would only fail later).
 void requireFiniteGeometry(const model::CompositeSurface& surface) {
     for (const auto& [id, position] : surface.vertices()) {
-        if (!isFinite(position)) {
+        if (!position.isFinite()) {
             throw model::ModelError(
                 model::vertexProblem(model::ProblemCode::PositionNotFinite, id));
         }
     }
     for (const auto& [id, edge] : surface.edges()) {
         for (const model::Vec3& point : edge.controlPoints) {
-            if (!isFinite(point)) {
+            if (!point.isFinite()) {
                 throw model::ModelError(
                     model::edgeProblem(model::ProblemCode::ControlPointNotFinite, id));
             }
@@ -133,7 +129,7 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
             throw model::ModelError(model::elementProblem(model::ProblemCode::Missing,
                                                           model::Element::Vertex, handle.vertex));
         }
-        if (!isFinite(handle.target)) {
+        if (!handle.target.isFinite()) {
             throw std::invalid_argument("the target of vertex " + std::to_string(handle.vertex) +
                                         " is not a finite point.");
         }
@@ -144,7 +140,7 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
         m_pulled.push_back(handle.vertex);
     }
     for (const ControlPointHandle& handle : pulledControlPoints) {
-        if (!isFinite(handle.target)) {
+        if (!handle.target.isFinite()) {
             throw std::invalid_argument("the target of control point " +
                                         std::to_string(handle.index) + " of edge " +
                                         std::to_string(handle.edge) + " is not a finite point.");
@@ -214,7 +210,7 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
 SolveSession::~SolveSession() = default;
 
 bool SolveSession::setHandleTarget(model::VertexId vertex, const model::Vec3& target) {
-    if (!isFinite(target) ||
+    if (!target.isFinite() ||
         std::find(m_pulled.begin(), m_pulled.end(), vertex) == m_pulled.end()) {
         return false;
     }
@@ -227,7 +223,7 @@ bool SolveSession::setSheetHandleTarget(model::VertexId vertex, const model::Vec
 }
 
 bool SolveSession::setControlPointTarget(model::EdgeId edge, int index, const model::Vec3& target) {
-    return isFinite(target) && m_formulation->setControlPointTarget(edge, index, target);
+    return target.isFinite() && m_formulation->setControlPointTarget(edge, index, target);
 }
 
 Summary SolveSession::step(int n, const std::atomic<bool>* cancel,

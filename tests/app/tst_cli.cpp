@@ -21,10 +21,7 @@ using namespace devsurf;
 namespace {
 
 using Run = test::CliRun;
-
-Run cli(const QStringList& arguments) {
-    return test::runCli(arguments);
-}
+using test::runCli;
 
 } // namespace
 
@@ -36,31 +33,31 @@ class TstCli : public QObject {
 
 private slots:
     void helpAndVersion() {
-        Run run = cli({"--help"});
+        Run run = runCli({"--help"});
         QCOMPARE(run.exitCode, 0);
         QVERIFY(run.out.contains("export-json"));
-        run = cli({"info", "--help"});
+        run = runCli({"info", "--help"});
         QCOMPARE(run.exitCode, 0);
-        run = cli({"--version"});
+        run = runCli({"--version"});
         QCOMPARE(run.exitCode, 0);
         QVERIFY(run.out.startsWith("devsurf-cli "));
     }
 
     void pinAndListVertices() {
         const QString file = path("pin.devsurf");
-        QCOMPARE(cli({"example", "sheet", "-o", file}).exitCode, 0);
+        QCOMPARE(runCli({"example", "sheet", "-o", file}).exitCode, 0);
         const QString pinned = path("pinned.devsurf");
-        Run run = cli({"pin", file, "--vertices", "0,3,12", "-o", pinned});
+        Run run = runCli({"pin", file, "--vertices", "0,3,12", "-o", pinned});
         QCOMPARE(run.exitCode, 0);
         QCOMPARE(io::loadProjectFile(pinned).surfaces[0].pinnedVertices(),
                  (std::set<model::VertexId>{0, 3, 12}));
-        run = cli({"pin", pinned, "--vertices", "3", "--unpin", "-o", pinned});
+        run = runCli({"pin", pinned, "--vertices", "3", "--unpin", "-o", pinned});
         QCOMPARE(run.exitCode, 0);
         QCOMPARE(io::loadProjectFile(pinned).surfaces[0].pinnedVertices(),
                  (std::set<model::VertexId>{0, 12}));
 
         // The listing as JSON: every vertex with its position, pin and boundary flag.
-        run = cli({"info", pinned, "--vertices", "--edges", "--json"});
+        run = runCli({"info", pinned, "--vertices", "--edges", "--json"});
         QCOMPARE(run.exitCode, 0);
         const QJsonObject surface =
             QJsonDocument::fromJson(run.out.toUtf8()).object()["surfaces"].toArray()[0].toObject();
@@ -85,21 +82,21 @@ private slots:
             QVERIFY(std::abs(e["foldAngle"].toDouble()) < 0.1);
         }
         QCOMPARE(creases, 6); // two interior curves of three S-edges each
-        run = cli({"info", pinned, "--vertices"});
+        run = runCli({"info", pinned, "--vertices"});
         QCOMPARE(run.exitCode, 0);
         QVERIFY(run.out.contains("    0 0 0 0 pinned boundary\n"));
         QVERIFY(run.out.contains("    5 100 100 0 free interior\n"));
 
         // Bad ids: one sentence naming them, the output untouched.
-        run = cli({"pin", file, "--vertices", "0,99", "-o", path("never.devsurf")});
+        run = runCli({"pin", file, "--vertices", "0,99", "-o", path("never.devsurf")});
         QCOMPARE(run.exitCode, 2);
         QVERIFY(run.err.contains("99"));
         QCOMPARE(run.err.count('\n'), 1);
         QVERIFY(!QFile::exists(path("never.devsurf")));
-        run = cli({"pin", file, "--vertices", "a,b", "-o", path("never.devsurf")});
+        run = runCli({"pin", file, "--vertices", "a,b", "-o", path("never.devsurf")});
         QCOMPARE(run.exitCode, 1);
-        QCOMPARE(cli({"pin", file, "-o", path("never.devsurf")}).exitCode, 1);
-        QCOMPARE(cli({"info", file, "--json"}).exitCode, 1);
+        QCOMPARE(runCli({"pin", file, "-o", path("never.devsurf")}).exitCode, 1);
+        QCOMPARE(runCli({"info", file, "--json"}).exitCode, 1);
     }
 
     void badUsageExitsWithOne() {
@@ -114,7 +111,7 @@ private slots:
                                 {"info", "a", "b"},
                                 {"export-json", path("x.devsurf")},
                                 {"validate", "--bogus", "x"}}) {
-            const Run run = cli(args);
+            const Run run = runCli(args);
             QVERIFY2(run.exitCode == 1, qPrintable(args.join(' ')));
             QVERIFY(run.err.startsWith("devsurf-cli: "));
             QCOMPARE(run.err.count('\n'), 1);
@@ -123,11 +120,11 @@ private slots:
 
     void exampleInfoValidateExport() {
         const QString file = path("a.devsurf");
-        Run run = cli({"example", "annulus", "-o", file});
+        Run run = runCli({"example", "annulus", "-o", file});
         QCOMPARE(run.exitCode, 0);
         QVERIFY(io::loadProjectFile(file) == model::makeExample("annulus"));
 
-        run = cli({"info", file});
+        run = runCli({"info", file});
         QCOMPARE(run.exitCode, 0);
         QVERIFY(run.out.contains(
             "Faces: 48 (48 SRSR strips, 0 SRS strips, 0 SRR cones, 0 planar faces)"));
@@ -136,27 +133,27 @@ private slots:
         QVERIFY(run.out.contains("Vertices: 56"));
         QVERIFY(run.out.contains("Edges: 56 S, 48 R"));
 
-        run = cli({"validate", file});
+        run = runCli({"validate", file});
         QCOMPARE(run.exitCode, 0);
         QVERIFY(run.out.contains("valid"));
 
         const QString json = path("a.json");
-        run = cli({"export-json", file, "-o", json, "--samples", "3"});
+        run = runCli({"export-json", file, "-o", json, "--samples", "3"});
         QCOMPARE(run.exitCode, 0);
         QFile jsonFile(json);
         QVERIFY(jsonFile.open(QIODevice::ReadOnly));
         const QJsonDocument doc = QJsonDocument::fromJson(jsonFile.readAll());
         QCOMPARE(doc.object()["format"].toString(), QString("devsurf-interchange"));
 
-        run = cli({"example", "mixed", "--size", "3", "-o", path("m.devsurf")});
+        run = runCli({"example", "mixed", "--size", "3", "-o", path("m.devsurf")});
         QCOMPARE(run.exitCode, 0);
-        run = cli({"info", path("m.devsurf")});
+        run = runCli({"info", path("m.devsurf")});
         QVERIFY(run.out.contains("1 SRSR strip, 1 SRS strip, 1 SRR cone, 1 planar face"));
     }
 
     void damagedInputExitsWithTwo() {
         const QString file = path("d.devsurf");
-        QCOMPARE(cli({"example", "sheet", "-o", file}).exitCode, 0);
+        QCOMPARE(runCli({"example", "sheet", "-o", file}).exitCode, 0);
         QFile f(file);
         QVERIFY(f.open(QIODevice::ReadWrite));
         QByteArray bytes = f.readAll();
@@ -169,14 +166,14 @@ private slots:
             if (QString(command) == "export-json") {
                 args << "-o" << path("d.json");
             }
-            const Run run = cli(args);
+            const Run run = runCli(args);
             QCOMPARE(run.exitCode, 2);
             QVERIFY(run.err.contains("d.devsurf"));
             QVERIFY(run.err.contains("checksum"));
             QCOMPARE(run.err.count('\n'), 1);
         }
         QVERIFY(!QFile::exists(path("d.json")));
-        const Run missing = cli({"info", path("nothing-here.devsurf")});
+        const Run missing = runCli({"info", path("nothing-here.devsurf")});
         QCOMPARE(missing.exitCode, 2);
         QVERIFY(missing.err.contains("nothing-here.devsurf"));
     }
@@ -193,11 +190,11 @@ private slots:
         const std::string bytes = io::encodeProject(project);
         f.write(bytes.data(), static_cast<qint64>(bytes.size()));
         f.close();
-        const Run run = cli({"validate", file});
+        const Run run = runCli({"validate", file});
         QCOMPARE(run.exitCode, 2);
         QVERIFY(run.err.contains("Patch 0 is labelled RRSR"));
         QVERIFY(run.err.contains("Patch 3 is labelled"));
-        QCOMPARE(cli({"info", file}).exitCode, 2);
+        QCOMPARE(runCli({"info", file}).exitCode, 2);
     }
 
     void allZeroCoordinatesAreRefusedEverywhere() {
@@ -220,13 +217,13 @@ private slots:
         const std::string bytes = io::encodeProject(project);
         f.write(bytes.data(), static_cast<qint64>(bytes.size()));
         f.close();
-        const Run run = cli({"validate", file});
+        const Run run = runCli({"validate", file});
         QCOMPARE(run.exitCode, 2);
         const QString first = run.err.section('\n', 0, 0);
         QVERIFY2(first.contains("zero.devsurf"), qPrintable(first));
         QVERIFY(run.err.contains("Patch 0 has zero area."));
         QVERIFY(run.err.contains("has zero length."));
-        const Run solve = cli({"solve", file, "-o", path("zero-solved.devsurf")});
+        const Run solve = runCli({"solve", file, "-o", path("zero-solved.devsurf")});
         QCOMPARE(solve.exitCode, 2);
         QVERIFY(solve.err.contains("zero.devsurf"));
         QVERIFY(!QFile::exists(path("zero-solved.devsurf")));
@@ -234,9 +231,10 @@ private slots:
 
     void solvePrintsOneLinePerIteration() {
         const QString file = path("solve.devsurf");
-        QCOMPARE(cli({"example", "annulus", "-o", file}).exitCode, 0);
+        QCOMPARE(runCli({"example", "annulus", "-o", file}).exitCode, 0);
         const QString out = path("solved.devsurf");
-        const Run run = cli({"solve", file, "--perturb", "0.001", "--iterations", "3", "-o", out});
+        const Run run =
+            runCli({"solve", file, "--perturb", "0.001", "--iterations", "3", "-o", out});
         QCOMPARE(run.exitCode, 0);
         const QStringList lines = run.out.split('\n', Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 10);
@@ -290,22 +288,22 @@ private slots:
             }
             return match.hasMatch() ? patches : std::set<int>{};
         };
-        Run run = cli({"solve", file, "--iterations", "2", "-o", path("band-solved.devsurf")});
+        Run run = runCli({"solve", file, "--iterations", "2", "-o", path("band-solved.devsurf")});
         QCOMPARE(run.exitCode, 0);
         std::set<int> patches = namedPatches(run.out);
         QVERIFY2(!patches.empty(), qPrintable(run.out));
         for (int face : patches) {
             QVERIFY(project.surfaces.front().hasFace(static_cast<model::FaceId>(face)));
         }
-        run = cli({"drag", file, "--vertices", "0", "--by", "0,0,5", "--steps", "2", "--after", "2",
-                   "-o", path("band-dragged.devsurf")});
+        run = runCli({"drag", file, "--vertices", "0", "--by", "0,0,5", "--steps", "2", "--after",
+                      "2", "-o", path("band-dragged.devsurf")});
         QCOMPARE(run.exitCode, 0);
         QVERIFY2(!namedPatches(run.out).empty(), qPrintable(run.out));
     }
 
     void creaseConditionsAreSetListedAndSolved() {
         const QString file = path("annulus-crease.devsurf");
-        QCOMPARE(cli({"example", "annulus", "-o", file}).exitCode, 0);
+        QCOMPARE(runCli({"example", "annulus", "-o", file}).exitCode, 0);
         const model::CompositeSurface surface = io::loadProjectFile(file).surfaces[0];
         model::EdgeId crease = model::kInvalidId;
         model::EdgeId boundary = model::kInvalidId;
@@ -315,35 +313,35 @@ private slots:
             }
         }
         const QString out = path("creased.devsurf");
-        Run run = cli({"crease", file, "--edges", QString::number(crease), "--condition",
-                       "curved-fold", "-o", out});
+        Run run = runCli({"crease", file, "--edges", QString::number(crease), "--condition",
+                          "curved-fold", "-o", out});
         QCOMPARE(run.exitCode, 0);
         QCOMPARE(io::loadProjectFile(out).surfaces[0].edge(crease).condition,
                  model::CreaseCondition::CurvedFold);
-        run = cli({"info", out, "--edges"});
+        run = runCli({"info", out, "--edges"});
         QVERIFY(run.out.contains(QString("    %1 S ").arg(crease)));
         QVERIFY(run.out.contains("crease curved-fold F "));
         // The flat annulus satisfies the condition: solving keeps it as it is.
-        QCOMPARE(cli({"solve", out, "-o", path("creased-solved.devsurf")}).exitCode, 0);
+        QCOMPARE(runCli({"solve", out, "-o", path("creased-solved.devsurf")}).exitCode, 0);
         // A boundary curve is no crease (input error, exit 2); a bad or unsolved condition and
         // missing options are usage errors (exit 1); nothing is written.
         const QString never = path("never-creased.devsurf");
-        run = cli({"crease", file, "--edges", QString::number(boundary), "--condition", "geodesic",
-                   "-o", never});
+        run = runCli({"crease", file, "--edges", QString::number(boundary), "--condition",
+                      "geodesic", "-o", never});
         QCOMPARE(run.exitCode, 2);
         QVERIFY(run.err.contains(QString::number(boundary)));
         QCOMPARE(run.err.count('\n'), 1);
-        QCOMPARE(cli({"crease", file, "--edges", QString::number(crease), "--condition", "folded",
-                      "-o", never})
+        QCOMPARE(runCli({"crease", file, "--edges", QString::number(crease), "--condition",
+                         "folded", "-o", never})
                      .exitCode,
                  1);
-        QCOMPARE(cli({"crease", file, "--condition", "none", "-o", never}).exitCode, 1);
+        QCOMPARE(runCli({"crease", file, "--condition", "none", "-o", never}).exitCode, 1);
         QVERIFY(!QFile::exists(never));
     }
 
     void straightConditionAndSmoothRulingsAreSetAndListed() {
         const QString file = path("sheet-smooth.devsurf");
-        QCOMPARE(cli({"example", "sheet", "-o", file}).exitCode, 0);
+        QCOMPARE(runCli({"example", "sheet", "-o", file}).exitCode, 0);
         const model::CompositeSurface surface = io::loadProjectFile(file).surfaces[0];
         model::EdgeId crease = model::kInvalidId;
         model::EdgeId inner = model::kInvalidId;
@@ -357,23 +355,23 @@ private slots:
             }
         }
         const QString straight = path("sheet-straight.devsurf");
-        QCOMPARE(cli({"crease", file, "--edges", QString::number(crease), "--condition", "straight",
-                      "-o", straight})
+        QCOMPARE(runCli({"crease", file, "--edges", QString::number(crease), "--condition",
+                         "straight", "-o", straight})
                      .exitCode,
                  0);
         QCOMPARE(io::loadProjectFile(straight).surfaces[0].edge(crease).condition,
                  model::CreaseCondition::Straight);
         const QString smooth = path("sheet-smooth-on.devsurf");
-        Run run = cli({"smooth", straight, "--edges", QString::number(inner), "-o", smooth});
+        Run run = runCli({"smooth", straight, "--edges", QString::number(inner), "-o", smooth});
         QCOMPARE(run.exitCode, 0);
         QVERIFY(io::loadProjectFile(smooth).surfaces[0].edge(inner).smooth);
-        run = cli({"info", smooth, "--edges"});
+        run = runCli({"info", smooth, "--edges"});
         QVERIFY2(run.out.contains(QString("    %1 R ").arg(inner)), qPrintable(run.out));
         QVERIFY(run.out.contains(" smooth\n"));
-        run = cli({"info", smooth, "--edges", "--json"});
+        run = runCli({"info", smooth, "--edges", "--json"});
         QVERIFY(run.out.contains("\"smooth\": true"));
         const QString sharp = path("sheet-smooth-off.devsurf");
-        QCOMPARE(cli({"smooth", smooth, "--edges", QString::number(inner), "--off", "-o", sharp})
+        QCOMPARE(runCli({"smooth", smooth, "--edges", QString::number(inner), "--off", "-o", sharp})
                      .exitCode,
                  0);
         QVERIFY(io::loadProjectFile(sharp).surfaces[0] ==
@@ -381,22 +379,22 @@ private slots:
         // A boundary ruling and a curve are refused (input error, exit 2), nothing written.
         const QString never = path("never-smooth.devsurf");
         for (model::EdgeId edge : {outer, crease}) {
-            run = cli({"smooth", file, "--edges", QString::number(edge), "-o", never});
+            run = runCli({"smooth", file, "--edges", QString::number(edge), "-o", never});
             QCOMPARE(run.exitCode, 2);
             QVERIFY(run.err.contains(QString::number(edge)));
         }
-        QCOMPARE(cli({"smooth", file, "-o", never}).exitCode, 1);
+        QCOMPARE(runCli({"smooth", file, "-o", never}).exitCode, 1);
         QVERIFY(!QFile::exists(never));
     }
 
     void dragMovesTheVerticesAndKeepsThePins() {
         const QString file = path("drag.devsurf");
-        QCOMPARE(cli({"example", "annulus", "-o", file}).exitCode, 0);
+        QCOMPARE(runCli({"example", "annulus", "-o", file}).exitCode, 0);
         const model::CompositeSurface before = io::loadProjectFile(file).surfaces[0];
         // The outer boundary of the annulus is pinned, an inner boundary vertex lifted 10 mm.
         const QString out = path("dragged.devsurf");
-        Run run = cli({"drag", file, "--vertices", "0", "--by", "0,0,10", "--pin",
-                       "48,49,50,51,52,53,54,55", "--steps", "5", "--after", "3", "-o", out});
+        Run run = runCli({"drag", file, "--vertices", "0", "--by", "0,0,10", "--pin",
+                          "48,49,50,51,52,53,54,55", "--steps", "5", "--after", "3", "-o", out});
         QCOMPARE(run.exitCode, 0);
         QCOMPARE(run.out.count(QRegularExpression("^step +\\d+/5  residual \\S+  time \\S+ ms  ",
                                                   QRegularExpression::MultilineOption)),
@@ -417,17 +415,17 @@ private slots:
         }
 
         // A rotation about the vertical axis through the centre.
-        run = cli({"drag", file, "--vertices", "0,1", "--rotate", "0,0,0,0,0,1,5", "--steps", "2",
-                   "--after", "1", "-o", path("rotated.devsurf")});
+        run = runCli({"drag", file, "--vertices", "0,1", "--rotate", "0,0,0,0,0,1,5", "--steps",
+                      "2", "--after", "1", "-o", path("rotated.devsurf")});
         QCOMPARE(run.exitCode, 0);
 
         // Bad ids and pinned vertices: exit 2, one sentence naming them, nothing written.
         const QString never = path("never.devsurf");
-        run = cli({"drag", file, "--vertices", "0,999", "--by", "0,0,1", "-o", never});
+        run = runCli({"drag", file, "--vertices", "0,999", "--by", "0,0,1", "-o", never});
         QCOMPARE(run.exitCode, 2);
         QVERIFY(run.err.contains("999"));
         QCOMPARE(run.err.count('\n'), 1);
-        run = cli({"drag", out, "--vertices", "48", "--by", "0,0,1", "-o", never});
+        run = runCli({"drag", out, "--vertices", "48", "--by", "0,0,1", "-o", never});
         QCOMPARE(run.exitCode, 2);
         QVERIFY(run.err.contains("pinned"));
         QVERIFY(!QFile::exists(never));
@@ -444,7 +442,7 @@ private slots:
                  {"drag", file, "--vertices", "0", "--by", "0,0,1", "--surface", "2", "-o", never},
                  {"drag", file, "--vertices", "0", "--by", "0,0,1", "--pin", "0", "-o", never},
                  {"drag", file, "--vertices", "0", "--by", "0,0,1"}}) {
-            run = cli(args);
+            run = runCli(args);
             QVERIFY2(run.exitCode == 1, qPrintable(args.join(' ')));
             QCOMPARE(run.err.count('\n'), 1);
         }
@@ -456,24 +454,24 @@ private slots:
         // inner vertex lifted 100 mm bends without stretching its rulings. Measured from the
         // vertices: the shortest R-edge keeps 0.98 of its length; with --stretch 0.07.
         const QString file = path("keep.devsurf");
-        QCOMPARE(cli({"example", "annulus", "-o", file}).exitCode, 0);
+        QCOMPARE(runCli({"example", "annulus", "-o", file}).exitCode, 0);
         const model::CompositeSurface before = io::loadProjectFile(file).surfaces[0];
         const QStringList drag = {"drag", file,      "--vertices", "0",
                                   "--by", "0,0,100", "--pin",      "48,49,50,51,52,53,54,55"};
         const QString kept = path("kept.devsurf");
-        Run run = cli(drag + QStringList{"-o", kept});
+        Run run = runCli(drag + QStringList{"-o", kept});
         QCOMPARE(run.exitCode, 0);
         QVERIFY2(run.out.contains("keeping lengths in 20 steps, then 20 iterations"),
                  qPrintable(run.out.left(200)));
         const QString stretched = path("stretched.devsurf");
-        run = cli(drag + QStringList{"--stretch", "-o", stretched});
+        run = runCli(drag + QStringList{"--stretch", "-o", stretched});
         QCOMPARE(run.exitCode, 0);
         QVERIFY2(run.out.contains("dragging 1 vertex in 20 steps, then 10 iterations"),
                  qPrintable(run.out.left(200)));
         // Naming the default explicitly is the default, bit for bit: the factorisation is
         // chosen by the structure alone (FactorizationMethod::Calibrated), never by timing.
         const QString named = path("named.devsurf");
-        QCOMPARE(cli(drag + QStringList{"--keep-lengths", "-o", named}).exitCode, 0);
+        QCOMPARE(runCli(drag + QStringList{"--keep-lengths", "-o", named}).exitCode, 0);
         QVERIFY(io::loadProjectFile(named).surfaces[0] == io::loadProjectFile(kept).surfaces[0]);
 
         auto shortestRuling = [&](const model::CompositeSurface& after) {
@@ -502,11 +500,11 @@ private slots:
         // middle rises 85 mm (the corners keep the flat sheet's distances). The replay is the
         // --stretch drag, bit for bit.
         const QString fig8 = path("fig8.devsurf");
-        QCOMPARE(cli({"example", "fig8", "-o", fig8}).exitCode, 0);
+        QCOMPARE(runCli({"example", "fig8", "-o", fig8}).exitCode, 0);
         const QStringList lift = {"drag", fig8,     "--vertices", "5,6,9,10",
                                   "--by", "0,0,85", "--pin",      "0,3,12,15"};
         const QString automatic = path("fig8-automatic.devsurf");
-        run = cli(lift + QStringList{"-o", automatic});
+        run = runCli(lift + QStringList{"-o", automatic});
         QCOMPARE(run.exitCode, 0);
         QVERIFY2(run.out.contains(QRegularExpression(
                      "dragging 4 vertices keeping lengths in 20 steps, then 20 iterations; 4 "
@@ -519,21 +517,21 @@ private slots:
                                  "and 12, which are as far apart as in the flat sheet, so "
                                  "bending cannot move it; only stretching can.\n"));
         const QString stretchedFig8 = path("fig8-stretched.devsurf");
-        run = cli(lift + QStringList{"--stretch", "-o", stretchedFig8});
+        run = runCli(lift + QStringList{"--stretch", "-o", stretchedFig8});
         QCOMPARE(run.exitCode, 0);
         QVERIFY(!run.out.contains("keeping lengths") && !run.out.contains("replaying") &&
                 !run.out.contains("bending cannot"));
         QVERIFY(io::loadProjectFile(automatic).surfaces[0] ==
                 io::loadProjectFile(stretchedFig8).surfaces[0]);
-        run = cli(lift + QStringList{"--keep-lengths", "-o", path("fig8-kept.devsurf")});
+        run = runCli(lift + QStringList{"--keep-lengths", "-o", path("fig8-kept.devsurf")});
         QCOMPARE(run.exitCode, 0);
         QVERIFY2(run.out.contains("dragging 4 vertices keeping lengths in 20 steps") &&
                      !run.out.contains("replaying"),
                  qPrintable(run.out.left(200)));
         // fig6 with a free corner lifted 75 mm keeps lengths: nothing replayed.
         const QString fig6 = path("fig6.devsurf");
-        QCOMPARE(cli({"example", "fig6", "-o", fig6}).exitCode, 0);
-        run = cli({"drag", fig6, "--vertices", "4", "--by", "0,0,75", "-o", automatic});
+        QCOMPARE(runCli({"example", "fig6", "-o", fig6}).exitCode, 0);
+        run = runCli({"drag", fig6, "--vertices", "4", "--by", "0,0,75", "-o", automatic});
         QCOMPARE(run.exitCode, 0);
         QVERIFY2(run.out.contains("dragging 1 vertex keeping lengths in 20 steps") &&
                      !run.out.contains("replaying"),
@@ -541,7 +539,7 @@ private slots:
 
         // Both at once: bad usage (exit 1), nothing written.
         const QString never = path("never-keep.devsurf");
-        run = cli(drag + QStringList{"--keep-lengths", "--stretch", "-o", never});
+        run = runCli(drag + QStringList{"--keep-lengths", "--stretch", "-o", never});
         QCOMPARE(run.exitCode, 1);
         QVERIFY(run.err.contains("--stretch"));
         QVERIFY(!QFile::exists(never));
@@ -549,11 +547,12 @@ private slots:
 
     void dragSlidesACrease() {
         const QString file = path("fig6.devsurf");
-        QCOMPARE(cli({"example", "fig6", "-o", file}).exitCode, 0);
+        QCOMPARE(runCli({"example", "fig6", "-o", file}).exitCode, 0);
         const model::CompositeSurface before = io::loadProjectFile(file).surfaces[0];
         const QString out = path("slid.devsurf");
         // Crease 2 slides 20 mm across the flat sheet; the 5 mm out of it are dropped.
-        Run run = cli({"drag", file, "--crease", "2", "--by", "0,20,5", "--steps", "5", "-o", out});
+        Run run =
+            runCli({"drag", file, "--crease", "2", "--by", "0,20,5", "--steps", "5", "-o", out});
         QCOMPARE(run.exitCode, 0);
         QVERIFY2(run.out.contains("Crease 2 slides by 0.000,20.000,0.000"), qPrintable(run.out));
         const model::CompositeSurface after = io::loadProjectFile(out).surfaces[0];
@@ -569,7 +568,7 @@ private slots:
         // Not a crease, or an unknown edge: exit 2 with one sentence; bad usage: exit 1.
         const QString never = path("never.devsurf");
         for (const char* edge : {"0", "1", "999"}) {
-            run = cli({"drag", file, "--crease", edge, "--by", "0,1,0", "-o", never});
+            run = runCli({"drag", file, "--crease", edge, "--by", "0,1,0", "-o", never});
             QCOMPARE(run.exitCode, 2);
             QVERIFY2(run.err.contains(QStringLiteral("edge %1").arg(edge)), qPrintable(run.err));
             QCOMPARE(run.err.count('\n'), 1);
@@ -578,7 +577,7 @@ private slots:
                  {"drag", file, "--crease", "2", "--vertices", "3", "--by", "0,1,0", "-o", never},
                  {"drag", file, "--crease", "2", "--rotate", "0,0,0,0,0,1,5", "-o", never},
                  {"drag", file, "--crease", "2,5", "--by", "0,1,0", "-o", never}}) {
-            run = cli(args);
+            run = runCli(args);
             QVERIFY2(run.exitCode == 1, qPrintable(args.join(' ')));
             QCOMPARE(run.err.count('\n'), 1);
         }
@@ -586,7 +585,7 @@ private slots:
     }
 
     void benchIsTheSeparateProgram() {
-        const Run run = cli({"bench"});
+        const Run run = runCli({"bench"});
         QCOMPARE(run.exitCode, 1);
         QVERIFY(run.err.contains("devsurf-bench"));
     }

@@ -32,14 +32,14 @@ using namespace devsurf;
 
 namespace {
 
-struct Outcome {
+struct SafeCliOutcome {
     int exitCode = -1;
     QString out;
     QString err;
 };
 
 // Runs devsurf-cli in this process, capturing what it prints on std::cout and std::cerr.
-Outcome cli(const QStringList& arguments) {
+SafeCliOutcome safeCli(const QStringList& arguments) {
     std::vector<std::string> args;
     for (const QString& argument : arguments) {
         args.push_back(argument.toStdString());
@@ -48,7 +48,7 @@ Outcome cli(const QStringList& arguments) {
     std::ostringstream err;
     std::streambuf* const oldOut = std::cout.rdbuf(out.rdbuf());
     std::streambuf* const oldErr = std::cerr.rdbuf(err.rdbuf());
-    Outcome outcome;
+    SafeCliOutcome outcome;
     outcome.exitCode = app::runDevsurfCli(args);
     std::cout.rdbuf(oldOut);
     std::cerr.rdbuf(oldErr);
@@ -111,7 +111,7 @@ private slots:
                                 {"export", design, "--format", "svg", "-o", path("link.svg")},
                                 {"export-json", design, "-o", design},
                                 {"export-json", design, "-o", path("hard.json")}}) {
-            const Outcome run = cli(args);
+            const SafeCliOutcome run = safeCli(args);
             QVERIFY2(run.exitCode == 2, qPrintable(args.join(' ') + ": " + run.err));
             QVERIFY2(run.err.contains("the project being read"), qPrintable(run.err));
             QVERIFY(isSentence(run.err));
@@ -119,7 +119,7 @@ private slots:
         }
         QVERIFY(isValidProject(design));
         // Project to project: an edit in place, the previous version kept as .bak.
-        const Outcome pin = cli({"pin", design, "--vertices", "0", "-o", design});
+        const SafeCliOutcome pin = safeCli({"pin", design, "--vertices", "0", "-o", design});
         QCOMPARE(pin.exitCode, 0);
         QVERIFY(isValidProject(design));
         QCOMPARE(bytesOf(design + ".bak"), before);
@@ -148,21 +148,21 @@ private slots:
                                     {"pin", design, "--vertices", "0", "-o", target},
                                     {"solve", design, "--iterations", "1", "-o", target},
                                     {"example", "sheet", "-o", target}}) {
-                const Outcome run = cli(args);
+                const SafeCliOutcome run = safeCli(args);
                 QVERIFY2(run.exitCode == 2, qPrintable(args.join(' ') + ": " + run.err));
                 QVERIFY(isSentence(run.err));
                 QCOMPARE(statOf(target).st_mode & S_IFMT, type);
                 QVERIFY(!QFileInfo::exists(target + ".bak"));
             }
         }
-        const Outcome svg = cli({"export", design, "--format", "svg", "-o", "-"});
+        const SafeCliOutcome svg = safeCli({"export", design, "--format", "svg", "-o", "-"});
         QCOMPARE(svg.exitCode, 0);
         QVERIFY(svg.out.startsWith("<?xml"));
         QVERIFY(svg.out.contains("<svg"));
-        const Outcome json = cli({"export-json", design, "-o", "-"});
+        const SafeCliOutcome json = safeCli({"export-json", design, "-o", "-"});
         QCOMPARE(json.exitCode, 0);
         QVERIFY(json.out.contains("devsurf-interchange"));
-        QCOMPARE(cli({"solve", design, "-o", "-"}).exitCode, 1);
+        QCOMPARE(safeCli({"solve", design, "-o", "-"}).exitCode, 1);
         QVERIFY(!QFileInfo::exists("-"));
     }
 
@@ -171,11 +171,11 @@ private slots:
         if (!QFileInfo::exists("/dev/zero")) {
             QSKIP("no /dev/zero");
         }
-        const Outcome run = cli({"validate", "/dev/zero"});
+        const SafeCliOutcome run = safeCli({"validate", "/dev/zero"});
         QCOMPARE(run.exitCode, 2);
         QVERIFY2(run.err.contains("not a DevSurf project file"), qPrintable(run.err));
         for (const char* command : {"info", "report"}) {
-            QCOMPARE(cli({command, "/dev/zero"}).exitCode, 2);
+            QCOMPARE(safeCli({command, "/dev/zero"}).exitCode, 2);
         }
         // A pipe holding a project is read up to its stated length (and one byte more).
         const QString design = project("piped.devsurf", "sheet");
@@ -188,7 +188,7 @@ private slots:
                 out.write(bytes);
             }
         });
-        const Outcome piped = cli({"validate", fifo});
+        const SafeCliOutcome piped = safeCli({"validate", fifo});
         writer.join();
         QVERIFY2(piped.exitCode == 0, qPrintable(piped.err));
     }
@@ -205,7 +205,8 @@ private slots:
         QVERIFY(file.open(QIODevice::WriteOnly));
         file.close();
         qputenv("TMPDIR", QFile::encodeName(notAFolder));
-        const Outcome run = cli({"export", design, "--format", "dxf", "-o", path("out.dxf")});
+        const SafeCliOutcome run =
+            safeCli({"export", design, "--format", "dxf", "-o", path("out.dxf")});
         qputenv("TMPDIR", oldTemp);
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         QVERIFY(bytesOf(path("out.dxf")).contains("EOF"));
@@ -228,7 +229,7 @@ private slots:
                  {"report", file}, {"export", file, "--format", "svg", "-o", path("far.svg")}}) {
             QElapsedTimer timer;
             timer.start();
-            const Outcome run = cli(args);
+            const SafeCliOutcome run = safeCli(args);
             const qint64 ms = timer.elapsed();
             // The examples take 0.1 to 0.3 s; before the check this one took 9 s.
             QVERIFY2(ms < 4000, qPrintable(args.join(' ') + ": " + QString::number(ms) + " ms"));
@@ -237,7 +238,7 @@ private slots:
             // The tolerance it names does the job.
             const QString advice = run.err.mid(run.err.indexOf("--tolerance ") + 12);
             const QString tolerance = advice.left(advice.indexOf(' '));
-            const Outcome coarser = cli(args + QStringList{"--tolerance", tolerance});
+            const SafeCliOutcome coarser = safeCli(args + QStringList{"--tolerance", tolerance});
             QVERIFY2(coarser.exitCode == 0, qPrintable(tolerance + ": " + coarser.err));
         }
     }
@@ -262,7 +263,7 @@ private slots:
         }
         QStringList failures;
         for (const QStringList& args : cases) {
-            const Outcome run = cli(args);
+            const SafeCliOutcome run = safeCli(args);
             if (run.exitCode != 2 || !run.err.contains("No space left on device")) {
                 failures << args.join(' ') + ": " + QString::number(run.exitCode) + " " + run.err;
             }
@@ -307,13 +308,13 @@ private slots:
                                 {"export", design, "--format", "dxf", "-o", path("x.svg")},
                                 {"export", design, "--format", "pdf", "-o", path("x.devsurf")},
                                 {"export-json", design, "-o", path("x.svg")}}) {
-            const Outcome run = cli(args);
+            const SafeCliOutcome run = safeCli(args);
             QVERIFY2(run.exitCode == 1, qPrintable(args.join(' ') + ": " + run.err));
             QVERIFY(run.err.contains("ends in ."));
             QVERIFY(!QFileInfo::exists(args.last()));
         }
-        QCOMPARE(cli({"export", design, "--format", "svg", "-o", path("x.SVG")}).exitCode, 0);
-        QCOMPARE(cli({"export", design, "--format", "svg", "-o", path("x.txt")}).exitCode, 0);
+        QCOMPARE(safeCli({"export", design, "--format", "svg", "-o", path("x.SVG")}).exitCode, 0);
+        QCOMPARE(safeCli({"export", design, "--format", "svg", "-o", path("x.txt")}).exitCode, 0);
     }
 
     // Every subcommand has its own --help.
@@ -321,7 +322,7 @@ private slots:
         for (const char* command :
              {"example", "info", "pin", "crease", "smooth", "validate", "export-json", "examples",
               "solve", "drag", "export", "report"}) {
-            const Outcome run = cli({command, "--help"});
+            const SafeCliOutcome run = safeCli({command, "--help"});
             QCOMPARE(run.exitCode, 0);
             QVERIFY2(run.out.startsWith(QStringLiteral("Usage: devsurf-cli ") + command),
                      qPrintable(run.out));
@@ -427,7 +428,7 @@ private slots:
                                        : out + ".json");
             }
             const QByteArray before = bytesOf(sheet);
-            const Outcome run = cli(args);
+            const SafeCliOutcome run = safeCli(args);
             ++cases;
             const QString what =
                 args.join(' ') + " -> " + QString::number(run.exitCode) + ": " + run.err.left(300);

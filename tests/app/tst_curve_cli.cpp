@@ -12,10 +12,7 @@ using namespace devsurf;
 
 namespace {
 
-QByteArray contents(const QString& path) {
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
+using test::contents;
 
 } // namespace
 

@@ -32,7 +32,7 @@ using document::Pick;
 
 namespace {
 
-app::ImportCurvesReaction* importReaction(const app::MainWindow& window) {
+app::ImportCurvesReaction* importCurvesReaction(const app::MainWindow& window) {
     QAction* action = window.action(QStringLiteral("actionImportCurves"));
     return action != nullptr ? action->findChild<app::ImportCurvesReaction*>() : nullptr;
 }
@@ -48,7 +48,7 @@ class TstCurveGui : public QObject {
     // Imports `file` through the action (its file dialog answered with `file`); the result
     // of finished().
     static bool importThroughAction(app::MainWindow& window, const QString& file) {
-        app::ImportCurvesReaction* reaction = importReaction(window);
+        app::ImportCurvesReaction* reaction = importCurvesReaction(window);
         reaction->setFileChooser([file] { return file; });
         QSignalSpy finished(reaction, &app::ImportCurvesReaction::finished);
         window.action(QStringLiteral("actionImportCurves"))->trigger();
@@ -151,7 +151,7 @@ private slots:
         app::MainWindow window;
         QVERIFY(test::showActiveWithExample(window, QStringLiteral("sheet")));
         const std::string before = test::bytesOf(window);
-        app::ImportCurvesReaction* reaction = importReaction(window);
+        app::ImportCurvesReaction* reaction = importCurvesReaction(window);
         reaction->setFileChooser([this] { return path("big.dxf"); });
         QSignalSpy finished(reaction, &app::ImportCurvesReaction::finished);
         window.action(QStringLiteral("actionImportCurves"))->trigger();

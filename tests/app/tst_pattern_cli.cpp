@@ -17,10 +17,7 @@ using namespace devsurf;
 namespace {
 
 using Run = test::CliRun;
-
-Run cli(const QStringList& arguments) {
-    return test::runCli(arguments);
-}
+using test::runCli;
 
 } // namespace
 
@@ -33,22 +30,22 @@ class TstPatternCli : public QObject {
 
 private slots:
     void initTestCase() {
-        QCOMPARE(cli({"example", "annulus", "-o", path("annulus.devsurf")}).exitCode, 0);
-        QCOMPARE(cli({"example", "cylinder", "-o", path("cylinder.devsurf")}).exitCode, 0);
+        QCOMPARE(runCli({"example", "annulus", "-o", path("annulus.devsurf")}).exitCode, 0);
+        QCOMPARE(runCli({"example", "cylinder", "-o", path("cylinder.devsurf")}).exitCode, 0);
     }
 
     void exportWritesEveryFormat() {
         for (const QString format : {"dxf", "svg", "pdf", "fold"}) {
             const QString out = path("annulus." + format);
-            const Run run = cli({"export", path("annulus.devsurf"), "--format", format, "--paper",
-                                 "A4", "-o", out});
+            const Run run = runCli({"export", path("annulus.devsurf"), "--format", format,
+                                    "--paper", "A4", "-o", out});
             QVERIFY2(run.exitCode == 0, qPrintable(run.err));
             QVERIFY(run.out.startsWith("Wrote " + out));
             QVERIFY(QFileInfo(out).size() > 1000);
         }
         // The format follows the output's extension when --format is not given.
-        const Run run = cli({"export", path("cylinder.devsurf"), "--splines", "--seam", "5",
-                             "--rulings", "--tolerance", "0.02", "-o", path("cylinder.dxf")});
+        const Run run = runCli({"export", path("cylinder.devsurf"), "--splines", "--seam", "5",
+                                "--rulings", "--tolerance", "0.02", "-o", path("cylinder.dxf")});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         QFile dxf(path("cylinder.dxf"));
         QVERIFY(dxf.open(QIODevice::ReadOnly));
@@ -59,7 +56,7 @@ private slots:
     void problemsOfThePatternAreWarnings() {
         // The 500 mm annulus does not fit the default 600 × 400 mm sheet.
         const Run run =
-            cli({"export", path("annulus.devsurf"), "--format", "svg", "-o", path("w.svg")});
+            runCli({"export", path("annulus.devsurf"), "--format", "svg", "-o", path("w.svg")});
         QCOMPARE(run.exitCode, 0);
         QVERIFY(run.err.startsWith("devsurf-cli: warning: "));
         QVERIFY(run.err.contains("does not fit"));
@@ -67,11 +64,11 @@ private slots:
     }
 
     void reportAsTextAndJson() {
-        Run run = cli({"report", path("cylinder.devsurf"), "--sheet", "700,300"});
+        Run run = runCli({"report", path("cylinder.devsurf"), "--sheet", "700,300"});
         QCOMPARE(run.exitCode, 0);
         QVERIFY(run.out.contains("1 piece on 1 sheet"));
         QVERIFY(run.out.contains("yes"));
-        run = cli({"report", path("annulus.devsurf"), "--json"});
+        run = runCli({"report", path("annulus.devsurf"), "--json"});
         QCOMPARE(run.exitCode, 0);
         const QJsonObject json = QJsonDocument::fromJson(run.out.toUtf8()).object();
         const QJsonArray pieces = json["pieces"].toArray();
@@ -84,11 +81,11 @@ private slots:
 
     void solvedCurvedDesignReadsBackWithEzdxf() {
         const QString solved = path("solved.devsurf");
-        Run run = cli({"solve", path("cylinder.devsurf"), "--perturb", "0.002", "--seed", "5",
-                       "--iterations", "8", "-o", solved});
+        Run run = runCli({"solve", path("cylinder.devsurf"), "--perturb", "0.002", "--seed", "5",
+                          "--iterations", "8", "-o", solved});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         const QString dxf = path("solved.dxf");
-        run = cli(
+        run = runCli(
             {"export", solved, "--format", "dxf", "--sheet", "2000,2000", "--splines", "-o", dxf});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         model::PatternOptions options;
@@ -119,7 +116,7 @@ private slots:
                                 {"export", in, "--bogus", "-o", out},
                                 {"report"},
                                 {"report", in, "--splines"}}) {
-            const Run run = cli(args);
+            const Run run = runCli(args);
             QVERIFY2(run.exitCode == 1, qPrintable(args.join(' ') + ": " + run.err));
             QVERIFY(run.err.startsWith("devsurf-cli: "));
             QCOMPARE(run.err.count('\n'), 1);
@@ -128,16 +125,17 @@ private slots:
     }
 
     void badInputExitsWithTwo() {
-        Run run = cli({"export", path("missing.devsurf"), "--format", "dxf", "-o", path("m.dxf")});
+        Run run =
+            runCli({"export", path("missing.devsurf"), "--format", "dxf", "-o", path("m.dxf")});
         QCOMPARE(run.exitCode, 2);
         QVERIFY(run.err.contains("missing.devsurf"));
         QCOMPARE(run.err.count('\n'), 1);
-        run = cli({"export", path("cylinder.devsurf"), "--sheet", "2000,2000", "-o",
-                   path("no/such/folder/c.pdf")});
+        run = runCli({"export", path("cylinder.devsurf"), "--sheet", "2000,2000", "-o",
+                      path("no/such/folder/c.pdf")});
         QCOMPARE(run.exitCode, 2);
         QVERIFY(run.err.contains("c.pdf"));
         QCOMPARE(run.err.count('\n'), 1);
-        QCOMPARE(cli({"report", path("missing.devsurf")}).exitCode, 2);
+        QCOMPARE(runCli({"report", path("missing.devsurf")}).exitCode, 2);
     }
 };
 

@@ -16,10 +16,7 @@ using namespace devsurf;
 
 namespace {
 
-QByteArray contents(const QString& path) {
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
+using test::contents;
 
 bool writeFile(const QString& path, const QByteArray& bytes) {
     QFile file(path);
@@ -27,7 +24,7 @@ bool writeFile(const QString& path, const QByteArray& bytes) {
 }
 
 // A cylinder over the parabola y = x² / 100, x in [−50, 50], z in [0, 60]: 41 × 25 points.
-std::vector<model::Vec3> parabolicCylinder() {
+std::vector<model::Vec3> parabolicCylinderPoints() {
     std::vector<model::Vec3> points;
     for (int i = 0; i <= 40; ++i) {
         for (int j = 0; j <= 24; ++j) {
@@ -178,7 +175,7 @@ private slots:
     }
 
     void approximateFitsAStripToACloud() {
-        const std::vector<model::Vec3> points = parabolicCylinder();
+        const std::vector<model::Vec3> points = parabolicCylinderPoints();
         QVERIFY(writeFile(path("cylinder.xyz"), xyz(points)));
         const test::CliRun run =
             test::runCli({"approximate", path("cylinder.xyz"), "-o", path("approximated.devsurf")});
@@ -210,7 +207,7 @@ private slots:
     }
 
     void approximateWithSeveralStripsAndFromAProject() {
-        QVERIFY(writeFile(path("cylinder.xyz"), xyz(parabolicCylinder())));
+        QVERIFY(writeFile(path("cylinder.xyz"), xyz(parabolicCylinderPoints())));
         test::CliRun run = test::runCli({"approximate", path("cylinder.xyz"), "--strips", "2",
                                          "--iterations", "10", "-o", path("two.devsurf")});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
@@ -249,7 +246,7 @@ private slots:
     }
 
     void approximateRefusesBadInput() {
-        QVERIFY(writeFile(path("cylinder.xyz"), xyz(parabolicCylinder())));
+        QVERIFY(writeFile(path("cylinder.xyz"), xyz(parabolicCylinderPoints())));
         // Usage: no output, both starts, a bad count.
         QCOMPARE(test::runCli({"approximate", path("cylinder.xyz")}).exitCode, 1);
         QCOMPARE(test::runCli({"approximate", path("cylinder.xyz"), "--from", path("two.devsurf"),

@@ -27,12 +27,12 @@ using namespace devsurf;
 
 namespace {
 
-app::ImportReferenceShapeReaction* importReaction(const app::MainWindow& window) {
+app::ImportReferenceShapeReaction* importShapeReaction(const app::MainWindow& window) {
     QAction* action = window.action(QStringLiteral("actionImportReferenceShape"));
     return action != nullptr ? action->findChild<app::ImportReferenceShapeReaction*>() : nullptr;
 }
 
-void writeFile(const QString& path, const QByteArray& contents) {
+void writeTestFile(const QString& path, const QByteArray& contents) {
     QFile file(path);
     QVERIFY(file.open(QIODevice::WriteOnly));
     QCOMPARE(file.write(contents), contents.size());
@@ -49,7 +49,7 @@ class TstReferenceShapeGui : public QObject {
     // Imports `file` through the action (its file dialog answered with `file`); the result
     // of finished().
     static bool importThroughAction(app::MainWindow& window, const QString& file) {
-        app::ImportReferenceShapeReaction* reaction = importReaction(window);
+        app::ImportReferenceShapeReaction* reaction = importShapeReaction(window);
         reaction->setFileChooser([file] { return file; });
         QSignalSpy finished(reaction, &app::ImportReferenceShapeReaction::finished);
         window.action(QStringLiteral("actionImportReferenceShape"))->trigger();
@@ -62,8 +62,8 @@ class TstReferenceShapeGui : public QObject {
 private slots:
     void initTestCase() {
         // A tetrahedron over the sheet and a small cloud above it.
-        writeFile(path("tet.obj"), "v 0 0 0\nv 100 0 0\nv 0 100 0\nv 0 0 50\n"
-                                   "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
+        writeTestFile(path("tet.obj"), "v 0 0 0\nv 100 0 0\nv 0 100 0\nv 0 0 50\n"
+                                       "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
         QByteArray cloud;
         for (int i = 0; i < 20; ++i) {
             for (int j = 0; j < 20; ++j) {
@@ -71,7 +71,7 @@ private slots:
                          QByteArray::number(20 + 0.01 * i * j) + '\n';
             }
         }
-        writeFile(path("scan.xyz"), cloud);
+        writeTestFile(path("scan.xyz"), cloud);
     }
 
     void init() { QSettings().clear(); }
@@ -158,7 +158,7 @@ private slots:
         app::MainWindow window;
         QVERIFY(test::showActiveWithExample(window, QStringLiteral("sheet")));
         // Far beside and above the sheet: out of view until fitted.
-        writeFile(path("far.xyz"), "900 900 400\n1000 950 450\n");
+        writeTestFile(path("far.xyz"), "900 900 400\n1000 950 450\n");
         QVERIFY(importThroughAction(window, path("far.xyz")));
         views::SurfaceView* view = window.surfaceView();
         window.action(QStringLiteral("actionFitAll"))->trigger();
@@ -180,8 +180,8 @@ private slots:
         QVERIFY(test::showActiveWithExample(window, QStringLiteral("sheet")));
         document::Document* doc = window.workspace()->document();
         const std::string before = test::bytesOf(window);
-        writeFile(path("damaged.obj"), "v 0 0 0\nv 1 0 0\nf 1 2 9\n");
-        writeFile(path("nan.xyz"), "0 0 0\nnan 1 2\n");
+        writeTestFile(path("damaged.obj"), "v 0 0 0\nv 1 0 0\nf 1 2 9\n");
+        writeTestFile(path("nan.xyz"), "0 0 0\nnan 1 2\n");
         int boxes = 0;
         QTimer closer;
         connect(&closer, &QTimer::timeout, [&boxes] {

@@ -11,10 +11,7 @@ using namespace devsurf;
 
 namespace {
 
-QByteArray contents(const QString& path) {
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
+using test::contents;
 
 } // namespace
 

@@ -1,12 +1,24 @@
 #pragma once
 
 // The bench's hand-written JSON: a number in %.6g and a quoted string (control characters
-// blanked), shared by the default report and --paper.
+// blanked), and the median of timings; shared by the default report and --paper.
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace devsurf::bench {
+
+// The median of the values (0 for none): the benchmark's timings and ratios.
+inline double median(std::vector<double> values) {
+    if (values.empty()) {
+        return 0.0;
+    }
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
 
 inline std::string number(double value) {
     char buffer[64];

@@ -1,6 +1,7 @@
 #include "bench_models.h"
 
 #include "model/examples.h"
+#include "model/math_constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +10,7 @@ namespace devsurf::bench {
 
 using model::Vec3;
 
-constexpr double kPi = 3.14159265358979323846;
+using devsurf::model::kPi;
 
 model::CompositeSurface makeTwoStripSheet(int intervals, double bow) {
     const double width = 300.0;

@@ -2,6 +2,7 @@
 // figures in docs/tuning.md, "model/reference"). Built on request only:
 //   cmake --build build --target devsurf-reference-timing && build/bin/devsurf-reference-timing
 #include "model/examples.h"
+#include "model/math_constants.h"
 #include "model/reference/distance_report.h"
 #include "model/reference/thinning.h"
 #include "model/strip.h"
@@ -16,7 +17,7 @@ using namespace devsurf::model::reference;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using devsurf::model::kPi;
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

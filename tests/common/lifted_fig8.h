@@ -9,7 +9,7 @@
 
 #include <vector>
 
-namespace devsurf::testing {
+namespace devsurf::test {
 
 inline model::CompositeSurface liftedFig8(int settle) {
     const model::CompositeSurface flat = model::makeExample("fig8").surfaces.front();
@@ -30,4 +30,4 @@ inline model::CompositeSurface liftedFig8(int settle) {
     return drag.surface();
 }
 
-} // namespace devsurf::testing
+} // namespace devsurf::test

@@ -20,6 +20,19 @@
 
 namespace devsurf::test {
 
+// The examples the command tests run every edit on.
+inline constexpr const char* kExamples[] = {"sheet", "annulus", "cylinder", "mixed"};
+
+// The first face of the given type (kInvalidId if none).
+inline model::FaceId firstFaceOfType(const model::CompositeSurface& s, model::FaceType type) {
+    for (const auto& [id, loop] : s.faces()) {
+        if (s.faceType(id) == type) {
+            return id;
+        }
+    }
+    return model::kInvalidId;
+}
+
 inline std::string bytesOf(const document::Document& doc) {
     return io::encodeProject(doc.project());
 }

@@ -31,16 +31,9 @@ using devsurf::test::pushOrExplain;
 
 namespace {
 
-const char* const kExamples[] = {"sheet", "annulus", "cylinder", "mixed"};
+using devsurf::test::kExamples;
 
-FaceId firstFaceOfType(const CompositeSurface& s, FaceType type) {
-    for (const auto& [id, loop] : s.faces()) {
-        if (s.faceType(id) == type) {
-            return id;
-        }
-    }
-    return kInvalidId;
-}
+using devsurf::test::firstFaceOfType;
 
 // A relabelling the surface accepts: one edge if any works, else a whole spline class to R
 // (which turns the strips along it into planar faces).

@@ -14,20 +14,13 @@ using devsurf::test::sizeOf;
 
 namespace {
 
-const char* const kExamples[] = {"sheet", "annulus", "cylinder", "mixed"};
+using devsurf::test::kExamples;
 
 CompositeSurface example(const char* name, int size = 0) {
     return makeExample(name, size).surfaces.front();
 }
 
-FaceId firstFaceOfType(const CompositeSurface& s, FaceType type) {
-    for (const auto& [id, loop] : s.faces()) {
-        if (s.faceType(id) == type) {
-            return id;
-        }
-    }
-    return kInvalidId;
-}
+using devsurf::test::firstFaceOfType;
 
 std::size_t countType(const CompositeSurface& s, FaceType type) {
     std::size_t n = 0;

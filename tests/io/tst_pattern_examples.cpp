@@ -30,7 +30,7 @@ model::PatternOptions bigSheet() {
     return options;
 }
 
-double polygonArea(const QJsonArray& vertices, const QJsonArray& face) {
+double faceArea(const QJsonArray& vertices, const QJsonArray& face) {
     double twice = 0.0;
     for (qsizetype i = 0; i < face.size(); ++i) {
         const QJsonArray a = vertices[face[i].toInt()].toArray();
@@ -119,7 +119,7 @@ private slots:
         // The rulings split the development into faces that together have its area.
         double area = 0.0;
         for (const QJsonValue& face : faces) {
-            area += polygonArea(vertices, face.toArray());
+            area += faceArea(vertices, face.toArray());
         }
         double expected = 0.0;
         for (const model::PatternPiece& piece : pattern.pieces) {

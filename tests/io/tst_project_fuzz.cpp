@@ -111,7 +111,7 @@ model::Project withReferenceCurves(model::Project project) {
 
 // The project with a small mesh (with normals) and a point cloud, so that mutations reach their
 // counts, coordinates and triangle corners.
-model::Project withReferenceShapes(model::Project project) {
+model::Project withSmallReferenceShapes(model::Project project) {
     model::ReferenceShape mesh{"tetrahedron",
                                "tet.off",
                                {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {0, 0, 10}},
@@ -159,7 +159,7 @@ private slots:
             io::encodeProject(model::makeExample("sheet", 2)),
             io::encodeProject(model::makeExample("cylinder", 3)),
             io::encodeProject(withReferenceCurves(model::makeExample("sheet", 1))),
-            io::encodeProject(withReferenceShapes(model::makeExample("sheet", 1))),
+            io::encodeProject(withSmallReferenceShapes(model::makeExample("sheet", 1))),
         };
         std::mt19937 rng(20261121);
         int rejected = 0;

@@ -1,6 +1,7 @@
 #include "model/bspline_curve.h"
 #include "model/curve_fit.h"
 #include "model/examples.h"
+#include "model/math_constants.h"
 #include "test_registry.h"
 
 #include <QTest>
@@ -11,7 +12,7 @@ using namespace devsurf::model;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using devsurf::model::kPi;
 
 // An S-edge of fig8 that is a crease (not on the boundary) and its end vertices.
 EdgeId someCrease(const CompositeSurface& surface) {

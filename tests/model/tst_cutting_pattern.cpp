@@ -2,6 +2,7 @@
 #include "helical_band.h"
 #include "model/bspline_curve.h"
 #include "model/examples.h"
+#include "model/math_constants.h"
 #include "model/pattern/cutting_pattern.h"
 #include "model/pattern/pattern_seams.h"
 #include "model/pattern/sampling_bound.h"
@@ -20,7 +21,7 @@ using namespace devsurf::model;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using devsurf::model::kPi;
 
 double segmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
     const Vec2 d = b - a;

@@ -1,4 +1,5 @@
 #include "model/examples.h"
+#include "model/math_constants.h"
 #include "model/model_error.h"
 #include "model/reference/distance_report.h"
 #include "model/reference/surface_samples.h"
@@ -16,7 +17,7 @@ using namespace devsurf::model::reference;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using devsurf::model::kPi;
 
 Vec3 unit(const Vec3& v) {
     return v / v.norm();

@@ -29,7 +29,7 @@ double spatialArea(const CompositeSurface& surface) {
     return area;
 }
 
-PatternOptions sideBySide() {
+PatternOptions withoutLayout() {
     PatternOptions options;
     options.layout = false;
     return options;
@@ -43,7 +43,7 @@ private slots:
     void examplesDevelopIsometrically() {
         for (const ExampleInfo& info : builtInExamples()) {
             const Project project = makeExample(info.name);
-            const CuttingPattern pattern = buildCuttingPattern(project, sideBySide());
+            const CuttingPattern pattern = buildCuttingPattern(project, withoutLayout());
             const QByteArray name = info.name.c_str();
             QVERIFY2(pattern.problems.empty(), name);
             QVERIFY2(pattern.overlaps.empty(), name);

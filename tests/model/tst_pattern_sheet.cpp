@@ -16,7 +16,7 @@ using namespace devsurf::model;
 
 namespace {
 
-double segmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
+double pointSegmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
     const Vec2 ab = b - a, ap = p - a;
     const double t =
         std::clamp((ap.x * ab.x + ap.y * ab.y) / (ab.x * ab.x + ab.y * ab.y), 0.0, 1.0);
@@ -29,7 +29,7 @@ double loopDistance(const Vec2& p, const std::vector<std::vector<Vec2>>& loops) 
     double best = std::numeric_limits<double>::infinity();
     for (const auto& loop : loops) {
         for (std::size_t i = 0; i < loop.size(); ++i) {
-            best = std::min(best, segmentDistance(p, loop[i], loop[(i + 1) % loop.size()]));
+            best = std::min(best, pointSegmentDistance(p, loop[i], loop[(i + 1) % loop.size()]));
         }
     }
     return best;

@@ -1,3 +1,4 @@
+#include "model/math_constants.h"
 #include "model/reference/thinning.h"
 #include "test_registry.h"
 
@@ -12,7 +13,7 @@ using namespace devsurf::model::reference;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using devsurf::model::kPi;
 
 // n points spread evenly over the sphere of radius r about c (a Fibonacci lattice).
 std::vector<Vec3> sphere(std::size_t n, double r, const Vec3& c) {
@@ -41,12 +42,8 @@ std::vector<Vec3> plane(std::size_t n, double size, const Vec3& origin, const Ve
     return points;
 }
 
-Vec3 unit(const Vec3& v) {
+Vec3 unitVector(const Vec3& v) {
     return v / v.norm();
-}
-
-double angleBetween(const Vec3& a, const Vec3& b) {
-    return std::atan2(cross(a, b).norm(), dot(a, b));
 }
 
 // The smallest distance between two kept points, by brute force.
@@ -91,7 +88,7 @@ private slots:
         for (const ThinnedPoint& q : thinned.points) {
             QCOMPARE(q.position, points[q.source]);
             QVERIFY(q.ballCount > 100);
-            worst = std::max(worst, angleBetween(q.normal, unit(q.position - centre)));
+            worst = std::max(worst, angleBetween(q.normal, unitVector(q.position - centre)));
         }
         QVERIFY2(worst < 1e-3, qPrintable(QString::number(worst)));
         QVERIFY(closestPair(thinned) >= rho);
@@ -106,9 +103,9 @@ private slots:
     }
 
     void planeNormalsAreThePlaneNormal() {
-        const Vec3 e1 = unit(Vec3(1.0, 2.0, -0.5));
-        const Vec3 e2 = unit(cross(e1, Vec3(0.3, -1.0, 2.0)));
-        const Vec3 n = unit(cross(e1, e2));
+        const Vec3 e1 = unitVector(Vec3(1.0, 2.0, -0.5));
+        const Vec3 e2 = unitVector(cross(e1, Vec3(0.3, -1.0, 2.0)));
+        const Vec3 n = unitVector(cross(e1, e2));
         const std::vector<Vec3> points = plane(100000, 50.0, Vec3(10, 20, 30), e1, e2, 3);
         const double rho = defaultThinningRadius(points);
         const ThinningResult thinned = thinReference(points, rho);

@@ -4,6 +4,7 @@
 // developable. Geometry is measured here independently of the solver.
 
 #include "model/bspline_curve.h"
+#include "model/math_constants.h"
 #include "model/reference/initial_strip.h"
 #include "model/strip.h"
 #include "model/strip_joining.h"
@@ -27,7 +28,7 @@ using model::Vec3;
 namespace {
 
 constexpr double kRadius = 100.0;
-constexpr double kPi = 3.14159265358979323846;
+using devsurf::model::kPi;
 
 // Points on the cylinder x² + y² = r² around the z-axis, the angle within ±60°, z0 ≤ z ≤ z1.
 std::vector<Vec3> cylinderPatch(double z0, double z1, int around, int up) {

@@ -6,6 +6,7 @@
 #include "model/composite_surface.h"
 #include "model/development.h"
 #include "model/examples.h"
+#include "model/math_constants.h"
 #include "model/sampled_mesh.h"
 #include "model/sheet_domain.h"
 #include "model/strip.h"
@@ -96,7 +97,7 @@ Dragged dragUp(const model::CompositeSurface& start, const std::vector<model::Ve
 // The largest |det(a−b, a′, b′)| / (|a−b| |a′| |b′|) over every strip of the design, sampled
 // densely with derivatives by central differences: developability measured apart from the
 // solver's collocation values and residuals.
-double sampledDevelopability(const model::CompositeSurface& surface) {
+double centralDifferenceDevelopability(const model::CompositeSurface& surface) {
     double worst = 0.0;
     const double h = 1e-6;
     for (const model::Strip& strip : model::stripsOf(surface)) {
@@ -175,7 +176,7 @@ std::vector<model::VertexId> innerVertices(const model::CompositeSurface& s) {
     return inner;
 }
 
-constexpr double kPi = 3.14159265358979323846;
+using devsurf::model::kPi;
 
 // The length of a design's rim at height z: its edges whose ends both lie there, rulings
 // straight, S-edges as the chords between their samples at kSamples per interval (the sampled
@@ -367,8 +368,8 @@ private slots:
         const double circumference = rimLength(start, 0.0);
         QVERIFY2(std::abs(2.0 * kPi * start.sheetDomain().radius - circumference) < 1e-9,
                  qPrintable(QString::number(circumference)));
-        QVERIFY2(sampledDevelopability(start) < 1e-9,
-                 qPrintable(QString::number(sampledDevelopability(start))));
+        QVERIFY2(centralDifferenceDevelopability(start) < 1e-9,
+                 qPrintable(QString::number(centralDifferenceDevelopability(start))));
         // The top vertex of a valley (odd index around), unpinned.
         model::VertexId top = model::kInvalidId;
         double highest = -1e300;
@@ -388,7 +389,7 @@ private slots:
         QVERIFY(outcome.assessments.front().sheetHeld);
         const double rise = s.position(top).z - start.position(top).z;
         QVERIFY2(rise > 15.0, qPrintable(QString::number(rise)));
-        const double developability = sampledDevelopability(s);
+        const double developability = centralDifferenceDevelopability(s);
         QVERIFY2(developability < 1e-6, qPrintable(QString::number(developability)));
         const solver::CreaseQuality creases = solver::measureCreaseQuality(s);
         QVERIFY2(creases.residualMax < 1e-4, qPrintable(QString::number(creases.residualMax)));
@@ -540,7 +541,7 @@ private slots:
         const model::CompositeSurface& s = outcome.surfaces.front();
         QVERIFY(s.validate().empty());
         QVERIFY(outcome.assessments.front().sheetHeld);
-        const double developability = sampledDevelopability(s);
+        const double developability = centralDifferenceDevelopability(s);
         QVERIFY2(developability < 1e-6, qPrintable(QString::number(developability)));
         const solver::CreaseQuality creases = solver::measureCreaseQuality(s);
         QVERIFY2(creases.residualMax < 1e-4, qPrintable(QString::number(creases.residualMax)));
@@ -567,8 +568,8 @@ private slots:
         model::CompositeSurface torus = model::makeExample("torus").surfaces.front();
         const auto refused = model::keepDevelopment(torus);
         QVERIFY(refused && refused->code == model::ProblemCode::NotOneSheet);
-        QVERIFY2(sampledDevelopability(torus) < 1e-9,
-                 qPrintable(QString::number(sampledDevelopability(torus))));
+        QVERIFY2(centralDifferenceDevelopability(torus) < 1e-9,
+                 qPrintable(QString::number(centralDifferenceDevelopability(torus))));
         double defect = 0.0;
         for (const solver::VertexAngleDefect& star : solver::vertexAngleDefects(torus)) {
             defect = std::max(defect, star.defect);

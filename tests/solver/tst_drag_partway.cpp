@@ -2,6 +2,7 @@
 // through the solve job as the Drag tool runs it, measured from the geometry.
 #include "model/composite_surface.h"
 #include "model/examples.h"
+#include "model/math_constants.h"
 #include "sampled_developability.h"
 #include "solver/quality/shape_change.h"
 #include "solver/session/solve_job.h"
@@ -21,7 +22,7 @@ using model::Vec3;
 using test::sampledDevelopability;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using devsurf::model::kPi;
 } // namespace
 
 class TstDragPartway : public QObject {

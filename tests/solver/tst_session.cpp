@@ -150,7 +150,7 @@ private slots:
     void solveReturnsToItsBestIterate() {
         // fig8 folded by lifting its middle 85 mm keeping lengths: Solve's residual then
         // cycles (about 2.6e-8, 1.7e-6, 1.8e-6), so its last iterate is seldom its best.
-        const model::CompositeSurface folded = testing::liftedFig8(20);
+        const model::CompositeSurface folded = test::liftedFig8(20);
         SolveSession drag(folded, {{5, false, folded.position(5) + model::Vec3{0, 0, 1}}});
         QVERIFY(drag.step(2).succeeded());
         QCOMPARE(drag.returnToBestIterate().iteration, 0); // a drag never goes back

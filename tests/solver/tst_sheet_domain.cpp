@@ -5,6 +5,7 @@
 #include "model/composite_surface.h"
 #include "model/development.h"
 #include "model/examples.h"
+#include "model/math_constants.h"
 #include "model/sampled_mesh.h"
 #include "model/sheet_domain.h"
 #include "solver/formulation/domain_terms.h"
@@ -30,8 +31,8 @@ using solver::testing::pairLengthError;
 
 namespace {
 
-constexpr int kSamples = model::kDevelopmentSamplesPerInterval;
-constexpr double kPi = 3.14159265358979323846;
+constexpr int kDomainSamples = model::kDevelopmentSamplesPerInterval;
+using devsurf::model::kPi;
 
 // The largest deviation of a development's boundary vertices from the nearer of two circles.
 double largestOffCircles(const model::SampledMesh& mesh, const std::vector<Vec2>& development,
@@ -68,7 +69,7 @@ model::CompositeSurface annulusOnASheet(int rings) {
     domain.shape = SheetShape::Annulus;
     domain.innerRadius = 100.0;
     domain.radius = 250.0;
-    const model::SampledMesh mesh = model::sampleSurface(s, kSamples);
+    const model::SampledMesh mesh = model::sampleSurface(s, kDomainSamples);
     s.setSheetDomain(model::placeDomain(domain, mesh, s.development()));
     return s;
 }
@@ -160,7 +161,7 @@ private slots:
         // fig8's development turned by 20° about a far point: a 300 mm square placed on it
         // lies on its boundary.
         model::CompositeSurface fig8 = model::makeExample("fig8").surfaces.front();
-        const model::SampledMesh mesh = model::sampleSurface(fig8, kSamples);
+        const model::SampledMesh mesh = model::sampleSurface(fig8, kDomainSamples);
         std::vector<Vec2> development = model::unfoldSampledMesh(mesh).vertices;
         const double a = 20.0 * kPi / 180.0;
         for (Vec2& p : development) {
@@ -183,7 +184,7 @@ private slots:
         model::CompositeSurface s = annulusOnItsSheet(3);
         QVERIFY(s.keepsDevelopment());
         solver::FormulationOptions options;
-        options.developmentSamplesPerInterval = kSamples;
+        options.developmentSamplesPerInterval = kDomainSamples;
         options.developmentStart = s.development();
         options.developmentDomain = s.sheetDomain();
         const solver::SurfaceFormulation f(s, options);
@@ -211,13 +212,13 @@ private slots:
         // The example's rims are splines up to 11 mm inside the circles: a Solve moves the
         // development's rims onto them, the design staying flat and isometric to it.
         const model::CompositeSurface start = annulusOnASheet(3);
-        const model::SampledMesh mesh = model::sampleSurface(start, kSamples);
+        const model::SampledMesh mesh = model::sampleSurface(start, kDomainSamples);
         const Vec2 centre = start.sheetDomain().centre;
         QVERIFY(largestOffCircles(mesh, start.development(), centre, 100.0, 250.0) > 1.0);
         const model::CompositeSurface s = annulusOnItsSheet(3);
         QVERIFY(s.validate().empty());
-        const double off = largestOffCircles(model::sampleSurface(s, kSamples), s.development(),
-                                             centre, 100.0, 250.0);
+        const double off = largestOffCircles(model::sampleSurface(s, kDomainSamples),
+                                             s.development(), centre, 100.0, 250.0);
         QVERIFY2(off < 1e-8 * 500.0, qPrintable(QString::number(off)));
         const double isometry = pairLengthError(s, s.development());
         QVERIFY2(isometry < 1e-10, qPrintable(QString::number(isometry)));
@@ -234,7 +235,7 @@ private slots:
         QVERIFY(session.step(3).succeeded());
         const model::CompositeSurface& solved = session.surface();
         QVERIFY(solver::testing::largestMove(s, solved) < 1e-8);
-        const model::SampledMesh mesh = model::sampleSurface(solved, kSamples);
+        const model::SampledMesh mesh = model::sampleSurface(solved, kDomainSamples);
         QVERIFY(largestOffCircles(mesh, solved.development(), s.sheetDomain().centre, 100.0,
                                   250.0) < 1e-8);
     }
@@ -250,7 +251,7 @@ private slots:
         square.shape = SheetShape::Rectangle;
         square.width = 300.0;
         square.height = 300.0;
-        const model::SampledMesh start = model::sampleSurface(s, kSamples);
+        const model::SampledMesh start = model::sampleSurface(s, kDomainSamples);
         s.setSheetDomain(model::placeDomain(square, start, s.development()));
         QVERIFY(model::largestDomainGap(s.sheetDomain(), start, s.development()) < 1e-9);
         std::vector<model::VertexId> middle;
@@ -285,7 +286,7 @@ private slots:
             rise = std::min(rise, bent.position(v).z - s.position(v).z);
         }
         QVERIFY2(rise > 20.0, qPrintable(QString::number(rise)));
-        const model::SampledMesh mesh = model::sampleSurface(bent, kSamples);
+        const model::SampledMesh mesh = model::sampleSurface(bent, kDomainSamples);
         const double gap = model::largestDomainGap(s.sheetDomain(), mesh, bent.development());
         QVERIFY2(gap < 1e-8 * 425.0, qPrintable(QString::number(gap))); // of the diameter
         const double isometry = pairLengthError(bent, bent.development());

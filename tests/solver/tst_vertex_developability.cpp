@@ -3,6 +3,7 @@
 
 #include "model/composite_surface.h"
 #include "model/examples.h"
+#include "model/math_constants.h"
 #include "solver/core/guided_projection.h"
 #include "solver/formulation/perturbation.h"
 #include "solver/formulation/surface_formulation.h"
@@ -25,7 +26,7 @@ using solver::testing::largestMove;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using devsurf::model::kPi;
 
 // Four SRSR strips around the centre O = (0, 0, h) of the square [−100, 100]² (z = 0): the
 // S-edges O–E and O–W form a crease through O, the rulings O–N and O–S are straight. The strips'

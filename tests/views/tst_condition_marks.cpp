@@ -27,8 +27,8 @@ using devsurf::views::ViewOverlay;
 
 namespace {
 
-struct Views : devsurf::test::SideBySideViews {
-    explicit Views(devsurf::model::Project project)
+struct MarkedViews : devsurf::test::SideBySideViews {
+    explicit MarkedViews(devsurf::model::Project project)
         : SideBySideViews(std::move(project), 1000, 500) {}
 
     // Edits the surface in place as a label change (what the commands announce) and renders.
@@ -79,7 +79,7 @@ private slots:
         sheet.setCreaseCondition(edges.geodesic, CreaseCondition::Geodesic);
         sheet.setCreaseCondition(edges.straight, CreaseCondition::Straight);
         sheet.setSmooth(edges.smooth, true);
-        Views views(std::move(project));
+        MarkedViews views(std::move(project));
         QVERIFY(views.show());
 
         const std::map<EdgeId, CreaseCondition> expected{
@@ -229,7 +229,7 @@ private slots:
         for (EdgeId id : creases) {
             cylinder.setCreaseCondition(id, CreaseCondition::Geodesic);
         }
-        Views views(std::move(project));
+        MarkedViews views(std::move(project));
         QVERIFY(views.show());
         views.spatial->setStandardView(SceneView::StandardView::Front);
         views.spatial->grabImage();

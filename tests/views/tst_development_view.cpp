@@ -3,6 +3,7 @@
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "model/examples.h"
+#include "model/math_constants.h"
 #include "model/sampled_mesh.h"
 #include "model/sheet_domain.h"
 #include "side_by_side_views.h"
@@ -36,15 +37,15 @@ using devsurf::views::SurfaceView;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using devsurf::model::kPi;
 
-struct Views : devsurf::test::SideBySideViews {
-    explicit Views(devsurf::model::Project project)
+struct DevelopmentViews : devsurf::test::SideBySideViews {
+    explicit DevelopmentViews(devsurf::model::Project project)
         : SideBySideViews(std::move(project), 900, 450) {}
 };
 
 // Extent {width, height} of the development's drawn vertices, in scene millimetres.
-std::pair<double, double> drawnExtent(const Views& views) {
+std::pair<double, double> drawnExtent(const DevelopmentViews& views) {
     double lo[2] = {std::numeric_limits<double>::infinity(),
                     std::numeric_limits<double>::infinity()};
     double hi[2] = {-lo[0], -lo[1]};
@@ -91,7 +92,7 @@ int redPixels(const QImage& image) {
     return count;
 }
 
-int darkPixelsAround(const QImage& image, const QPoint& widgetPos) {
+int darkPixelsNear(const QImage& image, const QPoint& widgetPos) {
     const double dpr = image.devicePixelRatio();
     int count = 0;
     for (int dy = -3; dy <= 3; ++dy) {
@@ -142,7 +143,7 @@ private slots:
     void liftingOneVertexKeepsTheDevelopmentTwoDimensional() {
         // Lifting one vertex of a flat design by 1 mm used to fold the development onto a line.
         for (const char* name : {"annulus", "sheet"}) {
-            Views views(devsurf::model::makeExample(name));
+            DevelopmentViews views(devsurf::model::makeExample(name));
             QVERIFY(views.show());
             const auto [width, height] = drawnExtent(views);
             QVERIFY(width > 250 && height > 250);
@@ -179,7 +180,7 @@ private slots:
             devsurf::model::Project project = devsurf::model::makeExample("sheet", 3);
             CompositeSurface& surface = project.surfaces.front();
             devsurf::test::foldBeyond(surface, 100.0, degrees * kPi / 180.0);
-            Views views(std::move(project));
+            DevelopmentViews views(std::move(project));
             QVERIFY(views.show());
             const std::pair<int, int> expected =
                 degrees > 0 ? std::pair(0, 3) : (degrees < 0 ? std::pair(3, 0) : std::pair(0, 0));
@@ -220,7 +221,7 @@ private slots:
     void foldDashesFollowTheZoom() {
         devsurf::model::Project project = devsurf::model::makeExample("sheet", 3);
         devsurf::test::foldBeyond(project.surfaces.front(), 100.0, 30.0 * kPi / 180.0);
-        Views views(std::move(project));
+        DevelopmentViews views(std::move(project));
         QVERIFY(views.show());
         DevelopmentView* view = views.development;
         const double unit = view->foldDashUnit();
@@ -253,7 +254,7 @@ private slots:
     }
 
     void cylinderIsUprightAndItsSeamDrawnOnBothSides() {
-        Views views(devsurf::model::makeExample("cylinder", 6));
+        DevelopmentViews views(devsurf::model::makeExample("cylinder", 6));
         QVERIFY(views.show());
         const CompositeSurface& surface = views.surface();
         // Height in space is height in the development, and up on screen in both views.
@@ -292,7 +293,7 @@ private slots:
             for (const double side : {-1.0, 1.0}) {
                 const QPoint other =
                     views.development->projectToWidget(q + Vec3(side * circumference, 0, 0));
-                if (image.rect().contains(other) && darkPixelsAround(image, other) > 10) {
+                if (image.rect().contains(other) && darkPixelsNear(image, other) > 10) {
                     ++seamVertices;
                 }
             }
@@ -311,7 +312,7 @@ private slots:
         const auto mesh =
             devsurf::model::sampleSurface(held, devsurf::model::kDevelopmentSamplesPerInterval);
         held.setSheetDomain(devsurf::model::placeDomain(disk, mesh, held.development()));
-        Views views(project);
+        DevelopmentViews views(project);
         QVERIFY(views.show());
         QCOMPARE(views.development->sheetLoopsDrawn(), 1);
         QCOMPARE(views.spatial->sheetLoopsDrawn(), 0);
@@ -354,7 +355,7 @@ private slots:
     void overlappingPiecesAreOutlinedInRed() {
         devsurf::model::Project band;
         band.surfaces.push_back(helicalBand());
-        Views views(std::move(band));
+        DevelopmentViews views(std::move(band));
         QVERIFY(views.show());
         QVERIFY(redPixels(views.development->grabImage()) > 100);
         views.document.resetProject(devsurf::model::makeExample("annulus"));

@@ -165,7 +165,7 @@ private slots:
         // fairness pulls it towards flat through a crumpled shape: the worker returns it as it
         // was and says so. (16 iterations after the release, det 3e-6, is nearly valid since
         // kNearlyValidResidual is 1e-4, and Solve improves it a little: 2.9e-6.)
-        const model::CompositeSurface folded = testing::liftedFig8(10);
+        const model::CompositeSurface folded = test::liftedFig8(10);
         const double before = measureQuality(folded).developabilityMax;
         QVERIFY2(before > kNearlyValidResidual && before < 1e-3,
                  qPrintable(QString::number(before)));
@@ -194,7 +194,7 @@ private slots:
         // nearly held): Solve keeps the exact normals of its strips, so it starts at the fold's
         // own residual and leaves the fold where it is (before, with fitted cubic normals: det
         // 3e-4 after 30 iterations, a point moved by 116 mm, and the design was kept as it was).
-        const model::CompositeSurface folded = testing::liftedFig8(20);
+        const model::CompositeSurface folded = test::liftedFig8(20);
         const double before = measureQuality(folded).developabilityMax;
         QVERIFY2(before < kNearlyValidResidual, qPrintable(QString::number(before)));
         // Its residual cycles (2.6e-8, 1.7e-6, 1.8e-6); Solve ends on the best iterate.

@@ -34,7 +34,7 @@ using model::Vec3;
 
 namespace {
 
-constexpr double kTolerance = 0.05;
+constexpr double kCadTolerance = 0.05;
 
 // C(t) = (30t, 30t², 30t³), t in [0, 1], as a cubic Bezier (a B-spline of one span).
 Vec3 cubic(double t) {
@@ -91,7 +91,7 @@ class TstCadCurves : public QObject {
     QTemporaryDir m_dir;
 
     void checkCurves(const QString& path) {
-        const io::CurveImportResult result = io::importCurveFile(path, {kTolerance, {}});
+        const io::CurveImportResult result = io::importCurveFile(path, {kCadTolerance, {}});
         QVERIFY2(!result.error, result.error ? result.error->detail.c_str() : "");
         QCOMPARE(result.curves.size(), std::size_t(2));
         const model::ReferenceCurve* spline = nullptr;
@@ -111,7 +111,7 @@ class TstCadCurves : public QObject {
             for (int k = 0; k <= 20000; ++k) {
                 best = std::min(best, distance(middle, cubic(k / 20000.0)));
             }
-            QVERIFY2(best <= kTolerance * 1.01, qPrintable(QString::number(best)));
+            QVERIFY2(best <= kCadTolerance * 1.01, qPrintable(QString::number(best)));
         }
         const Vec3 centre(100, 100, 10);
         const Vec3 normal(0, std::sqrt(0.5), std::sqrt(0.5));
@@ -132,7 +132,7 @@ class TstCadCurves : public QObject {
         for (int i = 0; i < total; ++i) {
             const QString path = m_dir.filePath(QStringLiteral("damaged%1.%2").arg(i).arg(suffix));
             QVERIFY(test::writeBytes(path, test::mutated(bytes, rng, i)));
-            const io::CurveImportResult r = io::importCurveFile(path, {kTolerance, {}});
+            const io::CurveImportResult r = io::importCurveFile(path, {kCadTolerance, {}});
             if (r.error) {
                 QVERIFY(r.curves.empty());
                 ++failed;

@@ -10,7 +10,7 @@ namespace {
 
 using model::Vec3;
 
-double segmentDistance(const Vec3& p, const Vec3& a, const Vec3& b) {
+double pointSegmentDistance3(const Vec3& p, const Vec3& a, const Vec3& b) {
     const Vec3 d = b - a;
     const double length2 = d.squaredNorm();
     const double t = length2 > 0.0 ? std::clamp(model::dot(p - a, d) / length2, 0.0, 1.0) : 0.0;
@@ -18,7 +18,7 @@ double segmentDistance(const Vec3& p, const Vec3& a, const Vec3& b) {
 }
 
 double rulingDistance(const Vec3& p, const io::PatchSurface& patch, double u) {
-    return segmentDistance(p, patch.a.evaluate(u), patch.b.evaluate(u));
+    return pointSegmentDistance3(p, patch.a.evaluate(u), patch.b.evaluate(u));
 }
 
 double ruledDistance(const Vec3& p, const io::PatchSurface& patch) {
@@ -67,7 +67,8 @@ double planarDistance(const Vec3& p, const io::PatchSurface& patch) {
     }
     double edge = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < n; ++i) {
-        edge = std::min(edge, segmentDistance(p, patch.corners[i], patch.corners[(i + 1) % n]));
+        edge =
+            std::min(edge, pointSegmentDistance3(p, patch.corners[i], patch.corners[(i + 1) % n]));
     }
     return edge;
 }
