@@ -105,13 +105,15 @@ case "$mode" in
     (cd "$build_asan" && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       xvfb-run -a ctest --output-on-failure -j "$jobs")
-    echo "== Building and running the worker and document tests under ThreadSanitizer in $build_tsan"
+    # ThreadSanitizer only where our code starts threads without a GUI: the solver worker and
+    # the distance report's parallel measurement (tst_model_threads).
+    echo "== Building and running the threaded tests under ThreadSanitizer in $build_tsan"
     cmake -S "$root" -B "$build_tsan" -G Ninja "${sanitizer_flags[@]}" -DDEVSURF_TSAN=ON \
       -DDEVSURF_UNIT_TESTS_ONLY=ON >/dev/null
-    cmake --build "$build_tsan" -j "$jobs" --target tst_worker tst_document
+    cmake --build "$build_tsan" -j "$jobs" --target tst_worker tst_model
     # One BLAS/OpenMP thread: the threads under test are ours, not the uninstrumented libgomp's.
     (cd "$build_tsan" && OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 \
       TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$root/tests/tsan.supp" \
-      xvfb-run -a ctest --output-on-failure -j "$jobs" -R '^(tst_worker|tst_document)$')
+      xvfb-run -a ctest --output-on-failure -j "$jobs" -R '^(tst_worker|tst_model_threads)$')
     ;;
 esac
