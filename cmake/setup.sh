@@ -69,16 +69,26 @@ done
 sanitizer_flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
   "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG")
 
-configure_and_build() { # dir, extra cmake args...
-  local dir="$1"; shift
+configure_and_build() { # dir, targets ("" for all), extra cmake args...
+  local dir="$1" targets="$2"; shift 2
   # Configure every time (a few seconds): packages installed since the last run, such as the
   # benchmark's Ceres peer for `test` after `run`, are then found.
   cmake -S "$root" -B "$dir" -G Ninja "$@" >/dev/null
-  cmake --build "$dir" -j "$jobs"
+  # shellcheck disable=SC2086 # targets is a list
+  cmake --build "$dir" -j "$jobs" ${targets:+--target $targets}
 }
 
+# `run` builds the application and the command-line tool only. `test` runs the unit tests once,
+# in the AddressSanitizer build below, so its Release build leaves them out and builds the
+# desktop, views, OpenCASCADE and benchmark tests (DEVSURF_SKIP_SANITIZED_TESTS); `build`
+# builds every test in Release.
+case "$mode" in
+  run) release_targets="devsurf devsurf-cli"; release_flags=() ;;
+  test) release_targets=""; release_flags=(-DDEVSURF_SKIP_SANITIZED_TESTS=ON) ;;
+  build) release_targets=""; release_flags=(-DDEVSURF_SKIP_SANITIZED_TESTS=OFF) ;;
+esac
 echo "== Building (Release) in $build"
-configure_and_build "$build" -DCMAKE_BUILD_TYPE=Release
+configure_and_build "$build" "$release_targets" -DCMAKE_BUILD_TYPE=Release "${release_flags[@]}"
 
 case "$mode" in
   build)
@@ -97,10 +107,10 @@ case "$mode" in
     exec "$build/bin/devsurf" "$example"
     ;;
   test)
-    echo "== Running all tests (headless)"
+    echo "== Running the desktop, views, OpenCASCADE and benchmark tests (headless)"
     (cd "$build" && xvfb-run -a -s "-screen 0 1920x1080x24" ctest --output-on-failure -j "$jobs")
     echo "== Building and running the unit tests under AddressSanitizer + UBSan in $build_asan"
-    configure_and_build "$build_asan" "${sanitizer_flags[@]}" -DDEVSURF_SANITIZE=ON \
+    configure_and_build "$build_asan" "" "${sanitizer_flags[@]}" -DDEVSURF_SANITIZE=ON \
       -DDEVSURF_UNIT_TESTS_ONLY=ON
     (cd "$build_asan" && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \

@@ -93,7 +93,7 @@ joinStrips(const std::vector<model::CompositeSurface>& surfaces,
 
 int runApproximateCommand(const SubcommandArguments& args) {
     const std::string target = args.positionals(1, "a mesh or point cloud file").front();
-    const std::string output = args.required("o", "the output file is missing (use -o FILE)");
+    const std::string output = args.required("o", kMissingOutput);
     const std::optional<std::string> from = args.value("from");
     if (from && args.value("strips")) {
         throw UsageError{"give either '--from' or '--strips', not both"};

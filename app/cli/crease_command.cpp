@@ -43,7 +43,7 @@ int runCreaseCommand(const SubcommandArguments& args) {
     const std::string conditionText =
         args.required("condition", "the condition is missing (use --condition "
                                    "curved-fold|geodesic|straight|none)");
-    const std::string output = args.required("o", "the output file is missing (use -o FILE)");
+    const std::string output = args.required("o", kMissingOutput);
     const std::vector<std::uint32_t> ids = parseIds(idsText, "--edges", "edge");
     const model::CreaseCondition condition = parseCondition(conditionText);
     const int surfaceNumber = surfaceNumberOf(args);
@@ -79,7 +79,7 @@ int runCreaseCommand(const SubcommandArguments& args) {
 int runSmoothCommand(const SubcommandArguments& args) {
     const std::string input = args.onePositional("one project file");
     const std::string idsText = args.required("edges", "the rulings are missing (use --edges IDS)");
-    const std::string output = args.required("o", "the output file is missing (use -o FILE)");
+    const std::string output = args.required("o", kMissingOutput);
     const std::vector<std::uint32_t> ids = parseIds(idsText, "--edges", "edge");
     const bool sharp = args.isSet("off");
     const int surfaceNumber = surfaceNumberOf(args);

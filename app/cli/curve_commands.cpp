@@ -44,7 +44,7 @@ int runImportCurvesCommand(const SubcommandArguments& args) {
     const std::vector<std::string> files = args.positionals(2, "a project file and a curve file");
     const std::string& input = files[0];
     const std::string& curveFile = files[1];
-    const std::string output = args.required("o", "the output file is missing (use -o FILE)");
+    const std::string output = args.required("o", kMissingOutput);
     io::CurveImportOptions options;
     if (const std::optional<std::string> text = args.value("tolerance")) {
         options.tolerance = parseReal(*text, "--tolerance", 1e-6, 1e3, "a length in mm");
@@ -88,7 +88,7 @@ int runImportCurvesCommand(const SubcommandArguments& args) {
 int runFitEdgeCommand(const SubcommandArguments& args) {
     const std::string input = args.onePositional("one project file");
     const std::string edgeText = args.required("edge", "the edge is missing (use --edge ID)");
-    const std::string output = args.required("o", "the output file is missing (use -o FILE)");
+    const std::string output = args.required("o", kMissingOutput);
     const auto edge = static_cast<model::EdgeId>(parseWhole(edgeText, "--edge", 0, 4294967294L));
     const std::optional<std::string> curveText = args.value("curve");
     const std::optional<std::string> surfaceText = args.value("surface");

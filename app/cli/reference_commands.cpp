@@ -76,7 +76,7 @@ int runImportReferenceCommand(const SubcommandArguments& args) {
                                                                "point cloud file");
     const std::string& input = files[0];
     const std::string& target = files[1];
-    const std::string output = args.required("o", "the output file is missing (use -o FILE)");
+    const std::string output = args.required("o", kMissingOutput);
     const std::optional<std::string> name = args.value("name");
     if (name && (name->empty() || name->size() > 4096)) {
         throw UsageError{"option '--name' needs a name of 1 to 4096 characters"};

@@ -81,7 +81,7 @@ bool isShapeFormat(const std::string& name) {
 
 int runExportShapeCommand(const SubcommandArguments& args, const std::string& format) {
     const std::string file = args.onePositional("one project file");
-    const std::string output = args.required("o", "the output file is missing (use -o FILE)");
+    const std::string output = args.required("o", kMissingOutput);
     refusePatternOptions(args);
     if (output == "-") {
         throw UsageError{"a 3D shape is written to a file, not to standard output ('-')"};

@@ -159,7 +159,7 @@ int runPinCommand(const SubcommandArguments& args) {
     const std::string input = args.onePositional("one project file");
     const std::string idsText =
         args.required("vertices", "the vertices are missing (use --vertices IDS)");
-    const std::string output = args.required("o", "the output file is missing (use -o FILE)");
+    const std::string output = args.required("o", kMissingOutput);
     const std::vector<model::VertexId> ids = parseIds(idsText, "--vertices", "vertex");
     const int surfaceNumber =
         args.isSet("surface")
@@ -270,7 +270,7 @@ std::optional<model::SheetDomain> requestedSheet(const SubcommandArguments& args
 
 int runSheetCommand(const SubcommandArguments& args) {
     const std::string input = args.onePositional("one project file");
-    const std::string output = args.required("o", "the output file is missing (use -o FILE)");
+    const std::string output = args.required("o", kMissingOutput);
     std::optional<model::SheetDomain> requested = requestedSheet(args);
     const int surfaceNumber =
         args.isSet("surface")

@@ -1,5 +1,6 @@
 // devsurf-bench: the solver benchmark (`devsurf-cli` no longer links it), and a quality
 // study of one model over seeds with adjustable options (for measuring solver choices).
+#include "approximation_bench.h"
 #include "bench_models.h"
 #include "benchmark.h"
 #include "drag_bench.h"
@@ -146,6 +147,7 @@ int main(int argc, char** argv) {
     devsurf::bench::StudyStart start;
     devsurf::bench::StudyOptions studyOptions;
     bool trace = false;
+    devsurf::bench::ApproximationBenchOptions approximation;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--json") {
@@ -167,6 +169,14 @@ int main(int argc, char** argv) {
             options.compareAuxiliary = false;
             options.smallNoise = 0.0;
             options.studySeeds = 0;
+        } else if (arg == "--approximation" && i + 1 < argc) {
+            approximation.target = argv[++i];
+        } else if (arg == "--strips" && i + 1 < argc) {
+            approximation.strips = std::atoi(argv[++i]);
+        } else if (arg == "--intervals" && i + 1 < argc) {
+            approximation.intervals = std::atoi(argv[++i]);
+        } else if (arg == "--rho" && i + 1 < argc) {
+            approximation.rho = std::atof(argv[++i]);
         } else if (arg == "--study" && i + 1 < argc) {
             study = argv[++i];
         } else if (arg == "--edge-noise" && i + 1 < argc) {
@@ -198,6 +208,8 @@ int main(int argc, char** argv) {
         } else {
             std::cerr << "usage: devsurf-bench [--json] [--model NAME]... [--no-ceres | --blas]\n"
                          "       devsurf-bench --drag [--json]\n"
+                         "       devsurf-bench --approximation TARGET [--strips K] [--intervals N] "
+                         "[--iterations N] [--rho R] [--json]\n"
                          "       devsurf-bench --paper [--model ROW]... [--paper-size-cap N] "
                          "[--edge-noise F | "
                          "--diameter-noise F] [--iterations N] [--json]\n"
@@ -240,6 +252,19 @@ int main(int argc, char** argv) {
         }
         devsurf::bench::printPaperBench(report, options.json, std::cout);
         return 0;
+    }
+    if (!approximation.target.empty()) {
+        if (approximation.strips < 1 || approximation.intervals < 1) {
+            std::cerr << "devsurf-bench: --strips and --intervals take a whole number >= 1.\n";
+            return 1;
+        }
+        if (haveIterations) {
+            approximation.iterations = studyOptions.iterations;
+        }
+        approximation.log = [](const std::string& line) { std::cerr << line << "\n"; };
+        const auto report = devsurf::bench::runApproximationBench(approximation);
+        devsurf::bench::printApproximationBench(report, options.json, std::cout);
+        return report.error.empty() ? 0 : 2;
     }
     if (drag) {
         devsurf::bench::DragBenchOptions dragOptions;

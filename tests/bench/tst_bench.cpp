@@ -1,3 +1,4 @@
+#include "approximation_bench.h"
 #include "bench_models.h"
 #include "benchmark.h"
 #include "paper_bench.h"
@@ -8,8 +9,11 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
+#include <fstream>
 #include <sstream>
 
 using namespace devsurf;
@@ -189,6 +193,79 @@ private slots:
             QVERIFY(row.value("development_edge_error").toDouble() >= 0.0);
         }
         QVERIFY(root.value("drag").toObject().contains("median_ms"));
+    }
+
+    void approximationReportOfACylinderPatch() {
+        // A cylinder over the parabola y = x² / 100, x in [−50, 50], z in [0, 60]: developable,
+        // so one strip covers it closely and stays developable.
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("cylinder.xyz").toStdString();
+        {
+            std::ofstream file(path);
+            for (int i = 0; i <= 40; ++i) {
+                for (int j = 0; j <= 24; ++j) {
+                    const double x = -50.0 + 2.5 * i;
+                    file << x << " " << 0.01 * x * x << " " << 2.5 * j << "\n";
+                }
+            }
+        }
+        bench::ApproximationBenchOptions options;
+        options.target = path;
+        options.strips = 1;
+        const bench::ApproximationBenchReport report = bench::runApproximationBench(options);
+        QVERIFY2(report.error.empty(), report.error.c_str());
+        std::ostringstream out;
+        bench::printApproximationBench(report, true, out);
+        QJsonParseError error;
+        const QJsonDocument document =
+            QJsonDocument::fromJson(QByteArray::fromStdString(out.str()), &error);
+        QVERIFY2(error.error == QJsonParseError::NoError, qPrintable(error.errorString()));
+        const QJsonObject a = document.object().value("approximation").toObject();
+        QCOMPARE(a.value("target_points").toInt(), 41 * 25);
+        QCOMPARE(a.value("strips").toInt(), 1);
+        QVERIFY(a.value("thinned_points").toInt() > 6);
+        QVERIFY(a.value("variables").toInt() > 0);
+        QVERIFY(a.value("iterations").toInt() > 0);
+        const QJsonObject time = a.value("ms_per_iter").toObject();
+        for (const char* key : {"assembly", "factorize", "solve"}) {
+            QVERIFY2(time.value(key).toDouble() > 0.0, key);
+        }
+        QVERIFY(std::abs(time.value("total").toDouble() -
+                         (time.value("assembly").toDouble() + time.value("factorize").toDouble() +
+                          time.value("solve").toDouble())) < 1e-3);
+        QCOMPARE(a.value("strips_developable").toInt(), 1);
+        QVERIFY(a.value("developability_max").toDouble() <= bench::kDevelopableResidual);
+        // The strip lies on the cylinder: its points are within a tenth of a percent of the
+        // diagonal (119 mm) of it, and the Hausdorff figure is the larger side's max.
+        const QJsonObject toSurface = a.value("target_to_surface").toObject();
+        const QJsonObject toTarget = a.value("surface_to_target").toObject();
+        QVERIFY(toSurface.value("mean_percent").toDouble() < 0.1);
+        QVERIFY(std::abs(toSurface.value("mean_mm").toDouble() / a.value("diagonal_mm").toDouble() *
+                             100.0 -
+                         toSurface.value("mean_percent").toDouble()) < 1e-6);
+        QCOMPARE(a.value("hausdorff_percent").toDouble(),
+                 std::max(toSurface.value("max_percent").toDouble(),
+                          toTarget.value("max_percent").toDouble()));
+        QVERIFY(a.value("coverage").toDouble() > 0.0 && a.value("coverage").toDouble() <= 1.0);
+        QCOMPARE(a.value("paper").toObject().value("variables").toInt(), 12777);
+        const QJsonObject targets = a.value("targets").toObject();
+        QVERIFY(targets.value("strips").toBool());
+        QVERIFY(targets.value("developable").toBool());
+        QVERIFY(targets.value("per_iteration").isBool());
+
+        // An unreadable target: the error, still valid JSON, no strips.
+        options.target = dir.filePath("missing.obj").toStdString();
+        const bench::ApproximationBenchReport missing = bench::runApproximationBench(options);
+        QVERIFY(!missing.error.empty());
+        std::ostringstream refused;
+        bench::printApproximationBench(missing, true, refused);
+        const QJsonObject b = QJsonDocument::fromJson(QByteArray::fromStdString(refused.str()))
+                                  .object()
+                                  .value("approximation")
+                                  .toObject();
+        QVERIFY(!b.value("error").toString().isEmpty());
+        QCOMPARE(b.value("strips").toInt(), 0);
+        QVERIFY(!b.value("targets").toObject().value("strips").toBool());
     }
 
     void unknownModelIsRefused() {

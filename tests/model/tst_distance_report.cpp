@@ -312,6 +312,27 @@ private slots:
         QVERIFY(std::abs(report.targetDistances.front() - 3.0) < 1e-9);
     }
 
+    void manyPointsAreMeasuredInParallel() {
+        // 3,600 points 6 mm above and below the flat 300 × 300 mm sheet: more than 1,024 per
+        // thread on two cores, so the measurement runs in threads (the test command runs this
+        // under ThreadSanitizer). Every point is exactly 6 mm away, whichever thread took it.
+        const CompositeSurface surface = makeExample("sheet").surfaces.front();
+        std::vector<Vec3> target;
+        for (int i = 0; i < 60; ++i) {
+            for (int j = 0; j < 60; ++j) {
+                target.emplace_back(15.0 + 4.5 * i, 15.0 + 4.5 * j, (i + j) % 2 ? 6.0 : -6.0);
+            }
+        }
+        const DistanceReport report = measureDistance(surface, target, {1.0, 4});
+        QCOMPARE(report.targetDistances.size(), target.size());
+        for (std::size_t i = 0; i < target.size(); ++i) {
+            QVERIFY2(std::abs(report.targetDistances[i] - 6.0) < 1e-9,
+                     qPrintable(QString::number(i)));
+        }
+        QVERIFY(std::abs(report.targetToSurface.mean - 6.0) < 1e-9);
+        QCOMPARE(report.coverage, 0.0);
+    }
+
     void aSetCancelFlagStopsTheMeasurement() {
         const CompositeSurface surface = makeExample("sheet").surfaces.front();
         const std::vector<Vec3> target{Vec3(10, 20, 5), Vec3(150, 150, -3)};
