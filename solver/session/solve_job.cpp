@@ -113,6 +113,25 @@ template <typename Map> typename Map::mapped_type entryOf(const Map& map, int ke
 // The weight of the unit length of the control normals in an approximation (see optionsFor).
 constexpr double kApproximationUnitNormalWeight = 1.0;
 
+// `more` continued `summary` on the same session: its iterations appended, its end taken.
+void append(Summary& summary, const Summary& more) {
+    const int offset = summary.iterationsCompleted;
+    for (IterationStats stats : more.iterations) {
+        stats.iteration += offset;
+        summary.iterations.push_back(stats);
+    }
+    summary.iterationsCompleted += more.iterationsCompleted;
+    summary.status = more.status;
+    summary.detail = more.detail;
+    if (more.iterationsCompleted > 0) {
+        summary.finalMaxConstraintResidual = more.finalMaxConstraintResidual;
+        summary.finalEnergy = more.finalEnergy;
+    }
+    summary.toleranceReached = summary.finalMaxConstraintResidual <= summary.tolerance;
+    summary.analysisMs += more.analysisMs;
+    summary.totalMs += more.totalMs;
+}
+
 SessionOptions optionsFor(const JobRequest& request, int surface, bool damped = false) {
     SessionOptions options;
     if (keepsLengths(request)) {
@@ -443,6 +462,24 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             total += steps;
             summary = session->step(steps, cancel, perIteration);
             assessment.dampedApproximation = true;
+        }
+        if (target && !target->points.empty() && summary.succeeded() &&
+            summary.status != Status::StoppedBeforeDegenerate && !summary.toleranceReached) {
+            // Short of the tolerance once the pull has faded: finished as a Solve of where the
+            // pull left it, whose relative fairness keeps it there while the hard conditions
+            // converge (continuing the pull's own session moved it farther: docs/tuning.md).
+            JobRequest finish;
+            finish.kind = JobKind::Solve;
+            finish.curvePairs = request.curvePairs;
+            try {
+                const model::CompositeSurface pulled = session->surface();
+                session = std::make_unique<SolveSession>(pulled, std::vector<VertexHandle>{},
+                                                         optionsFor(finish, key));
+            } catch (const std::exception& error) {
+                return fail(cannotSolve(key, error));
+            }
+            total += kApproximationFinishIterations;
+            append(summary, session->step(kApproximationFinishIterations, cancel, perIteration));
         }
         const auto stepTime = std::chrono::steady_clock::now() - stepped;
         if (drag && !request.settle && summary.succeeded() && !d.moves[s].empty() &&

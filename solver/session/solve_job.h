@@ -65,6 +65,9 @@ struct JobRequest {
 
 // The iterations of an approximation's pull when the request does not say.
 constexpr int kApproximationIterations = 30;
+// At most this many more iterations, of the hard conditions alone, for an approximation whose
+// strip is short of the tolerance when its pull has faded (docs/tuning.md).
+constexpr int kApproximationFinishIterations = 20;
 
 // The iterations a request runs when it does not say: Solve kSolveIterations (a limit, it stops
 // once converged), a drag's move 1, its release iterationsAfterDrag() (longer when a surface

@@ -235,11 +235,12 @@ private slots:
                           time.value("solve").toDouble())) < 1e-3);
         QCOMPARE(a.value("strips_developable").toInt(), 1);
         QVERIFY(a.value("developability_max").toDouble() <= bench::kDevelopableResidual);
-        // The strip lies on the cylinder: its points are within a tenth of a percent of the
-        // diagonal (119 mm) of it, and the Hausdorff figure is the larger side's max.
+        // The strip lies on the cylinder: its points are on average within a twentieth of a
+        // percent of the diagonal (119 mm) of it (measured 0.008 %), and the Hausdorff figure
+        // is the larger side's max.
         const QJsonObject toSurface = a.value("target_to_surface").toObject();
         const QJsonObject toTarget = a.value("surface_to_target").toObject();
-        QVERIFY(toSurface.value("mean_percent").toDouble() < 0.1);
+        QVERIFY(toSurface.value("mean_percent").toDouble() < 0.05);
         QVERIFY(std::abs(toSurface.value("mean_mm").toDouble() / a.value("diagonal_mm").toDouble() *
                              100.0 -
                          toSurface.value("mean_percent").toDouble()) < 1e-6);
