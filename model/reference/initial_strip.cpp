@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace devsurf::model::reference {
@@ -30,6 +31,53 @@ std::vector<Vec3> straightControlPoints(const SplineSpace& space, const Vec3& p,
     points.front() = p;
     points.back() = q;
     return points;
+}
+
+// The unit direction of the frame's plane along which the normals turn most, if they turn
+// clearly more along it than across it (kRulingAnisotropy) and by kRulingTurnMinimum at least
+// over the points: a least-squares linear fit of the normals' tilt (their components in the
+// plane, each normal turned to the side of axes[2]) against the points' position in the plane,
+// whose larger singular direction that is.
+std::optional<Vec3> mostTurningDirection(const std::vector<Vec3>& points,
+                                         const std::vector<Vec3>& normals,
+                                         const PrincipalFrame& frame) {
+    if (normals.empty()) {
+        return std::nullopt;
+    }
+    Eigen::MatrixXd positions(static_cast<Eigen::Index>(points.size()), 3);
+    Eigen::MatrixXd tilts(static_cast<Eigen::Index>(points.size()), 2);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        Vec3 n = normals[i];
+        const double length = n.norm();
+        if (!(length > 0.0) || !std::isfinite(length)) {
+            return std::nullopt;
+        }
+        n = n / length;
+        if (dot(n, frame.axes[2]) < 0.0) {
+            n = -n;
+        }
+        const auto row = static_cast<Eigen::Index>(i);
+        const Vec3 d = points[i] - frame.centroid;
+        positions.row(row) << dot(d, frame.axes[0]), dot(d, frame.axes[1]), 1.0;
+        tilts.row(row) << dot(n, frame.axes[0]), dot(n, frame.axes[1]);
+    }
+    // tilt ≈ position · X; the 2 × 2 gradient G = X's first two rows, tilt change = Gᵀ · step.
+    const Eigen::MatrixXd x = positions.colPivHouseholderQr().solve(tilts);
+    const Eigen::Matrix2d gradient = x.topRows(2).transpose(); // rows: tilt, columns: step
+    const Eigen::JacobiSVD<Eigen::Matrix2d> svd(gradient, Eigen::ComputeFullV);
+    const Eigen::Vector2d sigma = svd.singularValues();
+    const double span = std::max(frame.high[0] - frame.low[0], frame.high[1] - frame.low[1]);
+    if (!(sigma(0) * span >= kRulingTurnMinimum) || !(sigma(0) >= kRulingAnisotropy * sigma(1))) {
+        return std::nullopt;
+    }
+    // Near the longest axis (within kRulingTurnAngle) the plain strip stays: turning it a
+    // little gains nothing and changes what the strips of a shape meet with.
+    const Eigen::Vector2d v = svd.matrixV().col(0);
+    if (std::abs(v(0)) >= std::cos(kRulingTurnAngle) * v.norm()) {
+        return std::nullopt;
+    }
+    const Vec3 direction = frame.axes[0] * v(0) + frame.axes[1] * v(1);
+    return direction / direction.norm();
 }
 
 } // namespace
@@ -77,29 +125,54 @@ PrincipalFrame principalFrame(const std::vector<Vec3>& points) {
 
 CompositeSurface initialStrip(const std::vector<Vec3>& points, const SplineSpace& space,
                               double margin) {
+    return initialStrip(points, {}, space, margin);
+}
+
+CompositeSurface initialStrip(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                              const SplineSpace& space, double margin) {
     if (!space.isValid()) {
         throw std::invalid_argument("the spline space is not valid");
     }
     if (!(margin >= 0.0) || !std::isfinite(margin)) {
         throw std::invalid_argument("the margin must be a finite number of at least 0");
     }
+    if (!normals.empty() && normals.size() != points.size()) {
+        throw std::invalid_argument("give one normal per point or none");
+    }
     const PrincipalFrame frame = principalFrame(points);
-    const double length = frame.high[0] - frame.low[0];
-    const double width = frame.high[1] - frame.low[1];
-    if (!(width > 1e-9 * length) || !(length > 0.0)) {
+    if (!(frame.high[1] - frame.low[1] > 1e-9 * (frame.high[0] - frame.low[0])) ||
+        !(frame.high[0] - frame.low[0] > 0.0)) {
         throw std::invalid_argument("the points do not spread in two directions");
     }
-    const double u0 = frame.low[0] - margin * length;
-    const double u1 = frame.high[0] + margin * length;
-    const double w0 = frame.low[1] - margin * width;
-    const double w1 = frame.high[1] + margin * width;
-    auto at = [&](double u, double w) {
-        return frame.centroid + frame.axes[0] * u + frame.axes[1] * w;
-    };
+    // The direction of a and b in the plane: the longest axis, or the direction of most turning.
+    Vec3 along = frame.axes[0];
+    if (const std::optional<Vec3> turning = mostTurningDirection(points, normals, frame)) {
+        along = *turning;
+    }
+    const Vec3 across = cross(frame.axes[2], along); // along × across = axes[2]
+    double low[2] = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+    double high[2] = {std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
+    for (const Vec3& p : points) {
+        const double t[2] = {dot(p - frame.centroid, along), dot(p - frame.centroid, across)};
+        for (int i = 0; i < 2; ++i) {
+            low[i] = std::min(low[i], t[i]);
+            high[i] = std::max(high[i], t[i]);
+        }
+    }
+    const double length = high[0] - low[0];
+    const double width = high[1] - low[1];
+    if (!(width > 1e-9 * length) || !(length > 1e-9 * width)) {
+        throw std::invalid_argument("the points do not spread in two directions");
+    }
+    const double u0 = low[0] - margin * length;
+    const double u1 = high[0] + margin * length;
+    const double w0 = low[1] - margin * width;
+    const double w1 = high[1] + margin * width;
+    auto at = [&](double u, double w) { return frame.centroid + along * u + across * w; };
     CompositeSurface s;
     s.setName("strip");
-    // a from a0 to a1 along axes[0], b from b0 to b1 beside it along axes[1]: the face loop
-    // a0, a1, b1, b0 runs like the sheet example's faces, so its normal is axes[0] × axes[1].
+    // a from a0 to a1 along `along`, b from b0 to b1 beside it along `across`: the face loop
+    // a0, a1, b1, b0 runs like the sheet example's faces, so its normal is axes[2].
     const VertexId a0 = s.addVertex(at(u0, w0));
     const VertexId a1 = s.addVertex(at(u1, w0));
     const VertexId b1 = s.addVertex(at(u1, w1));

@@ -32,6 +32,24 @@ PrincipalFrame principalFrame(const std::vector<Vec3>& points);
 CompositeSurface initialStrip(const std::vector<Vec3>& points, const SplineSpace& space,
                               double margin = 0.05);
 
+// The same strip turned in its plane to the points' curvature where `normals` (one per point,
+// either sign) show it: where the normal turns clearly more in one direction of the plane than
+// in the other (by kRulingAnisotropy), as on a cylinder, a developable surface's rulings run
+// along the other, so a and b run along the direction of most turning if that lies more than
+// kRulingTurnAngle from the longest axis. Otherwise (a sphere, a plane, empty normals) as
+// above. Throws as above, and std::invalid_argument for a count of normals other than zero or
+// that of the points.
+CompositeSurface initialStrip(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                              const SplineSpace& space, double margin = 0.05);
+
+// How much more the normal must turn along one direction of the plane than along the other,
+// and how far it must turn over the points at least (rad), for initialStrip to lay the rulings
+// along the direction of least turning; and how far (rad) the direction of most turning must
+// lie from the longest axis for the strip to be turned at all.
+inline constexpr double kRulingAnisotropy = 2.0;
+inline constexpr double kRulingTurnMinimum = 0.05;
+inline constexpr double kRulingTurnAngle = 0.5235987755982988; // 30°
+
 // A simple automatic split of a shape into `count` groups for as many initial strips: k-means
 // on the positions (Lloyd's iteration, at most 50 rounds) from a deterministic farthest-point
 // start (the point farthest from the centroid, then each time the point farthest from the

@@ -47,13 +47,18 @@ std::vector<model::CompositeSurface> initialStrips(const ThinnedTarget& target, 
     for (const std::vector<std::size_t>& cluster :
          model::reference::clusterPoints(positions, count)) {
         std::vector<model::Vec3> patch;
+        std::vector<model::Vec3> normals;
         patch.reserve(cluster.size());
+        normals.reserve(cluster.size());
         for (std::size_t i : cluster) {
             patch.push_back(positions[i]);
+            normals.push_back(target.thinned.points[i].normal);
         }
         model::CompositeSurface strip;
         try {
-            strip = model::reference::initialStrip(patch, space);
+            // Rulings along the direction in which the thinned normals turn least, where they
+            // show one: a strip laid across a cylinder's rulings cannot bend onto it.
+            strip = model::reference::initialStrip(patch, normals, space);
         } catch (const std::invalid_argument&) {
             continue; // a cluster on a line or of fewer than 3 points: no strip
         }

@@ -44,9 +44,10 @@ ThinnedTarget thinTarget(const std::vector<model::Vec3>& points, double rho,
 bool enoughPointsFor(const ThinnedTarget& target, int strips);
 
 // `count` flat strips with `intervals` spline intervals (cubic, degree-2 rulings space), one on
-// each K-means cluster of the thinned points (model::reference::clusterPoints, initialStrip),
-// named "strip N" from N = firstNumber. A cluster on a line gets no strip, so fewer may come
-// back (none if every point lies on one line). Requires enoughPointsFor(target, count).
+// each K-means cluster of the thinned points (model::reference::clusterPoints, initialStrip with
+// the thinned normals), named "strip N" from N = firstNumber. A cluster on a line gets no strip, so
+// fewer may come back (none if every point lies on one line). Requires enoughPointsFor(target,
+// count).
 std::vector<model::CompositeSurface> initialStrips(const ThinnedTarget& target, int count,
                                                    int intervals, int firstNumber = 1);
 

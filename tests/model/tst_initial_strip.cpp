@@ -48,6 +48,59 @@ private slots:
         }
     }
 
+    void stripOnACylinderRunsAcrossItsRulings() {
+        // A patch of the cylinder of radius 100 about the z-axis, ±30° around (105 mm of arc)
+        // and 200 mm tall: its longest axis is the cylinder's, along its rulings.
+        std::vector<Vec3> points;
+        std::vector<Vec3> normals;
+        for (int i = 0; i <= 20; ++i) {
+            const double phi = (i / 10.0 - 1.0) * 0.5235987755982988;
+            for (int j = 0; j <= 40; ++j) {
+                points.emplace_back(100 * std::cos(phi), 100 * std::sin(phi), 5.0 * j);
+                // Either sign, as a plane fit gives them.
+                normals.push_back(Vec3(std::cos(phi), std::sin(phi), 0) * (j % 2 ? 1.0 : -1.0));
+            }
+        }
+        const auto curveDirection = [](const CompositeSurface& strip) {
+            const Vec3 a0 = strip.position(0);
+            const Vec3 a1 = strip.position(1);
+            return (a1 - a0) / (a1 - a0).norm();
+        };
+        const Vec3 axis(0, 0, 1);
+        // Without normals a and b run along the longest axis, across the bend.
+        const CompositeSurface plain = initialStrip(points, {3, 2, 4});
+        QVERIFY(std::abs(dot(curveDirection(plain), axis)) > 0.99);
+        // With them a and b run around the cylinder and the rulings along its axis.
+        const CompositeSurface turned = initialStrip(points, normals, {3, 2, 4});
+        QVERIFY(turned.validate().empty());
+        QVERIFY(std::abs(dot(curveDirection(turned), axis)) < 0.01);
+        const DistanceReport report = measureDistance(turned, points);
+        // Every point lies over the rectangle, at most the arc's sagitta (13.4 mm) off it.
+        QVERIFY(report.targetToSurface.max < 13.4);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 initialStrip(points, {Vec3(1, 0, 0)}, {3, 2, 4}));
+    }
+
+    void stripOnASphereKeepsTheLongestAxis() {
+        // A cap of the sphere of radius 100, 60 × 30 mm: its normals turn alike in every
+        // direction, so they give no ruling direction and the strip is the plain one.
+        std::vector<Vec3> points;
+        std::vector<Vec3> normals;
+        for (int i = -15; i <= 15; ++i) {
+            for (int j = -7; j <= 7; ++j) {
+                const Vec3 p(2.0 * i, 2.0 * j, 0.0);
+                const Vec3 n = Vec3(p.x, p.y, std::sqrt(100.0 * 100.0 - p.squaredNorm())) / 100.0;
+                points.push_back(n * 100.0);
+                normals.push_back(n);
+            }
+        }
+        const CompositeSurface plain = initialStrip(points, {3, 2, 4});
+        const CompositeSurface withNormals = initialStrip(points, normals, {3, 2, 4});
+        for (VertexId v = 0; v < 4; ++v) {
+            QVERIFY((plain.position(v) - withNormals.position(v)).norm() < 1e-12);
+        }
+    }
+
     void refusesPointsWithoutAPlane() {
         const std::vector<Vec3> line = grid(Vec3(0, 0, 0), Vec3(1, 2, 3), Vec3(0, 0, 0), 5, 1);
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, initialStrip(line, {3, 2, 4}));
