@@ -22,10 +22,6 @@ double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-ApproximationDistance distanceOf(const model::reference::OneSidedDistance& d) {
-    return {d.mean, d.percentile95, d.max, d.meanPercent, d.percentile95Percent, d.maxPercent};
-}
-
 void log(const ApproximationBenchOptions& options, const std::string& line) {
     if (options.log) {
         options.log(line);
@@ -112,8 +108,8 @@ ApproximationBenchReport runApproximationBench(const ApproximationBenchOptions& 
     log(options, "approximation: measuring the distance");
     const model::reference::DistanceReport distance =
         model::reference::measureDistance(outcome.surfaces, points);
-    report.targetToSurface = distanceOf(distance.targetToSurface);
-    report.surfaceToTarget = distanceOf(distance.surfaceToTarget);
+    report.targetToSurface = distance.targetToSurface;
+    report.surfaceToTarget = distance.surfaceToTarget;
     report.hausdorffPercent = 100.0 * distance.hausdorff() / distance.diagonal;
     report.coverage = distance.coverage;
     return report;
@@ -121,10 +117,10 @@ ApproximationBenchReport runApproximationBench(const ApproximationBenchOptions& 
 
 namespace {
 
-std::string distanceJson(const ApproximationDistance& d) {
-    return "{ \"mean_mm\": " + number(d.meanMm) + ", \"p95_mm\": " + number(d.p95Mm) +
-           ", \"max_mm\": " + number(d.maxMm) + ", \"mean_percent\": " + number(d.meanPercent) +
-           ", \"p95_percent\": " + number(d.p95Percent) +
+std::string distanceJson(const model::reference::OneSidedDistance& d) {
+    return "{ \"mean_mm\": " + number(d.mean) + ", \"p95_mm\": " + number(d.percentile95) +
+           ", \"max_mm\": " + number(d.max) + ", \"mean_percent\": " + number(d.meanPercent) +
+           ", \"p95_percent\": " + number(d.percentile95Percent) +
            ", \"max_percent\": " + number(d.maxPercent) + " }";
 }
 
@@ -205,8 +201,8 @@ void printApproximationBench(const ApproximationBenchReport& r, bool json, std::
                   r.dampedStrips, r.assemblyMs, r.factorizeMs, r.solveMs, r.iterationMs, ratio,
                   kPaperIterationMs, r.setupMs, r.totalSeconds, r.stripsDevelopable, r.strips,
                   kDevelopableResidual, r.developabilityMax, r.targetToSurface.meanPercent,
-                  r.targetToSurface.p95Percent, r.targetToSurface.maxPercent,
-                  r.surfaceToTarget.meanPercent, r.surfaceToTarget.p95Percent,
+                  r.targetToSurface.percentile95Percent, r.targetToSurface.maxPercent,
+                  r.surfaceToTarget.meanPercent, r.surfaceToTarget.percentile95Percent,
                   r.surfaceToTarget.maxPercent, r.hausdorffPercent, 100.0 * r.coverage);
     out << "Approximation of " << r.target << ": " << line;
     std::snprintf(line, sizeof line,

@@ -5,6 +5,8 @@
 // and measured against the paper's Fig. 10 setting (the Stanford bunny: 94 strips, 303 control
 // points, 12,777 variables, 0.5 s per iteration) and the targets of the approximation issue.
 
+#include "model/reference/distance_report.h"
+
 #include <functional>
 #include <optional>
 #include <ostream>
@@ -19,16 +21,6 @@ struct ApproximationBenchOptions {
     std::optional<int> iterations;
     double rho = 0.0; // thinning radius; ≤ 0: the application's default
     std::function<void(const std::string&)> log;
-};
-
-// One side of the distance report, in mm and in % of the target's bounding-box diagonal.
-struct ApproximationDistance {
-    double meanMm = 0.0;
-    double p95Mm = 0.0;
-    double maxMm = 0.0;
-    double meanPercent = 0.0;
-    double p95Percent = 0.0;
-    double maxPercent = 0.0;
 };
 
 struct ApproximationBenchReport {
@@ -52,9 +44,9 @@ struct ApproximationBenchReport {
     double totalSeconds = 0.0; // setup and solve
     // Sampled normalised developability residual (solver::worstDevelopability) per strip.
     double developabilityMax = 0.0;
-    int stripsDevelopable = 0; // at most kDevelopableResidual
-    ApproximationDistance targetToSurface;
-    ApproximationDistance surfaceToTarget;
+    int stripsDevelopable = 0;                          // at most kDevelopableResidual
+    model::reference::OneSidedDistance targetToSurface; // mm and % of the diagonal
+    model::reference::OneSidedDistance surfaceToTarget;
     double hausdorffPercent = 0.0;
     double coverage = 0.0; // fraction of target points within the report's tolerance
 };
