@@ -5,8 +5,6 @@
 
 namespace devsurf::io {
 
-namespace {} // namespace
-
 std::optional<CurveFormat> curveFormatOf(const QString& path) {
     const QString suffix = QFileInfo(path).suffix().toLower();
     if (suffix == QLatin1String("dxf")) {

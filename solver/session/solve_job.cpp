@@ -113,7 +113,8 @@ template <typename Map> typename Map::mapped_type entryOf(const Map& map, int ke
 // The weight of the unit length of the control normals in an approximation (see optionsFor).
 constexpr double kApproximationUnitNormalWeight = 1.0;
 
-// `more` continued `summary` on the same session: its iterations appended, its end taken.
+// `summary` continued by `more` (an approximation finished by a Solve): its iterations
+// appended, its end taken.
 void append(Summary& summary, const Summary& more) {
     const int offset = summary.iterationsCompleted;
     for (IterationStats stats : more.iterations) {
