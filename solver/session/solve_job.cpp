@@ -1,5 +1,6 @@
 #include "solver/session/solve_job.h"
 
+#include "solver/session/approximation_recipe.h"
 #include "solver/session/drag_partway.h"
 #include "solver/session/job_assessment.h"
 
@@ -8,8 +9,6 @@
 #include "model/geometry_checks.h"
 #include "model/model_error.h"
 #include "model/pattern/cutting_pattern.h"
-#include "model/reference/bounding_box.h"
-#include "model/reference/surface_samples.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
 #include "solver/quality/vertex_stars.h"
@@ -113,26 +112,6 @@ template <typename Map> typename Map::mapped_type entryOf(const Map& map, int ke
 // The weight of the unit length of the control normals in an approximation (see optionsFor).
 constexpr double kApproximationUnitNormalWeight = 1.0;
 
-// `summary` continued by `more` (an approximation finished by a Solve): its iterations
-// appended, its end taken.
-void append(Summary& summary, const Summary& more) {
-    const int offset = summary.iterationsCompleted;
-    for (IterationStats stats : more.iterations) {
-        stats.iteration += offset;
-        summary.iterations.push_back(stats);
-    }
-    summary.iterationsCompleted += more.iterationsCompleted;
-    summary.status = more.status;
-    summary.detail = more.detail;
-    if (more.iterationsCompleted > 0) {
-        summary.finalMaxConstraintResidual = more.finalMaxConstraintResidual;
-        summary.finalEnergy = more.finalEnergy;
-    }
-    summary.toleranceReached = summary.finalMaxConstraintResidual <= summary.tolerance;
-    summary.analysisMs += more.analysisMs;
-    summary.totalMs += more.totalMs;
-}
-
 SessionOptions optionsFor(const JobRequest& request, int surface, bool damped = false) {
     SessionOptions options;
     if (keepsLengths(request)) {
@@ -168,27 +147,6 @@ SessionOptions optionsFor(const JobRequest& request, int surface, bool damped = 
         }
     }
     return options;
-}
-
-// Whether an approximation's pull failed, so that the damped recipe runs: it stopped, it
-// missed the tolerance with a patch sampled farther than kDragConvergedResidual from
-// developable, or the surface ran away, i.e. a sample lies farther than kApproximationRunaway
-// times the target's bounding-box diagonal outside that box (also within the tolerance: a
-// developable strip can leave its points). Missing the tolerance alone is no failure: a
-// quarter circle, which splines hold only approximately, ends 6e-5 of its diameter away and
-// 4e-7 from developable, far nearer than the damped recipe brings it.
-constexpr double kApproximationRunaway = 0.5;
-bool approximationFailed(const model::CompositeSurface& result, const ApproximationTarget& target,
-                         const Summary& summary) {
-    if (!summary.succeeded() || !allFinite(result) ||
-        (!summary.toleranceReached && worstDevelopability(result) > kDragConvergedResidual)) {
-        return true;
-    }
-    const model::reference::BoundingBox box = model::reference::boundingBox(target.points);
-    const double reach = kApproximationRunaway * box.diagonal();
-    const auto samples = model::reference::sampleDensely({result}, 4).positions;
-    return std::any_of(samples.begin(), samples.end(),
-                       [&](const model::Vec3& p) { return box.distanceOutside(p) > reach; });
 }
 
 JobFailure failureOf(JobError error, int surface, Status status = Status::IterationLimit,
@@ -480,7 +438,8 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
                 return fail(cannotSolve(key, error));
             }
             total += kApproximationFinishIterations;
-            append(summary, session->step(kApproximationFinishIterations, cancel, perIteration));
+            continueSummary(summary,
+                            session->step(kApproximationFinishIterations, cancel, perIteration));
         }
         const auto stepTime = std::chrono::steady_clock::now() - stepped;
         if (drag && !request.settle && summary.succeeded() && !d.moves[s].empty() &&
