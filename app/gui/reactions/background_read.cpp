@@ -21,10 +21,14 @@ BackgroundRead::BackgroundRead(QWidget* window, const QString& label, const QStr
     });
     connect(m_thread, &QThread::finished, this, [this] {
         m_poll->stop();
-        // Gone, not hidden: a hidden progress dialog still shows itself once its minimum
-        // duration is up, over the message that may follow.
         m_cancelledInDialog = m_progress->wasCanceled();
-        delete m_progress;
+        // Hidden and reset (which stops the timer that would show it once its minimum
+        // duration is up, over the message that may follow), then deleted later: this can
+        // run inside the dialog's own setValue(), which processes events while the dialog
+        // is modal, and deleting it there crashed on return.
+        m_progress->hide();
+        m_progress->reset();
+        m_progress->deleteLater();
         m_progress = nullptr;
         emit done();
     });
