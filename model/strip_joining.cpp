@@ -141,23 +141,32 @@ std::vector<std::set<FaceId>> surfaceParts(const CompositeSurface& surface) {
     return parts;
 }
 
+BSplineCurve edgeCurve(const CompositeSurface& surface, EdgeId edge) {
+    const EdgeRecord& record = surface.edge(edge);
+    if (record.isSpline()) {
+        return BSplineCurve::uniform(record.space, record.controlPoints);
+    }
+    return BSplineCurve::uniform(SplineSpace{1, 0, 1},
+                                 {surface.position(record.from), surface.position(record.to)});
+}
+
 std::optional<NearestCurves> nearestBoundaryCurves(const CompositeSurface& surface,
                                                    const std::set<FaceId>& one,
                                                    const std::set<FaceId>& other) {
-    // Per boundary curve bordering `faces`: its ends and midpoint.
+    // Per boundary edge bordering `faces`: its ends and midpoint.
     struct Curve {
         EdgeId edge;
+        bool spline;
         Vec3 from, middle, to;
     };
     auto boundaryCurves = [&surface](const std::set<FaceId>& faces) {
         std::vector<Curve> curves;
         for (const auto& [id, record] : surface.edges()) {
             const std::vector<FaceId> around = surface.facesOfEdge(id);
-            if (record.isSpline() && around.size() == 1 && faces.count(around.front()) != 0) {
-                const BSplineCurve curve =
-                    BSplineCurve::uniform(record.space, record.controlPoints);
-                curves.push_back({id, record.controlPoints.front(), curve.evaluate(0.5),
-                                  record.controlPoints.back()});
+            if (around.size() == 1 && faces.count(around.front()) != 0) {
+                const BSplineCurve curve = edgeCurve(surface, id);
+                curves.push_back({id, record.isSpline(), curve.evaluate(0.0), curve.evaluate(0.5),
+                                  curve.evaluate(1.0)});
             }
         }
         return curves;
@@ -165,6 +174,9 @@ std::optional<NearestCurves> nearestBoundaryCurves(const CompositeSurface& surfa
     std::optional<NearestCurves> nearest;
     for (const Curve& a : boundaryCurves(one)) {
         for (const Curve& b : boundaryCurves(other)) {
+            if (a.spline != b.spline) {
+                continue;
+            }
             const double middle = (a.middle - b.middle).norm();
             const double along = std::max((a.from - b.from).norm(), (a.to - b.to).norm());
             const double against = std::max((a.from - b.to).norm(), (a.to - b.from).norm());

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "bspline_curve.h"
 #include "composite_surface.h"
 
 #include <map>
@@ -34,6 +35,10 @@ SurfacesSideBySide placeSideBySide(const CompositeSurface& first, const Composit
 // id order, parts ordered by their smallest face id.
 std::vector<std::set<FaceId>> surfaceParts(const CompositeSurface& surface);
 
+// The curve along an edge: an S-edge's spline, an R-edge's straight segment (a degree-1 spline
+// of one interval) between its vertices; both run from the edge's `from` to its `to` vertex.
+BSplineCurve edgeCurve(const CompositeSurface& surface, EdgeId edge);
+
 // Two boundary curves that lie nearest each other, one of each of two sets of faces.
 struct NearestCurves {
     EdgeId first = kInvalidId;  // bordering a face of `one`
@@ -43,8 +48,8 @@ struct NearestCurves {
     double separation = 0.0;
     double length = 0.0;
 };
-// The pair of boundary S-edges, one bordering a face of `one`, the other a face of `other`, of
-// smallest separation; none if either set borders no boundary curve.
+// The pair of boundary edges of one kind (two S-edges or two R-edges), one bordering a face of
+// `one`, the other a face of `other`, of smallest separation; none if no such pair exists.
 std::optional<NearestCurves> nearestBoundaryCurves(const CompositeSurface& surface,
                                                    const std::set<FaceId>& one,
                                                    const std::set<FaceId>& other);

@@ -219,9 +219,44 @@
     </message>
 </context>
 <context>
+    <name>devsurf::app::JoinReaction</name>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="161"/>
+        <source>No two of the %n surface(s) have boundary edges facing each other (within %1 % of their length); nothing was joined.</source>
+        <translation>
+            <numerusform>The %n surface has no boundary edges facing another (within %1 % of their length); nothing was joined.</numerusform>
+            <numerusform>No two of the %n surfaces have boundary edges facing each other (within %1 % of their length); nothing was joined.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="183"/>
+        <source>Joined %n surface(s) into one: </source>
+        <translation>
+            <numerusform>Joined %n surface into one: </numerusform>
+            <numerusform>Joined %n surfaces into one: </numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="184"/>
+        <source>%1 of %n pair(s) of facing edges welded</source>
+        <translation>
+            <numerusform>%1 of %n pair of facing edges welded</numerusform>
+            <numerusform>%1 of %n pairs of facing edges welded</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="186"/>
+        <source>, %n part(s) not connected</source>
+        <translation>
+            <numerusform>, %n part not connected</numerusform>
+            <numerusform>, %n parts not connected</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>devsurf::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="494"/>
+        <location filename="../app/gui/main_window.cpp" line="498"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n surface</numerusform>
@@ -229,7 +264,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="495"/>
+        <location filename="../app/gui/main_window.cpp" line="499"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n patch</numerusform>
@@ -237,7 +272,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="496"/>
+        <location filename="../app/gui/main_window.cpp" line="500"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n control point</numerusform>
@@ -245,7 +280,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="497"/>
+        <location filename="../app/gui/main_window.cpp" line="501"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n selected</numerusform>

@@ -12,6 +12,7 @@
 #include "reference_commands.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/session/approximation_setup.h"
+#include "solver/session/join_job.h"
 #include "solver/session/solve_job.h"
 
 #include <QString>
@@ -25,67 +26,73 @@ namespace devsurf::app {
 
 namespace {
 
-// --join (§4.2, "Composite"): the strips as one surface, the curves that face each other paired
-// in a second approximation, then welded into shared curves and the result solved.
+void printIteration(const solver::JobProgress& step) {
+    const solver::IterationStats& it = *step.stats;
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "iteration %3d  residual %.3e  assembly %.3f ms  factorisation %.3f ms  "
+                  "solve %.3f ms\n",
+                  step.done, it.maxConstraintResidual, it.assemblyMs, it.factorizationMs,
+                  it.solveMs);
+    std::cout << line;
+}
+
+// --join (§4.2, "Composite"): the strips joined into one surface by the Join job, their facing
+// curves paired while the surface is pulled towards the thinned target.
 std::vector<model::CompositeSurface>
 joinStrips(const std::vector<model::CompositeSurface>& surfaces,
            const model::reference::ThinningResult& thinned, double rho,
-           std::optional<int> iterations, solver::SolveJob& job,
-           const solver::JobProgressFn& progress,
-           const std::vector<model::CompositeSurface>*& shownSurfaces,
-           const solver::SurfaceTargets*& shownTargets) {
+           std::optional<int> iterations, solver::SolveJob& job) {
     if (surfaces.size() < 2) {
         std::cout << "Join: a single surface, nothing to join.\n";
         return surfaces;
     }
-    const solver::JoinPlan plan = solver::planJoin(surfaces);
-    if (plan.pairs.empty()) {
-        std::cout << "Join: no two strips have boundary curves facing each other (within "
+    solver::JobRequest request;
+    request.kind = solver::JobKind::Join;
+    request.surfaces = surfaces;
+    request.iterations = iterations;
+    request.joinTarget = std::make_shared<const model::reference::ThinningResult>(thinned);
+    request.joinRho = rho;
+    // The pairing, then the Solve of the joined surface: each starts its iterations at 1.
+    int stage = 0;
+    const auto progress = [&stage](const solver::JobProgress& step) {
+        if (step.done == 1) {
+            std::cout << (++stage == 1 ? "Join: pairing the facing edges, "
+                                       : "Join: solving the joined surface, ")
+                      << step.variables << " variables, " << step.rows << " rows\n";
+        }
+        printIteration(step);
+    };
+    const solver::JobOutcome outcome = job.run(request, nullptr, progress);
+    if (!outcome.ok) {
+        throw InputError("the solver stopped while joining the strips (" +
+                         describeFailure(outcome.failure) + "); nothing was written.");
+    }
+    const solver::JoinReport& join = *outcome.join;
+    if (join.separations.empty()) {
+        std::cout << "Join: no two strips have boundary edges facing each other (within "
                   << solver::kJoinReach * 100.0 << " % of their length); left separate.\n";
         return surfaces;
     }
-    for (std::size_t p = 0; p < plan.pairs.size(); ++p) {
-        std::cout << "Join: pairing curves " << plan.pairs[p].first << " and "
-                  << plan.pairs[p].second << " (" << plan.separations[p] << " mm apart)\n";
+    for (std::size_t p = 0; p < join.separations.size(); ++p) {
+        std::cout << "Join: pair " << p + 1 << " of facing edges " << join.separations[p]
+                  << " mm apart\n";
     }
-    const std::vector<model::CompositeSurface> one = {plan.surface};
-    const solver::SurfaceTargets targets = solver::assignToSurfaces(one, thinned);
-    solver::JobRequest request = solver::approximationRequest(one, targets, rho, iterations);
-    request.curvePairs[0] = plan.pairs;
-    shownSurfaces = &one;
-    shownTargets = &targets;
-    const solver::JobOutcome paired = job.run(request, nullptr, progress);
-    if (!paired.ok) {
-        throw InputError("the solver stopped while pairing curves (" +
-                         describeFailure(paired.failure) + "); nothing was written.");
-    }
-    const solver::JoinedSurface joined = solver::weldPairs(paired.surfaces.front(), plan.pairs);
-    for (const model::Problem& problem : joined.refused) {
+    for (const model::Problem& problem : join.refused) {
         std::cout << "Join: not welded: " << ProblemText::of(problem).toStdString() << "\n";
     }
-    solver::JobRequest solve;
-    solve.kind = solver::JobKind::Solve;
-    solve.surfaces = {joined.surface};
-    const solver::JobOutcome solved = job.run(solve);
-    if (!solved.ok) {
-        throw InputError("the solver stopped on the joined surface (" +
-                         describeFailure(solved.failure) + "); nothing was written.");
-    }
-    const model::CompositeSurface& result = solved.surfaces.front();
-    const solver::SurfaceAssessment& a = solved.assessments.front();
+    const model::CompositeSurface& result = outcome.surfaces.front();
+    const solver::SurfaceAssessment& a = outcome.assessments.front();
     char line[256];
     std::snprintf(line, sizeof line,
-                  "Join: %d of %zu curve pairs welded; one surface of %zu part(s), %zu "
+                  "Join: %d of %zu pairs of facing edges welded; one surface of %d part(s), %zu "
                   "patches; solved in %d iterations, largest residual %.2e (%s the tolerance); "
                   "developability sampled: max %.2e\n",
-                  joined.welded, plan.pairs.size(), model::surfaceParts(result).size(),
-                  result.faces().size(), a.summary.iterationsCompleted,
-                  a.summary.finalMaxConstraintResidual,
+                  join.welded, join.separations.size(), join.parts, result.faces().size(),
+                  a.summary.iterationsCompleted, a.summary.finalMaxConstraintResidual,
                   a.summary.toleranceReached ? "within" : "NOT within",
                   solver::measureQuality(result).developabilityMax);
     std::cout << line;
-    shownSurfaces = nullptr;
-    shownTargets = nullptr;
     return {result};
 }
 
@@ -159,24 +166,15 @@ int runApproximateCommand(const SubcommandArguments& args) {
     const solver::JobRequest request =
         solver::approximationRequest(project.surfaces, targets, rho, iterations);
     int surfaceShown = -1;
-    const std::vector<model::CompositeSurface>* shownSurfaces = &project.surfaces;
-    const solver::SurfaceTargets* shownTargets = &targets;
     auto progress = [&](const solver::JobProgress& step) {
         if (step.surface != surfaceShown) {
             surfaceShown = step.surface;
             const std::size_t s = static_cast<std::size_t>(step.surface);
-            std::cout << "Surface " << step.surface + 1 << " (" << (*shownSurfaces)[s].name()
-                      << "): " << shownTargets->points[s].size() << " target points, "
-                      << step.variables << " variables, " << step.rows << " rows\n";
+            std::cout << "Surface " << step.surface + 1 << " (" << project.surfaces[s].name()
+                      << "): " << targets.points[s].size() << " target points, " << step.variables
+                      << " variables, " << step.rows << " rows\n";
         }
-        const solver::IterationStats& it = *step.stats;
-        char line[256];
-        std::snprintf(line, sizeof line,
-                      "iteration %3d  residual %.3e  assembly %.3f ms  factorisation %.3f ms  "
-                      "solve %.3f ms\n",
-                      step.done, it.maxConstraintResidual, it.assemblyMs, it.factorizationMs,
-                      it.solveMs);
-        std::cout << line;
+        printIteration(step);
     };
     solver::SolveJob job;
     const solver::JobOutcome outcome = job.run(request, nullptr, progress);
@@ -210,8 +208,7 @@ int runApproximateCommand(const SubcommandArguments& args) {
     std::cout << "Time: " << static_cast<long>(outcome.elapsedMs) << " ms\n";
     project.surfaces = outcome.surfaces;
     if (args.isSet("join")) {
-        project.surfaces = joinStrips(project.surfaces, thinned, rho, iterations, job, progress,
-                                      shownSurfaces, shownTargets);
+        project.surfaces = joinStrips(project.surfaces, thinned, rho, iterations, job);
     }
     if (std::find(project.referenceShapes.begin(), project.referenceShapes.end(), read.shape) ==
         project.referenceShapes.end()) {

@@ -228,11 +228,11 @@ const std::vector<SubcommandSpec>& subcommands() {
          "pulled again from the start, more weakly and damped, and the summary\n"
          "says so. Writes the strips and the target to\n"
          "OUT and prints the residual and the distance report. With --join,\n"
-         "the strips become one surface: the boundary curves of two strips that\n"
-         "face each other (ends and middles apart by at most 20 % of their\n"
-         "length) are pulled onto each other in a second approximation, welded\n"
-         "into one shared curve and the result solved; strips that meet only\n"
-         "along rulings, or face no other strip, stay separate parts.",
+         "the strips become one surface: the boundary curves or rulings of two\n"
+         "strips that face each other (ends and middles apart by at most 20 %\n"
+         "of their length) are pulled onto each other in a second approximation,\n"
+         "welded into one shared edge and the result solved; strips that face\n"
+         "no other strip stay separate parts.",
          {{"from", "START.devsurf", "Start from the surfaces of this project."},
           {"strips", "K", "Start from K flat strips (default 1)."},
           {"intervals", "N", "Spline intervals of each flat strip (default 4)."},

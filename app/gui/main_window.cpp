@@ -17,6 +17,7 @@
 #include "reactions/curve_reactions.h"
 #include "reactions/edit_reactions.h"
 #include "reactions/file_reactions.h"
+#include "reactions/join_reaction.h"
 #include "reactions/pattern_reactions.h"
 #include "reactions/pin_reactions.h"
 #include "reactions/reference_shape_reactions.h"
@@ -351,6 +352,9 @@ void MainWindow::createMenus() {
             m_developmentView->fitAll();
         }
     });
+    QAction* join = addAction(tools, QStringLiteral("actionJoinSurfaces"), tr("&Join Surfaces"),
+                              QKeySequence(tr("Ctrl+J")));
+    new JoinReaction(join, m_workspace, m_solveController);
     // Issue 42: a region of the reference shape marked by hand, a flat strip over it.
     QAction* markRegion = addAction(tools, QStringLiteral("actionMarkRegion"),
                                     tr("Mar&k Region of Reference Shape"), QKeySequence(tr("L")));

@@ -1,6 +1,7 @@
 #include "solver/formulation/curve_pairing.h"
 
 #include "model/bspline_curve.h"
+#include "model/strip_joining.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,9 +17,10 @@ constexpr int kNewtonSteps = 20;
 // t this close to 0 or 1 is an end of the curve.
 constexpr double kEnd = 1e-9;
 
-model::BSplineCurve curveOf(const model::CompositeSurface& surface, model::EdgeId edge) {
+// The intervals of a paired curve: an R-edge is a straight segment of one.
+int intervalsOf(const model::CompositeSurface& surface, model::EdgeId edge) {
     const model::EdgeRecord& record = surface.edge(edge);
-    return model::BSplineCurve::uniform(record.space, record.controlPoints);
+    return record.isSpline() ? record.space.intervals : 1;
 }
 
 // The parameter of the point of `curve` nearest p: the nearest of dense samples, refined by
@@ -67,7 +69,7 @@ CurvePairingFit::CurvePairingFit(const model::CompositeSurface& surface,
     int size = 0;
     for (std::size_t c = 0; c < m_curves.size(); ++c) {
         const std::size_t other = c % 2 == 0 ? c + 1 : c - 1;
-        const int intervals = surface.edge(m_curves[c].edge).space.intervals;
+        const int intervals = intervalsOf(surface, m_curves[c].edge);
         const int count = std::max(1, samplesPerInterval * intervals);
         for (int k = 0; k <= count; ++k) {
             Sample sample;
@@ -86,14 +88,14 @@ CurvePairingFit::CurvePairingFit(const model::CompositeSurface& surface,
 void CurvePairingFit::refresh(const model::CompositeSurface& current) {
     std::vector<model::BSplineCurve> curves;
     for (const PairedCurveColumns& c : m_curves) {
-        curves.push_back(curveOf(current, c.edge));
+        curves.push_back(model::edgeCurve(current, c.edge));
     }
     m_largestDistance = 0.0;
     for (Sample& sample : m_samples) {
         const model::BSplineCurve& from = curves[static_cast<std::size_t>(sample.from)];
         const model::BSplineCurve& onto = curves[static_cast<std::size_t>(sample.onto)];
         const int intervals =
-            current.edge(m_curves[static_cast<std::size_t>(sample.onto)].edge).space.intervals;
+            intervalsOf(current, m_curves[static_cast<std::size_t>(sample.onto)].edge);
         const model::Vec3 v = from.evaluate(sample.u);
         sample.t = closestParameter(onto, intervals, v);
         sample.atEnd = sample.t <= kEnd || sample.t >= 1.0 - kEnd;

@@ -16,7 +16,8 @@
 
 namespace devsurf::solver {
 
-// Two boundary S-edges of one surface to be brought together.
+// Two boundary edges of one surface to be brought together: two S-edges, or two R-edges (each
+// the straight segment between its vertices, model::edgeCurve).
 struct CurvePair {
     model::EdgeId first = model::kInvalidId;
     model::EdgeId second = model::kInvalidId;

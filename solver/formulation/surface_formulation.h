@@ -201,7 +201,8 @@ struct FormulationOptions {
     std::shared_ptr<const ApproximationTarget> approximation;
     ApproximationWeights approximationWeights;
 
-    // Pairs of boundary S-edges pulled together (§4.2, "Composite"; CurvePairingFit), their
+    // Pairs of boundary edges of one kind (two S-edges, or two R-edges as straight segments)
+    // pulled together (§4.2, "Composite"; CurvePairingFit), their
     // closest points refreshed before every iteration with the approximation's. A constraint
     // judged apart, not faded: the curves end on each other, ready to be welded.
     std::vector<CurvePair> curvePairs;

@@ -49,14 +49,22 @@ void SurfaceFormulation::addCurvePairs(const model::CompositeSurface& surface) {
     std::vector<PairedCurveColumns> curves;
     for (const CurvePair& pair : m_options.curvePairs) {
         for (model::EdgeId edge : {pair.first, pair.second}) {
-            if (!surface.hasEdge(edge) || !surface.edge(edge).isSpline() ||
-                surface.facesOfEdge(edge).size() != 1 || pair.first == pair.second) {
+            if (!surface.hasEdge(edge) || surface.facesOfEdge(edge).size() != 1 ||
+                pair.first == pair.second || !surface.hasEdge(pair.first) ||
+                !surface.hasEdge(pair.second) ||
+                surface.edge(pair.first).isSpline() != surface.edge(pair.second).isSpline()) {
                 throw std::invalid_argument("edge " + std::to_string(edge) +
                                             " is not a boundary curve that can be paired");
             }
+            // A curve's control points; a ruling's two vertices (a straight segment).
+            const model::EdgeRecord& record = surface.edge(edge);
             PairedCurveColumns c;
             c.edge = edge;
-            for (int point : m_edgePoints.at(edge)) {
+            const std::vector<int> points =
+                record.isSpline()
+                    ? m_edgePoints.at(edge)
+                    : std::vector<int>{m_vertexPoint.at(record.from), m_vertexPoint.at(record.to)};
+            for (int point : points) {
                 c.points.push_back(pointOffset(point));
             }
             curves.push_back(std::move(c));

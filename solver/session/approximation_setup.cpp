@@ -105,64 +105,6 @@ JobRequest approximationRequest(const std::vector<model::CompositeSurface>& surf
     return request;
 }
 
-JoinPlan planJoin(const std::vector<model::CompositeSurface>& surfaces) {
-    JoinPlan plan;
-    plan.surface = surfaces.front();
-    for (std::size_t s = 1; s < surfaces.size(); ++s) {
-        plan.surface = model::placeSideBySide(plan.surface, surfaces[s]).surface;
-    }
-    // Per two parts their nearest curves; then, nearest first, pairs of curves not yet used.
-    const std::vector<std::set<model::FaceId>> parts = model::surfaceParts(plan.surface);
-    std::vector<model::NearestCurves> candidates;
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-        for (std::size_t j = i + 1; j < parts.size(); ++j) {
-            const auto nearest = model::nearestBoundaryCurves(plan.surface, parts[i], parts[j]);
-            if (nearest && nearest->separation <= kJoinReach * nearest->length) {
-                candidates.push_back(*nearest);
-            }
-        }
-    }
-    std::sort(candidates.begin(), candidates.end(),
-              [](const model::NearestCurves& a, const model::NearestCurves& b) {
-                  return a.separation < b.separation;
-              });
-    std::set<model::EdgeId> used;
-    for (const model::NearestCurves& c : candidates) {
-        if (used.count(c.first) == 0 && used.count(c.second) == 0) {
-            used.insert(c.first);
-            used.insert(c.second);
-            plan.pairs.push_back({c.first, c.second});
-            plan.separations.push_back(c.separation);
-        }
-    }
-    return plan;
-}
-
-JoinedSurface weldPairs(const model::CompositeSurface& surface,
-                        const std::vector<CurvePair>& pairs) {
-    JoinedSurface joined;
-    joined.surface = surface;
-    // Every weld renumbers the edges: the ids of the pairs still to weld follow.
-    std::map<model::EdgeId, model::EdgeId> edgeOf;
-    for (const auto& [id, record] : surface.edges()) {
-        edgeOf[id] = id;
-    }
-    for (const CurvePair& pair : pairs) {
-        try {
-            const model::Weld weld =
-                model::weldEdges(joined.surface, edgeOf.at(pair.first), edgeOf.at(pair.second));
-            for (auto& [old, current] : edgeOf) {
-                current = weld.edgeOf.at(current);
-            }
-            joined.surface = weld.surface;
-            ++joined.welded;
-        } catch (const model::ModelError& error) {
-            joined.refused.push_back(error.problem());
-        }
-    }
-    return joined;
-}
-
 ApproximationSetup prepareApproximation(const std::vector<model::Vec3>& points,
                                         const std::vector<model::CompositeSurface>& start,
                                         const ApproximationOptions& options,

@@ -68,31 +68,6 @@ JobRequest approximationRequest(const std::vector<model::CompositeSurface>& surf
                                 const SurfaceTargets& targets, double rho,
                                 std::optional<int> iterations);
 
-// Joining the strips of an approximation into one composite (§4.2, "Composite"): the surfaces
-// side by side in one (model::placeSideBySide), per two of its parts the boundary curves that
-// face each other (model::nearestBoundaryCurves) paired in an Approximate job
-// (JobRequest::curvePairs), then welded (model::weldEdges).
-
-// Facing curves are paired when their separation is at most this fraction of their length.
-inline constexpr double kJoinReach = 0.2;
-
-struct JoinPlan {
-    model::CompositeSurface surface; // every surface, side by side
-    std::vector<CurvePair> pairs;    // nearest first; each curve in one pair at most
-    std::vector<double> separations; // per pair (mm), before the pairing
-};
-// Requires at least one surface. Parts that face no other part within kJoinReach stay apart.
-JoinPlan planJoin(const std::vector<model::CompositeSurface>& surfaces);
-
-struct JoinedSurface {
-    model::CompositeSurface surface;
-    int welded = 0;                      // pairs welded into shared curves
-    std::vector<model::Problem> refused; // why the other pairs were not
-};
-// Welds every pair of `surface` (in order) that model::weldEdges accepts.
-JoinedSurface weldPairs(const model::CompositeSurface& surface,
-                        const std::vector<CurvePair>& pairs);
-
 // Everything at once, for a front end that runs it off its GUI thread.
 struct ApproximationOptions {
     int strips = 4;    // new flat strips, when `start` is empty

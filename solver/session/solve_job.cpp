@@ -1,4 +1,5 @@
 #include "solver/session/solve_job.h"
+#include "solver/session/join_job.h"
 
 #include "solver/session/approximation_recipe.h"
 #include "solver/session/drag_partway.h"
@@ -211,6 +212,7 @@ int defaultIterations(JobKind kind, bool settle, DragLengths lengths, bool holds
     case JobKind::Edit:
         return 1;
     case JobKind::Approximate:
+    case JobKind::Join:
         return kApproximationIterations;
     case JobKind::CreaseDrag:
         return settle ? iterationsAfterDrag(false) : 1;
@@ -265,6 +267,10 @@ void SolveJob::reset() {
 
 JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* cancel,
                          const JobProgressFn& progress) {
+    if (request.kind == JobKind::Join) {
+        m_drag.reset();
+        return runJoinJob(*this, request, cancel, progress);
+    }
     const auto start = std::chrono::steady_clock::now();
     const bool drag = isDrag(request.kind);
     const bool settle = !drag || request.settle;

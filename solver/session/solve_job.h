@@ -2,6 +2,8 @@
 
 #include "model/composite_surface.h"
 #include "model/held_by_pins.h"
+#include "model/problem.h"
+#include "model/reference/thinning.h"
 #include "solver/core/summary.h"
 #include "solver/formulation/surface_formulation.h"
 #include "solver/quality/crease_quality.h"
@@ -26,6 +28,7 @@ enum class JobKind {
     Rotate,      // the Rotate tool, `devsurf-cli drag --rotate` (a vertex drag along an arc)
     Edit,        // an exact move or rotation kept developable (Tools ▸ Move or Rotate Vertices)
     Approximate, // strips pulled towards a reference shape (§4.2), `devsurf-cli approximate`
+    Join,        // surfaces joined into one composite (§4.2), Tools ▸ Join Surfaces, `--join`
 };
 
 // Drags and rotations come as many requests (one per mouse move) and a settling one (the
@@ -61,6 +64,11 @@ struct JobRequest {
     // Approximate (or Solve): per surface index, boundary curves pulled together
     // (FormulationOptions::curvePairs), to be welded afterwards (model::weldEdges).
     std::map<int, std::vector<CurvePair>> curvePairs;
+    // Join: the thinned reference points that the joined surface is pulled towards while its
+    // facing curves are paired, and the radius they were thinned with; none: the pairing runs
+    // as a Solve, with nothing but the surfaces' own conditions besides it.
+    std::shared_ptr<const model::reference::ThinningResult> joinTarget;
+    double joinRho = 0.0;
 };
 
 // The iterations of an approximation's pull when the request does not say.
@@ -188,6 +196,17 @@ struct JobFailure {
     std::string detail;                     // a technical note for a bug report, not for the user
 };
 
+// What a Join did (join_job.h): the facing curves it paired and which of them it welded.
+struct JoinReport {
+    int surfaces = 0;                    // the request's surfaces, now parts of one surface
+    std::vector<double> separations;     // per pair of facing curves, mm apart before the pairing
+    double largestGap = 0.0;             // mm apart after the pairing, over the pairs welded
+    int welded = 0;                      // pairs now one shared curve
+    std::vector<model::Problem> refused; // why the other pairs were not welded
+    int parts = 0;                       // connected parts of the joined surface
+    bool pulledToReference = false;      // the pairing also pulled towards joinTarget
+};
+
 struct JobOutcome {
     JobKind kind = JobKind::Solve;
     std::uint64_t drag = 0;
@@ -200,6 +219,9 @@ struct JobOutcome {
     std::vector<model::CompositeSurface> surfaces;
     std::vector<SurfaceAssessment> assessments; // per surface
     double elapsedMs = 0.0;
+    // Join: what was paired and welded; `surfaces` is then the one joined surface, or the
+    // request's surfaces unchanged when no two face each other (separations empty).
+    std::shared_ptr<const JoinReport> join;
 
     bool cancelled() const { return failure.error == JobError::Cancelled; }
     // The largest final constraint residual and iteration count over the solved surfaces.

@@ -11,6 +11,7 @@
 #include "sampled_developability.h"
 #include "solver/formulation/surface_formulation.h"
 #include "solver/session/approximation_setup.h"
+#include "solver/session/join_job.h"
 #include "solver/session/solve_job.h"
 #include "solver_test_problems.h"
 #include "test_registry.h"
@@ -18,6 +19,7 @@
 #include <QTest>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <random>
 #include <string>
@@ -87,15 +89,61 @@ CylinderFit cylinderFit(const model::CompositeSurface& surface) {
     return fit;
 }
 
-// A flat strip over a grid in the plane z = height, curves along x.
-model::CompositeSurface flatStrip(double y0, double height) {
+// A flat strip over a grid in the plane z = height, curves along x (x0 … x0 + 100), rulings
+// along y (y0 … y0 + 40).
+model::CompositeSurface flatStrip(double y0, double height, double x0 = 0.0) {
     std::vector<Vec3> points;
     for (int i = 0; i <= 10; ++i) {
         for (int j = 0; j <= 4; ++j) {
-            points.emplace_back(10.0 * i, y0 + 10.0 * j, height);
+            points.emplace_back(x0 + 10.0 * i, y0 + 10.0 * j, height);
         }
     }
     return model::reference::initialStrip(points, {3, 2, 3}, 0.0);
+}
+
+// The formulation's one curve-pairing term; null unless there is exactly one.
+const solver::Term* pairingTerm(const solver::SurfaceFormulation& f) {
+    const solver::Term* found = nullptr;
+    for (int t = 0; t < f.problem().termCount(); ++t) {
+        const solver::Term& term = f.problem().term(t);
+        if (std::string(term.typeName()) == "CurvePairingTerm") {
+            if (found != nullptr) {
+                return nullptr;
+            }
+            found = &term;
+        }
+    }
+    return found;
+}
+
+// The largest difference between `term`'s analytic Jacobian and finite differences at a random
+// state of `f`.
+double jacobianErrorAtRandom(const solver::SurfaceFormulation& f, const solver::Term& term,
+                             unsigned seed) {
+    std::mt19937 rng(seed);
+    const std::vector<double> x = solver::testing::randomVector(rng, f.problem().variableCount());
+    return solver::testing::jacobianError(solver::testing::analyticJacobian(term, x),
+                                          solver::testing::finiteDifferenceJacobian(term, x, 1e-6));
+}
+
+// Edges that two faces share: spline edges (curves), or rulings.
+int sharedEdges(const model::CompositeSurface& surface, bool splines) {
+    int count = 0;
+    for (const auto& [id, record] : surface.edges()) {
+        count += record.isSpline() == splines && surface.facesOfEdge(id).size() == 2 ? 1 : 0;
+    }
+    return count;
+}
+int sharedCurves(const model::CompositeSurface& surface) {
+    return sharedEdges(surface, true);
+}
+
+// Two flat strips of the plane z = 0, 2 mm apart across y = 40 … 42.
+std::vector<model::CompositeSurface> twoFlatStrips() {
+    std::vector<model::CompositeSurface> strips = {flatStrip(0.0, 0.0), flatStrip(42.0, 0.0)};
+    strips[0].setName("a");
+    strips[1].setName("b");
+    return strips;
 }
 
 } // namespace
@@ -120,33 +168,73 @@ private slots:
         // Strip 1's upper curve at y = 40 and strip 2's lower at y = 43, z = 2: every sample
         // lies √13 mm from the other curve's line.
         QVERIFY(std::abs(f.curvePairing()->largestDistance() - std::sqrt(13.0)) < 1e-9);
-        int checked = 0;
-        std::mt19937 rng(3);
-        const std::vector<double> x =
-            solver::testing::randomVector(rng, f.problem().variableCount());
-        for (int t = 0; t < f.problem().termCount(); ++t) {
-            const solver::Term& term = f.problem().term(t);
-            if (std::string(term.typeName()) != "CurvePairingTerm") {
-                continue;
+        const solver::Term* term = pairingTerm(f);
+        QVERIFY(term != nullptr);
+        QCOMPARE(term->rowCount(), 3 * 2 * (3 * solver::kPairingSamplesPerInterval + 1));
+        const double error = jacobianErrorAtRandom(f, *term, 3);
+        QVERIFY2(error < 1e-6, qPrintable(QString::number(error)));
+        // At the start state the rows of an interior sample are its offset across the other
+        // curve (the tangent runs along x): (0, ∓3, ∓2) in state units.
+        std::vector<double> residuals(static_cast<std::size_t>(term->rowCount()));
+        std::vector<double> jacobian(1 << 16);
+        term->evaluate(f.initialState().data(), residuals.data(), jacobian.data());
+        const int middle = 3 * (3 * solver::kPairingSamplesPerInterval / 2);
+        QVERIFY(std::abs(residuals[static_cast<std::size_t>(middle)]) < 1e-12);
+        const double across = std::hypot(residuals[static_cast<std::size_t>(middle + 1)],
+                                         residuals[static_cast<std::size_t>(middle + 2)]);
+        QVERIFY(std::abs(across * f.scale() - std::sqrt(13.0)) < 1e-9);
+    }
+
+    void rulingPairJacobianMatchesFiniteDifferences() {
+        // Strip 2 lies 3 mm beyond the end ruling of strip 1 and 2 mm above it: the rulings
+        // face each other, nearer than any two curves.
+        const model::SurfacesSideBySide both =
+            model::placeSideBySide(flatStrip(0.0, 0.0), flatStrip(0.0, 2.0, 103.0));
+        const auto parts = model::surfaceParts(both.surface);
+        const auto nearest = model::nearestBoundaryCurves(both.surface, parts[0], parts[1]);
+        QVERIFY(nearest.has_value());
+        QVERIFY(!both.surface.edge(nearest->first).isSpline());
+        QVERIFY(!both.surface.edge(nearest->second).isSpline());
+        QVERIFY(std::abs(nearest->separation - std::sqrt(13.0)) < 1e-9);
+        QVERIFY(std::abs(nearest->length - 40.0) < 1e-9);
+        solver::FormulationOptions options;
+        options.curvePairs = {{nearest->first, nearest->second}};
+        const solver::SurfaceFormulation f(both.surface, options);
+        QVERIFY(std::abs(f.curvePairing()->largestDistance() - std::sqrt(13.0)) < 1e-9);
+        // A ruling paired with a curve is refused.
+        model::EdgeId curve = model::kInvalidId;
+        for (const auto& [id, record] : both.surface.edges()) {
+            if (record.isSpline() && both.surface.facesOfEdge(id).size() == 1) {
+                curve = id;
             }
-            QCOMPARE(term.rowCount(), 3 * 2 * (3 * solver::kPairingSamplesPerInterval + 1));
-            const double error = solver::testing::jacobianError(
-                solver::testing::analyticJacobian(term, x),
-                solver::testing::finiteDifferenceJacobian(term, x, 1e-6));
-            QVERIFY2(error < 1e-6, qPrintable(QString::number(error)));
-            // At the start state the rows of an interior sample are its offset across the other
-            // curve (the tangent runs along x): (0, ∓3, ∓2) in state units.
-            std::vector<double> residuals(static_cast<std::size_t>(term.rowCount()));
-            std::vector<double> jacobian(1 << 16);
-            term.evaluate(f.initialState().data(), residuals.data(), jacobian.data());
-            const int middle = 3 * (3 * solver::kPairingSamplesPerInterval / 2);
-            QVERIFY(std::abs(residuals[static_cast<std::size_t>(middle)]) < 1e-12);
-            const double across = std::hypot(residuals[static_cast<std::size_t>(middle + 1)],
-                                             residuals[static_cast<std::size_t>(middle + 2)]);
-            QVERIFY(std::abs(across * f.scale() - std::sqrt(13.0)) < 1e-9);
-            ++checked;
         }
-        QCOMPARE(checked, 1);
+        solver::FormulationOptions mixed;
+        mixed.curvePairs = {{nearest->first, curve}};
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 solver::SurfaceFormulation(both.surface, mixed));
+        const solver::Term* term = pairingTerm(f);
+        QVERIFY(term != nullptr);
+        // One interval per ruling: kPairingSamplesPerInterval + 1 samples each way.
+        QCOMPARE(term->rowCount(), 3 * 2 * (solver::kPairingSamplesPerInterval + 1));
+        const double error = jacobianErrorAtRandom(f, *term, 5);
+        QVERIFY2(error < 1e-6, qPrintable(QString::number(error)));
+    }
+
+    void theJoinJobWeldsStripsAlongARuling() {
+        // Two strips end to end, 2 mm apart between their end rulings: joined along them.
+        solver::JobRequest request;
+        request.kind = solver::JobKind::Join;
+        request.surfaces = {flatStrip(0.0, 0.0), flatStrip(0.0, 0.0, 102.0)};
+        solver::SolveJob job;
+        const solver::JobOutcome outcome = job.run(request);
+        QVERIFY(outcome.ok);
+        QCOMPARE(outcome.join->welded, 1);
+        QCOMPARE(outcome.join->parts, 1);
+        const model::CompositeSurface& joined = outcome.surfaces.front();
+        QVERIFY(joined.validate().empty());
+        QCOMPARE(sharedEdges(joined, false), 1);
+        QCOMPARE(sharedCurves(joined), 0);
+        QVERIFY(test::sampledDevelopability(joined) <= 1e-8);
     }
 
     void twoHalvesOfACylinderBecomeOneComposite() {
@@ -243,6 +331,129 @@ private slots:
         QVERIFY(developability <= 1e-8);
         QVERIFY(fit.distance <= 0.01);
         // It still spans both halves.
+        QVERIFY(fit.zLow <= 5.0 && fit.zHigh >= 155.0);
+    }
+
+    void theJoinJobWeldsTwoStripsWithoutAReference() {
+        // Tools ▸ Join Surfaces on a design without a reference shape: the facing curves are
+        // paired by a Solve alone, welded, and the composite solved.
+        solver::JobRequest request;
+        request.kind = solver::JobKind::Join;
+        request.surfaces = twoFlatStrips();
+        solver::SolveJob job;
+        int progressCalls = 0;
+        const solver::JobOutcome outcome =
+            job.run(request, nullptr, [&](const solver::JobProgress&) { ++progressCalls; });
+        QVERIFY(outcome.ok);
+        QCOMPARE(outcome.kind, solver::JobKind::Join);
+        QVERIFY(outcome.join);
+        const solver::JoinReport& join = *outcome.join;
+        QCOMPARE(join.surfaces, 2);
+        QCOMPARE(join.separations.size(), std::size_t(1));
+        QVERIFY2(std::abs(join.separations.front() - 2.0) < 1e-6,
+                 qPrintable(QString::number(join.separations.front())));
+        QCOMPARE(join.welded, 1);
+        QVERIFY(join.refused.empty());
+        QCOMPARE(join.parts, 1);
+        QVERIFY(!join.pulledToReference);
+        QVERIFY(progressCalls > 0);
+
+        QCOMPARE(outcome.surfaces.size(), std::size_t(1));
+        QCOMPARE(outcome.assessments.size(), std::size_t(1));
+        const model::CompositeSurface& joined = outcome.surfaces.front();
+        QVERIFY(joined.validate().empty());
+        QCOMPARE(joined.name(), std::string("a + b"));
+        QCOMPARE(joined.faces().size(), std::size_t(2));
+        QCOMPARE(sharedCurves(joined), 1);
+        QCOMPARE(model::surfaceParts(joined).size(), std::size_t(1));
+        QVERIFY(outcome.assessments.front().summary.toleranceReached);
+        // Measured here: developable, still in the plane, and spanning both strips.
+        QVERIFY(test::sampledDevelopability(joined) <= 1e-8);
+        double yLow = 1e300, yHigh = -1e300, zMax = 0.0;
+        for (const model::Strip& strip : model::stripsOf(joined)) {
+            for (int i = 0; i <= 50; ++i) {
+                for (int j = 0; j <= 10; ++j) {
+                    const Vec3 p = strip.point(i / 50.0, j / 10.0);
+                    yLow = std::min(yLow, p.y);
+                    yHigh = std::max(yHigh, p.y);
+                    zMax = std::max(zMax, std::abs(p.z));
+                }
+            }
+        }
+        qInfo("two flat strips joined without a reference in %.0f ms: z within %.2g mm, "
+              "y %.3f … %.3f",
+              outcome.elapsedMs, zMax, yLow, yHigh);
+        QVERIFY2(zMax < 1e-6, qPrintable(QString::number(zMax)));
+        QVERIFY2(yLow < 1.0 && yHigh > 81.0, qPrintable(QString("%1 … %2").arg(yLow).arg(yHigh)));
+    }
+
+    void theJoinJobLeavesSurfacesThatFaceNothing() {
+        // Strips 60 mm apart (more than kJoinReach of their 100 mm): nothing is joined.
+        solver::JobRequest request;
+        request.kind = solver::JobKind::Join;
+        request.surfaces = {flatStrip(0.0, 0.0), flatStrip(100.0, 0.0)};
+        solver::SolveJob job;
+        const solver::JobOutcome outcome = job.run(request);
+        QVERIFY(outcome.ok);
+        QVERIFY(outcome.join);
+        QVERIFY(outcome.join->separations.empty());
+        QCOMPARE(outcome.join->welded, 0);
+        QCOMPARE(outcome.surfaces.size(), std::size_t(2));
+        QVERIFY(outcome.surfaces[0] == request.surfaces[0]);
+        QVERIFY(outcome.surfaces[1] == request.surfaces[1]);
+        // One surface: nothing to join either.
+        request.surfaces.resize(1);
+        const solver::JobOutcome single = job.run(request);
+        QVERIFY(single.ok && single.join && single.join->separations.empty());
+        QCOMPARE(single.surfaces.size(), std::size_t(1));
+    }
+
+    void aCancelledJoinChangesNothing() {
+        solver::JobRequest request;
+        request.kind = solver::JobKind::Join;
+        request.surfaces = twoFlatStrips();
+        std::atomic<bool> cancel{true};
+        solver::SolveJob job;
+        const solver::JobOutcome outcome = job.run(request, &cancel);
+        QVERIFY(!outcome.ok);
+        QVERIFY(outcome.cancelled());
+        QVERIFY(outcome.surfaces.empty());
+    }
+
+    void theJoinJobPullsTowardsTheReference() {
+        // The command line's --join: two strips fitted to a cylinder patch 209 mm around and
+        // 160 mm high, so split around it, joined by the Join job (along their facing rulings)
+        // with every point as its target.
+        const std::vector<Vec3> points = cylinderPatch(0, 160, 60, 48);
+        const solver::ThinnedTarget thinned = solver::thinTarget(points, 0.0);
+        const std::vector<model::CompositeSurface> strips = solver::initialStrips(thinned, 2, 4);
+        QCOMPARE(strips.size(), std::size_t(2));
+        solver::SolveJob job;
+        const solver::JobOutcome fitted = job.run(solver::approximationRequest(
+            strips, solver::assignToSurfaces(strips, thinned.thinned), thinned.rho, std::nullopt));
+        QVERIFY(fitted.ok);
+        solver::JobRequest request;
+        request.kind = solver::JobKind::Join;
+        request.surfaces = fitted.surfaces;
+        request.joinTarget =
+            std::make_shared<const model::reference::ThinningResult>(thinned.thinned);
+        request.joinRho = thinned.rho;
+        const solver::JobOutcome outcome = job.run(request);
+        QVERIFY(outcome.ok);
+        QVERIFY(outcome.join->pulledToReference);
+        QCOMPARE(outcome.join->welded, 1);
+        QCOMPARE(outcome.surfaces.size(), std::size_t(1));
+        const model::CompositeSurface& joined = outcome.surfaces.front();
+        QVERIFY(joined.validate().empty());
+        QCOMPARE(sharedEdges(joined, false), 1);
+        QCOMPARE(sharedCurves(joined), 0);
+        QVERIFY(test::sampledDevelopability(joined) <= 1e-8);
+        const CylinderFit fit = cylinderFit(joined);
+        qInfo("join job on the cylinder: %.3g mm apart before, weld gap %.3g mm, distance to the "
+              "cylinder %.3g mm, z %.1f … %.1f, %.0f ms",
+              outcome.join->separations.front(), outcome.join->largestGap, fit.distance, fit.zLow,
+              fit.zHigh, outcome.elapsedMs);
+        QVERIFY(fit.distance <= 0.5);
         QVERIFY(fit.zLow <= 5.0 && fit.zHigh >= 155.0);
     }
 };

@@ -1,0 +1,142 @@
+#include "solver/session/join_job.h"
+
+#include "model/model_error.h"
+#include "model/strip_joining.h"
+#include "solver/session/approximation_setup.h"
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+
+namespace devsurf::solver {
+
+JoinPlan planJoin(const std::vector<model::CompositeSurface>& surfaces) {
+    JoinPlan plan;
+    plan.surface = surfaces.front();
+    for (std::size_t s = 1; s < surfaces.size(); ++s) {
+        plan.surface = model::placeSideBySide(plan.surface, surfaces[s]).surface;
+    }
+    // placeSideBySide names it "a + b"; after a few that name runs long.
+    if (surfaces.size() > 2) {
+        plan.surface.setName(surfaces.front().name() + " + " + std::to_string(surfaces.size() - 1) +
+                             " more");
+    }
+    // Per two parts their nearest curves; then, nearest first, pairs of curves not yet used.
+    const std::vector<std::set<model::FaceId>> parts = model::surfaceParts(plan.surface);
+    std::vector<model::NearestCurves> candidates;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        for (std::size_t j = i + 1; j < parts.size(); ++j) {
+            const auto nearest = model::nearestBoundaryCurves(plan.surface, parts[i], parts[j]);
+            if (nearest && nearest->separation <= kJoinReach * nearest->length) {
+                candidates.push_back(*nearest);
+            }
+        }
+    }
+    std::sort(candidates.begin(), candidates.end(),
+              [](const model::NearestCurves& a, const model::NearestCurves& b) {
+                  return a.separation < b.separation;
+              });
+    std::set<model::EdgeId> used;
+    for (const model::NearestCurves& c : candidates) {
+        if (used.count(c.first) == 0 && used.count(c.second) == 0) {
+            used.insert(c.first);
+            used.insert(c.second);
+            plan.pairs.push_back({c.first, c.second});
+            plan.separations.push_back(c.separation);
+        }
+    }
+    return plan;
+}
+
+JoinedSurface weldPairs(const model::CompositeSurface& surface,
+                        const std::vector<CurvePair>& pairs) {
+    JoinedSurface joined;
+    joined.surface = surface;
+    // Every weld renumbers the edges: the ids of the pairs still to weld follow.
+    std::map<model::EdgeId, model::EdgeId> edgeOf;
+    for (const auto& [id, record] : surface.edges()) {
+        edgeOf[id] = id;
+    }
+    for (const CurvePair& pair : pairs) {
+        try {
+            const model::Weld weld =
+                model::weldEdges(joined.surface, edgeOf.at(pair.first), edgeOf.at(pair.second));
+            for (auto& [old, current] : edgeOf) {
+                current = weld.edgeOf.at(current);
+            }
+            joined.surface = weld.surface;
+            joined.largestGap = std::max(joined.largestGap, weld.gap);
+            ++joined.welded;
+        } catch (const model::ModelError& error) {
+            joined.refused.push_back(error.problem());
+        }
+    }
+    return joined;
+}
+
+JobOutcome runJoinJob(SolveJob& job, const JobRequest& request, const std::atomic<bool>* cancel,
+                      const JobProgressFn& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    auto report = std::make_shared<JoinReport>();
+    report->surfaces = static_cast<int>(request.surfaces.size());
+    report->pulledToReference = request.joinTarget != nullptr;
+    const auto finish = [&](JobOutcome outcome) {
+        outcome.kind = JobKind::Join;
+        outcome.settled = true;
+        outcome.join = report;
+        outcome.elapsedMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
+        return outcome;
+    };
+    // Nothing to join: the surfaces as they are.
+    const auto unchanged = [&] {
+        JobOutcome outcome;
+        outcome.ok = true;
+        outcome.surfaces = request.surfaces;
+        outcome.assessments.resize(request.surfaces.size());
+        return finish(std::move(outcome));
+    };
+    if (request.surfaces.size() < 2) {
+        return unchanged();
+    }
+    const JoinPlan plan = planJoin(request.surfaces);
+    if (plan.pairs.empty()) {
+        return unchanged();
+    }
+    report->separations = plan.separations;
+
+    // The pairing: an approximation of the one surface towards every reference point, or a
+    // Solve with the pairs alone, both running the iterations asked for.
+    const std::vector<model::CompositeSurface> one = {plan.surface};
+    JobRequest pairing;
+    if (request.joinTarget) {
+        pairing = approximationRequest(one, assignToSurfaces(one, *request.joinTarget),
+                                       request.joinRho, request.iterations);
+    } else {
+        pairing.kind = JobKind::Solve;
+        pairing.surfaces = one;
+        pairing.iterations = request.iterations.value_or(kApproximationIterations);
+    }
+    pairing.curvePairs[0] = plan.pairs;
+    JobOutcome paired = job.run(pairing, cancel, progress);
+    if (!paired.ok) {
+        return finish(std::move(paired));
+    }
+
+    const JoinedSurface joined = weldPairs(paired.surfaces.front(), plan.pairs);
+    report->welded = joined.welded;
+    report->largestGap = joined.largestGap;
+    report->refused = joined.refused;
+    report->parts = static_cast<int>(model::surfaceParts(joined.surface).size());
+
+    JobRequest solve;
+    solve.kind = JobKind::Solve;
+    solve.surfaces = {joined.surface};
+    return finish(job.run(solve, cancel, progress));
+}
+
+} // namespace devsurf::solver

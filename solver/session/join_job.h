@@ -1,0 +1,46 @@
+#pragma once
+
+// Joining surfaces into one composite (§4.2, "Composite"), as the solve job's JobKind::Join:
+// the surfaces side by side in one (model::placeSideBySide); per two of its parts the boundary
+// curves that face each other (model::nearestBoundaryCurves) paired by the linearised "on the
+// other's tangent line" condition (JobRequest::curvePairs), pulled towards the reference shape
+// at the same time where the request gives one; then welded (model::weldEdges) and the result
+// solved as one surface. Tools ▸ Join Surfaces and `devsurf-cli approximate --join` run it.
+
+#include "model/composite_surface.h"
+#include "solver/session/solve_job.h"
+
+#include <atomic>
+#include <vector>
+
+namespace devsurf::solver {
+
+// Facing curves are paired when their separation is at most this fraction of their length.
+inline constexpr double kJoinReach = 0.2;
+
+struct JoinPlan {
+    model::CompositeSurface surface; // every surface, side by side
+    std::vector<CurvePair> pairs;    // nearest first; each curve in one pair at most
+    std::vector<double> separations; // per pair (mm), before the pairing
+};
+// Requires at least one surface. Parts that face no other part within kJoinReach stay apart.
+JoinPlan planJoin(const std::vector<model::CompositeSurface>& surfaces);
+
+struct JoinedSurface {
+    model::CompositeSurface surface;
+    int welded = 0;                      // pairs welded into shared curves
+    double largestGap = 0.0;             // over the welded pairs (model::Weld::gap, mm)
+    std::vector<model::Problem> refused; // why the other pairs were not
+};
+// Welds every pair of `surface` (in order) that model::weldEdges accepts.
+JoinedSurface weldPairs(const model::CompositeSurface& surface,
+                        const std::vector<CurvePair>& pairs);
+
+// The Join job (SolveJob::run with JobKind::Join): needs at least two surfaces in the request.
+// Fewer, or none facing another: ok, the surfaces unchanged and JoinReport::separations empty.
+// The pairing runs request.iterations (unset: kApproximationIterations), the final Solve
+// until converged; the outcome's assessment is the Solve's. Cancel and failures as any job.
+JobOutcome runJoinJob(SolveJob& job, const JobRequest& request, const std::atomic<bool>* cancel,
+                      const JobProgressFn& progress);
+
+} // namespace devsurf::solver
