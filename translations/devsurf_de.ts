@@ -303,6 +303,19 @@
     </message>
 </context>
 <context>
+    <name>MergeStripsCommand</name>
+    <message>
+        <location filename="../model/document/commands/merge_strips_command.cpp" line="9"/>
+        <source>Remove ruling %1</source>
+        <translation>Erzeugende %1 entfernen</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/merge_strips_command.cpp" line="11"/>
+        <source>Ruling %1 cannot be removed</source>
+        <translation>Erzeugende %1 kann nicht entfernt werden</translation>
+    </message>
+</context>
+<context>
     <name>MoveVerticesCommand</name>
     <message>
         <location filename="../model/document/commands/move_vertices_command.cpp" line="20"/>
@@ -1486,7 +1499,7 @@
 <context>
     <name>devsurf::app::BackgroundRead</name>
     <message>
-        <location filename="../app/gui/reactions/background_read.cpp" line="32"/>
+        <location filename="../app/gui/reactions/background_read.cpp" line="36"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -2256,7 +2269,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="186"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="185"/>
         <source>, %n part(s) not connected</source>
         <translation>
             <numerusform>, %n Teil nicht verbunden</numerusform>
@@ -2264,17 +2277,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="189"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="188"/>
         <source>largest constraint residual %1, within the tolerance.</source>
         <translation>größtes Bedingungsresiduum %1, innerhalb der Toleranz.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="190"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="189"/>
         <source>largest constraint residual %1, not within the tolerance (Tools ▸ Solve may help).</source>
         <translation>größtes Bedingungsresiduum %1, nicht innerhalb der Toleranz (Werkzeuge ▸ Lösen kann helfen).</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="194"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="193"/>
         <source>Not welded: %1</source>
         <translation>Nicht verschweißt: %1</translation>
     </message>
@@ -2538,72 +2551,82 @@
         <translation>&amp;Erzeugende einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="329"/>
+        <location filename="../app/gui/main_window.cpp" line="320"/>
+        <source>Remove Rulin&amp;g</source>
+        <translation>Erzeu&amp;gende entfernen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="320"/>
+        <source>Ctrl+Alt+R</source>
+        <translation>Ctrl+Alt+R</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="332"/>
         <source>&amp;Pin Vertices</source>
         <translation>Ecken &amp;festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="330"/>
+        <location filename="../app/gui/main_window.cpp" line="333"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="332"/>
+        <location filename="../app/gui/main_window.cpp" line="335"/>
         <source>U&amp;npin Vertices</source>
         <translation>Ecken &amp;freigeben</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="333"/>
+        <location filename="../app/gui/main_window.cpp" line="336"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="336"/>
+        <location filename="../app/gui/main_window.cpp" line="339"/>
         <source>Hold the &amp;Sheet</source>
         <translation>&amp;Bogen festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="337"/>
+        <location filename="../app/gui/main_window.cpp" line="340"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="340"/>
+        <location filename="../app/gui/main_window.cpp" line="343"/>
         <source>Sheet S&amp;hape…</source>
         <translation>Bogen&amp;form…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="347"/>
+        <location filename="../app/gui/main_window.cpp" line="350"/>
         <source>A&amp;pproximate Reference Shape…</source>
         <translation>Referenzform an&amp;nähern…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="355"/>
+        <location filename="../app/gui/main_window.cpp" line="358"/>
         <source>&amp;Join Surfaces</source>
         <translation>Flächen &amp;verbinden</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="356"/>
+        <location filename="../app/gui/main_window.cpp" line="359"/>
         <source>Ctrl+J</source>
         <translation>Ctrl+J</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="360"/>
+        <location filename="../app/gui/main_window.cpp" line="363"/>
         <source>Mar&amp;k Region of Reference Shape</source>
         <translation>Bereich der Referenzform mar&amp;kieren</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="360"/>
+        <location filename="../app/gui/main_window.cpp" line="363"/>
         <source>L</source>
         <translation>L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="362"/>
+        <location filename="../app/gui/main_window.cpp" line="365"/>
         <source>Add Strip O&amp;ver Marked Region</source>
         <translation>Streifen über markiertem Bereich hin&amp;zufügen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="498"/>
+        <location filename="../app/gui/main_window.cpp" line="501"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n Fläche</numerusform>
@@ -2611,7 +2634,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="499"/>
+        <location filename="../app/gui/main_window.cpp" line="502"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n Flächenstück</numerusform>
@@ -2619,7 +2642,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="500"/>
+        <location filename="../app/gui/main_window.cpp" line="503"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n Kontrollpunkt</numerusform>
@@ -2627,7 +2650,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="501"/>
+        <location filename="../app/gui/main_window.cpp" line="504"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n ausgewählt</numerusform>
@@ -2655,72 +2678,72 @@
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="319"/>
+        <location filename="../app/gui/main_window.cpp" line="322"/>
         <source>Re&amp;fine Curves</source>
         <translation>Kurven &amp;verfeinern</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="320"/>
+        <location filename="../app/gui/main_window.cpp" line="323"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="326"/>
+        <location filename="../app/gui/main_window.cpp" line="329"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>Ecken &amp;verschieben oder drehen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="326"/>
+        <location filename="../app/gui/main_window.cpp" line="329"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="344"/>
+        <location filename="../app/gui/main_window.cpp" line="347"/>
         <source>Dis&amp;tance to Reference…</source>
         <translation>Abs&amp;tand zur Referenzform…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="399"/>
+        <location filename="../app/gui/main_window.cpp" line="402"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="400"/>
+        <location filename="../app/gui/main_window.cpp" line="403"/>
         <source>&amp;User Manual</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="407"/>
+        <location filename="../app/gui/main_window.cpp" line="410"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="413"/>
+        <location filename="../app/gui/main_window.cpp" line="416"/>
         <source>&amp;About DevSurf</source>
         <translation>&amp;Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="415"/>
+        <location filename="../app/gui/main_window.cpp" line="418"/>
         <source>About DevSurf</source>
         <translation>Über DevSurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="416"/>
+        <location filename="../app/gui/main_window.cpp" line="419"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen mit Spline-Torsen (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="461"/>
+        <location filename="../app/gui/main_window.cpp" line="464"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="483"/>
+        <location filename="../app/gui/main_window.cpp" line="486"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="484"/>
+        <location filename="../app/gui/main_window.cpp" line="487"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
@@ -3212,22 +3235,22 @@
 <context>
     <name>devsurf::app::MoveVerticesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="316"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="382"/>
         <source>Translate or rotate the selected vertices with their neighbouring control points. Select vertices of one surface first.</source>
         <translation>Verschiebt oder dreht die ausgewählten Ecken samt benachbarten Kontrollpunkten. Wählen Sie zuerst Ecken einer Fläche aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="344"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="410"/>
         <source>Cannot rotate</source>
         <translation>Drehen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="344"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="410"/>
         <source>Cannot move</source>
         <translation>Verschieben nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="353"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="419"/>
         <source>the vertices are moved</source>
         <translation>die Ecken werden bewegt</translation>
     </message>
@@ -3797,12 +3820,12 @@
 <context>
     <name>devsurf::app::RefineCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="294"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="360"/>
         <source>Double the spline intervals of the selected curve and of all curves joined to it through strips; the shape stays the same. Select one spline edge or strip first.</source>
         <translation>Verdoppelt die Spline-Intervalle der ausgewählten Kurve und aller über Streifen mit ihr verbundenen Kurven; die Form bleibt gleich. Wählen Sie zuerst eine Splinekante oder einen Streifen aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="304"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="370"/>
         <source>Cannot refine</source>
         <translation>Verfeinern nicht möglich</translation>
     </message>
@@ -3810,17 +3833,17 @@
 <context>
     <name>devsurf::app::RelabelEdgeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="115"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="123"/>
         <source>Cannot relabel: %1</source>
         <translation>Kennzeichnung kann nicht geändert werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="119"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="127"/>
         <source>Turn the selected edges from rulings (R) into spline curves (S) or back. Select edges of one surface first.</source>
         <translation>Macht die ausgewählten Kanten von Erzeugenden (R) zu Splinekurven (S) oder umgekehrt. Wählen Sie zuerst Kanten einer Fläche aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="126"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="134"/>
         <source>Cannot relabel</source>
         <translation>Kennzeichnung kann nicht geändert werden</translation>
     </message>
@@ -3839,6 +3862,29 @@
         <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="154"/>
         <source>Cannot remove the reference shapes</source>
         <translation>Die Referenzformen können nicht entfernt werden</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::RemoveRulingReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="298"/>
+        <source>Remove the selected ruling between two strips, merging them into one strip whose curves join theirs. Select one ruling between two strips first.</source>
+        <translation>Die ausgewählte Erzeugende zwischen zwei Streifen entfernen und beide zu einem Streifen verschmelzen, dessen Kurven ihre fortsetzen. Wählen Sie zuerst eine Erzeugende zwischen zwei Streifen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="312"/>
+        <source>Cannot remove the ruling</source>
+        <translation>Die Erzeugende kann nicht entfernt werden</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="322"/>
+        <source>Ruling %1 removed: its two strips are one strip, the shape unchanged.</source>
+        <translation>Erzeugende %1 entfernt: ihre beiden Streifen sind ein Streifen, die Form unverändert.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="324"/>
+        <source>Ruling %1 removed: its two strips are one strip, up to %2 from where they were; Tools ▸ Solve makes it developable again if it is not.</source>
+        <translation>Erzeugende %1 entfernt: ihre beiden Streifen sind ein Streifen, bis zu %2 von ihrer vorherigen Lage; Werkzeuge ▸ Lösen macht ihn wieder abwickelbar, falls nötig.</translation>
     </message>
 </context>
 <context>
@@ -4811,28 +4857,28 @@
 <context>
     <name>devsurf::app::SplitAtRulingReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="213"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="221"/>
         <source>The curves of this strip have a single spline interval, so a ruling can only be added after refining them (the shape stays the same). Refine now?</source>
         <translation>Die Kurven dieses Streifens haben nur ein Spline-Intervall; eine Erzeugende kann erst nach dem Verfeinern eingefügt werden (die Form bleibt gleich). Jetzt verfeinern?</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="218"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="226"/>
         <source>Cannot refine</source>
         <translation>Verfeinern nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="212"/>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="229"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="220"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="237"/>
         <source>Add Ruling</source>
         <translation>Erzeugende einfügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="193"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="201"/>
         <source>Add a ruling across the selected strip and the strips that share its curves. Select one strip or cone patch first.</source>
         <translation>Fügt eine Erzeugende quer über den ausgewählten Streifen und die Streifen mit denselben Kurven ein. Wählen Sie zuerst ein Streifen- oder Kegel-Flächenstück aus.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="230"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="238"/>
         <source>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoint(s) of the curves; refine the curves (Ctrl+Shift+R) for more.</source>
         <translation>
             <numerusform>Wo die neue Erzeugende Flächenstück %1 und die Streifen mit denselben Kurven kreuzt (grün in der 3D-Ansicht): Prozent des Wegs entlang des Streifens. Erzeugende können durch den %n Knoten der Kurven gehen; verfeinern Sie die Kurven (Strg+Umschalt+R) für mehr.</numerusform>
@@ -4840,7 +4886,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="261"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="269"/>
         <source>Cannot add the ruling</source>
         <translation>Erzeugende kann nicht eingefügt werden</translation>
     </message>
@@ -4848,22 +4894,22 @@
 <context>
     <name>devsurf::app::SubdivideStripReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="138"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="146"/>
         <source>Add a crease across the selected strip and the row of strips it belongs to. Select one patch of type strip (SRSR) first.</source>
         <translation>Fügt einen Falz quer über den ausgewählten Streifen und seine Streifenreihe ein. Wählen Sie zuerst ein Flächenstück vom Typ Streifen (SRSR) aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="149"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="157"/>
         <source>Add Crease</source>
         <translation>Falz einfügen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="150"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="158"/>
         <source>Where the new crease crosses patch %1 and the strips of its row (green in the 3D view): per cent of the way from one curve of the strip to the other.</source>
         <translation>Wo der neue Falz Flächenstück %1 und die Streifen seiner Reihe kreuzt (grün in der 3D-Ansicht): Prozent des Wegs von einer Kurve des Streifens zur anderen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="179"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="187"/>
         <source>Cannot add the crease</source>
         <translation>Falz kann nicht eingefügt werden</translation>
     </message>

@@ -245,7 +245,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="186"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="185"/>
         <source>, %n part(s) not connected</source>
         <translation>
             <numerusform>, %n part not connected</numerusform>
@@ -256,7 +256,7 @@
 <context>
     <name>devsurf::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="498"/>
+        <location filename="../app/gui/main_window.cpp" line="501"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>%n surface</numerusform>
@@ -264,7 +264,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="499"/>
+        <location filename="../app/gui/main_window.cpp" line="502"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>%n patch</numerusform>
@@ -272,7 +272,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="500"/>
+        <location filename="../app/gui/main_window.cpp" line="503"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>%n control point</numerusform>
@@ -280,7 +280,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="501"/>
+        <location filename="../app/gui/main_window.cpp" line="504"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n selected</numerusform>
@@ -541,7 +541,7 @@
 <context>
     <name>devsurf::app::SplitAtRulingReaction</name>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="230"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="238"/>
         <source>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoint(s) of the curves; refine the curves (Ctrl+Shift+R) for more.</source>
         <translation>
             <numerusform>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoint of the curves; refine the curves (Ctrl+Shift+R) for more.</numerusform>

@@ -301,6 +301,19 @@
     </message>
 </context>
 <context>
+    <name>MergeStripsCommand</name>
+    <message>
+        <location filename="../model/document/commands/merge_strips_command.cpp" line="9"/>
+        <source>Remove ruling %1</source>
+        <translation>母線 %1 を削除</translation>
+    </message>
+    <message>
+        <location filename="../model/document/commands/merge_strips_command.cpp" line="11"/>
+        <source>Ruling %1 cannot be removed</source>
+        <translation>母線 %1 は削除できません</translation>
+    </message>
+</context>
+<context>
     <name>MoveVerticesCommand</name>
     <message>
         <location filename="../model/document/commands/move_vertices_command.cpp" line="20"/>
@@ -1471,7 +1484,7 @@
 <context>
     <name>devsurf::app::BackgroundRead</name>
     <message>
-        <location filename="../app/gui/reactions/background_read.cpp" line="32"/>
+        <location filename="../app/gui/reactions/background_read.cpp" line="36"/>
         <source>Cancel</source>
         <translation>キャンセル</translation>
     </message>
@@ -2230,24 +2243,24 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="186"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="185"/>
         <source>, %n part(s) not connected</source>
         <translation>
             <numerusform>、%n 個の部分は未接続</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="189"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="188"/>
         <source>largest constraint residual %1, within the tolerance.</source>
         <translation>最大の制約残差 %1、許容範囲内。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="190"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="189"/>
         <source>largest constraint residual %1, not within the tolerance (Tools ▸ Solve may help).</source>
         <translation>最大の制約残差 %1、許容範囲外 (ツール ▸ ソルブが役立つ場合があります)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="194"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="193"/>
         <source>Not welded: %1</source>
         <translation>溶接されていません: %1</translation>
     </message>
@@ -2476,7 +2489,17 @@
         <translation>参照形状を距離で色分け(&amp;T)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="344"/>
+        <location filename="../app/gui/main_window.cpp" line="320"/>
+        <source>Remove Rulin&amp;g</source>
+        <translation>母線を削除(&amp;G)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="320"/>
+        <source>Ctrl+Alt+R</source>
+        <translation>Ctrl+Alt+R</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="347"/>
         <source>Dis&amp;tance to Reference…</source>
         <translation>参照形状までの距離(&amp;T)…</translation>
     </message>
@@ -2536,158 +2559,158 @@
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="319"/>
+        <location filename="../app/gui/main_window.cpp" line="322"/>
         <source>Re&amp;fine Curves</source>
         <translation>曲線を細分化(&amp;F)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="320"/>
+        <location filename="../app/gui/main_window.cpp" line="323"/>
         <source>Ctrl+Shift+R</source>
         <translation>Ctrl+Shift+R</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="326"/>
+        <location filename="../app/gui/main_window.cpp" line="329"/>
         <source>&amp;Move or Rotate Vertices…</source>
         <translation>頂点の移動・回転(&amp;M)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="326"/>
+        <location filename="../app/gui/main_window.cpp" line="329"/>
         <source>Ctrl+M</source>
         <translation>Ctrl+M</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="329"/>
+        <location filename="../app/gui/main_window.cpp" line="332"/>
         <source>&amp;Pin Vertices</source>
         <translation>頂点を固定(&amp;P)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="330"/>
+        <location filename="../app/gui/main_window.cpp" line="333"/>
         <source>Ctrl+K</source>
         <translation>Ctrl+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="332"/>
+        <location filename="../app/gui/main_window.cpp" line="335"/>
         <source>U&amp;npin Vertices</source>
         <translation>頂点の固定を解除(&amp;N)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="333"/>
+        <location filename="../app/gui/main_window.cpp" line="336"/>
         <source>Ctrl+Shift+K</source>
         <translation>Ctrl+Shift+K</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="336"/>
+        <location filename="../app/gui/main_window.cpp" line="339"/>
         <source>Hold the &amp;Sheet</source>
         <translation>シートを保持(&amp;S)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="337"/>
+        <location filename="../app/gui/main_window.cpp" line="340"/>
         <source>Ctrl+Shift+H</source>
         <translation>Ctrl+Shift+H</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="340"/>
+        <location filename="../app/gui/main_window.cpp" line="343"/>
         <source>Sheet S&amp;hape…</source>
         <translation>シートの形(&amp;H)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="347"/>
+        <location filename="../app/gui/main_window.cpp" line="350"/>
         <source>A&amp;pproximate Reference Shape…</source>
         <translation>参照形状を近似(&amp;P)…</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="355"/>
+        <location filename="../app/gui/main_window.cpp" line="358"/>
         <source>&amp;Join Surfaces</source>
         <translation>サーフェスを結合(&amp;J)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="356"/>
+        <location filename="../app/gui/main_window.cpp" line="359"/>
         <source>Ctrl+J</source>
         <translation>Ctrl+J</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="360"/>
+        <location filename="../app/gui/main_window.cpp" line="363"/>
         <source>Mar&amp;k Region of Reference Shape</source>
         <translation>参照形状の領域をマーク(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="360"/>
+        <location filename="../app/gui/main_window.cpp" line="363"/>
         <source>L</source>
         <translation>L</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="362"/>
+        <location filename="../app/gui/main_window.cpp" line="365"/>
         <source>Add Strip O&amp;ver Marked Region</source>
         <translation>マークした領域にストリップを追加(&amp;V)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="399"/>
+        <location filename="../app/gui/main_window.cpp" line="402"/>
         <source>&amp;Help</source>
         <translation>ヘルプ(&amp;H)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="400"/>
+        <location filename="../app/gui/main_window.cpp" line="403"/>
         <source>&amp;User Manual</source>
         <translation>ユーザーマニュアル(&amp;U)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="407"/>
+        <location filename="../app/gui/main_window.cpp" line="410"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>キーボードショートカット(&amp;K)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="413"/>
+        <location filename="../app/gui/main_window.cpp" line="416"/>
         <source>&amp;About DevSurf</source>
         <translation>DevSurf について(&amp;A)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="415"/>
+        <location filename="../app/gui/main_window.cpp" line="418"/>
         <source>About DevSurf</source>
         <translation>DevSurf について</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="416"/>
+        <location filename="../app/gui/main_window.cpp" line="419"/>
         <source>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;Design of developable surfaces and curved-crease origami with spline developables (Tang, Bo, Wallner, Pottmann 2015).&lt;/p&gt;</source>
         <translation>&lt;b&gt;DevSurf %1&lt;/b&gt;&lt;p&gt;スプライン可展面による可展面と曲線折り折り紙の設計 (Tang, Bo, Wallner, Pottmann 2015)。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="461"/>
+        <location filename="../app/gui/main_window.cpp" line="464"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="483"/>
+        <location filename="../app/gui/main_window.cpp" line="486"/>
         <source>Untitled</source>
         <translation>無題</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="484"/>
+        <location filename="../app/gui/main_window.cpp" line="487"/>
         <source>%1[*] — DevSurf</source>
         <translation>%1[*] — DevSurf</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="498"/>
+        <location filename="../app/gui/main_window.cpp" line="501"/>
         <source>%n surface(s)</source>
         <translation>
             <numerusform>曲面 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="499"/>
+        <location filename="../app/gui/main_window.cpp" line="502"/>
         <source>%n patch(es)</source>
         <translation>
             <numerusform>パッチ %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="500"/>
+        <location filename="../app/gui/main_window.cpp" line="503"/>
         <source>%n control point(s)</source>
         <translation>
             <numerusform>制御点 %n 個</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="501"/>
+        <location filename="../app/gui/main_window.cpp" line="504"/>
         <source>%n selected</source>
         <translation>
             <numerusform>%n 個選択</numerusform>
@@ -3177,22 +3200,22 @@
 <context>
     <name>devsurf::app::MoveVerticesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="316"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="382"/>
         <source>Translate or rotate the selected vertices with their neighbouring control points. Select vertices of one surface first.</source>
         <translation>選択した頂点を隣接する制御点とともに平行移動または回転します。先に 1 つの曲面の頂点を選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="344"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="410"/>
         <source>Cannot rotate</source>
         <translation>回転できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="344"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="410"/>
         <source>Cannot move</source>
         <translation>移動できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="353"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="419"/>
         <source>the vertices are moved</source>
         <translation>頂点が移動されます</translation>
     </message>
@@ -3753,12 +3776,12 @@
 <context>
     <name>devsurf::app::RefineCurvesReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="294"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="360"/>
         <source>Double the spline intervals of the selected curve and of all curves joined to it through strips; the shape stays the same. Select one spline edge or strip first.</source>
         <translation>選択した曲線と、ストリップを介してつながるすべての曲線のスプライン区間を 2 倍にします。形状は変わりません。先にスプライン辺またはストリップを 1 つ選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="304"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="370"/>
         <source>Cannot refine</source>
         <translation>細分化できません</translation>
     </message>
@@ -3766,17 +3789,17 @@
 <context>
     <name>devsurf::app::RelabelEdgeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="115"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="123"/>
         <source>Cannot relabel: %1</source>
         <translation>ラベルを変更できません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="119"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="127"/>
         <source>Turn the selected edges from rulings (R) into spline curves (S) or back. Select edges of one surface first.</source>
         <translation>選択した辺を母線 (R) からスプライン曲線 (S) に、またはその逆に変更します。先に 1 つの曲面の辺を選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="126"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="134"/>
         <source>Cannot relabel</source>
         <translation>ラベルを変更できません</translation>
     </message>
@@ -3795,6 +3818,29 @@
         <location filename="../app/gui/reactions/reference_shape_reactions.cpp" line="154"/>
         <source>Cannot remove the reference shapes</source>
         <translation>参照形状を削除できません</translation>
+    </message>
+</context>
+<context>
+    <name>devsurf::app::RemoveRulingReaction</name>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="298"/>
+        <source>Remove the selected ruling between two strips, merging them into one strip whose curves join theirs. Select one ruling between two strips first.</source>
+        <translation>2 つのストリップの間の選択した母線を削除し、両方の曲線をつないだ 1 つのストリップに統合します。先に 2 つのストリップの間の母線を 1 本選択してください。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="312"/>
+        <source>Cannot remove the ruling</source>
+        <translation>母線を削除できません</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="322"/>
+        <source>Ruling %1 removed: its two strips are one strip, the shape unchanged.</source>
+        <translation>母線 %1 を削除しました: 2 つのストリップは 1 つになり、形状は変わりません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="324"/>
+        <source>Ruling %1 removed: its two strips are one strip, up to %2 from where they were; Tools ▸ Solve makes it developable again if it is not.</source>
+        <translation>母線 %1 を削除しました: 2 つのストリップは 1 つになり、元の位置から最大 %2 離れています。可展でなくなった場合はツール ▸ ソルブで可展に戻せます。</translation>
     </message>
 </context>
 <context>
@@ -4752,35 +4798,35 @@
 <context>
     <name>devsurf::app::SplitAtRulingReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="213"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="221"/>
         <source>The curves of this strip have a single spline interval, so a ruling can only be added after refining them (the shape stays the same). Refine now?</source>
         <translation>このストリップの曲線はスプライン区間が 1 つしかないため、母線は細分化した後でなければ追加できません (形状は変わりません)。今すぐ細分化しますか?</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="218"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="226"/>
         <source>Cannot refine</source>
         <translation>細分化できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="212"/>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="229"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="220"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="237"/>
         <source>Add Ruling</source>
         <translation>母線を追加</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="193"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="201"/>
         <source>Add a ruling across the selected strip and the strips that share its curves. Select one strip or cone patch first.</source>
         <translation>選択したストリップと同じ曲線を共有するストリップを横切る母線を追加します。先にストリップまたは錐面のパッチを 1 つ選択してください。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="230"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="238"/>
         <source>Where the new ruling crosses patch %1 and the strips that share its curves (green in the 3D view): per cent of the way along the strip. Rulings can go through the %n breakpoint(s) of the curves; refine the curves (Ctrl+Shift+R) for more.</source>
         <translation>
             <numerusform>新しい母線がパッチ %1 と同じ曲線を共有するストリップを横切る位置 (3D ビューで緑): ストリップに沿った割合 (%)。母線は曲線の %n 個の区切り点を通ることができます。さらに増やすには曲線を細分化してください (Ctrl+Shift+R)。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="261"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="269"/>
         <source>Cannot add the ruling</source>
         <translation>母線を追加できません</translation>
     </message>
@@ -4788,22 +4834,22 @@
 <context>
     <name>devsurf::app::SubdivideStripReaction</name>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="138"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="146"/>
         <source>Add a crease across the selected strip and the row of strips it belongs to. Select one patch of type strip (SRSR) first.</source>
         <translation>選択したストリップとそれが属するストリップの列を横切る折り線を追加します。先に種類がストリップ (SRSR) のパッチを 1 つ選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="149"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="157"/>
         <source>Add Crease</source>
         <translation>折り線を追加</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="150"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="158"/>
         <source>Where the new crease crosses patch %1 and the strips of its row (green in the 3D view): per cent of the way from one curve of the strip to the other.</source>
         <translation>新しい折り線がパッチ %1 とその列のストリップを横切る位置 (3D ビューで緑): ストリップの一方の曲線からもう一方への割合 (%)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/tool_reactions.cpp" line="179"/>
+        <location filename="../app/gui/reactions/tool_reactions.cpp" line="187"/>
         <source>Cannot add the crease</source>
         <translation>折り線を追加できません</translation>
     </message>

@@ -316,6 +316,9 @@ void MainWindow::createMenus() {
     QAction* split = addAction(tools, QStringLiteral("actionSplitAtRuling"), tr("Add R&uling…"),
                                QKeySequence(tr("Ctrl+R")));
     new SplitAtRulingReaction(split, m_workspace, m_surfaceView);
+    QAction* removeRuling = addAction(tools, QStringLiteral("actionRemoveRuling"),
+                                      tr("Remove Rulin&g"), QKeySequence(tr("Ctrl+Alt+R")));
+    new RemoveRulingReaction(removeRuling, m_workspace);
     QAction* refine = addAction(tools, QStringLiteral("actionRefine"), tr("Re&fine Curves"),
                                 QKeySequence(tr("Ctrl+Shift+R")));
     new RefineCurvesReaction(refine, m_workspace);

@@ -25,7 +25,7 @@ class Workspace;
 // that face the camera (model::reference::pointsInLasso) become the marked region, drawn
 // magenta. Shift adds to the mark, a click without dragging clears it; Esc drops a lasso in
 // progress, else leaves the tool (the mark stays); Enter adds the strip. The strip is the flat
-// PCA rectangle of the marked points (model::reference::initialStrip, with the spline space of
+// PCA trapezoid of the marked points (model::reference::initialStrip, with the spline space of
 // the approximation's strips), added as one undo step and named "strip N"; the mark is then
 // cleared. The mark is view state, never saved: a change of the reference shapes or another
 // project clears it. While the tool is on the left button draws, not turns the camera (the

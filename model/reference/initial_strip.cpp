@@ -164,8 +164,23 @@ CompositeSurface initialStrip(const std::vector<Vec3>& points, const std::vector
     if (!(width > 1e-9 * length) || !(length > 1e-9 * width)) {
         throw std::invalid_argument("the points do not spread in two directions");
     }
-    const double u0 = low[0] - margin * length;
-    const double u1 = high[0] + margin * length;
+    // Each curve spans the points of its half of the strip (never empty: the extreme points lie
+    // in it). A rectangle over a footprint that narrows to one side (a cone patch) overhung it
+    // there, and the strip slid off the wide side's corners while its rulings turned.
+    double sideLow[2] = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+    double sideHigh[2] = {std::numeric_limits<double>::lowest(),
+                          std::numeric_limits<double>::lowest()};
+    const double middle = 0.5 * (low[1] + high[1]);
+    for (const Vec3& p : points) {
+        const double u = dot(p - frame.centroid, along);
+        const double w = dot(p - frame.centroid, across);
+        for (int side : {0, 1}) {
+            if (side == 0 ? w <= middle : w >= middle) {
+                sideLow[side] = std::min(sideLow[side], u);
+                sideHigh[side] = std::max(sideHigh[side], u);
+            }
+        }
+    }
     const double w0 = low[1] - margin * width;
     const double w1 = high[1] + margin * width;
     auto at = [&](double u, double w) { return frame.centroid + along * u + across * w; };
@@ -173,10 +188,10 @@ CompositeSurface initialStrip(const std::vector<Vec3>& points, const std::vector
     s.setName("strip");
     // a from a0 to a1 along `along`, b from b0 to b1 beside it along `across`: the face loop
     // a0, a1, b1, b0 runs like the sheet example's faces, so its normal is axes[2].
-    const VertexId a0 = s.addVertex(at(u0, w0));
-    const VertexId a1 = s.addVertex(at(u1, w0));
-    const VertexId b1 = s.addVertex(at(u1, w1));
-    const VertexId b0 = s.addVertex(at(u0, w1));
+    const VertexId a0 = s.addVertex(at(sideLow[0] - margin * length, w0));
+    const VertexId a1 = s.addVertex(at(sideHigh[0] + margin * length, w0));
+    const VertexId b1 = s.addVertex(at(sideHigh[1] + margin * length, w1));
+    const VertexId b0 = s.addVertex(at(sideLow[1] - margin * length, w1));
     s.addFace({a0, a1, b1, b0});
     s.setSpline(a0, a1, space, straightControlPoints(space, s.position(a0), s.position(a1)));
     s.setSpline(b0, b1, space, straightControlPoints(space, s.position(b0), s.position(b1)));

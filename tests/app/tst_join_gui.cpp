@@ -2,8 +2,10 @@
 // one composite surface with shared edges, developable (sampled here, independently of the
 // solver), as one undo step that undo and redo take back and re-apply byte for byte; the
 // selection chooses the surfaces; surfaces that face nothing are left as they are, and say so.
+// Tools ▸ Remove Ruling (Ctrl+Alt+R) then merges two strips joined along a ruling into one.
 #include "main_window.h"
 #include "model/document/commands/join_surfaces_command.h"
+#include "model/document/commands/merge_strips_command.h"
 #include "model/document/commands/reference_shapes_command.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
@@ -16,6 +18,8 @@
 #include "workspace.h"
 
 #include <QAction>
+#include <QApplication>
+#include <QMessageBox>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTest>
@@ -186,6 +190,87 @@ private slots:
         for (const auto& [id, position] : joined.vertices()) {
             QVERIFY2(std::abs(position.z) < 1e-6, qPrintable(QString::number(position.z)));
         }
+    }
+
+    void stripsJoinedAlongARulingMergeIntoOne() {
+        // Two strips end to end, 2 mm apart between their end rulings: joined along them, then
+        // that ruling removed by Ctrl+Alt+R.
+        app::MainWindow window;
+        QVERIFY(test::showActiveWithExample(window, QStringLiteral("sheet")));
+        model::Project project;
+        project.addSurface(flatStrip(0.0, 0.0, "a"));
+        project.addSurface(flatStrip(102.0, 0.0, "b"));
+        document::Document* doc = window.workspace()->document();
+        doc->resetProject(project);
+        const auto [applied, sentence] = joinByKey(window);
+        QVERIFY2(applied, qPrintable(sentence));
+        QCOMPARE(doc->surfaceCount(), 1);
+        model::EdgeId shared = model::kInvalidId;
+        for (const auto& [id, record] : doc->surface(0).edges()) {
+            if (!record.isSpline() && doc->surface(0).facesOfEdge(id).size() == 2) {
+                shared = id;
+            }
+        }
+        QVERIFY(shared != model::kInvalidId);
+
+        QAction* remove = window.action(QStringLiteral("actionRemoveRuling"));
+        QVERIFY(remove != nullptr);
+        QVERIFY(!remove->isEnabled()); // nothing selected
+        QVERIFY(remove->toolTip().contains(QStringLiteral("Select one ruling")));
+        window.workspace()->selection()->set({{document::Pick::Kind::Edge, 0, shared}});
+        QVERIFY(remove->isEnabled());
+
+        const std::string joined = test::bytesOf(window);
+        QSignalSpy status(window.workspace(), &app::Workspace::statusMessage);
+        QTest::keyClick(&window, Qt::Key_R, Qt::ControlModifier | Qt::AltModifier);
+        const model::CompositeSurface& merged = doc->surface(0);
+        QCOMPARE(merged.faces().size(), std::size_t(1));
+        QCOMPARE(merged.vertices().size(), std::size_t(4));
+        QVERIFY(merged.validate().empty());
+        QVERIFY(test::undoCommand<document::MergeStripsCommand>(*doc) != nullptr);
+        QVERIFY(!status.isEmpty());
+        const QString said = status.back().front().toString();
+        QVERIFY2(said.contains(QStringLiteral("removed")), qPrintable(said));
+        // Still the plane z = 0, 0 … 202 mm along the curves.
+        double xLow = 1e300, xHigh = -1e300;
+        for (const auto& [id, position] : merged.vertices()) {
+            QVERIFY(std::abs(position.z) < 1e-9);
+            xLow = std::min(xLow, position.x);
+            xHigh = std::max(xHigh, position.x);
+        }
+        QVERIFY(std::abs(xLow) < 1e-9 && std::abs(xHigh - 202.0) < 1e-9);
+        QVERIFY(test::sampledDevelopability(merged) <= 1e-8);
+        const std::string after = test::bytesOf(window);
+        doc->undoStack()->undo();
+        QVERIFY(test::bytesOf(window) == joined);
+        doc->undoStack()->redo();
+        QVERIFY(test::bytesOf(window) == after);
+    }
+
+    void aRulingWhoseEndsMeetOtherPatchesIsNotRemoved() {
+        // The sheet's inner rulings end on curves that run on through other patches: refused
+        // with a message, the design unchanged.
+        app::MainWindow window;
+        QVERIFY(test::showActiveWithExample(window, QStringLiteral("sheet")));
+        document::Document* doc = window.workspace()->document();
+        const model::CompositeSurface& sheet = doc->surface(0);
+        model::EdgeId inner = model::kInvalidId;
+        for (const auto& [id, record] : sheet.edges()) {
+            if (!record.isSpline() && sheet.facesOfEdge(id).size() == 2) {
+                inner = id;
+                break;
+            }
+        }
+        QVERIFY(inner != model::kInvalidId);
+        window.workspace()->selection()->set({{document::Pick::Kind::Edge, 0, inner}});
+        QAction* remove = window.action(QStringLiteral("actionRemoveRuling"));
+        QVERIFY(remove->isEnabled());
+        const std::string before = test::bytesOf(window);
+        bool answered = false;
+        test::acceptNextMessageBox(answered);
+        remove->trigger();
+        QVERIFY(answered);
+        QVERIFY(test::bytesOf(window) == before);
     }
 };
 

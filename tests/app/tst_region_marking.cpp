@@ -349,22 +349,23 @@ private slots:
             }
             return sum;
         };
-        // The strip's corners: a rectangle in one plane.
-        std::vector<Vec3> corners;
-        for (const auto& [id, position] : strip.vertices()) {
-            (void)id;
-            corners.push_back(position);
+        // The strip's corners: a trapezoid in one plane, its two curves parallel (each spans
+        // the points of its half).
+        std::vector<std::pair<Vec3, Vec3>> curves;
+        for (const auto& [id, record] : strip.edges()) {
+            if (record.isSpline()) {
+                curves.emplace_back(strip.position(record.from), strip.position(record.to));
+            }
         }
-        QCOMPARE(corners.size(), std::size_t(4));
-        const Vec3 a = corners[0];
-        std::sort(corners.begin() + 1, corners.end(),
-                  [&a](const Vec3& p, const Vec3& q) { return distance(a, p) < distance(a, q); });
-        const Vec3 e1 = corners[1] - a;
-        const Vec3 e2 = corners[2] - a;
-        QVERIFY(std::abs(dot(e1, e2)) < 1e-9 * e1.norm() * e2.norm());
-        QVERIFY(distance(a + e1 + e2, corners[3]) < 1e-9 * e1.norm());
+        QCOMPARE(curves.size(), std::size_t(2));
+        const Vec3 a = curves[0].first;
+        const Vec3 e1 = curves[0].second - a;
+        const Vec3 e2 = curves[1].first - a;
+        QVERIFY(cross(e1, curves[1].second - curves[1].first).norm() <
+                1e-9 * e1.norm() * (curves[1].second - curves[1].first).norm());
         Vec3 normal = cross(e1, e2);
         normal = normal / normal.norm();
+        QVERIFY(std::abs(dot(curves[1].second - a, normal)) < 1e-9 * e1.norm());
         // Through the centroid, and its normal the least-variance direction: an eigenvector
         // of the covariance whose value no other direction goes below.
         QVERIFY(std::abs(dot(centroid - a, normal)) < 1e-9 * e1.norm());
@@ -382,12 +383,21 @@ private slots:
             QVERIFY(quadratic(u) >= least * (1.0 - 1e-12));
         }
         QVERIFY(least > 0.0); // the bowl is curved: the points are not planar
-        // Every marked point, projected onto the plane, lies on the rectangle.
+        // Every marked point, projected onto the plane, lies inside the trapezoid a0 a1 b1 b0:
+        // on the inner side of each of its edges.
+        const Vec3 quad[4] = {curves[0].first, curves[0].second, curves[1].second, curves[1].first};
         for (const Vec3& p : points) {
-            const double s = dot(p - a, e1) / e1.squaredNorm();
-            const double t = dot(p - a, e2) / e2.squaredNorm();
-            QVERIFY2(s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0,
-                     qPrintable(QStringLiteral("%1 %2").arg(s).arg(t)));
+            double sides[4];
+            for (int k = 0; k < 4; ++k) {
+                sides[k] = dot(cross(quad[(k + 1) % 4] - quad[k], p - quad[k]), normal);
+            }
+            const bool inside = (sides[0] > 0 && sides[1] > 0 && sides[2] > 0 && sides[3] > 0) ||
+                                (sides[0] < 0 && sides[1] < 0 && sides[2] < 0 && sides[3] < 0);
+            QVERIFY2(inside, qPrintable(QStringLiteral("%1 %2 %3 %4")
+                                            .arg(sides[0])
+                                            .arg(sides[1])
+                                            .arg(sides[2])
+                                            .arg(sides[3])));
         }
 
         // One undo step: undo takes it back, redo restores it byte for byte.

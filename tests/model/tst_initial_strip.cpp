@@ -1,4 +1,4 @@
-// The initial strips of §4.2: a flat rectangle over the PCA plane of points, and the clusters
+// The initial strips of §4.2: a flat trapezoid over the PCA plane of points, and the clusters
 // that split a shape for several strips.
 
 #include "model/reference/distance_report.h"
@@ -46,6 +46,36 @@ private slots:
             QVERIFY(report.surfaceToTarget.max > 2.0 * scale);
             QVERIFY(report.surfaceToTarget.max < 6.0 * scale);
         }
+    }
+
+    void eachCurveSpansItsHalfOfTheFootprint() {
+        // A trapezoid of points in the plane z = 0: 100 mm wide at y = 0, 50 mm at y = 40 (as a
+        // cone patch's footprint). Curve a (y < 20) spans the wide half, b the narrow half.
+        std::vector<Vec3> points;
+        for (int j = 0; j <= 8; ++j) {
+            const double y = 5.0 * j;
+            const double half = 50.0 - 25.0 * y / 40.0;
+            for (int i = 0; i <= 20; ++i) {
+                points.emplace_back(-half + 2.0 * half * i / 20.0, y, 0.0);
+            }
+        }
+        const CompositeSurface strip = initialStrip(points, {3, 2, 4}, 0.0);
+        QVERIFY(strip.validate().empty());
+        // The vertices a0, a1, b1, b0: their extents along the curves (x) on each side (y).
+        double wideSide = 0.0, narrowSide = 0.0;
+        for (VertexId v = 0; v < 4; ++v) {
+            const Vec3 p = strip.position(v);
+            QVERIFY(std::abs(p.z) < 1e-9);
+            (p.y < 20.0 ? wideSide : narrowSide) += std::abs(p.x);
+        }
+        // |x| of both ends: the widest point of each half, at y = 0 (50 mm) and at y = 20
+        // (37.5 mm); the plain rectangle had 50 on both sides.
+        QVERIFY2(std::abs(wideSide - 100.0) < 1e-9, qPrintable(QString::number(wideSide)));
+        QVERIFY2(std::abs(narrowSide - 75.0) < 1e-9, qPrintable(QString::number(narrowSide)));
+        // It still covers every point, and overhangs the narrow end by half as much.
+        const DistanceReport report = measureDistance(strip, points);
+        QVERIFY(report.targetToSurface.max < 1e-9);
+        QCOMPARE(report.coverage, 1.0);
     }
 
     void stripOnACylinderRunsAcrossItsRulings() {

@@ -106,13 +106,12 @@ private slots:
 
     void recoversAConePatch() {
         // The cone from the apex (0, −20, −60) over the parabola above: exact in cubic splines.
-        // Not reached yet: the flat start's rectangle overhangs the narrow end of the patch,
-        // and while its rulings turn towards the apex the strip slides off the wide end's
-        // corners, whose points then lie beyond its border and stop pulling (max distance 0.05
-        // of the diameter after 30 iterations; a border reach of 3 or 10 ρ was worse), and the
-        // fade then ended before the residual converged (sampled det 1e-2), so the job falls
-        // back to the damped recipe, which ends developable (3e-10) but 0.12 of the diameter
-        // away.
+        // The flat start is a trapezoid whose curves each span their half of the points
+        // (model::reference::initialStrip); the rectangle before overhung the narrow end, the
+        // strip slid off the wide end's corners while its rulings turned towards the apex and
+        // was pulled again damped, ending 0.12 of the diameter away. Now it follows without
+        // damping to 1.3e-4 of the diameter, where it stays for 30 to 120 iterations: short of
+        // the 1e-6, for a reason not established (the parabolic cylinder reaches 5e-7).
         const Vec3 apex(0, -20, -60);
         const std::vector<Vec3> points = sampleGrid(
             [&apex](double s, double t) {
@@ -128,7 +127,10 @@ private slots:
               "%.3g; residual %.3g",
               r.distance.targetToSurface.max / diameter, r.distance.targetToSurface.mean / diameter,
               r.developability, r.outcome.largestResidual());
-        QEXPECT_FAIL("", "the strip slides off the cone patch's corners (see above)", Continue);
+        QVERIFY(r.developability <= 1e-8);
+        QVERIFY(!r.outcome.assessments.front().dampedApproximation);
+        QVERIFY(r.distance.targetToSurface.max <= 1e-3 * diameter);
+        QEXPECT_FAIL("", "the strip stays 1.3e-4 of the diameter away (see above)", Continue);
         QVERIFY(r.distance.targetToSurface.max <= 1e-6 * diameter);
     }
 

@@ -1,12 +1,14 @@
 #include "tool_reactions.h"
 #include "edit_refusal.h"
 
+#include "../distance_report_dialog.h"
 #include "../edit_preview.h"
 #include "../move_dialog.h"
 #include "../position_dialog.h"
 #include "../solve_controller.h"
 #include "../workspace.h"
 #include "model/document/commands/command_or_error.h"
+#include "model/document/commands/merge_strips_command.h"
 #include "model/document/commands/move_vertices_command.h"
 #include "model/document/commands/refine_spline_class_command.h"
 #include "model/document/commands/relabel_edge_command.h"
@@ -16,6 +18,8 @@
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "model/model_error.h"
+#include "model/reference/distance_report.h"
+#include "model/reference/surface_samples.h"
 #include "model/strip.h"
 #include "model/topology_edits.h"
 #include "views/scene_view.h"
@@ -28,6 +32,10 @@ namespace devsurf::app {
 namespace {
 
 using document::Pick;
+
+// A merged strip this close (mm) to the two it replaces kept the shape (the rest is the
+// sampling of the distance measurement).
+constexpr double kUnchangedMm = 1e-6;
 
 std::optional<SelectedIds> selected(const Workspace* workspace, Pick::Kind kind) {
     std::optional<SelectedIds> result;
@@ -259,6 +267,64 @@ void SplitAtRulingReaction::onTriggered() {
     workspace()->apply(
         document::SplitAtRulingCommand::create(doc, face->first, face->second, breakpoint),
         tr("Cannot add the ruling"));
+}
+
+RemoveRulingReaction::RemoveRulingReaction(QAction* action, Workspace* workspace)
+    : Reaction(action, workspace) {
+    followDocumentAndSelection();
+}
+
+namespace {
+
+// The one selected edge, if it is a ruling between two patches.
+std::optional<std::pair<int, model::EdgeId>> innerRuling(const Workspace* workspace) {
+    const auto edges = selected(workspace, Pick::Kind::Edge);
+    if (!edges || edges->ids.size() != 1) {
+        return std::nullopt;
+    }
+    const model::CompositeSurface* surface = surfaceOf(workspace, edges->surface);
+    const model::EdgeId edge = *edges->ids.begin();
+    if (surface == nullptr || !surface->hasEdge(edge) || surface->edge(edge).isSpline() ||
+        surface->facesOfEdge(edge).size() != 2) {
+        return std::nullopt;
+    }
+    return std::make_pair(edges->surface, edge);
+}
+
+} // namespace
+
+void RemoveRulingReaction::updateEnableState() {
+    explainDisabled(action(), innerRuling(workspace()).has_value(),
+                    tr("Remove the selected ruling between two strips, merging them into one "
+                       "strip whose curves join theirs. Select one ruling between two strips "
+                       "first."));
+}
+
+void RemoveRulingReaction::onTriggered() {
+    const auto ruling = innerRuling(workspace());
+    if (!ruling) {
+        return;
+    }
+    document::Document& doc = *workspace()->document();
+    const model::CompositeSurface before = doc.surface(ruling->first);
+    if (!workspace()->apply(
+            document::MergeStripsCommand::create(doc, ruling->first, ruling->second),
+            tr("Cannot remove the ruling"))) {
+        return;
+    }
+    // How far the merged strip lies from the two it replaced (dense samples of theirs).
+    const model::reference::SurfaceSamples samples = model::reference::sampleDensely({before}, 8);
+    const double moved =
+        model::reference::measureDistance(doc.surface(ruling->first), samples.positions)
+            .targetToSurface.max;
+    emit workspace()->statusMessage(
+        moved <= kUnchangedMm
+            ? tr("Ruling %1 removed: its two strips are one strip, the shape unchanged.")
+                  .arg(ruling->second)
+            : tr("Ruling %1 removed: its two strips are one strip, up to %2 from where they "
+                 "were; Tools ▸ Solve makes it developable again if it is not.")
+                  .arg(ruling->second)
+                  .arg(DistanceReportDialog::millimetres(moved)));
 }
 
 RefineCurvesReaction::RefineCurvesReaction(QAction* action, Workspace* workspace)

@@ -65,6 +65,19 @@ private:
     views::SceneView* m_preview;
 };
 
+// Tools ▸ Remove Ruling: the selected ruling between two strips removed, the strips merged into
+// one (document::MergeStripsCommand); the status bar says how far the merged strip lies from
+// the two it replaces, measured on dense samples of theirs.
+class RemoveRulingReaction : public Reaction {
+    Q_OBJECT
+public:
+    RemoveRulingReaction(QAction* action, Workspace* workspace);
+
+protected:
+    void onTriggered() override;
+    void updateEnableState() override;
+};
+
 // Tools ▸ Refine Curves: doubles the intervals of the selected curve's spline class.
 class RefineCurvesReaction : public Reaction {
     Q_OBJECT
