@@ -4,8 +4,9 @@
 // the surfaces side by side in one (model::placeSideBySide); per two of its parts the boundary
 // curves that face each other (model::nearestBoundaryCurves) paired by the linearised "on the
 // other's tangent line" condition (JobRequest::curvePairs), pulled towards the reference shape
-// at the same time where the request gives one; then welded (model::weldEdges) and the result
-// solved as one surface. Tools ▸ Join Surfaces and `devsurf-cli approximate --join` run it.
+// at the same time where the request gives one; then welded (model::weldEdges), and the result
+// pulled towards the reference once more as one surface (an Approximate job), or solved where
+// there is none. Tools ▸ Join Surfaces and `devsurf-cli approximate --join` run it.
 
 #include "model/composite_surface.h"
 #include "solver/session/solve_job.h"
@@ -38,8 +39,9 @@ JoinedSurface weldPairs(const model::CompositeSurface& surface,
 
 // The Join job (SolveJob::run with JobKind::Join): needs at least two surfaces in the request.
 // Fewer, or none facing another: ok, the surfaces unchanged and JoinReport::separations empty.
-// The pairing runs request.iterations (unset: kApproximationIterations), the final Solve
-// until converged; the outcome's assessment is the Solve's. Cancel and failures as any job.
+// The pairing and the last pull run request.iterations (unset: kApproximationIterations), a
+// last Solve until converged; the outcome's assessment is the last step's. Cancel and failures
+// as any job.
 JobOutcome runJoinJob(SolveJob& job, const JobRequest& request, const std::atomic<bool>* cancel,
                       const JobProgressFn& progress);
 

@@ -5,6 +5,7 @@
 
 #include "model/bspline_curve.h"
 #include "model/math_constants.h"
+#include "model/reference/distance_report.h"
 #include "model/reference/initial_strip.h"
 #include "model/strip.h"
 #include "model/strip_joining.h"
@@ -235,6 +236,41 @@ private slots:
         QCOMPARE(sharedEdges(joined, false), 1);
         QCOMPARE(sharedCurves(joined), 0);
         QVERIFY(test::sampledDevelopability(joined) <= 1e-8);
+    }
+
+    void fourStripsOnACylinderBecomeOneWatertightSurface() {
+        // The automatic path's --join on a cylinder patch 209 mm around and 240 mm high: four
+        // k-means strips, a 2 × 2 grid, welded along two curves and two rulings into one part,
+        // then pulled onto the cylinder again as one surface.
+        const std::vector<Vec3> points = cylinderPatch(0, 240, 60, 48);
+        const solver::ThinnedTarget thinned = solver::thinTarget(points, 0.0);
+        const std::vector<model::CompositeSurface> strips = solver::initialStrips(thinned, 4, 4);
+        QCOMPARE(strips.size(), std::size_t(4));
+        solver::SolveJob job;
+        const solver::JobOutcome fitted = job.run(solver::approximationRequest(
+            strips, solver::assignToSurfaces(strips, thinned.thinned), thinned.rho, std::nullopt));
+        QVERIFY(fitted.ok);
+        solver::JobRequest request;
+        request.kind = solver::JobKind::Join;
+        request.surfaces = fitted.surfaces;
+        request.joinTarget =
+            std::make_shared<const model::reference::ThinningResult>(thinned.thinned);
+        request.joinRho = thinned.rho;
+        const solver::JobOutcome outcome = job.run(request);
+        QVERIFY(outcome.ok);
+        QCOMPARE(outcome.join->welded, 4);
+        QCOMPARE(outcome.join->parts, 1);
+        const model::CompositeSurface& joined = outcome.surfaces.front();
+        QVERIFY(joined.validate().empty());
+        QCOMPARE(sharedEdges(joined, true), 2);
+        QCOMPARE(sharedEdges(joined, false), 2);
+        QVERIFY(test::sampledDevelopability(joined) <= 1e-8);
+        // Every point of the patch near the joined surface (measured here by dense sampling).
+        const auto report = model::reference::measureDistance(joined, points);
+        qInfo("four strips joined: target to surface mean %.3g mm, max %.3g mm; %.0f ms",
+              report.targetToSurface.mean, report.targetToSurface.max, outcome.elapsedMs);
+        QVERIFY(report.targetToSurface.mean <= 0.1);
+        QVERIFY(report.targetToSurface.max <= 2.0);
     }
 
     void twoHalvesOfACylinderBecomeOneComposite() {
