@@ -2205,42 +2205,52 @@
 <context>
     <name>devsurf::app::JoinReaction</name>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="38"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="43"/>
         <source>Join Surfaces</source>
         <translation>Flächen verbinden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="78"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="83"/>
         <source>Join surfaces into one composite: wait until the solver has finished, or cancel it (Esc).</source>
         <translation>Flächen zu einer zusammengesetzten Fläche verbinden: warten, bis der Löser fertig ist, oder ihn abbrechen (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="105"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="110"/>
         <source>Preparing the join: thinning the reference shapes…</source>
         <translation>Verbinden wird vorbereitet: Referenzformen ausdünnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="127"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="144"/>
         <source>Join cancelled; the design is unchanged.</source>
         <translation>Verbinden abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="131"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="148"/>
         <source>Join discarded: the design changed meanwhile; it is unchanged.</source>
         <translation>Verbinden verworfen: der Entwurf hat sich inzwischen geändert; er ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="76"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="81"/>
         <source>Join surfaces into one composite where their boundary edges face each other: the design needs at least two surfaces.</source>
         <translation>Flächen zu einer zusammengesetzten Fläche verbinden, wo ihre Randkanten einander gegenüberliegen: der Entwurf braucht mindestens zwei Flächen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="80"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="85"/>
         <source>Join the selected surfaces (all when fewer than two are selected) into one composite: boundary curves or rulings that face each other become shared edges and the result is solved; one undo step.</source>
         <translation>Die ausgewählten Flächen (alle, wenn weniger als zwei ausgewählt sind) zu einer zusammengesetzten Fläche verbinden: einander gegenüberliegende Randkurven oder Erzeugende werden gemeinsame Kanten, und das Ergebnis wird gelöst; ein Rückgängig-Schritt.</translation>
     </message>
+    <message>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="137"/>
+        <source>The reference shapes could not be thinned for the join (%1); nothing was joined.</source>
+        <translation>Die Referenzformen konnten für das Verbinden nicht ausgedünnt werden (%1); nichts wurde verbunden.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="139"/>
+        <source>Cannot join the surfaces</source>
+        <translation>Die Flächen können nicht verbunden werden</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="161"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="178"/>
         <source>No two of the %n surface(s) have boundary edges facing each other (within %1 % of their length); nothing was joined.</source>
         <translation>
             <numerusform>Die %n Fläche hat keine Randkanten, die einer anderen gegenüberliegen (innerhalb von %1 % ihrer Länge); nichts wurde verbunden.</numerusform>
@@ -2248,12 +2258,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="174"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="191"/>
         <source>%1 failed: %2 The design is unchanged.</source>
         <translation>%1 fehlgeschlagen: %2 Der Entwurf ist unverändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="183"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="200"/>
         <source>Joined %n surface(s) into one: </source>
         <translation>
             <numerusform>%n Fläche zu einer verbunden: </numerusform>
@@ -2261,7 +2271,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="184"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="201"/>
         <source>%1 of %n pair(s) of facing edges welded</source>
         <translation>
             <numerusform>%1 von %n Paar gegenüberliegender Kanten verschweißt</numerusform>
@@ -2269,7 +2279,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="185"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="202"/>
         <source>, %n part(s) not connected</source>
         <translation>
             <numerusform>, %n Teil nicht verbunden</numerusform>
@@ -2277,22 +2287,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="188"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="205"/>
         <source>largest constraint residual %1, within the tolerance.</source>
         <translation>größtes Bedingungsresiduum %1, innerhalb der Toleranz.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="189"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="206"/>
         <source>largest constraint residual %1, not within the tolerance (Tools ▸ Solve may help).</source>
         <translation>größtes Bedingungsresiduum %1, nicht innerhalb der Toleranz (Werkzeuge ▸ Lösen kann helfen).</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="193"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="210"/>
         <source>Not welded: %1</source>
         <translation>Nicht verschweißt: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="197"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="214"/>
         <source>The surfaces were held to the reference shape meanwhile.</source>
         <translation>Die Flächen wurden dabei an der Referenzform gehalten.</translation>
     </message>

@@ -221,7 +221,7 @@
 <context>
     <name>devsurf::app::JoinReaction</name>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="161"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="178"/>
         <source>No two of the %n surface(s) have boundary edges facing each other (within %1 % of their length); nothing was joined.</source>
         <translation>
             <numerusform>The %n surface has no boundary edges facing another (within %1 % of their length); nothing was joined.</numerusform>
@@ -229,7 +229,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="183"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="200"/>
         <source>Joined %n surface(s) into one: </source>
         <translation>
             <numerusform>Joined %n surface into one: </numerusform>
@@ -237,7 +237,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="184"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="201"/>
         <source>%1 of %n pair(s) of facing edges welded</source>
         <translation>
             <numerusform>%1 of %n pair of facing edges welded</numerusform>
@@ -245,7 +245,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="185"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="202"/>
         <source>, %n part(s) not connected</source>
         <translation>
             <numerusform>, %n part not connected</numerusform>

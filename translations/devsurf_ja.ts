@@ -2182,90 +2182,100 @@
 <context>
     <name>devsurf::app::JoinReaction</name>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="38"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="43"/>
         <source>Join Surfaces</source>
         <translation>サーフェスを結合</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="78"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="83"/>
         <source>Join surfaces into one composite: wait until the solver has finished, or cancel it (Esc).</source>
         <translation>サーフェスを 1 つの複合サーフェスに結合します: ソルバーの終了を待つか、中止してください (Esc)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="105"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="110"/>
         <source>Preparing the join: thinning the reference shapes…</source>
         <translation>結合を準備中: 参照形状を間引いています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="127"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="144"/>
         <source>Join cancelled; the design is unchanged.</source>
         <translation>結合を中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="131"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="148"/>
         <source>Join discarded: the design changed meanwhile; it is unchanged.</source>
         <translation>結合を破棄しました: その間にデザインが変更されました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="76"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="81"/>
         <source>Join surfaces into one composite where their boundary edges face each other: the design needs at least two surfaces.</source>
         <translation>境界エッジが向かい合う箇所でサーフェスを 1 つの複合サーフェスに結合します: デザインに 2 つ以上のサーフェスが必要です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="80"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="85"/>
         <source>Join the selected surfaces (all when fewer than two are selected) into one composite: boundary curves or rulings that face each other become shared edges and the result is solved; one undo step.</source>
         <translation>選択したサーフェス (選択が 2 つ未満ならすべて) を 1 つの複合サーフェスに結合します: 向かい合う境界曲線または母線が共有エッジになり、結果がソルブされます。元に戻す 1 ステップです。</translation>
     </message>
+    <message>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="137"/>
+        <source>The reference shapes could not be thinned for the join (%1); nothing was joined.</source>
+        <translation>結合のために参照形状を間引けませんでした (%1)。何も結合されませんでした。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="139"/>
+        <source>Cannot join the surfaces</source>
+        <translation>サーフェスを結合できません</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="161"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="178"/>
         <source>No two of the %n surface(s) have boundary edges facing each other (within %1 % of their length); nothing was joined.</source>
         <translation>
             <numerusform>%n 個のサーフェスには互いに向かい合う境界エッジがありません (長さの %1 % 以内)。何も結合されませんでした。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="174"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="191"/>
         <source>%1 failed: %2 The design is unchanged.</source>
         <translation>%1 に失敗しました: %2 デザインは変更されていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="183"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="200"/>
         <source>Joined %n surface(s) into one: </source>
         <translation>
             <numerusform>%n 個のサーフェスを 1 つに結合しました: </numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="184"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="201"/>
         <source>%1 of %n pair(s) of facing edges welded</source>
         <translation>
             <numerusform>向かい合うエッジ %n 組のうち %1 組を溶接</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="185"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="202"/>
         <source>, %n part(s) not connected</source>
         <translation>
             <numerusform>、%n 個の部分は未接続</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="188"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="205"/>
         <source>largest constraint residual %1, within the tolerance.</source>
         <translation>最大の制約残差 %1、許容範囲内。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="189"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="206"/>
         <source>largest constraint residual %1, not within the tolerance (Tools ▸ Solve may help).</source>
         <translation>最大の制約残差 %1、許容範囲外 (ツール ▸ ソルブが役立つ場合があります)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="193"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="210"/>
         <source>Not welded: %1</source>
         <translation>溶接されていません: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="197"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="214"/>
         <source>The surfaces were held to the reference shape meanwhile.</source>
         <translation>その間、サーフェスは参照形状に保持されました。</translation>
     </message>

@@ -2,11 +2,12 @@
 
 // Joining surfaces into one composite (§4.2, "Composite"), as the solve job's JobKind::Join:
 // the surfaces side by side in one (model::placeSideBySide); per two of its parts the boundary
-// curves that face each other (model::nearestBoundaryCurves) paired by the linearised "on the
-// other's tangent line" condition (JobRequest::curvePairs), pulled towards the reference shape
-// at the same time where the request gives one; then welded (model::weldEdges), and the result
-// pulled towards the reference once more as one surface (an Approximate job), or solved where
-// there is none. Tools ▸ Join Surfaces and `devsurf-cli approximate --join` run it.
+// edges that face each other, two curves or two rulings (model::nearestBoundaryCurves), paired
+// by the linearised "on the other's tangent line" condition (JobRequest::curvePairs) and pulled
+// towards the reference shape at the same time where the request gives one; then welded
+// (model::weldEdges), and the result pulled towards the reference once more as one surface (an
+// Approximate job), or solved where there is none. Tools ▸ Join Surfaces and `devsurf-cli
+// approximate --join` run it.
 
 #include "model/composite_surface.h"
 #include "solver/session/solve_job.h"
@@ -16,12 +17,12 @@
 
 namespace devsurf::solver {
 
-// Facing curves are paired when their separation is at most this fraction of their length.
+// Facing edges are paired when their separation is at most this fraction of their length.
 inline constexpr double kJoinReach = 0.2;
 
 struct JoinPlan {
     model::CompositeSurface surface; // every surface, side by side
-    std::vector<CurvePair> pairs;    // nearest first; each curve in one pair at most
+    std::vector<CurvePair> pairs;    // nearest first; each edge in one pair at most
     std::vector<double> separations; // per pair (mm), before the pairing
 };
 // Requires at least one surface. Parts that face no other part within kJoinReach stay apart.
@@ -29,7 +30,7 @@ JoinPlan planJoin(const std::vector<model::CompositeSurface>& surfaces);
 
 struct JoinedSurface {
     model::CompositeSurface surface;
-    int welded = 0;                      // pairs welded into shared curves
+    int welded = 0;                      // pairs welded into shared edges
     double largestGap = 0.0;             // over the welded pairs (model::Weld::gap, mm)
     std::vector<model::Problem> refused; // why the other pairs were not
 };
@@ -39,9 +40,10 @@ JoinedSurface weldPairs(const model::CompositeSurface& surface,
 
 // The Join job (SolveJob::run with JobKind::Join): needs at least two surfaces in the request.
 // Fewer, or none facing another: ok, the surfaces unchanged and JoinReport::separations empty.
-// The pairing and the last pull run request.iterations (unset: kApproximationIterations), a
-// last Solve until converged; the outcome's assessment is the last step's. Cancel and failures
-// as any job.
+// Both steps, the pairing and the last one, run request.iterations (unset:
+// kApproximationIterations); a step pulls towards joinTarget where at least kFewestTargetPoints
+// of its points lie nearest the surface, else it is a Solve. The outcome's assessment is the
+// last step's. Cancel and failures as any job.
 JobOutcome runJoinJob(SolveJob& job, const JobRequest& request, const std::atomic<bool>* cancel,
                       const JobProgressFn& progress);
 

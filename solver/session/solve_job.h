@@ -65,8 +65,8 @@ struct JobRequest {
     // (FormulationOptions::curvePairs), to be welded afterwards (model::weldEdges).
     std::map<int, std::vector<CurvePair>> curvePairs;
     // Join: the thinned reference points that the joined surface is pulled towards while its
-    // facing curves are paired, and the radius they were thinned with; none: the pairing runs
-    // as a Solve, with nothing but the surfaces' own conditions besides it.
+    // facing edges are paired and once more after the weld, and the radius they were thinned
+    // with; none: the pairing and the last step run as Solves.
     std::shared_ptr<const model::reference::ThinningResult> joinTarget;
     double joinRho = 0.0;
 };
@@ -196,15 +196,16 @@ struct JobFailure {
     std::string detail;                     // a technical note for a bug report, not for the user
 };
 
-// What a Join did (join_job.h): the facing curves it paired and which of them it welded.
+// What a Join did (join_job.h): the facing boundary edges (two curves or two rulings) it
+// paired and which pairs it welded.
 struct JoinReport {
     int surfaces = 0;                    // the request's surfaces, now parts of one surface
-    std::vector<double> separations;     // per pair of facing curves, mm apart before the pairing
+    std::vector<double> separations;     // per pair of facing edges, mm apart before the pairing
     double largestGap = 0.0;             // mm apart after the pairing, over the pairs welded
-    int welded = 0;                      // pairs now one shared curve
+    int welded = 0;                      // pairs now one shared edge
     std::vector<model::Problem> refused; // why the other pairs were not welded
     int parts = 0;                       // connected parts of the joined surface
-    bool pulledToReference = false;      // the pairing also pulled towards joinTarget
+    bool pulledToReference = false;      // pulled towards joinTarget, not solved alone
 };
 
 struct JobOutcome {

@@ -17,18 +17,23 @@
 #include <QLocale>
 #include <QUndoCommand>
 
+#include <optional>
 #include <set>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace devsurf::app {
 
-// One join, shared with the thinning thread, which writes only `target` and `rho`.
+// One join, shared with the thinning thread, which writes only `target`, `rho` and
+// `thinningFailure`.
 struct JoinReaction::Run {
     quint64 revision = 0;            // of the design the join started from
     std::vector<int> indices;        // the surfaces joined, ascending
     std::vector<model::Vec3> points; // every reference shape's points (none: pairing alone)
     std::shared_ptr<const model::reference::ThinningResult> target;
     double rho = 0.0;
+    std::optional<std::string> thinningFailure; // thinning threw: why
     quint64 ticket = 0;
 };
 
@@ -105,14 +110,18 @@ void JoinReaction::onTriggered() {
         workspace()->window(), tr("Preparing the join: thinning the reference shapes…"),
         joinTitle(), QStringLiteral("joinThinningProgress"),
         [run](const BackgroundRead::Progress& progress) {
-            const solver::ThinnedTarget thinned =
-                solver::thinTarget(run->points, 0.0, [&](std::size_t done, std::size_t total) {
-                    return progress(total > 0 ? static_cast<double>(done) / total : 0.0);
-                });
-            if (!thinned.thinned.cancelled) {
-                run->target =
-                    std::make_shared<const model::reference::ThinningResult>(thinned.thinned);
-                run->rho = thinned.rho;
+            try {
+                const solver::ThinnedTarget thinned =
+                    solver::thinTarget(run->points, 0.0, [&](std::size_t done, std::size_t total) {
+                        return progress(total > 0 ? static_cast<double>(done) / total : 0.0);
+                    });
+                if (!thinned.thinned.cancelled) {
+                    run->target =
+                        std::make_shared<const model::reference::ThinningResult>(thinned.thinned);
+                    run->rho = thinned.rho;
+                }
+            } catch (const std::exception& e) {
+                run->thinningFailure = e.what(); // the model's own words
             }
         },
         this);
@@ -120,10 +129,18 @@ void JoinReaction::onTriggered() {
 }
 
 void JoinReaction::onThinned() {
-    const bool cancelled = m_thinning->wasCancelled() || !m_run->target;
+    const bool cancelled = m_thinning->wasCancelled();
     m_thinning->deleteLater();
     m_thinning = nullptr;
-    if (cancelled) {
+    if (m_run->thinningFailure) {
+        const QString sentence =
+            tr("The reference shapes could not be thinned for the join (%1); nothing was joined.")
+                .arg(QString::fromStdString(*m_run->thinningFailure));
+        workspace()->showError(tr("Cannot join the surfaces"), sentence);
+        end(false, sentence);
+        return;
+    }
+    if (cancelled || !m_run->target) {
         end(false, tr("Join cancelled; the design is unchanged."));
         return;
     }
