@@ -5,6 +5,7 @@
 #include "io/output_file.h"
 #include "io/project_file.h"
 #include "io/reference/reference_import.h"
+#include "join_command.h"
 #include "model/reference/distance_report.h"
 #include "model/strip_joining.h"
 #include "outcome_text.h"
@@ -12,7 +13,6 @@
 #include "reference_commands.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/session/approximation_setup.h"
-#include "solver/session/join_job.h"
 #include "solver/session/solve_job.h"
 
 #include <QString>
@@ -26,19 +26,8 @@ namespace devsurf::app {
 
 namespace {
 
-void printIteration(const solver::JobProgress& step) {
-    const solver::IterationStats& it = *step.stats;
-    char line[256];
-    std::snprintf(line, sizeof line,
-                  "iteration %3d  residual %.3e  assembly %.3f ms  factorisation %.3f ms  "
-                  "solve %.3f ms\n",
-                  step.done, it.maxConstraintResidual, it.assemblyMs, it.factorizationMs,
-                  it.solveMs);
-    std::cout << line;
-}
-
-// --join (§4.2, "Composite"): the strips joined into one surface by the Join job, their facing
-// curves paired while the surface is pulled towards the thinned target.
+// --join (§4.2, "Composite"): the strips joined into one surface by the Join job, pulled
+// towards the thinned target.
 std::vector<model::CompositeSurface>
 joinStrips(const std::vector<model::CompositeSurface>& surfaces,
            const model::reference::ThinningResult& thinned, double rho,
@@ -47,53 +36,10 @@ joinStrips(const std::vector<model::CompositeSurface>& surfaces,
         std::cout << "Join: a single surface, nothing to join.\n";
         return surfaces;
     }
-    solver::JobRequest request;
-    request.kind = solver::JobKind::Join;
-    request.surfaces = surfaces;
-    request.iterations = iterations;
-    request.joinTarget = std::make_shared<const model::reference::ThinningResult>(thinned);
-    request.joinRho = rho;
-    // The pairing, then the Solve of the joined surface: each starts its iterations at 1.
-    int stage = 0;
-    const auto progress = [&stage](const solver::JobProgress& step) {
-        if (step.done == 1) {
-            std::cout << (++stage == 1 ? "Join: pairing the facing edges, "
-                                       : "Join: solving the joined surface, ")
-                      << step.variables << " variables, " << step.rows << " rows\n";
-        }
-        printIteration(step);
-    };
-    const solver::JobOutcome outcome = job.run(request, nullptr, progress);
-    if (!outcome.ok) {
-        throw InputError("the solver stopped while joining the strips (" +
-                         describeFailure(outcome.failure) + "); nothing was written.");
-    }
-    const solver::JoinReport& join = *outcome.join;
-    if (join.separations.empty()) {
-        std::cout << "Join: no two strips have boundary edges facing each other (within "
-                  << solver::kJoinReach * 100.0 << " % of their length); left separate.\n";
-        return surfaces;
-    }
-    for (std::size_t p = 0; p < join.separations.size(); ++p) {
-        std::cout << "Join: pair " << p + 1 << " of facing edges " << join.separations[p]
-                  << " mm apart\n";
-    }
-    for (const model::Problem& problem : join.refused) {
-        std::cout << "Join: not welded: " << ProblemText::of(problem).toStdString() << "\n";
-    }
-    const model::CompositeSurface& result = outcome.surfaces.front();
-    const solver::SurfaceAssessment& a = outcome.assessments.front();
-    char line[256];
-    std::snprintf(line, sizeof line,
-                  "Join: %d of %zu pairs of facing edges welded; one surface of %d part(s), %zu "
-                  "patches; solved in %d iterations, largest residual %.2e (%s the tolerance); "
-                  "developability sampled: max %.2e\n",
-                  join.welded, join.separations.size(), join.parts, result.faces().size(),
-                  a.summary.iterationsCompleted, a.summary.finalMaxConstraintResidual,
-                  a.summary.toleranceReached ? "within" : "NOT within",
-                  solver::measureQuality(result).developabilityMax);
-    std::cout << line;
-    return {result};
+    const std::optional<model::CompositeSurface> joined =
+        joinSurfaces(surfaces, std::make_shared<const model::reference::ThinningResult>(thinned),
+                     rho, iterations, job);
+    return joined ? std::vector<model::CompositeSurface>{*joined} : surfaces;
 }
 
 } // namespace
@@ -174,7 +120,7 @@ int runApproximateCommand(const SubcommandArguments& args) {
                       << "): " << targets.points[s].size() << " target points, " << step.variables
                       << " variables, " << step.rows << " rows\n";
         }
-        printIteration(step);
+        printIterationLine(step);
     };
     solver::SolveJob job;
     const solver::JobOutcome outcome = job.run(request, nullptr, progress);

@@ -16,6 +16,7 @@
 #include "io/file_error.h"
 #include "io/interchange_json.h"
 #include "io/project_file.h"
+#include "join_command.h"
 #include "model/examples.h"
 #include "model/model_error.h"
 #include "model/surface_statistics.h"
@@ -265,7 +266,8 @@ int run(const std::vector<std::string>& args) {
         {"fit-edge", runFitEdgeCommand},
         {"import-reference", runImportReferenceCommand},
         {"distance", runDistanceCommand},
-        {"approximate", runApproximateCommand}};
+        {"approximate", runApproximateCommand},
+        {"join", runJoinCommand}};
     for (const auto& [name, runner] : runners) {
         if (command == name) {
             return runner(parsed);

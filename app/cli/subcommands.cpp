@@ -238,7 +238,20 @@ const std::vector<SubcommandSpec>& subcommands() {
           {"intervals", "N", "Spline intervals of each flat strip (default 4)."},
           {"iterations", "N", "Iterations of the pull (default 30)."},
           {"rho", "R", "The thinning radius in mm."},
-          {"join", "", "Join strips whose curves face each other into one surface."},
+          {"join", "", "Join strips whose edges face each other into one surface."},
+          kOutputProject}},
+        {"join",
+         "join FILE [--surfaces IDS] [--iterations N] -o OUT.devsurf",
+         "Join surfaces into one composite, as approximate --join and the\n"
+         "application's Tools > Join Surfaces do: where a boundary curve or\n"
+         "ruling of one faces one of another (ends and middles apart by at\n"
+         "most 20 % of their length), the two are pulled onto each other and\n"
+         "welded into one shared edge; the result is pulled towards the\n"
+         "project's reference shapes where it has them, else solved. The\n"
+         "joined surface takes the first one's place. Exits 2 and writes\n"
+         "nothing when no two surfaces face each other.",
+         {{"surfaces", "IDS", "The surfaces to join, such as 1,3 (default: all)."},
+          {"iterations", "N", "Iterations of each step (default 30)."},
           kOutputProject}},
         {"fit-edge",
          "fit-edge FILE --edge E [--curve K] [--surface K] -o OUT.devsurf",

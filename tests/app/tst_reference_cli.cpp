@@ -1,6 +1,8 @@
 #include "cli_run.h"
 #include "io/project_file.h"
 #include "model/reference/distance_report.h"
+#include "model/strip_joining.h"
+#include "sampled_developability.h"
 #include "test_registry.h"
 
 #include <QFile>
@@ -244,6 +246,50 @@ private slots:
         QVERIFY2(report.targetToSurface.max < 0.5,
                  qPrintable(QString::number(report.targetToSurface.max)));
         QVERIFY(test::runCli({"approximate", "--help"}).out.contains("--join"));
+    }
+
+    void joinCommandMakesFourStripsOneSurface() {
+        // `join` on a project of four strips fitted to the cylinder (a 2 × 2 grid): one
+        // watertight surface, pulled to the project's reference shape, which the test measures.
+        const std::vector<model::Vec3> points = circularCylinder();
+        QVERIFY(writeFile(path("circular.xyz"), xyz(points)));
+        test::CliRun run = test::runCli(
+            {"approximate", path("circular.xyz"), "--strips", "4", "-o", path("four.devsurf")});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        run = test::runCli({"join", path("four.devsurf"), "-o", path("joined.devsurf")});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        QVERIFY2(run.out.contains("4 of 4 pairs of facing edges welded; one surface of 1 part(s)"),
+                 qPrintable(run.out));
+        const model::Project project = io::loadProjectFile(path("joined.devsurf"));
+        QCOMPARE(project.surfaces.size(), std::size_t(1));
+        QCOMPARE(project.referenceShapes.size(), std::size_t(1));
+        const model::CompositeSurface& joined = project.surfaces.front();
+        QVERIFY(joined.validate().empty());
+        QCOMPARE(model::surfaceParts(joined).size(), std::size_t(1));
+        int shared = 0;
+        for (const auto& [id, record] : joined.edges()) {
+            shared += joined.facesOfEdge(id).size() == 2 ? 1 : 0;
+        }
+        QCOMPARE(shared, 4);
+        QVERIFY(test::sampledDevelopability(joined) <= 1e-8);
+        const auto report = model::reference::measureDistance(project.surfaces, points);
+        QVERIFY2(report.targetToSurface.mean < 0.1,
+                 qPrintable(QString::number(report.targetToSurface.mean)));
+
+        // Refused: one surface chosen, a surface number 0, a project of one surface (nothing
+        // written).
+        QCOMPARE(
+            test::runCli({"join", path("four.devsurf"), "--surfaces", "2", "-o", path("x.devsurf")})
+                .exitCode,
+            2);
+        QCOMPARE(test::runCli(
+                     {"join", path("four.devsurf"), "--surfaces", "0,1", "-o", path("x.devsurf")})
+                     .exitCode,
+                 1);
+        QCOMPARE(test::runCli({"join", path("joined.devsurf"), "-o", path("x.devsurf")}).exitCode,
+                 2);
+        QVERIFY(!QFileInfo::exists(path("x.devsurf")));
+        QVERIFY(test::runCli({"join", "--help"}).out.contains("--surfaces"));
     }
 
     void approximateRefusesBadInput() {
