@@ -127,6 +127,26 @@ double jacobianErrorAtRandom(const solver::SurfaceFormulation& f, const solver::
                                           solver::testing::finiteDifferenceJacobian(term, x, 1e-6));
 }
 
+// The command line's approximate --strips K --join: K k-means strips fitted to `points`, then
+// joined by the Join job with every thinned point as its target. Not ok (and no join report)
+// when K strips were not laid or the fit failed.
+solver::JobOutcome fitAndJoin(const std::vector<Vec3>& points, int count) {
+    const solver::ThinnedTarget thinned = solver::thinTarget(points, 0.0);
+    const std::vector<model::CompositeSurface> strips = solver::initialStrips(thinned, count, 4);
+    solver::SolveJob job;
+    const solver::JobOutcome fitted = job.run(solver::approximationRequest(
+        strips, solver::assignToSurfaces(strips, thinned.thinned), thinned.rho, std::nullopt));
+    if (strips.size() != static_cast<std::size_t>(count) || !fitted.ok) {
+        return {};
+    }
+    solver::JobRequest request;
+    request.kind = solver::JobKind::Join;
+    request.surfaces = fitted.surfaces;
+    request.joinTarget = std::make_shared<const model::reference::ThinningResult>(thinned.thinned);
+    request.joinRho = thinned.rho;
+    return job.run(request);
+}
+
 // Edges that two faces share: spline edges (curves), or rulings.
 int sharedEdges(const model::CompositeSurface& surface, bool splines) {
     int count = 0;
@@ -243,20 +263,7 @@ private slots:
         // k-means strips, a 2 × 2 grid, welded along two curves and two rulings into one part,
         // then pulled onto the cylinder again as one surface.
         const std::vector<Vec3> points = cylinderPatch(0, 240, 60, 48);
-        const solver::ThinnedTarget thinned = solver::thinTarget(points, 0.0);
-        const std::vector<model::CompositeSurface> strips = solver::initialStrips(thinned, 4, 4);
-        QCOMPARE(strips.size(), std::size_t(4));
-        solver::SolveJob job;
-        const solver::JobOutcome fitted = job.run(solver::approximationRequest(
-            strips, solver::assignToSurfaces(strips, thinned.thinned), thinned.rho, std::nullopt));
-        QVERIFY(fitted.ok);
-        solver::JobRequest request;
-        request.kind = solver::JobKind::Join;
-        request.surfaces = fitted.surfaces;
-        request.joinTarget =
-            std::make_shared<const model::reference::ThinningResult>(thinned.thinned);
-        request.joinRho = thinned.rho;
-        const solver::JobOutcome outcome = job.run(request);
+        const solver::JobOutcome outcome = fitAndJoin(points, 4);
         QVERIFY(outcome.ok);
         QCOMPARE(outcome.join->welded, 4);
         QCOMPARE(outcome.join->parts, 1);
@@ -461,20 +468,7 @@ private slots:
         // 160 mm high, so split around it, joined by the Join job (along their facing rulings)
         // with every point as its target.
         const std::vector<Vec3> points = cylinderPatch(0, 160, 60, 48);
-        const solver::ThinnedTarget thinned = solver::thinTarget(points, 0.0);
-        const std::vector<model::CompositeSurface> strips = solver::initialStrips(thinned, 2, 4);
-        QCOMPARE(strips.size(), std::size_t(2));
-        solver::SolveJob job;
-        const solver::JobOutcome fitted = job.run(solver::approximationRequest(
-            strips, solver::assignToSurfaces(strips, thinned.thinned), thinned.rho, std::nullopt));
-        QVERIFY(fitted.ok);
-        solver::JobRequest request;
-        request.kind = solver::JobKind::Join;
-        request.surfaces = fitted.surfaces;
-        request.joinTarget =
-            std::make_shared<const model::reference::ThinningResult>(thinned.thinned);
-        request.joinRho = thinned.rho;
-        const solver::JobOutcome outcome = job.run(request);
+        const solver::JobOutcome outcome = fitAndJoin(points, 2);
         QVERIFY(outcome.ok);
         QVERIFY(outcome.join->pulledToReference);
         QCOMPARE(outcome.join->welded, 1);
