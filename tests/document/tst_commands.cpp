@@ -1,7 +1,6 @@
 #include "document_test_support.h"
 #include "model/document/commands/apply_surface_command.h"
 #include "model/document/commands/crease_condition_command.h"
-#include "model/document/commands/join_surfaces_command.h"
 #include "model/document/commands/move_vertices_command.h"
 #include "model/document/commands/pin_vertices_command.h"
 #include "model/document/commands/reference_curves_command.h"
@@ -14,7 +13,6 @@
 #include "model/document/selection.h"
 #include "model/examples.h"
 #include "model/strip.h"
-#include "model/strip_joining.h"
 #include "model/topology_edits.h"
 #include "test_registry.h"
 
@@ -569,39 +567,6 @@ private slots:
         QVERIFY(doc.project() == both);
         doc.undoStack()->redo();
         QVERIFY(doc.project().referenceShapes.empty());
-    }
-
-    void joiningSurfacesReplacesThemByOne() {
-        // Three surfaces; the first and the third joined (as the Join job returns them: one
-        // surface of their parts side by side), the second stays where it is.
-        Document doc;
-        Project project;
-        for (const char* name : {"sheet", "annulus", "mixed"}) {
-            project.addSurface(makeExample(name).surfaces.front());
-        }
-        doc.resetProject(project);
-        const CompositeSurface joined =
-            devsurf::model::placeSideBySide(doc.surface(0), doc.surface(2)).surface;
-        QVERIFY(joined.validate().empty());
-        const devsurf::model::SurfaceId firstId = doc.surface(0).id();
-        const Project original = doc.project();
-
-        // Refusals change nothing: fewer than two, twice the same, out of range, not valid.
-        QVERIFY(JoinSurfacesCommand::create(doc, {0}, joined, "join").isRefused());
-        QVERIFY(JoinSurfacesCommand::create(doc, {2, 2}, joined, "join").isRefused());
-        QVERIFY(JoinSurfacesCommand::create(doc, {0, 3}, joined, "join").isRefused());
-        QVERIFY(JoinSurfacesCommand::create(doc, {-1, 0}, joined, "join").isRefused());
-        QVERIFY(JoinSurfacesCommand::create(doc, {0, 2}, CompositeSurface(), "join").isRefused());
-        QVERIFY(doc.project() == original);
-
-        redoUndoRedo(doc, JoinSurfacesCommand::create(doc, {2, 0}, joined, "join"), "join");
-        QCOMPARE(doc.surfaceCount(), 2);
-        QCOMPARE(doc.surface(0).name(), joined.name());
-        QCOMPARE(doc.surface(0).id(), firstId);
-        QCOMPARE(doc.surface(0).faces().size(), joined.faces().size());
-        QVERIFY(doc.surface(1) == original.surfaces[1]);
-        doc.undoStack()->undo();
-        QVERIFY(doc.project() == original);
     }
 };
 
