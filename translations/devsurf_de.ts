@@ -2258,12 +2258,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="191"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="196"/>
         <source>%1 failed: %2 The design is unchanged.</source>
         <translation>%1 fehlgeschlagen: %2 Der Entwurf ist unverändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="200"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="205"/>
         <source>Joined %n surface(s) into one: </source>
         <translation>
             <numerusform>%n Fläche zu einer verbunden: </numerusform>
@@ -2271,7 +2271,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="201"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="206"/>
         <source>%1 of %n pair(s) of facing edges welded</source>
         <translation>
             <numerusform>%1 von %n Paar gegenüberliegender Kanten verschweißt</numerusform>
@@ -2279,7 +2279,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="202"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="207"/>
         <source>, %n part(s) not connected</source>
         <translation>
             <numerusform>, %n Teil nicht verbunden</numerusform>
@@ -2287,22 +2287,30 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="205"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="210"/>
         <source>largest constraint residual %1, within the tolerance.</source>
         <translation>größtes Bedingungsresiduum %1, innerhalb der Toleranz.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="206"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="211"/>
         <source>largest constraint residual %1, not within the tolerance (Tools ▸ Solve may help).</source>
         <translation>größtes Bedingungsresiduum %1, nicht innerhalb der Toleranz (Werkzeuge ▸ Lösen kann helfen).</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="210"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="215"/>
         <source>Not welded: %1</source>
         <translation>Nicht verschweißt: %1</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="219"/>
+        <source>%n surface(s) facing no other were left as they are.</source>
+        <translation>
+            <numerusform>%n Fläche, die keiner anderen gegenüberliegt, blieb unverändert.</numerusform>
+            <numerusform>%n Flächen, die keiner anderen gegenüberliegen, blieben unverändert.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="214"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="224"/>
         <source>The surfaces were held to the reference shape meanwhile.</source>
         <translation>Die Flächen wurden dabei an der Referenzform gehalten.</translation>
     </message>

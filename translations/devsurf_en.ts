@@ -229,7 +229,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="200"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="205"/>
         <source>Joined %n surface(s) into one: </source>
         <translation>
             <numerusform>Joined %n surface into one: </numerusform>
@@ -237,7 +237,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="201"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="206"/>
         <source>%1 of %n pair(s) of facing edges welded</source>
         <translation>
             <numerusform>%1 of %n pair of facing edges welded</numerusform>
@@ -245,11 +245,19 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="202"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="207"/>
         <source>, %n part(s) not connected</source>
         <translation>
             <numerusform>, %n part not connected</numerusform>
             <numerusform>, %n parts not connected</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="219"/>
+        <source>%n surface(s) facing no other were left as they are.</source>
+        <translation>
+            <numerusform>%n surface facing no other was left as it is.</numerusform>
+            <numerusform>%n surfaces facing no other were left as they are.</numerusform>
         </translation>
     </message>
 </context>

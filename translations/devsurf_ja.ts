@@ -2234,48 +2234,55 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="191"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="196"/>
         <source>%1 failed: %2 The design is unchanged.</source>
         <translation>%1 に失敗しました: %2 デザインは変更されていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="200"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="205"/>
         <source>Joined %n surface(s) into one: </source>
         <translation>
             <numerusform>%n 個のサーフェスを 1 つに結合しました: </numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="201"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="206"/>
         <source>%1 of %n pair(s) of facing edges welded</source>
         <translation>
             <numerusform>向かい合うエッジ %n 組のうち %1 組を溶接</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="202"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="207"/>
         <source>, %n part(s) not connected</source>
         <translation>
             <numerusform>、%n 個の部分は未接続</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="205"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="210"/>
         <source>largest constraint residual %1, within the tolerance.</source>
         <translation>最大の制約残差 %1、許容範囲内。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="206"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="211"/>
         <source>largest constraint residual %1, not within the tolerance (Tools ▸ Solve may help).</source>
         <translation>最大の制約残差 %1、許容範囲外 (ツール ▸ ソルブが役立つ場合があります)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="210"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="215"/>
         <source>Not welded: %1</source>
         <translation>溶接されていません: %1</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="219"/>
+        <source>%n surface(s) facing no other were left as they are.</source>
+        <translation>
+            <numerusform>他と向かい合わない %n 個のサーフェスはそのままにしました。</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="214"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="224"/>
         <source>The surfaces were held to the reference shape meanwhile.</source>
         <translation>その間、サーフェスは参照形状に保持されました。</translation>
     </message>

@@ -30,7 +30,7 @@ void printIterationLine(const solver::JobProgress& step) {
 std::optional<model::CompositeSurface>
 joinSurfaces(const std::vector<model::CompositeSurface>& surfaces,
              std::shared_ptr<const model::reference::ThinningResult> target, double rho,
-             std::optional<int> iterations, solver::SolveJob& job) {
+             std::optional<int> iterations, solver::SolveJob& job, std::vector<int>* joined) {
     solver::JobRequest request;
     request.kind = solver::JobKind::Join;
     request.surfaces = surfaces;
@@ -65,18 +65,22 @@ joinSurfaces(const std::vector<model::CompositeSurface>& surfaces,
     for (const model::Problem& problem : join.refused) {
         std::cout << "Join: not welded: " << ProblemText::of(problem).toStdString() << "\n";
     }
+    if (joined != nullptr) {
+        *joined = join.joined;
+    }
     const model::CompositeSurface& result = outcome.surfaces.front();
     const solver::SurfaceAssessment& a = outcome.assessments.front();
     char line[320];
-    std::snprintf(line, sizeof line,
-                  "Join: %d of %zu pairs of facing edges welded; one surface of %d part(s), %zu "
-                  "patches; %s in %d iterations, largest residual %.2e (%s the tolerance); "
-                  "developability sampled: max %.2e\n",
-                  join.welded, join.separations.size(), join.parts, result.faces().size(),
-                  join.pulledToReference ? "pulled to the reference" : "solved",
-                  a.summary.iterationsCompleted, a.summary.finalMaxConstraintResidual,
-                  a.summary.toleranceReached ? "within" : "NOT within",
-                  solver::measureQuality(result).developabilityMax);
+    std::snprintf(
+        line, sizeof line,
+        "Join: %d of %zu pairs of facing edges welded; %zu surfaces now one of %d part(s), "
+        "%zu patches; %s in %d iterations, largest residual %.2e (%s the tolerance); "
+        "developability sampled: max %.2e\n",
+        join.welded, join.separations.size(), join.joined.size(), join.parts, result.faces().size(),
+        join.pulledToReference ? "pulled to the reference" : "solved",
+        a.summary.iterationsCompleted, a.summary.finalMaxConstraintResidual,
+        a.summary.toleranceReached ? "within" : "NOT within",
+        solver::measureQuality(result).developabilityMax);
     std::cout << line;
     return result;
 }
@@ -134,27 +138,38 @@ int runJoinCommand(const SubcommandArguments& args) {
                   << " mm to " << thinned.thinned.points.size() << " points\n";
     }
     solver::SolveJob job;
+    std::vector<int> joinedIndices;
     const std::optional<model::CompositeSurface> joined =
-        joinSurfaces(surfaces, target, rho, iterations, job);
+        joinSurfaces(surfaces, target, rho, iterations, job, &joinedIndices);
     if (!joined) {
         std::cerr << "devsurf-cli: nothing was joined; '" << output << "' was not written.\n";
         return 2;
     }
-    // The joined surface takes the first one's place and id, as Tools ▸ Join Surfaces does.
+    // The joined surface takes the first one's place and id, as Tools ▸ Join Surfaces does;
+    // chosen surfaces that face no other stay as they are.
+    const std::vector<std::size_t> order(chosen.begin(), chosen.end());
+    std::set<std::size_t> merged;
+    for (int k : joinedIndices) {
+        merged.insert(order[static_cast<std::size_t>(k)]);
+    }
     model::CompositeSurface result = *joined;
-    result.setId(project.surfaces[*chosen.begin()].id());
+    result.setId(project.surfaces[*merged.begin()].id());
     std::vector<model::CompositeSurface> kept;
     for (std::size_t s = 0; s < project.surfaces.size(); ++s) {
-        if (s == *chosen.begin()) {
+        if (s == *merged.begin()) {
             kept.push_back(result);
-        } else if (chosen.count(s) == 0) {
+        } else if (merged.count(s) == 0) {
             kept.push_back(project.surfaces[s]);
         }
     }
     project.surfaces = std::move(kept);
     writeProject(project, output);
-    std::cout << "Wrote " << output << " (" << chosen.size() << " surfaces joined into '"
-              << result.name() << "')\n";
+    std::cout << "Wrote " << output << " (" << merged.size() << " surfaces joined into '"
+              << result.name() << "'";
+    if (merged.size() < chosen.size()) {
+        std::cout << "; " << chosen.size() - merged.size() << " facing no other left as they were";
+    }
+    std::cout << ")\n";
     return 0;
 }
 

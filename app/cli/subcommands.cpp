@@ -232,7 +232,7 @@ const std::vector<SubcommandSpec>& subcommands() {
          "strips that face each other (ends and middles apart by at most 20 %\n"
          "of their length) are pulled onto each other in a second approximation,\n"
          "welded into one shared edge, and the result pulled to the target once\n"
-         "more; strips that face no other strip stay separate parts.",
+         "more; strips that face no other strip stay separate surfaces.",
          {{"from", "START.devsurf", "Start from the surfaces of this project."},
           {"strips", "K", "Start from K flat strips (default 1)."},
           {"intervals", "N", "Spline intervals of each flat strip (default 4)."},

@@ -13,19 +13,38 @@
 
 namespace devsurf::solver {
 
-JoinPlan planJoin(const std::vector<model::CompositeSurface>& surfaces) {
-    JoinPlan plan;
-    plan.surface = surfaces.front();
+namespace {
+
+// The surfaces side by side in one, named "a + b" or, for more, "a + N more", and the faces of
+// each in it (the first's keep their ids through every placement).
+struct SideBySide {
+    model::CompositeSurface surface;
+    std::vector<std::set<model::FaceId>> facesOf;
+};
+SideBySide sideBySide(const std::vector<model::CompositeSurface>& surfaces) {
+    SideBySide all;
+    all.surface = surfaces.front();
+    all.facesOf.resize(surfaces.size());
+    for (const auto& [face, loop] : surfaces.front().faces()) {
+        all.facesOf.front().insert(face);
+    }
     for (std::size_t s = 1; s < surfaces.size(); ++s) {
-        plan.surface = model::placeSideBySide(plan.surface, surfaces[s]).surface;
+        const model::SurfacesSideBySide placed = model::placeSideBySide(all.surface, surfaces[s]);
+        all.surface = placed.surface;
+        for (const auto& [old, face] : placed.faceOfSecond) {
+            all.facesOf[s].insert(face);
+        }
     }
-    // placeSideBySide names it "a + b"; after a few that name runs long.
     if (surfaces.size() > 2) {
-        plan.surface.setName(surfaces.front().name() + " + " + std::to_string(surfaces.size() - 1) +
-                             " more");
+        all.surface.setName(surfaces.front().name() + " + " + std::to_string(surfaces.size() - 1) +
+                            " more");
     }
-    // Per two parts their nearest boundary edges of one kind; then, nearest first, the pairs
-    // whose edges are not used yet.
+    return all;
+}
+
+// Per two parts their nearest boundary edges of one kind within kJoinReach; then, nearest
+// first, the pairs whose edges are not used yet.
+void pairFacingEdges(JoinPlan& plan) {
     const std::vector<std::set<model::FaceId>> parts = model::surfaceParts(plan.surface);
     std::vector<model::NearestCurves> candidates;
     for (std::size_t i = 0; i < parts.size(); ++i) {
@@ -49,6 +68,41 @@ JoinPlan planJoin(const std::vector<model::CompositeSurface>& surfaces) {
             plan.separations.push_back(c.separation);
         }
     }
+}
+
+} // namespace
+
+JoinPlan planJoin(const std::vector<model::CompositeSurface>& surfaces) {
+    const SideBySide all = sideBySide(surfaces);
+    JoinPlan plan;
+    plan.surface = all.surface;
+    pairFacingEdges(plan);
+    // The surfaces with an edge in a pair.
+    std::set<int> joined;
+    for (const CurvePair& pair : plan.pairs) {
+        for (model::EdgeId edge : {pair.first, pair.second}) {
+            const model::FaceId face = plan.surface.facesOfEdge(edge).front();
+            for (std::size_t s = 0; s < surfaces.size(); ++s) {
+                if (all.facesOf[s].count(face) != 0) {
+                    joined.insert(static_cast<int>(s));
+                }
+            }
+        }
+    }
+    if (joined.empty()) {
+        return {};
+    }
+    if (joined.size() < surfaces.size()) {
+        // Again with those alone: the same pairs (the others' edges blocked none of them).
+        std::vector<model::CompositeSurface> subset;
+        for (int s : joined) {
+            subset.push_back(surfaces[static_cast<std::size_t>(s)]);
+        }
+        plan = {};
+        plan.surface = sideBySide(subset).surface;
+        pairFacingEdges(plan);
+    }
+    plan.joined.assign(joined.begin(), joined.end());
     return plan;
 }
 
@@ -82,7 +136,6 @@ JobOutcome runJoinJob(SolveJob& job, const JobRequest& request, const std::atomi
                       const JobProgressFn& progress) {
     const auto start = std::chrono::steady_clock::now();
     auto report = std::make_shared<JoinReport>();
-    report->surfaces = static_cast<int>(request.surfaces.size());
     const auto finish = [&](JobOutcome outcome) {
         outcome.kind = JobKind::Join;
         outcome.settled = true;
@@ -108,6 +161,7 @@ JobOutcome runJoinJob(SolveJob& job, const JobRequest& request, const std::atomi
         return unchanged();
     }
     report->separations = plan.separations;
+    report->joined = plan.joined;
 
     // Each step pulls the one surface towards the reference where the request gives one with
     // enough points (an Approximate job), or solves it, running the iterations asked for.

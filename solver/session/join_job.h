@@ -21,11 +21,13 @@ namespace devsurf::solver {
 inline constexpr double kJoinReach = 0.2;
 
 struct JoinPlan {
-    model::CompositeSurface surface; // every surface, side by side
+    model::CompositeSurface surface; // the surfaces of `joined`, side by side
     std::vector<CurvePair> pairs;    // nearest first; each edge in one pair at most
     std::vector<double> separations; // per pair (mm), before the pairing
+    std::vector<int> joined;         // the surfaces in a pair, ascending indices into the input
 };
-// Requires at least one surface. Parts that face no other part within kJoinReach stay apart.
+// Requires at least one surface. A surface none of whose edges is in a pair is left out of the
+// joined surface (none in a pair: `surface` is empty, `pairs` too).
 JoinPlan planJoin(const std::vector<model::CompositeSurface>& surfaces);
 
 struct JoinedSurface {

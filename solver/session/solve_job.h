@@ -199,7 +199,7 @@ struct JobFailure {
 // What a Join did (join_job.h): the facing boundary edges (two curves or two rulings) it
 // paired and which pairs it welded.
 struct JoinReport {
-    int surfaces = 0;                    // the request's surfaces, now parts of one surface
+    std::vector<int> joined;             // the request's surfaces now one (ascending indices)
     std::vector<double> separations;     // per pair of facing edges, mm apart before the pairing
     double largestGap = 0.0;             // mm apart after the pairing, over the pairs welded
     int welded = 0;                      // pairs now one shared edge
@@ -220,8 +220,9 @@ struct JobOutcome {
     std::vector<model::CompositeSurface> surfaces;
     std::vector<SurfaceAssessment> assessments; // per surface
     double elapsedMs = 0.0;
-    // Join: what was paired and welded; `surfaces` is then the one joined surface, or the
-    // request's surfaces unchanged when no two face each other (separations empty).
+    // Join: what was paired and welded; `surfaces` is then the one surface that the surfaces
+    // JoinReport::joined became (the others are left as they are), or the request's surfaces
+    // unchanged when no two face each other (separations empty).
     std::shared_ptr<const JoinReport> join;
 
     bool cancelled() const { return failure.error == JobError::Cancelled; }

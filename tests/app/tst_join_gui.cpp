@@ -158,13 +158,14 @@ private slots:
     }
 
     void withAReferenceTheJoinHoldsToIt() {
-        // Nothing selected: every surface is joined; a and b meet, c stays a separate part of
-        // the joined surface. The reference shape (points of the plane z = 0 under a and b)
-        // holds them to it meanwhile.
+        // Nothing selected: every surface is offered; a and b meet and are joined, c faces
+        // neither and is left as it is. The reference shape (points of the plane z = 0 under a
+        // and b) holds them to it meanwhile.
         app::MainWindow window;
         QVERIFY(test::showActiveWithExample(window, QStringLiteral("sheet")));
         openThreeStrips(window);
         document::Document* doc = window.workspace()->document();
+        const model::CompositeSurface c = doc->surface(2);
         model::ReferenceShape plane{"plane", "", {}, {}, {}};
         for (int i = 0; i <= 50; ++i) {
             for (int j = 0; j <= 41; ++j) {
@@ -175,15 +176,18 @@ private slots:
         QVERIFY(document::push(*doc, add));
         const auto [applied, sentence] = joinByKey(window);
         QVERIFY2(applied, qPrintable(sentence));
-        QVERIFY2(sentence.contains(QStringLiteral("Joined 3 surfaces into one")),
+        QVERIFY2(sentence.contains(QStringLiteral("Joined 2 surfaces into one")),
                  qPrintable(sentence));
-        QVERIFY2(sentence.contains(QStringLiteral("2 parts not connected")), qPrintable(sentence));
+        QVERIFY2(sentence.contains(QStringLiteral("1 surface facing no other was left as it is")),
+                 qPrintable(sentence));
+        QVERIFY2(!sentence.contains(QStringLiteral("not connected")), qPrintable(sentence));
         QVERIFY2(sentence.contains(QStringLiteral("held to the reference shape")),
                  qPrintable(sentence));
-        QCOMPARE(doc->surfaceCount(), 1);
+        QCOMPARE(doc->surfaceCount(), 2);
+        QVERIFY(doc->surface(1) == c);
         const model::CompositeSurface& joined = doc->surface(0);
-        QCOMPARE(joined.name(), std::string("a + 2 more"));
-        QCOMPARE(model::surfaceParts(joined).size(), std::size_t(2));
+        QCOMPARE(joined.name(), std::string("a + b"));
+        QCOMPARE(model::surfaceParts(joined).size(), std::size_t(1));
         QCOMPARE(sharedEdges(joined), 1);
         QVERIFY(test::sampledDevelopability(joined) <= 1e-8);
         // Still in the plane of the reference.

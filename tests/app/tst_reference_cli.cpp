@@ -228,9 +228,9 @@ private slots:
         const test::CliRun run = test::runCli({"approximate", path("circular.xyz"), "--strips", "2",
                                                "--join", "-o", path("joined.devsurf")});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
-        QVERIFY2(
-            run.out.contains("Join: 1 of 1 pairs of facing edges welded; one surface of 1 part(s)"),
-            qPrintable(run.out));
+        QVERIFY2(run.out.contains(
+                     "Join: 1 of 1 pairs of facing edges welded; 2 surfaces now one of 1 part(s)"),
+                 qPrintable(run.out));
         // One surface of two patches sharing one curve, valid, on the cloud (measured here).
         const model::Project project = io::loadProjectFile(path("joined.devsurf"));
         QCOMPARE(project.surfaces.size(), std::size_t(1));
@@ -258,7 +258,8 @@ private slots:
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         run = test::runCli({"join", path("four.devsurf"), "-o", path("joined.devsurf")});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
-        QVERIFY2(run.out.contains("4 of 4 pairs of facing edges welded; one surface of 1 part(s)"),
+        QVERIFY2(run.out.contains(
+                     "4 of 4 pairs of facing edges welded; 4 surfaces now one of 1 part(s)"),
                  qPrintable(run.out));
         const model::Project project = io::loadProjectFile(path("joined.devsurf"));
         QCOMPARE(project.surfaces.size(), std::size_t(1));

@@ -391,7 +391,7 @@ private slots:
         QCOMPARE(outcome.kind, solver::JobKind::Join);
         QVERIFY(outcome.join);
         const solver::JoinReport& join = *outcome.join;
-        QCOMPARE(join.surfaces, 2);
+        QCOMPARE(join.joined, (std::vector<int>{0, 1}));
         QCOMPARE(join.separations.size(), std::size_t(1));
         QVERIFY2(std::abs(join.separations.front() - 2.0) < 1e-6,
                  qPrintable(QString::number(join.separations.front())));
@@ -449,6 +449,23 @@ private slots:
         const solver::JobOutcome single = job.run(request);
         QVERIFY(single.ok && single.join && single.join->separations.empty());
         QCOMPARE(single.surfaces.size(), std::size_t(1));
+    }
+
+    void aSurfaceFacingNoOtherIsLeftOut() {
+        // a and b 2 mm apart, c 200 mm beyond: only a and b become the joined surface.
+        solver::JobRequest request;
+        request.kind = solver::JobKind::Join;
+        request.surfaces = twoFlatStrips();
+        request.surfaces.push_back(flatStrip(0.0, 0.0, 300.0));
+        solver::SolveJob job;
+        const solver::JobOutcome outcome = job.run(request);
+        QVERIFY(outcome.ok);
+        QCOMPARE(outcome.join->joined, (std::vector<int>{0, 1}));
+        QCOMPARE(outcome.join->welded, 1);
+        QCOMPARE(outcome.join->parts, 1);
+        QCOMPARE(outcome.surfaces.size(), std::size_t(1));
+        QCOMPARE(outcome.surfaces.front().faces().size(), std::size_t(2));
+        QCOMPARE(outcome.surfaces.front().name(), std::string("a + b"));
     }
 
     void aCancelledJoinChangesNothing() {

@@ -29,7 +29,7 @@ namespace devsurf::app {
 // `thinningFailure`.
 struct JoinReaction::Run {
     quint64 revision = 0;            // of the design the join started from
-    std::vector<int> indices;        // the surfaces joined, ascending
+    std::vector<int> indices;        // the surfaces to join, ascending
     std::vector<model::Vec3> points; // every reference shape's points (none: pairing alone)
     std::shared_ptr<const model::reference::ThinningResult> target;
     double rho = 0.0;
@@ -184,8 +184,13 @@ void JoinReaction::onJobDone(const solver::SolveResult& result) {
         end(false, sentence);
         return;
     }
+    // The surfaces the job joined (those facing no other are left as they are).
+    std::vector<int> joined;
+    for (int k : join.joined) {
+        joined.push_back(run.indices[static_cast<std::size_t>(k)]);
+    }
     document::CommandOrError edit = document::JoinSurfacesCommand::create(
-        *workspace()->document(), run.indices, outcome.surfaces.front(), joinTitle());
+        *workspace()->document(), joined, outcome.surfaces.front(), joinTitle());
     if (edit.isRefused()) {
         const QString sentence =
             tr("%1 failed: %2 The design is unchanged.").arg(joinTitle(), refusalText(edit));
@@ -197,7 +202,7 @@ void JoinReaction::onJobDone(const solver::SolveResult& result) {
     const QString residual = QString::number(a.summary.finalMaxConstraintResidual, 'e', 2);
     const int pairs = static_cast<int>(join.separations.size());
     QString sentence =
-        tr("Joined %n surface(s) into one: ", nullptr, count) +
+        tr("Joined %n surface(s) into one: ", nullptr, static_cast<int>(joined.size())) +
         tr("%1 of %n pair(s) of facing edges welded", nullptr, pairs).arg(join.welded) +
         (join.parts > 1 ? tr(", %n part(s) not connected", nullptr, join.parts) : QString()) +
         QStringLiteral("; ") +
@@ -208,6 +213,11 @@ void JoinReaction::onJobDone(const solver::SolveResult& result) {
                    .arg(residual));
     for (const model::Problem& problem : join.refused) {
         sentence += QLatin1Char(' ') + tr("Not welded: %1").arg(ProblemText::of(problem));
+    }
+    if (joined.size() < run.indices.size()) {
+        sentence +=
+            QLatin1Char(' ') + tr("%n surface(s) facing no other were left as they are.", nullptr,
+                                  static_cast<int>(run.indices.size() - joined.size()));
     }
     if (join.pulledToReference) {
         sentence +=
