@@ -2215,6 +2215,11 @@
         <translation>Flächen zu einer zusammengesetzten Fläche verbinden: warten, bis der Löser fertig ist, oder ihn abbrechen (Esc).</translation>
     </message>
     <message>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="85"/>
+        <source>Join the selected surfaces (all when fewer than two are selected) into one composite: boundary curves or rulings that face each other become shared edges, held to the reference shapes where there are any; one undo step.</source>
+        <translation>Die ausgewählten Flächen (alle, wenn weniger als zwei ausgewählt sind) zu einer zusammengesetzten Fläche verbinden: einander gegenüberliegende Randkurven oder Erzeugende werden gemeinsame Kanten, an den Referenzformen gehalten, wo es welche gibt; ein Rückgängig-Schritt.</translation>
+    </message>
+    <message>
         <location filename="../app/gui/reactions/join_reaction.cpp" line="110"/>
         <source>Preparing the join: thinning the reference shapes…</source>
         <translation>Verbinden wird vorbereitet: Referenzformen ausdünnen…</translation>
@@ -2233,11 +2238,6 @@
         <location filename="../app/gui/reactions/join_reaction.cpp" line="81"/>
         <source>Join surfaces into one composite where their boundary edges face each other: the design needs at least two surfaces.</source>
         <translation>Flächen zu einer zusammengesetzten Fläche verbinden, wo ihre Randkanten einander gegenüberliegen: der Entwurf braucht mindestens zwei Flächen.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="85"/>
-        <source>Join the selected surfaces (all when fewer than two are selected) into one composite: boundary curves or rulings that face each other become shared edges and the result is solved; one undo step.</source>
-        <translation>Die ausgewählten Flächen (alle, wenn weniger als zwei ausgewählt sind) zu einer zusammengesetzten Fläche verbinden: einander gegenüberliegende Randkurven oder Erzeugende werden gemeinsame Kanten, und das Ergebnis wird gelöst; ein Rückgängig-Schritt.</translation>
     </message>
     <message>
         <location filename="../app/gui/reactions/join_reaction.cpp" line="137"/>

@@ -2192,6 +2192,11 @@
         <translation>サーフェスを 1 つの複合サーフェスに結合します: ソルバーの終了を待つか、中止してください (Esc)。</translation>
     </message>
     <message>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="85"/>
+        <source>Join the selected surfaces (all when fewer than two are selected) into one composite: boundary curves or rulings that face each other become shared edges, held to the reference shapes where there are any; one undo step.</source>
+        <translation>選択したサーフェス (選択が 2 つ未満ならすべて) を 1 つの複合サーフェスに結合します: 向かい合う境界曲線または母線が共有エッジになり、参照形状があればそれに保持されます。元に戻す 1 ステップです。</translation>
+    </message>
+    <message>
         <location filename="../app/gui/reactions/join_reaction.cpp" line="110"/>
         <source>Preparing the join: thinning the reference shapes…</source>
         <translation>結合を準備中: 参照形状を間引いています…</translation>
@@ -2210,11 +2215,6 @@
         <location filename="../app/gui/reactions/join_reaction.cpp" line="81"/>
         <source>Join surfaces into one composite where their boundary edges face each other: the design needs at least two surfaces.</source>
         <translation>境界エッジが向かい合う箇所でサーフェスを 1 つの複合サーフェスに結合します: デザインに 2 つ以上のサーフェスが必要です。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="85"/>
-        <source>Join the selected surfaces (all when fewer than two are selected) into one composite: boundary curves or rulings that face each other become shared edges and the result is solved; one undo step.</source>
-        <translation>選択したサーフェス (選択が 2 つ未満ならすべて) を 1 つの複合サーフェスに結合します: 向かい合う境界曲線または母線が共有エッジになり、結果がソルブされます。元に戻す 1 ステップです。</translation>
     </message>
     <message>
         <location filename="../app/gui/reactions/join_reaction.cpp" line="137"/>

@@ -84,7 +84,7 @@ void JoinReaction::updateEnableState() {
                       "cancel it (Esc).")
                 : tr("Join the selected surfaces (all when fewer than two are selected) into one "
                       "composite: boundary curves or rulings that face each other become shared "
-                      "edges and the result is solved; one undo step.");
+                      "edges, held to the reference shapes where there are any; one undo step.");
     action()->setToolTip(tip);
     action()->setStatusTip(tip);
 }
