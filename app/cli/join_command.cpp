@@ -143,7 +143,7 @@ int runJoinCommand(const SubcommandArguments& args) {
         joinSurfaces(surfaces, target, rho, iterations, job, &joinedIndices);
     if (!joined) {
         std::cerr << "devsurf-cli: nothing was joined; '" << output << "' was not written.\n";
-        return 2;
+        return kExitInput;
     }
     // The joined surface takes the first one's place and id, as Tools ▸ Join Surfaces does;
     // chosen surfaces that face no other stay as they are.
@@ -170,7 +170,7 @@ int runJoinCommand(const SubcommandArguments& args) {
         std::cout << "; " << chosen.size() - merged.size() << " facing no other left as they were";
     }
     std::cout << ")\n";
-    return 0;
+    return kExitOk;
 }
 
 } // namespace devsurf::app
