@@ -24,8 +24,9 @@ PrincipalFrame principalFrame(const std::vector<Vec3>& points);
 // The initial strip of §4.2 (Fig. 10a): one valid SRSR face, a flat trapezoid in the PCA plane
 // of `points`, curves a and b along the longest axis, each spanning the projection of the points
 // of its half of the strip, the whole enlarged by `margin` on every side (a rectangle over a
-// footprint as wide on both sides), normal a′ × (b − a) = axes[2]. Throws std::invalid_argument for fewer
-// than 3 points, a non-finite coordinate, points on a line, an invalid space or margin < 0.
+// footprint as wide on both sides), normal a′ × (b − a) = axes[2]. Throws
+// std::invalid_argument for fewer than 3 points, a non-finite coordinate, points on a line, an
+// invalid space or margin < 0.
 CompositeSurface initialStrip(const std::vector<Vec3>& points, const SplineSpace& space,
                               double margin = 0.05);
 
