@@ -190,6 +190,22 @@ std::optional<NearestCurves> nearestBoundaryCurves(const CompositeSurface& surfa
     return nearest;
 }
 
+std::vector<CompositeSurface> replaceByJoined(const std::vector<CompositeSurface>& surfaces,
+                                              const std::vector<int>& indices,
+                                              CompositeSurface joined) {
+    const auto first = static_cast<std::size_t>(indices.front());
+    joined.setId(surfaces[first].id());
+    std::vector<CompositeSurface> result;
+    for (std::size_t s = 0; s < surfaces.size(); ++s) {
+        if (s == first) {
+            result.push_back(joined);
+        } else if (!std::binary_search(indices.begin(), indices.end(), static_cast<int>(s))) {
+            result.push_back(surfaces[s]);
+        }
+    }
+    return result;
+}
+
 SurfacesSideBySide placeSideBySide(const CompositeSurface& first, const CompositeSurface& second) {
     SurfacesSideBySide result;
     CompositeSurface& s = result.surface;

@@ -80,6 +80,13 @@ struct Weld {
 Weld weldEdges(const CompositeSurface& surface, EdgeId first, EdgeId second,
                double tolerance = kWeldTolerance);
 
+// `surfaces` with those at `indices` (ascending, at least one, in range) replaced by `joined`,
+// which takes the first one's place and id: the design after a join (Tools ▸ Join Surfaces,
+// `devsurf-cli join`).
+std::vector<CompositeSurface> replaceByJoined(const std::vector<CompositeSurface>& surfaces,
+                                              const std::vector<int>& indices,
+                                              CompositeSurface joined);
+
 // Merges the two strips on either side of the ruling `ruling` into one strip (§4.2, "merge two
 // strips by joining their control sequences"): each curve of the result is the two curves that
 // meet at an end of the ruling joined there, in S(n₁ + n₂, m, k) for curves in S(n₁, m, k) and

@@ -40,17 +40,7 @@ joinStrips(const std::vector<model::CompositeSurface>& surfaces,
     const std::optional<model::CompositeSurface> joined =
         joinSurfaces(surfaces, std::make_shared<const model::reference::ThinningResult>(thinned),
                      rho, iterations, job, &merged);
-    if (!joined) {
-        return surfaces;
-    }
-    // The joined surface first, then the strips that face no other.
-    std::vector<model::CompositeSurface> result = {*joined};
-    for (std::size_t s = 0; s < surfaces.size(); ++s) {
-        if (std::find(merged.begin(), merged.end(), static_cast<int>(s)) == merged.end()) {
-            result.push_back(surfaces[s]);
-        }
-    }
-    return result;
+    return joined ? model::replaceByJoined(surfaces, merged, *joined) : surfaces;
 }
 
 } // namespace

@@ -2,10 +2,10 @@
 
 #include "cli_output.h"
 #include "io/project_file.h"
+#include "model/strip_joining.h"
 #include "outcome_text.h"
 #include "problem_text.h"
 #include "solver/quality/quality_measures.h"
-#include "solver/session/approximation_setup.h"
 #include "solver/session/join_job.h"
 
 #include <QString>
@@ -124,18 +124,17 @@ int runJoinCommand(const SubcommandArguments& args) {
         surfaces.push_back(project.surfaces[s]);
     }
     // Pulled towards every reference shape of the project, thinned as `approximate` thins.
-    std::vector<model::Vec3> points;
-    for (const model::ReferenceShape& shape : project.referenceShapes) {
-        points.insert(points.end(), shape.points.begin(), shape.points.end());
-    }
     std::shared_ptr<const model::reference::ThinningResult> target;
     double rho = 0.0;
-    if (!points.empty()) {
-        const solver::ThinnedTarget thinned = solver::thinTarget(points, 0.0);
-        target = std::make_shared<const model::reference::ThinningResult>(thinned.thinned);
-        rho = thinned.rho;
-        std::cout << "Reference: " << points.size() << " points thinned with radius " << rho
-                  << " mm to " << thinned.thinned.points.size() << " points\n";
+    if (const auto thinned = solver::thinReferenceShapes(project.referenceShapes)) {
+        target = std::make_shared<const model::reference::ThinningResult>(thinned->thinned);
+        rho = thinned->rho;
+        std::size_t points = 0;
+        for (const model::ReferenceShape& shape : project.referenceShapes) {
+            points += shape.points.size();
+        }
+        std::cout << "Reference: " << points << " points thinned with radius " << rho << " mm to "
+                  << thinned->thinned.points.size() << " points\n";
     }
     solver::SolveJob job;
     std::vector<int> joinedIndices;
@@ -148,24 +147,14 @@ int runJoinCommand(const SubcommandArguments& args) {
     // The joined surface takes the first one's place and id, as Tools ▸ Join Surfaces does;
     // chosen surfaces that face no other stay as they are.
     const std::vector<std::size_t> order(chosen.begin(), chosen.end());
-    std::set<std::size_t> merged;
+    std::vector<int> merged;
     for (int k : joinedIndices) {
-        merged.insert(order[static_cast<std::size_t>(k)]);
+        merged.push_back(static_cast<int>(order[static_cast<std::size_t>(k)]));
     }
-    model::CompositeSurface result = *joined;
-    result.setId(project.surfaces[*merged.begin()].id());
-    std::vector<model::CompositeSurface> kept;
-    for (std::size_t s = 0; s < project.surfaces.size(); ++s) {
-        if (s == *merged.begin()) {
-            kept.push_back(result);
-        } else if (merged.count(s) == 0) {
-            kept.push_back(project.surfaces[s]);
-        }
-    }
-    project.surfaces = std::move(kept);
+    project.surfaces = model::replaceByJoined(project.surfaces, merged, *joined);
     writeProject(project, output);
     std::cout << "Wrote " << output << " (" << merged.size() << " surfaces joined into '"
-              << result.name() << "'";
+              << joined->name() << "'";
     if (merged.size() < chosen.size()) {
         std::cout << "; " << chosen.size() - merged.size() << " facing no other left as they were";
     }

@@ -2,7 +2,6 @@
 
 #include "model/model_error.h"
 #include "model/strip_joining.h"
-#include "solver/session/approximation_setup.h"
 
 #include <algorithm>
 #include <chrono>
@@ -12,6 +11,19 @@
 #include <string>
 
 namespace devsurf::solver {
+
+std::optional<ThinnedTarget>
+thinReferenceShapes(const std::vector<model::ReferenceShape>& shapes,
+                    const model::reference::ThinningProgress& progress) {
+    std::vector<model::Vec3> points;
+    for (const model::ReferenceShape& shape : shapes) {
+        points.insert(points.end(), shape.points.begin(), shape.points.end());
+    }
+    if (points.empty()) {
+        return std::nullopt;
+    }
+    return thinTarget(points, 0.0, progress);
+}
 
 namespace {
 

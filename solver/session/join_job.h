@@ -10,12 +10,21 @@
 // approximate --join` run it.
 
 #include "model/composite_surface.h"
+#include "model/reference_shape.h"
+#include "solver/session/approximation_setup.h"
 #include "solver/session/solve_job.h"
 
 #include <atomic>
+#include <optional>
 #include <vector>
 
 namespace devsurf::solver {
+
+// The points of every reference shape thinned as an approximation thins them (thinTarget with
+// the default radius): what a join is pulled towards. None when there are no shapes.
+std::optional<ThinnedTarget>
+thinReferenceShapes(const std::vector<model::ReferenceShape>& shapes,
+                    const model::reference::ThinningProgress& progress = {});
 
 // Facing edges are paired when their separation is at most this fraction of their length.
 inline constexpr double kJoinReach = 0.2;

@@ -1,6 +1,5 @@
 #include "join_reaction.h"
 
-#include "../distance_report_dialog.h"
 #include "../edit_refusal.h"
 #include "../solve_controller.h"
 #include "../workspace.h"
@@ -9,7 +8,6 @@
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "problem_text.h"
-#include "solver/session/approximation_setup.h"
 #include "solver/session/join_job.h"
 #include "solver/worker/solver_worker.h"
 
@@ -28,9 +26,9 @@ namespace devsurf::app {
 // One join, shared with the thinning thread, which writes only `target`, `rho` and
 // `thinningFailure`.
 struct JoinReaction::Run {
-    quint64 revision = 0;            // of the design the join started from
-    std::vector<int> indices;        // the surfaces to join, ascending
-    std::vector<model::Vec3> points; // every reference shape's points (none: pairing alone)
+    quint64 revision = 0;                      // of the design the join started from
+    std::vector<int> indices;                  // the surfaces to join, ascending
+    std::vector<model::ReferenceShape> shapes; // the design's (none: the pairing alone)
     std::shared_ptr<const model::reference::ThinningResult> target;
     double rho = 0.0;
     std::optional<std::string> thinningFailure; // thinning threw: why
@@ -97,12 +95,10 @@ void JoinReaction::onTriggered() {
     auto run = std::make_shared<Run>();
     run->revision = doc->revision();
     run->indices = surfacesToJoin(*workspace());
-    for (const model::ReferenceShape& shape : doc->project().referenceShapes) {
-        run->points.insert(run->points.end(), shape.points.begin(), shape.points.end());
-    }
+    run->shapes = doc->project().referenceShapes;
     m_run = run;
     updateEnableState();
-    if (run->points.empty()) {
+    if (run->shapes.empty()) {
         runJob();
         return;
     }
@@ -111,14 +107,14 @@ void JoinReaction::onTriggered() {
         joinTitle(), QStringLiteral("joinThinningProgress"),
         [run](const BackgroundRead::Progress& progress) {
             try {
-                const solver::ThinnedTarget thinned =
-                    solver::thinTarget(run->points, 0.0, [&](std::size_t done, std::size_t total) {
+                const std::optional<solver::ThinnedTarget> thinned = solver::thinReferenceShapes(
+                    run->shapes, [&](std::size_t done, std::size_t total) {
                         return progress(total > 0 ? static_cast<double>(done) / total : 0.0);
                     });
-                if (!thinned.thinned.cancelled) {
+                if (thinned && !thinned->thinned.cancelled) {
                     run->target =
-                        std::make_shared<const model::reference::ThinningResult>(thinned.thinned);
-                    run->rho = thinned.rho;
+                        std::make_shared<const model::reference::ThinningResult>(thinned->thinned);
+                    run->rho = thinned->rho;
                 }
             } catch (const std::exception& e) {
                 run->thinningFailure = e.what(); // the model's own words

@@ -1,6 +1,7 @@
 #include "join_surfaces_command.h"
 
 #include "model/document/change_flags.h"
+#include "model/strip_joining.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -15,7 +16,6 @@ JoinSurfacesCommand::JoinSurfacesCommand(Document& document, std::vector<int> in
     for (int index : m_indices) {
         m_originals.push_back(document.surface(index));
     }
-    m_joined.setId(m_originals.front().id());
 }
 
 CommandOrError JoinSurfacesCommand::create(Document& document, std::vector<int> indices,
@@ -36,10 +36,7 @@ CommandOrError JoinSurfacesCommand::create(Document& document, std::vector<int> 
 
 void JoinSurfacesCommand::redo() {
     std::vector<model::CompositeSurface>& surfaces = m_document.mutableProject().surfaces;
-    for (auto it = m_indices.rbegin(); it != m_indices.rend(); ++it) {
-        surfaces.erase(surfaces.begin() + *it);
-    }
-    surfaces.insert(surfaces.begin() + m_indices.front(), m_joined);
+    surfaces = model::replaceByJoined(surfaces, m_indices, m_joined);
     m_document.notifyChanged(Change::Topology | Change::Geometry | Change::Labels);
 }
 
