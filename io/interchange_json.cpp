@@ -5,6 +5,7 @@
 #include "model/creases.h"
 #include "model/development.h"
 #include "model/sampled_mesh.h"
+#include "model/sheet_creases.h"
 #include "model/strip.h"
 #include "output_file.h"
 
@@ -99,6 +100,25 @@ QJsonObject sheetJson(const model::SheetDomain& d) {
     }
     if (!loops.isEmpty()) {
         sheet["loops"] = loops;
+    }
+    // The crease curves as the development's plane sees them, with the creases held on each.
+    const std::vector<model::DomainLoop> placed = model::creaseCurveLoops(d);
+    QJsonArray curves;
+    for (std::size_t c = 0; c < placed.size(); ++c) {
+        QJsonArray edges;
+        for (const auto& [edge, curve] : d.creaseCurveOf) {
+            if (curve == static_cast<int>(c)) {
+                edges.append(integer(edge));
+            }
+        }
+        curves.append(QJsonObject{
+            {"points", array(placed[c].polygon, [](const model::Vec2& p) { return point(p); })},
+            {"closed", !placed[c].open},
+            {"edges", edges},
+        });
+    }
+    if (!curves.isEmpty()) {
+        sheet["creaseCurves"] = curves;
     }
     return sheet;
 }

@@ -21,7 +21,8 @@ namespace devsurf::io::versions {
 inline constexpr unsigned kProject = 3;
 // 2: pinned vertices (project file format 2). 3: the surface id (project file format 3).
 // 4: the kept development (project file format 4). 5: the sheet's shape (format 5).
-inline constexpr unsigned kSurface = 5;
+// 6: the sheet's crease curves (format 7).
+inline constexpr unsigned kSurface = 6;
 // 2: the smooth flag of rulings (project file format 3, with the surface ids).
 inline constexpr unsigned kEdge = 2;
 } // namespace devsurf::io::versions
@@ -291,6 +292,22 @@ template <class Archive> void save(Archive& ar, const CompositeSurface& s, unsig
             ar << p.x << p.y;
         }
     }
+    const auto curves = static_cast<std::uint32_t>(d.creaseCurves.size());
+    ar << curves;
+    for (const devsurf::model::SheetDomain::Curve& curve : d.creaseCurves) {
+        const std::uint8_t closed = curve.closed ? 1 : 0;
+        const auto points = static_cast<std::uint32_t>(curve.points.size());
+        ar << closed << points;
+        for (const devsurf::model::Vec2& p : curve.points) {
+            ar << p.x << p.y;
+        }
+    }
+    const auto creases = static_cast<std::uint32_t>(d.creaseCurveOf.size());
+    ar << creases;
+    for (const auto& [edge, curve] : d.creaseCurveOf) {
+        const auto index = static_cast<std::int32_t>(curve);
+        ar << edge << index;
+    }
 }
 
 template <class Archive> void load(Archive& ar, CompositeSurface& s, unsigned version) {
@@ -385,6 +402,36 @@ template <class Archive> void load(Archive& ar, CompositeSurface& s, unsigned ve
             loop.resize(corners);
             for (devsurf::model::Vec2& p : loop) {
                 ar >> p.x >> p.y;
+            }
+        }
+        if (version >= 6) {
+            std::uint32_t curves = 0;
+            ar >> curves;
+            checkedCount(curves, 100'000, "crease curves", 5);
+            d.creaseCurves.resize(curves);
+            for (devsurf::model::SheetDomain::Curve& curve : d.creaseCurves) {
+                std::uint8_t closed = 0;
+                std::uint32_t points = 0;
+                ar >> closed >> points;
+                if (closed > 1) {
+                    throw FileError("it has an invalid crease curve flag " +
+                                    std::to_string(closed));
+                }
+                checkedCount(points, 10'000'000, "crease curve points", 2);
+                curve.closed = closed == 1;
+                curve.points.resize(points);
+                for (devsurf::model::Vec2& p : curve.points) {
+                    ar >> p.x >> p.y;
+                }
+            }
+            std::uint32_t creases = 0;
+            ar >> creases;
+            checkedCount(creases, 30'000'000, "creases on curves", 2);
+            for (std::uint32_t i = 0; i < creases; ++i) {
+                EdgeId edge = 0;
+                std::int32_t curve = 0;
+                ar >> edge >> curve;
+                d.creaseCurveOf[edge] = curve; // indices are checked by validate()
             }
         }
         s.setSheetDomain(std::move(d)); // its sizes are checked by validate()

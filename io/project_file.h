@@ -15,8 +15,9 @@ namespace devsurf::io {
 // development of every surface (older files open without one, as they were). 5: the sheet
 // shape each kept development is confined to, the project's reference curves (older files
 // open with a free sheet and without curves). 6: the project's reference shapes, meshes and
-// point clouds (older files open without them).
-inline constexpr std::uint32_t kProjectFormatVersion = 6;
+// point clouds (older files open without them). 7: crease curves drawn in the sheet (older
+// files open without them).
+inline constexpr std::uint32_t kProjectFormatVersion = 7;
 inline constexpr std::size_t kProjectHeaderSize = 24;
 inline constexpr std::uint64_t kMaxProjectFileSize = 512ull * 1024 * 1024;
 

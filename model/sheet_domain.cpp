@@ -103,7 +103,7 @@ double distanceToLoops(const std::vector<DomainLoop>& loops, const Vec2& p) {
 bool SheetDomain::operator==(const SheetDomain& o) const {
     return shape == o.shape && width == o.width && height == o.height && radius == o.radius &&
            innerRadius == o.innerRadius && outline == o.outline && centre == o.centre &&
-           angle == o.angle;
+           angle == o.angle && creaseCurves == o.creaseCurves && creaseCurveOf == o.creaseCurveOf;
 }
 
 std::vector<DomainLoop> domainLoops(const SheetDomain& d) {
@@ -161,12 +161,16 @@ DomainFoot footPoint(const DomainLoop& loop, const Vec2& p) {
     DomainFoot best;
     double bestDistance = std::numeric_limits<double>::infinity();
     const std::size_t n = loop.polygon.size();
-    for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t sides = loop.open ? n - 1 : n;
+    for (std::size_t i = 0; i < sides && n > 1; ++i) {
         const Vec2& a = loop.polygon[i];
         const Vec2& b = loop.polygon[(i + 1) % n];
         const Vec2 side = b - a;
         const double length2 = dot2(side, side);
-        const double t = length2 > 0.0 ? std::clamp(dot2(p - a, side) / length2, 0.0, 1.0) : 0.0;
+        // An open curve goes on along its end sides (their tangent lines).
+        const double low = loop.open && i == 0 ? -std::numeric_limits<double>::infinity() : 0.0;
+        const double high = loop.open && i + 2 == n ? std::numeric_limits<double>::infinity() : 1.0;
+        const double t = length2 > 0.0 ? std::clamp(dot2(p - a, side) / length2, low, high) : 0.0;
         const Vec2 foot = a + side * t;
         const double distance = (p - foot).norm();
         if (distance < bestDistance) {
@@ -175,7 +179,22 @@ DomainFoot footPoint(const DomainLoop& loop, const Vec2& p) {
             // side, so its right-hand normal points out of the sheet.
             const Vec2 outward = unit(Vec2(side.y, -side.x));
             Vec2 normal = outward;
-            if ((t == 0.0 || t == 1.0) && distance > 0.0) {
+            if (loop.smooth) {
+                // Blended from the normals at the side's ends (each the mean of the sides
+                // meeting there), continuous along the curve.
+                auto sideNormal = [&loop, n](std::size_t k) {
+                    const Vec2 d = loop.polygon[(k + 1) % n] - loop.polygon[k % n];
+                    return unit(Vec2(d.y, -d.x));
+                };
+                const bool first = loop.open && i == 0;
+                const bool last = loop.open && i + 2 == n;
+                const Vec2 atA = first ? outward : unit(sideNormal(i + n - 1) + outward);
+                const Vec2 atB = last ? outward : unit(sideNormal(i + 1) + outward);
+                const double s = std::clamp(t, 0.0, 1.0);
+                // The Gauss–Newton row uses this normal as its Jacobian (the tangent line):
+                // the exact derivative of the blend converged worse (docs/tuning.md).
+                normal = unit(atA * (1.0 - s) + atB * s);
+            } else if ((t == 0.0 || t == 1.0) && distance > 0.0) {
                 // Beyond a vertex the nearest point is the vertex itself: the normal is the
                 // direction to p, signed like the sides meeting there.
                 normal = unit(p - foot);
@@ -234,7 +253,9 @@ double domainArea(const SheetDomain& domain) {
     return area;
 }
 
-std::optional<Problem> domainProblem(const SheetDomain& d) {
+namespace {
+
+std::optional<Problem> shapeProblem(const SheetDomain& d) {
     auto problem = [](long long what) {
         Problem p = problemOf(ProblemCode::SheetDomainInvalid);
         p.count = what;
@@ -273,6 +294,34 @@ std::optional<Problem> domainProblem(const SheetDomain& d) {
         return std::nullopt;
     }
     return problem(1);
+}
+
+} // namespace
+
+std::optional<Problem> domainProblem(const SheetDomain& d) {
+    if (std::optional<Problem> problem = shapeProblem(d)) {
+        return problem;
+    }
+    // Crease curves: finite points, two or more (three for a closed one), known indices.
+    for (const SheetDomain::Curve& curve : d.creaseCurves) {
+        bool finite = true;
+        for (const Vec2& p : curve.points) {
+            finite = finite && std::isfinite(p.x) && std::isfinite(p.y);
+        }
+        if (!finite || curve.points.size() < (curve.closed ? 3u : 2u)) {
+            Problem p = problemOf(ProblemCode::SheetDomainInvalid);
+            p.count = 4;
+            return p;
+        }
+    }
+    for (const auto& [edge, curve] : d.creaseCurveOf) {
+        if (curve < 0 || static_cast<std::size_t>(curve) >= d.creaseCurves.size()) {
+            Problem p = problemOf(ProblemCode::SheetDomainInvalid);
+            p.count = 4;
+            return p;
+        }
+    }
+    return std::nullopt;
 }
 
 DomainAssignment assignToDomain(const SheetDomain& domain, const SampledMesh& mesh,

@@ -11,6 +11,7 @@
 #include "vec3.h"
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -41,6 +42,20 @@ struct SheetDomain {
     // outline frame's origin).
     Vec2 centre;
     double angle = 0.0;
+    // Curves drawn in the sheet, in its own frame (the outline's frame; the rectangle's and
+    // circles' centre at the origin), that creases are confined to (§5, "crease vertices on a
+    // curve in the sheet"): a crease S-edge listed in creaseCurveOf has the development of
+    // every sample on its curve (model/sheet_creases.h). A closed curve's last point is not
+    // repeated; an open one goes on along its end segments.
+    struct Curve {
+        std::vector<Vec2> points;
+        bool closed = false;
+        bool operator==(const Curve& other) const {
+            return points == other.points && closed == other.closed;
+        }
+    };
+    std::vector<Curve> creaseCurves;
+    std::map<EdgeId, int> creaseCurveOf; // crease S-edge -> index into creaseCurves
 
     bool isFree() const { return shape == SheetShape::Free; }
     bool operator==(const SheetDomain& other) const;
@@ -58,6 +73,11 @@ int periodShift(const Vec2& near, const Vec2& p, const std::optional<Vec2>& peri
 // One boundary curve of a placed domain: a circle, or a closed polygon.
 struct DomainLoop {
     bool circle = false;
+    bool open = false; // a polygon whose last point does not join its first (a crease curve)
+    // A polygon standing for a smooth curve (a drawn crease curve): the normal blends along
+    // each side from the mean normals at its ends, so that the tangent-line condition does
+    // not jump where a point crosses a polygon vertex.
+    bool smooth = false;
     Vec2 centre;               // circle
     double radius = 0.0;       // circle
     std::vector<Vec2> polygon; // counter-clockwise for the outer loop, clockwise for holes

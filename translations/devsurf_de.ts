@@ -634,162 +634,167 @@
         <translation>Der Umriss des Bogens hat keine geschlossene Kontur, die eine Fläche umschließt.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="160"/>
+        <location filename="../app/text/problem_text.cpp" line="161"/>
+        <source>A crease curve of the sheet has too few points, a point that is not a finite number, or is not there.</source>
+        <translation>Eine Faltkurve des Bogens hat zu wenige Punkte, einen Punkt, der keine endliche Zahl ist, oder fehlt.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="164"/>
         <source>The sheet&apos;s sizes must be finite and greater than zero.</source>
         <translation>Die Maße des Bogens müssen endlich und größer als null sein.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="162"/>
+        <location filename="../app/text/problem_text.cpp" line="166"/>
         <source>Vertex %1 (of %2) has a position that is not a finite number.</source>
         <translation>Ecke %1 (von %2) hat eine Lage, die keine endliche Zahl ist.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="166"/>
+        <location filename="../app/text/problem_text.cpp" line="170"/>
         <source>Vertex %1 (of %2) lies %3 mm from the origin; coordinates beyond %4 mm (1 km) are not accepted.</source>
         <translation>Ecke %1 (von %2) liegt %3 mm vom Ursprung entfernt; Koordinaten jenseits von %4 mm (1 km) werden nicht angenommen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="171"/>
+        <location filename="../app/text/problem_text.cpp" line="175"/>
         <source>Edge %1 (a curve of %2) has a control point beyond %3 mm from the origin.</source>
         <translation>Kante %1 (eine Kurve von %2) hat einen Kontrollpunkt weiter als %3 mm vom Ursprung.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="175"/>
+        <location filename="../app/text/problem_text.cpp" line="179"/>
         <source>Edge %1 (a curve of %2) has zero length.</source>
         <translation>Kante %1 (eine Kurve von %2) hat die Länge null.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="177"/>
+        <location filename="../app/text/problem_text.cpp" line="181"/>
         <source>Edge %1 (a ruling of %2) has zero length.</source>
         <translation>Kante %1 (eine Erzeugende von %2) hat die Länge null.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="179"/>
+        <location filename="../app/text/problem_text.cpp" line="183"/>
         <source>Patch %1 has coincident vertices %2 and %3.</source>
         <translation>Flächenstück %1 hat zusammenfallende Ecken %2 und %3.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="184"/>
+        <location filename="../app/text/problem_text.cpp" line="188"/>
         <source>Patch %1 has zero area.</source>
         <translation>Flächenstück %1 hat den Flächeninhalt null.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="186"/>
+        <location filename="../app/text/problem_text.cpp" line="190"/>
         <source>Patch %1 is a %2; only an SRSR strip can be cut by a new crease.</source>
         <translation>Flächenstück %1 ist vom Typ „%2“; nur ein SRSR-Streifen kann durch einen neuen Falz geteilt werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="190"/>
+        <location filename="../app/text/problem_text.cpp" line="194"/>
         <source>The new crease cannot continue across ruling edge %1 into patch %2, a %3; a row of strips can only be cut where its rulings border SRSR strips, planar patches or the boundary.</source>
         <translation>Der neue Falz kann nicht über die Erzeugende %1 in das Flächenstück %2 (Typ „%3“) weiterlaufen; eine Reihe von Streifen kann nur geteilt werden, wo ihre Erzeugenden an SRSR-Streifen, ebene Flächenstücke oder den Rand grenzen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="197"/>
+        <location filename="../app/text/problem_text.cpp" line="201"/>
         <source>The row of strips through patch %1 closes on itself with its sides swapped, so it cannot be cut at one distance between its curves.</source>
         <translation>Die Reihe von Streifen durch Flächenstück %1 schließt sich mit vertauschten Seiten, daher kann sie nicht in einem Abstand zwischen ihren Kurven geteilt werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="201"/>
+        <location filename="../app/text/problem_text.cpp" line="205"/>
         <source>The new crease must lie strictly between the strip&apos;s two curves (0 &lt; t &lt; 1, not %1).</source>
         <translation>Der neue Falz muss echt zwischen den beiden Kurven des Streifens liegen (0 &lt; t &lt; 1, nicht %1).</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="205"/>
+        <location filename="../app/text/problem_text.cpp" line="209"/>
         <source>No edge was given to relabel.</source>
         <translation>Es wurde keine Kante angegeben, deren Kennzeichnung (R/S) geändert werden soll.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="207"/>
+        <location filename="../app/text/problem_text.cpp" line="211"/>
         <source>Edge %1 is not a spline curve.</source>
         <translation>Kante %1 ist keine Splinekurve.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="209"/>
+        <location filename="../app/text/problem_text.cpp" line="213"/>
         <source>Patch %1 is a %2; a ruling can only be added to a strip or a cone.</source>
         <translation>Flächenstück %1 ist vom Typ „%2“; eine Erzeugende kann nur einem Streifen oder Kegel hinzugefügt werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="213"/>
+        <location filename="../app/text/problem_text.cpp" line="217"/>
         <source>The curves of patch %1 have a single interval; refine them before adding a ruling.</source>
         <translation>Die Kurven von Flächenstück %1 haben nur ein Intervall; verfeinern Sie sie, bevor Sie eine Erzeugende hinzufügen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="217"/>
+        <location filename="../app/text/problem_text.cpp" line="221"/>
         <source>A ruling can only be added at an interior breakpoint i/%1 of the curves of patch %2 (1 ≤ i ≤ %3, not %4); refine the curves for finer positions.</source>
         <translation>Eine Erzeugende kann nur an einem inneren Knoten i/%1 der Kurven von Flächenstück %2 hinzugefügt werden (1 ≤ i ≤ %3, nicht %4); verfeinern Sie die Kurven für feinere Positionen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="224"/>
+        <location filename="../app/text/problem_text.cpp" line="228"/>
         <source>The curves connected to patch %1 meet themselves reversed, so no ruling position is consistent across them.</source>
         <translation>Die mit Flächenstück %1 verbundenen Kurven treffen sich selbst umgekehrt, daher passt keine Position einer Erzeugenden zu allen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="228"/>
+        <location filename="../app/text/problem_text.cpp" line="232"/>
         <source>Curve %1 uses a different spline space from the curves of patch %2.</source>
         <translation>Kurve %1 hat einen anderen Splineraum als die Kurven von Flächenstück %2.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="232"/>
+        <location filename="../app/text/problem_text.cpp" line="236"/>
         <source>Refining needs a factor of at least 2, not %1.</source>
         <translation>Das Verfeinern braucht einen Faktor von mindestens 2, nicht %1.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="234"/>
+        <location filename="../app/text/problem_text.cpp" line="238"/>
         <source>The curves of edge %1 already have %2 intervals; refining them beyond %3 is not supported.</source>
         <translation>Die Kurven von Kante %1 haben schon %2 Intervalle; mehr als %3 werden nicht unterstützt.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="240"/>
+        <location filename="../app/text/problem_text.cpp" line="244"/>
         <source>No vertex was given to move.</source>
         <translation>Es wurde keine Ecke zum Verschieben angegeben.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="242"/>
+        <location filename="../app/text/problem_text.cpp" line="246"/>
         <source>A rotation needs a finite axis point, a non-zero axis direction and a finite angle.</source>
         <translation>Eine Drehung braucht einen endlichen Achsenpunkt, eine Achsenrichtung ungleich null und einen endlichen Winkel.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="249"/>
+        <location filename="../app/text/problem_text.cpp" line="253"/>
         <source>There is no example called “%1”; the examples are %2.</source>
         <translation>Es gibt kein Beispiel namens „%1“; die Beispiele sind %2.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="253"/>
+        <location filename="../app/text/problem_text.cpp" line="257"/>
         <source>The size of the example “%1” must be between %2 and %3, not %4.</source>
         <translation>Die Größe des Beispiels „%1“ muss zwischen %2 und %3 liegen, nicht %4.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="259"/>
+        <location filename="../app/text/problem_text.cpp" line="263"/>
         <source>The number of samples per spline interval must be between 1 and %1, not %2.</source>
         <translation>Die Zahl der Abtastpunkte je Splineintervall muss zwischen 1 und %1 liegen, nicht %2.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="263"/>
+        <location filename="../app/text/problem_text.cpp" line="267"/>
         <source>Patch %1 is not a strip or a cone.</source>
         <translation>Flächenstück %1 ist weder ein Streifen noch ein Kegel.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="265"/>
+        <location filename="../app/text/problem_text.cpp" line="269"/>
         <source>The two shapes do not have the same patches.</source>
         <translation>Die beiden Formen haben nicht dieselben Flächenstücke.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="267"/>
+        <location filename="../app/text/problem_text.cpp" line="271"/>
         <source>Edge %1 has a crease condition but is a boundary curve, not a crease.</source>
         <translation>Kante %1 hat eine Falzbedingung, ist aber eine Randkurve, kein Falz.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="270"/>
+        <location filename="../app/text/problem_text.cpp" line="274"/>
         <source>Edge %1 has a crease condition but a cone or planar patch lies beside it; crease conditions need a strip on either side.</source>
         <translation>Kante %1 hat eine Falzbedingung, aber neben ihr liegt ein Kegel oder ein ebenes Flächenstück; Falzbedingungen brauchen auf beiden Seiten einen Streifen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="275"/>
+        <location filename="../app/text/problem_text.cpp" line="279"/>
         <source>Edge %1 has a crease condition but its curve is of degree %2; a crease condition needs degree 2 or more.</source>
         <translation>Kante %1 hat eine Falzbedingung, aber ihre Kurve hat den Grad %2; eine Falzbedingung braucht Grad 2 oder mehr.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/text/problem_text.cpp" line="281"/>
+        <location filename="../app/text/problem_text.cpp" line="285"/>
         <source>The surface is not one sheet: it has %n separate part(s).</source>
         <translation>
             <numerusform>Die Fläche ist kein einzelner Bogen: sie hat %n getrennten Teil.</numerusform>
@@ -797,57 +802,57 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="284"/>
+        <location filename="../app/text/problem_text.cpp" line="288"/>
         <source>The surface is not one flat sheet: its unfolding misses closing up by %1 mm.</source>
         <translation>Die Fläche ist kein einzelner ebener Bogen: ihre Abwicklung schließt sich um %1 mm nicht.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="287"/>
+        <location filename="../app/text/problem_text.cpp" line="291"/>
         <source>Edge %1 cannot be welded: a weld joins two boundary edges of the same kind (two curves or two rulings) of two different patches.</source>
         <translation>Kante %1 kann nicht verschweißt werden: eine Verschweißung verbindet zwei Randkanten derselben Art (zwei Kurven oder zwei Erzeugende) zweier verschiedener Flächenstücke.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="291"/>
+        <location filename="../app/text/problem_text.cpp" line="295"/>
         <source>Edges %1 and %2 lie up to %3 mm apart, more than the %4 mm within which they can be welded.</source>
         <translation>Die Kanten %1 und %2 liegen bis zu %3 mm auseinander, mehr als die %4 mm, innerhalb derer sie verschweißt werden können.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="297"/>
+        <location filename="../app/text/problem_text.cpp" line="301"/>
         <source>The strips beside edge %1 cannot be merged: it must be a ruling between two strips whose curves are boundary curves of the same degree and smoothness, and its ends may belong to no other patch.</source>
         <translation>Die Streifen neben Kante %1 können nicht zusammengeführt werden: sie muss eine Erzeugende zwischen zwei Streifen sein, deren Kurven Randkurven desselben Grades und derselben Glattheit sind, und ihre Enden dürfen zu keinem anderen Flächenstück gehören.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="304"/>
+        <location filename="../app/text/problem_text.cpp" line="308"/>
         <source>DevSurf met an internal error (%1). Please report it.</source>
         <translation>DevSurf ist auf einen internen Fehler gestoßen (%1). Bitte melden Sie ihn.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="322"/>
+        <location filename="../app/text/problem_text.cpp" line="326"/>
         <source>The sheet size must be positive; the pieces are laid out side by side.</source>
         <translation>Die Bogengröße muss positiv sein; die Teile werden nebeneinander gelegt.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="324"/>
+        <location filename="../app/text/problem_text.cpp" line="328"/>
         <source>%1 is not valid and has no pattern: %2</source>
         <translation>%1 ist ungültig und hat kein Schnittmuster: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="327"/>
+        <location filename="../app/text/problem_text.cpp" line="331"/>
         <source>%1 could not be developed: %2</source>
         <translation>%1 konnte nicht abgewickelt werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="330"/>
+        <location filename="../app/text/problem_text.cpp" line="334"/>
         <source>Piece %1 (%2) overlaps itself at patches %3 and cannot be cut from one sheet.</source>
         <translation>Teil %1 (%2) überlappt sich selbst bei den Flächenstücken %3 und kann nicht aus einem Bogen geschnitten werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="333"/>
+        <location filename="../app/text/problem_text.cpp" line="337"/>
         <source>Pieces %1 (patches %2) and %3 (patches %4) overlap on sheet %5.</source>
         <translation>Die Teile %1 (Flächenstücke %2) und %3 (Flächenstücke %4) überlappen sich auf Bogen %5.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="338"/>
+        <location filename="../app/text/problem_text.cpp" line="342"/>
         <source>Piece %1 (%2) measures %3 × %4 mm and does not fit on the %5 × %6 mm sheet with a %7 mm gap.</source>
         <translation>Teil %1 (%2) misst %3 × %4 mm und passt mit %7 mm Abstand nicht auf den Bogen von %5 × %6 mm.</translation>
     </message>
@@ -2205,52 +2210,52 @@
 <context>
     <name>devsurf::app::JoinReaction</name>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="43"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="41"/>
         <source>Join Surfaces</source>
         <translation>Flächen verbinden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="83"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="81"/>
         <source>Join surfaces into one composite: wait until the solver has finished, or cancel it (Esc).</source>
         <translation>Flächen zu einer zusammengesetzten Fläche verbinden: warten, bis der Löser fertig ist, oder ihn abbrechen (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="85"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="83"/>
         <source>Join the selected surfaces (all when fewer than two are selected) into one composite: boundary curves or rulings that face each other become shared edges, held to the reference shapes where there are any; one undo step.</source>
         <translation>Die ausgewählten Flächen (alle, wenn weniger als zwei ausgewählt sind) zu einer zusammengesetzten Fläche verbinden: einander gegenüberliegende Randkurven oder Erzeugende werden gemeinsame Kanten, an den Referenzformen gehalten, wo es welche gibt; ein Rückgängig-Schritt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="110"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="106"/>
         <source>Preparing the join: thinning the reference shapes…</source>
         <translation>Verbinden wird vorbereitet: Referenzformen ausdünnen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="144"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="140"/>
         <source>Join cancelled; the design is unchanged.</source>
         <translation>Verbinden abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="148"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="144"/>
         <source>Join discarded: the design changed meanwhile; it is unchanged.</source>
         <translation>Verbinden verworfen: der Entwurf hat sich inzwischen geändert; er ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="81"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="79"/>
         <source>Join surfaces into one composite where their boundary edges face each other: the design needs at least two surfaces.</source>
         <translation>Flächen zu einer zusammengesetzten Fläche verbinden, wo ihre Randkanten einander gegenüberliegen: der Entwurf braucht mindestens zwei Flächen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="137"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="133"/>
         <source>The reference shapes could not be thinned for the join (%1); nothing was joined.</source>
         <translation>Die Referenzformen konnten für das Verbinden nicht ausgedünnt werden (%1); nichts wurde verbunden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="139"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="135"/>
         <source>Cannot join the surfaces</source>
         <translation>Die Flächen können nicht verbunden werden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="178"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="174"/>
         <source>No two of the %n surface(s) have boundary edges facing each other (within %1 % of their length); nothing was joined.</source>
         <translation>
             <numerusform>Die %n Fläche hat keine Randkanten, die einer anderen gegenüberliegen (innerhalb von %1 % ihrer Länge); nichts wurde verbunden.</numerusform>
@@ -2258,12 +2263,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="196"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="192"/>
         <source>%1 failed: %2 The design is unchanged.</source>
         <translation>%1 fehlgeschlagen: %2 Der Entwurf ist unverändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="205"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="201"/>
         <source>Joined %n surface(s) into one: </source>
         <translation>
             <numerusform>%n Fläche zu einer verbunden: </numerusform>
@@ -2271,7 +2276,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="206"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="202"/>
         <source>%1 of %n pair(s) of facing edges welded</source>
         <translation>
             <numerusform>%1 von %n Paar gegenüberliegender Kanten verschweißt</numerusform>
@@ -2279,7 +2284,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="207"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="203"/>
         <source>, %n part(s) not connected</source>
         <translation>
             <numerusform>, %n Teil nicht verbunden</numerusform>
@@ -2287,22 +2292,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="210"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="206"/>
         <source>largest constraint residual %1, within the tolerance.</source>
         <translation>größtes Bedingungsresiduum %1, innerhalb der Toleranz.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="211"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="207"/>
         <source>largest constraint residual %1, not within the tolerance (Tools ▸ Solve may help).</source>
         <translation>größtes Bedingungsresiduum %1, nicht innerhalb der Toleranz (Werkzeuge ▸ Lösen kann helfen).</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="215"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="211"/>
         <source>Not welded: %1</source>
         <translation>Nicht verschweißt: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="219"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="215"/>
         <source>%n surface(s) facing no other were left as they are.</source>
         <translation>
             <numerusform>%n Fläche, die keiner anderen gegenüberliegt, blieb unverändert.</numerusform>
@@ -2310,7 +2315,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="224"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="220"/>
         <source>The surfaces were held to the reference shape meanwhile.</source>
         <translation>Die Flächen wurden dabei an der Referenzform gehalten.</translation>
     </message>

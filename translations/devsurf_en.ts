@@ -61,7 +61,7 @@
 <context>
     <name>ProblemText</name>
     <message numerus="yes">
-        <location filename="../app/text/problem_text.cpp" line="281"/>
+        <location filename="../app/text/problem_text.cpp" line="285"/>
         <source>The surface is not one sheet: it has %n separate part(s).</source>
         <translation>
             <numerusform>The surface is not one sheet: it has %n separate part.</numerusform>
@@ -221,7 +221,7 @@
 <context>
     <name>devsurf::app::JoinReaction</name>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="178"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="174"/>
         <source>No two of the %n surface(s) have boundary edges facing each other (within %1 % of their length); nothing was joined.</source>
         <translation>
             <numerusform>The %n surface has no boundary edges facing another (within %1 % of their length); nothing was joined.</numerusform>
@@ -229,7 +229,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="205"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="201"/>
         <source>Joined %n surface(s) into one: </source>
         <translation>
             <numerusform>Joined %n surface into one: </numerusform>
@@ -237,7 +237,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="206"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="202"/>
         <source>%1 of %n pair(s) of facing edges welded</source>
         <translation>
             <numerusform>%1 of %n pair of facing edges welded</numerusform>
@@ -245,7 +245,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="207"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="203"/>
         <source>, %n part(s) not connected</source>
         <translation>
             <numerusform>, %n part not connected</numerusform>
@@ -253,7 +253,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="219"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="215"/>
         <source>%n surface(s) facing no other were left as they are.</source>
         <translation>
             <numerusform>%n surface facing no other was left as it is.</numerusform>

@@ -628,219 +628,224 @@
         <translation>シートの輪郭に面積を囲む閉じたループがありません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="160"/>
+        <location filename="../app/text/problem_text.cpp" line="161"/>
+        <source>A crease curve of the sheet has too few points, a point that is not a finite number, or is not there.</source>
+        <translation>シートの折り線カーブの点が少なすぎるか、有限でない点があるか、存在しません。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="164"/>
         <source>The sheet&apos;s sizes must be finite and greater than zero.</source>
         <translation>シートの寸法は有限で 0 より大きくなければなりません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="162"/>
+        <location filename="../app/text/problem_text.cpp" line="166"/>
         <source>Vertex %1 (of %2) has a position that is not a finite number.</source>
         <translation>頂点 %1（%2）の位置が有限の数ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="166"/>
+        <location filename="../app/text/problem_text.cpp" line="170"/>
         <source>Vertex %1 (of %2) lies %3 mm from the origin; coordinates beyond %4 mm (1 km) are not accepted.</source>
         <translation>頂点 %1（%2）は原点から %3 mm 離れています。%4 mm (1 km) を超える座標は受け付けません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="171"/>
+        <location filename="../app/text/problem_text.cpp" line="175"/>
         <source>Edge %1 (a curve of %2) has a control point beyond %3 mm from the origin.</source>
         <translation>辺 %1（%2 の曲線）に原点から %3 mm より遠い制御点があります。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="175"/>
+        <location filename="../app/text/problem_text.cpp" line="179"/>
         <source>Edge %1 (a curve of %2) has zero length.</source>
         <translation>辺 %1（%2 の曲線）の長さがゼロです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="177"/>
+        <location filename="../app/text/problem_text.cpp" line="181"/>
         <source>Edge %1 (a ruling of %2) has zero length.</source>
         <translation>辺 %1（%2 の母線）の長さがゼロです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="179"/>
+        <location filename="../app/text/problem_text.cpp" line="183"/>
         <source>Patch %1 has coincident vertices %2 and %3.</source>
         <translation>パッチ %1 の頂点 %2 と %3 が一致しています。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="184"/>
+        <location filename="../app/text/problem_text.cpp" line="188"/>
         <source>Patch %1 has zero area.</source>
         <translation>パッチ %1 の面積がゼロです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="186"/>
+        <location filename="../app/text/problem_text.cpp" line="190"/>
         <source>Patch %1 is a %2; only an SRSR strip can be cut by a new crease.</source>
         <translation>パッチ %1 は%2です。新しい折り線で分割できるのは SRSR ストリップだけです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="190"/>
+        <location filename="../app/text/problem_text.cpp" line="194"/>
         <source>The new crease cannot continue across ruling edge %1 into patch %2, a %3; a row of strips can only be cut where its rulings border SRSR strips, planar patches or the boundary.</source>
         <translation>新しい折り線は母線の辺 %1 を越えてパッチ %2（%3）へ続けられません。ストリップの列を分割できるのは、その母線が SRSR ストリップ、平面パッチまたは境界に接する場所だけです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="197"/>
+        <location filename="../app/text/problem_text.cpp" line="201"/>
         <source>The row of strips through patch %1 closes on itself with its sides swapped, so it cannot be cut at one distance between its curves.</source>
         <translation>パッチ %1 を通るストリップの列は左右が入れ替わって閉じているため、曲線間の一定の位置で分割できません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="201"/>
+        <location filename="../app/text/problem_text.cpp" line="205"/>
         <source>The new crease must lie strictly between the strip&apos;s two curves (0 &lt; t &lt; 1, not %1).</source>
         <translation>新しい折り線はストリップの 2 本の曲線の間になければなりません（0 &lt; t &lt; 1、%1 ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="205"/>
+        <location filename="../app/text/problem_text.cpp" line="209"/>
         <source>No edge was given to relabel.</source>
         <translation>ラベルを変更する辺が指定されていません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="207"/>
+        <location filename="../app/text/problem_text.cpp" line="211"/>
         <source>Edge %1 is not a spline curve.</source>
         <translation>辺 %1 はスプライン曲線ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="209"/>
+        <location filename="../app/text/problem_text.cpp" line="213"/>
         <source>Patch %1 is a %2; a ruling can only be added to a strip or a cone.</source>
         <translation>パッチ %1 は%2です。母線を追加できるのはストリップか錐面だけです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="213"/>
+        <location filename="../app/text/problem_text.cpp" line="217"/>
         <source>The curves of patch %1 have a single interval; refine them before adding a ruling.</source>
         <translation>パッチ %1 の曲線は区間が 1 つだけです。母線を追加する前に細分してください。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="217"/>
+        <location filename="../app/text/problem_text.cpp" line="221"/>
         <source>A ruling can only be added at an interior breakpoint i/%1 of the curves of patch %2 (1 ≤ i ≤ %3, not %4); refine the curves for finer positions.</source>
         <translation>母線を追加できるのはパッチ %2 の曲線の内部の区切り点 i/%1 だけです（1 ≤ i ≤ %3、%4 ではなく）。細かい位置には曲線を細分してください。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="224"/>
+        <location filename="../app/text/problem_text.cpp" line="228"/>
         <source>The curves connected to patch %1 meet themselves reversed, so no ruling position is consistent across them.</source>
         <translation>パッチ %1 につながる曲線は逆向きに自分自身と出会うため、すべてに合う母線の位置がありません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="228"/>
+        <location filename="../app/text/problem_text.cpp" line="232"/>
         <source>Curve %1 uses a different spline space from the curves of patch %2.</source>
         <translation>曲線 %1 のスプライン空間はパッチ %2 の曲線と異なります。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="232"/>
+        <location filename="../app/text/problem_text.cpp" line="236"/>
         <source>Refining needs a factor of at least 2, not %1.</source>
         <translation>細分には 2 以上の倍率が必要です（%1 ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="234"/>
+        <location filename="../app/text/problem_text.cpp" line="238"/>
         <source>The curves of edge %1 already have %2 intervals; refining them beyond %3 is not supported.</source>
         <translation>辺 %1 の曲線はすでに区間数 %2 です。%3 を超える細分には対応していません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="240"/>
+        <location filename="../app/text/problem_text.cpp" line="244"/>
         <source>No vertex was given to move.</source>
         <translation>移動する頂点が指定されていません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="242"/>
+        <location filename="../app/text/problem_text.cpp" line="246"/>
         <source>A rotation needs a finite axis point, a non-zero axis direction and a finite angle.</source>
         <translation>回転には有限の軸上の点、ゼロでない軸方向、有限の角度が必要です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="249"/>
+        <location filename="../app/text/problem_text.cpp" line="253"/>
         <source>There is no example called “%1”; the examples are %2.</source>
         <translation>「%1」という例はありません。例は %2 です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="253"/>
+        <location filename="../app/text/problem_text.cpp" line="257"/>
         <source>The size of the example “%1” must be between %2 and %3, not %4.</source>
         <translation>例「%1」のサイズは %2 から %3 の間でなければなりません（%4 ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="259"/>
+        <location filename="../app/text/problem_text.cpp" line="263"/>
         <source>The number of samples per spline interval must be between 1 and %1, not %2.</source>
         <translation>スプライン区間あたりのサンプル数は 1 から %1 の間でなければなりません（%2 ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="263"/>
+        <location filename="../app/text/problem_text.cpp" line="267"/>
         <source>Patch %1 is not a strip or a cone.</source>
         <translation>パッチ %1 はストリップでも錐面でもありません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="265"/>
+        <location filename="../app/text/problem_text.cpp" line="269"/>
         <source>The two shapes do not have the same patches.</source>
         <translation>2 つの形状のパッチが一致しません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="267"/>
+        <location filename="../app/text/problem_text.cpp" line="271"/>
         <source>Edge %1 has a crease condition but is a boundary curve, not a crease.</source>
         <translation>辺 %1 には折り線の条件がありますが、折り線ではなく境界曲線です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="270"/>
+        <location filename="../app/text/problem_text.cpp" line="274"/>
         <source>Edge %1 has a crease condition but a cone or planar patch lies beside it; crease conditions need a strip on either side.</source>
         <translation>辺 %1 には折り線の条件がありますが、隣に錐面または平面パッチがあります。折り線の条件には両側にストリップが必要です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="275"/>
+        <location filename="../app/text/problem_text.cpp" line="279"/>
         <source>Edge %1 has a crease condition but its curve is of degree %2; a crease condition needs degree 2 or more.</source>
         <translation>辺 %1 には折り線の条件がありますが、曲線の次数が %2 です。折り線の条件には次数 2 以上が必要です。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/text/problem_text.cpp" line="281"/>
+        <location filename="../app/text/problem_text.cpp" line="285"/>
         <source>The surface is not one sheet: it has %n separate part(s).</source>
         <translation>
             <numerusform>曲面は 1 枚のシートではありません: %n 個の部分に分かれています。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="284"/>
+        <location filename="../app/text/problem_text.cpp" line="288"/>
         <source>The surface is not one flat sheet: its unfolding misses closing up by %1 mm.</source>
         <translation>曲面は 1 枚の平らなシートではありません: 展開図が %1 mm 閉じません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="287"/>
+        <location filename="../app/text/problem_text.cpp" line="291"/>
         <source>Edge %1 cannot be welded: a weld joins two boundary edges of the same kind (two curves or two rulings) of two different patches.</source>
         <translation>辺 %1 は溶接できません。溶接できるのは、異なる二つのパッチの同じ種類（二本の曲線または二本の母線）の境界辺どうしです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="291"/>
+        <location filename="../app/text/problem_text.cpp" line="295"/>
         <source>Edges %1 and %2 lie up to %3 mm apart, more than the %4 mm within which they can be welded.</source>
         <translation>辺 %1 と %2 は最大 %3 mm 離れており、溶接できる %4 mm を超えています。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="297"/>
+        <location filename="../app/text/problem_text.cpp" line="301"/>
         <source>The strips beside edge %1 cannot be merged: it must be a ruling between two strips whose curves are boundary curves of the same degree and smoothness, and its ends may belong to no other patch.</source>
         <translation>辺 %1 の両側のストリップは結合できません。辺は、曲線が同じ次数と滑らかさの境界曲線である二つのストリップの間の母線でなければならず、その端点は他のパッチに属してはいけません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="304"/>
+        <location filename="../app/text/problem_text.cpp" line="308"/>
         <source>DevSurf met an internal error (%1). Please report it.</source>
         <translation>DevSurf で内部エラーが発生しました (%1)。報告してください。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="322"/>
+        <location filename="../app/text/problem_text.cpp" line="326"/>
         <source>The sheet size must be positive; the pieces are laid out side by side.</source>
         <translation>シートの大きさは正でなければなりません。ピースは横に並べて配置します。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="324"/>
+        <location filename="../app/text/problem_text.cpp" line="328"/>
         <source>%1 is not valid and has no pattern: %2</source>
         <translation>%1 は無効で型紙がありません: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="327"/>
+        <location filename="../app/text/problem_text.cpp" line="331"/>
         <source>%1 could not be developed: %2</source>
         <translation>%1 を展開できませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="330"/>
+        <location filename="../app/text/problem_text.cpp" line="334"/>
         <source>Piece %1 (%2) overlaps itself at patches %3 and cannot be cut from one sheet.</source>
         <translation>ピース %1（%2）はパッチ %3 で自分自身と重なっており、1 枚のシートから切り出せません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="333"/>
+        <location filename="../app/text/problem_text.cpp" line="337"/>
         <source>Pieces %1 (patches %2) and %3 (patches %4) overlap on sheet %5.</source>
         <translation>ピース %1（パッチ %2）と %3（パッチ %4）がシート %5 上で重なっています。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="338"/>
+        <location filename="../app/text/problem_text.cpp" line="342"/>
         <source>Piece %1 (%2) measures %3 × %4 mm and does not fit on the %5 × %6 mm sheet with a %7 mm gap.</source>
         <translation>ピース %1（%2）は %3 × %4 mm で、%7 mm の間隔をとると %5 × %6 mm のシートに収まりません。</translation>
     </message>
@@ -2182,107 +2187,107 @@
 <context>
     <name>devsurf::app::JoinReaction</name>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="43"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="41"/>
         <source>Join Surfaces</source>
         <translation>サーフェスを結合</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="83"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="81"/>
         <source>Join surfaces into one composite: wait until the solver has finished, or cancel it (Esc).</source>
         <translation>サーフェスを 1 つの複合サーフェスに結合します: ソルバーの終了を待つか、中止してください (Esc)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="85"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="83"/>
         <source>Join the selected surfaces (all when fewer than two are selected) into one composite: boundary curves or rulings that face each other become shared edges, held to the reference shapes where there are any; one undo step.</source>
         <translation>選択したサーフェス (選択が 2 つ未満ならすべて) を 1 つの複合サーフェスに結合します: 向かい合う境界曲線または母線が共有エッジになり、参照形状があればそれに保持されます。元に戻す 1 ステップです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="110"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="106"/>
         <source>Preparing the join: thinning the reference shapes…</source>
         <translation>結合を準備中: 参照形状を間引いています…</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="144"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="140"/>
         <source>Join cancelled; the design is unchanged.</source>
         <translation>結合を中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="148"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="144"/>
         <source>Join discarded: the design changed meanwhile; it is unchanged.</source>
         <translation>結合を破棄しました: その間にデザインが変更されました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="81"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="79"/>
         <source>Join surfaces into one composite where their boundary edges face each other: the design needs at least two surfaces.</source>
         <translation>境界エッジが向かい合う箇所でサーフェスを 1 つの複合サーフェスに結合します: デザインに 2 つ以上のサーフェスが必要です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="137"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="133"/>
         <source>The reference shapes could not be thinned for the join (%1); nothing was joined.</source>
         <translation>結合のために参照形状を間引けませんでした (%1)。何も結合されませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="139"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="135"/>
         <source>Cannot join the surfaces</source>
         <translation>サーフェスを結合できません</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="178"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="174"/>
         <source>No two of the %n surface(s) have boundary edges facing each other (within %1 % of their length); nothing was joined.</source>
         <translation>
             <numerusform>%n 個のサーフェスには互いに向かい合う境界エッジがありません (長さの %1 % 以内)。何も結合されませんでした。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="196"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="192"/>
         <source>%1 failed: %2 The design is unchanged.</source>
         <translation>%1 に失敗しました: %2 デザインは変更されていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="205"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="201"/>
         <source>Joined %n surface(s) into one: </source>
         <translation>
             <numerusform>%n 個のサーフェスを 1 つに結合しました: </numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="206"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="202"/>
         <source>%1 of %n pair(s) of facing edges welded</source>
         <translation>
             <numerusform>向かい合うエッジ %n 組のうち %1 組を溶接</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="207"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="203"/>
         <source>, %n part(s) not connected</source>
         <translation>
             <numerusform>、%n 個の部分は未接続</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="210"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="206"/>
         <source>largest constraint residual %1, within the tolerance.</source>
         <translation>最大の制約残差 %1、許容範囲内。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="211"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="207"/>
         <source>largest constraint residual %1, not within the tolerance (Tools ▸ Solve may help).</source>
         <translation>最大の制約残差 %1、許容範囲外 (ツール ▸ ソルブが役立つ場合があります)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="215"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="211"/>
         <source>Not welded: %1</source>
         <translation>溶接されていません: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="219"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="215"/>
         <source>%n surface(s) facing no other were left as they are.</source>
         <translation>
             <numerusform>他と向かい合わない %n 個のサーフェスはそのままにしました。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/join_reaction.cpp" line="224"/>
+        <location filename="../app/gui/reactions/join_reaction.cpp" line="220"/>
         <source>The surfaces were held to the reference shape meanwhile.</source>
         <translation>その間、サーフェスは参照形状に保持されました。</translation>
     </message>

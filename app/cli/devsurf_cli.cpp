@@ -151,6 +151,11 @@ int commandInfo(const SubcommandArguments& args) {
                           : "held (" + std::to_string(surface.development().size()) +
                                 " development points)")
                   << sheetShapeText(surface.sheetDomain()) << "\n";
+        const model::SheetDomain& sheet = surface.sheetDomain();
+        if (!sheet.creaseCurves.empty()) {
+            std::cout << "  Crease curves: " << sheet.creaseCurves.size() << ", holding "
+                      << counted(sheet.creaseCurveOf.size(), "crease", "creases") << "\n";
+        }
     }
     if (listing.vertices || listing.edges) {
         app::printEntities(project, listing, std::cout);

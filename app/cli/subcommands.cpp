@@ -48,7 +48,8 @@ const std::vector<SubcommandSpec>& subcommands() {
           kOutputProject}},
         {"sheet",
          "sheet FILE (--free | --rectangle W,H | --disk R | --annulus R1,R2 |\n"
-         "      --outline FILE.dxf|FILE.svg | --off) [--surface K] -o OUT.devsurf",
+         "      --outline FILE.dxf|FILE.svg | --off) [--creases FILE.dxf|FILE.svg]\n"
+         "      [--surface K] -o OUT.devsurf",
          "Hold the sheet: the surface keeps its development, and every solve\n"
          "and drag keeps it isometric to that sheet (a dragged vertex lags\n"
          "where the sheet cannot follow, instead of the sheet stretching).\n"
@@ -60,13 +61,21 @@ const std::vector<SubcommandSpec>& subcommands() {
          "sheet, its boundary on the sheet's, its corners at the sheet's; the\n"
          "next solve moves a development that does not fit yet onto the\n"
          "sheet. --off lets the sheet stretch again. Only a surface that\n"
-         "unfolds into one flat sheet can hold it. Sizes are in mm.",
+         "unfolds into one flat sheet can hold it. Sizes are in mm.\n"
+         "--creases draws the crease pattern in the sheet: every curve of that\n"
+         "file (open or closed, seen from above, in the sheet's frame: the\n"
+         "rectangle from 0,0 to W,H, circles centred at 0,0, an outline's own\n"
+         "coordinates) holds the creases whose development lies near it (on\n"
+         "average within a tenth of the crease's length), every sample of\n"
+         "such a crease on the curve's tangent line; the next solve moves them\n"
+         "onto their curves.",
          {{"free", "", "Hold the sheet as it unfolds, its boundary free."},
           {"rectangle", "W,H", "Confine it to a W x H rectangle."},
           {"disk", "R", "Confine it to a disk of radius R."},
           {"annulus", "R1,R2", "Confine it to an annulus between radii R1 and R2."},
           {"outline", "FILE", "Confine it to the closed curves of a DXF, SVG, STEP or IGES file."},
           {"off", "", "No longer hold the sheet."},
+          {"creases", "FILE", "Confine creases to the curves of a DXF, SVG, STEP or IGES file."},
           kSurface,
           kOutputProject}},
         {"crease",

@@ -10,6 +10,7 @@
 #include "model/creases.h"
 #include "model/development.h"
 #include "model/sampled_mesh.h"
+#include "model/sheet_creases.h"
 #include "model/sheet_domain.h"
 #include "model/strip.h"
 
@@ -218,6 +219,23 @@ std::vector<std::vector<model::Vec2>> outlineFrom(const std::string& path) {
     return loops;
 }
 
+// Every curve of a DXF, SVG, STEP or IGES file seen from above, moved by `shift` into the
+// sheet's frame, as crease curves. InputError if it has none.
+std::vector<model::SheetDomain::Curve> creaseCurvesFrom(const std::string& path,
+                                                        const model::Vec2& shift) {
+    io::CurveImportOptions options;
+    options.tolerance = model::kCreaseCurveTolerance;
+    const io::CurveImportResult read = io::importCurveFile(QString::fromStdString(path), options);
+    if (read.error) {
+        throw InputError(curveImportSentence(*read.error, path));
+    }
+    std::vector<model::SheetDomain::Curve> curves = model::sheetCurvesFromAbove(read.curves, shift);
+    if (curves.empty()) {
+        throw InputError("'" + path + "' holds no curve of two points or more to hold creases.");
+    }
+    return curves;
+}
+
 // The sheet asked for on the command line: free (nullopt for --off) or a shape's sizes.
 std::optional<model::SheetDomain> requestedSheet(const SubcommandArguments& args) {
     const char* const options[] = {"free", "rectangle", "disk", "annulus", "outline", "off"};
@@ -306,7 +324,27 @@ int runSheetCommand(const SubcommandArguments& args) {
         }
         requested = surface.sheetDomain();
     }
-    const model::SheetDomain domain = model::placeDomain(*requested, mesh, surface.development());
+    model::SheetDomain domain = model::placeDomain(*requested, mesh, surface.development());
+    std::size_t creases = 0;
+    if (args.isSet("creases")) {
+        if (domain.isFree() || domain.shape == model::SheetShape::Cylinder) {
+            throw UsageError{"--creases needs a sheet of a shape: --rectangle, --disk, --annulus "
+                             "or --outline"};
+        }
+        // A rectangle is drawn from its corner at 0,0; the sheet's frame has its centre there.
+        const model::Vec2 shift = domain.shape == model::SheetShape::Rectangle
+                                      ? model::Vec2(-0.5 * domain.width, -0.5 * domain.height)
+                                      : model::Vec2();
+        const std::string path = *args.value("creases");
+        domain.creaseCurves = creaseCurvesFrom(path, shift);
+        domain.creaseCurveOf =
+            model::assignCreasesToCurves(domain, surface, mesh, surface.development());
+        creases = domain.creaseCurveOf.size();
+        if (creases == 0) {
+            throw InputError("no crease of '" + surface.name() + "' lies near a curve of '" + path +
+                             "' (within a tenth of its length, where the sheet is placed)");
+        }
+    }
     surface.setSheetDomain(domain);
     writeProject(project, output);
     std::cout << "Wrote " << output << " ('" << surface.name()
@@ -323,11 +361,23 @@ int runSheetCommand(const SubcommandArguments& args) {
     const double area = model::developedArea(mesh, surface.development());
     std::cout << "confined to the sheet; its boundary is " << millimetres(gap)
               << " from the sheet's)\n";
+    double creaseGap = 0.0;
+    if (creases > 0) {
+        std::set<int> used;
+        for (const auto& [edge, curve] : domain.creaseCurveOf) {
+            used.insert(curve);
+        }
+        creaseGap = model::largestCreaseCurveGap(domain, mesh, surface.development());
+        std::cout << creases << (creases == 1 ? " crease" : " creases") << " held on "
+                  << used.size() << " of " << domain.creaseCurves.size()
+                  << " crease curves; the farthest of their points is " << millimetres(creaseGap)
+                  << " from its curve.\n";
+    }
     if (area > model::domainArea(domain) * (1.0 + 1e-9)) {
         std::cout << "Note: the development (" << squareMillimetres(area)
                   << ") is larger than the sheet (" << squareMillimetres(model::domainArea(domain))
                   << "): no solve can fold the design from it without cutting.\n";
-    } else if (gap > 1e-6) {
+    } else if (gap > 1e-6 || creaseGap > 1e-6) {
         std::cout << "The next solve moves the development onto the sheet.\n";
     }
     return 0;

@@ -157,6 +157,10 @@ QString ProblemText::of(const model::Problem& p) {
         if (p.count == 3) {
             return tr("The sheet's outline has no closed loop enclosing an area.");
         }
+        if (p.count == 4) {
+            return tr("A crease curve of the sheet has too few points, a point that is not a "
+                      "finite number, or is not there.");
+        }
         return tr("The sheet's sizes must be finite and greater than zero.");
     case ProblemCode::PositionNotFinite:
         return tr("Vertex %1 (of %2) has a position that is not a finite number.")

@@ -1,8 +1,10 @@
 #include "domain_terms.h"
 
+#include "model/sheet_creases.h"
 #include "solver/core/linear_term.h"
 
 #include <memory>
+#include <set>
 
 namespace devsurf::solver {
 
@@ -47,10 +49,26 @@ void addDomain(const model::SheetDomain& domain, const DevelopmentVariables& var
     const model::Development start = variables.read(state);
     const model::DomainAssignment held =
         model::assignToDomain(domain, variables.mesh, start.vertices);
-    auto boundary = std::make_unique<DomainBoundaryTerm>(model::domainLoops(domain),
-                                                         variables.origin, variables.scale);
+    // The crease curves follow the boundary loops, each crease sample on the tangent line of
+    // its curve like a boundary vertex on its loop; a vertex fixed at a corner stays fixed.
+    std::vector<model::DomainLoop> loops = model::domainLoops(domain);
+    const int firstCurve = static_cast<int>(loops.size());
+    for (model::DomainLoop& curve : model::creaseCurveLoops(domain)) {
+        loops.push_back(std::move(curve));
+    }
+    auto boundary =
+        std::make_unique<DomainBoundaryTerm>(std::move(loops), variables.origin, variables.scale);
     for (const model::DomainAssignment::OnLoop& on : held.onLoops) {
         boundary->addVertex(variables.offset + 2 * on.vertex, on.loop);
+    }
+    std::set<int> atCorner;
+    for (const model::DomainAssignment::AtCorner& at : held.atCorners) {
+        atCorner.insert(at.vertex);
+    }
+    for (const model::OnCreaseCurve& on : model::creaseSamplesOnCurves(domain, variables.mesh)) {
+        if (atCorner.count(on.vertex) == 0) {
+            boundary->addVertex(variables.offset + 2 * on.vertex, firstCurve + on.curve);
+        }
     }
     auto corners = std::make_unique<LinearTerm>();
     for (const model::DomainAssignment::AtCorner& at : held.atCorners) {

@@ -43,7 +43,8 @@ private:
 };
 
 // Appends a family "developmentDomain" (constraints) holding the development of `variables`
-// in `domain` (model::assignToDomain at the development in `state`). No-op for a free sheet.
+// in `domain` (model::assignToDomain at the development in `state`) and the samples of its
+// creases on their curves (model::creaseSamplesOnCurves). No-op for a free sheet.
 void addDomain(const model::SheetDomain& domain, const DevelopmentVariables& variables,
                Problem& problem, const std::vector<double>& state);
 

@@ -4,6 +4,7 @@
 #include "io/project_file.h"
 #include "model/pattern/pattern_geometry.h"
 #include "model/sampled_mesh.h"
+#include "model/sheet_domain.h"
 #include "test_registry.h"
 
 #include <QFile>
@@ -152,6 +153,68 @@ private slots:
         const test::CliRun run = cli({"sheet", square, "--outline", lines, "-o", refused});
         QCOMPARE(run.exitCode, 2);
         QVERIFY2(run.err.contains(QStringLiteral("closed curve")), qPrintable(run.err));
+        QVERIFY(!QFile::exists(refused));
+    }
+
+    void creasesFollowCurvesDrawnInTheSheet() {
+        // The annulus (creases on rings at 125, 150, ..., 225 mm) on an annulus sheet, with
+        // circles of radii 130 and 205 mm drawn in a DXF: the rings at 125 and 200 mm are
+        // held on them, and a Solve moves their development there (radii computed here).
+        const QString annulus = path("creases-annulus.devsurf");
+        QCOMPARE(cli({"example", "annulus", "-o", annulus}).exitCode, 0);
+        const QString drawing = path("creases.dxf");
+        QFile dxf(drawing);
+        QVERIFY(dxf.open(QIODevice::WriteOnly));
+        dxf.write("0\nSECTION\n2\nENTITIES\n"
+                  "0\nCIRCLE\n8\nCREASE\n10\n0\n20\n0\n30\n0\n40\n130\n"
+                  "0\nCIRCLE\n8\nCREASE\n10\n0\n20\n0\n30\n0\n40\n205\n0\nENDSEC\n0\nEOF\n");
+        dxf.close();
+        const QString held = path("creases-held.devsurf");
+        test::CliRun run =
+            cli({"sheet", annulus, "--annulus", "100,250", "--creases", drawing, "-o", held});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains(QStringLiteral("16 creases held on 2 of 2 crease curves")),
+                 qPrintable(run.out));
+        QCOMPARE(io::loadProjectFile(held).surfaces[0].sheetDomain().creaseCurveOf.size(),
+                 std::size_t(16));
+        const QString solved = path("creases-solved.devsurf");
+        run = cli({"solve", held, "-o", solved});
+        QCOMPARE(run.exitCode, 0);
+        const model::CompositeSurface s = io::loadProjectFile(solved).surfaces[0];
+        const model::SampledMesh mesh =
+            model::sampleSurface(s, model::kDevelopmentSamplesPerInterval);
+        double worst = 0.0;
+        int onCurves = 0;
+        for (const model::SampledMesh::Polyline& line : mesh.splineEdges) {
+            const auto it = s.sheetDomain().creaseCurveOf.find(line.edge);
+            if (it == s.sheetDomain().creaseCurveOf.end()) {
+                continue;
+            }
+            const double r = it->second == 0 ? 130.0 : 205.0;
+            for (int v : line.vertices) {
+                const model::Vec2 p = s.development()[static_cast<std::size_t>(v)];
+                worst = std::max(worst, std::abs((p - s.sheetDomain().centre).norm() - r));
+                ++onCurves;
+            }
+        }
+        QCOMPARE(onCurves, 16 * 7);
+        // The drawn circles are read as polygons within 0.001 mm of them.
+        QVERIFY2(worst < 2e-3, qPrintable(QString::number(worst)));
+
+        // A drawing far from every crease, or creases on a free sheet, writes nothing.
+        const QString far = path("far.svg");
+        QFile farFile(far);
+        QVERIFY(farFile.open(QIODevice::WriteOnly));
+        farFile.write("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"600mm\" "
+                      "height=\"600mm\" viewBox=\"-300 -300 600 600\"><line x1=\"-290\" "
+                      "y1=\"-290\" x2=\"-280\" y2=\"-290\"/></svg>");
+        farFile.close();
+        const QString refused = path("creases-refused.devsurf");
+        run = cli({"sheet", annulus, "--annulus", "100,250", "--creases", far, "-o", refused});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("lies near a curve")), qPrintable(run.err));
+        QCOMPARE(cli({"sheet", annulus, "--free", "--creases", drawing, "-o", refused}).exitCode,
+                 1);
         QVERIFY(!QFile::exists(refused));
     }
 };

@@ -104,7 +104,7 @@ private slots:
         QVERIFY(messageOf("hello world, this is not a project").find("not a DevSurf") !=
                 std::string::npos);
         std::string newer = good;
-        newer[8] = 7;
+        newer[8] = 8;
         QVERIFY(messageOf(newer).find("newer version") != std::string::npos);
         std::string zero = good;
         zero[8] = 0;
@@ -281,6 +281,10 @@ private slots:
             d.radius = 250.0 / 3.0;
             d.innerRadius = 100.0 / 3.0;
             d.outline = {{{0, 0}, {310.0 / 3.0, 0}, {100, 100}}, {{10, 10}, {20, 10}, {20, 20}}};
+            // Crease curves (format 7): an open one and a closed one, an edge on each.
+            d.creaseCurves = {{{{0, 0}, {1.0 / 3.0, 5e-300}}, false},
+                              {{{1, 1}, {2, 1}, {2, 2.0 / 7.0}}, true}};
+            d.creaseCurveOf = {{4, 1}, {7, 0}};
             surface.setSheetDomain(d);
             const std::string bytes = io::encodeProject(project);
             const model::Project loaded = io::decodeProject(bytes);
@@ -296,6 +300,19 @@ private slots:
         } catch (const io::FileError& error) {
             refused = !error.problems().empty() &&
                       error.problems().front().code == model::ProblemCode::SheetDomainInvalid;
+        }
+        QVERIFY(refused);
+        // A crease assigned to a curve that is not there is refused the same way.
+        d.innerRadius = 0.5 * d.radius;
+        d.creaseCurveOf[9] = 2;
+        surface.setSheetDomain(d);
+        refused = false;
+        try {
+            io::decodeProject(io::encodeProject(project));
+        } catch (const io::FileError& error) {
+            refused = !error.problems().empty() &&
+                      error.problems().front().code == model::ProblemCode::SheetDomainInvalid &&
+                      error.problems().front().count == 4;
         }
         QVERIFY(refused);
     }
@@ -354,7 +371,7 @@ private slots:
         QVERIFY(project == expected);
         // Saved again it is a file of the current format holding the same project.
         const std::string again = io::encodeProject(project);
-        QCOMPARE(again.substr(8, 4), std::string("\x06\x00\x00\x00", 4));
+        QCOMPARE(again.substr(8, 4), std::string("\x07\x00\x00\x00", 4));
         QVERIFY(io::decodeProject(again) == project);
     }
 
@@ -385,6 +402,31 @@ private slots:
         QVERIFY(project.referenceShapes.empty()); // format 5 had none
         // Saved again it holds the same project.
         QVERIFY(io::decodeProject(io::encodeProject(project)) == project);
+    }
+
+    void versionSixSampleStaysLoadable() {
+        // Committed once with format version 6 (the annulus with vertex 0 pinned, holding its
+        // sheet on an annulus of radii 90 and 260 mm); it must load with every later version,
+        // without crease curves.
+        const QString path = QStringLiteral(DEVSURF_TEST_DATA_DIR "/sample-v6.devsurf");
+        const std::string bytes = readAll(path);
+        QCOMPARE(bytes.substr(8, 4), std::string("\x06\x00\x00\x00", 4));
+        const model::Project project = io::loadProjectFile(path);
+        QCOMPARE(project.surfaces.size(), std::size_t(1));
+        const model::CompositeSurface& s = project.surfaces[0];
+        QCOMPARE(s.name(), std::string("annulus"));
+        QCOMPARE(s.pinnedVertices(), (std::set<model::VertexId>{0}));
+        QVERIFY(s.keepsDevelopment());
+        QCOMPARE(s.development().size(), std::size_t(336));
+        QVERIFY(s.sheetDomain().shape == model::SheetShape::Annulus);
+        QCOMPARE(s.sheetDomain().radius, 260.0);
+        QCOMPARE(s.sheetDomain().innerRadius, 90.0);
+        QVERIFY(s.sheetDomain().creaseCurves.empty());
+        QVERIFY(s.sheetDomain().creaseCurveOf.empty());
+        QVERIFY(s.validate().empty());
+        const std::string again = io::encodeProject(project);
+        QCOMPARE(again.substr(8, 4), std::string("\x07\x00\x00\x00", 4));
+        QVERIFY(io::decodeProject(again) == project);
     }
 
     void referenceCurvesRoundTripByteIdentical() {
@@ -449,7 +491,7 @@ private slots:
     void referenceShapesRoundTripByteIdentical() {
         const model::Project project = withReferenceShapes(model::makeExample("sheet", 0));
         const std::string bytes = io::encodeProject(project);
-        QCOMPARE(bytes.substr(8, 4), std::string("\x06\x00\x00\x00", 4));
+        QCOMPARE(bytes.substr(8, 4), std::string("\x07\x00\x00\x00", 4));
         const model::Project loaded = io::decodeProject(bytes);
         QCOMPARE(loaded.referenceShapes.size(), std::size_t(2));
         QVERIFY(loaded.referenceShapes[0] == project.referenceShapes[0]); // every bit

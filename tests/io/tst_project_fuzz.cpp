@@ -122,6 +122,21 @@ model::Project withSmallReferenceShapes(model::Project project) {
     return project;
 }
 
+// The sheet example holding its sheet on a rectangle with two crease curves, one crease on each.
+model::Project withCreaseCurves(model::Project project) {
+    model::CompositeSurface& surface = project.surfaces.front();
+    surface.setKeepsDevelopment(true);
+    model::SheetDomain d;
+    d.shape = model::SheetShape::Rectangle;
+    d.width = 300.0;
+    d.height = 300.0;
+    d.creaseCurves = {{{{-150, 0}, {0, 10}, {150, 0}}, false},
+                      {{{-20, -20}, {20, -20}, {0, 20}}, true}};
+    d.creaseCurveOf = {{surface.edges().begin()->first, 0}, {surface.edges().rbegin()->first, 1}};
+    surface.setSheetDomain(d);
+    return project;
+}
+
 // Whatever loads holds only shapes that the application can draw and measure.
 bool shapesAreSound(const model::Project& project) {
     for (const model::ReferenceShape& shape : project.referenceShapes) {
@@ -160,6 +175,7 @@ private slots:
             io::encodeProject(model::makeExample("cylinder", 3)),
             io::encodeProject(withReferenceCurves(model::makeExample("sheet", 1))),
             io::encodeProject(withSmallReferenceShapes(model::makeExample("sheet", 1))),
+            io::encodeProject(withCreaseCurves(model::makeExample("sheet", 1))),
         };
         std::mt19937 rng(20261121);
         int rejected = 0;

@@ -1,0 +1,133 @@
+#include "sheet_creases.h"
+
+#include "composite_surface.h"
+#include "sampled_mesh.h"
+
+#include <cmath>
+#include <limits>
+#include <set>
+
+namespace devsurf::model {
+
+namespace {
+
+Vec2 placed(const SheetDomain& domain, const Vec2& p) {
+    const double c = std::cos(domain.angle);
+    const double s = std::sin(domain.angle);
+    return domain.centre + Vec2(c * p.x - s * p.y, s * p.x + c * p.y);
+}
+
+double distanceTo(const DomainLoop& loop, const Vec2& p) {
+    return (footPoint(loop, p).point - p).norm();
+}
+
+} // namespace
+
+std::vector<DomainLoop> creaseCurveLoops(const SheetDomain& domain) {
+    std::vector<DomainLoop> loops;
+    for (const SheetDomain::Curve& curve : domain.creaseCurves) {
+        DomainLoop loop;
+        loop.open = !curve.closed;
+        loop.smooth = true;
+        loop.outer = false;
+        for (const Vec2& p : curve.points) {
+            loop.polygon.push_back(placed(domain, p));
+        }
+        loops.push_back(std::move(loop));
+    }
+    return loops;
+}
+
+std::vector<OnCreaseCurve> creaseSamplesOnCurves(const SheetDomain& domain,
+                                                 const SampledMesh& mesh) {
+    std::vector<OnCreaseCurve> held;
+    std::set<std::pair<int, int>> seen;
+    for (const SampledMesh::Polyline& line : mesh.splineEdges) {
+        const auto it = domain.creaseCurveOf.find(line.edge);
+        if (it == domain.creaseCurveOf.end() || it->second < 0 ||
+            static_cast<std::size_t>(it->second) >= domain.creaseCurves.size()) {
+            continue;
+        }
+        for (int v : line.vertices) {
+            if (seen.insert({v, it->second}).second) {
+                held.push_back({v, it->second});
+            }
+        }
+    }
+    return held;
+}
+
+std::map<EdgeId, int> assignCreasesToCurves(const SheetDomain& domain,
+                                            const CompositeSurface& surface,
+                                            const SampledMesh& mesh,
+                                            const std::vector<Vec2>& development) {
+    std::map<EdgeId, int> assigned;
+    const std::vector<DomainLoop> curves = creaseCurveLoops(domain);
+    for (const SampledMesh::Polyline& line : mesh.splineEdges) {
+        if (!surface.hasEdge(line.edge) || surface.facesOfEdge(line.edge).size() != 2 ||
+            line.vertices.size() < 2) {
+            continue;
+        }
+        double length = 0.0;
+        for (std::size_t i = 1; i < line.vertices.size(); ++i) {
+            length += (development[static_cast<std::size_t>(line.vertices[i])] -
+                       development[static_cast<std::size_t>(line.vertices[i - 1])])
+                          .norm();
+        }
+        int best = -1;
+        double bestMean = std::numeric_limits<double>::infinity();
+        for (std::size_t c = 0; c < curves.size(); ++c) {
+            double sum = 0.0;
+            for (int v : line.vertices) {
+                sum += distanceTo(curves[c], development[static_cast<std::size_t>(v)]);
+            }
+            const double mean = sum / static_cast<double>(line.vertices.size());
+            if (mean < bestMean) {
+                bestMean = mean;
+                best = static_cast<int>(c);
+            }
+        }
+        if (best >= 0 && bestMean <= kCreaseCurveReach * length) {
+            assigned[line.edge] = best;
+        }
+    }
+    return assigned;
+}
+
+double largestCreaseCurveGap(const SheetDomain& domain, const SampledMesh& mesh,
+                             const std::vector<Vec2>& development) {
+    const std::vector<DomainLoop> curves = creaseCurveLoops(domain);
+    double gap = 0.0;
+    for (const OnCreaseCurve& on : creaseSamplesOnCurves(domain, mesh)) {
+        if (static_cast<std::size_t>(on.vertex) < development.size()) {
+            gap = std::max(gap, distanceTo(curves[static_cast<std::size_t>(on.curve)],
+                                           development[static_cast<std::size_t>(on.vertex)]));
+        }
+    }
+    return gap;
+}
+
+std::vector<SheetDomain::Curve> sheetCurvesFromAbove(const std::vector<ReferenceCurve>& curves,
+                                                     const Vec2& shift) {
+    std::vector<SheetDomain::Curve> result;
+    for (const ReferenceCurve& curve : curves) {
+        const std::vector<Vec3>& p = curve.points;
+        if (p.size() < 2) {
+            continue;
+        }
+        double length = 0.0;
+        for (std::size_t i = 1; i < p.size(); ++i) {
+            length += distance(p[i - 1], p[i]);
+        }
+        SheetDomain::Curve out;
+        out.closed = p.size() >= 4 && distance(p.front(), p.back()) <= 1e-6 * length;
+        const std::size_t count = out.closed ? p.size() - 1 : p.size();
+        for (std::size_t i = 0; i < count; ++i) {
+            out.points.emplace_back(p[i].x + shift.x, p[i].y + shift.y);
+        }
+        result.push_back(std::move(out));
+    }
+    return result;
+}
+
+} // namespace devsurf::model

@@ -1,0 +1,230 @@
+// Creases confined to curves drawn in the sheet (§5, Fig. 12, 13): the curves' geometry, which
+// creases a drawing holds, the rows' Jacobians, and a Solve that moves the creases' development
+// onto their curves, measured from the written-back geometry (model::sampleSurface) and from
+// circles computed here, not from the solver's residuals.
+
+#include "model/composite_surface.h"
+#include "model/development.h"
+#include "model/examples.h"
+#include "model/math_constants.h"
+#include "model/sampled_mesh.h"
+#include "model/sheet_creases.h"
+#include "model/sheet_domain.h"
+#include "solver/formulation/surface_formulation.h"
+#include "solver/session/solve_session.h"
+#include "solver_test_models.h"
+#include "solver_test_problems.h"
+#include "test_registry.h"
+
+#include <QtTest>
+
+#include <cmath>
+#include <random>
+#include <set>
+
+using namespace devsurf;
+using model::SheetDomain;
+using model::SheetShape;
+using model::Vec2;
+
+namespace {
+
+constexpr int kSamples = model::kDevelopmentSamplesPerInterval;
+
+// A circle of radius r about the origin as a closed crease curve of `n` points (as a drawn
+// circle is read: kCreaseCurveTolerance gives about 800 at these radii).
+SheetDomain::Curve circle(double r, int n = 800) {
+    SheetDomain::Curve curve;
+    curve.closed = true;
+    for (int i = 0; i < n; ++i) {
+        const double t = 2.0 * model::kPi * i / n;
+        curve.points.emplace_back(r * std::cos(t), r * std::sin(t));
+    }
+    return curve;
+}
+
+// The radius of an S-edge's ring in the annulus example, which is centred at the origin (its
+// first vertex's distance from there, rounded to the 25 mm steps of the example's rings).
+double ringOf(const model::CompositeSurface& s, model::EdgeId edge) {
+    const model::Vec3 p = s.position(s.edges().at(edge).from);
+    return 25.0 * std::round(std::hypot(p.x, p.y) / 25.0);
+}
+
+// The annulus example (rings at 100, 125, ..., 250 mm) holding its sheet on an annulus of radii
+// 100 and 250 mm, with crease curves drawn at radii 130 and 205 mm: near the rings at 125 and
+// 200 mm, farther than a tenth of their length from every other ring.
+model::CompositeSurface annulusWithCreaseCurves() {
+    model::CompositeSurface s = model::makeExample("annulus").surfaces.front();
+    if (model::keepDevelopment(s)) {
+        return {};
+    }
+    SheetDomain domain;
+    domain.shape = SheetShape::Annulus;
+    domain.innerRadius = 100.0;
+    domain.radius = 250.0;
+    const model::SampledMesh mesh = model::sampleSurface(s, kSamples);
+    domain = model::placeDomain(domain, mesh, s.development());
+    domain.creaseCurves = {circle(130.0), circle(205.0)};
+    domain.creaseCurveOf = model::assignCreasesToCurves(domain, s, mesh, s.development());
+    s.setSheetDomain(domain);
+    return s;
+}
+
+// The largest distance of the development of a held crease sample from its circle, computed
+// from the radii alone.
+double largestOffCircle(const model::CompositeSurface& s) {
+    const model::SampledMesh mesh = model::sampleSurface(s, kSamples);
+    const SheetDomain& d = s.sheetDomain();
+    double worst = 0.0;
+    for (const model::SampledMesh::Polyline& line : mesh.splineEdges) {
+        const auto it = d.creaseCurveOf.find(line.edge);
+        if (it == d.creaseCurveOf.end()) {
+            continue;
+        }
+        const double r = it->second == 0 ? 130.0 : 205.0;
+        for (int v : line.vertices) {
+            const double at = (s.development()[static_cast<std::size_t>(v)] - d.centre).norm();
+            worst = std::max(worst, std::abs(at - r));
+        }
+    }
+    return worst;
+}
+
+} // namespace
+
+class TstSheetCreases : public QObject {
+    Q_OBJECT
+
+private slots:
+    void openCurvesGoOnAlongTheirEnds() {
+        SheetDomain d;
+        d.shape = SheetShape::Disk;
+        d.radius = 100.0;
+        d.centre = {10.0, 0.0};
+        d.angle = 0.5 * model::kPi; // the curve's frame turned a quarter
+        d.creaseCurves = {{{{0, 0}, {10, 0}, {20, 5}}, false}};
+        const std::vector<model::DomainLoop> loops = model::creaseCurveLoops(d);
+        QCOMPARE(static_cast<int>(loops.size()), 1);
+        QVERIFY(loops[0].open);
+        QVERIFY((loops[0].polygon[1] - Vec2(10.0, 10.0)).norm() < 1e-12);
+        // Before the first point the foot lies on the first side's line, not at its end.
+        const model::DomainFoot before = model::footPoint(loops[0], {13.0, -20.0});
+        QVERIFY2((before.point - Vec2(10.0, -20.0)).norm() < 1e-12,
+                 qPrintable(QString("%1 %2").arg(before.point.x).arg(before.point.y)));
+        QVERIFY(std::abs(std::abs(before.normal.x) - 1.0) < 1e-12);
+        // Between the ends it is the nearest point of the polyline.
+        QVERIFY((model::footPoint(loops[0], {7.0, 5.0}).point - Vec2(10.0, 5.0)).norm() < 1e-12);
+
+        // A drawing's curves seen from above: a closed one loses its repeated point.
+        const std::vector<model::ReferenceCurve> drawn = {
+            {"LINE 1", "", {{0, 0, 5}, {10, 0, 5}}},
+            {"CIRCLE 2", "", {{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {1, 0, 0}}},
+            {"POINT 3", "", {{4, 4, 4}}}};
+        const auto curves = model::sheetCurvesFromAbove(drawn, {-5.0, 1.0});
+        QCOMPARE(static_cast<int>(curves.size()), 2);
+        QVERIFY(!curves[0].closed);
+        QVERIFY(curves[0].points[1] == Vec2(5.0, 1.0));
+        QVERIFY(curves[1].closed);
+        QCOMPARE(static_cast<int>(curves[1].points.size()), 4);
+
+        // A crease on a curve that is not there, or a curve of one point, is a problem.
+        d.creaseCurveOf = {{3, 1}};
+        QCOMPARE(model::domainProblem(d)->count, 4LL);
+        d.creaseCurveOf = {{3, 0}};
+        QVERIFY(!model::domainProblem(d).has_value());
+        d.creaseCurves[0].points.resize(1);
+        QCOMPARE(model::domainProblem(d)->count, 4LL);
+    }
+
+    void drawingHoldsTheCreasesNearItsCurves() {
+        const model::CompositeSurface s = annulusWithCreaseCurves();
+        QVERIFY(s.keepsDevelopment());
+        QVERIFY(s.validate().empty());
+        // The eight arcs of the ring at 125 mm go to the circle at 130, those of the ring at
+        // 200 to the circle at 205; no other ring, and no rim (a boundary, not a crease).
+        std::map<int, std::set<double>> ringsOf;
+        for (const auto& [edge, curve] : s.sheetDomain().creaseCurveOf) {
+            QVERIFY(s.facesOfEdge(edge).size() == 2);
+            ringsOf[curve].insert(ringOf(s, edge));
+        }
+        QCOMPARE(static_cast<int>(s.sheetDomain().creaseCurveOf.size()), 16);
+        QVERIFY(ringsOf[0] == std::set<double>{125.0});
+        QVERIFY(ringsOf[1] == std::set<double>{200.0});
+    }
+
+    void creaseRowsHoldEverySampleOnce() {
+        const model::CompositeSurface s = annulusWithCreaseCurves();
+        solver::FormulationOptions options;
+        options.developmentSamplesPerInterval = kSamples;
+        options.developmentStart = s.development();
+        options.developmentDomain = s.sheetDomain();
+        const int rows = solver::testing::familyRows(
+            solver::SurfaceFormulation(s, options).problem(), "developmentDomain");
+        SheetDomain withoutCurves = s.sheetDomain();
+        withoutCurves.creaseCurves.clear();
+        withoutCurves.creaseCurveOf.clear();
+        options.developmentDomain = withoutCurves;
+        const int boundaryRows = solver::testing::familyRows(
+            solver::SurfaceFormulation(s, options).problem(), "developmentDomain");
+        // 16 arcs of 7 samples, their ends shared around each ring: 8 × 6 per ring.
+        QCOMPARE(rows - boundaryRows, 2 * 8 * 6);
+    }
+
+    void smoothCurvesTurnTheirNormalsGradually() {
+        // The tangent-line row of a drawn curve must not jump where a point crosses a polygon
+        // vertex (its iteration alternated between two sides otherwise): just before and just
+        // after a vertex of a 12-gon the normals agree, on the polygon's sides they are the
+        // sides' own only at the sides' middles.
+        SheetDomain d;
+        d.shape = SheetShape::Disk;
+        d.radius = 100.0;
+        d.creaseCurves = {circle(50.0, 12)};
+        const model::DomainLoop loop = model::creaseCurveLoops(d).front();
+        QVERIFY(loop.smooth);
+        const Vec2 vertex = loop.polygon[1];
+        const Vec2 tangent = loop.polygon[2] - loop.polygon[0];
+        const Vec2 before = model::footPoint(loop, vertex - tangent * 1e-7).normal;
+        const Vec2 after = model::footPoint(loop, vertex + tangent * 1e-7).normal;
+        QVERIFY2((before - after).norm() < 1e-6,
+                 qPrintable(QString::number((before - after).norm())));
+        // At the vertex the normal points along the radius (the mean of the two sides').
+        QVERIFY(std::abs(std::abs(model::dot2(before, vertex * (1.0 / 50.0))) - 1.0) < 1e-6);
+        // The residual is the distance along that normal: zero on the polygon.
+        const model::DomainFoot on =
+            model::footPoint(loop, (loop.polygon[3] + loop.polygon[4]) * 0.5);
+        QVERIFY((on.point - (loop.polygon[3] + loop.polygon[4]) * 0.5).norm() < 1e-12);
+    }
+
+    void solveMovesTheCreasesOntoTheirCurves() {
+        // The rings at 125 and 200 mm are drawn 5 mm farther out: Solve (as the application
+        // runs it) moves their development onto the circles, the rims onto the sheet's, the
+        // design staying flat and isometric to its development.
+        const model::CompositeSurface start = annulusWithCreaseCurves();
+        const double before = largestOffCircle(start);
+        QVERIFY2(before > 4.0, qPrintable(QString::number(before)));
+        solver::SessionOptions solve;
+        solve.stopResidual = solver::kSolveStopResidual;
+        solver::SolveSession session(start, {}, solve);
+        const solver::Summary summary = session.step(solver::kSolveIterations);
+        QVERIFY(summary.succeeded());
+        const model::CompositeSurface& s = session.surface();
+        QVERIFY(s.validate().empty());
+        const double off = largestOffCircle(s);
+        // Within the chords of the 800-gon drawn (205 mm · (1 − cos 0.225°) = 1.6e-3 mm).
+        QVERIFY2(off < 2e-3, qPrintable(QString::number(off)));
+        QVERIFY(summary.toleranceReached);
+        const double gap = model::largestCreaseCurveGap(
+            s.sheetDomain(), model::sampleSurface(s, kSamples), s.development());
+        QVERIFY2(gap < 1e-8 * 500.0, qPrintable(QString::number(gap)));
+        const double isometry = solver::testing::pairLengthError(s, s.development());
+        QVERIFY2(isometry < 1e-10, qPrintable(QString::number(isometry)));
+        double height = 0.0;
+        for (const auto& [id, p] : s.vertices()) {
+            height = std::max(height, std::abs(p.z));
+        }
+        QVERIFY2(height < 1e-6, qPrintable(QString::number(height)));
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstSheetCreases);
+#include "tst_sheet_creases.moc"
