@@ -636,7 +636,7 @@
     <message>
         <location filename="../app/text/problem_text.cpp" line="161"/>
         <source>A crease curve of the sheet has too few points, a point that is not a finite number, or is not there.</source>
-        <translation>Eine Faltkurve des Bogens hat zu wenige Punkte, einen Punkt, der keine endliche Zahl ist, oder fehlt.</translation>
+        <translation>Eine Falzkurve des Bogens hat zu wenige Punkte, einen Punkt, der keine endliche Zahl ist, oder fehlt.</translation>
     </message>
     <message>
         <location filename="../app/text/problem_text.cpp" line="164"/>
@@ -2050,38 +2050,38 @@
 <context>
     <name>devsurf::app::HoldSheetReaction</name>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="78"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="79"/>
         <source>Hold the sheet of a surface: select something on one surface first.</source>
         <translation>Den Bogen einer Fläche festhalten: zuerst etwas auf einer Fläche auswählen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="79"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="80"/>
         <source>The surface is folded from its sheet: solves and drags keep it isometric to its development, and a dragged vertex stays behind where the sheet cannot follow. Uncheck to let the sheet stretch again.</source>
         <translation>Die Fläche ist aus ihrem Bogen gefaltet: Lösen und Ziehen halten sie isometrisch zu ihrer Abwicklung, und ein gezogener Eckpunkt bleibt zurück, wo der Bogen nicht folgen kann. Abwählen, damit sich der Bogen wieder dehnen darf.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="82"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="83"/>
         <source>Fold the surface from its sheet: its development as it unfolds now is kept by every solve and drag; a dragged vertex stays behind where the sheet cannot follow, instead of the sheet stretching.</source>
         <translation>Die Fläche aus ihrem Bogen falten: ihre Abwicklung, wie sie sich jetzt abwickelt, wird von jedem Lösen und Ziehen beibehalten; ein gezogener Eckpunkt bleibt zurück, wo der Bogen nicht folgen kann, statt dass sich der Bogen dehnt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="98"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="99"/>
         <source>Hold the Sheet</source>
         <translation>Bogen festhalten</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="98"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="99"/>
         <source>Let the Sheet Stretch</source>
         <translation>Bogen dehnen lassen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="101"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="112"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="102"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="113"/>
         <source>Cannot hold the sheet</source>
         <translation>Der Bogen kann nicht festgehalten werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="112"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="113"/>
         <source>Cannot let the sheet stretch</source>
         <translation>Der Bogen kann nicht freigegeben werden</translation>
     </message>
@@ -4147,102 +4147,130 @@
 <context>
     <name>devsurf::app::SheetShapeDialog</name>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="45"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="52"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="53"/>
         <source>Choose…</source>
         <translation>Auswählen…</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="47"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="54"/>
+        <source>None</source>
+        <translation>Keine</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="57"/>
         <source>Sheet Shape</source>
         <translation>Bogenform</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="50"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="60"/>
         <source>Free: the development as it is</source>
         <translation>Frei: die Abwicklung, wie sie ist</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="52"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="62"/>
         <source>Rectangle</source>
         <translation>Rechteck</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="53"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="63"/>
         <source>Disk</source>
         <translation>Kreisscheibe</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="54"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="64"/>
         <source>Annulus</source>
         <translation>Kreisring</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="55"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="65"/>
         <source>Outline of a drawing</source>
         <translation>Umriss einer Zeichnung</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="66"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="76"/>
         <source>The closed curves of a DXF, SVG, STEP or IGES file, seen from above: the largest is the sheet&apos;s boundary, the others its holes.</source>
         <translation>Die geschlossenen Kurven einer DXF-, SVG-, STEP- oder IGES-Datei, von oben gesehen: die größte ist der Rand des Bogens, die anderen seine Löcher.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="84"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="94"/>
         <source>The sheet the surface is folded from. Every solve and drag keeps the surface isometric to its development; with a shape, the development may change inside it, its boundary on the shape&apos;s and its corners at the shape&apos;s corners.</source>
         <translation>Der Bogen, aus dem die Fläche gefaltet wird. Jedes Lösen und Ziehen hält die Fläche isometrisch zu ihrer Abwicklung; mit einer Form darf sich die Abwicklung innerhalb der Form ändern, ihr Rand liegt auf dem Rand der Form und ihre Ecken auf deren Ecken.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="91"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="101"/>
         <source>Shape:</source>
         <translation>Form:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="92"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="102"/>
         <source>Width:</source>
         <translation>Breite:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="93"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="103"/>
         <source>Height:</source>
         <translation>Höhe:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="94"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="104"/>
         <source>Radius:</source>
         <translation>Radius:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="95"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="105"/>
         <source>Inner radius:</source>
         <translation>Innenradius:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="99"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="109"/>
         <source>Outline:</source>
         <translation>Umriss:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="110"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="121"/>
+        <source>Curves drawn in the sheet for the creases to follow: every curve of a DXF, SVG, STEP or IGES file, seen from above, in the sheet&apos;s frame (a rectangle from its corner at 0,0; circles centred at 0,0; an outline in its own drawing&apos;s coordinates). A crease lying near a curve keeps its development on it.</source>
+        <translation>In den Bogen gezeichnete Kurven, denen die Falze folgen: jede Kurve einer DXF-, SVG-, STEP- oder IGES-Datei, von oben gesehen, im Rahmen des Bogens (ein Rechteck ab seiner Ecke bei 0,0; Kreise um 0,0; ein Umriss in den Koordinaten seiner eigenen Zeichnung). Ein Falz nahe einer Kurve hält seine Abwicklung auf ihr.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="126"/>
+        <source>No curves: the creases move freely inside the sheet.</source>
+        <translation>Keine Kurven: Die Falze bewegen sich frei im Bogen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="131"/>
+        <source>Crease curves:</source>
+        <translation>Falzkurven:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="142"/>
         <source>Sheet Outline</source>
         <translation>Umriss des Bogens</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="111"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="143"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="153"/>
         <source>Drawings (*.dxf *.svg *.step *.stp *.iges *.igs)</source>
         <translation>Zeichnungen (*.dxf *.svg *.step *.stp *.iges *.igs)</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="168"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="152"/>
+        <source>Crease Curves</source>
+        <translation>Falzkurven</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="217"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="271"/>
         <source>%1 cannot be read as a drawing: choose a DXF, SVG, STEP or IGES file.</source>
         <translation>%1 kann nicht als Zeichnung gelesen werden: wählen Sie eine DXF-, SVG-, STEP- oder IGES-Datei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="171"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="220"/>
         <source>%1 holds no closed curve enclosing an area to be the sheet&apos;s outline.</source>
         <translation>%1 enthält keine geschlossene Kurve, die eine Fläche umschließt und den Umriss des Bogens bilden könnte.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="176"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="225"/>
         <source>%1: %n closed curve(s)</source>
         <translation>
             <numerusform>%1: %n geschlossene Kurve</numerusform>
@@ -4250,12 +4278,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="62"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="72"/>
         <source>none chosen</source>
         <translation>keiner gewählt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="63"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="73"/>
         <source>%n closed curve(s)</source>
         <translation>
             <numerusform>%n geschlossene Kurve</numerusform>
@@ -4263,37 +4291,78 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="207"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="273"/>
+        <source>%1 holds no curve for the creases to follow.</source>
+        <translation>%1 enthält keine Kurve, der die Falze folgen könnten.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="295"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="298"/>
+        <source>%n curve(s)</source>
+        <translation>
+            <numerusform>%n Kurve</numerusform>
+            <numerusform>%n Kurven</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="299"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="301"/>
+        <source>%1, used with a shape only</source>
+        <translation>%1, nur mit einer Form verwendet</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="307"/>
+        <source>%1; no crease lies near them (within a tenth of its length), so they are not used</source>
+        <translation>%1; kein Falz liegt nahe bei ihnen (innerhalb eines Zehntels seiner Länge), daher werden sie nicht verwendet</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="313"/>
+        <source>%1, holding %n crease(s)</source>
+        <translation>
+            <numerusform>%1, hält %n Falz</numerusform>
+            <numerusform>%1, hält %n Falze</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="335"/>
         <source>The development covers %1 cm² and is held as it is.</source>
         <translation>Die Abwicklung bedeckt %1 cm² und wird gehalten, wie sie ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="214"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="342"/>
         <source>Choose a drawing whose closed curves are the sheet&apos;s outline.</source>
         <translation>Wählen Sie eine Zeichnung, deren geschlossene Kurven den Umriss des Bogens bilden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="223"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="351"/>
         <source>The outline has no closed curve enclosing an area.</source>
         <translation>Der Umriss hat keine geschlossene Kurve, die eine Fläche umschließt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="224"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="352"/>
         <source>The inner radius must be smaller than the radius.</source>
         <translation>Der Innenradius muss kleiner als der Radius sein.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="235"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="363"/>
         <source>The development (%1 cm²) is larger than this sheet (%2 cm²): no solve can fold the design from it.</source>
         <translation>Die Abwicklung (%1 cm²) ist größer als dieser Bogen (%2 cm²): kein Lösen kann die Form daraus falten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="244"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="372"/>
         <source>The development (%1 cm²) fits this sheet (%2 cm²): its boundary lies on the sheet&apos;s.</source>
         <translation>Die Abwicklung (%1 cm²) passt auf diesen Bogen (%2 cm²): ihr Rand liegt auf dem des Bogens.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="248"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="376"/>
         <source>The development covers %1 cm² of this sheet&apos;s %2 cm²; its boundary is up to %3 mm from the sheet&apos;s, and the next Solve moves it onto the sheet.</source>
         <translation>Die Abwicklung bedeckt %1 cm² der %2 cm² dieses Bogens; ihr Rand liegt bis zu %3 mm vom Rand des Bogens entfernt, und das nächste Lösen legt ihn auf den Bogen.</translation>
     </message>
@@ -4301,38 +4370,43 @@
 <context>
     <name>devsurf::app::SheetShapeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="60"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="61"/>
         <source>%1 closes around: it is folded from a cylinder of radius %2 mm, its development read modulo the cylinder&apos;s circumference, and no flat sheet shape applies.</source>
         <translation>%1 schließt sich ringsum: es ist aus einem Zylinder mit Radius %2 mm gefaltet, seine Abwicklung wird modulo des Zylinderumfangs gelesen, und keine ebene Blattform ist anwendbar.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="125"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="126"/>
         <source>Choose the sheet the surface is folded from: its development as it is, or a rectangle, disk or annulus its development stays inside.</source>
         <translation>Den Bogen wählen, aus dem die Fläche gefaltet wird: ihre Abwicklung, wie sie ist, oder ein Rechteck, eine Kreisscheibe oder ein Kreisring, in dem ihre Abwicklung bleibt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="127"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="128"/>
         <source>Choose the sheet of a surface: select something on one surface first.</source>
         <translation>Den Bogen einer Fläche wählen: zuerst etwas auf einer Fläche auswählen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="140"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="165"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="141"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="166"/>
         <source>Cannot hold the sheet</source>
         <translation>Der Bogen kann nicht festgehalten werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="180"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="182"/>
         <source>Set Sheet Shape</source>
         <translation>Bogenform festlegen</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="182"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="184"/>
         <source>Cannot set the sheet shape</source>
         <translation>Die Bogenform kann nicht festgelegt werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="187"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="189"/>
+        <source>The development&apos;s creases are up to %1 mm from their curves, its boundary up to %2 mm from the sheet&apos;s: Solve moves them there.</source>
+        <translation>Die Falze der Abwicklung liegen bis zu %1 mm von ihren Kurven entfernt, ihr Rand bis zu %2 mm vom Rand des Bogens: Lösen bringt sie dorthin.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="194"/>
         <source>The development&apos;s boundary is up to %1 mm from the sheet&apos;s: Solve moves it onto the sheet.</source>
         <translation>Der Rand der Abwicklung liegt bis zu %1 mm vom Rand des Bogens entfernt: Lösen legt ihn auf den Bogen.</translation>
     </message>

@@ -443,7 +443,7 @@
 <context>
     <name>devsurf::app::SheetShapeDialog</name>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="176"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="225"/>
         <source>%1: %n closed curve(s)</source>
         <translation>
             <numerusform>%1: %n closed curve</numerusform>
@@ -451,7 +451,23 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="63"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="298"/>
+        <source>%n curve(s)</source>
+        <translation>
+            <numerusform>%n curve</numerusform>
+            <numerusform>%n curves</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="313"/>
+        <source>%1, holding %n crease(s)</source>
+        <translation>
+            <numerusform>%1, holding %n crease</numerusform>
+            <numerusform>%1, holding %n creases</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="73"/>
         <source>%n closed curve(s)</source>
         <translation>
             <numerusform>%n closed curve</numerusform>

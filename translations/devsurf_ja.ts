@@ -2029,38 +2029,38 @@
 <context>
     <name>devsurf::app::HoldSheetReaction</name>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="78"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="79"/>
         <source>Hold the sheet of a surface: select something on one surface first.</source>
         <translation>曲面のシートを保持します: まず 1 つの曲面上の要素を選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="79"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="80"/>
         <source>The surface is folded from its sheet: solves and drags keep it isometric to its development, and a dragged vertex stays behind where the sheet cannot follow. Uncheck to let the sheet stretch again.</source>
         <translation>曲面はそのシートから折られています: ソルブとドラッグは展開図との等長性を保ち、シートが追従できない所ではドラッグした頂点が手前で止まります。チェックを外すとシートは再び伸びられます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="82"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="83"/>
         <source>Fold the surface from its sheet: its development as it unfolds now is kept by every solve and drag; a dragged vertex stays behind where the sheet cannot follow, instead of the sheet stretching.</source>
         <translation>曲面をそのシートから折ります: 現在の展開図がすべてのソルブとドラッグで保たれ、シートが追従できない所では、シートが伸びる代わりにドラッグした頂点が手前で止まります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="98"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="99"/>
         <source>Hold the Sheet</source>
         <translation>シートを保持</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="98"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="99"/>
         <source>Let the Sheet Stretch</source>
         <translation>シートの伸びを許す</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="101"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="112"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="102"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="113"/>
         <source>Cannot hold the sheet</source>
         <translation>シートを保持できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="112"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="113"/>
         <source>Cannot let the sheet stretch</source>
         <translation>シートの伸びを許せません</translation>
     </message>
@@ -4099,151 +4099,218 @@
 <context>
     <name>devsurf::app::SheetShapeDialog</name>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="45"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="52"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="53"/>
         <source>Choose…</source>
         <translation>選択…</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="47"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="54"/>
+        <source>None</source>
+        <translation>なし</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="57"/>
         <source>Sheet Shape</source>
         <translation>シートの形</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="50"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="60"/>
         <source>Free: the development as it is</source>
         <translation>自由: 展開図をそのまま</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="52"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="62"/>
         <source>Rectangle</source>
         <translation>長方形</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="53"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="63"/>
         <source>Disk</source>
         <translation>円板</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="54"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="64"/>
         <source>Annulus</source>
         <translation>円環</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="55"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="65"/>
         <source>Outline of a drawing</source>
         <translation>図面の輪郭</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="66"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="76"/>
         <source>The closed curves of a DXF, SVG, STEP or IGES file, seen from above: the largest is the sheet&apos;s boundary, the others its holes.</source>
         <translation>DXF、SVG、STEP または IGES ファイルの閉じた曲線を上から見たもの: 最大のものがシートの境界、ほかは穴です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="84"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="94"/>
         <source>The sheet the surface is folded from. Every solve and drag keeps the surface isometric to its development; with a shape, the development may change inside it, its boundary on the shape&apos;s and its corners at the shape&apos;s corners.</source>
         <translation>曲面を折り出すシートです。ソルブとドラッグは常に曲面を展開図と等長に保ちます。形を指定すると、展開図はその内側で変わることができ、境界は形の境界上に、角は形の角に置かれます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="91"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="101"/>
         <source>Shape:</source>
         <translation>形:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="92"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="102"/>
         <source>Width:</source>
         <translation>幅:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="93"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="103"/>
         <source>Height:</source>
         <translation>高さ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="94"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="104"/>
         <source>Radius:</source>
         <translation>半径:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="95"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="105"/>
         <source>Inner radius:</source>
         <translation>内径:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="99"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="109"/>
         <source>Outline:</source>
         <translation>輪郭:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="110"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="121"/>
+        <source>Curves drawn in the sheet for the creases to follow: every curve of a DXF, SVG, STEP or IGES file, seen from above, in the sheet&apos;s frame (a rectangle from its corner at 0,0; circles centred at 0,0; an outline in its own drawing&apos;s coordinates). A crease lying near a curve keeps its development on it.</source>
+        <translation>折り線が従うようシートに描いたカーブ: DXF・SVG・STEP・IGES ファイルのすべてのカーブを上から見て、シートの座標系で使います (長方形は角が 0,0、円は中心が 0,0、輪郭はその図面自身の座標)。カーブの近くにある折り線は展開図上でそのカーブに乗ったままになります。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="126"/>
+        <source>No curves: the creases move freely inside the sheet.</source>
+        <translation>カーブなし: 折り線はシートの中で自由に動きます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="131"/>
+        <source>Crease curves:</source>
+        <translation>折り線カーブ:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="142"/>
         <source>Sheet Outline</source>
         <translation>シートの輪郭</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="111"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="143"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="153"/>
         <source>Drawings (*.dxf *.svg *.step *.stp *.iges *.igs)</source>
         <translation>図面 (*.dxf *.svg *.step *.stp *.iges *.igs)</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="168"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="152"/>
+        <source>Crease Curves</source>
+        <translation>折り線カーブ</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="217"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="271"/>
         <source>%1 cannot be read as a drawing: choose a DXF, SVG, STEP or IGES file.</source>
         <translation>%1 を図面として読み込めません: DXF、SVG、STEP または IGES ファイルを選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="171"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="220"/>
         <source>%1 holds no closed curve enclosing an area to be the sheet&apos;s outline.</source>
         <translation>%1 にはシートの輪郭となる、面積を囲む閉じた曲線がありません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="176"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="225"/>
         <source>%1: %n closed curve(s)</source>
         <translation>
             <numerusform>%1: 閉じた曲線 %n 本</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="62"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="72"/>
         <source>none chosen</source>
         <translation>未選択</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="63"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="73"/>
         <source>%n closed curve(s)</source>
         <translation>
             <numerusform>閉じた曲線 %n 本</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="207"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="273"/>
+        <source>%1 holds no curve for the creases to follow.</source>
+        <translation>%1 には折り線が従うカーブがありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="295"/>
+        <source>none</source>
+        <translation>なし</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="298"/>
+        <source>%n curve(s)</source>
+        <translation>
+            <numerusform>%n 本のカーブ</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="299"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="301"/>
+        <source>%1, used with a shape only</source>
+        <translation>%1 (形を選んだときのみ使用)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="307"/>
+        <source>%1; no crease lies near them (within a tenth of its length), so they are not used</source>
+        <translation>%1。近く (長さの 1/10 以内) にある折り線がないため使用しません</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="313"/>
+        <source>%1, holding %n crease(s)</source>
+        <translation>
+            <numerusform>%1、%n 本の折り線を保持</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="335"/>
         <source>The development covers %1 cm² and is held as it is.</source>
         <translation>展開図の面積は %1 cm² で、そのまま保持されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="214"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="342"/>
         <source>Choose a drawing whose closed curves are the sheet&apos;s outline.</source>
         <translation>閉じた曲線がシートの輪郭となる図面を選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="223"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="351"/>
         <source>The outline has no closed curve enclosing an area.</source>
         <translation>輪郭に面積を囲む閉じた曲線がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="224"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="352"/>
         <source>The inner radius must be smaller than the radius.</source>
         <translation>内径は半径より小さくなければなりません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="235"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="363"/>
         <source>The development (%1 cm²) is larger than this sheet (%2 cm²): no solve can fold the design from it.</source>
         <translation>展開図 (%1 cm²) がこのシート (%2 cm²) より大きいため、どのソルブでもこのシートから折ることはできません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="244"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="372"/>
         <source>The development (%1 cm²) fits this sheet (%2 cm²): its boundary lies on the sheet&apos;s.</source>
         <translation>展開図 (%1 cm²) はこのシート (%2 cm²) に合っています: 境界はシートの境界上にあります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="248"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="376"/>
         <source>The development covers %1 cm² of this sheet&apos;s %2 cm²; its boundary is up to %3 mm from the sheet&apos;s, and the next Solve moves it onto the sheet.</source>
         <translation>展開図はこのシートの %2 cm² のうち %1 cm² を占めます。境界はシートの境界から最大 %3 mm 離れており、次のソルブでシート上に移ります。</translation>
     </message>
@@ -4251,38 +4318,43 @@
 <context>
     <name>devsurf::app::SheetShapeReaction</name>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="60"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="61"/>
         <source>%1 closes around: it is folded from a cylinder of radius %2 mm, its development read modulo the cylinder&apos;s circumference, and no flat sheet shape applies.</source>
         <translation>%1 は一周して閉じています: 半径 %2 mm の円柱から折られ、展開図は円柱の周長を法として読まれるため、平面のシート形状は適用できません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="125"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="126"/>
         <source>Choose the sheet the surface is folded from: its development as it is, or a rectangle, disk or annulus its development stays inside.</source>
         <translation>曲面を折り出すシートを選びます: 展開図そのまま、または展開図が内側に収まる長方形・円板・円環。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="127"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="128"/>
         <source>Choose the sheet of a surface: select something on one surface first.</source>
         <translation>曲面のシートを選ぶには、まず 1 つの曲面上で何かを選択してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="140"/>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="165"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="141"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="166"/>
         <source>Cannot hold the sheet</source>
         <translation>シートを保持できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="180"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="182"/>
         <source>Set Sheet Shape</source>
         <translation>シートの形を設定</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="182"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="184"/>
         <source>Cannot set the sheet shape</source>
         <translation>シートの形を設定できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="187"/>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="189"/>
+        <source>The development&apos;s creases are up to %1 mm from their curves, its boundary up to %2 mm from the sheet&apos;s: Solve moves them there.</source>
+        <translation>展開図の折り線はカーブから最大 %1 mm、境界はシートの境界から最大 %2 mm 離れています。ソルブでそこへ移ります。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/sheet_reactions.cpp" line="194"/>
         <source>The development&apos;s boundary is up to %1 mm from the sheet&apos;s: Solve moves it onto the sheet.</source>
         <translation>展開図の境界はシートの境界から最大 %1 mm 離れています。ソルブで境界がシート上に移ります。</translation>
     </message>

@@ -323,6 +323,14 @@ DevelopmentScenes scenesOfPieces(const model::Project& project,
             closed.push_back(closed.front());
             scene.sheet.push_back(std::move(closed));
         }
+        // The curves drawn in it for the creases to follow, in the same line.
+        for (const std::vector<Vec2>& curve : model::pattern::creaseCurvesOnPiece(surface, piece)) {
+            std::vector<Vec3> line;
+            for (const Vec2& q : curve) {
+                line.push_back(toScene(q));
+            }
+            scene.sheet.push_back(std::move(line));
+        }
         for (const auto& [id, position] : piece.vertices) {
             if (surface.isPinned(id)) {
                 scene.pinned.insert(id);

@@ -65,7 +65,8 @@ struct SurfaceScene {
     std::vector<model::Vec3> seamVertices;
     std::vector<std::pair<model::Vec3, model::Vec3>> overlapOutline;
     // Development only: the boundary loops of the sheet a held development is confined to
-    // (closed polylines, the first point repeated), placed where the development is drawn.
+    // (closed polylines, the first point repeated) and the crease curves drawn in it (open or
+    // closed polylines), placed where the development is drawn.
     std::vector<std::vector<model::Vec3>> sheet;
 };
 

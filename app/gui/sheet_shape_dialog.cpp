@@ -1,6 +1,7 @@
 #include "sheet_shape_dialog.h"
 
 #include "io/curves/curve_import.h"
+#include "model/sheet_creases.h"
 
 #include <QApplication>
 #include <QComboBox>
@@ -22,6 +23,12 @@ namespace {
 constexpr double kLargestSize = 1e6; // mm: a kilometre
 constexpr double kFits = 0.01;       // mm: a development this close to a sheet lies on it
 
+// Where a rectangle's drawing has its origin: at its corner, the sheet's frame at its centre.
+model::Vec2 drawingOrigin(const model::SheetDomain& d) {
+    return d.shape == model::SheetShape::Rectangle ? model::Vec2(0.5 * d.width, 0.5 * d.height)
+                                                   : model::Vec2();
+}
+
 QDoubleSpinBox* sizeBox(QWidget* parent, const QString& name) {
     auto* box = new QDoubleSpinBox(parent);
     box->setObjectName(name);
@@ -34,15 +41,18 @@ QDoubleSpinBox* sizeBox(QWidget* parent, const QString& name) {
 
 } // namespace
 
-SheetShapeDialog::SheetShapeDialog(const model::SheetDomain& current,
+SheetShapeDialog::SheetShapeDialog(const model::CompositeSurface& surface,
                                    const model::SampledMesh& mesh,
                                    std::vector<model::Vec2> development, QWidget* parent)
-    : QDialog(parent), m_mesh(mesh), m_development(std::move(development)),
+    : QDialog(parent), m_surface(surface), m_mesh(mesh), m_development(std::move(development)),
       m_shape(new QComboBox(this)), m_width(sizeBox(this, QStringLiteral("sheetWidth"))),
       m_height(sizeBox(this, QStringLiteral("sheetHeight"))),
       m_radius(sizeBox(this, QStringLiteral("sheetRadius"))),
       m_innerRadius(sizeBox(this, QStringLiteral("sheetInnerRadius"))), m_fit(new QLabel(this)),
-      m_outlineName(new QLabel(this)), m_chooseOutline(new QPushButton(tr("Choose…"), this)) {
+      m_outlineName(new QLabel(this)), m_chooseOutline(new QPushButton(tr("Choose…"), this)),
+      m_creasesName(new QLabel(this)), m_chooseCreases(new QPushButton(tr("Choose…"), this)),
+      m_clearCreases(new QPushButton(tr("None"), this)) {
+    const model::SheetDomain& current = surface.sheetDomain();
     setObjectName(QStringLiteral("sheetShapeDialog"));
     setWindowTitle(tr("Sheet Shape"));
     m_developedArea = model::developedArea(m_mesh, m_development);
@@ -97,6 +107,28 @@ SheetShapeDialog::SheetShapeDialog(const model::SheetDomain& current,
     outlineRow->addWidget(m_outlineName, 1);
     outlineRow->addWidget(m_chooseOutline);
     form->addRow(tr("Outline:"), outlineRow);
+    // The crease curves kept now, as they were drawn.
+    for (model::SheetDomain::Curve curve : current.creaseCurves) {
+        for (model::Vec2& p : curve.points) {
+            p = p + drawingOrigin(current);
+        }
+        m_creaseDrawing.push_back(std::move(curve));
+    }
+    m_creasesName->setObjectName(QStringLiteral("sheetCreasesName"));
+    m_creasesName->setWordWrap(true);
+    m_chooseCreases->setObjectName(QStringLiteral("sheetCreasesChoose"));
+    m_chooseCreases->setToolTip(
+        tr("Curves drawn in the sheet for the creases to follow: every curve of a DXF, SVG, "
+           "STEP or IGES file, seen from above, in the sheet's frame (a rectangle from its "
+           "corner at 0,0; circles centred at 0,0; an outline in its own drawing's "
+           "coordinates). A crease lying near a curve keeps its development on it."));
+    m_clearCreases->setObjectName(QStringLiteral("sheetCreasesClear"));
+    m_clearCreases->setToolTip(tr("No curves: the creases move freely inside the sheet."));
+    auto* creasesRow = new QHBoxLayout;
+    creasesRow->addWidget(m_creasesName, 1);
+    creasesRow->addWidget(m_chooseCreases);
+    creasesRow->addWidget(m_clearCreases);
+    form->addRow(tr("Crease curves:"), creasesRow);
     m_fit->setObjectName(QStringLiteral("sheetFit"));
     m_fit->setWordWrap(true);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
@@ -113,6 +145,22 @@ SheetShapeDialog::SheetShapeDialog(const model::SheetDomain& current,
             loadOutline(path);
         }
     });
+    connect(m_chooseCreases, &QPushButton::clicked, this, [this] {
+        const QString path = m_creasesChooser
+                                 ? m_creasesChooser()
+                                 : QFileDialog::getOpenFileName(
+                                       this, tr("Crease Curves"), QString(),
+                                       tr("Drawings (*.dxf *.svg *.step *.stp *.iges *.igs)"));
+        if (!path.isEmpty()) {
+            loadCreaseCurves(path);
+        }
+    });
+    connect(m_clearCreases, &QPushButton::clicked, this, [this] {
+        m_creaseDrawing.clear();
+        m_creaseFile.clear();
+        m_creasesProblem.clear();
+        updateCreases();
+    });
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(intro);
     layout->addLayout(form);
@@ -122,6 +170,7 @@ SheetShapeDialog::SheetShapeDialog(const model::SheetDomain& current,
     connect(m_shape, &QComboBox::currentIndexChanged, this, &SheetShapeDialog::onShapeChanged);
     for (QDoubleSpinBox* box : {m_width, m_height, m_radius, m_innerRadius}) {
         connect(box, &QDoubleSpinBox::valueChanged, this, &SheetShapeDialog::updateFit);
+        connect(box, &QDoubleSpinBox::valueChanged, this, &SheetShapeDialog::updateCreases);
     }
     onShapeChanged();
 }
@@ -185,7 +234,85 @@ bool SheetShapeDialog::loadOutline(const QString& path) {
 }
 
 model::SheetDomain SheetShapeDialog::domain() const {
-    return model::placeDomain(unplaced(), m_mesh, m_development);
+    return withCreases(model::placeDomain(unplaced(), m_mesh, m_development));
+}
+
+model::SheetDomain SheetShapeDialog::withCreases(model::SheetDomain placed) const {
+    if (placed.isFree() || placed.shape == model::SheetShape::Cylinder || m_creaseDrawing.empty()) {
+        return placed;
+    }
+    const model::Vec2 origin = drawingOrigin(placed);
+    for (model::SheetDomain::Curve curve : m_creaseDrawing) {
+        for (model::Vec2& p : curve.points) {
+            p = p - origin;
+        }
+        placed.creaseCurves.push_back(std::move(curve));
+    }
+    placed.creaseCurveOf = model::assignCreasesToCurves(placed, m_surface, m_mesh, m_development);
+    if (placed.creaseCurveOf.empty()) {
+        placed.creaseCurves.clear(); // curves that hold nothing are not kept
+    }
+    return placed;
+}
+
+bool SheetShapeDialog::loadCreaseCurves(const QString& path) {
+    const QString name = QFileInfo(path).fileName();
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    io::CurveImportOptions options;
+    options.tolerance = model::kCreaseCurveTolerance;
+    const io::CurveImportResult read = io::importCurveFile(path, options);
+    QApplication::restoreOverrideCursor();
+    std::vector<model::SheetDomain::Curve> curves;
+    if (!read.error) {
+        curves = model::sheetCurvesFromAbove(read.curves);
+    }
+    if (read.error) {
+        m_creasesProblem =
+            tr("%1 cannot be read as a drawing: choose a DXF, SVG, STEP or IGES file.").arg(name);
+    } else if (curves.empty()) {
+        m_creasesProblem = tr("%1 holds no curve for the creases to follow.").arg(name);
+    } else {
+        m_creasesProblem.clear();
+        m_creaseDrawing = std::move(curves);
+        m_creaseFile = name;
+    }
+    updateCreases();
+    return m_creasesProblem.isEmpty();
+}
+
+void SheetShapeDialog::updateCreases() {
+    const auto shape = static_cast<model::SheetShape>(m_shape->currentData().toInt());
+    const bool shaped = shape != model::SheetShape::Free && shape != model::SheetShape::Cylinder;
+    m_chooseCreases->setEnabled(shaped);
+    m_clearCreases->setEnabled(shaped && !m_creaseDrawing.empty());
+    if (!m_creasesProblem.isEmpty()) {
+        m_creasesName->setText(m_creasesProblem);
+        m_creasesName->setStyleSheet(QStringLiteral("color: #b00020;"));
+        return;
+    }
+    m_creasesName->setStyleSheet(QString());
+    if (m_creaseDrawing.empty()) {
+        m_creasesName->setText(tr("none"));
+        return;
+    }
+    const QString curves = tr("%n curve(s)", nullptr, static_cast<int>(m_creaseDrawing.size()));
+    const QString drawn = m_creaseFile.isEmpty() ? curves : tr("%1: %2").arg(m_creaseFile, curves);
+    if (!shaped) {
+        m_creasesName->setText(tr("%1, used with a shape only").arg(drawn));
+        return;
+    }
+    const model::SheetDomain d = domain();
+    if (d.creaseCurveOf.empty()) {
+        m_creasesName->setText(
+            tr("%1; no crease lies near them (within a tenth of its length), so they are not "
+               "used")
+                .arg(drawn));
+        m_creasesName->setStyleSheet(QStringLiteral("color: #b00020;"));
+        return;
+    }
+    m_creasesName->setText(
+        tr("%1, holding %n crease(s)", nullptr, static_cast<int>(d.creaseCurveOf.size()))
+            .arg(drawn));
 }
 
 void SheetShapeDialog::onShapeChanged() {
@@ -196,6 +323,7 @@ void SheetShapeDialog::onShapeChanged() {
     m_innerRadius->setEnabled(shape == model::SheetShape::Annulus);
     m_chooseOutline->setEnabled(shape == model::SheetShape::Outline);
     updateFit();
+    updateCreases();
 }
 
 void SheetShapeDialog::updateFit() {

@@ -3,6 +3,7 @@
 #include "model/derived_geometry.h"
 #include "model/math_constants.h"
 #include "model/pattern/pattern_geometry.h"
+#include "model/sheet_creases.h"
 #include "model/sheet_domain.h"
 
 #include <algorithm>
@@ -85,20 +86,18 @@ std::vector<Vec2> circlePolygon(const Vec2& centre, double radius, double chordT
     return polygon;
 }
 
-} // namespace
-
-std::vector<std::vector<Vec2>> sheetOnPiece(const CompositeSurface& surface,
-                                            const PatternPiece& piece, double chordTolerance) {
+// The rigid motion from the kept development's plane to `piece`'s (see sheetOnPiece).
+std::optional<PlaneMotion> sheetMotion(const CompositeSurface& surface, const PatternPiece& piece) {
     const SheetDomain& domain = surface.sheetDomain();
     if (!surface.keepsDevelopment() || domain.isFree() || surface.development().empty() ||
         domainProblem(domain)) {
-        return {};
+        return std::nullopt;
     }
     const auto derived = DerivedGeometry::of(surface, kDevelopmentSamplesPerInterval);
     const SampledMesh& mesh = derived->mesh();
     const std::vector<Vec2>& development = surface.development();
     if (development.size() != mesh.vertices.size()) {
-        return {}; // stale: the next solve derives it again
+        return std::nullopt; // stale: the next solve derives it again
     }
     // Vertices the piece shows once (a vertex on a cut-open seam shows twice: ambiguous).
     std::map<VertexId, int> shown;
@@ -118,11 +117,19 @@ std::vector<std::vector<Vec2>> sheetOnPiece(const CompositeSurface& surface,
             target.push_back(it->second);
         }
     }
-    const std::optional<PlaneMotion> fitted = fitPlaneMotion(source, target);
+    return fitPlaneMotion(source, target);
+}
+
+} // namespace
+
+std::vector<std::vector<Vec2>> sheetOnPiece(const CompositeSurface& surface,
+                                            const PatternPiece& piece, double chordTolerance) {
+    const std::optional<PlaneMotion> fitted = sheetMotion(surface, piece);
     if (!fitted) {
         return {};
     }
     const PlaneMotion& motion = *fitted;
+    const SheetDomain& domain = surface.sheetDomain();
 
     std::vector<std::vector<Vec2>> loops;
     for (const DomainLoop& loop : domainLoops(domain)) {
@@ -138,6 +145,26 @@ std::vector<std::vector<Vec2>> sheetOnPiece(const CompositeSurface& surface,
         }
     }
     return loops;
+}
+
+std::vector<std::vector<Vec2>> creaseCurvesOnPiece(const CompositeSurface& surface,
+                                                   const PatternPiece& piece) {
+    const std::optional<PlaneMotion> fitted = sheetMotion(surface, piece);
+    if (!fitted) {
+        return {};
+    }
+    std::vector<std::vector<Vec2>> curves;
+    for (const DomainLoop& curve : creaseCurveLoops(surface.sheetDomain())) {
+        std::vector<Vec2> points;
+        for (const Vec2& p : curve.polygon) {
+            points.push_back(fitted->apply(p));
+        }
+        if (!curve.open && !points.empty()) {
+            points.push_back(points.front());
+        }
+        curves.push_back(std::move(points));
+    }
+    return curves;
 }
 
 } // namespace devsurf::model::pattern

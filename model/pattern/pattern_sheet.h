@@ -38,4 +38,9 @@ std::optional<PlaneMotion> fitPlaneMotion(const std::vector<Vec2>& from,
 std::vector<std::vector<Vec2>> sheetOnPiece(const CompositeSurface& surface,
                                             const PatternPiece& piece, double chordTolerance);
 
+// The curves drawn in that sheet for its creases to follow (SheetDomain::creaseCurves), by the
+// same motion, as polylines (a closed one repeats its first point); empty where sheetOnPiece is.
+std::vector<std::vector<Vec2>> creaseCurvesOnPiece(const CompositeSurface& surface,
+                                                   const PatternPiece& piece);
+
 } // namespace devsurf::model::pattern

@@ -264,6 +264,81 @@ private slots:
         QVERIFY(model::largestDomainGap(held.sheetDomain(), mesh, held.development()) < 1e-6);
     }
 
+    void creaseCurvesComeFromADrawing() {
+        // The annulus on an annulus sheet with circles drawn at 130 and 205 mm (a DXF chosen
+        // in the dialog): the rings at 125 and 200 mm follow them, in one undo step; "None"
+        // takes the curves away again. A free sheet offers no curves.
+        QTemporaryDir dir;
+        const QString drawing = dir.filePath(QStringLiteral("creases.dxf"));
+        {
+            QFile file(drawing);
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            file.write("0\nSECTION\n2\nENTITIES\n"
+                       "0\nCIRCLE\n8\nCREASE\n10\n0\n20\n0\n30\n0\n40\n130\n"
+                       "0\nCIRCLE\n8\nCREASE\n10\n0\n20\n0\n30\n0\n40\n205\n0\nENDSEC\n0\n"
+                       "EOF\n");
+        }
+        app::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.workspace()->newFromExample(QStringLiteral("annulus"), 0);
+        document::Document* doc = window.workspace()->document();
+        const int steps = doc->undoStack()->count();
+        bool offeredWhenFree = true;
+        QString said;
+        QTimer poll;
+        connect(&poll, &QTimer::timeout, &poll, [&] {
+            auto* dialog = qobject_cast<app::SheetShapeDialog*>(QApplication::activeModalWidget());
+            if (!dialog) {
+                return;
+            }
+            poll.stop();
+            dialog->shapeBox()->setCurrentIndex(
+                dialog->shapeBox()->findData(static_cast<int>(model::SheetShape::Free)));
+            offeredWhenFree = dialog->creasesButton()->isEnabled();
+            dialog->shapeBox()->setCurrentIndex(
+                dialog->shapeBox()->findData(static_cast<int>(model::SheetShape::Annulus)));
+            dialog->radiusBox()->setValue(250.0);
+            dialog->innerRadiusBox()->setValue(100.0);
+            dialog->setCreasesChooser([&drawing] { return drawing; });
+            QVERIFY(dialog->creasesButton()->isEnabled());
+            dialog->creasesButton()->click();
+            said = dialog->creasesLabel()->text();
+            dialog->okButton()->click();
+        });
+        poll.start(10);
+        window.action(QStringLiteral("actionSheetShape"))->trigger();
+        poll.stop();
+        QVERIFY(!offeredWhenFree);
+        QVERIFY2(said.contains(QStringLiteral("creases.dxf")) &&
+                     said.contains(QStringLiteral("16")),
+                 qPrintable(said));
+        QCOMPARE(doc->undoStack()->count(), steps + 1);
+        const model::SheetDomain& held = doc->surface(0).sheetDomain();
+        QCOMPARE(held.shape, model::SheetShape::Annulus);
+        QCOMPARE(static_cast<int>(held.creaseCurves.size()), 2);
+        QCOMPARE(static_cast<int>(held.creaseCurveOf.size()), 16);
+        // Opened again, the dialog shows the curves kept; None clears them.
+        poll.disconnect();
+        connect(&poll, &QTimer::timeout, &poll, [&] {
+            auto* dialog = qobject_cast<app::SheetShapeDialog*>(QApplication::activeModalWidget());
+            if (!dialog) {
+                return;
+            }
+            poll.stop();
+            said = dialog->creasesLabel()->text();
+            dialog->clearCreasesButton()->click();
+            dialog->okButton()->click();
+        });
+        poll.start(10);
+        window.action(QStringLiteral("actionSheetShape"))->trigger();
+        poll.stop();
+        QVERIFY2(said.contains(QStringLiteral("16")), qPrintable(said));
+        QVERIFY(doc->surface(0).sheetDomain().creaseCurves.empty());
+        doc->undoStack()->undo();
+        QCOMPARE(static_cast<int>(doc->surface(0).sheetDomain().creaseCurveOf.size()), 16);
+    }
+
     void aTorusIsNoSheetToHold() {
         // A torus unrolls onto no one sheet, flat or around a cylinder: refused with a message,
         // nothing changed.

@@ -5,6 +5,7 @@
 #include "model/examples.h"
 #include "model/math_constants.h"
 #include "model/sampled_mesh.h"
+#include "model/sheet_creases.h"
 #include "model/sheet_domain.h"
 #include "side_by_side_views.h"
 #include "straight_control_points.h"
@@ -350,6 +351,43 @@ private slots:
         QTRY_VERIFY(
             !views.development->legendEntries().contains(devsurf::views::ViewOverlay::tr("Sheet")));
         QVERIFY(countSheetPixels() < drawn / 20); // a few pixels of the patches' blending
+    }
+
+    void creaseCurvesAreDrawnInTheSheet() {
+        // The annulus held on an annulus sheet with circles drawn at 130 and 205 mm for its
+        // rings at 125 and 200 mm: the development view draws the two curves beside the sheet's
+        // two loops, in the sheet's line; without the curves only the loops.
+        devsurf::model::Project project = devsurf::model::makeExample("annulus");
+        CompositeSurface& held = project.surfaces[0];
+        QVERIFY(!devsurf::model::keepDevelopment(held));
+        devsurf::model::SheetDomain ring;
+        ring.shape = devsurf::model::SheetShape::Annulus;
+        ring.innerRadius = 100.0;
+        ring.radius = 250.0;
+        const auto mesh =
+            devsurf::model::sampleSurface(held, devsurf::model::kDevelopmentSamplesPerInterval);
+        ring = devsurf::model::placeDomain(ring, mesh, held.development());
+        for (double r : {130.0, 205.0}) {
+            devsurf::model::SheetDomain::Curve circle;
+            circle.closed = true;
+            for (int i = 0; i < 360; ++i) {
+                circle.points.emplace_back(r * std::cos(i * kPi / 180.0),
+                                           r * std::sin(i * kPi / 180.0));
+            }
+            ring.creaseCurves.push_back(circle);
+        }
+        ring.creaseCurveOf =
+            devsurf::model::assignCreasesToCurves(ring, held, mesh, held.development());
+        QCOMPARE(static_cast<int>(ring.creaseCurveOf.size()), 16);
+        held.setSheetDomain(ring);
+        DevelopmentViews views(project);
+        QVERIFY(views.show());
+        QCOMPARE(views.development->sheetLoopsDrawn(), 4);
+        ring.creaseCurves.clear();
+        ring.creaseCurveOf.clear();
+        views.document.mutableProject().surfaces[0].setSheetDomain(ring);
+        views.document.notifyChanged(Change::Geometry);
+        QCOMPARE(views.development->sheetLoopsDrawn(), 2);
     }
 
     void overlappingPiecesAreOutlinedInRed() {

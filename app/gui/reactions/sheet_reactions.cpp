@@ -9,6 +9,7 @@
 
 #include "../sheet_shape_dialog.h"
 #include "model/sampled_mesh.h"
+#include "model/sheet_creases.h"
 
 #include <QAction>
 #include <QLocale>
@@ -150,7 +151,7 @@ void SheetShapeReaction::onTriggered() {
     }
     const model::SampledMesh mesh =
         model::sampleSurface(*held, model::kDevelopmentSamplesPerInterval);
-    SheetShapeDialog dialog(held->sheetDomain(), mesh, held->development(), workspace()->window());
+    SheetShapeDialog dialog(*held, mesh, held->development(), workspace()->window());
     if (dialog.exec() == QDialog::Accepted) {
         applyShape(*surface, dialog.domain());
     }
@@ -176,13 +177,19 @@ bool SheetShapeReaction::applyShape(int index, const model::SheetDomain& domain)
         model::sampleSurface(changed, model::kDevelopmentSamplesPerInterval);
     const double gap =
         domain.isFree() ? 0.0 : model::largestDomainGap(domain, mesh, changed.development());
+    const double creaseGap = model::largestCreaseCurveGap(domain, mesh, changed.development());
     if (!workspace()->apply(document::ApplySurfaceCommand::create(*doc, index, std::move(changed),
                                                                   tr("Set Sheet Shape"),
                                                                   document::Change::Labels),
                             tr("Cannot set the sheet shape"))) {
         return false;
     }
-    if (gap > 1e-6) {
+    if (creaseGap > 1e-6) {
+        emit workspace()->statusMessage(
+            tr("The development's creases are up to %1 mm from their curves, its boundary up to "
+               "%2 mm from the sheet's: Solve moves them there.")
+                .arg(QLocale().toString(creaseGap, 'f', 1), QLocale().toString(gap, 'f', 1)));
+    } else if (gap > 1e-6) {
         emit workspace()->statusMessage(
             tr("The development's boundary is up to %1 mm from the sheet's: Solve moves it onto "
                "the sheet.")
