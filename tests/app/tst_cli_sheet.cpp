@@ -21,6 +21,12 @@ class TstCliSheet : public QObject {
     QTemporaryDir m_dir;
 
     QString path(const char* name) const { return m_dir.filePath(QString::fromUtf8(name)); }
+    // Writes `text` to the file `name` in the test's directory and returns its path.
+    QString written(const char* name, const QByteArray& text) const {
+        QFile file(path(name));
+        return file.open(QIODevice::WriteOnly) && file.write(text) == text.size() ? path(name)
+                                                                                  : QString();
+    }
     static test::CliRun cli(const QStringList& arguments) { return test::runCli(arguments); }
 
 private slots:
@@ -162,13 +168,12 @@ private slots:
         // held on them, and a Solve moves their development there (radii computed here).
         const QString annulus = path("creases-annulus.devsurf");
         QCOMPARE(cli({"example", "annulus", "-o", annulus}).exitCode, 0);
-        const QString drawing = path("creases.dxf");
-        QFile dxf(drawing);
-        QVERIFY(dxf.open(QIODevice::WriteOnly));
-        dxf.write("0\nSECTION\n2\nENTITIES\n"
-                  "0\nCIRCLE\n8\nCREASE\n10\n0\n20\n0\n30\n0\n40\n130\n"
-                  "0\nCIRCLE\n8\nCREASE\n10\n0\n20\n0\n30\n0\n40\n205\n0\nENDSEC\n0\nEOF\n");
-        dxf.close();
+        const QString drawing =
+            written("creases.dxf", "0\nSECTION\n2\nENTITIES\n"
+                                   "0\nCIRCLE\n8\nCREASE\n10\n0\n20\n0\n30\n0\n40\n130\n"
+                                   "0\nCIRCLE\n8\nCREASE\n10\n0\n20\n0\n30\n0\n40\n205\n"
+                                   "0\nENDSEC\n0\nEOF\n");
+        QVERIFY(!drawing.isEmpty());
         const QString held = path("creases-held.devsurf");
         test::CliRun run =
             cli({"sheet", annulus, "--annulus", "100,250", "--creases", drawing, "-o", held});
@@ -202,13 +207,11 @@ private slots:
         QVERIFY2(worst < 2e-3, qPrintable(QString::number(worst)));
 
         // A drawing far from every crease, or creases on a free sheet, writes nothing.
-        const QString far = path("far.svg");
-        QFile farFile(far);
-        QVERIFY(farFile.open(QIODevice::WriteOnly));
-        farFile.write("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"600mm\" "
-                      "height=\"600mm\" viewBox=\"-300 -300 600 600\"><line x1=\"-290\" "
-                      "y1=\"-290\" x2=\"-280\" y2=\"-290\"/></svg>");
-        farFile.close();
+        const QString far =
+            written("far.svg", "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"600mm\" "
+                               "height=\"600mm\" viewBox=\"-300 -300 600 600\"><line x1=\"-290\" "
+                               "y1=\"-290\" x2=\"-280\" y2=\"-290\"/></svg>");
+        QVERIFY(!far.isEmpty());
         const QString refused = path("creases-refused.devsurf");
         run = cli({"sheet", annulus, "--annulus", "100,250", "--creases", far, "-o", refused});
         QCOMPARE(run.exitCode, 2);
