@@ -63,32 +63,52 @@ std::map<EdgeId, int> assignCreasesToCurves(const SheetDomain& domain,
                                             const std::vector<Vec2>& development) {
     std::map<EdgeId, int> assigned;
     const std::vector<DomainLoop> curves = creaseCurveLoops(domain);
+    std::vector<const SampledMesh::Polyline*> creases;
     for (const SampledMesh::Polyline& line : mesh.splineEdges) {
-        if (!surface.hasEdge(line.edge) || surface.facesOfEdge(line.edge).size() != 2 ||
-            line.vertices.size() < 2) {
-            continue;
+        if (surface.hasEdge(line.edge) && surface.facesOfEdge(line.edge).size() == 2 &&
+            line.vertices.size() >= 2) {
+            creases.push_back(&line);
         }
+    }
+    auto at = [&development](int v) { return development[static_cast<std::size_t>(v)]; };
+    for (const SampledMesh::Polyline* line : creases) {
         double length = 0.0;
-        for (std::size_t i = 1; i < line.vertices.size(); ++i) {
-            length += (development[static_cast<std::size_t>(line.vertices[i])] -
-                       development[static_cast<std::size_t>(line.vertices[i - 1])])
-                          .norm();
+        for (std::size_t i = 1; i < line->vertices.size(); ++i) {
+            length += (at(line->vertices[i]) - at(line->vertices[i - 1])).norm();
         }
         int best = -1;
         double bestMean = std::numeric_limits<double>::infinity();
         for (std::size_t c = 0; c < curves.size(); ++c) {
             double sum = 0.0;
-            for (int v : line.vertices) {
-                sum += distanceTo(curves[c], development[static_cast<std::size_t>(v)]);
+            for (int v : line->vertices) {
+                sum += distanceTo(curves[c], at(v));
             }
-            const double mean = sum / static_cast<double>(line.vertices.size());
+            const double mean = sum / static_cast<double>(line->vertices.size());
             if (mean < bestMean) {
                 bestMean = mean;
                 best = static_cast<int>(c);
             }
         }
-        if (best >= 0 && bestMean <= kCreaseCurveReach * length) {
-            assigned[line.edge] = best;
+        if (best < 0 || bestMean > kCreaseCurveReach * length) {
+            continue;
+        }
+        // The curve is this crease's where no other crease lies nearer it: for most samples,
+        // the sample is the nearest of all creases' samples to its foot on the curve.
+        const std::set<int> own(line->vertices.begin(), line->vertices.end());
+        std::size_t nearest = 0;
+        for (int v : line->vertices) {
+            const Vec2 foot = footPoint(curves[static_cast<std::size_t>(best)], at(v)).point;
+            const double mine = (at(v) - foot).norm();
+            bool beaten = false;
+            for (const SampledMesh::Polyline* other : creases) {
+                for (int w : other->vertices) {
+                    beaten = beaten || (own.count(w) == 0 && (at(w) - foot).norm() < mine);
+                }
+            }
+            nearest += beaten ? 0 : 1;
+        }
+        if (2 * nearest >= line->vertices.size()) {
+            assigned[line->edge] = best;
         }
     }
     return assigned;

@@ -32,9 +32,10 @@ std::vector<OnCreaseCurve> creaseSamplesOnCurves(const SheetDomain& domain,
 
 // Assigns the creases of `surface` (its S-edges between two faces) to the domain's curves: an
 // edge goes to the curve its samples' development lies nearest to on average, when that mean
-// distance is at most kCreaseCurveReach of the edge's developed length. `mesh` is the surface
-// sampled as `development` is.
-inline constexpr double kCreaseCurveReach = 0.1;
+// distance is at most kCreaseCurveReach of the edge's developed length and no other crease lies
+// nearer the curve there (for at least half of its samples, the sample is the nearest crease
+// sample to its foot point on the curve). `mesh` is the surface sampled as `development` is.
+inline constexpr double kCreaseCurveReach = 0.5;
 // mm: a drawn crease curve is read this close to the exact curve (finer than a sheet's outline),
 // so that its polygon turns by little at each vertex.
 inline constexpr double kCreaseCurveTolerance = 0.001;

@@ -4278,6 +4278,11 @@
         </translation>
     </message>
     <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="307"/>
+        <source>%1; no crease lies near them (within half its length, no other crease nearer), so they are not used</source>
+        <translation>%1; kein Falz liegt nahe bei ihnen (innerhalb seiner halben Länge, ohne näheren anderen Falz), daher werden sie nicht verwendet</translation>
+    </message>
+    <message>
         <location filename="../app/gui/sheet_shape_dialog.cpp" line="72"/>
         <source>none chosen</source>
         <translation>keiner gewählt</translation>
@@ -4318,13 +4323,8 @@
         <source>%1, used with a shape only</source>
         <translation>%1, nur mit einer Form verwendet</translation>
     </message>
-    <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="307"/>
-        <source>%1; no crease lies near them (within a tenth of its length), so they are not used</source>
-        <translation>%1; kein Falz liegt nahe bei ihnen (innerhalb eines Zehntels seiner Länge), daher werden sie nicht verwendet</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="313"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="314"/>
         <source>%1, holding %n crease(s)</source>
         <translation>
             <numerusform>%1, hält %n Falz</numerusform>

@@ -459,7 +459,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="313"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="314"/>
         <source>%1, holding %n crease(s)</source>
         <translation>
             <numerusform>%1, holding %n crease</numerusform>

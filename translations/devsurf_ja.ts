@@ -4229,6 +4229,11 @@
         </translation>
     </message>
     <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="307"/>
+        <source>%1; no crease lies near them (within half its length, no other crease nearer), so they are not used</source>
+        <translation>%1。近く (長さの半分以内で、より近い折り線が他にない) にある折り線がないため使用しません</translation>
+    </message>
+    <message>
         <location filename="../app/gui/sheet_shape_dialog.cpp" line="72"/>
         <source>none chosen</source>
         <translation>未選択</translation>
@@ -4267,13 +4272,8 @@
         <source>%1, used with a shape only</source>
         <translation>%1 (形を選んだときのみ使用)</translation>
     </message>
-    <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="307"/>
-        <source>%1; no crease lies near them (within a tenth of its length), so they are not used</source>
-        <translation>%1。近く (長さの 1/10 以内) にある折り線がないため使用しません</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="313"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="314"/>
         <source>%1, holding %n crease(s)</source>
         <translation>
             <numerusform>%1、%n 本の折り線を保持</numerusform>

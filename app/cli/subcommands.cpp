@@ -66,7 +66,8 @@ const std::vector<SubcommandSpec>& subcommands() {
          "file (open or closed, seen from above, in the sheet's frame: the\n"
          "rectangle from 0,0 to W,H, circles centred at 0,0, an outline's own\n"
          "coordinates) holds the creases whose development lies near it (on\n"
-         "average within a tenth of the crease's length), every sample of\n"
+         "average within half the crease's length, no other crease nearer\n"
+         "it), every sample of\n"
          "such a crease on the curve's tangent line; the next solve moves them\n"
          "onto their curves.",
          {{"free", "", "Hold the sheet as it unfolds, its boundary free."},

@@ -341,8 +341,9 @@ int runSheetCommand(const SubcommandArguments& args) {
             model::assignCreasesToCurves(domain, surface, mesh, surface.development());
         creases = domain.creaseCurveOf.size();
         if (creases == 0) {
-            throw InputError("no crease of '" + surface.name() + "' lies near a curve of '" + path +
-                             "' (within a tenth of its length, where the sheet is placed)");
+            throw InputError(
+                "no crease of '" + surface.name() + "' lies near a curve of '" + path +
+                "' (within half its length, no other crease nearer, where the sheet is placed)");
         }
     }
     surface.setSheetDomain(domain);

@@ -304,8 +304,8 @@ void SheetShapeDialog::updateCreases() {
     const model::SheetDomain d = domain();
     if (d.creaseCurveOf.empty()) {
         m_creasesName->setText(
-            tr("%1; no crease lies near them (within a tenth of its length), so they are not "
-               "used")
+            tr("%1; no crease lies near them (within half its length, no other crease nearer), "
+               "so they are not used")
                 .arg(drawn));
         m_creasesName->setStyleSheet(QStringLiteral("color: #b00020;"));
         return;

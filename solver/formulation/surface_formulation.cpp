@@ -477,10 +477,17 @@ struct SurfaceFormulation::Builder {
         }
     }
 
-    // Fairness of every curve's control points; the isometry of every strip's control net.
+    // Fairness of every curve's control points; the isometry of every strip's control net. A
+    // crease held on a curve drawn in the sheet takes its shape from that curve: its fairness,
+    // pulling it straight against the curve, made the iteration alternate (docs/tuning.md).
     void addFairness() {
+        const model::SheetDomain& sheet = options.developmentDomain;
+        const bool curvesHold = options.developmentSamplesPerInterval > 0 &&
+                                !options.fixedDevelopment && !sheet.isFree();
         for (const auto& [edge, points] : edgeOffsets) {
-            fairness->addSequence(points);
+            if (!(curvesHold && sheet.creaseCurveOf.count(edge) != 0)) {
+                fairness->addSequence(points);
+            }
         }
         if (options.isometryWeight > 0.0 || options.lengthDampingWeight > 0.0) {
             addStripIsometry(strips, edgeOffsets, f.m_initialState, *isometry);
