@@ -159,7 +159,15 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="86"/>
+        <location filename="../app/gui/drag_tool.cpp" line="84"/>
+        <source>Drag %n vertices in the sheet</source>
+        <translation>
+            <numerusform>Drag %n vertex in the sheet</numerusform>
+            <numerusform>Drag %n vertices in the sheet</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="89"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>Drag %n vertex</numerusform>
@@ -167,7 +175,15 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="139"/>
+        <location filename="../app/gui/drag_tool.cpp" line="115"/>
+        <source>Dragging %n vertices %1 mm along their sheet; the surface follows. Release to finish, Esc cancels.</source>
+        <translation>
+            <numerusform>Dragging %n vertex %1 mm along its sheet; the surface follows. Release to finish, Esc cancels.</numerusform>
+            <numerusform>Dragging %n vertices %1 mm along their sheet; the surface follows. Release to finish, Esc cancels.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/drag_tool.cpp" line="150"/>
         <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along X. Release to finish, Esc cancels.</numerusform>
@@ -175,7 +191,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="142"/>
+        <location filename="../app/gui/drag_tool.cpp" line="153"/>
         <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along Y. Release to finish, Esc cancels.</numerusform>
@@ -183,7 +199,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="145"/>
+        <location filename="../app/gui/drag_tool.cpp" line="156"/>
         <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along Z. Release to finish, Esc cancels.</numerusform>
@@ -191,7 +207,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="150"/>
+        <location filename="../app/gui/drag_tool.cpp" line="161"/>
         <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</numerusform>

@@ -77,8 +77,11 @@ DragTool::~DragTool() {
 }
 
 QString DragTool::undoText() const {
-    if (m_inSheet && !m_vertices.empty()) {
+    if (m_inSheet && m_vertices.size() == 1) {
         return tr("Drag vertex %1 in the sheet").arg(m_vertices.front());
+    }
+    if (m_inSheet && !m_vertices.empty()) {
+        return tr("Drag %n vertices in the sheet", nullptr, static_cast<int>(m_vertices.size()));
     }
     if (m_crease) {
         return tr("Drag crease %1").arg(m_crease->edge());
@@ -105,11 +108,19 @@ QString DragTool::changedText() const {
 }
 
 QString DragTool::motionText() const {
-    if (m_inSheet && !m_vertices.empty()) {
+    if (m_inSheet && !m_sheetStarts.empty()) {
+        const QString moved = QString::number(
+            (m_sheetTargets[m_sheetPressed] - m_sheetStarts[m_sheetPressed]).norm(), 'f', 2);
+        if (m_vertices.size() > 1) {
+            return tr("Dragging %n vertices %1 mm along their sheet; the surface follows. "
+                      "Release to finish, Esc cancels.",
+                      nullptr, static_cast<int>(m_vertices.size()))
+                .arg(moved);
+        }
         return tr("Dragging vertex %1 %2 mm along its sheet; the surface follows. Release to "
                   "finish, Esc cancels.")
             .arg(m_vertices.front())
-            .arg(QString::number((m_sheetTarget - m_sheetStart).norm(), 'f', 2));
+            .arg(moved);
     }
     if (m_crease) {
         const QString shift = QString::number(m_creaseShift.norm(), 'f', 2);
@@ -457,7 +468,9 @@ void DragTool::submit(bool settle) {
     job.settle = settle;
     job.surfaces = m_pressSurfaces;
     if (m_inSheet) {
-        job.pulledSheet[m_surface].push_back({m_vertices.front(), m_sheetTarget});
+        for (std::size_t i = 0; i < m_vertices.size() && i < m_sheetTargets.size(); ++i) {
+            job.pulledSheet[m_surface].push_back({m_vertices[i], m_sheetTargets[i]});
+        }
     } else {
         std::vector<solver::VertexHandle>& handles = job.pulled[m_surface];
         for (std::size_t i = 0; i < m_vertices.size(); ++i) {

@@ -158,8 +158,10 @@ private:
     views::SceneView* m_sheetView = nullptr;
     bool m_inSheet = false;                    // this drag was pressed in the sheet view
     model::pattern::PlaneMotion m_sheetMotion; // kept development → the view's layout
-    model::Vec2 m_sheetStart;                  // the pressed vertex in the kept development
-    model::Vec2 m_sheetTarget;
+    // The dragged vertices (m_vertices) in the kept development, and where the drag puts them.
+    std::vector<model::Vec2> m_sheetStarts;
+    std::vector<model::Vec2> m_sheetTargets;
+    std::size_t m_sheetPressed = 0; // the pressed one among them
 
     QAction* m_action;
     Workspace* m_workspace;

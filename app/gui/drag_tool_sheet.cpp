@@ -1,5 +1,5 @@
-// The Drag tool in the development view (two-way editing): a vertex's place in the sheet a
-// surface holds, dragged there; the surface follows its sheet.
+// The Drag tool in the development view (two-way editing): the places of a vertex, or of the
+// selected vertices, in the sheet a surface holds, dragged there; the surface follows its sheet.
 #include "drag_tool.h"
 
 #include "model/document/document.h"
@@ -7,6 +7,8 @@
 #include "solve_controller.h"
 #include "views/scene_view.h"
 #include "workspace.h"
+
+#include <map>
 
 namespace devsurf::app {
 
@@ -26,43 +28,60 @@ bool DragTool::pressSheet(const QPoint& pos) {
         return false;
     }
     // The view lays the development out (turned, moved, maybe mirrored): the motion from the
-    // kept development to that layout, fitted on the coarse vertices the view draws.
-    const auto& vertices = surface.vertices();
+    // kept development to that layout, fitted on the coarse vertices the view draws. The
+    // development lists the coarse vertices first, in id order.
+    std::map<model::VertexId, std::size_t> indexOf;
     std::vector<model::Vec2> kept;
     std::vector<model::Vec2> shown;
-    std::size_t index = 0;
-    std::size_t pressed = 0;
-    for (const auto& [id, p] : vertices) {
+    for (const auto& [id, p] : surface.vertices()) {
         (void)p;
+        const std::size_t index = indexOf.size();
+        indexOf[id] = index;
         const std::optional<model::Vec3> at = m_sheetView->vertexScenePoint(pick->surface, id);
         if (at && index < surface.development().size()) {
             kept.push_back(surface.development()[index]);
             shown.push_back({at->x, at->y});
         }
-        if (id == pick->id) {
-            pressed = index;
-        }
-        ++index;
     }
     const std::optional<model::pattern::PlaneMotion> motion =
         model::pattern::fitPlaneMotion(kept, shown);
-    if (!motion || pressed >= surface.development().size()) {
+    if (!motion || indexOf.at(pick->id) >= surface.development().size()) {
         return false;
     }
-    m_workspace->selection()->set({*pick});
+    // The pressed vertex with the other selected vertices of its surface, if it is selected.
+    document::Selection* selection = m_workspace->selection();
+    std::vector<model::VertexId> dragged;
+    if (selection->contains(*pick)) {
+        for (const Pick& p : selection->picks()) {
+            if (p.kind == Pick::Kind::Vertex && p.surface == pick->surface &&
+                surface.hasVertex(p.id)) {
+                dragged.push_back(p.id);
+            }
+        }
+    } else {
+        selection->set({*pick});
+        dragged.assign(1, pick->id);
+    }
     if (m_solver->isSolving()) {
         m_solver->cancel(tr("a drag started"));
     }
     m_inSheet = true;
     m_sheetMotion = *motion;
-    m_sheetStart = surface.development()[pressed];
-    m_sheetTarget = m_sheetStart;
+    m_vertices = dragged;
+    m_sheetStarts.clear();
+    m_start.clear();
+    for (model::VertexId v : m_vertices) {
+        if (v == pick->id) {
+            m_sheetPressed = m_sheetStarts.size();
+        }
+        m_sheetStarts.push_back(surface.development()[indexOf.at(v)]);
+        m_start.push_back(surface.position(v));
+    }
+    m_sheetTargets = m_sheetStarts;
     m_crease.reset();
     m_held.reset();
     m_surface = pick->surface;
-    m_vertices.assign(1, pick->id);
-    m_start.assign(1, surface.position(pick->id));
-    const model::Vec2 drawn = m_sheetMotion.apply(m_sheetStart);
+    const model::Vec2 drawn = m_sheetMotion.apply(m_sheetStarts[m_sheetPressed]);
     start(pos, model::Vec3(drawn.x, drawn.y, 0.0));
     m_normal = model::Vec3(0.0, 0.0, 1.0); // the development's plane
     return true;
@@ -77,8 +96,11 @@ bool DragTool::sheetTargetAt(const QPoint& pos) {
     if (axis() == Axis::X || axis() == Axis::Y) {
         delta = axis() == Axis::X ? model::Vec2(delta.x, 0.0) : model::Vec2(0.0, delta.y);
     }
-    const model::Vec2 drawn = m_sheetMotion.apply(m_sheetStart) + delta;
-    m_sheetTarget = m_sheetMotion.applyInverse(drawn);
+    // Every dragged vertex moves by the same amount in the view's layout.
+    for (std::size_t i = 0; i < m_sheetStarts.size(); ++i) {
+        m_sheetTargets[i] =
+            m_sheetMotion.applyInverse(m_sheetMotion.apply(m_sheetStarts[i]) + delta);
+    }
     return true;
 }
 

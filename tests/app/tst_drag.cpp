@@ -174,6 +174,55 @@ private slots:
         window.action(QStringLiteral("actionDragTool"))->setChecked(false);
     }
 
+    void selectedPointsOfTheSheetAreDraggedTogether() {
+        // Vertices 5 and 6 of the flat `sheet` (on its rectangle, bottom corners pinned)
+        // selected, a press on 5 in the development view and a move along the sheet: both
+        // places in the sheet move, and the surface follows, in one undo step.
+        app::MainWindow window;
+        QVERIFY(showActiveWithExample(window, QStringLiteral("sheet")));
+        document::Document* doc = window.workspace()->document();
+        model::Project project = doc->project();
+        model::CompositeSurface& s = project.surfaces.front();
+        QVERIFY(!model::keepDevelopment(s).has_value());
+        model::SheetDomain square;
+        square.shape = model::SheetShape::Rectangle;
+        square.width = 300.0;
+        square.height = 300.0;
+        s.setSheetDomain(model::placeDomain(square, model::sampleSurface(s, 2), s.development()));
+        s.setPinned(0, true);
+        s.setPinned(3, true);
+        doc->resetProject(project);
+        views::DevelopmentView* view = window.developmentView();
+        view->grabImage();
+        const QPoint at = view->projectVertexToWidget(0, 5);
+        window.workspace()->selection()->set(
+            {Pick{Pick::Kind::Vertex, 0, 5}, Pick{Pick::Kind::Vertex, 0, 6}});
+        window.action(QStringLiteral("actionDragTool"))->setChecked(true);
+        const int stackAtPress = doc->undoStack()->count();
+        const std::vector<model::Vec2> before = doc->surface(0).development();
+        QSignalSpy finished(window.dragTool(), &app::DragTool::dragFinished);
+        QWidget* gl = view->glWidget();
+        QTest::mousePress(gl, Qt::LeftButton, {}, at);
+        QVERIFY(window.dragTool()->draggingSheet());
+        for (int i = 1; i <= 5; ++i) {
+            QTest::mouseMove(gl, at + QPoint(4 * i, 0));
+        }
+        QTest::mouseRelease(gl, Qt::LeftButton, {}, at + QPoint(20, 0));
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(finished.front().front().toBool(), true);
+        QCOMPARE(doc->undoStack()->count(), stackAtPress + 1);
+        QVERIFY2(doc->undoStack()->undoText().contains(QStringLiteral("2")),
+                 qPrintable(doc->undoStack()->undoText()));
+        const model::CompositeSurface& result = doc->surface(0);
+        // The coarse vertices come first in the development, in id order: 5 and 6 at 5 and 6.
+        const double moved5 = (result.development()[5] - before[5]).norm();
+        const double moved6 = (result.development()[6] - before[6]).norm();
+        QVERIFY2(moved5 > 1.0 && moved6 > 1.0,
+                 qPrintable(QStringLiteral("%1 %2").arg(moved5).arg(moved6)));
+        QVERIFY(model::keptSheetStretch(result) < 1e-3);
+        window.action(QStringLiteral("actionDragTool"))->setChecked(false);
+    }
+
     void aSheetThatIsNotHeldIsNotDraggedInTheDevelopmentView() {
         app::MainWindow window;
         QVERIFY(showActiveWithExample(window, QStringLiteral("sheet")));
