@@ -321,6 +321,25 @@ private slots:
         QCOMPARE(corners.size(), 4);
         QCOMPARE(corners[0].toArray()[0].toDouble(), 0.0);
         QCOMPARE(corners[2].toArray()[1].toDouble(), 200.0);
+        QVERIFY(!shape.contains("creaseCurves"));
+        // Crease curves drawn in it: placed in the development's plane, with their creases.
+        square.creaseCurves = {{{{-150, 0}, {0, 10}, {150, 0}}, false}};
+        square.creaseCurveOf = {{7, 0}, {9, 0}};
+        project.surfaces[0].setSheetDomain(square);
+        const QJsonArray curves = parse(io::interchangeJson(project, 4))["surfaces"]
+                                      .toArray()[0]
+                                      .toObject()["keptDevelopment"]
+                                      .toObject()["sheet"]
+                                      .toObject()["creaseCurves"]
+                                      .toArray();
+        QCOMPARE(curves.size(), 1);
+        const QJsonObject curve = curves[0].toObject();
+        QVERIFY(!curve["closed"].toBool());
+        QCOMPARE(curve["points"].toArray().size(), 3);
+        QCOMPARE(curve["points"].toArray()[1].toArray()[0].toDouble(), 150.0); // moved by centre
+        QCOMPARE(curve["points"].toArray()[1].toArray()[1].toDouble(), 110.0);
+        QCOMPARE(curve["edges"].toArray().size(), 2);
+        QCOMPARE(curve["edges"].toArray()[1].toInt(), 9);
     }
 
     void referenceCurvesAreWritten() {
