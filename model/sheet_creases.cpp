@@ -100,9 +100,12 @@ std::map<EdgeId, int> assignCreasesToCurves(const SheetDomain& domain,
             const Vec2 foot = footPoint(curves[static_cast<std::size_t>(best)], at(v)).point;
             const double mine = (at(v) - foot).norm();
             bool beaten = false;
-            for (const SampledMesh::Polyline* other : creases) {
-                for (int w : other->vertices) {
-                    beaten = beaten || (own.count(w) == 0 && (at(w) - foot).norm() < mine);
+            for (std::size_t k = 0; k < creases.size() && !beaten; ++k) {
+                for (int w : creases[k]->vertices) {
+                    if (own.count(w) == 0 && (at(w) - foot).norm() < mine) {
+                        beaten = true;
+                        break;
+                    }
                 }
             }
             nearest += beaten ? 0 : 1;
