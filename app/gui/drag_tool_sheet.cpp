@@ -54,7 +54,7 @@ bool DragTool::pressSheet(const QPoint& pos) {
     if (selection->contains(*pick)) {
         for (const Pick& p : selection->picks()) {
             if (p.kind == Pick::Kind::Vertex && p.surface == pick->surface &&
-                surface.hasVertex(p.id)) {
+                surface.hasVertex(p.id) && indexOf.at(p.id) < surface.development().size()) {
                 dragged.push_back(p.id);
             }
         }
