@@ -42,6 +42,33 @@ using namespace devsurf;
 using document::Pick;
 using test::bytesOf;
 using test::showActiveWithExample;
+
+namespace {
+
+// The window on the flat `sheet` holding its sheet on its 300 × 300 mm rectangle, its bottom
+// corners (vertices 0 and 3) pinned.
+bool showSheetHeldOnItsSquare(app::MainWindow& window) {
+    if (!showActiveWithExample(window, QStringLiteral("sheet"))) {
+        return false;
+    }
+    document::Document* doc = window.workspace()->document();
+    model::Project project = doc->project();
+    model::CompositeSurface& s = project.surfaces.front();
+    if (model::keepDevelopment(s).has_value()) {
+        return false;
+    }
+    model::SheetDomain square;
+    square.shape = model::SheetShape::Rectangle;
+    square.width = 300.0;
+    square.height = 300.0;
+    s.setSheetDomain(model::placeDomain(square, model::sampleSurface(s, 2), s.development()));
+    s.setPinned(0, true);
+    s.setPinned(3, true);
+    doc->resetProject(project);
+    return true;
+}
+
+} // namespace
 using test::waitForWorkerIdle;
 
 class TstDrag : public QObject {
@@ -120,19 +147,9 @@ private slots:
         // development view and a move drag its place in the sheet; the surface follows (one
         // undo step), stays on the square, and undo and redo give the states byte for byte.
         app::MainWindow window;
-        QVERIFY(showActiveWithExample(window, QStringLiteral("sheet")));
+        QVERIFY(showSheetHeldOnItsSquare(window));
         document::Document* doc = window.workspace()->document();
-        model::Project project = doc->project();
-        model::CompositeSurface& s = project.surfaces.front();
-        QVERIFY(!model::keepDevelopment(s).has_value());
-        model::SheetDomain square;
-        square.shape = model::SheetShape::Rectangle;
-        square.width = 300.0;
-        square.height = 300.0;
-        s.setSheetDomain(model::placeDomain(square, model::sampleSurface(s, 2), s.development()));
-        s.setPinned(0, true);
-        s.setPinned(3, true);
-        doc->resetProject(project);
+        const model::Project project = doc->project();
         constexpr model::VertexId kVertex = 5; // (100, 100): inside the sheet
         views::DevelopmentView* view = window.developmentView();
         view->grabImage();
@@ -179,19 +196,8 @@ private slots:
         // selected, a press on 5 in the development view and a move along the sheet: both
         // places in the sheet move, and the surface follows, in one undo step.
         app::MainWindow window;
-        QVERIFY(showActiveWithExample(window, QStringLiteral("sheet")));
+        QVERIFY(showSheetHeldOnItsSquare(window));
         document::Document* doc = window.workspace()->document();
-        model::Project project = doc->project();
-        model::CompositeSurface& s = project.surfaces.front();
-        QVERIFY(!model::keepDevelopment(s).has_value());
-        model::SheetDomain square;
-        square.shape = model::SheetShape::Rectangle;
-        square.width = 300.0;
-        square.height = 300.0;
-        s.setSheetDomain(model::placeDomain(square, model::sampleSurface(s, 2), s.development()));
-        s.setPinned(0, true);
-        s.setPinned(3, true);
-        doc->resetProject(project);
         views::DevelopmentView* view = window.developmentView();
         view->grabImage();
         const QPoint at = view->projectVertexToWidget(0, 5);
