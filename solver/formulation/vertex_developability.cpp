@@ -81,6 +81,10 @@ int creaseThrough(const VertexStar& star) {
     return -1;
 }
 
+model::CreaseCondition conditionOf(const model::CompositeSurface& surface, model::EdgeId edge) {
+    return surface.hasEdge(edge) ? surface.edge(edge).condition : model::CreaseCondition::None;
+}
+
 } // namespace
 
 int addVertexDevelopability(const model::CompositeSurface& surface,
@@ -92,6 +96,7 @@ int addVertexDevelopability(const model::CompositeSurface& surface,
     const double smoothCreaseAngle = options.vertexSmoothCreaseAngle;
     std::vector<StarOffsets> stars;
     std::vector<int> through; // per star: creaseThrough, or -1 without tangent continuity
+    std::vector<std::pair<model::EdgeId, model::EdgeId>> starEdges; // the crease's two S-edges
     int flatPoints = 0;
     for (const VertexStar& star : creaseVertexStars(surface)) {
         StarOffsets s;
@@ -112,6 +117,10 @@ int addVertexDevelopability(const model::CompositeSurface& surface,
         if (!degenerate) {
             flatPoints += 1 + static_cast<int>(n);
             through.push_back(smoothCreaseAngle > 0.0 ? creaseThrough(star) : -1);
+            const int i = through.back();
+            starEdges.emplace_back(
+                i >= 0 ? star.spokes[static_cast<std::size_t>(i)].edge : model::kInvalidId,
+                i >= 0 ? star.spokes[static_cast<std::size_t>(i) + 2].edge : model::kInvalidId);
             stars.push_back(std::move(s));
         }
     }
@@ -148,7 +157,15 @@ int addVertexDevelopability(const model::CompositeSurface& surface,
             const int right = s.spokes[i + 2];
             const model::Vec3 l = valueAt(state, left) - v;
             const model::Vec3 r = valueAt(state, right) - v;
-            const bool straight = kept && angleBetween(l, r) > kPi - smoothCreaseAngle;
+            // A crease with a condition (a curved fold) is meant smooth; a plain crease only
+            // where it is nearly straight already: it may keep a kink (docs/tuning.md).
+            const bool conditioned =
+                conditionOf(surface, starEdges[k].first) != model::CreaseCondition::None &&
+                conditionOf(surface, starEdges[k].second) != model::CreaseCondition::None;
+            const double limit =
+                conditioned ? smoothCreaseAngle
+                            : std::min(smoothCreaseAngle, options.vertexSmoothPlainCreaseAngle);
+            const bool straight = kept && angleBetween(l, r) > kPi - limit;
             const int ratio = ratios++;
             state[static_cast<std::size_t>(ratio)] = r.norm() / l.norm();
             smooth->add({s.centre, left, right, ratio, straight ? 1.0 / r.norm() : 0.0});
