@@ -31,7 +31,8 @@ namespace devsurf::solver {
 //
 // A star of four spokes through which a crease passes (spokes i and i + 2 both S-edges) and
 // does so almost straight (they leave the vertex within `smoothCreaseAngle` radians of opposite
-// directions in `state`) is made developable by tangent continuity of the crease instead of its
+// directions in `state`; a crease without a condition within vertexSmoothPlainCreaseAngle, if
+// that is smaller) is made developable by tangent continuity of the crease instead of its
 // flat copy: its two tangent points l, r lie on one line through v on opposite sides,
 //   ((r − v) + λ (l − v)) / |r − v|_ref = 0   (three rows, λ > 0 a variable of a block
 //   "creaseTangentRatios", starting at |r − v| / |l − v|),
