@@ -159,7 +159,7 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="84"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="111"/>
         <source>Drag %n vertices in the sheet</source>
         <translation>
             <numerusform>Drag %n vertex in the sheet</numerusform>
@@ -167,7 +167,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="89"/>
+        <location filename="../app/gui/drag_tool.cpp" line="86"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>Drag %n vertex</numerusform>
@@ -175,7 +175,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="115"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="118"/>
         <source>Dragging %n vertices %1 mm along their sheet; the surface follows. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along its sheet; the surface follows. Release to finish, Esc cancels.</numerusform>
@@ -183,7 +183,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="150"/>
+        <location filename="../app/gui/drag_tool.cpp" line="136"/>
         <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along X. Release to finish, Esc cancels.</numerusform>
@@ -191,7 +191,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="153"/>
+        <location filename="../app/gui/drag_tool.cpp" line="139"/>
         <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along Y. Release to finish, Esc cancels.</numerusform>
@@ -199,7 +199,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="156"/>
+        <location filename="../app/gui/drag_tool.cpp" line="142"/>
         <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along Z. Release to finish, Esc cancels.</numerusform>
@@ -207,7 +207,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="161"/>
+        <location filename="../app/gui/drag_tool.cpp" line="147"/>
         <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</numerusform>

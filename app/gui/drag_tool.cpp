@@ -77,11 +77,8 @@ DragTool::~DragTool() {
 }
 
 QString DragTool::undoText() const {
-    if (m_inSheet && m_vertices.size() == 1) {
-        return tr("Drag vertex %1 in the sheet").arg(m_vertices.front());
-    }
     if (m_inSheet && !m_vertices.empty()) {
-        return tr("Drag %n vertices in the sheet", nullptr, static_cast<int>(m_vertices.size()));
+        return sheetUndoText();
     }
     if (m_crease) {
         return tr("Drag crease %1").arg(m_crease->edge());
@@ -109,18 +106,7 @@ QString DragTool::changedText() const {
 
 QString DragTool::motionText() const {
     if (m_inSheet && !m_sheetStarts.empty()) {
-        const QString moved = QString::number(
-            (m_sheetTargets[m_sheetPressed] - m_sheetStarts[m_sheetPressed]).norm(), 'f', 2);
-        if (m_vertices.size() > 1) {
-            return tr("Dragging %n vertices %1 mm along their sheet; the surface follows. "
-                      "Release to finish, Esc cancels.",
-                      nullptr, static_cast<int>(m_vertices.size()))
-                .arg(moved);
-        }
-        return tr("Dragging vertex %1 %2 mm along its sheet; the surface follows. Release to "
-                  "finish, Esc cancels.")
-            .arg(m_vertices.front())
-            .arg(moved);
+        return sheetMotionText();
     }
     if (m_crease) {
         const QString shift = QString::number(m_creaseShift.norm(), 'f', 2);

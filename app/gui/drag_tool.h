@@ -148,6 +148,9 @@ private:
     // "Pins 0, 3 and 12 hold vertex 5 …", before the motion's sentence, while pins hold a
     // dragged vertex where the sheet cannot bend (m_held); empty otherwise.
     QString heldText() const;
+    // The texts of a drag in the development view (drag_tool_sheet.cpp).
+    QString sheetUndoText() const;
+    QString sheetMotionText() const;
     void onResult(const solver::SolveResult& result);
     void end(bool applied, const QString& sentence);
     bool handleKey(QEvent* event);

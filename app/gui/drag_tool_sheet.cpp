@@ -104,4 +104,26 @@ bool DragTool::sheetTargetAt(const QPoint& pos) {
     return true;
 }
 
+QString DragTool::sheetUndoText() const {
+    if (m_vertices.size() == 1) {
+        return tr("Drag vertex %1 in the sheet").arg(m_vertices.front());
+    }
+    return tr("Drag %n vertices in the sheet", nullptr, static_cast<int>(m_vertices.size()));
+}
+
+QString DragTool::sheetMotionText() const {
+    const QString moved = QString::number(
+        (m_sheetTargets[m_sheetPressed] - m_sheetStarts[m_sheetPressed]).norm(), 'f', 2);
+    if (m_vertices.size() > 1) {
+        return tr("Dragging %n vertices %1 mm along their sheet; the surface follows. Release to "
+                  "finish, Esc cancels.",
+                  nullptr, static_cast<int>(m_vertices.size()))
+            .arg(moved);
+    }
+    return tr("Dragging vertex %1 %2 mm along its sheet; the surface follows. Release to "
+              "finish, Esc cancels.")
+        .arg(m_vertices.front())
+        .arg(moved);
+}
+
 } // namespace devsurf::app
