@@ -274,8 +274,9 @@ public:
     // and of the paired curves (curvePairs) on `current`, the surface at the state about to be
     // iterated from. No-op without them.
     void refreshApproximation(const model::CompositeSurface& current);
-    // Multiplies the weights of eqs. (9)–(11) by `factor` (the approximation fading out so
-    // that the hard conditions converge exactly at its end).
+    // Multiplies the weights of eqs. (9)–(11) and of the control normals' unit length by
+    // `factor` (the approximation fading out so that the hard conditions converge exactly at
+    // its end, and the normal spline does not bend the strip once the pull is gone).
     void scaleApproximationWeights(double factor);
     // The closest points of the target; null without one.
     const ApproximationFit* approximationFit() const { return m_approximation.get(); }

@@ -78,6 +78,12 @@ void SurfaceFormulation::scaleApproximationWeights(double factor) {
     for (FamilyId id : m_approximationFamilies) {
         m_problem.setFamilyWeight(id, m_problem.family(id).weight * factor);
     }
+    // A cone's exact normal spline has control normals of different lengths: held at unit
+    // length after the pull faded, they bent a cone patch 1.3e-4 of its diameter off its
+    // points (4.3e-6 fading with it; docs/tuning.md).
+    if (const FamilyId unit = m_problem.findFamily("unitControlNormals"); unit >= 0) {
+        m_problem.setFamilyWeight(unit, m_problem.family(unit).weight * factor);
+    }
 }
 
 } // namespace devsurf::solver

@@ -124,9 +124,10 @@ SessionOptions optionsFor(const JobRequest& request, int surface, bool damped = 
         options.formulation.approximation = entryOf(request.targets, surface);
         // No fairness of points or normals: the pull shapes the strips, and fairness held them
         // flat against it (developability residual 2e-3, docs/tuning.md). The control normals
-        // are held near unit length instead (an energy that fades with the residual): without
-        // it the normal spline shrank towards zero beyond the target, where (4) then held
-        // without making the strip developable (sampled det 3e-3 at solver residual 2e-9).
+        // are held near unit length instead (an energy that fades with the residual and with
+        // the pull, SurfaceFormulation::scaleApproximationWeights): without it the normal
+        // spline shrank towards zero beyond the target, where (4) then held without making
+        // the strip developable (sampled det 3e-3 at solver residual 2e-9).
         options.formulation.fairnessWeight = 0.0;
         options.formulation.normalFairnessWeight = 0.0;
         options.formulation.unitControlNormalWeight = kApproximationUnitNormalWeight;

@@ -107,11 +107,11 @@ private slots:
     void recoversAConePatch() {
         // The cone from the apex (0, −20, −60) over the parabola above: exact in cubic splines.
         // The flat start is a trapezoid whose curves each span their half of the points
-        // (model::reference::initialStrip); the rectangle before overhung the narrow end, the
-        // strip slid off the wide end's corners while its rulings turned towards the apex and
-        // was pulled again damped, ending 0.12 of the diameter away. Now it follows without
-        // damping to 1.3e-4 of the diameter, where it stays for 30 to 120 iterations: short of
-        // the 1e-6, for a reason not established (the parabolic cylinder reaches 5e-7).
+        // (model::reference::initialStrip), so it follows without damping. The unit length of
+        // the control normals fades with the pull: a cone's normal spline cannot keep unit
+        // control normals, and held at full weight while the pull faded they bent the strip
+        // 1.3e-4 of the diameter away. Now 4.3e-6 (2.7e-6 after 100 iterations), still short
+        // of the 1e-6 for a reason not established (the parabolic cylinder: 5.5e-7).
         const Vec3 apex(0, -20, -60);
         const std::vector<Vec3> points = sampleGrid(
             [&apex](double s, double t) {
@@ -129,16 +129,16 @@ private slots:
               r.developability, r.outcome.largestResidual());
         QVERIFY(r.developability <= 1e-8);
         QVERIFY(!r.outcome.assessments.front().dampedApproximation);
-        QVERIFY(r.distance.targetToSurface.max <= 1e-3 * diameter);
-        QEXPECT_FAIL("", "the strip stays 1.3e-4 of the diameter away (see above)", Continue);
+        QVERIFY(r.distance.targetToSurface.max <= 1e-5 * diameter);
+        QEXPECT_FAIL("", "the strip stays 4.3e-6 of the diameter away (see above)", Continue);
         QVERIFY(r.distance.targetToSurface.max <= 1e-6 * diameter);
     }
 
     void approachesACircularCylinder() {
         // A quarter of a circular cylinder, which cubic splines hold only approximately: the
-        // faded pull leaves the strip near the spline's approximation error (6e-5 of the
-        // diameter) but short of the tolerance (sampled det 4e-7), so the job finishes it as a
-        // Solve: developable (1e-12) and as near as before (docs/tuning.md).
+        // faded pull leaves the strip near the spline's approximation error (2.2e-6 of the
+        // diameter; 4.2e-5 while the unit control normals did not fade with the pull),
+        // developable (sampled det 8e-12; docs/tuning.md).
         const double radius = 50.0;
         const std::vector<Vec3> points = sampleGrid(
             [radius](double s, double t) {
@@ -150,10 +150,10 @@ private slots:
         QVERIFY(r.outcome.ok);
         const double diameter = r.distance.diagonal;
         qInfo("circular cylinder: target to surface max %.3g of the diameter (mean %.3g); "
-              "developability %.3g",
+              "developability %.3g; %d iterations",
               r.distance.targetToSurface.max / diameter, r.distance.targetToSurface.mean / diameter,
-              r.developability);
-        QVERIFY(r.distance.targetToSurface.max <= 1e-4 * diameter);
+              r.developability, r.outcome.largestIterationCount());
+        QVERIFY(r.distance.targetToSurface.max <= 1e-5 * diameter);
         QVERIFY(r.developability <= 1e-8);
         QVERIFY(r.outcome.assessments.front().summary.toleranceReached);
     }
