@@ -4541,42 +4541,42 @@
         <translation>Es gibt nichts zu lösen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="122"/>
+        <location filename="../app/gui/solve_controller.cpp" line="121"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: Es gibt nichts zu lösen; nichts wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="196"/>
+        <location filename="../app/gui/solve_controller.cpp" line="194"/>
         <source>%1 cancelled; the design is unchanged.</source>
         <translation>%1 abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="197"/>
+        <location filename="../app/gui/solve_controller.cpp" line="195"/>
         <source>%1 cancelled: %2; the design is unchanged.</source>
         <translation>%1 abgebrochen: %2; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="200"/>
+        <location filename="../app/gui/solve_controller.cpp" line="198"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 abgebrochen; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="201"/>
+        <location filename="../app/gui/solve_controller.cpp" line="199"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 abgebrochen: %2; nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="203"/>
+        <location filename="../app/gui/solve_controller.cpp" line="201"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>Lösen abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="204"/>
+        <location filename="../app/gui/solve_controller.cpp" line="202"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>Lösen abgebrochen: %1; der Entwurf ist unverändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="210"/>
+        <location filename="../app/gui/solve_controller.cpp" line="208"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Form prüfen: %n Flächenstück faltet sich auf sich selbst zurück (%1); rückgängig machen oder anders fixieren oder bewegen.</numerusform>
@@ -4584,7 +4584,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="217"/>
+        <location filename="../app/gui/solve_controller.cpp" line="215"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Form prüfen: die Abwicklung überlappt sich selbst an %n Flächenstück (%1); rückgängig machen oder anders fixieren oder bewegen.</numerusform>
@@ -4592,33 +4592,38 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="227"/>
+        <location filename="../app/gui/solve_controller.cpp" line="225"/>
         <source>%1 failed: %2 The design is unchanged.</source>
         <translation>%1 fehlgeschlagen: %2 Der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="229"/>
+        <location filename="../app/gui/solve_controller.cpp" line="227"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 fehlgeschlagen: %2 Nichts wurde bewegt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="258"/>
+        <location filename="../app/gui/solve_controller.cpp" line="256"/>
         <source>the design changed</source>
         <translation>der Entwurf hat sich geändert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="21"/>
+        <location filename="../app/gui/solve_controller.cpp" line="395"/>
+        <source>The sheet held the moved vertices back by up to %1 mm.</source>
+        <translation>Der Bogen hielt die bewegten Ecken um bis zu %1 mm zurück.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_report_text.cpp" line="22"/>
         <source>it stopped before a degenerate shape</source>
         <translation>es hielt vor einer entarteten Form an</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="24"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="25"/>
         <source>no convergence, residual %1</source>
         <translation>keine Konvergenz, Residuum %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="27"/>
-        <location filename="../app/gui/solve_report_text.cpp" line="56"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="28"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="57"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>an %n Stelle zurückgefaltet</numerusform>
@@ -4626,32 +4631,32 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="30"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="31"/>
         <source>a development overlapping itself</source>
         <translation>eine sich selbst überlappende Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="33"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="34"/>
         <source>collapsed strips</source>
         <translation>zusammengefallene Streifen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="36"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="37"/>
         <source>a shape too degenerate to measure</source>
         <translation>eine zum Messen zu entartete Form</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="45"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="46"/>
         <source>did not reach the tolerance (residual %1; patch %2 sampled %3 from developable)</source>
         <translation>Toleranz nicht erreicht (Residuum %1; Flächenstück %2 abgetastet %3 von abwickelbar entfernt)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="52"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="53"/>
         <source>left its kept sheet by %1 mm</source>
         <translation>um %1 mm vom gehaltenen Bogen abgewichen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="59"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="60"/>
         <source>left a development overlapping itself at %n patch(es)</source>
         <translation>
             <numerusform>Abwicklung an %n Flächenstück mit sich selbst überlappend</numerusform>
@@ -4659,112 +4664,122 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="63"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="65"/>
+        <source>would stretch its sheet by %1 % to lie flat</source>
+        <translation>flach ausgelegt um %1 % gedehnt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_report_text.cpp" line="69"/>
         <source>ended not developable</source>
         <translation>nicht abwickelbar geendet</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="87"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="97"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="92"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="102"/>
         <source>The solve was cancelled.</source>
         <translation>Das Lösen wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="95"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="105"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 kann nicht gelöst werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="96"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="106"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 kann nicht gelöst werden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="100"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="110"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>Das Ziel der gezogenen Ecke %1 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="101"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="111"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>Das Ziel des gezogenen Kontrollpunkts %1 der Kante %2 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="107"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="117"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 konnte nicht gelöst werden: das lineare Gleichungssystem ließ sich nicht faktorisieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="109"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="119"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 konnte nicht gelöst werden: eine Iteration ergab Werte, die nicht endlich sind.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="113"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="123"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 konnte nicht gelöst werden: der Löser lieferte einen Wert, der nicht endlich ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="119"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="129"/>
         <source>(Solver: %1)</source>
         <translation>(Löser: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="135"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="145"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="139"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="149"/>
         <source>Failed: %1</source>
         <translation>Fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="153"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="163"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="157"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="167"/>
         <source>tolerance reached</source>
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="157"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="167"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="164"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="174"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="172"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="182"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="178"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="188"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; das Beibehalten der Längen schlug fehl (%1), daher wurde das Ziehen mit Dehnen des Blatts wiederholt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="187"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="197"/>
         <source>followed %1 % of the drag and held back %2 mm, since the whole drag %3: the design stays at its last developable state</source>
         <translation>folgt %1 % des Ziehens und bleibt %2 mm zurück, denn das ganze Ziehen hätte so geendet: %3; der Entwurf bleibt in seinem letzten abwickelbaren Zustand</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="198"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="203"/>
+        <source>not applied, since the motion %1: the design stays as it was</source>
+        <translation>nicht angewendet, denn die Bewegung hätte so geendet: %1; der Entwurf bleibt, wie er war</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_report_text.cpp" line="211"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; vom Bogen um %1 mm zurückgehalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="210"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="222"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n Flächenstück faltet sich auf sich selbst zurück, wo die Fläche sich selbst überlappt: %1</numerusform>
@@ -4772,7 +4787,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="225"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="237"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; die Abwicklung überlappt sich selbst an %n Flächenstück (%1) und lässt sich nicht aus einem Bogen schneiden</numerusform>
@@ -4780,43 +4795,44 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="231"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="243"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="236"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="248"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="241"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="253"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="266"/>
+        <location filename="../app/gui/solve_controller.cpp" line="264"/>
         <source>Solve</source>
         <translation>Lösen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="284"/>
+        <location filename="../app/gui/solve_controller.cpp" line="282"/>
         <source>%1 discarded: the design changed meanwhile; it is unchanged.</source>
         <translation>%1 verworfen: der Entwurf hat sich inzwischen geändert; er ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="325"/>
+        <location filename="../app/gui/solve_controller.cpp" line="323"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>Lösen hat den Entwurf unverändert gelassen: das Lösen machte ihn weniger abwickelbar (größtes Abwickelbarkeitsresiduum %1 → %2).</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="349"/>
+        <location filename="../app/gui/solve_controller.cpp" line="347"/>
+        <location filename="../app/gui/solve_controller.cpp" line="392"/>
         <source>%1. %2</source>
         <comment>a verdict, then a sentence</comment>
         <translation>%1. %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="353"/>
+        <location filename="../app/gui/solve_controller.cpp" line="351"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n Fläche unverändert gelassen: das Lösen machte sie weniger abwickelbar.</numerusform>
@@ -4824,12 +4840,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="365"/>
+        <location filename="../app/gui/solve_controller.cpp" line="363"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 verworfen: Der Entwurf hat sich während des Lösens geändert; nichts wurde bewegt.</translation>
     </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="371"/>
+        <source>%1 not applied: the motion %2; the design is unchanged.</source>
+        <translation>%1 nicht angewendet, denn die Bewegung hätte so geendet: %2; der Entwurf bleibt unverändert.</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="374"/>
+        <location filename="../app/gui/solve_controller.cpp" line="387"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, abwickelbar gehalten: %n Iteration, größtes Bedingungsresiduum %2.</numerusform>
@@ -4837,8 +4858,8 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="230"/>
-        <location filename="../app/gui/solve_controller.cpp" line="317"/>
+        <location filename="../app/gui/solve_controller.cpp" line="228"/>
+        <location filename="../app/gui/solve_controller.cpp" line="315"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>Lösen fehlgeschlagen: %1 Der Entwurf ist unverändert.</translation>
     </message>
@@ -4848,37 +4869,37 @@
         <translation>Lösen wird nicht gestartet, solange %1 läuft; zuerst abbrechen (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="70"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="80"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt auf der Geraden zwischen den festgehaltenen Ecken %2 und %3, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="77"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="87"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt im Dreieck der festgehaltenen Ecken %2, %3 und %4, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="160"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="170"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>beim letzten gültigen Zustand angehalten, bevor eine Erzeugende, eine Kurve oder ein Flächenstück kollabierte</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="168"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="178"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (endete bei Iteration %1, der mit dem kleinsten Residuum)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="194"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="207"/>
         <source>taken back to where the drag started, since the drag %1: the design stays at its last developable state</source>
         <translation>zurückgenommen auf den Stand beim Drücken, denn das Ziehen hätte so geendet: %1; der Entwurf bleibt in seinem letzten abwickelbaren Zustand</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="294"/>
+        <location filename="../app/gui/solve_controller.cpp" line="292"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>Ergebnis verworfen: Der Entwurf hat sich während des Lösens geändert.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="346"/>
+        <location filename="../app/gui/solve_controller.cpp" line="344"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Gelöst: %n Iteration, größtes Residuum der Bedingungen %1.</numerusform>

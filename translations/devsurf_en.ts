@@ -494,7 +494,7 @@
 <context>
     <name>devsurf::app::SolveController</name>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="210"/>
+        <location filename="../app/gui/solve_controller.cpp" line="208"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Check the shape: %n patch folds over onto itself (%1); undo, or pin or move differently.</numerusform>
@@ -502,7 +502,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="217"/>
+        <location filename="../app/gui/solve_controller.cpp" line="215"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>Check the shape: the development overlaps itself at %n patch (%1); undo, or pin or move differently.</numerusform>
@@ -510,8 +510,8 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="27"/>
-        <location filename="../app/gui/solve_report_text.cpp" line="56"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="28"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="57"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>folded over in %n place</numerusform>
@@ -519,7 +519,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="59"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="60"/>
         <source>left a development overlapping itself at %n patch(es)</source>
         <translation>
             <numerusform>left a development overlapping itself at %n patch</numerusform>
@@ -527,7 +527,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="210"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="222"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n patch folds over onto itself, where the surface overlaps itself: %1</numerusform>
@@ -535,7 +535,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="225"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="237"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; the development overlaps itself at %n patch (%1) and cannot be cut from one sheet</numerusform>
@@ -543,7 +543,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="346"/>
+        <location filename="../app/gui/solve_controller.cpp" line="344"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>Solved: %n iteration, largest constraint residual %1.</numerusform>
@@ -551,7 +551,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="353"/>
+        <location filename="../app/gui/solve_controller.cpp" line="351"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n surface left as it was: solving made it less developable.</numerusform>
@@ -559,7 +559,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="374"/>
+        <location filename="../app/gui/solve_controller.cpp" line="387"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1, kept developable: %n iteration, largest constraint residual %2.</numerusform>

@@ -4487,296 +4487,317 @@
         <translation>ソルブする対象がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="122"/>
+        <location filename="../app/gui/solve_controller.cpp" line="121"/>
         <source>%1: there is nothing to solve; nothing changed.</source>
         <translation>%1: ソルブするものがありません。何も変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="196"/>
+        <location filename="../app/gui/solve_controller.cpp" line="194"/>
         <source>%1 cancelled; the design is unchanged.</source>
         <translation>%1 を中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="197"/>
+        <location filename="../app/gui/solve_controller.cpp" line="195"/>
         <source>%1 cancelled: %2; the design is unchanged.</source>
         <translation>%1 を中止しました: %2。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="200"/>
+        <location filename="../app/gui/solve_controller.cpp" line="198"/>
         <source>%1 cancelled; nothing moved.</source>
         <translation>%1 を取り消しました。何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="201"/>
+        <location filename="../app/gui/solve_controller.cpp" line="199"/>
         <source>%1 cancelled: %2; nothing moved.</source>
         <translation>%1 を取り消しました: %2。何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="203"/>
+        <location filename="../app/gui/solve_controller.cpp" line="201"/>
         <source>Solve cancelled; the design is unchanged.</source>
         <translation>ソルブを中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="204"/>
+        <location filename="../app/gui/solve_controller.cpp" line="202"/>
         <source>Solve cancelled: %1; the design is unchanged.</source>
         <translation>ソルブを中止しました: %1。デザインは変更されていません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="210"/>
+        <location filename="../app/gui/solve_controller.cpp" line="208"/>
         <source>Check the shape: %n patch(es) fold over onto themselves (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>形状を確認してください: %n 個のパッチが自身の上に折り返されています (%1)。元に戻すか、固定や移動の仕方を変えてください。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="217"/>
+        <location filename="../app/gui/solve_controller.cpp" line="215"/>
         <source>Check the shape: the development overlaps itself at %n patch(es) (%1); undo, or pin or move differently.</source>
         <translation>
             <numerusform>形状を確認してください: 展開図が %n 個のパッチで自身と重なっています (%1)。元に戻すか、固定や移動の仕方を変えてください。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="227"/>
+        <location filename="../app/gui/solve_controller.cpp" line="225"/>
         <source>%1 failed: %2 The design is unchanged.</source>
         <translation>%1 に失敗しました: %2 デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="229"/>
+        <location filename="../app/gui/solve_controller.cpp" line="227"/>
         <source>%1 failed: %2 Nothing moved.</source>
         <translation>%1 に失敗しました: %2 何も動いていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="258"/>
+        <location filename="../app/gui/solve_controller.cpp" line="256"/>
         <source>the design changed</source>
         <translation>デザインが変更されました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="21"/>
+        <location filename="../app/gui/solve_controller.cpp" line="395"/>
+        <source>The sheet held the moved vertices back by up to %1 mm.</source>
+        <translation>シートにより、動かした頂点は最大 %1 mm 手前で止まりました。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_report_text.cpp" line="22"/>
         <source>it stopped before a degenerate shape</source>
         <translation>退化した形の手前で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="24"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="25"/>
         <source>no convergence, residual %1</source>
         <translation>収束せず、残差 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="27"/>
-        <location filename="../app/gui/solve_report_text.cpp" line="56"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="28"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="57"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>%n 箇所で折り返し</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="30"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="31"/>
         <source>a development overlapping itself</source>
         <translation>展開図が自身と重なる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="33"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="34"/>
         <source>collapsed strips</source>
         <translation>帯がつぶれる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="36"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="37"/>
         <source>a shape too degenerate to measure</source>
         <translation>測定できないほど退化した形</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="45"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="46"/>
         <source>did not reach the tolerance (residual %1; patch %2 sampled %3 from developable)</source>
         <translation>許容誤差に達せず (残差 %1、パッチ %2 のサンプル値は可展から %3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="52"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="53"/>
         <source>left its kept sheet by %1 mm</source>
         <translation>保持したシートから %1 mm ずれ</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="59"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="60"/>
         <source>left a development overlapping itself at %n patch(es)</source>
         <translation>
             <numerusform>%n 個のパッチで展開図が自己重複</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="63"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="65"/>
+        <source>would stretch its sheet by %1 % to lie flat</source>
+        <translation>平らに広げるとシートが %1 % 伸びる</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_report_text.cpp" line="69"/>
         <source>ended not developable</source>
         <translation>可展でない状態で終了</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="87"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="97"/>
         <source>Surface %1</source>
         <translation>曲面 %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="92"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="102"/>
         <source>The solve was cancelled.</source>
         <translation>ソルブを中止しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="95"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="105"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 は解けません: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="96"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="106"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 は解けません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="100"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="110"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>頂点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="101"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="111"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>辺 %2 の制御点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="107"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="117"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 を解けませんでした: 連立一次方程式を分解できませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="109"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="119"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 を解けませんでした: 反復で有限でない値が生じました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="113"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="123"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 を解けませんでした: ソルバーが有限でない値を出しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="119"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="129"/>
         <source>(Solver: %1)</source>
         <translation>(ソルバー: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="135"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="145"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="139"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="149"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="153"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="163"/>
         <source>converged</source>
         <translation>収束</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="157"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="167"/>
         <source>tolerance reached</source>
         <translation>許容値に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="157"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="167"/>
         <source>iteration limit reached</source>
         <translation>反復回数の上限に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="164"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="174"/>
         <source>failed</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="172"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="182"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>。ソルブで可展性が悪化したため元のままにしました (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="178"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="188"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; 長さを保てなかったため (%1)、シートの伸びを許してドラッグをやり直しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="187"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="197"/>
         <source>followed %1 % of the drag and held back %2 mm, since the whole drag %3: the design stays at its last developable state</source>
         <translation>ドラッグの %1 % まで追従し、%2 mm 手前で止めました (ドラッグ全体の結果: %3)、デザインは最後の可展な状態のままです</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="198"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="203"/>
+        <source>not applied, since the motion %1: the design stays as it was</source>
+        <translation>適用しませんでした (動かした結果: %1)、デザインは元のままです</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_report_text.cpp" line="211"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; シートにより %1 mm 手前で止まりました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="210"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="222"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n 個のパッチが自身の上に折り返され、曲面が自己重複しています: %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="225"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="237"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; 展開図が %n 個のパッチで自身と重なっており (%1)、1 枚のシートから切り出せません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="231"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="243"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="236"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="248"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="241"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="253"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="266"/>
+        <location filename="../app/gui/solve_controller.cpp" line="264"/>
         <source>Solve</source>
         <translation>ソルブ</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="284"/>
+        <location filename="../app/gui/solve_controller.cpp" line="282"/>
         <source>%1 discarded: the design changed meanwhile; it is unchanged.</source>
         <translation>%1 を破棄しました: その間にデザインが変更されました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="325"/>
+        <location filename="../app/gui/solve_controller.cpp" line="323"/>
         <source>Solve left the design as it was: solving made it less developable (largest developability residual %1 → %2).</source>
         <translation>ソルブはデザインを元のままにしました。ソルブで可展性が悪化したためです (最大の可展性残差 %1 → %2)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="349"/>
+        <location filename="../app/gui/solve_controller.cpp" line="347"/>
+        <location filename="../app/gui/solve_controller.cpp" line="392"/>
         <source>%1. %2</source>
         <comment>a verdict, then a sentence</comment>
         <translation>%1。%2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="353"/>
+        <location filename="../app/gui/solve_controller.cpp" line="351"/>
         <source>%n surface(s) left as they were: solving made them less developable.</source>
         <translation>
             <numerusform>%n 個のサーフェスを元のままにしました。ソルブで可展性が悪化したためです。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="365"/>
+        <location filename="../app/gui/solve_controller.cpp" line="363"/>
         <source>%1 discarded: the design changed while solving; nothing moved.</source>
         <translation>%1 を破棄しました: ソルブ中にデザインが変更されました。何も動いていません。</translation>
     </message>
+    <message>
+        <location filename="../app/gui/solve_controller.cpp" line="371"/>
+        <source>%1 not applied: the motion %2; the design is unchanged.</source>
+        <translation>%1 は適用しませんでした (動かした結果: %2)。デザインは変更されていません。</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="374"/>
+        <location filename="../app/gui/solve_controller.cpp" line="387"/>
         <source>%1, kept developable: %n iteration(s), largest constraint residual %2.</source>
         <translation>
             <numerusform>%1、可展を維持: %n 回反復、最大の制約残差 %2。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="230"/>
-        <location filename="../app/gui/solve_controller.cpp" line="317"/>
+        <location filename="../app/gui/solve_controller.cpp" line="228"/>
+        <location filename="../app/gui/solve_controller.cpp" line="315"/>
         <source>Solve failed: %1 The design is unchanged.</source>
         <translation>ソルブに失敗しました: %1 デザインは変更されていません。</translation>
     </message>
@@ -4786,37 +4807,37 @@
         <translation>%1 の実行中はソルブを開始しません。先に中止してください (Esc)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="70"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="80"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2 と %3 を結ぶ直線上にあり、この 2 点の距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="77"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="87"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2、%3、%4 の三角形の内側にあり、これらの距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="160"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="170"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>母線、曲線またはパッチがつぶれる前の最後の有効な状態で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="168"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="178"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (残差が最小の反復 %1 で終了)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="194"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="207"/>
         <source>taken back to where the drag started, since the drag %1: the design stays at its last developable state</source>
         <translation>ドラッグ開始時の状態に戻しました (ドラッグの結果: %1)、デザインは最後の可展な状態のままです</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_controller.cpp" line="294"/>
+        <location filename="../app/gui/solve_controller.cpp" line="292"/>
         <source>Solve result discarded: the design changed while solving.</source>
         <translation>ソルブ中にデザインが変更されたため、結果を破棄しました。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_controller.cpp" line="346"/>
+        <location filename="../app/gui/solve_controller.cpp" line="344"/>
         <source>Solved: %n iteration(s), largest constraint residual %1.</source>
         <translation>
             <numerusform>ソルブ完了: %n 回反復、制約残差の最大値 %1。</numerusform>

@@ -2,6 +2,7 @@
 #include "problem_text.h"
 
 #include "solver/quality/shape_change.h"
+#include "solver/session/drag_lengths.h"
 #include "solver/session/verdict.h"
 
 #include <algorithm>
@@ -135,6 +136,12 @@ std::string describeTakenBack(const solver::SurfaceAssessment& refused) {
     if (!refused.overlapping.empty()) {
         std::snprintf(text, sizeof text, "left a development overlapping itself at %zu patch%s",
                       refused.overlapping.size(), refused.overlapping.size() == 1 ? "" : "es");
+        parts.push_back(text);
+    }
+    if (!refused.summary.toleranceReached &&
+        refused.edgeLengthError > solver::kDragConvergedResidual) {
+        std::snprintf(text, sizeof text, "would stretch its sheet by %.2g %% to lie flat",
+                      100.0 * refused.edgeLengthError);
         parts.push_back(text);
     }
     return parts.empty() ? "ended not developable" : joinParts(parts);

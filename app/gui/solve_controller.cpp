@@ -115,8 +115,7 @@ void SolveController::solve() {
 }
 
 void SolveController::solveEdit(int surfaceIndex, model::CompositeSurface edited,
-                                const std::set<model::VertexId>& held, const QString& title,
-                                int iterations) {
+                                const std::set<model::VertexId>& held, const QString& title) {
     const document::Document* doc = m_workspace->document();
     if (surfaceIndex < 0 || surfaceIndex >= doc->surfaceCount() || held.empty()) {
         emit finished(tr("%1: there is nothing to solve; nothing changed.").arg(title));
@@ -141,7 +140,6 @@ void SolveController::solveEdit(int surfaceIndex, model::CompositeSurface edited
     request.job.kind = solver::JobKind::Edit;
     request.job.surfaces = doc->project().surfaces;
     request.job.pulled[surfaceIndex] = handles;
-    request.job.iterations = iterations + 1; // the step to the targets, then `iterations` more
     m_revision = request.revision;
     m_ticket = request.ticket;
     m_editSurface = surfaceIndex;
@@ -365,16 +363,39 @@ void SolveController::applyEdit(const solver::SolveResult& result, const SolveRe
              tr("%1 discarded: the design changed while solving; nothing moved.").arg(m_editTitle));
         return;
     }
-    model::CompositeSurface solved = outcome.surfaces[s];
-    for (const auto& [v, target] : m_heldTargets) {
-        solved.moveVertex(v, target);
+    const solver::SurfaceAssessment& assessment = outcome.assessments[s];
+    if (assessment.takenBack) {
+        // The job refused the result (broken, or not developable from its held sheet):
+        // nothing moves.
+        stop(&report, Ending::LeftAsItWas,
+             tr("%1 not applied: the motion %2; the design is unchanged.")
+                 .arg(m_editTitle, takenBackText(*assessment.takenBack)));
+        return;
     }
-    const solver::Summary& summary = outcome.assessments[s].summary;
-    const QString sentence =
+    model::CompositeSurface solved = outcome.surfaces[s];
+    // The moved vertices arrive within ~1e-13 mm and are put exactly where the edit put them;
+    // on a surface that holds its sheet they stay where the sheet let them (they lag where it
+    // cannot follow, and moving them on would stretch it).
+    const bool sheetHeld = solved.keepsDevelopment();
+    if (!sheetHeld) {
+        for (const auto& [v, target] : m_heldTargets) {
+            solved.moveVertex(v, target);
+        }
+    }
+    const solver::Summary& summary = assessment.summary;
+    QString sentence =
         tr("%1, kept developable: %n iteration(s), largest constraint residual %2.", nullptr,
            summary.iterationsCompleted)
-            .arg(m_editTitle, QString::number(summary.finalMaxConstraintResidual, 'e', 2)) +
-        checkShapeSentence(report);
+            .arg(m_editTitle, QString::number(summary.finalMaxConstraintResidual, 'e', 2));
+    // The verdict first, as after Solve: a result short of the tolerance says so.
+    if (const QString verdict = VerdictText::brief(report.verdict); !verdict.isEmpty()) {
+        sentence = tr("%1. %2", "a verdict, then a sentence").arg(verdict, sentence);
+    }
+    if (sheetHeld && assessment.largestHandleGap > solver::kNegligibleLag) {
+        sentence += QLatin1Char(' ') + tr("The sheet held the moved vertices back by up to %1 mm.")
+                                           .arg(lagText(assessment.largestHandleGap));
+    }
+    sentence += checkShapeSentence(report);
     if (solved == doc->surface(m_editSurface)) {
         stop(&report, Ending::Solved, sentence); // nothing moved: no undo step, not modified
         return;

@@ -73,6 +73,8 @@ public:
     // tolerance (residual 8.8e-02; patch 7 sampled 3.1e-02 from developable), folded over in
     // 38 places, …".
     static QString takenBackText(const solver::SurfaceAssessment& refused);
+    // A lag in mm as a designer reads it: two significant digits below 1 mm, else one decimal.
+    static QString lagText(double mm);
     // Why keeping lengths could not follow a drag (model::findVertexHeldByPins), continuing a
     // status sentence: "; vertex 5 lies inside the triangle of the pinned vertices 0, 3 and 12,
     // …".
@@ -95,12 +97,13 @@ public:
 public slots:
     void solve();
     // Solves an edit of surface surfaceIndex not yet applied (`edited`): from the current
-    // surface, the held vertices are pulled to their positions in `edited` for one iteration
-    // and `iterations` more (pins respected), and the result, with the held vertices exactly
-    // where the edit put them, replaces the current surface as one undo step named title,
-    // whose undo returns the state before the edit.
+    // surface, the held vertices are pulled to their positions in `edited` (an Edit job, which
+    // decides the iterations; pins respected), and the result, with the held vertices exactly
+    // where the edit put them (where the surface holds its sheet: where the sheet let them),
+    // replaces the current surface as one undo step named title, whose undo returns the state
+    // before the edit. A result the job refuses (it would end broken) changes nothing.
     void solveEdit(int surfaceIndex, model::CompositeSurface edited,
-                   const std::set<model::VertexId>& held, const QString& title, int iterations);
+                   const std::set<model::VertexId>& held, const QString& title);
     // Stops a running solve; the design stays as it is. reason completes "Solve cancelled: …".
     void cancel(const QString& reason = QString());
 

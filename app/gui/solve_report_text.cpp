@@ -4,6 +4,7 @@
 #include "problem_text.h"
 #include "solve_controller.h"
 
+#include "solver/session/drag_lengths.h"
 #include "solver/session/solve_session.h"
 #include "solver/session/verdict.h"
 #include "solver/worker/solver_worker.h"
@@ -59,10 +60,19 @@ QString SolveController::takenBackText(const solver::SurfaceAssessment& refused)
         parts << tr("left a development overlapping itself at %n patch(es)", nullptr,
                     static_cast<int>(refused.overlapping.size()));
     }
+    if (!refused.summary.toleranceReached &&
+        refused.edgeLengthError > solver::kDragConvergedResidual) {
+        parts << tr("would stretch its sheet by %1 % to lie flat")
+                     .arg(QString::number(100.0 * refused.edgeLengthError, 'g', 2));
+    }
     if (parts.isEmpty()) {
         parts << tr("ended not developable");
     }
     return parts.join(QStringLiteral(", "));
+}
+
+QString SolveController::lagText(double mm) {
+    return mm < 1.0 ? QString::number(mm, 'g', 2) : QString::number(mm, 'f', 1);
 }
 
 QString SolveController::heldText(const model::HeldVertex& held) {
@@ -189,14 +199,16 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result, const Q
                          .arg(QString::number(std::round(100.0 * a.followed)))
                          .arg(QString::number(a.largestHandleGap, 'f', 1))
                          .arg(takenBackText(*a.takenBack));
+        } else if (a.takenBack && outcome.kind == solver::JobKind::Edit) {
+            status = tr("not applied, since the motion %1: the design stays as it was")
+                         .arg(takenBackText(*a.takenBack));
         } else if (a.takenBack) {
             // The design is as at the press: what the refused iterations reached is the news.
             status = tr("taken back to where the drag started, since the drag %1: the design "
                         "stays at its last developable state")
                          .arg(takenBackText(*a.takenBack));
         } else if (a.sheetHeld && a.largestHandleGap > solver::kNegligibleLag) {
-            status += tr("; held back %1 mm by the sheet")
-                          .arg(QString::number(a.largestHandleGap, 'f', 1));
+            status += tr("; held back %1 mm by the sheet").arg(lagText(a.largestHandleGap));
         }
         QList<int> folded;
         for (const auto& [face, places] : a.foldOvers) {

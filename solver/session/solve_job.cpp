@@ -180,6 +180,13 @@ JobFailure targetFailure(int surface, model::VertexId vertex, model::EdgeId edge
     return failure;
 }
 
+// Whether a drag's release or an Edit must not end so: broken, or, on a surface that holds its
+// sheet, not developable as the verdict judges it (the sheet is a constraint: a result that
+// does not unfold onto it within kDragConvergedResidual cannot be cut from it).
+bool refusable(const SurfaceAssessment& a) {
+    return broken(a) || (a.sheetHeld && notDevelopable(a));
+}
+
 // A drag's press measured as a settled result, for the comparison with the release. Its
 // "residual" is its largest sampled developability residual (normalised, worstDevelopability):
 // the drag's session does not evaluate the press's constraints without its handles.
@@ -211,7 +218,10 @@ int defaultIterations(JobKind kind, bool settle, DragLengths lengths, bool holds
     case JobKind::Solve:
         return kSolveIterations;
     case JobKind::Edit:
-        return 1;
+        // The step to the targets, then as many as after a drag that does not keep lengths; a
+        // held sheet needs the iterations of a drag holding it (at 11 the annulus turned
+        // against its sheet stopped at residual 1.3e-6 with its development overlapping).
+        return 1 + iterationsAfterDrag(false, holdsSheet);
     case JobKind::Approximate:
     case JobKind::Join:
         return kApproximationIterations;
@@ -535,12 +545,13 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
         if (settle) {
             measureSettled(assessment, *result, drag ? &d.built[s] : nullptr, knownOverlaps);
         }
-        if (drag && settle && broken(assessment)) {
+        if ((drag || request.kind == JobKind::Edit) && settle && refusable(assessment)) {
             // A drag never ends broken: where the sheet cannot follow, the result is refused
             // and the design follows the drag only as far as it ends well, or stays as at the
-            // press, if that was not broken.
+            // press, if that was not broken. An exact move or rotation (Edit) that ends broken
+            // is refused as a whole: the design stays as it was before it.
             SurfaceAssessment press = assessPress(d.built[s], summary);
-            if (!broken(press)) {
+            if (!refusable(press)) {
                 auto refused = std::make_shared<const SurfaceAssessment>(std::move(assessment));
                 std::optional<Partway> partway;
                 // Only where the search fits its budget (partwayFits).

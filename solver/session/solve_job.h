@@ -79,7 +79,8 @@ constexpr int kApproximationFinishIterations = 20;
 
 // The iterations a request runs when it does not say: Solve kSolveIterations (a limit, it stops
 // once converged), a drag's move 1, its release iterationsAfterDrag() (longer when a surface
-// holds its sheet), an edit 1, an approximation kApproximationIterations (plus its fading).
+// holds its sheet), an edit 1 + iterationsAfterDrag(false, holdsSheet), an approximation
+// kApproximationIterations (plus its fading).
 int defaultIterations(JobKind kind, bool settle, DragLengths lengths, bool holdsSheet = false);
 
 // How far a handle ended from its target (model units).
@@ -142,11 +143,11 @@ struct SurfaceAssessment {
     double edgeLengthError = -1.0;
     double sheetExtent = 0.0;
     double isometryMm = -1.0;
-    // A drag's release that would have ended broken (verdict.h: folded over, off its kept
-    // sheet or not developable patch by patch) from a press that was not: the surface
-    // stays as at the press (the last developable state; this assessment measures it, its
-    // summary's residual the press's sampled developability), and this is how the refused
-    // result measured.
+    // A drag's release (or an Edit) that would have ended broken (verdict.h: folded over, off
+    // its kept sheet or not developable patch by patch) from a press that was not: the
+    // surface stays as at the press, for an Edit as before it (the last developable state;
+    // this assessment measures it, its summary's residual the press's sampled
+    // developability), and this is how the refused result measured.
     std::shared_ptr<const SurfaceAssessment> takenBack;
     // With takenBack: the share of the drag's moves (0 < followed < 1) that the surface
     // follows instead of the press, when replaying that start of the drag ends developable:

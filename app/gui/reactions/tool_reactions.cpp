@@ -418,7 +418,7 @@ void MoveVerticesReaction::onTriggered() {
     if (m_solver->isSolving()) {
         m_solver->cancel(tr("the vertices are moved"));
     }
-    m_solver->solveEdit(vertices->surface, motion->after(), ids, motion->text(), kIterations);
+    m_solver->solveEdit(vertices->surface, motion->after(), ids, motion->text());
 }
 
 } // namespace devsurf::app

@@ -90,14 +90,12 @@ protected:
 };
 
 // Tools ▸ Move or Rotate Vertices: exact translation or rotation of the selected vertices; with
-// "Keep developable" (and a solver) the motion is followed by kIterations solver iterations
-// with the moved vertices held, the two together one undo step.
+// "Keep developable" (and a solver) the motion is followed by an Edit job (solver iterations
+// with the moved vertices held), the two together one undo step.
 class MoveVerticesReaction : public Reaction {
     Q_OBJECT
 public:
     MoveVerticesReaction(QAction* action, Workspace* workspace, SolveController* solver = nullptr);
-
-    static constexpr int kIterations = 10;
 
 protected:
     void onTriggered() override;
