@@ -144,10 +144,11 @@ struct SurfaceAssessment {
     double sheetExtent = 0.0;
     double isometryMm = -1.0;
     // A drag's release (or an Edit) that would have ended broken (verdict.h: folded over, off
-    // its kept sheet or not developable patch by patch) from a press that was not: the
-    // surface stays as at the press, for an Edit as before it (the last developable state;
-    // this assessment measures it, its summary's residual the press's sampled
-    // developability), and this is how the refused result measured.
+    // its kept sheet or not developable patch by patch; on a held sheet also not developable
+    // as the verdict judges it) from a press that was not: the surface stays as at the press,
+    // for an Edit as before it (the last developable state; this assessment measures it, its
+    // summary's residual the press's sampled developability), and this is how the refused
+    // result measured.
     std::shared_ptr<const SurfaceAssessment> takenBack;
     // With takenBack: the share of the drag's moves (0 < followed < 1) that the surface
     // follows instead of the press, when replaying that start of the drag ends developable:
