@@ -4664,122 +4664,127 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="65"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="67"/>
         <source>would stretch its sheet by %1 % to lie flat</source>
         <translation>flach ausgelegt um %1 % gedehnt</translation>
     </message>
     <message>
         <location filename="../app/gui/solve_report_text.cpp" line="69"/>
+        <source>would not lie flat as one sheet</source>
+        <translation>nicht als ein Bogen flach auslegbar</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_report_text.cpp" line="72"/>
         <source>ended not developable</source>
         <translation>nicht abwickelbar geendet</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="97"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="100"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="102"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="105"/>
         <source>The solve was cancelled.</source>
         <translation>Das Lösen wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="105"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="108"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 kann nicht gelöst werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="106"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="109"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 kann nicht gelöst werden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="110"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="113"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>Das Ziel der gezogenen Ecke %1 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="111"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="114"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>Das Ziel des gezogenen Kontrollpunkts %1 der Kante %2 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="117"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="120"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 konnte nicht gelöst werden: das lineare Gleichungssystem ließ sich nicht faktorisieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="119"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="122"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 konnte nicht gelöst werden: eine Iteration ergab Werte, die nicht endlich sind.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="123"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="126"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 konnte nicht gelöst werden: der Löser lieferte einen Wert, der nicht endlich ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="129"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="132"/>
         <source>(Solver: %1)</source>
         <translation>(Löser: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="145"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="148"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="149"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="152"/>
         <source>Failed: %1</source>
         <translation>Fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="163"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="166"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="167"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="170"/>
         <source>tolerance reached</source>
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="167"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="170"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="174"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="177"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="182"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="185"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="188"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="191"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; das Beibehalten der Längen schlug fehl (%1), daher wurde das Ziehen mit Dehnen des Blatts wiederholt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="197"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="200"/>
         <source>followed %1 % of the drag and held back %2 mm, since the whole drag %3: the design stays at its last developable state</source>
         <translation>folgt %1 % des Ziehens und bleibt %2 mm zurück, denn das ganze Ziehen hätte so geendet: %3; der Entwurf bleibt in seinem letzten abwickelbaren Zustand</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="203"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="206"/>
         <source>not applied, since the motion %1: the design stays as it was</source>
         <translation>nicht angewendet, denn die Bewegung hätte so geendet: %1; der Entwurf bleibt, wie er war</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="211"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="214"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; vom Bogen um %1 mm zurückgehalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="222"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="225"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n Flächenstück faltet sich auf sich selbst zurück, wo die Fläche sich selbst überlappt: %1</numerusform>
@@ -4787,7 +4792,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="237"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="240"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; die Abwicklung überlappt sich selbst an %n Flächenstück (%1) und lässt sich nicht aus einem Bogen schneiden</numerusform>
@@ -4795,17 +4800,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="243"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="246"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="248"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="251"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="253"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="256"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
@@ -4869,27 +4874,27 @@
         <translation>Lösen wird nicht gestartet, solange %1 läuft; zuerst abbrechen (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="80"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="83"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt auf der Geraden zwischen den festgehaltenen Ecken %2 und %3, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="87"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="90"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt im Dreieck der festgehaltenen Ecken %2, %3 und %4, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="170"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="173"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>beim letzten gültigen Zustand angehalten, bevor eine Erzeugende, eine Kurve oder ein Flächenstück kollabierte</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="178"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="181"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (endete bei Iteration %1, der mit dem kleinsten Residuum)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="207"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="210"/>
         <source>taken back to where the drag started, since the drag %1: the design stays at its last developable state</source>
         <translation>zurückgenommen auf den Stand beim Drücken, denn das Ziehen hätte so geendet: %1; der Entwurf bleibt in seinem letzten abwickelbaren Zustand</translation>
     </message>

@@ -4606,146 +4606,151 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="65"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="67"/>
         <source>would stretch its sheet by %1 % to lie flat</source>
         <translation>平らに広げるとシートが %1 % 伸びる</translation>
     </message>
     <message>
         <location filename="../app/gui/solve_report_text.cpp" line="69"/>
+        <source>would not lie flat as one sheet</source>
+        <translation>1 枚のシートとして平らに広げられない</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_report_text.cpp" line="72"/>
         <source>ended not developable</source>
         <translation>可展でない状態で終了</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="97"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="100"/>
         <source>Surface %1</source>
         <translation>曲面 %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="102"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="105"/>
         <source>The solve was cancelled.</source>
         <translation>ソルブを中止しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="105"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="108"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 は解けません: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="106"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="109"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 は解けません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="110"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="113"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>頂点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="111"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="114"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>辺 %2 の制御点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="117"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="120"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 を解けませんでした: 連立一次方程式を分解できませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="119"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="122"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 を解けませんでした: 反復で有限でない値が生じました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="123"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="126"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 を解けませんでした: ソルバーが有限でない値を出しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="129"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="132"/>
         <source>(Solver: %1)</source>
         <translation>(ソルバー: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="145"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="148"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="149"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="152"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="163"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="166"/>
         <source>converged</source>
         <translation>収束</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="167"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="170"/>
         <source>tolerance reached</source>
         <translation>許容値に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="167"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="170"/>
         <source>iteration limit reached</source>
         <translation>反復回数の上限に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="174"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="177"/>
         <source>failed</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="182"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="185"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>。ソルブで可展性が悪化したため元のままにしました (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="188"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="191"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; 長さを保てなかったため (%1)、シートの伸びを許してドラッグをやり直しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="197"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="200"/>
         <source>followed %1 % of the drag and held back %2 mm, since the whole drag %3: the design stays at its last developable state</source>
         <translation>ドラッグの %1 % まで追従し、%2 mm 手前で止めました (ドラッグ全体の結果: %3)、デザインは最後の可展な状態のままです</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="203"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="206"/>
         <source>not applied, since the motion %1: the design stays as it was</source>
         <translation>適用しませんでした (動かした結果: %1)、デザインは元のままです</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="211"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="214"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; シートにより %1 mm 手前で止まりました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="222"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="225"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n 個のパッチが自身の上に折り返され、曲面が自己重複しています: %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="237"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="240"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; 展開図が %n 個のパッチで自身と重なっており (%1)、1 枚のシートから切り出せません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="243"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="246"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="248"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="251"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="253"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="256"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
@@ -4807,27 +4812,27 @@
         <translation>%1 の実行中はソルブを開始しません。先に中止してください (Esc)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="80"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="83"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2 と %3 を結ぶ直線上にあり、この 2 点の距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="87"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="90"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2、%3、%4 の三角形の内側にあり、これらの距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="170"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="173"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>母線、曲線またはパッチがつぶれる前の最後の有効な状態で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="178"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="181"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (残差が最小の反復 %1 で終了)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="207"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="210"/>
         <source>taken back to where the drag started, since the drag %1: the design stays at its last developable state</source>
         <translation>ドラッグ開始時の状態に戻しました (ドラッグの結果: %1)、デザインは最後の可展な状態のままです</translation>
     </message>

@@ -142,7 +142,7 @@ std::string describeTakenBack(const solver::SurfaceAssessment& refused) {
         refused.edgeLengthError > solver::kDragConvergedResidual) {
         std::snprintf(text, sizeof text, "would stretch its sheet by %.2g %% to lie flat",
                       100.0 * refused.edgeLengthError);
-        parts.push_back(text);
+        parts.push_back(refused.edgeLengthError < 1.0 ? text : "would not lie flat as one sheet");
     }
     return parts.empty() ? "ended not developable" : joinParts(parts);
 }

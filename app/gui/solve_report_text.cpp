@@ -62,8 +62,11 @@ QString SolveController::takenBackText(const solver::SurfaceAssessment& refused)
     }
     if (!refused.summary.toleranceReached &&
         refused.edgeLengthError > solver::kDragConvergedResidual) {
-        parts << tr("would stretch its sheet by %1 % to lie flat")
-                     .arg(QString::number(100.0 * refused.edgeLengthError, 'g', 2));
+        // Beyond 100 % the figure says nothing a designer can use.
+        parts << (refused.edgeLengthError < 1.0
+                      ? tr("would stretch its sheet by %1 % to lie flat")
+                            .arg(QString::number(100.0 * refused.edgeLengthError, 'g', 2))
+                      : tr("would not lie flat as one sheet"));
     }
     if (parts.isEmpty()) {
         parts << tr("ended not developable");
