@@ -158,9 +158,9 @@ struct FormulationOptions {
     // made tangent-continuous there (G¹) instead of the flat copy; it stays below the
     // examples' kinks (docs/tuning.md). 0: flat copies everywhere.
     double vertexSmoothCreaseAngle = 0.05;
-    // The same for a crease without a condition (CreaseCondition::None), whose kink may be part
-    // of the design: below this it is smoothed (docs/tuning.md).
-    double vertexSmoothPlainCreaseAngle = 0.025;
+    // The same for a crease without a condition (CreaseCondition::None), whose kink is part of
+    // the design: smoothed only where it is straight to this (docs/tuning.md).
+    double vertexSmoothPlainCreaseAngle = 1e-3;
     // Only stars whose angle defect at the start is at most this (radians) get rows (the
     // others keep rows scaled to zero): vertex developability is then kept where it holds
     // rather than imposed on a rough start. The default imposes it everywhere.
