@@ -170,9 +170,8 @@ struct FormulationOptions {
     // many values per interval (0: none), starting at developmentStart (mm) or the unfolding;
     // fixedDevelopment keeps it there, so the surface is folded from that sheet.
     // developmentWeight is low because the sampled mesh matches a developable spline only up to
-    // its sampling: at weight 1 a held fig8 folded 46° stalled at residual 8e-7 in Solve, at
-    // 1e-2 it reaches 5e-9 and stays within 1e-4 mm of its sheet (docs/tuning.md). The
-    // development is judged apart, in mm (Verdict::sheetStretchMm).
+    // its sampling (docs/tuning.md); the development is judged apart, in mm
+    // (Verdict::sheetStretchMm).
     int developmentSamplesPerInterval = 0;
     double developmentWeight = 1e-2;
     double developmentFairnessWeight = 0.01;
@@ -260,8 +259,7 @@ public:
     // Measures the development's overfolding fairness from x: the energy then damps how much
     // the next step bends the development's curves and vanishes once the iteration stands
     // still, instead of pulling the curves of a development confined to a sheet straight
-    // against its boundary (measured: the annulus on its sheet, an inner vertex lifted 40 mm,
-    // alternated between residuals 2e-5 and 0.2 for 30 iterations with absolute fairness).
+    // against its boundary (docs/tuning.md, "A sheet of a given shape").
     void rebaseDevelopmentFairness(const std::vector<double>& x);
     // Multiplies the weight of that energy (or damping) by `factor` (nothing without it).
     void scaleIsometryWeight(double factor);
@@ -275,8 +273,7 @@ public:
     // iterated from. No-op without them.
     void refreshApproximation(const model::CompositeSurface& current);
     // Multiplies the weights of eqs. (9)–(11) and of the control normals' unit length by
-    // `factor` (the approximation fading out so that the hard conditions converge exactly at
-    // its end, and the normal spline does not bend the strip once the pull is gone).
+    // `factor`: the approximation fades out so that the hard conditions converge exactly.
     void scaleApproximationWeights(double factor);
     // The closest points of the target; null without one.
     const ApproximationFit* approximationFit() const { return m_approximation.get(); }

@@ -158,7 +158,7 @@ int addVertexDevelopability(const model::CompositeSurface& surface,
             const model::Vec3 l = valueAt(state, left) - v;
             const model::Vec3 r = valueAt(state, right) - v;
             // A crease with a condition (a curved fold) is meant smooth; a plain crease only
-            // where it is nearly straight already: it may keep a kink (docs/tuning.md).
+            // where it is straight already: its kink is the design's (docs/tuning.md).
             const bool conditioned =
                 conditionOf(surface, starEdges[k].first) != model::CreaseCondition::None &&
                 conditionOf(surface, starEdges[k].second) != model::CreaseCondition::None;
