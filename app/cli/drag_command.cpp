@@ -210,9 +210,10 @@ int runDragCommand(const DragArguments& args) {
     int labelIndex = 0;
     int labelCount = steps;
     auto progress = [&](const solver::JobProgress& step) {
-        if (step.replaying) {
+        if (step.replaying || step.followingPartway) {
             char line[160];
-            std::snprintf(line, sizeof line, "replay %3d  residual %.3e\n", step.done,
+            std::snprintf(line, sizeof line, "%s %3d  residual %.3e\n",
+                          step.replaying ? "replay" : "partway", step.done,
                           step.stats->maxConstraintResidual);
             std::cout << line;
             return;

@@ -2,11 +2,13 @@
 
 #include "model/geometry_checks.h"
 #include "solver/quality/quality_measures.h"
+#include "solver/session/approximation_recipe.h"
 #include "solver/session/job_assessment.h"
 #include "solver/session/verdict.h"
 
 #include <algorithm>
 #include <exception>
+#include <limits>
 
 namespace devsurf::solver {
 
@@ -30,6 +32,23 @@ constexpr double kPartwayStarDefect = 1e-6;
 // The largest sampled developability residual (normalised, worstDevelopability) a state may end
 // with where the press was better: a partial drag is kept only if it ends developable.
 constexpr double kPartwayDevelopability = 1e-5;
+// PartwaySearch::Brief: at most this many states, each settled as long as the release (the one
+// kept once more where it ends short of the tolerance), among those before the first move whose
+// iteration ended at more than kPartwayResidualJump times the lowest residual of the moves
+// before it (the drag was then asking for more than the sheet allows; docs/tuning.md, "A drag
+// too far follows part of the way").
+constexpr int kBriefPartwayProbes = 3;
+constexpr double kPartwayResidualJump = 10.0;
+
+// Whether every dragged vertex of `surface` is nearer its target than at the press: a state
+// settled with soft pulls may slide back past the press, which is no part of the drag.
+bool nearerThanAtPress(const model::CompositeSurface& press, const model::CompositeSurface& surface,
+                       const std::vector<VertexHandle>& handles) {
+    return std::all_of(handles.begin(), handles.end(), [&](const VertexHandle& h) {
+        return model::distance(surface.position(h.vertex), h.target) <
+               model::distance(press.position(h.vertex), h.target);
+    });
+}
 
 } // namespace
 
@@ -37,12 +56,17 @@ bool partwayFits(std::chrono::steady_clock::duration releaseStep) {
     return 2 * kPartwaySettleFactor * releaseStep < kPartwayBudget;
 }
 
-void keepReached(std::vector<Reached>& reached, Reached state) {
+void keepReached(std::vector<Reached>& reached, std::size_t& stride, Reached state) {
+    stride = std::max<std::size_t>(stride, 1);
+    if (!reached.empty() && reached.back().moves % stride != 0) {
+        reached.pop_back(); // kept only as the latest
+    }
     reached.push_back(std::move(state));
-    if (reached.size() > kReachedKept) {
+    while (reached.size() > kReachedKept) {
+        stride *= 2;
         std::vector<Reached> thinned;
         for (std::size_t i = 0; i < reached.size(); ++i) {
-            if (i % 2 == 1 || i + 1 == reached.size()) {
+            if (reached[i].moves % stride == 0 || i + 1 == reached.size()) {
                 thinned.push_back(std::move(reached[i]));
             }
         }
@@ -50,11 +74,17 @@ void keepReached(std::vector<Reached>& reached, Reached state) {
     }
 }
 
+int partwayIterationLimit(PartwaySearch search, int after) {
+    return search == PartwaySearch::Thorough ? kPartwayProbes * kPartwaySettleFactor * after
+                                             : (kBriefPartwayProbes + 1) * after;
+}
+
 std::optional<Partway>
 followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atPress,
               const std::vector<Reached>& reached, const std::vector<DragMove>& moves,
               const SessionOptions& options, int after, const std::vector<VertexHandle>& handles,
-              const std::vector<ControlPointHandle>& points, const std::atomic<bool>* cancel) {
+              const std::vector<ControlPointHandle>& points, const std::atomic<bool>* cancel,
+              PartwaySearch search, const std::function<void(const IterationStats&)>& onIteration) {
     const auto start = std::chrono::steady_clock::now();
     // Vertex developability where it held at the press, also at stars a state passed through
     // has opened (a fresh session would impose it only where it holds at its start).
@@ -69,14 +99,51 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
     const double developabilityLimit =
         std::max(10.0 * atPress.summary.finalMaxConstraintResidual, kPartwayDevelopability);
     std::optional<Partway> best;
+    const DragMove* bestMove = nullptr; // the move best was released at
     // reached[good] known to end well (-1: the press), reached[bad] known to end broken.
     long good = -1;
     long bad = static_cast<long>(reached.size());
     if (!reached.empty() && reached.back().moves >= moves.size()) {
         --bad; // the release itself
     }
-    for (int probe = 0; probe < kPartwayProbes && bad - good > 1; ++probe) {
-        if (std::chrono::steady_clock::now() - start > kPartwayBudget ||
+    const bool thorough = search == PartwaySearch::Thorough;
+    if (!thorough) {
+        // Only states before the drag asked for more than the sheet allows: its moves'
+        // residual jumped there.
+        double lowest = std::numeric_limits<double>::infinity();
+        for (long i = 0; i < bad; ++i) {
+            const double residual = reached[static_cast<std::size_t>(i)].residual;
+            if (residual > kPartwayResidualJump * lowest) {
+                bad = i;
+                break;
+            }
+            lowest = std::min(lowest, residual);
+        }
+    }
+    if (!thorough && settleOptions.formulation.pulledHandleWeight == 0.0) {
+        // The pulls soft, as on a held sheet: a state passed through settles where the sheet
+        // lets the dragged points go, not fighting their targets (docs/tuning.md).
+        settleOptions.formulation.pulledHandleWeight = kSheetPullWeight;
+    }
+    // Ends well: as above, and every dragged vertex nearer its target than at the press.
+    auto judge = [&](const SolveSession& session, const Summary& settling, SurfaceAssessment& a) {
+        const model::CompositeSurface& surface = session.surface();
+        if (!settling.succeeded() || !model::allCoordinatesFinite(surface)) {
+            return false;
+        }
+        a.solved = true;
+        a.summary = settling;
+        measureHandleGaps(a, surface, handles, points);
+        a.sheetHeld = surface.keepsDevelopment();
+        measureSettled(a, surface, &press, std::nullopt);
+        return !broken(a) && a.largestVertexDefect <= defectLimit &&
+               worstDevelopability(surface) <= developabilityLimit &&
+               nearerThanAtPress(press, surface, handles);
+    };
+    const int probes = thorough ? kPartwayProbes : kBriefPartwayProbes;
+    const int settleFactor = thorough ? kPartwaySettleFactor : 1;
+    for (int probe = 0; probe < probes && bad - good > 1; ++probe) {
+        if ((thorough && std::chrono::steady_clock::now() - start > kPartwayBudget) ||
             (cancel != nullptr && cancel->load())) {
             break;
         }
@@ -91,13 +158,15 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
             session->settle();
             // Stopped where the budget runs out, even within a settling.
             std::atomic<bool> stop{false};
-            settling =
-                session->step(kPartwaySettleFactor * after, &stop, [&](const IterationStats&) {
-                    if ((cancel != nullptr && cancel->load()) ||
-                        std::chrono::steady_clock::now() - start > kPartwayBudget) {
-                        stop = true;
-                    }
-                });
+            settling = session->step(settleFactor * after, &stop, [&](const IterationStats& stats) {
+                if (onIteration) {
+                    onIteration(stats);
+                }
+                if ((cancel != nullptr && cancel->load()) ||
+                    (thorough && std::chrono::steady_clock::now() - start > kPartwayBudget)) {
+                    stop = true;
+                }
+            });
         } catch (const std::exception&) {
             break;
         }
@@ -105,23 +174,42 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
             break;
         }
         SurfaceAssessment a;
-        const model::CompositeSurface& surface = session->surface();
-        bool ended = settling.succeeded() && model::allCoordinatesFinite(surface);
-        if (ended) {
-            a.solved = true;
-            a.summary = settling;
-            measureHandleGaps(a, surface, handles, points);
-            a.sheetHeld = surface.keepsDevelopment();
-            measureSettled(a, surface, &press, std::nullopt);
-            ended = !broken(a) && a.largestVertexDefect <= defectLimit &&
-                    worstDevelopability(surface) <= developabilityLimit;
-        }
+        bool ended = judge(*session, settling, a);
         if (ended) {
             good = index;
             a.followed = static_cast<double>(state.moves) / static_cast<double>(moves.size());
             best = Partway{std::move(session), std::move(a)};
+            bestMove = &move;
         } else {
             bad = index;
+        }
+    }
+    if (best && !thorough && !best->assessment.summary.toleranceReached &&
+        !(cancel != nullptr && cancel->load())) {
+        // A brief probe settles only as long as the release: the state kept gets as many
+        // iterations once more to reach the tolerance, and stays as it was if they spoil it.
+        const model::CompositeSurface settled = best->session->surface();
+        Summary more = best->session->step(after, cancel, [&](const IterationStats& stats) {
+            if (onIteration) {
+                onIteration(stats);
+            }
+        });
+        SurfaceAssessment a;
+        if (more.status == Status::Cancelled) {
+            return std::nullopt;
+        }
+        if (judge(*best->session, more, a)) {
+            continueSummary(best->assessment.summary, more);
+            a.summary = best->assessment.summary;
+            a.followed = best->assessment.followed;
+            best->assessment = std::move(a);
+        } else {
+            try {
+                best->session = std::make_unique<SolveSession>(
+                    settled, bestMove->vertices, bestMove->controlPoints, settleOptions);
+            } catch (const std::exception&) {
+                best.reset();
+            }
         }
     }
     return best;

@@ -11,6 +11,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -21,15 +22,28 @@ namespace devsurf::solver {
 struct Reached {
     std::size_t moves = 0;
     model::CompositeSurface surface;
+    // The largest constraint residual of the move's iteration that reached it.
+    double residual = 0.0;
 };
 
-// Keeps `state` and thins the kept ones to every other when there are too many (evenly spread
-// over the drag; the latest always).
-void keepReached(std::vector<Reached>& reached, Reached state);
+// Keeps `state` among the states a drag passed through: those whose move count is a multiple
+// of `stride` (doubled, thinning them, whenever more than fit are kept) and the latest, so
+// that they stay evenly spread over the whole drag.
+void keepReached(std::vector<Reached>& reached, std::size_t& stride, Reached state);
 
 // Whether the search fits its budget for a surface whose release took `releaseStep` to settle
 // (two settlings of a state passed through, each as long as that several times).
 bool partwayFits(std::chrono::steady_clock::duration releaseStep);
+
+// How followPartway looks for the state to release at.
+enum class PartwaySearch {
+    // Where partwayFits: a bisection over the states passed through, each settled several
+    // times as long as the release, within a time budget.
+    Thorough,
+    // For a model too large for that: a bisection of fewer probes, each settled as long as the
+    // release with the pulls soft, over the states before the moves' residual jumped.
+    Brief,
+};
 
 struct Partway {
     std::unique_ptr<SolveSession> session; // its surface() is the result
@@ -45,6 +59,11 @@ std::optional<Partway>
 followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atPress,
               const std::vector<Reached>& reached, const std::vector<DragMove>& moves,
               const SessionOptions& options, int after, const std::vector<VertexHandle>& handles,
-              const std::vector<ControlPointHandle>& points, const std::atomic<bool>* cancel);
+              const std::vector<ControlPointHandle>& points, const std::atomic<bool>* cancel,
+              PartwaySearch search = PartwaySearch::Thorough,
+              const std::function<void(const IterationStats&)>& onIteration = {});
+
+// The most iterations followPartway runs (for progress): its probes times their settling.
+int partwayIterationLimit(PartwaySearch search, int after);
 
 } // namespace devsurf::solver

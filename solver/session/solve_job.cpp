@@ -263,10 +263,11 @@ struct SolveJob::Drag {
     std::vector<std::set<model::VertexId>> pulledSheet;
     std::vector<std::vector<DragMove>> moves;
     std::vector<std::vector<Reached>> reached; // states passed through, for followPartway
+    std::vector<std::size_t> reachedStride;    // keepReached's
 
     explicit Drag(std::size_t count)
         : sessions(count), built(count), pulled(count), pulledPoints(count), pulledSheet(count),
-          moves(count), reached(count) {}
+          moves(count), reached(count), reachedStride(count, 1) {}
 };
 
 SolveJob::SolveJob() = default;
@@ -400,6 +401,7 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             d.pulledSheet[s] = sheetVertices;
             d.moves[s].clear();
             d.reached[s].clear();
+            d.reachedStride[s] = 1;
         }
         if (drag) {
             // The release at the last move's position is no move of its own: the replay then
@@ -418,8 +420,9 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             if (progress) {
                 ++done;
                 const Problem& problem = session->formulation().problem();
-                progress({key, done, std::max(done, total), replaying, problem.variableCount(),
-                          problem.rowCount(), &stats, replaying ? nullptr : &session->surface()});
+                progress({key, done, std::max(done, total), replaying, false,
+                          problem.variableCount(), problem.rowCount(), &stats,
+                          replaying ? nullptr : &session->surface()});
             }
         };
         const auto stepped = std::chrono::steady_clock::now();
@@ -461,7 +464,9 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
         const auto stepTime = std::chrono::steady_clock::now() - stepped;
         if (drag && !request.settle && summary.succeeded() && !d.moves[s].empty() &&
             (d.reached[s].empty() || d.reached[s].back().moves != d.moves[s].size())) {
-            keepReached(d.reached[s], {d.moves[s].size(), session->surface()});
+            keepReached(
+                d.reached[s], d.reachedStride[s],
+                {d.moves[s].size(), session->surface(), summary.finalMaxConstraintResidual});
         }
         if (request.kind == JobKind::Solve && summary.succeeded()) {
             assessment.bestIteration = session->returnToBestIterate(&summary).iteration;
@@ -554,11 +559,20 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             if (!refusable(press)) {
                 auto refused = std::make_shared<const SurfaceAssessment>(std::move(assessment));
                 std::optional<Partway> partway;
-                // Only where the search fits its budget (partwayFits).
-                if (sheet.empty() && !d.reached[s].empty() && partwayFits(stepTime)) {
-                    partway =
-                        followPartway(d.built[s], press, d.reached[s], d.moves[s],
-                                      optionsFor(request, key), steps, handles, points, cancel);
+                // A thorough search where it fits its budget (partwayFits), else a brief one.
+                if (sheet.empty() && !d.reached[s].empty()) {
+                    const PartwaySearch search =
+                        partwayFits(stepTime) ? PartwaySearch::Thorough : PartwaySearch::Brief;
+                    total += partwayIterationLimit(search, steps);
+                    partway = followPartway(d.built[s], press, d.reached[s], d.moves[s],
+                                            optionsFor(request, key), steps, handles, points,
+                                            cancel, search, [&](const IterationStats& stats) {
+                                                if (progress) {
+                                                    ++done;
+                                                    progress({key, done, std::max(done, total),
+                                                              false, true, 0, 0, &stats, nullptr});
+                                                }
+                                            });
                 }
                 if (partway) {
                     session = std::move(partway->session);

@@ -238,6 +238,8 @@ struct JobProgress {
     int done = 0;  // iterations of this request so far, over all surfaces
     int total = 0; // as planned (a replay adds more)
     bool replaying = false;
+    // The release ended broken: a state the drag passed through is settled (followPartway).
+    bool followingPartway = false;
     int variables = 0; // of the surface's problem
     int rows = 0;
     const IterationStats* stats = nullptr;

@@ -164,13 +164,15 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
             }
             const double now = clock.nsecsElapsed() / 1e6;
             const solver::SurfaceAssessment& assessment = outcome.assessments.front();
-            row.variables = assessment.summary.variables;
             if (result.revision == release) {
                 row.releaseMs = now - releasedAt;
                 // A release taken back: what the drag reached, which the design did not keep.
                 const solver::SurfaceAssessment& reached =
                     assessment.takenBack ? *assessment.takenBack : assessment;
                 row.takenBack = assessment.takenBack != nullptr;
+                row.followed = assessment.takenBack ? assessment.followed : 1.0;
+                row.heldBackMm = assessment.largestHandleGap;
+                row.keptResidual = assessment.summary.finalMaxConstraintResidual;
                 row.residualAfter = reached.summary.finalMaxConstraintResidual;
                 for (const auto& [face, places] : reached.foldOvers) {
                     (void)face;
@@ -182,6 +184,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
                 return;
             }
             ++row.applied;
+            row.variables = assessment.summary.variables;
             for (int m = covered + 1; m <= static_cast<int>(result.revision); ++m) {
                 latency.push_back(now - movedAt[static_cast<std::size_t>(m)]);
             }
@@ -323,12 +326,14 @@ void printDragBench(const DragBenchReport& report, bool json, std::ostream& out)
                           "\"largest_stall_ms\": %.3f, \"release_ms\": %.3f, "
                           "\"residual_after\": %.3e, \"fold_overs\": %d, "
                           "\"development_overlap_patches\": %d, \"replayed_stretching\": %s, "
-                          "\"taken_back\": %s, \"error\": \"%s\"}",
+                          "\"taken_back\": %s, \"followed\": %.3f, \"held_back_mm\": %.3f, "
+                          "\"kept_residual\": %.3e, \"error\": \"%s\"}",
                           i == 0 ? "" : ", ", r.model.c_str(), r.variables, r.moves, r.solved,
                           r.applied, r.firstResultMs, r.medianMs, r.p95Ms, r.appliedPerSecond,
                           r.largestStallMs, r.releaseMs, r.residualAfter, r.foldOvers,
                           r.overlappingPatches, r.replayedStretching ? "true" : "false",
-                          r.takenBack ? "true" : "false", r.error.c_str());
+                          r.takenBack ? "true" : "false", r.followed, r.heldBackMm, r.keptResidual,
+                          r.error.c_str());
             out << line;
         }
         const SolveStallRow& s = report.solve;
@@ -350,14 +355,21 @@ void printDragBench(const DragBenchReport& report, bool json, std::ostream& out)
                   "p95 ms", "applied/s", "stall ms", "release ms", "residual", "folds", "overlaps");
     out << line;
     for (const DragBenchRow& r : report.drags) {
+        char taken[160] = "";
+        if (r.takenBack && r.followed > 0.0) {
+            std::snprintf(taken, sizeof taken,
+                          "  followed %.0f %% (held back %.1f mm, residual %.1e)",
+                          100.0 * r.followed, r.heldBackMm, r.keptResidual);
+        } else if (r.takenBack) {
+            std::snprintf(taken, sizeof taken, "  taken back to the press");
+        }
         std::snprintf(
             line, sizeof line,
             "%-14s %9d %6d %6d %7d %9.1f %9.1f %9.1f %9.1f %9.1f %10.1f %9.2e %6d %8d%s%s%s%s\n",
             r.model.c_str(), r.variables, r.moves, r.solved, r.applied, r.firstResultMs, r.medianMs,
             r.p95Ms, r.appliedPerSecond, r.largestStallMs, r.releaseMs, r.residualAfter,
             r.foldOvers, r.overlappingPatches, r.replayedStretching ? "  replayed stretching" : "",
-            r.takenBack ? "  taken back to the press" : "",
-            r.error.empty() ? "" : "  failed: ", r.error.c_str());
+            taken, r.error.empty() ? "" : "  failed: ", r.error.c_str());
         out << line;
     }
     const SolveStallRow& s = report.solve;

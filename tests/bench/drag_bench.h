@@ -47,6 +47,12 @@ struct DragBenchRow {
     // The release ended broken and was taken back to the press (SurfaceAssessment::takenBack);
     // the residual, fold-overs and overlaps above are then those of the refused result.
     bool takenBack = false;
+    // Of a release taken back: the share of the moves the kept result follows (0: back to the
+    // press; SurfaceAssessment::followed), how far its dragged vertex lags behind the mouse
+    // and its largest constraint residual.
+    double followed = 0.0;
+    double heldBackMm = 0.0;
+    double keptResidual = 0.0;
     std::string error; // empty unless the drag failed
 };
 

@@ -4,7 +4,9 @@
 #include "model/examples.h"
 #include "model/math_constants.h"
 #include "sampled_developability.h"
+#include "solver/formulation/perturbation.h"
 #include "solver/quality/shape_change.h"
+#include "solver/session/drag_partway.h"
 #include "solver/session/solve_job.h"
 #include "solver/session/verdict.h"
 #include "test_registry.h"
@@ -97,6 +99,89 @@ private slots:
               a.largestHandleGap, developability);
         QVERIFY2(developability < 1e-5, qPrintable(QString::number(developability)));
         QVERIFY(solver::foldOvers(s).empty());
+    }
+
+    void theStatesKeptSpanTheWholeDrag() {
+        // A long drag keeps at most a few dozen of its states for the search, spread evenly
+        // from its first moves to its last (the search needs the early, still developable ones).
+        const model::CompositeSurface surface = model::makeExample("sheet").surfaces.front();
+        std::vector<solver::Reached> reached;
+        std::size_t stride = 1;
+        constexpr std::size_t kMoves = 500;
+        for (std::size_t m = 1; m <= kMoves; ++m) {
+            solver::keepReached(reached, stride, {m, surface, 0.0});
+            QVERIFY(reached.size() <= 32);
+            QCOMPARE(reached.back().moves, m);
+        }
+        QVERIFY(reached.size() >= 16);
+        QVERIFY2(reached.front().moves <= kMoves / 16,
+                 qPrintable(QString::number(reached.front().moves)));
+        std::size_t widest = 0;
+        for (std::size_t i = 1; i < reached.size(); ++i) {
+            QVERIFY(reached[i].moves > reached[i - 1].moves);
+            widest = std::max(widest, reached[i].moves - reached[i - 1].moves);
+        }
+        QVERIFY2(widest <= 2 * reached.front().moves, qPrintable(QString::number(widest)));
+    }
+
+    void aLargeModelsBriefSearchFollowsPartway() {
+        // The search a model too large for the thorough one gets (PartwaySearch::Brief): an
+        // annulus with six rim vertices pinned, an inner vertex lifted 150 mm keeping lengths
+        // (more than the sheet lets it rise) in 40 moves of one iteration each, as the Drag
+        // tool runs them. Released at the end it folds over; the brief search releases it at
+        // an earlier state that settles developable, the vertex lagging behind the mouse.
+        model::CompositeSurface press = model::makeExample("annulus").surfaces.front();
+        for (model::VertexId id : solver::spreadBoundaryVertices(press, 6)) {
+            press.setPinned(id, true);
+        }
+        const model::VertexId dragged = 1;
+        QVERIFY(!press.isPinned(dragged));
+        const Vec3 from = press.position(dragged);
+        constexpr int kMoves = 40;
+        const Vec3 lift(0.0, 0.0, 150.0);
+        const solver::SessionOptions options = solver::keepLengthsSessionOptions();
+        std::vector<solver::VertexHandle> handles{{dragged, false, from}};
+        solver::SolveSession session(press, handles, options);
+        std::vector<solver::Reached> reached;
+        std::vector<solver::DragMove> moves;
+        std::size_t stride = 1;
+        for (int k = 1; k <= kMoves; ++k) {
+            handles.front().target = from + lift * (static_cast<double>(k) / kMoves);
+            session.setHandleTarget(dragged, handles.front().target);
+            const solver::Summary summary = session.step(1);
+            QVERIFY(summary.succeeded());
+            moves.push_back({handles, {}});
+            solver::keepReached(
+                reached, stride,
+                {moves.size(), session.surface(), summary.finalMaxConstraintResidual});
+        }
+        session.settle();
+        session.step(solver::kIterationsAfterDragKeepingLengths);
+        QVERIFY2(!solver::foldOvers(session.surface()).empty(),
+                 "the whole drag no longer folds over: the test needs a farther lift");
+
+        solver::SurfaceAssessment atPress;
+        atPress.solved = true;
+        const std::optional<solver::Partway> partway = solver::followPartway(
+            press, atPress, reached, moves, options, solver::kIterationsAfterDragKeepingLengths,
+            handles, {}, nullptr, solver::PartwaySearch::Brief);
+        QVERIFY(partway.has_value());
+        const solver::SurfaceAssessment& a = partway->assessment;
+        QVERIFY2(a.followed > 0.0 && a.followed < 1.0, qPrintable(QString::number(a.followed)));
+        const model::CompositeSurface& s = partway->session->surface();
+        // Measured from the geometry: risen part of the way, lagging behind the mouse.
+        const double risen = s.position(dragged).z - from.z;
+        const double developability = sampledDevelopability(s);
+        qInfo("followed %.0f %%, risen %.1f mm, held back %.1f mm, det %.2g", 100.0 * a.followed,
+              risen, a.largestHandleGap, developability);
+        QVERIFY2(risen > 10.0 && risen < 150.0, qPrintable(QString::number(risen)));
+        QVERIFY(std::abs(a.largestHandleGap - model::distance(s.position(dragged), from + lift)) <
+                1e-9);
+        QVERIFY2(developability < 1e-5, qPrintable(QString::number(developability)));
+        QVERIFY(solver::foldOvers(s).empty());
+        for (model::VertexId id : press.pinnedVertices()) {
+            QVERIFY(model::distance(s.position(id), press.position(id)) < 1e-9);
+        }
     }
 };
 
