@@ -48,6 +48,14 @@ DragTool::DragTool(QAction* action, Workspace* workspace, views::SurfaceView* vi
     : QObject(action), m_action(action), m_workspace(workspace), m_view(view), m_solver(solver) {
     m_action->setCheckable(true);
     connect(solver->worker(), &solver::SolverWorker::finished, this, &DragTool::onResult);
+    // The release of a large model settles for seconds (and longer where the whole drag would
+    // end broken and the job looks for how far it can follow): its progress, and Esc cancels.
+    connect(solver->worker(), &solver::SolverWorker::progress, this,
+            [this](quint64 revision, int iteration, int iterations, double) {
+                if (m_state == State::Finishing && revision == m_pressRevision) {
+                    emit statusMessage(settlingText(iteration, iterations));
+                }
+            });
     // While the tool is on, an application event filter sees the view's mouse events before
     // the view does, and the axis keys wherever the keyboard focus is.
     connect(m_action, &QAction::toggled, this, [this](bool on) {
@@ -88,6 +96,13 @@ QString DragTool::undoText() const {
 
 QString DragTool::cancelledText() const {
     return tr("Drag cancelled; the design is as it was.");
+}
+
+QString DragTool::settlingText(int iteration, int iterations) const {
+    return tr("%1: settling, iteration %2 of %3 (Esc cancels).")
+        .arg(undoText())
+        .arg(iteration)
+        .arg(iterations);
 }
 
 QString DragTool::stoppedText(const QString& reason) const {
@@ -159,8 +174,8 @@ model::Vec3 DragTool::unitVector(Axis axis) {
 bool DragTool::handleKey(QEvent* event) {
     auto* key = static_cast<QKeyEvent*>(event);
     if (event->type() == QEvent::ShortcutOverride) {
-        // Esc during a drag belongs to the drag, not to Select None.
-        if (m_state == State::Dragging && key->key() == Qt::Key_Escape) {
+        // Esc during a drag or its settling belongs to the drag, not to Select None.
+        if (m_state != State::Idle && key->key() == Qt::Key_Escape) {
             event->accept();
             return true;
         }
@@ -181,7 +196,7 @@ bool DragTool::handleKey(QEvent* event) {
         axis = Axis::Z;
         break;
     case Qt::Key_Escape:
-        if (event->type() == QEvent::KeyPress && m_state == State::Dragging) {
+        if (event->type() == QEvent::KeyPress && m_state != State::Idle) {
             abort(cancelledText());
             return true;
         }

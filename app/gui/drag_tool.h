@@ -109,6 +109,8 @@ protected:
     virtual void finish() {}
     virtual QString undoText() const;
     virtual QString cancelledText() const;
+    // The status bar sentence while the iterations after the release run.
+    QString settlingText(int iteration, int iterations) const;
     // "… stopped: reason The design is as it was."
     virtual QString stoppedText(const QString& reason) const;
     // The motion stopped because the design changed by another edit meanwhile.

@@ -368,6 +368,64 @@ private slots:
         QCOMPARE(bytesOf(s.window), atPress);
     }
 
+    void theReleaseCountsItsIterationsInTheStatusBar() {
+        // The iterations after the release run seconds on a large model: the status bar counts
+        // them ("Drag 2 vertices: settling, iteration 3 of 20 (Esc cancels).").
+        Setup s;
+        QVERIFY(prepare(s));
+        QSignalSpy finished(s.window.dragTool(), &app::DragTool::dragFinished);
+        QSignalSpy changed(s.doc, &document::Document::changed);
+        QSignalSpy status(s.window.dragTool(), &app::DragTool::statusMessage);
+        QTest::mousePress(s.gl, Qt::LeftButton, {}, s.at);
+        QTest::mouseMove(s.gl, s.at + QPoint(0, -20));
+        QVERIFY(changed.wait(60000));
+        const QString undo = s.doc->undoStack()->undoText();
+        QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(0, -20));
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(finished.front().front().toBool(), true);
+        const QString step = s.doc->undoStack()->undoText();
+        QVERIFY(step != undo);
+        const QString first = QCoreApplication::translate("devsurf::app::DragTool",
+                                                          "%1: settling, iteration %2 of %3 "
+                                                          "(Esc cancels).")
+                                  .arg(step)
+                                  .arg(1)
+                                  .arg(solver::kIterationsAfterDragKeepingLengths);
+        QStringList shown;
+        for (const QList<QVariant>& message : status) {
+            shown << message.front().toString();
+        }
+        QVERIFY2(shown.contains(first), qPrintable(shown.join(QLatin1Char('\n'))));
+    }
+
+    void escapeWhileTheReleaseSettlesRestoresTheStateAtPress() {
+        // Esc after the release cancels its iterations as it cancels the drag: the design is
+        // as at the press, no step, and Esc does not also select nothing.
+        Setup s;
+        QVERIFY(prepare(s));
+        const int stackAtPress = s.doc->undoStack()->count();
+        const std::string atPress = bytesOf(s.window);
+        QSignalSpy finished(s.window.dragTool(), &app::DragTool::dragFinished);
+        QSignalSpy changed(s.doc, &document::Document::changed);
+        QSignalSpy status(s.window.dragTool(), &app::DragTool::statusMessage);
+        QTest::mousePress(s.gl, Qt::LeftButton, {}, s.at);
+        QTest::mouseMove(s.gl, s.at + QPoint(0, -20));
+        QVERIFY(changed.wait(60000));
+        QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(0, -20));
+        // No event processed in between: the release's result cannot have arrived yet.
+        QVERIFY(finished.isEmpty());
+        QTest::keyClick(s.gl, Qt::Key_Escape);
+        QCOMPARE(finished.size(), 1);
+        QCOMPARE(finished.front().front().toBool(), false);
+        const QString cancelled = QCoreApplication::translate(
+            "devsurf::app::DragTool", "Drag cancelled; the design is as it was.");
+        QCOMPARE(status.back().front().toString(), cancelled);
+        QVERIFY(waitForWorkerIdle(s.window, 60000));
+        QCOMPARE(bytesOf(s.window), atPress);
+        QCOMPARE(s.doc->undoStack()->count(), stackAtPress);
+        QVERIFY(!s.window.workspace()->selection()->isEmpty());
+    }
+
     void qualityColoursFollowTheDrag() {
         Setup s;
         QVERIFY(prepare(s));
