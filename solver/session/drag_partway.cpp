@@ -125,7 +125,8 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
         // lets the dragged points go, not fighting their targets (docs/tuning.md).
         settleOptions.formulation.pulledHandleWeight = kSheetPullWeight;
     }
-    // Ends well: as above, and every dragged vertex nearer its target than at the press.
+    // Ends well: as above, and every dragged vertex nearer its target than at the press. (A
+    // development that only overlaps itself is reported, not refused, as after any release.)
     auto judge = [&](const SolveSession& session, const Summary& settling, SurfaceAssessment& a) {
         const model::CompositeSurface& surface = session.surface();
         if (!settling.succeeded() || !model::allCoordinatesFinite(surface)) {

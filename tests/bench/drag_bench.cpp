@@ -173,6 +173,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
                 row.followed = assessment.takenBack ? assessment.followed : 1.0;
                 row.heldBackMm = assessment.largestHandleGap;
                 row.keptResidual = assessment.summary.finalMaxConstraintResidual;
+                row.keptOverlappingPatches = static_cast<int>(assessment.overlapping.size());
                 row.residualAfter = reached.summary.finalMaxConstraintResidual;
                 for (const auto& [face, places] : reached.foldOvers) {
                     (void)face;
@@ -319,21 +320,21 @@ void printDragBench(const DragBenchReport& report, bool json, std::ostream& out)
             << "\", \"blas_kernel_chosen_by\": \"" << blas.kernelChosenBy << "\", \"drags\": [";
         for (std::size_t i = 0; i < report.drags.size(); ++i) {
             const DragBenchRow& r = report.drags[i];
-            std::snprintf(line, sizeof line,
-                          "%s{\"model\": \"%s\", \"variables\": %d, \"moves\": %d, \"solved\": %d, "
-                          "\"applied\": %d, \"first_result_ms\": %.3f, \"median_ms\": %.3f, "
-                          "\"p95_ms\": %.3f, \"applied_per_second\": %.2f, "
-                          "\"largest_stall_ms\": %.3f, \"release_ms\": %.3f, "
-                          "\"residual_after\": %.3e, \"fold_overs\": %d, "
-                          "\"development_overlap_patches\": %d, \"replayed_stretching\": %s, "
-                          "\"taken_back\": %s, \"followed\": %.3f, \"held_back_mm\": %.3f, "
-                          "\"kept_residual\": %.3e, \"error\": \"%s\"}",
-                          i == 0 ? "" : ", ", r.model.c_str(), r.variables, r.moves, r.solved,
-                          r.applied, r.firstResultMs, r.medianMs, r.p95Ms, r.appliedPerSecond,
-                          r.largestStallMs, r.releaseMs, r.residualAfter, r.foldOvers,
-                          r.overlappingPatches, r.replayedStretching ? "true" : "false",
-                          r.takenBack ? "true" : "false", r.followed, r.heldBackMm, r.keptResidual,
-                          r.error.c_str());
+            std::snprintf(
+                line, sizeof line,
+                "%s{\"model\": \"%s\", \"variables\": %d, \"moves\": %d, \"solved\": %d, "
+                "\"applied\": %d, \"first_result_ms\": %.3f, \"median_ms\": %.3f, "
+                "\"p95_ms\": %.3f, \"applied_per_second\": %.2f, "
+                "\"largest_stall_ms\": %.3f, \"release_ms\": %.3f, "
+                "\"residual_after\": %.3e, \"fold_overs\": %d, "
+                "\"development_overlap_patches\": %d, \"replayed_stretching\": %s, "
+                "\"taken_back\": %s, \"followed\": %.3f, \"held_back_mm\": %.3f, "
+                "\"kept_residual\": %.3e, \"kept_overlap_patches\": %d, \"error\": \"%s\"}",
+                i == 0 ? "" : ", ", r.model.c_str(), r.variables, r.moves, r.solved, r.applied,
+                r.firstResultMs, r.medianMs, r.p95Ms, r.appliedPerSecond, r.largestStallMs,
+                r.releaseMs, r.residualAfter, r.foldOvers, r.overlappingPatches,
+                r.replayedStretching ? "true" : "false", r.takenBack ? "true" : "false", r.followed,
+                r.heldBackMm, r.keptResidual, r.keptOverlappingPatches, r.error.c_str());
             out << line;
         }
         const SolveStallRow& s = report.solve;
@@ -358,8 +359,9 @@ void printDragBench(const DragBenchReport& report, bool json, std::ostream& out)
         char taken[160] = "";
         if (r.takenBack && r.followed > 0.0) {
             std::snprintf(taken, sizeof taken,
-                          "  followed %.0f %% (held back %.1f mm, residual %.1e)",
-                          100.0 * r.followed, r.heldBackMm, r.keptResidual);
+                          "  followed %.0f %% (held back %.1f mm, residual %.1e, overlaps %d)",
+                          100.0 * r.followed, r.heldBackMm, r.keptResidual,
+                          r.keptOverlappingPatches);
         } else if (r.takenBack) {
             std::snprintf(taken, sizeof taken, "  taken back to the press");
         }

@@ -49,10 +49,11 @@ struct DragBenchRow {
     bool takenBack = false;
     // Of a release taken back: the share of the moves the kept result follows (0: back to the
     // press; SurfaceAssessment::followed), how far its dragged vertex lags behind the mouse
-    // and its largest constraint residual.
+    // its largest constraint residual and the patches where its development overlaps itself.
     double followed = 0.0;
     double heldBackMm = 0.0;
     double keptResidual = 0.0;
+    int keptOverlappingPatches = 0;
     std::string error; // empty unless the drag failed
 };
 

@@ -3,6 +3,7 @@
 #include "model/composite_surface.h"
 #include "model/examples.h"
 #include "model/math_constants.h"
+#include "model/pattern/cutting_pattern.h"
 #include "sampled_developability.h"
 #include "solver/formulation/perturbation.h"
 #include "solver/quality/shape_change.h"
@@ -179,6 +180,7 @@ private slots:
                 1e-9);
         QVERIFY2(developability < 1e-5, qPrintable(QString::number(developability)));
         QVERIFY(solver::foldOvers(s).empty());
+        QVERIFY(model::selfOverlappingPatches(s).empty()); // cut from one sheet
         for (model::VertexId id : press.pinnedVertices()) {
             QVERIFY(model::distance(s.position(id), press.position(id)) < 1e-9);
         }
