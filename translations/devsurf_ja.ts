@@ -4712,50 +4712,55 @@
     </message>
     <message>
         <location filename="../app/gui/solve_report_text.cpp" line="191"/>
+        <source>; settled a second time, since the first settling after the release did not converge</source>
+        <translation>; 離した後の最初の反復が収束しなかったため、もう一度収束させました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_report_text.cpp" line="195"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; 長さを保てなかったため (%1)、シートの伸びを許してドラッグをやり直しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="200"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="204"/>
         <source>followed %1 % of the drag and held back %2 mm, since the whole drag %3: the design stays at its last developable state</source>
         <translation>ドラッグの %1 % まで追従し、%2 mm 手前で止めました (ドラッグ全体の結果: %3)、デザインは最後の可展な状態のままです</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="206"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="210"/>
         <source>not applied, since the motion %1: the design stays as it was</source>
         <translation>適用しませんでした (動かした結果: %1)、デザインは元のままです</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="214"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="218"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; シートにより %1 mm 手前で止まりました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="225"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="229"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n 個のパッチが自身の上に折り返され、曲面が自己重複しています: %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="240"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="244"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; 展開図が %n 個のパッチで自身と重なっており (%1)、1 枚のシートから切り出せません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="246"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="250"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="251"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="255"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="256"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="260"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
@@ -4837,7 +4842,7 @@
         <translation> (残差が最小の反復 %1 で終了)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="210"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="214"/>
         <source>taken back to where the drag started, since the drag %1: the design stays at its last developable state</source>
         <translation>ドラッグ開始時の状態に戻しました (ドラッグの結果: %1)、デザインは最後の可展な状態のままです</translation>
     </message>

@@ -250,6 +250,12 @@ int runDragCommand(const DragArguments& args) {
     if (assessment.held) {
         std::cout << describeHeld(*assessment.held) << "\n";
     }
+    if (assessment.settledAgain) {
+        std::cout << "Settled again: the iterations after the release did not converge, so the "
+                     "last state of the moves was settled once more, the keep-lengths energy "
+                     "fading more slowly (the \"after\" lines past "
+                  << after << ").\n";
+    }
     if (assessment.replay) {
         const solver::LengthsReplay& replay = *assessment.replay;
         const int before = replay.keepingLengths.problems();

@@ -187,6 +187,10 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result, const Q
                           .arg(QString::number(a.keptAsItWas->before, 'e', 1),
                                QString::number(a.keptAsItWas->after, 'e', 1));
         }
+        if (a.settledAgain) {
+            status += tr("; settled a second time, since the first settling after the release "
+                         "did not converge");
+        }
         if (a.replay && a.replay->taken) {
             status += tr("; keeping lengths failed (%1), so the drag was replayed letting "
                          "the sheet stretch")

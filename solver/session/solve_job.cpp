@@ -477,15 +477,63 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             const std::vector<model::VertexId> dragged(d.pulled[s].begin(), d.pulled[s].end());
             assessment.held = model::findVertexHeldByPins(d.built[s], dragged);
         }
+        // The release keeping lengths, judged (finalMaxConstraintResidual is the start's when
+        // no iteration completed).
+        std::optional<DragOutcome> judged;
+        if (vertexDragSettles && summary.succeeded()) {
+            judged = judgeDrag(d.built[s], session->surface(), summary.finalMaxConstraintResidual,
+                               summary.status == Status::StoppedBeforeDegenerate);
+        }
+        if (judged && judged->problems() > 0 && !d.reached[s].empty()) {
+            // On a fine model the release can alternate as the keep-lengths energy fades, and
+            // fold over (docs/tuning.md, "Settled again"): the drag's last state settles once
+            // more, the energy fading only after iterations whose residual did not rise; the
+            // better of the two settlings is kept.
+            std::unique_ptr<SolveSession> first = std::move(session);
+            try {
+                SessionOptions options = optionsFor(request, key);
+                options.formulation.sheetHandles = sheet;
+                options.holdFadeWhileResidualRises = true;
+                // Vertex developability at every star, as at the press, also where the moves
+                // opened one (a fresh session imposes it only where it holds at its start).
+                double pressDefect = 0.0;
+                for (const VertexAngleDefect& star : vertexAngleDefects(d.built[s])) {
+                    pressDefect = std::max(pressDefect, star.defect);
+                }
+                if (pressDefect <= options.formulation.vertexStartDefectLimit) {
+                    options.formulation.vertexStartDefectLimit =
+                        FormulationOptions{}.vertexStartDefectLimit;
+                }
+                session = std::make_unique<SolveSession>(d.reached[s].back().surface, handles,
+                                                         points, options);
+            } catch (const std::exception& error) {
+                return fail(cannotSolve(key, error));
+            }
+            session->settle();
+            total += steps;
+            const Summary again = session->step(steps, cancel, perIteration);
+            if (again.status == Status::Cancelled) {
+                return fail(failureOf(JobError::Cancelled, key));
+            }
+            std::optional<DragOutcome> second;
+            if (again.succeeded() && allFinite(session->surface())) {
+                second = judgeDrag(d.built[s], session->surface(), again.finalMaxConstraintResidual,
+                                   again.status == Status::StoppedBeforeDegenerate);
+            }
+            if (second && second->problems() < judged->problems()) {
+                summary = again;
+                judged = second;
+                assessment.settledAgain = true;
+            } else {
+                session = std::move(first);
+            }
+        }
         std::optional<std::vector<model::FaceId>> knownOverlaps;
         // A surface that keeps its development is never replayed stretching: its sheet holds.
         if (vertexDragSettles && request.lengths == DragLengths::Automatic &&
-            !snapshot.keepsDevelopment() && summary.succeeded()) {
+            !snapshot.keepsDevelopment() && judged) {
             // Keeping lengths failed? Then the same drag from the press, stretching.
-            // (finalMaxConstraintResidual is the start's when no iteration completed.)
-            const DragOutcome kept =
-                judgeDrag(d.built[s], session->surface(), summary.finalMaxConstraintResidual,
-                          summary.status == Status::StoppedBeforeDegenerate);
+            const DragOutcome kept = *judged;
             if (kept.measurable) {
                 knownOverlaps = kept.overlapping;
             }

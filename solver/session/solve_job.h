@@ -116,6 +116,9 @@ struct SurfaceAssessment {
     };
     std::optional<LessDevelopable> keptAsItWas;
     std::optional<LengthsReplay> replay;
+    // A vertex drag keeping lengths whose release ended with problems, settled once more from
+    // its last state with the keep-lengths energy fading more slowly, and kept so.
+    bool settledAgain = false;
     // A vertex drag keeping lengths whose pins hold a dragged vertex where the sheet cannot bend.
     std::optional<model::HeldVertex> held;
     std::vector<HandleGap> handleGaps;

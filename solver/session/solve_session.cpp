@@ -269,7 +269,10 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
             m_formulation->scaleApproximationWeights(kApproximationFade);
         }
         if (m_settling) {
-            m_formulation->scaleIsometryWeight(kKeepLengthsFade);
+            if (!(m_options.holdFadeWhileResidualRises && m_residual > m_settledResidual)) {
+                m_formulation->scaleIsometryWeight(kKeepLengthsFade);
+            }
+            m_settledResidual = m_residual;
             m_formulation->fadeDragEnergies(kCreaseDragFade);
         }
         // See kRoughSolveLengthDamping: once the residual has fallen far enough, the damping

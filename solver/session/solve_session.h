@@ -114,6 +114,10 @@ struct SessionOptions {
     // this times kApproximationFade^k in the k-th fading iteration (0: no floor; see
     // kDampedApproximationEps2).
     double approximationDamping = 0.0;
+    // After settle(): the keep-lengths energy fades (kKeepLengthsFade) only after iterations
+    // whose residual did not rise, so that it fades more slowly where the iterates alternate
+    // (a drag's second settling, docs/tuning.md "Settled again").
+    bool holdFadeWhileResidualRises = false;
 };
 
 // A Solve stops once its largest residual is at most kSolveStopResidual; its iterations
@@ -221,7 +225,8 @@ private:
     bool m_dragging = false; // something is pulled
     bool m_settling = false;
     bool m_lengthDampingFades = false; // the residual has fallen to kRoughSolveLengthDampingUntil
-    double m_residual = std::numeric_limits<double>::infinity(); // at the last iterate
+    double m_residual = std::numeric_limits<double>::infinity();        // at the last iterate
+    double m_settledResidual = std::numeric_limits<double>::infinity(); // at the last settling
     // The iterate of smallest residual of a Solve (returnToBestIterate).
     std::vector<double> m_bestX;
     double m_bestResidual = std::numeric_limits<double>::infinity();

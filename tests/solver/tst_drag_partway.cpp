@@ -1,5 +1,6 @@
-// A drag whose release would end broken follows part of the way (solver/session/drag_partway.h):
-// through the solve job as the Drag tool runs it, measured from the geometry.
+// A drag whose release would end broken is settled once more, or follows part of the way
+// (solver/session/drag_partway.h): through the solve job as the Drag tool runs it, measured
+// from the geometry.
 #include "model/composite_surface.h"
 #include "model/examples.h"
 #include "model/math_constants.h"
@@ -7,6 +8,7 @@
 #include "sampled_developability.h"
 #include "solver/formulation/perturbation.h"
 #include "solver/quality/shape_change.h"
+#include "solver/quality/vertex_stars.h"
 #include "solver/session/drag_partway.h"
 #include "solver/session/solve_job.h"
 #include "solver/session/verdict.h"
@@ -100,6 +102,60 @@ private slots:
               a.largestHandleGap, developability);
         QVERIFY2(developability < 1e-5, qPrintable(QString::number(developability)));
         QVERIFY(solver::foldOvers(s).empty());
+    }
+
+    void aReleaseThatAlternatesIsSettledAgain() {
+        // The annulus of size 12 with its outer rim pinned, an inner vertex lifted 50 mm in two
+        // moves keeping lengths: the release's iterations alternate as the keep-lengths energy
+        // fades and end folded over. Settled once more from the last move with the energy fading
+        // only after iterations whose residual did not rise, the drag ends where the mouse is,
+        // developable.
+        model::CompositeSurface press = model::makeExample("annulus", 12).surfaces.front();
+        for (const auto& [id, p] : press.vertices()) {
+            if (p.x * p.x + p.y * p.y > 249.0 * 249.0) { // the outer rim
+                press.setPinned(id, true);
+            }
+        }
+        const model::VertexId dragged = 0;
+        QVERIFY(!press.isPinned(dragged));
+        const Vec3 target = press.position(dragged) + Vec3(0.0, 0.0, 50.0);
+        solver::SolveJob job;
+        solver::JobOutcome outcome;
+        constexpr int kMoves = 2;
+        for (int k = 1; k <= kMoves + 1; ++k) {
+            solver::JobRequest request;
+            request.kind = solver::JobKind::VertexDrag;
+            request.drag = 31;
+            request.lengths = solver::DragLengths::Keep;
+            request.settle = k > kMoves;
+            request.surfaces = {press};
+            const double t = std::min(k, kMoves) / static_cast<double>(kMoves);
+            request.pulled[0] = {{dragged, false, press.position(dragged) + Vec3(0, 0, 50.0 * t)}};
+            outcome = job.run(request);
+            QVERIFY2(outcome.ok, outcome.failure.detail.c_str());
+        }
+        const solver::SurfaceAssessment& a = outcome.assessments.front();
+        QVERIFY(a.settledAgain);
+        QVERIFY(!a.takenBack);
+        const model::CompositeSurface& s = outcome.surfaces.front();
+        // Measured from the geometry: at the mouse, developable, no star opened, nothing folded.
+        const double gap = model::distance(s.position(dragged), target);
+        const double developability = sampledDevelopability(s);
+        double defect = 0.0;
+        for (const solver::VertexAngleDefect& star : solver::vertexAngleDefects(s)) {
+            defect = std::max(defect, star.defect);
+        }
+        qInfo("settled again: %d iterations, residual %.2g, det %.2g, star defect %.2g rad, "
+              "%.2g mm from the mouse",
+              a.summary.iterationsCompleted, a.summary.finalMaxConstraintResidual, developability,
+              defect, gap);
+        QVERIFY2(gap < 1e-6, qPrintable(QString::number(gap)));
+        QVERIFY2(developability < 1e-8, qPrintable(QString::number(developability)));
+        QVERIFY2(defect < 1e-9, qPrintable(QString::number(defect)));
+        QVERIFY(solver::foldOvers(s).empty());
+        for (model::VertexId id : press.pinnedVertices()) {
+            QVERIFY(model::distance(s.position(id), press.position(id)) < 1e-9);
+        }
     }
 
     void theStatesKeptSpanTheWholeDrag() {
