@@ -529,14 +529,14 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             }
         }
         std::optional<std::vector<model::FaceId>> knownOverlaps;
+        if (judged && judged->measurable) {
+            knownOverlaps = judged->overlapping; // measured once
+        }
         // A surface that keeps its development is never replayed stretching: its sheet holds.
         if (vertexDragSettles && request.lengths == DragLengths::Automatic &&
             !snapshot.keepsDevelopment() && judged) {
             // Keeping lengths failed? Then the same drag from the press, stretching.
             const DragOutcome kept = *judged;
-            if (kept.measurable) {
-                knownOverlaps = kept.overlapping;
-            }
             if (kept.problems() > 0) {
                 replaying = true;
                 ReplayedDrag replay;
