@@ -104,6 +104,24 @@ class TstDrag : public QObject {
         return pick && pick->kind == Pick::Kind::Vertex && pick->id == kDragged;
     }
 
+    // The drag tool's signals and the document's changes, watched from the press on.
+    struct Watch {
+        QSignalSpy finished;
+        QSignalSpy changed;
+        QSignalSpy status;
+        explicit Watch(Setup& s)
+            : finished(s.window.dragTool(), &app::DragTool::dragFinished),
+              changed(s.doc, &document::Document::changed),
+              status(s.window.dragTool(), &app::DragTool::statusMessage) {}
+    };
+
+    // Presses on the dragged vertex and moves 20 pixels up; true once the design follows.
+    static bool pressAndMove(Setup& s, Watch& watch) {
+        QTest::mousePress(s.gl, Qt::LeftButton, {}, s.at);
+        QTest::mouseMove(s.gl, s.at + QPoint(0, -20));
+        return watch.changed.wait(60000);
+    }
+
 private slots:
     void init() { QSettings().clear(); }
 
@@ -354,12 +372,9 @@ private slots:
         QVERIFY(prepare(s));
         const int stackAtPress = s.doc->undoStack()->count();
         const std::string atPress = bytesOf(s.window);
-        QSignalSpy finished(s.window.dragTool(), &app::DragTool::dragFinished);
-        QSignalSpy changed(s.doc, &document::Document::changed);
-        QSignalSpy status(s.window.dragTool(), &app::DragTool::statusMessage);
-        QTest::mousePress(s.gl, Qt::LeftButton, {}, s.at);
-        QTest::mouseMove(s.gl, s.at + QPoint(0, -20));
-        QVERIFY(changed.wait(60000));
+        Watch watch(s);
+        QSignalSpy& finished = watch.finished;
+        QVERIFY(pressAndMove(s, watch));
         QVERIFY(bytesOf(s.window) != atPress);
         QSignalSpy stackMoves(s.doc->undoStack(), &QUndoStack::indexChanged);
         if (released) {
@@ -371,7 +386,7 @@ private slots:
         QCOMPARE(finished.size(), 1);
         QCOMPARE(finished.front().front().toBool(), false);
         QVERIFY(!s.window.dragTool()->isDragging());
-        QCOMPARE(status.back().front().toString(),
+        QCOMPARE(watch.status.back().front().toString(),
                  QCoreApplication::translate("devsurf::app::DragTool",
                                              "Drag cancelled; the design is as it was."));
         QCOMPARE(bytesOf(s.window), atPress);
@@ -392,12 +407,9 @@ private slots:
         // them ("Drag 2 vertices: settling, iteration 3 of 20 (Esc cancels).").
         Setup s;
         QVERIFY(prepare(s));
-        QSignalSpy finished(s.window.dragTool(), &app::DragTool::dragFinished);
-        QSignalSpy changed(s.doc, &document::Document::changed);
-        QSignalSpy status(s.window.dragTool(), &app::DragTool::statusMessage);
-        QTest::mousePress(s.gl, Qt::LeftButton, {}, s.at);
-        QTest::mouseMove(s.gl, s.at + QPoint(0, -20));
-        QVERIFY(changed.wait(60000));
+        Watch watch(s);
+        QSignalSpy& finished = watch.finished;
+        QVERIFY(pressAndMove(s, watch));
         const QString undo = s.doc->undoStack()->undoText();
         QTest::mouseRelease(s.gl, Qt::LeftButton, {}, s.at + QPoint(0, -20));
         QVERIFY(finished.wait(60000));
@@ -411,7 +423,7 @@ private slots:
                                   .arg(1)
                                   .arg(solver::kIterationsAfterDragKeepingLengths);
         QStringList shown;
-        for (const QList<QVariant>& message : status) {
+        for (const QList<QVariant>& message : watch.status) {
             shown << message.front().toString();
         }
         QVERIFY2(shown.contains(first), qPrintable(shown.join(QLatin1Char('\n'))));
