@@ -1771,12 +1771,12 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="98"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="20"/>
         <source>Drag cancelled; the design is as it was.</source>
         <translation>Ziehen abgebrochen; der Entwurf ist wie zuvor.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="94"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="16"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>%n Ecke ziehen</numerusform>
@@ -1810,12 +1810,12 @@
         <translation>Eckpunkt %1 wird %2 mm im Bogen gezogen; die Fläche folgt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="129"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="51"/>
         <source>Sliding crease %1 by %2 mm within the surface, as far as it goes: the patch it moves into keeps %3 % of its width. Release to finish, Esc cancels.</source>
         <translation>Falz %1 wird um %2 mm innerhalb der Fläche verschoben, so weit es geht: das Flächenstück, in das er sich bewegt, behält %3 % seiner Breite. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="151"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="73"/>
         <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm entlang X gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -1823,7 +1823,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="154"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="76"/>
         <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm entlang Y gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -1831,7 +1831,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="157"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="79"/>
         <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm entlang Z gezogen. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -1839,7 +1839,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="162"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="84"/>
         <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>
             <numerusform>%n Ecke wird %1 mm in der Bildebene gezogen. Loslassen beendet, Esc bricht ab; X, Y oder Z gedrückt halten bewegt entlang dieser Achse.</numerusform>
@@ -1852,85 +1852,85 @@
         <translation>Punkte der Abwicklung lassen sich nur ziehen, wo die Fläche ihren Bogen festhält (Werkzeuge ▸ Bogen festhalten).</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="273"/>
+        <location filename="../app/gui/drag_tool.cpp" line="192"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>Ecke %1 ist festgehalten und kann nicht gezogen werden; geben Sie sie zuerst frei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="291"/>
-        <location filename="../app/gui/drag_tool.cpp" line="334"/>
+        <location filename="../app/gui/drag_tool.cpp" line="210"/>
+        <location filename="../app/gui/drag_tool.cpp" line="253"/>
         <location filename="../app/gui/drag_tool_sheet.cpp" line="66"/>
         <source>a drag started</source>
         <translation>ein Ziehen hat begonnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="317"/>
+        <location filename="../app/gui/drag_tool.cpp" line="236"/>
         <source>There is no edge %1.</source>
         <translation>Es gibt keine Kante %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="320"/>
+        <location filename="../app/gui/drag_tool.cpp" line="239"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>Kante %1 ist kein Falz (eine Kurve zwischen zwei Flächenstücken); nur Falze lassen sich ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="325"/>
+        <location filename="../app/gui/drag_tool.cpp" line="244"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>Kante %1 kann sich nicht bewegen: beide Enden sind festgehalten und sie hat keinen weiteren Kontrollpunkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="394"/>
+        <location filename="../app/gui/drag_tool.cpp" line="313"/>
         <source>Snapped to reference curve %1.</source>
         <translation>An Referenzkurve %1 gefangen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="444"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="96"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>Die festgehaltenen Ecken %1 und %2 halten Ecke %3 auf der Geraden zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="450"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="102"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>Die festgehaltenen Ecken %1, %2 und %3 halten Ecke %4 im Dreieck zwischen ihnen (sie sind so weit voneinander entfernt wie im flachen Blatt): sie bewegt sich nur, wenn das Blatt gedehnt wird. </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="109"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="31"/>
         <source>Drag stopped: %1 The design is as it was.</source>
         <translation>Ziehen beendet: %1 Der Entwurf ist wie zuvor.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="92"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="14"/>
         <source>Drag crease %1</source>
         <translation>Falz %1 ziehen</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="102"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="24"/>
         <source>%1: settling, iteration %2 of %3 (Esc cancels).</source>
         <translation>%1: kommt zur Ruhe, Iteration %2 von %3 (Esc bricht ab).</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="113"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="35"/>
         <source>Drag tool: press on a vertex in the 3D view and move the mouse; the selected vertices of its surface follow. Press on a crease to slide it within its patches. Esc cancels a drag.</source>
         <translation>Ziehwerkzeug: Drücken Sie in der 3D-Ansicht auf eine Ecke und bewegen Sie die Maus; die ausgewählten Ecken ihrer Fläche folgen. Drücken Sie auf einen Falz, um ihn innerhalb seiner Flächenstücke zu verschieben. Esc bricht das Ziehen ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="119"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="41"/>
         <source>Drag stopped: the design changed during the drag.</source>
         <translation>Ziehen beendet: Der Entwurf hat sich während des Ziehens geändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="137"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="59"/>
         <source>Sliding crease %1 by %2 mm within the surface. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>Falz %1 wird um %2 mm innerhalb der Fläche verschoben. Loslassen beendet, Esc bricht ab; X, Y oder Z gedrückt halten bewegt entlang dieser Achse.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="141"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="63"/>
         <source>Moving crease %1 by %2 mm along the axis. Release to finish, Esc cancels.</source>
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="587"/>
-        <location filename="../app/gui/drag_tool.cpp" line="601"/>
+        <location filename="../app/gui/drag_tool.cpp" line="486"/>
+        <location filename="../app/gui/drag_tool.cpp" line="500"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

@@ -1755,12 +1755,12 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="98"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="20"/>
         <source>Drag cancelled; the design is as it was.</source>
         <translation>ドラッグを取り消しました。デザインは元のままです。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="94"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="16"/>
         <source>Drag %n vertices</source>
         <translation>
             <numerusform>%n 個の頂点をドラッグ</numerusform>
@@ -1791,33 +1791,33 @@
         <translation>頂点 %1 をシート上で %2 mm ドラッグ中。曲面が追従します。離すと確定、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="129"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="51"/>
         <source>Sliding crease %1 by %2 mm within the surface, as far as it goes: the patch it moves into keeps %3 % of its width. Release to finish, Esc cancels.</source>
         <translation>折り線 %1 を曲面の中で %2 mm 移動中 (これ以上は動きません。移動先のパッチは幅の %3 % を保ちます)。離すと終了、Esc で取り消し。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="151"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="73"/>
         <source>Dragging %n vertices %1 mm along X. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を X 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="154"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="76"/>
         <source>Dragging %n vertices %1 mm along Y. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を Y 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="157"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="79"/>
         <source>Dragging %n vertices %1 mm along Z. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点を Z 方向に %1 mm ドラッグ中。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool.cpp" line="162"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="84"/>
         <source>Dragging %n vertices %1 mm in the view plane. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>
             <numerusform>%n 個の頂点を視平面内で %1 mm ドラッグ中。離すと確定、Esc で取り消し。X、Y、Z を押し続けるとその軸に沿って動きます。</numerusform>
@@ -1829,85 +1829,85 @@
         <translation>展開図の点をドラッグできるのは、曲面がシートを保持しているときだけです (ツール ▸ シートを保持)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="273"/>
+        <location filename="../app/gui/drag_tool.cpp" line="192"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>頂点 %1 は固定されているためドラッグできません。先に固定を解除してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="291"/>
-        <location filename="../app/gui/drag_tool.cpp" line="334"/>
+        <location filename="../app/gui/drag_tool.cpp" line="210"/>
+        <location filename="../app/gui/drag_tool.cpp" line="253"/>
         <location filename="../app/gui/drag_tool_sheet.cpp" line="66"/>
         <source>a drag started</source>
         <translation>ドラッグが始まりました</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="317"/>
+        <location filename="../app/gui/drag_tool.cpp" line="236"/>
         <source>There is no edge %1.</source>
         <translation>辺 %1 はありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="320"/>
+        <location filename="../app/gui/drag_tool.cpp" line="239"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>辺 %1 は折り線 (2 つのパッチの間の曲線) ではありません。ドラッグできるのは折り線だけです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="325"/>
+        <location filename="../app/gui/drag_tool.cpp" line="244"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>辺 %1 は動かせません: 両端が固定されていて、ほかに制御点がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="394"/>
+        <location filename="../app/gui/drag_tool.cpp" line="313"/>
         <source>Snapped to reference curve %1.</source>
         <translation>参照曲線 %1 にスナップしました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="444"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="96"/>
         <source>Pins %1 and %2 hold vertex %3 on the straight line between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1 と %2 が頂点 %3 をその間の直線上に押さえています (2 点の距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="450"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="102"/>
         <source>Pins %1, %2 and %3 hold vertex %4 in the triangle between them (they are as far apart as in the flat sheet): it moves only by stretching the sheet. </source>
         <translation>固定点 %1、%2、%3 が頂点 %4 をその三角形の中に押さえています (距離は平らなシートと同じ)。シートを伸ばさなければ動きません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="109"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="31"/>
         <source>Drag stopped: %1 The design is as it was.</source>
         <translation>ドラッグを中止しました: %1 デザインは元のままです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="92"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="14"/>
         <source>Drag crease %1</source>
         <translation>折り線 %1 をドラッグ</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="102"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="24"/>
         <source>%1: settling, iteration %2 of %3 (Esc cancels).</source>
         <translation>%1: 収束中、反復 %2 / %3 (Esc で取り消し)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="113"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="35"/>
         <source>Drag tool: press on a vertex in the 3D view and move the mouse; the selected vertices of its surface follow. Press on a crease to slide it within its patches. Esc cancels a drag.</source>
         <translation>ドラッグツール: 3D ビューで頂点を押してマウスを動かすと、その曲面の選択した頂点が追従します。折り線を押すと、パッチの中で折り線を滑らせます。Esc でドラッグを取り消します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="119"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="41"/>
         <source>Drag stopped: the design changed during the drag.</source>
         <translation>ドラッグを中止しました: ドラッグ中にデザインが変更されました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="137"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="59"/>
         <source>Sliding crease %1 by %2 mm within the surface. Release to finish, Esc cancels; hold X, Y or Z to move along that axis.</source>
         <translation>折り線 %1 を曲面の中で %2 mm 移動中。離すと終了、Esc で取り消し。X、Y、Z を押したままにするとその軸に沿って動きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="141"/>
+        <location filename="../app/gui/drag_tool_text.cpp" line="63"/>
         <source>Moving crease %1 by %2 mm along the axis. Release to finish, Esc cancels.</source>
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="587"/>
-        <location filename="../app/gui/drag_tool.cpp" line="601"/>
+        <location filename="../app/gui/drag_tool.cpp" line="486"/>
+        <location filename="../app/gui/drag_tool.cpp" line="500"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

@@ -2,6 +2,7 @@
 
 #include "model/pattern/cutting_pattern.h"
 #include "solver/quality/shape_change.h"
+#include "solver/quality/vertex_stars.h"
 
 #include <algorithm>
 #include <exception>
@@ -94,6 +95,24 @@ ReplayedDrag replayDrag(const model::CompositeSurface& start, const std::vector<
     replay.iterations += replay.settling.iterationsCompleted;
     replay.stopped = replay.settling.status == Status::StoppedBeforeDegenerate;
     return replay;
+}
+
+std::unique_ptr<SolveSession> secondSettling(const model::CompositeSurface& press,
+                                             const model::CompositeSurface& last,
+                                             const std::vector<VertexHandle>& handles,
+                                             const std::vector<ControlPointHandle>& points,
+                                             SessionOptions options) {
+    options.holdFadeWhileResidualRises = true;
+    double pressDefect = 0.0;
+    for (const VertexAngleDefect& star : vertexAngleDefects(press)) {
+        pressDefect = std::max(pressDefect, star.defect);
+    }
+    if (pressDefect <= options.formulation.vertexStartDefectLimit) {
+        options.formulation.vertexStartDefectLimit = FormulationOptions{}.vertexStartDefectLimit;
+    }
+    auto session = std::make_unique<SolveSession>(last, handles, points, options);
+    session->settle();
+    return session;
 }
 
 } // namespace devsurf::solver

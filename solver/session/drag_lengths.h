@@ -88,4 +88,17 @@ ReplayedDrag replayStretching(const model::CompositeSurface& start,
                               const std::atomic<bool>* cancel = nullptr,
                               const std::function<void(const IterationStats&)>& perIteration = {});
 
+// A drag keeping lengths whose release ended with problems, to be settled once more (its
+// settle() called; the caller steps it as long as the release): a fresh session from `last`, the
+// drag's state after its last move, pulled to the release's `handles` and `points`, the
+// keep-lengths energy fading only after iterations whose residual did not rise (on a fine model
+// the release can alternate as it fades, docs/tuning.md "Settled again"), and vertex
+// developability imposed at every star where `press` had them all closed (a fresh session
+// imposes it only where it holds at its start). Throws as SolveSession's constructor does.
+std::unique_ptr<SolveSession> secondSettling(const model::CompositeSurface& press,
+                                             const model::CompositeSurface& last,
+                                             const std::vector<VertexHandle>& handles,
+                                             const std::vector<ControlPointHandle>& points,
+                                             SessionOptions options);
+
 } // namespace devsurf::solver

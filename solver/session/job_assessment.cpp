@@ -6,6 +6,7 @@
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
 #include "solver/quality/vertex_stars.h"
+#include "solver/session/verdict.h"
 
 #include <algorithm>
 #include <exception>
@@ -158,6 +159,37 @@ void measureSettled(SurfaceAssessment& assessment, const model::CompositeSurface
         }
         assessment.worstFaces = std::move(faces);
     }
+}
+
+// Whether a drag's release or an Edit must not end so: broken, or, on a surface that holds its
+// sheet, not developable as the verdict judges it (the sheet is a constraint: a result that
+// does not unfold onto it within kDragConvergedResidual cannot be cut from it).
+bool refusable(const SurfaceAssessment& a) {
+    return broken(a) || (a.sheetHeld && notDevelopable(a));
+}
+
+// A drag's press measured as a settled result, for the comparison with the release. Its
+// "residual" is its largest sampled developability residual (normalised, worstDevelopability):
+// the drag's session does not evaluate the press's constraints without its handles.
+SurfaceAssessment assessPress(const model::CompositeSurface& press, const Summary& dragSummary) {
+    const double residual = worstDevelopability(press);
+    SurfaceAssessment assessment;
+    assessment.solved = true;
+    assessment.sheetHeld = press.keepsDevelopment();
+    Summary& summary = assessment.summary;
+    summary.tolerance = dragSummary.tolerance;
+    summary.initialMaxConstraintResidual = residual;
+    summary.finalMaxConstraintResidual = residual;
+    summary.toleranceReached = residual <= dragSummary.tolerance;
+    summary.variables = dragSummary.variables;
+    summary.rows = dragSummary.rows;
+    std::vector<model::FaceId> overlapping;
+    try {
+        overlapping = model::selfOverlappingPatches(press);
+    } catch (const std::exception&) {
+    }
+    measureSettled(assessment, press, nullptr, overlapping);
+    return assessment;
 }
 
 } // namespace devsurf::solver

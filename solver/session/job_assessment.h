@@ -30,4 +30,11 @@ void measureSettled(SurfaceAssessment& assessment, const model::CompositeSurface
                     const model::CompositeSurface* press,
                     const std::optional<std::vector<model::FaceId>>& knownOverlaps);
 
+// Whether a drag's release or an Edit must not end so: broken, or, on a surface that holds its
+// sheet, not developable as the verdict judges it.
+bool refusable(const SurfaceAssessment& a);
+
+// A drag's press measured as a settled result, for the comparison with the release.
+SurfaceAssessment assessPress(const model::CompositeSurface& press, const Summary& dragSummary);
+
 } // namespace devsurf::solver

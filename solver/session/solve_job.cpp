@@ -5,17 +5,11 @@
 #include "solver/session/drag_partway.h"
 #include "solver/session/job_assessment.h"
 
-#include "model/derived_geometry.h"
-#include "model/development.h"
 #include "model/geometry_checks.h"
 #include "model/model_error.h"
-#include "model/pattern/cutting_pattern.h"
 #include "solver/quality/quality_measures.h"
-#include "solver/quality/shape_change.h"
-#include "solver/quality/vertex_stars.h"
 #include "solver/session/drag_lengths.h"
 #include "solver/session/solve_session.h"
-#include "solver/session/verdict.h"
 
 #include <algorithm>
 #include <chrono>
@@ -178,37 +172,6 @@ JobFailure targetFailure(int surface, model::VertexId vertex, model::EdgeId edge
     failure.edge = edge;
     failure.index = index;
     return failure;
-}
-
-// Whether a drag's release or an Edit must not end so: broken, or, on a surface that holds its
-// sheet, not developable as the verdict judges it (the sheet is a constraint: a result that
-// does not unfold onto it within kDragConvergedResidual cannot be cut from it).
-bool refusable(const SurfaceAssessment& a) {
-    return broken(a) || (a.sheetHeld && notDevelopable(a));
-}
-
-// A drag's press measured as a settled result, for the comparison with the release. Its
-// "residual" is its largest sampled developability residual (normalised, worstDevelopability):
-// the drag's session does not evaluate the press's constraints without its handles.
-SurfaceAssessment assessPress(const model::CompositeSurface& press, const Summary& dragSummary) {
-    const double residual = worstDevelopability(press);
-    SurfaceAssessment assessment;
-    assessment.solved = true;
-    assessment.sheetHeld = press.keepsDevelopment();
-    Summary& summary = assessment.summary;
-    summary.tolerance = dragSummary.tolerance;
-    summary.initialMaxConstraintResidual = residual;
-    summary.finalMaxConstraintResidual = residual;
-    summary.toleranceReached = residual <= dragSummary.tolerance;
-    summary.variables = dragSummary.variables;
-    summary.rows = dragSummary.rows;
-    std::vector<model::FaceId> overlapping;
-    try {
-        overlapping = model::selfOverlappingPatches(press);
-    } catch (const std::exception&) {
-    }
-    measureSettled(assessment, press, nullptr, overlapping);
-    return assessment;
 }
 
 } // namespace
@@ -493,23 +456,11 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             try {
                 SessionOptions options = optionsFor(request, key);
                 options.formulation.sheetHandles = sheet;
-                options.holdFadeWhileResidualRises = true;
-                // Vertex developability at every star, as at the press, also where the moves
-                // opened one (a fresh session imposes it only where it holds at its start).
-                double pressDefect = 0.0;
-                for (const VertexAngleDefect& star : vertexAngleDefects(d.built[s])) {
-                    pressDefect = std::max(pressDefect, star.defect);
-                }
-                if (pressDefect <= options.formulation.vertexStartDefectLimit) {
-                    options.formulation.vertexStartDefectLimit =
-                        FormulationOptions{}.vertexStartDefectLimit;
-                }
-                session = std::make_unique<SolveSession>(d.reached[s].back().surface, handles,
-                                                         points, options);
+                session = secondSettling(d.built[s], d.reached[s].back().surface, handles, points,
+                                         options);
             } catch (const std::exception& error) {
                 return fail(cannotSolve(key, error));
             }
-            session->settle();
             total += steps;
             const Summary again = session->step(steps, cancel, perIteration);
             if (again.status == Status::Cancelled) {
