@@ -254,7 +254,7 @@ int runDragCommand(const DragArguments& args) {
         std::cout << "Settled again: the iterations after the release did not converge, so the "
                      "last state of the moves was settled once more, the keep-lengths energy "
                      "fading more slowly (the \"after\" lines past "
-                  << after << ").\n";
+                  << assessment.firstSettlingIterations << ").\n";
     }
     if (assessment.replay) {
         const solver::LengthsReplay& replay = *assessment.replay;

@@ -375,7 +375,11 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
                 d.moves[s].push_back({handles, points});
             }
             if (request.settle) {
-                session->settle();
+                // A vertex drag keeping lengths on a sheet not held gives up a hopeless
+                // settling: the second settling and the partway search follow
+                // (kHopelessSettlingResidual).
+                session->settle(keepsLengths(request) && points.empty() &&
+                                !snapshot.keepsDevelopment());
             }
         }
         bool replaying = false;
@@ -424,7 +428,11 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             continueSummary(summary,
                             session->step(kApproximationFinishIterations, cancel, perIteration));
         }
-        const auto stepTime = std::chrono::steady_clock::now() - stepped;
+        auto stepTime = std::chrono::steady_clock::now() - stepped;
+        if (session->gaveUp() && summary.iterationsCompleted > 0) {
+            // What the whole release would have taken (partwayFits).
+            stepTime = stepTime * steps / summary.iterationsCompleted;
+        }
         if (drag && !request.settle && summary.succeeded() && !d.moves[s].empty() &&
             (d.reached[s].empty() || d.reached[s].back().moves != d.moves[s].size())) {
             keepReached(
@@ -472,6 +480,7 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
                                    again.status == Status::StoppedBeforeDegenerate);
             }
             if (second && second->problems() < judged->problems()) {
+                assessment.firstSettlingIterations = summary.iterationsCompleted;
                 summary = again;
                 judged = second;
                 assessment.settledAgain = true;

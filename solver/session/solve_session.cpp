@@ -361,6 +361,13 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
             total.status = Status::Converged;
             break;
         }
+        if (m_settling && m_giveUpWhenHopeless) {
+            m_hopelessRun = m_residual > kHopelessSettlingResidual ? m_hopelessRun + 1 : 0;
+            if (m_hopelessRun >= kHopelessSettlingIterations) {
+                m_gaveUp = true;
+                break;
+            }
+        }
     }
     total.tolerance = m_options.solver.reportTolerance;
     total.toleranceReached = total.finalMaxConstraintResidual <= total.tolerance;

@@ -80,6 +80,14 @@ constexpr double kDragFactorizationReuseFlops = 1e7;
 // does not depend on it (docs/tuning.md, "Holding the sheet").
 constexpr double kSheetPullWeight = 1.0;
 
+// A drag's settling after its release (settle(true)) whose largest constraint residual stays
+// above kHopelessSettlingResidual for kHopelessSettlingIterations iterations in a row stops there
+// (SolveSession::gaveUp), so that a drag too far reaches its second settling and its partway
+// search sooner. Of the settlings measured on sheets not held, none came back from that to the
+// tolerance (docs/tuning.md, "A hopeless settling stops").
+constexpr double kHopelessSettlingResidual = 1e-2;
+constexpr int kHopelessSettlingIterations = 4;
+
 // An approximation (§4.2) runs its iterations with eqs. (9)–(11) at their weights; from
 // SessionOptions::approximationFadeAfter on, every iteration multiplies those weights by
 // kApproximationFade, so that developability and the other hard conditions converge exactly at
@@ -166,8 +174,12 @@ public:
     ~SolveSession();
 
     // The drag is released: from now on every iteration multiplies the weight of the
-    // keep-lengths energy (if any) by kKeepLengthsFade. Idempotent.
-    void settle() { m_settling = true; }
+    // keep-lengths energy (if any) by kKeepLengthsFade. Idempotent. With `giveUpWhenHopeless`,
+    // step() stops once the settling is hopeless (kHopelessSettlingResidual, gaveUp()).
+    void settle(bool giveUpWhenHopeless = false) {
+        m_settling = true;
+        m_giveUpWhenHopeless = giveUpWhenHopeless;
+    }
 
     // Moves a pulled handle's target (model coordinates); false if the vertex is not pulled
     // or the target is not finite.
@@ -187,6 +199,9 @@ public:
                  const std::function<void(const IterationStats&)>& perIteration = {});
 
     const model::CompositeSurface& surface() const { return m_surface; }
+    // Whether a settling stopped early, its residual above kHopelessSettlingResidual in
+    // kHopelessSettlingIterations iterations in a row.
+    bool gaveUp() const { return m_gaveUp; }
     const SurfaceFormulation& formulation() const { return *m_formulation; }
     // The solver's state (normalised coordinates, see SurfaceFormulation).
     const std::vector<double>& state() const { return m_x; }
@@ -224,6 +239,9 @@ private:
     std::optional<model::Problem> m_refused;
     bool m_dragging = false; // something is pulled
     bool m_settling = false;
+    bool m_giveUpWhenHopeless = false;
+    int m_hopelessRun = 0; // settling iterations in a row above kHopelessSettlingResidual
+    bool m_gaveUp = false;
     bool m_lengthDampingFades = false; // the residual has fallen to kRoughSolveLengthDampingUntil
     double m_residual = std::numeric_limits<double>::infinity();        // at the last iterate
     double m_settledResidual = std::numeric_limits<double>::infinity(); // at the last settling

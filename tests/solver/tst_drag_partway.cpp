@@ -11,6 +11,7 @@
 #include "solver/quality/vertex_stars.h"
 #include "solver/session/drag_partway.h"
 #include "solver/session/solve_job.h"
+#include "solver/session/solve_session.h"
 #include "solver/session/verdict.h"
 #include "test_registry.h"
 
@@ -102,6 +103,62 @@ private slots:
               a.largestHandleGap, developability);
         QVERIFY2(developability < 1e-5, qPrintable(QString::number(developability)));
         QVERIFY(solver::foldOvers(s).empty());
+    }
+
+    void aHopelessSettlingStopsEarly_data() {
+        QTest::addColumn<double>("lift");
+        QTest::addColumn<bool>("cornersPinned");
+        QTest::addColumn<bool>("giveUp");
+        QTest::addColumn<bool>("gaveUp");
+        QTest::newRow("impossible, giving up") << 85.0 << true << true << true;
+        QTest::newRow("impossible, not giving up") << 85.0 << true << false << false;
+        QTest::newRow("possible, giving up") << 10.0 << false << true << false;
+    }
+
+    void aHopelessSettlingStopsEarly() {
+        // fig8 with all four corners pinned cannot lift its middle 85 mm keeping lengths: the
+        // corners keep the flat sheet's distances. After such a move, a settling that may give
+        // up stops once its residual has stayed above kHopelessSettlingResidual for
+        // kHopelessSettlingIterations iterations; one that may not runs all its iterations. A
+        // lift the sheet can follow (bottom corners pinned, 10 mm) settles to the tolerance.
+        QFETCH(double, lift);
+        QFETCH(bool, cornersPinned);
+        QFETCH(bool, giveUp);
+        QFETCH(bool, gaveUp);
+        model::CompositeSurface press = model::makeExample("fig8").surfaces.front();
+        for (model::VertexId corner : {0, 3, 12, 15}) {
+            press.setPinned(corner, cornersPinned || corner == 0 || corner == 3);
+        }
+        std::vector<solver::VertexHandle> pulled;
+        for (model::VertexId v : {5, 6, 9, 10}) {
+            pulled.push_back({v, false, press.position(v) + Vec3(0.0, 0.0, lift)});
+        }
+        solver::SolveSession session(press, pulled, {}, solver::keepLengthsSessionOptions());
+        for (int k = 0; k < 5; ++k) { // the moves
+            QVERIFY(session.step(1).succeeded());
+        }
+        constexpr int kIterations = 20;
+        session.settle(giveUp);
+        const solver::Summary settling = session.step(kIterations);
+        QVERIFY(settling.succeeded());
+        QCOMPARE(session.gaveUp(), gaveUp);
+        if (gaveUp) {
+            // Stopped early, after kHopelessSettlingIterations in a row above the residual.
+            const int n = settling.iterationsCompleted;
+            QVERIFY2(n >= solver::kHopelessSettlingIterations && n < kIterations,
+                     qPrintable(QString::number(n)));
+            for (int k = n - solver::kHopelessSettlingIterations; k < n; ++k) {
+                QVERIFY(settling.iterations[static_cast<std::size_t>(k)].maxConstraintResidual >
+                        solver::kHopelessSettlingResidual);
+            }
+        } else {
+            QCOMPARE(settling.iterationsCompleted, kIterations);
+        }
+        if (!cornersPinned) {
+            QVERIFY2(settling.toleranceReached,
+                     qPrintable(QString::number(settling.finalMaxConstraintResidual)));
+            QVERIFY(sampledDevelopability(session.surface()) < 1e-8);
+        }
     }
 
     void aReleaseThatAlternatesIsSettledAgain() {
