@@ -384,6 +384,7 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
         }
         bool replaying = false;
         auto perIteration = [&](const IterationStats& stats) {
+            ++outcome.iterationsRun;
             if (progress) {
                 ++done;
                 const Problem& problem = session->formulation().problem();
@@ -575,6 +576,7 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
                     partway = followPartway(d.built[s], press, d.reached[s], d.moves[s],
                                             optionsFor(request, key), steps, handles, points,
                                             cancel, search, [&](const IterationStats& stats) {
+                                                ++outcome.iterationsRun;
                                                 if (progress) {
                                                     ++done;
                                                     progress({key, done, std::max(done, total),

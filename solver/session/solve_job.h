@@ -228,6 +228,9 @@ struct JobOutcome {
     std::vector<model::CompositeSurface> surfaces;
     std::vector<SurfaceAssessment> assessments; // per surface
     double elapsedMs = 0.0;
+    // Every iteration the job ran, over all its surfaces: settlings, a second settling, a
+    // replay and a partway search included (the assessments' summaries hold only some of them).
+    int iterationsRun = 0;
     // Join: what was paired and welded; `surfaces` is then the one surface that the surfaces
     // JoinReport::joined became (the others are left as they are), or the request's surfaces
     // unchanged when no two face each other (separations empty).

@@ -84,6 +84,10 @@ private slots:
         QVERIFY(a.takenBack);
         QVERIFY(solver::broken(*a.takenBack));
         QVERIFY2(a.followed > 0.0 && a.followed < 1.0, qPrintable(QString::number(a.followed)));
+        // The job counts every iteration it ran: the settling taken back and the search's.
+        QVERIFY2(turn.iterationsRun >= static_cast<int>(a.takenBack->summary.iterations.size() +
+                                                        a.summary.iterations.size()),
+                 qPrintable(QString::number(turn.iterationsRun)));
         QVERIFY(!solver::broken(a));
         const model::CompositeSurface& s = turn.surfaces.front();
         // Turned part of the way, measured from the geometry: each middle vertex moved from

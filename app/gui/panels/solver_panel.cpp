@@ -143,11 +143,15 @@ void SolverPanel::display(const SolveReport& report) {
     for (const solver::Summary& summary : report.summaries) {
         iterations += static_cast<int>(summary.iterations.size());
     }
+    // The table lists the iterations of the result (or of the release taken back); the count
+    // says how many ran, a second settling and a partway search included.
+    const int listed = iterations;
+    iterations = std::max(iterations, report.outcome.iterationsRun);
     const QLocale locale;
     m_status->setText(tr("<b>%1</b>: %2<br>%n iteration(s) in %3 ms.", nullptr, iterations)
                           .arg(report.title.toHtmlEscaped(), report.status.toHtmlEscaped(),
                                locale.toString(report.elapsedMs, 'f', 1)));
-    m_table->setRowCount(iterations);
+    m_table->setRowCount(listed);
     int row = 0;
     for (std::size_t s = 0; s < report.summaries.size(); ++s) {
         for (const solver::IterationStats& stats : report.summaries[s].iterations) {
