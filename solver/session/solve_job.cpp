@@ -4,6 +4,7 @@
 #include "solver/session/approximation_recipe.h"
 #include "solver/session/drag_partway.h"
 #include "solver/session/job_assessment.h"
+#include "solver/session/job_options.h"
 
 #include "model/geometry_checks.h"
 #include "model/model_error.h"
@@ -92,57 +93,6 @@ bool sameTargets(const DragMove& move, const std::vector<VertexHandle>& handles,
         }
     }
     return true;
-}
-
-bool keepsLengths(const JobRequest& request) {
-    return (request.kind == JobKind::VertexDrag || request.kind == JobKind::Rotate) &&
-           request.lengths != DragLengths::Stretch;
-}
-
-template <typename Map> typename Map::mapped_type entryOf(const Map& map, int key) {
-    const auto it = map.find(key);
-    return it == map.end() ? typename Map::mapped_type{} : it->second;
-}
-
-// The weight of the unit length of the control normals in an approximation (see optionsFor).
-constexpr double kApproximationUnitNormalWeight = 1.0;
-
-SessionOptions optionsFor(const JobRequest& request, int surface, bool damped = false) {
-    SessionOptions options;
-    if (keepsLengths(request)) {
-        options = keepLengthsSessionOptions();
-    } else if (request.kind == JobKind::CreaseDrag) {
-        options = creaseDragSessionOptions();
-    }
-    if (request.kind == JobKind::Approximate) {
-        options.formulation.approximation = entryOf(request.targets, surface);
-        // No fairness of points or normals: the pull shapes the strips, and fairness held them
-        // flat against it (developability residual 2e-3, docs/tuning.md). The control normals
-        // are held near unit length instead (an energy that fades with the residual and with
-        // the pull, SurfaceFormulation::scaleApproximationWeights): without it the normal
-        // spline shrank towards zero beyond the target, where (4) then held without making
-        // the strip developable (sampled det 3e-3 at solver residual 2e-9).
-        options.formulation.fairnessWeight = 0.0;
-        options.formulation.normalFairnessWeight = 0.0;
-        options.formulation.unitControlNormalWeight = kApproximationUnitNormalWeight;
-        if (damped) {
-            ApproximationWeights& w = options.formulation.approximationWeights;
-            w.position *= kDampedApproximationWeightScale;
-            w.tangency *= kDampedApproximationWeightScale;
-            w.normalDistance *= kDampedApproximationWeightScale;
-            options.approximationDamping = kDampedApproximationEps2;
-        }
-    }
-    options.formulation.curvePairs = entryOf(request.curvePairs, surface);
-    if (request.kind == JobKind::Solve) {
-        options.stopResidual = kSolveStopResidual;
-        if (const auto it = request.fixed.find(surface); it != request.fixed.end()) {
-            for (model::VertexId v : it->second) {
-                options.formulation.handles.push_back({v, true, {}});
-            }
-        }
-    }
-    return options;
 }
 
 JobFailure failureOf(JobError error, int surface, Status status = Status::IterationLimit,
