@@ -1,5 +1,6 @@
 #include "geometry_checks.h"
 
+#include "bspline_curve.h"
 #include "composite_surface.h"
 
 #include <algorithm>
@@ -23,6 +24,24 @@ bool usableSpline(const EdgeRecord& record) {
            record.controlPoints.size() ==
                static_cast<std::size_t>(record.space.controlPointCount(false)) &&
            record.controlPoints.size() >= 2;
+}
+
+// Whether a stretch of a curve of non-zero length has shrunk to a point: two neighbouring
+// samples of the held sheet's density (kDevelopmentSamplesPerInterval) closer than `tolerance`.
+// A held sheet's boundary can press a sample into the corner vertex after it (docs/tuning.md,
+// "A long move is split").
+bool pinched(const EdgeRecord& record, double tolerance) {
+    const BSplineCurve curve = BSplineCurve::uniform(record.space, record.controlPoints);
+    const int count = kDevelopmentSamplesPerInterval * std::max(1, record.space.intervals);
+    Vec3 previous = curve.evaluate(0.0);
+    for (int i = 1; i <= count; ++i) {
+        const Vec3 next = curve.evaluate(static_cast<double>(i) / count);
+        if (distance(previous, next) <= tolerance) {
+            return true;
+        }
+        previous = next;
+    }
+    return false;
 }
 
 bool allUsable(const std::vector<Vec3>& points) {
@@ -154,6 +173,10 @@ std::vector<Problem> degenerateGeometryProblems(const CompositeSurface& surface)
                 problem.faces = faces();
                 problems.push_back(problem);
                 zeroEdges.insert(std::minmax(record.from, record.to));
+            } else if (pinched(record, tolerance)) {
+                Problem problem = edgeProblem(ProblemCode::CurvePinched, id);
+                problem.faces = faces();
+                problems.push_back(problem);
             }
             continue;
         }

@@ -42,6 +42,7 @@ const char* codeName(ProblemCode code) {
         DEVSURF_CODE(PositionTooFar)
         DEVSURF_CODE(ControlPointTooFar)
         DEVSURF_CODE(CurveZeroLength)
+        DEVSURF_CODE(CurvePinched)
         DEVSURF_CODE(RulingZeroLength)
         DEVSURF_CODE(CoincidentVertices)
         DEVSURF_CODE(ZeroArea)

@@ -49,6 +49,7 @@ enum class ProblemCode {
     PositionTooFar,     // vertex (faces) lies `value` mm from the origin, beyond `limit`
     ControlPointTooFar, // edge (faces) has a control point beyond `limit` mm
     CurveZeroLength,    // edge (faces)
+    CurvePinched,       // edge (faces): a stretch of the curve shrunk to a point, a cusp
     RulingZeroLength,   // edge (faces)
     CoincidentVertices, // face, vertex, otherVertex
     ZeroArea,           // face

@@ -665,136 +665,141 @@
     </message>
     <message>
         <location filename="../app/text/problem_text.cpp" line="181"/>
+        <source>Edge %1 (a curve of %2) is pinched: a stretch of it has shrunk to a point.</source>
+        <translation>Kante %1 (eine Kurve von %2) ist eingeschnürt: ein Stück von ihr ist auf einen Punkt geschrumpft.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="185"/>
         <source>Edge %1 (a ruling of %2) has zero length.</source>
         <translation>Kante %1 (eine Erzeugende von %2) hat die Länge null.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="183"/>
+        <location filename="../app/text/problem_text.cpp" line="187"/>
         <source>Patch %1 has coincident vertices %2 and %3.</source>
         <translation>Flächenstück %1 hat zusammenfallende Ecken %2 und %3.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="188"/>
+        <location filename="../app/text/problem_text.cpp" line="192"/>
         <source>Patch %1 has zero area.</source>
         <translation>Flächenstück %1 hat den Flächeninhalt null.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="190"/>
+        <location filename="../app/text/problem_text.cpp" line="194"/>
         <source>Patch %1 is a %2; only an SRSR strip can be cut by a new crease.</source>
         <translation>Flächenstück %1 ist vom Typ „%2“; nur ein SRSR-Streifen kann durch einen neuen Falz geteilt werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="194"/>
+        <location filename="../app/text/problem_text.cpp" line="198"/>
         <source>The new crease cannot continue across ruling edge %1 into patch %2, a %3; a row of strips can only be cut where its rulings border SRSR strips, planar patches or the boundary.</source>
         <translation>Der neue Falz kann nicht über die Erzeugende %1 in das Flächenstück %2 (Typ „%3“) weiterlaufen; eine Reihe von Streifen kann nur geteilt werden, wo ihre Erzeugenden an SRSR-Streifen, ebene Flächenstücke oder den Rand grenzen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="201"/>
+        <location filename="../app/text/problem_text.cpp" line="205"/>
         <source>The row of strips through patch %1 closes on itself with its sides swapped, so it cannot be cut at one distance between its curves.</source>
         <translation>Die Reihe von Streifen durch Flächenstück %1 schließt sich mit vertauschten Seiten, daher kann sie nicht in einem Abstand zwischen ihren Kurven geteilt werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="205"/>
+        <location filename="../app/text/problem_text.cpp" line="209"/>
         <source>The new crease must lie strictly between the strip&apos;s two curves (0 &lt; t &lt; 1, not %1).</source>
         <translation>Der neue Falz muss echt zwischen den beiden Kurven des Streifens liegen (0 &lt; t &lt; 1, nicht %1).</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="209"/>
+        <location filename="../app/text/problem_text.cpp" line="213"/>
         <source>No edge was given to relabel.</source>
         <translation>Es wurde keine Kante angegeben, deren Kennzeichnung (R/S) geändert werden soll.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="211"/>
+        <location filename="../app/text/problem_text.cpp" line="215"/>
         <source>Edge %1 is not a spline curve.</source>
         <translation>Kante %1 ist keine Splinekurve.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="213"/>
+        <location filename="../app/text/problem_text.cpp" line="217"/>
         <source>Patch %1 is a %2; a ruling can only be added to a strip or a cone.</source>
         <translation>Flächenstück %1 ist vom Typ „%2“; eine Erzeugende kann nur einem Streifen oder Kegel hinzugefügt werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="217"/>
+        <location filename="../app/text/problem_text.cpp" line="221"/>
         <source>The curves of patch %1 have a single interval; refine them before adding a ruling.</source>
         <translation>Die Kurven von Flächenstück %1 haben nur ein Intervall; verfeinern Sie sie, bevor Sie eine Erzeugende hinzufügen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="221"/>
+        <location filename="../app/text/problem_text.cpp" line="225"/>
         <source>A ruling can only be added at an interior breakpoint i/%1 of the curves of patch %2 (1 ≤ i ≤ %3, not %4); refine the curves for finer positions.</source>
         <translation>Eine Erzeugende kann nur an einem inneren Knoten i/%1 der Kurven von Flächenstück %2 hinzugefügt werden (1 ≤ i ≤ %3, nicht %4); verfeinern Sie die Kurven für feinere Positionen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="228"/>
+        <location filename="../app/text/problem_text.cpp" line="232"/>
         <source>The curves connected to patch %1 meet themselves reversed, so no ruling position is consistent across them.</source>
         <translation>Die mit Flächenstück %1 verbundenen Kurven treffen sich selbst umgekehrt, daher passt keine Position einer Erzeugenden zu allen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="232"/>
+        <location filename="../app/text/problem_text.cpp" line="236"/>
         <source>Curve %1 uses a different spline space from the curves of patch %2.</source>
         <translation>Kurve %1 hat einen anderen Splineraum als die Kurven von Flächenstück %2.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="236"/>
+        <location filename="../app/text/problem_text.cpp" line="240"/>
         <source>Refining needs a factor of at least 2, not %1.</source>
         <translation>Das Verfeinern braucht einen Faktor von mindestens 2, nicht %1.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="238"/>
+        <location filename="../app/text/problem_text.cpp" line="242"/>
         <source>The curves of edge %1 already have %2 intervals; refining them beyond %3 is not supported.</source>
         <translation>Die Kurven von Kante %1 haben schon %2 Intervalle; mehr als %3 werden nicht unterstützt.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="244"/>
+        <location filename="../app/text/problem_text.cpp" line="248"/>
         <source>No vertex was given to move.</source>
         <translation>Es wurde keine Ecke zum Verschieben angegeben.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="246"/>
+        <location filename="../app/text/problem_text.cpp" line="250"/>
         <source>A rotation needs a finite axis point, a non-zero axis direction and a finite angle.</source>
         <translation>Eine Drehung braucht einen endlichen Achsenpunkt, eine Achsenrichtung ungleich null und einen endlichen Winkel.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="253"/>
+        <location filename="../app/text/problem_text.cpp" line="257"/>
         <source>There is no example called “%1”; the examples are %2.</source>
         <translation>Es gibt kein Beispiel namens „%1“; die Beispiele sind %2.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="257"/>
+        <location filename="../app/text/problem_text.cpp" line="261"/>
         <source>The size of the example “%1” must be between %2 and %3, not %4.</source>
         <translation>Die Größe des Beispiels „%1“ muss zwischen %2 und %3 liegen, nicht %4.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="263"/>
+        <location filename="../app/text/problem_text.cpp" line="267"/>
         <source>The number of samples per spline interval must be between 1 and %1, not %2.</source>
         <translation>Die Zahl der Abtastpunkte je Splineintervall muss zwischen 1 und %1 liegen, nicht %2.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="267"/>
+        <location filename="../app/text/problem_text.cpp" line="271"/>
         <source>Patch %1 is not a strip or a cone.</source>
         <translation>Flächenstück %1 ist weder ein Streifen noch ein Kegel.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="269"/>
+        <location filename="../app/text/problem_text.cpp" line="273"/>
         <source>The two shapes do not have the same patches.</source>
         <translation>Die beiden Formen haben nicht dieselben Flächenstücke.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="271"/>
+        <location filename="../app/text/problem_text.cpp" line="275"/>
         <source>Edge %1 has a crease condition but is a boundary curve, not a crease.</source>
         <translation>Kante %1 hat eine Falzbedingung, ist aber eine Randkurve, kein Falz.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="274"/>
+        <location filename="../app/text/problem_text.cpp" line="278"/>
         <source>Edge %1 has a crease condition but a cone or planar patch lies beside it; crease conditions need a strip on either side.</source>
         <translation>Kante %1 hat eine Falzbedingung, aber neben ihr liegt ein Kegel oder ein ebenes Flächenstück; Falzbedingungen brauchen auf beiden Seiten einen Streifen.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="279"/>
+        <location filename="../app/text/problem_text.cpp" line="283"/>
         <source>Edge %1 has a crease condition but its curve is of degree %2; a crease condition needs degree 2 or more.</source>
         <translation>Kante %1 hat eine Falzbedingung, aber ihre Kurve hat den Grad %2; eine Falzbedingung braucht Grad 2 oder mehr.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/text/problem_text.cpp" line="285"/>
+        <location filename="../app/text/problem_text.cpp" line="289"/>
         <source>The surface is not one sheet: it has %n separate part(s).</source>
         <translation>
             <numerusform>Die Fläche ist kein einzelner Bogen: sie hat %n getrennten Teil.</numerusform>
@@ -802,57 +807,57 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="288"/>
+        <location filename="../app/text/problem_text.cpp" line="292"/>
         <source>The surface is not one flat sheet: its unfolding misses closing up by %1 mm.</source>
         <translation>Die Fläche ist kein einzelner ebener Bogen: ihre Abwicklung schließt sich um %1 mm nicht.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="291"/>
+        <location filename="../app/text/problem_text.cpp" line="295"/>
         <source>Edge %1 cannot be welded: a weld joins two boundary edges of the same kind (two curves or two rulings) of two different patches.</source>
         <translation>Kante %1 kann nicht verschweißt werden: eine Verschweißung verbindet zwei Randkanten derselben Art (zwei Kurven oder zwei Erzeugende) zweier verschiedener Flächenstücke.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="295"/>
+        <location filename="../app/text/problem_text.cpp" line="299"/>
         <source>Edges %1 and %2 lie up to %3 mm apart, more than the %4 mm within which they can be welded.</source>
         <translation>Die Kanten %1 und %2 liegen bis zu %3 mm auseinander, mehr als die %4 mm, innerhalb derer sie verschweißt werden können.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="301"/>
+        <location filename="../app/text/problem_text.cpp" line="305"/>
         <source>The strips beside edge %1 cannot be merged: it must be a ruling between two strips whose curves are boundary curves of the same degree and smoothness, and its ends may belong to no other patch.</source>
         <translation>Die Streifen neben Kante %1 können nicht zusammengeführt werden: sie muss eine Erzeugende zwischen zwei Streifen sein, deren Kurven Randkurven desselben Grades und derselben Glattheit sind, und ihre Enden dürfen zu keinem anderen Flächenstück gehören.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="308"/>
+        <location filename="../app/text/problem_text.cpp" line="312"/>
         <source>DevSurf met an internal error (%1). Please report it.</source>
         <translation>DevSurf ist auf einen internen Fehler gestoßen (%1). Bitte melden Sie ihn.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="326"/>
+        <location filename="../app/text/problem_text.cpp" line="330"/>
         <source>The sheet size must be positive; the pieces are laid out side by side.</source>
         <translation>Die Bogengröße muss positiv sein; die Teile werden nebeneinander gelegt.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="328"/>
+        <location filename="../app/text/problem_text.cpp" line="332"/>
         <source>%1 is not valid and has no pattern: %2</source>
         <translation>%1 ist ungültig und hat kein Schnittmuster: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="331"/>
+        <location filename="../app/text/problem_text.cpp" line="335"/>
         <source>%1 could not be developed: %2</source>
         <translation>%1 konnte nicht abgewickelt werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="334"/>
+        <location filename="../app/text/problem_text.cpp" line="338"/>
         <source>Piece %1 (%2) overlaps itself at patches %3 and cannot be cut from one sheet.</source>
         <translation>Teil %1 (%2) überlappt sich selbst bei den Flächenstücken %3 und kann nicht aus einem Bogen geschnitten werden.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="337"/>
+        <location filename="../app/text/problem_text.cpp" line="341"/>
         <source>Pieces %1 (patches %2) and %3 (patches %4) overlap on sheet %5.</source>
         <translation>Die Teile %1 (Flächenstücke %2) und %3 (Flächenstücke %4) überlappen sich auf Bogen %5.</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="342"/>
+        <location filename="../app/text/problem_text.cpp" line="346"/>
         <source>Piece %1 (%2) measures %3 × %4 mm and does not fit on the %5 × %6 mm sheet with a %7 mm gap.</source>
         <translation>Teil %1 (%2) misst %3 × %4 mm und passt mit %7 mm Abstand nicht auf den Bogen von %5 × %6 mm.</translation>
     </message>
@@ -4985,7 +4990,7 @@
         <translation>Kein Lösen des Entwurfs in seinem jetzigen Zustand: Er wurde seit dem letzten Bericht bearbeitet, oder ein Schritt wurde rückgängig gemacht oder wiederhergestellt. Werkzeuge ▸ Lösen (Ctrl+Return) berichtet über ihn.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="147"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="151"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n Iteration in %3 ms.</numerusform>
@@ -4993,12 +4998,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="171"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="175"/>
         <source>&lt;br&gt;Crease conditions, sampled along the creases: largest residual %1.</source>
         <translation>&lt;br&gt;Falzbedingungen, entlang der Falze abgetastet: größtes Residuum %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="178"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="182"/>
         <source>&lt;br&gt;Least developable patches (normalised residual): %1</source>
         <translation>&lt;br&gt;Am wenigsten abwickelbare Flächenstücke (normiertes Residuum): %1</translation>
     </message>

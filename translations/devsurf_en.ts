@@ -61,7 +61,7 @@
 <context>
     <name>ProblemText</name>
     <message numerus="yes">
-        <location filename="../app/text/problem_text.cpp" line="285"/>
+        <location filename="../app/text/problem_text.cpp" line="289"/>
         <source>The surface is not one sheet: it has %n separate part(s).</source>
         <translation>
             <numerusform>The surface is not one sheet: it has %n separate part.</numerusform>
@@ -570,7 +570,7 @@
 <context>
     <name>devsurf::app::SolverPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="147"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="151"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration in %3 ms.</numerusform>

@@ -659,193 +659,198 @@
     </message>
     <message>
         <location filename="../app/text/problem_text.cpp" line="181"/>
+        <source>Edge %1 (a curve of %2) is pinched: a stretch of it has shrunk to a point.</source>
+        <translation>辺 %1（%2 の曲線）がくびれています。その一部が 1 点に縮んでいます。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/problem_text.cpp" line="185"/>
         <source>Edge %1 (a ruling of %2) has zero length.</source>
         <translation>辺 %1（%2 の母線）の長さがゼロです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="183"/>
+        <location filename="../app/text/problem_text.cpp" line="187"/>
         <source>Patch %1 has coincident vertices %2 and %3.</source>
         <translation>パッチ %1 の頂点 %2 と %3 が一致しています。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="188"/>
+        <location filename="../app/text/problem_text.cpp" line="192"/>
         <source>Patch %1 has zero area.</source>
         <translation>パッチ %1 の面積がゼロです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="190"/>
+        <location filename="../app/text/problem_text.cpp" line="194"/>
         <source>Patch %1 is a %2; only an SRSR strip can be cut by a new crease.</source>
         <translation>パッチ %1 は%2です。新しい折り線で分割できるのは SRSR ストリップだけです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="194"/>
+        <location filename="../app/text/problem_text.cpp" line="198"/>
         <source>The new crease cannot continue across ruling edge %1 into patch %2, a %3; a row of strips can only be cut where its rulings border SRSR strips, planar patches or the boundary.</source>
         <translation>新しい折り線は母線の辺 %1 を越えてパッチ %2（%3）へ続けられません。ストリップの列を分割できるのは、その母線が SRSR ストリップ、平面パッチまたは境界に接する場所だけです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="201"/>
+        <location filename="../app/text/problem_text.cpp" line="205"/>
         <source>The row of strips through patch %1 closes on itself with its sides swapped, so it cannot be cut at one distance between its curves.</source>
         <translation>パッチ %1 を通るストリップの列は左右が入れ替わって閉じているため、曲線間の一定の位置で分割できません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="205"/>
+        <location filename="../app/text/problem_text.cpp" line="209"/>
         <source>The new crease must lie strictly between the strip&apos;s two curves (0 &lt; t &lt; 1, not %1).</source>
         <translation>新しい折り線はストリップの 2 本の曲線の間になければなりません（0 &lt; t &lt; 1、%1 ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="209"/>
+        <location filename="../app/text/problem_text.cpp" line="213"/>
         <source>No edge was given to relabel.</source>
         <translation>ラベルを変更する辺が指定されていません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="211"/>
+        <location filename="../app/text/problem_text.cpp" line="215"/>
         <source>Edge %1 is not a spline curve.</source>
         <translation>辺 %1 はスプライン曲線ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="213"/>
+        <location filename="../app/text/problem_text.cpp" line="217"/>
         <source>Patch %1 is a %2; a ruling can only be added to a strip or a cone.</source>
         <translation>パッチ %1 は%2です。母線を追加できるのはストリップか錐面だけです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="217"/>
+        <location filename="../app/text/problem_text.cpp" line="221"/>
         <source>The curves of patch %1 have a single interval; refine them before adding a ruling.</source>
         <translation>パッチ %1 の曲線は区間が 1 つだけです。母線を追加する前に細分してください。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="221"/>
+        <location filename="../app/text/problem_text.cpp" line="225"/>
         <source>A ruling can only be added at an interior breakpoint i/%1 of the curves of patch %2 (1 ≤ i ≤ %3, not %4); refine the curves for finer positions.</source>
         <translation>母線を追加できるのはパッチ %2 の曲線の内部の区切り点 i/%1 だけです（1 ≤ i ≤ %3、%4 ではなく）。細かい位置には曲線を細分してください。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="228"/>
+        <location filename="../app/text/problem_text.cpp" line="232"/>
         <source>The curves connected to patch %1 meet themselves reversed, so no ruling position is consistent across them.</source>
         <translation>パッチ %1 につながる曲線は逆向きに自分自身と出会うため、すべてに合う母線の位置がありません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="232"/>
+        <location filename="../app/text/problem_text.cpp" line="236"/>
         <source>Curve %1 uses a different spline space from the curves of patch %2.</source>
         <translation>曲線 %1 のスプライン空間はパッチ %2 の曲線と異なります。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="236"/>
+        <location filename="../app/text/problem_text.cpp" line="240"/>
         <source>Refining needs a factor of at least 2, not %1.</source>
         <translation>細分には 2 以上の倍率が必要です（%1 ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="238"/>
+        <location filename="../app/text/problem_text.cpp" line="242"/>
         <source>The curves of edge %1 already have %2 intervals; refining them beyond %3 is not supported.</source>
         <translation>辺 %1 の曲線はすでに区間数 %2 です。%3 を超える細分には対応していません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="244"/>
+        <location filename="../app/text/problem_text.cpp" line="248"/>
         <source>No vertex was given to move.</source>
         <translation>移動する頂点が指定されていません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="246"/>
+        <location filename="../app/text/problem_text.cpp" line="250"/>
         <source>A rotation needs a finite axis point, a non-zero axis direction and a finite angle.</source>
         <translation>回転には有限の軸上の点、ゼロでない軸方向、有限の角度が必要です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="253"/>
+        <location filename="../app/text/problem_text.cpp" line="257"/>
         <source>There is no example called “%1”; the examples are %2.</source>
         <translation>「%1」という例はありません。例は %2 です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="257"/>
+        <location filename="../app/text/problem_text.cpp" line="261"/>
         <source>The size of the example “%1” must be between %2 and %3, not %4.</source>
         <translation>例「%1」のサイズは %2 から %3 の間でなければなりません（%4 ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="263"/>
+        <location filename="../app/text/problem_text.cpp" line="267"/>
         <source>The number of samples per spline interval must be between 1 and %1, not %2.</source>
         <translation>スプライン区間あたりのサンプル数は 1 から %1 の間でなければなりません（%2 ではなく）。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="267"/>
+        <location filename="../app/text/problem_text.cpp" line="271"/>
         <source>Patch %1 is not a strip or a cone.</source>
         <translation>パッチ %1 はストリップでも錐面でもありません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="269"/>
+        <location filename="../app/text/problem_text.cpp" line="273"/>
         <source>The two shapes do not have the same patches.</source>
         <translation>2 つの形状のパッチが一致しません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="271"/>
+        <location filename="../app/text/problem_text.cpp" line="275"/>
         <source>Edge %1 has a crease condition but is a boundary curve, not a crease.</source>
         <translation>辺 %1 には折り線の条件がありますが、折り線ではなく境界曲線です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="274"/>
+        <location filename="../app/text/problem_text.cpp" line="278"/>
         <source>Edge %1 has a crease condition but a cone or planar patch lies beside it; crease conditions need a strip on either side.</source>
         <translation>辺 %1 には折り線の条件がありますが、隣に錐面または平面パッチがあります。折り線の条件には両側にストリップが必要です。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="279"/>
+        <location filename="../app/text/problem_text.cpp" line="283"/>
         <source>Edge %1 has a crease condition but its curve is of degree %2; a crease condition needs degree 2 or more.</source>
         <translation>辺 %1 には折り線の条件がありますが、曲線の次数が %2 です。折り線の条件には次数 2 以上が必要です。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/text/problem_text.cpp" line="285"/>
+        <location filename="../app/text/problem_text.cpp" line="289"/>
         <source>The surface is not one sheet: it has %n separate part(s).</source>
         <translation>
             <numerusform>曲面は 1 枚のシートではありません: %n 個の部分に分かれています。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="288"/>
+        <location filename="../app/text/problem_text.cpp" line="292"/>
         <source>The surface is not one flat sheet: its unfolding misses closing up by %1 mm.</source>
         <translation>曲面は 1 枚の平らなシートではありません: 展開図が %1 mm 閉じません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="291"/>
+        <location filename="../app/text/problem_text.cpp" line="295"/>
         <source>Edge %1 cannot be welded: a weld joins two boundary edges of the same kind (two curves or two rulings) of two different patches.</source>
         <translation>辺 %1 は溶接できません。溶接できるのは、異なる二つのパッチの同じ種類（二本の曲線または二本の母線）の境界辺どうしです。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="295"/>
+        <location filename="../app/text/problem_text.cpp" line="299"/>
         <source>Edges %1 and %2 lie up to %3 mm apart, more than the %4 mm within which they can be welded.</source>
         <translation>辺 %1 と %2 は最大 %3 mm 離れており、溶接できる %4 mm を超えています。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="301"/>
+        <location filename="../app/text/problem_text.cpp" line="305"/>
         <source>The strips beside edge %1 cannot be merged: it must be a ruling between two strips whose curves are boundary curves of the same degree and smoothness, and its ends may belong to no other patch.</source>
         <translation>辺 %1 の両側のストリップは結合できません。辺は、曲線が同じ次数と滑らかさの境界曲線である二つのストリップの間の母線でなければならず、その端点は他のパッチに属してはいけません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="308"/>
+        <location filename="../app/text/problem_text.cpp" line="312"/>
         <source>DevSurf met an internal error (%1). Please report it.</source>
         <translation>DevSurf で内部エラーが発生しました (%1)。報告してください。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="326"/>
+        <location filename="../app/text/problem_text.cpp" line="330"/>
         <source>The sheet size must be positive; the pieces are laid out side by side.</source>
         <translation>シートの大きさは正でなければなりません。ピースは横に並べて配置します。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="328"/>
+        <location filename="../app/text/problem_text.cpp" line="332"/>
         <source>%1 is not valid and has no pattern: %2</source>
         <translation>%1 は無効で型紙がありません: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="331"/>
+        <location filename="../app/text/problem_text.cpp" line="335"/>
         <source>%1 could not be developed: %2</source>
         <translation>%1 を展開できませんでした: %2</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="334"/>
+        <location filename="../app/text/problem_text.cpp" line="338"/>
         <source>Piece %1 (%2) overlaps itself at patches %3 and cannot be cut from one sheet.</source>
         <translation>ピース %1（%2）はパッチ %3 で自分自身と重なっており、1 枚のシートから切り出せません。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="337"/>
+        <location filename="../app/text/problem_text.cpp" line="341"/>
         <source>Pieces %1 (patches %2) and %3 (patches %4) overlap on sheet %5.</source>
         <translation>ピース %1（パッチ %2）と %3（パッチ %4）がシート %5 上で重なっています。</translation>
     </message>
     <message>
-        <location filename="../app/text/problem_text.cpp" line="342"/>
+        <location filename="../app/text/problem_text.cpp" line="346"/>
         <source>Piece %1 (%2) measures %3 × %4 mm and does not fit on the %5 × %6 mm sheet with a %7 mm gap.</source>
         <translation>ピース %1（%2）は %3 × %4 mm で、%7 mm の間隔をとると %5 × %6 mm のシートに収まりません。</translation>
     </message>
@@ -4922,19 +4927,19 @@
         <translation>現在の形状はまだソルブしていません: 前回のレポートの後に編集、元に戻す、またはやり直しがありました。ツール ▸ ソルブ (Ctrl+Return) で現在の形状についてレポートします。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="147"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="151"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n 回反復、%3 ms。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="171"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="175"/>
         <source>&lt;br&gt;Crease conditions, sampled along the creases: largest residual %1.</source>
         <translation>&lt;br&gt;折り線の条件 (折り線に沿ってサンプリング): 最大残差 %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="178"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="182"/>
         <source>&lt;br&gt;Least developable patches (normalised residual): %1</source>
         <translation>&lt;br&gt;可展性の最も低いパッチ (正規化残差): %1</translation>
     </message>

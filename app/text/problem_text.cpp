@@ -177,6 +177,10 @@ QString ProblemText::of(const model::Problem& p) {
             .arg(patches(p.faces), millimetres(p.limit));
     case ProblemCode::CurveZeroLength:
         return tr("Edge %1 (a curve of %2) has zero length.").arg(p.edge).arg(patches(p.faces));
+    case ProblemCode::CurvePinched:
+        return tr("Edge %1 (a curve of %2) is pinched: a stretch of it has shrunk to a point.")
+            .arg(p.edge)
+            .arg(patches(p.faces));
     case ProblemCode::RulingZeroLength:
         return tr("Edge %1 (a ruling of %2) has zero length.").arg(p.edge).arg(patches(p.faces));
     case ProblemCode::CoincidentVertices:

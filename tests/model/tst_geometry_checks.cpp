@@ -111,6 +111,29 @@ private slots:
         QCOMPARE(find(problems, ProblemCode::CurveZeroLength)->faces, std::vector<FaceId>{0});
     }
 
+    void pinchedCurve() {
+        // Curve a stays at its first vertex over its first knot interval (its first four control
+        // points there) and then runs to the second: its length is not zero, but a stretch of
+        // it has shrunk to a point, as a held sheet's boundary pressed into a corner does.
+        CompositeSurface s = strip();
+        const EdgeId a = s.edgeBetween(0, 1);
+        std::vector<Vec3> points = s.edge(a).controlPoints;
+        for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+            points[i] = points.front();
+        }
+        s.setControlPoints(a, points);
+        const auto problems = s.validate();
+        QCOMPARE(count(problems, "CurvePinched edge=" + std::to_string(a)), 1);
+        QCOMPARE(find(problems, ProblemCode::CurvePinched)->faces, std::vector<FaceId>{0});
+        QCOMPARE(count(problems, "ZeroLength"), 0);
+        // A straight curve and one whose control points merely crowd are not pinched.
+        QCOMPARE(count(strip().validate(), "CurvePinched"), 0);
+        points = strip().edge(a).controlPoints;
+        points[1] = points.front() + Vec3(1e-3, 0, 0);
+        s.setControlPoints(a, points);
+        QCOMPARE(count(s.validate(), "CurvePinched"), 0);
+    }
+
     void zeroAreaFace() {
         // Four distinct corners on one line.
         const auto problems =
