@@ -2,6 +2,7 @@
 
 #include "model/geometry_checks.h"
 #include "model/model_error.h"
+#include "solver/formulation/perturbation.h"
 #include "solver/quality/crease_quality.h"
 #include "solver/quality/quality_measures.h"
 
@@ -138,6 +139,7 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
         }
         handles.push_back({handle.vertex, false, handle.target});
         m_pulled.push_back(handle.vertex);
+        m_targets.vertices[handle.vertex] = handle.target;
     }
     for (const ControlPointHandle& handle : pulledControlPoints) {
         if (!handle.target.isFinite()) {
@@ -146,6 +148,7 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
                                         std::to_string(handle.edge) + " is not a finite point.");
         }
         m_options.formulation.controlPointHandles.push_back(handle);
+        m_targets.controlPoints[{handle.edge, handle.index}] = handle.target;
     }
     const std::vector<SheetHandle>& sheetHandles = m_options.formulation.sheetHandles;
     if (!sheetHandles.empty() && !surface.keepsDevelopment()) {
@@ -159,6 +162,22 @@ SolveSession::SolveSession(const model::CompositeSurface& surface,
                                         " in the sheet is not a finite point.");
         }
     }
+    // The first move starts where the pulled points are.
+    m_targetsStepped = m_targets;
+    for (auto& [vertex, from] : m_targetsStepped.vertices) {
+        from = surface.position(vertex);
+    }
+    for (auto& [point, from] : m_targetsStepped.controlPoints) {
+        const auto index = static_cast<std::size_t>(point.second);
+        if (surface.hasEdge(point.first) && point.second >= 0 &&
+            index < surface.edge(point.first).controlPoints.size()) {
+            from = surface.edge(point.first).controlPoints[index];
+        }
+    }
+    // Only a held sheet splits long moves: a sheet not held unfolds a fold-over again in the
+    // iterations after it (`fig13` without its sheet: a sampled angle defect of 0.45 after the
+    // third of 20 moves, 7e-4 after the fourth).
+    m_diameter = surface.keepsDevelopment() ? surfaceDiameter(surface) : 0.0;
     m_dragging = !m_pulled.empty() || !pulledControlPoints.empty() || !sheetHandles.empty();
     if (m_dragging) {
         // See FormulationOptions::weighCreaseNormals: a drag keeps the bilinear crease rows.
@@ -214,7 +233,11 @@ bool SolveSession::setHandleTarget(model::VertexId vertex, const model::Vec3& ta
         std::find(m_pulled.begin(), m_pulled.end(), vertex) == m_pulled.end()) {
         return false;
     }
-    return m_formulation->setHandleTarget(vertex, target);
+    if (!m_formulation->setHandleTarget(vertex, target)) {
+        return false;
+    }
+    m_targets.vertices[vertex] = target;
+    return true;
 }
 
 bool SolveSession::setSheetHandleTarget(model::VertexId vertex, const model::Vec2& target) {
@@ -223,7 +246,39 @@ bool SolveSession::setSheetHandleTarget(model::VertexId vertex, const model::Vec
 }
 
 bool SolveSession::setControlPointTarget(model::EdgeId edge, int index, const model::Vec3& target) {
-    return target.isFinite() && m_formulation->setControlPointTarget(edge, index, target);
+    if (!target.isFinite() || !m_formulation->setControlPointTarget(edge, index, target)) {
+        return false;
+    }
+    m_targets.controlPoints[{edge, index}] = target;
+    return true;
+}
+
+int SolveSession::moveSplits() const {
+    if (!m_dragging || m_settling || !(m_diameter > 0.0)) {
+        return 1;
+    }
+    double jump = 0.0;
+    for (const auto& [vertex, target] : m_targets.vertices) {
+        jump = std::max(jump, distance(target, m_targetsStepped.vertices.at(vertex)));
+    }
+    for (const auto& [point, target] : m_targets.controlPoints) {
+        jump = std::max(jump, distance(target, m_targetsStepped.controlPoints.at(point)));
+    }
+    const double splits = std::ceil(jump / (kMoveStepLimit * m_diameter));
+    return static_cast<int>(std::clamp(splits, 1.0, static_cast<double>(kMoveSplitLimit)));
+}
+
+void SolveSession::aimPartway(int k, int splits) {
+    const double t = static_cast<double>(k) / splits;
+    for (const auto& [vertex, target] : m_targets.vertices) {
+        const model::Vec3& from = m_targetsStepped.vertices.at(vertex);
+        m_formulation->setHandleTarget(vertex, k == splits ? target : from + (target - from) * t);
+    }
+    for (const auto& [point, target] : m_targets.controlPoints) {
+        const model::Vec3& from = m_targetsStepped.controlPoints.at(point);
+        m_formulation->setControlPointTarget(point.first, point.second,
+                                             k == splits ? target : from + (target - from) * t);
+    }
 }
 
 Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
@@ -250,7 +305,12 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
     }
     std::vector<double> before; // the state before the iteration running
     m_refused.reset();
-    for (int i = 0; i < n; ++i) {
+    const int splits = n > 0 ? moveSplits() : 1;
+    const int count = n + splits - 1;
+    for (int i = 0; i < count; ++i) {
+        if (splits > 1 && i < splits) {
+            aimPartway(i + 1, splits);
+        }
         if (cancel && cancel->load()) {
             total.status = Status::Cancelled;
             total.detail = "cancelled";
@@ -368,6 +428,12 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
                 break;
             }
         }
+    }
+    if (splits > 1) {
+        aimPartway(splits, splits); // the move's own targets, also after a break
+    }
+    if (n > 0) {
+        m_targetsStepped = m_targets;
     }
     total.tolerance = m_options.solver.reportTolerance;
     total.toleranceReached = total.finalMaxConstraintResidual <= total.tolerance;

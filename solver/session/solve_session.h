@@ -8,6 +8,7 @@
 #include <atomic>
 #include <functional>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -75,6 +76,14 @@ constexpr int iterationsAfterDrag(bool keepLengths, bool holdsSheet = false) {
 // the iterations after the release factorise every time.
 constexpr int kDragFactorizationReuse = 1;
 constexpr double kDragFactorizationReuseFlops = 1e7;
+
+// A move of a drag on a surface that holds its sheet, whose pulled points jump farther than
+// kMoveStepLimit × the surface's diameter since the last move, is split into as many iterations
+// (at most kMoveSplitLimit), their targets evenly along the jump: one linearised step that long
+// can fold a thin part over, which the held sheet then keeps folded (`fig13` folded with its
+// crease held on a curve in the sheet, docs/tuning.md "A long move is split").
+constexpr double kMoveStepLimit = 0.003;
+constexpr int kMoveSplitLimit = 8;
 
 // The pull of a dragged vertex of a surface that holds its sheet (pulledHandleWeight); the lag
 // does not depend on it (docs/tuning.md, "Holding the sheet").
@@ -191,7 +200,9 @@ public:
     bool setSheetHandleTarget(model::VertexId vertex, const model::Vec2& target);
 
     // Runs n iterations continuing the ε₁ schedule where the last call stopped; writes the
-    // result into surface(). step(1) ten times equals step(10) bit for bit. `cancel` is
+    // result into surface(). step(1) ten times equals step(10) bit for bit. While a drag moves
+    // (before settle()), a long move first runs iterations of its own towards targets along
+    // the way (kMoveStepLimit); Summary::iterationsCompleted counts them too. `cancel` is
     // checked between iterations; `perIteration` is called after each (on this thread, with
     // IterationStats::iteration counted within this call). A failed or cancelled iteration
     // leaves surface() at the last good state.
@@ -242,6 +253,18 @@ private:
     bool m_giveUpWhenHopeless = false;
     int m_hopelessRun = 0; // settling iterations in a row above kHopelessSettlingResidual
     bool m_gaveUp = false;
+    // The pulled points' targets now and at the last step(), for splitting a long move.
+    struct Targets {
+        std::map<model::VertexId, model::Vec3> vertices;
+        std::map<std::pair<model::EdgeId, int>, model::Vec3> controlPoints;
+    };
+    Targets m_targets;
+    Targets m_targetsStepped;
+    double m_diameter = 0.0; // 0: moves are not split
+    // How many iterations the move about to run takes (kMoveStepLimit), and sets the
+    // formulation's targets of the k-th of them (1-based) along the way.
+    int moveSplits() const;
+    void aimPartway(int k, int splits);
     bool m_lengthDampingFades = false; // the residual has fallen to kRoughSolveLengthDampingUntil
     double m_residual = std::numeric_limits<double>::infinity();        // at the last iterate
     double m_settledResidual = std::numeric_limits<double>::infinity(); // at the last settling

@@ -311,6 +311,40 @@ private slots:
         QVERIFY(session.surface() == reference.surface());
     }
 
+    void aLongMoveOfAHeldSheetIsSplit() {
+        // fig13 holds its sheet: a move of its top rim point longer than kMoveStepLimit × its
+        // diameter runs one iteration per such length (at most kMoveSplitLimit), the first move
+        // measured from where the point is; a short move, a settling or a sheet not held run
+        // the iterations asked for.
+        const model::CompositeSurface held = model::makeExample("fig13").surfaces.front();
+        QVERIFY(held.keepsDevelopment());
+        model::VertexId top = model::kInvalidId;
+        for (const auto& [id, p] : held.vertices()) {
+            if (std::abs(p.x) < 1e-9 && std::abs(p.y - 150.0) < 1e-9) {
+                top = id;
+            }
+        }
+        QVERIFY(top != model::kInvalidId);
+        const double limit = kMoveStepLimit * surfaceDiameter(held);
+        const model::Vec3 up(0.0, 0.0, limit);
+        const model::Vec3 from = held.position(top);
+        SolveSession session(held, {{top, false, from + up * 2.5}}, keepLengthsSessionOptions());
+        QCOMPARE(session.step(1).iterationsCompleted, 3);
+        QVERIFY(session.setHandleTarget(top, from + up * 3.0));
+        QCOMPARE(session.step(1).iterationsCompleted, 1);
+        QVERIFY(session.setHandleTarget(top, from + up * 100.0));
+        QCOMPARE(session.step(2).iterationsCompleted, kMoveSplitLimit + 1);
+        QCOMPARE(session.step(1).iterationsCompleted, 1); // the same target
+        QVERIFY(session.setHandleTarget(top, from + up * 50.0));
+        session.settle();
+        QCOMPARE(session.step(1).iterationsCompleted, 1);
+
+        model::CompositeSurface loose = held;
+        loose.setKeepsDevelopment(false);
+        SolveSession free(loose, {{top, false, from + up * 2.5}}, keepLengthsSessionOptions());
+        QCOMPARE(free.step(1).iterationsCompleted, 1);
+    }
+
     void rejectsWhatCannotBeSolved() {
         model::CompositeSurface surface = roughAnnulus();
         const model::VertexId id = surface.vertices().begin()->first;

@@ -1,7 +1,7 @@
 // Creases confined to curves drawn in the sheet (§5, Fig. 12, 13): the curves' geometry, which
-// creases a drawing holds, the rows' Jacobians, and a Solve that moves the creases' development
-// onto their curves, measured from the written-back geometry (model::sampleSurface) and from
-// circles computed here, not from the solver's residuals.
+// creases a drawing holds, the rows' Jacobians, a Solve that moves the creases' development
+// onto their curves and a fold that keeps it there, measured from the written-back geometry
+// (model::sampleSurface) and from curves computed here, not from the solver's residuals.
 
 #include "model/composite_surface.h"
 #include "model/development.h"
@@ -10,8 +10,12 @@
 #include "model/sampled_mesh.h"
 #include "model/sheet_creases.h"
 #include "model/sheet_domain.h"
+#include "sampled_developability.h"
 #include "solver/formulation/surface_formulation.h"
+#include "solver/quality/crease_quality.h"
+#include "solver/quality/shape_change.h"
 #include "solver/session/solve_session.h"
+#include "solver_test_drags.h"
 #include "solver_test_models.h"
 #include "solver_test_problems.h"
 #include "test_registry.h"
@@ -85,6 +89,44 @@ double largestOffCircle(const model::CompositeSurface& s) {
         for (int v : line.vertices) {
             const double at = (s.development()[static_cast<std::size_t>(v)] - d.centre).norm();
             worst = std::max(worst, std::abs(at - r));
+        }
+    }
+    return worst;
+}
+
+// fig13's crease as the example draws it, y = 40 (1 − (x/150)²) in the sheet, plus `wave` mm
+// of sin(πx/150) (1 − (x/150)²), read as a drawn polyline of 0.5 mm chords would be.
+double fig13Crease(double x, double wave) {
+    const double u = x / 150.0;
+    return 40.0 * (1.0 - u * u) + wave * std::sin(model::kPi * u) * (1.0 - u * u);
+}
+
+model::CompositeSurface fig13HoldingItsCreaseOn(double wave) {
+    model::CompositeSurface s = model::makeExample("fig13").surfaces.front();
+    SheetDomain d = s.sheetDomain();
+    SheetDomain::Curve curve;
+    for (int i = 0; i <= 600; ++i) {
+        const double x = -150.0 + 0.5 * i;
+        curve.points.emplace_back(x, fig13Crease(x, wave));
+    }
+    d.creaseCurves = {curve};
+    const model::SampledMesh mesh = model::sampleSurface(s, kSamples);
+    d.creaseCurveOf = model::assignCreasesToCurves(d, s, mesh, s.development());
+    s.setSheetDomain(d);
+    return s;
+}
+
+// The largest distance (mm, along y) of a held crease's development from fig13Crease.
+double largestOffDrawnCrease(const model::CompositeSurface& s, double wave) {
+    const SheetDomain& d = s.sheetDomain();
+    double worst = 0.0;
+    for (const model::SampledMesh::Polyline& line : model::sampleSurface(s, kSamples).splineEdges) {
+        if (d.creaseCurveOf.count(line.edge) == 0) {
+            continue;
+        }
+        for (int v : line.vertices) {
+            const Vec2 p = s.development()[static_cast<std::size_t>(v)] - d.centre;
+            worst = std::max(worst, std::abs(p.y - fig13Crease(p.x, wave)));
         }
     }
     return worst;
@@ -230,45 +272,76 @@ private slots:
         // the crease drawn 5 mm wavier: y + 5 sin(πx/150) (1 − (x/150)²). Solve moves every
         // sample of the six crease segments onto the drawn curve (distance computed here from
         // the formula), the disk staying flat and isometric to its development.
-        model::CompositeSurface s = model::makeExample("fig13").surfaces.front();
+        const model::CompositeSurface s = fig13HoldingItsCreaseOn(5.0);
         QVERIFY(s.keepsDevelopment() && !s.development().empty());
-        auto drawn = [](double x) {
-            const double u = x / 150.0;
-            return 40.0 * (1.0 - u * u) + 5.0 * std::sin(model::kPi * u) * (1.0 - u * u);
-        };
-        SheetDomain d = s.sheetDomain();
-        SheetDomain::Curve curve;
-        for (int i = 0; i <= 600; ++i) {
-            const double x = -150.0 + 0.5 * i;
-            curve.points.emplace_back(x, drawn(x));
-        }
-        d.creaseCurves = {curve};
-        const model::SampledMesh mesh = model::sampleSurface(s, kSamples);
-        d.creaseCurveOf = model::assignCreasesToCurves(d, s, mesh, s.development());
-        QCOMPARE(static_cast<int>(d.creaseCurveOf.size()), 6);
-        s.setSheetDomain(d);
+        QCOMPARE(static_cast<int>(s.sheetDomain().creaseCurveOf.size()), 6);
         solver::SessionOptions solve;
         solve.stopResidual = solver::kSolveStopResidual;
         solver::SolveSession session(s, {}, solve);
         const solver::Summary summary = session.step(solver::kSolveIterations);
         QVERIFY(summary.succeeded() && summary.toleranceReached);
         const model::CompositeSurface& solved = session.surface();
-        double worst = 0.0;
-        for (const model::SampledMesh::Polyline& line :
-             model::sampleSurface(solved, kSamples).splineEdges) {
-            if (d.creaseCurveOf.count(line.edge) == 0) {
-                continue;
-            }
-            for (int v : line.vertices) {
-                const Vec2 p = solved.development()[static_cast<std::size_t>(v)] - d.centre;
-                worst = std::max(worst, std::abs(p.y - drawn(p.x)));
-            }
-        }
+        const double worst = largestOffDrawnCrease(solved, 5.0);
         // Within the drawn polyline's chords (0.5 mm apart: under 1e-4 mm from the formula)
         // and the slope's share of a vertical offset.
         QVERIFY2(worst < 1e-3, qPrintable(QString::number(worst)));
         const double isometry = solver::testing::pairLengthError(solved, solved.development());
         QVERIFY2(isometry < 1e-10, qPrintable(QString::number(isometry)));
+    }
+
+    void foldsWithItsCreaseHeldOnItsCurve_data() {
+        QTest::addColumn<double>("wave");
+        QTest::newRow("its own parabola") << 0.0;
+        QTest::newRow("5 mm wavier") << 5.0;
+    }
+
+    void foldsWithItsCreaseHeldOnItsCurve() {
+        // fig13 with its crease held on a curve drawn in the sheet, the rim point above the
+        // pinned middle pulled 60 mm up and 60 mm over in 20 moves through the solve job (as
+        // `devsurf-cli drag` does; each move then jumps 4.2 mm, split by kMoveStepLimit):
+        // the disk folds along the crease as it does with the crease free (measured 53.6° and
+        // 53.8°; folded over in 4 places before the long moves were split), the crease stays
+        // on its curve and the development on the disk, isometric, measured from the geometry.
+        QFETCH(double, wave);
+        model::CompositeSurface s = fig13HoldingItsCreaseOn(wave);
+        model::VertexId top = model::kInvalidId; // the rim point above the pinned middle
+        for (const auto& [id, p] : s.vertices()) {
+            if (std::abs(p.x) < 1e-9 && std::abs(p.y - 150.0) < 1e-9) {
+                top = id;
+            }
+        }
+        QVERIFY(top != model::kInvalidId);
+        {
+            solver::SessionOptions solve;
+            solve.stopResidual = solver::kSolveStopResidual;
+            solver::SolveSession session(s, {}, solve);
+            QVERIFY(session.step(solver::kSolveIterations).toleranceReached);
+            s = session.surface();
+        }
+        const model::Vec3 target = s.position(top) + model::Vec3(0.0, -60.0, 60.0);
+        const solver::JobOutcome outcome = solver::testing::dragInJob(s, top, target, 20);
+        QVERIFY2(outcome.ok, outcome.failure.detail.c_str());
+        const solver::SurfaceAssessment& a = outcome.assessments.front();
+        QVERIFY(!a.takenBack);
+        const model::CompositeSurface& folded = outcome.surfaces.front();
+        const double developability = test::sampledDevelopability(folded);
+        const solver::CreaseQuality creases = solver::measureCreaseQuality(folded);
+        const double offCurve = largestOffDrawnCrease(folded, wave);
+        const double isometry = solver::testing::pairLengthError(folded, folded.development());
+        const double gap = model::largestDomainGap(
+            folded.sheetDomain(), model::sampleSurface(folded, kSamples), folded.development());
+        qInfo("fold %.1f°, risen %.1f mm, det %.2g, crease residual %.2g, %.2g mm off its curve, "
+              "isometric to %.2g, on the circle to %.2g mm",
+              creases.meanFoldDegrees, folded.position(top).z - s.position(top).z, developability,
+              creases.residualMax, offCurve, isometry, gap);
+        QVERIFY2(creases.meanFoldDegrees > 45.0,
+                 qPrintable(QString::number(creases.meanFoldDegrees)));
+        QVERIFY(folded.position(top).z - s.position(top).z > 30.0);
+        QVERIFY(solver::foldOvers(folded).empty());
+        QVERIFY2(developability < 1e-5, qPrintable(QString::number(developability)));
+        QVERIFY2(offCurve < 1e-3, qPrintable(QString::number(offCurve)));
+        QVERIFY2(isometry < 1e-6, qPrintable(QString::number(isometry)));
+        QVERIFY2(gap < 1e-4, qPrintable(QString::number(gap)));
     }
 };
 
