@@ -57,6 +57,7 @@ bool prefersStretched(const DragOutcome& kept, const DragOutcome& stretched);
 struct DragMove {
     std::vector<VertexHandle> vertices;
     std::vector<ControlPointHandle> controlPoints;
+    std::vector<SheetHandle> sheet; // places in the held sheet (the development view's drag)
 };
 
 // At most this many of a drag's moves are replayed (evenly chosen, the last always): a long drag

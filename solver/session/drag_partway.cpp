@@ -43,11 +43,18 @@ constexpr double kPartwayResidualJump = 10.0;
 // Whether every dragged vertex of `surface` is nearer its target than at the press: a state
 // settled with soft pulls may slide back past the press, which is no part of the drag.
 bool nearerThanAtPress(const model::CompositeSurface& press, const model::CompositeSurface& surface,
-                       const std::vector<VertexHandle>& handles) {
-    return std::all_of(handles.begin(), handles.end(), [&](const VertexHandle& h) {
-        return model::distance(surface.position(h.vertex), h.target) <
-               model::distance(press.position(h.vertex), h.target);
-    });
+                       const DragMove& release) {
+    const bool vertices =
+        std::all_of(release.vertices.begin(), release.vertices.end(), [&](const VertexHandle& h) {
+            return model::distance(surface.position(h.vertex), h.target) <
+                   model::distance(press.position(h.vertex), h.target);
+        });
+    return vertices &&
+           std::all_of(release.sheet.begin(), release.sheet.end(), [&](const SheetHandle& h) {
+               const std::optional<model::Vec2> now = sheetPlace(surface, h.vertex);
+               const std::optional<model::Vec2> before = sheetPlace(press, h.vertex);
+               return now && before && (*now - h.target).norm() < (*before - h.target).norm();
+           });
 }
 
 } // namespace
@@ -82,9 +89,9 @@ int partwayIterationLimit(PartwaySearch search, int after) {
 std::optional<Partway>
 followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atPress,
               const std::vector<Reached>& reached, const std::vector<DragMove>& moves,
-              const SessionOptions& options, int after, const std::vector<VertexHandle>& handles,
-              const std::vector<ControlPointHandle>& points, const std::atomic<bool>* cancel,
-              PartwaySearch search, const std::function<void(const IterationStats&)>& onIteration) {
+              const SessionOptions& options, int after, const DragMove& release,
+              const std::atomic<bool>* cancel, PartwaySearch search,
+              const std::function<void(const IterationStats&)>& onIteration) {
     const auto start = std::chrono::steady_clock::now();
     // Vertex developability where it held at the press, also at stars a state passed through
     // has opened (a fresh session would impose it only where it holds at its start).
@@ -134,12 +141,20 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
         }
         a.solved = true;
         a.summary = settling;
-        measureHandleGaps(a, surface, handles, points);
+        measureHandleGaps(a, surface, release.vertices, release.controlPoints);
+        measureSheetGaps(a, surface, release.sheet);
         a.sheetHeld = surface.keepsDevelopment();
         measureSettled(a, surface, &press, std::nullopt);
         return !broken(a) && a.largestVertexDefect <= defectLimit &&
                worstDevelopability(surface) <= developabilityLimit &&
-               nearerThanAtPress(press, surface, handles);
+               nearerThanAtPress(press, surface, release);
+    };
+    // A state is released with its move's targets: there the dragged points stay.
+    auto sessionAt = [&settleOptions](const model::CompositeSurface& surface,
+                                      const DragMove& move) {
+        SessionOptions probe = settleOptions;
+        probe.formulation.sheetHandles = move.sheet;
+        return std::make_unique<SolveSession>(surface, move.vertices, move.controlPoints, probe);
     };
     const int probes = thorough ? kPartwayProbes : kBriefPartwayProbes;
     const int settleFactor = thorough ? kPartwaySettleFactor : 1;
@@ -154,8 +169,7 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
         std::unique_ptr<SolveSession> session;
         Summary settling;
         try {
-            session = std::make_unique<SolveSession>(state.surface, move.vertices,
-                                                     move.controlPoints, settleOptions);
+            session = sessionAt(state.surface, move);
             session->settle();
             // Stopped where the budget runs out, even within a settling.
             std::atomic<bool> stop{false};
@@ -206,8 +220,7 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
             best->assessment = std::move(a);
         } else {
             try {
-                best->session = std::make_unique<SolveSession>(
-                    settled, bestMove->vertices, bestMove->controlPoints, settleOptions);
+                best->session = sessionAt(settled, *bestMove);
             } catch (const std::exception&) {
                 best.reset();
             }

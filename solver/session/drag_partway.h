@@ -53,14 +53,14 @@ struct Partway {
 // The latest state a drag passed through (a bisection over `reached`, within a budget) that,
 // released there and settled with `options` as the release is (`after` iterations, several
 // times over), does not end broken and is as developable as the press (`atPress`, its
-// assessment): the dragged points then lag behind the release's targets (`handles`,
-// `points`) instead of the whole drag being taken back. Nothing when no state tried ends well.
+// assessment): the dragged points (vertices, control points, places in the held sheet) then
+// lag behind the release's targets (`release`) instead of the whole drag being taken back.
+// Nothing when no state tried ends well.
 std::optional<Partway>
 followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atPress,
               const std::vector<Reached>& reached, const std::vector<DragMove>& moves,
-              const SessionOptions& options, int after, const std::vector<VertexHandle>& handles,
-              const std::vector<ControlPointHandle>& points, const std::atomic<bool>* cancel,
-              PartwaySearch search = PartwaySearch::Thorough,
+              const SessionOptions& options, int after, const DragMove& release,
+              const std::atomic<bool>* cancel, PartwaySearch search = PartwaySearch::Thorough,
               const std::function<void(const IterationStats&)>& onIteration = {});
 
 // The most iterations followPartway runs (for progress): its probes times their settling.

@@ -42,17 +42,27 @@ void measureHandleGaps(SurfaceAssessment& assessment, const model::CompositeSurf
     }
 }
 
-void measureSheetGaps(SurfaceAssessment& assessment, const model::CompositeSurface& surface,
-                      const std::vector<SheetHandle>& sheet) {
+std::optional<model::Vec2> sheetPlace(const model::CompositeSurface& surface,
+                                      model::VertexId vertex) {
+    // The sampled mesh, and so the development, lists the coarse vertices first in id order.
     const std::vector<model::Vec2>& flat = surface.development();
     const auto& vertices = surface.vertices();
+    const auto it = vertices.find(vertex);
+    const auto index = static_cast<std::size_t>(std::distance(vertices.begin(), it));
+    if (it == vertices.end() || index >= flat.size()) {
+        return std::nullopt;
+    }
+    return flat[index];
+}
+
+void measureSheetGaps(SurfaceAssessment& assessment, const model::CompositeSurface& surface,
+                      const std::vector<SheetHandle>& sheet) {
     for (const SheetHandle& handle : sheet) {
-        const auto it = vertices.find(handle.vertex);
-        const auto index = static_cast<std::size_t>(std::distance(vertices.begin(), it));
-        if (it == vertices.end() || index >= flat.size()) {
+        const std::optional<model::Vec2> place = sheetPlace(surface, handle.vertex);
+        if (!place) {
             continue;
         }
-        const double gap = (flat[index] - handle.target).norm();
+        const double gap = (*place - handle.target).norm();
         assessment.handleGaps.push_back({handle.vertex, model::kInvalidId, -1, gap});
         assessment.largestHandleGap = std::max(assessment.largestHandleGap, gap);
     }

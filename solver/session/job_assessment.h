@@ -16,6 +16,10 @@ void measureHandleGaps(SurfaceAssessment& assessment, const model::CompositeSurf
                        const std::vector<VertexHandle>& handles,
                        const std::vector<ControlPointHandle>& points);
 
+// Where `vertex` lies in the surface's kept development (mm); nothing without one.
+std::optional<model::Vec2> sheetPlace(const model::CompositeSurface& surface,
+                                      model::VertexId vertex);
+
 // How far each vertex dragged in the held sheet lies from its target there (mm).
 void measureSheetGaps(SurfaceAssessment& assessment, const model::CompositeSurface& surface,
                       const std::vector<SheetHandle>& sheet);

@@ -72,12 +72,21 @@ std::set<std::pair<model::EdgeId, int>> pointSet(const std::vector<ControlPointH
 }
 
 bool sameTargets(const DragMove& move, const std::vector<VertexHandle>& handles,
-                 const std::vector<ControlPointHandle>& points) {
+                 const std::vector<ControlPointHandle>& points,
+                 const std::vector<SheetHandle>& sheet) {
     auto samePoint = [](const model::Vec3& a, const model::Vec3& b) {
         return a.x == b.x && a.y == b.y && a.z == b.z;
     };
-    if (move.vertices.size() != handles.size() || move.controlPoints.size() != points.size()) {
+    if (move.vertices.size() != handles.size() || move.controlPoints.size() != points.size() ||
+        move.sheet.size() != sheet.size()) {
         return false;
+    }
+    for (std::size_t i = 0; i < sheet.size(); ++i) {
+        if (move.sheet[i].vertex != sheet[i].vertex ||
+            move.sheet[i].target.x != sheet[i].target.x ||
+            move.sheet[i].target.y != sheet[i].target.y) {
+            return false;
+        }
     }
     for (std::size_t i = 0; i < handles.size(); ++i) {
         if (move.vertices[i].vertex != handles[i].vertex ||
@@ -320,9 +329,9 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             // The release at the last move's position is no move of its own: the replay then
             // runs the moves a drag of the same steps runs.
             const bool same =
-                !d.moves[s].empty() && sameTargets(d.moves[s].back(), handles, points);
+                !d.moves[s].empty() && sameTargets(d.moves[s].back(), handles, points, sheet);
             if (!same) {
-                d.moves[s].push_back({handles, points});
+                d.moves[s].push_back({handles, points, sheet});
             }
             if (request.settle) {
                 // A vertex drag keeping lengths on a sheet not held gives up a hopeless
@@ -519,20 +528,21 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
                 auto refused = std::make_shared<const SurfaceAssessment>(std::move(assessment));
                 std::optional<Partway> partway;
                 // A thorough search where it fits its budget (partwayFits), else a brief one.
-                if (sheet.empty() && !d.reached[s].empty()) {
+                if (!d.reached[s].empty()) {
                     const PartwaySearch search =
                         partwayFits(stepTime) ? PartwaySearch::Thorough : PartwaySearch::Brief;
                     total += partwayIterationLimit(search, steps);
-                    partway = followPartway(d.built[s], press, d.reached[s], d.moves[s],
-                                            optionsFor(request, key), steps, handles, points,
-                                            cancel, search, [&](const IterationStats& stats) {
-                                                ++outcome.iterationsRun;
-                                                if (progress) {
-                                                    ++done;
-                                                    progress({key, done, std::max(done, total),
-                                                              false, true, 0, 0, &stats, nullptr});
-                                                }
-                                            });
+                    partway =
+                        followPartway(d.built[s], press, d.reached[s], d.moves[s],
+                                      optionsFor(request, key), steps, {handles, points, sheet},
+                                      cancel, search, [&](const IterationStats& stats) {
+                                          ++outcome.iterationsRun;
+                                          if (progress) {
+                                              ++done;
+                                              progress({key, done, std::max(done, total), false,
+                                                        true, 0, 0, &stats, nullptr});
+                                          }
+                                      });
                 }
                 if (partway) {
                     session = std::move(partway->session);

@@ -32,7 +32,9 @@
 
 using namespace devsurf;
 using model::Vec3;
+using solver::testing::Dragged;
 using solver::testing::dragInJob;
+using solver::testing::dragUp;
 using solver::testing::familyRows;
 using solver::testing::pairLengthError;
 
@@ -57,43 +59,6 @@ double largestCoordinateChange(const model::CompositeSurface& a, const model::Co
         }
     }
     return worst;
-}
-
-// A vertex drag as the solve job runs one (keepLengthsSessionOptions): `pulled` lifted by `lift`
-// in 20 moves of one iteration each, then 20 iterations after the release.
-struct Dragged {
-    model::CompositeSurface surface;
-    solver::Summary summary;
-    double largestGap = 0.0; // of a pulled vertex from its final target
-    double smallestRise = 0.0;
-};
-
-Dragged dragUp(const model::CompositeSurface& start, const std::vector<model::VertexId>& pulled,
-               double lift) {
-    std::vector<solver::VertexHandle> handles;
-    for (model::VertexId v : pulled) {
-        handles.push_back({v, false, start.position(v)});
-    }
-    solver::SolveSession session(start, handles, solver::keepLengthsSessionOptions());
-    Dragged result;
-    for (int k = 1; k <= 20; ++k) {
-        for (model::VertexId v : pulled) {
-            session.setHandleTarget(v, start.position(v) + Vec3(0, 0, lift * k / 20.0));
-        }
-        result.summary = session.step(1);
-    }
-    session.settle();
-    result.summary = session.step(solver::iterationsAfterDrag(true, start.keepsDevelopment()));
-    result.surface = session.surface();
-    result.smallestRise = lift;
-    for (model::VertexId v : pulled) {
-        const Vec3 target = start.position(v) + Vec3(0, 0, lift);
-        result.largestGap =
-            std::max(result.largestGap, model::distance(result.surface.position(v), target));
-        result.smallestRise =
-            std::min(result.smallestRise, result.surface.position(v).z - start.position(v).z);
-    }
-    return result;
 }
 
 // The largest |det(a−b, a′, b′)| / (|a−b| |a′| |b′|) over every strip of the design, sampled
@@ -429,75 +394,6 @@ private slots:
         const Box sheet = boxOf(s.development());
         QVERIFY(std::abs(sheet.high.x - sheet.low.x - 300.0) < 1e-6);
         QVERIFY(std::abs(sheet.high.y - sheet.low.y - 300.0) < 1e-6);
-    }
-
-    void draggingThePlaceInTheSheetMovesTheSurface() {
-        // Two-way editing: the flat `sheet` held on its 300 × 300 mm rectangle, its bottom
-        // corners pinned, lifted 60 mm in the middle first; then a middle vertex's place in
-        // the development dragged 10 mm along the sheet (as the development view does). The
-        // surface follows its sheet: the vertex moves in space, the result is developable,
-        // on the square and isometric to the changed development. (20 mm towards the top edge
-        // crowds the edge's samples into its corner until the curve pinches, and is refused:
-        // docs/tuning.md, "A long move is split".)
-        model::CompositeSurface s = model::makeExample("sheet").surfaces.front();
-        QVERIFY(!model::keepDevelopment(s).has_value());
-        model::SheetDomain square;
-        square.shape = model::SheetShape::Rectangle;
-        square.width = 300.0;
-        square.height = 300.0;
-        s.setSheetDomain(
-            model::placeDomain(square, model::sampleSurface(s, kSamples), s.development()));
-        std::vector<model::VertexId> middle;
-        for (const auto& [id, p] : s.vertices()) {
-            if (std::abs(p.y) < 1e-9 && (std::abs(p.x) < 1e-9 || std::abs(p.x - 300.0) < 1e-9)) {
-                s.setPinned(id, true);
-            }
-            if (std::abs(p.y - 100.0) < 1e-9 || std::abs(p.y - 200.0) < 1e-9) {
-                middle.push_back(id);
-            }
-        }
-        const model::CompositeSurface bent = dragUp(s, middle, 60.0).surface;
-        QVERIFY(bent.validate().empty());
-        const model::VertexId dragged = middle.at(1); // an inner vertex of the lower middle row
-        const auto& vertices = bent.vertices();
-        const auto index =
-            static_cast<std::size_t>(std::distance(vertices.begin(), vertices.find(dragged)));
-        const model::Vec2 from = bent.development().at(index);
-        const model::Vec2 to = from + model::Vec2(0.0, 10.0);
-        solver::SolveJob job;
-        solver::JobOutcome outcome;
-        for (int k = 1; k <= 21; ++k) {
-            solver::JobRequest request;
-            request.kind = solver::JobKind::VertexDrag;
-            request.drag = 11;
-            request.settle = k == 21;
-            request.surfaces = {bent};
-            const double t = std::min(k, 20) / 20.0;
-            request.pulledSheet[0].push_back({dragged, from + (to - from) * t});
-            outcome = job.run(request);
-            QVERIFY2(outcome.ok, outcome.failure.detail.c_str());
-        }
-        const model::CompositeSurface& result = outcome.surfaces.front();
-        const solver::SurfaceAssessment& a = outcome.assessments.front();
-        QVERIFY(a.sheetHeld);
-        QVERIFY2(a.largestHandleGap < 1e-3, qPrintable(QString::number(a.largestHandleGap)));
-        QVERIFY2(model::distance(result.position(dragged), bent.position(dragged)) > 10.0,
-                 qPrintable(QString::number(
-                     model::distance(result.position(dragged), bent.position(dragged)))));
-        QVERIFY(result.validate().empty());
-        QVERIFY(solver::measureQuality(result).developabilityMax < 1e-8);
-        QVERIFY2(pairLengthError(result, result.development()) < kHeldSheet,
-                 qPrintable(QString::number(pairLengthError(result, result.development()))));
-        const double gap = model::largestDomainGap(
-            result.sheetDomain(), model::sampleSurface(result, kSamples), result.development());
-        QVERIFY2(gap < 1e-6, qPrintable(QString::number(gap)));
-        QVERIFY(solver::foldOvers(result).empty());
-        // A surface that holds no sheet has no place in one to drag.
-        solver::JobRequest unheld;
-        unheld.kind = solver::JobKind::VertexDrag;
-        unheld.surfaces = {model::makeExample("sheet").surfaces.front()};
-        unheld.pulledSheet[0].push_back({dragged, to});
-        QVERIFY(!solver::SolveJob().run(unheld).ok);
     }
 
     void fig13FoldsTheDiskOnItsSheet() {

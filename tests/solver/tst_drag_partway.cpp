@@ -268,7 +268,7 @@ private slots:
             session.setHandleTarget(dragged, handles.front().target);
             const solver::Summary summary = session.step(1);
             QVERIFY(summary.succeeded());
-            moves.push_back({handles, {}});
+            moves.push_back({handles, {}, {}});
             solver::keepReached(
                 reached, stride,
                 {moves.size(), session.surface(), summary.finalMaxConstraintResidual});
@@ -282,7 +282,7 @@ private slots:
         atPress.solved = true;
         const std::optional<solver::Partway> partway = solver::followPartway(
             press, atPress, reached, moves, options, solver::kIterationsAfterDragKeepingLengths,
-            handles, {}, nullptr, solver::PartwaySearch::Brief);
+            {handles, {}, {}}, nullptr, solver::PartwaySearch::Brief);
         QVERIFY(partway.has_value());
         const solver::SurfaceAssessment& a = partway->assessment;
         QVERIFY2(a.followed > 0.0 && a.followed < 1.0, qPrintable(QString::number(a.followed)));
