@@ -3,10 +3,15 @@
 // Drags as the Drag tool runs them, through a session or the solve job, for the solver tests.
 
 #include "model/composite_surface.h"
+#include "model/development.h"
+#include "model/examples.h"
+#include "model/sampled_mesh.h"
+#include "model/sheet_domain.h"
 #include "solver/session/solve_job.h"
 #include "solver/session/solve_session.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace devsurf::solver::testing {
@@ -49,10 +54,11 @@ inline Dragged dragUp(const model::CompositeSurface& start,
     return result;
 }
 
-// `vertex` of `start` pulled to `target` in `moves` evenly spaced moves through the solve job,
-// as the Drag tool does, then released there; the first outcome that failed, or the release's.
-inline JobOutcome dragInJob(const model::CompositeSurface& start, model::VertexId vertex,
-                            const model::Vec3& target, int moves) {
+// A drag of `moves` evenly spaced moves through the solve job, as the Drag tool runs one, then
+// released where the last left it: `aim(request, t)` adds the targets t = k / moves of the way.
+// The first outcome that failed, or the release's.
+template <typename Aim>
+JobOutcome dragThroughJob(const model::CompositeSurface& start, int moves, Aim aim) {
     SolveJob job;
     JobOutcome outcome;
     for (int k = 1; k <= moves + 1; ++k) {
@@ -61,15 +67,54 @@ inline JobOutcome dragInJob(const model::CompositeSurface& start, model::VertexI
         request.drag = 1;
         request.settle = k > moves;
         request.surfaces = {start};
-        const double t = std::min(k, moves) / static_cast<double>(moves);
-        request.pulled[0].push_back(
-            {vertex, false, start.position(vertex) + (target - start.position(vertex)) * t});
+        aim(request, std::min(k, moves) / static_cast<double>(moves));
         outcome = job.run(request);
         if (!outcome.ok) {
             break;
         }
     }
     return outcome;
+}
+
+// `vertex` of `start` pulled to `target` in `moves` moves through the solve job.
+inline JobOutcome dragInJob(const model::CompositeSurface& start, model::VertexId vertex,
+                            const model::Vec3& target, int moves) {
+    const model::Vec3 from = start.position(vertex);
+    return dragThroughJob(start, moves, [&](JobRequest& request, double t) {
+        request.pulled[0].push_back({vertex, false, from + (target - from) * t});
+    });
+}
+
+// The flat `sheet` example holding its sheet on a 300 × 300 mm rectangle, its two bottom
+// corners pinned; `middle` its vertices of the two middle rows; `held` false if it could not
+// hold its sheet.
+struct HeldSquare {
+    model::CompositeSurface surface;
+    std::vector<model::VertexId> middle;
+    bool held = false;
+};
+
+inline HeldSquare heldSquare() {
+    HeldSquare square;
+    model::CompositeSurface& s = square.surface;
+    s = model::makeExample("sheet").surfaces.front();
+    square.held = !model::keepDevelopment(s).has_value();
+    model::SheetDomain rectangle;
+    rectangle.shape = model::SheetShape::Rectangle;
+    rectangle.width = 300.0;
+    rectangle.height = 300.0;
+    s.setSheetDomain(model::placeDomain(
+        rectangle, model::sampleSurface(s, model::kDevelopmentSamplesPerInterval),
+        s.development()));
+    for (const auto& [id, p] : s.vertices()) {
+        if (std::abs(p.y) < 1e-9 && (std::abs(p.x) < 1e-9 || std::abs(p.x - 300.0) < 1e-9)) {
+            s.setPinned(id, true);
+        }
+        if (std::abs(p.y - 100.0) < 1e-9 || std::abs(p.y - 200.0) < 1e-9) {
+            square.middle.push_back(id);
+        }
+    }
+    return square;
 }
 
 } // namespace devsurf::solver::testing

@@ -265,21 +265,14 @@ private slots:
         }
         QVERIFY(!model::keepDevelopment(sheet).has_value());
         const std::vector<model::VertexId> middle = innerVertices(sheet);
-        solver::SolveJob job;
-        solver::JobOutcome outcome;
-        for (int k = 1; k <= 21; ++k) {
-            solver::JobRequest request;
-            request.kind = solver::JobKind::VertexDrag;
-            request.drag = 7;
-            request.settle = k == 21;
-            request.surfaces = {sheet};
-            for (model::VertexId v : middle) {
-                const double t = std::min(k, 20) / 20.0;
-                request.pulled[0].push_back({v, false, sheet.position(v) + Vec3(0, 0, 60.0 * t)});
-            }
-            outcome = job.run(request);
-            QVERIFY(outcome.ok);
-        }
+        const solver::JobOutcome outcome =
+            solver::testing::dragThroughJob(sheet, 20, [&](solver::JobRequest& request, double t) {
+                for (model::VertexId v : middle) {
+                    request.pulled[0].push_back(
+                        {v, false, sheet.position(v) + Vec3(0, 0, 60.0 * t)});
+                }
+            });
+        QVERIFY(outcome.ok);
         const solver::SurfaceAssessment& a = outcome.assessments.front();
         QVERIFY(a.sheetHeld);
         QVERIFY(!a.replay.has_value());

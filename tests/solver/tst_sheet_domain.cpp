@@ -12,6 +12,7 @@
 #include "solver/formulation/surface_formulation.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/session/solve_session.h"
+#include "solver_test_drags.h"
 #include "solver_test_models.h"
 #include "solver_test_problems.h"
 #include "test_registry.h"
@@ -245,24 +246,12 @@ private slots:
         // its middle row lifted 60 mm: it bends, the development may change inside the square
         // but its boundary stays on the square's, its corners at the square's, and the surface
         // isometric to it.
-        model::CompositeSurface s = model::makeExample("sheet").surfaces.front();
-        QVERIFY(!model::keepDevelopment(s).has_value());
-        SheetDomain square;
-        square.shape = SheetShape::Rectangle;
-        square.width = 300.0;
-        square.height = 300.0;
+        const solver::testing::HeldSquare square = solver::testing::heldSquare();
+        QVERIFY(square.held);
+        const model::CompositeSurface& s = square.surface;
+        const std::vector<model::VertexId>& middle = square.middle;
         const model::SampledMesh start = model::sampleSurface(s, kDomainSamples);
-        s.setSheetDomain(model::placeDomain(square, start, s.development()));
         QVERIFY(model::largestDomainGap(s.sheetDomain(), start, s.development()) < 1e-9);
-        std::vector<model::VertexId> middle;
-        for (const auto& [id, p] : s.vertices()) {
-            if (std::abs(p.y) < 1e-9 && (std::abs(p.x) < 1e-9 || std::abs(p.x - 300.0) < 1e-9)) {
-                s.setPinned(id, true);
-            }
-            if (std::abs(p.y - 100.0) < 1e-9 || std::abs(p.y - 200.0) < 1e-9) {
-                middle.push_back(id);
-            }
-        }
         QCOMPARE(static_cast<int>(s.pinnedVertices().size()), 2);
         QCOMPARE(static_cast<int>(middle.size()), 8);
         std::vector<solver::VertexHandle> handles;

@@ -28,36 +28,20 @@ namespace {
 
 constexpr int kSheetDragSamples = model::kDevelopmentSamplesPerInterval;
 
-// The flat `sheet` held on its 300 × 300 mm rectangle, its bottom corners pinned, its middle
-// rows lifted 60 mm keeping lengths; `dragged` an inner vertex of the lower middle row.
+// solver::testing::heldSquare with its middle rows lifted 60 mm keeping lengths; `dragged` an
+// inner vertex of the lower middle row.
 struct BentSquare {
     model::CompositeSurface bent;
     model::VertexId dragged = model::kInvalidId;
 };
 
 BentSquare bentSquare() {
-    model::CompositeSurface s = model::makeExample("sheet").surfaces.front();
+    const solver::testing::HeldSquare square = solver::testing::heldSquare();
     BentSquare result;
-    if (model::keepDevelopment(s)) {
-        return result;
+    if (square.held) {
+        result.bent = solver::testing::dragUp(square.surface, square.middle, 60.0).surface;
+        result.dragged = square.middle.at(1);
     }
-    model::SheetDomain square;
-    square.shape = model::SheetShape::Rectangle;
-    square.width = 300.0;
-    square.height = 300.0;
-    s.setSheetDomain(
-        model::placeDomain(square, model::sampleSurface(s, kSheetDragSamples), s.development()));
-    std::vector<model::VertexId> middle;
-    for (const auto& [id, p] : s.vertices()) {
-        if (std::abs(p.y) < 1e-9 && (std::abs(p.x) < 1e-9 || std::abs(p.x - 300.0) < 1e-9)) {
-            s.setPinned(id, true);
-        }
-        if (std::abs(p.y - 100.0) < 1e-9 || std::abs(p.y - 200.0) < 1e-9) {
-            middle.push_back(id);
-        }
-    }
-    result.bent = solver::testing::dragUp(s, middle, 60.0).surface;
-    result.dragged = middle.at(1);
     return result;
 }
 
@@ -65,21 +49,9 @@ BentSquare bentSquare() {
 solver::JobOutcome dragInSheet(const model::CompositeSurface& start, model::VertexId vertex,
                                const Vec2& by) {
     const Vec2 from = *solver::sheetPlace(start, vertex);
-    solver::SolveJob job;
-    solver::JobOutcome outcome;
-    for (int k = 1; k <= 21; ++k) {
-        solver::JobRequest request;
-        request.kind = solver::JobKind::VertexDrag;
-        request.drag = 11;
-        request.settle = k == 21;
-        request.surfaces = {start};
-        request.pulledSheet[0].push_back({vertex, from + by * (std::min(k, 20) / 20.0)});
-        outcome = job.run(request);
-        if (!outcome.ok) {
-            break;
-        }
-    }
-    return outcome;
+    return solver::testing::dragThroughJob(start, 20, [&](solver::JobRequest& request, double t) {
+        request.pulledSheet[0].push_back({vertex, from + by * t});
+    });
 }
 
 // Developable, on the square, isometric to its development and folded over nowhere, measured
