@@ -77,14 +77,16 @@ bool sameTargets(const DragMove& move, const std::vector<VertexHandle>& handles,
     auto samePoint = [](const model::Vec3& a, const model::Vec3& b) {
         return a.x == b.x && a.y == b.y && a.z == b.z;
     };
+    auto samePlace = [](const model::Vec2& a, const model::Vec2& b) {
+        return a.x == b.x && a.y == b.y;
+    };
     if (move.vertices.size() != handles.size() || move.controlPoints.size() != points.size() ||
         move.sheet.size() != sheet.size()) {
         return false;
     }
     for (std::size_t i = 0; i < sheet.size(); ++i) {
         if (move.sheet[i].vertex != sheet[i].vertex ||
-            move.sheet[i].target.x != sheet[i].target.x ||
-            move.sheet[i].target.y != sheet[i].target.y) {
+            !samePlace(move.sheet[i].target, sheet[i].target)) {
             return false;
         }
     }

@@ -85,6 +85,16 @@ inline JobOutcome dragInJob(const model::CompositeSurface& start, model::VertexI
     });
 }
 
+// fig13's top rim point (0, 150, 0), above its pinned crease middle: the vertex its drags pull.
+inline model::VertexId fig13Top(const model::CompositeSurface& fig13) {
+    for (const auto& [id, p] : fig13.vertices()) {
+        if (std::abs(p.x) < 1e-9 && std::abs(p.y - 150.0) < 1e-9) {
+            return id;
+        }
+    }
+    return model::kInvalidId;
+}
+
 // The flat `sheet` example holding its sheet on a 300 × 300 mm rectangle, its two bottom
 // corners pinned; `middle` its vertices of the two middle rows; `held` false if it could not
 // hold its sheet.

@@ -398,12 +398,7 @@ private slots:
         const model::CompositeSurface start = model::makeExample("fig13").surfaces.front();
         QVERIFY(start.keepsDevelopment());
         QCOMPARE(start.sheetDomain().shape, model::SheetShape::Disk);
-        model::VertexId top = model::kInvalidId;
-        for (const auto& [id, p] : start.vertices()) {
-            if (std::abs(p.x) < 1e-9 && std::abs(p.y - 150.0) < 1e-9) {
-                top = id;
-            }
-        }
+        const model::VertexId top = solver::testing::fig13Top(start);
         QVERIFY(top != model::kInvalidId);
         const Vec3 target = start.position(top) + Vec3(0.0, -60.0, 60.0);
         const solver::JobOutcome outcome = dragInJob(start, top, target, 100);

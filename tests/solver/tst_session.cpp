@@ -8,6 +8,7 @@
 #include "solver/session/solve_session.h"
 
 #include "lifted_fig8.h"
+#include "solver_test_drags.h"
 #include "test_registry.h"
 
 #include <QTest>
@@ -318,12 +319,7 @@ private slots:
         // the iterations asked for.
         const model::CompositeSurface held = model::makeExample("fig13").surfaces.front();
         QVERIFY(held.keepsDevelopment());
-        model::VertexId top = model::kInvalidId;
-        for (const auto& [id, p] : held.vertices()) {
-            if (std::abs(p.x) < 1e-9 && std::abs(p.y - 150.0) < 1e-9) {
-                top = id;
-            }
-        }
+        const model::VertexId top = testing::fig13Top(held);
         QVERIFY(top != model::kInvalidId);
         const double limit = kMoveStepLimit * surfaceDiameter(held);
         const model::Vec3 up(0.0, 0.0, limit);

@@ -304,12 +304,7 @@ private slots:
         // on its curve and the development on the disk, isometric, measured from the geometry.
         QFETCH(double, wave);
         model::CompositeSurface s = fig13HoldingItsCreaseOn(wave);
-        model::VertexId top = model::kInvalidId; // the rim point above the pinned middle
-        for (const auto& [id, p] : s.vertices()) {
-            if (std::abs(p.x) < 1e-9 && std::abs(p.y - 150.0) < 1e-9) {
-                top = id;
-            }
-        }
+        const model::VertexId top = solver::testing::fig13Top(s);
         QVERIFY(top != model::kInvalidId);
         {
             solver::SessionOptions solve;
