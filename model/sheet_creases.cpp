@@ -1,10 +1,14 @@
 #include "sheet_creases.h"
 
 #include "composite_surface.h"
+#include "development.h"
 #include "sampled_mesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <optional>
 #include <set>
 
 namespace devsurf::model {
@@ -19,6 +23,60 @@ Vec2 placed(const SheetDomain& domain, const Vec2& p) {
 
 double distanceTo(const DomainLoop& loop, const Vec2& p) {
     return (footPoint(loop, p).point - p).norm();
+}
+
+// p ↦ R(angle) · mirror(p) + shift, mirror(x, y) = (−x, y) when mirrored.
+struct Motion {
+    bool mirrored = false;
+    double angle = 0.0;
+    Vec2 shift;
+    Vec2 apply(const Vec2& p) const {
+        const Vec2 q(mirrored ? -p.x : p.x, p.y);
+        const double c = std::cos(angle);
+        const double s = std::sin(angle);
+        return Vec2(c * q.x - s * q.y, s * q.x + c * q.y) + shift;
+    }
+};
+
+// The rigid motion (a mirror allowed) that maps `from` onto `to` with the least squared
+// distances (2D Procrustes); both lists equally long and not empty.
+Motion bestMotion(const std::vector<Vec2>& from, const std::vector<Vec2>& to) {
+    Motion best;
+    double bestError = std::numeric_limits<double>::infinity();
+    for (bool mirrored : {false, true}) {
+        Motion m;
+        m.mirrored = mirrored;
+        Vec2 a;
+        Vec2 b;
+        for (std::size_t i = 0; i < from.size(); ++i) {
+            a = a + Vec2(mirrored ? -from[i].x : from[i].x, from[i].y);
+            b = b + to[i];
+        }
+        a = a * (1.0 / static_cast<double>(from.size()));
+        b = b * (1.0 / static_cast<double>(from.size()));
+        double sine = 0.0;
+        double cosine = 0.0;
+        for (std::size_t i = 0; i < from.size(); ++i) {
+            const Vec2 p = Vec2(mirrored ? -from[i].x : from[i].x, from[i].y) - a;
+            const Vec2 q = to[i] - b;
+            sine += p.x * q.y - p.y * q.x;
+            cosine += p.x * q.x + p.y * q.y;
+        }
+        m.angle = std::atan2(sine, cosine);
+        const double cs = std::cos(m.angle);
+        const double sn = std::sin(m.angle);
+        m.shift = b - Vec2(cs * a.x - sn * a.y, sn * a.x + cs * a.y); // a is mirrored already
+        double error = 0.0;
+        for (std::size_t i = 0; i < from.size(); ++i) {
+            const Vec2 d = m.apply(from[i]) - to[i];
+            error += dot2(d, d);
+        }
+        if (error < bestError) {
+            bestError = error;
+            best = m;
+        }
+    }
+    return best;
 }
 
 } // namespace
@@ -128,6 +186,105 @@ double largestCreaseCurveGap(const SheetDomain& domain, const SampledMesh& mesh,
         }
     }
     return gap;
+}
+
+std::vector<SheetDomain::Curve> creaseCurvesAsTheyLie(const CompositeSurface& surface,
+                                                      const std::vector<Vec2>& development) {
+    if (!surface.validate().empty()) {
+        return {};
+    }
+    const SampledMesh fine = sampleSurface(surface, kCreaseCurveSamples);
+    const std::size_t coarse = fine.coarseVertexIds.size();
+    if (development.size() < coarse || coarse < 2) {
+        return {};
+    }
+    const Development unfolded = unfoldSampledMesh(fine);
+    if (unfolded.components != 1 || unfolded.period) {
+        return {};
+    }
+    const Motion onto = bestMotion(
+        std::vector<Vec2>(unfolded.vertices.begin(),
+                          unfolded.vertices.begin() + static_cast<long>(coarse)),
+        std::vector<Vec2>(development.begin(), development.begin() + static_cast<long>(coarse)));
+    // The creases, and at every coarse vertex the creases that meet there.
+    std::vector<const SampledMesh::Polyline*> creases;
+    std::map<int, std::vector<std::size_t>> meeting; // mesh vertex -> indices into creases
+    for (const SampledMesh::Polyline& line : fine.splineEdges) {
+        if (surface.facesOfEdge(line.edge).size() == 2 && line.vertices.size() >= 2) {
+            meeting[line.vertices.front()].push_back(creases.size());
+            meeting[line.vertices.back()].push_back(creases.size());
+            creases.push_back(&line);
+        }
+    }
+    // The crease continuing `k` through vertex `v`, if exactly two meet there.
+    auto across = [&](std::size_t k, int v) -> std::optional<std::size_t> {
+        const std::vector<std::size_t>& here = meeting[v];
+        if (here.size() != 2 || here[0] == here[1]) {
+            return std::nullopt;
+        }
+        return here[0] == k ? here[1] : here[0];
+    };
+    auto ends = [&](std::size_t k) {
+        return std::pair(creases[k]->vertices.front(), creases[k]->vertices.back());
+    };
+    std::vector<bool> used(creases.size(), false);
+    std::vector<SheetDomain::Curve> curves;
+    for (std::size_t first = 0; first < creases.size(); ++first) {
+        if (used[first]) {
+            continue;
+        }
+        // Back up to where the chain starts (or all the way round a closed one).
+        std::size_t k = first;
+        int start = ends(first).first;
+        for (std::size_t guard = 0; guard < creases.size(); ++guard) {
+            const auto previous = across(k, start);
+            if (!previous || *previous == first) {
+                break;
+            }
+            k = *previous;
+            start = ends(k).first == start ? ends(k).second : ends(k).first;
+        }
+        // Walk forwards from there, each crease's samples in the direction of travel.
+        std::vector<int> chain{start};
+        int at = start;
+        while (!used[k]) {
+            used[k] = true;
+            std::vector<int> samples = creases[k]->vertices;
+            if (samples.front() != at) {
+                std::reverse(samples.begin(), samples.end());
+            }
+            chain.insert(chain.end(), samples.begin() + 1, samples.end());
+            at = samples.back();
+            const auto next = across(k, at);
+            if (!next) {
+                break;
+            }
+            k = *next;
+        }
+        SheetDomain::Curve curve;
+        curve.closed = chain.size() > 3 && chain.back() == chain.front();
+        if (curve.closed) {
+            chain.pop_back();
+        }
+        for (int v : chain) {
+            curve.points.push_back(onto.apply(unfolded.vertices[static_cast<std::size_t>(v)]));
+        }
+        curves.push_back(std::move(curve));
+    }
+    return curves;
+}
+
+std::vector<SheetDomain::Curve> sheetFrameCurves(const SheetDomain& domain,
+                                                 std::vector<SheetDomain::Curve> curves) {
+    const double c = std::cos(-domain.angle);
+    const double s = std::sin(-domain.angle);
+    for (SheetDomain::Curve& curve : curves) {
+        for (Vec2& p : curve.points) {
+            const Vec2 d = p - domain.centre;
+            p = Vec2(c * d.x - s * d.y, s * d.x + c * d.y);
+        }
+    }
+    return curves;
 }
 
 std::vector<SheetDomain::Curve> sheetCurvesFromAbove(const std::vector<ReferenceCurve>& curves,

@@ -48,6 +48,23 @@ std::map<EdgeId, int> assignCreasesToCurves(const SheetDomain& domain,
 double largestCreaseCurveGap(const SheetDomain& domain, const SampledMesh& mesh,
                              const std::vector<Vec2>& development);
 
+// The creases of `surface` (its S-edges between two faces) as they lie in `development` now
+// (the development of sampleSurface(surface, kDevelopmentSamplesPerInterval)), as curves in the
+// development's plane: drawn in a sheet (sheetFrameCurves), they keep the crease pattern while
+// the rulings move in the sheet. Creases that continue one another through a vertex where no
+// third crease meets form one curve, closed where they close up. Each is traced at
+// kCreaseCurveSamples points per spline interval on a fresh unfolding laid onto `development`
+// (the rigid motion that best maps its coarse vertices there). Empty for a surface without
+// creases or one that does not unfold into one flat sheet.
+inline constexpr int kCreaseCurveSamples = 32;
+std::vector<SheetDomain::Curve> creaseCurvesAsTheyLie(const CompositeSurface& surface,
+                                                      const std::vector<Vec2>& development);
+
+// Curves in the development's plane moved into the own frame of `domain` (placed), where
+// SheetDomain::creaseCurves are kept.
+std::vector<SheetDomain::Curve> sheetFrameCurves(const SheetDomain& domain,
+                                                 std::vector<SheetDomain::Curve> curves);
+
 // Every curve of two points or more among `curves` seen from above (z dropped): closed when
 // it ends where it starts (within 1e-6 of its length; the repeated point dropped), otherwise
 // open. Moved by `shift` (into the sheet's frame).

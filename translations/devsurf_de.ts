@@ -4184,137 +4184,160 @@
         <translation>Keine</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="57"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="55"/>
+        <source>As They Lie</source>
+        <translation>Wie sie liegen</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="58"/>
         <source>Sheet Shape</source>
         <translation>Bogenform</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="60"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="61"/>
         <source>Free: the development as it is</source>
         <translation>Frei: die Abwicklung, wie sie ist</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="62"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="63"/>
         <source>Rectangle</source>
         <translation>Rechteck</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="63"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="64"/>
         <source>Disk</source>
         <translation>Kreisscheibe</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="64"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="65"/>
         <source>Annulus</source>
         <translation>Kreisring</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="65"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="66"/>
         <source>Outline of a drawing</source>
         <translation>Umriss einer Zeichnung</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="76"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="77"/>
         <source>The closed curves of a DXF, SVG, STEP or IGES file, seen from above: the largest is the sheet&apos;s boundary, the others its holes.</source>
         <translation>Die geschlossenen Kurven einer DXF-, SVG-, STEP- oder IGES-Datei, von oben gesehen: die größte ist der Rand des Bogens, die anderen seine Löcher.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="94"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="95"/>
         <source>The sheet the surface is folded from. Every solve and drag keeps the surface isometric to its development; with a shape, the development may change inside it, its boundary on the shape&apos;s and its corners at the shape&apos;s corners.</source>
         <translation>Der Bogen, aus dem die Fläche gefaltet wird. Jedes Lösen und Ziehen hält die Fläche isometrisch zu ihrer Abwicklung; mit einer Form darf sich die Abwicklung innerhalb der Form ändern, ihr Rand liegt auf dem Rand der Form und ihre Ecken auf deren Ecken.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="101"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="102"/>
         <source>Shape:</source>
         <translation>Form:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="102"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="103"/>
         <source>Width:</source>
         <translation>Breite:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="103"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="104"/>
         <source>Height:</source>
         <translation>Höhe:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="104"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="105"/>
         <source>Radius:</source>
         <translation>Radius:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="105"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="106"/>
         <source>Inner radius:</source>
         <translation>Innenradius:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="109"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="110"/>
         <source>Outline:</source>
         <translation>Umriss:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="121"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="122"/>
         <source>Curves drawn in the sheet for the creases to follow: every curve of a DXF, SVG, STEP or IGES file, seen from above, in the sheet&apos;s frame (a rectangle from its corner at 0,0; circles centred at 0,0; an outline in its own drawing&apos;s coordinates). A crease lying near a curve keeps its development on it.</source>
         <translation>In den Bogen gezeichnete Kurven, denen die Falze folgen: jede Kurve einer DXF-, SVG-, STEP- oder IGES-Datei, von oben gesehen, im Rahmen des Bogens (ein Rechteck ab seiner Ecke bei 0,0; Kreise um 0,0; ein Umriss in den Koordinaten seiner eigenen Zeichnung). Ein Falz nahe einer Kurve hält seine Abwicklung auf ihr.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="126"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="127"/>
         <source>No curves: the creases move freely inside the sheet.</source>
         <translation>Keine Kurven: Die Falze bewegen sich frei im Bogen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="131"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="130"/>
+        <source>Hold every crease on the curve it lies on in the sheet now: the crease pattern stays as it is while the rulings move in the sheet, so the design folds along its own creases.</source>
+        <translation>Jeden Falz auf der Kurve halten, auf der er jetzt im Bogen liegt: Das Falzmuster bleibt, wie es ist, während sich die Erzeugenden im Bogen bewegen, so faltet sich der Entwurf entlang seiner eigenen Falze.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="138"/>
         <source>Crease curves:</source>
         <translation>Falzkurven:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="142"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="149"/>
         <source>Sheet Outline</source>
         <translation>Umriss des Bogens</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="143"/>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="153"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="150"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="160"/>
         <source>Drawings (*.dxf *.svg *.step *.stp *.iges *.igs)</source>
         <translation>Zeichnungen (*.dxf *.svg *.step *.stp *.iges *.igs)</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="152"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="159"/>
         <source>Crease Curves</source>
         <translation>Falzkurven</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="217"/>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="271"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="174"/>
+        <source>The surface has no crease to hold.</source>
+        <translation>Die Fläche hat keinen Falz, der gehalten werden könnte.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="238"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="296"/>
         <source>%1 cannot be read as a drawing: choose a DXF, SVG, STEP or IGES file.</source>
         <translation>%1 kann nicht als Zeichnung gelesen werden: wählen Sie eine DXF-, SVG-, STEP- oder IGES-Datei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="220"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="241"/>
         <source>%1 holds no closed curve enclosing an area to be the sheet&apos;s outline.</source>
         <translation>%1 enthält keine geschlossene Kurve, die eine Fläche umschließt und den Umriss des Bogens bilden könnte.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="225"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="246"/>
         <source>%1: %n closed curve(s)</source>
         <translation>
             <numerusform>%1: %n geschlossene Kurve</numerusform>
             <numerusform>%1: %n geschlossene Kurven</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="328"/>
+        <source>the creases as they lie: %n curve(s)</source>
+        <translation>
+            <numerusform>die Falze, wie sie liegen: %n Kurve</numerusform>
+            <numerusform>die Falze, wie sie liegen: %n Kurven</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="307"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="338"/>
         <source>%1; no crease lies near them (within half its length, no other crease nearer), so they are not used</source>
         <translation>%1; kein Falz liegt nahe bei ihnen (innerhalb seiner halben Länge, ohne näheren anderen Falz), daher werden sie nicht verwendet</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="72"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="73"/>
         <source>none chosen</source>
         <translation>keiner gewählt</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="73"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="74"/>
         <source>%n closed curve(s)</source>
         <translation>
             <numerusform>%n geschlossene Kurve</numerusform>
@@ -4322,17 +4345,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="273"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="298"/>
         <source>%1 holds no curve for the creases to follow.</source>
         <translation>%1 enthält keine Kurve, der die Falze folgen könnten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="295"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="322"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="298"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="325"/>
         <source>%n curve(s)</source>
         <translation>
             <numerusform>%n Kurve</numerusform>
@@ -4340,17 +4363,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="299"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="330"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="301"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="332"/>
         <source>%1, used with a shape only</source>
         <translation>%1, nur mit einer Form verwendet</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="314"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="345"/>
         <source>%1, holding %n crease(s)</source>
         <translation>
             <numerusform>%1, hält %n Falz</numerusform>
@@ -4358,37 +4381,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="335"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="366"/>
         <source>The development covers %1 cm² and is held as it is.</source>
         <translation>Die Abwicklung bedeckt %1 cm² und wird gehalten, wie sie ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="342"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="373"/>
         <source>Choose a drawing whose closed curves are the sheet&apos;s outline.</source>
         <translation>Wählen Sie eine Zeichnung, deren geschlossene Kurven den Umriss des Bogens bilden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="351"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="382"/>
         <source>The outline has no closed curve enclosing an area.</source>
         <translation>Der Umriss hat keine geschlossene Kurve, die eine Fläche umschließt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="352"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="383"/>
         <source>The inner radius must be smaller than the radius.</source>
         <translation>Der Innenradius muss kleiner als der Radius sein.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="363"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="394"/>
         <source>The development (%1 cm²) is larger than this sheet (%2 cm²): no solve can fold the design from it.</source>
         <translation>Die Abwicklung (%1 cm²) ist größer als dieser Bogen (%2 cm²): kein Lösen kann die Form daraus falten.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="372"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="403"/>
         <source>The development (%1 cm²) fits this sheet (%2 cm²): its boundary lies on the sheet&apos;s.</source>
         <translation>Die Abwicklung (%1 cm²) passt auf diesen Bogen (%2 cm²): ihr Rand liegt auf dem des Bogens.</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="376"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="407"/>
         <source>The development covers %1 cm² of this sheet&apos;s %2 cm²; its boundary is up to %3 mm from the sheet&apos;s, and the next Solve moves it onto the sheet.</source>
         <translation>Die Abwicklung bedeckt %1 cm² der %2 cm² dieses Bogens; ihr Rand liegt bis zu %3 mm vom Rand des Bogens entfernt, und das nächste Lösen legt ihn auf den Bogen.</translation>
     </message>

@@ -459,7 +459,7 @@
 <context>
     <name>devsurf::app::SheetShapeDialog</name>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="225"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="246"/>
         <source>%1: %n closed curve(s)</source>
         <translation>
             <numerusform>%1: %n closed curve</numerusform>
@@ -467,7 +467,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="298"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="325"/>
         <source>%n curve(s)</source>
         <translation>
             <numerusform>%n curve</numerusform>
@@ -475,7 +475,15 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="314"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="328"/>
+        <source>the creases as they lie: %n curve(s)</source>
+        <translation>
+            <numerusform>the creases as they lie: %n curve</numerusform>
+            <numerusform>the creases as they lie: %n curves</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="345"/>
         <source>%1, holding %n crease(s)</source>
         <translation>
             <numerusform>%1, holding %n crease</numerusform>
@@ -483,7 +491,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="73"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="74"/>
         <source>%n closed curve(s)</source>
         <translation>
             <numerusform>%n closed curve</numerusform>

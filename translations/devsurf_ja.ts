@@ -4134,207 +4134,229 @@
         <translation>なし</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="57"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="55"/>
+        <source>As They Lie</source>
+        <translation>現在の位置で</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="58"/>
         <source>Sheet Shape</source>
         <translation>シートの形</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="60"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="61"/>
         <source>Free: the development as it is</source>
         <translation>自由: 展開図をそのまま</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="62"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="63"/>
         <source>Rectangle</source>
         <translation>長方形</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="63"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="64"/>
         <source>Disk</source>
         <translation>円板</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="64"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="65"/>
         <source>Annulus</source>
         <translation>円環</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="65"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="66"/>
         <source>Outline of a drawing</source>
         <translation>図面の輪郭</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="76"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="77"/>
         <source>The closed curves of a DXF, SVG, STEP or IGES file, seen from above: the largest is the sheet&apos;s boundary, the others its holes.</source>
         <translation>DXF、SVG、STEP または IGES ファイルの閉じた曲線を上から見たもの: 最大のものがシートの境界、ほかは穴です。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="94"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="95"/>
         <source>The sheet the surface is folded from. Every solve and drag keeps the surface isometric to its development; with a shape, the development may change inside it, its boundary on the shape&apos;s and its corners at the shape&apos;s corners.</source>
         <translation>曲面を折り出すシートです。ソルブとドラッグは常に曲面を展開図と等長に保ちます。形を指定すると、展開図はその内側で変わることができ、境界は形の境界上に、角は形の角に置かれます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="101"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="102"/>
         <source>Shape:</source>
         <translation>形:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="102"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="103"/>
         <source>Width:</source>
         <translation>幅:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="103"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="104"/>
         <source>Height:</source>
         <translation>高さ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="104"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="105"/>
         <source>Radius:</source>
         <translation>半径:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="105"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="106"/>
         <source>Inner radius:</source>
         <translation>内径:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="109"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="110"/>
         <source>Outline:</source>
         <translation>輪郭:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="121"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="122"/>
         <source>Curves drawn in the sheet for the creases to follow: every curve of a DXF, SVG, STEP or IGES file, seen from above, in the sheet&apos;s frame (a rectangle from its corner at 0,0; circles centred at 0,0; an outline in its own drawing&apos;s coordinates). A crease lying near a curve keeps its development on it.</source>
         <translation>折り線が従うようシートに描いたカーブ: DXF・SVG・STEP・IGES ファイルのすべてのカーブを上から見て、シートの座標系で使います (長方形は角が 0,0、円は中心が 0,0、輪郭はその図面自身の座標)。カーブの近くにある折り線は展開図上でそのカーブに乗ったままになります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="126"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="127"/>
         <source>No curves: the creases move freely inside the sheet.</source>
         <translation>カーブなし: 折り線はシートの中で自由に動きます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="131"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="130"/>
+        <source>Hold every crease on the curve it lies on in the sheet now: the crease pattern stays as it is while the rulings move in the sheet, so the design folds along its own creases.</source>
+        <translation>各折り線を、いまシート上で載っている曲線の上に保持します: 母線がシート内で動いても折り線のパターンはそのままなので、デザインは自身の折り線に沿って折れます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="138"/>
         <source>Crease curves:</source>
         <translation>折り線カーブ:</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="142"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="149"/>
         <source>Sheet Outline</source>
         <translation>シートの輪郭</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="143"/>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="153"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="150"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="160"/>
         <source>Drawings (*.dxf *.svg *.step *.stp *.iges *.igs)</source>
         <translation>図面 (*.dxf *.svg *.step *.stp *.iges *.igs)</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="152"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="159"/>
         <source>Crease Curves</source>
         <translation>折り線カーブ</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="217"/>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="271"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="174"/>
+        <source>The surface has no crease to hold.</source>
+        <translation>このサーフェスには保持できる折り線がありません。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="238"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="296"/>
         <source>%1 cannot be read as a drawing: choose a DXF, SVG, STEP or IGES file.</source>
         <translation>%1 を図面として読み込めません: DXF、SVG、STEP または IGES ファイルを選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="220"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="241"/>
         <source>%1 holds no closed curve enclosing an area to be the sheet&apos;s outline.</source>
         <translation>%1 にはシートの輪郭となる、面積を囲む閉じた曲線がありません。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="225"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="246"/>
         <source>%1: %n closed curve(s)</source>
         <translation>
             <numerusform>%1: 閉じた曲線 %n 本</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="328"/>
+        <source>the creases as they lie: %n curve(s)</source>
+        <translation>
+            <numerusform>現在の位置の折り線: 曲線 %n 本</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="307"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="338"/>
         <source>%1; no crease lies near them (within half its length, no other crease nearer), so they are not used</source>
         <translation>%1。近く (長さの半分以内で、より近い折り線が他にない) にある折り線がないため使用しません</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="72"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="73"/>
         <source>none chosen</source>
         <translation>未選択</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="73"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="74"/>
         <source>%n closed curve(s)</source>
         <translation>
             <numerusform>閉じた曲線 %n 本</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="273"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="298"/>
         <source>%1 holds no curve for the creases to follow.</source>
         <translation>%1 には折り線が従うカーブがありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="295"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="322"/>
         <source>none</source>
         <translation>なし</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="298"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="325"/>
         <source>%n curve(s)</source>
         <translation>
             <numerusform>%n 本のカーブ</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="299"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="330"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="301"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="332"/>
         <source>%1, used with a shape only</source>
         <translation>%1 (形を選んだときのみ使用)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="314"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="345"/>
         <source>%1, holding %n crease(s)</source>
         <translation>
             <numerusform>%1、%n 本の折り線を保持</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="335"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="366"/>
         <source>The development covers %1 cm² and is held as it is.</source>
         <translation>展開図の面積は %1 cm² で、そのまま保持されます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="342"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="373"/>
         <source>Choose a drawing whose closed curves are the sheet&apos;s outline.</source>
         <translation>閉じた曲線がシートの輪郭となる図面を選んでください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="351"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="382"/>
         <source>The outline has no closed curve enclosing an area.</source>
         <translation>輪郭に面積を囲む閉じた曲線がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="352"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="383"/>
         <source>The inner radius must be smaller than the radius.</source>
         <translation>内径は半径より小さくなければなりません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="363"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="394"/>
         <source>The development (%1 cm²) is larger than this sheet (%2 cm²): no solve can fold the design from it.</source>
         <translation>展開図 (%1 cm²) がこのシート (%2 cm²) より大きいため、どのソルブでもこのシートから折ることはできません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="372"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="403"/>
         <source>The development (%1 cm²) fits this sheet (%2 cm²): its boundary lies on the sheet&apos;s.</source>
         <translation>展開図 (%1 cm²) はこのシート (%2 cm²) に合っています: 境界はシートの境界上にあります。</translation>
     </message>
     <message>
-        <location filename="../app/gui/sheet_shape_dialog.cpp" line="376"/>
+        <location filename="../app/gui/sheet_shape_dialog.cpp" line="407"/>
         <source>The development covers %1 cm² of this sheet&apos;s %2 cm²; its boundary is up to %3 mm from the sheet&apos;s, and the next Solve moves it onto the sheet.</source>
         <translation>展開図はこのシートの %2 cm² のうち %1 cm² を占めます。境界はシートの境界から最大 %3 mm 離れており、次のソルブでシート上に移ります。</translation>
     </message>

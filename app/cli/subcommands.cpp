@@ -48,8 +48,8 @@ const std::vector<SubcommandSpec>& subcommands() {
           kOutputProject}},
         {"sheet",
          "sheet FILE (--free | --rectangle W,H | --disk R | --annulus R1,R2 |\n"
-         "      --outline FILE.dxf|FILE.svg | --off) [--creases FILE.dxf|FILE.svg]\n"
-         "      [--surface K] -o OUT.devsurf",
+         "      --outline FILE.dxf|FILE.svg | --off)\n"
+         "      [--creases FILE.dxf|FILE.svg | --keep-creases] [--surface K] -o OUT.devsurf",
          "Hold the sheet: the surface keeps its development, and every solve\n"
          "and drag keeps it isometric to that sheet (a dragged vertex lags\n"
          "where the sheet cannot follow, instead of the sheet stretching).\n"
@@ -69,7 +69,9 @@ const std::vector<SubcommandSpec>& subcommands() {
          "average within half the crease's length, no other crease nearer\n"
          "it), every sample of\n"
          "such a crease on the curve's tangent line; the next solve moves them\n"
-         "onto their curves.",
+         "onto their curves. --keep-creases draws them where they lie in the\n"
+         "development now: the crease pattern stays as it is while the rulings\n"
+         "move in the sheet (so a flat design folds along its own creases).",
          {{"free", "", "Hold the sheet as it unfolds, its boundary free."},
           {"rectangle", "W,H", "Confine it to a W x H rectangle."},
           {"disk", "R", "Confine it to a disk of radius R."},
@@ -77,6 +79,7 @@ const std::vector<SubcommandSpec>& subcommands() {
           {"outline", "FILE", "Confine it to the closed curves of a DXF, SVG, STEP or IGES file."},
           {"off", "", "No longer hold the sheet."},
           {"creases", "FILE", "Confine creases to the curves of a DXF, SVG, STEP or IGES file."},
+          {"keep-creases", "", "Confine every crease to the curve it lies on in the sheet now."},
           kSurface,
           kOutputProject}},
         {"crease",

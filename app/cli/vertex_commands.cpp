@@ -326,11 +326,27 @@ int runSheetCommand(const SubcommandArguments& args) {
     }
     model::SheetDomain domain = model::placeDomain(*requested, mesh, surface.development());
     std::size_t creases = 0;
-    if (args.isSet("creases")) {
+    if (args.isSet("creases") && args.isSet("keep-creases")) {
+        throw UsageError{"give --creases FILE or --keep-creases, not both"};
+    }
+    if (args.isSet("creases") || args.isSet("keep-creases")) {
         if (domain.isFree() || domain.shape == model::SheetShape::Cylinder) {
-            throw UsageError{"--creases needs a sheet of a shape: --rectangle, --disk, --annulus "
-                             "or --outline"};
+            throw UsageError{std::string(args.isSet("creases") ? "--creases" : "--keep-creases") +
+                             " needs a sheet of a shape: --rectangle, --disk, --annulus or "
+                             "--outline"};
         }
+    }
+    if (args.isSet("keep-creases")) {
+        domain.creaseCurves = model::sheetFrameCurves(
+            domain, model::creaseCurvesAsTheyLie(surface, surface.development()));
+        domain.creaseCurveOf =
+            model::assignCreasesToCurves(domain, surface, mesh, surface.development());
+        creases = domain.creaseCurveOf.size();
+        if (creases == 0) {
+            throw InputError("'" + surface.name() + "' has no crease to keep");
+        }
+    }
+    if (args.isSet("creases")) {
         // A rectangle is drawn from its corner at 0,0; the sheet's frame has its centre there.
         const model::Vec2 shift = domain.shape == model::SheetShape::Rectangle
                                       ? model::Vec2(-0.5 * domain.width, -0.5 * domain.height)

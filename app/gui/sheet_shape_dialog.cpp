@@ -51,7 +51,8 @@ SheetShapeDialog::SheetShapeDialog(const model::CompositeSurface& surface,
       m_innerRadius(sizeBox(this, QStringLiteral("sheetInnerRadius"))), m_fit(new QLabel(this)),
       m_outlineName(new QLabel(this)), m_chooseOutline(new QPushButton(tr("Choose…"), this)),
       m_creasesName(new QLabel(this)), m_chooseCreases(new QPushButton(tr("Choose…"), this)),
-      m_clearCreases(new QPushButton(tr("None"), this)) {
+      m_clearCreases(new QPushButton(tr("None"), this)),
+      m_keepCreases(new QPushButton(tr("As They Lie"), this)) {
     const model::SheetDomain& current = surface.sheetDomain();
     setObjectName(QStringLiteral("sheetShapeDialog"));
     setWindowTitle(tr("Sheet Shape"));
@@ -124,9 +125,15 @@ SheetShapeDialog::SheetShapeDialog(const model::CompositeSurface& surface,
            "coordinates). A crease lying near a curve keeps its development on it."));
     m_clearCreases->setObjectName(QStringLiteral("sheetCreasesClear"));
     m_clearCreases->setToolTip(tr("No curves: the creases move freely inside the sheet."));
+    m_keepCreases->setObjectName(QStringLiteral("sheetCreasesAsTheyLie"));
+    m_keepCreases->setToolTip(
+        tr("Hold every crease on the curve it lies on in the sheet now: the crease pattern stays "
+           "as it is while the rulings move in the sheet, so the design folds along its own "
+           "creases."));
     auto* creasesRow = new QHBoxLayout;
     creasesRow->addWidget(m_creasesName, 1);
     creasesRow->addWidget(m_chooseCreases);
+    creasesRow->addWidget(m_keepCreases);
     creasesRow->addWidget(m_clearCreases);
     form->addRow(tr("Crease curves:"), creasesRow);
     m_fit->setObjectName(QStringLiteral("sheetFit"));
@@ -155,7 +162,21 @@ SheetShapeDialog::SheetShapeDialog(const model::CompositeSurface& surface,
             loadCreaseCurves(path);
         }
     });
+    connect(m_keepCreases, &QPushButton::clicked, this, [this] {
+        if (m_lyingCreases.empty()) {
+            QApplication::setOverrideCursor(Qt::WaitCursor);
+            m_lyingCreases = model::creaseCurvesAsTheyLie(m_surface, m_development);
+            QApplication::restoreOverrideCursor();
+        }
+        m_creaseDrawing.clear();
+        m_creaseFile.clear();
+        m_creasesProblem =
+            m_lyingCreases.empty() ? tr("The surface has no crease to hold.") : QString();
+        m_creasesAsTheyLie = !m_lyingCreases.empty();
+        updateCreases();
+    });
     connect(m_clearCreases, &QPushButton::clicked, this, [this] {
+        m_creasesAsTheyLie = false;
         m_creaseDrawing.clear();
         m_creaseFile.clear();
         m_creasesProblem.clear();
@@ -238,8 +259,12 @@ model::SheetDomain SheetShapeDialog::domain() const {
 }
 
 model::SheetDomain SheetShapeDialog::withCreases(model::SheetDomain placed) const {
-    if (placed.isFree() || placed.shape == model::SheetShape::Cylinder || m_creaseDrawing.empty()) {
+    if (placed.isFree() || placed.shape == model::SheetShape::Cylinder ||
+        (m_creaseDrawing.empty() && !m_creasesAsTheyLie)) {
         return placed;
+    }
+    if (m_creasesAsTheyLie) {
+        placed.creaseCurves = model::sheetFrameCurves(placed, m_lyingCreases);
     }
     const model::Vec2 origin = drawingOrigin(placed);
     for (model::SheetDomain::Curve curve : m_creaseDrawing) {
@@ -275,6 +300,7 @@ bool SheetShapeDialog::loadCreaseCurves(const QString& path) {
         m_creasesProblem.clear();
         m_creaseDrawing = std::move(curves);
         m_creaseFile = name;
+        m_creasesAsTheyLie = false;
     }
     updateCreases();
     return m_creasesProblem.isEmpty();
@@ -284,19 +310,24 @@ void SheetShapeDialog::updateCreases() {
     const auto shape = static_cast<model::SheetShape>(m_shape->currentData().toInt());
     const bool shaped = shape != model::SheetShape::Free && shape != model::SheetShape::Cylinder;
     m_chooseCreases->setEnabled(shaped);
-    m_clearCreases->setEnabled(shaped && !m_creaseDrawing.empty());
+    m_keepCreases->setEnabled(shaped);
+    m_clearCreases->setEnabled(shaped && (!m_creaseDrawing.empty() || m_creasesAsTheyLie));
     if (!m_creasesProblem.isEmpty()) {
         m_creasesName->setText(m_creasesProblem);
         m_creasesName->setStyleSheet(QStringLiteral("color: #b00020;"));
         return;
     }
     m_creasesName->setStyleSheet(QString());
-    if (m_creaseDrawing.empty()) {
+    if (m_creaseDrawing.empty() && !m_creasesAsTheyLie) {
         m_creasesName->setText(tr("none"));
         return;
     }
     const QString curves = tr("%n curve(s)", nullptr, static_cast<int>(m_creaseDrawing.size()));
-    const QString drawn = m_creaseFile.isEmpty() ? curves : tr("%1: %2").arg(m_creaseFile, curves);
+    const QString drawn =
+        m_creasesAsTheyLie
+            ? tr("the creases as they lie: %n curve(s)", nullptr,
+                 static_cast<int>(m_lyingCreases.size()))
+            : (m_creaseFile.isEmpty() ? curves : tr("%1: %2").arg(m_creaseFile, curves));
     if (!shaped) {
         m_creasesName->setText(tr("%1, used with a shape only").arg(drawn));
         return;

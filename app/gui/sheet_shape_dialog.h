@@ -20,7 +20,8 @@ namespace devsurf::app {
 // is) or a rectangle, disk, annulus or the outline of a drawing (the closed curves of a DXF,
 // SVG, STEP or IGES file) its development is confined to. Sizes start at the sheet that just
 // holds the development; the dialog compares the two areas as the sizes change. With a shape,
-// the curves of a drawing can be drawn in the sheet for the creases near them to follow.
+// the curves of a drawing can be drawn in the sheet for the creases near them to follow, or the
+// creases held where they lie.
 class SheetShapeDialog : public QDialog {
     Q_OBJECT
 public:
@@ -43,6 +44,7 @@ public:
     QPushButton* okButton() const { return m_ok; }
     QPushButton* creasesButton() const { return m_chooseCreases; }
     QPushButton* clearCreasesButton() const { return m_clearCreases; }
+    QPushButton* keepCreasesButton() const { return m_keepCreases; }
     QLabel* creasesLabel() const { return m_creasesName; }
 
     // Reads the outline from a drawing's closed curves; false (said in the dialog, the outline
@@ -88,6 +90,11 @@ private:
     QLabel* m_creasesName;
     QPushButton* m_chooseCreases;
     QPushButton* m_clearCreases;
+    // "As They Lie": the creases held on the curves they lie on now (model::
+    // creaseCurvesAsTheyLie, in the development's plane), instead of a drawing's.
+    QPushButton* m_keepCreases;
+    bool m_creasesAsTheyLie = false;
+    std::vector<model::SheetDomain::Curve> m_lyingCreases;
     std::function<QString()> m_creasesChooser;
 };
 

@@ -4,6 +4,7 @@
 #include "io/project_file.h"
 #include "model/pattern/pattern_geometry.h"
 #include "model/sampled_mesh.h"
+#include "model/sheet_creases.h"
 #include "model/sheet_domain.h"
 #include "test_registry.h"
 
@@ -218,6 +219,50 @@ private slots:
         QVERIFY2(run.err.contains(QStringLiteral("lies near a curve")), qPrintable(run.err));
         QCOMPARE(cli({"sheet", annulus, "--free", "--creases", drawing, "-o", refused}).exitCode,
                  1);
+        QVERIFY(!QFile::exists(refused));
+    }
+
+    void creasesKeptWhereTheyLie() {
+        // fig8 with one corner pinned on its 300 × 300 mm square, its creases kept where they
+        // lie: its six crease S-edges on two curves. Its middle lifted 85 mm then folds along
+        // them, the creases still on their curves and the sheet still the square.
+        const QString fig8 = path("keep-fig8.devsurf");
+        QCOMPARE(cli({"example", "fig8", "-o", fig8}).exitCode, 0);
+        const QString oneCorner = path("keep-one-corner.devsurf");
+        QCOMPARE(cli({"pin", fig8, "--vertices", "3", "--unpin", "-o", oneCorner}).exitCode, 0);
+        const QString held = path("keep-held.devsurf");
+        test::CliRun run =
+            cli({"sheet", oneCorner, "--rectangle", "300,300", "--keep-creases", "-o", held});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains(QStringLiteral("6 creases held on 2 of 2 crease curves")),
+                 qPrintable(run.out));
+        const QString lifted = path("keep-lifted.devsurf");
+        run = cli({"drag", held, "--vertices", "5,6,9,10", "--by", "0,0,85", "-o", lifted});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.out.contains(QStringLiteral("tolerance 1.0e-08 reached")),
+                 qPrintable(run.out));
+        const model::CompositeSurface s = io::loadProjectFile(lifted).surfaces[0];
+        const model::SampledMesh mesh =
+            model::sampleSurface(s, model::kDevelopmentSamplesPerInterval);
+        QCOMPARE(s.sheetDomain().creaseCurveOf.size(), std::size_t(6));
+        const double onCurves =
+            model::largestCreaseCurveGap(s.sheetDomain(), mesh, s.development());
+        QVERIFY2(onCurves < 1e-6, qPrintable(QString::number(onCurves)));
+        const double onSquare = model::largestDomainGap(s.sheetDomain(), mesh, s.development());
+        QVERIFY2(onSquare < 1e-6, qPrintable(QString::number(onSquare)));
+        for (model::VertexId v : {5u, 6u, 9u, 10u}) {
+            QVERIFY(s.position(v).z > 60.0);
+        }
+
+        // Not with a free sheet, nor together with a drawing.
+        const QString refused = path("keep-refused.devsurf");
+        run = cli({"sheet", oneCorner, "--free", "--keep-creases", "-o", refused});
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY2(run.err.contains(QStringLiteral("--keep-creases needs a sheet of a shape")),
+                 qPrintable(run.err));
+        run = cli({"sheet", oneCorner, "--rectangle", "300,300", "--keep-creases", "--creases",
+                   fig8, "-o", refused});
+        QCOMPARE(run.exitCode, 1);
         QVERIFY(!QFile::exists(refused));
     }
 };

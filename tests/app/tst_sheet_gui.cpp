@@ -5,6 +5,7 @@
 #include "model/development.h"
 #include "model/document/document.h"
 #include "model/sampled_mesh.h"
+#include "model/sheet_creases.h"
 #include "model/sheet_domain.h"
 #include "reactions/sheet_reactions.h"
 #include "sheet_shape_dialog.h"
@@ -27,11 +28,29 @@
 #include <QUndoStack>
 
 #include <cmath>
+#include <functional>
 
 using namespace devsurf;
 
 class TstSheetGui : public QObject {
     Q_OBJECT
+
+    // Runs Tools ▸ Sheet Shape… in `window`; `fill` fills in the dialog and ends it (the dialog
+    // runs its own event loop: a timer finds it there).
+    static void withSheetShapeDialog(app::MainWindow& window,
+                                     const std::function<void(app::SheetShapeDialog*)>& fill) {
+        QTimer poll;
+        QObject::connect(&poll, &QTimer::timeout, &poll, [&] {
+            auto* dialog = qobject_cast<app::SheetShapeDialog*>(QApplication::activeModalWidget());
+            if (dialog) {
+                poll.stop();
+                fill(dialog);
+            }
+        });
+        poll.start(10);
+        window.action(QStringLiteral("actionSheetShape"))->trigger();
+        poll.stop();
+    }
 
 private slots:
     void init() { QSettings().clear(); }
@@ -71,20 +90,12 @@ private slots:
         QVERIFY(shape != nullptr && shape->isEnabled());
         const int steps = doc->undoStack()->count();
         double offeredWidth = 0.0;
-        QTimer poll; // the dialog runs its own event loop: a timer fills it in there
-        connect(&poll, &QTimer::timeout, &poll, [&] {
-            auto* dialog = qobject_cast<app::SheetShapeDialog*>(QApplication::activeModalWidget());
-            if (!dialog) {
-                return;
-            }
+        withSheetShapeDialog(window, [&](app::SheetShapeDialog* dialog) {
             dialog->shapeBox()->setCurrentIndex(
                 dialog->shapeBox()->findData(static_cast<int>(model::SheetShape::Rectangle)));
             offeredWidth = dialog->widthBox()->value();
             dialog->accept();
         });
-        poll.start(10);
-        shape->trigger();
-        poll.stop();
         QVERIFY2(std::abs(offeredWidth - 300.0) < 0.01, qPrintable(QString::number(offeredWidth)));
         QCOMPARE(doc->undoStack()->count(), steps + 1);
         const model::CompositeSurface& held = doc->surface(0);
@@ -154,13 +165,7 @@ private slots:
         document::Document* doc = window.workspace()->document();
         QStringList said;
         bool okBeforeChoosing = true;
-        QTimer poll;
-        connect(&poll, &QTimer::timeout, &poll, [&] {
-            auto* dialog = qobject_cast<app::SheetShapeDialog*>(QApplication::activeModalWidget());
-            if (!dialog) {
-                return;
-            }
-            poll.stop();
+        withSheetShapeDialog(window, [&](app::SheetShapeDialog* dialog) {
             dialog->shapeBox()->setCurrentIndex(
                 dialog->shapeBox()->findData(static_cast<int>(model::SheetShape::Outline)));
             okBeforeChoosing = dialog->okButton()->isEnabled();
@@ -177,9 +182,6 @@ private slots:
             QVERIFY(dialog->okButton()->isEnabled());
             dialog->okButton()->click();
         });
-        poll.start(10);
-        window.action(QStringLiteral("actionSheetShape"))->trigger();
-        poll.stop();
         QVERIFY(!okBeforeChoosing);
         QCOMPARE(said.size(), 3);
         QVERIFY2(said[0].contains(QStringLiteral("damaged.svg")), qPrintable(said[0]));
@@ -215,13 +217,7 @@ private slots:
         const int steps = doc->undoStack()->count();
         bool offeredWhenFree = true;
         QString said;
-        QTimer poll;
-        connect(&poll, &QTimer::timeout, &poll, [&] {
-            auto* dialog = qobject_cast<app::SheetShapeDialog*>(QApplication::activeModalWidget());
-            if (!dialog) {
-                return;
-            }
-            poll.stop();
+        withSheetShapeDialog(window, [&](app::SheetShapeDialog* dialog) {
             dialog->shapeBox()->setCurrentIndex(
                 dialog->shapeBox()->findData(static_cast<int>(model::SheetShape::Free)));
             offeredWhenFree = dialog->creasesButton()->isEnabled();
@@ -235,9 +231,6 @@ private slots:
             said = dialog->creasesLabel()->text();
             dialog->okButton()->click();
         });
-        poll.start(10);
-        window.action(QStringLiteral("actionSheetShape"))->trigger();
-        poll.stop();
         QVERIFY(!offeredWhenFree);
         QVERIFY2(said.contains(QStringLiteral("creases.dxf")) &&
                      said.contains(QStringLiteral("16")),
@@ -248,24 +241,57 @@ private slots:
         QCOMPARE(static_cast<int>(held.creaseCurves.size()), 2);
         QCOMPARE(static_cast<int>(held.creaseCurveOf.size()), 16);
         // Opened again, the dialog shows the curves kept; None clears them.
-        poll.disconnect();
-        connect(&poll, &QTimer::timeout, &poll, [&] {
-            auto* dialog = qobject_cast<app::SheetShapeDialog*>(QApplication::activeModalWidget());
-            if (!dialog) {
-                return;
-            }
-            poll.stop();
+        withSheetShapeDialog(window, [&](app::SheetShapeDialog* dialog) {
             said = dialog->creasesLabel()->text();
             dialog->clearCreasesButton()->click();
             dialog->okButton()->click();
         });
-        poll.start(10);
-        window.action(QStringLiteral("actionSheetShape"))->trigger();
-        poll.stop();
         QVERIFY2(said.contains(QStringLiteral("16")), qPrintable(said));
         QVERIFY(doc->surface(0).sheetDomain().creaseCurves.empty());
         doc->undoStack()->undo();
         QCOMPARE(static_cast<int>(doc->surface(0).sheetDomain().creaseCurveOf.size()), 16);
+    }
+
+    void creasesHeldAsTheyLie() {
+        // fig8 on its 300 × 300 mm square, "As They Lie" in the dialog: its two creases (three
+        // S-edges each) become two curves in the sheet that hold all six, in one undo step. A
+        // free sheet does not offer it.
+        app::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.workspace()->newFromExample(QStringLiteral("fig8"), 0);
+        document::Document* doc = window.workspace()->document();
+        const int steps = doc->undoStack()->count();
+        bool offeredWhenFree = true;
+        QString said;
+        withSheetShapeDialog(window, [&](app::SheetShapeDialog* dialog) {
+            dialog->shapeBox()->setCurrentIndex(
+                dialog->shapeBox()->findData(static_cast<int>(model::SheetShape::Free)));
+            offeredWhenFree = dialog->keepCreasesButton()->isEnabled();
+            dialog->shapeBox()->setCurrentIndex(
+                dialog->shapeBox()->findData(static_cast<int>(model::SheetShape::Rectangle)));
+            dialog->widthBox()->setValue(300.0);
+            dialog->heightBox()->setValue(300.0);
+            QVERIFY(dialog->keepCreasesButton()->isEnabled());
+            dialog->keepCreasesButton()->click();
+            said = dialog->creasesLabel()->text();
+            dialog->okButton()->click();
+        });
+        QVERIFY(!offeredWhenFree);
+        // "the creases as they lie: 2 curves, holding 6 creases" (in any language).
+        QVERIFY2(said.contains(QStringLiteral("2")) && said.contains(QStringLiteral("6")),
+                 qPrintable(said));
+        QCOMPARE(doc->undoStack()->count(), steps + 1);
+        const model::SheetDomain& held = doc->surface(0).sheetDomain();
+        QCOMPARE(held.shape, model::SheetShape::Rectangle);
+        QCOMPARE(static_cast<int>(held.creaseCurves.size()), 2);
+        QCOMPARE(static_cast<int>(held.creaseCurveOf.size()), 6);
+        const model::SampledMesh mesh =
+            model::sampleSurface(doc->surface(0), model::kDevelopmentSamplesPerInterval);
+        const double gap = model::largestCreaseCurveGap(held, mesh, doc->surface(0).development());
+        QVERIFY2(gap < 1e-6, qPrintable(QString::number(gap)));
+        doc->undoStack()->undo();
+        QVERIFY(doc->surface(0).sheetDomain().creaseCurves.empty());
     }
 
     void aTorusIsNoSheetToHold() {

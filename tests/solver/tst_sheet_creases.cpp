@@ -3,6 +3,7 @@
 // onto their curves and a fold that keeps it there, measured from the written-back geometry
 // (model::sampleSurface) and from curves computed here, not from the solver's residuals.
 
+#include "model/bspline_curve.h"
 #include "model/composite_surface.h"
 #include "model/development.h"
 #include "model/examples.h"
@@ -192,6 +193,64 @@ private slots:
         QCOMPARE(static_cast<int>(s.sheetDomain().creaseCurveOf.size()), 16);
         QVERIFY(ringsOf[0] == std::set<double>{125.0});
         QVERIFY(ringsOf[1] == std::set<double>{200.0});
+    }
+
+    void creasesAsTheyLieBecomeTheirCurves() {
+        // fig8 on its 300 × 300 mm square: its two creases (three S-edges each, continuing one
+        // another) become two open curves through where they lie; the annulus's five rings
+        // become five closed ones. Checked against the splines evaluated densely (flat designs
+        // lie in their development as they lie in the xy-plane).
+        for (const char* name : {"fig8", "annulus"}) {
+            model::CompositeSurface s = model::makeExample(name).surfaces.front();
+            QVERIFY(!model::keepDevelopment(s).has_value());
+            const model::SampledMesh mesh = model::sampleSurface(s, kSamples);
+            SheetDomain shape;
+            shape.shape = std::string(name) == "fig8" ? SheetShape::Rectangle : SheetShape::Annulus;
+            shape.width = shape.height = 300.0;
+            shape.innerRadius = 100.0;
+            shape.radius = 250.0;
+            SheetDomain d = model::placeDomain(shape, mesh, s.development());
+            d.creaseCurves =
+                model::sheetFrameCurves(d, model::creaseCurvesAsTheyLie(s, s.development()));
+            const bool isFig8 = std::string(name) == "fig8";
+            QCOMPARE(static_cast<int>(d.creaseCurves.size()), isFig8 ? 2 : 5);
+            std::vector<Vec2> dense; // every crease spline, 2000 points per edge
+            int creases = 0;
+            for (const auto& [id, record] : s.edges()) {
+                if (!record.isSpline() || s.facesOfEdge(id).size() != 2) {
+                    continue;
+                }
+                ++creases;
+                const model::BSplineCurve curve =
+                    model::BSplineCurve::uniform(record.space, record.controlPoints);
+                for (int i = 0; i <= 2000; ++i) {
+                    const model::Vec3 p = curve.evaluate(i / 2000.0);
+                    dense.emplace_back(p.x, p.y);
+                }
+            }
+            double worst = 0.0;
+            for (const model::DomainLoop& loop : model::creaseCurveLoops(d)) {
+                QCOMPARE(loop.open, isFig8);
+                for (const Vec2& p : loop.polygon) {
+                    double nearest = 1e300;
+                    for (const Vec2& q : dense) {
+                        nearest = std::min(nearest, (p - q).norm());
+                    }
+                    worst = std::max(worst, nearest);
+                }
+            }
+            // Within the spacing of the dense samples (at most 0.3 mm apart).
+            QVERIFY2(worst < 0.2, qPrintable(QString::number(worst)));
+            d.creaseCurveOf = model::assignCreasesToCurves(d, s, mesh, s.development());
+            QCOMPARE(static_cast<int>(d.creaseCurveOf.size()), creases);
+            const double gap = model::largestCreaseCurveGap(d, mesh, s.development());
+            QVERIFY2(gap < 1e-6, qPrintable(QString::number(gap)));
+        }
+        // None for a design without creases: one cone.
+        const model::CompositeSurface cone = solver::testing::makeCone();
+        const model::Development flat =
+            model::unfoldSampledMesh(model::sampleSurface(cone, kSamples));
+        QVERIFY(model::creaseCurvesAsTheyLie(cone, flat.vertices).empty());
     }
 
     void creaseRowsHoldEverySampleOnce() {
