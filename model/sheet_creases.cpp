@@ -2,6 +2,7 @@
 
 #include "composite_surface.h"
 #include "development.h"
+#include "plane_motion.h"
 #include "sampled_mesh.h"
 
 #include <algorithm>
@@ -23,60 +24,6 @@ Vec2 placed(const SheetDomain& domain, const Vec2& p) {
 
 double distanceTo(const DomainLoop& loop, const Vec2& p) {
     return (footPoint(loop, p).point - p).norm();
-}
-
-// p ↦ R(angle) · mirror(p) + shift, mirror(x, y) = (−x, y) when mirrored.
-struct Motion {
-    bool mirrored = false;
-    double angle = 0.0;
-    Vec2 shift;
-    Vec2 apply(const Vec2& p) const {
-        const Vec2 q(mirrored ? -p.x : p.x, p.y);
-        const double c = std::cos(angle);
-        const double s = std::sin(angle);
-        return Vec2(c * q.x - s * q.y, s * q.x + c * q.y) + shift;
-    }
-};
-
-// The rigid motion (a mirror allowed) that maps `from` onto `to` with the least squared
-// distances (2D Procrustes); both lists equally long and not empty.
-Motion bestMotion(const std::vector<Vec2>& from, const std::vector<Vec2>& to) {
-    Motion best;
-    double bestError = std::numeric_limits<double>::infinity();
-    for (bool mirrored : {false, true}) {
-        Motion m;
-        m.mirrored = mirrored;
-        Vec2 a;
-        Vec2 b;
-        for (std::size_t i = 0; i < from.size(); ++i) {
-            a = a + Vec2(mirrored ? -from[i].x : from[i].x, from[i].y);
-            b = b + to[i];
-        }
-        a = a * (1.0 / static_cast<double>(from.size()));
-        b = b * (1.0 / static_cast<double>(from.size()));
-        double sine = 0.0;
-        double cosine = 0.0;
-        for (std::size_t i = 0; i < from.size(); ++i) {
-            const Vec2 p = Vec2(mirrored ? -from[i].x : from[i].x, from[i].y) - a;
-            const Vec2 q = to[i] - b;
-            sine += p.x * q.y - p.y * q.x;
-            cosine += p.x * q.x + p.y * q.y;
-        }
-        m.angle = std::atan2(sine, cosine);
-        const double cs = std::cos(m.angle);
-        const double sn = std::sin(m.angle);
-        m.shift = b - Vec2(cs * a.x - sn * a.y, sn * a.x + cs * a.y); // a is mirrored already
-        double error = 0.0;
-        for (std::size_t i = 0; i < from.size(); ++i) {
-            const Vec2 d = m.apply(from[i]) - to[i];
-            error += dot2(d, d);
-        }
-        if (error < bestError) {
-            bestError = error;
-            best = m;
-        }
-    }
-    return best;
 }
 
 } // namespace
@@ -202,10 +149,13 @@ std::vector<SheetDomain::Curve> creaseCurvesAsTheyLie(const CompositeSurface& su
     if (unfolded.components != 1 || unfolded.period) {
         return {};
     }
-    const Motion onto = bestMotion(
+    const std::optional<PlaneMotion> onto = fitPlaneMotion(
         std::vector<Vec2>(unfolded.vertices.begin(),
                           unfolded.vertices.begin() + static_cast<long>(coarse)),
         std::vector<Vec2>(development.begin(), development.begin() + static_cast<long>(coarse)));
+    if (!onto) {
+        return {};
+    }
     // The creases, and at every coarse vertex the creases that meet there.
     std::vector<const SampledMesh::Polyline*> creases;
     std::map<int, std::vector<std::size_t>> meeting; // mesh vertex -> indices into creases
@@ -267,7 +217,7 @@ std::vector<SheetDomain::Curve> creaseCurvesAsTheyLie(const CompositeSurface& su
             chain.pop_back();
         }
         for (int v : chain) {
-            curve.points.push_back(onto.apply(unfolded.vertices[static_cast<std::size_t>(v)]));
+            curve.points.push_back(onto->apply(unfolded.vertices[static_cast<std::size_t>(v)]));
         }
         curves.push_back(std::move(curve));
     }

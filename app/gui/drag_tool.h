@@ -161,8 +161,8 @@ private:
     int m_snappedCurve = -1;
 
     views::SceneView* m_sheetView = nullptr;
-    bool m_inSheet = false;                    // this drag was pressed in the sheet view
-    model::pattern::PlaneMotion m_sheetMotion; // kept development → the view's layout
+    bool m_inSheet = false;           // this drag was pressed in the sheet view
+    model::PlaneMotion m_sheetMotion; // kept development → the view's layout
     // The dragged vertices (m_vertices) in the kept development, and where the drag puts them.
     std::vector<model::Vec2> m_sheetStarts;
     std::vector<model::Vec2> m_sheetTargets;

@@ -43,8 +43,7 @@ bool DragTool::pressSheet(const QPoint& pos) {
             shown.push_back({at->x, at->y});
         }
     }
-    const std::optional<model::pattern::PlaneMotion> motion =
-        model::pattern::fitPlaneMotion(kept, shown);
+    const std::optional<model::PlaneMotion> motion = model::fitPlaneMotion(kept, shown);
     if (!motion || indexOf.at(pick->id) >= surface.development().size()) {
         return false;
     }

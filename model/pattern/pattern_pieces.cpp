@@ -4,6 +4,7 @@
 #include "model/bspline_curve.h"
 #include "model/creases.h"
 #include "model/development.h"
+#include "model/plane_motion.h"
 #include "model/sampled_mesh.h"
 #include "pattern_cut.h"
 #include "pattern_geometry.h"
@@ -39,6 +40,96 @@ bool copiesCoincide(const CutMesh& cut, const Development& development, double t
         }
     }
     return true;
+}
+
+// A surface that keeps its development is cut from that sheet (§5): the fresh unfolding
+// `development` of `cut` (the surface's mesh at the pattern's sampling, not cut open) is laid
+// onto the kept development by the rigid motion that best maps the samples both share, each
+// shared sample is then put exactly where the kept sheet has it, and the samples between two
+// of them along an edge move with them linearly. Unchanged for a surface that keeps no
+// development (or one from another sampling), a sheet around a cylinder, or a mesh cut open.
+void layOntoKeptSheet(const CompositeSurface& surface, const SampledMesh& mesh, const CutMesh& cut,
+                      Development& development) {
+    const std::vector<Vec2>& kept = surface.development();
+    if (!surface.keepsDevelopment() || development.period || development.components != 1 ||
+        surface.sheetDomain().shape == SheetShape::Cylinder ||
+        cut.mesh.vertices.size() != mesh.vertices.size() ||
+        kept.size() != sampledVertexCount(surface, kDevelopmentSamplesPerInterval)) {
+        return;
+    }
+    const SampledMesh coarse = sampleSurface(surface, kDevelopmentSamplesPerInterval);
+    // For every vertex of `mesh`, the kept sample at the same place on the surface, if any.
+    std::vector<int> shared(mesh.vertices.size(), -1);
+    for (std::size_t v = 0; v < mesh.coarseVertexIds.size(); ++v) {
+        shared[v] = static_cast<int>(v); // the coarse vertices come first in both
+    }
+    std::map<EdgeId, const SampledMesh::Polyline*> keptLine;
+    for (const SampledMesh::Polyline& line : coarse.splineEdges) {
+        keptLine[line.edge] = &line;
+    }
+    for (const SampledMesh::Polyline& line : mesh.splineEdges) {
+        const auto it = keptLine.find(line.edge);
+        if (it == keptLine.end() || line.vertices.size() < 2) {
+            return;
+        }
+        const std::size_t fine = line.vertices.size() - 1;
+        const std::size_t other = it->second->vertices.size() - 1;
+        for (std::size_t k = 0; k <= fine; ++k) {
+            if ((k * other) % fine == 0) {
+                shared[static_cast<std::size_t>(line.vertices[k])] =
+                    it->second->vertices[k * other / fine];
+            }
+        }
+    }
+    // The cut mesh numbers its vertices anew; uncut, each copies one vertex of `mesh`.
+    std::vector<int> copy(mesh.vertices.size(), -1);
+    for (std::size_t v = 0; v < cut.original.size(); ++v) {
+        copy[static_cast<std::size_t>(cut.original[v])] = static_cast<int>(v);
+    }
+    std::vector<Vec2> from;
+    std::vector<Vec2> to;
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+        if (shared[v] >= 0 && copy[v] >= 0) {
+            from.push_back(development.vertices[static_cast<std::size_t>(copy[v])]);
+            to.push_back(kept[static_cast<std::size_t>(shared[v])]);
+        }
+    }
+    const std::optional<PlaneMotion> motion = fitPlaneMotion(from, to);
+    if (!motion) {
+        return;
+    }
+    std::vector<Vec2> laid(development.vertices.size());
+    for (std::size_t v = 0; v < laid.size(); ++v) {
+        laid[v] = motion->apply(development.vertices[v]);
+    }
+    // The samples between two shared ones along an edge follow them linearly.
+    std::vector<Vec2> placed = laid;
+    auto at = [&](int meshVertex) {
+        return static_cast<std::size_t>(copy[static_cast<std::size_t>(meshVertex)]);
+    };
+    for (const SampledMesh::Polyline& line : mesh.splineEdges) {
+        std::size_t last = 0; // index along the line of the last shared sample
+        for (std::size_t k = 1; k < line.vertices.size(); ++k) {
+            if (shared[static_cast<std::size_t>(line.vertices[k])] < 0) {
+                continue;
+            }
+            const Vec2 a = kept[static_cast<std::size_t>(
+                               shared[static_cast<std::size_t>(line.vertices[last])])] -
+                           laid[at(line.vertices[last])];
+            const Vec2 b =
+                kept[static_cast<std::size_t>(shared[static_cast<std::size_t>(line.vertices[k])])] -
+                laid[at(line.vertices[k])];
+            for (std::size_t i = last; i <= k; ++i) {
+                const double t = static_cast<double>(i - last) / static_cast<double>(k - last);
+                placed[at(line.vertices[i])] = laid[at(line.vertices[i])] + a * (1.0 - t) + b * t;
+            }
+            last = k;
+        }
+    }
+    for (std::size_t v = 0; v < mesh.coarseVertexIds.size(); ++v) {
+        placed[at(static_cast<int>(v))] = kept[v];
+    }
+    development.vertices = std::move(placed);
 }
 
 // The rotation that shows a piece as the surface is seen in the 3D view: a mostly horizontal
@@ -198,6 +289,9 @@ std::vector<PieceBuild> developAlong(const CompositeSurface& surface, int surfac
         cutEdges.clear();
         cut = splitAlong(mesh, {});
         development = unfoldSampledMesh(cut.mesh);
+    }
+    if (cutEdges.empty()) {
+        layOntoKeptSheet(surface, mesh, cut, development);
     }
 
     // Pieces: the connected parts of the cut mesh.

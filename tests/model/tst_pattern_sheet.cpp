@@ -87,6 +87,42 @@ private slots:
         QCOMPARE(onBoundary, 12);
     }
 
+    void piecesAreCutFromTheKeptSheet() {
+        // A surface holding its sheet is cut from that sheet, not from a fresh unfolding: its
+        // kept development scaled by 1.001 (as if the sheet had been stretched) gives a piece
+        // 1.001 times as large, its coarse vertices exactly where the sheet has them (up to the
+        // piece's placement) and the samples between them moved along; a kept development that
+        // matches the surface gives the unfolding's lengths.
+        for (const double scale : {1.0, 1.001}) {
+            CompositeSurface surface = makeExample("fig8").surfaces[0];
+            QVERIFY(!keepDevelopment(surface).has_value());
+            std::vector<Vec2> sheet = surface.development();
+            for (Vec2& p : sheet) {
+                p = p * scale;
+            }
+            surface.setDevelopment(sheet);
+            Project project;
+            project.surfaces.push_back(surface);
+            PatternOptions options;
+            options.samplesPerInterval = 8;
+            const CuttingPattern pattern = buildCuttingPattern(project, options);
+            QCOMPARE(pattern.pieces.size(), std::size_t(1));
+            const PatternPiece& piece = pattern.pieces.front();
+            QCOMPARE(piece.vertices.size(), surface.vertices().size());
+            double worst = 0.0;
+            for (const auto& [a, pa] : piece.vertices) {
+                for (const auto& [b, pb] : piece.vertices) {
+                    const Vec2 kept = sheet[a] - sheet[b]; // coarse vertices first, by id
+                    worst = std::max(worst, std::abs((pa - pb).norm() - kept.norm()));
+                }
+            }
+            QVERIFY2(worst < 1e-9, qPrintable(QString::number(worst)));
+            // Its area too (the developed patches, 300 × 300 mm as designed).
+            QVERIFY2(std::abs(piece.area - 300.0 * 300.0 * scale * scale) < 1e-3 * 300.0,
+                     qPrintable(QString::number(piece.area)));
+        }
+    }
+
     void annulusKeepsItsHoleAndCircles() {
         SheetDomain ring;
         ring.shape = SheetShape::Annulus;
