@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <unordered_map>
@@ -185,7 +186,87 @@ private:
     std::vector<std::vector<int>> m_cells;
 };
 
+// The surface's pins, its development and the pairs of pins that hold a line straight.
+struct TautLines {
+    std::shared_ptr<const DerivedGeometry> derived; // owns the mesh and the development
+    std::map<VertexId, Vec2> flat;                  // coarse vertices in the development
+    std::unique_ptr<Outline> outline;
+    std::vector<VertexId> pins;
+    std::vector<std::pair<std::size_t, std::size_t>> taut; // indices into pins, i < j
+    std::vector<char> tautMatrix;                          // pins.size()²
+    bool isTaut(std::size_t i, std::size_t j) const {      // i < j
+        return tautMatrix[i * pins.size() + j] != 0;
+    }
+};
+
+std::optional<TautLines> tautLinesOf(const CompositeSurface& surface, double relativeTolerance) {
+    const std::set<VertexId>& pinned = surface.pinnedVertices();
+    if (pinned.size() < 2) {
+        return std::nullopt;
+    }
+    TautLines lines;
+    try {
+        lines.derived = DerivedGeometry::of(surface, kOutlineSamples);
+    } catch (const ModelError&) {
+        return std::nullopt; // not a valid surface: nothing to say about it
+    }
+    const SampledMesh& mesh = lines.derived->mesh();
+    const Development& development = lines.derived->development();
+    if (development.components != 1 || development.period) {
+        return std::nullopt;
+    }
+    double scale = 0.0;
+    for (const Vec2& p : development.vertices) {
+        scale = std::max({scale, std::abs(p.x), std::abs(p.y)});
+    }
+    if (!(scale > 0.0) || development.closureError > 1e-6 * scale) {
+        return std::nullopt; // not developable enough for its distances to mean anything
+    }
+    for (std::size_t i = 0; i < mesh.coarseVertexIds.size(); ++i) {
+        lines.flat[mesh.coarseVertexIds[i]] = development.vertices[i];
+    }
+    lines.outline = std::make_unique<Outline>(mesh, development, scale);
+
+    // Pairs of pins as far apart as in the development, along a line in the sheet.
+    lines.pins.assign(pinned.begin(), pinned.end());
+    const std::vector<VertexId>& pins = lines.pins;
+    lines.tautMatrix.assign(pins.size() * pins.size(), 0);
+    for (std::size_t i = 0; i < pins.size(); ++i) {
+        for (std::size_t j = i + 1; j < pins.size(); ++j) {
+            const Vec2 a = lines.flat.at(pins[i]);
+            const Vec2 b = lines.flat.at(pins[j]);
+            const double inPlane = (b - a).norm();
+            const double inSpace = distance(surface.position(pins[i]), surface.position(pins[j]));
+            if (inPlane > 0.0 && inSpace >= inPlane * (1.0 - relativeTolerance) &&
+                lines.outline->containsSegment(a, b)) {
+                lines.taut.push_back({i, j});
+                lines.tautMatrix[i * pins.size() + j] = 1;
+            }
+        }
+    }
+    return lines;
+}
+
 } // namespace
+
+std::vector<std::pair<VertexId, VertexId>> findTautPinLines(const CompositeSurface& surface,
+                                                            double relativeTolerance) {
+    std::vector<std::pair<VertexId, VertexId>> found;
+    const std::optional<TautLines> lines = tautLinesOf(surface, relativeTolerance);
+    if (!lines) {
+        return found;
+    }
+    for (const auto& [i, j] : lines->taut) {
+        const VertexId a = lines->pins[i];
+        const VertexId b = lines->pins[j];
+        const EdgeId edge = surface.edgeBetween(a, b);
+        if (edge != kInvalidId && !surface.edge(edge).isSpline()) {
+            continue; // a ruling: straight anyway
+        }
+        found.push_back({a, b});
+    }
+    return found;
+}
 
 std::optional<HeldVertex> findVertexHeldByPins(const CompositeSurface& surface,
                                                const std::vector<VertexId>& vertices,
@@ -200,50 +281,15 @@ std::optional<HeldVertex> findVertexHeldByPins(const CompositeSurface& surface,
     if (pinned.size() < 2 || moving.empty()) {
         return std::nullopt;
     }
-    std::shared_ptr<const DerivedGeometry> derived;
-    try {
-        derived = DerivedGeometry::of(surface, kOutlineSamples);
-    } catch (const ModelError&) {
-        return std::nullopt; // not a valid surface: nothing to say about it
-    }
-    const SampledMesh& mesh = derived->mesh();
-    const Development& development = derived->development();
-    if (development.components != 1 || development.period) {
+    const std::optional<TautLines> lines = tautLinesOf(surface, relativeTolerance);
+    if (!lines) {
         return std::nullopt;
     }
-    double scale = 0.0;
-    for (const Vec2& p : development.vertices) {
-        scale = std::max({scale, std::abs(p.x), std::abs(p.y)});
-    }
-    if (!(scale > 0.0) || development.closureError > 1e-6 * scale) {
-        return std::nullopt; // not developable enough for its distances to mean anything
-    }
-    std::map<VertexId, Vec2> flat;
-    for (std::size_t i = 0; i < mesh.coarseVertexIds.size(); ++i) {
-        flat[mesh.coarseVertexIds[i]] = development.vertices[i];
-    }
-    const Outline outline(mesh, development, scale);
-
-    // Pairs of pins as far apart as in the development, along a line in the sheet.
-    const std::vector<VertexId> pins(pinned.begin(), pinned.end());
-    std::vector<std::pair<std::size_t, std::size_t>> taut; // indices into pins
-    std::vector<char> tautMatrix(pins.size() * pins.size(), 0);
-    for (std::size_t i = 0; i < pins.size(); ++i) {
-        for (std::size_t j = i + 1; j < pins.size(); ++j) {
-            const Vec2 a = flat.at(pins[i]);
-            const Vec2 b = flat.at(pins[j]);
-            const double inPlane = (b - a).norm();
-            const double inSpace = distance(surface.position(pins[i]), surface.position(pins[j]));
-            if (inPlane > 0.0 && inSpace >= inPlane * (1.0 - relativeTolerance) &&
-                outline.containsSegment(a, b)) {
-                taut.push_back({i, j});
-                tautMatrix[i * pins.size() + j] = 1;
-            }
-        }
-    }
-    auto isTaut = [&](std::size_t i, std::size_t j) { // i < j
-        return tautMatrix[i * pins.size() + j] != 0;
-    };
+    const std::vector<VertexId>& pins = lines->pins;
+    const std::map<VertexId, Vec2>& flat = lines->flat;
+    const Outline& outline = *lines->outline;
+    const auto& taut = lines->taut;
+    auto isTaut = [&](std::size_t i, std::size_t j) { return lines->isTaut(i, j); };
 
     for (VertexId vertex : moving) {
         const Vec2 p = flat.at(vertex);

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace devsurf::model {
@@ -29,5 +30,13 @@ struct HeldVertex {
 std::optional<HeldVertex> findVertexHeldByPins(const CompositeSurface& surface,
                                                const std::vector<VertexId>& vertices,
                                                double relativeTolerance = 1e-6);
+
+// The pairs of pinned vertices that hold the straight line between them (as above), each pair
+// once, smaller id first in pin order; a pair joined by a ruling (an R-edge) is left out, a
+// ruling being straight anyway. Held, a strip that such a line crosses across its rulings
+// stays flat, and a curved crease beside a flat strip cannot fold. Empty when the surface has
+// fewer than two pins or does not unfold into one piece.
+std::vector<std::pair<VertexId, VertexId>> findTautPinLines(const CompositeSurface& surface,
+                                                            double relativeTolerance = 1e-6);
 
 } // namespace devsurf::model

@@ -1088,6 +1088,14 @@
     </message>
 </context>
 <context>
+    <name>SheetText</name>
+    <message>
+        <location filename="../app/text/sheet_text.cpp" line="6"/>
+        <source>the pinned vertices %1 and %2 are as far apart as along the straight line between them in the sheet, so that line stays straight and the strips it lies on stay flat, and a curved crease beside a flat strip cannot fold (unpin one of them to let the sheet fold)</source>
+        <translation>die fixierten Eckpunkte %1 und %2 liegen so weit auseinander wie entlang der geraden Linie zwischen ihnen im Bogen, daher bleibt diese Linie gerade und die Streifen, auf denen sie liegt, bleiben eben, und ein gekrümmter Falz neben einem ebenen Streifen kann nicht falten (lösen Sie einen der beiden, damit sich der Bogen falten kann)</translation>
+    </message>
+</context>
+<context>
     <name>SmoothRulingsCommand</name>
     <message>
         <location filename="../model/document/commands/smooth_rulings_command.cpp" line="9"/>
@@ -1789,12 +1797,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="109"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="108"/>
         <source>Drag vertex %1 in the sheet</source>
         <translation>Eckpunkt %1 im Bogen ziehen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="111"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="110"/>
         <source>Drag %n vertices in the sheet</source>
         <translation>
             <numerusform>%n Eckpunkt im Bogen ziehen</numerusform>
@@ -1802,7 +1810,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="118"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="117"/>
         <source>Dragging %n vertices %1 mm along their sheet; the surface follows. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Eckpunkt wird %1 mm im Bogen gezogen; die Fläche folgt. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -1810,7 +1818,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="123"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="122"/>
         <source>Dragging vertex %1 %2 mm along its sheet; the surface follows. Release to finish, Esc cancels.</source>
         <translation>Eckpunkt %1 wird %2 mm im Bogen gezogen; die Fläche folgt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
@@ -1864,7 +1872,7 @@
     <message>
         <location filename="../app/gui/drag_tool.cpp" line="210"/>
         <location filename="../app/gui/drag_tool.cpp" line="253"/>
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="66"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="65"/>
         <source>a drag started</source>
         <translation>ein Ziehen hat begonnen</translation>
     </message>
@@ -4645,18 +4653,18 @@
         <translation>Der Bogen hielt die bewegten Ecken um bis zu %1 mm zurück.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="22"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="23"/>
         <source>it stopped before a degenerate shape</source>
         <translation>es hielt vor einer entarteten Form an</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="25"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="26"/>
         <source>no convergence, residual %1</source>
         <translation>keine Konvergenz, Residuum %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="28"/>
-        <location filename="../app/gui/solve_report_text.cpp" line="57"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="29"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="58"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>an %n Stelle zurückgefaltet</numerusform>
@@ -4664,32 +4672,32 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="31"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="32"/>
         <source>a development overlapping itself</source>
         <translation>eine sich selbst überlappende Abwicklung</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="34"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="35"/>
         <source>collapsed strips</source>
         <translation>zusammengefallene Streifen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="37"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="38"/>
         <source>a shape too degenerate to measure</source>
         <translation>eine zum Messen zu entartete Form</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="46"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="47"/>
         <source>did not reach the tolerance (residual %1; patch %2 sampled %3 from developable)</source>
         <translation>Toleranz nicht erreicht (Residuum %1; Flächenstück %2 abgetastet %3 von abwickelbar entfernt)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="53"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="54"/>
         <source>left its kept sheet by %1 mm</source>
         <translation>um %1 mm vom gehaltenen Bogen abgewichen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="60"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="61"/>
         <source>left a development overlapping itself at %n patch(es)</source>
         <translation>
             <numerusform>Abwicklung an %n Flächenstück mit sich selbst überlappend</numerusform>
@@ -4697,132 +4705,132 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="67"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="68"/>
         <source>would stretch its sheet by %1 % to lie flat</source>
         <translation>flach ausgelegt um %1 % gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="69"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="70"/>
         <source>would not lie flat as one sheet</source>
         <translation>nicht als ein Bogen flach auslegbar</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="72"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="73"/>
         <source>ended not developable</source>
         <translation>nicht abwickelbar geendet</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="100"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="101"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="105"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="106"/>
         <source>The solve was cancelled.</source>
         <translation>Das Lösen wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="108"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="109"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 kann nicht gelöst werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="109"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="110"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 kann nicht gelöst werden.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="113"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="114"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>Das Ziel der gezogenen Ecke %1 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="114"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="115"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>Das Ziel des gezogenen Kontrollpunkts %1 der Kante %2 ist kein endlicher Punkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="120"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="121"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 konnte nicht gelöst werden: das lineare Gleichungssystem ließ sich nicht faktorisieren.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="122"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="123"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 konnte nicht gelöst werden: eine Iteration ergab Werte, die nicht endlich sind.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="126"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="127"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 konnte nicht gelöst werden: der Löser lieferte einen Wert, der nicht endlich ist.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="132"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="133"/>
         <source>(Solver: %1)</source>
         <translation>(Löser: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="148"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="149"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="152"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="153"/>
         <source>Failed: %1</source>
         <translation>Fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="166"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="167"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="170"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="171"/>
         <source>tolerance reached</source>
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="170"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="171"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="177"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="178"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="185"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="186"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="191"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="192"/>
         <source>; settled a second time, since the first settling after the release did not converge</source>
         <translation>; ein zweites Mal zur Ruhe gebracht, da das erste Zur-Ruhe-Kommen nach dem Loslassen nicht konvergierte</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="195"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="196"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; das Beibehalten der Längen schlug fehl (%1), daher wurde das Ziehen mit Dehnen des Blatts wiederholt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="204"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="205"/>
         <source>followed %1 % of the drag and held back %2 mm, since the whole drag %3: the design stays at its last developable state</source>
         <translation>folgt %1 % des Ziehens und bleibt %2 mm zurück, denn das ganze Ziehen hätte so geendet: %3; der Entwurf bleibt in seinem letzten abwickelbaren Zustand</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="210"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="211"/>
         <source>not applied, since the motion %1: the design stays as it was</source>
         <translation>nicht angewendet, denn die Bewegung hätte so geendet: %1; der Entwurf bleibt, wie er war</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="218"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="219"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; vom Bogen um %1 mm zurückgehalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="229"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="234"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n Flächenstück faltet sich auf sich selbst zurück, wo die Fläche sich selbst überlappt: %1</numerusform>
@@ -4830,7 +4838,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="244"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="249"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; die Abwicklung überlappt sich selbst an %n Flächenstück (%1) und lässt sich nicht aus einem Bogen schneiden</numerusform>
@@ -4838,17 +4846,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="250"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="255"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="255"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="260"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="260"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="265"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
@@ -4912,27 +4920,27 @@
         <translation>Lösen wird nicht gestartet, solange %1 läuft; zuerst abbrechen (Esc).</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="83"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="84"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt auf der Geraden zwischen den festgehaltenen Ecken %2 und %3, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="90"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="91"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; Ecke %1 liegt im Dreieck der festgehaltenen Ecken %2, %3 und %4, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="173"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="174"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>beim letzten gültigen Zustand angehalten, bevor eine Erzeugende, eine Kurve oder ein Flächenstück kollabierte</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="181"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="182"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (endete bei Iteration %1, der mit dem kleinsten Residuum)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="214"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="215"/>
         <source>taken back to where the drag started, since the drag %1: the design stays at its last developable state</source>
         <translation>zurückgenommen auf den Stand beim Drücken, denn das Ziehen hätte so geendet: %1; der Entwurf bleibt in seinem letzten abwickelbaren Zustand</translation>
     </message>

@@ -159,7 +159,7 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="111"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="110"/>
         <source>Drag %n vertices in the sheet</source>
         <translation>
             <numerusform>Drag %n vertex in the sheet</numerusform>
@@ -175,7 +175,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="118"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="117"/>
         <source>Dragging %n vertices %1 mm along their sheet; the surface follows. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along its sheet; the surface follows. Release to finish, Esc cancels.</numerusform>
@@ -518,8 +518,8 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="28"/>
-        <location filename="../app/gui/solve_report_text.cpp" line="57"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="29"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="58"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>folded over in %n place</numerusform>
@@ -527,7 +527,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="60"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="61"/>
         <source>left a development overlapping itself at %n patch(es)</source>
         <translation>
             <numerusform>left a development overlapping itself at %n patch</numerusform>
@@ -535,7 +535,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="229"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="234"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n patch folds over onto itself, where the surface overlaps itself: %1</numerusform>
@@ -543,7 +543,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="244"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="249"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; the development overlaps itself at %n patch (%1) and cannot be cut from one sheet</numerusform>

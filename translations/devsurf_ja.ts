@@ -1080,6 +1080,14 @@
     </message>
 </context>
 <context>
+    <name>SheetText</name>
+    <message>
+        <location filename="../app/text/sheet_text.cpp" line="6"/>
+        <source>the pinned vertices %1 and %2 are as far apart as along the straight line between them in the sheet, so that line stays straight and the strips it lies on stay flat, and a curved crease beside a flat strip cannot fold (unpin one of them to let the sheet fold)</source>
+        <translation>固定した頂点 %1 と %2 は、シート上でそれらを結ぶ直線に沿った距離だけ離れているため、その直線はまっすぐのままで、直線が載るストリップは平らなままです。平らなストリップに接する曲線の折り線は折れません (シートを折るには、どちらかの固定を解除してください)</translation>
+    </message>
+</context>
+<context>
     <name>SmoothRulingsCommand</name>
     <message>
         <location filename="../model/document/commands/smooth_rulings_command.cpp" line="9"/>
@@ -1772,26 +1780,26 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="109"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="108"/>
         <source>Drag vertex %1 in the sheet</source>
         <translation>シート上で頂点 %1 をドラッグ</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="111"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="110"/>
         <source>Drag %n vertices in the sheet</source>
         <translation>
             <numerusform>シート上で %n 個の頂点をドラッグ</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="118"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="117"/>
         <source>Dragging %n vertices %1 mm along their sheet; the surface follows. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点をシート上で %1 mm ドラッグ中。曲面が追従します。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="123"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="122"/>
         <source>Dragging vertex %1 %2 mm along its sheet; the surface follows. Release to finish, Esc cancels.</source>
         <translation>頂点 %1 をシート上で %2 mm ドラッグ中。曲面が追従します。離すと確定、Esc で取り消し。</translation>
     </message>
@@ -1841,7 +1849,7 @@
     <message>
         <location filename="../app/gui/drag_tool.cpp" line="210"/>
         <location filename="../app/gui/drag_tool.cpp" line="253"/>
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="66"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="65"/>
         <source>a drag started</source>
         <translation>ドラッグが始まりました</translation>
     </message>
@@ -4588,206 +4596,206 @@
         <translation>シートにより、動かした頂点は最大 %1 mm 手前で止まりました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="22"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="23"/>
         <source>it stopped before a degenerate shape</source>
         <translation>退化した形の手前で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="25"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="26"/>
         <source>no convergence, residual %1</source>
         <translation>収束せず、残差 %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="28"/>
-        <location filename="../app/gui/solve_report_text.cpp" line="57"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="29"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="58"/>
         <source>folded over in %n place(s)</source>
         <translation>
             <numerusform>%n 箇所で折り返し</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="31"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="32"/>
         <source>a development overlapping itself</source>
         <translation>展開図が自身と重なる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="34"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="35"/>
         <source>collapsed strips</source>
         <translation>帯がつぶれる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="37"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="38"/>
         <source>a shape too degenerate to measure</source>
         <translation>測定できないほど退化した形</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="46"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="47"/>
         <source>did not reach the tolerance (residual %1; patch %2 sampled %3 from developable)</source>
         <translation>許容誤差に達せず (残差 %1、パッチ %2 のサンプル値は可展から %3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="53"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="54"/>
         <source>left its kept sheet by %1 mm</source>
         <translation>保持したシートから %1 mm ずれ</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="60"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="61"/>
         <source>left a development overlapping itself at %n patch(es)</source>
         <translation>
             <numerusform>%n 個のパッチで展開図が自己重複</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="67"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="68"/>
         <source>would stretch its sheet by %1 % to lie flat</source>
         <translation>平らに広げるとシートが %1 % 伸びる</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="69"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="70"/>
         <source>would not lie flat as one sheet</source>
         <translation>1 枚のシートとして平らに広げられない</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="72"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="73"/>
         <source>ended not developable</source>
         <translation>可展でない状態で終了</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="100"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="101"/>
         <source>Surface %1</source>
         <translation>曲面 %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="105"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="106"/>
         <source>The solve was cancelled.</source>
         <translation>ソルブを中止しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="108"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="109"/>
         <source>%1 cannot be solved: %2</source>
         <translation>%1 は解けません: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="109"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="110"/>
         <source>%1 cannot be solved.</source>
         <translation>%1 は解けません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="113"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="114"/>
         <source>The drag target of vertex %1 is not a finite point.</source>
         <translation>頂点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="114"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="115"/>
         <source>The drag target of control point %1 of edge %2 is not a finite point.</source>
         <translation>辺 %2 の制御点 %1 のドラッグ先が有限の点ではありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="120"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="121"/>
         <source>%1 could not be solved: the linear system could not be factorised.</source>
         <translation>%1 を解けませんでした: 連立一次方程式を分解できませんでした。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="122"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="123"/>
         <source>%1 could not be solved: an iteration gave values that are not finite.</source>
         <translation>%1 を解けませんでした: 反復で有限でない値が生じました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="126"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="127"/>
         <source>%1 could not be solved: the solver produced a value that is not finite.</source>
         <translation>%1 を解けませんでした: ソルバーが有限でない値を出しました。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="132"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="133"/>
         <source>(Solver: %1)</source>
         <translation>(ソルバー: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="148"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="149"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="152"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="153"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="166"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="167"/>
         <source>converged</source>
         <translation>収束</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="170"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="171"/>
         <source>tolerance reached</source>
         <translation>許容値に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="170"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="171"/>
         <source>iteration limit reached</source>
         <translation>反復回数の上限に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="177"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="178"/>
         <source>failed</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="185"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="186"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>。ソルブで可展性が悪化したため元のままにしました (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="191"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="192"/>
         <source>; settled a second time, since the first settling after the release did not converge</source>
         <translation>; 離した後の最初の反復が収束しなかったため、もう一度収束させました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="195"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="196"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; 長さを保てなかったため (%1)、シートの伸びを許してドラッグをやり直しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="204"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="205"/>
         <source>followed %1 % of the drag and held back %2 mm, since the whole drag %3: the design stays at its last developable state</source>
         <translation>ドラッグの %1 % まで追従し、%2 mm 手前で止めました (ドラッグ全体の結果: %3)、デザインは最後の可展な状態のままです</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="210"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="211"/>
         <source>not applied, since the motion %1: the design stays as it was</source>
         <translation>適用しませんでした (動かした結果: %1)、デザインは元のままです</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="218"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="219"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; シートにより %1 mm 手前で止まりました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="229"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="234"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n 個のパッチが自身の上に折り返され、曲面が自己重複しています: %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="244"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="249"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; 展開図が %n 個のパッチで自身と重なっており (%1)、1 枚のシートから切り出せません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="250"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="255"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="255"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="260"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="260"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="265"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
@@ -4849,27 +4857,27 @@
         <translation>%1 の実行中はソルブを開始しません。先に中止してください (Esc)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="83"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="84"/>
         <source>; vertex %1 lies on the straight line between the pinned vertices %2 and %3, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2 と %3 を結ぶ直線上にあり、この 2 点の距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="90"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="91"/>
         <source>; vertex %1 lies inside the triangle of the pinned vertices %2, %3 and %4, which are as far apart as in the flat sheet, so bending cannot move it: the sheet stretched</source>
         <translation>; 頂点 %1 は固定した頂点 %2、%3、%4 の三角形の内側にあり、これらの距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="173"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="174"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>母線、曲線またはパッチがつぶれる前の最後の有効な状態で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="181"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="182"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (残差が最小の反復 %1 で終了)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="214"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="215"/>
         <source>taken back to where the drag started, since the drag %1: the design stays at its last developable state</source>
         <translation>ドラッグ開始時の状態に戻しました (ドラッグの結果: %1)、デザインは最後の可展な状態のままです</translation>
     </message>

@@ -4,6 +4,7 @@
 #include "io/project_file.h"
 #include "model/model_error.h"
 #include "outcome_text.h"
+#include "sheet_text.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/session/crease_drag.h"
 #include "solver/session/solve_job.h"
@@ -309,6 +310,12 @@ int runDragCommand(const DragArguments& args) {
                       "The sheet is kept: the dragged points are held back %.1f mm by it.\n",
                       assessment.largestHandleGap);
         std::cout << line;
+    }
+    if (!assessment.tautPins.empty()) {
+        QString why = SheetText::tautPins(assessment.tautPins.front().first,
+                                          assessment.tautPins.front().second);
+        why[0] = why[0].toUpper();
+        std::cout << why.toStdString() << ".\n";
     }
     printFoldAndShape(assessment);
     surface = outcome.surfaces.at(index);

@@ -2,6 +2,7 @@
 // (reportOf) and the sentences it is built from. Split from solve_controller.cpp, which runs
 // the jobs.
 #include "problem_text.h"
+#include "sheet_text.h"
 #include "solve_controller.h"
 
 #include "solver/session/drag_lengths.h"
@@ -216,6 +217,10 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result, const Q
                          .arg(takenBackText(*a.takenBack));
         } else if (a.sheetHeld && a.largestHandleGap > solver::kNegligibleLag) {
             status += tr("; held back %1 mm by the sheet").arg(lagText(a.largestHandleGap));
+        }
+        if (!a.tautPins.empty()) {
+            status += QStringLiteral("; ") +
+                      SheetText::tautPins(a.tautPins.front().first, a.tautPins.front().second);
         }
         QList<int> folded;
         for (const auto& [face, places] : a.foldOvers) {

@@ -559,6 +559,10 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
                 assessment.takenBack = std::move(refused);
             }
         }
+        if (drag && settle && assessment.sheetHeld &&
+            assessment.largestHandleGap > kNegligibleLag) {
+            assessment.tautPins = model::findTautPinLines(*result);
+        }
         outcome.surfaces.push_back(*result);
         outcome.assessments.push_back(std::move(assessment));
     }

@@ -129,6 +129,9 @@ struct SurfaceAssessment {
     // The surface keeps its development: a dragged vertex goes only as far as the sheet lets
     // it, and largestHandleGap says how far it lags behind the mouse.
     bool sheetHeld = false;
+    // A drag's release that lags on a held sheet: the pinned vertices that hold a straight line
+    // of the sheet between them (model::findTautPinLines), where a curved crease cannot fold.
+    std::vector<std::pair<model::VertexId, model::VertexId>> tautPins;
 
     // The rest is measured on settled outcomes only (Solve, Edit, a drag's release).
     bool measured = false;

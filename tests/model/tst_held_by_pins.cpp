@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <utility>
+#include <vector>
 
 using namespace devsurf::model;
 
@@ -121,6 +123,22 @@ private slots:
         s.setPinned(east, true);
         s.setPinned(west, true);
         QVERIFY(!findVertexHeldByPins(s, onTheLine));
+        QVERIFY(findTautPinLines(s).empty());
+    }
+
+    void tautLinesBetweenPins() {
+        // fig8 as it comes: its pinned bottom corners (0, 3) hold the bottom edge straight. The
+        // square's four corners: every pair of them. fig13's pins, the crease's middle and the
+        // rim point below it, are joined by a ruling: straight anyway, so none is reported.
+        using Pairs = std::vector<std::pair<VertexId, VertexId>>;
+        QCOMPARE(findTautPinLines(makeExample("fig8").surfaces.front()), (Pairs{{0, 3}}));
+        const CompositeSurface corners = exampleWithPins("sheet", {0, 3, 12, 15});
+        QCOMPARE(findTautPinLines(corners).size(), std::size_t(6));
+        const CompositeSurface fig13 = makeExample("fig13").surfaces.front();
+        QCOMPARE(fig13.pinnedVertices().size(), std::size_t(2));
+        QVERIFY(findTautPinLines(fig13).empty());
+        // One pin holds no line.
+        QVERIFY(findTautPinLines(exampleWithPins("fig8", {0})).empty());
     }
 };
 

@@ -23,6 +23,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace devsurf;
@@ -234,6 +235,9 @@ private slots:
         QVERIFY2(flatness < 1.0, qPrintable(QString::number(flatness)));
         QVERIFY(rise > 20.0); // it turns about the pinned corners
         QVERIFY(rise < 70.0); // but cannot reach the mouse
+        // The job names the pins that hold the sheet flat.
+        using Pairs = std::vector<std::pair<model::VertexId, model::VertexId>>;
+        QCOMPARE(lifted.assessments.front().tautPins, (Pairs{{pins[0], pins[1]}}));
     }
 
     void oneCornerPinnedFoldsAndTurns() {
@@ -265,6 +269,7 @@ private slots:
         QVERIFY2(liftCreases.residualMax < 1e-6,
                  qPrintable(QString::number(liftCreases.residualMax)));
         QVERIFY2(rise > 60.0, qPrintable(QString::number(rise)));
+        QVERIFY(lifted.assessments.front().tautPins.empty()); // one pin holds no line
 
         // The bottom row: the lifted middle turned about the vertical through its centre. 20°:
         // it follows part of the way and folds further.
