@@ -3,6 +3,7 @@
 
 #include "curve_import.h"
 #include "io/occt_support.h"
+#include "step_guard.h"
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRep_Tool.hxx>
@@ -26,6 +27,8 @@
 #include <exception>
 #include <mutex>
 #include <new>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace devsurf::io {
@@ -178,6 +181,16 @@ CurveImportResult readCadCurves(const QString& path, CurveFormat format,
                                 const CurveImportOptions& options) {
     if (format != CurveFormat::Step && format != CurveFormat::Iges) {
         return curveImportFailure(CurveImportError::Code::UnknownFormat);
+    }
+    if (format == CurveFormat::Step) {
+        QFile file(path);
+        if (file.open(QIODevice::ReadOnly)) {
+            const QByteArray bytes = file.readAll();
+            if (const std::optional<std::string> unsafe =
+                    unsafeStepContent(std::string(bytes.constData(), bytes.size()))) {
+                return curveImportFailure(CurveImportError::Code::Damaged, *unsafe);
+            }
+        }
     }
     const std::lock_guard<std::mutex> lock(readerMutex());
     quietOpenCascade();
