@@ -82,8 +82,8 @@ void keepReached(std::vector<Reached>& reached, std::size_t& stride, Reached sta
 }
 
 int partwayIterationLimit(PartwaySearch search, int after) {
-    return search == PartwaySearch::Thorough ? kPartwayProbes * kPartwaySettleFactor * after
-                                             : (kBriefPartwayProbes + 1) * after;
+    return search != PartwaySearch::Brief ? kPartwayProbes * kPartwaySettleFactor * after
+                                          : (kBriefPartwayProbes + 1) * after;
 }
 
 std::optional<Partway>
@@ -113,7 +113,8 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
     if (!reached.empty() && reached.back().moves >= moves.size()) {
         --bad; // the release itself
     }
-    const bool thorough = search == PartwaySearch::Thorough;
+    const bool timed = search == PartwaySearch::Thorough;
+    const bool thorough = timed || search == PartwaySearch::Untimed;
     if (!thorough) {
         // Only states before the drag asked for more than the sheet allows: its moves'
         // residual jumped there.
@@ -159,7 +160,7 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
     const int probes = thorough ? kPartwayProbes : kBriefPartwayProbes;
     const int settleFactor = thorough ? kPartwaySettleFactor : 1;
     for (int probe = 0; probe < probes && bad - good > 1; ++probe) {
-        if ((thorough && std::chrono::steady_clock::now() - start > kPartwayBudget) ||
+        if ((timed && std::chrono::steady_clock::now() - start > kPartwayBudget) ||
             (cancel != nullptr && cancel->load())) {
             break;
         }
@@ -178,7 +179,7 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
                     onIteration(stats);
                 }
                 if ((cancel != nullptr && cancel->load()) ||
-                    (thorough && std::chrono::steady_clock::now() - start > kPartwayBudget)) {
+                    (timed && std::chrono::steady_clock::now() - start > kPartwayBudget)) {
                     stop = true;
                 }
             });

@@ -43,6 +43,8 @@ enum class PartwaySearch {
     // For a model too large for that: a bisection of fewer probes, each settled as long as the
     // release with the pulls soft, over the states before the moves' residual jumped.
     Brief,
+    // Thorough without the time budget (JobRequest::untimedPartway).
+    Untimed,
 };
 
 struct Partway {

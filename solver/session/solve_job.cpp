@@ -532,7 +532,9 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
                 // A thorough search where it fits its budget (partwayFits), else a brief one.
                 if (!d.reached[s].empty()) {
                     const PartwaySearch search =
-                        partwayFits(stepTime) ? PartwaySearch::Thorough : PartwaySearch::Brief;
+                        request.untimedPartway ? PartwaySearch::Untimed
+                                               : (partwayFits(stepTime) ? PartwaySearch::Thorough
+                                                                        : PartwaySearch::Brief);
                     total += partwayIterationLimit(search, steps);
                     partway =
                         followPartway(d.built[s], press, d.reached[s], d.moves[s],

@@ -69,6 +69,10 @@ struct JobRequest {
     // with; none: the pairing and the last step run as Solves.
     std::shared_ptr<const model::reference::ThinningResult> joinTarget;
     double joinRho = 0.0;
+    // A drag too far: the thorough partway search, run to its end instead of within its time
+    // budget (followPartway), so that what it follows does not depend on the machine's speed
+    // (tests; the front ends keep the budget).
+    bool untimedPartway = false;
 };
 
 // The iterations of an approximation's pull when the request does not say.

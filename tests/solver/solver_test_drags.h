@@ -65,6 +65,7 @@ JobOutcome dragThroughJob(const model::CompositeSurface& start, int moves, Aim a
         JobRequest request;
         request.kind = JobKind::VertexDrag;
         request.drag = 1;
+        request.untimedPartway = true; // the same search however fast the machine
         request.settle = k > moves;
         request.surfaces = {start};
         aim(request, std::min(k, moves) / static_cast<double>(moves));

@@ -52,6 +52,7 @@ private slots:
                 solver::JobRequest request;
                 request.kind = solver::JobKind::VertexDrag;
                 request.drag = id;
+                request.untimedPartway = true; // the same search however fast the machine
                 request.settle = k > kMoves;
                 request.surfaces = {start};
                 for (model::VertexId v : middle) {
