@@ -57,7 +57,9 @@ void layOntoKeptSheet(const CompositeSurface& surface, const SampledMesh& mesh, 
         kept.size() != sampledVertexCount(surface, kDevelopmentSamplesPerInterval)) {
         return;
     }
-    const SampledMesh coarse = sampleSurface(surface, kDevelopmentSamplesPerInterval);
+    // The kept development's own sampling, cached with the surface's other derived geometry.
+    const auto keptSampling = DerivedGeometry::of(surface, kDevelopmentSamplesPerInterval);
+    const SampledMesh& coarse = keptSampling->mesh();
     // For every vertex of `mesh`, the kept sample at the same place on the surface, if any.
     std::vector<int> shared(mesh.vertices.size(), -1);
     for (std::size_t v = 0; v < mesh.coarseVertexIds.size(); ++v) {
