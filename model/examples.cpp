@@ -2,9 +2,11 @@
 
 #include "bspline_curve.h"
 #include "development.h"
+#include "held_by_pins.h"
 #include "model/math_constants.h"
 #include "model_error.h"
 #include "sampled_mesh.h"
+#include "sheet_creases.h"
 #include "sheet_domain.h"
 
 #include <algorithm>
@@ -95,8 +97,10 @@ CompositeSurface makeSheet(int size) {
 }
 
 // A flat annulus cut into rings by concentric circular creases and into sectors by radial
-// rulings (Fig. 12).
-CompositeSurface makeAnnulus(int rings) {
+// rulings (Fig. 12). Its arcs have their control points' Greville abscissae on the circles,
+// or, `throughCircles`, lie on them (controlPointsThrough), so that a held annulus's rims lie
+// on its annulus sheet rather than sag 1 mm inside it.
+CompositeSurface makeAnnulus(int rings, bool throughCircles) {
     const int sectors = std::max(3, static_cast<int>(std::lround(4.0 * rings / 3.0)));
     const double innerRadius = 100.0;
     const double ringWidth = 150.0 / rings;
@@ -126,10 +130,12 @@ CompositeSurface makeAnnulus(int rings) {
             const int next = (i + 1) % sectors;
             const double phi0 = angle(i);
             const double phi1 = angle(i + 1);
+            const auto arc = [&](double t) { return onCircle(r, phi0 + t * (phi1 - phi0)); };
+            const Vec3 from = s.position(grid[j][i]);
+            const Vec3 to = s.position(grid[j][next]);
             s.setSpline(grid[j][i], grid[j][next], space,
-                        controlPointsAlong(
-                            space, s.position(grid[j][i]), s.position(grid[j][next]),
-                            [&](double t) { return onCircle(r, phi0 + t * (phi1 - phi0)); }));
+                        throughCircles ? controlPointsThrough(space, from, to, arc)
+                                       : controlPointsAlong(space, from, to, arc));
         }
     }
     return s;
@@ -533,18 +539,42 @@ CompositeSurface makeColumn(int sectors) {
     return s;
 }
 
+// `s`, flat and holding no sheet, holding the sheet it starts as (ExampleSheet::Held).
+void holdStartingSheet(CompositeSurface& s, SheetShape shape) {
+    for (auto taut = findTautPinLines(s); !taut.empty(); taut = findTautPinLines(s)) {
+        s.setPinned(taut.front().second, false);
+    }
+    if (const auto problem = keepDevelopment(s)) {
+        throw ModelError(*problem);
+    }
+    const SampledMesh mesh = sampleSurface(s, kDevelopmentSamplesPerInterval);
+    SheetDomain domain = fittingDomain(shape, mesh, s.development());
+    const bool curvedFolds = std::any_of(s.edges().begin(), s.edges().end(), [](const auto& e) {
+        return e.second.condition == CreaseCondition::CurvedFold;
+    });
+    if (!domain.isFree() && curvedFolds) {
+        // The crease pattern is scored where it is drawn: its creases stay on their curves in
+        // the sheet while the rulings move.
+        domain.creaseCurves = sheetFrameCurves(domain, creaseCurvesAsTheyLie(s, s.development()));
+        domain.creaseCurveOf = assignCreasesToCurves(domain, s, mesh, s.development());
+    }
+    s.setSheetDomain(domain);
+}
+
 } // namespace
 
 const std::vector<ExampleInfo>& builtInExamples() {
     static const std::vector<ExampleInfo> examples{
-        {"sheet", 3, 1, 60}, {"annulus", 6, 1, 60}, {"cylinder", 6, 3, 120},
-        {"mixed", 2, 1, 50}, {"fig8", 3, 2, 30},    {"fig6", 4, 1, 40},
-        {"fig13", 6, 3, 40}, {"torus", 6, 3, 40},   {"column", 12, 6, 48},
+        {"sheet", 3, 1, 60, true, false},      {"annulus", 6, 1, 60, true, false},
+        {"cylinder", 6, 3, 120, false, false}, {"mixed", 2, 1, 50, true, false},
+        {"fig8", 3, 2, 30, true, false},       {"fig6", 4, 1, 40, true, false},
+        {"fig13", 6, 3, 40, false, true},      {"torus", 6, 3, 40, false, false},
+        {"column", 12, 6, 48, false, true},
     };
     return examples;
 }
 
-Project makeExample(const std::string& name, int size) {
+Project makeExample(const std::string& name, int size, ExampleSheet sheet) {
     for (const ExampleInfo& info : builtInExamples()) {
         if (info.name != name) {
             continue;
@@ -564,7 +594,7 @@ Project makeExample(const std::string& name, int size) {
         if (name == "sheet") {
             project.addSurface(makeSheet(size));
         } else if (name == "annulus") {
-            project.addSurface(makeAnnulus(size));
+            project.addSurface(makeAnnulus(size, sheet == ExampleSheet::Held));
         } else if (name == "cylinder") {
             project.addSurface(makeCylinder(size));
         } else if (name == "mixed") {
@@ -579,6 +609,12 @@ Project makeExample(const std::string& name, int size) {
             project.addSurface(makeColumn(size));
         } else {
             project.addSurface(makeFig6(size));
+        }
+        if (sheet == ExampleSheet::Held && info.canHoldItsFlatSheet) {
+            const SheetShape shape = name == "annulus" ? SheetShape::Annulus
+                                     : name == "mixed" ? SheetShape::Free
+                                                       : SheetShape::Rectangle;
+            holdStartingSheet(project.surfaces.front(), shape);
         }
         return project;
     }

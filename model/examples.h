@@ -2,6 +2,7 @@
 
 #include "project.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -12,7 +13,20 @@ struct ExampleInfo {
     int defaultSize;
     int minSize;
     int maxSize;
+    // It starts flat and holds no sheet as built, so it can be made to hold the sheet it starts
+    // as (ExampleSheet::Held); and whether it holds a sheet as built (fig13, column).
+    bool canHoldItsFlatSheet = false;
+    bool holdsSheetAsBuilt = false;
 };
+
+// How a new design from an example treats its sheet (§5). AsBuilt: as the example comes (the
+// command line's default; fig13 and column hold theirs). Held (File ▸ New from Example's
+// default): an example that starts flat holds the sheet it starts as, confined to the
+// smallest sheet of its shape around it (a rectangle for sheet, fig8 and fig6, an annulus for
+// the annulus, free for mixed), its curved-fold creases kept where they lie in it; of two pins
+// at the ends of a straight line in the sheet only the first stays pinned, since a held sheet
+// keeps that line straight and could then only turn about it (model/held_by_pins.h).
+enum class ExampleSheet : std::uint8_t { AsBuilt, Held };
 
 // The built-in examples: sheet, annulus, cylinder, mixed, fig8, fig6, fig13, torus, column.
 // Each is exactly developable as built; fig8, fig6, fig13 and column carry curved-fold
@@ -22,6 +36,7 @@ const std::vector<ExampleInfo>& builtInExamples();
 
 // Builds an example; size is its resolution (see builtInExamples()), 0 means the default.
 // Throws ModelError for an unknown name or a size out of range.
-Project makeExample(const std::string& name, int size = 0);
+Project makeExample(const std::string& name, int size = 0,
+                    ExampleSheet sheet = ExampleSheet::AsBuilt);
 
 } // namespace devsurf::model

@@ -1951,19 +1951,44 @@
 <context>
     <name>devsurf::app::ExampleDialog</name>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="18"/>
+        <location filename="../app/gui/example_dialog.cpp" line="23"/>
+        <source>&amp;Hold the sheet it starts as</source>
+        <translation>Den Bogen &amp;festhalten, aus dem es beginnt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="25"/>
         <source>New from Example</source>
         <translation>Neu aus Beispiel</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="24"/>
+        <location filename="../app/gui/example_dialog.cpp" line="31"/>
         <source>&amp;Example:</source>
         <translation>&amp;Beispiel:</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="25"/>
+        <location filename="../app/gui/example_dialog.cpp" line="32"/>
         <source>&amp;Size:</source>
         <translation>&amp;Größe:</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="62"/>
+        <source>Keep the development: the design stays foldable from the flat sheet it starts as, and a drag that the sheet cannot follow lags behind the mouse instead of stretching it. Of two pins at the ends of a straight line in the sheet only the first stays pinned, since the sheet would keep that line straight. Tools ▸ Hold the Sheet turns it off later.</source>
+        <translation>Die Abwicklung festhalten: Der Entwurf bleibt aus dem ebenen Bogen faltbar, aus dem er beginnt, und ein Ziehen, dem der Bogen nicht folgen kann, bleibt hinter der Maus zurück, statt ihn zu dehnen. Von zwei Pins an den Enden einer geraden Linie im Bogen bleibt nur der erste gepinnt, da der Bogen diese Linie gerade hielte. Werkzeuge ▸ Bogen festhalten schaltet es später aus.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="69"/>
+        <source>This example comes holding its sheet.</source>
+        <translation>Dieses Beispiel hält seinen Bogen bereits fest.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="74"/>
+        <source>A torus unfolds into no one sheet: it keeps local conditions only.</source>
+        <translation>Ein Torus lässt sich in keinen einzelnen Bogen abwickeln: Er hält nur lokale Bedingungen ein.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="75"/>
+        <source>This example does not start flat: hold it around its cylinder with Tools ▸ Hold the Sheet.</source>
+        <translation>Dieses Beispiel beginnt nicht eben: Halten Sie es mit Werkzeuge ▸ Bogen festhalten um seinen Zylinder fest.</translation>
     </message>
 </context>
 <context>
@@ -5161,38 +5186,43 @@
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="181"/>
+        <location filename="../app/gui/workspace.cpp" line="183"/>
+        <source>New design from the example “%1”, holding the sheet it starts as</source>
+        <translation>Neuer Entwurf aus dem Beispiel „%1“, er hält den Bogen fest, aus dem er beginnt</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="186"/>
         <source>New design from the example “%1”</source>
         <translation>Neuer Entwurf aus dem Beispiel „%1“</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="183"/>
+        <location filename="../app/gui/workspace.cpp" line="188"/>
         <source>Cannot create the example</source>
         <translation>Das Beispiel kann nicht erzeugt werden</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="194"/>
+        <location filename="../app/gui/workspace.cpp" line="199"/>
         <source>Recovered unsaved work</source>
         <translation>Ungespeicherte Arbeit wiederhergestellt</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="197"/>
-        <location filename="../app/gui/workspace.cpp" line="200"/>
+        <location filename="../app/gui/workspace.cpp" line="202"/>
+        <location filename="../app/gui/workspace.cpp" line="205"/>
         <source>Cannot recover</source>
         <translation>Wiederherstellen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="213"/>
+        <location filename="../app/gui/workspace.cpp" line="218"/>
         <source>an untitled design</source>
         <translation>einem unbenannten Entwurf</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="215"/>
+        <location filename="../app/gui/workspace.cpp" line="220"/>
         <source>Recover unsaved work</source>
         <translation>Ungespeicherte Arbeit wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="216"/>
+        <location filename="../app/gui/workspace.cpp" line="221"/>
         <source>DevSurf did not close properly last time. Recover the unsaved changes to %1 from %2?</source>
         <translation>DevSurf wurde zuletzt nicht ordnungsgemäß beendet. Die ungespeicherten Änderungen an %1 vom %2 wiederherstellen?</translation>
     </message>
@@ -5351,17 +5381,17 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="32"/>
+        <location filename="../app/gui/main.cpp" line="33"/>
         <source>Design developable surfaces and curved-crease origami.</source>
         <translation>Entwurf abwickelbarer Flächen und Origami mit gekrümmten Falzen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="36"/>
+        <location filename="../app/gui/main.cpp" line="37"/>
         <source>A project file to open.</source>
         <translation>Eine zu öffnende Projektdatei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="39"/>
+        <location filename="../app/gui/main.cpp" line="40"/>
         <source>Start with a built-in example.</source>
         <translation>Mit einem eingebauten Beispiel beginnen.</translation>
     </message>

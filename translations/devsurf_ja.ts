@@ -1928,19 +1928,44 @@
 <context>
     <name>devsurf::app::ExampleDialog</name>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="18"/>
+        <location filename="../app/gui/example_dialog.cpp" line="23"/>
+        <source>&amp;Hold the sheet it starts as</source>
+        <translation>元のシートを保持(&amp;H)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="25"/>
         <source>New from Example</source>
         <translation>例から新規作成</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="24"/>
+        <location filename="../app/gui/example_dialog.cpp" line="31"/>
         <source>&amp;Example:</source>
         <translation>例(&amp;E):</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="25"/>
+        <location filename="../app/gui/example_dialog.cpp" line="32"/>
         <source>&amp;Size:</source>
         <translation>サイズ(&amp;S):</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="62"/>
+        <source>Keep the development: the design stays foldable from the flat sheet it starts as, and a drag that the sheet cannot follow lags behind the mouse instead of stretching it. Of two pins at the ends of a straight line in the sheet only the first stays pinned, since the sheet would keep that line straight. Tools ▸ Hold the Sheet turns it off later.</source>
+        <translation>展開図を保持します: デザインは元の平らなシートから折れるままで、シートが追従できないドラッグは、シートを伸ばす代わりにマウスより遅れます。シート上の直線の両端にある2つのピンは、最初のものだけがピン留めのまま残ります (シートがその直線をまっすぐに保つため)。後で ツール ▸ シートを保持 でオフにできます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="69"/>
+        <source>This example comes holding its sheet.</source>
+        <translation>この例は最初からシートを保持しています。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="74"/>
+        <source>A torus unfolds into no one sheet: it keeps local conditions only.</source>
+        <translation>トーラスは1枚のシートに展開できません: 局所的な条件だけを保ちます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="75"/>
+        <source>This example does not start flat: hold it around its cylinder with Tools ▸ Hold the Sheet.</source>
+        <translation>この例は平らな状態から始まりません: ツール ▸ シートを保持 で円柱の周りに保持してください。</translation>
     </message>
 </context>
 <context>
@@ -5094,38 +5119,43 @@
         <translation>%1 を保存しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="181"/>
+        <location filename="../app/gui/workspace.cpp" line="183"/>
+        <source>New design from the example “%1”, holding the sheet it starts as</source>
+        <translation>例「%1」から、元のシートを保持する新しいデザインを作成しました</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/workspace.cpp" line="186"/>
         <source>New design from the example “%1”</source>
         <translation>例「%1」から新しいデザインを作成しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="183"/>
+        <location filename="../app/gui/workspace.cpp" line="188"/>
         <source>Cannot create the example</source>
         <translation>例を作成できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="194"/>
+        <location filename="../app/gui/workspace.cpp" line="199"/>
         <source>Recovered unsaved work</source>
         <translation>未保存の作業を復元しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="197"/>
-        <location filename="../app/gui/workspace.cpp" line="200"/>
+        <location filename="../app/gui/workspace.cpp" line="202"/>
+        <location filename="../app/gui/workspace.cpp" line="205"/>
         <source>Cannot recover</source>
         <translation>復元できません</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="213"/>
+        <location filename="../app/gui/workspace.cpp" line="218"/>
         <source>an untitled design</source>
         <translation>無題のデザイン</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="215"/>
+        <location filename="../app/gui/workspace.cpp" line="220"/>
         <source>Recover unsaved work</source>
         <translation>未保存の作業の復元</translation>
     </message>
     <message>
-        <location filename="../app/gui/workspace.cpp" line="216"/>
+        <location filename="../app/gui/workspace.cpp" line="221"/>
         <source>DevSurf did not close properly last time. Recover the unsaved changes to %1 from %2?</source>
         <translation>前回 DevSurf は正常に終了しませんでした。%1 への未保存の変更を %2 から復元しますか?</translation>
     </message>
@@ -5284,17 +5314,17 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/gui/main.cpp" line="32"/>
+        <location filename="../app/gui/main.cpp" line="33"/>
         <source>Design developable surfaces and curved-crease origami.</source>
         <translation>可展面と曲線折り折り紙を設計します。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="36"/>
+        <location filename="../app/gui/main.cpp" line="37"/>
         <source>A project file to open.</source>
         <translation>開くプロジェクトファイル。</translation>
     </message>
     <message>
-        <location filename="../app/gui/main.cpp" line="39"/>
+        <location filename="../app/gui/main.cpp" line="40"/>
         <source>Start with a built-in example.</source>
         <translation>組み込みの例で開始します。</translation>
     </message>

@@ -46,17 +46,32 @@ int commandExample(const SubcommandArguments& args) {
         size = static_cast<int>(parseWhole(*text, "--size", 1, 1000000));
     }
     const std::string output = args.required("o", kMissingOutput);
+    const bool holdSheet = args.isSet("hold-sheet");
+    if (holdSheet) {
+        for (const model::ExampleInfo& info : model::builtInExamples()) {
+            if (info.name == name && !info.canHoldItsFlatSheet && !info.holdsSheetAsBuilt) {
+                const std::string why = name == "torus"
+                                            ? "a torus unfolds into no one sheet"
+                                            : "hold it around its cylinder with 'devsurf-cli "
+                                              "sheet FILE --free'";
+                throw UsageError{"'" + name + "' does not start flat, so --hold-sheet does not " +
+                                 "apply (" + why + ")"};
+            }
+        }
+    }
     checkOutput(output, {}, OutputKind::Project, "the project");
     model::Project project;
     try {
-        project = model::makeExample(name, size);
+        project = model::makeExample(
+            name, size, holdSheet ? model::ExampleSheet::Held : model::ExampleSheet::AsBuilt);
     } catch (const model::ModelError& error) {
         throw UsageError{withoutFinalPeriod(ProblemText::of(error.problem()).toStdString())};
     }
     writeProject(project, output);
-    std::cout << "Wrote " << output << " (" << project.surfaces.front().name() << ", "
-              << project.surfaces.front().faces().size() << " faces, "
-              << project.surfaces.front().controlPointCount() << " control points)\n";
+    const model::CompositeSurface& surface = project.surfaces.front();
+    std::cout << "Wrote " << output << " (" << surface.name() << ", " << surface.faces().size()
+              << " faces, " << surface.controlPointCount() << " control points"
+              << (surface.keepsDevelopment() ? ", holding its sheet" : "") << ")\n";
     return kExitOk;
 }
 

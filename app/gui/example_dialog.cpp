@@ -3,17 +3,24 @@
 
 #include "model/examples.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
 #include <QLabel>
+#include <QSettings>
 #include <QSpinBox>
 #include <QVBoxLayout>
 
 namespace devsurf::app {
 
+namespace {
+const QString kHoldSheetKey = QStringLiteral("newFromExample/holdSheet");
+} // namespace
+
 ExampleDialog::ExampleDialog(QWidget* parent)
     : QDialog(parent), m_examples(new QComboBox(this)), m_size(new QSpinBox(this)),
+      m_holdSheet(new QCheckBox(tr("&Hold the sheet it starts as"), this)),
       m_description(new QLabel(this)) {
     setWindowTitle(tr("New from Example"));
     for (const model::ExampleInfo& info : model::builtInExamples()) {
@@ -23,6 +30,13 @@ ExampleDialog::ExampleDialog(QWidget* parent)
     auto* form = new QFormLayout;
     form->addRow(tr("&Example:"), m_examples);
     form->addRow(tr("&Size:"), m_size);
+    m_holdSheet->setObjectName(QStringLiteral("exampleHoldSheet"));
+    form->addRow(QString(), m_holdSheet);
+    connect(m_holdSheet, &QCheckBox::toggled, this, [this](bool on) {
+        if (m_holdSheet->isEnabled()) {
+            QSettings().setValue(kHoldSheetKey, on);
+        }
+    });
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -40,6 +54,27 @@ void ExampleDialog::exampleChanged(int index) {
     m_size->setRange(info.minSize, info.maxSize);
     m_size->setValue(info.defaultSize);
     m_description->setText(exampleDescription(info.name));
+    const QSignalBlocker blocker(m_holdSheet);
+    m_holdSheet->setEnabled(info.canHoldItsFlatSheet);
+    if (info.canHoldItsFlatSheet) {
+        m_holdSheet->setChecked(rememberedSheet() == model::ExampleSheet::Held);
+        m_holdSheet->setToolTip(
+            tr("Keep the development: the design stays foldable from the flat sheet it starts "
+               "as, and a drag that the sheet cannot follow lags behind the mouse instead of "
+               "stretching it. Of two pins at the ends of a straight line in the sheet only "
+               "the first stays pinned, since the sheet would keep that line straight. Tools ▸ "
+               "Hold the Sheet turns it off later."));
+    } else if (info.holdsSheetAsBuilt) {
+        m_holdSheet->setChecked(true);
+        m_holdSheet->setToolTip(tr("This example comes holding its sheet."));
+    } else {
+        m_holdSheet->setChecked(false);
+        m_holdSheet->setToolTip(
+            info.name == "torus"
+                ? tr("A torus unfolds into no one sheet: it keeps local conditions only.")
+                : tr("This example does not start flat: hold it around its cylinder with Tools ▸ "
+                     "Hold the Sheet."));
+    }
 }
 
 QString ExampleDialog::exampleName() const {
@@ -48,6 +83,15 @@ QString ExampleDialog::exampleName() const {
 
 int ExampleDialog::exampleSize() const {
     return m_size->value();
+}
+
+model::ExampleSheet ExampleDialog::rememberedSheet() {
+    return QSettings().value(kHoldSheetKey, true).toBool() ? model::ExampleSheet::Held
+                                                           : model::ExampleSheet::AsBuilt;
+}
+
+model::ExampleSheet ExampleDialog::exampleSheet() const {
+    return m_holdSheet->isChecked() ? model::ExampleSheet::Held : model::ExampleSheet::AsBuilt;
 }
 
 } // namespace devsurf::app

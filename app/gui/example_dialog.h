@@ -1,14 +1,20 @@
 #pragma once
 
+#include "model/examples.h"
+
 #include <QDialog>
 
+class QCheckBox;
 class QComboBox;
 class QLabel;
 class QSpinBox;
 
 namespace devsurf::app {
 
-// Chooses a built-in example and its size for File ▸ New from Example.
+// Chooses a built-in example, its size and whether it holds its sheet for File ▸ New from
+// Example. Holding the sheet is on by default for an example that starts flat (remembered
+// when the designer turns it off); examples that hold theirs as built, or cannot hold a flat
+// one, show it checked or cleared and disabled, with a tooltip that says why.
 class ExampleDialog : public QDialog {
     Q_OBJECT
 public:
@@ -16,12 +22,17 @@ public:
 
     QString exampleName() const;
     int exampleSize() const;
+    model::ExampleSheet exampleSheet() const;
+    // Whether new designs hold their sheet, as the designer last chose (held by default): the
+    // example the application starts on follows it too.
+    static model::ExampleSheet rememberedSheet();
 
 private:
     void exampleChanged(int index);
 
     QComboBox* m_examples;
     QSpinBox* m_size;
+    QCheckBox* m_holdSheet;
     QLabel* m_description;
 };
 

@@ -1,5 +1,6 @@
 // DevSurf desktop application.
 
+#include "example_dialog.h"
 #include "main_window.h"
 #include "solver/core/blas_info.h"
 #include "translations.h"
@@ -51,7 +52,7 @@ int main(int argc, char** argv) {
     } else {
         const QString name =
             parser.isSet(example) ? parser.value(example) : QStringLiteral("annulus");
-        workspace->newFromExample(name, 0);
+        workspace->newFromExample(name, 0, devsurf::app::ExampleDialog::rememberedSheet());
     }
     QTimer::singleShot(0, &window, [workspace] { workspace->offerRecovery(); });
     return QApplication::exec();

@@ -175,10 +175,15 @@ bool Workspace::saveTo(const QString& path) {
     return true;
 }
 
-void Workspace::newFromExample(const QString& name, int size) {
+void Workspace::newFromExample(const QString& name, int size, model::ExampleSheet sheet) {
     try {
-        m_document->resetProject(model::makeExample(name.toStdString(), size));
-        emit statusMessage(tr("New design from the example “%1”").arg(name));
+        m_document->resetProject(model::makeExample(name.toStdString(), size, sheet));
+        const bool holds = sheet == model::ExampleSheet::Held && m_document->surfaceCount() == 1 &&
+                           m_document->surface(0).keepsDevelopment();
+        emit statusMessage(holds ? tr("New design from the example “%1”, holding the sheet it "
+                                      "starts as")
+                                       .arg(name)
+                                 : tr("New design from the example “%1”").arg(name));
     } catch (const model::ModelError& error) {
         showError(tr("Cannot create the example"), ProblemText::of(error.problem()));
     }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "model/examples.h"
+
 #include <QObject>
 #include <QString>
 #include <QStringList>
@@ -36,7 +38,10 @@ public:
     bool save();                    // Save As when the document has no file yet
     bool saveAs();
     bool saveTo(const QString& path); // shows an error dialog and returns false on failure
-    void newFromExample(const QString& name, int size);
+    // A new design from a built-in example (size 0: its default); `sheet` says whether an
+    // example that starts flat holds the sheet it starts as.
+    void newFromExample(const QString& name, int size,
+                        model::ExampleSheet sheet = model::ExampleSheet::AsBuilt);
     // A message box with the sentence; details (e.g. every problem of a refused file) are
     // listed below it.
     void showError(const QString& title, const QString& sentence,

@@ -82,6 +82,37 @@ private slots:
         QCOMPARE(cli({"sheet", cylinder, "-o", refused}).exitCode, 1);
     }
 
+    void examplesHoldTheSheetTheyStartAs() {
+        // `example --hold-sheet`, as File ▸ New from Example makes it: fig6 on its 300 × 200
+        // rectangle, only its first bottom corner pinned, its crease kept where it lies; its
+        // top edge pulled in and up folds it along the crease from its sheet.
+        const QString file = path("fig6-held.devsurf");
+        const test::CliRun made = cli({"example", "fig6", "--hold-sheet", "-o", file});
+        QCOMPARE(made.exitCode, 0);
+        QVERIFY2(made.out.contains(QStringLiteral("holding its sheet")), qPrintable(made.out));
+        const model::CompositeSurface fig6 = io::loadProjectFile(file).surfaces[0];
+        QVERIFY(fig6.keepsDevelopment());
+        QCOMPARE(fig6.sheetDomain().shape, model::SheetShape::Rectangle);
+        QCOMPARE(fig6.sheetDomain().width, 300.0);
+        QCOMPARE(fig6.pinnedVertices().size(), std::size_t(1));
+        QCOMPARE(fig6.sheetDomain().creaseCurveOf.size(), std::size_t(1));
+        const QString folded = path("fig6-folded.devsurf");
+        const test::CliRun drag =
+            cli({"drag", file, "--vertices", "4,5", "--by", "0,-30,60", "-o", folded});
+        QCOMPARE(drag.exitCode, 0);
+        QVERIFY2(drag.out.contains(QStringLiteral("tolerance 1.0e-08 reached")),
+                 qPrintable(drag.out));
+        const model::CompositeSurface after = io::loadProjectFile(folded).surfaces[0];
+        QVERIFY(after.position(4).z > 40.0);
+        QCOMPARE(after.sheetDomain(), fig6.sheetDomain());
+        // Without it, as the example comes; a torus or the cylinder cannot hold a flat sheet.
+        QCOMPARE(cli({"example", "fig6", "-o", file}).exitCode, 0);
+        QVERIFY(!io::loadProjectFile(file).surfaces[0].keepsDevelopment());
+        const test::CliRun torus = cli({"example", "torus", "--hold-sheet", "-o", file});
+        QCOMPARE(torus.exitCode, 1);
+        QVERIFY2(torus.err.contains(QStringLiteral("does not start flat")), qPrintable(torus.err));
+    }
+
     void sheetShapes() {
         // The annulus example on an annulus of radii 100 and 250 mm: placed on its development,
         // written, listed by info; a Solve moves the development's rims onto the circles.

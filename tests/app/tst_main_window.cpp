@@ -1,5 +1,6 @@
 #include "autosaver.h"
 #include "edit_refusal.h"
+#include "example_dialog.h"
 #include "io/project_file.h"
 #include "main_window.h"
 #include "model/document/commands/command_or_error.h"
@@ -20,6 +21,9 @@
 #include "workspace.h"
 
 #include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -44,6 +48,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <functional>
 #include <set>
 
 #include <set>
@@ -97,6 +102,65 @@ private slots:
             QVERIFY2(coloursInCentre(view3d) > 8, info.name.c_str());
             QVERIFY2(coloursInCentre(development) > 8, info.name.c_str());
         }
+    }
+
+    void newFromExampleHoldsTheSheetByDefault() {
+        // File ▸ New from Example: an example that starts flat holds its sheet unless the
+        // designer clears the box, which is remembered; others show why they cannot choose.
+        app::MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        auto* newAction = window.findChild<QAction*>(QStringLiteral("actionNew"));
+        QVERIFY(newAction);
+        // Runs the dialog: `check` sees it with `example` chosen, then it is accepted.
+        auto runDialog = [&](const QString& example, const std::function<void(QCheckBox*)>& check) {
+            bool seen = false;
+            QTimer::singleShot(0, [&] {
+                auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+                QVERIFY(dialog);
+                auto* examples = dialog->findChild<QComboBox*>();
+                auto* box = dialog->findChild<QCheckBox*>(QStringLiteral("exampleHoldSheet"));
+                QVERIFY(examples && box);
+                examples->setCurrentText(example);
+                check(box);
+                seen = true;
+                dialog->accept();
+            });
+            newAction->trigger();
+            QVERIFY(seen);
+        };
+        auto surface = [&] { return window.workspace()->document()->project().surfaces.front(); };
+        runDialog(QStringLiteral("fig8"), [](QCheckBox* box) {
+            QVERIFY(box->isEnabled());
+            QVERIFY(box->isChecked());
+        });
+        QCOMPARE(surface().name(), std::string("fig8"));
+        QVERIFY(surface().keepsDevelopment());
+        QCOMPARE(surface().sheetDomain().shape, model::SheetShape::Rectangle);
+        QCOMPARE(surface().pinnedVertices().size(), std::size_t(1));
+
+        runDialog(QStringLiteral("fig8"), [](QCheckBox* box) { box->setChecked(false); });
+        QVERIFY(!surface().keepsDevelopment());
+        QCOMPARE(surface().pinnedVertices().size(), std::size_t(2));
+        QCOMPARE(app::ExampleDialog::rememberedSheet(), model::ExampleSheet::AsBuilt);
+        runDialog(QStringLiteral("annulus"), [](QCheckBox* box) { QVERIFY(!box->isChecked()); });
+        QVERIFY(!surface().keepsDevelopment());
+
+        runDialog(QStringLiteral("torus"), [](QCheckBox* box) {
+            QVERIFY(!box->isEnabled());
+            QVERIFY(!box->isChecked());
+            QVERIFY(!box->toolTip().isEmpty()); // why it cannot (in the test's language)
+        });
+        runDialog(QStringLiteral("column"), [](QCheckBox* box) {
+            QVERIFY(!box->isEnabled());
+            QVERIFY(box->isChecked());
+        });
+        QVERIFY(surface().keepsDevelopment()); // as built
+        // A disabled box does not change what is remembered.
+        QCOMPARE(app::ExampleDialog::rememberedSheet(), model::ExampleSheet::AsBuilt);
+        runDialog(QStringLiteral("annulus"), [](QCheckBox* box) { box->setChecked(true); });
+        QCOMPARE(surface().sheetDomain().shape, model::SheetShape::Annulus);
+        QCOMPARE(app::ExampleDialog::rememberedSheet(), model::ExampleSheet::Held);
     }
 
     void pickingAVertexSelectsItEverywhere() {

@@ -1,12 +1,17 @@
 #include "model/bspline_curve.h"
 #include "model/examples.h"
+#include "model/held_by_pins.h"
 #include "model/model_error.h"
+#include "model/sampled_mesh.h"
 #include "model/sheet_domain.h"
 #include "model/strip.h"
 #include "model/surface_statistics.h"
 #include "test_registry.h"
 
 #include <QTest>
+
+#include <map>
+#include <string>
 
 using namespace devsurf::model;
 
@@ -194,6 +199,62 @@ private slots:
         }
         QCOMPARE(fig6Folds, 1);
         QCOMPARE(fig6.pinnedVertices().size(), std::size_t(2));
+    }
+
+    void flatExamplesHoldTheSheetTheyStartAs() {
+        // New from Example's default: every example that starts flat keeps its development on
+        // the sheet of its shape around it, isometric to it (pairs of every sampled face, in
+        // space and in the sheet), its boundary on the sheet's, no two pins at the ends of a
+        // straight line in the sheet, and its curved folds held on curves in the sheet.
+        const std::map<std::string, SheetShape> shapes{{"sheet", SheetShape::Rectangle},
+                                                       {"annulus", SheetShape::Annulus},
+                                                       {"mixed", SheetShape::Free},
+                                                       {"fig8", SheetShape::Rectangle},
+                                                       {"fig6", SheetShape::Rectangle}};
+        for (const ExampleInfo& info : builtInExamples()) {
+            const CompositeSurface built = makeExample(info.name).surfaces[0];
+            const CompositeSurface held = makeExample(info.name, 0, ExampleSheet::Held).surfaces[0];
+            QCOMPARE(built.keepsDevelopment(), info.holdsSheetAsBuilt);
+            QCOMPARE(info.canHoldItsFlatSheet, shapes.count(info.name) == 1);
+            if (!info.canHoldItsFlatSheet) {
+                // Unchanged: held as built (fig13, column) or holding no flat sheet.
+                QCOMPARE(held.keepsDevelopment(), built.keepsDevelopment());
+                QCOMPARE(held.pinnedVertices(), built.pinnedVertices());
+                continue;
+            }
+            QVERIFY2(held.keepsDevelopment(), info.name.c_str());
+            QCOMPARE(held.sheetDomain().shape, shapes.at(info.name));
+            const SampledMesh mesh = sampleSurface(held, kDevelopmentSamplesPerInterval);
+            const std::vector<Vec2>& flat = held.development();
+            QCOMPARE(flat.size(), mesh.vertices.size());
+            double stretch = 0.0;
+            for (const std::vector<int>& face : mesh.faces) {
+                for (std::size_t i = 0; i < face.size(); ++i) {
+                    for (std::size_t j = i + 1; j < face.size(); ++j) {
+                        const auto a = static_cast<std::size_t>(face[i]);
+                        const auto b = static_cast<std::size_t>(face[j]);
+                        stretch = std::max(stretch,
+                                           std::abs((mesh.vertices[a] - mesh.vertices[b]).norm() -
+                                                    (flat[a] - flat[b]).norm()));
+                    }
+                }
+            }
+            QVERIFY2(stretch < 1e-9, qPrintable(QString::number(stretch)));
+            // The annulus's rims interpolate their circles, 0.004 mm between the samples.
+            const double gap = largestDomainGap(held.sheetDomain(), mesh, flat);
+            QVERIFY2(gap < 0.01, qPrintable(QString::number(gap)));
+            QVERIFY(findTautPinLines(held).empty());
+            const bool curvedFolds = info.name == "fig8" || info.name == "fig6";
+            QCOMPARE(!held.sheetDomain().creaseCurveOf.empty(), curvedFolds);
+            if (curvedFolds) {
+                // Of the two pinned bottom corners only the first (at the origin) stays.
+                QCOMPARE(built.pinnedVertices().size(), std::size_t(2));
+                QCOMPARE(held.pinnedVertices().size(), std::size_t(1));
+                QVERIFY(held.position(*held.pinnedVertices().begin()).norm() < 1e-12);
+            } else {
+                QCOMPARE(held.pinnedVertices(), built.pinnedVertices());
+            }
+        }
     }
 
     void examplesScaleWithSize() {

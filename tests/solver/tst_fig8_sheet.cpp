@@ -36,8 +36,12 @@ constexpr int kFig8Samples = model::kDevelopmentSamplesPerInterval;
 
 // fig8 holding its sheet: on the 300 × 300 mm rectangle with its creases held where they lie
 // (`onSquare`), else as it unfolds (the development fixed); with its bottom-right corner
-// unpinned unless `bothCorners`.
+// unpinned unless `bothCorners`. One corner on the square is the example as File ▸ New from
+// Example makes it (ExampleSheet::Held), so the tests below also check that.
 model::CompositeSurface heldFig8(bool bothCorners, bool onSquare) {
+    if (!bothCorners && onSquare) {
+        return model::makeExample("fig8", 0, model::ExampleSheet::Held).surfaces.front();
+    }
     model::CompositeSurface fig8 = model::makeExample("fig8").surfaces.front();
     if (!bothCorners) {
         for (const auto& [id, p] : fig8.vertices()) {

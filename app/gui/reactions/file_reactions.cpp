@@ -24,7 +24,7 @@ void NewFromExampleReaction::onTriggered() {
     if (dialog.exec() != QDialog::Accepted || !workspace()->maybeSave()) {
         return;
     }
-    workspace()->newFromExample(dialog.exampleName(), dialog.exampleSize());
+    workspace()->newFromExample(dialog.exampleName(), dialog.exampleSize(), dialog.exampleSheet());
 }
 
 void OpenReaction::onTriggered() {
