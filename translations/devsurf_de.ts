@@ -202,6 +202,16 @@
         <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
         <translation>Ein Streifen, ein spitzer Streifen, ein Kegel und ein ebenes Flächenstück; Größe Intervalle je Kurve.</translation>
     </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="60"/>
+        <source>A flat square of size × size strips with curved creases carrying the curved-fold condition, holding its square sheet with the creases where they lie in it, its bottom-left corner pinned. Select the four middle vertices and drag them up (Drag tool, G) to fold it.</source>
+        <translation>Ein ebenes Quadrat aus size × size Streifen mit gekrümmten Falzen, die die Bedingung des gekrümmten Falzes tragen; es hält seinen quadratischen Bogen fest, die Falze dort, wo sie darin liegen, seine linke untere Ecke gepinnt. Wählen Sie die vier mittleren Eckpunkte und ziehen Sie sie nach oben (Ziehwerkzeug, G), um es zu falten.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="68"/>
+        <source>Two strips joined by one curved crease with the curved-fold condition, holding its rectangular sheet with the crease where it lies in it, its bottom-left corner pinned; size intervals per curve. Select both top corners and drag them up and in towards the crease to fold it.</source>
+        <translation>Zwei Streifen, verbunden durch einen gekrümmten Falz mit der Bedingung des gekrümmten Falzes; sie halten ihren rechteckigen Bogen fest, der Falz dort, wo er darin liegt, die linke untere Ecke gepinnt; size Intervalle je Kurve. Wählen Sie beide oberen Ecken und ziehen Sie sie nach oben und zum Falz hin, um es zu falten.</translation>
+    </message>
 </context>
 <context>
     <name>FaceType</name>
@@ -1961,32 +1971,32 @@
         <translation>Neu aus Beispiel</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="31"/>
+        <location filename="../app/gui/example_dialog.cpp" line="33"/>
         <source>&amp;Example:</source>
         <translation>&amp;Beispiel:</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="32"/>
+        <location filename="../app/gui/example_dialog.cpp" line="34"/>
         <source>&amp;Size:</source>
         <translation>&amp;Größe:</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="62"/>
+        <location filename="../app/gui/example_dialog.cpp" line="64"/>
         <source>Keep the development: the design stays foldable from the flat sheet it starts as, and a drag that the sheet cannot follow lags behind the mouse instead of stretching it. Of two pins at the ends of a straight line in the sheet only the first stays pinned, since the sheet would keep that line straight. Tools ▸ Hold the Sheet turns it off later.</source>
         <translation>Die Abwicklung festhalten: Der Entwurf bleibt aus dem ebenen Bogen faltbar, aus dem er beginnt, und ein Ziehen, dem der Bogen nicht folgen kann, bleibt hinter der Maus zurück, statt ihn zu dehnen. Von zwei Pins an den Enden einer geraden Linie im Bogen bleibt nur der erste gepinnt, da der Bogen diese Linie gerade hielte. Werkzeuge ▸ Bogen festhalten schaltet es später aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="69"/>
+        <location filename="../app/gui/example_dialog.cpp" line="71"/>
         <source>This example comes holding its sheet.</source>
         <translation>Dieses Beispiel hält seinen Bogen bereits fest.</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="74"/>
+        <location filename="../app/gui/example_dialog.cpp" line="76"/>
         <source>A torus unfolds into no one sheet: it keeps local conditions only.</source>
         <translation>Ein Torus lässt sich in keinen einzelnen Bogen abwickeln: Er hält nur lokale Bedingungen ein.</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="75"/>
+        <location filename="../app/gui/example_dialog.cpp" line="77"/>
         <source>This example does not start flat: hold it around its cylinder with Tools ▸ Hold the Sheet.</source>
         <translation>Dieses Beispiel beginnt nicht eben: Halten Sie es mit Werkzeuge ▸ Bogen festhalten um seinen Zylinder fest.</translation>
     </message>

@@ -200,6 +200,16 @@
         <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
         <translation>ストリップ、尖ったストリップ、錐面、平面パッチ。曲線ごとにサイズ個の区間。</translation>
     </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="60"/>
+        <source>A flat square of size × size strips with curved creases carrying the curved-fold condition, holding its square sheet with the creases where they lie in it, its bottom-left corner pinned. Select the four middle vertices and drag them up (Drag tool, G) to fold it.</source>
+        <translation>曲線折りの条件を持つ曲線の折り線が入った size × size 本のストリップからなる平らな正方形。正方形のシートを保持し、折り線はシート上の今の位置に保たれ、左下の角が固定されています。中央の4頂点を選択して上にドラッグすると (ドラッグツール、G) 折れます。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="68"/>
+        <source>Two strips joined by one curved crease with the curved-fold condition, holding its rectangular sheet with the crease where it lies in it, its bottom-left corner pinned; size intervals per curve. Select both top corners and drag them up and in towards the crease to fold it.</source>
+        <translation>曲線折りの条件を持つ1本の曲線の折り線でつながった2本のストリップ。長方形のシートを保持し、折り線はシート上の今の位置に保たれ、左下の角が固定されています。曲線1本あたり size 区間。上の両角を選択して、上へ、そして折り線の方へドラッグすると折れます。</translation>
+    </message>
 </context>
 <context>
     <name>FaceType</name>
@@ -1938,32 +1948,32 @@
         <translation>例から新規作成</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="31"/>
+        <location filename="../app/gui/example_dialog.cpp" line="33"/>
         <source>&amp;Example:</source>
         <translation>例(&amp;E):</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="32"/>
+        <location filename="../app/gui/example_dialog.cpp" line="34"/>
         <source>&amp;Size:</source>
         <translation>サイズ(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="62"/>
+        <location filename="../app/gui/example_dialog.cpp" line="64"/>
         <source>Keep the development: the design stays foldable from the flat sheet it starts as, and a drag that the sheet cannot follow lags behind the mouse instead of stretching it. Of two pins at the ends of a straight line in the sheet only the first stays pinned, since the sheet would keep that line straight. Tools ▸ Hold the Sheet turns it off later.</source>
         <translation>展開図を保持します: デザインは元の平らなシートから折れるままで、シートが追従できないドラッグは、シートを伸ばす代わりにマウスより遅れます。シート上の直線の両端にある2つのピンは、最初のものだけがピン留めのまま残ります (シートがその直線をまっすぐに保つため)。後で ツール ▸ シートを保持 でオフにできます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="69"/>
+        <location filename="../app/gui/example_dialog.cpp" line="71"/>
         <source>This example comes holding its sheet.</source>
         <translation>この例は最初からシートを保持しています。</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="74"/>
+        <location filename="../app/gui/example_dialog.cpp" line="76"/>
         <source>A torus unfolds into no one sheet: it keeps local conditions only.</source>
         <translation>トーラスは1枚のシートに展開できません: 局所的な条件だけを保ちます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="75"/>
+        <location filename="../app/gui/example_dialog.cpp" line="77"/>
         <source>This example does not start flat: hold it around its cylinder with Tools ▸ Hold the Sheet.</source>
         <translation>この例は平らな状態から始まりません: ツール ▸ シートを保持 で円柱の周りに保持してください。</translation>
     </message>

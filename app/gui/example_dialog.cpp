@@ -27,6 +27,8 @@ ExampleDialog::ExampleDialog(QWidget* parent)
         m_examples->addItem(QString::fromStdString(info.name));
     }
     m_description->setWordWrap(true);
+    // Wide enough for the longest description in a few lines; describe() fits the height.
+    m_description->setMinimumWidth(60 * fontMetrics().averageCharWidth());
     auto* form = new QFormLayout;
     form->addRow(tr("&Example:"), m_examples);
     form->addRow(tr("&Size:"), m_size);
@@ -36,6 +38,7 @@ ExampleDialog::ExampleDialog(QWidget* parent)
         if (m_holdSheet->isEnabled()) {
             QSettings().setValue(kHoldSheetKey, on);
         }
+        describe();
     });
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
@@ -53,7 +56,6 @@ void ExampleDialog::exampleChanged(int index) {
     const model::ExampleInfo& info = model::builtInExamples().at(static_cast<std::size_t>(index));
     m_size->setRange(info.minSize, info.maxSize);
     m_size->setValue(info.defaultSize);
-    m_description->setText(exampleDescription(info.name));
     const QSignalBlocker blocker(m_holdSheet);
     m_holdSheet->setEnabled(info.canHoldItsFlatSheet);
     if (info.canHoldItsFlatSheet) {
@@ -74,6 +76,20 @@ void ExampleDialog::exampleChanged(int index) {
                 ? tr("A torus unfolds into no one sheet: it keeps local conditions only.")
                 : tr("This example does not start flat: hold it around its cylinder with Tools ▸ "
                      "Hold the Sheet."));
+    }
+    describe();
+}
+
+void ExampleDialog::describe() {
+    const std::string name = exampleName().toStdString();
+    const QString held = m_holdSheet->isEnabled() && m_holdSheet->isChecked()
+                             ? heldExampleDescription(name)
+                             : QString();
+    m_description->setText(held.isEmpty() ? exampleDescription(name) : held);
+    if (layout() != nullptr) {
+        layout()->activate();
+        resize(width(),
+               heightForWidth(width()) > 0 ? heightForWidth(width()) : sizeHint().height());
     }
 }
 

@@ -29,6 +29,7 @@ public:
 
 private:
     void exampleChanged(int index);
+    void describe(); // the example's description, as it holds its sheet or not
 
     QComboBox* m_examples;
     QSpinBox* m_size;

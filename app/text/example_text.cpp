@@ -55,4 +55,24 @@ QString exampleDescription(const std::string& name) {
                                        "intervals per curve.");
 }
 
+QString heldExampleDescription(const std::string& name) {
+    if (name == "fig8") {
+        return QCoreApplication::translate(
+            "ExampleDialog",
+            "A flat square of size × size strips with curved creases carrying the curved-fold "
+            "condition, holding its square sheet with the creases where they lie in it, its "
+            "bottom-left corner pinned. Select the four middle vertices and drag them up (Drag "
+            "tool, G) to fold it.");
+    }
+    if (name == "fig6") {
+        return QCoreApplication::translate(
+            "ExampleDialog",
+            "Two strips joined by one curved crease with the curved-fold condition, holding its "
+            "rectangular sheet with the crease where it lies in it, its bottom-left corner "
+            "pinned; size intervals per curve. Select both top corners and drag them up and in "
+            "towards the crease to fold it.");
+    }
+    return {};
+}
+
 } // namespace devsurf::app

@@ -1,6 +1,7 @@
 #include "autosaver.h"
 #include "edit_refusal.h"
 #include "example_dialog.h"
+#include "example_text.h"
 #include "io/project_file.h"
 #include "main_window.h"
 #include "model/document/commands/command_or_error.h"
@@ -30,6 +31,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QItemSelectionModel>
+#include <QLabel>
 #include <QLockFile>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -47,6 +49,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <set>
@@ -130,9 +133,22 @@ private slots:
             QVERIFY(seen);
         };
         auto surface = [&] { return window.workspace()->document()->project().surfaces.front(); };
-        runDialog(QStringLiteral("fig8"), [](QCheckBox* box) {
+        // The description is the held example's while the box is checked.
+        auto described = [](QCheckBox* box, const QString& text) {
+            const QList<QLabel*> labels = box->window()->findChildren<QLabel*>();
+            return std::any_of(labels.begin(), labels.end(),
+                               [&](const QLabel* label) { return label->text().contains(text); });
+        };
+        runDialog(QStringLiteral("fig8"), [&](QCheckBox* box) {
             QVERIFY(box->isEnabled());
             QVERIFY(box->isChecked());
+            const QString note = app::heldExampleDescription("fig8");
+            QVERIFY(!note.isEmpty());
+            QVERIFY(described(box, note));
+            box->setChecked(false);
+            QVERIFY(!described(box, note));
+            box->setChecked(true);
+            QVERIFY(described(box, note));
         });
         QCOMPARE(surface().name(), std::string("fig8"));
         QVERIFY(surface().keepsDevelopment());
