@@ -265,7 +265,10 @@ int SolveSession::moveSplits() const {
         jump = std::max(jump, distance(target, m_targetsStepped.controlPoints.at(point)));
     }
     const double splits = std::ceil(jump / (kMoveStepLimit * m_diameter));
-    return static_cast<int>(std::clamp(splits, 1.0, static_cast<double>(kMoveSplitLimit)));
+    const int limit = m_formulation->problem().variableCount() > kLargeMoveVariables
+                          ? kLargeMoveSplitLimit
+                          : kMoveSplitLimit;
+    return static_cast<int>(std::clamp(splits, 1.0, static_cast<double>(limit)));
 }
 
 void SolveSession::aimPartway(int k, int splits) {

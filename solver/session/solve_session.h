@@ -84,6 +84,13 @@ constexpr double kDragFactorizationReuseFlops = 1e7;
 // crease held on a curve in the sheet, docs/tuning.md "A long move is split").
 constexpr double kMoveStepLimit = 0.003;
 constexpr int kMoveSplitLimit = 8;
+// On a model of more than kLargeMoveVariables variables a move is split into at most
+// kLargeMoveSplitLimit iterations: there each iteration takes tens of milliseconds, a move split
+// eight ways fell behind the mouse, and the next move's jump grew longer still (the annulus of
+// size 14 holding its sheet, 21,584 variables: 650–730 ms per move, 160 ms with two;
+// docs/tuning.md "New designs hold their sheet").
+constexpr int kLargeMoveVariables = 15000;
+constexpr int kLargeMoveSplitLimit = 2;
 
 // The pull of a dragged vertex of a surface that holds its sheet (pulledHandleWeight); the lag
 // does not depend on it (docs/tuning.md, "Holding the sheet").

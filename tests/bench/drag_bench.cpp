@@ -295,9 +295,13 @@ DragBenchReport runDragBench(const DragBenchOptions& options) {
         }
     };
     DragBenchReport report;
+    // The annuli as they come, and as File ▸ New from Example makes them: holding their sheet.
+    const auto held = model::ExampleSheet::Held;
     const std::vector<std::pair<std::string, model::CompositeSurface>> drags = {
         {"fig12-annulus", model::makeExample("annulus", 6).surfaces.front()},
         {"annulus-14", model::makeExample("annulus", 14).surfaces.front()},
+        {"fig12-annulus-held", model::makeExample("annulus", 6, held).surfaces.front()},
+        {"annulus-14-held", model::makeExample("annulus", 14, held).surfaces.front()},
     };
     for (const auto& [name, surface] : drags) {
         log("drag: " + name);
