@@ -539,13 +539,16 @@ CompositeSurface makeColumn(int sectors) {
     return s;
 }
 
-// `s`, flat and holding no sheet, holding the sheet it starts as (ExampleSheet::Held).
+// `s`, holding no sheet, holding the sheet it starts as (ExampleSheet::Held).
 void holdStartingSheet(CompositeSurface& s, SheetShape shape) {
     for (auto taut = findTautPinLines(s); !taut.empty(); taut = findTautPinLines(s)) {
         s.setPinned(taut.front().second, false);
     }
     if (const auto problem = keepDevelopment(s)) {
         throw ModelError(*problem);
+    }
+    if (s.sheetDomain().shape == SheetShape::Cylinder) {
+        return; // it closes around: held on the cylinder keepDevelopment found
     }
     const SampledMesh mesh = sampleSurface(s, kDevelopmentSamplesPerInterval);
     SheetDomain domain = fittingDomain(shape, mesh, s.development());
@@ -565,10 +568,10 @@ void holdStartingSheet(CompositeSurface& s, SheetShape shape) {
 
 const std::vector<ExampleInfo>& builtInExamples() {
     static const std::vector<ExampleInfo> examples{
-        {"sheet", 3, 1, 60, true, false},      {"annulus", 6, 1, 60, true, false},
-        {"cylinder", 6, 3, 120, false, false}, {"mixed", 2, 1, 50, true, false},
-        {"fig8", 3, 2, 30, true, false},       {"fig6", 4, 1, 40, true, false},
-        {"fig13", 6, 3, 40, false, true},      {"torus", 6, 3, 40, false, false},
+        {"sheet", 3, 1, 60, true, false},     {"annulus", 6, 1, 60, true, false},
+        {"cylinder", 6, 3, 120, true, false}, {"mixed", 2, 1, 50, true, false},
+        {"fig8", 3, 2, 30, true, false},      {"fig6", 4, 1, 40, true, false},
+        {"fig13", 6, 3, 40, false, true},     {"torus", 6, 3, 40, false, false},
         {"column", 12, 6, 48, false, true},
     };
     return examples;
@@ -610,10 +613,12 @@ Project makeExample(const std::string& name, int size, ExampleSheet sheet) {
         } else {
             project.addSurface(makeFig6(size));
         }
-        if (sheet == ExampleSheet::Held && info.canHoldItsFlatSheet) {
+        if (sheet == ExampleSheet::Held && info.canHoldItsSheet) {
+            // (The cylinder holds the cylinder its unfolding rolls onto.)
             const SheetShape shape = name == "annulus" ? SheetShape::Annulus
-                                     : name == "mixed" ? SheetShape::Free
-                                                       : SheetShape::Rectangle;
+                                     : name == "mixed" || name == "cylinder"
+                                         ? SheetShape::Free
+                                         : SheetShape::Rectangle;
             holdStartingSheet(project.surfaces.front(), shape);
         }
         return project;

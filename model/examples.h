@@ -13,9 +13,10 @@ struct ExampleInfo {
     int defaultSize;
     int minSize;
     int maxSize;
-    // It starts flat and holds no sheet as built, so it can be made to hold the sheet it starts
-    // as (ExampleSheet::Held); and whether it holds a sheet as built (fig13, column).
-    bool canHoldItsFlatSheet = false;
+    // It holds no sheet as built but can be made to hold the sheet it starts as
+    // (ExampleSheet::Held): flat, or for the cylinder the cylinder its unfolding rolls onto;
+    // and whether it holds a sheet as built (fig13, column).
+    bool canHoldItsSheet = false;
     bool holdsSheetAsBuilt = false;
 };
 
@@ -23,7 +24,8 @@ struct ExampleInfo {
 // command line's default; fig13 and column hold theirs). Held (File ▸ New from Example's
 // default): an example that starts flat holds the sheet it starts as, confined to the
 // smallest sheet of its shape around it (a rectangle for sheet, fig8 and fig6, an annulus for
-// the annulus, free for mixed), its curved-fold creases kept where they lie in it; of two pins
+// the annulus, free for mixed), its curved-fold creases kept where they lie in it (the
+// cylinder holds the cylinder its unfolding rolls onto, as column does); of two pins
 // at the ends of a straight line in the sheet only the first stays pinned, since a held sheet
 // keeps that line straight and could then only turn about it (model/held_by_pins.h).
 enum class ExampleSheet : std::uint8_t { AsBuilt, Held };

@@ -1981,24 +1981,24 @@
         <translation>&amp;Größe:</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="64"/>
+        <location filename="../app/gui/example_dialog.cpp" line="65"/>
+        <source>Keep the development around the cylinder the design&apos;s unfolding rolls onto, as Tools ▸ Hold the Sheet does: a drag that the sheet cannot follow lags behind the mouse instead of stretching it.</source>
+        <translation>Die Abwicklung um den Zylinder festhalten, auf den sich die Abwicklung des Entwurfs rollt, wie Werkzeuge ▸ Bogen festhalten es tut: Ein Ziehen, dem der Bogen nicht folgen kann, bleibt hinter der Maus zurück, statt ihn zu dehnen.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="68"/>
         <source>Keep the development: the design stays foldable from the flat sheet it starts as, and a drag that the sheet cannot follow lags behind the mouse instead of stretching it. Of two pins at the ends of a straight line in the sheet only the first stays pinned, since the sheet would keep that line straight. Tools ▸ Hold the Sheet turns it off later.</source>
         <translation>Die Abwicklung festhalten: Der Entwurf bleibt aus dem ebenen Bogen faltbar, aus dem er beginnt, und ein Ziehen, dem der Bogen nicht folgen kann, bleibt hinter der Maus zurück, statt ihn zu dehnen. Von zwei Pins an den Enden einer geraden Linie im Bogen bleibt nur der erste gepinnt, da der Bogen diese Linie gerade hielte. Werkzeuge ▸ Bogen festhalten schaltet es später aus.</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="71"/>
+        <location filename="../app/gui/example_dialog.cpp" line="75"/>
         <source>This example comes holding its sheet.</source>
         <translation>Dieses Beispiel hält seinen Bogen bereits fest.</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="76"/>
+        <location filename="../app/gui/example_dialog.cpp" line="79"/>
         <source>A torus unfolds into no one sheet: it keeps local conditions only.</source>
         <translation>Ein Torus lässt sich in keinen einzelnen Bogen abwickeln: Er hält nur lokale Bedingungen ein.</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/example_dialog.cpp" line="77"/>
-        <source>This example does not start flat: hold it around its cylinder with Tools ▸ Hold the Sheet.</source>
-        <translation>Dieses Beispiel beginnt nicht eben: Halten Sie es mit Werkzeuge ▸ Bogen festhalten um seinen Zylinder fest.</translation>
     </message>
 </context>
 <context>

@@ -1958,24 +1958,24 @@
         <translation>サイズ(&amp;S):</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="64"/>
+        <location filename="../app/gui/example_dialog.cpp" line="65"/>
+        <source>Keep the development around the cylinder the design&apos;s unfolding rolls onto, as Tools ▸ Hold the Sheet does: a drag that the sheet cannot follow lags behind the mouse instead of stretching it.</source>
+        <translation>ツール ▸ シートを保持 と同じように、デザインの展開図が巻き付く円柱の周りに展開図を保ちます: シートが追従できないドラッグは、シートを伸ばす代わりにマウスより遅れます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/example_dialog.cpp" line="68"/>
         <source>Keep the development: the design stays foldable from the flat sheet it starts as, and a drag that the sheet cannot follow lags behind the mouse instead of stretching it. Of two pins at the ends of a straight line in the sheet only the first stays pinned, since the sheet would keep that line straight. Tools ▸ Hold the Sheet turns it off later.</source>
         <translation>展開図を保持します: デザインは元の平らなシートから折れるままで、シートが追従できないドラッグは、シートを伸ばす代わりにマウスより遅れます。シート上の直線の両端にある2つのピンは、最初のものだけがピン留めのまま残ります (シートがその直線をまっすぐに保つため)。後で ツール ▸ シートを保持 でオフにできます。</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="71"/>
+        <location filename="../app/gui/example_dialog.cpp" line="75"/>
         <source>This example comes holding its sheet.</source>
         <translation>この例は最初からシートを保持しています。</translation>
     </message>
     <message>
-        <location filename="../app/gui/example_dialog.cpp" line="76"/>
+        <location filename="../app/gui/example_dialog.cpp" line="79"/>
         <source>A torus unfolds into no one sheet: it keeps local conditions only.</source>
         <translation>トーラスは1枚のシートに展開できません: 局所的な条件だけを保ちます。</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/example_dialog.cpp" line="77"/>
-        <source>This example does not start flat: hold it around its cylinder with Tools ▸ Hold the Sheet.</source>
-        <translation>この例は平らな状態から始まりません: ツール ▸ シートを保持 で円柱の周りに保持してください。</translation>
     </message>
 </context>
 <context>

@@ -49,13 +49,9 @@ int commandExample(const SubcommandArguments& args) {
     const bool holdSheet = args.isSet("hold-sheet");
     if (holdSheet) {
         for (const model::ExampleInfo& info : model::builtInExamples()) {
-            if (info.name == name && !info.canHoldItsFlatSheet && !info.holdsSheetAsBuilt) {
-                const std::string why = name == "torus"
-                                            ? "a torus unfolds into no one sheet"
-                                            : "hold it around its cylinder with 'devsurf-cli "
-                                              "sheet FILE --free'";
-                throw UsageError{"'" + name + "' does not start flat, so --hold-sheet does not " +
-                                 "apply (" + why + ")"};
+            if (info.name == name && !info.canHoldItsSheet && !info.holdsSheetAsBuilt) {
+                throw UsageError{"'" + name + "' unfolds into no one sheet, so --hold-sheet " +
+                                 "does not apply"};
             }
         }
     }

@@ -31,7 +31,8 @@ const std::vector<SubcommandSpec>& subcommands() {
          "starts as, as File > New from Example does: its development kept on\n"
          "the smallest rectangle (annulus for the annulus, free for mixed)\n"
          "around it, curved-fold creases kept where they lie, and of two pins\n"
-         "at the ends of a straight line in the sheet only the first kept.",
+         "at the ends of a straight line in the sheet only the first kept;\n"
+         "the cylinder holds the cylinder its unfolding rolls onto.",
          {{"size", "K", "The example's size."},
           {"hold-sheet", "", "Hold the sheet it starts as."},
           {"o", "FILE.devsurf", "The project file to write."}}},

@@ -57,25 +57,26 @@ void ExampleDialog::exampleChanged(int index) {
     m_size->setRange(info.minSize, info.maxSize);
     m_size->setValue(info.defaultSize);
     const QSignalBlocker blocker(m_holdSheet);
-    m_holdSheet->setEnabled(info.canHoldItsFlatSheet);
-    if (info.canHoldItsFlatSheet) {
+    m_holdSheet->setEnabled(info.canHoldItsSheet);
+    if (info.canHoldItsSheet) {
         m_holdSheet->setChecked(rememberedSheet() == model::ExampleSheet::Held);
         m_holdSheet->setToolTip(
-            tr("Keep the development: the design stays foldable from the flat sheet it starts "
-               "as, and a drag that the sheet cannot follow lags behind the mouse instead of "
-               "stretching it. Of two pins at the ends of a straight line in the sheet only "
-               "the first stays pinned, since the sheet would keep that line straight. Tools ▸ "
-               "Hold the Sheet turns it off later."));
+            info.name == "cylinder"
+                ? tr("Keep the development around the cylinder the design's unfolding rolls "
+                     "onto, as Tools ▸ Hold the Sheet does: a drag that the sheet cannot follow "
+                     "lags behind the mouse instead of stretching it.")
+                : tr("Keep the development: the design stays foldable from the flat sheet it "
+                     "starts as, and a drag that the sheet cannot follow lags behind the mouse "
+                     "instead of stretching it. Of two pins at the ends of a straight line in "
+                     "the sheet only the first stays pinned, since the sheet would keep that "
+                     "line straight. Tools ▸ Hold the Sheet turns it off later."));
     } else if (info.holdsSheetAsBuilt) {
         m_holdSheet->setChecked(true);
         m_holdSheet->setToolTip(tr("This example comes holding its sheet."));
     } else {
         m_holdSheet->setChecked(false);
         m_holdSheet->setToolTip(
-            info.name == "torus"
-                ? tr("A torus unfolds into no one sheet: it keeps local conditions only.")
-                : tr("This example does not start flat: hold it around its cylinder with Tools ▸ "
-                     "Hold the Sheet."));
+            tr("A torus unfolds into no one sheet: it keeps local conditions only."));
     }
     describe();
 }

@@ -105,12 +105,16 @@ private slots:
         const model::CompositeSurface after = io::loadProjectFile(folded).surfaces[0];
         QVERIFY(after.position(4).z > 40.0);
         QCOMPARE(after.sheetDomain(), fig6.sheetDomain());
-        // Without it, as the example comes; a torus or the cylinder cannot hold a flat sheet.
+        // Without it, as the example comes; a torus holds no one sheet.
         QCOMPARE(cli({"example", "fig6", "-o", file}).exitCode, 0);
         QVERIFY(!io::loadProjectFile(file).surfaces[0].keepsDevelopment());
         const test::CliRun torus = cli({"example", "torus", "--hold-sheet", "-o", file});
         QCOMPARE(torus.exitCode, 1);
-        QVERIFY2(torus.err.contains(QStringLiteral("does not start flat")), qPrintable(torus.err));
+        QVERIFY2(torus.err.contains(QStringLiteral("no one sheet")), qPrintable(torus.err));
+        // The cylinder holds the cylinder its unfolding rolls onto.
+        QCOMPARE(cli({"example", "cylinder", "--hold-sheet", "-o", file}).exitCode, 0);
+        QCOMPARE(io::loadProjectFile(file).surfaces[0].sheetDomain().shape,
+                 model::SheetShape::Cylinder);
     }
 
     void sheetShapes() {
