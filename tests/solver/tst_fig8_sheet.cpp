@@ -34,39 +34,20 @@ namespace {
 
 constexpr int kFig8Samples = model::kDevelopmentSamplesPerInterval;
 
-// fig8 holding its sheet: on the 300 × 300 mm rectangle with its creases held where they lie
-// (`onSquare`), else as it unfolds (the development fixed); with its bottom-right corner
-// unpinned unless `bothCorners`. One corner on the square is the example as File ▸ New from
-// Example makes it (ExampleSheet::Held), so the tests below also check that.
-model::CompositeSurface heldFig8(bool bothCorners, bool onSquare) {
-    if (!bothCorners && onSquare) {
-        return model::makeExample("fig8", 0, model::ExampleSheet::Held).surfaces.front();
-    }
+// fig8 as it comes (both bottom corners pinned) holding its sheet as it unfolds (the development
+// fixed).
+model::CompositeSurface fig8HeldAsItUnfolds() {
     model::CompositeSurface fig8 = model::makeExample("fig8").surfaces.front();
-    if (!bothCorners) {
-        for (const auto& [id, p] : fig8.vertices()) {
-            if (std::abs(p.x - 300.0) < 1e-9 && std::abs(p.y) < 1e-9) {
-                fig8.setPinned(id, false);
-            }
-        }
-    }
     if (model::keepDevelopment(fig8).has_value()) {
         return {};
     }
-    if (onSquare) {
-        model::SheetDomain square;
-        square.shape = model::SheetShape::Rectangle;
-        square.width = 300.0;
-        square.height = 300.0;
-        const model::SampledMesh mesh = model::sampleSurface(fig8, kFig8Samples);
-        model::SheetDomain placed = model::placeDomain(square, mesh, fig8.development());
-        // Its creases held where they lie in the sheet.
-        placed.creaseCurves =
-            model::sheetFrameCurves(placed, model::creaseCurvesAsTheyLie(fig8, fig8.development()));
-        placed.creaseCurveOf = model::assignCreasesToCurves(placed, fig8, mesh, fig8.development());
-        fig8.setSheetDomain(placed);
-    }
     return fig8;
+}
+
+// fig8 as File ▸ New from Example makes it (ExampleSheet::Held): its bottom-right corner
+// unpinned, on the 300 × 300 mm square with its creases held where they lie.
+model::CompositeSurface newHeldFig8() {
+    return model::makeExample("fig8", 0, model::ExampleSheet::Held).surfaces.front();
 }
 
 // fig8's four middle vertices (those off the square's border).
@@ -210,7 +191,7 @@ private slots:
         // rulings is planar, and a curved crease beside a planar strip cannot fold, so the
         // next strip is planar too, and so on: the whole sheet can only turn about the pinned
         // corners. Lifting the middle 85 mm tilts it, flat, and the middle lags.
-        const model::CompositeSurface start = heldFig8(true, false);
+        const model::CompositeSurface start = fig8HeldAsItUnfolds();
         QVERIFY(start.keepsDevelopment());
         const std::vector<model::VertexId> middle = fig8Middle(start);
         QCOMPARE(static_cast<int>(middle.size()), 4);
@@ -250,7 +231,7 @@ private slots:
         // middle lifted by 20 % of its diameter, then turned about the vertical, each by a drag
         // of 20 moves through the solve job. It folds along its curved creases, developable,
         // nothing folded over, the sheet still the square with the same crease pattern.
-        const model::CompositeSurface start = heldFig8(false, true);
+        const model::CompositeSurface start = newHeldFig8();
         QVERIFY(start.keepsDevelopment());
         QCOMPARE(static_cast<int>(start.sheetDomain().creaseCurveOf.size()), 6);
         const std::vector<model::VertexId> middle = fig8Middle(start);
