@@ -120,7 +120,7 @@ case "$mode" in
     echo "== Building and running the threaded tests under ThreadSanitizer in $build_tsan"
     cmake -S "$root" -B "$build_tsan" -G Ninja "${sanitizer_flags[@]}" -DDEVSURF_TSAN=ON \
       -DDEVSURF_UNIT_TESTS_ONLY=ON >/dev/null
-    cmake --build "$build_tsan" -j "$jobs" --target tst_worker tst_model
+    cmake --build "$build_tsan" -j "$jobs" --target tst_worker tst_model_threads
     # One BLAS/OpenMP thread: the threads under test are ours, not the uninstrumented libgomp's.
     (cd "$build_tsan" && OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 \
       TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$root/tests/tsan.supp" \
