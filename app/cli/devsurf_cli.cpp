@@ -46,8 +46,15 @@ int commandExample(const SubcommandArguments& args) {
         size = static_cast<int>(parseWhole(*text, "--size", 1, 1000000));
     }
     const std::string output = args.required("o", kMissingOutput);
-    const bool holdSheet = args.isSet("hold-sheet");
-    if (holdSheet) {
+    // Held by default, as File ▸ New from Example makes it: an example that starts flat keeps
+    // the sheet it starts as. --as-built writes it as it comes; --hold-sheet insists on a sheet
+    // and refuses an example that has none.
+    const bool asBuilt = args.isSet("as-built");
+    const bool insistOnSheet = args.isSet("hold-sheet");
+    if (asBuilt && insistOnSheet) {
+        throw UsageError{"--as-built and --hold-sheet exclude each other"};
+    }
+    if (insistOnSheet) {
         for (const model::ExampleInfo& info : model::builtInExamples()) {
             if (info.name == name && !info.canHoldItsSheet && !info.holdsSheetAsBuilt) {
                 throw UsageError{"'" + name + "' unfolds into no one sheet, so --hold-sheet " +
@@ -59,7 +66,7 @@ int commandExample(const SubcommandArguments& args) {
     model::Project project;
     try {
         project = model::makeExample(
-            name, size, holdSheet ? model::ExampleSheet::Held : model::ExampleSheet::AsBuilt);
+            name, size, asBuilt ? model::ExampleSheet::AsBuilt : model::ExampleSheet::Held);
     } catch (const model::ModelError& error) {
         throw UsageError{withoutFinalPeriod(ProblemText::of(error.problem()).toStdString())};
     }

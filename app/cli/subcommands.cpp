@@ -24,17 +24,21 @@ std::vector<OptionSpec> patternOptions(std::vector<OptionSpec> more) {
 const std::vector<SubcommandSpec>& subcommands() {
     static const std::vector<SubcommandSpec> all{
         {"example",
-         "example NAME [--size K] [--hold-sheet] -o FILE.devsurf",
+         "example NAME [--size K] [--as-built | --hold-sheet] -o FILE.devsurf",
          "Write a built-in example (sheet, annulus, cylinder, mixed,\n"
          "fig8, fig6, fig13, torus, column; `devsurf-cli examples` lists them).\n"
-         "--hold-sheet makes an example that starts flat hold the sheet it\n"
-         "starts as, as File > New from Example does: its development kept on\n"
+         "An example that starts flat holds the sheet it starts as, as\n"
+         "File > New from Example makes it by default: its development kept on\n"
          "the smallest rectangle (annulus for the annulus, free for mixed)\n"
          "around it, curved-fold creases kept where they lie, and of two pins\n"
          "at the ends of a straight line in the sheet only the first kept;\n"
-         "the cylinder holds the cylinder its unfolding rolls onto.",
+         "the cylinder holds the cylinder its unfolding rolls onto.\n"
+         "--as-built writes it as it comes, its sheet unfolded after each\n"
+         "solve; --hold-sheet refuses an example that unfolds into no one\n"
+         "sheet (the torus) instead of writing it as it comes.",
          {{"size", "K", "The example's size."},
-          {"hold-sheet", "", "Hold the sheet it starts as."},
+          {"as-built", "", "Write it as it comes, holding no sheet."},
+          {"hold-sheet", "", "Refuse an example that cannot hold a sheet."},
           {"o", "FILE.devsurf", "The project file to write."}}},
         {"info",
          "info FILE [--vertices] [--edges] [--json]",

@@ -45,7 +45,7 @@ private slots:
 
     void pinAndListVertices() {
         const QString file = path("pin.devsurf");
-        QCOMPARE(runCli({"example", "sheet", "-o", file}).exitCode, 0);
+        QCOMPARE(runCli({"example", "sheet", "--as-built", "-o", file}).exitCode, 0);
         const QString pinned = path("pinned.devsurf");
         Run run = runCli({"pin", file, "--vertices", "0,3,12", "-o", pinned});
         QCOMPARE(run.exitCode, 0);
@@ -122,7 +122,13 @@ private slots:
         const QString file = path("a.devsurf");
         Run run = runCli({"example", "annulus", "-o", file});
         QCOMPARE(run.exitCode, 0);
-        QVERIFY(io::loadProjectFile(file) == model::makeExample("annulus"));
+        // Held by default, as File ▸ New from Example makes it; --as-built as it comes.
+        QVERIFY(io::loadProjectFile(file) ==
+                model::makeExample("annulus", 0, model::ExampleSheet::Held));
+        QVERIFY(run.out.contains("holding its sheet"));
+        const QString asBuilt = path("as-built.devsurf");
+        QCOMPARE(runCli({"example", "annulus", "--as-built", "-o", asBuilt}).exitCode, 0);
+        QVERIFY(io::loadProjectFile(asBuilt) == model::makeExample("annulus"));
 
         run = runCli({"info", file});
         QCOMPARE(run.exitCode, 0);
@@ -145,7 +151,7 @@ private slots:
         const QJsonDocument doc = QJsonDocument::fromJson(jsonFile.readAll());
         QCOMPARE(doc.object()["format"].toString(), QString("devsurf-interchange"));
 
-        run = runCli({"example", "mixed", "--size", "3", "-o", path("m.devsurf")});
+        run = runCli({"example", "mixed", "--as-built", "--size", "3", "-o", path("m.devsurf")});
         QCOMPARE(run.exitCode, 0);
         run = runCli({"info", path("m.devsurf")});
         QVERIFY(run.out.contains("1 SRSR strip, 1 SRS strip, 1 SRR cone, 1 planar face"));
@@ -153,7 +159,7 @@ private slots:
 
     void damagedInputExitsWithTwo() {
         const QString file = path("d.devsurf");
-        QCOMPARE(runCli({"example", "sheet", "-o", file}).exitCode, 0);
+        QCOMPARE(runCli({"example", "sheet", "--as-built", "-o", file}).exitCode, 0);
         QFile f(file);
         QVERIFY(f.open(QIODevice::ReadWrite));
         QByteArray bytes = f.readAll();
@@ -231,7 +237,7 @@ private slots:
 
     void solvePrintsOneLinePerIteration() {
         const QString file = path("solve.devsurf");
-        QCOMPARE(runCli({"example", "annulus", "-o", file}).exitCode, 0);
+        QCOMPARE(runCli({"example", "annulus", "--as-built", "-o", file}).exitCode, 0);
         const QString out = path("solved.devsurf");
         const Run run =
             runCli({"solve", file, "--perturb", "0.001", "--iterations", "3", "-o", out});
@@ -303,7 +309,7 @@ private slots:
 
     void creaseConditionsAreSetListedAndSolved() {
         const QString file = path("annulus-crease.devsurf");
-        QCOMPARE(runCli({"example", "annulus", "-o", file}).exitCode, 0);
+        QCOMPARE(runCli({"example", "annulus", "--as-built", "-o", file}).exitCode, 0);
         const model::CompositeSurface surface = io::loadProjectFile(file).surfaces[0];
         model::EdgeId crease = model::kInvalidId;
         model::EdgeId boundary = model::kInvalidId;
@@ -341,7 +347,7 @@ private slots:
 
     void straightConditionAndSmoothRulingsAreSetAndListed() {
         const QString file = path("sheet-smooth.devsurf");
-        QCOMPARE(runCli({"example", "sheet", "-o", file}).exitCode, 0);
+        QCOMPARE(runCli({"example", "sheet", "--as-built", "-o", file}).exitCode, 0);
         const model::CompositeSurface surface = io::loadProjectFile(file).surfaces[0];
         model::EdgeId crease = model::kInvalidId;
         model::EdgeId inner = model::kInvalidId;
@@ -389,7 +395,7 @@ private slots:
 
     void dragMovesTheVerticesAndKeepsThePins() {
         const QString file = path("drag.devsurf");
-        QCOMPARE(runCli({"example", "annulus", "-o", file}).exitCode, 0);
+        QCOMPARE(runCli({"example", "annulus", "--as-built", "-o", file}).exitCode, 0);
         const model::CompositeSurface before = io::loadProjectFile(file).surfaces[0];
         // The outer boundary of the annulus is pinned, an inner boundary vertex lifted 10 mm.
         const QString out = path("dragged.devsurf");
@@ -454,7 +460,7 @@ private slots:
         // inner vertex lifted 100 mm bends without stretching its rulings. Measured from the
         // vertices: the shortest R-edge keeps 0.98 of its length; with --stretch 0.07.
         const QString file = path("keep.devsurf");
-        QCOMPARE(runCli({"example", "annulus", "-o", file}).exitCode, 0);
+        QCOMPARE(runCli({"example", "annulus", "--as-built", "-o", file}).exitCode, 0);
         const model::CompositeSurface before = io::loadProjectFile(file).surfaces[0];
         const QStringList drag = {"drag", file,      "--vertices", "0",
                                   "--by", "0,0,100", "--pin",      "48,49,50,51,52,53,54,55"};
@@ -500,7 +506,7 @@ private slots:
         // middle rises 85 mm (the corners keep the flat sheet's distances). The replay is the
         // --stretch drag, bit for bit.
         const QString fig8 = path("fig8.devsurf");
-        QCOMPARE(runCli({"example", "fig8", "-o", fig8}).exitCode, 0);
+        QCOMPARE(runCli({"example", "fig8", "--as-built", "-o", fig8}).exitCode, 0);
         const QStringList lift = {"drag", fig8,     "--vertices", "5,6,9,10",
                                   "--by", "0,0,85", "--pin",      "0,3,12,15"};
         const QString automatic = path("fig8-automatic.devsurf");
@@ -530,7 +536,7 @@ private slots:
                  qPrintable(run.out.left(200)));
         // fig6 with a free corner lifted 75 mm keeps lengths: nothing replayed.
         const QString fig6 = path("fig6.devsurf");
-        QCOMPARE(runCli({"example", "fig6", "-o", fig6}).exitCode, 0);
+        QCOMPARE(runCli({"example", "fig6", "--as-built", "-o", fig6}).exitCode, 0);
         run = runCli({"drag", fig6, "--vertices", "4", "--by", "0,0,75", "-o", automatic});
         QCOMPARE(run.exitCode, 0);
         QVERIFY2(run.out.contains("dragging 1 vertex keeping lengths in 20 steps") &&
@@ -547,7 +553,7 @@ private slots:
 
     void dragSlidesACrease() {
         const QString file = path("fig6.devsurf");
-        QCOMPARE(runCli({"example", "fig6", "-o", file}).exitCode, 0);
+        QCOMPARE(runCli({"example", "fig6", "--as-built", "-o", file}).exitCode, 0);
         const model::CompositeSurface before = io::loadProjectFile(file).surfaces[0];
         const QString out = path("slid.devsurf");
         // Crease 2 slides 20 mm across the flat sheet; the 5 mm out of it are dropped.

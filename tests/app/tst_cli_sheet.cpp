@@ -33,7 +33,7 @@ class TstCliSheet : public QObject {
 private slots:
     void sheetIsHeldAndReleased() {
         const QString file = path("square.devsurf");
-        QCOMPARE(cli({"example", "sheet", "-o", file}).exitCode, 0);
+        QCOMPARE(cli({"example", "sheet", "--as-built", "-o", file}).exitCode, 0);
         QVERIFY(!io::loadProjectFile(file).surfaces[0].keepsDevelopment());
         const QString held = path("held.devsurf");
         QCOMPARE(cli({"sheet", file, "--free", "-o", held}).exitCode, 0);
@@ -62,7 +62,7 @@ private slots:
         // A cylinder holds the cylinder it unrolls onto; a flat shape for it is refused (exit
         // 2, nothing written), and so is a torus, which unrolls onto no one sheet.
         const QString cylinder = path("tube.devsurf");
-        QCOMPARE(cli({"example", "cylinder", "-o", cylinder}).exitCode, 0);
+        QCOMPARE(cli({"example", "cylinder", "--as-built", "-o", cylinder}).exitCode, 0);
         const QString around = path("tube-held.devsurf");
         run = cli({"sheet", cylinder, "--free", "-o", around});
         QCOMPARE(run.exitCode, 0);
@@ -83,11 +83,11 @@ private slots:
     }
 
     void examplesHoldTheSheetTheyStartAs() {
-        // `example --hold-sheet`, as File ▸ New from Example makes it: fig6 on its 300 × 200
+        // `example`, as File ▸ New from Example makes it by default: fig6 on its 300 × 200
         // rectangle, only its first bottom corner pinned, its crease kept where it lies; its
         // top edge pulled in and up folds it along the crease from its sheet.
         const QString file = path("fig6-held.devsurf");
-        const test::CliRun made = cli({"example", "fig6", "--hold-sheet", "-o", file});
+        const test::CliRun made = cli({"example", "fig6", "-o", file});
         QCOMPARE(made.exitCode, 0);
         QVERIFY2(made.out.contains(QStringLiteral("holding its sheet")), qPrintable(made.out));
         const model::CompositeSurface fig6 = io::loadProjectFile(file).surfaces[0];
@@ -105,8 +105,15 @@ private slots:
         const model::CompositeSurface after = io::loadProjectFile(folded).surfaces[0];
         QVERIFY(after.position(4).z > 40.0);
         QCOMPARE(after.sheetDomain(), fig6.sheetDomain());
-        // Without it, as the example comes; a torus holds no one sheet.
-        QCOMPARE(cli({"example", "fig6", "-o", file}).exitCode, 0);
+        // --hold-sheet writes the same file; --as-built the example as it comes.
+        const QString insisted = path("fig6-insisted.devsurf");
+        QCOMPARE(cli({"example", "fig6", "--hold-sheet", "-o", insisted}).exitCode, 0);
+        QVERIFY(io::loadProjectFile(insisted) == io::loadProjectFile(file));
+        QCOMPARE(cli({"example", "fig6", "--as-built", "-o", file}).exitCode, 0);
+        QVERIFY(!io::loadProjectFile(file).surfaces[0].keepsDevelopment());
+        QCOMPARE(cli({"example", "fig6", "--as-built", "--hold-sheet", "-o", file}).exitCode, 1);
+        // A torus holds no one sheet: written as it comes, unless the sheet is insisted on.
+        QCOMPARE(cli({"example", "torus", "-o", file}).exitCode, 0);
         QVERIFY(!io::loadProjectFile(file).surfaces[0].keepsDevelopment());
         const test::CliRun torus = cli({"example", "torus", "--hold-sheet", "-o", file});
         QCOMPARE(torus.exitCode, 1);
@@ -121,7 +128,7 @@ private slots:
         // The annulus example on an annulus of radii 100 and 250 mm: placed on its development,
         // written, listed by info; a Solve moves the development's rims onto the circles.
         const QString file = path("ring.devsurf");
-        QCOMPARE(cli({"example", "annulus", "--size", "3", "-o", file}).exitCode, 0);
+        QCOMPARE(cli({"example", "annulus", "--as-built", "--size", "3", "-o", file}).exitCode, 0);
         const QString ring = path("ring-sheet.devsurf");
         test::CliRun run = cli({"sheet", file, "--annulus", "250,100", "-o", ring});
         QCOMPARE(run.exitCode, 0);
@@ -151,7 +158,7 @@ private slots:
         // A rectangle and a disk are written; sizes that are no sheet are refused, nothing
         // written.
         const QString square = path("square.devsurf");
-        QCOMPARE(cli({"example", "sheet", "-o", square}).exitCode, 0);
+        QCOMPARE(cli({"example", "sheet", "--as-built", "-o", square}).exitCode, 0);
         const QString onSquare = path("on-square.devsurf");
         run = cli({"sheet", square, "--rectangle", "300,300", "-o", onSquare});
         QCOMPARE(run.exitCode, 0);
@@ -173,7 +180,7 @@ private slots:
         // of 300 × 300 mm, placed on the development. A file without a closed curve writes
         // nothing.
         const QString square = path("outline-square.devsurf");
-        QCOMPARE(cli({"example", "sheet", "-o", square}).exitCode, 0);
+        QCOMPARE(cli({"example", "sheet", "--as-built", "-o", square}).exitCode, 0);
         for (const char* format : {"dxf", "svg"}) {
             const QString drawing = m_dir.filePath(QStringLiteral("outline-square.") + format);
             QCOMPARE(cli({"export", square, "--format", format, "-o", drawing}).exitCode, 0);
@@ -206,7 +213,7 @@ private slots:
         // circles of radii 130 and 205 mm drawn in a DXF: the rings at 125 and 200 mm are
         // held on them, and a Solve moves their development there (radii computed here).
         const QString annulus = path("creases-annulus.devsurf");
-        QCOMPARE(cli({"example", "annulus", "-o", annulus}).exitCode, 0);
+        QCOMPARE(cli({"example", "annulus", "--as-built", "-o", annulus}).exitCode, 0);
         const QString drawing =
             written("creases.dxf", "0\nSECTION\n2\nENTITIES\n"
                                    "0\nCIRCLE\n8\nCREASE\n10\n0\n20\n0\n30\n0\n40\n130\n"
@@ -265,7 +272,7 @@ private slots:
         // lie: its six crease S-edges on two curves. Its middle lifted 85 mm then folds along
         // them, the creases still on their curves and the sheet still the square.
         const QString fig8 = path("keep-fig8.devsurf");
-        QCOMPARE(cli({"example", "fig8", "-o", fig8}).exitCode, 0);
+        QCOMPARE(cli({"example", "fig8", "--as-built", "-o", fig8}).exitCode, 0);
         const QString oneCorner = path("keep-one-corner.devsurf");
         QCOMPARE(cli({"pin", fig8, "--vertices", "3", "--unpin", "-o", oneCorner}).exitCode, 0);
         const QString held = path("keep-held.devsurf");

@@ -21,7 +21,7 @@ class TstCliStops : public QObject {
     QString liftedFig8(const QString& lengths) const {
         const QString flat = path("fig8.devsurf");
         const QString lifted = m_dir.filePath(QStringLiteral("fig8-lifted%1.devsurf").arg(lengths));
-        const bool ok = test::runCli({"example", "fig8", "-o", flat}).exitCode == 0 &&
+        const bool ok = test::runCli({"example", "fig8", "--as-built", "-o", flat}).exitCode == 0 &&
                         test::runCli({"drag", flat, "--vertices", "5,6,9,10", "--by", "0,0,85",
                                       lengths, "-o", lifted})
                                 .exitCode == 0;
@@ -34,7 +34,7 @@ private slots:
         // which a patch has zero area: the 18th iteration gets there. The command says so and
         // writes the 17th.
         const QString file = path("collapse.devsurf");
-        QCOMPARE(test::runCli({"example", "annulus", "-o", file}).exitCode, 0);
+        QCOMPARE(test::runCli({"example", "annulus", "--as-built", "-o", file}).exitCode, 0);
         const QString out = path("collapse-solved.devsurf");
         const test::CliRun run = test::runCli(
             {"solve", file, "--perturb", "0.02", "--seed", "9", "--iterations", "30", "-o", out});

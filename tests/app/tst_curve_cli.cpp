@@ -26,7 +26,9 @@ class TstCurveCli : public QObject {
 
 private slots:
     void initTestCase() {
-        QCOMPARE(test::runCli({"example", "fig8", "-o", path("fig8.devsurf")}).exitCode, 0);
+        QCOMPARE(
+            test::runCli({"example", "fig8", "--as-built", "-o", path("fig8.devsurf")}).exitCode,
+            0);
         QProcess python;
         python.start(
             QStringLiteral("/usr/bin/python3"),

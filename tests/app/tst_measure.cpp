@@ -144,7 +144,7 @@ private slots:
         QTemporaryDir dir;
         const QString flat = dir.filePath(QStringLiteral("fig8.devsurf"));
         const QString folded = dir.filePath(QStringLiteral("folded.devsurf"));
-        QCOMPARE(test::runCli({"example", "fig8", "-o", flat}).exitCode, 0);
+        QCOMPARE(test::runCli({"example", "fig8", "--as-built", "-o", flat}).exitCode, 0);
         QCOMPARE(test::runCli({"drag", flat, "--vertices", "5,6,9,10", "--by", "0,0,85",
                                "--keep-lengths", "-o", folded})
                      .exitCode,

@@ -30,8 +30,12 @@ class TstPatternCli : public QObject {
 
 private slots:
     void initTestCase() {
-        QCOMPARE(runCli({"example", "annulus", "-o", path("annulus.devsurf")}).exitCode, 0);
-        QCOMPARE(runCli({"example", "cylinder", "-o", path("cylinder.devsurf")}).exitCode, 0);
+        QCOMPARE(
+            runCli({"example", "annulus", "--as-built", "-o", path("annulus.devsurf")}).exitCode,
+            0);
+        QCOMPARE(
+            runCli({"example", "cylinder", "--as-built", "-o", path("cylinder.devsurf")}).exitCode,
+            0);
     }
 
     void exportWritesEveryFormat() {

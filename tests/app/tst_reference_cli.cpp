@@ -72,7 +72,9 @@ class TstReferenceCli : public QObject {
 
 private slots:
     void initTestCase() {
-        QCOMPARE(test::runCli({"example", "sheet", "-o", path("sheet.devsurf")}).exitCode, 0);
+        QCOMPARE(
+            test::runCli({"example", "sheet", "--as-built", "-o", path("sheet.devsurf")}).exitCode,
+            0);
         // A tetrahedron of 10 x 20 x 30.5 mm, a quad of it split into two triangles.
         QVERIFY(writeFile(path("tet.obj"), "v 0 0 0\nv 10 0 0\nv 0 20 0\nv 0 0 30.5\n"
                                            "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n"));

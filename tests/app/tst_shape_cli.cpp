@@ -24,7 +24,9 @@ class TstShapeCli : public QObject {
 
 private slots:
     void initTestCase() {
-        QCOMPARE(test::runCli({"example", "fig8", "-o", path("fig8.devsurf")}).exitCode, 0);
+        QCOMPARE(
+            test::runCli({"example", "fig8", "--as-built", "-o", path("fig8.devsurf")}).exitCode,
+            0);
     }
 
     void meshes() {

@@ -103,7 +103,7 @@ private slots:
         const QString sheet = dir.filePath(QStringLiteral("sheet.devsurf"));
         const QString pulled = dir.filePath(QStringLiteral("pulled.devsurf"));
         const QString solved = dir.filePath(QStringLiteral("solved.devsurf"));
-        QCOMPARE(test::runCli({"example", "sheet", "-o", sheet}).exitCode, 0);
+        QCOMPARE(test::runCli({"example", "sheet", "--as-built", "-o", sheet}).exitCode, 0);
         QCOMPARE(test::runCli({"drag", sheet, "--vertices", "5", "--by", "0,0,80", "--steps", "2",
                                "--after", "0", "--stretch", "-o", pulled})
                      .exitCode,
