@@ -209,12 +209,13 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
     }
     const auto start = std::chrono::steady_clock::now();
     const bool drag = isDrag(request.kind);
-    const bool settle = !drag || request.settle;
+    const bool settle = !drag || (request.settle && !request.prepare);
     const std::size_t count = request.surfaces.size();
     JobOutcome outcome;
     outcome.kind = request.kind;
     outcome.drag = request.drag;
     outcome.settled = settle;
+    outcome.prepared = drag && request.prepare;
 
     if (!drag || request.drag == 0 || !m_drag || m_drag->id != request.drag ||
         m_drag->sessions.size() != count) {
@@ -227,7 +228,7 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
         outcome.elapsedMs =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count();
-        if (!outcome.ok || !drag || request.settle) {
+        if (!outcome.ok || !drag || settle) {
             // A Solve, an edit, a release or a failure ends what a drag continues.
             m_drag.reset();
         }
@@ -326,6 +327,17 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             d.moves[s].clear();
             d.reached[s].clear();
             d.reachedStride[s] = 1;
+        }
+        if (outcome.prepared) {
+            const Summary prepared = session->prepare();
+            if (!prepared.succeeded()) {
+                return fail(
+                    failureOf(JobError::SolverFailed, key, prepared.status, prepared.detail));
+            }
+            assessment.summary = prepared;
+            outcome.surfaces.push_back(snapshot);
+            outcome.assessments.push_back(std::move(assessment));
+            continue;
         }
         if (drag) {
             // The release at the last move's position is no move of its own: the replay then

@@ -45,6 +45,12 @@ struct JobRequest {
     // A drag's release: the iterations after it, the keep-lengths replay and the full
     // assessment. Solve and Edit always settle.
     bool settle = false;
+    // A drag about to start (the pointer resting on a vertex with the Drag tool): the job builds
+    // the drag's sessions with the pulled points where they are and the solver's analysis of
+    // their structure, runs no iteration and returns the surfaces unchanged (JobOutcome::
+    // prepared). The drag's first move with the same id and pulled points continues them.
+    // Only for drags; it overrides `settle`, and other kinds ignore it.
+    bool prepare = false;
     std::vector<model::CompositeSurface> surfaces;   // every surface of the project (pins inside)
     std::map<int, std::vector<VertexHandle>> pulled; // per surface index
     std::map<int, std::vector<ControlPointHandle>> pulledControlPoints; // a dragged crease
@@ -226,8 +232,9 @@ struct JoinReport {
 struct JobOutcome {
     JobKind kind = JobKind::Solve;
     std::uint64_t drag = 0;
-    bool settled = false; // answers a Solve, an Edit or a drag's release
-    bool ok = false;      // false: failure says why, surfaces is empty
+    bool settled = false;  // answers a Solve, an Edit or a drag's release
+    bool prepared = false; // answers JobRequest::prepare: nothing moved, nothing to show
+    bool ok = false;       // false: failure says why, surfaces is empty
     JobFailure failure;
     // Every surface, valid: a session starts only from a valid surface, changes only positions
     // and refuses an iterate with degenerate geometry, so the front ends apply these without

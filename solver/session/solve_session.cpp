@@ -445,6 +445,14 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
     return total;
 }
 
+Summary SolveSession::prepare() {
+    Options options = m_options.solver;
+    options.maxIterations = 0;
+    options.cancel = nullptr;
+    options.progress = nullptr;
+    return m_projection.solve(m_formulation->problem(), m_x, options);
+}
+
 SolveSession::BestIterate SolveSession::returnToBestIterate(Summary* summary) {
     if (m_dragging || m_bestIteration == 0 || !(m_residual > m_bestResidual)) {
         return {0, m_residual};

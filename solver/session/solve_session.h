@@ -215,6 +215,12 @@ public:
     // leaves surface() at the last good state.
     Summary step(int n, const std::atomic<bool>* cancel = nullptr,
                  const std::function<void(const IterationStats&)>& perIteration = {});
+    // Builds what the first step() would build before iterating (the normal equations'
+    // structure, the ordering and the symbolic analysis) and runs no iteration: a drag prepared
+    // while the pointer rests on a vertex answers its first move without that wait. The state,
+    // the targets and the schedule stay as they are, so the steps after it give the same bits
+    // as without it. Returns the solver's summary (its analysisMs; no iterations).
+    Summary prepare();
 
     const model::CompositeSurface& surface() const { return m_surface; }
     // Whether a settling stopped early, its residual above kHopelessSettlingResidual in

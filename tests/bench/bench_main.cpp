@@ -140,6 +140,7 @@ int main(int argc, char** argv) {
     devsurf::bench::BenchmarkOptions options;
     std::string study;
     bool drag = false;
+    bool coldPress = false;
     bool paper = false;
     bool haveStart = false;
     bool haveIterations = false;
@@ -156,6 +157,8 @@ int main(int argc, char** argv) {
             options.models.push_back(argv[++i]);
         } else if (arg == "--drag") {
             drag = true;
+        } else if (arg == "--cold-press") {
+            coldPress = true;
         } else if (arg == "--paper") {
             paper = true;
         } else if (arg == "--paper-size-cap" && i + 1 < argc) {
@@ -207,7 +210,7 @@ int main(int argc, char** argv) {
             }
         } else {
             std::cerr << "usage: devsurf-bench [--json] [--model NAME]... [--no-ceres | --blas]\n"
-                         "       devsurf-bench --drag [--json]\n"
+                         "       devsurf-bench --drag [--model NAME]... [--cold-press] [--json]\n"
                          "       devsurf-bench --approximation TARGET [--strips K] [--intervals N] "
                          "[--iterations N] [--rho R] [--json]\n"
                          "       devsurf-bench --paper [--model ROW]... [--paper-size-cap N] "
@@ -269,6 +272,8 @@ int main(int argc, char** argv) {
     if (drag) {
         devsurf::bench::DragBenchOptions dragOptions;
         dragOptions.log = [](const std::string& line) { std::cerr << line << "\n"; };
+        dragOptions.prepare = !coldPress;
+        dragOptions.models = options.models;
         devsurf::bench::printDragBench(devsurf::bench::runDragBench(dragOptions), options.json,
                                        std::cout);
         return 0;

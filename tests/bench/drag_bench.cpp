@@ -128,7 +128,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
     const bool keepLengths = options.keepLengths.value_or(true);
     const int after = options.afterIterations > 0 ? options.afterIterations
                                                   : solver::iterationsAfterDrag(keepLengths);
-    auto request = [&](quint64 tag, double t, int iterations, bool settle) {
+    auto request = [&](quint64 tag, double t, int iterations, bool settle, bool prepare = false) {
         solver::SolveRequest r;
         // The bench tags each request with its move number (the application sends the
         // document's revision at the press and tracks the revisions it produced itself).
@@ -141,6 +141,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
                         : keepLengths                    ? solver::DragLengths::Keep
                                                          : solver::DragLengths::Stretch;
         r.job.settle = settle;
+        r.job.prepare = prepare;
         r.job.surfaces = {document.surface(0)};
         r.job.pulled[0] = {{dragged, false, from + lift * t}};
         worker.submit(std::move(r));
@@ -150,6 +151,11 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
             const solver::JobOutcome& outcome = result.outcome;
             if (!outcome.ok) {
                 row.error = "the solve job failed: " + outcome.failure.detail;
+                loop.quit();
+                return;
+            }
+            if (outcome.prepared) {
+                row.prepareMs = clock.nsecsElapsed() / 1e6;
                 loop.quit();
                 return;
             }
@@ -207,13 +213,22 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
             mouse.stop();
         }
     });
+    if (options.prepare) {
+        // The pointer rests on the vertex: the drag is prepared before the press.
+        clock.start();
+        request(0, 0.0, 0, false, true);
+        loop.exec();
+        if (!row.error.empty()) {
+            return row;
+        }
+    }
     clock.start();
     mouse.start();
     loop.exec();
     mouse.stop();
     worker.cancel();
     row.largestStallMs = stalls.largestGapMs();
-    row.solved = static_cast<int>(worker.solvedCount());
+    row.solved = static_cast<int>(worker.solvedCount()) - (options.prepare ? 1 : 0);
     if (!latency.empty()) {
         row.firstResultMs = latency.front();
         row.medianMs = percentile(latency, 0.5);
@@ -303,11 +318,19 @@ DragBenchReport runDragBench(const DragBenchOptions& options) {
         {"fig12-annulus-held", model::makeExample("annulus", 6, held).surfaces.front()},
         {"annulus-14-held", model::makeExample("annulus", 14, held).surfaces.front()},
     };
+    auto wanted = [&options](const std::string& name) {
+        return options.models.empty() || std::find(options.models.begin(), options.models.end(),
+                                                   name) != options.models.end();
+    };
     for (const auto& [name, surface] : drags) {
+        if (!wanted(name)) {
+            continue;
+        }
         log("drag: " + name);
         report.drags.push_back(runDrag(name, surface, options));
     }
-    const std::vector<BenchModel> largest = benchModels({"large-annulus"});
+    const std::vector<BenchModel> largest =
+        wanted("large-annulus") ? benchModels({"large-annulus"}) : std::vector<BenchModel>{};
     if (!largest.empty()) {
         log("drag: solve stall on " + largest.front().name);
         report.solve = runSolve(largest.front().name, largest.front().surface, options);
@@ -327,7 +350,8 @@ void printDragBench(const DragBenchReport& report, bool json, std::ostream& out)
             std::snprintf(
                 line, sizeof line,
                 "%s{\"model\": \"%s\", \"variables\": %d, \"moves\": %d, \"solved\": %d, "
-                "\"applied\": %d, \"first_result_ms\": %.3f, \"median_ms\": %.3f, "
+                "\"applied\": %d, \"prepare_ms\": %.3f, \"first_result_ms\": %.3f, "
+                "\"median_ms\": %.3f, "
                 "\"p95_ms\": %.3f, \"applied_per_second\": %.2f, "
                 "\"largest_stall_ms\": %.3f, \"release_ms\": %.3f, "
                 "\"residual_after\": %.3e, \"fold_overs\": %d, "
@@ -335,8 +359,8 @@ void printDragBench(const DragBenchReport& report, bool json, std::ostream& out)
                 "\"taken_back\": %s, \"followed\": %.3f, \"held_back_mm\": %.3f, "
                 "\"kept_residual\": %.3e, \"kept_overlap_patches\": %d, \"error\": \"%s\"}",
                 i == 0 ? "" : ", ", r.model.c_str(), r.variables, r.moves, r.solved, r.applied,
-                r.firstResultMs, r.medianMs, r.p95Ms, r.appliedPerSecond, r.largestStallMs,
-                r.releaseMs, r.residualAfter, r.foldOvers, r.overlappingPatches,
+                r.prepareMs, r.firstResultMs, r.medianMs, r.p95Ms, r.appliedPerSecond,
+                r.largestStallMs, r.releaseMs, r.residualAfter, r.foldOvers, r.overlappingPatches,
                 r.replayedStretching ? "true" : "false", r.takenBack ? "true" : "false", r.followed,
                 r.heldBackMm, r.keptResidual, r.keptOverlappingPatches, r.error.c_str());
             out << line;
@@ -355,8 +379,9 @@ void printDragBench(const DragBenchReport& report, bool json, std::ostream& out)
     }
     out << "Drag through the worker (move to result applied; targets: median <= 16 ms, stall "
            "<= 20 ms)\n";
-    std::snprintf(line, sizeof line, "%-14s %9s %6s %6s %7s %9s %9s %9s %9s %9s %10s %9s %6s %8s\n",
-                  "model", "variables", "moves", "solved", "applied", "first ms", "median ms",
+    std::snprintf(line, sizeof line,
+                  "%-18s %9s %6s %6s %7s %10s %9s %9s %9s %9s %9s %10s %9s %6s %8s\n", "model",
+                  "variables", "moves", "solved", "applied", "prepare ms", "first ms", "median ms",
                   "p95 ms", "applied/s", "stall ms", "release ms", "residual", "folds", "overlaps");
     out << line;
     for (const DragBenchRow& r : report.drags) {
@@ -369,16 +394,24 @@ void printDragBench(const DragBenchReport& report, bool json, std::ostream& out)
         } else if (r.takenBack) {
             std::snprintf(taken, sizeof taken, "  taken back to the press");
         }
-        std::snprintf(
-            line, sizeof line,
-            "%-14s %9d %6d %6d %7d %9.1f %9.1f %9.1f %9.1f %9.1f %10.1f %9.2e %6d %8d%s%s%s%s\n",
-            r.model.c_str(), r.variables, r.moves, r.solved, r.applied, r.firstResultMs, r.medianMs,
-            r.p95Ms, r.appliedPerSecond, r.largestStallMs, r.releaseMs, r.residualAfter,
-            r.foldOvers, r.overlappingPatches, r.replayedStretching ? "  replayed stretching" : "",
-            taken, r.error.empty() ? "" : "  failed: ", r.error.c_str());
+        char prepared[32] = "-";
+        if (r.prepareMs >= 0.0) {
+            std::snprintf(prepared, sizeof prepared, "%.1f", r.prepareMs);
+        }
+        std::snprintf(line, sizeof line,
+                      "%-18s %9d %6d %6d %7d %10s %9.1f %9.1f %9.1f %9.1f %9.1f %10.1f %9.2e %6d "
+                      "%8d%s%s%s%s\n",
+                      r.model.c_str(), r.variables, r.moves, r.solved, r.applied, prepared,
+                      r.firstResultMs, r.medianMs, r.p95Ms, r.appliedPerSecond, r.largestStallMs,
+                      r.releaseMs, r.residualAfter, r.foldOvers, r.overlappingPatches,
+                      r.replayedStretching ? "  replayed stretching" : "", taken,
+                      r.error.empty() ? "" : "  failed: ", r.error.c_str());
         out << line;
     }
     const SolveStallRow& s = report.solve;
+    if (s.model.empty()) {
+        return; // not asked for (DragBenchOptions::models)
+    }
     std::snprintf(line, sizeof line,
                   "Solve of %s (%d variables, %d iterations): %.1f ms, largest stall %.1f ms%s%s\n",
                   s.model.c_str(), s.variables, s.iterations, s.solveMs, s.largestStallMs,

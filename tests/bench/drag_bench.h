@@ -23,6 +23,13 @@ struct DragBenchOptions {
     std::optional<bool> keepLengths;
     int afterIterations = 0; // after the release; 0: as the application (20 keeping lengths, 10)
     int solveIterations = 10;
+    // The pointer rests on the vertex before the press, as in the desktop application: the drag
+    // is prepared first (solver::JobRequest::prepare) and its moves start once that is done.
+    // False: the first move starts the drag cold (what a press without a rest costs).
+    bool prepare = true;
+    // The drags to run by name (fig12-annulus, annulus-14, fig12-annulus-held,
+    // annulus-14-held, and large-annulus for the Solve's stall); empty: all.
+    std::vector<std::string> models;
     std::function<void(const std::string&)> log;
 };
 
@@ -32,7 +39,9 @@ struct DragBenchRow {
     int moves = 0;
     int solved = 0;             // requests the worker ran (the others were coalesced away)
     int applied = 0;            // results pushed to the document during the moves
-    double firstResultMs = 0.0; // first move to its result applied (includes the analysis)
+    double prepareMs = -1.0;    // the drag prepared while the pointer rests (-1: not prepared)
+    double firstResultMs = 0.0; // first move to its result applied (includes the analysis
+                                // unless the drag was prepared)
     double medianMs = 0.0;      // move event to a result covering it applied to the document
     double p95Ms = 0.0;
     double appliedPerSecond = 0.0;

@@ -5,6 +5,7 @@
 #include "solver/formulation/perturbation.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
+#include "solver/session/solve_job.h"
 #include "solver/session/solve_session.h"
 
 #include "lifted_fig8.h"
@@ -41,6 +42,61 @@ class TstSolveSession : public QObject {
     Q_OBJECT
 
 private slots:
+    void aPreparedDragGivesTheBitsOfAColdOne() {
+        // JobRequest::prepare builds a drag's session and the solver's analysis without an
+        // iteration; the drag that continues it gives, move by move and after the release,
+        // the surfaces of the same drag started cold, and its first move finds the structure
+        // built.
+        model::CompositeSurface annulus = model::makeExample("annulus", 4).surfaces.front();
+        annulus.setPinned(0, true);
+        constexpr model::VertexId kDragged = 1;
+        const model::Vec3 start = annulus.position(kDragged);
+        auto request = [&](std::uint64_t drag, int move, bool settle, bool prepare) {
+            JobRequest r;
+            r.kind = JobKind::VertexDrag;
+            r.drag = drag;
+            r.settle = settle;
+            r.prepare = prepare;
+            r.surfaces = {annulus};
+            r.pulled[0] = {{kDragged, false, start + model::Vec3(0.0, 0.0, 3.0 * move)}};
+            return r;
+        };
+        SolveJob cold;
+        SolveJob warm;
+        const JobOutcome prepared = warm.run(request(2, 0, false, true));
+        QVERIFY(prepared.ok);
+        QVERIFY(prepared.prepared);
+        QVERIFY(!prepared.settled);
+        QCOMPARE(prepared.iterationsRun, 0);
+        QVERIFY(prepared.surfaces.front() == annulus);
+        for (int move = 1; move <= 5; ++move) {
+            const JobOutcome a = cold.run(request(1, move, false, false));
+            const JobOutcome b = warm.run(request(2, move, false, false));
+            QVERIFY(a.ok && b.ok);
+            QVERIFY(!a.prepared && !b.prepared);
+            QCOMPARE(a.assessments.front().summary.structureReused, move > 1);
+            QVERIFY(b.assessments.front().summary.structureReused);
+            QVERIFY2(a.surfaces.front() == b.surfaces.front(), qPrintable(QString::number(move)));
+        }
+        const JobOutcome a = cold.run(request(1, 5, true, false));
+        const JobOutcome b = warm.run(request(2, 5, true, false));
+        QVERIFY(a.ok && b.ok && a.settled && b.settled);
+        QVERIFY(a.surfaces.front() == b.surfaces.front());
+        QVERIFY(model::distance(b.surfaces.front().position(kDragged), start) > 5.0);
+
+        // A session prepared alone keeps its state, and steps as one that was not.
+        SolveSession once(annulus, {{kDragged, false, start}}, keepLengthsSessionOptions());
+        SolveSession twice(annulus, {{kDragged, false, start}}, keepLengthsSessionOptions());
+        const std::vector<double> state = twice.state();
+        QVERIFY(twice.prepare().succeeded());
+        QVERIFY(sameBits(twice.state(), state));
+        QCOMPARE(twice.iterationsDone(), 0);
+        const model::Vec3 target = start + model::Vec3(0.0, 0.0, 5.0);
+        QVERIFY(once.setHandleTarget(kDragged, target) && twice.setHandleTarget(kDragged, target));
+        QVERIFY(once.step(3).succeeded() && twice.step(3).succeeded());
+        QVERIFY(sameBits(once.state(), twice.state()));
+    }
+
     // (ExperimentalOptions::levenbergMarquardt across solve() calls: tst_damping_schedule.)
     void stepOneTenTimesEqualsStepTen() {
         const model::CompositeSurface start = roughAnnulus();
