@@ -35,13 +35,12 @@ constexpr int kClickSlop = 3;
 // Logical pixels within which Snap to Reference Curves pulls a dragged vertex onto a curve.
 constexpr double kSnapPixels = 10.0;
 
-// Drags get session keys of their own, so that no drag continues another one's solver state.
-quint64 nextSessionKey() {
+} // namespace
+
+quint64 DragTool::nextSessionKey() {
     static quint64 key = 0x44524147'00000000ULL; // never 0 (0 is Solve)
     return ++key;
 }
-
-} // namespace
 
 DragTool::DragTool(QAction* action, Workspace* workspace, views::SurfaceView* view,
                    SolveController* solver)
@@ -71,6 +70,7 @@ DragTool::DragTool(QAction* action, Workspace* workspace, views::SurfaceView* vi
         }
     });
     connect(workspace->document(), &document::Document::projectReset, this, [this] {
+        m_prepared.reset();
         if (m_state != State::Idle) {
             m_solver->worker()->cancel();
             m_state = State::Idle;
@@ -159,6 +159,9 @@ bool DragTool::eventFilter(QObject* watched, QEvent* event) {
             move(static_cast<QMouseEvent*>(event)->position().toPoint());
             return true;
         }
+        if (m_state == State::Idle && !inSheetView) {
+            hovered(static_cast<QMouseEvent*>(event)->position().toPoint());
+        }
         return false;
     case QEvent::MouseButtonRelease: {
         auto* me = static_cast<QMouseEvent*>(event);
@@ -192,19 +195,10 @@ bool DragTool::press(const QPoint& pos) {
             tr("Vertex %1 is pinned and cannot be dragged; unpin it first.").arg(pick->id));
         return true;
     }
-    // The pressed vertex with the other selected vertices of its surface, if it is selected
-    // (a tool that moves the selection as a whole takes them from a press on any vertex).
-    document::Selection* selection = m_workspace->selection();
-    m_vertices.clear();
-    for (const Pick& p : selection->picks()) {
-        if (p.kind == Pick::Kind::Vertex && p.surface == pick->surface && surface.hasVertex(p.id) &&
-            !surface.isPinned(p.id)) {
-            m_vertices.push_back(p.id);
-        }
-    }
-    if (!selection->contains(*pick) && (!movesWholeSelection() || m_vertices.size() < 2)) {
-        selection->set({*pick});
-        m_vertices.assign(1, pick->id);
+    m_vertices = verticesPressedAt(*pick, surface);
+    if (m_vertices.size() == 1 && m_vertices.front() == pick->id &&
+        !m_workspace->selection()->contains(*pick)) {
+        m_workspace->selection()->set({*pick});
     }
     if (m_solver->isSolving()) {
         m_solver->cancel(tr("a drag started"));
@@ -291,7 +285,7 @@ bool DragTool::start(const QPoint& pos, const model::Vec3& anchor) {
         m_crease.reset();
         return true;
     }
-    m_sessionKey = nextSessionKey();
+    m_sessionKey = sessionKeyAtPress();
     m_pressRevision = doc->revision();
     m_ownRevision = m_pressRevision;
     m_previewed = false;
@@ -381,18 +375,38 @@ void DragTool::submit(bool settle) {
         job.pulledControlPoints[m_surface] =
             m_crease->controlPointHandles(m_creaseDelta, m_creaseSlides);
     }
+    job.lengths = dragLengths();
+    m_solver->worker()->submit(std::move(request));
+}
+
+solver::DragLengths DragTool::dragLengths() {
     switch (SolveController::lengthsSetting()) {
-    case SolveController::LengthsMode::Automatic:
-        job.lengths = solver::DragLengths::Automatic;
-        break;
     case SolveController::LengthsMode::Keep:
-        job.lengths = solver::DragLengths::Keep;
-        break;
+        return solver::DragLengths::Keep;
     case SolveController::LengthsMode::Stretch:
-        job.lengths = solver::DragLengths::Stretch;
+        return solver::DragLengths::Stretch;
+    case SolveController::LengthsMode::Automatic:
         break;
     }
-    m_solver->worker()->submit(std::move(request));
+    return solver::DragLengths::Automatic;
+}
+
+std::vector<model::VertexId>
+DragTool::verticesPressedAt(const Pick& pressed, const model::CompositeSurface& surface) const {
+    // The pressed vertex with the other selected vertices of its surface, if it is selected
+    // (a tool that moves the selection as a whole takes them from a press on any vertex).
+    const document::Selection* selection = m_workspace->selection();
+    std::vector<model::VertexId> vertices;
+    for (const Pick& p : selection->picks()) {
+        if (p.kind == Pick::Kind::Vertex && p.surface == pressed.surface &&
+            surface.hasVertex(p.id) && !surface.isPinned(p.id)) {
+            vertices.push_back(p.id);
+        }
+    }
+    if (!selection->contains(pressed) && (!movesWholeSelection() || vertices.size() < 2)) {
+        vertices.assign(1, pressed.id);
+    }
+    return vertices;
 }
 
 void DragTool::release(const QPoint& pos, Qt::KeyboardModifiers modifiers) {
@@ -440,7 +454,8 @@ void DragTool::end(bool applied, const QString& sentence) {
 
 void DragTool::onResult(const solver::SolveResult& result) {
     const solver::JobOutcome& outcome = result.outcome;
-    if (m_state == State::Idle || result.ticket != m_sessionKey || outcome.cancelled()) {
+    if (m_state == State::Idle || result.ticket != m_sessionKey || outcome.cancelled() ||
+        outcome.prepared) {
         return;
     }
     document::Document* doc = m_workspace->document();

@@ -18,6 +18,7 @@
 #include <vector>
 
 class QAction;
+class QTimer;
 
 namespace devsurf::solver {
 struct SolveResult;
@@ -156,6 +157,37 @@ private:
     void onResult(const solver::SolveResult& result);
     void end(bool applied, const QString& sentence);
     bool handleKey(QEvent* event);
+    // The vertices a press on vertex `pressed` of `surface` drags (the selected ones of its
+    // surface, or it alone), without changing the selection.
+    std::vector<model::VertexId> verticesPressedAt(const document::Pick& pressed,
+                                                   const model::CompositeSurface& surface) const;
+    // The lengths mode of the Solver settings as the solve job takes it.
+    static solver::DragLengths dragLengths();
+
+    // A drag prepared while the pointer rests on a vertex (drag_tool_prepare.cpp): the worker
+    // builds the drag's session and its solver analysis before the press
+    // (solver::JobRequest::prepare), and a press on the same vertices of the same design,
+    // dragged the same way, continues it instead of starting cold.
+    struct Prepared {
+        quint64 key = 0;
+        quint64 revision = 0;
+        int surface = -1;
+        std::vector<model::VertexId> vertices;
+        solver::JobKind kind = solver::JobKind::VertexDrag;
+        solver::DragLengths lengths = solver::DragLengths::Automatic;
+    };
+    // The pointer moved over the 3D view with the tool on and idle.
+    void hovered(const QPoint& pos);
+    // It has rested at m_restPos for kRestMs: prepares a drag of the vertex under it.
+    void rested();
+    // Drags get session keys of their own, so that no drag continues another one's solver
+    // state (a prepared drag's is its press's).
+    static quint64 nextSessionKey();
+    // The session key of the drag pressed now: the prepared one if it is this drag's.
+    quint64 sessionKeyAtPress();
+    std::optional<Prepared> m_prepared;
+    QTimer* m_rest = nullptr;
+    QPoint m_restPos;
 
     bool m_snapToCurves = false;
     int m_snappedCurve = -1;

@@ -1,0 +1,108 @@
+// The Drag tool's preparation: while the pointer rests on a vertex, the worker builds the drag
+// of that vertex (its session, the normal equations' structure, the ordering and the symbolic
+// analysis), so that the first move of a large design answers in one iteration's time instead
+// of waiting for all of that (annulus-14: the first result 299 ms cold, 70 ms prepared;
+// docs/tuning.md "A drag prepared while the pointer rests").
+
+#include "drag_tool.h"
+
+#include "model/document/document.h"
+#include "model/document/selection.h"
+#include "solve_controller.h"
+#include "solver/worker/solver_worker.h"
+#include "views/surface_view.h"
+#include "workspace.h"
+
+#include <QAction>
+#include <QTimer>
+
+namespace devsurf::app {
+
+using document::Pick;
+
+namespace {
+
+// How long the pointer rests on a vertex before its drag is prepared: long enough that moving
+// across the view prepares nothing, short against the time it takes to aim and press.
+constexpr int kRestMs = 150;
+// Designs with fewer patches answer their first move within a frame or two anyway (fig8's
+// nine patches in 2 ms, the annulus's 48 in 57 ms cold and 18 ms prepared), so only surfaces
+// of at least this many patches are prepared.
+constexpr std::size_t kPreparedFaces = 40;
+
+} // namespace
+
+void DragTool::hovered(const QPoint& pos) {
+    if (!m_rest) {
+        m_rest = new QTimer(this);
+        m_rest->setSingleShot(true);
+        m_rest->setInterval(kRestMs);
+        connect(m_rest, &QTimer::timeout, this, &DragTool::rested);
+    }
+    m_restPos = pos;
+    m_rest->start();
+}
+
+void DragTool::rested() {
+    document::Document* doc = m_workspace->document();
+    // Only an idle tool on an idle worker: a preparation never delays a Solve, an approximation
+    // or a drag's settling.
+    if (!m_action->isChecked() || m_state != State::Idle || m_solver->isSolving() ||
+        m_solver->worker()->isBusy()) {
+        return;
+    }
+    const std::optional<Pick> pick = m_view->pickAt(m_restPos);
+    if (!pick || pick->kind != Pick::Kind::Vertex || pick->surface < 0 ||
+        pick->surface >= doc->surfaceCount()) {
+        return;
+    }
+    const model::CompositeSurface& surface = doc->surface(pick->surface);
+    if (surface.isPinned(pick->id) || surface.faces().size() < kPreparedFaces) {
+        return;
+    }
+    Prepared prepared;
+    prepared.revision = doc->revision();
+    prepared.surface = pick->surface;
+    prepared.vertices = verticesPressedAt(*pick, surface);
+    prepared.kind = jobKind();
+    prepared.lengths = dragLengths();
+    if (m_prepared && m_prepared->revision == prepared.revision &&
+        m_prepared->surface == prepared.surface && m_prepared->vertices == prepared.vertices &&
+        m_prepared->kind == prepared.kind && m_prepared->lengths == prepared.lengths) {
+        return; // prepared already
+    }
+    prepared.key = nextSessionKey();
+
+    solver::SolveRequest request;
+    request.revision = prepared.revision;
+    request.ticket = prepared.key;
+    solver::JobRequest& job = request.job;
+    job.kind = prepared.kind;
+    job.drag = prepared.key;
+    job.prepare = true;
+    job.lengths = prepared.lengths;
+    job.surfaces = doc->project().surfaces;
+    std::vector<solver::VertexHandle>& handles = job.pulled[prepared.surface];
+    for (model::VertexId v : prepared.vertices) {
+        handles.push_back({v, false, surface.position(v)});
+    }
+    m_prepared = std::move(prepared);
+    m_solver->worker()->submit(std::move(request));
+}
+
+quint64 DragTool::sessionKeyAtPress() {
+    if (m_rest) {
+        m_rest->stop();
+    }
+    std::optional<Prepared> prepared;
+    prepared.swap(m_prepared); // a preparation serves one press at most
+    const document::Document* doc = m_workspace->document();
+    if (prepared && !m_inSheet && !m_crease && prepared->revision == doc->revision() &&
+        prepared->surface == m_surface && prepared->vertices == m_vertices &&
+        prepared->kind == jobKind() && prepared->lengths == dragLengths()) {
+        return prepared->key;
+    }
+    return nextSessionKey();
+}
+
+} // namespace devsurf::app

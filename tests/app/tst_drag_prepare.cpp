@@ -1,0 +1,211 @@
+// The Drag tool prepares a drag while the pointer rests on a vertex: the press that follows
+// continues the prepared session, and anything else starts cold as before.
+#include "drag_tool.h"
+#include "main_window.h"
+#include "model/document/commands/pin_vertices_command.h"
+#include "model/document/document.h"
+#include "model/document/selection.h"
+#include "solve_controller.h"
+#include "solver/worker/solver_worker.h"
+#include "test_registry.h"
+#include "views/surface_view.h"
+#include "views/vtk_opengl_widget.h"
+#include "window_test_support.h"
+#include "workspace.h"
+
+#include <QAction>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTest>
+#include <QUndoStack>
+
+#include <memory>
+#include <optional>
+
+using namespace devsurf;
+using document::Pick;
+using test::bytesOf;
+using test::showActiveWithExample;
+
+class TstDragPrepare : public QObject {
+    Q_OBJECT
+
+    // The annulus (48 patches) with vertex 0 pinned, nothing selected and the Drag tool on.
+    struct Setup {
+        app::MainWindow window;
+        document::Document* doc = nullptr;
+        QWidget* gl = nullptr;
+    };
+
+    static bool show(Setup& s) {
+        if (!showActiveWithExample(s.window, QStringLiteral("annulus"))) {
+            return false;
+        }
+        s.doc = s.window.workspace()->document();
+        s.doc->undoStack()->push(
+            document::PinVerticesCommand::create(*s.doc, 0, {0}, true).takeCommand().release());
+        s.window.workspace()->selection()->clear();
+        s.window.action(QStringLiteral("actionDragTool"))->setChecked(true);
+        s.gl = s.window.surfaceView()->glWidget();
+        s.window.surfaceView()->grabImage();
+        return true;
+    }
+
+    static QPoint vertexAt(Setup& s, model::VertexId vertex) {
+        const QPoint at = s.window.surfaceView()->projectVertexToWidget(0, vertex);
+        const auto pick = s.window.surfaceView()->pickAt(at);
+        return pick && pick->kind == Pick::Kind::Vertex && pick->id == vertex ? at : QPoint(-1, -1);
+    }
+
+    // The pointer comes to rest at `at` (from elsewhere: a move to where it already is gives
+    // no event).
+    static void restAt(Setup& s, const QPoint& at) {
+        QTest::mouseMove(s.gl, at + QPoint(37, 23));
+        QTest::mouseMove(s.gl, at);
+    }
+
+    // The worker's results from now on.
+    static std::unique_ptr<QSignalSpy> watchResults(Setup& s) {
+        return std::make_unique<QSignalSpy>(s.window.solveController()->worker(),
+                                            &solver::SolverWorker::finished);
+    }
+
+    static solver::SolveResult resultAt(const QSignalSpy& results, qsizetype i) {
+        return results.at(i).front().value<solver::SolveResult>();
+    }
+
+    // The first result of a move (neither the preparation nor the release).
+    static std::optional<solver::SolveResult> firstMove(const QSignalSpy& results) {
+        for (qsizetype i = 0; i < results.size(); ++i) {
+            const solver::SolveResult result = resultAt(results, i);
+            if (!result.outcome.prepared && !result.outcome.settled) {
+                return result;
+            }
+        }
+        return std::nullopt;
+    }
+
+    // Presses at `at`, moves 20 pixels up in 4 steps and releases; true once the drag ended
+    // applied. The first move's result comes before the other moves (later requests replace
+    // one the worker has not started yet).
+    static bool drag(Setup& s, const QPoint& at, QSignalSpy& results) {
+        QSignalSpy finished(s.window.dragTool(), &app::DragTool::dragFinished);
+        QTest::mousePress(s.gl, Qt::LeftButton, {}, at);
+        QTest::mouseMove(s.gl, at + QPoint(0, -5));
+        while (!firstMove(results)) {
+            if (!results.wait(30000)) {
+                return false;
+            }
+        }
+        for (int i = 2; i <= 4; ++i) {
+            QTest::mouseMove(s.gl, at + QPoint(0, -5 * i));
+        }
+        QTest::mouseRelease(s.gl, Qt::LeftButton, {}, at + QPoint(0, -20));
+        return finished.wait(60000) && finished.front().front().toBool();
+    }
+
+    // Rests the pointer at `at` and waits for the preparation; its ticket, or 0 if none came.
+    static quint64 prepareAt(Setup& s, const QPoint& at, QSignalSpy& results) {
+        restAt(s, at);
+        if (!results.wait(30000) || !resultAt(results, 0).outcome.prepared) {
+            return 0;
+        }
+        return resultAt(results, 0).ticket;
+    }
+
+    // Drags from `at`; true if the drag was applied and its first move started a session of its
+    // own instead of continuing the preparation `prepared`.
+    static bool dragStartsCold(Setup& s, const QPoint& at, QSignalSpy& results, quint64 prepared) {
+        if (!drag(s, at, results)) {
+            return false;
+        }
+        const std::optional<solver::SolveResult> move = firstMove(results);
+        return move && move->ticket != prepared &&
+               !move->outcome.assessments.front().summary.structureReused;
+    }
+
+private slots:
+    void init() { QSettings().clear(); }
+
+    void aRestingPointerPreparesTheDragThatFollows() {
+        Setup s;
+        QVERIFY(show(s));
+        const QPoint at = vertexAt(s, 20);
+        QVERIFY(at.x() >= 0);
+        const std::string before = bytesOf(s.window);
+        const model::Vec3 startOf20 = s.doc->surface(0).position(20);
+        const auto results = watchResults(s);
+        // The pointer comes to rest on vertex 20: the worker prepares its drag and changes
+        // nothing.
+        restAt(s, at);
+        QVERIFY(results->wait(30000));
+        const solver::SolveResult prepared = resultAt(*results, 0);
+        QVERIFY(prepared.outcome.ok);
+        QVERIFY(prepared.outcome.prepared);
+        QVERIFY(!prepared.outcome.settled);
+        QCOMPARE(prepared.outcome.iterationsRun, 0);
+        QCOMPARE(bytesOf(s.window), before);
+        QVERIFY(!s.window.dragTool()->isDragging());
+        // Coming to rest there again prepares nothing more.
+        restAt(s, at);
+        QVERIFY(!results->wait(400));
+        QCOMPARE(results->size(), 1);
+
+        // The press on it continues the prepared session: the first move finds the solver's
+        // structure built and analysed.
+        QVERIFY(drag(s, at, *results));
+        const std::optional<solver::SolveResult> move = firstMove(*results);
+        QVERIFY(move);
+        QCOMPARE(move->ticket, prepared.ticket);
+        QVERIFY(move->outcome.assessments.front().summary.structureReused);
+        QVERIFY(model::distance(s.doc->surface(0).position(20), startOf20) > 1.0);
+    }
+
+    void aPressElsewhereStartsCold() {
+        // Prepared on vertex 20, pressed on vertex 21: the drag of 21 gets a session of its own.
+        Setup s;
+        QVERIFY(show(s));
+        const QPoint rest = vertexAt(s, 20);
+        const QPoint at = vertexAt(s, 21);
+        QVERIFY(rest.x() >= 0 && at.x() >= 0);
+        const auto results = watchResults(s);
+        const quint64 prepared = prepareAt(s, rest, *results);
+        QVERIFY(prepared != 0);
+        QVERIFY(dragStartsCold(s, at, *results, prepared));
+    }
+
+    void aChangeAfterThePreparationStartsCold() {
+        // An edit between the rest and the press (here an undo of the pin) makes the prepared
+        // session stale: the press starts a new one from the design as it is now.
+        Setup s;
+        QVERIFY(show(s));
+        const QPoint at = vertexAt(s, 20);
+        QVERIFY(at.x() >= 0);
+        const auto results = watchResults(s);
+        const quint64 prepared = prepareAt(s, at, *results);
+        QVERIFY(prepared != 0);
+        s.doc->undoStack()->undo(); // vertex 0 is free again
+        QVERIFY(!s.doc->surface(0).isPinned(0));
+        QVERIFY(dragStartsCold(s, at, *results, prepared));
+    }
+
+    void smallDesignsAreNotPrepared() {
+        // fig8's nine patches answer their first move at once: no preparation.
+        Setup s;
+        QVERIFY(showActiveWithExample(s.window, QStringLiteral("fig8")));
+        s.doc = s.window.workspace()->document();
+        s.window.action(QStringLiteral("actionDragTool"))->setChecked(true);
+        s.gl = s.window.surfaceView()->glWidget();
+        s.window.surfaceView()->grabImage();
+        const QPoint at = vertexAt(s, 5);
+        QVERIFY(at.x() >= 0);
+        const auto results = watchResults(s);
+        restAt(s, at);
+        QVERIFY(!results->wait(500));
+        QVERIFY(!s.window.solveController()->worker()->isBusy());
+    }
+};
+
+DEVSURF_REGISTER_TEST(TstDragPrepare);
+
+#include "tst_drag_prepare.moc"
