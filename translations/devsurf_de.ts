@@ -1247,57 +1247,67 @@
     </message>
     <message>
         <location filename="../app/text/verdict_text.cpp" line="76"/>
+        <source>Developable patch by patch, but the development overlaps itself at %1: it cannot be cut from one piece. Try: %2.</source>
+        <translation>Patch für Patch abwickelbar, aber die Abwicklung überlappt sich bei %1: sie lässt sich nicht aus einem Stück schneiden. Versuchen Sie: %2.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="81"/>
         <source>Not developable: the surface folds over or its development overlaps itself</source>
         <translation>Nicht abwickelbar: die Fläche faltet sich über sich selbst oder ihre Abwicklung überlappt sich</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="79"/>
+        <location filename="../app/text/verdict_text.cpp" line="84"/>
         <source>Not developable from its sheet: it lies %1 mm from the sheet it keeps</source>
         <translation>Nicht aus seinem Bogen abwickelbar: die Fläche liegt %1 mm neben dem gehaltenen Bogen</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="81"/>
-        <location filename="../app/text/verdict_text.cpp" line="99"/>
+        <location filename="../app/text/verdict_text.cpp" line="86"/>
+        <location filename="../app/text/verdict_text.cpp" line="107"/>
         <source>Not developable</source>
         <translation>Nicht abwickelbar</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="82"/>
+        <location filename="../app/text/verdict_text.cpp" line="87"/>
         <source>%1. Try: %2.</source>
         <translation>%1. Versuchen Sie: %2.</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="83"/>
+        <location filename="../app/text/verdict_text.cpp" line="88"/>
         <source>%1 at %2. Try: %3.</source>
         <translation>%1 bei %2. Versuchen Sie: %3.</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="94"/>
+        <location filename="../app/text/verdict_text.cpp" line="99"/>
         <source>Developable — ready to cut</source>
         <translation>Abwickelbar — bereit zum Zuschnitt</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="96"/>
+        <location filename="../app/text/verdict_text.cpp" line="101"/>
         <source>Developable within %1 mm</source>
         <translation>Abwickelbar auf %1 mm genau</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="99"/>
+        <location filename="../app/text/verdict_text.cpp" line="105"/>
+        <source>Development overlaps itself: %1</source>
+        <translation>Abwicklung überlappt sich: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="107"/>
         <source>Not developable: %1</source>
         <translation>Nicht abwickelbar: %1</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="109"/>
+        <location filename="../app/text/verdict_text.cpp" line="117"/>
         <source>Largest constraint residual %1 (tolerance %2).</source>
         <translation>Größtes Residuum der Bedingungen %1 (Toleranz %2).</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="114"/>
+        <location filename="../app/text/verdict_text.cpp" line="122"/>
         <source>Development: largest relative edge-length error %1 over a sheet of %2 mm, %3 mm from isometric.</source>
         <translation>Abwicklung: größter relativer Kantenlängenfehler %1 über einen Bogen von %2 mm, %3 mm von der Isometrie entfernt.</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="123"/>
+        <location filename="../app/text/verdict_text.cpp" line="131"/>
         <source>Distance from the sheet it keeps: %1 mm.</source>
         <translation>Abstand zum gehaltenen Bogen: %1 mm.</translation>
     </message>
@@ -1875,34 +1885,34 @@
         <translation>Punkte der Abwicklung lassen sich nur ziehen, wo die Fläche ihren Bogen festhält (Werkzeuge ▸ Bogen festhalten).</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="192"/>
+        <location filename="../app/gui/drag_tool.cpp" line="195"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>Ecke %1 ist festgehalten und kann nicht gezogen werden; geben Sie sie zuerst frei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="210"/>
-        <location filename="../app/gui/drag_tool.cpp" line="253"/>
+        <location filename="../app/gui/drag_tool.cpp" line="204"/>
+        <location filename="../app/gui/drag_tool.cpp" line="247"/>
         <location filename="../app/gui/drag_tool_sheet.cpp" line="65"/>
         <source>a drag started</source>
         <translation>ein Ziehen hat begonnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="236"/>
+        <location filename="../app/gui/drag_tool.cpp" line="230"/>
         <source>There is no edge %1.</source>
         <translation>Es gibt keine Kante %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="239"/>
+        <location filename="../app/gui/drag_tool.cpp" line="233"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>Kante %1 ist kein Falz (eine Kurve zwischen zwei Flächenstücken); nur Falze lassen sich ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="244"/>
+        <location filename="../app/gui/drag_tool.cpp" line="238"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>Kante %1 kann sich nicht bewegen: beide Enden sind festgehalten und sie hat keinen weiteren Kontrollpunkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="313"/>
+        <location filename="../app/gui/drag_tool.cpp" line="307"/>
         <source>Snapped to reference curve %1.</source>
         <translation>An Referenzkurve %1 gefangen.</translation>
     </message>
@@ -1952,8 +1962,8 @@
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="486"/>
-        <location filename="../app/gui/drag_tool.cpp" line="500"/>
+        <location filename="../app/gui/drag_tool.cpp" line="501"/>
+        <location filename="../app/gui/drag_tool.cpp" line="515"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

@@ -1237,57 +1237,67 @@
     </message>
     <message>
         <location filename="../app/text/verdict_text.cpp" line="76"/>
+        <source>Developable patch by patch, but the development overlaps itself at %1: it cannot be cut from one piece. Try: %2.</source>
+        <translation>パッチごとには可展ですが、展開図が %1 で自身と重なっています: 1 枚から切り出せません。試すこと: %2。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="81"/>
         <source>Not developable: the surface folds over or its development overlaps itself</source>
         <translation>可展ではありません: 曲面が自身の上に折り返されているか、展開図が自身と重なっています</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="79"/>
+        <location filename="../app/text/verdict_text.cpp" line="84"/>
         <source>Not developable from its sheet: it lies %1 mm from the sheet it keeps</source>
         <translation>保持しているシートから展開できません: シートから %1 mm 離れています</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="81"/>
-        <location filename="../app/text/verdict_text.cpp" line="99"/>
+        <location filename="../app/text/verdict_text.cpp" line="86"/>
+        <location filename="../app/text/verdict_text.cpp" line="107"/>
         <source>Not developable</source>
         <translation>可展ではありません</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="82"/>
+        <location filename="../app/text/verdict_text.cpp" line="87"/>
         <source>%1. Try: %2.</source>
         <translation>%1。試すこと: %2。</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="83"/>
+        <location filename="../app/text/verdict_text.cpp" line="88"/>
         <source>%1 at %2. Try: %3.</source>
         <translation>%1 (%2)。試すこと: %3。</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="94"/>
+        <location filename="../app/text/verdict_text.cpp" line="99"/>
         <source>Developable — ready to cut</source>
         <translation>可展 — 切り出せます</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="96"/>
+        <location filename="../app/text/verdict_text.cpp" line="101"/>
         <source>Developable within %1 mm</source>
         <translation>%1 mm 以内で可展</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="99"/>
+        <location filename="../app/text/verdict_text.cpp" line="105"/>
+        <source>Development overlaps itself: %1</source>
+        <translation>展開図が自身と重なっています: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/text/verdict_text.cpp" line="107"/>
         <source>Not developable: %1</source>
         <translation>可展ではありません: %1</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="109"/>
+        <location filename="../app/text/verdict_text.cpp" line="117"/>
         <source>Largest constraint residual %1 (tolerance %2).</source>
         <translation>制約の最大残差 %1 (許容値 %2)。</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="114"/>
+        <location filename="../app/text/verdict_text.cpp" line="122"/>
         <source>Development: largest relative edge-length error %1 over a sheet of %2 mm, %3 mm from isometric.</source>
         <translation>展開図: 辺の長さの最大相対誤差 %1、シートの大きさ %2 mm、等長から %3 mm。</translation>
     </message>
     <message>
-        <location filename="../app/text/verdict_text.cpp" line="123"/>
+        <location filename="../app/text/verdict_text.cpp" line="131"/>
         <source>Distance from the sheet it keeps: %1 mm.</source>
         <translation>保持しているシートからの距離: %1 mm。</translation>
     </message>
@@ -1852,34 +1862,34 @@
         <translation>展開図の点をドラッグできるのは、曲面がシートを保持しているときだけです (ツール ▸ シートを保持)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="192"/>
+        <location filename="../app/gui/drag_tool.cpp" line="195"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>頂点 %1 は固定されているためドラッグできません。先に固定を解除してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="210"/>
-        <location filename="../app/gui/drag_tool.cpp" line="253"/>
+        <location filename="../app/gui/drag_tool.cpp" line="204"/>
+        <location filename="../app/gui/drag_tool.cpp" line="247"/>
         <location filename="../app/gui/drag_tool_sheet.cpp" line="65"/>
         <source>a drag started</source>
         <translation>ドラッグが始まりました</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="236"/>
+        <location filename="../app/gui/drag_tool.cpp" line="230"/>
         <source>There is no edge %1.</source>
         <translation>辺 %1 はありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="239"/>
+        <location filename="../app/gui/drag_tool.cpp" line="233"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>辺 %1 は折り線 (2 つのパッチの間の曲線) ではありません。ドラッグできるのは折り線だけです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="244"/>
+        <location filename="../app/gui/drag_tool.cpp" line="238"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>辺 %1 は動かせません: 両端が固定されていて、ほかに制御点がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="313"/>
+        <location filename="../app/gui/drag_tool.cpp" line="307"/>
         <source>Snapped to reference curve %1.</source>
         <translation>参照曲線 %1 にスナップしました。</translation>
     </message>
@@ -1929,8 +1939,8 @@
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="486"/>
-        <location filename="../app/gui/drag_tool.cpp" line="500"/>
+        <location filename="../app/gui/drag_tool.cpp" line="501"/>
+        <location filename="../app/gui/drag_tool.cpp" line="515"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

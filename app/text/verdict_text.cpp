@@ -72,6 +72,11 @@ QString VerdictText::of(const solver::Verdict& verdict) {
     }
     case solver::VerdictKind::NotDevelopable: {
         const QString where = places(verdict);
+        if (verdict.overlapsOnly) {
+            return tr("Developable patch by patch, but the development overlaps itself at %1: "
+                      "it cannot be cut from one piece. Try: %2.")
+                .arg(where, advice(verdict));
+        }
         const QString what =
             verdict.foldsOver ? tr("Not developable: the surface folds over or its "
                                    "development overlaps itself")
@@ -96,6 +101,9 @@ QString VerdictText::brief(const solver::Verdict& verdict) {
         return tr("Developable within %1 mm").arg(millimetres(verdict.isometryMm));
     case solver::VerdictKind::NotDevelopable: {
         const QString where = places(verdict);
+        if (verdict.overlapsOnly) {
+            return tr("Development overlaps itself: %1").arg(where);
+        }
         return where.isEmpty() ? tr("Not developable") : tr("Not developable: %1").arg(where);
     }
     }

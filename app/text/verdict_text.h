@@ -14,11 +14,14 @@ class VerdictText {
 
 public:
     // "Developable to the tolerance — ready to cut.", "Developable to within 0.02 mm of
-    // isometry over the sheet: the cut pattern is off by at most 0.02 mm.", or "Not
-    // developable at patches 3, 4. Try: …"; empty for VerdictKind::None.
+    // isometry over the sheet: the cut pattern is off by at most 0.02 mm.", "Not
+    // developable at patches 3, 4. Try: …" (or, where only the development overlaps itself,
+    // "Developable patch by patch, but the development overlaps itself at …"); empty for
+    // VerdictKind::None.
     static QString of(const solver::Verdict& verdict);
     // A short form for the views' corner and the status bar: "Developable — ready to cut",
-    // "Developable within 0.02 mm", "Not developable: patches 3, 4".
+    // "Developable within 0.02 mm", "Not developable: patches 3, 4", "Development overlaps
+    // itself: patches 3, 4".
     static QString brief(const solver::Verdict& verdict);
     // The numbers: residual and tolerance, edge-length error and the sheet's extent.
     static QString details(const solver::Verdict& verdict);

@@ -67,6 +67,7 @@ Verdict verdictOf(const JobOutcome& outcome) {
     bool anySolved = false;
     bool allReached = true;
     bool anyNotDevelopable = false;
+    bool anyOtherThanOverlap = false;
     for (std::size_t s = 0; s < outcome.assessments.size(); ++s) {
         const SurfaceAssessment& a = outcome.assessments[s];
         if (!a.solved || !a.measured) {
@@ -106,6 +107,8 @@ Verdict verdictOf(const JobOutcome& outcome) {
         }
         if (notDevelopable(a)) {
             anyNotDevelopable = true;
+            anyOtherThanOverlap = anyOtherThanOverlap || farOff(a) || sheetStretched(a) ||
+                                  !a.foldOvers.empty() || a.overlapping.empty();
             verdict.undoLastStep = verdict.undoLastStep || a.keptAsItWas.has_value() ||
                                    !a.foldOvers.empty() || !a.overlapping.empty();
         }
@@ -113,6 +116,7 @@ Verdict verdictOf(const JobOutcome& outcome) {
     if (!anySolved) {
         return verdict;
     }
+    verdict.overlapsOnly = anyNotDevelopable && !anyOtherThanOverlap;
     verdict.kind = anyNotDevelopable ? VerdictKind::NotDevelopable
                    : allReached      ? VerdictKind::ReadyToCut
                                      : VerdictKind::WithinIsometry;

@@ -38,6 +38,10 @@ struct Verdict {
     // NotDevelopable: the patches to look at (surface index, patch), worst first per surface.
     std::vector<std::pair<int, model::FaceId>> patches;
     bool foldsOver = false; // a patch folds over onto itself, or the development overlaps
+    // NotDevelopable only because a development overlaps itself: every surface is developable
+    // patch by patch (not far off, on its sheet, nothing folded over), but cut from one piece
+    // its sheet would lie on itself (a lifted annulus's rings).
+    bool overlapsOnly = false;
     // What to try: solve again (the iteration limit was reached), release pins (the surface
     // is pinned), undo the last step (the edit made it fold over or solving made it worse).
     bool solveMore = false;

@@ -96,6 +96,48 @@ private slots:
         checkViewsShow(window, app::VerdictText::brief(verdict));
     }
 
+    void anOverlappingDevelopmentAloneIsSaidSo() {
+        // A release developable patch by patch whose development overlaps itself (the rings of
+        // a lifted annulus): it cannot be cut from one piece, and the verdict says that rather
+        // than "not developable"; with a fold-over as well it is not developable.
+        solver::JobOutcome outcome;
+        outcome.ok = true;
+        outcome.settled = true;
+        solver::SurfaceAssessment a;
+        a.solved = true;
+        a.measured = true;
+        a.summary.finalMaxConstraintResidual = 1e-13;
+        a.summary.tolerance = 1e-8;
+        a.summary.toleranceReached = true;
+        a.edgeLengthError = 1e-9;
+        a.sheetExtent = 500.0;
+        a.isometryMm = 5e-7;
+        a.overlapping = {245, 246};
+        outcome.assessments = {a};
+        const solver::Verdict overlap = solver::verdictOf(outcome);
+        QCOMPARE(overlap.kind, solver::VerdictKind::NotDevelopable);
+        QVERIFY(overlap.overlapsOnly);
+        QVERIFY(overlap.undoLastStep);
+        const QString notDevelopable = app::VerdictText::tr("Not developable");
+        for (const QString& text :
+             {app::VerdictText::of(overlap), app::VerdictText::brief(overlap)}) {
+            QVERIFY2(text.contains(QStringLiteral("245, 246")), qPrintable(text));
+            QVERIFY2(!text.startsWith(notDevelopable), qPrintable(text));
+        }
+        outcome.assessments.front().foldOvers = {{17, 2}};
+        const solver::Verdict folded = solver::verdictOf(outcome);
+        QCOMPARE(folded.kind, solver::VerdictKind::NotDevelopable);
+        QVERIFY(!folded.overlapsOnly);
+        QVERIFY(app::VerdictText::of(folded).startsWith(notDevelopable));
+        QVERIFY(app::VerdictText::brief(folded).startsWith(notDevelopable));
+        // Short of the tolerance and far off (the unfolding stretches 1 %): not only an overlap.
+        outcome.assessments.front().foldOvers.clear();
+        outcome.assessments.front().summary.toleranceReached = false;
+        outcome.assessments.front().summary.finalMaxConstraintResidual = 1e-3;
+        outcome.assessments.front().edgeLengthError = 1e-2;
+        QVERIFY(!solver::verdictOf(outcome).overlapsOnly);
+    }
+
     void theCommandLineGivesTheSameVerdictWithItsLength() {
         // A flat sheet whose vertex 5 was pulled up letting it stretch, then solved for one
         // iteration: the tolerance is not reached, but the sheet is close to its development.
