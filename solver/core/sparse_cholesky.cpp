@@ -138,15 +138,13 @@ bool SparseCholesky::computeOrdering(int n, const std::vector<int>& colStart,
     Impl& d = *m_impl;
     d.release();
     d.defaultOrdering();
-    // Once per structure, so trying three orderings is cheap on small problems: on the
-    // 1,704-variable annulus METIS or nested dissection gives 9 % less fill than AMD. Larger,
-    // AMD wins or ties and the other two only delay the first iteration (the start of a drag):
-    // devsurf-cli solve, analysis ms with three / AMD alone (factorisation ms): annulus 3,296
-    // variables 11 / 5.9 (1.88 / 1.93), 5,772 variables 39 / 17 (6.91 / 6.91), 18,164
-    // variables 87 / 34 (13.9 / 14.0); 40,000 variables: a third of a second more.
-    if (n <= 5000) {
-        d.common.nmethods = 3;
-    }
+    // Once per structure, AMD and METIS are both tried and the one with less fill is kept
+    // (CHOLMOD's methods 1 and 2; method 0 is a given ordering, which we never pass). Without
+    // its sheet AMD mostly wins or ties, but where a surface holds its sheet the development's
+    // rows tie the net together and METIS leaves two to six times fewer flops. That costs
+    // METIS's time once per structure, spent before the press when a drag is prepared
+    // (docs/tuning.md, "AMD and METIS for every structure").
+    d.common.nmethods = 3;
     d.setMethod(method == FactorizationMethod::Measured ? FactorizationMethod::Automatic : method);
     cholmod_sparse* pattern = d.makeMatrix(n, colStart, rowIndex, 1, CHOLMOD_PATTERN);
     if (!pattern) {

@@ -25,10 +25,10 @@ public:
     SparseCholesky& operator=(const SparseCholesky&) = delete;
     ~SparseCholesky();
 
-    // Fill-reducing ordering (the best of AMD, METIS and nested dissection by fill, with
-    // postordering) of the upper triangle pattern (CSC, sorted rows) of an n×n symmetric
-    // matrix; also decides between supernodal and simplicial for Automatic and gives
-    // CHOLMOD's choice for Measured (which the caller then times).
+    // Fill-reducing ordering (the better of AMD and METIS by fill, with postordering) of the upper
+    // triangle pattern (CSC, sorted rows) of an n×n symmetric matrix; also decides between
+    // supernodal and simplicial for Automatic and gives CHOLMOD's choice for Measured (which the
+    // caller then times).
     bool computeOrdering(int n, const std::vector<int>& colStart, const std::vector<int>& rowIndex,
                          FactorizationMethod method, std::vector<int>& permutation,
                          bool& supernodal);
