@@ -45,10 +45,13 @@ void DragTool::hovered(const QPoint& pos) {
 
 void DragTool::rested() {
     document::Document* doc = m_workspace->document();
-    // Only an idle tool on an idle worker: a preparation never delays a Solve, an approximation
-    // or a drag's settling.
-    if (!m_action->isChecked() || m_state != State::Idle || m_solver->isSolving() ||
-        m_solver->worker()->isBusy()) {
+    if (!m_action->isChecked() || m_state != State::Idle) {
+        return;
+    }
+    if (m_solver->isSolving() || m_solver->worker()->isBusy()) {
+        // A preparation never delays a Solve, an approximation or another preparation; it
+        // follows them while the pointer still rests here.
+        m_rest->start();
         return;
     }
     const std::optional<Pick> pick = m_view->pickAt(m_restPos);

@@ -2,6 +2,7 @@
 // continues the prepared session, and anything else starts cold as before.
 #include "drag_tool.h"
 #include "main_window.h"
+#include "model/document/commands/move_vertices_command.h"
 #include "model/document/commands/pin_vertices_command.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
@@ -187,6 +188,31 @@ private slots:
         s.doc->undoStack()->undo(); // vertex 0 is free again
         QVERIFY(!s.doc->surface(0).isPinned(0));
         QVERIFY(dragStartsCold(s, at, *results, prepared));
+    }
+
+    void aSolveRunningDelaysThePreparation() {
+        // Tools ▸ Solve runs while the pointer comes to rest on vertex 20: the preparation
+        // waits for the Solve's result and follows it while the pointer still rests there.
+        Setup s;
+        QVERIFY(show(s));
+        const QPoint at = vertexAt(s, 20);
+        QVERIFY(at.x() >= 0);
+        // Vertex 21 moved up 20 mm by hand: the Solve has work to do.
+        auto lift = document::MoveVerticesCommand::createTranslation(*s.doc, 0, {21},
+                                                                     model::Vec3(0.0, 0.0, 20.0));
+        QVERIFY(!lift.isRefused());
+        s.doc->undoStack()->push(lift.takeCommand().release());
+        const auto results = watchResults(s);
+        s.window.action(QStringLiteral("actionSolve"))->trigger();
+        QVERIFY(s.window.solveController()->isSolving());
+        restAt(s, at);
+        while (results->size() < 2) {
+            QVERIFY(results->wait(60000));
+        }
+        qInfo("the Solve took %.0f ms", resultAt(*results, 0).outcome.elapsedMs);
+        QVERIFY(!resultAt(*results, 0).outcome.prepared); // the Solve's
+        QCOMPARE(resultAt(*results, 0).outcome.kind, solver::JobKind::Solve);
+        QVERIFY(resultAt(*results, 1).outcome.prepared);
     }
 
     void smallDesignsAreNotPrepared() {
