@@ -163,6 +163,11 @@ bool DragTool::eventFilter(QObject* watched, QEvent* event) {
             hovered(static_cast<QMouseEvent*>(event)->position().toPoint());
         }
         return false;
+    case QEvent::Leave:
+        if (m_rest) {
+            m_rest->stop(); // the pointer rests elsewhere
+        }
+        return false;
     case QEvent::MouseButtonRelease: {
         auto* me = static_cast<QMouseEvent*>(event);
         if (m_state == State::Dragging && me->button() == Qt::LeftButton) {
@@ -454,6 +459,9 @@ void DragTool::end(bool applied, const QString& sentence) {
 
 void DragTool::onResult(const solver::SolveResult& result) {
     const solver::JobOutcome& outcome = result.outcome;
+    if (m_prepared && result.ticket != m_prepared->key) {
+        m_prepared.reset(); // the worker ran something else since: the preparation is gone
+    }
     if (m_state == State::Idle || result.ticket != m_sessionKey || outcome.cancelled() ||
         outcome.prepared) {
         return;

@@ -215,6 +215,31 @@ private slots:
         QVERIFY(resultAt(*results, 1).outcome.prepared);
     }
 
+    void aCancelledSolveAfterThePreparationDropsIt() {
+        // Prepared, then Tools ▸ Solve cancelled at once (the design stays as it was, and so
+        // does its revision): the worker's session is gone, so resting there again prepares
+        // again, and the drag continues that preparation.
+        Setup s;
+        QVERIFY(show(s));
+        const QPoint at = vertexAt(s, 20);
+        QVERIFY(at.x() >= 0);
+        const auto results = watchResults(s);
+        QVERIFY(prepareAt(s, at, *results) != 0);
+        const quint64 revision = s.doc->revision();
+        s.window.action(QStringLiteral("actionSolve"))->trigger();
+        s.window.solveController()->cancel();
+        QVERIFY(test::waitForWorkerIdle(s.window, 60000));
+        QCOMPARE(s.doc->revision(), revision);
+        results->clear();
+        const quint64 again = prepareAt(s, at, *results);
+        QVERIFY(again != 0);
+        QVERIFY(drag(s, at, *results));
+        const std::optional<solver::SolveResult> move = firstMove(*results);
+        QVERIFY(move);
+        QCOMPARE(move->ticket, again);
+        QVERIFY(move->outcome.assessments.front().summary.structureReused);
+    }
+
     void smallDesignsAreNotPrepared() {
         // fig8's nine patches answer their first move at once: no preparation.
         Setup s;
