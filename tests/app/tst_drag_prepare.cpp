@@ -15,6 +15,7 @@
 #include "workspace.h"
 
 #include <QAction>
+#include <QMouseEvent>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTest>
@@ -58,11 +59,22 @@ class TstDragPrepare : public QObject {
         return pick && pick->kind == Pick::Kind::Vertex && pick->id == vertex ? at : QPoint(-1, -1);
     }
 
-    // The pointer comes to rest at `at` (from elsewhere: a move to where it already is gives
-    // no event).
+    // The pointer comes to rest at `at`, by events sent to the view (the window system drops a
+    // move to where the pointer already is, and may merge quick moves under load).
     static void restAt(Setup& s, const QPoint& at) {
-        QTest::mouseMove(s.gl, at + QPoint(37, 23));
-        QTest::mouseMove(s.gl, at);
+        for (const QPoint& p : {at + QPoint(37, 23), at}) {
+            QMouseEvent move(QEvent::MouseMove, QPointF(p), s.gl->mapToGlobal(QPointF(p)),
+                             Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+            QCoreApplication::sendEvent(s.gl, &move);
+        }
+    }
+
+    // Vertex 21 moved up 20 mm by hand, one undo step: a Solve then runs for a while.
+    static void liftVertex21(Setup& s) {
+        auto lift = document::MoveVerticesCommand::createTranslation(*s.doc, 0, {21},
+                                                                     model::Vec3(0.0, 0.0, 20.0));
+        QVERIFY(!lift.isRefused());
+        s.doc->undoStack()->push(lift.takeCommand().release());
     }
 
     // The worker's results from now on.
@@ -204,11 +216,7 @@ private slots:
         QVERIFY(show(s));
         const QPoint at = vertexAt(s, 20);
         QVERIFY(at.x() >= 0);
-        // Vertex 21 moved up 20 mm by hand: the Solve has work to do.
-        auto lift = document::MoveVerticesCommand::createTranslation(*s.doc, 0, {21},
-                                                                     model::Vec3(0.0, 0.0, 20.0));
-        QVERIFY(!lift.isRefused());
-        s.doc->undoStack()->push(lift.takeCommand().release());
+        liftVertex21(s); // the Solve has work to do
         const auto results = watchResults(s);
         s.window.action(QStringLiteral("actionSolve"))->trigger();
         QVERIFY(s.window.solveController()->isSolving());
@@ -222,10 +230,10 @@ private slots:
         QVERIFY(resultAt(*results, 1).outcome.prepared);
     }
 
-    void aCancelledSolveAfterThePreparationDropsIt() {
-        // Prepared, then Tools ▸ Solve cancelled at once (the design stays as it was, and so
-        // does its revision): the worker's session is gone, so resting there again prepares
-        // again, and the drag continues that preparation.
+    void anotherJobAfterThePreparationDropsIt() {
+        // Prepared, then the worker runs another job (here a Solve of one iteration whose
+        // result nobody applies, so the design and its revision stay): the worker's session is
+        // gone, so resting there again prepares again, and the drag continues that preparation.
         Setup s;
         QVERIFY(show(s));
         const QPoint at = vertexAt(s, 20);
@@ -233,9 +241,15 @@ private slots:
         const auto results = watchResults(s);
         QVERIFY(prepareAt(s, at, *results) != 0);
         const quint64 revision = s.doc->revision();
-        s.window.action(QStringLiteral("actionSolve"))->trigger();
-        s.window.solveController()->cancel();
-        QVERIFY(test::waitForWorkerIdle(s.window, 60000));
+        solver::SolveRequest other;
+        other.revision = revision;
+        other.ticket = 7; // no one's
+        other.job.kind = solver::JobKind::Solve;
+        other.job.iterations = 1;
+        other.job.surfaces = s.doc->project().surfaces;
+        s.window.solveController()->worker()->submit(std::move(other));
+        QVERIFY(results->wait(60000));
+        QCOMPARE(resultAt(*results, 1).ticket, quint64(7));
         QCOMPARE(s.doc->revision(), revision);
         results->clear();
         const quint64 again = prepareAt(s, at, *results);
