@@ -175,6 +175,11 @@ private:
         std::vector<model::VertexId> vertices;
         solver::JobKind kind = solver::JobKind::VertexDrag;
         solver::DragLengths lengths = solver::DragLengths::Automatic;
+        // The same drag of the same design (the keys aside).
+        bool sameDragAs(const Prepared& other) const {
+            return revision == other.revision && surface == other.surface &&
+                   vertices == other.vertices && kind == other.kind && lengths == other.lengths;
+        }
     };
     // The pointer moved over the 3D view with the tool on and idle.
     void hovered(const QPoint& pos);

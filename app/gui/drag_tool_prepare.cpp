@@ -69,9 +69,7 @@ void DragTool::rested() {
     prepared.vertices = verticesPressedAt(*pick, surface);
     prepared.kind = jobKind();
     prepared.lengths = dragLengths();
-    if (m_prepared && m_prepared->revision == prepared.revision &&
-        m_prepared->surface == prepared.surface && m_prepared->vertices == prepared.vertices &&
-        m_prepared->kind == prepared.kind && m_prepared->lengths == prepared.lengths) {
+    if (m_prepared && m_prepared->sameDragAs(prepared)) {
         return; // prepared already
     }
     prepared.key = nextSessionKey();
@@ -99,10 +97,13 @@ quint64 DragTool::sessionKeyAtPress() {
     }
     std::optional<Prepared> prepared;
     prepared.swap(m_prepared); // a preparation serves one press at most
-    const document::Document* doc = m_workspace->document();
-    if (prepared && !m_inSheet && !m_crease && prepared->revision == doc->revision() &&
-        prepared->surface == m_surface && prepared->vertices == m_vertices &&
-        prepared->kind == jobKind() && prepared->lengths == dragLengths()) {
+    Prepared pressed;
+    pressed.revision = m_workspace->document()->revision();
+    pressed.surface = m_surface;
+    pressed.vertices = m_vertices;
+    pressed.kind = jobKind();
+    pressed.lengths = dragLengths();
+    if (prepared && !m_inSheet && !m_crease && prepared->sameDragAs(pressed)) {
         return prepared->key;
     }
     return nextSessionKey();
