@@ -142,8 +142,10 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result, const Q
     report.outcome = outcome;
     report.elapsedMs = outcome.elapsedMs;
     for (const solver::SurfaceAssessment& a : outcome.assessments) {
-        // A drag taken back lists the iterations it ran, not the press's none.
-        report.summaries.push_back(a.takenBack ? a.takenBack->summary : a.summary);
+        // A drag taken back whole lists the iterations of the refused release (the press has
+        // none); one that follows part of the way those that settled the state it keeps.
+        report.summaries.push_back(a.takenBack && a.followed <= 0.0 ? a.takenBack->summary
+                                                                     : a.summary);
     }
     if (outcome.cancelled()) {
         report.status = tr("Cancelled; the design is unchanged.");

@@ -67,11 +67,20 @@ private slots:
         QVERIFY2(!why.isEmpty() && report.status.contains(why), qPrintable(report.status));
         QVERIFY2(report.status.contains(QStringLiteral("25")), qPrintable(report.status));
         QVERIFY2(report.status.contains(QStringLiteral("12.5")), qPrintable(report.status));
-        // Taken back whole (followed 0), it says so instead.
+        // The Solver panel's table lists the iterations that settled the state kept, not the
+        // refused release's.
+        refused.summary.iterations.resize(5);
+        a.takenBack = std::make_shared<const solver::SurfaceAssessment>(refused);
+        const app::SolveReport partway =
+            app::SolveController::reportOf(result, QStringLiteral("Drag 1 vertex"));
+        QCOMPARE(partway.summaries.size(), std::size_t(1));
+        QCOMPARE(partway.summaries.front().iterations.size(), a.summary.iterations.size());
+        // Taken back whole (followed 0), it says so instead, and lists the refused release.
         a.followed = 0.0;
         const app::SolveReport whole =
             app::SolveController::reportOf(result, QStringLiteral("Drag 1 vertex"));
         QVERIFY(whole.status != report.status && whole.status.contains(why));
+        QCOMPARE(whole.summaries.front().iterations.size(), std::size_t(5));
     }
 
     void aResultThatFoldsOverOntoItselfIsReportedWithItsPatches() {

@@ -143,8 +143,9 @@ void SolverPanel::display(const SolveReport& report) {
     for (const solver::Summary& summary : report.summaries) {
         iterations += static_cast<int>(summary.iterations.size());
     }
-    // The table lists the iterations of the result (or of the release taken back); the count
-    // says how many ran, a second settling and a partway search included.
+    // The table lists the iterations that settled the result (or, for a drag taken back whole,
+    // those of the refused release); the count says how many ran, a second settling and a
+    // partway search included.
     const int listed = iterations;
     iterations = std::max(iterations, report.outcome.iterationsRun);
     const QLocale locale;
