@@ -145,7 +145,7 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result, const Q
         // A drag taken back whole lists the iterations of the refused release (the press has
         // none); one that follows part of the way those that settled the state it keeps.
         report.summaries.push_back(a.takenBack && a.followed <= 0.0 ? a.takenBack->summary
-                                                                     : a.summary);
+                                                                    : a.summary);
     }
     if (outcome.cancelled()) {
         report.status = tr("Cancelled; the design is unchanged.");
