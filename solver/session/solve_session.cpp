@@ -424,6 +424,14 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
             total.status = Status::Converged;
             break;
         }
+        if (m_settling && !m_surface.keepsDevelopment() &&
+            summary.finalMaxConstraintResidual <= kSolveStopResidual) {
+            // A released drag stops where a Solve would: further iterations only fade the
+            // drag's energies (docs/tuning.md, "A settled release stops"). Not on a held sheet,
+            // whose development is judged apart from this residual and converges later.
+            total.status = Status::Converged;
+            break;
+        }
         if (m_settling && m_giveUpWhenHopeless) {
             m_hopelessRun = m_residual > kHopelessSettlingResidual ? m_hopelessRun + 1 : 0;
             if (m_hopelessRun >= kHopelessSettlingIterations) {

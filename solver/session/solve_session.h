@@ -190,8 +190,10 @@ public:
     ~SolveSession();
 
     // The drag is released: from now on every iteration multiplies the weight of the
-    // keep-lengths energy (if any) by kKeepLengthsFade. Idempotent. With `giveUpWhenHopeless`,
-    // step() stops once the settling is hopeless (kHopelessSettlingResidual, gaveUp()).
+    // keep-lengths energy (if any) by kKeepLengthsFade, and step() stops (Status::Converged)
+    // once the largest residual is at most kSolveStopResidual, unless the surface holds its
+    // sheet. Idempotent. With `giveUpWhenHopeless`, step() stops once the settling is hopeless
+    // (kHopelessSettlingResidual, gaveUp()).
     void settle(bool giveUpWhenHopeless = false) {
         m_settling = true;
         m_giveUpWhenHopeless = giveUpWhenHopeless;

@@ -84,7 +84,10 @@ private slots:
         QVERIFY2(keptOutcome.problems() > 0, qPrintable(QString::number(kept.residual)));
         const solver::ReplayedDrag replay = solver::replayStretching(start, kept.moves, 10);
         QVERIFY(replay.session && replay.settling.succeeded() && !replay.stopped);
-        QCOMPARE(replay.iterations, 30);
+        // The 20 moves, then at most the 10 iterations after them (a settling that reaches
+        // kSolveStopResidual stops there).
+        QVERIFY2(replay.iterations > 20 && replay.iterations <= 30,
+                 qPrintable(QString::number(replay.iterations)));
         const model::CompositeSurface& stretched = replay.session->surface();
         const solver::DragOutcome outcome = solver::judgeDrag(
             start, stretched, replay.settling.finalMaxConstraintResidual, replay.stopped);
