@@ -159,8 +159,8 @@ bool DragTool::eventFilter(QObject* watched, QEvent* event) {
             move(static_cast<QMouseEvent*>(event)->position().toPoint());
             return true;
         }
-        if (m_state == State::Idle && !inSheetView) {
-            hovered(static_cast<QMouseEvent*>(event)->position().toPoint());
+        if (m_state == State::Idle) {
+            hovered(static_cast<QMouseEvent*>(event)->position().toPoint(), inSheetView);
         }
         return false;
     case QEvent::Leave:

@@ -13,6 +13,7 @@
 #include <QPoint>
 
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -161,6 +162,16 @@ private:
     // surface, or it alone), without changing the selection.
     std::vector<model::VertexId> verticesPressedAt(const document::Pick& pressed,
                                                    const model::CompositeSurface& surface) const;
+    // The same for a press in the development view (drag_tool_sheet.cpp): pinned vertices
+    // included (their places in the sheet may move), only those with a place in the kept
+    // development (`indexOf`: developmentIndices).
+    std::vector<model::VertexId>
+    sheetVerticesPressedAt(const document::Pick& pressed, const model::CompositeSurface& surface,
+                           const std::map<model::VertexId, std::size_t>& indexOf) const;
+    // Each vertex's index in the kept development, which lists the coarse vertices first, in
+    // id order.
+    static std::map<model::VertexId, std::size_t>
+    developmentIndices(const model::CompositeSurface& surface);
     // The lengths mode of the Solver settings as the solve job takes it.
     static solver::DragLengths dragLengths();
 
@@ -175,16 +186,22 @@ private:
         std::vector<model::VertexId> vertices;
         solver::JobKind kind = solver::JobKind::VertexDrag;
         solver::DragLengths lengths = solver::DragLengths::Automatic;
+        bool inSheet = false; // their places in the sheet, pressed in the development view
         // The same drag of the same design (the keys aside).
         bool sameDragAs(const Prepared& other) const {
             return revision == other.revision && surface == other.surface &&
-                   vertices == other.vertices && kind == other.kind && lengths == other.lengths;
+                   vertices == other.vertices && kind == other.kind && lengths == other.lengths &&
+                   inSheet == other.inSheet;
         }
     };
-    // The pointer moved over the 3D view with the tool on and idle.
-    void hovered(const QPoint& pos);
+    // The pointer moved over the 3D view (or, `inSheetView`, the development view) with the
+    // tool on and idle.
+    void hovered(const QPoint& pos, bool inSheetView);
     // It has rested at m_restPos for kRestMs: prepares a drag of the vertex under it.
     void rested();
+    // The preparation of a drag pressed in the development view at m_restPos, if a press there
+    // would drag places in a held sheet (drag_tool_sheet.cpp).
+    std::optional<Prepared> sheetDragRestedOn(solver::JobRequest& job) const;
     // Drags get session keys of their own, so that no drag continues another one's solver
     // state (a prepared drag's is its press's).
     static quint64 nextSessionKey();
@@ -193,6 +210,7 @@ private:
     std::optional<Prepared> m_prepared;
     QTimer* m_rest = nullptr;
     QPoint m_restPos;
+    bool m_restInSheet = false; // m_restPos is in the development view
 
     bool m_snapToCurves = false;
     int m_snappedCurve = -1;

@@ -32,7 +32,7 @@ constexpr std::size_t kPreparedFaces = 40;
 
 } // namespace
 
-void DragTool::hovered(const QPoint& pos) {
+void DragTool::hovered(const QPoint& pos, bool inSheetView) {
     if (!m_rest) {
         m_rest = new QTimer(this);
         m_rest->setSingleShot(true);
@@ -40,6 +40,7 @@ void DragTool::hovered(const QPoint& pos) {
         connect(m_rest, &QTimer::timeout, this, &DragTool::rested);
     }
     m_restPos = pos;
+    m_restInSheet = inSheetView;
     m_rest->start();
 }
 
@@ -54,39 +55,42 @@ void DragTool::rested() {
         m_rest->start();
         return;
     }
-    const std::optional<Pick> pick = m_view->pickAt(m_restPos);
-    if (!pick || pick->kind != Pick::Kind::Vertex || pick->surface < 0 ||
-        pick->surface >= doc->surfaceCount()) {
+    solver::SolveRequest request;
+    solver::JobRequest& job = request.job;
+    std::optional<Prepared> prepared;
+    if (m_restInSheet) {
+        prepared = sheetDragRestedOn(job);
+    } else if (const std::optional<Pick> pick = m_view->pickAt(m_restPos);
+               pick && pick->kind == Pick::Kind::Vertex && pick->surface >= 0 &&
+               pick->surface < doc->surfaceCount() &&
+               !doc->surface(pick->surface).isPinned(pick->id)) {
+        const model::CompositeSurface& surface = doc->surface(pick->surface);
+        prepared = Prepared{};
+        prepared->surface = pick->surface;
+        prepared->vertices = verticesPressedAt(*pick, surface);
+        std::vector<solver::VertexHandle>& handles = job.pulled[pick->surface];
+        for (model::VertexId v : prepared->vertices) {
+            handles.push_back({v, false, surface.position(v)});
+        }
+    }
+    if (!prepared || doc->surface(prepared->surface).faces().size() < kPreparedFaces) {
         return;
     }
-    const model::CompositeSurface& surface = doc->surface(pick->surface);
-    if (surface.isPinned(pick->id) || surface.faces().size() < kPreparedFaces) {
-        return;
-    }
-    Prepared prepared;
-    prepared.revision = doc->revision();
-    prepared.surface = pick->surface;
-    prepared.vertices = verticesPressedAt(*pick, surface);
-    prepared.kind = jobKind();
-    prepared.lengths = dragLengths();
-    if (m_prepared && m_prepared->sameDragAs(prepared)) {
+    prepared->revision = doc->revision();
+    prepared->kind = jobKind();
+    prepared->lengths = dragLengths();
+    prepared->inSheet = m_restInSheet;
+    if (m_prepared && m_prepared->sameDragAs(*prepared)) {
         return; // prepared already
     }
-    prepared.key = nextSessionKey();
-
-    solver::SolveRequest request;
-    request.revision = prepared.revision;
-    request.ticket = prepared.key;
-    solver::JobRequest& job = request.job;
-    job.kind = prepared.kind;
-    job.drag = prepared.key;
+    prepared->key = nextSessionKey();
+    request.revision = prepared->revision;
+    request.ticket = prepared->key;
+    job.kind = prepared->kind;
+    job.drag = prepared->key;
     job.prepare = true;
-    job.lengths = prepared.lengths;
+    job.lengths = prepared->lengths;
     job.surfaces = doc->project().surfaces;
-    std::vector<solver::VertexHandle>& handles = job.pulled[prepared.surface];
-    for (model::VertexId v : prepared.vertices) {
-        handles.push_back({v, false, surface.position(v)});
-    }
     m_prepared = std::move(prepared);
     m_solver->worker()->submit(std::move(request));
 }
@@ -103,7 +107,8 @@ quint64 DragTool::sessionKeyAtPress() {
     pressed.vertices = m_vertices;
     pressed.kind = jobKind();
     pressed.lengths = dragLengths();
-    if (prepared && !m_inSheet && !m_crease && prepared->sameDragAs(pressed)) {
+    pressed.inSheet = m_inSheet;
+    if (prepared && !m_crease && prepared->sameDragAs(pressed)) {
         return prepared->key;
     }
     return nextSessionKey();

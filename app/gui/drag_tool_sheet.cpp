@@ -28,15 +28,11 @@ bool DragTool::pressSheet(const QPoint& pos) {
         return false;
     }
     // The view lays the development out (turned, moved, maybe mirrored): the motion from the
-    // kept development to that layout, fitted on the coarse vertices the view draws. The
-    // development lists the coarse vertices first, in id order.
-    std::map<model::VertexId, std::size_t> indexOf;
+    // kept development to that layout, fitted on the coarse vertices the view draws.
+    const std::map<model::VertexId, std::size_t> indexOf = developmentIndices(surface);
     std::vector<model::Vec2> kept;
     std::vector<model::Vec2> shown;
-    for (const auto& [id, p] : surface.vertices()) {
-        (void)p;
-        const std::size_t index = indexOf.size();
-        indexOf[id] = index;
+    for (const auto& [id, index] : indexOf) {
         const std::optional<model::Vec3> at = m_sheetView->vertexScenePoint(pick->surface, id);
         if (at && index < surface.development().size()) {
             kept.push_back(surface.development()[index]);
@@ -47,19 +43,9 @@ bool DragTool::pressSheet(const QPoint& pos) {
     if (!motion || indexOf.at(pick->id) >= surface.development().size()) {
         return false;
     }
-    // The pressed vertex with the other selected vertices of its surface, if it is selected.
-    document::Selection* selection = m_workspace->selection();
-    std::vector<model::VertexId> dragged;
-    if (selection->contains(*pick)) {
-        for (const Pick& p : selection->picks()) {
-            if (p.kind == Pick::Kind::Vertex && p.surface == pick->surface &&
-                surface.hasVertex(p.id) && indexOf.at(p.id) < surface.development().size()) {
-                dragged.push_back(p.id);
-            }
-        }
-    } else {
-        selection->set({*pick});
-        dragged.assign(1, pick->id);
+    const std::vector<model::VertexId> dragged = sheetVerticesPressedAt(*pick, surface, indexOf);
+    if (!m_workspace->selection()->contains(*pick)) {
+        m_workspace->selection()->set({*pick});
     }
     if (m_solver->isSolving()) {
         m_solver->cancel(tr("a drag started"));
@@ -84,6 +70,58 @@ bool DragTool::pressSheet(const QPoint& pos) {
     start(pos, model::Vec3(drawn.x, drawn.y, 0.0));
     m_normal = model::Vec3(0.0, 0.0, 1.0); // the development's plane
     return true;
+}
+
+std::map<model::VertexId, std::size_t>
+DragTool::developmentIndices(const model::CompositeSurface& surface) {
+    std::map<model::VertexId, std::size_t> indexOf;
+    for (const auto& [id, p] : surface.vertices()) {
+        (void)p;
+        const std::size_t index = indexOf.size();
+        indexOf[id] = index;
+    }
+    return indexOf;
+}
+
+std::vector<model::VertexId>
+DragTool::sheetVerticesPressedAt(const Pick& pressed, const model::CompositeSurface& surface,
+                                 const std::map<model::VertexId, std::size_t>& indexOf) const {
+    // The pressed vertex with the other selected vertices of its surface, if it is selected.
+    const document::Selection* selection = m_workspace->selection();
+    if (!selection->contains(pressed)) {
+        return {pressed.id};
+    }
+    std::vector<model::VertexId> vertices;
+    for (const Pick& p : selection->picks()) {
+        if (p.kind == Pick::Kind::Vertex && p.surface == pressed.surface &&
+            surface.hasVertex(p.id) && indexOf.at(p.id) < surface.development().size()) {
+            vertices.push_back(p.id);
+        }
+    }
+    return vertices;
+}
+
+std::optional<DragTool::Prepared> DragTool::sheetDragRestedOn(solver::JobRequest& job) const {
+    const std::optional<Pick> pick = m_sheetView->pickAt(m_restPos);
+    document::Document* doc = m_workspace->document();
+    if (!pick || pick->kind != Pick::Kind::Vertex || pick->surface < 0 ||
+        pick->surface >= doc->surfaceCount()) {
+        return std::nullopt;
+    }
+    const model::CompositeSurface& surface = doc->surface(pick->surface);
+    const std::map<model::VertexId, std::size_t> indexOf = developmentIndices(surface);
+    if (!surface.keepsDevelopment() || indexOf.at(pick->id) >= surface.development().size()) {
+        return std::nullopt; // a press there drags nothing
+    }
+    Prepared prepared;
+    prepared.surface = pick->surface;
+    prepared.vertices = sheetVerticesPressedAt(*pick, surface, indexOf);
+    // Their places where they are, as the press's first request has them.
+    std::vector<solver::SheetHandle>& places = job.pulledSheet[pick->surface];
+    for (model::VertexId v : prepared.vertices) {
+        places.push_back({v, surface.development()[indexOf.at(v)]});
+    }
+    return prepared;
 }
 
 bool DragTool::sheetTargetAt(const QPoint& pos) {

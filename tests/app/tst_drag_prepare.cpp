@@ -6,9 +6,11 @@
 #include "model/document/commands/pin_vertices_command.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
+#include "model/examples.h"
 #include "solve_controller.h"
 #include "solver/worker/solver_worker.h"
 #include "test_registry.h"
+#include "views/development_view.h"
 #include "views/surface_view.h"
 #include "views/vtk_opengl_widget.h"
 #include "window_test_support.h"
@@ -39,10 +41,13 @@ class TstDragPrepare : public QObject {
         QWidget* gl = nullptr;
     };
 
-    static bool show(Setup& s) {
-        if (!showActiveWithExample(s.window, QStringLiteral("annulus"))) {
+    static bool show(Setup& s, model::ExampleSheet sheet = model::ExampleSheet::AsBuilt) {
+        s.window.show();
+        s.window.activateWindow();
+        if (!QTest::qWaitForWindowActive(&s.window)) {
             return false;
         }
+        s.window.workspace()->newFromExample(QStringLiteral("annulus"), 0, sheet);
         s.doc = s.window.workspace()->document();
         s.doc->undoStack()->push(
             document::PinVerticesCommand::create(*s.doc, 0, {0}, true).takeCommand().release());
@@ -255,6 +260,45 @@ private slots:
         const quint64 again = prepareAt(s, at, *results);
         QVERIFY(again != 0);
         QVERIFY(dragContinues(s, at, *results, again));
+    }
+
+    void aRestInTheDevelopmentViewPreparesItsDrag() {
+        // Two-way editing is prepared alike: the annulus holding its sheet, the pointer resting
+        // on vertex 20 in the development view. The press there continues the preparation and
+        // drags vertex 20's place in the sheet; the surface follows.
+        Setup s;
+        QVERIFY(show(s, model::ExampleSheet::Held));
+        QVERIFY(s.doc->surface(0).keepsDevelopment());
+        views::DevelopmentView* view = s.window.developmentView();
+        view->grabImage();
+        s.gl = view->glWidget();
+        const QPoint at = view->projectVertexToWidget(0, 20);
+        const auto pick = view->pickAt(at);
+        QVERIFY(pick && pick->kind == Pick::Kind::Vertex && pick->id == 20);
+        const std::vector<model::Vec2> sheetBefore = s.doc->surface(0).development();
+        const model::Vec3 startOf20 = s.doc->surface(0).position(20);
+        const auto results = watchResults(s);
+        const quint64 prepared = prepareAt(s, at, *results);
+        QVERIFY(prepared != 0);
+        QCOMPARE(s.doc->surface(0).development(), sheetBefore); // the preparation changes nothing
+        QVERIFY(dragContinues(s, at, *results, prepared));
+        QVERIFY(s.window.dragTool()->isDragging() == false);
+        QVERIFY(s.doc->surface(0).development() != sheetBefore);
+        QVERIFY(model::distance(s.doc->surface(0).position(20), startOf20) > 1e-3);
+
+        // Resting on the same vertex in the 3D view prepares another drag (of the vertex, not
+        // of its place in the sheet), which a press in the development view does not continue.
+        results->clear();
+        s.gl = s.window.surfaceView()->glWidget();
+        s.window.surfaceView()->grabImage();
+        const QPoint in3d = vertexAt(s, 20);
+        QVERIFY(in3d.x() >= 0);
+        const quint64 in3dPrepared = prepareAt(s, in3d, *results);
+        QVERIFY(in3dPrepared != 0);
+        s.gl = view->glWidget();
+        view->grabImage();
+        const QPoint again = view->projectVertexToWidget(0, 20);
+        QVERIFY(dragStartsCold(s, again, *results, in3dPrepared));
     }
 
     void smallDesignsAreNotPrepared() {

@@ -141,6 +141,7 @@ int main(int argc, char** argv) {
     std::string study;
     bool drag = false;
     bool coldPress = false;
+    bool inSheet = false;
     bool paper = false;
     bool haveStart = false;
     bool haveIterations = false;
@@ -159,6 +160,8 @@ int main(int argc, char** argv) {
             drag = true;
         } else if (arg == "--cold-press") {
             coldPress = true;
+        } else if (arg == "--in-sheet") {
+            inSheet = true;
         } else if (arg == "--paper") {
             paper = true;
         } else if (arg == "--paper-size-cap" && i + 1 < argc) {
@@ -209,16 +212,18 @@ int main(int argc, char** argv) {
                 return 1;
             }
         } else {
-            std::cerr << "usage: devsurf-bench [--json] [--model NAME]... [--no-ceres | --blas]\n"
-                         "       devsurf-bench --drag [--model NAME]... [--cold-press] [--json]\n"
-                         "       devsurf-bench --approximation TARGET [--strips K] [--intervals N] "
-                         "[--iterations N] [--rho R] [--json]\n"
-                         "       devsurf-bench --paper [--model ROW]... [--paper-size-cap N] "
-                         "[--edge-noise F | "
-                         "--diameter-noise F] [--iterations N] [--json]\n"
-                         "       devsurf-bench --study MODEL [--edge-noise F | --diameter-noise F]"
-                         " [--seeds N] [--iterations N] [--set NAME=VALUE]... [--session | "
-                         "--ceres] [--trace]\n";
+            std::cerr
+                << "usage: devsurf-bench [--json] [--model NAME]... [--no-ceres | --blas]\n"
+                   "       devsurf-bench --drag [--model NAME]... [--cold-press] [--in-sheet] "
+                   "[--json]\n"
+                   "       devsurf-bench --approximation TARGET [--strips K] [--intervals N] "
+                   "[--iterations N] [--rho R] [--json]\n"
+                   "       devsurf-bench --paper [--model ROW]... [--paper-size-cap N] "
+                   "[--edge-noise F | "
+                   "--diameter-noise F] [--iterations N] [--json]\n"
+                   "       devsurf-bench --study MODEL [--edge-noise F | --diameter-noise F]"
+                   " [--seeds N] [--iterations N] [--set NAME=VALUE]... [--session | "
+                   "--ceres] [--trace]\n";
             return 1;
         }
     }
@@ -273,6 +278,7 @@ int main(int argc, char** argv) {
         devsurf::bench::DragBenchOptions dragOptions;
         dragOptions.log = [](const std::string& line) { std::cerr << line << "\n"; };
         dragOptions.prepare = !coldPress;
+        dragOptions.inSheet = inSheet;
         dragOptions.models = options.models;
         devsurf::bench::printDragBench(devsurf::bench::runDragBench(dragOptions), options.json,
                                        std::cout);

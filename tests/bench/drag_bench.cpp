@@ -109,6 +109,31 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
     const model::VertexId dragged = draggedVertex(surface);
     const model::Vec3 from = surface.position(dragged);
     const model::Vec3 lift{0.0, 0.0, options.liftFraction * solver::surfaceDiameter(surface)};
+    std::optional<model::Vec2> place; // --in-sheet: the dragged vertex's place, and its slide
+    model::Vec2 slide;
+    if (options.inSheet && surface.keepsDevelopment() && !surface.development().empty()) {
+        const std::vector<model::Vec2>& sheet = surface.development();
+        // The development lists the coarse vertices first, in id order.
+        std::size_t index = 0;
+        for (const auto& [id, p] : surface.vertices()) {
+            (void)p;
+            if (id == dragged) {
+                break;
+            }
+            ++index;
+        }
+        model::Vec2 centroid;
+        for (const model::Vec2& p : sheet) {
+            centroid = centroid + p * (1.0 / static_cast<double>(sheet.size()));
+        }
+        if (index < sheet.size()) {
+            row.model += " (sheet)";
+            place = sheet[index];
+            const model::Vec2 out = *place - centroid;
+            const double length = out.norm() > 0.0 ? out.norm() : 1.0;
+            slide = model::Vec2(-out.y, out.x) * (lift.z / length);
+        }
+    }
     document::Document document;
     model::Project project;
     project.surfaces = {surface};
@@ -143,7 +168,11 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
         r.job.settle = settle;
         r.job.prepare = prepare;
         r.job.surfaces = {document.surface(0)};
-        r.job.pulled[0] = {{dragged, false, from + lift * t}};
+        if (place) {
+            r.job.pulledSheet[0] = {{dragged, *place + slide * t}};
+        } else {
+            r.job.pulled[0] = {{dragged, false, from + lift * t}};
+        }
         worker.submit(std::move(r));
     };
     QObject::connect(

@@ -27,6 +27,10 @@ struct DragBenchOptions {
     // is prepared first (solver::JobRequest::prepare) and its moves start once that is done.
     // False: the first move starts the drag cold (what a press without a rest costs).
     bool prepare = true;
+    // The dragged vertex's place in the sheet moves instead (the development view's drag), on
+    // a surface that holds its sheet: by liftFraction times the diameter, perpendicular to its
+    // direction from the development's centroid (along an annulus's rim).
+    bool inSheet = false;
     // The drags to run by name (fig12-annulus, annulus-14, fig12-annulus-held,
     // annulus-14-held, and large-annulus for the Solve's stall); empty: all.
     std::vector<std::string> models;
