@@ -187,21 +187,27 @@ private:
         solver::JobKind kind = solver::JobKind::VertexDrag;
         solver::DragLengths lengths = solver::DragLengths::Automatic;
         bool inSheet = false; // their places in the sheet, pressed in the development view
+        model::EdgeId crease = model::kInvalidId; // the crease a crease drag drags
         // The same drag of the same design (the keys aside).
         bool sameDragAs(const Prepared& other) const {
             return revision == other.revision && surface == other.surface &&
                    vertices == other.vertices && kind == other.kind && lengths == other.lengths &&
-                   inSheet == other.inSheet;
+                   inSheet == other.inSheet && crease == other.crease;
         }
     };
     // The pointer moved over the 3D view (or, `inSheetView`, the development view) with the
     // tool on and idle.
     void hovered(const QPoint& pos, bool inSheetView);
-    // It has rested at m_restPos for kRestMs: prepares a drag of the vertex under it.
+    // It has rested at m_restPos for kRestMs: prepares a drag of the vertex (or crease) under
+    // it.
     void rested();
     // The preparation of a drag pressed in the development view at m_restPos, if a press there
     // would drag places in a held sheet (drag_tool_sheet.cpp).
     std::optional<Prepared> sheetDragRestedOn(solver::JobRequest& job) const;
+    // The same for a press on the crease `pick` in the 3D view, if it can be dragged.
+    std::optional<Prepared> creaseDragRestedOn(const document::Pick& pick,
+                                               const model::CompositeSurface& surface,
+                                               solver::JobRequest& job) const;
     // Drags get session keys of their own, so that no drag continues another one's solver
     // state (a prepared drag's is its press's).
     static quint64 nextSessionKey();

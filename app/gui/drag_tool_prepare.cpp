@@ -1,5 +1,6 @@
-// The Drag tool's preparation: while the pointer rests on a vertex, the worker builds the drag
-// of that vertex (its session, the normal equations' structure, the ordering and the symbolic
+// The Drag tool's preparation: while the pointer rests on a vertex (in the 3D view, or on its
+// place in the development view) or on a crease, the worker builds the drag a press there
+// would start (its session, the normal equations' structure, the ordering and the symbolic
 // analysis), so that the first move of a large design answers in one iteration's time instead
 // of waiting for all of that (annulus-14: the first result 299 ms cold, 70 ms prepared;
 // docs/tuning.md "A drag prepared while the pointer rests").
@@ -61,23 +62,27 @@ void DragTool::rested() {
     if (m_restInSheet) {
         prepared = sheetDragRestedOn(job);
     } else if (const std::optional<Pick> pick = m_view->pickAt(m_restPos);
-               pick && pick->kind == Pick::Kind::Vertex && pick->surface >= 0 &&
-               pick->surface < doc->surfaceCount() &&
-               !doc->surface(pick->surface).isPinned(pick->id)) {
+               pick && pick->surface >= 0 && pick->surface < doc->surfaceCount()) {
         const model::CompositeSurface& surface = doc->surface(pick->surface);
-        prepared = Prepared{};
-        prepared->surface = pick->surface;
-        prepared->vertices = verticesPressedAt(*pick, surface);
-        std::vector<solver::VertexHandle>& handles = job.pulled[pick->surface];
-        for (model::VertexId v : prepared->vertices) {
-            handles.push_back({v, false, surface.position(v)});
+        if (pick->kind == Pick::Kind::Vertex && !surface.isPinned(pick->id)) {
+            prepared = Prepared{};
+            prepared->surface = pick->surface;
+            prepared->vertices = verticesPressedAt(*pick, surface);
+            std::vector<solver::VertexHandle>& handles = job.pulled[pick->surface];
+            for (model::VertexId v : prepared->vertices) {
+                handles.push_back({v, false, surface.position(v)});
+            }
+        } else if (pick->kind == Pick::Kind::Edge && dragsCreases()) {
+            prepared = creaseDragRestedOn(*pick, surface, job);
         }
     }
     if (!prepared || doc->surface(prepared->surface).faces().size() < kPreparedFaces) {
         return;
     }
     prepared->revision = doc->revision();
-    prepared->kind = jobKind();
+    if (prepared->crease == model::kInvalidId) {
+        prepared->kind = jobKind();
+    }
     prepared->lengths = dragLengths();
     prepared->inSheet = m_restInSheet;
     if (m_prepared && m_prepared->sameDragAs(*prepared)) {
@@ -95,6 +100,29 @@ void DragTool::rested() {
     m_solver->worker()->submit(std::move(request));
 }
 
+std::optional<DragTool::Prepared>
+DragTool::creaseDragRestedOn(const Pick& pick, const model::CompositeSurface& surface,
+                             solver::JobRequest& job) const {
+    std::optional<solver::CreaseDrag> crease;
+    try {
+        crease.emplace(surface, pick.id);
+    } catch (const solver::CreaseDragRefused&) {
+        return std::nullopt; // a press there drags nothing
+    }
+    Prepared prepared;
+    prepared.surface = pick.surface;
+    prepared.kind = solver::JobKind::CreaseDrag;
+    prepared.crease = pick.id;
+    prepared.vertices = crease->vertices();
+    // As the press's first request has them: the crease where it is.
+    std::vector<solver::VertexHandle>& handles = job.pulled[pick.surface];
+    for (std::size_t i = 0; i < prepared.vertices.size(); ++i) {
+        handles.push_back({prepared.vertices[i], false, crease->vertexStart()[i]});
+    }
+    job.pulledControlPoints[pick.surface] = crease->controlPointHandles({}, true);
+    return prepared;
+}
+
 quint64 DragTool::sessionKeyAtPress() {
     if (m_rest) {
         m_rest->stop();
@@ -108,7 +136,8 @@ quint64 DragTool::sessionKeyAtPress() {
     pressed.kind = jobKind();
     pressed.lengths = dragLengths();
     pressed.inSheet = m_inSheet;
-    if (prepared && !m_crease && prepared->sameDragAs(pressed)) {
+    pressed.crease = m_crease ? m_crease->edge() : model::kInvalidId;
+    if (prepared && prepared->sameDragAs(pressed)) {
         return prepared->key;
     }
     return nextSessionKey();

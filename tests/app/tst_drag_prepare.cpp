@@ -2,12 +2,14 @@
 // continues the prepared session, and anything else starts cold as before.
 #include "drag_tool.h"
 #include "main_window.h"
+#include "model/bspline_curve.h"
 #include "model/document/commands/move_vertices_command.h"
 #include "model/document/commands/pin_vertices_command.h"
 #include "model/document/document.h"
 #include "model/document/selection.h"
 #include "model/examples.h"
 #include "solve_controller.h"
+#include "solver/session/crease_drag.h"
 #include "solver/worker/solver_worker.h"
 #include "test_registry.h"
 #include "views/development_view.h"
@@ -80,6 +82,23 @@ class TstDragPrepare : public QObject {
                                                                      model::Vec3(0.0, 0.0, 20.0));
         QVERIFY(!lift.isRefused());
         s.doc->undoStack()->push(lift.takeCommand().release());
+    }
+
+    // A widget point on edge `edge` that picks it (sampled along the curve), if any.
+    static std::optional<QPoint> pointOn(Setup& s, model::EdgeId edge) {
+        const model::EdgeRecord& record = s.doc->surface(0).edge(edge);
+        const model::BSplineCurve curve =
+            model::BSplineCurve::uniform(record.space, record.controlPoints);
+        for (int i = 30; i <= 70; ++i) {
+            const double u =
+                curve.domainBegin() + (curve.domainEnd() - curve.domainBegin()) * i / 100.0;
+            const QPoint at = s.window.surfaceView()->projectToWidget(curve.evaluate(u));
+            const auto pick = s.window.surfaceView()->pickAt(at);
+            if (pick && pick->kind == Pick::Kind::Edge && pick->id == edge) {
+                return at;
+            }
+        }
+        return std::nullopt;
     }
 
     // The worker's results from now on.
@@ -299,6 +318,36 @@ private slots:
         view->grabImage();
         const QPoint again = view->projectVertexToWidget(0, 20);
         QVERIFY(dragStartsCold(s, again, *results, in3dPrepared));
+    }
+
+    void aRestOnACreasePreparesItsDrag() {
+        // A rest on a crease (a ring of the annulus between two of its strips) prepares the
+        // crease's drag, which the press on it continues.
+        Setup s;
+        QVERIFY(show(s));
+        const model::CompositeSurface& surface = s.doc->surface(0);
+        std::optional<QPoint> at;
+        model::EdgeId edge = model::kInvalidId;
+        for (const auto& [id, record] : surface.edges()) {
+            (void)record;
+            try {
+                solver::CreaseDrag crease(surface, id);
+            } catch (const solver::CreaseDragRefused&) {
+                continue; // a ruling or a boundary curve
+            }
+            if ((at = pointOn(s, id))) {
+                edge = id;
+                break;
+            }
+        }
+        QVERIFY(at);
+        const model::EdgeRecord before = surface.edge(edge);
+        const auto results = watchResults(s);
+        const quint64 prepared = prepareAt(s, *at, *results);
+        QVERIFY(prepared != 0);
+        QCOMPARE(resultAt(*results, 0).outcome.kind, solver::JobKind::CreaseDrag);
+        QVERIFY(dragContinues(s, *at, *results, prepared));
+        QVERIFY(s.doc->surface(0).edge(edge).controlPoints != before.controlPoints);
     }
 
     void smallDesignsAreNotPrepared() {
