@@ -264,10 +264,11 @@ public:
     // Multiplies the weight of that energy (or damping) by `factor` (nothing without it).
     void scaleIsometryWeight(double factor);
     // Multiplies the weights of a drag's energies by `factor`: the control-point handles'
-    // (controlPointHandleWeight) and the pull towards the reference state where it is an
-    // energy (proximityEnergyWeight); from now on ε₁ follows the constraint residual alone.
-    // Nothing without them.
-    void fadeDragEnergies(double factor);
+    // (controlPointHandleWeight), the soft vertex pulls (pulledHandleWeight) and the pull
+    // towards the reference state where it is an energy (proximityEnergyWeight), and with
+    // `sheetPulls` the pulls of places in the held sheet (sheetHandleWeight); from now on ε₁
+    // follows the constraint residual alone. Nothing without them.
+    void fadeDragEnergies(double factor, bool sheetPulls = false);
     // Finds the closest points of the approximation target (FormulationOptions::approximation)
     // and of the paired curves (curvePairs) on `current`, the surface at the state about to be
     // iterated from. No-op without them.

@@ -246,8 +246,9 @@ void SurfaceFormulation::scaleIsometryWeight(double factor) {
     }
 }
 
-void SurfaceFormulation::fadeDragEnergies(double factor) {
-    for (const FamilyId family : {m_controlHandleEnergy, m_proximityEnergy, m_pullEnergy}) {
+void SurfaceFormulation::fadeDragEnergies(double factor, bool sheetPulls) {
+    const FamilyId sheet = sheetPulls ? m_problem.findFamily("sheetPulls") : -1;
+    for (const FamilyId family : {m_controlHandleEnergy, m_proximityEnergy, m_pullEnergy, sheet}) {
         if (family >= 0) {
             m_problem.setFamilyWeight(family, m_problem.family(family).weight * factor);
             m_problem.setFamilyDrivesEpsilon1(family, false);

@@ -165,6 +165,9 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
                worstDevelopability(surface) <= developabilityLimit &&
                nearerThanAtPress(press, surface, release);
     };
+    // Places pulled in the held sheet let go as the settling goes on: one pulled off the
+    // sheet's boundary would keep the boundary's rows from converging.
+    settleOptions.fadeSheetPulls = true;
     // A state is released with its move's targets: there the dragged points stay.
     auto sessionAt = [&settleOptions](const model::CompositeSurface& surface,
                                       const DragMove& move) {

@@ -336,7 +336,7 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
                 m_formulation->scaleIsometryWeight(kKeepLengthsFade);
             }
             m_settledResidual = m_residual;
-            m_formulation->fadeDragEnergies(kCreaseDragFade);
+            m_formulation->fadeDragEnergies(kCreaseDragFade, m_options.fadeSheetPulls);
         }
         // See kRoughSolveLengthDamping: once the residual has fallen far enough, the damping
         // fades geometrically.

@@ -142,6 +142,11 @@ struct SessionOptions {
     // whose residual did not rise, so that it fades more slowly where the iterates alternate
     // (a drag's second settling, docs/tuning.md "Settled again").
     bool holdFadeWhileResidualRises = false;
+    // After settle(): the pulls of places in the held sheet (two-way editing) fade as well
+    // (kCreaseDragFade). A release keeps them, so that a place stays at the mouse; the partway
+    // search fades them, since a place pulled off the sheet's boundary kept its rows from
+    // converging (docs/tuning.md, "Places pulled in the sheet fade in the partway search").
+    bool fadeSheetPulls = false;
 };
 
 // A Solve stops once its largest residual is at most kSolveStopResidual; its iterations

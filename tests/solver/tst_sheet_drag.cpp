@@ -18,6 +18,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 using namespace devsurf;
@@ -133,6 +134,32 @@ private slots:
         QVERIFY(std::abs((place - target).norm() - a.largestHandleGap) < 1e-9);
         QVERIFY((place - target).norm() < by.norm() - 5.0);
         checkKeptOnItsSheet(result);
+    }
+
+    void aPlacePulledOffTheSheetNeverEndsOffIt() {
+        // A place on the square's top edge pulled 30 mm beyond it, out of the sheet: the sheet
+        // cannot follow. Whatever the drag keeps (a part of the way, or the press) lies on the
+        // square and reaches the tolerance. (The partway search used to settle its states with
+        // the place still pulled off the edge and kept one at residual 1e-2, its boundary off
+        // the square.)
+        const BentSquare start = bentSquare();
+        model::VertexId top = model::kInvalidId;
+        for (const auto& [id, p] : start.bent.vertices()) {
+            (void)p;
+            const std::optional<Vec2> place = solver::sheetPlace(start.bent, id);
+            if (place && !start.bent.isPinned(id) && std::abs(place->y - 300.0) < 1e-6 &&
+                place->x > 1.0 && place->x < 299.0) {
+                top = id;
+            }
+        }
+        QVERIFY(top != model::kInvalidId);
+        const solver::JobOutcome outcome = dragInSheet(start.bent, top, Vec2(0.0, 30.0));
+        QVERIFY2(outcome.ok, outcome.failure.detail.c_str());
+        const solver::SurfaceAssessment& a = outcome.assessments.front();
+        qInfo("followed %.0f %%, residual %.2g, taken back %d", 100.0 * a.followed,
+              a.summary.finalMaxConstraintResidual, a.takenBack ? 1 : 0);
+        QVERIFY(a.summary.toleranceReached);
+        checkKeptOnItsSheet(outcome.surfaces.front());
     }
 };
 
