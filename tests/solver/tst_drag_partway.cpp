@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 using namespace devsurf;
@@ -29,6 +30,38 @@ using test::sampledDevelopability;
 
 namespace {
 using devsurf::model::kPi;
+
+// A vertex drag as the Drag tool runs it, recorded for followPartway: `dragged` lifted by `lift`
+// keeping lengths in `moves` moves of one iteration each, the states passed through kept.
+struct RecordedDrag {
+    std::vector<solver::VertexHandle> handles; // at the last move's target
+    std::unique_ptr<solver::SolveSession> session;
+    std::vector<solver::Reached> reached;
+    std::vector<solver::DragMove> moves;
+    bool stepsSucceeded = true;
+};
+
+RecordedDrag recordDrag(const model::CompositeSurface& press, model::VertexId dragged,
+                        const Vec3& lift, int moves) {
+    RecordedDrag r;
+    const Vec3 from = press.position(dragged);
+    r.handles = {{dragged, false, from}};
+    r.session = std::make_unique<solver::SolveSession>(press, r.handles,
+                                                       solver::keepLengthsSessionOptions());
+    std::size_t stride = 1;
+    for (int k = 1; k <= moves; ++k) {
+        r.handles.front().target = from + lift * (static_cast<double>(k) / moves);
+        r.session->setHandleTarget(dragged, r.handles.front().target);
+        const solver::Summary summary = r.session->step(1);
+        r.stepsSucceeded = r.stepsSucceeded && summary.succeeded();
+        r.moves.push_back({r.handles, {}, {}});
+        solver::keepReached(
+            r.reached, stride,
+            {r.moves.size(), r.session->surface(), summary.finalMaxConstraintResidual});
+    }
+    return r;
+}
+
 } // namespace
 
 class TstDragPartway : public QObject {
@@ -256,34 +289,20 @@ private slots:
         const model::VertexId dragged = 1;
         QVERIFY(!press.isPinned(dragged));
         const Vec3 from = press.position(dragged);
-        constexpr int kMoves = 40;
         const Vec3 lift(0.0, 0.0, 150.0);
-        const solver::SessionOptions options = solver::keepLengthsSessionOptions();
-        std::vector<solver::VertexHandle> handles{{dragged, false, from}};
-        solver::SolveSession session(press, handles, options);
-        std::vector<solver::Reached> reached;
-        std::vector<solver::DragMove> moves;
-        std::size_t stride = 1;
-        for (int k = 1; k <= kMoves; ++k) {
-            handles.front().target = from + lift * (static_cast<double>(k) / kMoves);
-            session.setHandleTarget(dragged, handles.front().target);
-            const solver::Summary summary = session.step(1);
-            QVERIFY(summary.succeeded());
-            moves.push_back({handles, {}, {}});
-            solver::keepReached(
-                reached, stride,
-                {moves.size(), session.surface(), summary.finalMaxConstraintResidual});
-        }
-        session.settle();
-        session.step(solver::kIterationsAfterDragKeepingLengths);
-        QVERIFY2(!solver::foldOvers(session.surface()).empty(),
+        const RecordedDrag drag = recordDrag(press, dragged, lift, 40);
+        QVERIFY(drag.stepsSucceeded);
+        drag.session->settle();
+        drag.session->step(solver::kIterationsAfterDragKeepingLengths);
+        QVERIFY2(!solver::foldOvers(drag.session->surface()).empty(),
                  "the whole drag no longer folds over: the test needs a farther lift");
 
         solver::SurfaceAssessment atPress;
         atPress.solved = true;
         const std::optional<solver::Partway> partway = solver::followPartway(
-            press, atPress, reached, moves, options, solver::kIterationsAfterDragKeepingLengths,
-            {handles, {}, {}}, nullptr, solver::PartwaySearch::Brief);
+            press, atPress, drag.reached, drag.moves, solver::keepLengthsSessionOptions(),
+            solver::kIterationsAfterDragKeepingLengths, {drag.handles, {}, {}}, nullptr,
+            solver::PartwaySearch::Brief);
         QVERIFY(partway.has_value());
         const solver::SurfaceAssessment& a = partway->assessment;
         QVERIFY2(a.followed > 0.0 && a.followed < 1.0, qPrintable(QString::number(a.followed)));
@@ -312,33 +331,15 @@ private slots:
         // reached it. Measured from the geometry and by a fresh session.
         model::CompositeSurface press = model::makeExample("annulus", 14).surfaces.front();
         press.setPinned(0, true);
-        const model::VertexId dragged = 1;
-        const Vec3 from = press.position(dragged);
-        constexpr int kMoves = 20;
-        const Vec3 lift(0.0, 0.0, 70.0);
-        const solver::SessionOptions options = solver::keepLengthsSessionOptions();
-        std::vector<solver::VertexHandle> handles{{dragged, false, from}};
-        solver::SolveSession session(press, handles, options);
-        std::vector<solver::Reached> reached;
-        std::vector<solver::DragMove> moves;
-        std::size_t stride = 1;
-        for (int k = 1; k <= kMoves; ++k) {
-            handles.front().target = from + lift * (static_cast<double>(k) / kMoves);
-            session.setHandleTarget(dragged, handles.front().target);
-            const solver::Summary summary = session.step(1);
-            QVERIFY(summary.succeeded());
-            moves.push_back({handles, {}, {}});
-            solver::keepReached(
-                reached, stride,
-                {moves.size(), session.surface(), summary.finalMaxConstraintResidual});
-        }
+        const RecordedDrag drag = recordDrag(press, 1, Vec3(0.0, 0.0, 70.0), 20);
+        QVERIFY(drag.stepsSucceeded);
         solver::SurfaceAssessment atPress;
         atPress.solved = true;
         double lowest = std::numeric_limits<double>::infinity();
         const std::optional<solver::Partway> partway = solver::followPartway(
-            press, atPress, reached, moves, options, solver::kIterationsAfterDragKeepingLengths,
-            {handles, {}, {}}, nullptr, solver::PartwaySearch::Brief,
-            [&lowest](const solver::IterationStats& stats) {
+            press, atPress, drag.reached, drag.moves, solver::keepLengthsSessionOptions(),
+            solver::kIterationsAfterDragKeepingLengths, {drag.handles, {}, {}}, nullptr,
+            solver::PartwaySearch::Brief, [&lowest](const solver::IterationStats& stats) {
                 lowest = std::min(lowest, stats.maxConstraintResidual);
             });
         QVERIFY(partway.has_value());
