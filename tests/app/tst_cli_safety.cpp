@@ -336,6 +336,13 @@ private slots:
         const QString sheet = project("fuzz.devsurf", "sheet");
         const QString out = path("fuzz-out");
         QDir(m_dir.path()).mkdir("fuzz-folder");
+        // A random value after a random -o names a file relative to the working directory:
+        // the test's own directory, not wherever the test runs from.
+        struct WorkingDirectory {
+            QString previous = QDir::currentPath();
+            ~WorkingDirectory() { QDir::setCurrent(previous); }
+        } restore;
+        QVERIFY(QDir::setCurrent(m_dir.path()));
         const QStringList commands{"example",  "info",        "pin",      "crease", "smooth",
                                    "validate", "export-json", "examples", "solve",  "drag",
                                    "export",   "report",      "bogus",    ""};
