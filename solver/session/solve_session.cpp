@@ -1,5 +1,6 @@
 #include "solver/session/solve_session.h"
 
+#include "model/development.h"
 #include "model/geometry_checks.h"
 #include "model/model_error.h"
 #include "solver/formulation/perturbation.h"
@@ -424,11 +425,7 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
             total.status = Status::Converged;
             break;
         }
-        if (m_settling && !m_surface.keepsDevelopment() &&
-            summary.finalMaxConstraintResidual <= kSolveStopResidual) {
-            // A released drag stops where a Solve would: further iterations only fade the
-            // drag's energies (docs/tuning.md, "A settled release stops"). Not on a held sheet,
-            // whose development is judged apart from this residual and converges later.
+        if (m_settling && settled(summary.finalMaxConstraintResidual)) {
             total.status = Status::Converged;
             break;
         }
@@ -451,6 +448,25 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
     total.totalMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return total;
+}
+
+bool SolveSession::settled(double residual) {
+    // A released drag stops where a Solve would: further iterations only fade the drag's
+    // energies (docs/tuning.md, "A settled release stops"). On a held sheet the development is
+    // judged apart from this residual and may still be converging: there it stops once its
+    // distance from the sheet no longer falls either.
+    if (residual > kSolveStopResidual) {
+        m_settledStretch = -1.0;
+        return false;
+    }
+    if (!m_surface.keepsDevelopment()) {
+        return true;
+    }
+    const double stretch = model::keptSheetStretch(m_surface);
+    const bool still = stretch >= 0.0 && m_settledStretch >= 0.0 &&
+                       stretch >= kSettledStretchRatio * m_settledStretch;
+    m_settledStretch = stretch;
+    return still;
 }
 
 Summary SolveSession::prepare() {

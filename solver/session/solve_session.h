@@ -149,6 +149,11 @@ struct SessionOptions {
     bool fadeSheetPulls = false;
 };
 
+// A settling on a held sheet whose residual is within kSolveStopResidual stops once its
+// distance from its sheet (model::keptSheetStretch) falls by less than this factor in an
+// iteration (docs/tuning.md, "A settled release stops").
+constexpr double kSettledStretchRatio = 0.99;
+
 // A Solve stops once its largest residual is at most kSolveStopResidual; its iterations
 // (kSolveIterations unless the user sets another count) are a limit.
 constexpr double kSolveStopResidual = 1e-12;
@@ -196,8 +201,9 @@ public:
 
     // The drag is released: from now on every iteration multiplies the weight of the
     // keep-lengths energy (if any) by kKeepLengthsFade, and step() stops (Status::Converged)
-    // once the largest residual is at most kSolveStopResidual, unless the surface holds its
-    // sheet. Idempotent. With `giveUpWhenHopeless`, step() stops once the settling is hopeless
+    // once the largest residual is at most kSolveStopResidual (on a held sheet, for two
+    // iterations in a row, the second not nearer its sheet than kSettledStretchRatio of the
+    // first). Idempotent. With `giveUpWhenHopeless`, step() stops once the settling is hopeless
     // (kHopelessSettlingResidual, gaveUp()).
     void settle(bool giveUpWhenHopeless = false) {
         m_settling = true;
@@ -288,6 +294,11 @@ private:
     bool m_lengthDampingFades = false; // the residual has fallen to kRoughSolveLengthDampingUntil
     double m_residual = std::numeric_limits<double>::infinity();        // at the last iterate
     double m_settledResidual = std::numeric_limits<double>::infinity(); // at the last settling
+    // A held sheet's distance from its development at the last settling iteration within
+    // kSolveStopResidual (-1: none yet, or the one before was not within it).
+    double m_settledStretch = -1.0;
+    // Whether a settling iteration that ended at `residual` ends the settling (settle()).
+    bool settled(double residual);
     // The iterate of smallest residual of a Solve (returnToBestIterate).
     std::vector<double> m_bestX;
     double m_bestResidual = std::numeric_limits<double>::infinity();
