@@ -22,9 +22,7 @@ Options defaultSessionSolverOptions();
 FormulationOptions defaultSessionFormulationOptions();
 
 // A start whose sampled developability and crease-condition residuals are at most this: a design
-// that satisfies its conditions up to a small error (the end of a drag), not a rough start.
-// 1e-4 rather than 1e-6: a short drag of fig13 that ended at crease residual 4e-5 was solved as
-// a rough start and made worse (kept as it was); as nearly valid it reaches 7e-10
+// that satisfies its conditions up to a small error (the end of a drag), not a rough start
 // (docs/tuning.md).
 constexpr double kNearlyValidResidual = 1e-4;
 bool nearlyValid(const model::CompositeSurface& surface);
@@ -58,10 +56,9 @@ constexpr double kRoughSolveLengthDampingFade = 0.5;
 constexpr double kKeepLengthsWeight = 30.0;
 constexpr double kKeepLengthsFade = 0.5;
 
-// Iterations after a vertex drag's release (a limit: they stop once converged): 10 as the paper
+// Iterations after a vertex drag's release (a limit: they stop once settled): 10 as the paper
 // does, 20 when keeping lengths, whose energy fades over them, 60 when the surface holds its
-// sheet, whose low-weight development pulls the last digits in slowly (fig8 lifted 85 mm:
-// residual 3.6e-8 after 20, 4e-12 after 60).
+// sheet, whose low-weight development pulls the last digits in slowly (docs/tuning.md).
 constexpr int kIterationsAfterDrag = 10;
 constexpr int kIterationsAfterDragKeepingLengths = 20;
 constexpr int kIterationsAfterDragHoldingSheet = 60;
@@ -80,15 +77,12 @@ constexpr double kDragFactorizationReuseFlops = 1e7;
 // A move of a drag on a surface that holds its sheet, whose pulled points jump farther than
 // kMoveStepLimit × the surface's diameter since the last move, is split into as many iterations
 // (at most kMoveSplitLimit), their targets evenly along the jump: one linearised step that long
-// can fold a thin part over, which the held sheet then keeps folded (`fig13` folded with its
-// crease held on a curve in the sheet, docs/tuning.md "A long move is split").
+// can fold a thin part over, which the held sheet then keeps (docs/tuning.md).
 constexpr double kMoveStepLimit = 0.003;
 constexpr int kMoveSplitLimit = 8;
 // On a model of more than kLargeMoveVariables variables a move is split into at most
-// kLargeMoveSplitLimit iterations: there each iteration takes tens of milliseconds, a move split
-// eight ways fell behind the mouse, and the next move's jump grew longer still (the annulus of
-// size 14 holding its sheet, 21,584 variables: 650–730 ms per move, 160 ms with two;
-// docs/tuning.md "New designs hold their sheet").
+// kLargeMoveSplitLimit iterations: a move split eight ways there fell behind the mouse, and the
+// next move's jump grew longer still (docs/tuning.md).
 constexpr int kLargeMoveVariables = 15000;
 constexpr int kLargeMoveSplitLimit = 2;
 
@@ -99,26 +93,22 @@ constexpr double kSheetPullWeight = 1.0;
 // A drag's settling after its release (settle(true)) whose largest constraint residual stays
 // above kHopelessSettlingResidual for kHopelessSettlingIterations iterations in a row stops there
 // (SolveSession::gaveUp), so that a drag too far reaches its second settling and its partway
-// search sooner. Of the settlings measured on sheets not held, none came back from that to the
-// tolerance (docs/tuning.md, "A hopeless settling stops").
+// search sooner (docs/tuning.md).
 constexpr double kHopelessSettlingResidual = 1e-2;
 constexpr int kHopelessSettlingIterations = 4;
 
 // An approximation (§4.2) runs its iterations with eqs. (9)–(11) at their weights; from
 // SessionOptions::approximationFadeAfter on, every iteration multiplies those weights by
-// kApproximationFade, so that developability and the other hard conditions converge exactly at
-// the end while the surface stays where the target pulled it (10 fading iterations: the
-// weights end at 1e-5 of theirs).
+// kApproximationFade, so that the hard conditions converge exactly at the end while the surface
+// stays where the target pulled it.
 constexpr double kApproximationFade = 0.3;
 constexpr int kApproximationFadeIterations = 10;
 
 // The damped recipe of an approximation, for a target that a developable strip cannot follow
 // closely (a doubly curved part of a scan): eqs. (9)–(11) at kDampedApproximationWeightScale of
 // their weights, and ε₂ at least kDampedApproximationEps2 while they pull, fading by
-// kApproximationFade with them (SessionOptions::approximationDamping). At full weight and the
-// session's small ε₂ such a pull holds the strip far from developable, and the fade's first,
-// undamped step throws it off its points. The damped recipe converges only linearly, so the
-// solve job runs it only where the usual pull failed (docs/tuning.md, "The damped recipe").
+// kApproximationFade with them (SessionOptions::approximationDamping). It converges only
+// linearly, so the solve job runs it only where the usual pull failed (docs/tuning.md).
 constexpr double kDampedApproximationWeightScale = 0.01;
 constexpr double kDampedApproximationEps2 = 1.0;
 
@@ -134,24 +124,20 @@ struct SessionOptions {
     // With FormulationOptions::approximation: the iterations (over all step() calls) after
     // which the approximation weights fade (kApproximationFade); negative: never.
     int approximationFadeAfter = -1;
-    // With FormulationOptions::approximation: ε₂ is at least this while the target pulls, and
-    // this times kApproximationFade^k in the k-th fading iteration (0: no floor; see
-    // kDampedApproximationEps2).
+    // With FormulationOptions::approximation: the floor of ε₂ while the target pulls, fading
+    // with it (0: none; kDampedApproximationEps2).
     double approximationDamping = 0.0;
     // After settle(): the keep-lengths energy fades (kKeepLengthsFade) only after iterations
     // whose residual did not rise, so that it fades more slowly where the iterates alternate
     // (a drag's second settling, docs/tuning.md "Settled again").
     bool holdFadeWhileResidualRises = false;
-    // After settle(): the pulls of places in the held sheet (two-way editing) fade as well
-    // (kCreaseDragFade). A release keeps them, so that a place stays at the mouse; the partway
-    // search fades them, since a place pulled off the sheet's boundary kept its rows from
-    // converging (docs/tuning.md, "Places pulled in the sheet fade in the partway search").
+    // After settle(): the pulls of places in the held sheet fade as well (kCreaseDragFade), as
+    // the partway search needs; a release keeps them at the mouse (docs/tuning.md).
     bool fadeSheetPulls = false;
 };
 
-// A settling on a held sheet whose residual is within kSolveStopResidual stops once its
-// distance from its sheet (model::keptSheetStretch) falls by less than this factor in an
-// iteration (docs/tuning.md, "A settled release stops").
+// A settling on a held sheet within kSolveStopResidual stops once its distance from its sheet
+// (model::keptSheetStretch) falls by less than this factor in an iteration.
 constexpr double kSettledStretchRatio = 0.99;
 
 // A Solve stops once its largest residual is at most kSolveStopResidual; its iterations
@@ -171,8 +157,7 @@ constexpr double kCreaseDragPointWeight = 1.0;
 constexpr double kCreaseDragStartPull = 0.03;
 constexpr double kCreaseDragFade = 0.5;
 
-// The options of a crease drag: the energies above, and no fairness of points or of normals
-// next to creases with a condition (they pulled a folded crease straight).
+// The options of a crease drag: the energies above, no fairness next to crease conditions.
 SessionOptions creaseDragSessionOptions();
 
 // One surface being solved across calls: the formulation, the state vector and the
@@ -190,8 +175,7 @@ public:
     // or non-finite handle).
     SolveSession(const model::CompositeSurface& surface, const std::vector<VertexHandle>& pulled,
                  const SessionOptions& options = {});
-    // The same with interior control points of S-edges pulled too (a dragged crease). Throws
-    // std::invalid_argument for a control point that does not exist or a non-finite target.
+    // The same with interior control points of S-edges pulled too (a dragged crease).
     SolveSession(const model::CompositeSurface& surface, const std::vector<VertexHandle>& pulled,
                  const std::vector<ControlPointHandle>& pulledControlPoints,
                  const SessionOptions& options = {});
@@ -199,12 +183,10 @@ public:
     SolveSession& operator=(const SolveSession&) = delete;
     ~SolveSession();
 
-    // The drag is released: from now on every iteration multiplies the weight of the
-    // keep-lengths energy (if any) by kKeepLengthsFade, and step() stops (Status::Converged)
-    // once the largest residual is at most kSolveStopResidual (on a held sheet, for two
-    // iterations in a row, the second not nearer its sheet than kSettledStretchRatio of the
-    // first). Idempotent. With `giveUpWhenHopeless`, step() stops once the settling is hopeless
-    // (kHopelessSettlingResidual, gaveUp()).
+    // The drag is released: every iteration fades the keep-lengths energy (kKeepLengthsFade),
+    // and step() stops (Converged) once settled: within kSolveStopResidual, on a held sheet
+    // also no longer nearing it (kSettledStretchRatio). Idempotent. With `giveUpWhenHopeless`
+    // it stops once the settling is hopeless (gaveUp()).
     void settle(bool giveUpWhenHopeless = false) {
         m_settling = true;
         m_giveUpWhenHopeless = giveUpWhenHopeless;
@@ -219,20 +201,16 @@ public:
     // sheetHandles; mm, in the coordinates of the kept development).
     bool setSheetHandleTarget(model::VertexId vertex, const model::Vec2& target);
 
-    // Runs n iterations continuing the ε₁ schedule where the last call stopped; writes the
-    // result into surface(). step(1) ten times equals step(10) bit for bit. While a drag moves
-    // (before settle()), a long move first runs iterations of its own towards targets along
-    // the way (kMoveStepLimit); Summary::iterationsCompleted counts them too. `cancel` is
-    // checked between iterations; `perIteration` is called after each (on this thread, with
-    // IterationStats::iteration counted within this call). A failed or cancelled iteration
-    // leaves surface() at the last good state.
+    // Runs n iterations continuing the ε₁ schedule (step(1) ten times equals step(10) bit for
+    // bit); writes the result into surface(). A long
+    // move of a drag first runs iterations of its own along the way (kMoveStepLimit), counted
+    // in Summary::iterationsCompleted. `cancel` is checked between iterations, `perIteration`
+    // called after each on this thread. A failed or cancelled iteration leaves surface() at
+    // the last good state.
     Summary step(int n, const std::atomic<bool>* cancel = nullptr,
                  const std::function<void(const IterationStats&)>& perIteration = {});
-    // Builds what the first step() would build before iterating (the normal equations'
-    // structure, the ordering and the symbolic analysis) and runs no iteration: a drag prepared
-    // while the pointer rests on a vertex answers its first move without that wait. The state,
-    // the targets and the schedule stay as they are, so the steps after it give the same bits
-    // as without it. Returns the solver's summary (its analysisMs; no iterations).
+    // Builds what the first step() would build (structure, ordering, symbolic analysis) and
+    // runs no iteration, changing nothing else: a drag prepared before its press.
     Summary prepare();
 
     const model::CompositeSurface& surface() const { return m_surface; }
@@ -253,12 +231,9 @@ public:
     // Faces worst first at the current state (SurfaceFormulation::faceResiduals).
     std::vector<SurfaceFormulation::FaceResidual> worstFaces() const;
 
-    // A Solve (nothing pulled) remembers, over all step() calls, the iterate whose largest
-    // constraint residual was the smallest. If the current iterate's is larger, this goes back
-    // to that one (state and surface()) and returns its iteration (counted from 1 over all
-    // calls) and residual; otherwise, and in a drag, it stays and returns {0, residual}. With
-    // `summary` (of the last step()), its final residual and toleranceReached follow the
-    // iterate returned to. (Some residuals cycle; docs/tuning.md.)
+    // A Solve (nothing pulled) goes back to its iterate of smallest residual over all step()
+    // calls if the current one's is larger, and returns its iteration (from 1) and residual;
+    // otherwise, and in a drag, {0, residual}. `summary` (of the last step()) follows it.
     struct BestIterate {
         int iteration = 0;
         double residual = 0.0;
@@ -279,7 +254,7 @@ private:
     bool m_giveUpWhenHopeless = false;
     int m_hopelessRun = 0; // settling iterations in a row above kHopelessSettlingResidual
     bool m_gaveUp = false;
-    // The pulled points' targets now and at the last step(), for splitting a long move.
+    // The pulled points' targets now and at the last step().
     struct Targets {
         std::map<model::VertexId, model::Vec3> vertices;
         std::map<std::pair<model::EdgeId, int>, model::Vec3> controlPoints;
@@ -287,18 +262,14 @@ private:
     Targets m_targets;
     Targets m_targetsStepped;
     double m_diameter = 0.0; // 0: moves are not split
-    // How many iterations the move about to run takes (kMoveStepLimit), and sets the
-    // formulation's targets of the k-th of them (1-based) along the way.
+    // The iterations the next move takes (kMoveStepLimit); the targets of the k-th (from 1).
     int moveSplits() const;
     void aimPartway(int k, int splits);
     bool m_lengthDampingFades = false; // the residual has fallen to kRoughSolveLengthDampingUntil
     double m_residual = std::numeric_limits<double>::infinity();        // at the last iterate
     double m_settledResidual = std::numeric_limits<double>::infinity(); // at the last settling
-    // A held sheet's distance from its development at the last settling iteration within
-    // kSolveStopResidual (-1: none yet, or the one before was not within it).
-    double m_settledStretch = -1.0;
-    // Whether a settling iteration that ended at `residual` ends the settling (settle()).
-    bool settled(double residual);
+    double m_settledStretch = -1.0; // distance from the sheet at the last settled iterate
+    bool settled(double residual);  // whether an iterate at `residual` ends the settling
     // The iterate of smallest residual of a Solve (returnToBestIterate).
     std::vector<double> m_bestX;
     double m_bestResidual = std::numeric_limits<double>::infinity();
