@@ -36,6 +36,11 @@ bool sheetStretched(const SurfaceAssessment& a) {
     return a.sheetStretchMm > kKeptSheetTolerance * std::max(a.sheetExtent, 1.0);
 }
 
+// Not developable for a reason other than a development that overlaps itself.
+bool notDevelopableApartFromOverlap(const SurfaceAssessment& a) {
+    return farOff(a) || sheetStretched(a) || !a.foldOvers.empty();
+}
+
 } // namespace
 
 BrokenBy brokenBy(const SurfaceAssessment& a) {
@@ -56,7 +61,7 @@ bool broken(const SurfaceAssessment& a) {
 }
 
 bool notDevelopable(const SurfaceAssessment& a) {
-    return farOff(a) || sheetStretched(a) || !a.foldOvers.empty() || !a.overlapping.empty();
+    return notDevelopableApartFromOverlap(a) || !a.overlapping.empty();
 }
 
 Verdict verdictOf(const JobOutcome& outcome) {
@@ -107,8 +112,7 @@ Verdict verdictOf(const JobOutcome& outcome) {
         }
         if (notDevelopable(a)) {
             anyNotDevelopable = true;
-            anyOtherThanOverlap = anyOtherThanOverlap || farOff(a) || sheetStretched(a) ||
-                                  !a.foldOvers.empty() || a.overlapping.empty();
+            anyOtherThanOverlap = anyOtherThanOverlap || notDevelopableApartFromOverlap(a);
             verdict.undoLastStep = verdict.undoLastStep || a.keptAsItWas.has_value() ||
                                    !a.foldOvers.empty() || !a.overlapping.empty();
         }

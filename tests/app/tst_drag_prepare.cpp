@@ -44,12 +44,9 @@ class TstDragPrepare : public QObject {
     };
 
     static bool show(Setup& s, model::ExampleSheet sheet = model::ExampleSheet::AsBuilt) {
-        s.window.show();
-        s.window.activateWindow();
-        if (!QTest::qWaitForWindowActive(&s.window)) {
+        if (!showActiveWithExample(s.window, QStringLiteral("annulus"), sheet)) {
             return false;
         }
-        s.window.workspace()->newFromExample(QStringLiteral("annulus"), 0, sheet);
         s.doc = s.window.workspace()->document();
         s.doc->undoStack()->push(
             document::PinVerticesCommand::create(*s.doc, 0, {0}, true).takeCommand().release());

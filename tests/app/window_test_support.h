@@ -68,13 +68,14 @@ template <class C> const C* undoCommand(const document::Document& doc) {
 
 // Shows `window` active (keyboard shortcuts reach it) with the built-in example `name`; false
 // if the window never became active.
-inline bool showActiveWithExample(app::MainWindow& window, const QString& name) {
+inline bool showActiveWithExample(app::MainWindow& window, const QString& name,
+                                  model::ExampleSheet sheet = model::ExampleSheet::AsBuilt) {
     window.show();
     window.activateWindow();
     if (!QTest::qWaitForWindowActive(&window)) {
         return false;
     }
-    window.workspace()->newFromExample(name, 0);
+    window.workspace()->newFromExample(name, 0, sheet);
     return true;
 }
 
