@@ -111,7 +111,7 @@ std::unique_ptr<SolveSession> secondSettling(const model::CompositeSurface& pres
         options.formulation.vertexStartDefectLimit = FormulationOptions{}.vertexStartDefectLimit;
     }
     auto session = std::make_unique<SolveSession>(last, handles, points, options);
-    session->settle(!press.keepsDevelopment()); // as the first settling gives up
+    session->settle(true); // as the first settling gives up
     return session;
 }
 

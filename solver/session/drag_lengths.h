@@ -96,8 +96,7 @@ ReplayedDrag replayStretching(const model::CompositeSurface& start,
 // the release can alternate as it fades, docs/tuning.md "Settled again"), and vertex
 // developability imposed at every star where `press` had them all closed (a fresh session
 // imposes it only where it holds at its start). It gives up where hopeless
-// (kHopelessSettlingResidual) unless the surface holds its sheet. Throws as SolveSession's
-// constructor does.
+// (SolveSession::gaveUp). Throws as SolveSession's constructor does.
 std::unique_ptr<SolveSession> secondSettling(const model::CompositeSurface& press,
                                              const model::CompositeSurface& last,
                                              const std::vector<VertexHandle>& handles,

@@ -348,11 +348,10 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
                 d.moves[s].push_back({handles, points, sheet});
             }
             if (request.settle) {
-                // A vertex drag keeping lengths on a sheet not held gives up a hopeless
-                // settling: the second settling and the partway search follow
-                // (kHopelessSettlingResidual).
-                session->settle(keepsLengths(request) && points.empty() &&
-                                !snapshot.keepsDevelopment());
+                // A vertex drag keeping lengths gives up a hopeless settling: the second
+                // settling and the partway search follow (kHopelessSettlingResidual, on a held
+                // sheet kHopelessHeldSettlingResidual).
+                session->settle(keepsLengths(request) && points.empty());
             }
         }
         bool replaying = false;

@@ -130,7 +130,7 @@ struct SurfaceAssessment {
     // its last state with the keep-lengths energy fading more slowly, and kept so.
     bool settledAgain = false;
     // The iterations the first settling ran before that (fewer than asked where it gave up,
-    // kHopelessSettlingResidual).
+    // SolveSession::gaveUp).
     int firstSettlingIterations = 0;
     // A vertex drag keeping lengths whose pins hold a dragged vertex where the sheet cannot bend.
     std::optional<model::HeldVertex> held;

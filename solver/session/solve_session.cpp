@@ -430,8 +430,12 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
             break;
         }
         if (m_settling && m_giveUpWhenHopeless) {
-            m_hopelessRun = m_residual > kHopelessSettlingResidual ? m_hopelessRun + 1 : 0;
-            if (m_hopelessRun >= kHopelessSettlingIterations) {
+            const bool held = m_surface.keepsDevelopment();
+            const double hopeless =
+                held ? kHopelessHeldSettlingResidual : kHopelessSettlingResidual;
+            m_hopelessRun = m_residual > hopeless ? m_hopelessRun + 1 : 0;
+            if (m_hopelessRun >=
+                (held ? kHopelessHeldSettlingIterations : kHopelessSettlingIterations)) {
                 m_gaveUp = true;
                 break;
             }

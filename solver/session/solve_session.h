@@ -96,6 +96,11 @@ constexpr double kSheetPullWeight = 1.0;
 // search sooner (docs/tuning.md).
 constexpr double kHopelessSettlingResidual = 1e-2;
 constexpr int kHopelessSettlingIterations = 4;
+// On a held sheet a settling can rise that high and still converge (one rose to 0.019 … 0.5 for
+// six iterations, then to 1e-15), so there it is hopeless once above kHopelessHeldSettlingResidual
+// for kHopelessHeldSettlingIterations iterations in a row (docs/tuning.md).
+constexpr double kHopelessHeldSettlingResidual = 0.1;
+constexpr int kHopelessHeldSettlingIterations = 6;
 
 // An approximation (§4.2) runs its iterations with eqs. (9)–(11) at their weights; from
 // SessionOptions::approximationFadeAfter on, every iteration multiplies those weights by
@@ -215,7 +220,7 @@ public:
 
     const model::CompositeSurface& surface() const { return m_surface; }
     // Whether a settling stopped early, its residual above kHopelessSettlingResidual in
-    // kHopelessSettlingIterations iterations in a row.
+    // kHopelessSettlingIterations iterations in a row (on a held sheet: the Held pair).
     bool gaveUp() const { return m_gaveUp; }
     const SurfaceFormulation& formulation() const { return *m_formulation; }
     // The solver's state (normalised coordinates, see SurfaceFormulation).
@@ -252,7 +257,7 @@ private:
     bool m_dragging = false; // something is pulled
     bool m_settling = false;
     bool m_giveUpWhenHopeless = false;
-    int m_hopelessRun = 0; // settling iterations in a row above kHopelessSettlingResidual
+    int m_hopelessRun = 0; // settling iterations in a row above the hopeless residual
     bool m_gaveUp = false;
     // The pulled points' targets now and at the last step().
     struct Targets {
