@@ -255,7 +255,8 @@ bool SolveSession::setControlPointTarget(model::EdgeId edge, int index, const mo
 }
 
 int SolveSession::moveSplits() const {
-    if (!m_dragging || m_settling || !(m_diameter > 0.0)) {
+    if (!m_dragging || m_settling || !(m_diameter > 0.0) ||
+        m_formulation->problem().variableCount() > kLargeMoveVariables) {
         return 1;
     }
     double jump = 0.0;
@@ -266,10 +267,7 @@ int SolveSession::moveSplits() const {
         jump = std::max(jump, distance(target, m_targetsStepped.controlPoints.at(point)));
     }
     const double splits = std::ceil(jump / (kMoveStepLimit * m_diameter));
-    const int limit = m_formulation->problem().variableCount() > kLargeMoveVariables
-                          ? kLargeMoveSplitLimit
-                          : kMoveSplitLimit;
-    return static_cast<int>(std::clamp(splits, 1.0, static_cast<double>(limit)));
+    return static_cast<int>(std::clamp(splits, 1.0, static_cast<double>(kMoveSplitLimit)));
 }
 
 void SolveSession::aimPartway(int k, int splits) {
@@ -433,9 +431,9 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
             const bool held = m_surface.keepsDevelopment();
             const double hopeless =
                 held ? kHopelessHeldSettlingResidual : kHopelessSettlingResidual;
+            const int run = held ? kHopelessHeldSettlingIterations : kHopelessSettlingIterations;
             m_hopelessRun = m_residual > hopeless ? m_hopelessRun + 1 : 0;
-            if (m_hopelessRun >=
-                (held ? kHopelessHeldSettlingIterations : kHopelessSettlingIterations)) {
+            if (m_hopelessRun >= run) {
                 m_gaveUp = true;
                 break;
             }

@@ -80,11 +80,9 @@ constexpr double kDragFactorizationReuseFlops = 1e7;
 // can fold a thin part over, which the held sheet then keeps (docs/tuning.md).
 constexpr double kMoveStepLimit = 0.003;
 constexpr int kMoveSplitLimit = 8;
-// On a model of more than kLargeMoveVariables variables a move is not split (at most
-// kLargeMoveSplitLimit iterations): split moves there fell behind the mouse, and the next move's
-// jump grew longer still (docs/tuning.md).
+// On a model of more than kLargeMoveVariables variables a move is not split: split moves there
+// fell behind the mouse, and the next move's jump grew longer still (docs/tuning.md).
 constexpr int kLargeMoveVariables = 15000;
-constexpr int kLargeMoveSplitLimit = 1;
 
 // The pull of a dragged vertex of a surface that holds its sheet (pulledHandleWeight); the lag
 // does not depend on it (docs/tuning.md, "Holding the sheet").

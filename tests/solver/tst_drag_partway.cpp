@@ -41,6 +41,29 @@ struct RecordedDrag {
     bool stepsSucceeded = true;
 };
 
+// A release after five moves of one iteration each towards `pulled` keeping lengths: a
+// settling of at most kSettleIterations that gives up where hopeless if `giveUp`.
+constexpr int kSettleIterations = 20;
+struct Released {
+    std::unique_ptr<solver::SolveSession> session;
+    solver::Summary settling;
+    bool movesSucceeded = true;
+};
+
+Released releaseAfterMoves(const model::CompositeSurface& press,
+                           const std::vector<solver::VertexHandle>& pulled, bool giveUp) {
+    Released r;
+    r.session = std::make_unique<solver::SolveSession>(press, pulled,
+                                                       std::vector<solver::ControlPointHandle>{},
+                                                       solver::keepLengthsSessionOptions());
+    for (int k = 0; k < 5; ++k) {
+        r.movesSucceeded = r.session->step(1).succeeded() && r.movesSucceeded;
+    }
+    r.session->settle(giveUp);
+    r.settling = r.session->step(kSettleIterations);
+    return r;
+}
+
 RecordedDrag recordDrag(const model::CompositeSurface& press, model::VertexId dragged,
                         const Vec3& lift, int moves) {
     RecordedDrag r;
@@ -171,31 +194,27 @@ private slots:
         for (model::VertexId v : {5, 6, 9, 10}) {
             pulled.push_back({v, false, press.position(v) + Vec3(0.0, 0.0, lift)});
         }
-        solver::SolveSession session(press, pulled, {}, solver::keepLengthsSessionOptions());
-        for (int k = 0; k < 5; ++k) { // the moves
-            QVERIFY(session.step(1).succeeded());
-        }
-        constexpr int kIterations = 20;
-        session.settle(giveUp);
-        const solver::Summary settling = session.step(kIterations);
+        const Released released = releaseAfterMoves(press, pulled, giveUp);
+        QVERIFY(released.movesSucceeded);
+        const solver::Summary& settling = released.settling;
         QVERIFY(settling.succeeded());
-        QCOMPARE(session.gaveUp(), gaveUp);
+        QCOMPARE(released.session->gaveUp(), gaveUp);
         if (gaveUp) {
             // Stopped early, after kHopelessSettlingIterations in a row above the residual.
             const int n = settling.iterationsCompleted;
-            QVERIFY2(n >= solver::kHopelessSettlingIterations && n < kIterations,
+            QVERIFY2(n >= solver::kHopelessSettlingIterations && n < kSettleIterations,
                      qPrintable(QString::number(n)));
             for (int k = n - solver::kHopelessSettlingIterations; k < n; ++k) {
                 QVERIFY(settling.iterations[static_cast<std::size_t>(k)].maxConstraintResidual >
                         solver::kHopelessSettlingResidual);
             }
         } else {
-            QCOMPARE(settling.iterationsCompleted, kIterations);
+            QCOMPARE(settling.iterationsCompleted, kSettleIterations);
         }
         if (!cornersPinned) {
             QVERIFY2(settling.toleranceReached,
                      qPrintable(QString::number(settling.finalMaxConstraintResidual)));
-            QVERIFY(sampledDevelopability(session.surface()) < 1e-8);
+            QVERIFY(sampledDevelopability(released.session->surface()) < 1e-8);
         }
     }
 
@@ -219,22 +238,19 @@ private slots:
         }
         const Vec3 lift(0.0, 0.0, 0.1 * solver::surfaceDiameter(press));
         std::vector<solver::VertexHandle> pulled{{lifted, false, press.position(lifted) + lift}};
-        solver::SolveSession session(press, pulled, {}, solver::keepLengthsSessionOptions());
-        for (int k = 0; k < 5; ++k) { // the moves
-            QVERIFY(session.step(1).succeeded());
-        }
-        constexpr int kIterations = 20;
-        session.settle(true);
-        const solver::Summary settling = session.step(kIterations);
+        const Released released = releaseAfterMoves(press, pulled, true);
+        QVERIFY(released.movesSucceeded);
+        const solver::Summary& settling = released.settling;
         QVERIFY(settling.succeeded());
         QString residuals;
         for (const solver::IterationStats& stats : settling.iterations) {
             residuals += QString::number(stats.maxConstraintResidual, 'g', 2) + " ";
         }
         qInfo("held settling: %s", qPrintable(residuals));
-        QVERIFY(session.gaveUp());
+        QVERIFY(released.session->gaveUp());
         const int n = settling.iterationsCompleted;
-        QVERIFY2(n > solver::kHopelessSettlingIterations && n < kIterations, qPrintable(residuals));
+        QVERIFY2(n > solver::kHopelessSettlingIterations && n < kSettleIterations,
+                 qPrintable(residuals));
         for (int k = n - solver::kHopelessHeldSettlingIterations; k < n; ++k) {
             QVERIFY(settling.iterations[static_cast<std::size_t>(k)].maxConstraintResidual >
                     solver::kHopelessHeldSettlingResidual);
