@@ -38,12 +38,14 @@ void printStep(const char* label, int index, int count, const solver::IterationS
                const model::CompositeSurface& surface) {
     const solver::QualityMeasures quality = solver::measureQuality(surface);
     char line[512];
-    // A move of a large model may solve with the previous move's factorisation
-    // (solver::kDragFactorizationReuse).
+    // A move of a large model may solve with an earlier move's factorisation
+    // (solver::kDragFactorizationReuse), or undo such a step (Options::reusedStepMeritRise).
     std::snprintf(line, sizeof line, "%s %3d/%d  residual %.3e  time %.3f ms  %s%s\n", label, index,
                   count, stats.maxConstraintResidual,
                   stats.assemblyMs + stats.factorizationMs + stats.solveMs,
-                  stats.factorizationReused ? "(factorisation reused)  " : "",
+                  stats.factorizationReused ? "(factorisation reused)  "
+                  : stats.reuseUndone       ? "(reused factorisation undone)  "
+                                            : "",
                   describeQuality(quality).c_str());
     std::cout << line;
 }

@@ -452,11 +452,16 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
                        : d.cachedStep(problem, stats.eps1, stats, summary,
                                       options.reuseFactorization > 0);
         };
-        bool stepped = d.mayReuseFactorization(problem, options)
-                           ? d.reusedStep(problem, stats.eps1, stats, summary)
-                           : step();
-        if (!stepped && summary.status == Status::FactorizationFailed &&
-            !stats.factorizationReused && stats.eps2 < options.eps2) {
+        // A step with a fresh factorisation.
+        auto factorisedStep = [&] {
+            if (step()) {
+                stats.factorFlops = d.cholesky.flops();
+                stats.factorNonZeros = d.cholesky.factorNonZeros();
+                return true;
+            }
+            if (summary.status != Status::FactorizationFailed || !(stats.eps2 < options.eps2)) {
+                return false;
+            }
             // A smaller adaptive ε₂ can leave the matrix numerically singular (a degenerate
             // strip, or directions no row constrains, as the in-plane motion of a flat
             // design's points); repeat with the configured damping, and try no less than
@@ -468,42 +473,83 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
             summary.status = Status::IterationLimit;
             summary.detail.clear();
             stats.eps2 = options.eps2;
-            stepped = step();
-        }
-        if (!stepped) {
-            break;
-        }
-        if (!stats.factorizationReused) {
+            if (!step()) {
+                return false;
+            }
             stats.factorFlops = d.cholesky.flops();
             stats.factorNonZeros = d.cholesky.factorNonZeros();
-        }
-        if (!allFinite(d.step)) {
-            summary.status = Status::NonFiniteValue;
-            summary.detail = "the linear solve produced a non-finite step";
-            break;
-        }
-        if (options.guardShrinkLimit > 0.0) {
-            stats.stepFraction =
-                admissibleStep(problem, d.x.data(), d.step.data(), options.guardShrinkLimit);
-            if (stats.stepFraction < 1.0) {
-                for (double& v : d.step) {
-                    v *= stats.stepFraction;
+            return true;
+        };
+        // x_{k+1} from the step (shrunk by the guards, projected) and evaluated there; false if
+        // the step or a value there is not finite (summary says which).
+        double evaluationMs = 0.0;
+        auto takeStep = [&] {
+            if (!allFinite(d.step)) {
+                summary.status = Status::NonFiniteValue;
+                summary.detail = "the linear solve produced a non-finite step";
+                return false;
+            }
+            if (options.guardShrinkLimit > 0.0) {
+                stats.stepFraction =
+                    admissibleStep(problem, d.x.data(), d.step.data(), options.guardShrinkLimit);
+                if (stats.stepFraction < 1.0) {
+                    for (double& v : d.step) {
+                        v *= stats.stepFraction;
+                    }
                 }
             }
+            double stepSquared = 0.0;
+            for (int i = 0; i < n; ++i) {
+                const auto k = static_cast<std::size_t>(i);
+                d.xNew[k] = d.x[k] + d.step[k];
+                stepSquared += d.step[k] * d.step[k];
+            }
+            stats.stepNorm = std::sqrt(stepSquared);
+            if (options.project) {
+                options.project(d.xNew.data());
+            }
+            const auto evaluating = Clock::now();
+            const bool evaluated =
+                allFinite(d.xNew) && d.equations.evaluate(problem, d.xNew.data());
+            evaluationMs += elapsedMs(evaluating);
+            if (!evaluated) {
+                summary.status = Status::NonFiniteValue;
+                summary.detail = "a term produced a non-finite value at iterate " +
+                                 std::to_string(iteration + 1);
+                return false;
+            }
+            return true;
+        };
+        const bool reused = d.mayReuseFactorization(problem, options) &&
+                            d.reusedStep(problem, stats.eps1, stats, summary);
+        if (!reused) {
+            summary.status = Status::IterationLimit; // a failed reuse factorises afresh
+            summary.detail.clear();
+            if (!factorisedStep()) {
+                break;
+            }
         }
-        double stepSquared = 0.0;
-        for (int i = 0; i < n; ++i) {
-            const auto k = static_cast<std::size_t>(i);
-            d.xNew[k] = d.x[k] + d.step[k];
-            stepSquared += d.step[k] * d.step[k];
-        }
-        stats.stepNorm = std::sqrt(stepSquared);
-        if (options.project) {
-            options.project(d.xNew.data());
+        const double meritBefore = d.equations.constraintMerit();
+        bool finite = takeStep();
+        if (reused && options.reusedStepMeritRise > 0.0 &&
+            (!finite || d.equations.constraintMerit() >
+                            options.reusedStepMeritRise *
+                                std::max(meritBefore, options.reusedStepMeritFloor))) {
+            // The earlier factorisation led the step astray (a chord step far from where it
+            // was made): back to x_k, and the step again with a fresh factorisation.
+            stats.reuseUndone = true;
+            stats.factorizationReused = false;
+            summary.status = Status::IterationLimit;
+            summary.detail.clear();
+            const auto evaluating = Clock::now();
+            d.equations.evaluate(problem, d.x.data());
+            evaluationMs += elapsedMs(evaluating);
+            if (!factorisedStep()) {
+                break;
+            }
+            finite = takeStep();
         }
         evaluationStart = Clock::now();
-        const double meritBefore = d.equations.constraintMerit();
-        const bool finite = allFinite(d.xNew) && d.equations.evaluate(problem, d.xNew.data());
         const bool worse = finite && d.equations.constraintMerit() > meritBefore;
         if ((worse && experimental.levenbergMarquardt) ||
             (worse && experimental.rejectWorseSteps && stats.eps1 == 0.0 &&
@@ -517,13 +563,9 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         } else if (finite) {
             eps2Boost = std::max(1.0, eps2Boost / 10.0);
         }
-        pendingEvaluationMs = elapsedMs(evaluationStart);
-        stats.assemblyMs += pendingEvaluationMs;
+        stats.assemblyMs += evaluationMs + elapsedMs(evaluationStart);
         pendingEvaluationMs = 0.0;
         if (!finite) {
-            summary.status = Status::NonFiniteValue;
-            summary.detail =
-                "a term produced a non-finite value at iterate " + std::to_string(iteration + 1);
             break;
         }
         d.x.swap(d.xNew);

@@ -85,6 +85,13 @@ struct Options {
     // ... and only a factorisation of at least this many flops (cholmod_common.fl), so that
     // the choice depends on the structure alone.
     double reuseFactorizationMinimumFlops = 0.0;
+    // A step that reused a factorisation and raised the constraint merit Σ w²φ² above this
+    // multiple of max(its merit before, reusedStepMeritFloor) is undone and taken again with a
+    // fresh factorisation (IterationStats::reuseUndone); 0: never. A chord step far from where
+    // its factorisation was made can throw the iterate off by orders of magnitude. The floor
+    // lets a converged iterate's merit rise to small values, as every move of a drag does.
+    double reusedStepMeritRise = 0.0;
+    double reusedStepMeritFloor = 1e-2;
 
     // Stop early once the ε₁ phase is over and the largest constraint residual is at most
     // this (0 disables early stopping).

@@ -35,6 +35,8 @@ struct IterationStats {
     // No factorisation: the step solved the last one with this iterate's right-hand side
     // (Options::reuseFactorization).
     bool factorizationReused = false;
+    // A reused factorisation's step was undone: factorised afresh (Options::reusedStepMeritRise).
+    bool reuseUndone = false;
     double assemblyMs = 0.0;      // term evaluation + normal-equation fill
     double factorizationMs = 0.0; // numeric (plus symbolic in baseline mode)
     double solveMs = 0.0;         // triangular solves

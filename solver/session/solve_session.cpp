@@ -302,8 +302,13 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
     // the diameter; designs without planar faces or cones are unchanged to the last digit.
     options.project = [this](double* x) { m_formulation->normaliseUnitNormals(x); };
     if (m_dragging && !m_settling) {
-        options.reuseFactorization = kDragFactorizationReuse;
+        // A drag's move is step(1). Several iterations at once while something is pulled
+        // (Tools ▸ Move or Rotate Vertices) are a solve towards a motion: they reuse every
+        // other factorisation, as before kDragFactorizationReuse grew; more chord steps left a
+        // held annulus's 3° turn short of its sheet (refused).
+        options.reuseFactorization = n == 1 ? kDragFactorizationReuse : 1;
         options.reuseFactorizationMinimumFlops = kDragFactorizationReuseFlops;
+        options.reusedStepMeritRise = kDragReusedStepMeritRise;
     }
     std::vector<double> before; // the state before the iteration running
     m_refused.reset();

@@ -69,10 +69,12 @@ constexpr int iterationsAfterDrag(bool keepLengths, bool holdsSheet = false) {
 }
 
 // Options::reuseFactorization while a drag moves on a model whose factorisation takes at least
-// kDragFactorizationReuseFlops: every other move solves with the previous move's factorisation;
-// the iterations after the release factorise every time.
-constexpr int kDragFactorizationReuse = 1;
+// kDragFactorizationReuseFlops: up to five moves in a row (step(1) calls) solve with an earlier
+// move's factorisation, and a step that such a reuse throws off is undone and factorised afresh
+// (Options::reusedStepMeritRise); the iterations after the release factorise every time.
+constexpr int kDragFactorizationReuse = 5;
 constexpr double kDragFactorizationReuseFlops = 1e7;
+constexpr double kDragReusedStepMeritRise = 100.0;
 
 // A move of a drag on a surface that holds its sheet, whose pulled points jump farther than
 // kMoveStepLimit × the surface's diameter since the last move, is split into as many iterations

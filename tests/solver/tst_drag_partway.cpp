@@ -220,9 +220,9 @@ private slots:
 
     void aHopelessHeldSettlingStopsLater() {
         // The annulus of size 10 holding its sheet, six spread rim vertices pinned, the first
-        // vertex not pinned (on the inner rim) lifted by a tenth of its diameter, as
-        // devsurf-bench --drag does: the held sheet cannot follow (docs/tuning.md). Its settling
-        // alternates far off the tolerance (0.047 0.5 0.053 0.48 0.24 0.5 0.077 …) and stops
+        // vertex not pinned (on the inner rim) lifted by 15 % of its diameter, as
+        // devsurf-bench --drag does by 10 %: the held sheet cannot follow (docs/tuning.md). Its
+        // settling swings far off the tolerance (0.55 0.54 0.38 1.2 0.49 0.088 0.48 …) and stops
         // once above kHopelessHeldSettlingResidual for kHopelessHeldSettlingIterations
         // iterations in a row, later than a settling of a sheet not held would
         // (kHopelessSettlingIterations above the lower kHopelessSettlingResidual).
@@ -236,7 +236,7 @@ private slots:
         while (press.isPinned(lifted)) {
             ++lifted;
         }
-        const Vec3 lift(0.0, 0.0, 0.1 * solver::surfaceDiameter(press));
+        const Vec3 lift(0.0, 0.0, 0.15 * solver::surfaceDiameter(press));
         std::vector<solver::VertexHandle> pulled{{lifted, false, press.position(lifted) + lift}};
         const Released released = releaseAfterMoves(press, pulled, true);
         QVERIFY(released.movesSucceeded);

@@ -7,9 +7,34 @@
 #include <QTest>
 
 #include <cmath>
+#include <memory>
 
 using namespace devsurf::solver;
 using namespace devsurf::solver::testing;
+
+namespace {
+
+// One row x³ − t on one variable: its slope changes fast, so a factorisation made at one x
+// is far from right at another.
+class CubeTerm : public Term {
+public:
+    explicit CubeTerm(double target) : m_target(target) {}
+    const char* typeName() const override { return "CubeTerm"; }
+    int rowCount() const override { return 1; }
+    void buildPattern(PatternBuilder& builder) const override {
+        builder.beginRow();
+        builder.addColumn(0);
+    }
+    void evaluate(const double* x, double* residuals, double* jacobian) const override {
+        residuals[0] = x[0] * x[0] * x[0] - m_target;
+        jacobian[0] = 3.0 * x[0] * x[0];
+    }
+
+private:
+    double m_target;
+};
+
+} // namespace
 
 // Options::reuseFactorization: steps that solve with an earlier iteration's factorisation.
 class TstFactorReuse : public QObject {
@@ -41,6 +66,56 @@ private slots:
             const double r = std::hypot(x[static_cast<std::size_t>(2 * i)],
                                         x[static_cast<std::size_t>(2 * i + 1)]);
             QVERIFY(std::abs(r - 1.0) < 1e-10);
+        }
+    }
+
+    void aReusedStepThatThrowsTheIterateOffIsUndone() {
+        // x³ = 27 from x = 1: the first step (slope 3) lands at x = 9.67. A chord step there with
+        // the factorisation made at x = 1 jumps to x = −282 (the merit from 7.7e5 to 5e14);
+        // undone (Options::reusedStepMeritRise), Newton's step from 9.67 goes to 6.54.
+        for (const double rise : {0.0, 100.0}) {
+            Problem p;
+            p.addVariableBlock("x", 1);
+            p.add(p.addFamily("cube", TermRole::Constraint), std::make_unique<CubeTerm>(27.0));
+            std::vector<double> x{1.0};
+            Options options;
+            options.maxIterations = 1;
+            options.reuseFactorization = 1;
+            options.reusedStepMeritRise = rise;
+            GuidedProjection solver;
+            QVERIFY(solver.solve(p, x, options).succeeded());
+            QVERIFY2(std::abs(x[0] - 9.667) < 0.01, qPrintable(QString::number(x[0])));
+            const Summary second = solver.solve(p, x, options);
+            QVERIFY2(second.succeeded(), second.briefReport().c_str());
+            const IterationStats& it = second.iterations.front();
+            if (rise == 0.0) {
+                QVERIFY(it.factorizationReused);
+                QVERIFY(!it.reuseUndone);
+                QVERIFY2(x[0] < -280.0, qPrintable(QString::number(x[0])));
+            } else {
+                QVERIFY(!it.factorizationReused);
+                QVERIFY(it.reuseUndone);
+                QVERIFY(it.factorizationMs > 0.0);
+                QVERIFY2(std::abs(x[0] - 6.541) < 0.01, qPrintable(QString::number(x[0])));
+            }
+        }
+    }
+
+    void aReusedStepWithinTheRiseIsKept() {
+        // The same chord step is kept when its merit stays within the rise: on the circle
+        // problem every other step reuses, and with a rise of 100 none is undone.
+        auto circle = makeCircleProblem(24, 3);
+        std::vector<double> x = circle->start;
+        Options options;
+        options.maxIterations = 20;
+        options.reuseFactorization = 1;
+        options.reusedStepMeritRise = 100.0;
+        GuidedProjection solver;
+        const Summary summary = solver.solve(circle->problem, x, options);
+        QVERIFY2(summary.succeeded(), summary.briefReport().c_str());
+        for (std::size_t i = 0; i < summary.iterations.size(); ++i) {
+            QCOMPARE(summary.iterations[i].factorizationReused, i % 2 == 1);
+            QVERIFY(!summary.iterations[i].reuseUndone);
         }
     }
 
