@@ -1,4 +1,5 @@
 #include "solver/core/guided_projection.h"
+#include "solver/core/guided_projection_impl.h"
 
 #include "solver/core/analysis_cache.h"
 #include "solver/core/finite_values.h"
@@ -38,288 +39,17 @@ namespace {
 // seeds and in Solve of the valid annulus.
 constexpr double kEps2FloorFactor = 2.0;
 
-using Clock = std::chrono::steady_clock;
-
-double elapsedMs(Clock::time_point since) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
-}
-
 } // namespace
-
-struct GuidedProjection::Impl {
-    NormalEquations equations;
-    SparseCholesky cholesky;
-    bool analysed = false; // cached mode: cholesky holds the symbolic factor for `equations`
-    FactorizationMethod method = FactorizationMethod::Supernodal;
-    std::vector<double> x;
-    std::vector<double> xNew;
-    std::vector<double> step;
-    std::vector<double> rhs;
-    // The smallest adaptive ε₂ worth trying on this structure: raised to kEps2FloorFactor
-    // times a value whose factorisation failed (see the retry in solve()), so that a solve or a
-    // drag does not factorise twice in every iteration.
-    double eps2Floor = 0.0;
-    ExperimentalOptions experimental;
-    // The factor by which rejected steps raised ε₂ (ExperimentalOptions::levenbergMarquardt,
-    // rejectWorseSteps), kept between solve() calls so that a session's step(1) continues
-    // where the last one stopped.
-    double eps2Boost = 1.0;
-    // The last factorisation, while it may be reused (Options::reuseFactorization): the
-    // Jacobian values it was made from, the fixed variables then, and how many steps in a row
-    // have reused it.
-    bool factorReusable = false;
-    std::vector<double> factorJacobian;
-    std::uint64_t factorFixedRevision = 0;
-    int reusesInARow = 0;
-
-    void reset() {
-        equations = NormalEquations();
-        analysed = false;
-        eps2Floor = 0.0;
-        eps2Boost = 1.0;
-        factorReusable = false;
-    }
-
-    bool mayReuseFactorization(const Problem& problem, const Options& options) const {
-        return options.reuseFactorization > 0 && !experimental.baseline && factorReusable &&
-               reusesInARow < options.reuseFactorization &&
-               factorFixedRevision == problem.fixedRevision() &&
-               cholesky.flops() >= options.reuseFactorizationMinimumFlops;
-    }
-
-    // A step with the last factorisation: the right-hand side of this iterate's residuals and
-    // the factorised Jacobian.
-    bool reusedStep(const Problem& problem, double eps1, IterationStats& stats, Summary& summary) {
-        const auto start = Clock::now();
-        equations.fillRightHandSide(problem, eps1, stats.proximity, stats.eps2, factorJacobian,
-                                    rhs.data());
-        stats.assemblyMs += elapsedMs(start);
-        if (!solveForStep(stats, summary)) {
-            return false;
-        }
-        stats.factorizationReused = true;
-        ++reusesInARow;
-        return true;
-    }
-
-    // step from rhs with the current factorisation.
-    bool solveForStep(IterationStats& stats, Summary& summary) {
-        const auto start = Clock::now();
-        const bool solved = cholesky.solve(rhs.data(), step.data());
-        stats.solveMs = elapsedMs(start);
-        if (!solved) {
-            summary.status = Status::FactorizationFailed;
-            summary.detail = cholesky.error();
-        }
-        return solved;
-    }
-
-    // Lays the normal matrix out for the chosen factorisation and analyses it.
-    bool analyse(const std::vector<int>& permutation, bool supernodal, Summary& summary) {
-        // Supernodal factorises the lower triangle in place, simplicial the upper one.
-        const auto triangle =
-            supernodal ? NormalEquations::Triangle::Lower : NormalEquations::Triangle::Upper;
-        equations.setLayout(permutation, triangle);
-        if (!cholesky.analyzePermuted(
-                equations.variableCount(), equations.columnStart(), equations.rowIndex(),
-                triangle == NormalEquations::Triangle::Lower, supernodal, permutation)) {
-            summary.status = Status::FactorizationFailed;
-            summary.detail = cholesky.error();
-            return false;
-        }
-        return true;
-    }
-
-    // Times one numeric factorisation at x with the given method (the faster of two when one
-    // takes under 20 ms); infinity if it fails.
-    double timeFactorization(const Problem& problem, const Options& options,
-                             const std::vector<int>& permutation, bool supernodal,
-                             Summary& summary) {
-        if (!analyse(permutation, supernodal, summary)) {
-            return std::numeric_limits<double>::infinity();
-        }
-        equations.fill(problem, epsilon1(options, options.scheduleOffset), options.eps2,
-                       cholesky.values(), rhs.data(),
-                       proximityWeight(options, equations.maxConstraintResidual()));
-        std::vector<double> values(cholesky.values(),
-                                   cholesky.values() + equations.normalNonZeros());
-        double best = std::numeric_limits<double>::infinity();
-        for (int repeat = 0; repeat < 2; ++repeat) {
-            std::copy(values.begin(), values.end(), cholesky.values());
-            const auto start = Clock::now();
-            if (!cholesky.factorize()) {
-                return std::numeric_limits<double>::infinity();
-            }
-            best = std::min(best, elapsedMs(start));
-            if (best > 20.0) {
-                break;
-            }
-        }
-        return best;
-    }
-
-    // Ordering, choice of method and symbolic analysis for the cached mode. The equations
-    // must be built and evaluated at the first iterate (Measured times factorisations of it).
-    // Takes the analysis of this structure from the process-wide cache (no ordering, no
-    // symbolic analysis, no timing); false if there is none. The equations must be in their
-    // original layout.
-    bool adoptCachedAnalysis(const Options& options) {
-        const auto cached =
-            AnalysisCache::instance().find(equations.variableCount(), equations.columnStart(),
-                                           equations.rowIndex(), options.factorization);
-        if (!cached) {
-            return false;
-        }
-        equations.setLayout(cached->permutation, cached->lowerTriangle
-                                                     ? NormalEquations::Triangle::Lower
-                                                     : NormalEquations::Triangle::Upper);
-        if (!cholesky.adoptAnalysis(*cached, equations.columnStart(), equations.rowIndex())) {
-            equations.setLayout({}, NormalEquations::Triangle::Upper);
-            return false;
-        }
-        return true;
-    }
-
-    // Puts the analysis just made into the cache (the pattern in its original order). If
-    // another solver cached this structure meanwhile, its decision is taken instead; false if
-    // that fails.
-    bool storeAnalysis(const Options& options, std::vector<int> colStart, std::vector<int> rowIndex,
-                       const std::vector<int>& permutation, bool supernodal) {
-        auto entry = std::make_shared<CachedAnalysis>();
-        entry->symbolic = cholesky.exportSymbolic();
-        if (!entry->symbolic) {
-            return true;
-        }
-        entry->variables = equations.variableCount();
-        entry->method = options.factorization;
-        entry->hash = patternHash(entry->variables, colStart, rowIndex, options.factorization);
-        entry->colStart = std::move(colStart);
-        entry->rowIndex = std::move(rowIndex);
-        entry->permutation = permutation;
-        entry->supernodal = supernodal;
-        entry->lowerTriangle = equations.triangle() == NormalEquations::Triangle::Lower;
-        const CachedAnalysis* mine = entry.get();
-        const auto kept = AnalysisCache::instance().insert(std::move(entry));
-        if (!kept || kept.get() == mine) {
-            return true;
-        }
-        equations.setLayout(kept->permutation, kept->lowerTriangle
-                                                   ? NormalEquations::Triangle::Lower
-                                                   : NormalEquations::Triangle::Upper);
-        return cholesky.adoptAnalysis(*kept, equations.columnStart(), equations.rowIndex());
-    }
-
-    bool analyseCached(const Problem& problem, const Options& options, Summary& summary) {
-        // Decided once per structure: a structure seen before takes the same analysis and the
-        // same supernodal/simplicial choice.
-        if (adoptCachedAnalysis(options)) {
-            analysed = true;
-            method = options.factorization;
-            return true;
-        }
-        std::vector<int> originalColStart = equations.columnStart();
-        std::vector<int> originalRowIndex = equations.rowIndex();
-        std::vector<int> permutation;
-        bool supernodal = false;
-        if (!cholesky.computeOrdering(equations.variableCount(), equations.columnStart(),
-                                      equations.rowIndex(), options.factorization, permutation,
-                                      supernodal)) {
-            summary.status = Status::FactorizationFailed;
-            summary.detail = cholesky.error();
-            return false;
-        }
-        bool analysedAsChosen = false;
-        if (options.factorization == FactorizationMethod::Measured) {
-            Summary scratch;
-            const double simplicialMs =
-                timeFactorization(problem, options, permutation, false, scratch);
-            const double supernodalMs =
-                timeFactorization(problem, options, permutation, true, scratch);
-            if (std::isfinite(simplicialMs) || std::isfinite(supernodalMs)) {
-                supernodal = supernodalMs < simplicialMs;
-                // The supernodal analysis was the last one; it stands if supernodal won.
-                analysedAsChosen = supernodal && std::isfinite(supernodalMs);
-            }
-        }
-        if (!analysedAsChosen && !analyse(permutation, supernodal, summary)) {
-            return false;
-        }
-        analysed = true;
-        method = options.factorization;
-        if (!storeAnalysis(options, std::move(originalColStart), std::move(originalRowIndex),
-                           permutation, supernodal)) {
-            summary.status = Status::FactorizationFailed;
-            summary.detail = cholesky.error();
-            return false;
-        }
-        return true;
-    }
-
-    // One linear solve in baseline mode: triplets, Eigen products, full analysis.
-    bool baselineStep(const Problem& problem, double eps1, const Options& options,
-                      IterationStats& stats, Summary& summary) {
-        auto start = Clock::now();
-        Eigen::SparseMatrix<double> upper;
-        Eigen::VectorXd g;
-        equations.assembleFromScratch(problem, eps1, stats.eps2, upper, g, stats.proximity);
-        const int n = equations.variableCount();
-        std::vector<int> colStart(upper.outerIndexPtr(), upper.outerIndexPtr() + n + 1);
-        std::vector<int> rowIndex(upper.innerIndexPtr(), upper.innerIndexPtr() + upper.nonZeros());
-        stats.assemblyMs += elapsedMs(start);
-        start = Clock::now();
-        if (!cholesky.analyzeGeneral(n, colStart, rowIndex, options.factorization)) {
-            summary.status = Status::FactorizationFailed;
-            summary.detail = cholesky.error();
-            return false;
-        }
-        std::memcpy(cholesky.values(), upper.valuePtr(),
-                    sizeof(double) * static_cast<std::size_t>(upper.nonZeros()));
-        if (!cholesky.factorize()) {
-            summary.status = Status::FactorizationFailed;
-            summary.detail = cholesky.error();
-            return false;
-        }
-        stats.factorizationMs = elapsedMs(start);
-        start = Clock::now();
-        std::copy(g.data(), g.data() + n, rhs.begin());
-        const bool solved = cholesky.solve(rhs.data(), step.data());
-        stats.solveMs = elapsedMs(start);
-        if (!solved) {
-            summary.status = Status::FactorizationFailed;
-            summary.detail = cholesky.error();
-            return false;
-        }
-        return true;
-    }
-
-    bool cachedStep(const Problem& problem, double eps1, IterationStats& stats, Summary& summary,
-                    bool keepForReuse) {
-        auto start = Clock::now();
-        equations.fill(problem, eps1, stats.eps2, cholesky.values(), rhs.data(), stats.proximity);
-        stats.assemblyMs += elapsedMs(start);
-        start = Clock::now();
-        factorReusable = false;
-        if (!cholesky.factorize()) {
-            summary.status = Status::FactorizationFailed;
-            summary.detail = cholesky.error();
-            return false;
-        }
-        stats.factorizationMs = elapsedMs(start);
-        if (keepForReuse) {
-            factorJacobian = equations.jacobianValues();
-            factorFixedRevision = problem.fixedRevision();
-            factorReusable = true;
-            reusesInARow = 0;
-        }
-        return solveForStep(stats, summary);
-    }
-};
 
 GuidedProjection::GuidedProjection() : m_impl(std::make_unique<Impl>()) {}
 GuidedProjection::~GuidedProjection() = default;
 
 void GuidedProjection::invalidate() {
     m_impl->reset();
+}
+
+void GuidedProjection::waitForBackgroundFactorization() {
+    m_impl->waitForBackground();
 }
 
 void GuidedProjection::setExperimentalOptions(const ExperimentalOptions& experimental) {
@@ -368,7 +98,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
     if (!allFinite(d.x)) {
         summary.status = Status::NonFiniteValue;
         summary.detail = "the initial state contains a non-finite value";
-        summary.totalMs = elapsedMs(totalStart);
+        summary.totalMs = millisecondsSince(totalStart);
         return summary;
     }
 
@@ -378,6 +108,9 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         d.equations.matches(problem) &&
         (experimental.baseline || (d.analysed && d.method == options.factorization));
     if (!reusable) {
+        d.waitForBackground(); // it reads the structure about to change
+        d.analysis.reset();
+        d.chordSlot = -1;
         d.analysed = false;
         d.eps2Floor = 0.0;
         d.eps2Boost = 1.0;
@@ -387,10 +120,10 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
             d.reset();
             summary.status = Status::InvalidProblem;
             summary.detail = error;
-            summary.totalMs = elapsedMs(totalStart);
+            summary.totalMs = millisecondsSince(totalStart);
             return summary;
         }
-        summary.analysisMs = elapsedMs(analysisStart);
+        summary.analysisMs = millisecondsSince(analysisStart);
     }
     summary.structureReused = reusable;
     summary.rows = d.equations.rowCount();
@@ -401,18 +134,18 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
     if (!d.equations.evaluate(problem, d.x.data())) {
         summary.status = Status::NonFiniteValue;
         summary.detail = "a term produced a non-finite value at the initial state";
-        summary.totalMs = elapsedMs(totalStart);
+        summary.totalMs = millisecondsSince(totalStart);
         return summary;
     }
-    double pendingEvaluationMs = elapsedMs(evaluationStart);
+    double pendingEvaluationMs = millisecondsSince(evaluationStart);
     if (!reusable && !experimental.baseline) {
         analysisStart = Clock::now();
         if (!d.analyseCached(problem, options, summary)) {
             d.reset();
-            summary.totalMs = elapsedMs(totalStart);
+            summary.totalMs = millisecondsSince(totalStart);
             return summary;
         }
-        summary.analysisMs += elapsedMs(analysisStart);
+        summary.analysisMs += millisecondsSince(analysisStart);
     }
     summary.initialMaxConstraintResidual = d.equations.maxConstraintResidual();
     summary.initialEnergy = d.equations.energy();
@@ -429,6 +162,9 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
             summary.status = Status::Cancelled;
             summary.detail = "cancelled";
             break;
+        }
+        if (options.backgroundFactorization) {
+            d.adoptBackground(problem);
         }
         IterationStats stats;
         stats.iteration = iteration;
@@ -511,7 +247,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
             const auto evaluating = Clock::now();
             const bool evaluated =
                 allFinite(d.xNew) && d.equations.evaluate(problem, d.xNew.data());
-            evaluationMs += elapsedMs(evaluating);
+            evaluationMs += millisecondsSince(evaluating);
             if (!evaluated) {
                 summary.status = Status::NonFiniteValue;
                 summary.detail = "a term produced a non-finite value at iterate " +
@@ -520,8 +256,9 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
             }
             return true;
         };
-        const bool reused = d.mayReuseFactorization(problem, options) &&
-                            d.reusedStep(problem, stats.eps1, stats, summary);
+        const bool reused =
+            d.mayReuseFactorization(problem, options) &&
+            d.reusedStep(problem, stats.eps1, options.backgroundFactorization, stats, summary);
         if (!reused) {
             summary.status = Status::IterationLimit; // a failed reuse factorises afresh
             summary.detail.clear();
@@ -543,7 +280,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
             summary.detail.clear();
             const auto evaluating = Clock::now();
             d.equations.evaluate(problem, d.x.data());
-            evaluationMs += elapsedMs(evaluating);
+            evaluationMs += millisecondsSince(evaluating);
             if (!factorisedStep()) {
                 break;
             }
@@ -563,12 +300,22 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         } else if (finite) {
             eps2Boost = std::max(1.0, eps2Boost / 10.0);
         }
-        stats.assemblyMs += evaluationMs + elapsedMs(evaluationStart);
+        stats.assemblyMs += evaluationMs + millisecondsSince(evaluationStart);
         pendingEvaluationMs = 0.0;
         if (!finite) {
             break;
         }
         d.x.swap(d.xNew);
+        ++d.iterate;
+        if (options.backgroundFactorization && d.factorReusable && !experimental.baseline &&
+            d.cholesky.flops() >= options.reuseFactorizationMinimumFlops) {
+            // The next factorisation, made beside the steps: at this iterate, with this
+            // step's weights. Those of the iterate itself would be the next step's only if the
+            // targets stayed; after a move ε₂ is far larger (the residual rose), and a
+            // factorisation at the converged iterate's ε₂ threw the next moves off (0.045
+            // instead of 4.5e-6 on the annulus of size 10, docs/tuning.md).
+            d.startBackground(problem, stats.eps1, stats.eps2, stats.proximity);
+        }
         stats.maxConstraintResidual = d.equations.maxConstraintResidual();
         stats.energy = d.equations.energy();
         summary.finalMaxConstraintResidual = stats.maxConstraintResidual;
@@ -592,7 +339,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
     summary.supernodal = d.cholesky.isSupernodal();
     summary.factorizedInPlace = !experimental.baseline && d.cholesky.factorizesInPlace();
     std::copy(d.x.begin(), d.x.end(), x);
-    summary.totalMs = elapsedMs(totalStart);
+    summary.totalMs = millisecondsSince(totalStart);
     return summary;
 }
 

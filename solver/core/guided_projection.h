@@ -36,6 +36,10 @@ public:
     // Drops the cached structure and symbolic factorisation.
     void invalidate();
 
+    // Waits for a factorisation running on another thread (Options::backgroundFactorization);
+    // the next solve() that may reuse takes it if it is of a later iterate.
+    void waitForBackgroundFactorization();
+
     // Variants for the benchmark and the tests (none by default); they apply to later solves.
     void setExperimentalOptions(const ExperimentalOptions& experimental);
     const ExperimentalOptions& experimentalOptions() const;

@@ -68,7 +68,6 @@ bool NormalEquations::build(const Problem& problem, std::string* error) {
     }
     m_jacValue.assign(m_jacColumn.size(), 0.0);
     m_residual.assign(static_cast<std::size_t>(m_rows), 0.0);
-    m_rowWeight2.assign(static_cast<std::size_t>(m_rows), 0.0);
 
     formGroups(problem);
 
@@ -384,38 +383,61 @@ void NormalEquations::rowWeights(const Problem& problem, double eps1, std::vecto
     }
 }
 
+void NormalEquations::termWeights2(const Problem& problem, double eps1, double eps2,
+                                   double proximity, std::vector<double>& weights) const {
+    weights.resize(static_cast<std::size_t>(problem.termCount()));
+    for (int t = 0; t < problem.termCount(); ++t) {
+        const double w = termWeight(problem, t, eps1, proximity, eps2);
+        weights[static_cast<std::size_t>(t)] = w * w;
+    }
+}
+
 void NormalEquations::fill(const Problem& problem, double eps1, double eps2, double* values,
                            double* rhs, double proximity) {
+    termWeights2(problem, eps1, eps2, proximity, m_termWeight2);
+    fillFrom(m_jacValue.data(), m_residual.data(), m_termWeight2, problem.fixedVariables(), eps2,
+             values, rhs, m_scratch);
+}
+
+void NormalEquations::fillMatrix(const double* jacobian, const std::vector<double>& termWeight2,
+                                 const std::vector<int>& fixed, double eps2, double* values,
+                                 FillScratch& scratch) const {
+    fillFrom(jacobian, nullptr, termWeight2, fixed, eps2, values, nullptr, scratch);
+}
+
+void NormalEquations::fillFrom(const double* jac, const double* residual,
+                               const std::vector<double>& termWeight2,
+                               const std::vector<int>& fixed, double eps2, double* values,
+                               double* rhs, FillScratch& scratch) const {
     std::fill(values, values + m_rowIndex.size(), 0.0);
-    std::fill(rhs, rhs + m_variables, 0.0);
+    if (rhs) {
+        std::fill(rhs, rhs + m_variables, 0.0);
+    }
+    scratch.rows.resize(m_groupRowSize);
+    scratch.block.resize(m_groupBlockSize);
     // The row groups call the BLAS (fillGroup).
     std::unique_lock<std::mutex> blasLock(blasMutex(), std::defer_lock);
     if (!m_groups.empty()) {
         blasLock.lock();
     }
-    const double* jac = m_jacValue.data();
     const int* column = m_jacColumn.data();
     const int* target = m_pairTarget.data();
     std::size_t p = 0;
     std::size_t nextGroup = 0;
-    for (int t = 0; t < problem.termCount(); ++t) {
-        const double w = termWeight(problem, t, eps1, proximity, eps2);
-        const double w2 = w * w;
+    const auto terms = static_cast<int>(m_termRowStart.size()) - 1;
+    for (int t = 0; t < terms; ++t) {
+        const double w2 = termWeight2[static_cast<std::size_t>(t)];
         const int rowEnd = m_termRowStart[static_cast<std::size_t>(t) + 1];
         int r = m_termRowStart[t];
         while (r < rowEnd) {
             if (nextGroup < m_groups.size() && m_groups[nextGroup].firstRow == r) {
                 const RowGroup& group = m_groups[nextGroup++];
-                for (int q = group.firstRow; q < group.rowEnd; ++q) {
-                    m_rowWeight2[static_cast<std::size_t>(q)] = w2;
-                }
                 if (w2 != 0.0) {
-                    fillGroup(group, w2, values, rhs);
+                    fillGroup(group, w2, jac, residual, values, rhs, scratch);
                 }
                 r = group.rowEnd;
                 continue;
             }
-            m_rowWeight2[static_cast<std::size_t>(r)] = w2;
             const int begin = m_jacRowStart[r];
             const int end = m_jacRowStart[r + 1];
             if (w2 == 0.0) {
@@ -424,10 +446,14 @@ void NormalEquations::fill(const Problem& problem, double eps1, double eps2, dou
                 ++r;
                 continue;
             }
-            const double f = w2 * m_residual[static_cast<std::size_t>(r)];
+            if (rhs) {
+                const double f = w2 * residual[static_cast<std::size_t>(r)];
+                for (int i = begin; i < end; ++i) {
+                    rhs[column[i]] -= f * jac[i];
+                }
+            }
             for (int i = begin; i < end; ++i) {
                 const double a = w2 * jac[i];
-                rhs[column[i]] -= f * jac[i];
                 for (int j = i; j < end; ++j) {
                     values[target[p++]] += a * jac[j];
                 }
@@ -436,15 +462,17 @@ void NormalEquations::fill(const Problem& problem, double eps1, double eps2, dou
         }
     }
     for (const DuplicatePair& d : m_duplicates) {
+        const auto term = std::upper_bound(m_termRowStart.begin(), m_termRowStart.end(), d.row) -
+                          m_termRowStart.begin() - 1;
         values[m_position[static_cast<std::size_t>(d.target)]] +=
-            m_rowWeight2[static_cast<std::size_t>(d.row)] * jac[d.first] * jac[d.second];
+            termWeight2[static_cast<std::size_t>(term)] * jac[d.first] * jac[d.second];
     }
     const double e2 = eps2 * eps2;
     for (int v : m_diagonal) {
         values[v] += e2;
     }
     // Fixed variables: their rows and columns are zero; a unit diagonal keeps N definite.
-    for (int v : problem.fixedVariables()) {
+    for (int v : fixed) {
         values[m_diagonal[static_cast<std::size_t>(v)]] += 1.0;
     }
 }

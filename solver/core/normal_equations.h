@@ -31,6 +31,11 @@ class Problem;
 class NormalEquations {
 public:
     enum class Triangle { Upper, Lower };
+    // Working memory of a fill (a group's dense rows and block).
+    struct FillScratch {
+        std::vector<double> rows;
+        std::vector<double> block;
+    };
 
     // Builds the Jacobian (CSR) and normal-matrix patterns. Returns false and sets `error` for
     // an inconsistent problem (column out of range, wrong number of rows from a term).
@@ -63,6 +68,17 @@ public:
     // the damping families' weights too.
     void fill(const Problem& problem, double eps1, double eps2, double* values, double* rhs,
               double proximity = 0.0);
+
+    // w² per term of `problem` for fill (the family's weight times ε₁, μ or ε₂ by its role).
+    void termWeights2(const Problem& problem, double eps1, double eps2, double proximity,
+                      std::vector<double>& weights) const;
+    // N alone (current layout), from Jacobian values in jacobianValues()' order, w² per term
+    // (termWeights2) and the fixed variables. It reads the structure only: another thread may
+    // run it, with its own values and scratch, while this object evaluates (not while it is
+    // built or laid out).
+    void fillMatrix(const double* jacobian, const std::vector<double>& termWeight2,
+                    const std::vector<int>& fixed, double eps2, double* values,
+                    FillScratch& scratch) const;
 
     // g alone (original order) from the residuals of the last evaluate() and the Jacobian
     // values `jacobian` (in jacobianValues()' order: those of an earlier evaluate(), such as
@@ -124,8 +140,14 @@ private:
     };
     // Splits every term's rows into groups (from the Jacobian's pattern alone).
     void formGroups(const Problem& problem);
-    // Adds group's rows (weight² w2) to the stored triangle and the right-hand side.
-    void fillGroup(const RowGroup& group, double w2, double* values, double* rhs);
+    // fill() and fillMatrix(): N, and g unless `rhs` is null (then `residual` is not read).
+    void fillFrom(const double* jac, const double* residual, const std::vector<double>& termWeight2,
+                  const std::vector<int>& fixed, double eps2, double* values, double* rhs,
+                  FillScratch& scratch) const;
+    // Adds group's rows (weight² w2) to the stored triangle and, unless null, the right-hand
+    // side.
+    void fillGroup(const RowGroup& group, double w2, const double* jac, const double* residual,
+                   double* values, double* rhs, FillScratch& scratch) const;
 
     bool m_built = false;
     std::uint64_t m_structureId = 0;
@@ -137,7 +159,7 @@ private:
     std::vector<int> m_jacColumn;
     std::vector<double> m_jacValue;
     std::vector<double> m_residual;
-    std::vector<double> m_rowWeight2;
+    std::vector<double> m_termWeight2; // fill()'s, per term
 
     // Normal matrix in the original order, upper triangle, CSC.
     std::vector<int> m_originalColStart;
@@ -159,8 +181,9 @@ private:
     std::vector<int> m_entryLocal;
     std::vector<int> m_originalGroupPairTarget;
     std::vector<int> m_groupPairTarget;
-    std::vector<double> m_groupRow;   // scratch: a group's rows, dense over its union
-    std::vector<double> m_groupBlock; // scratch: a block (its upper triangle is used)
+    std::size_t m_groupRowSize = 0;   // a group's rows, dense over its union, at most
+    std::size_t m_groupBlockSize = 0; // a block (its upper triangle is used)
+    FillScratch m_scratch;            // fill()'s
 
     // Fixed variables.
     std::uint64_t m_fixedRevision = ~std::uint64_t{0};

@@ -91,8 +91,10 @@ void NormalEquations::formGroups(const Problem& problem) {
     for (const RowGroup& group : m_groups) {
         mostRows = std::max(mostRows, static_cast<std::size_t>(group.rowEnd - group.firstRow));
     }
-    m_groupRow.assign(mostRows * kMaxWidth, 0.0);
-    m_groupBlock.assign(kMaxWidth * kMaxWidth, 0.0);
+    m_groupRowSize = mostRows * kMaxWidth;
+    m_groupBlockSize = kMaxWidth * kMaxWidth;
+    m_scratch.rows.assign(m_groupRowSize, 0.0);
+    m_scratch.block.assign(m_groupBlockSize, 0.0);
 }
 
 int NormalEquations::groupedRowCount() const {
@@ -103,29 +105,34 @@ int NormalEquations::groupedRowCount() const {
     return rows;
 }
 
-void NormalEquations::fillGroup(const RowGroup& group, double w2, double* values, double* rhs) {
+void NormalEquations::fillGroup(const RowGroup& group, double w2, const double* jac,
+                                const double* residual, double* values, double* rhs,
+                                FillScratch& scratch) const {
     const int width = group.width;
     const int rowCount = group.rowEnd - group.firstRow;
     const auto w = static_cast<std::size_t>(width);
     const auto k = static_cast<std::size_t>(rowCount);
     // The group's rows as a dense k × width matrix R (column-major, zero where a row has no
     // entry) and the right-hand side's share of them.
-    double* rows = m_groupRow.data();
+    double* rows = scratch.rows.data();
     std::fill_n(rows, k * w, 0.0);
-    const double* jac = m_jacValue.data();
     for (int r = group.firstRow; r < group.rowEnd; ++r) {
-        const double f = w2 * m_residual[static_cast<std::size_t>(r)];
         double* row = rows + static_cast<std::size_t>(r - group.firstRow);
         for (int i = m_jacRowStart[r]; i < m_jacRowStart[r + 1]; ++i) {
-            rhs[m_jacColumn[static_cast<std::size_t>(i)]] -= f * jac[i];
             row[static_cast<std::size_t>(m_entryLocal[static_cast<std::size_t>(i)]) * k] += jac[i];
+        }
+        if (rhs) {
+            const double f = w2 * residual[static_cast<std::size_t>(r)];
+            for (int i = m_jacRowStart[r]; i < m_jacRowStart[r + 1]; ++i) {
+                rhs[m_jacColumn[static_cast<std::size_t>(i)]] -= f * jac[i];
+            }
         }
     }
     // The block Rᵀ R (column-major, leading dimension width) by BLAS; its upper triangle is
     // used. dgemm rather than dsyrk although it computes both triangles: OpenBLAS multiplies
     // small matrices without packing them only in dgemm (assembly ms per iteration with dsyrk /
     // dgemm: fig8-sheet 0.096 / 0.090, fig12-annulus 0.517 / 0.478, large-annulus 23.4 / 21.6).
-    double* block = m_groupBlock.data();
+    double* block = scratch.block.data();
     const char transposed = 'T';
     const char plain = 'N';
     const double one = 1.0;

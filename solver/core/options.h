@@ -92,6 +92,12 @@ struct Options {
     // lets a converged iterate's merit rise to small values, as every move of a drag does.
     double reusedStepMeritRise = 0.0;
     double reusedStepMeritFloor = 1e-2;
+    // While steps may reuse a factorisation: after each iteration the normal equations at the
+    // new iterate are filled and factorised on another thread, and the steps reuse the newest
+    // such factorisation once it is done (counting their reuses afresh), so that the iteration
+    // itself rarely factorises (GuidedProjection). Kept across solve() calls; a solve without
+    // it neither starts nor takes one.
+    bool backgroundFactorization = false;
 
     // Stop early once the ε₁ phase is over and the largest constraint residual is at most
     // this (0 disables early stopping).

@@ -35,6 +35,76 @@ public:
     double lnz = 0.0;
 };
 
+namespace {
+
+// L Lᵀ x = b in place for a supernodal factor in its own order, without the BLAS, so that a
+// solve does not wait for the BLAS lock while a factorisation runs on another thread
+// (SparseCholesky::solve's withoutBlas). As fast as cholmod_solve2's dtrsv and dgemv per
+// supernode here (docs/tuning.md). Each supernode's rows below its diagonal block are gathered
+// into `scratch` (the largest supernode's height), so the inner loops run over contiguous
+// columns of L.
+void solveSupernodal(const cholmod_factor& factor, double* x, std::vector<double>& scratch) {
+    const auto* super = static_cast<const int*>(factor.super);
+    const auto* pi = static_cast<const int*>(factor.pi);
+    const auto* px = static_cast<const int*>(factor.px);
+    const auto* rows = static_cast<const int*>(factor.s);
+    const auto* values = static_cast<const double*>(factor.x);
+    const auto nsuper = static_cast<int>(factor.nsuper);
+    if (scratch.size() < factor.maxesize) {
+        scratch.resize(factor.maxesize);
+    }
+    double* below = scratch.data();
+    for (int k = 0; k < nsuper; ++k) {
+        const int first = super[k];
+        const int columns = super[k + 1] - first;
+        const int height = pi[k + 1] - pi[k];
+        const int rest = height - columns;
+        const int* r = rows + pi[k] + columns;
+        double* xs = x + first;
+        std::fill_n(below, rest, 0.0);
+        for (int j = 0; j < columns; ++j) {
+            const double* l = values + px[k] + static_cast<std::ptrdiff_t>(j) * height;
+            const double xj = xs[j] / l[j];
+            xs[j] = xj;
+            for (int i = j + 1; i < columns; ++i) {
+                xs[i] -= l[i] * xj;
+            }
+            const double* lb = l + columns;
+            for (int i = 0; i < rest; ++i) {
+                below[i] += lb[i] * xj;
+            }
+        }
+        for (int i = 0; i < rest; ++i) {
+            x[r[i]] -= below[i];
+        }
+    }
+    for (int k = nsuper - 1; k >= 0; --k) {
+        const int first = super[k];
+        const int columns = super[k + 1] - first;
+        const int height = pi[k + 1] - pi[k];
+        const int rest = height - columns;
+        const int* r = rows + pi[k] + columns;
+        double* xs = x + first;
+        for (int i = 0; i < rest; ++i) {
+            below[i] = x[r[i]];
+        }
+        for (int j = columns - 1; j >= 0; --j) {
+            const double* l = values + px[k] + static_cast<std::ptrdiff_t>(j) * height;
+            double sum = xs[j];
+            for (int i = j + 1; i < columns; ++i) {
+                sum -= l[i] * xs[i];
+            }
+            const double* lb = l + columns;
+            for (int i = 0; i < rest; ++i) {
+                sum -= lb[i] * below[i];
+            }
+            xs[j] = sum / l[j];
+        }
+    }
+}
+
+} // namespace
+
 struct SparseCholesky::Impl {
     cholmod_common common{};
     cholmod_sparse* matrix = nullptr;
@@ -43,7 +113,8 @@ struct SparseCholesky::Impl {
     cholmod_dense* solution = nullptr;
     cholmod_dense* workY = nullptr;
     cholmod_dense* workE = nullptr;
-    std::vector<int> permutation; // empty: CHOLMOD permutes itself (or identity)
+    std::vector<int> permutation;     // empty: CHOLMOD permutes itself (or identity)
+    std::vector<double> solveScratch; // solveSupernodal's
     double flops = 0.0;
     double lnz = 0.0;
     bool inPlace = false;
@@ -298,7 +369,7 @@ bool SparseCholesky::factorize() {
     return true;
 }
 
-bool SparseCholesky::solve(const double* b, double* x) {
+bool SparseCholesky::solve(const double* b, double* x, bool withoutBlas) {
     Impl& d = *m_impl;
     if (!d.factor || !d.rhs) {
         d.error = "solve() before analysis";
@@ -310,20 +381,25 @@ bool SparseCholesky::solve(const double* b, double* x) {
     for (int k = 0; k < n; ++k) {
         bx[k] = b[permuted ? d.permutation[static_cast<std::size_t>(k)] : k];
     }
-    bool solved = false;
-    {
-        std::unique_lock<std::mutex> lock(blasMutex(), std::defer_lock);
-        if (d.factor->is_super) {
-            lock.lock();
+    const double* sx = bx;
+    if (withoutBlas && d.factor->is_super && d.factor->ordering == CHOLMOD_NATURAL) {
+        solveSupernodal(*d.factor, bx, d.solveScratch);
+    } else {
+        bool solved = false;
+        {
+            std::unique_lock<std::mutex> lock(blasMutex(), std::defer_lock);
+            if (d.factor->is_super) {
+                lock.lock();
+            }
+            const SerialOpenMpRegions serial;
+            solved = cholmod_solve2(CHOLMOD_A, d.factor, d.rhs, nullptr, &d.solution, nullptr,
+                                    &d.workY, &d.workE, &d.common) != 0;
         }
-        const SerialOpenMpRegions serial;
-        solved = cholmod_solve2(CHOLMOD_A, d.factor, d.rhs, nullptr, &d.solution, nullptr, &d.workY,
-                                &d.workE, &d.common) != 0;
+        if (!solved) {
+            return d.fail("solve failed");
+        }
+        sx = static_cast<const double*>(d.solution->x);
     }
-    if (!solved) {
-        return d.fail("solve failed");
-    }
-    const auto* sx = static_cast<const double*>(d.solution->x);
     for (int k = 0; k < n; ++k) {
         x[permuted ? d.permutation[static_cast<std::size_t>(k)] : k] = sx[k];
     }

@@ -50,8 +50,11 @@ public:
     double* values();
     bool factorize();
     // Solves N x = b; b and x in the original variable order. No allocation after the first
-    // call for a given analysis.
-    bool solve(const double* b, double* x);
+    // call for a given analysis. withoutBlas: a supernodal factor in its own order (the cached
+    // mode's) is solved by our own loops, which take no BLAS lock, for a step beside a
+    // factorisation on another thread (Options::backgroundFactorization); on nearly singular
+    // systems its rounding differs from CHOLMOD's visibly.
+    bool solve(const double* b, double* x, bool withoutBlas = false);
 
     bool isSupernodal() const;
     // True if the factorisation runs on our matrix in place (natural ordering in CHOLMOD).

@@ -37,6 +37,8 @@ struct IterationStats {
     bool factorizationReused = false;
     // A reused factorisation's step was undone: factorised afresh (Options::reusedStepMeritRise).
     bool reuseUndone = false;
+    // The reused factorisation was made on another thread (Options::backgroundFactorization).
+    bool backgroundFactor = false;
     double assemblyMs = 0.0;      // term evaluation + normal-equation fill
     double factorizationMs = 0.0; // numeric (plus symbolic in baseline mode)
     double solveMs = 0.0;         // triangular solves

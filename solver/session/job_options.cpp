@@ -41,6 +41,7 @@ SessionOptions optionsFor(const JobRequest& request, int surface, bool damped) {
         }
     }
     options.formulation.curvePairs = entryOf(request.curvePairs, surface);
+    options.backgroundFactorization = request.backgroundFactorization;
     if (request.kind == JobKind::Solve) {
         options.stopResidual = kSolveStopResidual;
         if (const auto it = request.fixed.find(surface); it != request.fixed.end()) {

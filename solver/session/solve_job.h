@@ -79,6 +79,10 @@ struct JobRequest {
     // budget (followPartway), so that what it follows does not depend on the machine's speed
     // (tests; the front ends keep the budget).
     bool untimedPartway = false;
+    // A drag's moves factorise on another thread beside their steps
+    // (SessionOptions::backgroundFactorization). The solver worker asks for it (the front
+    // ends' drags); the command line and the tests step synchronously, reproducibly.
+    bool backgroundFactorization = false;
 };
 
 // The iterations of an approximation's pull when the request does not say.

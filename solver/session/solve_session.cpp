@@ -309,6 +309,7 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         options.reuseFactorization = n == 1 ? kDragFactorizationReuse : 1;
         options.reuseFactorizationMinimumFlops = kDragFactorizationReuseFlops;
         options.reusedStepMeritRise = kDragReusedStepMeritRise;
+        options.backgroundFactorization = n == 1 && m_options.backgroundFactorization;
     }
     std::vector<double> before; // the state before the iteration running
     m_refused.reset();

@@ -139,6 +139,10 @@ struct SessionOptions {
     // After settle(): the pulls of places in the held sheet fade as well (kCreaseDragFade), as
     // the partway search needs; a release keeps them at the mouse (docs/tuning.md).
     bool fadeSheetPulls = false;
+    // A drag's moves (step(1) before settle()) factorise on another thread beside their steps
+    // (Options::backgroundFactorization), on a model whose factorisation takes at least
+    // kDragFactorizationReuseFlops.
+    bool backgroundFactorization = false;
 };
 
 // A settling on a held sheet within kSolveStopResidual stops once its distance from its sheet
@@ -217,6 +221,8 @@ public:
     // Builds what the first step() would build (structure, ordering, symbolic analysis) and
     // runs no iteration, changing nothing else: a drag prepared before its press.
     Summary prepare();
+    // GuidedProjection::waitForBackgroundFactorization (SessionOptions::backgroundFactorization).
+    void waitForBackgroundFactorization() { m_projection.waitForBackgroundFactorization(); }
 
     const model::CompositeSurface& surface() const { return m_surface; }
     // Whether a settling stopped early, its residual above kHopelessSettlingResidual in

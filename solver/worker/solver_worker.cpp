@@ -93,6 +93,8 @@ void SolverWorker::run() {
             m_impl->running = true;
             ++m_impl->solved;
         }
+        // Interactive drags: their moves factorise beside the steps, on a core of their own.
+        request.job.backgroundFactorization = true;
         SolveResult result;
         result.revision = request.revision;
         result.ticket = request.ticket;

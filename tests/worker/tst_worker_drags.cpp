@@ -3,6 +3,7 @@
 #include "model/examples.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/session/crease_drag.h"
+#include "solver/session/solve_session.h"
 #include "solver/worker/solver_worker.h"
 #include "worker_test_support.h"
 
@@ -22,6 +23,38 @@ class TstWorkerDrags : public QObject {
     Q_OBJECT
 
 private slots:
+    void movesTakeFactorisationsMadeBeside() {
+        // SessionOptions::backgroundFactorization on the annulus of size 10 (2.9e7 flops per
+        // factorisation): the first move factorises and starts the next factorisation on
+        // another thread; once that has finished, the next move's step takes it, and so on;
+        // the release factorises every time and ends developable, as without it.
+        const model::CompositeSurface start = model::makeExample("annulus", 10).surfaces[0];
+        const model::VertexId lifted = 6;
+        SessionOptions options = keepLengthsSessionOptions();
+        options.backgroundFactorization = true;
+        SolveSession session(start, {{lifted, false, start.position(lifted)}}, options);
+        for (int move = 1; move <= 4; ++move) {
+            QVERIFY(session.setHandleTarget(lifted, start.position(lifted) +
+                                                        model::Vec3(0, 0, 2.0 * move)));
+            const Summary summary = session.step(1);
+            QVERIFY2(summary.succeeded(), summary.briefReport().c_str());
+            const IterationStats& it = summary.iterations.front();
+            QCOMPARE(it.factorizationReused, move > 1);
+            QCOMPARE(it.backgroundFactor, move > 1);
+            session.waitForBackgroundFactorization();
+        }
+        session.settle();
+        const Summary after = session.step(10);
+        QVERIFY2(after.succeeded(), after.briefReport().c_str());
+        for (const IterationStats& it : after.iterations) {
+            QVERIFY(!it.factorizationReused);
+        }
+        QVERIFY2(after.finalMaxConstraintResidual < 1e-8,
+                 qPrintable(QString::number(after.finalMaxConstraintResidual)));
+        QVERIFY(std::abs(session.surface().position(lifted).z - start.position(lifted).z - 8.0) <
+                1e-6);
+    }
+
     void dragContinuesTheSession() {
         // Two requests of one drag give the same bits as one session stepped twice.
         const model::CompositeSurface surface = roughAnnulus(9);
