@@ -3,6 +3,7 @@
 #include "solver/core/analysis_cache.h"
 
 #include <chrono>
+#include <exception>
 
 namespace devsurf::solver {
 
@@ -38,9 +39,13 @@ bool BackgroundFactor::start(const NormalEquations& equations,
     m_done = false;
     const NormalEquations* structure = &equations;
     m_job = std::async(std::launch::async, [this, structure] {
-        structure->fillMatrix(m_jacobian.data(), m_weights, m_fixed, m_eps2, m_cholesky->values(),
-                              m_scratch);
-        return m_cholesky->factorize();
+        try {
+            structure->fillMatrix(m_jacobian.data(), m_weights, m_fixed, m_eps2,
+                                  m_cholesky->values(), m_scratch);
+            return m_cholesky->factorize();
+        } catch (const std::exception&) {
+            return false; // out of memory: the steps go on with the factorisation they have
+        }
     });
     return true;
 }

@@ -108,7 +108,7 @@ struct GuidedProjection::Impl {
     }
 
     // Starts a background factorisation at the current iterate (the equations evaluated there)
-    // with the weights of the next iteration, unless one is running.
+    // with the given weights, unless one is running.
     void startBackground(const Problem& problem, double eps1, double eps2, double proximity) {
         if (!analysis || background[0].running() || background[1].running()) {
             return;
