@@ -81,7 +81,8 @@ struct JobRequest {
     bool untimedPartway = false;
     // A drag's moves factorise on another thread beside their steps
     // (SessionOptions::backgroundFactorization). The solver worker asks for it (the front
-    // ends' drags); the command line and the tests step synchronously, reproducibly.
+    // ends' drags); the command line and the tests that run jobs themselves step
+    // synchronously, reproducibly.
     bool backgroundFactorization = false;
 };
 
