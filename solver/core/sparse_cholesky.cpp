@@ -54,48 +54,54 @@ void solveSupernodal(const cholmod_factor& factor, double* x, std::vector<double
         scratch.resize(factor.maxesize);
     }
     double* below = scratch.data();
-    for (int k = 0; k < nsuper; ++k) {
-        const int first = super[k];
-        const int columns = super[k + 1] - first;
+    // Supernode k: its columns first … first + columns − 1 (x's entries xs), stored as a
+    // height × columns block (column j at l(j)), the rows below its diagonal block r[0 … rest).
+    struct Supernode {
+        int first, columns, height, rest;
+        const int* r;
+        const double* block;
+        const double* l(int j) const { return block + static_cast<std::ptrdiff_t>(j) * height; }
+    };
+    auto supernode = [&](int k) {
+        const int columns = super[k + 1] - super[k];
         const int height = pi[k + 1] - pi[k];
-        const int rest = height - columns;
-        const int* r = rows + pi[k] + columns;
-        double* xs = x + first;
-        std::fill_n(below, rest, 0.0);
-        for (int j = 0; j < columns; ++j) {
-            const double* l = values + px[k] + static_cast<std::ptrdiff_t>(j) * height;
+        return Supernode{super[k],      columns, height, height - columns, rows + pi[k] + columns,
+                         values + px[k]};
+    };
+    for (int k = 0; k < nsuper; ++k) {
+        const Supernode s = supernode(k);
+        double* xs = x + s.first;
+        std::fill_n(below, s.rest, 0.0);
+        for (int j = 0; j < s.columns; ++j) {
+            const double* l = s.l(j);
             const double xj = xs[j] / l[j];
             xs[j] = xj;
-            for (int i = j + 1; i < columns; ++i) {
+            for (int i = j + 1; i < s.columns; ++i) {
                 xs[i] -= l[i] * xj;
             }
-            const double* lb = l + columns;
-            for (int i = 0; i < rest; ++i) {
+            const double* lb = l + s.columns;
+            for (int i = 0; i < s.rest; ++i) {
                 below[i] += lb[i] * xj;
             }
         }
-        for (int i = 0; i < rest; ++i) {
-            x[r[i]] -= below[i];
+        for (int i = 0; i < s.rest; ++i) {
+            x[s.r[i]] -= below[i];
         }
     }
     for (int k = nsuper - 1; k >= 0; --k) {
-        const int first = super[k];
-        const int columns = super[k + 1] - first;
-        const int height = pi[k + 1] - pi[k];
-        const int rest = height - columns;
-        const int* r = rows + pi[k] + columns;
-        double* xs = x + first;
-        for (int i = 0; i < rest; ++i) {
-            below[i] = x[r[i]];
+        const Supernode s = supernode(k);
+        double* xs = x + s.first;
+        for (int i = 0; i < s.rest; ++i) {
+            below[i] = x[s.r[i]];
         }
-        for (int j = columns - 1; j >= 0; --j) {
-            const double* l = values + px[k] + static_cast<std::ptrdiff_t>(j) * height;
+        for (int j = s.columns - 1; j >= 0; --j) {
+            const double* l = s.l(j);
             double sum = xs[j];
-            for (int i = j + 1; i < columns; ++i) {
+            for (int i = j + 1; i < s.columns; ++i) {
                 sum -= l[i] * xs[i];
             }
-            const double* lb = l + columns;
-            for (int i = 0; i < rest; ++i) {
+            const double* lb = l + s.columns;
+            for (int i = 0; i < s.rest; ++i) {
                 sum -= lb[i] * below[i];
             }
             xs[j] = sum / l[j];
