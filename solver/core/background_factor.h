@@ -43,7 +43,6 @@ public:
     const std::vector<double>& jacobian() const { return m_jacobian; }
     std::uint64_t fixedRevision() const { return m_fixedRevision; }
     long long stamp() const { return m_stamp; }
-    double eps2() const { return m_eps2; }
 
 private:
     std::unique_ptr<SparseCholesky> m_cholesky;

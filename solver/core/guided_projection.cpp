@@ -190,31 +190,27 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         };
         // A step with a fresh factorisation.
         auto factorisedStep = [&] {
-            if (step()) {
+            bool stepped = step();
+            if (!stepped && summary.status == Status::FactorizationFailed &&
+                stats.eps2 < options.eps2) {
+                // A smaller adaptive ε₂ can leave the matrix numerically singular (a degenerate
+                // strip, or directions no row constrains, as the in-plane motion of a flat
+                // design's points); repeat with the configured damping, and try no less than
+                // kEps2FloorFactor times this ε₂ from now on. Measured on the annulus example:
+                // Tools ▸ Solve factorised twice in each of its 10 iterations at ε₂ = 1e-6.
+                d.eps2Floor = std::min(
+                    options.eps2, stats.eps2 > 0.0 ? kEps2FloorFactor * stats.eps2 : options.eps2);
+                stats.repeated = true;
+                summary.status = Status::IterationLimit;
+                summary.detail.clear();
+                stats.eps2 = options.eps2;
+                stepped = step();
+            }
+            if (stepped) {
                 stats.factorFlops = d.cholesky.flops();
                 stats.factorNonZeros = d.cholesky.factorNonZeros();
-                return true;
             }
-            if (summary.status != Status::FactorizationFailed || !(stats.eps2 < options.eps2)) {
-                return false;
-            }
-            // A smaller adaptive ε₂ can leave the matrix numerically singular (a degenerate
-            // strip, or directions no row constrains, as the in-plane motion of a flat
-            // design's points); repeat with the configured damping, and try no less than
-            // kEps2FloorFactor times this ε₂ from now on. Measured on the annulus example:
-            // Tools ▸ Solve factorised twice in each of its 10 iterations at ε₂ = 1e-6.
-            d.eps2Floor = std::min(options.eps2,
-                                   stats.eps2 > 0.0 ? kEps2FloorFactor * stats.eps2 : options.eps2);
-            stats.repeated = true;
-            summary.status = Status::IterationLimit;
-            summary.detail.clear();
-            stats.eps2 = options.eps2;
-            if (!step()) {
-                return false;
-            }
-            stats.factorFlops = d.cholesky.flops();
-            stats.factorNonZeros = d.cholesky.factorNonZeros();
-            return true;
+            return stepped;
         };
         // x_{k+1} from the step (shrunk by the guards, projected) and evaluated there; false if
         // the step or a value there is not finite (summary says which).

@@ -198,8 +198,11 @@ bool NormalEquations::build(const Problem& problem, std::string* error) {
                 // A column repeated within a row: the cross product lands on the diagonal
                 // twice ((Jᵢ + Jⱼ)² = Jᵢ² + 2JᵢJⱼ + Jⱼ²).
                 if (other == c && i < j) {
-                    m_duplicates.push_back(
-                        {begin + i, begin + j, singleRows[static_cast<std::size_t>(u)], target});
+                    const int row = singleRows[static_cast<std::size_t>(u)];
+                    const auto term = static_cast<int>(
+                        std::upper_bound(m_termRowStart.begin(), m_termRowStart.end(), row) -
+                        m_termRowStart.begin() - 1);
+                    m_duplicates.push_back({begin + i, begin + j, term, target});
                 }
             }
         }
@@ -462,10 +465,8 @@ void NormalEquations::fillFrom(const double* jac, const double* residual,
         }
     }
     for (const DuplicatePair& d : m_duplicates) {
-        const auto term = std::upper_bound(m_termRowStart.begin(), m_termRowStart.end(), d.row) -
-                          m_termRowStart.begin() - 1;
         values[m_position[static_cast<std::size_t>(d.target)]] +=
-            termWeight2[static_cast<std::size_t>(term)] * jac[d.first] * jac[d.second];
+            termWeight2[static_cast<std::size_t>(d.term)] * jac[d.first] * jac[d.second];
     }
     const double e2 = eps2 * eps2;
     for (int v : m_diagonal) {

@@ -124,7 +124,7 @@ private:
     struct DuplicatePair {
         int first;  // Jacobian entry index
         int second; // Jacobian entry index
-        int row;
+        int term;   // of the row (its weight)
         int target; // normal-matrix nonzero in the original layout
     };
     // Rows [firstRow, rowEnd) of one term, assembled through a dense block over the union of

@@ -85,18 +85,12 @@ struct Options {
     // ... and only a factorisation of at least this many flops (cholmod_common.fl), so that
     // the choice depends on the structure alone.
     double reuseFactorizationMinimumFlops = 0.0;
-    // A step that reused a factorisation and raised the constraint merit Σ w²φ² above this
-    // multiple of max(its merit before, reusedStepMeritFloor) is undone and taken again with a
-    // fresh factorisation (IterationStats::reuseUndone); 0: never. A chord step far from where
-    // its factorisation was made can throw the iterate off by orders of magnitude. The floor
-    // lets a converged iterate's merit rise to small values, as every move of a drag does.
+    // A reused step whose constraint merit rises above this multiple of max(merit before,
+    // reusedStepMeritFloor) is undone and factorised afresh (0: never).
     double reusedStepMeritRise = 0.0;
     double reusedStepMeritFloor = 1e-2;
-    // While steps may reuse a factorisation: after each iteration the normal equations at the
-    // new iterate are filled and factorised on another thread, and the steps reuse the newest
-    // such factorisation once it is done (counting their reuses afresh), so that the iteration
-    // itself rarely factorises (GuidedProjection). Kept across solve() calls; a solve without
-    // it neither starts nor takes one.
+    // While reusing: each iteration's N is also factorised on another thread, and later steps
+    // reuse the newest such factorisation (BackgroundFactor).
     bool backgroundFactorization = false;
 
     // Stop early once the ε₁ phase is over and the largest constraint residual is at most
