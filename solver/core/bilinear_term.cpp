@@ -18,6 +18,7 @@ BilinearTerm::BilinearTerm(int dimension) : m_dimension(dimension) {
 
 int BilinearTerm::addRow(const PointCombination& left, const PointCombination& right,
                          double target) {
+    changed();
     m_points.insert(m_points.end(), left.begin(), left.end());
     m_rightStart.push_back(static_cast<int>(m_points.size()));
     m_points.insert(m_points.end(), right.begin(), right.end());
@@ -54,6 +55,7 @@ void BilinearTerm::sides(std::size_t r, const double* x, double* u, double* v) c
 }
 
 void BilinearTerm::scaleRowsAt(const double* reference) {
+    changed();
     m_scale.clear();
     if (!reference) {
         return;

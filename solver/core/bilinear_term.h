@@ -26,7 +26,10 @@ public:
     int dimension() const { return m_dimension; }
     // Returns the row index within this term.
     int addRow(const PointCombination& left, const PointCombination& right, double target = 0.0);
-    void setTarget(int row, double target) { m_target[static_cast<std::size_t>(row)] = target; }
+    void setTarget(int row, double target) {
+        m_target[static_cast<std::size_t>(row)] = target;
+        changed();
+    }
     // Sets every row's scale to 1/(|u| |v|) at `reference`, kept within a factor 100 of the
     // median scale (the median where a side vanishes there);
     // null resets the scales to 1. Values only: the pattern is unchanged.
@@ -38,6 +41,8 @@ public:
     double rowResidual(int row, const double* x) const;
 
     const char* typeName() const override { return "BilinearTerm"; }
+
+    bool tracksChanges() const override { return true; }
     int rowCount() const override { return static_cast<int>(m_target.size()); }
     void buildPattern(PatternBuilder& builder) const override;
     void evaluate(const double* x, double* residuals, double* jacobian) const override;

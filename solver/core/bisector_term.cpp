@@ -21,6 +21,7 @@ double norm3(const double* a) {
 
 int BisectorTerm::addRow(const PointCombination& n, const PointCombination& m,
                          const PointCombination& d) {
+    changed();
     m_points.insert(m_points.end(), n.begin(), n.end());
     m_mStart.push_back(static_cast<int>(m_points.size()));
     m_points.insert(m_points.end(), m.begin(), m.end());
@@ -64,6 +65,7 @@ void BisectorTerm::bisector(std::size_t r, const Sides& s, double* out) const {
 }
 
 void BisectorTerm::weighSidesAt(const double* x) {
+    changed();
     for (std::size_t r = 0; r < m_mStart.size(); ++r) {
         const Sides s = sides(r, x);
         const double n = norm3(s.n);
@@ -75,6 +77,7 @@ void BisectorTerm::weighSidesAt(const double* x) {
 }
 
 void BisectorTerm::scaleRowsAt(const double* reference) {
+    changed();
     m_scale.clear();
     if (!reference) {
         return;

@@ -34,6 +34,8 @@ public:
     double rowResidual(int row, const double* x) const;
 
     const char* typeName() const override { return "BisectorTerm"; }
+
+    bool tracksChanges() const override { return true; }
     int rowCount() const override { return static_cast<int>(m_rowStart.size()) - 1; }
     void buildPattern(PatternBuilder& builder) const override;
     void evaluate(const double* x, double* residuals, double* jacobian) const override;

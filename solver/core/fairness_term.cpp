@@ -3,6 +3,7 @@
 namespace devsurf::solver {
 
 void FairnessTerm::addSequence(const std::vector<int>& points, bool closed) {
+    changed();
     const std::size_t n = points.size();
     if (n < 3) {
         return;
@@ -19,6 +20,7 @@ void FairnessTerm::addSequence(const std::vector<int>& points, bool closed) {
 }
 
 void FairnessTerm::setReference(const double* reference) {
+    changed();
     m_reference.clear();
     if (!reference) {
         return;

@@ -26,6 +26,8 @@ public:
     void setReference(const double* reference);
 
     const char* typeName() const override { return "FairnessTerm"; }
+
+    bool tracksChanges() const override { return true; }
     int rowCount() const override { return static_cast<int>(m_triples.size()) * m_dimension; }
     void buildPattern(PatternBuilder& builder) const override;
     void evaluate(const double* x, double* residuals, double* jacobian) const override;

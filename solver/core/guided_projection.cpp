@@ -131,7 +131,9 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
     summary.normalMatrixNonZeros = d.equations.normalNonZeros();
 
     auto evaluationStart = Clock::now();
-    if (!d.equations.evaluate(problem, d.x.data())) {
+    // x is usually where the last solve() ended: only the terms changed since are evaluated
+    // again (a drag's move: its handles, the lengths it keeps). Not in the baseline.
+    if (!d.equations.evaluate(problem, d.x.data(), !experimental.baseline)) {
         summary.status = Status::NonFiniteValue;
         summary.detail = "a term produced a non-finite value at the initial state";
         summary.totalMs = millisecondsSince(totalStart);

@@ -3,6 +3,7 @@
 namespace devsurf::solver {
 
 int LinearTerm::addRow(const std::vector<Entry>& entries, double rhs) {
+    changed();
     m_entries.insert(m_entries.end(), entries.begin(), entries.end());
     m_rowStart.push_back(static_cast<int>(m_entries.size()));
     m_rhs.push_back(rhs);

@@ -21,10 +21,15 @@ public:
     // Returns the index of the first row.
     int addPointRelation(int dimension, const PointCombination& points,
                          const double* rhs = nullptr);
-    void setRhs(int row, double rhs) { m_rhs[static_cast<std::size_t>(row)] = rhs; }
+    void setRhs(int row, double rhs) {
+        m_rhs[static_cast<std::size_t>(row)] = rhs;
+        changed();
+    }
     double rhs(int row) const { return m_rhs[static_cast<std::size_t>(row)]; }
 
     const char* typeName() const override { return "LinearTerm"; }
+
+    bool tracksChanges() const override { return true; }
     int rowCount() const override { return static_cast<int>(m_rhs.size()); }
     void buildPattern(PatternBuilder& builder) const override;
     void evaluate(const double* x, double* residuals, double* jacobian) const override;

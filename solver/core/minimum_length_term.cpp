@@ -13,6 +13,7 @@ MinimumLengthTerm::MinimumLengthTerm(int dimension) : m_dimension(dimension) {
 }
 
 int MinimumLengthTerm::addRow(const PointCombination& combination, double minimum) {
+    changed();
     m_points.insert(m_points.end(), combination.begin(), combination.end());
     m_start.push_back(static_cast<int>(m_points.size()));
     m_minimum.push_back(minimum);

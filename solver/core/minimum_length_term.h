@@ -19,12 +19,17 @@ public:
 
     // Returns the row index within this term.
     int addRow(const PointCombination& combination, double minimum);
-    void setMinimum(int row, double minimum) { m_minimum[static_cast<std::size_t>(row)] = minimum; }
+    void setMinimum(int row, double minimum) {
+        m_minimum[static_cast<std::size_t>(row)] = minimum;
+        changed();
+    }
     double minimum(int row) const { return m_minimum[static_cast<std::size_t>(row)]; }
     // ‖Σ cᵢ pᵢ‖ of row `row` at x.
     double length(int row, const double* x) const;
 
     const char* typeName() const override { return "MinimumLengthTerm"; }
+
+    bool tracksChanges() const override { return true; }
     int rowCount() const override { return static_cast<int>(m_minimum.size()); }
     void buildPattern(PatternBuilder& builder) const override;
     void evaluate(const double* x, double* residuals, double* jacobian) const override;

@@ -32,6 +32,7 @@ double termWeight(const Problem& problem, int term, double eps1, double proximit
 
 bool NormalEquations::build(const Problem& problem, std::string* error) {
     m_built = false;
+    m_evaluated = false;
     const int n = problem.variableCount();
     const int termCount = problem.termCount();
     m_variables = n;
@@ -324,13 +325,33 @@ void NormalEquations::setLayout(const std::vector<int>& permutation, Triangle tr
     m_triangle = triangle;
 }
 
-bool NormalEquations::evaluate(const Problem& problem, const double* x) {
+bool NormalEquations::evaluate(const Problem& problem, const double* x, bool onlyChanged) {
     const int termCount = problem.termCount();
+    const auto n = static_cast<std::size_t>(problem.variableCount());
+    // Skipping a term keeps its Jacobian with the fixed columns zeroed as they were.
+    const bool partial = onlyChanged && m_evaluated && problem.fixedRevision() == m_fixedRevision &&
+                         m_evaluatedAt.size() == n && std::equal(x, x + n, m_evaluatedAt.begin());
+    m_evaluatedRevision.resize(static_cast<std::size_t>(termCount));
+    bool finite = true; // the terms skipped were finite
     for (int t = 0; t < termCount; ++t) {
-        problem.term(t).evaluate(x, m_residual.data() + m_termRowStart[t],
-                                 m_jacValue.data() + m_termJacStart[t]);
+        const Term& term = problem.term(t);
+        const auto k = static_cast<std::size_t>(t);
+        const std::uint64_t revision = term.tracksChanges() ? term.revision() : 0;
+        if (partial && revision != 0 && m_evaluatedRevision[k] == revision) {
+            continue;
+        }
+        double* residual = m_residual.data() + m_termRowStart[k];
+        double* jacobian = m_jacValue.data() + m_termJacStart[k];
+        term.evaluate(x, residual, jacobian);
+        finite = finite &&
+                 allFinite(residual,
+                           static_cast<std::size_t>(m_termRowStart[k + 1] - m_termRowStart[k])) &&
+                 allFinite(jacobian,
+                           static_cast<std::size_t>(m_termJacStart[k + 1] - m_termJacStart[k]));
+        m_evaluatedRevision[k] = revision;
     }
-    const bool finite = allFinite(m_residual) && allFinite(m_jacValue);
+    m_evaluated = finite;
+    m_evaluatedAt.assign(x, x + n);
     if (problem.fixedRevision() != m_fixedRevision) {
         // Only when the set of fixed variables changed (not inside the iteration loop).
         m_fixedJacobianEntries.clear();

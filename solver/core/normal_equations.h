@@ -46,7 +46,10 @@ public:
 
     // Evaluates all terms at x, zeroes the Jacobian columns of fixed variables and computes
     // the residual statistics. Returns false if a residual or Jacobian entry is not finite.
-    bool evaluate(const Problem& problem, const double* x);
+    // onlyChanged: if the last evaluation was of this x (bit for bit) with the same fixed
+    // variables, terms that track their changes (Term::tracksChanges) and have not changed
+    // since keep their values; the result is the same as evaluating all.
+    bool evaluate(const Problem& problem, const double* x, bool onlyChanged = false);
     double maxConstraintResidual() const { return m_maxConstraintResidual; }
     // The residual that caps ε₁: the larger of maxConstraintResidual() and the weighted
     // residuals of the energy families that drive it (TermFamily::drivesEpsilon1).
@@ -184,6 +187,11 @@ private:
     std::size_t m_groupRowSize = 0;   // a group's rows, dense over its union, at most
     std::size_t m_groupBlockSize = 0; // a block (its upper triangle is used)
     FillScratch m_scratch;            // fill()'s
+
+    // The last evaluation: its x and each term's revision (evaluate's onlyChanged).
+    std::vector<double> m_evaluatedAt;
+    std::vector<std::uint64_t> m_evaluatedRevision;
+    bool m_evaluated = false;
 
     // Fixed variables.
     std::uint64_t m_fixedRevision = ~std::uint64_t{0};

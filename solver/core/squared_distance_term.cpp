@@ -16,6 +16,7 @@ SquaredDistanceTerm::SquaredDistanceTerm(int leftDimension, int rightDimension)
 
 int SquaredDistanceTerm::addRow(const PointCombination& left, const PointCombination& right,
                                 double squaredDistance) {
+    changed();
     m_points.insert(m_points.end(), left.begin(), left.end());
     m_rightStart.push_back(static_cast<int>(m_points.size()));
     m_points.insert(m_points.end(), right.begin(), right.end());

@@ -22,15 +22,21 @@ public:
     }
     void setSquaredDistance(int row, double value) {
         m_squaredDistance[static_cast<std::size_t>(row)] = value;
+        changed();
     }
     // Multiplies row `row` (its residual and Jacobian) by `scale` (1 when added). With
     // 1 / (2 d) a row measures, to first order, the change of the length d.
-    void setRowScale(int row, double scale) { m_rowScale[static_cast<std::size_t>(row)] = scale; }
+    void setRowScale(int row, double scale) {
+        m_rowScale[static_cast<std::size_t>(row)] = scale;
+        changed();
+    }
 
     // ‖Σ cᵢ pᵢ‖ of the left side of row `row` at x.
     double leftLength(int row, const double* x) const;
 
     const char* typeName() const override { return "SquaredDistanceTerm"; }
+
+    bool tracksChanges() const override { return true; }
     int rowCount() const override { return static_cast<int>(m_squaredDistance.size()); }
     void buildPattern(PatternBuilder& builder) const override;
     void evaluate(const double* x, double* residuals, double* jacobian) const override;

@@ -3,12 +3,14 @@
 namespace devsurf::solver {
 
 int TargetTerm::addTarget(int column, double target) {
+    changed();
     m_column.push_back(column);
     m_target.push_back(target);
     return rowCount() - 1;
 }
 
 int TargetTerm::addPointTarget(int offset, int dimension, const double* target) {
+    changed();
     const int first = rowCount();
     for (int k = 0; k < dimension; ++k) {
         addTarget(offset + k, target[k]);

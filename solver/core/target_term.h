@@ -15,10 +15,15 @@ public:
     int addTarget(int column, double target);
     // Adds `dimension` rows for the point at `offset`; returns the first row index.
     int addPointTarget(int offset, int dimension, const double* target);
-    void setTarget(int row, double target) { m_target[static_cast<std::size_t>(row)] = target; }
+    void setTarget(int row, double target) {
+        m_target[static_cast<std::size_t>(row)] = target;
+        changed();
+    }
     double target(int row) const { return m_target[static_cast<std::size_t>(row)]; }
 
     const char* typeName() const override { return "TargetTerm"; }
+
+    bool tracksChanges() const override { return true; }
     int rowCount() const override { return static_cast<int>(m_target.size()); }
     void buildPattern(PatternBuilder& builder) const override;
     void evaluate(const double* x, double* residuals, double* jacobian) const override;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <atomic>
+#include <cstdint>
 #include <vector>
 
 namespace devsurf::solver {
@@ -43,7 +45,7 @@ private:
 // energies, and their weight, is decided by the term's family in the Problem.
 class Term {
 public:
-    Term() = default;
+    Term() : m_revision(nextRevision()) {}
     Term(const Term&) = delete;
     Term& operator=(const Term&) = delete;
     virtual ~Term() = default;
@@ -73,6 +75,31 @@ public:
         (void)keep;
         return 1.0;
     }
+
+    // True if the term's values at a given x change only through its own setters, each of
+    // which calls changed(): NormalEquations::evaluate(…, onlyChanged) then skips it while
+    // x and revision() stay. False (the default): evaluated every time.
+    virtual bool tracksChanges() const { return false; }
+    // Unique across all terms of the process: a new term never shows an old term's revision.
+    // Not thread-safe (read where the term is evaluated).
+    std::uint64_t revision() const {
+        if (m_changed) {
+            m_revision = nextRevision();
+            m_changed = false;
+        }
+        return m_revision;
+    }
+
+protected:
+    void changed() { m_changed = true; }
+
+private:
+    static std::uint64_t nextRevision() {
+        static std::atomic<std::uint64_t> counter{0};
+        return ++counter;
+    }
+    mutable std::uint64_t m_revision;
+    mutable bool m_changed = false;
 };
 
 } // namespace devsurf::solver

@@ -135,6 +135,37 @@ double relativeDifference(const Eigen::SparseMatrix<double>& a,
     return Eigen::SparseMatrix<double>(a - b).norm() / std::max(b.norm(), 1e-300);
 }
 
+// One row x_c − t whose evaluations are counted; its target changes through setTarget (tracked)
+// or, untracked, through the pointer it reads.
+class CountedTarget : public Term {
+public:
+    CountedTarget(int column, const double* target, bool tracks)
+        : m_column(column), m_target(target), m_tracks(tracks) {}
+    void setTarget(const double* target) {
+        m_target = target;
+        changed();
+    }
+    int evaluations() const { return m_evaluations; }
+    const char* typeName() const override { return "CountedTarget"; }
+    int rowCount() const override { return 1; }
+    void buildPattern(PatternBuilder& builder) const override {
+        builder.beginRow();
+        builder.addColumn(m_column);
+    }
+    void evaluate(const double* x, double* residuals, double* jacobian) const override {
+        ++m_evaluations;
+        residuals[0] = x[m_column] - *m_target;
+        jacobian[0] = 1.0;
+    }
+    bool tracksChanges() const override { return m_tracks; }
+
+private:
+    int m_column;
+    const double* m_target;
+    bool m_tracks;
+    mutable int m_evaluations = 0;
+};
+
 } // namespace
 
 class TstNormalEquations : public QObject {
@@ -154,6 +185,54 @@ private slots:
         extra->addTarget(0, 1.0);
         p.add(p.findFamily("target"), std::move(extra));
         QVERIFY(!equations.matches(p));
+    }
+
+    void onlyChangedTermsAreEvaluatedAgain() {
+        // Evaluating only what changed gives, bit for bit, what evaluating all gives.
+        Problem p = makeMixedProblem(3, 30);
+        const double one = 1.0;
+        const double two = 2.0;
+        double external = 0.5;
+        auto* tracked =
+            p.add(p.findFamily("target"), std::make_unique<CountedTarget>(0, &one, true));
+        auto* untracked =
+            p.add(p.findFamily("target"), std::make_unique<CountedTarget>(1, &external, false));
+        NormalEquations equations;
+        QVERIFY(equations.build(p, nullptr));
+        std::mt19937 rng(5);
+        const std::vector<double> x = randomVector(rng, equations.variableCount(), 2.0);
+        auto sameAsAll = [&] {
+            NormalEquations all;
+            return all.build(p, nullptr) && all.evaluate(p, x.data()) &&
+                   all.residuals() == equations.residuals() &&
+                   all.jacobianValues() == equations.jacobianValues() &&
+                   all.constraintMerit() == equations.constraintMerit() &&
+                   all.energy() == equations.energy();
+        };
+        QVERIFY(equations.evaluate(p, x.data(), true));
+        QCOMPARE(tracked->evaluations(), 1);
+        // Nothing changed: the tracked term is skipped, the untracked one evaluated again.
+        QVERIFY(equations.evaluate(p, x.data(), true));
+        QCOMPARE(tracked->evaluations(), 1);
+        QCOMPARE(untracked->evaluations(), 2);
+        // A tracked change and an untracked one: both are seen.
+        tracked->setTarget(&two);
+        external = -0.25;
+        QVERIFY(equations.evaluate(p, x.data(), true));
+        QCOMPARE(tracked->evaluations(), 2);
+        QVERIFY(sameAsAll()); // evaluates it too
+        // A new x: everything again.
+        std::vector<double> moved = x;
+        moved[7] += 1e-12;
+        QVERIFY(equations.evaluate(p, moved.data(), true));
+        QCOMPARE(tracked->evaluations(), 4);
+        QVERIFY(equations.evaluate(p, x.data(), true));
+        QVERIFY(sameAsAll());
+        // Another fixed variable: everything again, its column zeroed in every term.
+        p.setFixed(5);
+        QVERIFY(equations.evaluate(p, x.data(), true));
+        QCOMPARE(tracked->evaluations(), 7);
+        QVERIFY(sameAsAll());
     }
 
     void invalidColumnIsReported() {
