@@ -138,6 +138,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
     model::Project project;
     project.surfaces = {surface};
     document.resetProject(project);
+    const model::CompositeSurface press = document.surface(0);
 
     solver::SolverWorker worker;
     QEventLoop loop;
@@ -167,7 +168,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
                                                          : solver::DragLengths::Stretch;
         r.job.settle = settle;
         r.job.prepare = prepare;
-        r.job.surfaces = {document.surface(0)};
+        r.job.surfaces = {press};
         if (place) {
             r.job.pulledSheet[0] = {{dragged, *place + slide * t}};
         } else {
@@ -188,14 +189,18 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
                 loop.quit();
                 return;
             }
-            const QString refused = pushEdit(
-                document, document::ApplySurfaceCommand::createValidated(
-                              document, 0, outcome.surfaces.front(), QStringLiteral("Drag vertex"),
-                              document::Change::Geometry, static_cast<int>(kDragKey)));
-            if (!refused.isEmpty()) {
-                row.error = refused.toStdString();
-                loop.quit();
-                return;
+            // As the application's Drag tool: a move is shown outside the undo history, the
+            // release becomes one undo step from the press.
+            document.previewSurface(0, outcome.surfaces.front());
+            if (result.revision == release) {
+                const QString refused =
+                    pushEdit(document, document::ApplySurfaceCommand::createShown(
+                                           document, 0, press, QStringLiteral("Drag vertex")));
+                if (!refused.isEmpty()) {
+                    row.error = refused.toStdString();
+                    loop.quit();
+                    return;
+                }
             }
             const double now = clock.nsecsElapsed() / 1e6;
             const solver::SurfaceAssessment& assessment = outcome.assessments.front();
