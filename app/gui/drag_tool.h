@@ -238,7 +238,7 @@ private:
     Axis m_heldAxis = Axis::Free;
     Axis m_chosenAxis = Axis::Free;
     int m_surface = 0;
-    std::vector<model::CompositeSurface> m_pressSurfaces;
+    solver::SharedSurfaces m_pressSurfaces; // sent with every move without a copy
     std::vector<model::Vec3> m_targets;
     bool m_moved = false;
     quint64 m_sessionKey = 0;

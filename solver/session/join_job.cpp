@@ -161,14 +161,14 @@ JobOutcome runJoinJob(SolveJob& job, const JobRequest& request, const std::atomi
     const auto unchanged = [&] {
         JobOutcome outcome;
         outcome.ok = true;
-        outcome.surfaces = request.surfaces;
+        outcome.surfaces = request.surfaces.all();
         outcome.assessments.resize(request.surfaces.size());
         return finish(std::move(outcome));
     };
     if (request.surfaces.size() < 2) {
         return unchanged();
     }
-    const JoinPlan plan = planJoin(request.surfaces);
+    const JoinPlan plan = planJoin(request.surfaces.all());
     if (plan.pairs.empty()) {
         return unchanged();
     }

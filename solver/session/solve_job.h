@@ -8,6 +8,7 @@
 #include "solver/formulation/surface_formulation.h"
 #include "solver/quality/crease_quality.h"
 #include "solver/session/drag_lengths.h"
+#include "solver/session/shared_surfaces.h"
 
 #include <atomic>
 #include <cstdint>
@@ -51,7 +52,7 @@ struct JobRequest {
     // prepared). The drag's first move with the same id and pulled points continues them.
     // Only for drags; it overrides `settle`, and other kinds ignore it.
     bool prepare = false;
-    std::vector<model::CompositeSurface> surfaces;   // every surface of the project (pins inside)
+    SharedSurfaces surfaces;                         // every surface of the project (pins inside)
     std::map<int, std::vector<VertexHandle>> pulled; // per surface index
     std::map<int, std::vector<ControlPointHandle>> pulledControlPoints; // a dragged crease
     // Vertices' places in a held sheet pulled in the development view (a VertexDrag of

@@ -139,6 +139,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
     project.surfaces = {surface};
     document.resetProject(project);
     const model::CompositeSurface press = document.surface(0);
+    const solver::SharedSurfaces pressSurfaces{press};
 
     solver::SolverWorker worker;
     QEventLoop loop;
@@ -168,7 +169,7 @@ DragBenchRow runDrag(const std::string& name, model::CompositeSurface surface,
                                                          : solver::DragLengths::Stretch;
         r.job.settle = settle;
         r.job.prepare = prepare;
-        r.job.surfaces = {press};
+        r.job.surfaces = pressSurfaces; // shared, as the Drag tool sends it
         if (place) {
             r.job.pulledSheet[0] = {{dragged, *place + slide * t}};
         } else {

@@ -445,7 +445,7 @@ private slots:
         QVERIFY(outcome.surfaces[0] == request.surfaces[0]);
         QVERIFY(outcome.surfaces[1] == request.surfaces[1]);
         // One surface: nothing to join either.
-        request.surfaces.resize(1);
+        request.surfaces.mutableSurfaces().resize(1);
         const solver::JobOutcome single = job.run(request);
         QVERIFY(single.ok && single.join && single.join->separations.empty());
         QCOMPARE(single.surfaces.size(), std::size_t(1));
