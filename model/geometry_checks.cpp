@@ -49,22 +49,24 @@ bool allUsable(const std::vector<Vec3>& points) {
                        [](const Vec3& p) { return p.isFinite() && !isHuge(p); });
 }
 
-// The face's boundary as a closed polygon: its vertices, with the interior control points of
-// its S-sides in between (a curve lies in the convex hull of its control points).
-std::vector<Vec3> boundaryPolygon(const CompositeSurface& surface, FaceId face) {
-    const std::vector<VertexId>& loop = surface.faceLoop(face);
-    std::vector<Vec3> polygon;
+// The face's boundary as a closed polygon: its corners, with the interior control points of
+// its S-sides in between (a curve lies in the convex hull of its control points). corners[i]
+// and sides[i] are the face loop's vertex i and its side to vertex i + 1.
+void boundaryPolygon(const std::vector<VertexId>& loop, const std::vector<const Vec3*>& corners,
+                     const std::vector<const EdgeRecord*>& sides, std::vector<Vec3>& polygon) {
+    polygon.clear();
     for (std::size_t i = 0; i < loop.size(); ++i) {
-        const VertexId a = loop[i];
-        const VertexId b = loop[(i + 1) % loop.size()];
-        polygon.push_back(surface.position(a));
-        const EdgeId e = surface.edgeBetween(a, b);
-        if (e != kInvalidId && usableSpline(surface.edge(e))) {
-            const std::vector<Vec3> points = surface.controlPointsFrom(a, b);
-            polygon.insert(polygon.end(), points.begin() + 1, points.end() - 1);
+        polygon.push_back(*corners[i]);
+        const EdgeRecord& side = *sides[i];
+        if (usableSpline(side)) {
+            const std::vector<Vec3>& points = side.controlPoints;
+            if (side.from == loop[i]) {
+                polygon.insert(polygon.end(), points.begin() + 1, points.end() - 1);
+            } else {
+                polygon.insert(polygon.end(), points.rbegin() + 1, points.rend() - 1);
+            }
         }
     }
-    return polygon;
 }
 
 // Triangle fan from the centroid: zero exactly when every boundary point lies on one line
@@ -180,11 +182,13 @@ std::vector<Problem> degenerateGeometryProblems(const CompositeSurface& surface)
             }
             continue;
         }
+        const auto from = surface.vertices().find(record.from);
+        const auto to = surface.vertices().find(record.to);
         if (badVertices.count(record.from) != 0 || badVertices.count(record.to) != 0 ||
-            !surface.hasVertex(record.from) || !surface.hasVertex(record.to)) {
+            from == surface.vertices().end() || to == surface.vertices().end()) {
             continue;
         }
-        if (distance(surface.position(record.from), surface.position(record.to)) <= tolerance) {
+        if (distance(from->second, to->second) <= tolerance) {
             Problem problem = edgeProblem(ProblemCode::RulingZeroLength, id);
             problem.faces = faces();
             problems.push_back(problem);
@@ -192,27 +196,40 @@ std::vector<Problem> degenerateGeometryProblems(const CompositeSurface& surface)
         }
     }
 
+    // Each face's corners and sides are looked up once: the check runs after every solver step
+    // (SolveSession::step), where the lookups cost more than the geometry.
+    std::vector<const Vec3*> corners;
+    std::vector<const EdgeRecord*> sides;
+    std::vector<Vec3> polygon;
     for (const auto& [face, loop] : surface.faces()) {
+        const std::size_t count = loop.size();
+        corners.assign(count, nullptr);
+        sides.assign(count, nullptr);
         bool usable = true;
-        for (std::size_t i = 0; i < loop.size() && usable; ++i) {
+        for (std::size_t i = 0; i < count && usable; ++i) {
             const VertexId a = loop[i];
-            const VertexId b = loop[(i + 1) % loop.size()];
-            const EdgeId e = surface.edgeBetween(a, b);
-            usable = badVertices.count(a) == 0 && surface.hasVertex(a) && e != kInvalidId &&
-                     badEdges.count(e) == 0 &&
-                     (!surface.edge(e).isSpline() || usableSpline(surface.edge(e)));
+            const auto vertex = surface.vertices().find(a);
+            const EdgeId e = surface.edgeBetween(a, loop[(i + 1) % count]);
+            usable = badVertices.count(a) == 0 && vertex != surface.vertices().end() &&
+                     e != kInvalidId && badEdges.count(e) == 0;
+            if (usable) {
+                const EdgeRecord& side = surface.edge(e);
+                usable = !side.isSpline() || usableSpline(side);
+                corners[i] = &vertex->second;
+                sides[i] = &side;
+            }
         }
         if (!usable) {
             continue;
         }
         // Coincident corners not already reported as a zero-length side.
-        for (std::size_t i = 0; i < loop.size(); ++i) {
-            for (std::size_t j = i + 1; j < loop.size(); ++j) {
+        for (std::size_t i = 0; i < count; ++i) {
+            for (std::size_t j = i + 1; j < count; ++j) {
                 const auto pair = std::minmax(loop[i], loop[j]);
                 if (zeroEdges.count(pair) != 0) {
                     continue;
                 }
-                if (distance(surface.position(loop[i]), surface.position(loop[j])) <= tolerance) {
+                if (distance(*corners[i], *corners[j]) <= tolerance) {
                     Problem problem = faceProblem(ProblemCode::CoincidentVertices, face);
                     problem.vertex = loop[i];
                     problem.otherVertex = loop[j];
@@ -221,7 +238,8 @@ std::vector<Problem> degenerateGeometryProblems(const CompositeSurface& surface)
             }
         }
         double perimeter = 0.0;
-        const double area = fanArea(boundaryPolygon(surface, face), &perimeter);
+        boundaryPolygon(loop, corners, sides, polygon);
+        const double area = fanArea(polygon, &perimeter);
         if (area <= tolerance * std::max(perimeter, tolerance)) {
             problems.push_back(faceProblem(ProblemCode::ZeroArea, face));
         }
