@@ -367,6 +367,8 @@ DragBenchReport runDragBench(const DragBenchOptions& options) {
     const std::vector<BenchModel> largest =
         wanted("large-annulus") ? benchModels({"large-annulus"}) : std::vector<BenchModel>{};
     if (!largest.empty()) {
+        log("drag: " + largest.front().name);
+        report.drags.push_back(runDrag(largest.front().name, largest.front().surface, options));
         log("drag: solve stall on " + largest.front().name);
         report.solve = runSolve(largest.front().name, largest.front().surface, options);
     }
