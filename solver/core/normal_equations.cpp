@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <mutex>
 #include <numeric>
 
@@ -330,7 +331,8 @@ bool NormalEquations::evaluate(const Problem& problem, const double* x, bool onl
     const auto n = static_cast<std::size_t>(problem.variableCount());
     // Skipping a term keeps its Jacobian with the fixed columns zeroed as they were.
     const bool partial = onlyChanged && m_evaluated && problem.fixedRevision() == m_fixedRevision &&
-                         m_evaluatedAt.size() == n && std::equal(x, x + n, m_evaluatedAt.begin());
+                         m_evaluatedAt.size() == n &&
+                         std::memcmp(x, m_evaluatedAt.data(), n * sizeof(double)) == 0;
     m_evaluatedRevision.resize(static_cast<std::size_t>(termCount));
     bool finite = true; // the terms skipped were finite
     for (int t = 0; t < termCount; ++t) {

@@ -13,7 +13,7 @@ namespace devsurf::solver {
 // The surfaces a job starts from (JobRequest::surfaces), held read-only and shared: copying a
 // request copies a pointer. A drag sends the same press with every move, and a deep copy of a
 // large design took about 1 ms of the GUI thread per move (docs/tuning.md). Changing it
-// (mutable(), push_back) copies the surfaces first if another holder shares them.
+// (mutableSurfaces(), push_back) copies the surfaces first if another holder shares them.
 class SharedSurfaces {
 public:
     using const_iterator = std::vector<model::CompositeSurface>::const_iterator;
