@@ -158,6 +158,23 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         summary.iterations.reserve(static_cast<std::size_t>(std::max(0, options.maxIterations)));
     }
 
+    if (options.maxIterations == 0 && options.factorizeAhead && options.reuseFactorization > 0 &&
+        !experimental.baseline) {
+        IterationStats stats;
+        const double assumed = std::max(d.equations.maxConstraintResidual(), options.eps2);
+        stats.eps1 = epsilon1(options, options.scheduleOffset); // its top, as ε₂'s
+        stats.eps2 = epsilon2(options, options.scheduleOffset, assumed);
+        if (stats.eps2 < d.eps2Floor) {
+            stats.eps2 = std::min(d.eps2Floor, options.eps2); // as in the iterations below
+        }
+        stats.proximity = proximityWeight(options, assumed);
+        if (!d.factorizeForReuse(problem, stats, summary)) {
+            d.factorReusable = false;
+            summary.status = Status::IterationLimit; // the first step factorises again
+            summary.detail.clear();
+        }
+        summary.analysisMs += stats.assemblyMs + stats.factorizationMs;
+    }
     double& eps2Boost = d.eps2Boost;
     for (int iteration = 0; iteration < options.maxIterations; ++iteration) {
         if (options.cancel && options.cancel->load()) {

@@ -185,8 +185,8 @@ struct GuidedProjection::Impl {
     bool baselineStep(const Problem& problem, double eps1, const Options& options,
                       IterationStats& stats, Summary& summary);
 
-    bool cachedStep(const Problem& problem, double eps1, IterationStats& stats, Summary& summary,
-                    bool keepForReuse) {
+    // Fills and factorises N at the evaluated iterate with stats' weights (rhs filled too).
+    bool factorize(const Problem& problem, double eps1, IterationStats& stats, Summary& summary) {
         auto start = Clock::now();
         equations.fill(problem, eps1, stats.eps2, cholesky.values(), rhs.data(), stats.proximity);
         stats.assemblyMs += millisecondsSince(start);
@@ -198,13 +198,35 @@ struct GuidedProjection::Impl {
             return false;
         }
         stats.factorizationMs = millisecondsSince(start);
-        if (keepForReuse) {
-            factorJacobian = equations.jacobianValues();
-            factorFixedRevision = problem.fixedRevision();
-            factorReusable = true;
-            reusesInARow = 0;
-            chordSlot = -1;
-            factorIterate = iterate;
+        return true;
+    }
+
+    // The factorisation just made becomes the one the chord steps reuse.
+    void keepForReuse(const Problem& problem) {
+        factorJacobian = equations.jacobianValues();
+        factorFixedRevision = problem.fixedRevision();
+        factorReusable = true;
+        reusesInARow = 0;
+        chordSlot = -1;
+        factorIterate = iterate;
+    }
+
+    // Options::factorizeAhead: a factorisation for the next steps, no step.
+    bool factorizeForReuse(const Problem& problem, IterationStats& stats, Summary& summary) {
+        if (!factorize(problem, stats.eps1, stats, summary)) {
+            return false;
+        }
+        keepForReuse(problem);
+        return true;
+    }
+
+    bool cachedStep(const Problem& problem, double eps1, IterationStats& stats, Summary& summary,
+                    bool reuseLater) {
+        if (!factorize(problem, eps1, stats, summary)) {
+            return false;
+        }
+        if (reuseLater) {
+            keepForReuse(problem);
         }
         return solveForStep(cholesky, false, stats, summary);
     }

@@ -302,14 +302,7 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
     // the diameter; designs without planar faces or cones are unchanged to the last digit.
     options.project = [this](double* x) { m_formulation->normaliseUnitNormals(x); };
     if (m_dragging && !m_settling) {
-        // A drag's move is step(1). Several iterations at once while something is pulled
-        // (Tools ▸ Move or Rotate Vertices) are a solve towards a motion: they reuse every
-        // other factorisation, as before kDragFactorizationReuse grew; more chord steps left a
-        // held annulus's 3° turn short of its sheet (refused).
-        options.reuseFactorization = n == 1 ? kDragFactorizationReuse : 1;
-        options.reuseFactorizationMinimumFlops = kDragFactorizationReuseFlops;
-        options.reusedStepMeritRise = kDragReusedStepMeritRise;
-        options.backgroundFactorization = n == 1 && m_options.backgroundFactorization;
+        reuseFactorizations(options, n);
     }
     std::vector<double> before; // the state before the iteration running
     m_refused.reset();
@@ -477,11 +470,28 @@ bool SolveSession::settled(double residual) {
     return still;
 }
 
+void SolveSession::reuseFactorizations(Options& options, int n) const {
+    // A drag's move is step(1). Several iterations at once while something is pulled
+    // (Tools ▸ Move or Rotate Vertices) are a solve towards a motion: they reuse every
+    // other factorisation, as before kDragFactorizationReuse grew; more chord steps left a
+    // held annulus's 3° turn short of its sheet (refused).
+    options.reuseFactorization = n == 1 ? kDragFactorizationReuse : 1;
+    options.reuseFactorizationMinimumFlops = kDragFactorizationReuseFlops;
+    options.reusedStepMeritRise = kDragReusedStepMeritRise;
+    options.backgroundFactorization = n == 1 && m_options.backgroundFactorization;
+}
+
 Summary SolveSession::prepare() {
     Options options = m_options.solver;
     options.maxIterations = 0;
     options.cancel = nullptr;
     options.progress = nullptr;
+    if (m_dragging && !m_settling) {
+        // The first move's factorisation too, so that it takes a chord step (docs/tuning.md,
+        // "The first move's factorisation made while the pointer rests").
+        reuseFactorizations(options, 1);
+        options.factorizeAhead = true;
+    }
     return m_projection.solve(m_formulation->problem(), m_x, options);
 }
 

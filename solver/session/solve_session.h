@@ -218,8 +218,9 @@ public:
     // the last good state.
     Summary step(int n, const std::atomic<bool>* cancel = nullptr,
                  const std::function<void(const IterationStats&)>& perIteration = {});
-    // Builds what the first step() would build (structure, ordering, symbolic analysis) and
-    // runs no iteration, changing nothing else: a drag prepared before its press.
+    // Builds what the first step() would build (structure, ordering, symbolic analysis, and in
+    // a drag the first move's factorisation) and runs no iteration, changing nothing else: a
+    // drag prepared before its press.
     Summary prepare();
     // GuidedProjection::waitForBackgroundFactorization (SessionOptions::backgroundFactorization).
     void waitForBackgroundFactorization() { m_projection.waitForBackgroundFactorization(); }
@@ -252,6 +253,9 @@ public:
     BestIterate returnToBestIterate(Summary* summary = nullptr);
 
 private:
+    // The factorisation reuse of a drag's step(n) while it moves (kDragFactorizationReuse).
+    void reuseFactorizations(Options& options, int n) const;
+
     SessionOptions m_options;
     model::CompositeSurface m_surface;
     std::unique_ptr<SurfaceFormulation> m_formulation;

@@ -6,6 +6,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -116,6 +117,45 @@ private slots:
         for (std::size_t i = 0; i < summary.iterations.size(); ++i) {
             QCOMPARE(summary.iterations[i].factorizationReused, i % 2 == 1);
             QVERIFY(!summary.iterations[i].reuseUndone);
+        }
+    }
+
+    void aFactorisationMadeAheadServesTheFirstStep() {
+        // Options::factorizeAhead with no iteration (a drag prepared while the pointer rests):
+        // x stays, and the next solve()'s first step is a chord step with that factorisation.
+        // From a start whose residual is above ε₂'s top the weights are the step's own, so the
+        // step is the one a fresh factorisation takes.
+        auto circle = makeCircleProblem(24, 3, 0.2);
+        Options options;
+        options.maxIterations = 1;
+        options.reuseFactorization = 2;
+        std::vector<double> fresh = circle->start;
+        GuidedProjection plain;
+        const Summary first = plain.solve(circle->problem, fresh, options);
+        QVERIFY2(first.succeeded(), first.briefReport().c_str());
+        QVERIFY(!first.iterations.front().factorizationReused);
+        QVERIFY(first.initialMaxConstraintResidual > options.eps2);
+
+        for (const bool ahead : {false, true}) {
+            std::vector<double> x = circle->start;
+            GuidedProjection solver;
+            Options prepare = options;
+            prepare.maxIterations = 0;
+            prepare.factorizeAhead = ahead;
+            const Summary prepared = solver.solve(circle->problem, x, prepare);
+            QVERIFY2(prepared.succeeded(), prepared.briefReport().c_str());
+            QVERIFY(prepared.iterations.empty());
+            QVERIFY(x == circle->start);
+            const Summary step = solver.solve(circle->problem, x, options);
+            QVERIFY2(step.succeeded(), step.briefReport().c_str());
+            const IterationStats& it = step.iterations.front();
+            QCOMPARE(it.factorizationReused, ahead);
+            QCOMPARE(it.factorizationMs > 0.0, !ahead);
+            double largest = 0.0;
+            for (std::size_t i = 0; i < x.size(); ++i) {
+                largest = std::max(largest, std::abs(x[i] - fresh[i]));
+            }
+            QVERIFY2(largest < 1e-12, qPrintable(QString::number(largest)));
         }
     }
 

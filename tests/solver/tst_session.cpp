@@ -46,7 +46,8 @@ private slots:
         // JobRequest::prepare builds a drag's session and the solver's analysis without an
         // iteration; the drag that continues it gives, move by move and after the release,
         // the surfaces of the same drag started cold, and its first move finds the structure
-        // built.
+        // built. (On a model this small no move reuses a factorisation; on a large one the
+        // first move takes a chord step with the one made ahead: TstFactorReuse.)
         model::CompositeSurface annulus = model::makeExample("annulus", 4).surfaces.front();
         annulus.setPinned(0, true);
         constexpr model::VertexId kDragged = 1;
