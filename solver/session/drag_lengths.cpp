@@ -90,9 +90,7 @@ ReplayedDrag replayDrag(const model::CompositeSurface& start, const std::vector<
             return replay;
         }
     }
-    // A settling that stays far off gives up, as the release it replaces does (docs/tuning.md,
-    // "A hopeless replay stops").
-    session.settle(true);
+    session.settle();
     replay.settling = session.step(after, cancel, perIteration);
     replay.iterations += replay.settling.iterationsCompleted;
     replay.stopped = replay.settling.status == Status::StoppedBeforeDegenerate;

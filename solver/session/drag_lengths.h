@@ -75,10 +75,9 @@ struct ReplayedDrag {
 };
 
 // Replays a drag on `start` (the surface at the press) with `options`: a fresh session pulled
-// along `moves` (replayedMoves of them, one iteration each), then settle(true) and up to
-// `after` iterations (fewer where it gives up, SolveSession::gaveUp). Throws std::invalid_argument
-// as SolveSession does. `cancel` is checked between iterations (the settling summary is then
-// Cancelled); `perIteration` is called after each.
+// along `moves` (replayedMoves of them, one iteration each), then settle() and `after`
+// iterations. Throws std::invalid_argument as SolveSession does. `cancel` is checked between
+// iterations (the settling summary is then Cancelled); `perIteration` is called after each.
 ReplayedDrag replayDrag(const model::CompositeSurface& start, const std::vector<DragMove>& moves,
                         const SessionOptions& options, int after,
                         const std::atomic<bool>* cancel = nullptr,
