@@ -119,10 +119,23 @@ struct GuidedProjection::Impl {
                                problem.fixedVariables(), problem.fixedRevision(), eps2, iterate);
     }
 
+    // Whether a factorisation of a later iterate than the chord steps' is being made beside.
+    bool factorizingBeside() const {
+        for (const BackgroundFactor& factor : background) {
+            if (factor.running() && factor.stamp() > factorIterate) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     bool mayReuseFactorization(const Problem& problem, const Options& options) const {
+        int limit = options.reuseFactorization;
+        if (options.backgroundFactorization && factorizingBeside()) {
+            limit += options.reuseWhileFactorizingBeside;
+        }
         return options.reuseFactorization > 0 && !experimental.baseline && factorReusable &&
-               reusesInARow < options.reuseFactorization &&
-               factorFixedRevision == problem.fixedRevision() &&
+               reusesInARow < limit && factorFixedRevision == problem.fixedRevision() &&
                cholesky.flops() >= options.reuseFactorizationMinimumFlops;
     }
 

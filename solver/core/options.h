@@ -62,6 +62,8 @@ struct Options {
     double reusedStepMeritRise = 0.0;
     double reusedStepMeritFloor = 1e-2;
     bool backgroundFactorization = false; // the next factorisation made beside (BackgroundFactor)
+    // More reuses in a row while a factorisation of a later iterate is being made beside.
+    int reuseWhileFactorizingBeside = 0;
     // With maxIterations 0 and reuseFactorization: N factorised at x for the chord steps of the
     // next solve() calls, with the weights of a step whose residual is at least ε₂'s top (a
     // drag's move). A drag prepared while the pointer rests so takes its first move as a chord

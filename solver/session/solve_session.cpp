@@ -479,6 +479,7 @@ void SolveSession::reuseFactorizations(Options& options, int n) const {
     options.reuseFactorizationMinimumFlops = kDragFactorizationReuseFlops;
     options.reusedStepMeritRise = kDragReusedStepMeritRise;
     options.backgroundFactorization = n == 1 && m_options.backgroundFactorization;
+    options.reuseWhileFactorizingBeside = kDragReuseWhileFactorizingBeside;
 }
 
 Summary SolveSession::prepare() {

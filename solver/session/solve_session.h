@@ -73,6 +73,9 @@ constexpr int iterationsAfterDrag(bool keepLengths, bool holdsSheet = false) {
 // move's factorisation, and a step that such a reuse throws off is undone and factorised afresh
 // (Options::reusedStepMeritRise); the iterations after the release factorise every time.
 constexpr int kDragFactorizationReuse = 5;
+// And up to five more while the next factorisation is being made beside, instead of making one
+// in the worker (docs/tuning.md, "More chord steps while the next factorisation is made").
+constexpr int kDragReuseWhileFactorizingBeside = 5;
 constexpr double kDragFactorizationReuseFlops = 1e7;
 constexpr double kDragReusedStepMeritRise = 100.0;
 

@@ -170,7 +170,9 @@ private slots:
             const Summary s = solver.solve(circle->problem, x, options);
             return s.succeeded() && s.iterations.front().factorizationReused;
         };
-        // Across solve() calls (one iteration each, as a drag runs them), at most twice in a row.
+        // Across solve() calls (one iteration each, as a drag runs them), at most twice in a row;
+        // more only while a later factorisation is being made beside, and none is here.
+        options.reuseWhileFactorizingBeside = 5;
         QVERIFY(!reused());
         QVERIFY(reused());
         QVERIFY(reused());
