@@ -69,7 +69,9 @@ struct Summary {
     bool structureReused = false;       // symbolic analysis from a previous solve() reused
     bool supernodal = false;
     bool factorizedInPlace = false; // CHOLMOD factorises our array without a permuted copy
-    double analysisMs = 0.0; // structure build + symbolic analysis in this solve() (0 if reused)
+    // Structure build + symbolic analysis in this solve() (0 if reused), and the factorisation
+    // of Options::factorizeAhead.
+    double analysisMs = 0.0;
     double totalMs = 0.0;
 
     bool succeeded() const {
