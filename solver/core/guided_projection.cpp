@@ -163,10 +163,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         IterationStats stats;
         const double assumed = std::max(d.equations.maxConstraintResidual(), options.eps2);
         stats.eps1 = epsilon1(options, options.scheduleOffset); // its top, as ε₂'s
-        stats.eps2 = epsilon2(options, options.scheduleOffset, assumed);
-        if (stats.eps2 < d.eps2Floor) {
-            stats.eps2 = std::min(d.eps2Floor, options.eps2); // as in the iterations below
-        }
+        stats.eps2 = d.flooredEps2(epsilon2(options, options.scheduleOffset, assumed), options);
         stats.proximity = proximityWeight(options, assumed);
         if (!d.factorizeForReuse(problem, stats, summary)) {
             d.factorReusable = false;
@@ -197,9 +194,7 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
                              ? eps2Boost * stats.eps2
                              : std::min(std::max(options.eps2, stats.eps2), eps2Boost * stats.eps2);
         }
-        if (stats.eps2 < d.eps2Floor) {
-            stats.eps2 = std::min(d.eps2Floor, options.eps2);
-        }
+        stats.eps2 = d.flooredEps2(stats.eps2, options);
         stats.assemblyMs = pendingEvaluationMs;
         auto step = [&] {
             return experimental.baseline

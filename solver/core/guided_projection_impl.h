@@ -13,6 +13,7 @@
 #include "solver/core/sparse_cholesky.h"
 #include "solver/core/summary.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <memory>
@@ -39,6 +40,10 @@ struct GuidedProjection::Impl {
     // times a value whose factorisation failed (see the retry in solve()), so that a solve or a
     // drag does not factorise twice in every iteration.
     double eps2Floor = 0.0;
+    // ε₂ raised to eps2Floor (never above the configured damping).
+    double flooredEps2(double eps2, const Options& options) const {
+        return eps2 < eps2Floor ? std::min(eps2Floor, options.eps2) : eps2;
+    }
     ExperimentalOptions experimental;
     // The factor by which rejected steps raised ε₂ (ExperimentalOptions::levenbergMarquardt,
     // rejectWorseSteps), kept between solve() calls so that a session's step(1) continues

@@ -10,7 +10,6 @@ int TargetTerm::addTarget(int column, double target) {
 }
 
 int TargetTerm::addPointTarget(int offset, int dimension, const double* target) {
-    changed();
     const int first = rowCount();
     for (int k = 0; k < dimension; ++k) {
         addTarget(offset + k, target[k]);
