@@ -96,6 +96,34 @@ void keepReached(std::vector<Reached>& reached, std::size_t& stride, Reached sta
     }
 }
 
+void PassedThrough::moved(std::size_t moves, const model::CompositeSurface& surface,
+                          double residual) {
+    if (!m_states.empty() && m_states.back().moves == moves) {
+        return;
+    }
+    if (moves % std::max<std::size_t>(m_stride, 1) == 0) {
+        m_latestPending = false;
+        keepReached(m_states, m_stride, {moves, surface, residual});
+        return;
+    }
+    m_latestPending = true;
+    m_latestMoves = moves;
+    m_latestResidual = residual;
+}
+
+void PassedThrough::keepLatest(const model::CompositeSurface& surface) {
+    if (m_latestPending) {
+        m_latestPending = false;
+        keepReached(m_states, m_stride, {m_latestMoves, surface, m_latestResidual});
+    }
+}
+
+void PassedThrough::clear() {
+    m_states.clear();
+    m_stride = 1;
+    m_latestPending = false;
+}
+
 int partwayIterationLimit(PartwaySearch search, int after) {
     return search != PartwaySearch::Brief ? kPartwayProbes * kPartwaySettleFactor * after
                                           : (kBriefPartwayProbes + 1) * after;

@@ -31,6 +31,28 @@ struct Reached {
 // that they stay evenly spread over the whole drag.
 void keepReached(std::vector<Reached>& reached, std::size_t& stride, Reached state);
 
+// The states a drag passed through, kept as keepReached keeps them, except that the latest is
+// copied only when the release asks for it (keepLatest): most moves' states are dropped again
+// by the next move, and copying each cost a large model's moves milliseconds.
+class PassedThrough {
+public:
+    // After a move: `surface` as the drag left it after `moves` moves, `residual` the largest
+    // constraint residual of that move's iteration. A state copied for a count stays; of a
+    // count not copied, the latest move's state is the one keepLatest keeps.
+    void moved(std::size_t moves, const model::CompositeSurface& surface, double residual);
+    // Keeps the latest state if moved() did not: `surface` must be as the last move left it.
+    void keepLatest(const model::CompositeSurface& surface);
+    const std::vector<Reached>& states() const { return m_states; }
+    void clear();
+
+private:
+    std::vector<Reached> m_states;
+    std::size_t m_stride = 1;
+    bool m_latestPending = false; // the latest move's state, not yet copied
+    std::size_t m_latestMoves = 0;
+    double m_latestResidual = 0.0;
+};
+
 // Whether the search fits its budget for a surface whose release took `releaseStep` to settle
 // (two settlings of a state passed through, each as long as that several times).
 bool partwayFits(std::chrono::steady_clock::duration releaseStep);

@@ -186,12 +186,11 @@ struct SolveJob::Drag {
     std::vector<std::set<std::pair<model::EdgeId, int>>> pulledPoints;
     std::vector<std::set<model::VertexId>> pulledSheet;
     std::vector<std::vector<DragMove>> moves;
-    std::vector<std::vector<Reached>> reached; // states passed through, for followPartway
-    std::vector<std::size_t> reachedStride;    // keepReached's
+    std::vector<PassedThrough> reached; // states passed through, for followPartway
 
     explicit Drag(std::size_t count)
         : sessions(count), built(count), pulled(count), pulledPoints(count), pulledSheet(count),
-          moves(count), reached(count), reachedStride(count, 1) {}
+          moves(count), reached(count) {}
 };
 
 SolveJob::SolveJob() = default;
@@ -326,7 +325,6 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             d.pulledSheet[s] = sheetVertices;
             d.moves[s].clear();
             d.reached[s].clear();
-            d.reachedStride[s] = 1;
         }
         if (outcome.prepared) {
             const Summary prepared = session->prepare();
@@ -338,6 +336,10 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             outcome.surfaces.push_back(snapshot);
             outcome.assessments.push_back(std::move(assessment));
             continue;
+        }
+        if (drag && request.settle) {
+            // The session is still as the last move left it.
+            d.reached[s].keepLatest(session->surface());
         }
         if (drag) {
             // The release at the last move's position is no move of its own: the replay then
@@ -406,11 +408,9 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             // What the whole release would have taken (partwayFits).
             stepTime = stepTime * steps / summary.iterationsCompleted;
         }
-        if (drag && !request.settle && summary.succeeded() && !d.moves[s].empty() &&
-            (d.reached[s].empty() || d.reached[s].back().moves != d.moves[s].size())) {
-            keepReached(
-                d.reached[s], d.reachedStride[s],
-                {d.moves[s].size(), session->surface(), summary.finalMaxConstraintResidual});
+        if (drag && !request.settle && summary.succeeded() && !d.moves[s].empty()) {
+            d.reached[s].moved(d.moves[s].size(), session->surface(),
+                               summary.finalMaxConstraintResidual);
         }
         if (request.kind == JobKind::Solve && summary.succeeded()) {
             assessment.bestIteration = session->returnToBestIterate(&summary).iteration;
@@ -428,7 +428,7 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             judged = judgeDrag(d.built[s], session->surface(), summary.finalMaxConstraintResidual,
                                summary.status == Status::StoppedBeforeDegenerate);
         }
-        if (judged && judged->problems() > 0 && !d.reached[s].empty()) {
+        if (judged && judged->problems() > 0 && !d.reached[s].states().empty()) {
             // On a fine model the release can alternate as the keep-lengths energy fades, and
             // fold over (docs/tuning.md, "Settled again"): the drag's last state settles once
             // more, the energy fading only after iterations whose residual did not rise; the
@@ -437,8 +437,8 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             try {
                 SessionOptions options = optionsFor(request, key);
                 options.formulation.sheetHandles = sheet;
-                session = secondSettling(d.built[s], d.reached[s].back().surface, handles, points,
-                                         options);
+                session = secondSettling(d.built[s], d.reached[s].states().back().surface, handles,
+                                         points, options);
             } catch (const std::exception& error) {
                 return fail(cannotSolve(key, error));
             }
@@ -541,14 +541,14 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
                 auto refused = std::make_shared<const SurfaceAssessment>(std::move(assessment));
                 std::optional<Partway> partway;
                 // A thorough search where it fits its budget (partwayFits), else a brief one.
-                if (!d.reached[s].empty()) {
+                if (!d.reached[s].states().empty()) {
                     const PartwaySearch search =
                         request.untimedPartway ? PartwaySearch::Untimed
                                                : (partwayFits(stepTime) ? PartwaySearch::Thorough
                                                                         : PartwaySearch::Brief);
                     total += partwayIterationLimit(search, steps);
                     partway =
-                        followPartway(d.built[s], press, d.reached[s], d.moves[s],
+                        followPartway(d.built[s], press, d.reached[s].states(), d.moves[s],
                                       optionsFor(request, key), steps, {handles, points, sheet},
                                       cancel, search, [&](const IterationStats& stats) {
                                           ++outcome.iterationsRun;

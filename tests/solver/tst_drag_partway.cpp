@@ -334,6 +334,33 @@ private slots:
         QVERIFY2(widest <= 2 * reached.front().moves, qPrintable(QString::number(widest)));
     }
 
+    void theLatestStateIsCopiedOnlyAtTheRelease() {
+        // A drag keeps the same states whether each move's state is copied at once
+        // (keepReached) or the latest only when the release asks for it (PassedThrough).
+        const model::CompositeSurface surface = model::makeExample("sheet").surfaces.front();
+        for (std::size_t moves = 1; moves <= 300; ++moves) {
+            std::vector<solver::Reached> eager;
+            std::size_t stride = 1;
+            solver::PassedThrough lazy;
+            for (std::size_t m = 1; m <= moves; ++m) {
+                const double residual = 1.0 / static_cast<double>(m);
+                solver::keepReached(eager, stride, {m, surface, residual});
+                lazy.moved(m, surface, residual);
+            }
+            lazy.keepLatest(surface);
+            lazy.keepLatest(surface); // kept once
+            QVERIFY2(
+                lazy.states().size() == eager.size(),
+                qPrintable(
+                    QString("%1: %2 %3").arg(moves).arg(lazy.states().size()).arg(eager.size())));
+            for (std::size_t i = 0; i < eager.size(); ++i) {
+                QCOMPARE(lazy.states()[i].moves, eager[i].moves);
+                QCOMPARE(lazy.states()[i].residual, eager[i].residual);
+            }
+            QCOMPARE(lazy.states().back().moves, moves);
+        }
+    }
+
     void aLargeModelsBriefSearchFollowsPartway() {
         // The search a model too large for the thorough one gets (PartwaySearch::Brief): an
         // annulus with six rim vertices pinned, an inner vertex lifted 150 mm keeping lengths
