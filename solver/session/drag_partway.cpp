@@ -38,6 +38,8 @@ constexpr double kPartwayDevelopability = 1e-5;
 // before it (the drag was then asking for more than the sheet allows; docs/tuning.md, "A drag
 // too far follows part of the way").
 constexpr int kBriefPartwayProbes = 3;
+// followedShare's bounds.
+constexpr double kLeastFollowedShare = 1e-3;
 constexpr double kPartwayResidualJump = 10.0;
 
 // Whether every dragged vertex of `surface` is nearer its target than at the press: a state
@@ -71,6 +73,21 @@ struct BestSeen {
         }
     }
 };
+
+// How much of the drag a state follows: the share of the way its dragged points came from the
+// press towards the release's targets (1 − largest gap now / largest gap at the press), so that
+// a state that settled back near the press is not said to follow the share of the moves it was
+// reached after; that share (`ofMoves`) where nothing dragged is a vertex or control point.
+// Within (0, 1): the state is neither the press nor the whole drag.
+double followedShare(const model::CompositeSurface& press, const SurfaceAssessment& state,
+                     const DragMove& release, double ofMoves) {
+    SurfaceAssessment atPress;
+    measureHandleGaps(atPress, press, release.vertices, release.controlPoints);
+    const double share = atPress.largestHandleGap > 0.0
+                             ? 1.0 - state.largestHandleGap / atPress.largestHandleGap
+                             : ofMoves;
+    return std::clamp(share, kLeastFollowedShare, 1.0 - kLeastFollowedShare);
+}
 
 } // namespace
 
@@ -266,7 +283,9 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
         bool ended = judge(*session, settling, a);
         if (ended) {
             good = index;
-            a.followed = static_cast<double>(state.moves) / static_cast<double>(moves.size());
+            a.followed =
+                followedShare(press, a, release,
+                              static_cast<double>(state.moves) / static_cast<double>(moves.size()));
             best = Partway{std::move(session), std::move(a)};
             bestMove = &move;
         } else {

@@ -175,10 +175,11 @@ struct SurfaceAssessment {
     // summary's residual the press's sampled developability), and this is how the refused
     // result measured.
     std::shared_ptr<const SurfaceAssessment> takenBack;
-    // With takenBack: the share of the drag's moves (0 < followed < 1) that the surface
-    // follows instead of the press, when replaying that start of the drag ends developable:
-    // the dragged vertices lag behind the mouse (largestHandleGap, to the release's targets).
-    // 0: the surface is as at the press.
+    // With takenBack: how much of the drag (0 < followed < 1) the surface follows instead of
+    // the press, when a state the drag passed through settles developable: the share of the
+    // way from the press to the release's targets that its dragged vertices came (they lag
+    // behind the mouse by largestHandleGap), or for a drag in the sheet the share of the moves
+    // before that state. 0: the surface is as at the press.
     double followed = 0.0;
     // A surface that keeps its development: how far it is from it (model::keptSheetStretch,
     // mm), measured from the geometry. The development is held as a constraint judged apart
