@@ -479,16 +479,31 @@ SheetDomain fittingDomain(SheetShape shape, const SampledMesh& mesh,
         }
         return domain;
     }
-    for (const Vec2& p : outer) {
-        domain.radius = std::max(domain.radius, (p - domain.centre).norm());
+    // The circles go through the design's own vertices on its loops (its farthest, its
+    // nearest), not through the samples between them: a spline rim through points on a circle
+    // dips off it between them, and circles fitted to the dips would leave those vertices off
+    // the sheet, where pins on them keep every solve short of the tolerance. The next solve
+    // moves the samples onto the circles.
+    auto distances = [&](const std::vector<int>& loop) {
+        std::vector<double> atVertices;
+        std::vector<double> all;
+        for (int v : loop) {
+            const double d = (development[static_cast<std::size_t>(v)] - domain.centre).norm();
+            all.push_back(d);
+            if (static_cast<std::size_t>(v) < mesh.coarseVertexIds.size()) {
+                atVertices.push_back(d);
+            }
+        }
+        return atVertices.empty() ? all : atVertices;
+    };
+    for (double d : distances(boundary.front())) {
+        domain.radius = std::max(domain.radius, d);
     }
     if (shape == SheetShape::Annulus) {
         domain.innerRadius = std::numeric_limits<double>::infinity();
         for (std::size_t l = 1; l < boundary.size(); ++l) {
-            for (int v : boundary[l]) {
-                domain.innerRadius =
-                    std::min(domain.innerRadius,
-                             (development[static_cast<std::size_t>(v)] - domain.centre).norm());
+            for (double d : distances(boundary[l])) {
+                domain.innerRadius = std::min(domain.innerRadius, d);
             }
         }
         if (!(domain.innerRadius < domain.radius) || !(domain.innerRadius > 0.0)) {

@@ -132,7 +132,8 @@ SheetDomain placeDomain(SheetDomain domain, const SampledMesh& mesh,
 // A sheet of `shape` that just holds the development, placed on it: the smallest-area
 // rectangle around it, the disk around its outer loop's centroid through its farthest vertex,
 // the annulus from that to the nearest vertex of its holes (half the outer radius without
-// holes). Free for Free, Outline and Cylinder (whose radius is the unfolding's period).
+// holes); for the circles the vertices are the design's own (the mesh's coarse vertices) where
+// a loop has any. Free for Free, Outline and Cylinder (whose radius is the unfolding's period).
 SheetDomain fittingDomain(SheetShape shape, const SampledMesh& mesh,
                           const std::vector<Vec2>& development);
 
