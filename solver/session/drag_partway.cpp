@@ -38,8 +38,9 @@ constexpr double kPartwayDevelopability = 1e-5;
 // before it (the drag was then asking for more than the sheet allows; docs/tuning.md, "A drag
 // too far follows part of the way").
 constexpr int kBriefPartwayProbes = 3;
-// followedShare's bounds.
-constexpr double kLeastFollowedShare = 1e-3;
+// A state whose dragged points came less than this share of the way (shown as 0 %) is the
+// press to the designer: the press is kept instead, exactly as it was.
+constexpr double kLeastFollowedShare = 0.005;
 constexpr double kPartwayResidualJump = 10.0;
 
 // Whether every dragged vertex of `surface` is nearer its target than at the press: a state
@@ -78,7 +79,7 @@ struct BestSeen {
 // press towards the release's targets (1 − largest gap now / largest gap at the press), so that
 // a state that settled back near the press is not said to follow the share of the moves it was
 // reached after; that share (`ofMoves`) where nothing dragged is a vertex or control point.
-// Within (0, 1): the state is neither the press nor the whole drag.
+// Below 1: the state is not the whole drag.
 double followedShare(const model::CompositeSurface& press, const SurfaceAssessment& state,
                      const DragMove& release, double ofMoves) {
     SurfaceAssessment atPress;
@@ -86,7 +87,7 @@ double followedShare(const model::CompositeSurface& press, const SurfaceAssessme
     const double share = atPress.largestHandleGap > 0.0
                              ? 1.0 - state.largestHandleGap / atPress.largestHandleGap
                              : ofMoves;
-    return std::clamp(share, kLeastFollowedShare, 1.0 - kLeastFollowedShare);
+    return std::clamp(share, 0.0, 0.999);
 }
 
 } // namespace
@@ -321,6 +322,10 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
                 best.reset();
             }
         }
+    }
+    const bool measuredByTheWay = !release.vertices.empty() || !release.controlPoints.empty();
+    if (best && measuredByTheWay && best->assessment.followed < kLeastFollowedShare) {
+        return std::nullopt;
     }
     return best;
 }

@@ -2,6 +2,7 @@
 // (solver/session/drag_partway.h): through the solve job as the Drag tool runs it, measured
 // from the geometry.
 #include "model/composite_surface.h"
+#include "model/development.h"
 #include "model/examples.h"
 #include "model/math_constants.h"
 #include "model/pattern/cutting_pattern.h"
@@ -359,6 +360,45 @@ private slots:
             }
             QCOMPARE(lazy.states().back().moves, moves);
         }
+    }
+
+    void aStateThatSettlesBackToThePressIsNoPartway() {
+        // The flat square holding its sheet with all four corners pinned cannot lift its
+        // middle: a state the drag passed through settles back onto the press. The search
+        // then keeps the press (nothing), rather than a state said to follow the share of
+        // the moves it was reached after while its vertex is where it started.
+        model::CompositeSurface press = model::makeExample("sheet").surfaces.front();
+        QVERIFY(!model::keepDevelopment(press).has_value());
+        model::VertexId middle = model::kInvalidId;
+        for (const auto& [id, p] : press.vertices()) {
+            const bool corner = (std::abs(p.x) < 1e-9 || std::abs(p.x - 300.0) < 1e-9) &&
+                                (std::abs(p.y) < 1e-9 || std::abs(p.y - 300.0) < 1e-9);
+            press.setPinned(id, corner);
+            if (std::abs(p.x - 100.0) < 1e-9 && std::abs(p.y - 100.0) < 1e-9) {
+                middle = id;
+            }
+        }
+        QVERIFY(middle != model::kInvalidId);
+        const Vec3 from = press.position(middle);
+        std::vector<solver::DragMove> moves;
+        std::vector<solver::Reached> reached;
+        std::size_t stride = 1;
+        for (std::size_t k = 1; k <= 4; ++k) {
+            const Vec3 target = from + Vec3(0.0, 0.0, 15.0 * static_cast<double>(k));
+            moves.push_back({{{middle, false, target}}, {}, {}});
+            solver::keepReached(reached, stride, {k, press, 0.0});
+        }
+        solver::SurfaceAssessment atPress;
+        atPress.solved = true;
+        const std::optional<solver::Partway> partway = solver::followPartway(
+            press, atPress, reached, moves, solver::keepLengthsSessionOptions(),
+            solver::kIterationsAfterDragKeepingLengths, moves.back(), nullptr,
+            solver::PartwaySearch::Untimed);
+        if (partway) {
+            qInfo("followed %.3g, risen %.3g mm", partway->assessment.followed,
+                  partway->session->surface().position(middle).z - from.z);
+        }
+        QVERIFY(!partway.has_value());
     }
 
     void aLargeModelsBriefSearchFollowsPartway() {
