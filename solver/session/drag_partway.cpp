@@ -38,10 +38,10 @@ constexpr double kPartwayDevelopability = 1e-5;
 // before it (the drag was then asking for more than the sheet allows; docs/tuning.md, "A drag
 // too far follows part of the way").
 constexpr int kBriefPartwayProbes = 3;
+constexpr double kPartwayResidualJump = 10.0;
 // A state whose dragged points came less than this share of the way (shown as 0 %) is the
 // press to the designer: the press is kept instead, exactly as it was.
 constexpr double kLeastFollowedShare = 0.005;
-constexpr double kPartwayResidualJump = 10.0;
 
 // Whether every dragged vertex of `surface` is nearer its target than at the press: a state
 // settled with soft pulls may slide back past the press, which is no part of the drag.
@@ -313,7 +313,7 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
         if (judge(*best->session, more, a)) {
             continueSummary(best->assessment.summary, more);
             a.summary = best->assessment.summary;
-            a.followed = best->assessment.followed;
+            a.followed = followedShare(press, a, release, best->assessment.followed);
             best->assessment = std::move(a);
         } else {
             try {
