@@ -165,8 +165,9 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
         stats.eps1 = epsilon1(options, options.scheduleOffset); // its top, as ε₂'s
         stats.eps2 = d.flooredEps2(epsilon2(options, options.scheduleOffset, assumed), options);
         stats.proximity = proximityWeight(options, assumed);
-        if (!d.factorizeForReuse(problem, stats, summary)) {
-            d.factorReusable = false;
+        if (d.factorize(problem, stats.eps1, stats, summary)) {
+            d.keepForReuse(problem);
+        } else {
             summary.status = Status::IterationLimit; // the first step factorises again
             summary.detail.clear();
         }

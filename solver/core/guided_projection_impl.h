@@ -229,15 +229,6 @@ struct GuidedProjection::Impl {
         factorIterate = iterate;
     }
 
-    // Options::factorizeAhead: a factorisation for the next steps, no step.
-    bool factorizeForReuse(const Problem& problem, IterationStats& stats, Summary& summary) {
-        if (!factorize(problem, stats.eps1, stats, summary)) {
-            return false;
-        }
-        keepForReuse(problem);
-        return true;
-    }
-
     bool cachedStep(const Problem& problem, double eps1, IterationStats& stats, Summary& summary,
                     bool reuseLater) {
         if (!factorize(problem, eps1, stats, summary)) {

@@ -76,17 +76,12 @@ struct BestSeen {
 };
 
 // How much of the drag a state follows: the share of the way its dragged points came from the
-// press towards the release's targets (1 − largest gap now / largest gap at the press), so that
-// a state that settled back near the press is not said to follow the share of the moves it was
-// reached after; that share (`ofMoves`) where nothing dragged is a vertex or control point.
-// Below 1: the state is not the whole drag.
-double followedShare(const model::CompositeSurface& press, const SurfaceAssessment& state,
-                     const DragMove& release, double ofMoves) {
-    SurfaceAssessment atPress;
-    measureHandleGaps(atPress, press, release.vertices, release.controlPoints);
-    const double share = atPress.largestHandleGap > 0.0
-                             ? 1.0 - state.largestHandleGap / atPress.largestHandleGap
-                             : ofMoves;
+// press towards the release's targets (1 − largest gap now / `pressGap`, the largest at the
+// press), so that a state that settled back near the press is not said to follow the share of
+// the moves it was reached after; that share (`ofMoves`) where there is no gap at the press
+// (nothing dragged is a vertex or control point). Below 1: the state is not the whole drag.
+double followedShare(double pressGap, const SurfaceAssessment& state, double ofMoves) {
+    const double share = pressGap > 0.0 ? 1.0 - state.largestHandleGap / pressGap : ofMoves;
     return std::clamp(share, 0.0, 0.999);
 }
 
@@ -119,7 +114,7 @@ void PassedThrough::moved(std::size_t moves, const model::CompositeSurface& surf
     if (!m_states.empty() && m_states.back().moves == moves) {
         return;
     }
-    if (moves % std::max<std::size_t>(m_stride, 1) == 0) {
+    if (moves % m_stride == 0) {
         m_latestPending = false;
         keepReached(m_states, m_stride, {moves, surface, residual});
         return;
@@ -166,6 +161,10 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
     const double defectLimit = std::max(atPress.largestVertexDefect, kPartwayStarDefect);
     const double developabilityLimit =
         std::max(10.0 * atPress.summary.finalMaxConstraintResidual, kPartwayDevelopability);
+    // How far the dragged points are from the release's targets at the press (followedShare).
+    SurfaceAssessment pressGaps;
+    measureHandleGaps(pressGaps, press, release.vertices, release.controlPoints);
+    const double pressGap = pressGaps.largestHandleGap;
     std::optional<Partway> best;
     const DragMove* bestMove = nullptr; // the move best was released at
     // reached[good] known to end well (-1: the press), reached[bad] known to end broken.
@@ -284,9 +283,8 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
         bool ended = judge(*session, settling, a);
         if (ended) {
             good = index;
-            a.followed =
-                followedShare(press, a, release,
-                              static_cast<double>(state.moves) / static_cast<double>(moves.size()));
+            a.followed = followedShare(
+                pressGap, a, static_cast<double>(state.moves) / static_cast<double>(moves.size()));
             best = Partway{std::move(session), std::move(a)};
             bestMove = &move;
         } else {
@@ -313,7 +311,7 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
         if (judge(*best->session, more, a)) {
             continueSummary(best->assessment.summary, more);
             a.summary = best->assessment.summary;
-            a.followed = followedShare(press, a, release, best->assessment.followed);
+            a.followed = followedShare(pressGap, a, best->assessment.followed);
             best->assessment = std::move(a);
         } else {
             try {
@@ -323,8 +321,7 @@ followPartway(const model::CompositeSurface& press, const SurfaceAssessment& atP
             }
         }
     }
-    const bool measuredByTheWay = !release.vertices.empty() || !release.controlPoints.empty();
-    if (best && measuredByTheWay && best->assessment.followed < kLeastFollowedShare) {
+    if (best && pressGap > 0.0 && best->assessment.followed < kLeastFollowedShare) {
         return std::nullopt;
     }
     return best;

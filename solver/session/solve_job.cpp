@@ -337,10 +337,6 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             outcome.assessments.push_back(std::move(assessment));
             continue;
         }
-        if (drag && request.settle) {
-            // The session is still as the last move left it.
-            d.reached[s].keepLatest(session->surface());
-        }
         if (drag) {
             // The release at the last move's position is no move of its own: the replay then
             // runs the moves a drag of the same steps runs.
@@ -350,6 +346,9 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
                 d.moves[s].push_back({handles, points, sheet});
             }
             if (request.settle) {
+                // The session is still as the last move left it: the latest state passed
+                // through, for the partway search.
+                d.reached[s].keepLatest(session->surface());
                 // A vertex drag keeping lengths gives up a hopeless settling: the second
                 // settling and the partway search follow (kHopelessSettlingResidual, on a held
                 // sheet kHopelessHeldSettlingResidual).
