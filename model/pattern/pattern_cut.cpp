@@ -179,4 +179,60 @@ CutMesh splitAlong(const SampledMesh& mesh, const std::set<std::pair<int, int>>&
     return cut;
 }
 
+std::map<EdgeKey, std::vector<std::pair<int, int>>> edgeCopies(const SampledMesh& mesh,
+                                                               const CutMesh& cut) {
+    std::map<EdgeKey, std::vector<std::pair<int, int>>> copies;
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        const auto& face = mesh.faces[f];
+        const auto& copy = cut.mesh.faces[f];
+        for (std::size_t k = 0; k < face.size(); ++k) {
+            const std::size_t next = (k + 1) % face.size();
+            const bool forward = face[k] < face[next];
+            const std::pair<int, int> value =
+                forward ? std::make_pair(copy[k], copy[next]) : std::make_pair(copy[next], copy[k]);
+            auto& list = copies[{std::min(face[k], face[next]), std::max(face[k], face[next])}];
+            if (std::find(list.begin(), list.end(), value) == list.end()) {
+                list.push_back(value);
+            }
+        }
+    }
+    return copies;
+}
+
+std::vector<std::vector<int>>
+polylineCopies(const std::vector<int>& line,
+               const std::map<EdgeKey, std::vector<std::pair<int, int>>>& copies) {
+    struct Open {
+        std::vector<int> vertices;
+        std::size_t lastSegment = 0;
+    };
+    std::vector<Open> open;
+    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+        const int a = line[i];
+        const int b = line[i + 1];
+        const auto it = copies.find({std::min(a, b), std::max(a, b)});
+        if (a == b || it == copies.end()) {
+            continue;
+        }
+        for (const auto& [p, q] : it->second) {
+            const int from = a < b ? p : q;
+            const int to = a < b ? q : p;
+            auto match = std::find_if(open.begin(), open.end(), [&](const Open& o) {
+                return o.lastSegment + 1 == i && o.vertices.back() == from;
+            });
+            if (match != open.end()) {
+                match->vertices.push_back(to);
+                match->lastSegment = i;
+            } else {
+                open.push_back({{from, to}, i});
+            }
+        }
+    }
+    std::vector<std::vector<int>> result;
+    for (auto& o : open) {
+        result.push_back(std::move(o.vertices));
+    }
+    return result;
+}
+
 } // namespace devsurf::model::pattern

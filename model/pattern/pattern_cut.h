@@ -5,6 +5,7 @@
 #include "model/composite_surface.h"
 #include "model/sampled_mesh.h"
 
+#include <map>
 #include <set>
 #include <utility>
 #include <vector>
@@ -33,5 +34,17 @@ struct CutMesh {
     std::vector<int> original; // for every vertex of the cut mesh, the vertex it copies
 };
 CutMesh splitAlong(const SampledMesh& mesh, const std::set<std::pair<int, int>>& segments);
+
+using EdgeKey = std::pair<int, int>; // {min, max} vertex of the uncut mesh
+
+// For every edge of the uncut mesh, its copies in the cut mesh (oriented like the key): one
+// inside a piece, two along a cut.
+std::map<EdgeKey, std::vector<std::pair<int, int>>> edgeCopies(const SampledMesh& mesh,
+                                                               const CutMesh& cut);
+
+// The copies of a polyline of the uncut mesh in the cut mesh, one per side it lies on.
+std::vector<std::vector<int>>
+polylineCopies(const std::vector<int>& line,
+               const std::map<EdgeKey, std::vector<std::pair<int, int>>>& copies);
 
 } // namespace devsurf::model::pattern

@@ -8,6 +8,7 @@
 #include "model/sampled_mesh.h"
 #include "pattern_cut.h"
 #include "pattern_geometry.h"
+#include "pattern_kept_sheet.h"
 #include "pattern_labels.h"
 #include "pattern_overlaps.h"
 
@@ -25,113 +26,6 @@ double pointSegmentDistance3(const Vec3& p, const Vec3& a, const Vec3& b) {
     const double length2 = d.squaredNorm();
     const double t = length2 > 0.0 ? std::clamp(dot(p - a, d) / length2, 0.0, 1.0) : 0.0;
     return distance(p, a + d * t);
-}
-
-// Whether the copies of every vertex on the cut land on the same spot: the surface then
-// closes up in the plane (a flat annulus) and is not cut.
-bool copiesCoincide(const CutMesh& cut, const Development& development, double tolerance) {
-    std::map<int, int> firstCopy;
-    for (std::size_t v = 0; v < cut.original.size(); ++v) {
-        const auto [it, inserted] = firstCopy.emplace(cut.original[v], static_cast<int>(v));
-        if (!inserted &&
-            (development.vertices[v] - development.vertices[static_cast<std::size_t>(it->second)])
-                    .norm() > tolerance) {
-            return false;
-        }
-    }
-    return true;
-}
-
-// A surface that keeps its development is cut from that sheet (§5): the fresh unfolding
-// `development` of `cut` (the surface's mesh at the pattern's sampling, not cut open) is laid
-// onto the kept development by the rigid motion that best maps the samples both share, each
-// shared sample is then put exactly where the kept sheet has it, and the samples between two
-// of them along an edge move with them linearly. Unchanged for a surface that keeps no
-// development (or one from another sampling), a sheet around a cylinder, or a mesh cut open.
-void layOntoKeptSheet(const CompositeSurface& surface, const SampledMesh& mesh, const CutMesh& cut,
-                      Development& development) {
-    const std::vector<Vec2>& kept = surface.development();
-    if (!surface.keepsDevelopment() || development.period || development.components != 1 ||
-        surface.sheetDomain().shape == SheetShape::Cylinder ||
-        cut.mesh.vertices.size() != mesh.vertices.size() ||
-        kept.size() != sampledVertexCount(surface, kDevelopmentSamplesPerInterval)) {
-        return;
-    }
-    // The kept development's own sampling, cached with the surface's other derived geometry.
-    const auto keptSampling = DerivedGeometry::of(surface, kDevelopmentSamplesPerInterval);
-    const SampledMesh& coarse = keptSampling->mesh();
-    // For every vertex of `mesh`, the kept sample at the same place on the surface, if any.
-    std::vector<int> shared(mesh.vertices.size(), -1);
-    for (std::size_t v = 0; v < mesh.coarseVertexIds.size(); ++v) {
-        shared[v] = static_cast<int>(v); // the coarse vertices come first in both
-    }
-    std::map<EdgeId, const SampledMesh::Polyline*> keptLine;
-    for (const SampledMesh::Polyline& line : coarse.splineEdges) {
-        keptLine[line.edge] = &line;
-    }
-    for (const SampledMesh::Polyline& line : mesh.splineEdges) {
-        const auto it = keptLine.find(line.edge);
-        if (it == keptLine.end() || line.vertices.size() < 2) {
-            return;
-        }
-        const std::size_t fine = line.vertices.size() - 1;
-        const std::size_t other = it->second->vertices.size() - 1;
-        for (std::size_t k = 0; k <= fine; ++k) {
-            if ((k * other) % fine == 0) {
-                shared[static_cast<std::size_t>(line.vertices[k])] =
-                    it->second->vertices[k * other / fine];
-            }
-        }
-    }
-    // The cut mesh numbers its vertices anew; uncut, each copies one vertex of `mesh`.
-    std::vector<int> copy(mesh.vertices.size(), -1);
-    for (std::size_t v = 0; v < cut.original.size(); ++v) {
-        copy[static_cast<std::size_t>(cut.original[v])] = static_cast<int>(v);
-    }
-    std::vector<Vec2> from;
-    std::vector<Vec2> to;
-    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-        if (shared[v] >= 0 && copy[v] >= 0) {
-            from.push_back(development.vertices[static_cast<std::size_t>(copy[v])]);
-            to.push_back(kept[static_cast<std::size_t>(shared[v])]);
-        }
-    }
-    const std::optional<PlaneMotion> motion = fitPlaneMotion(from, to);
-    if (!motion) {
-        return;
-    }
-    std::vector<Vec2> laid(development.vertices.size());
-    for (std::size_t v = 0; v < laid.size(); ++v) {
-        laid[v] = motion->apply(development.vertices[v]);
-    }
-    // The samples between two shared ones along an edge follow them linearly.
-    std::vector<Vec2> placed = laid;
-    auto at = [&](int meshVertex) {
-        return static_cast<std::size_t>(copy[static_cast<std::size_t>(meshVertex)]);
-    };
-    for (const SampledMesh::Polyline& line : mesh.splineEdges) {
-        std::size_t last = 0; // index along the line of the last shared sample
-        for (std::size_t k = 1; k < line.vertices.size(); ++k) {
-            if (shared[static_cast<std::size_t>(line.vertices[k])] < 0) {
-                continue;
-            }
-            const Vec2 a = kept[static_cast<std::size_t>(
-                               shared[static_cast<std::size_t>(line.vertices[last])])] -
-                           laid[at(line.vertices[last])];
-            const Vec2 b =
-                kept[static_cast<std::size_t>(shared[static_cast<std::size_t>(line.vertices[k])])] -
-                laid[at(line.vertices[k])];
-            for (std::size_t i = last; i <= k; ++i) {
-                const double t = static_cast<double>(i - last) / static_cast<double>(k - last);
-                placed[at(line.vertices[i])] = laid[at(line.vertices[i])] + a * (1.0 - t) + b * t;
-            }
-            last = k;
-        }
-    }
-    for (std::size_t v = 0; v < mesh.coarseVertexIds.size(); ++v) {
-        placed[at(static_cast<int>(v))] = kept[v];
-    }
-    development.vertices = std::move(placed);
 }
 
 // The rotation that shows a piece as the surface is seen in the 3D view: a mostly horizontal
@@ -172,67 +66,6 @@ double viewAngle(const SampledMesh& mesh, const std::vector<Vec2>& flat,
         }
     }
     return std::atan2(sumCross, sumDot);
-}
-
-using EdgeKey = std::pair<int, int>; // {min, max} vertex of the uncut mesh
-
-// For every edge of the uncut mesh, its copies in the cut mesh (oriented like the key): one
-// inside a piece, two along a cut.
-std::map<EdgeKey, std::vector<std::pair<int, int>>> edgeCopies(const SampledMesh& mesh,
-                                                               const CutMesh& cut) {
-    std::map<EdgeKey, std::vector<std::pair<int, int>>> copies;
-    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-        const auto& face = mesh.faces[f];
-        const auto& copy = cut.mesh.faces[f];
-        for (std::size_t k = 0; k < face.size(); ++k) {
-            const std::size_t next = (k + 1) % face.size();
-            const bool forward = face[k] < face[next];
-            const std::pair<int, int> value =
-                forward ? std::make_pair(copy[k], copy[next]) : std::make_pair(copy[next], copy[k]);
-            auto& list = copies[{std::min(face[k], face[next]), std::max(face[k], face[next])}];
-            if (std::find(list.begin(), list.end(), value) == list.end()) {
-                list.push_back(value);
-            }
-        }
-    }
-    return copies;
-}
-
-// The copies of a polyline of the uncut mesh in the cut mesh, one per side it lies on.
-std::vector<std::vector<int>>
-polylineCopies(const std::vector<int>& line,
-               const std::map<EdgeKey, std::vector<std::pair<int, int>>>& copies) {
-    struct Open {
-        std::vector<int> vertices;
-        std::size_t lastSegment = 0;
-    };
-    std::vector<Open> open;
-    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
-        const int a = line[i];
-        const int b = line[i + 1];
-        const auto it = copies.find({std::min(a, b), std::max(a, b)});
-        if (a == b || it == copies.end()) {
-            continue;
-        }
-        for (const auto& [p, q] : it->second) {
-            const int from = a < b ? p : q;
-            const int to = a < b ? q : p;
-            auto match = std::find_if(open.begin(), open.end(), [&](const Open& o) {
-                return o.lastSegment + 1 == i && o.vertices.back() == from;
-            });
-            if (match != open.end()) {
-                match->vertices.push_back(to);
-                match->lastSegment = i;
-            } else {
-                open.push_back({{from, to}, i});
-            }
-        }
-    }
-    std::vector<std::vector<int>> result;
-    for (auto& o : open) {
-        result.push_back(std::move(o.vertices));
-    }
-    return result;
 }
 
 } // namespace
@@ -287,12 +120,35 @@ std::vector<PieceBuild> developAlong(const CompositeSurface& surface, int surfac
     const SampledMesh& mesh = derived->mesh();
     CutMesh cut = splitAlong(mesh, cutSegments(surface, mesh, cutEdges));
     Development development = unfoldSampledMesh(cut.mesh);
+    bool laid = false;
     if (!cutEdges.empty() && copiesCoincide(cut, development, options.tolerance)) {
         cutEdges.clear();
         cut = splitAlong(mesh, {});
         development = unfoldSampledMesh(cut.mesh);
+    } else if (!cutEdges.empty()) {
+        // A kept sheet that closes around a hole closes at its own sampling; the finer
+        // unfolding here of the curves between its samples need not (a folded annulus: by
+        // 0.9 mm). Laid onto the kept sheet, the copies of the cut meet, and it is not cut.
+        Development onSheet = development;
+        layOntoKeptSheet(surface, mesh, cut, onSheet);
+        if (onSheet.vertices != development.vertices &&
+            copiesCoincide(cut, onSheet, options.tolerance)) {
+            CutMesh whole = splitAlong(mesh, {});
+            std::vector<int> anyCopy(mesh.vertices.size(), 0);
+            for (std::size_t v = 0; v < cut.original.size(); ++v) {
+                anyCopy[static_cast<std::size_t>(cut.original[v])] = static_cast<int>(v);
+            }
+            development.vertices.assign(whole.mesh.vertices.size(), Vec2());
+            for (std::size_t v = 0; v < whole.original.size(); ++v) {
+                development.vertices[v] = onSheet.vertices[static_cast<std::size_t>(
+                    anyCopy[static_cast<std::size_t>(whole.original[v])])];
+            }
+            cut = std::move(whole);
+            cutEdges.clear();
+            laid = true;
+        }
     }
-    if (cutEdges.empty()) {
+    if (cutEdges.empty() && !laid) {
         layOntoKeptSheet(surface, mesh, cut, development);
     }
 

@@ -90,11 +90,17 @@ void measureIsometry(SurfaceAssessment& assessment, const model::CompositeSurfac
         std::max(development.maxEdgeLengthError * assessment.sheetExtent, development.closureError);
     // A closed surface that unfolds into no one sheet (a torus) is measured on the pieces of its
     // cutting pattern instead: how far each piece is from isometric, relative to the largest.
+    // So is a held sheet around a hole whose curves, sampled this finely, close up less well
+    // than at the sampling the sheet is kept at (a folded annulus: its pattern is cut from the
+    // kept sheet, model::pattern::layOntoKeptSheet).
     const auto& edges = result.edges();
     const bool closed = std::all_of(edges.begin(), edges.end(), [&result](const auto& edge) {
         return result.facesOfEdge(edge.first).size() == 2;
     });
-    if (development.closureError > model::kOneSheetClosure && !development.period && closed) {
+    const bool heldFlat =
+        result.keepsDevelopment() && result.sheetDomain().shape != model::SheetShape::Cylinder;
+    if (development.closureError > model::kOneSheetClosure && !development.period &&
+        (closed || heldFlat)) {
         model::PatternOptions options;
         options.layout = false;
         options.samplesPerInterval = kVerdictSamples;
@@ -114,6 +120,10 @@ void measureIsometry(SurfaceAssessment& assessment, const model::CompositeSurfac
                 high[1] = std::max(high[1], p.y);
             }
             extent = std::max({extent, high[0] - low[0], high[1] - low[1]});
+        }
+        if (heldFlat) {
+            // The pattern is laid onto the kept sheet: off by as much as the surface is.
+            isometry = std::max(isometry, model::keptSheetStretch(result));
         }
         if (extent > 0.0) {
             assessment.sheetExtent = extent;

@@ -15,6 +15,7 @@
 #include "solve_controller.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/quality/shape_change.h"
+#include "solver/session/drag_lengths.h"
 #include "solver/worker/solver_worker.h"
 #include "test_registry.h"
 #include "views/surface_view.h"
@@ -420,8 +421,9 @@ private slots:
     void onAHeldSheetARotationIsNeverLeftBroken_data() {
         QTest::addColumn<double>("degrees");
         QTest::addColumn<bool>("applied");
-        QTest::newRow("3 degrees") << 3.0 << true;    // held back 0.015 mm
-        QTest::newRow("10 degrees") << 10.0 << false; // refused from 4 degrees on
+        QTest::newRow("3 degrees") << 3.0 << true;    // held back 0.015 mm, ready to cut
+        QTest::newRow("10 degrees") << 10.0 << true;  // held back 0.11 mm, within 0.036 mm
+        QTest::newRow("30 degrees") << 30.0 << false; // a patch 1.8e-4 from developable
     }
 
     void onAHeldSheetARotationIsNeverLeftBroken() {
@@ -430,6 +432,9 @@ private slots:
         // after 11 iterations, which stretched the sheet: turned 10°, the design was committed
         // 7e-3 from developable. Now the job runs a held sheet's iterations and refuses a
         // result that is not developable from its sheet; what it keeps, the sheet may hold back.
+        // (Turned 10° it was refused as "would stretch its sheet by 5.7 %" while its kept sheet
+        // fitted to 0.036 mm: a fresh unfolding of the bent ring, sampled more finely than the
+        // sheet is kept, does not close up; it is now measured on the kept sheet.)
         QFETCH(double, degrees);
         QFETCH(bool, applied);
         Setup s;
@@ -450,12 +455,12 @@ private slots:
                 .section(QStringLiteral("%1"), 0, 0);
         };
         if (!applied) {
-            // "Rotate 2 vertices not applied: the motion would stretch its sheet by 5.7 % to
-            // lie flat; the design is unchanged."
+            // "Rotate 2 vertices not applied: the motion did not reach the tolerance (residual
+            // 1.4e-06; patch 5 sampled 1.8e-04 from developable); the design is unchanged."
             QCOMPARE(s.window.solveController()->lastEnding(),
                      app::SolveController::Ending::LeftAsItWas);
             QVERIFY(report.outcome.assessments.at(0).takenBack != nullptr);
-            QVERIFY2(sentence.contains(words("would stretch its sheet by %1 % to lie flat")),
+            QVERIFY2(sentence.contains(words("did not reach the tolerance (residual %1")),
                      qPrintable(sentence));
             QVERIFY2(report.status.startsWith(
                          words("not applied, since the motion %1: the design stays as it was")),
@@ -465,14 +470,24 @@ private slots:
             return;
         }
         QCOMPARE(s.window.solveController()->lastEnding(), app::SolveController::Ending::Solved);
-        QCOMPARE(report.verdict.kind, solver::VerdictKind::ReadyToCut);
+        // Ready to cut, or (short of the tolerance) developable within a few hundredths of a mm.
+        const solver::Verdict& verdict = report.verdict;
+        const double isometry = report.outcome.assessments.at(0).isometryMm;
+        QVERIFY2(verdict.kind == solver::VerdictKind::ReadyToCut ||
+                     (verdict.kind == solver::VerdictKind::WithinIsometry && isometry < 0.05),
+                 qPrintable(QString::number(isometry)));
         QCOMPARE(s.doc->undoStack()->count(), stack + 1);
         const model::CompositeSurface& result = s.doc->surface(0);
         QVERIFY(result.keepsDevelopment());
-        // Measured from the geometry: developable, on its sheet, nothing folded over.
-        QVERIFY2(test::sampledDevelopability(result) < 1e-6,
+        // Measured from the geometry: developable (short of the tolerance, no patch sampled
+        // further than a drag may keep: 6.6e-6 at 10°), on its sheet, nothing folded over.
+        const double developable =
+            verdict.kind == solver::VerdictKind::ReadyToCut ? 1e-6 : solver::kDragConvergedResidual;
+        QVERIFY2(test::sampledDevelopability(result) < developable,
                  qPrintable(QString::number(test::sampledDevelopability(result))));
-        QVERIFY2(model::keptSheetStretch(result) < 1e-2,
+        // On its sheet as a held sheet counts as kept (0.047 mm over this one of 470 mm).
+        QVERIFY2(model::keptSheetStretch(result) <
+                     solver::kKeptSheetTolerance * report.outcome.assessments.at(0).sheetExtent,
                  qPrintable(QString::number(model::keptSheetStretch(result))));
         QVERIFY(solver::foldOvers(result).empty());
         // The sheet held the vertices back a little, and the sentence says by how much.
