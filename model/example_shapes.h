@@ -33,6 +33,7 @@ CompositeSurface makeTorus(int size);
 CompositeSurface makeFig8(int size);
 CompositeSurface makeFig6(int intervals);
 CompositeSurface makeFig13(int size);
+CompositeSurface makeFig12(int rings);
 CompositeSurface makeColumn(int sectors);
 
 } // namespace devsurf::model::example_shapes

@@ -47,7 +47,7 @@ const std::vector<ExampleInfo>& builtInExamples() {
         {"cylinder", 6, 3, 120, true, false}, {"mixed", 2, 1, 50, true, false},
         {"fig8", 3, 2, 30, true, false},      {"fig6", 4, 1, 40, true, false},
         {"fig13", 6, 3, 40, false, true},     {"torus", 6, 3, 40, false, false},
-        {"column", 12, 6, 48, false, true},
+        {"column", 12, 6, 48, false, true},   {"fig12", 6, 3, 12, false, true},
     };
     return examples;
 }
@@ -83,6 +83,8 @@ Project makeExample(const std::string& name, int size, ExampleSheet sheet) {
             project.addSurface(example_shapes::makeFig13(size));
         } else if (name == "torus") {
             project.addSurface(example_shapes::makeTorus(size));
+        } else if (name == "fig12") {
+            project.addSurface(example_shapes::makeFig12(size));
         } else if (name == "column") {
             project.addSurface(example_shapes::makeColumn(size));
         } else {

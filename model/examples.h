@@ -15,7 +15,7 @@ struct ExampleInfo {
     int maxSize;
     // It holds no sheet as built but can be made to hold the sheet it starts as
     // (ExampleSheet::Held): flat, or for the cylinder the cylinder its unfolding rolls onto;
-    // and whether it holds a sheet as built (fig13, column).
+    // and whether it holds a sheet as built (fig13, column, fig12).
     bool canHoldItsSheet = false;
     bool holdsSheetAsBuilt = false;
 };
@@ -30,10 +30,11 @@ struct ExampleInfo {
 // keeps that line straight and could then only turn about it (model/held_by_pins.h).
 enum class ExampleSheet : std::uint8_t { AsBuilt, Held };
 
-// The built-in examples: sheet, annulus, cylinder, mixed, fig8, fig6, fig13, torus, column.
-// Each is exactly developable as built; fig8, fig6, fig13 and column carry curved-fold
-// conditions and pinned vertices; fig13 keeps its development on a disk, column around a
-// cylinder; the torus unfolds into no one sheet.
+// The built-in examples: sheet, annulus, cylinder, mixed, fig8, fig6, fig13, torus, column,
+// fig12. Each is exactly developable as built; fig8, fig6, fig13, column and fig12 carry
+// curved-fold conditions and pinned vertices; fig13 keeps its development on a disk, column
+// around a cylinder, fig12 on the lobed ring it folds from (an outline); the torus unfolds
+// into no one sheet.
 const std::vector<ExampleInfo>& builtInExamples();
 
 // Builds an example; size is its resolution (see builtInExamples()), 0 means the default.

@@ -189,26 +189,31 @@
     </message>
     <message>
         <location filename="../app/text/example_text.cpp" line="41"/>
+        <source>A ring of size bands folded along concentric curved creases, mountain and valley in turn, exactly: every crease a fold in a horizontal plane, every band a piece of one cone. It keeps its development on its sheet, a ring whose edges wave with its eight lobes; three inner vertices pinned.</source>
+        <translation>Ein Ring aus size Bändern, entlang konzentrischer gekrümmter Falten abwechselnd als Berg- und Talfalte exakt gefaltet: jede Falte eine Faltung in einer waagerechten Ebene, jedes Band ein Stück eines Kegels. Er behält seine Abwicklung auf seinem Blatt, einem Ring, dessen Ränder sich mit seinen acht Bögen wellen; drei innere Eckpunkte fixiert.</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="49"/>
         <source>A closed torus of size bands of cones, 2 × size strips around: developable strip by strip but not from one sheet; its cutting pattern has one piece per band.</source>
         <translation>Ein geschlossener Torus aus size Bändern von Kegeln, 2 × size Streifen rundherum: Streifen für Streifen abwickelbar, aber nicht aus einem Bogen; sein Schnittmuster hat ein Teil je Band.</translation>
     </message>
     <message>
-        <location filename="../app/text/example_text.cpp" line="47"/>
+        <location filename="../app/text/example_text.cpp" line="55"/>
         <source>A pleated column after Huffman&apos;s hexagonal column: a tube folded along size upright creases with the curved-fold condition, three bottom vertices pinned. It keeps its development around the cylinder it unrolls from. Drag a top vertex up or in.</source>
         <translation>Eine gefaltete Säule nach Huffmans sechseckiger Säule: ein Rohr, entlang size aufrechter Falten mit der Bedingung der gekrümmten Faltung gefaltet, drei untere Eckpunkte fixiert. Sie behält ihre Abwicklung um den Zylinder, von dem sie sich abrollt. Ziehen Sie einen oberen Eckpunkt nach oben oder nach innen.</translation>
     </message>
     <message>
-        <location filename="../app/text/example_text.cpp" line="53"/>
+        <location filename="../app/text/example_text.cpp" line="61"/>
         <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
         <translation>Ein Streifen, ein spitzer Streifen, ein Kegel und ein ebenes Flächenstück; Größe Intervalle je Kurve.</translation>
     </message>
     <message>
-        <location filename="../app/text/example_text.cpp" line="60"/>
+        <location filename="../app/text/example_text.cpp" line="68"/>
         <source>A flat square of size × size strips with curved creases carrying the curved-fold condition, holding its square sheet with the creases where they lie in it, its bottom-left corner pinned. Select the four middle vertices and drag them up (Drag tool, G) to fold it.</source>
         <translation>Ein ebenes Quadrat aus size × size Streifen mit gekrümmten Falzen, die die Bedingung des gekrümmten Falzes tragen; es hält seinen quadratischen Bogen fest, die Falze dort, wo sie darin liegen, seine linke untere Ecke gepinnt. Wählen Sie die vier mittleren Eckpunkte und ziehen Sie sie nach oben (Ziehwerkzeug, G), um es zu falten.</translation>
     </message>
     <message>
-        <location filename="../app/text/example_text.cpp" line="68"/>
+        <location filename="../app/text/example_text.cpp" line="76"/>
         <source>Two strips joined by one curved crease with the curved-fold condition, holding its rectangular sheet with the crease where it lies in it, its bottom-left corner pinned; size intervals per curve. Select both top corners and drag them up and in towards the crease to fold it.</source>
         <translation>Zwei Streifen, verbunden durch einen gekrümmten Falz mit der Bedingung des gekrümmten Falzes; sie halten ihren rechteckigen Bogen fest, der Falz dort, wo er darin liegt, die linke untere Ecke gepinnt; size Intervalle je Kurve. Wählen Sie beide oberen Ecken und ziehen Sie sie nach oben und zum Falz hin, um es zu falten.</translation>
     </message>
@@ -1817,12 +1822,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="108"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="146"/>
         <source>Drag vertex %1 in the sheet</source>
         <translation>Eckpunkt %1 im Bogen ziehen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="110"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="148"/>
         <source>Drag %n vertices in the sheet</source>
         <translation>
             <numerusform>%n Eckpunkt im Bogen ziehen</numerusform>
@@ -1830,7 +1835,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="117"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="155"/>
         <source>Dragging %n vertices %1 mm along their sheet; the surface follows. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n Eckpunkt wird %1 mm im Bogen gezogen; die Fläche folgt. Loslassen beendet, Esc bricht ab.</numerusform>
@@ -1838,7 +1843,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="122"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="160"/>
         <source>Dragging vertex %1 %2 mm along its sheet; the surface follows. Release to finish, Esc cancels.</source>
         <translation>Eckpunkt %1 wird %2 mm im Bogen gezogen; die Fläche folgt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
@@ -1885,34 +1890,34 @@
         <translation>Punkte der Abwicklung lassen sich nur ziehen, wo die Fläche ihren Bogen festhält (Werkzeuge ▸ Bogen festhalten).</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="195"/>
+        <location filename="../app/gui/drag_tool.cpp" line="200"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>Ecke %1 ist festgehalten und kann nicht gezogen werden; geben Sie sie zuerst frei.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="204"/>
-        <location filename="../app/gui/drag_tool.cpp" line="247"/>
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="65"/>
+        <location filename="../app/gui/drag_tool.cpp" line="209"/>
+        <location filename="../app/gui/drag_tool.cpp" line="252"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="51"/>
         <source>a drag started</source>
         <translation>ein Ziehen hat begonnen</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="230"/>
+        <location filename="../app/gui/drag_tool.cpp" line="235"/>
         <source>There is no edge %1.</source>
         <translation>Es gibt keine Kante %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="233"/>
+        <location filename="../app/gui/drag_tool.cpp" line="238"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>Kante %1 ist kein Falz (eine Kurve zwischen zwei Flächenstücken); nur Falze lassen sich ziehen.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="238"/>
+        <location filename="../app/gui/drag_tool.cpp" line="243"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>Kante %1 kann sich nicht bewegen: beide Enden sind festgehalten und sie hat keinen weiteren Kontrollpunkt.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="307"/>
+        <location filename="../app/gui/drag_tool.cpp" line="312"/>
         <source>Snapped to reference curve %1.</source>
         <translation>An Referenzkurve %1 gefangen.</translation>
     </message>
@@ -1962,8 +1967,8 @@
         <translation>Falz %1 wird um %2 mm entlang der Achse bewegt. Loslassen beendet, Esc bricht ab.</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="501"/>
-        <location filename="../app/gui/drag_tool.cpp" line="515"/>
+        <location filename="../app/gui/drag_tool.cpp" line="509"/>
+        <location filename="../app/gui/drag_tool.cpp" line="523"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -4815,67 +4820,67 @@
         <translation>(Löser: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="149"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="151"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>Abgebrochen; der Entwurf ist unverändert.</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="153"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="155"/>
         <source>Failed: %1</source>
         <translation>Fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="167"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="169"/>
         <source>converged</source>
         <translation>konvergiert</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="171"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="173"/>
         <source>tolerance reached</source>
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="171"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="173"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="178"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="180"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="186"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="188"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="192"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="194"/>
         <source>; settled a second time, since the first settling after the release did not converge</source>
         <translation>; ein zweites Mal zur Ruhe gebracht, da das erste Zur-Ruhe-Kommen nach dem Loslassen nicht konvergierte</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="196"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="198"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; das Beibehalten der Längen schlug fehl (%1), daher wurde das Ziehen mit Dehnen des Blatts wiederholt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="205"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="207"/>
         <source>followed %1 % of the drag and held back %2 mm, since the whole drag %3: the design stays at its last developable state</source>
         <translation>folgt %1 % des Ziehens und bleibt %2 mm zurück, denn das ganze Ziehen hätte so geendet: %3; der Entwurf bleibt in seinem letzten abwickelbaren Zustand</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="211"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="213"/>
         <source>not applied, since the motion %1: the design stays as it was</source>
         <translation>nicht angewendet, denn die Bewegung hätte so geendet: %1; der Entwurf bleibt, wie er war</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="219"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="221"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; vom Bogen um %1 mm zurückgehalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="234"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="236"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n Flächenstück faltet sich auf sich selbst zurück, wo die Fläche sich selbst überlappt: %1</numerusform>
@@ -4883,7 +4888,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="249"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="251"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; die Abwicklung überlappt sich selbst an %n Flächenstück (%1) und lässt sich nicht aus einem Bogen schneiden</numerusform>
@@ -4891,17 +4896,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="255"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="257"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="260"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="262"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="265"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="267"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
@@ -4975,17 +4980,17 @@
         <translation>; Ecke %1 liegt im Dreieck der festgehaltenen Ecken %2, %3 und %4, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="174"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="176"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>beim letzten gültigen Zustand angehalten, bevor eine Erzeugende, eine Kurve oder ein Flächenstück kollabierte</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="182"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="184"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (endete bei Iteration %1, der mit dem kleinsten Residuum)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="215"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="217"/>
         <source>taken back to where the drag started, since the drag %1: the design stays at its last developable state</source>
         <translation>zurückgenommen auf den Stand beim Drücken, denn das Ziehen hätte so geendet: %1; der Entwurf bleibt in seinem letzten abwickelbaren Zustand</translation>
     </message>
@@ -5066,7 +5071,7 @@
         <translation>Kein Lösen des Entwurfs in seinem jetzigen Zustand: Er wurde seit dem letzten Bericht bearbeitet, oder ein Schritt wurde rückgängig gemacht oder wiederhergestellt. Werkzeuge ▸ Lösen (Ctrl+Return) berichtet über ihn.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="151"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="152"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n Iteration in %3 ms.</numerusform>
@@ -5074,12 +5079,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="175"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="176"/>
         <source>&lt;br&gt;Crease conditions, sampled along the creases: largest residual %1.</source>
         <translation>&lt;br&gt;Falzbedingungen, entlang der Falze abgetastet: größtes Residuum %1.</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="182"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="183"/>
         <source>&lt;br&gt;Least developable patches (normalised residual): %1</source>
         <translation>&lt;br&gt;Am wenigsten abwickelbare Flächenstücke (normiertes Residuum): %1</translation>
     </message>

@@ -159,7 +159,7 @@
 <context>
     <name>devsurf::app::DragTool</name>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="110"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="148"/>
         <source>Drag %n vertices in the sheet</source>
         <translation>
             <numerusform>Drag %n vertex in the sheet</numerusform>
@@ -175,7 +175,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="117"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="155"/>
         <source>Dragging %n vertices %1 mm along their sheet; the surface follows. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>Dragging %n vertex %1 mm along its sheet; the surface follows. Release to finish, Esc cancels.</numerusform>
@@ -535,7 +535,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="234"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="236"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n patch folds over onto itself, where the surface overlaps itself: %1</numerusform>
@@ -543,7 +543,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="249"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="251"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; the development overlaps itself at %n patch (%1) and cannot be cut from one sheet</numerusform>
@@ -578,7 +578,7 @@
 <context>
     <name>devsurf::app::SolverPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="151"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="152"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration in %3 ms.</numerusform>

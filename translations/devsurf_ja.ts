@@ -187,26 +187,31 @@
     </message>
     <message>
         <location filename="../app/text/example_text.cpp" line="41"/>
+        <source>A ring of size bands folded along concentric curved creases, mountain and valley in turn, exactly: every crease a fold in a horizontal plane, every band a piece of one cone. It keeps its development on its sheet, a ring whose edges wave with its eight lobes; three inner vertices pinned.</source>
+        <translation>size 本の帯からなるリングを、同心の曲線の折り目に沿って山折りと谷折りを交互に、厳密に折ったもの: どの折り目も水平面内の折りで、どの帯も一つの錐面の一部です。展開図は、八つの膨らみに沿って縁が波打つリング状のシートの上に保持されます。内側の頂点 3 つを固定しています。</translation>
+    </message>
+    <message>
+        <location filename="../app/text/example_text.cpp" line="49"/>
         <source>A closed torus of size bands of cones, 2 × size strips around: developable strip by strip but not from one sheet; its cutting pattern has one piece per band.</source>
         <translation>錐面の帯 size 本からなる閉じたトーラスで、周方向に 2 × size 枚の帯があります。帯ごとには可展ですが 1 枚のシートからは作れません。型紙は帯ごとに 1 枚の部品になります。</translation>
     </message>
     <message>
-        <location filename="../app/text/example_text.cpp" line="47"/>
+        <location filename="../app/text/example_text.cpp" line="55"/>
         <source>A pleated column after Huffman&apos;s hexagonal column: a tube folded along size upright creases with the curved-fold condition, three bottom vertices pinned. It keeps its development around the cylinder it unrolls from. Drag a top vertex up or in.</source>
         <translation>ハフマンの六角柱にならったプリーツ状の柱: 曲線折りの条件を持つ size 本の縦の折り目に沿って折った筒で、下端の頂点 3 つを固定しています。展開図は、巻き戻すと得られる円柱の周りに保持されます。上端の頂点を上または内側にドラッグしてください。</translation>
     </message>
     <message>
-        <location filename="../app/text/example_text.cpp" line="53"/>
+        <location filename="../app/text/example_text.cpp" line="61"/>
         <source>A strip, a pointed strip, a cone and a planar patch; size intervals per curve.</source>
         <translation>ストリップ、尖ったストリップ、錐面、平面パッチ。曲線ごとにサイズ個の区間。</translation>
     </message>
     <message>
-        <location filename="../app/text/example_text.cpp" line="60"/>
+        <location filename="../app/text/example_text.cpp" line="68"/>
         <source>A flat square of size × size strips with curved creases carrying the curved-fold condition, holding its square sheet with the creases where they lie in it, its bottom-left corner pinned. Select the four middle vertices and drag them up (Drag tool, G) to fold it.</source>
         <translation>曲線折りの条件を持つ曲線の折り線が入った size × size 本のストリップからなる平らな正方形。正方形のシートを保持し、折り線はシート上の今の位置に保たれ、左下の角が固定されています。中央の4頂点を選択して上にドラッグすると (ドラッグツール、G) 折れます。</translation>
     </message>
     <message>
-        <location filename="../app/text/example_text.cpp" line="68"/>
+        <location filename="../app/text/example_text.cpp" line="76"/>
         <source>Two strips joined by one curved crease with the curved-fold condition, holding its rectangular sheet with the crease where it lies in it, its bottom-left corner pinned; size intervals per curve. Select both top corners and drag them up and in towards the crease to fold it.</source>
         <translation>曲線折りの条件を持つ1本の曲線の折り線でつながった2本のストリップ。長方形のシートを保持し、折り線はシート上の今の位置に保たれ、左下の角が固定されています。曲線1本あたり size 区間。上の両角を選択して、上へ、そして折り線の方へドラッグすると折れます。</translation>
     </message>
@@ -1800,26 +1805,26 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="108"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="146"/>
         <source>Drag vertex %1 in the sheet</source>
         <translation>シート上で頂点 %1 をドラッグ</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="110"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="148"/>
         <source>Drag %n vertices in the sheet</source>
         <translation>
             <numerusform>シート上で %n 個の頂点をドラッグ</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="117"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="155"/>
         <source>Dragging %n vertices %1 mm along their sheet; the surface follows. Release to finish, Esc cancels.</source>
         <translation>
             <numerusform>%n 個の頂点をシート上で %1 mm ドラッグ中。曲面が追従します。離すと確定、Esc で取り消し。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="122"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="160"/>
         <source>Dragging vertex %1 %2 mm along its sheet; the surface follows. Release to finish, Esc cancels.</source>
         <translation>頂点 %1 をシート上で %2 mm ドラッグ中。曲面が追従します。離すと確定、Esc で取り消し。</translation>
     </message>
@@ -1862,34 +1867,34 @@
         <translation>展開図の点をドラッグできるのは、曲面がシートを保持しているときだけです (ツール ▸ シートを保持)。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="195"/>
+        <location filename="../app/gui/drag_tool.cpp" line="200"/>
         <source>Vertex %1 is pinned and cannot be dragged; unpin it first.</source>
         <translation>頂点 %1 は固定されているためドラッグできません。先に固定を解除してください。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="204"/>
-        <location filename="../app/gui/drag_tool.cpp" line="247"/>
-        <location filename="../app/gui/drag_tool_sheet.cpp" line="65"/>
+        <location filename="../app/gui/drag_tool.cpp" line="209"/>
+        <location filename="../app/gui/drag_tool.cpp" line="252"/>
+        <location filename="../app/gui/drag_tool_sheet.cpp" line="51"/>
         <source>a drag started</source>
         <translation>ドラッグが始まりました</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="230"/>
+        <location filename="../app/gui/drag_tool.cpp" line="235"/>
         <source>There is no edge %1.</source>
         <translation>辺 %1 はありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="233"/>
+        <location filename="../app/gui/drag_tool.cpp" line="238"/>
         <source>Edge %1 is not a crease (a curve between two patches); only creases can be dragged.</source>
         <translation>辺 %1 は折り線 (2 つのパッチの間の曲線) ではありません。ドラッグできるのは折り線だけです。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="238"/>
+        <location filename="../app/gui/drag_tool.cpp" line="243"/>
         <source>Edge %1 cannot move: both its ends are pinned and it has no other control point.</source>
         <translation>辺 %1 は動かせません: 両端が固定されていて、ほかに制御点がありません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="307"/>
+        <location filename="../app/gui/drag_tool.cpp" line="312"/>
         <source>Snapped to reference curve %1.</source>
         <translation>参照曲線 %1 にスナップしました。</translation>
     </message>
@@ -1939,8 +1944,8 @@
         <translation>折り線 %1 を軸に沿って %2 mm 移動中。離すと終了、Esc で取り消し。</translation>
     </message>
     <message>
-        <location filename="../app/gui/drag_tool.cpp" line="501"/>
-        <location filename="../app/gui/drag_tool.cpp" line="515"/>
+        <location filename="../app/gui/drag_tool.cpp" line="509"/>
+        <location filename="../app/gui/drag_tool.cpp" line="523"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -4756,91 +4761,91 @@
         <translation>(ソルバー: %1)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="149"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="151"/>
         <source>Cancelled; the design is unchanged.</source>
         <translation>中止しました。デザインは変更されていません。</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="153"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="155"/>
         <source>Failed: %1</source>
         <translation>失敗: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="167"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="169"/>
         <source>converged</source>
         <translation>収束</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="171"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="173"/>
         <source>tolerance reached</source>
         <translation>許容値に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="171"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="173"/>
         <source>iteration limit reached</source>
         <translation>反復回数の上限に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="178"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="180"/>
         <source>failed</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="186"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="188"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>。ソルブで可展性が悪化したため元のままにしました (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="192"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="194"/>
         <source>; settled a second time, since the first settling after the release did not converge</source>
         <translation>; 離した後の最初の反復が収束しなかったため、もう一度収束させました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="196"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="198"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; 長さを保てなかったため (%1)、シートの伸びを許してドラッグをやり直しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="205"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="207"/>
         <source>followed %1 % of the drag and held back %2 mm, since the whole drag %3: the design stays at its last developable state</source>
         <translation>ドラッグの %1 % まで追従し、%2 mm 手前で止めました (ドラッグ全体の結果: %3)、デザインは最後の可展な状態のままです</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="211"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="213"/>
         <source>not applied, since the motion %1: the design stays as it was</source>
         <translation>適用しませんでした (動かした結果: %1)、デザインは元のままです</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="219"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="221"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; シートにより %1 mm 手前で止まりました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="234"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="236"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n 個のパッチが自身の上に折り返され、曲面が自己重複しています: %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="249"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="251"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; 展開図が %n 個のパッチで自身と重なっており (%1)、1 枚のシートから切り出せません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="255"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="257"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="260"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="262"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="265"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="267"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
@@ -4912,17 +4917,17 @@
         <translation>; 頂点 %1 は固定した頂点 %2、%3、%4 の三角形の内側にあり、これらの距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="174"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="176"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>母線、曲線またはパッチがつぶれる前の最後の有効な状態で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="182"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="184"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (残差が最小の反復 %1 で終了)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="215"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="217"/>
         <source>taken back to where the drag started, since the drag %1: the design stays at its last developable state</source>
         <translation>ドラッグ開始時の状態に戻しました (ドラッグの結果: %1)、デザインは最後の可展な状態のままです</translation>
     </message>
@@ -5002,19 +5007,19 @@
         <translation>現在の形状はまだソルブしていません: 前回のレポートの後に編集、元に戻す、またはやり直しがありました。ツール ▸ ソルブ (Ctrl+Return) で現在の形状についてレポートします。</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/panels/solver_panel.cpp" line="151"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="152"/>
         <source>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n iteration(s) in %3 ms.</source>
         <translation>
             <numerusform>&lt;b&gt;%1&lt;/b&gt;: %2&lt;br&gt;%n 回反復、%3 ms。</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="175"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="176"/>
         <source>&lt;br&gt;Crease conditions, sampled along the creases: largest residual %1.</source>
         <translation>&lt;br&gt;折り線の条件 (折り線に沿ってサンプリング): 最大残差 %1。</translation>
     </message>
     <message>
-        <location filename="../app/gui/panels/solver_panel.cpp" line="182"/>
+        <location filename="../app/gui/panels/solver_panel.cpp" line="183"/>
         <source>&lt;br&gt;Least developable patches (normalised residual): %1</source>
         <translation>&lt;br&gt;可展性の最も低いパッチ (正規化残差): %1</translation>
     </message>

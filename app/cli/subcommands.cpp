@@ -26,7 +26,8 @@ const std::vector<SubcommandSpec>& subcommands() {
         {"example",
          "example NAME [--size K] [--as-built | --hold-sheet] -o FILE.devsurf",
          "Write a built-in example (sheet, annulus, cylinder, mixed,\n"
-         "fig8, fig6, fig13, torus, column; `devsurf-cli examples` lists them).\n"
+         "fig8, fig6, fig13, torus, column, fig12; `devsurf-cli examples` lists\n"
+         "them).\n"
          "An example that starts flat holds the sheet it starts as, as\n"
          "File > New from Example makes it by default: its development kept on\n"
          "the smallest rectangle (annulus for the annulus, free for mixed)\n"

@@ -37,6 +37,14 @@ QString exampleDescription(const std::string& name) {
             "it keeps; the crease's middle and the rim below it pinned; size faces per strip. "
             "Drag the top of the rim up and in towards the crease to fold it.");
     }
+    if (name == "fig12") {
+        return QCoreApplication::translate(
+            "ExampleDialog",
+            "A ring of size bands folded along concentric curved creases, mountain and valley in "
+            "turn, exactly: every crease a fold in a horizontal plane, every band a piece of one "
+            "cone. It keeps its development on its sheet, a ring whose edges wave with its eight "
+            "lobes; three inner vertices pinned.");
+    }
     if (name == "torus") {
         return QCoreApplication::translate(
             "ExampleDialog",

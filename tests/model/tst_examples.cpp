@@ -10,6 +10,8 @@
 
 #include <QTest>
 
+#include <algorithm>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -137,6 +139,123 @@ private slots:
             QCOMPARE(s.sheetDomain().shape, SheetShape::Disk);
             QCOMPARE(s.sheetDomain().radius, 150.0);
             QVERIFY(std::hypot(s.sheetDomain().centre.x, s.sheetDomain().centre.y) < 1e-3);
+        }
+    }
+
+    void fig12IsARingFoldedExactlyFromItsSheet() {
+        // rings bands of 32 strips around, every circle between two bands a crease with the
+        // curved fold, three inner-rim vertices pinned, the development kept on an outline of
+        // two loops (the lobed ring) and isometric to the surface (pairs of every sampled face),
+        // its boundary on the outline. Both sides of every crease are mirror images in the
+        // horizontal plane the crease lies in (so the fold holds exactly), folded by a real
+        // angle, mountain and valley in turn from ring to ring.
+        for (int size : {3, 6, 9}) {
+            const CompositeSurface s = makeExample("fig12", size).surfaces[0];
+            QCOMPARE(s.faces().size(), std::size_t(32 * size));
+            QCOMPARE(s.pinnedVertices().size(), std::size_t(3));
+            QVERIFY(s.keepsDevelopment());
+            QCOMPARE(s.sheetDomain().shape, SheetShape::Outline);
+            QCOMPARE(s.sheetDomain().outline.size(), std::size_t(2));
+            const SampledMesh mesh = sampleSurface(s, kDevelopmentSamplesPerInterval);
+            const std::vector<Vec2>& flat = s.development();
+            QCOMPARE(flat.size(), mesh.vertices.size());
+            double stretch = 0.0;
+            for (const std::vector<int>& face : mesh.faces) {
+                for (std::size_t i = 0; i < face.size(); ++i) {
+                    for (std::size_t j = i + 1; j < face.size(); ++j) {
+                        const auto a = static_cast<std::size_t>(face[i]);
+                        const auto b = static_cast<std::size_t>(face[j]);
+                        stretch = std::max(stretch,
+                                           std::abs((mesh.vertices[a] - mesh.vertices[b]).norm() -
+                                                    (flat[a] - flat[b]).norm()));
+                    }
+                }
+            }
+            QVERIFY2(stretch < 1e-9, qPrintable(QString::number(stretch)));
+            const double gap = largestDomainGap(s.sheetDomain(), mesh, flat);
+            QVERIFY2(gap < 1e-9, qPrintable(QString::number(gap)));
+
+            // The strips on each side of every crease, and the crease's height.
+            std::map<EdgeId, std::vector<std::pair<const Strip*, bool>>> sides;
+            const std::vector<Strip> strips = stripsOf(s);
+            for (const Strip& strip : strips) {
+                sides[strip.aSide.edge].emplace_back(&strip, true);
+                sides[strip.bSide.edge].emplace_back(&strip, false);
+            }
+            int folds = 0;
+            double mirrorOff = 0.0;
+            double smallestFold = 4.0;
+            // For every crease ring (its edges joined end to end, named by its lowest vertex):
+            // its distance out and whether it is a ridge (both bands below) or a valley.
+            std::map<VertexId, VertexId> joined;
+            std::function<VertexId(VertexId)> ringOf = [&](VertexId v) {
+                const auto it = joined.find(v);
+                return it == joined.end() || it->second == v ? v : ringOf(it->second);
+            };
+            for (const auto& [id, record] : s.edges()) {
+                if (record.condition == CreaseCondition::CurvedFold) {
+                    const VertexId a = ringOf(record.from);
+                    const VertexId b = ringOf(record.to);
+                    joined[std::max(a, b)] = std::min(a, b);
+                }
+            }
+            std::map<VertexId, std::pair<double, int>> ringAt;
+            for (const auto& [id, record] : s.edges()) {
+                const bool crease = record.isSpline() && s.facesOfEdge(id).size() == 2;
+                QCOMPARE(record.condition == CreaseCondition::CurvedFold, crease);
+                if (!crease) {
+                    continue;
+                }
+                ++folds;
+                const double height = record.controlPoints.front().z;
+                for (const Vec3& p : record.controlPoints) {
+                    QCOMPARE(p.z, height);
+                }
+                const auto& pair = sides.at(id);
+                QCOMPARE(pair.size(), std::size_t(2));
+                for (int k = 1; k < 20; ++k) {
+                    const double e = k / 20.0; // along the edge as stored
+                    Vec3 normals[2];
+                    for (int side = 0; side < 2; ++side) {
+                        const auto [strip, onA] = pair[static_cast<std::size_t>(side)];
+                        const StripSide& stripSide = onA ? strip->aSide : strip->bSide;
+                        const double u = stripSide.reversed ? 1.0 - e : e;
+                        const BSplineCurve& own = onA ? strip->a : strip->b;
+                        const BSplineCurve& other = onA ? strip->b : strip->a;
+                        const Vec3 point = own.evaluate(u);
+                        const Vec3 tangent = own.evaluate(u + 1e-6) - own.evaluate(u - 1e-6);
+                        const Vec3 n = cross(tangent, other.evaluate(u) - point);
+                        normals[side] = n / n.norm();
+                    }
+                    const Vec3 mirrored(normals[0].x, normals[0].y, -normals[0].z);
+                    mirrorOff = std::max(mirrorOff, std::min((mirrored - normals[1]).norm(),
+                                                             (mirrored + normals[1]).norm()));
+                    smallestFold = std::min({smallestFold, (normals[0] - normals[1]).norm(),
+                                             (normals[0] + normals[1]).norm()});
+                }
+                int ridge = 0;
+                for (const auto& [strip, onA] : pair) {
+                    const double other = (onA ? strip->b : strip->a).evaluate(0.5).z;
+                    ridge += other < height ? 1 : -1;
+                }
+                QVERIFY(ridge == 2 || ridge == -2);
+                const Vec3 start = record.controlPoints.front();
+                const auto [it, fresh] = ringAt.emplace(
+                    ringOf(record.from), std::make_pair(std::hypot(start.x, start.y), ridge));
+                QVERIFY(fresh || it->second.second == ridge);
+            }
+            QCOMPARE(folds, 32 * (size - 1));
+            QVERIFY2(mirrorOff < 1e-6, qPrintable(QString::number(mirrorOff)));
+            QVERIFY2(smallestFold > 0.3, qPrintable(QString::number(smallestFold)));
+            QCOMPARE(ringAt.size(), std::size_t(size - 1));
+            std::vector<std::pair<double, int>> outwards;
+            for (const auto& [lowest, ring] : ringAt) {
+                outwards.push_back(ring);
+            }
+            std::sort(outwards.begin(), outwards.end());
+            for (std::size_t k = 1; k < outwards.size(); ++k) {
+                QCOMPARE(outwards[k].second, -outwards[k - 1].second);
+            }
         }
     }
 

@@ -123,6 +123,41 @@ private slots:
         }
     }
 
+    void aHeldRingIsCutInOnePieceFromItsKeptSheet() {
+        // fig12, a folded ring holding its sheet: its kept development closes up at the
+        // sampling it is kept at, but the pattern's finer sampling of its curves turns a little
+        // further around (unfolded afresh it misses closing by more than the pattern's
+        // tolerance), so it would be cut open along a ruling with the two sides of that seam
+        // overlapping. Laid onto the kept sheet it is one piece with its hole, not cut open,
+        // not overlapping itself, its coarse vertices where the sheet has them and its lengths
+        // those of the surface to within 0.01 mm.
+        const CompositeSurface surface = makeExample("fig12").surfaces[0];
+        PatternOptions options;
+        options.samplesPerInterval = 8;
+        const Development fresh = unfoldSampledMesh(sampleSurface(surface, 8));
+        QVERIFY2(fresh.closureError > 10 * options.tolerance,
+                 qPrintable(QString::number(fresh.closureError)));
+        Project project;
+        project.surfaces.push_back(surface);
+        const CuttingPattern pattern = buildCuttingPattern(project, options);
+        QCOMPARE(pattern.pieces.size(), std::size_t(1));
+        const PatternPiece& piece = pattern.pieces.front();
+        QVERIFY(!piece.selfOverlapping);
+        QCOMPARE(piece.holes.size(), std::size_t(1));
+        QCOMPARE(piece.vertices.size(), surface.vertices().size()); // none twice on a seam
+        QVERIFY(selfOverlappingPatches(surface).empty());
+        const std::vector<Vec2>& sheet = surface.development();
+        double worst = 0.0;
+        for (const auto& [a, pa] : piece.vertices) {
+            for (const auto& [b, pb] : piece.vertices) {
+                worst = std::max(worst, std::abs((pa - pb).norm() - (sheet[a] - sheet[b]).norm()));
+            }
+        }
+        QVERIFY2(worst < 1e-9, qPrintable(QString::number(worst)));
+        QVERIFY2(piece.maxIsometryError < 0.01,
+                 qPrintable(QString::number(piece.maxIsometryError)));
+    }
+
     void annulusKeepsItsHoleAndCircles() {
         SheetDomain ring;
         ring.shape = SheetShape::Annulus;
