@@ -236,14 +236,16 @@ int main(int argc, char** argv) {
         if (haveIterations) {
             paperOptions.iterations = studyOptions.iterations;
         }
-        // The Fig. 17 rows like for like, then the drag benchmark's drag on the Fig. 12 row's
-        // surface with its development (skipped on a capped, quick run).
+        // The Fig. 17 rows like for like, then the drag benchmark's drag on the first Fig. 12
+        // row's surface with its development (skipped on a capped, quick run).
         paperOptions.log = [](const std::string& line) { std::cerr << line << "\n"; };
         devsurf::bench::PaperReport report = devsurf::bench::runPaperBench(paperOptions);
+        bool dragged = false;
         for (const auto& row : report.rows) {
-            if (row.paper.figure != "12" || paperOptions.sizeCap != 0) {
+            if (row.paper.figure != "12" || paperOptions.sizeCap != 0 || dragged) {
                 continue;
             }
+            dragged = true;
             auto drag = [&row](devsurf::model::CompositeSurface surface, const char* development) {
                 const auto d = devsurf::bench::runSurfaceDrag(row.name, surface, {});
                 return devsurf::bench::PaperDrag{true,       d.model, development,     d.variables,

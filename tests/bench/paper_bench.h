@@ -25,7 +25,8 @@ struct PaperBenchOptions {
     // scale, which follows the model's resolution as its size grows) or × the diameter.
     bool noiseOfDiameter = false;
     double noise = 0.01;
-    std::vector<std::string> models; // rows by name (fig8, fig13, fig12, fig15a); empty: all
+    std::vector<std::string>
+        models; // rows by name (fig8, fig13, fig12, fig15a, fig12-folded); empty: all
     unsigned seed = 20150801u;
     double eps2 = 1e-3;
     // Largest example size tried (0: the example's own maximum); a small cap makes a fast run.

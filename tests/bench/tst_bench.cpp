@@ -166,14 +166,16 @@ private slots:
         QVERIFY(!root.value("start").toString().isEmpty());
         QCOMPARE(root.value("iterations").toInt(), 3);
         const QJsonArray rows = root.value("rows").toArray();
-        QCOMPARE(rows.size(), 4);
-        const char* figures[] = {"8", "13", "12", "15a"};
-        const int paperVariables[] = {6147, 3795, 29574, 39648};
-        for (int k = 0; k < 4; ++k) {
+        QCOMPARE(rows.size(), 5);
+        const char* figures[] = {"8", "13", "12", "15a", "12"};
+        const int paperVariables[] = {6147, 3795, 29574, 39648, 29574};
+        for (int k = 0; k < 5; ++k) {
             const QJsonObject row = rows[k].toObject();
             QCOMPARE(row.value("paper_figure").toString(), QString(figures[k]));
             QCOMPARE(row.value("paper_variables").toInt(), paperVariables[k]);
-            QVERIFY(row.value("size").toInt() >= 1 && row.value("size").toInt() <= 2);
+            // (The folded fig12 comes in 3 rings at the least.)
+            QVERIFY(row.value("size").toInt() >= 1 &&
+                    row.value("size").toInt() <= (k == 4 ? 3 : 2));
             // The sheet is a shape, so the development is variables of the problem.
             QVERIFY(row.value("development_variables").toInt() > 0);
             QVERIFY(row.value("variables").toInt() > row.value("development_variables").toInt());
