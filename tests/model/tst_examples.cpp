@@ -41,6 +41,27 @@ double maxDevelopabilityResidual(const CompositeSurface& surface, const Strip& s
     return worst;
 }
 
+// The largest difference (mm) between a distance in space and in the development over every
+// pair of vertices of every sampled face; across a cylinder's cut, the second vertex read one
+// period over.
+double pairStretch(const SampledMesh& mesh, const std::vector<Vec2>& flat,
+                   const std::optional<Vec2>& period) {
+    double stretch = 0.0;
+    for (const std::vector<int>& face : mesh.faces) {
+        for (std::size_t i = 0; i < face.size(); ++i) {
+            for (std::size_t j = i + 1; j < face.size(); ++j) {
+                const auto a = static_cast<std::size_t>(face[i]);
+                const auto b = static_cast<std::size_t>(face[j]);
+                const Vec2 atB =
+                    flat[b] + (period ? *period * periodShift(flat[a], flat[b], period) : Vec2());
+                stretch = std::max(stretch, std::abs((mesh.vertices[a] - mesh.vertices[b]).norm() -
+                                                     (flat[a] - atB).norm()));
+            }
+        }
+    }
+    return stretch;
+}
+
 } // namespace
 
 class TstExamples : public QObject {
@@ -159,18 +180,7 @@ private slots:
             const SampledMesh mesh = sampleSurface(s, kDevelopmentSamplesPerInterval);
             const std::vector<Vec2>& flat = s.development();
             QCOMPARE(flat.size(), mesh.vertices.size());
-            double stretch = 0.0;
-            for (const std::vector<int>& face : mesh.faces) {
-                for (std::size_t i = 0; i < face.size(); ++i) {
-                    for (std::size_t j = i + 1; j < face.size(); ++j) {
-                        const auto a = static_cast<std::size_t>(face[i]);
-                        const auto b = static_cast<std::size_t>(face[j]);
-                        stretch = std::max(stretch,
-                                           std::abs((mesh.vertices[a] - mesh.vertices[b]).norm() -
-                                                    (flat[a] - flat[b]).norm()));
-                    }
-                }
-            }
+            const double stretch = pairStretch(mesh, flat, std::nullopt);
             QVERIFY2(stretch < 1e-9, qPrintable(QString::number(stretch)));
             const double gap = largestDomainGap(s.sheetDomain(), mesh, flat);
             QVERIFY2(gap < 1e-9, qPrintable(QString::number(gap)));
@@ -349,22 +359,7 @@ private slots:
             QCOMPARE(flat.size(), mesh.vertices.size());
             const std::optional<Vec2> period = domainPeriod(held.sheetDomain());
             QCOMPARE(period.has_value(), info.name == "cylinder");
-            double stretch = 0.0;
-            for (const std::vector<int>& face : mesh.faces) {
-                for (std::size_t i = 0; i < face.size(); ++i) {
-                    for (std::size_t j = i + 1; j < face.size(); ++j) {
-                        const auto a = static_cast<std::size_t>(face[i]);
-                        const auto b = static_cast<std::size_t>(face[j]);
-                        // Across the cylinder's cut, b read one period over.
-                        const Vec2 atB =
-                            flat[b] +
-                            (period ? *period * periodShift(flat[a], flat[b], period) : Vec2());
-                        stretch = std::max(stretch,
-                                           std::abs((mesh.vertices[a] - mesh.vertices[b]).norm() -
-                                                    (flat[a] - atB).norm()));
-                    }
-                }
-            }
+            const double stretch = pairStretch(mesh, flat, period);
             QVERIFY2(stretch < 1e-9, qPrintable(QString::number(stretch)));
             // The annulus's rims interpolate their circles, 0.004 mm between the samples.
             const double gap = largestDomainGap(held.sheetDomain(), mesh, flat);
