@@ -51,6 +51,18 @@ Vec3 lerp(const Vec3& a, const Vec3& b, double t) {
     return a * (1.0 - t) + b * t;
 }
 
+std::vector<Vec3> alongEndTangents(std::vector<Vec3> points, const std::optional<Vec3>& start,
+                                   const std::optional<Vec3>& end) {
+    const std::size_t last = points.size() - 1;
+    if (start) {
+        points[1] = points[0] + *start * (points[1] - points[0]).norm();
+    }
+    if (end) {
+        points[last - 1] = points[last] - *end * (points[last] - points[last - 1]).norm();
+    }
+    return points;
+}
+
 // A flat rectangle cut into size × size strips: rows bounded by straight S-edges (creases),
 // split by rulings into size faces each (Fig. 8).
 CompositeSurface makeSheet(int size) {
@@ -272,11 +284,8 @@ CompositeSurface makeTorus(int size) {
                                    [&](double t) { return onCircle(j, phi0 + t * (phi1 - phi0)); });
             // The curve's ends along the circle's tangent, so that the circles pass smoothly
             // through the vertices and the four right angles there sum to 2π.
-            const std::size_t last = points.size() - 1;
-            const Vec3 t0(-std::sin(phi0), std::cos(phi0), 0.0);
-            const Vec3 t1(-std::sin(phi1), std::cos(phi1), 0.0);
-            points[1] = points[0] + t0 * (points[1] - points[0]).norm();
-            points[last - 1] = points[last] - t1 * (points[last] - points[last - 1]).norm();
+            points = alongEndTangents(points, Vec3(-std::sin(phi0), std::cos(phi0), 0.0),
+                                      Vec3(-std::sin(phi1), std::cos(phi1), 0.0));
             s.setSpline(grid[j][i], grid[j][next], space, points);
         }
     }

@@ -6,6 +6,7 @@
 #include "composite_surface.h"
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace devsurf::model::example_shapes {
@@ -21,6 +22,11 @@ std::vector<Vec3> controlPointsAlong(const SplineSpace& space, const Vec3& start
 std::vector<Vec3> controlPointsThrough(const SplineSpace& space, const Vec3& start, const Vec3& end,
                                        const std::function<Vec3(double)>& f);
 Vec3 lerp(const Vec3& a, const Vec3& b, double t);
+// `points` with the second and the last-but-one control point moved onto the given unit
+// tangents at the ends (each at its distance from its end), where given: consecutive curves
+// through a vertex then meet tangent-continuously, one smooth curve as the solver keeps it.
+std::vector<Vec3> alongEndTangents(std::vector<Vec3> points, const std::optional<Vec3>& start,
+                                   const std::optional<Vec3>& end);
 
 // Plain shapes (model/example_shapes.cpp): size is each example's resolution.
 CompositeSurface makeSheet(int size);

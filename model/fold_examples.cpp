@@ -57,10 +57,7 @@ CompositeSurface makeFig8(int size) {
             // ends (at their sampled distances), so that consecutive segments meet
             // tangent-continuously: the crease is one smooth curve through each vertex, as the
             // solver keeps it, and Solve leaves the sheet where it is.
-            const std::size_t last = points.size() - 1;
-            points[1] = points[0] + creaseTangent(j, x0) * (points[1] - points[0]).norm();
-            points[last - 1] =
-                points[last] - creaseTangent(j, x1) * (points[last] - points[last - 1]).norm();
+            points = alongEndTangents(points, creaseTangent(j, x0), creaseTangent(j, x1));
             const EdgeId edge = s.setSpline(grid[j][i], grid[j][i + 1], space, points);
             if (j > 0 && j < size) {
                 s.setCreaseCondition(edge, CreaseCondition::CurvedFold);
@@ -163,14 +160,9 @@ CompositeSurface makeFig13(int size) {
         std::vector<Vec3> points =
             along(onCrease[k], onCrease[k + 1], [&](double t) { return crease(k0 + t); });
         // Tangent-continuous through the interior crease vertices, as fig8's creases.
-        const std::size_t last = points.size() - 1;
-        if (k > 0) {
-            points[1] = points[0] + creaseTangent(k) * (points[1] - points[0]).norm();
-        }
-        if (k + 1 < size) {
-            points[last - 1] =
-                points[last] - creaseTangent(k + 1) * (points[last] - points[last - 1]).norm();
-        }
+        points = alongEndTangents(
+            points, k > 0 ? std::optional<Vec3>(creaseTangent(k)) : std::nullopt,
+            k + 1 < size ? std::optional<Vec3>(creaseTangent(k + 1)) : std::nullopt);
         const EdgeId fold = s.setSpline(onCrease[k], onCrease[k + 1], space, points);
         s.setCreaseCondition(fold, CreaseCondition::CurvedFold);
         // The rim on the circle, so that the development starts on its sheet.

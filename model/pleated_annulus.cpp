@@ -27,6 +27,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 
 namespace devsurf::model::example_shapes {
 
@@ -95,57 +96,51 @@ struct LobedCone {
     }
 };
 
-// `points` with the second and the last-but-one control point moved onto the curve's tangent
-// at its ends (at their distances), so that the sectors' splines meet tangent-continuously:
-// each crease and rim is one smooth curve through its vertices, as the solver keeps it.
-std::vector<Vec3> tangentContinuous(std::vector<Vec3> points,
-                                    const std::function<Vec3(double)>& curve) {
-    // Central differences, extrapolated (Richardson): the tangent to ~1e-13, so that the
-    // solver's tangent continuity at the vertices holds as built.
-    auto tangent = [&curve](double u) {
-        const double h = 1e-3;
-        const Vec3 wide = (curve(u + h) - curve(u - h)) / (2.0 * h);
-        const Vec3 narrow = (curve(u + 0.5 * h) - curve(u - 0.5 * h)) / h;
-        return (narrow * 4.0 - wide) / 3.0;
-    };
-    const Vec3 startTangent = tangent(0.0);
-    const Vec3 endTangent = tangent(1.0);
-    const std::size_t last = points.size() - 1;
-    points[1] = points[0] + startTangent * ((points[1] - points[0]).norm() / startTangent.norm());
-    points[last - 1] =
-        points[last] - endTangent * ((points[last] - points[last - 1]).norm() / endTangent.norm());
-    return points;
+// The unit tangent of `curve` at u: central differences extrapolated (Richardson), to ~1e-13,
+// so that the solver's tangent continuity at the vertices holds as built (a one-sided
+// difference left it at 2.9e-6, and Solve ran all its iterations).
+Vec3 unitTangent(const std::function<Vec3(double)>& curve, double u) {
+    const double h = 1e-3;
+    const Vec3 wide = (curve(u + h) - curve(u - h)) / (2.0 * h);
+    const Vec3 narrow = (curve(u + 0.5 * h) - curve(u - 0.5 * h)) / h;
+    const Vec3 tangent = (narrow * 4.0 - wide) / 3.0;
+    return tangent / tangent.norm();
 }
 
 // The crease curve at unit height as splines, one per sector (control points in the plane
-// z = 1, so that c_j times it lies in the fold plane z = c_j), and the directions of its
-// samples as the sampled mesh takes them.
+// z = 1, so that c_j times it lies in the fold plane z = c_j), and the rays of its samples as the
+// sampled mesh takes them: `samples` to a sector, around once.
 struct UnitCrease {
     std::vector<std::vector<Vec3>> sectors;
-    std::vector<Vec3> sampleDirections; // around once, the first not repeated at the end
-    double turn = 0.0;                  // the angles between consecutive sample directions
+    std::vector<BSplineCurve> splines;  // of `sectors`
+    std::vector<Vec3> sampleDirections; // the first not repeated at the end
+    std::vector<double> rayTurn;        // the angle from the first ray, along the fan
+    double turn = 0.0;                  // around once, back to the first
+    int samples = 0;
 };
 
 UnitCrease unitCrease(const LobedCone& cone, const SplineSpace& space, int sectors) {
     UnitCrease crease;
     const std::vector<double> ends = cone.equalArcs(sectors);
-    const int samples = space.intervals * kDevelopmentSamplesPerInterval;
+    crease.samples = space.intervals * kDevelopmentSamplesPerInterval;
     for (int i = 0; i < sectors; ++i) {
         const double t0 = ends[static_cast<std::size_t>(i)];
         const double t1 = ends[static_cast<std::size_t>(i) + 1];
         auto curve = [&](double u) { return cone.atUnitHeight(t0 + u * (t1 - t0)); };
         crease.sectors.push_back(
-            tangentContinuous(controlPointsThrough(space, curve(0.0), curve(1.0), curve), curve));
-        const BSplineCurve spline = BSplineCurve::uniform(space, crease.sectors.back());
-        for (int k = 0; k < samples; ++k) {
-            const Vec3 p = spline.evaluate(static_cast<double>(k) / samples);
+            alongEndTangents(controlPointsThrough(space, curve(0.0), curve(1.0), curve),
+                             unitTangent(curve, 0.0), unitTangent(curve, 1.0)));
+        crease.splines.push_back(BSplineCurve::uniform(space, crease.sectors.back()));
+        for (int k = 0; k < crease.samples; ++k) {
+            const Vec3 p = crease.splines.back().evaluate(static_cast<double>(k) / crease.samples);
             crease.sampleDirections.push_back(p / p.norm());
         }
     }
     const std::size_t n = crease.sampleDirections.size();
     for (std::size_t k = 0; k < n; ++k) {
-        const Vec3 d = crease.sampleDirections[(k + 1) % n] - crease.sampleDirections[k];
-        crease.turn += 2.0 * std::asin(0.5 * d.norm());
+        crease.rayTurn.push_back(crease.turn);
+        crease.turn +=
+            angleBetween(crease.sampleDirections[k], crease.sampleDirections[(k + 1) % n]);
     }
     return crease;
 }
@@ -177,8 +172,7 @@ CompositeSurface makeFig12(int rings) {
     // the inner rim reaches in to kPleatInnerRadius, the outer out to kPleatOuterRadius.
     double nearest = std::numeric_limits<double>::infinity();
     double farthest = 0.0;
-    for (const auto& points : unit.sectors) {
-        const BSplineCurve spline = BSplineCurve::uniform(space, points);
+    for (const BSplineCurve& spline : unit.splines) {
         for (int k = 0; k <= 60; ++k) {
             const double rho = spline.evaluate(k / 60.0).norm();
             nearest = std::min(nearest, rho);
@@ -228,12 +222,14 @@ CompositeSurface makeFig12(int rings) {
             s.addFace({grid[j][i], grid[j + 1][i], grid[j + 1][next], grid[j][next]});
         }
     }
+    std::map<EdgeId, int> sectorOf;
     for (int j = 0; j <= rings; ++j) {
         for (int i = 0; i < sectors; ++i) {
             const int next = (i + 1) % sectors;
             std::vector<Vec3> points = curvePoints(j, i);
             points.back() = s.position(grid[j][next]); // the same point, bit for bit
             const EdgeId edge = s.setSpline(grid[j][i], grid[j][next], space, points);
+            sectorOf[edge] = i;
             if (j > 0 && j < rings) {
                 s.setCreaseCondition(edge, CreaseCondition::CurvedFold);
             }
@@ -244,74 +240,53 @@ CompositeSurface makeFig12(int rings) {
         s.setPinned(grid[0][k * sectors / 3], true);
     }
 
-    // The development: every sample lies on a ray of the fan (the samples of all curves share
-    // them), at its distance from the apex on the unfolded cone, turned by the angle its ray
-    // makes in the sampled fan. Found by its azimuth, which folding leaves as it is.
+    // The development: every sample lies on a ray of the fan (sample k of sector i's curves on
+    // ray i · samples + k), at its distance from the apex on the unfolded cone, turned by the
+    // angle its ray makes in the fan (scaled by what the bisection left of 2π − turn, a few
+    // 1e-12, so that it closes exactly).
     const SampledMesh mesh = sampleSurface(s, kDevelopmentSamplesPerInterval);
     const std::size_t rays = unit.sampleDirections.size();
-    std::vector<double> rayTurn(rays);
-    std::vector<double> rayAzimuth(rays);
-    for (std::size_t k = 0; k < rays; ++k) {
-        const Vec3& d = unit.sampleDirections[k];
-        rayAzimuth[k] = std::atan2(d.y, d.x);
-        if (k > 0) {
-            rayTurn[k] =
-                rayTurn[k - 1] + 2.0 * std::asin(0.5 * (d - unit.sampleDirections[k - 1]).norm());
-        }
-    }
-    // (Scaled by what the bisection left of 2π − turn, a few 1e-12, so that it closes exactly.)
-    auto place = [&](std::size_t ray, double rho) {
-        const double angle = rayTurn[ray] * (2.0 * kPi / unit.turn);
+    auto place = [&](double turned, double rho) {
+        const double angle = turned * (2.0 * kPi / unit.turn);
         return Vec2(rho * std::cos(angle), rho * std::sin(angle));
     };
-    std::vector<Vec2> development;
-    development.reserve(mesh.vertices.size());
-    for (const Vec3& p : mesh.vertices) {
-        const double azimuth = std::atan2(p.y, p.x);
-        std::size_t ray = 0;
-        double gap = 4.0 * kPi;
-        for (std::size_t k = 0; k < rays; ++k) {
-            const double g = std::abs(std::remainder(azimuth - rayAzimuth[k], 2.0 * kPi));
-            if (g < gap) {
-                gap = g;
-                ray = k;
-            }
+    std::vector<Vec2> development(mesh.vertices.size());
+    for (const SampledMesh::Polyline& line : mesh.splineEdges) {
+        for (std::size_t k = 0; k < line.vertices.size(); ++k) {
+            const std::size_t ray =
+                (static_cast<std::size_t>(sectorOf.at(line.edge) * unit.samples) + k) % rays;
+            const Vec3& d = unit.sampleDirections[ray];
+            const Vec3& p = mesh.vertices[static_cast<std::size_t>(line.vertices[k])];
+            development[static_cast<std::size_t>(line.vertices[k])] =
+                place(unit.rayTurn[ray], std::hypot(p.x, p.y) / std::hypot(d.x, d.y));
         }
-        const Vec3& d = unit.sampleDirections[ray];
-        const double horizontal = std::hypot(p.x, p.y);
-        development.push_back(place(ray, horizontal / std::hypot(d.x, d.y)));
     }
     s.setKeepsDevelopment(true);
     s.setDevelopment(development);
 
     // The sheet: the rims as its outline, through their samples (so that these lie on it
     // exactly) and 7 points between each two, where the rim's ray lies between theirs.
-    auto angleBetween = [](const Vec3& a, const Vec3& b) {
-        return 2.0 * std::asin(0.5 * (b - a).norm());
-    };
-    const int samples = space.intervals * kDevelopmentSamplesPerInterval;
     const int between = 8;
     SheetDomain sheet;
     sheet.shape = SheetShape::Outline;
     for (int j : {rings, 0}) {
+        const double height = heights[static_cast<std::size_t>(j)];
         std::vector<Vec2> loop;
         for (std::size_t k = 0; k < rays; ++k) {
-            const BSplineCurve spline =
-                BSplineCurve::uniform(space, unit.sectors[k / static_cast<std::size_t>(samples)]);
+            const BSplineCurve& spline = unit.splines[k / static_cast<std::size_t>(unit.samples)];
             const Vec3& d0 = unit.sampleDirections[k];
             const Vec3& d1 = unit.sampleDirections[(k + 1) % rays];
             const double step = angleBetween(d0, d1);
-            for (int m = 0; m < between; ++m) {
-                const double u = (static_cast<double>(k % static_cast<std::size_t>(samples)) +
+            loop.push_back(place(unit.rayTurn[k], height / d0.z));
+            for (int m = 1; m < between; ++m) {
+                const double u = (static_cast<double>(k % static_cast<std::size_t>(unit.samples)) +
                                   static_cast<double>(m) / between) /
-                                 samples;
-                const Vec3 p = spline.evaluate(u) * heights[static_cast<std::size_t>(j)];
+                                 unit.samples;
+                const Vec3 p = spline.evaluate(u) * height;
                 const Vec3 d = p / p.norm();
                 const double before = angleBetween(d0, d);
-                const double share = m == 0 ? 0.0 : before / (before + angleBetween(d, d1));
-                const double angle = (rayTurn[k] + share * step) * (2.0 * kPi / unit.turn);
-                const double rho = m == 0 ? heights[static_cast<std::size_t>(j)] / d0.z : p.norm();
-                loop.emplace_back(rho * std::cos(angle), rho * std::sin(angle));
+                const double share = before / (before + angleBetween(d, d1));
+                loop.push_back(place(unit.rayTurn[k] + share * step, p.norm()));
             }
         }
         sheet.outline.push_back(std::move(loop));

@@ -22,14 +22,14 @@ bool copiesCoincide(const CutMesh& cut, const Development& development, double t
     return true;
 }
 
-void layOntoKeptSheet(const CompositeSurface& surface, const SampledMesh& mesh, const CutMesh& cut,
+bool layOntoKeptSheet(const CompositeSurface& surface, const SampledMesh& mesh, const CutMesh& cut,
                       Development& development) {
     const std::vector<Vec2>& kept = surface.development();
     if (!surface.keepsDevelopment() || development.period || development.components != 1 ||
         surface.sheetDomain().shape == SheetShape::Cylinder ||
         development.vertices.size() != cut.original.size() ||
         kept.size() != sampledVertexCount(surface, kDevelopmentSamplesPerInterval)) {
-        return;
+        return false;
     }
     // The kept development's own sampling, cached with the surface's other derived geometry.
     const auto keptSampling = DerivedGeometry::of(surface, kDevelopmentSamplesPerInterval);
@@ -46,7 +46,7 @@ void layOntoKeptSheet(const CompositeSurface& surface, const SampledMesh& mesh, 
     for (const SampledMesh::Polyline& line : mesh.splineEdges) {
         const auto it = keptLine.find(line.edge);
         if (it == keptLine.end() || line.vertices.size() < 2) {
-            return;
+            return false;
         }
         const std::size_t fine = line.vertices.size() - 1;
         const std::size_t other = it->second->vertices.size() - 1;
@@ -72,7 +72,7 @@ void layOntoKeptSheet(const CompositeSurface& surface, const SampledMesh& mesh, 
     }
     const std::optional<PlaneMotion> motion = fitPlaneMotion(from, to);
     if (!motion) {
-        return;
+        return false;
     }
     std::vector<Vec2> laid(development.vertices.size());
     for (std::size_t v = 0; v < laid.size(); ++v) {
@@ -113,6 +113,7 @@ void layOntoKeptSheet(const CompositeSurface& surface, const SampledMesh& mesh, 
         }
     }
     development.vertices = std::move(placed);
+    return true;
 }
 
 } // namespace devsurf::model::pattern

@@ -17,9 +17,9 @@ bool copiesCoincide(const CutMesh& cut, const Development& development, double t
 // onto the kept development: by the rigid motion that best maps the samples both share, then
 // each shared sample put exactly where the kept sheet has it and the samples between two of
 // them along a curve moved with them linearly (each side of a cut with its own copies).
-// Unchanged for a surface that keeps no development (or one from another sampling), or a
-// sheet around a cylinder.
-void layOntoKeptSheet(const CompositeSurface& surface, const SampledMesh& mesh, const CutMesh& cut,
+// Unchanged, and false, for a surface that keeps no development (or one from another sampling),
+// or a sheet around a cylinder.
+bool layOntoKeptSheet(const CompositeSurface& surface, const SampledMesh& mesh, const CutMesh& cut,
                       Development& development);
 
 } // namespace devsurf::model::pattern

@@ -130,8 +130,7 @@ std::vector<PieceBuild> developAlong(const CompositeSurface& surface, int surfac
         // unfolding here of the curves between its samples need not (a folded annulus: by
         // 0.9 mm). Laid onto the kept sheet, the copies of the cut meet, and it is not cut.
         Development onSheet = development;
-        layOntoKeptSheet(surface, mesh, cut, onSheet);
-        if (onSheet.vertices != development.vertices &&
+        if (layOntoKeptSheet(surface, mesh, cut, onSheet) &&
             copiesCoincide(cut, onSheet, options.tolerance)) {
             CutMesh whole = splitAlong(mesh, {});
             std::vector<int> anyCopy(mesh.vertices.size(), 0);

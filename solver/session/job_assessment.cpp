@@ -123,7 +123,7 @@ void measureIsometry(SurfaceAssessment& assessment, const model::CompositeSurfac
         }
         if (heldFlat) {
             // The pattern is laid onto the kept sheet: off by as much as the surface is.
-            isometry = std::max(isometry, model::keptSheetStretch(result));
+            isometry = std::max(isometry, assessment.sheetStretchMm);
         }
         if (extent > 0.0) {
             assessment.sheetExtent = extent;
@@ -167,8 +167,8 @@ void measureSettled(SurfaceAssessment& assessment, const model::CompositeSurface
     } catch (const std::exception&) {
     }
     try {
+        assessment.sheetStretchMm = model::keptSheetStretch(result); // measureIsometry's too
         measureIsometry(assessment, result);
-        assessment.sheetStretchMm = model::keptSheetStretch(result);
     } catch (const std::exception&) {
         // Too degenerate to sample: left unmeasured.
     }

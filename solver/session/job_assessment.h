@@ -24,7 +24,8 @@ std::optional<model::Vec2> sheetPlace(const model::CompositeSurface& surface,
 void measureSheetGaps(SurfaceAssessment& assessment, const model::CompositeSurface& surface,
                       const std::vector<SheetHandle>& sheet);
 
-// How far the sheet is from isometric to its development (SurfaceAssessment::isometryMm).
+// How far the sheet is from isometric to its development (SurfaceAssessment::isometryMm); a
+// held sheet by no less than assessment.sheetStretchMm, measured before.
 void measureIsometry(SurfaceAssessment& assessment, const model::CompositeSurface& result);
 
 // The geometry of a settled result: fold-overs, overlaps, creases, vertex stars, worst faces.
