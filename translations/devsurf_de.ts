@@ -4840,47 +4840,52 @@
         <translation>Toleranz erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="173"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="176"/>
+        <source>stopped after %1 iterations, the residual no longer falling</source>
+        <translation>nach %1 Iterationen beendet, da das Residuum nicht mehr fiel</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_report_text.cpp" line="179"/>
         <source>iteration limit reached</source>
         <translation>Iterationsgrenze erreicht</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="180"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="187"/>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="188"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="195"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>; unverändert gelassen, da das Lösen sie weniger abwickelbar machte (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="194"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="201"/>
         <source>; settled a second time, since the first settling after the release did not converge</source>
         <translation>; ein zweites Mal zur Ruhe gebracht, da das erste Zur-Ruhe-Kommen nach dem Loslassen nicht konvergierte</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="198"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="205"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; das Beibehalten der Längen schlug fehl (%1), daher wurde das Ziehen mit Dehnen des Blatts wiederholt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="207"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="214"/>
         <source>followed %1 % of the drag and held back %2 mm, since the whole drag %3: the design stays at its last developable state</source>
         <translation>folgt %1 % des Ziehens und bleibt %2 mm zurück, denn das ganze Ziehen hätte so geendet: %3; der Entwurf bleibt in seinem letzten abwickelbaren Zustand</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="213"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="220"/>
         <source>not applied, since the motion %1: the design stays as it was</source>
         <translation>nicht angewendet, denn die Bewegung hätte so geendet: %1; der Entwurf bleibt, wie er war</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="221"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="228"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; vom Bogen um %1 mm zurückgehalten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="236"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="243"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n Flächenstück faltet sich auf sich selbst zurück, wo die Fläche sich selbst überlappt: %1</numerusform>
@@ -4888,7 +4893,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="251"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="258"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; die Abwicklung überlappt sich selbst an %n Flächenstück (%1) und lässt sich nicht aus einem Bogen schneiden</numerusform>
@@ -4896,17 +4901,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="257"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="264"/>
         <source>surface %1 %2</source>
         <translation>Fläche %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="262"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="269"/>
         <source>patch %1: %2</source>
         <translation>Flächenstück %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="267"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="274"/>
         <source>nothing was solved.</source>
         <translation>es wurde nichts gelöst.</translation>
     </message>
@@ -4980,17 +4985,17 @@
         <translation>; Ecke %1 liegt im Dreieck der festgehaltenen Ecken %2, %3 und %4, die so weit voneinander entfernt sind wie im flachen Blatt; Biegen kann sie daher nicht bewegen: das Blatt wurde gedehnt</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="176"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="183"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>beim letzten gültigen Zustand angehalten, bevor eine Erzeugende, eine Kurve oder ein Flächenstück kollabierte</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="184"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="191"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (endete bei Iteration %1, der mit dem kleinsten Residuum)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="217"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="224"/>
         <source>taken back to where the drag started, since the drag %1: the design stays at its last developable state</source>
         <translation>zurückgenommen auf den Stand beim Drücken, denn das Ziehen hätte so geendet: %1; der Entwurf bleibt in seinem letzten abwickelbaren Zustand</translation>
     </message>

@@ -535,7 +535,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="236"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="243"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n patch folds over onto itself, where the surface overlaps itself: %1</numerusform>
@@ -543,7 +543,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="251"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="258"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; the development overlaps itself at %n patch (%1) and cannot be cut from one sheet</numerusform>

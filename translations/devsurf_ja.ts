@@ -4781,71 +4781,76 @@
         <translation>許容値に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="173"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="176"/>
+        <source>stopped after %1 iterations, the residual no longer falling</source>
+        <translation>残差が下がらなくなったため %1 回の反復で停止</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/solve_report_text.cpp" line="179"/>
         <source>iteration limit reached</source>
         <translation>反復回数の上限に到達</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="180"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="187"/>
         <source>failed</source>
         <translation>失敗</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="188"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="195"/>
         <source>; left as it was, since solving made it less developable (%1 → %2)</source>
         <translation>。ソルブで可展性が悪化したため元のままにしました (%1 → %2)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="194"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="201"/>
         <source>; settled a second time, since the first settling after the release did not converge</source>
         <translation>; 離した後の最初の反復が収束しなかったため、もう一度収束させました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="198"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="205"/>
         <source>; keeping lengths failed (%1), so the drag was replayed letting the sheet stretch</source>
         <translation>; 長さを保てなかったため (%1)、シートの伸びを許してドラッグをやり直しました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="207"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="214"/>
         <source>followed %1 % of the drag and held back %2 mm, since the whole drag %3: the design stays at its last developable state</source>
         <translation>ドラッグの %1 % まで追従し、%2 mm 手前で止めました (ドラッグ全体の結果: %3)、デザインは最後の可展な状態のままです</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="213"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="220"/>
         <source>not applied, since the motion %1: the design stays as it was</source>
         <translation>適用しませんでした (動かした結果: %1)、デザインは元のままです</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="221"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="228"/>
         <source>; held back %1 mm by the sheet</source>
         <translation>; シートにより %1 mm 手前で止まりました</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="236"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="243"/>
         <source>; %n patch(es) fold over onto themselves, where the surface overlaps itself: %1</source>
         <translation>
             <numerusform>; %n 個のパッチが自身の上に折り返され、曲面が自己重複しています: %1</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/solve_report_text.cpp" line="251"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="258"/>
         <source>; the development overlaps itself at %n patch(es) (%1) and cannot be cut from one sheet</source>
         <translation>
             <numerusform>; 展開図が %n 個のパッチで自身と重なっており (%1)、1 枚のシートから切り出せません</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="257"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="264"/>
         <source>surface %1 %2</source>
         <translation>曲面 %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="262"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="269"/>
         <source>patch %1: %2</source>
         <translation>パッチ %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="267"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="274"/>
         <source>nothing was solved.</source>
         <translation>何もソルブされませんでした。</translation>
     </message>
@@ -4917,17 +4922,17 @@
         <translation>; 頂点 %1 は固定した頂点 %2、%3、%4 の三角形の内側にあり、これらの距離は平らなシートと同じなので、曲げだけでは動かせません。シートは伸ばされました</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="176"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="183"/>
         <source>stopped at the last valid state, before a ruling, curve or patch collapsed</source>
         <translation>母線、曲線またはパッチがつぶれる前の最後の有効な状態で停止</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="184"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="191"/>
         <source> (ended on iteration %1, the one with the smallest residual)</source>
         <translation> (残差が最小の反復 %1 で終了)</translation>
     </message>
     <message>
-        <location filename="../app/gui/solve_report_text.cpp" line="217"/>
+        <location filename="../app/gui/solve_report_text.cpp" line="224"/>
         <source>taken back to where the drag started, since the drag %1: the design stays at its last developable state</source>
         <translation>ドラッグ開始時の状態に戻しました (ドラッグの結果: %1)、デザインは最後の可展な状態のままです</translation>
     </message>

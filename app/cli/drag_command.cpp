@@ -259,6 +259,12 @@ int runDragCommand(const DragArguments& args) {
                      "fading more slowly (the \"after\" lines past "
                   << assessment.firstSettlingIterations << ").\n";
     }
+    if (assessment.stalledAfter > 0) {
+        std::cout << "Stalled: the iterations after the release stopped after "
+                  << assessment.stalledAfter
+                  << ", their residual no longer falling (more would not have brought it nearer "
+                     "the tolerance).\n";
+    }
     if (assessment.replay) {
         const solver::LengthsReplay& replay = *assessment.replay;
         const int before = replay.keepingLengths.problems();

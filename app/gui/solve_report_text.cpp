@@ -169,8 +169,15 @@ SolveReport SolveController::reportOf(const solver::SolveResult& result, const Q
             status = tr("converged");
             break;
         case solver::Status::IterationLimit:
-            status =
-                summary.toleranceReached ? tr("tolerance reached") : tr("iteration limit reached");
+            if (summary.toleranceReached) {
+                status = tr("tolerance reached");
+            } else if (a.stalledAfter > 0) {
+                // A held settling that stopped before its limit (SolveSession::stalled).
+                status = tr("stopped after %1 iterations, the residual no longer falling")
+                             .arg(a.stalledAfter);
+            } else {
+                status = tr("iteration limit reached");
+            }
             break;
         case solver::Status::StoppedBeforeDegenerate:
             status = tr("stopped at the last valid state, before a ruling, curve or patch "

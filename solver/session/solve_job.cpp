@@ -460,6 +460,9 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
                 session = std::move(first);
             }
         }
+        if (drag && request.settle && session->stalled()) {
+            assessment.stalledAfter = summary.iterationsCompleted;
+        }
         std::optional<std::vector<model::FaceId>> knownOverlaps;
         if (judged && judged->measurable) {
             knownOverlaps = judged->overlapping; // measured once

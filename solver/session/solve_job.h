@@ -138,6 +138,9 @@ struct SurfaceAssessment {
     // The iterations the first settling ran before that (fewer than asked where it gave up,
     // SolveSession::gaveUp).
     int firstSettlingIterations = 0;
+    // A drag's settling on a held sheet that stopped after this many iterations because its
+    // residual no longer fell (SolveSession::stalled); 0 otherwise.
+    int stalledAfter = 0;
     // A vertex drag keeping lengths whose pins hold a dragged vertex where the sheet cannot bend.
     std::optional<model::HeldVertex> held;
     std::vector<HandleGap> handleGaps;

@@ -437,6 +437,10 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
                 break;
             }
         }
+        if (m_settling && m_surface.keepsDevelopment() && stallsAt(m_residual)) {
+            m_stalled = true;
+            break;
+        }
     }
     if (splits > 1) {
         aimPartway(splits, splits); // the move's own targets, also after a break
@@ -468,6 +472,28 @@ bool SolveSession::settled(double residual) {
                        stretch >= kSettledStretchRatio * m_settledStretch;
     m_settledStretch = stretch;
     return still;
+}
+
+bool SolveSession::stallsAt(double residual) {
+    m_settlingResiduals.push_back(residual);
+    const auto window = static_cast<std::ptrdiff_t>(kStalledSettlingIterations);
+    const auto end = m_settlingResiduals.cend();
+    if (end - m_settlingResiduals.begin() < 2 * window) {
+        return false;
+    }
+    auto median = [window](std::vector<double>::const_iterator from) {
+        std::vector<double> values(from, from + window);
+        std::nth_element(values.begin(), values.begin() + window / 2, values.end());
+        return values[static_cast<std::size_t>(window / 2)];
+    };
+    // Within the band, no new best, and the median no longer falling: not a slow convergence
+    // (fig8's held lift creeps from 1e-6 to 1e-8 at a median halving every 12 iterations).
+    const auto recent = end - window;
+    const double bestBefore = *std::min_element(m_settlingResiduals.cbegin(), recent);
+    const auto [best, worst] = std::minmax_element(recent, end);
+    const double now = median(recent);
+    return *worst <= kStalledSettlingResidual && *best >= 0.5 * bestBefore &&
+           now >= 0.5 * median(recent - window) && residual <= now;
 }
 
 void SolveSession::reuseFactorizations(Options& options, int n) const {

@@ -105,6 +105,15 @@ constexpr int kHopelessSettlingIterations = 4;
 constexpr double kHopelessHeldSettlingResidual = 0.1;
 constexpr int kHopelessHeldSettlingIterations = 6;
 
+// A settling on a held sheet can stall: its residual wanders within a band it no longer leaves
+// (fig12 dragged: between 3e-6 and 2e-5 for 45 of its 60 iterations). It stops, as if at its
+// iteration limit, once kStalledSettlingIterations iterations in a row all stayed within
+// kStalledSettlingResidual, their best not below half the best before them and their median
+// not below half that of the iterations before them, at an iterate no worse than that median
+// (docs/tuning.md, "A stalled held settling stops").
+constexpr int kStalledSettlingIterations = 12;
+constexpr double kStalledSettlingResidual = 1e-4; // kDragConvergedResidual (drag_lengths.h)
+
 // An approximation (§4.2) runs its iterations with eqs. (9)–(11) at their weights; from
 // SessionOptions::approximationFadeAfter on, every iteration multiplies those weights by
 // kApproximationFade, so that the hard conditions converge exactly at the end while the surface
@@ -232,6 +241,8 @@ public:
     // Whether a settling stopped early, its residual above kHopelessSettlingResidual in
     // kHopelessSettlingIterations iterations in a row (on a held sheet: the Held pair).
     bool gaveUp() const { return m_gaveUp; }
+    // Whether a settling on a held sheet stopped because it stalled (kStalledSettlingIterations).
+    bool stalled() const { return m_stalled; }
     const SurfaceFormulation& formulation() const { return *m_formulation; }
     // The solver's state (normalised coordinates, see SurfaceFormulation).
     const std::vector<double>& state() const { return m_x; }
@@ -272,6 +283,9 @@ private:
     bool m_giveUpWhenHopeless = false;
     int m_hopelessRun = 0; // settling iterations in a row above the hopeless residual
     bool m_gaveUp = false;
+    bool m_stalled = false;
+    std::vector<double> m_settlingResiduals; // of a settling on a held sheet, in order
+    bool stallsAt(double residual);          // whether the settling stalled (kStalled…)
     // The pulled points' targets now and at the last step().
     struct Targets {
         std::map<model::VertexId, model::Vec3> vertices;

@@ -1,5 +1,6 @@
 // The Solver panel's report of a result (SolveController::reportOf): fold-overs, overlapping
-// developments and drags replayed letting the sheet stretch, with the patches to check.
+// developments, drags replayed letting the sheet stretch and settlings that stalled, with the
+// patches to check.
 #include "folded_strip.h"
 #include "main_window.h"
 #include "model/document/commands/move_vertices_command.h"
@@ -177,6 +178,28 @@ private slots:
             window.solveController()->reportOf(result, "Drag 4 vertices");
         QVERIFY2(!plain.status.contains(problems), qPrintable(plain.status));
         QVERIFY(report.status.startsWith(plain.status.chopped(1)));
+    }
+
+    void aStalledSettlingSaysWhenItStopped() {
+        // A held settling that stopped before its limit (SolveSession::stalled) says after how
+        // many iterations and why, instead of "iteration limit reached"; one that reached the
+        // tolerance still says so.
+        solver::SolveResult result = solvedResult(test::flatStrip(100.0));
+        solver::SurfaceAssessment& a = result.outcome.assessments[0];
+        a.summary.toleranceReached = false;
+        a.summary.status = solver::Status::IterationLimit;
+        app::MainWindow window;
+        const QString limit = window.solveController()->reportOf(result, "Drag 1 vertex").status;
+        a.stalledAfter = 38;
+        const QString stalled = window.solveController()->reportOf(result, "Drag 1 vertex").status;
+        QVERIFY2(stalled.contains(QStringLiteral("38")) && stalled != limit, qPrintable(stalled));
+        QVERIFY2(!stalled.contains(QStringLiteral("iteration limit")), qPrintable(stalled));
+        QVERIFY2(limit.contains(QStringLiteral("iteration limit")), qPrintable(limit));
+        a.summary.toleranceReached = true;
+        const QString reached = window.solveController()->reportOf(result, "Drag 1 vertex").status;
+        QVERIFY2(reached.contains(QStringLiteral("tolerance reached")) &&
+                     !reached.contains(QStringLiteral("38")),
+                 qPrintable(reached));
     }
 };
 
