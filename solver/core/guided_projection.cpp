@@ -29,6 +29,25 @@ double admissibleStep(const Problem& problem, const double* x, const double* ste
 
 namespace {
 
+// Term::engageCrossedGuards over the terms of constraint families with non-zero weight.
+int engageCrossedGuards(const Problem& problem, const double* x, const double* step) {
+    int engaged = 0;
+    for (int t = 0; t < problem.termCount(); ++t) {
+        const TermFamily& family = problem.family(problem.termFamily(t));
+        if (family.role == TermRole::Constraint && family.weight > 0.0) {
+            engaged += problem.term(t).engageCrossedGuards(x, step);
+        }
+    }
+    return engaged;
+}
+
+// Term::releaseGuards over all terms.
+void releaseGuards(const Problem& problem) {
+    for (int t = 0; t < problem.termCount(); ++t) {
+        problem.term(t).releaseGuards();
+    }
+}
+
 // After a factorisation fails at an adaptive ε₂, no smaller ε₂ than this multiple of it is
 // tried again. A floor too high stalls the convergence where the Jacobian is nearly singular:
 // devsurf-bench --study large-annulus --session from 10 % edge noise, seed 20150806, failed at
@@ -274,6 +293,30 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
             summary.status = Status::IterationLimit; // a failed reuse factorises afresh
             summary.detail.clear();
             if (!factorisedStep()) {
+                break;
+            }
+        }
+        if (!reused && options.engageCrossedGuards > 0 && !experimental.baseline &&
+            allFinite(d.step)) {
+            // The guards this step would cross, held at their bounds, and the step again:
+            // otherwise a guard pulled through here is pushed back by the next step, which
+            // pulls it through again (docs/tuning.md, kSettlingGuardRounds).
+            bool failed = false;
+            for (int round = 0; round < options.engageCrossedGuards && !failed; ++round) {
+                if (engageCrossedGuards(problem, d.x.data(), d.step.data()) == 0) {
+                    break;
+                }
+                stats.guardsEngaged = true;
+                d.equations.evaluate(problem, d.x.data());
+                summary.status = Status::IterationLimit;
+                summary.detail.clear();
+                failed = !factorisedStep();
+            }
+            if (stats.guardsEngaged) {
+                releaseGuards(problem);
+                d.equations.evaluate(problem, d.x.data()); // the merit below is without them
+            }
+            if (failed) {
                 break;
             }
         }

@@ -60,7 +60,8 @@ int MinimumLengthTerm::evaluateOne(std::size_t r, const double* x, double* resid
     }
     const double length = std::sqrt(squared);
     const double minimum = m_minimum[r];
-    const bool active = minimum > 0.0 && length < minimum;
+    const bool engaged = !m_engaged.empty() && m_engaged[r] != 0;
+    const bool active = minimum > 0.0 && (length < minimum || engaged);
     *residual = active ? 1.0 - length / minimum : 0.0;
     // ∂/∂pᵢ = −cᵢ v / (|v| L) while active (a zero-length side has no direction: zero row).
     const double factor = active && length > 0.0 ? -1.0 / (length * minimum) : 0.0;
@@ -84,6 +85,49 @@ bool MinimumLengthTerm::evaluateRow(int row, const double* x, double* residual,
                                     double* jacobian) const {
     evaluateOne(static_cast<std::size_t>(row), x, residual, jacobian);
     return true;
+}
+
+int MinimumLengthTerm::engageCrossedGuards(const double* x, const double* step) const {
+    int engaged = 0;
+    for (std::size_t r = 0; r < m_minimum.size(); ++r) {
+        const double minimum = m_minimum[r];
+        if (minimum <= 0.0 || (!m_engaged.empty() && m_engaged[r] != 0)) {
+            continue;
+        }
+        std::array<double, kMaxDimension> u{};
+        std::array<double, kMaxDimension> w{};
+        for (int e = m_start[r]; e < m_start[r + 1]; ++e) {
+            const PointTerm& p = m_points[static_cast<std::size_t>(e)];
+            for (int k = 0; k < m_dimension; ++k) {
+                u[k] += p.coefficient * x[p.offset + k];
+                w[k] += p.coefficient * (x[p.offset + k] + step[p.offset + k]);
+            }
+        }
+        double before = 0.0;
+        double after = 0.0;
+        for (int k = 0; k < m_dimension; ++k) {
+            before += u[k] * u[k];
+            after += w[k] * w[k];
+        }
+        if (before >= minimum * minimum && after < minimum * minimum) {
+            if (m_engaged.empty()) {
+                m_engaged.assign(m_minimum.size(), 0);
+            }
+            m_engaged[r] = 1;
+            ++engaged;
+        }
+    }
+    if (engaged > 0) {
+        changed();
+    }
+    return engaged;
+}
+
+void MinimumLengthTerm::releaseGuards() const {
+    if (!m_engaged.empty()) {
+        m_engaged.clear();
+        changed();
+    }
 }
 
 double MinimumLengthTerm::admissibleStep(const double* x, const double* step, double keep) const {

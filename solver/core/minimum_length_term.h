@@ -36,6 +36,8 @@ public:
     bool evaluateRow(int row, const double* x, double* residual, double* jacobian) const override;
     // No guarded length (a row of positive minimum) shrinks below `keep` times its length at x.
     double admissibleStep(const double* x, const double* step, double keep) const override;
+    int engageCrossedGuards(const double* x, const double* step) const override;
+    void releaseGuards() const override;
 
 private:
     int evaluateOne(std::size_t r, const double* x, double* residual, double* jacobian) const;
@@ -43,6 +45,7 @@ private:
     std::vector<int> m_start{0}; // row r uses m_points[m_start[r] .. m_start[r + 1])
     std::vector<PointTerm> m_points;
     std::vector<double> m_minimum;
+    mutable std::vector<char> m_engaged; // per row, empty while none is
 };
 
 } // namespace devsurf::solver

@@ -28,10 +28,11 @@ struct IterationStats {
     // Σ w² φ² over energy rows (without ε₁).
     double maxConstraintResidual = 0.0;
     double energy = 0.0;
-    double stepNorm = 0.0;     // ‖x_{k+1} − x_k‖
-    double stepFraction = 1.0; // of the linear step taken (Options::guardShrinkLimit)
-    bool rejected = false;     // the step raised the constraint merit; x_k was kept
-    bool repeated = false;     // factorised again with Options::eps2 after a failure
+    double stepNorm = 0.0;      // ‖x_{k+1} − x_k‖
+    double stepFraction = 1.0;  // of the linear step taken (Options::guardShrinkLimit)
+    bool rejected = false;      // the step raised the constraint merit; x_k was kept
+    bool repeated = false;      // factorised again with Options::eps2 after a failure
+    bool guardsEngaged = false; // guards the step crossed were held at their bounds, stepped again
     // No factorisation: the step solved the last one with this iterate's right-hand side
     // (Options::reuseFactorization).
     bool factorizationReused = false;

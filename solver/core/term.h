@@ -75,6 +75,14 @@ public:
         (void)keep;
         return 1.0;
     }
+    // Guards (one-sided rows) that the step δ from x would cross are engaged: evaluated as
+    // equalities at their bound until releaseGuards(). Returns how many were engaged.
+    virtual int engageCrossedGuards(const double* x, const double* step) const {
+        (void)x;
+        (void)step;
+        return 0;
+    }
+    virtual void releaseGuards() const {}
 
     // True if the term's values at a given x change only through its own setters, each of
     // which calls changed(): NormalEquations::evaluate(…, onlyChanged) then skips it while
@@ -91,7 +99,7 @@ public:
     }
 
 protected:
-    void changed() { m_changed = true; }
+    void changed() const { m_changed = true; }
 
 private:
     static std::uint64_t nextRevision() {

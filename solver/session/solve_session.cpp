@@ -304,6 +304,10 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
     if (m_dragging && !m_settling) {
         reuseFactorizations(options, n);
     }
+    // See kSettlingGuardRounds: while the mouse moves, the extra factorisation would cost the
+    // move its latency.
+    options.engageCrossedGuards =
+        m_settling && m_options.engageCrossedGuards ? kSettlingGuardRounds : 0;
     std::vector<double> before; // the state before the iteration running
     m_refused.reset();
     const int splits = n > 0 ? moveSplits() : 1;

@@ -292,13 +292,23 @@ private slots:
         // 0.006 mm).
         QVERIFY2(off < 0.03, qPrintable(QString::number(off)));
 
-        // 30°, the paper's turn: whatever the drag keeps is never broken (measured: taken back
-        // whole, its release alternating as the guard on a crease vertex's spokes switches on
-        // and off; docs/tuning.md).
+        // 30°, the paper's turn: it follows part of the way (measured 19.6°), folding further,
+        // never broken. Its release used to alternate as the guard on a crease vertex's spokes
+        // switched on and off, and the turn was taken back whole (kSettlingGuardRounds).
         const Turned far = turnMiddle(up, middle, 30.0);
         QVERIFY2(far.ok, far.failure.c_str());
         checkOnTheSquare(start, far.surface);
-        qInfo("turned 30°: %.1f°", far.degrees);
+        const solver::CreaseQuality farCreases = solver::measureCreaseQuality(far.surface);
+        const double farDet = test::sampledDevelopability(far.surface);
+        qInfo("turned 30°: %.1f°, fold %.1f°, crease residual %.2g, det %.2g, bow kept %.2f",
+              far.degrees, farCreases.meanFoldDegrees, farCreases.residualMax, farDet,
+              smallestBowKept(start, far.surface));
+        QVERIFY2(far.degrees > 15.0, qPrintable(QString::number(far.degrees)));
+        QVERIFY2(farCreases.meanFoldDegrees > creases.meanFoldDegrees,
+                 qPrintable(QString::number(farCreases.meanFoldDegrees)));
+        QVERIFY2(farCreases.residualMax < 1e-6,
+                 qPrintable(QString::number(farCreases.residualMax)));
+        QVERIFY2(farDet < 1e-4, qPrintable(QString::number(farDet)));
     }
 };
 

@@ -314,6 +314,49 @@ private slots:
         QVERIFY(std::abs(x[0]) < 0.1); // it gets there, in shorter steps
     }
 
+    void aGuardTheStepWouldCrossIsHeldInThatStep() {
+        // p₀ pulled from (1, 0) onto the origin, its distance to the fixed p₁ = (−1, 0) guarded
+        // with minimum 1.5: the target and the guard meet at x₀ = 2/13 (the least squares of
+        // x₀ and 1 − (x₀ + 1)/1.5). The first step lands on the origin, crossing the guard,
+        // which only the next step sees; with Options::engageCrossedGuards the first step is
+        // made again with the guard held and lands where they meet.
+        Problem p;
+        const int points = p.addVariableBlock("points", 4);
+        const FamilyId hard = p.addFamily("target", TermRole::Constraint, 1.0);
+        const FamilyId guards = p.addFamily("guard", TermRole::Constraint, 1.0);
+        auto target = std::make_unique<TargetTerm>();
+        target->addTarget(points, 0.0);
+        target->addTarget(points + 1, 0.0);
+        p.add(hard, std::move(target));
+        auto guard = std::make_unique<MinimumLengthTerm>(2);
+        guard->addRow({{points, 1.0}, {points + 2, -1.0}}, 1.5);
+        p.add(guards, std::move(guard));
+        p.setFixed(points + 2);
+        p.setFixed(points + 3);
+        Options options;
+        options.maxIterations = 1;
+        options.eps1Initial = 0.0;
+        options.eps2 = 1e-9;
+        options.adaptiveEps2 = false;
+        const double meet = 2.0 / 13.0;
+        for (int rounds : {0, 1}) {
+            options.engageCrossedGuards = rounds;
+            std::vector<double> x{1.0, 0.0, -1.0, 0.0};
+            GuidedProjection solver;
+            const Summary first = solver.solve(p, x, options);
+            QVERIFY(first.succeeded());
+            QCOMPARE(first.iterations.front().guardsEngaged, rounds > 0);
+            const double afterOne = x[0];
+            QVERIFY(solver.solve(p, x, options).succeeded());
+            QVERIFY2(std::abs(x[0] - meet) < 1e-6, qPrintable(QString::number(x[0])));
+            if (rounds > 0) {
+                QVERIFY2(std::abs(afterOne - meet) < 1e-6, qPrintable(QString::number(afterOne)));
+            } else {
+                QVERIFY2(std::abs(afterOne) < 1e-6, qPrintable(QString::number(afterOne)));
+            }
+        }
+    }
+
     void hardConstraintWeightZeroIsIgnored() {
         auto circle = makeCircleProblem(8, 5);
         circle->problem.setFamilyWeight(circle->hard, 0.0);

@@ -7,6 +7,7 @@
 #include <QTest>
 
 #include <algorithm>
+#include <cstdint>
 
 using namespace devsurf::solver;
 using namespace devsurf::solver::testing;
@@ -281,6 +282,36 @@ private slots:
         // A row of minimum 0 guards nothing.
         term.setMinimum(0, 0.0);
         QCOMPARE(term.admissibleStep(x.data(), through.data(), 0.5), 1.0);
+    }
+
+    void minimumLengthTermEngagesTheGuardsAStepCrosses() {
+        // u = p₀ − p₁ = (4, 0, 0) against minimum 2: a step to length 1 crosses the guard, one
+        // to 3 does not. An engaged row is evaluated as 1 − |u|/L on either side of its bound
+        // (−1 here, at length 4), with its Jacobian, until the guards are released.
+        MinimumLengthTerm term(3);
+        term.addRow({{0, 1.0}, {3, -1.0}}, 2.0);
+        term.addRow({{0, 1.0}, {3, -1.0}}, 0.0); // guards nothing, never engaged
+        const std::vector<double> x{4, 0, 0, 0, 0, 0};
+        const std::vector<double> small{-1, 0, 0, 0, 0, 0};
+        const std::vector<double> through{-3, 0, 0, 0, 0, 0};
+        double r[2];
+        std::vector<double> j(12);
+        QCOMPARE(term.engageCrossedGuards(x.data(), small.data()), 0);
+        term.evaluate(x.data(), r, j.data());
+        QCOMPARE(r[0], 0.0);
+        QCOMPARE(j[0], 0.0);
+        const std::uint64_t before = term.revision();
+        QCOMPARE(term.engageCrossedGuards(x.data(), through.data()), 1);
+        QVERIFY(term.revision() != before); // evaluated again, not taken from a cache
+        QCOMPARE(term.engageCrossedGuards(x.data(), through.data()), 0); // engaged already
+        term.evaluate(x.data(), r, j.data());
+        QCOMPARE(r[0], -1.0);
+        QCOMPARE(j[0], -0.5); // −c v/(|v| L) = −4/(4·2)
+        QCOMPARE(r[1], 0.0);
+        term.releaseGuards();
+        term.evaluate(x.data(), r, j.data());
+        QCOMPARE(r[0], 0.0);
+        QCOMPARE(j[0], 0.0);
     }
 
     void fairnessOfTheChange() {
