@@ -87,6 +87,19 @@ bool MinimumLengthTerm::evaluateRow(int row, const double* x, double* residual,
     return true;
 }
 
+void MinimumLengthTerm::rowVectors(std::size_t r, const double* x, const double* step, Vector& u,
+                                   Vector& w) const {
+    u.fill(0.0);
+    w.fill(0.0);
+    for (int e = m_start[r]; e < m_start[r + 1]; ++e) {
+        const PointTerm& p = m_points[static_cast<std::size_t>(e)];
+        for (int k = 0; k < m_dimension; ++k) {
+            u[k] += p.coefficient * x[p.offset + k];
+            w[k] += p.coefficient * step[p.offset + k];
+        }
+    }
+}
+
 int MinimumLengthTerm::engageCrossedGuards(const double* x, const double* step) const {
     int engaged = 0;
     for (std::size_t r = 0; r < m_minimum.size(); ++r) {
@@ -94,20 +107,14 @@ int MinimumLengthTerm::engageCrossedGuards(const double* x, const double* step) 
         if (minimum <= 0.0 || (!m_engaged.empty() && m_engaged[r] != 0)) {
             continue;
         }
-        std::array<double, kMaxDimension> u{};
-        std::array<double, kMaxDimension> w{};
-        for (int e = m_start[r]; e < m_start[r + 1]; ++e) {
-            const PointTerm& p = m_points[static_cast<std::size_t>(e)];
-            for (int k = 0; k < m_dimension; ++k) {
-                u[k] += p.coefficient * x[p.offset + k];
-                w[k] += p.coefficient * (x[p.offset + k] + step[p.offset + k]);
-            }
-        }
+        Vector u;
+        Vector w;
+        rowVectors(r, x, step, u, w);
         double before = 0.0;
         double after = 0.0;
         for (int k = 0; k < m_dimension; ++k) {
             before += u[k] * u[k];
-            after += w[k] * w[k];
+            after += (u[k] + w[k]) * (u[k] + w[k]);
         }
         if (before >= minimum * minimum && after < minimum * minimum) {
             if (m_engaged.empty()) {
@@ -136,15 +143,9 @@ double MinimumLengthTerm::admissibleStep(const double* x, const double* step, do
         if (m_minimum[r] <= 0.0) {
             continue;
         }
-        std::array<double, kMaxDimension> u{};
-        std::array<double, kMaxDimension> w{};
-        for (int e = m_start[r]; e < m_start[r + 1]; ++e) {
-            const PointTerm& p = m_points[static_cast<std::size_t>(e)];
-            for (int k = 0; k < m_dimension; ++k) {
-                u[k] += p.coefficient * x[p.offset + k];
-                w[k] += p.coefficient * step[p.offset + k];
-            }
-        }
+        Vector u;
+        Vector w;
+        rowVectors(r, x, step, u, w);
         double uu = 0.0;
         double uw = 0.0;
         double ww = 0.0;

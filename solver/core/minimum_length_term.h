@@ -2,6 +2,7 @@
 
 #include "solver/core/term.h"
 
+#include <array>
 #include <vector>
 
 namespace devsurf::solver {
@@ -41,6 +42,9 @@ public:
 
 private:
     int evaluateOne(std::size_t r, const double* x, double* residual, double* jacobian) const;
+    // Row r's vector Σ cᵢ pᵢ at x (u) and along the step (w).
+    using Vector = std::array<double, kMaxDimension>;
+    void rowVectors(std::size_t r, const double* x, const double* step, Vector& u, Vector& w) const;
     int m_dimension;
     std::vector<int> m_start{0}; // row r uses m_points[m_start[r] .. m_start[r + 1])
     std::vector<PointTerm> m_points;

@@ -75,6 +75,23 @@ double maxAbsDifference(const std::vector<double>& a, const std::vector<double>&
     return d;
 }
 
+// p₀ = (x₀, x₁) pulled onto the origin by a hard target; its distance to the fixed
+// p₁ = (x₂, x₃) guarded with the given minimum.
+void pulledPastAGuard(Problem& p, double minimum) {
+    const int points = p.addVariableBlock("points", 4);
+    const FamilyId hard = p.addFamily("target", TermRole::Constraint, 1.0);
+    const FamilyId guards = p.addFamily("guard", TermRole::Constraint, 1.0);
+    auto target = std::make_unique<TargetTerm>();
+    target->addTarget(points, 0.0);
+    target->addTarget(points + 1, 0.0);
+    p.add(hard, std::move(target));
+    auto guard = std::make_unique<MinimumLengthTerm>(2);
+    guard->addRow({{points, 1.0}, {points + 2, -1.0}}, minimum);
+    p.add(guards, std::move(guard));
+    p.setFixed(points + 2);
+    p.setFixed(points + 3);
+}
+
 // Produces finite values for the first `goodEvaluations` evaluations, then NaN.
 class PoisonTerm : public Term {
 public:
@@ -279,18 +296,7 @@ private slots:
         // the origin at once (distance 1, inactive guard); with the limit 0.75 the distance
         // shrinks by at most a quarter per step.
         Problem p;
-        const int points = p.addVariableBlock("points", 4);
-        const FamilyId hard = p.addFamily("target", TermRole::Constraint, 1.0);
-        const FamilyId guards = p.addFamily("guard", TermRole::Constraint, 1.0);
-        auto target = std::make_unique<TargetTerm>();
-        target->addTarget(points, 0.0);
-        target->addTarget(points + 1, 0.0);
-        p.add(hard, std::move(target));
-        auto guard = std::make_unique<MinimumLengthTerm>(2);
-        guard->addRow({{points, 1.0}, {points + 2, -1.0}}, 0.5);
-        p.add(guards, std::move(guard));
-        p.setFixed(points + 2);
-        p.setFixed(points + 3);
+        pulledPastAGuard(p, 0.5);
         const std::vector<double> start{1.0, 0.0, -1.0, 0.0};
         Options options;
         options.maxIterations = 1;
@@ -321,18 +327,7 @@ private slots:
         // which only the next step sees; with Options::engageCrossedGuards the first step is
         // made again with the guard held and lands where they meet.
         Problem p;
-        const int points = p.addVariableBlock("points", 4);
-        const FamilyId hard = p.addFamily("target", TermRole::Constraint, 1.0);
-        const FamilyId guards = p.addFamily("guard", TermRole::Constraint, 1.0);
-        auto target = std::make_unique<TargetTerm>();
-        target->addTarget(points, 0.0);
-        target->addTarget(points + 1, 0.0);
-        p.add(hard, std::move(target));
-        auto guard = std::make_unique<MinimumLengthTerm>(2);
-        guard->addRow({{points, 1.0}, {points + 2, -1.0}}, 1.5);
-        p.add(guards, std::move(guard));
-        p.setFixed(points + 2);
-        p.setFixed(points + 3);
+        pulledPastAGuard(p, 1.5);
         Options options;
         options.maxIterations = 1;
         options.eps1Initial = 0.0;
