@@ -305,9 +305,11 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
         reuseFactorizations(options, n);
     }
     // See kSettlingGuardRounds: while the mouse moves, the extra factorisation would cost the
-    // move its latency.
+    // move its latency; on a surface that holds no sheet it slowed releases and bought nothing.
     options.engageCrossedGuards =
-        m_settling && m_options.engageCrossedGuards ? kSettlingGuardRounds : 0;
+        m_settling && m_options.engageCrossedGuards && m_surface.keepsDevelopment()
+            ? kSettlingGuardRounds
+            : 0;
     std::vector<double> before; // the state before the iteration running
     m_refused.reset();
     const int splits = n > 0 ? moveSplits() : 1;

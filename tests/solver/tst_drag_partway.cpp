@@ -197,10 +197,7 @@ private slots:
         for (model::VertexId v : {5, 6, 9, 10}) {
             pulled.push_back({v, false, press.position(v) + Vec3(0.0, 0.0, lift)});
         }
-        // Without the guards held (kSettlingGuardRounds) this settling swings far off the
-        // tolerance, as the mechanism under test needs; with them it converges, to a surface
-        // whose curves have collapsed (the job then lets the sheet stretch instead).
-        const Released released = releaseAfterMoves(press, pulled, giveUp, false);
+        const Released released = releaseAfterMoves(press, pulled, giveUp);
         QVERIFY(released.movesSucceeded);
         const solver::Summary& settling = released.settling;
         QVERIFY(settling.succeeded());
@@ -225,47 +222,50 @@ private slots:
     }
 
     void aGuardPulledThroughIsHeldInTheSettling() {
-        // The impossible lift above, settled with and without the guards its steps would cross
-        // held at their bounds (kSettlingGuardRounds). Without, a spoke of a crease vertex's
-        // star is pulled through its guard in one step and pushed back in the next, and the
-        // residual swings up to 0.5; with, the settling stays below 0.1 and converges sooner.
-        model::CompositeSurface press = model::makeExample("fig8").surfaces.front();
-        for (model::VertexId corner : {0, 3, 12, 15}) {
-            press.setPinned(corner, true);
-        }
+        // fig8 as a new design holds its sheet (one corner pinned, its creases on their
+        // curves); its middle lifted 85 mm in five moves, then settled with and without the
+        // guards its steps would cross held at their bounds (kSettlingGuardRounds). Without, a
+        // spoke of a crease vertex's star is pulled through its guard in one step and pushed
+        // back in the next, and the residual swings up to 0.17; with, it stays below 0.01 and
+        // ends far lower (measured 1.9e-7 against 5.3e-4 after 20 iterations).
+        const model::CompositeSurface press =
+            model::makeExample("fig8", 0, model::ExampleSheet::Held).surfaces.front();
+        QVERIFY(press.keepsDevelopment());
         std::vector<solver::VertexHandle> pulled;
         for (model::VertexId v : {5, 6, 9, 10}) {
             pulled.push_back({v, false, press.position(v) + Vec3(0.0, 0.0, 85.0)});
         }
         struct Swing {
             double largest = 0.0;
-            int converged = -1; // the first iteration within the tolerance
-            int engaged = 0;    // iterations that held a guard
+            double last = 0.0;
+            int engaged = 0; // iterations that held a guard
         };
-        auto settle = [&](bool engage) {
-            const Released released = releaseAfterMoves(press, pulled, false, engage);
+        auto settle = [&](const model::CompositeSurface& surface, bool engage) {
+            const Released released = releaseAfterMoves(surface, pulled, false, engage);
             Swing swing;
-            const std::vector<solver::IterationStats>& its = released.settling.iterations;
-            for (std::size_t k = 0; k < its.size(); ++k) {
-                swing.largest = std::max(swing.largest, its[k].maxConstraintResidual);
-                swing.engaged += its[k].guardsEngaged ? 1 : 0;
-                if (swing.converged < 0 && its[k].maxConstraintResidual <= 1e-8) {
-                    swing.converged = static_cast<int>(k) + 1;
-                }
+            for (const solver::IterationStats& it : released.settling.iterations) {
+                swing.largest = std::max(swing.largest, it.maxConstraintResidual);
+                swing.last = it.maxConstraintResidual;
+                swing.engaged += it.guardsEngaged ? 1 : 0;
             }
             return swing;
         };
-        const Swing without = settle(false);
-        const Swing with = settle(true);
-        qInfo("largest residual %.2g without, %.2g with; within 1e-8 after %d and %d; guards held "
-              "in %d iterations",
-              without.largest, with.largest, without.converged, with.converged, with.engaged);
+        const Swing without = settle(press, false);
+        const Swing with = settle(press, true);
+        qInfo("largest residual %.2g without, %.2g with; last %.2g and %.2g; guards held in %d "
+              "iterations",
+              without.largest, with.largest, without.last, with.last, with.engaged);
         QCOMPARE(without.engaged, 0);
         QVERIFY(with.engaged > 0);
-        QVERIFY2(without.largest > 0.3, qPrintable(QString::number(without.largest)));
-        QVERIFY2(with.largest < 0.1, qPrintable(QString::number(with.largest)));
-        QVERIFY(with.converged > 0);
-        QVERIFY(without.converged < 0 || with.converged <= without.converged);
+        QVERIFY2(without.largest > 0.05, qPrintable(QString::number(without.largest)));
+        QVERIFY2(with.largest < 0.01, qPrintable(QString::number(with.largest)));
+        QVERIFY2(with.last < 0.01 * without.last, qPrintable(QString::number(with.last)));
+
+        // A surface that holds no sheet settles without: there the extra factorisation bought
+        // nothing (docs/tuning.md, "Guards held in a settling").
+        model::CompositeSurface free = model::makeExample("fig8").surfaces.front();
+        QVERIFY(!free.keepsDevelopment());
+        QCOMPARE(settle(free, true).engaged, 0);
     }
 
     void aStalledHeldSettlingStops() {
@@ -343,7 +343,10 @@ private slots:
         }
         const Vec3 lift(0.0, 0.0, 0.15 * solver::surfaceDiameter(press));
         std::vector<solver::VertexHandle> pulled{{lifted, false, press.position(lifted) + lift}};
-        const Released released = releaseAfterMoves(press, pulled, true, false); // as above
+        // Without the guards held (kSettlingGuardRounds) this settling swings far off the
+        // tolerance, as the stop under test needs; with them it converges, to a surface whose
+        // curves have collapsed.
+        const Released released = releaseAfterMoves(press, pulled, true, false);
         QVERIFY(released.movesSucceeded);
         const solver::Summary& settling = released.settling;
         QVERIFY(settling.succeeded());
