@@ -296,27 +296,20 @@ Summary GuidedProjection::solve(const Problem& problem, double* x, const Options
                 break;
             }
         }
-        if (!reused && options.engageCrossedGuards > 0 && !experimental.baseline &&
-            allFinite(d.step)) {
+        if (!reused && options.engageCrossedGuards && !experimental.baseline && allFinite(d.step) &&
+            engageCrossedGuards(problem, d.x.data(), d.step.data()) > 0) {
             // The guards this step would cross, held at their bounds, and the step again:
             // otherwise a guard pulled through here is pushed back by the next step, which
-            // pulls it through again (docs/tuning.md, kSettlingGuardRounds).
-            bool failed = false;
-            for (int round = 0; round < options.engageCrossedGuards && !failed; ++round) {
-                if (engageCrossedGuards(problem, d.x.data(), d.step.data()) == 0) {
-                    break;
-                }
-                stats.guardsEngaged = true;
-                d.equations.evaluate(problem, d.x.data());
-                summary.status = Status::IterationLimit;
-                summary.detail.clear();
-                failed = !factorisedStep();
-            }
-            if (stats.guardsEngaged) {
-                releaseGuards(problem);
-                d.equations.evaluate(problem, d.x.data()); // the merit below is without them
-            }
-            if (failed) {
+            // pulls it through again (docs/tuning.md, "Guards held in a settling"). Only the
+            // guards changed at this x, so only they are evaluated again.
+            stats.guardsEngaged = true;
+            d.equations.evaluate(problem, d.x.data(), true);
+            summary.status = Status::IterationLimit;
+            summary.detail.clear();
+            const bool stepped = factorisedStep();
+            releaseGuards(problem);
+            d.equations.evaluate(problem, d.x.data(), true); // the merit below is without them
+            if (!stepped) {
                 break;
             }
         }

@@ -52,10 +52,10 @@ struct Options {
     // A step that would shrink a guarded length (MinimumLengthTerm rows of constraint
     // families) below this fraction of its current length is shortened as a whole. 0: off.
     double guardShrinkLimit = 0.0;
-    // Rounds per iteration in which guards (MinimumLengthTerm rows) that the linear step would
-    // cross are held at their bounds and the step is made again with a fresh factorisation
-    // (an active set for the one-sided rows). 0: off.
-    int engageCrossedGuards = 0;
+    // Guards (MinimumLengthTerm rows) that the linear step would cross are held at their
+    // bounds and the step is made again with a fresh factorisation (an active set for the
+    // one-sided rows, one round per iteration).
+    bool engageCrossedGuards = false;
 
     // Iterations in a row that may reuse the last factorisation (chord steps), 0: none; never
     // after the fixed variables changed or a factorisation failed, and only for

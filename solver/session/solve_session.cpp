@@ -304,12 +304,11 @@ Summary SolveSession::step(int n, const std::atomic<bool>* cancel,
     if (m_dragging && !m_settling) {
         reuseFactorizations(options, n);
     }
-    // See kSettlingGuardRounds: while the mouse moves, the extra factorisation would cost the
-    // move its latency; on a surface that holds no sheet it slowed releases and bought nothing.
+    // See SessionOptions::engageCrossedGuards: while the mouse moves, the extra factorisation
+    // would cost the move its latency; on a surface that holds no sheet it slowed releases and
+    // bought nothing.
     options.engageCrossedGuards =
-        m_settling && m_options.engageCrossedGuards && m_surface.keepsDevelopment()
-            ? kSettlingGuardRounds
-            : 0;
+        m_settling && m_options.engageCrossedGuards && m_surface.keepsDevelopment();
     std::vector<double> before; // the state before the iteration running
     m_refused.reset();
     const int splits = n > 0 ? moveSplits() : 1;

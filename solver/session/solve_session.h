@@ -155,18 +155,14 @@ struct SessionOptions {
     // (Options::backgroundFactorization), on a model whose factorisation takes at least
     // kDragFactorizationReuseFlops.
     bool backgroundFactorization = false;
-    // After settle(), on a surface that holds its sheet: guards the step would cross are held
-    // at their bounds (kSettlingGuardRounds). Off only to study the settlings that swing
-    // without it.
+    // After settle(), on a surface that holds its sheet, each iteration holds the guards (the
+    // spokes of crease vertices' stars, rulings, curve speeds) that its linear step would cross
+    // at their bounds and makes the step again (Options::engageCrossedGuards). Without, a guard
+    // pulled through in one step and pushed back in the next makes the settling swing until the
+    // move is taken back (fig8's held 30° turn; docs/tuning.md, "Guards held in a settling").
+    // Off only to study the settlings that swing without it.
     bool engageCrossedGuards = true;
 };
-
-// A settling's iterations on a held sheet hold the guards (the spokes of crease vertices'
-// stars, rulings, curve speeds) that their linear step would cross at their bounds and make
-// the step again, in at most this many rounds (Options::engageCrossedGuards). Without, a
-// guard pulled through in one step and pushed back in the next makes the settling swing until
-// the move is taken back (fig8's held 30° turn; docs/tuning.md, "Guards held in a settling").
-constexpr int kSettlingGuardRounds = 1;
 
 // A settling on a held sheet within kSolveStopResidual stops once its distance from its sheet
 // (model::keptSheetStretch) falls by less than this factor in an iteration.

@@ -224,10 +224,10 @@ private slots:
     void aGuardPulledThroughIsHeldInTheSettling() {
         // fig8 as a new design holds its sheet (one corner pinned, its creases on their
         // curves); its middle lifted 85 mm in five moves, then settled with and without the
-        // guards its steps would cross held at their bounds (kSettlingGuardRounds). Without, a
-        // spoke of a crease vertex's star is pulled through its guard in one step and pushed
-        // back in the next, and the residual swings up to 0.17; with, it stays below 0.01 and
-        // ends far lower (measured 1.9e-7 against 5.3e-4 after 20 iterations).
+        // guards its steps would cross held at their bounds (SessionOptions::engageCrossedGuards).
+        // Without, a spoke of a crease vertex's star is pulled through its guard in one step and
+        // pushed back in the next, and the residual swings up to 0.17; with, it stays below 0.01
+        // and ends far lower (measured 1.9e-7 against 5.3e-4 after 20 iterations).
         const model::CompositeSurface press =
             model::makeExample("fig8", 0, model::ExampleSheet::Held).surfaces.front();
         QVERIFY(press.keepsDevelopment());
@@ -343,9 +343,9 @@ private slots:
         }
         const Vec3 lift(0.0, 0.0, 0.15 * solver::surfaceDiameter(press));
         std::vector<solver::VertexHandle> pulled{{lifted, false, press.position(lifted) + lift}};
-        // Without the guards held (kSettlingGuardRounds) this settling swings far off the
-        // tolerance, as the stop under test needs; with them it converges, to a surface whose
-        // curves have collapsed.
+        // Without the guards held (SessionOptions::engageCrossedGuards) this settling swings far
+        // off the tolerance, as the stop under test needs; with them it converges, to a surface
+        // whose curves have collapsed.
         const Released released = releaseAfterMoves(press, pulled, true, false);
         QVERIFY(released.movesSucceeded);
         const solver::Summary& settling = released.settling;

@@ -294,7 +294,8 @@ private slots:
 
         // 30°, the paper's turn: it follows part of the way (measured 19.6°), folding further,
         // never broken. Its release used to alternate as the guard on a crease vertex's spokes
-        // switched on and off, and the turn was taken back whole (kSettlingGuardRounds).
+        // switched on and off, and the turn was taken back whole
+        // (SessionOptions::engageCrossedGuards).
         const Turned far = turnMiddle(up, middle, 30.0);
         QVERIFY2(far.ok, far.failure.c_str());
         checkOnTheSquare(start, far.surface);

@@ -334,17 +334,17 @@ private slots:
         options.eps2 = 1e-9;
         options.adaptiveEps2 = false;
         const double meet = 2.0 / 13.0;
-        for (int rounds : {0, 1}) {
-            options.engageCrossedGuards = rounds;
+        for (bool engage : {false, true}) {
+            options.engageCrossedGuards = engage;
             std::vector<double> x{1.0, 0.0, -1.0, 0.0};
             GuidedProjection solver;
             const Summary first = solver.solve(p, x, options);
             QVERIFY(first.succeeded());
-            QCOMPARE(first.iterations.front().guardsEngaged, rounds > 0);
+            QCOMPARE(first.iterations.front().guardsEngaged, engage);
             const double afterOne = x[0];
             QVERIFY(solver.solve(p, x, options).succeeded());
             QVERIFY2(std::abs(x[0] - meet) < 1e-6, qPrintable(QString::number(x[0])));
-            if (rounds > 0) {
+            if (engage) {
                 QVERIFY2(std::abs(afterOne - meet) < 1e-6, qPrintable(QString::number(afterOne)));
             } else {
                 QVERIFY2(std::abs(afterOne) < 1e-6, qPrintable(QString::number(afterOne)));
