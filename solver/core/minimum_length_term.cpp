@@ -87,10 +87,10 @@ bool MinimumLengthTerm::evaluateRow(int row, const double* x, double* residual,
     return true;
 }
 
-void MinimumLengthTerm::rowVectors(std::size_t r, const double* x, const double* step, Vector& u,
-                                   Vector& w) const {
-    u.fill(0.0);
-    w.fill(0.0);
+MinimumLengthTerm::Products MinimumLengthTerm::rowProducts(std::size_t r, const double* x,
+                                                           const double* step) const {
+    std::array<double, kMaxDimension> u{};
+    std::array<double, kMaxDimension> w{};
     for (int e = m_start[r]; e < m_start[r + 1]; ++e) {
         const PointTerm& p = m_points[static_cast<std::size_t>(e)];
         for (int k = 0; k < m_dimension; ++k) {
@@ -98,6 +98,13 @@ void MinimumLengthTerm::rowVectors(std::size_t r, const double* x, const double*
             w[k] += p.coefficient * step[p.offset + k];
         }
     }
+    Products products;
+    for (int k = 0; k < m_dimension; ++k) {
+        products.uu += u[k] * u[k];
+        products.uw += u[k] * w[k];
+        products.ww += w[k] * w[k];
+    }
+    return products;
 }
 
 int MinimumLengthTerm::engageCrossedGuards(const double* x, const double* step) const {
@@ -107,16 +114,9 @@ int MinimumLengthTerm::engageCrossedGuards(const double* x, const double* step) 
         if (minimum <= 0.0 || (!m_engaged.empty() && m_engaged[r] != 0)) {
             continue;
         }
-        Vector u;
-        Vector w;
-        rowVectors(r, x, step, u, w);
-        double before = 0.0;
-        double after = 0.0;
-        for (int k = 0; k < m_dimension; ++k) {
-            before += u[k] * u[k];
-            after += (u[k] + w[k]) * (u[k] + w[k]);
-        }
-        if (before >= minimum * minimum && after < minimum * minimum) {
+        const auto [uu, uw, ww] = rowProducts(r, x, step);
+        const double after = uu + 2.0 * uw + ww; // |u + w|²
+        if (uu >= minimum * minimum && after < minimum * minimum) {
             if (m_engaged.empty()) {
                 m_engaged.assign(m_minimum.size(), 0);
             }
@@ -143,17 +143,7 @@ double MinimumLengthTerm::admissibleStep(const double* x, const double* step, do
         if (m_minimum[r] <= 0.0) {
             continue;
         }
-        Vector u;
-        Vector w;
-        rowVectors(r, x, step, u, w);
-        double uu = 0.0;
-        double uw = 0.0;
-        double ww = 0.0;
-        for (int k = 0; k < m_dimension; ++k) {
-            uu += u[k] * u[k];
-            uw += u[k] * w[k];
-            ww += w[k] * w[k];
-        }
+        const auto [uu, uw, ww] = rowProducts(r, x, step);
         // q(α) = |u + αw|² − keep²|u|² = ww α² + 2 uw α + c, positive at α = 0: its first
         // root in (0, 1], if the length falls that far anywhere on the step (a ruling pushed
         // through zero to the other side ends long again, but has collapsed on the way).

@@ -2,7 +2,6 @@
 
 #include "solver/core/term.h"
 
-#include <array>
 #include <vector>
 
 namespace devsurf::solver {
@@ -42,9 +41,13 @@ public:
 
 private:
     int evaluateOne(std::size_t r, const double* x, double* residual, double* jacobian) const;
-    // Row r's vector Σ cᵢ pᵢ at x (u) and along the step (w).
-    using Vector = std::array<double, kMaxDimension>;
-    void rowVectors(std::size_t r, const double* x, const double* step, Vector& u, Vector& w) const;
+    // Row r's vector Σ cᵢ pᵢ at x (u) and along the step (w): u·u, u·w, w·w.
+    struct Products {
+        double uu = 0.0;
+        double uw = 0.0;
+        double ww = 0.0;
+    };
+    Products rowProducts(std::size_t r, const double* x, const double* step) const;
     int m_dimension;
     std::vector<int> m_start{0}; // row r uses m_points[m_start[r] .. m_start[r + 1])
     std::vector<PointTerm> m_points;
