@@ -15,15 +15,17 @@ namespace {
 // Measures every shape against every surface; runs on the job's thread, on copies.
 std::shared_ptr<const ReferenceDistanceResult>
 measure(const std::vector<model::CompositeSurface>& surfaces,
-        const std::vector<std::vector<model::Vec3>>& shapes, const std::atomic<bool>* cancel) {
+        const std::vector<model::ReferenceShape>& shapes, const std::atomic<bool>* cancel) {
     QElapsedTimer clock;
     clock.start();
     auto result = std::make_shared<ReferenceDistanceResult>();
     model::reference::DistanceOptions options;
     options.cancel = cancel;
     try {
-        for (const std::vector<model::Vec3>& points : shapes) {
-            result->reports.push_back(model::reference::measureDistance(surfaces, points, options));
+        for (const model::ReferenceShape& shape : shapes) {
+            options.triangles = &shape.triangles; // a mesh: to its triangles
+            result->reports.push_back(
+                model::reference::measureDistance(surfaces, shape.points, options));
         }
     } catch (const model::reference::DistanceCancelled&) {
         result->failure = ReferenceDistanceResult::Failure::Cancelled;
@@ -146,10 +148,7 @@ void ReferenceDistances::startJob() {
         }
         return;
     }
-    std::vector<std::vector<model::Vec3>> shapes;
-    for (const model::ReferenceShape& shape : m_document->project().referenceShapes) {
-        shapes.push_back(shape.points);
-    }
+    std::vector<model::ReferenceShape> shapes = m_document->project().referenceShapes;
     m_running = true;
     m_cancel = std::make_shared<std::atomic<bool>>(false);
     m_pool.start([this, key = currentKey(), surfaces = m_document->project().surfaces,

@@ -144,7 +144,10 @@ void printDistanceReport(const model::reference::DistanceReport& report, std::si
     std::cout << "Target: " << targetPoints << " points, bounding-box diagonal "
               << plainMillimetres(report.diagonal) << " mm\n"
               << "Target to surface: " << oneSidedLine(report.targetToSurface) << "\n"
-              << "Surface to target: " << oneSidedLine(report.surfaceToTarget) << " (sampled every "
+              << "Surface to target: " << oneSidedLine(report.surfaceToTarget)
+              << (report.toMesh ? " (to the mesh, sampled every "
+                                : " (to the nearest point, "
+                                  "sampled every ")
               << plainMillimetres(report.surfaceSpacing) << " mm)\n";
     char line[200];
     std::snprintf(line, sizeof line,
@@ -173,6 +176,7 @@ int runDistanceCommand(const SubcommandArguments& args) {
         std::cerr << "devsurf-cli: " << referenceImportSentence(*read.error, target) << "\n";
         return 2;
     }
+    options.triangles = &read.shape.triangles; // a mesh: to its triangles
     const model::reference::DistanceReport report =
         model::reference::measureDistance(project.surfaces, read.shape.points, options);
     if (args.isSet("json")) {
@@ -186,6 +190,7 @@ int runDistanceCommand(const SubcommandArguments& args) {
         o[QStringLiteral("coverage")] = report.coverage;
         o[QStringLiteral("surfaceSamples")] = static_cast<double>(report.surfaceSamples);
         o[QStringLiteral("surfaceSpacing")] = report.surfaceSpacing;
+        o[QStringLiteral("surfaceToMesh")] = report.toMesh;
         std::cout << QJsonDocument(o).toJson(QJsonDocument::Indented).toStdString();
         return 0;
     }

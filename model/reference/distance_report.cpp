@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <thread>
@@ -103,6 +105,26 @@ OneSidedDistance summarise(const std::vector<double>& values, const std::vector<
     return d;
 }
 
+// The distance from q to a mesh: the nearest of its kMeshNeighbours nearest vertices and of
+// the triangles around them.
+double distanceToMesh(const std::vector<Vec3>& points,
+                      const std::vector<std::array<int, 3>>& triangles,
+                      const std::vector<std::vector<std::uint32_t>>& around,
+                      const PointIndex& index, const Vec3& q) {
+    double best = std::numeric_limits<double>::max();
+    for (const PointIndex::Neighbour& n : index.nearest(q, kMeshNeighbours)) {
+        best = std::min(best, std::sqrt(n.squaredDistance));
+        for (const std::uint32_t t : around[n.index]) {
+            const std::array<int, 3>& c = triangles[t];
+            best = std::min(best, closestPointOnTriangle(points[static_cast<std::size_t>(c[0])],
+                                                         points[static_cast<std::size_t>(c[1])],
+                                                         points[static_cast<std::size_t>(c[2])], q)
+                                      .distance);
+        }
+    }
+    return best;
+}
+
 } // namespace
 
 DistanceReport measureDistance(const std::vector<CompositeSurface>& surfaces,
@@ -123,6 +145,20 @@ DistanceReport measureDistance(const std::vector<CompositeSurface>& surfaces,
             throw DistanceCancelled();
         }
     };
+    // Per target point, the triangles around it (a mesh's surface → target).
+    std::vector<std::vector<std::uint32_t>> around;
+    if (options.triangles != nullptr && !options.triangles->empty()) {
+        around.resize(target.size());
+        for (std::size_t t = 0; t < options.triangles->size(); ++t) {
+            for (const int corner : (*options.triangles)[t]) {
+                if (corner < 0 || static_cast<std::size_t>(corner) >= target.size()) {
+                    throw std::invalid_argument(
+                        "measureDistance: a triangle's corner is not a target point");
+                }
+                around[static_cast<std::size_t>(corner)].push_back(static_cast<std::uint32_t>(t));
+            }
+        }
+    }
     stopIfCancelled();
     SurfaceSamples samples = sampleDensely(surfaces, options.samplesPerInterval);
     if (samples.positions.empty()) {
@@ -133,6 +169,7 @@ DistanceReport measureDistance(const std::vector<CompositeSurface>& surfaces,
     report.tolerance = options.tolerance > 0.0 ? options.tolerance : 0.01 * report.diagonal;
     report.surfaceSamples = samples.positions.size();
     report.surfaceSpacing = samples.coveringRadius;
+    report.toMesh = !around.empty();
 
     const PointIndex surfaceIndex(std::move(samples.positions));
     report.targetDistances.resize(target.size());
@@ -161,7 +198,10 @@ DistanceReport measureDistance(const std::vector<CompositeSurface>& surfaces,
             if ((i - begin) % kCancelStride == 0 && cancelled()) {
                 return;
             }
-            toTarget[i] = std::sqrt(targetIndex.nearest(onSurface[i]).squaredDistance);
+            toTarget[i] =
+                around.empty()
+                    ? std::sqrt(targetIndex.nearest(onSurface[i]).squaredDistance)
+                    : distanceToMesh(target, *options.triangles, around, targetIndex, onSurface[i]);
         }
     });
     stopIfCancelled();

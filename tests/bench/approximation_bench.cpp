@@ -106,8 +106,10 @@ ApproximationBenchReport runApproximationBench(const ApproximationBenchOptions& 
         report.stripsDevelopable += worst <= kDevelopableResidual ? 1 : 0;
     }
     log(options, "approximation: measuring the distance");
+    model::reference::DistanceOptions distanceOptions;
+    distanceOptions.triangles = &read.shape.triangles; // a mesh: to its triangles
     const model::reference::DistanceReport distance =
-        model::reference::measureDistance(outcome.surfaces, points);
+        model::reference::measureDistance(outcome.surfaces, points, distanceOptions);
     report.targetToSurface = distance.targetToSurface;
     report.surfaceToTarget = distance.surfaceToTarget;
     report.hausdorffPercent = 100.0 * distance.hausdorff() / distance.diagonal;

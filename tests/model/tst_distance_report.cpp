@@ -2,6 +2,7 @@
 #include "model/math_constants.h"
 #include "model/model_error.h"
 #include "model/reference/distance_report.h"
+#include "model/reference/initial_strip.h"
 #include "model/reference/surface_samples.h"
 #include "model/strip.h"
 #include "surface_transform.h"
@@ -9,8 +10,10 @@
 
 #include <QTest>
 
+#include <array>
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 using namespace devsurf::model;
 using namespace devsurf::model::reference;
@@ -344,6 +347,34 @@ private slots:
         QCOMPARE(measured.targetDistances, measureDistance(surface, target).targetDistances);
         cancel = true;
         QVERIFY_THROWS_EXCEPTION(DistanceCancelled, measureDistance(surface, target, options));
+    }
+
+    void surfaceToAMeshIsToItsTriangles() {
+        // The square [0, 100]² of z = 0 as two triangles on its four corners, and a flat strip
+        // over [10, 90]² one mm above it: every surface point is 1 mm from the mesh, while its
+        // nearest corner is at least 14 mm away.
+        const std::vector<Vec3> corners = {Vec3(0, 0, 0), Vec3(100, 0, 0), Vec3(100, 100, 0),
+                                           Vec3(0, 100, 0)};
+        const std::vector<std::array<int, 3>> triangles = {{0, 1, 2}, {0, 2, 3}};
+        std::vector<Vec3> grid;
+        for (int i = 0; i <= 8; ++i) {
+            for (int j = 0; j <= 8; ++j) {
+                grid.emplace_back(10.0 + 10.0 * i, 10.0 + 10.0 * j, 1.0);
+            }
+        }
+        const CompositeSurface strip = initialStrip(grid, {3, 2, 2}, 0.0);
+        DistanceOptions options;
+        options.triangles = &triangles;
+        const DistanceReport mesh = measureDistance(strip, corners, options);
+        QVERIFY(std::abs(mesh.surfaceToTarget.mean - 1.0) < 1e-9);
+        QVERIFY(std::abs(mesh.surfaceToTarget.max - 1.0) < 1e-9);
+        const DistanceReport vertices = measureDistance(strip, corners);
+        QVERIFY(vertices.surfaceToTarget.mean > 14.0);
+        // Target → surface is over the target points either way.
+        QCOMPARE(mesh.targetToSurface.mean, vertices.targetToSurface.mean);
+        const std::vector<std::array<int, 3>> broken = {{0, 1, 4}};
+        options.triangles = &broken;
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, measureDistance(strip, corners, options));
     }
 };
 

@@ -18,6 +18,7 @@
 #include <QThread>
 #include <QUndoCommand>
 
+#include <array>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -30,6 +31,7 @@ struct ApproximateReaction::Run {
     ApproximationChoice choice;
     quint64 revision = 0; // of the design the setup started from
     std::vector<model::Vec3> points;
+    std::vector<std::array<int, 3>> triangles;  // the shape's, if a mesh
     std::vector<model::CompositeSurface> start; // empty: new strips
     int firstNumber = 1;
     solver::ApproximationSetup setup;        // the setup thread's
@@ -116,6 +118,7 @@ void ApproximateReaction::start(const ApproximationChoice& choice) {
     run->choice = choice;
     run->revision = doc->revision();
     run->points = project.referenceShapes[static_cast<std::size_t>(choice.shape)].points;
+    run->triangles = project.referenceShapes[static_cast<std::size_t>(choice.shape)].triangles;
     if (!choice.newStrips) {
         run->start = project.surfaces;
     }
@@ -207,6 +210,7 @@ void ApproximateReaction::onJobDone(const solver::SolveResult& result) {
         clock.start();
         model::reference::DistanceOptions options;
         options.cancel = &run->stopMeasuring;
+        options.triangles = &run->triangles;
         try {
             run->distance = model::reference::measureDistance(run->result.outcome.surfaces,
                                                               run->points, options);
