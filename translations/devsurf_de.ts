@@ -1339,13 +1339,13 @@
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="44"/>
-        <source>&amp;New flat strips:</source>
-        <translation>&amp;Neue ebene Streifen:</translation>
+        <source>&amp;New strips:</source>
+        <translation>&amp;Neue Streifen:</translation>
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="46"/>
-        <source>Fit flat strips to as many patches of the shape (k-means clusters) and add them to the design.</source>
-        <translation>Ebene Streifen an ebenso viele Bereiche der Form legen (k-Means-Cluster) und dem Entwurf hinzufügen.</translation>
+        <source>Lay as many strips over bands of the shape (k-means clusters drawn out three times as long as wide), each bent into the cylinder that fits it best, pull them towards the shape and add them to the design.</source>
+        <translation>Ebenso viele Streifen über Bänder der Form legen (k-Means-Cluster, dreimal so lang wie breit gezogen), jeden zu dem Zylinder gebogen, der am besten passt, sie zur Form hin ziehen und dem Entwurf hinzufügen.</translation>
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="56"/>

@@ -1328,13 +1328,13 @@
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="44"/>
-        <source>&amp;New flat strips:</source>
-        <translation>新しい平らなストリップ(&amp;N):</translation>
+        <source>&amp;New strips:</source>
+        <translation>新しいストリップ(&amp;N):</translation>
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="46"/>
-        <source>Fit flat strips to as many patches of the shape (k-means clusters) and add them to the design.</source>
-        <translation>形状の同数の領域 (k-means クラスタ) に平らなストリップを当てはめ、デザインに追加します。</translation>
+        <source>Lay as many strips over bands of the shape (k-means clusters drawn out three times as long as wide), each bent into the cylinder that fits it best, pull them towards the shape and add them to the design.</source>
+        <translation>形状の同数の帯 (幅の 3 倍の長さに引き伸ばした k-means クラスタ) にストリップを置き、それぞれを最もよく合う円柱に曲げ、形状へ引き寄せてデザインに追加します。</translation>
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="56"/>

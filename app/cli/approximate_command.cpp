@@ -73,7 +73,7 @@ int runApproximateCommand(const SubcommandArguments& args) {
         if (project.surfaces.empty()) {
             throw InputError("'" + *from +
                              "' has no surface to start from; leave out '--from' "
-                             "to start from flat strips.");
+                             "to start from new strips.");
         }
     }
     io::ReferenceImportResult read = io::readReferenceShape(target);
@@ -99,7 +99,7 @@ int runApproximateCommand(const SubcommandArguments& args) {
               << " points\n";
 
     if (!from) {
-        // K clusters of the thinned points (k-means), one PCA strip each.
+        // K bands of the thinned points (k-means), one flat strip each.
         for (model::CompositeSurface& strip :
              solver::initialStrips(thinnedTarget, strips, intervals)) {
             project.addSurface(std::move(strip));
@@ -111,7 +111,7 @@ int runApproximateCommand(const SubcommandArguments& args) {
     }
     const solver::SurfaceTargets targets = solver::assignToSurfaces(project.surfaces, thinned);
     const solver::JobRequest request =
-        solver::approximationRequest(project.surfaces, targets, rho, iterations);
+        solver::approximationRequest(project.surfaces, targets, rho, iterations, !from);
     int surfaceShown = -1;
     auto progress = [&](const solver::JobProgress& step) {
         if (step.surface != surfaceShown) {
@@ -148,6 +148,9 @@ int runApproximateCommand(const SubcommandArguments& args) {
             std::cout << "  pulled again, damped: the strip cannot follow this part of the "
                          "target closely and stay developable\n";
         }
+        if (a.approximationKeptStart) {
+            std::cout << "  kept as it was laid: pulled closer, it did not end developable\n";
+        }
         if (a.summary.status == solver::Status::StoppedBeforeDegenerate) {
             std::cout << "  stopped at the last valid state" << refusedText(a) << "\n";
         }
@@ -161,8 +164,10 @@ int runApproximateCommand(const SubcommandArguments& args) {
         project.referenceShapes.end()) {
         project.referenceShapes.push_back(read.shape);
     }
+    model::reference::DistanceOptions distanceOptions;
+    distanceOptions.triangles = &read.shape.triangles; // a mesh: to its triangles
     const model::reference::DistanceReport report =
-        model::reference::measureDistance(project.surfaces, points);
+        model::reference::measureDistance(project.surfaces, points, distanceOptions);
     printDistanceReport(report, points.size());
     writeProject(project, output);
     std::cout << "Wrote " << output << "\n";

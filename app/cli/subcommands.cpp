@@ -244,9 +244,10 @@ const std::vector<SubcommandSpec>& subcommands() {
         {"distance",
          "distance FILE TARGET [--json] [--tolerance MM]",
          "How far the project's surfaces are from a mesh or point cloud TARGET\n"
-         "(as import-reference reads it; a mesh by its vertices): target to\n"
-         "surface (each target point to its closest surface point) and surface\n"
-         "to target (sampled), each as mean, 95th percentile and max in mm and\n"
+         "(as import-reference reads it): target to surface (each target point,\n"
+         "a mesh's vertices, to its closest surface point) and surface to target\n"
+         "(sampled; to a mesh's triangles, to a cloud's nearest point), each as\n"
+         "mean, 95th percentile and max in mm and\n"
          "in % of the target's bounding-box diagonal, and the coverage: the\n"
          "fraction of target points within MM of the surface (default 1 % of\n"
          "the diagonal).",
@@ -259,8 +260,9 @@ const std::vector<SubcommandSpec>& subcommands() {
          "import-reference reads it): the target is thinned to points at least\n"
          "R mm apart (default 2 % of its bounding-box diagonal), each with the\n"
          "normal of a plane fitted to its neighbours; the strips of START, or K\n"
-         "flat strips fitted to K patches of the target (k-means on the points;\n"
-         "default 1), are pulled towards the points they are nearest to for N\n"
+         "strips laid over K bands of the target (k-means on the points, drawn\n"
+         "out three times as long as wide, each strip the cylinder that fits\n"
+         "its band best; default 1), are pulled towards the points they are nearest to for N\n"
          "iterations (default 30), then the pull fades out over 10 more so the\n"
          "strips end exactly developable. A strip that cannot follow its points\n"
          "and stay developable (it leaves them, or ends not developable) is\n"
@@ -273,8 +275,8 @@ const std::vector<SubcommandSpec>& subcommands() {
          "welded into one shared edge, and the result pulled to the target once\n"
          "more; strips that face no other strip stay separate surfaces.",
          {{"from", "START.devsurf", "Start from the surfaces of this project."},
-          {"strips", "K", "Start from K flat strips (default 1)."},
-          {"intervals", "N", "Spline intervals of each flat strip (default 4)."},
+          {"strips", "K", "Start from K new strips (default 1)."},
+          {"intervals", "N", "Spline intervals of each new strip (default 4)."},
           {"iterations", "N", "Iterations of the pull (default 30)."},
           {"rho", "R", "The thinning radius in mm."},
           {"join", "", "Join strips whose edges face each other into one surface."},

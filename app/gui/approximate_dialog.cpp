@@ -41,10 +41,12 @@ ApproximateDialog::ApproximateDialog(const model::Project& project, QWidget* par
     // One shape: nothing to choose, but the name says which.
     m_shape->setEnabled(project.referenceShapes.size() > 1);
 
-    m_newStrips = new QRadioButton(tr("&New flat strips:"), this);
+    m_newStrips = new QRadioButton(tr("&New strips:"), this);
     m_newStrips->setObjectName(QStringLiteral("newStripsButton"));
-    m_newStrips->setToolTip(tr("Fit flat strips to as many patches of the shape (k-means "
-                               "clusters) and add them to the design."));
+    m_newStrips->setToolTip(tr("Lay as many strips over bands of the shape (k-means "
+                               "clusters drawn out three times as long as wide), each bent "
+                               "into the cylinder that fits it best, pull them towards the "
+                               "shape and add them to the design."));
     m_strips = new QSpinBox(this);
     m_strips->setObjectName(QStringLiteral("stripsBox"));
     m_strips->setRange(1, 100);

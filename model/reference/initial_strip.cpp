@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -33,15 +34,21 @@ std::vector<Vec3> straightControlPoints(const SplineSpace& space, const Vec3& p,
     return points;
 }
 
-// The unit direction of the frame's plane along which the normals turn most, if they turn
-// clearly more along it than across it (kRulingAnisotropy) and by kRulingTurnMinimum at least
-// over the points: a least-squares linear fit of the normals' tilt (their components in the
-// plane, each normal turned to the side of axes[2]) against the points' position in the plane,
-// whose larger singular direction that is.
-std::optional<Vec3> mostTurningDirection(const std::vector<Vec3>& points,
-                                         const std::vector<Vec3>& normals,
-                                         const PrincipalFrame& frame) {
-    if (normals.empty()) {
+// How the normals turn over the points: a least-squares linear fit of their tilt (their
+// components in the frame's plane, each normal turned to the side of axes[2]) against the
+// points' position in the plane; its singular values (rad per mm, larger first) and the unit
+// direction in the plane of the larger one. None for a missing or zero normal.
+struct Turning {
+    double most = 0.0;
+    double least = 0.0;
+    Vec3 direction;
+    double alongLongest = 0.0; // |cos| of its angle to axes[0]
+};
+
+std::optional<Turning> normalTurning(const std::vector<Vec3>& points,
+                                     const std::vector<Vec3>& normals,
+                                     const PrincipalFrame& frame) {
+    if (normals.empty() || normals.size() != points.size()) {
         return std::nullopt;
     }
     Eigen::MatrixXd positions(static_cast<Eigen::Index>(points.size()), 3);
@@ -65,19 +72,128 @@ std::optional<Vec3> mostTurningDirection(const std::vector<Vec3>& points,
     const Eigen::MatrixXd x = positions.colPivHouseholderQr().solve(tilts);
     const Eigen::Matrix2d gradient = x.topRows(2).transpose(); // rows: tilt, columns: step
     const Eigen::JacobiSVD<Eigen::Matrix2d> svd(gradient, Eigen::ComputeFullV);
-    const Eigen::Vector2d sigma = svd.singularValues();
+    const Eigen::Vector2d v = svd.matrixV().col(0);
+    const Vec3 direction = frame.axes[0] * v(0) + frame.axes[1] * v(1);
+    if (!(direction.norm() > 0.0)) {
+        return std::nullopt;
+    }
+    Turning t;
+    t.most = svd.singularValues()(0);
+    t.least = svd.singularValues()(1);
+    t.direction = direction / direction.norm();
+    t.alongLongest = std::abs(v(0)) / v.norm();
+    return t;
+}
+
+// The unit direction of the frame's plane along which the normals turn most, if they turn
+// clearly more along it than across it (kRulingAnisotropy) and by kRulingTurnMinimum at least
+// over the points.
+std::optional<Vec3> mostTurningDirection(const std::vector<Vec3>& points,
+                                         const std::vector<Vec3>& normals,
+                                         const PrincipalFrame& frame) {
+    const std::optional<Turning> t = normalTurning(points, normals, frame);
+    if (!t) {
+        return std::nullopt;
+    }
     const double span = std::max(frame.high[0] - frame.low[0], frame.high[1] - frame.low[1]);
-    if (!(sigma(0) * span >= kRulingTurnMinimum) || !(sigma(0) >= kRulingAnisotropy * sigma(1))) {
+    if (!(t->most * span >= kRulingTurnMinimum) || !(t->most >= kRulingAnisotropy * t->least)) {
         return std::nullopt;
     }
     // Near the longest axis (within kRulingTurnAngle) the plain strip stays: turning it a
     // little gains nothing and changes what the strips of a shape meet with.
-    const Eigen::Vector2d v = svd.matrixV().col(0);
-    if (std::abs(v(0)) >= std::cos(kRulingTurnAngle) * v.norm()) {
+    if (t->alongLongest >= std::cos(kRulingTurnAngle)) {
         return std::nullopt;
     }
-    const Vec3 direction = frame.axes[0] * v(0) + frame.axes[1] * v(1);
-    return direction / direction.norm();
+    return t->direction;
+}
+
+// k-means labels of `points` into `count` groups (at most 50 rounds) from a deterministic
+// farthest-point start.
+std::vector<std::size_t> kMeansLabels(const std::vector<Vec3>& points, std::size_t k) {
+    const PrincipalFrame frame = principalFrame(points);
+    // Farthest-point start: deterministic and spread over the shape.
+    std::vector<Vec3> centres;
+    std::vector<double> nearest(points.size(), std::numeric_limits<double>::max());
+    Vec3 next = frame.centroid;
+    for (std::size_t c = 0; c < k; ++c) {
+        std::size_t farthest = 0;
+        double best = -1.0;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const double d = c == 0 ? (points[i] - next).norm() : nearest[i];
+            if (d > best) {
+                best = d;
+                farthest = i;
+            }
+        }
+        centres.push_back(points[farthest]);
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            nearest[i] = std::min(nearest[i], (points[i] - centres.back()).norm());
+        }
+    }
+    std::vector<std::size_t> label(points.size(), 0);
+    for (int round = 0; round < 50; ++round) {
+        bool changed = false;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            std::size_t best = 0;
+            for (std::size_t c = 1; c < k; ++c) {
+                if ((points[i] - centres[c]).squaredNorm() <
+                    (points[i] - centres[best]).squaredNorm()) {
+                    best = c;
+                }
+            }
+            changed = changed || best != label[i];
+            label[i] = best;
+        }
+        if (!changed && round > 0) {
+            break;
+        }
+        std::vector<Vec3> sum(k);
+        std::vector<std::size_t> members(k, 0);
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            sum[label[i]] += points[i];
+            ++members[label[i]];
+        }
+        for (std::size_t c = 0; c < k; ++c) {
+            if (members[c] > 0) {
+                centres[c] = sum[c] / static_cast<double>(members[c]);
+            }
+        }
+    }
+    return label;
+}
+
+std::vector<std::vector<std::size_t>> groupsOf(const std::vector<std::size_t>& label,
+                                               std::size_t k) {
+    std::vector<std::vector<std::size_t>> groups(k);
+    for (std::size_t i = 0; i < label.size(); ++i) {
+        groups[label[i]].push_back(i);
+    }
+    groups.erase(std::remove_if(groups.begin(), groups.end(),
+                                [](const std::vector<std::size_t>& g) { return g.empty(); }),
+                 groups.end());
+    return groups;
+}
+
+// The direction a group's band runs, for a group whose normals turn both ways (by
+// kRulingTurnMinimum at least across its points): where they turn clearly more one way
+// (kBandAnisotropy), that way; otherwise its longest axis. None for a group that curves one way
+// or not at all (a developable strip fits it at any width) or spreads in fewer than two
+// directions: it stays compact.
+std::optional<Vec3> bandDirection(const std::vector<Vec3>& points,
+                                  const std::vector<Vec3>& normals) {
+    if (points.size() < 3) {
+        return std::nullopt;
+    }
+    const PrincipalFrame frame = principalFrame(points);
+    if (!(frame.high[1] - frame.low[1] > 0.0)) {
+        return std::nullopt;
+    }
+    const std::optional<Turning> t = normalTurning(points, normals, frame);
+    const double span = std::max(frame.high[0] - frame.low[0], frame.high[1] - frame.low[1]);
+    if (!t || !(t->least * span >= kRulingTurnMinimum)) {
+        return std::nullopt;
+    }
+    return t->most > kBandAnisotropy * t->least ? t->direction : frame.axes[0];
 }
 
 } // namespace
@@ -198,68 +314,225 @@ CompositeSurface initialStrip(const std::vector<Vec3>& points, const std::vector
     return s;
 }
 
+namespace {
+
+// The general cylinder over direction `along` of the frame's plane: the height h over the plane
+// as f(u) + tilt · w, f a cubic of u (along) and w across, fitted by least squares; u and w
+// from the centroid, scaled by `scale` inside the fit for its conditioning.
+struct CylinderFit {
+    Vec3 along;
+    Vec3 across;
+    double coefficients[4] = {0.0, 0.0, 0.0, 0.0}; // f(u) = Σ cₖ (u / scale)ᵏ
+    double tilt = 0.0;
+    double scale = 1.0;
+    double squaredError = 0.0;
+
+    double height(double u, double w) const {
+        const double s = u / scale;
+        return coefficients[0] +
+               s * (coefficients[1] + s * (coefficients[2] + s * coefficients[3])) + tilt * w;
+    }
+};
+
+CylinderFit fitCylinder(const std::vector<Vec3>& points, const PrincipalFrame& frame,
+                        const Vec3& along) {
+    CylinderFit fit;
+    fit.along = along;
+    fit.across = cross(frame.axes[2], along);
+    fit.scale = std::max({frame.high[0] - frame.low[0], frame.high[1] - frame.low[1], 1e-300});
+    Eigen::MatrixXd a(static_cast<Eigen::Index>(points.size()), 5);
+    Eigen::VectorXd h(static_cast<Eigen::Index>(points.size()));
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const Vec3 d = points[i] - frame.centroid;
+        const double s = dot(d, fit.along) / fit.scale;
+        const auto row = static_cast<Eigen::Index>(i);
+        a.row(row) << 1.0, s, s * s, s * s * s, dot(d, fit.across) / fit.scale;
+        h(row) = dot(d, frame.axes[2]);
+    }
+    const Eigen::VectorXd c = a.colPivHouseholderQr().solve(h);
+    for (int k = 0; k < 4; ++k) {
+        fit.coefficients[k] = c(k);
+    }
+    fit.tilt = c(4) / fit.scale;
+    fit.squaredError = (a * c - h).squaredNorm();
+    return fit;
+}
+
+// Control points in `space` of the curve `at` (t in [0, 1]) by least squares over samples:
+// exact for a polynomial of at most the space's degree.
+std::vector<Vec3> fittedControlPoints(const SplineSpace& space,
+                                      const std::function<Vec3(double)>& at) {
+    const int count = space.controlPointCount(false);
+    const int samples = 4 * count;
+    Eigen::MatrixXd basis(samples, count);
+    for (int i = 0; i < count; ++i) {
+        std::vector<Vec3> unit(static_cast<std::size_t>(count));
+        unit[static_cast<std::size_t>(i)] = Vec3(1.0, 0.0, 0.0);
+        const BSplineCurve curve = BSplineCurve::uniform(space, unit);
+        for (int k = 0; k < samples; ++k) {
+            basis(k, i) = curve.evaluate(static_cast<double>(k) / (samples - 1)).x;
+        }
+    }
+    Eigen::MatrixXd values(samples, 3);
+    for (int k = 0; k < samples; ++k) {
+        const Vec3 p = at(static_cast<double>(k) / (samples - 1));
+        values.row(k) << p.x, p.y, p.z;
+    }
+    const Eigen::MatrixXd c = basis.colPivHouseholderQr().solve(values);
+    std::vector<Vec3> points(static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) {
+        points[static_cast<std::size_t>(i)] = Vec3(c(i, 0), c(i, 1), c(i, 2));
+    }
+    return points;
+}
+
+} // namespace
+
+CompositeSurface initialCylinderStrip(const std::vector<Vec3>& points,
+                                      const std::vector<Vec3>& normals, const SplineSpace& space,
+                                      double margin) {
+    // The flat strip checks the arguments and gives the first direction (its curve a; with a
+    // margin, so that a is not a point where one half of the strip holds one point).
+    const CompositeSurface flat = initialStrip(points, normals, space, std::max(margin, 0.05));
+    const PrincipalFrame frame = principalFrame(points);
+    const Vec3 a0 = flat.position(flat.faces().begin()->second[0]);
+    const Vec3 a1 = flat.position(flat.faces().begin()->second[1]);
+    Vec3 first = a1 - a0;
+    first = first.norm() > 0.0 ? first / first.norm() : frame.axes[0];
+    CylinderFit best = fitCylinder(points, frame, first);
+    const double firstError = best.squaredError;
+    for (int k = 0; k < kCylinderDirections; ++k) {
+        const double angle = M_PI * k / kCylinderDirections;
+        const Vec3 along = frame.axes[0] * std::cos(angle) + frame.axes[1] * std::sin(angle);
+        const CylinderFit fit = fitCylinder(points, frame, along);
+        if (fit.squaredError < kCylinderDirectionGain * firstError &&
+            fit.squaredError < best.squaredError) {
+            best = fit;
+        }
+    }
+    double low[2] = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+    double high[2] = {std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
+    for (const Vec3& p : points) {
+        const double t[2] = {dot(p - frame.centroid, best.along),
+                             dot(p - frame.centroid, best.across)};
+        for (int i = 0; i < 2; ++i) {
+            low[i] = std::min(low[i], t[i]);
+            high[i] = std::max(high[i], t[i]);
+        }
+    }
+    const double length = high[0] - low[0];
+    const double width = high[1] - low[1];
+    const double w0 = low[1] - margin * width;
+    const double w1 = high[1] + margin * width;
+    const double u0 = low[0] - margin * length;
+    const double u1 = high[0] + margin * length;
+    const auto curveAt = [&](double w) {
+        return [&, w](double t) {
+            const double u = u0 + (u1 - u0) * t;
+            return frame.centroid + best.along * u + best.across * w +
+                   frame.axes[2] * best.height(u, w);
+        };
+    };
+    const std::vector<Vec3> aPoints = fittedControlPoints(space, curveAt(w0));
+    const std::vector<Vec3> bPoints = fittedControlPoints(space, curveAt(w1));
+    const auto finite = [](const Vec3& p) { return p.isFinite(); };
+    if (!(width > 1e-9 * length) || !(length > 1e-9 * width) ||
+        !std::all_of(aPoints.begin(), aPoints.end(), finite) ||
+        !std::all_of(bPoints.begin(), bPoints.end(), finite)) {
+        throw std::invalid_argument("the points do not spread in two directions");
+    }
+    CompositeSurface s;
+    s.setName("strip");
+    // The face loop a0, a1, b1, b0 as the flat strip's: its normal is near axes[2].
+    const VertexId va0 = s.addVertex(aPoints.front());
+    const VertexId va1 = s.addVertex(aPoints.back());
+    const VertexId vb1 = s.addVertex(bPoints.back());
+    const VertexId vb0 = s.addVertex(bPoints.front());
+    s.addFace({va0, va1, vb1, vb0});
+    s.setSpline(va0, va1, space, aPoints);
+    s.setSpline(vb0, vb1, space, bPoints);
+    return s;
+}
+
 std::vector<std::vector<std::size_t>> clusterPoints(const std::vector<Vec3>& points, int count) {
     if (count < 1 || static_cast<std::size_t>(count) * 3 > points.size()) {
         throw std::invalid_argument("each group needs at least 3 points");
     }
     const auto k = static_cast<std::size_t>(count);
-    const PrincipalFrame frame = principalFrame(points);
-    // Farthest-point start: deterministic and spread over the shape.
-    std::vector<Vec3> centres;
-    std::vector<double> nearest(points.size(), std::numeric_limits<double>::max());
-    Vec3 next = frame.centroid;
-    for (std::size_t c = 0; c < k; ++c) {
-        std::size_t farthest = 0;
-        double best = -1.0;
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            const double d = c == 0 ? (points[i] - next).norm() : nearest[i];
-            if (d > best) {
-                best = d;
-                farthest = i;
-            }
-        }
-        centres.push_back(points[farthest]);
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            nearest[i] = std::min(nearest[i], (points[i] - centres.back()).norm());
-        }
+    return groupsOf(kMeansLabels(points, k), k);
+}
+
+std::vector<std::vector<std::size_t>> clusterPoints(const std::vector<Vec3>& points,
+                                                    const std::vector<Vec3>& normals, int count,
+                                                    double aspect) {
+    if (count < 1 || static_cast<std::size_t>(count) * 3 > points.size()) {
+        throw std::invalid_argument("each group needs at least 3 points");
     }
-    std::vector<std::size_t> label(points.size(), 0);
+    if (!(aspect >= 1.0) || !std::isfinite(aspect)) {
+        throw std::invalid_argument("the aspect must be a finite number of at least 1");
+    }
+    if (normals.size() != points.size()) {
+        throw std::invalid_argument("give one normal per point");
+    }
+    const auto k = static_cast<std::size_t>(count);
+    std::vector<std::size_t> label = kMeansLabels(points, k);
+    if (aspect == 1.0) {
+        return groupsOf(label, k);
+    }
+    // From the compact groups, rounds of: each group's centre and band direction t, then each
+    // point to the group nearest in that group's metric |d|² + (s − 1) (|d|² − (d · t)²), s =
+    // aspect² for a band, 1 for a group that stays compact (no t).
+    const double stretch = aspect * aspect;
+    std::vector<Vec3> centres(k);
+    std::vector<Vec3> along(k);
+    std::vector<double> groupStretch(k, 1.0);
+    std::vector<bool> alive(k, false);
     for (int round = 0; round < 50; ++round) {
+        std::vector<std::vector<Vec3>> members(k);
+        std::vector<std::vector<Vec3>> memberNormals(k);
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            members[label[i]].push_back(points[i]);
+            memberNormals[label[i]].push_back(normals[i]);
+        }
+        for (std::size_t c = 0; c < k; ++c) {
+            alive[c] = !members[c].empty();
+            if (!alive[c]) {
+                continue;
+            }
+            Vec3 sum;
+            for (const Vec3& p : members[c]) {
+                sum += p;
+            }
+            centres[c] = sum / static_cast<double>(members[c].size());
+            const std::optional<Vec3> t = bandDirection(members[c], memberNormals[c]);
+            along[c] = t.value_or(Vec3());
+            groupStretch[c] = t ? stretch : 1.0;
+        }
         bool changed = false;
         for (std::size_t i = 0; i < points.size(); ++i) {
-            std::size_t best = 0;
-            for (std::size_t c = 1; c < k; ++c) {
-                if ((points[i] - centres[c]).squaredNorm() <
-                    (points[i] - centres[best]).squaredNorm()) {
+            std::size_t best = label[i];
+            double bestDistance = std::numeric_limits<double>::max();
+            for (std::size_t c = 0; c < k; ++c) {
+                if (!alive[c]) {
+                    continue;
+                }
+                const Vec3 d = points[i] - centres[c];
+                const double t = dot(d, along[c]);
+                const double distance =
+                    d.squaredNorm() + (groupStretch[c] - 1.0) * (d.squaredNorm() - t * t);
+                if (distance < bestDistance) {
+                    bestDistance = distance;
                     best = c;
                 }
             }
             changed = changed || best != label[i];
             label[i] = best;
         }
-        if (!changed && round > 0) {
+        if (!changed) {
             break;
         }
-        std::vector<Vec3> sum(k);
-        std::vector<std::size_t> members(k, 0);
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            sum[label[i]] += points[i];
-            ++members[label[i]];
-        }
-        for (std::size_t c = 0; c < k; ++c) {
-            if (members[c] > 0) {
-                centres[c] = sum[c] / static_cast<double>(members[c]);
-            }
-        }
     }
-    std::vector<std::vector<std::size_t>> groups(k);
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        groups[label[i]].push_back(i);
-    }
-    groups.erase(std::remove_if(groups.begin(), groups.end(),
-                                [](const std::vector<std::size_t>& g) { return g.empty(); }),
-                 groups.end());
-    return groups;
+    return groupsOf(label, k);
 }
 
 } // namespace devsurf::model::reference

@@ -36,16 +36,46 @@ CompositeSurface initialStrip(const std::vector<Vec3>& points, const SplineSpace
 CompositeSurface initialStrip(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                               const SplineSpace& space, double margin = 0.05);
 
+// The same strip bent into the general cylinder that fits the points best (least squares of
+// the height over the plane): the height a cubic of the position along the curves plus a tilt
+// across them, the curves along the direction among the one above and kCylinderDirections
+// evenly turned ones whose cylinder fits best, the rulings across. Exactly developable (b is a
+// translate of a) and, on a doubly curved patch, far nearer its points than the flat strip: the
+// automatic approximation starts from it. A rectangle (a trapezoid would not be developable).
+// Throws as above.
+CompositeSurface initialCylinderStrip(const std::vector<Vec3>& points,
+                                      const std::vector<Vec3>& normals, const SplineSpace& space,
+                                      double margin = 0.05);
+inline constexpr int kCylinderDirections = 12;
+// Another direction replaces the first only where its cylinder's squared error is below this
+// fraction of the first's.
+inline constexpr double kCylinderDirectionGain = 0.8;
+
 // Turning ratio of the two directions, least turn over the points (rad), least angle from the
 // longest axis (docs/tuning.md).
 inline constexpr double kRulingAnisotropy = 2.0;
 inline constexpr double kRulingTurnMinimum = 0.05;
 inline constexpr double kRulingTurnAngle = 0.5235987755982988; // 30°
 
+// Where a group's normals turn this much more one way than across, its band runs that way.
+inline constexpr double kBandAnisotropy = 1.5;
+
 // A shape split into at most `count` compact groups (no empty one) for as many initial strips:
 // k-means (at most 50 rounds) from a deterministic farthest-point start; indices into `points`,
 // ascending. Compact patches, not slabs: a closed shape's slabs are rings no strip covers.
 // Throws std::invalid_argument if count < 1 or count > points.size() / 3.
 std::vector<std::vector<std::size_t>> clusterPoints(const std::vector<Vec3>& points, int count);
+
+// The same groups, those over a doubly curved part drawn out into bands `aspect` times as long
+// as they are wide: k-means whose distance counts a step across such a group's band `aspect`
+// times a step along it, the band running where the group's normals (one per point, either
+// sign) turn most, or along its longest axis where they turn alike every way. A developable
+// strip follows a doubly curved shape along its curves; across them, along its rulings, it
+// stays within κ w² / 8 only for a narrow width w. A group whose normals turn one way or not
+// at all stays compact: a strip fits it at any width. aspect 1: clusterPoints above. Throws as
+// above, or for aspect < 1 or one normal per point missing.
+std::vector<std::vector<std::size_t>> clusterPoints(const std::vector<Vec3>& points,
+                                                    const std::vector<Vec3>& normals, int count,
+                                                    double aspect);
 
 } // namespace devsurf::model::reference

@@ -10,6 +10,7 @@
 #include "solver/core/term.h"
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace devsurf::solver {
@@ -30,6 +31,11 @@ struct ApproximationTarget {
     // strip reaches its points. Without it a flat start on a patch of the bunny jumped away
     // (residual 9 in the first iteration). 0: weight 1 whatever the distance.
     double falloff = 0.0;
+    // Where the damped pull starts when the pull from the surface fails (solve_job.cpp): for
+    // a strip the automatic path laid flat, the cylinder that fits its points best
+    // (model::reference::initialCylinderStrip). The damped pull moves a strip only a little,
+    // so where it starts is most of where it ends. None: from the surface itself.
+    std::optional<model::CompositeSurface> dampedStart;
 };
 
 // The weights of the three families (constraint roles judged apart, so that the largest

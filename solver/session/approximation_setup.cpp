@@ -44,8 +44,13 @@ std::vector<model::CompositeSurface> initialStrips(const ThinnedTarget& target, 
     }
     const model::SplineSpace space{3, 2, intervals};
     std::vector<model::CompositeSurface> strips;
+    std::vector<model::Vec3> pointNormals;
+    pointNormals.reserve(target.thinned.points.size());
+    for (const model::reference::ThinnedPoint& p : target.thinned.points) {
+        pointNormals.push_back(p.normal);
+    }
     for (const std::vector<std::size_t>& cluster :
-         model::reference::clusterPoints(positions, count)) {
+         model::reference::clusterPoints(positions, pointNormals, count, kStripBandAspect)) {
         std::vector<model::Vec3> patch;
         std::vector<model::Vec3> normals;
         patch.reserve(cluster.size());
@@ -84,9 +89,34 @@ SurfaceTargets assignToSurfaces(const std::vector<model::CompositeSurface>& surf
     return targets;
 }
 
+namespace {
+
+// The cylinder over a new strip's points in the strip's spline space, named as the strip; none
+// where the points do not spread in two directions.
+std::optional<model::CompositeSurface> cylinderStart(const model::CompositeSurface& strip,
+                                                     const std::vector<model::Vec3>& points,
+                                                     const std::vector<model::Vec3>& normals) {
+    for (const auto& [id, edge] : strip.edges()) {
+        if (!edge.isSpline()) {
+            continue;
+        }
+        try {
+            model::CompositeSurface start = model::reference::initialCylinderStrip(
+                points, normals, edge.space, kCylinderStartMargin);
+            start.setName(strip.name());
+            return start;
+        } catch (const std::invalid_argument&) {
+            return std::nullopt;
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
 JobRequest approximationRequest(const std::vector<model::CompositeSurface>& surfaces,
                                 const SurfaceTargets& targets, double rho,
-                                std::optional<int> iterations) {
+                                std::optional<int> iterations, bool newStrips) {
     JobRequest request;
     request.kind = JobKind::Approximate;
     request.iterations = iterations;
@@ -100,6 +130,9 @@ JobRequest approximationRequest(const std::vector<model::CompositeSurface>& surf
         t->normals = targets.normals[s];
         t->borderReach = rho;
         t->falloff = kFalloffRhos * rho;
+        if (newStrips) {
+            t->dampedStart = cylinderStart(surfaces[s], t->points, t->normals);
+        }
         request.targets[static_cast<int>(s)] = std::move(t);
     }
     return request;
@@ -143,8 +176,8 @@ ApproximationSetup prepareApproximation(const std::vector<model::Vec3>& points,
         return setup;
     }
     setup.targets = assignToSurfaces(setup.surfaces, setup.target.thinned);
-    setup.request =
-        approximationRequest(setup.surfaces, setup.targets, setup.target.rho, options.iterations);
+    setup.request = approximationRequest(setup.surfaces, setup.targets, setup.target.rho,
+                                         options.iterations, setup.newStrips);
     if (setup.request.targets.empty()) {
         setup.error = ApproximationSetup::Error::NothingNear;
     }

@@ -43,11 +43,22 @@ ThinnedTarget thinTarget(const std::vector<model::Vec3>& points, double rho,
 // Whether `thinned` keeps enough points for `strips` strips (3 each).
 bool enoughPointsFor(const ThinnedTarget& target, int strips);
 
+// The new strips' groups are bands this many times as long as wide (clusterPoints with the
+// thinned normals): a developable strip follows a doubly curved shape closely only across a
+// narrow width. Longer bands come nearer the shape but overhang it more (docs/tuning.md,
+// "Bands bent into cylinders").
+inline constexpr double kStripBandAspect = 2.0;
+
+// The margin of a new strip's cylinder start (ApproximationTarget::dampedStart) around its
+// points, as a fraction of its extent: none, for the damped pull barely grows a strip but a
+// margin overhangs the shape.
+inline constexpr double kCylinderStartMargin = 0.0;
+
 // `count` flat strips with `intervals` spline intervals (cubic, degree-2 rulings space), one on
-// each K-means cluster of the thinned points (model::reference::clusterPoints, initialStrip with
-// the thinned normals), named "strip N" from N = firstNumber. A cluster on a line gets no strip, so
-// fewer may come back (none if every point lies on one line). Requires enoughPointsFor(target,
-// count).
+// each band of the thinned points (model::reference::clusterPoints with kStripBandAspect,
+// initialStrip with the thinned normals), named "strip N" from N = firstNumber. A cluster on a line
+// gets no strip, so fewer may come back (none if every point lies on one line). Requires
+// enoughPointsFor(target, count).
 std::vector<model::CompositeSurface> initialStrips(const ThinnedTarget& target, int count,
                                                    int intervals, int firstNumber = 1);
 
@@ -63,10 +74,12 @@ SurfaceTargets assignToSurfaces(const std::vector<model::CompositeSurface>& surf
 inline constexpr std::size_t kFewestTargetPoints = 3;
 
 // The Approximate job for `surfaces` pulled towards their points (unset iterations: the job's
-// default, kApproximationIterations).
+// default, kApproximationIterations). `newStrips`: the surfaces are strips laid by
+// initialStrips, each given the cylinder over its points as its damped start
+// (ApproximationTarget::dampedStart).
 JobRequest approximationRequest(const std::vector<model::CompositeSurface>& surfaces,
                                 const SurfaceTargets& targets, double rho,
-                                std::optional<int> iterations);
+                                std::optional<int> iterations, bool newStrips = false);
 
 // Everything at once, for a front end that runs it off its GUI thread.
 struct ApproximationOptions {

@@ -368,14 +368,18 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
         };
         const auto stepped = std::chrono::steady_clock::now();
         Summary summary = session->step(steps, cancel, perIteration);
+        const model::CompositeSurface* start = &snapshot; // of the pull that counts
         if (target && !target->points.empty() && summary.status != Status::Cancelled &&
             approximationFailed(session->surface(), *target, summary)) {
             // The target pulled the strips where they cannot stay developable: the damped
             // recipe from the start (kDampedApproximationWeightScale).
+            if (target->dampedStart) {
+                start = &*target->dampedStart;
+            }
             try {
                 SessionOptions options = optionsFor(request, key, true);
                 options.approximationFadeAfter = iterations;
-                session = std::make_unique<SolveSession>(snapshot, handles, points, options);
+                session = std::make_unique<SolveSession>(*start, handles, points, options);
             } catch (const std::exception& error) {
                 return fail(cannotSolve(key, error));
             }
@@ -384,10 +388,14 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             assessment.dampedApproximation = true;
         }
         if (target && !target->points.empty() && summary.succeeded() &&
-            summary.status != Status::StoppedBeforeDegenerate && !summary.toleranceReached) {
-            // Short of the tolerance once the pull has faded: finished as a Solve of where the
-            // pull left it, whose relative fairness keeps it there while the hard conditions
-            // converge (continuing the pull's own session moved it farther: docs/tuning.md).
+            summary.status != Status::StoppedBeforeDegenerate &&
+            (!summary.toleranceReached ||
+             worstDevelopability(session->surface()) >
+                 kApproximationFinishSampledFraction * summary.tolerance)) {
+            // Short of the tolerance once the pull has faded, by the solver's rows or sampled
+            // between them: finished as a Solve of where the pull left it, whose relative
+            // fairness keeps it there while the hard conditions converge (continuing the pull's
+            // own session moved it farther: docs/tuning.md).
             JobRequest finish;
             finish.kind = JobKind::Solve;
             finish.curvePairs = request.curvePairs;
@@ -401,6 +409,24 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
             total += kApproximationFinishIterations;
             continueSummary(summary,
                             session->step(kApproximationFinishIterations, cancel, perIteration));
+            if (summary.succeeded() && request.curvePairs.count(key) == 0 &&
+                worstDevelopability(session->surface()) > summary.tolerance &&
+                worstDevelopability(*start) <= summary.tolerance) {
+                // Still short: the start of the damped pull (a flat strip, or the cylinder
+                // over its points: ApproximationTarget::dampedStart), solved; a developable
+                // strip a little farther from the target rather than one that is not
+                // developable. Not for a pairing (the Join job), whose start has its edges
+                // apart.
+                try {
+                    session = std::make_unique<SolveSession>(*start, std::vector<VertexHandle>{},
+                                                             optionsFor(finish, key));
+                } catch (const std::exception& error) {
+                    return fail(cannotSolve(key, error));
+                }
+                total += kApproximationFinishIterations;
+                summary = session->step(kApproximationFinishIterations, cancel, perIteration);
+                assessment.approximationKeptStart = true;
+            }
         }
         auto stepTime = std::chrono::steady_clock::now() - stepped;
         if (session->gaveUp() && summary.iterationsCompleted > 0) {

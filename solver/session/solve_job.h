@@ -92,6 +92,10 @@ constexpr int kApproximationIterations = 30;
 // At most this many more iterations, of the hard conditions alone, for an approximation whose
 // strip is short of the tolerance when its pull has faded (docs/tuning.md).
 constexpr int kApproximationFinishIterations = 20;
+// ... or whose sampled developability (worstDevelopability) exceeds this fraction of the
+// tolerance: between its samples it may lie above the tolerance (a sphere cap pulled damped from
+// its cylinder: within it as sampled there, 1.1e-8 at 50 values per interval).
+constexpr double kApproximationFinishSampledFraction = 0.1;
 
 // The iterations a request runs when it does not say: Solve kSolveIterations (a limit, it stops
 // once converged), a drag's move 1, its release iterationsAfterDrag() (longer when a surface
@@ -193,6 +197,9 @@ struct SurfaceAssessment {
     // points) and ran again with the damped recipe (kDampedApproximationWeightScale): the
     // target is farther from developable than the strip can follow closely.
     bool dampedApproximation = false;
+    // An approximation that stayed short of developable even after its finishing Solve and
+    // kept its strip as it was laid (developable), solved.
+    bool approximationKeptStart = false;
 };
 
 // Samples per spline interval of the development the verdict measures (as the views draw it).

@@ -1,8 +1,9 @@
-// The initial strips of §4.2: a flat trapezoid over the PCA plane of points, and the clusters
-// that split a shape for several strips.
+// The initial strips of §4.2: a flat trapezoid over the PCA plane of points, the cylinder that
+// fits them best, and the clusters that split a shape for several strips.
 
 #include "model/reference/distance_report.h"
 #include "model/reference/initial_strip.h"
+#include "sampled_developability.h"
 #include "test_registry.h"
 
 #include <QTest>
@@ -172,6 +173,99 @@ private slots:
             }
             QVERIFY(high - low < 120.0);
         }
+    }
+
+    void bandsWhereTheShapeCurvesBothWays() {
+        // 80° × 80° of a sphere of radius 100 mm (its normals are the points' directions) in 4
+        // groups: compact groups are about as wide as long, bands about twice (four bands
+        // cannot all be three times as long as wide on a square).
+        std::vector<Vec3> points;
+        for (int i = 0; i <= 40; ++i) {
+            for (int j = 0; j <= 40; ++j) {
+                const double theta = (-40.0 + 2.0 * i) * M_PI / 180.0;
+                const double phi = (-40.0 + 2.0 * j) * M_PI / 180.0;
+                points.emplace_back(100.0 * std::cos(phi) * std::sin(theta),
+                                    100.0 * std::cos(phi) * std::cos(theta), 100.0 * std::sin(phi));
+            }
+        }
+        const std::vector<Vec3> normals = points; // either length
+        const auto elongation = [&](const std::vector<std::size_t>& group) {
+            std::vector<Vec3> members;
+            for (std::size_t i : group) {
+                members.push_back(points[i]);
+            }
+            const PrincipalFrame f = principalFrame(members);
+            return (f.high[0] - f.low[0]) / (f.high[1] - f.low[1]);
+        };
+        const auto compact = clusterPoints(points, normals, 4, 1.0);
+        QCOMPARE(compact, clusterPoints(points, 4));
+        for (const auto& group : compact) {
+            QVERIFY(elongation(group) < 1.5);
+        }
+        const auto bands = clusterPoints(points, normals, 4, 3.0);
+        QCOMPARE(static_cast<int>(bands.size()), 4);
+        std::size_t total = 0;
+        for (const auto& group : bands) {
+            total += group.size();
+            QVERIFY2(elongation(group) > 1.7, qPrintable(QString::number(elongation(group))));
+        }
+        QCOMPARE(total, points.size());
+    }
+
+    void compactWhereTheShapeCurvesOneWay() {
+        // A circular cylinder (radius 100 about the z-axis, ±60° around, 240 mm high) and a
+        // plane: a strip fits any width of them, so the groups stay those of clusterPoints.
+        std::vector<Vec3> points;
+        std::vector<Vec3> normals;
+        for (int i = 0; i <= 40; ++i) {
+            const double phi = (2.0 * i / 40 - 1.0) * M_PI / 3.0;
+            for (int j = 0; j <= 48; ++j) {
+                points.emplace_back(100.0 * std::cos(phi), 100.0 * std::sin(phi), 5.0 * j);
+                normals.emplace_back(std::cos(phi), std::sin(phi), 0.0);
+            }
+        }
+        QCOMPARE(clusterPoints(points, normals, 4, 3.0), clusterPoints(points, 4));
+        const std::vector<Vec3> plane =
+            grid(Vec3(0, 0, 0), Vec3(120, 0, 0), Vec3(0, 120, 0), 24, 24);
+        const std::vector<Vec3> up(plane.size(), Vec3(0, 0, 1));
+        QCOMPARE(clusterPoints(plane, up, 4, 3.0), clusterPoints(plane, 4));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, clusterPoints(plane, up, 4, 0.5));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 clusterPoints(plane, std::vector<Vec3>(3, Vec3(0, 0, 1)), 4, 2.0));
+    }
+
+    void cylinderStripLiesOnAParabolicCylinder() {
+        // Points of the cylinder z = x² / 200 + 0.1 y (a parabola along x, tilted rulings along
+        // y), in a frame turned about z: the cylinder start passes through them, is developable
+        // (sampled det, from the splines) and reaches no farther than the points.
+        const double c = std::cos(0.4);
+        const double s = std::sin(0.4);
+        std::vector<Vec3> points;
+        std::vector<Vec3> normals;
+        for (int i = 0; i <= 30; ++i) {
+            for (int j = 0; j <= 12; ++j) {
+                const double x = -60.0 + 4.0 * i;
+                const double y = -40.0 + 80.0 * j / 12;
+                const Vec3 n = Vec3(-x / 100.0, -0.1, 1.0);
+                points.emplace_back(c * x - s * y, s * x + c * y, x * x / 200.0 + 0.1 * y);
+                normals.push_back(Vec3(c * n.x - s * n.y, s * n.x + c * n.y, n.z) / n.norm());
+            }
+        }
+        const CompositeSurface strip = initialCylinderStrip(points, normals, {3, 2, 2}, 0.0);
+        QVERIFY(strip.validate().empty());
+        QVERIFY(devsurf::test::sampledDevelopability(strip) < 1e-10);
+        const DistanceReport report = measureDistance(strip, points);
+        QVERIFY2(report.targetToSurface.max < 1e-6,
+                 qPrintable(QString::number(report.targetToSurface.max)));
+        QCOMPARE(report.coverage, 1.0);
+        // Within half a grid cell's diagonal (4 × 6.7 mm) of a point everywhere: no margin.
+        QVERIFY(report.surfaceToTarget.max < 4.5);
+        // The flat strip over the same points is mm away (the parabola's sag is 18 mm).
+        QVERIFY(measureDistance(initialStrip(points, normals, {3, 2, 2}, 0.0), points)
+                    .targetToSurface.max > 5.0);
+        // Refused as the flat strip: points on a line.
+        const std::vector<Vec3> line = grid(Vec3(0, 0, 0), Vec3(1, 2, 3), Vec3(0, 0, 0), 5, 1);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, initialCylinderStrip(line, {}, {3, 2, 4}));
     }
 };
 
