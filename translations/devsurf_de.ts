@@ -1344,8 +1344,8 @@
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="46"/>
-        <source>Lay as many strips over bands of the shape (k-means clusters drawn out three times as long as wide), each bent into the cylinder that fits it best, pull them towards the shape and add them to the design.</source>
-        <translation>Ebenso viele Streifen über Bänder der Form legen (k-Means-Cluster, dreimal so lang wie breit gezogen), jeden zu dem Zylinder gebogen, der am besten passt, sie zur Form hin ziehen und dem Entwurf hinzufügen.</translation>
+        <source>Lay as many flat strips over patches of the shape (k-means clusters; where the shape curves both ways, bands twice as long as wide), pull them towards the shape and add them to the design. A strip that cannot follow the shape and stay developable is pulled again, damped, from the cylinder that fits its points best.</source>
+        <translation>Ebenso viele ebene Streifen über Bereiche der Form legen (k-Means-Cluster; wo die Form in beide Richtungen gekrümmt ist, Bänder doppelt so lang wie breit), sie zur Form hin ziehen und dem Entwurf hinzufügen. Ein Streifen, der der Form nicht folgen und abwickelbar bleiben kann, wird erneut gedämpft gezogen, ausgehend von dem Zylinder, der am besten zu seinen Punkten passt.</translation>
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="56"/>

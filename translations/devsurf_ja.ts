@@ -1333,8 +1333,8 @@
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="46"/>
-        <source>Lay as many strips over bands of the shape (k-means clusters drawn out three times as long as wide), each bent into the cylinder that fits it best, pull them towards the shape and add them to the design.</source>
-        <translation>形状の同数の帯 (幅の 3 倍の長さに引き伸ばした k-means クラスタ) にストリップを置き、それぞれを最もよく合う円柱に曲げ、形状へ引き寄せてデザインに追加します。</translation>
+        <source>Lay as many flat strips over patches of the shape (k-means clusters; where the shape curves both ways, bands twice as long as wide), pull them towards the shape and add them to the design. A strip that cannot follow the shape and stay developable is pulled again, damped, from the cylinder that fits its points best.</source>
+        <translation>形状の同数の領域 (k-means クラスタ。形状が二方向に曲がるところでは幅の 2 倍の長さの帯) に平らなストリップを置き、形状へ引き寄せてデザインに追加します。形状に沿いつつ可展のままでいられないストリップは、点に最もよく合う円柱から減衰させて引き寄せ直します。</translation>
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="56"/>

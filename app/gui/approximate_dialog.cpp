@@ -43,10 +43,11 @@ ApproximateDialog::ApproximateDialog(const model::Project& project, QWidget* par
 
     m_newStrips = new QRadioButton(tr("&New strips:"), this);
     m_newStrips->setObjectName(QStringLiteral("newStripsButton"));
-    m_newStrips->setToolTip(tr("Lay as many strips over bands of the shape (k-means "
-                               "clusters drawn out three times as long as wide), each bent "
-                               "into the cylinder that fits it best, pull them towards the "
-                               "shape and add them to the design."));
+    m_newStrips->setToolTip(
+        tr("Lay as many flat strips over patches of the shape (k-means clusters; where the "
+           "shape curves both ways, bands twice as long as wide), pull them towards the shape "
+           "and add them to the design. A strip that cannot follow the shape and stay "
+           "developable is pulled again, damped, from the cylinder that fits its points best."));
     m_strips = new QSpinBox(this);
     m_strips->setObjectName(QStringLiteral("stripsBox"));
     m_strips->setRange(1, 100);

@@ -244,8 +244,18 @@ CompositeSurface initialStrip(const std::vector<Vec3>& points, const SplineSpace
     return initialStrip(points, {}, space, margin);
 }
 
-CompositeSurface initialStrip(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-                              const SplineSpace& space, double margin) {
+namespace {
+
+// The arguments of an initial strip checked (std::invalid_argument as initialStrip documents),
+// the points' frame, and the direction of a and b in its plane: the longest axis, or the
+// direction of most turning.
+struct StripPlane {
+    PrincipalFrame frame;
+    Vec3 along;
+};
+
+StripPlane stripPlane(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                      const SplineSpace& space, double margin) {
     if (!space.isValid()) {
         throw std::invalid_argument("the spline space is not valid");
     }
@@ -255,26 +265,44 @@ CompositeSurface initialStrip(const std::vector<Vec3>& points, const std::vector
     if (!normals.empty() && normals.size() != points.size()) {
         throw std::invalid_argument("give one normal per point or none");
     }
-    const PrincipalFrame frame = principalFrame(points);
+    StripPlane plane{principalFrame(points), Vec3()};
+    const PrincipalFrame& frame = plane.frame;
     if (!(frame.high[1] - frame.low[1] > 1e-9 * (frame.high[0] - frame.low[0])) ||
         !(frame.high[0] - frame.low[0] > 0.0)) {
         throw std::invalid_argument("the points do not spread in two directions");
     }
-    // The direction of a and b in the plane: the longest axis, or the direction of most turning.
-    Vec3 along = frame.axes[0];
-    if (const std::optional<Vec3> turning = mostTurningDirection(points, normals, frame)) {
-        along = *turning;
+    plane.along = mostTurningDirection(points, normals, frame).value_or(frame.axes[0]);
+    return plane;
+}
+
+// The smallest and largest projection of the points, from `origin`, on `along` (index 0) and
+// on `across` (index 1).
+void extents(const std::vector<Vec3>& points, const Vec3& origin, const Vec3& along,
+             const Vec3& across, double low[2], double high[2]) {
+    for (int i = 0; i < 2; ++i) {
+        low[i] = std::numeric_limits<double>::max();
+        high[i] = std::numeric_limits<double>::lowest();
     }
-    const Vec3 across = cross(frame.axes[2], along); // along × across = axes[2]
-    double low[2] = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
-    double high[2] = {std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
     for (const Vec3& p : points) {
-        const double t[2] = {dot(p - frame.centroid, along), dot(p - frame.centroid, across)};
+        const double t[2] = {dot(p - origin, along), dot(p - origin, across)};
         for (int i = 0; i < 2; ++i) {
             low[i] = std::min(low[i], t[i]);
             high[i] = std::max(high[i], t[i]);
         }
     }
+}
+
+} // namespace
+
+CompositeSurface initialStrip(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                              const SplineSpace& space, double margin) {
+    const StripPlane plane = stripPlane(points, normals, space, margin);
+    const PrincipalFrame& frame = plane.frame;
+    const Vec3 along = plane.along;
+    const Vec3 across = cross(frame.axes[2], along); // along × across = axes[2]
+    double low[2];
+    double high[2];
+    extents(points, frame.centroid, along, across, low, high);
     const double length = high[0] - low[0];
     const double width = high[1] - low[1];
     if (!(width > 1e-9 * length) || !(length > 1e-9 * width)) {
@@ -391,15 +419,9 @@ std::vector<Vec3> fittedControlPoints(const SplineSpace& space,
 CompositeSurface initialCylinderStrip(const std::vector<Vec3>& points,
                                       const std::vector<Vec3>& normals, const SplineSpace& space,
                                       double margin) {
-    // The flat strip checks the arguments and gives the first direction (its curve a; with a
-    // margin, so that a is not a point where one half of the strip holds one point).
-    const CompositeSurface flat = initialStrip(points, normals, space, std::max(margin, 0.05));
-    const PrincipalFrame frame = principalFrame(points);
-    const Vec3 a0 = flat.position(flat.faces().begin()->second[0]);
-    const Vec3 a1 = flat.position(flat.faces().begin()->second[1]);
-    Vec3 first = a1 - a0;
-    first = first.norm() > 0.0 ? first / first.norm() : frame.axes[0];
-    CylinderFit best = fitCylinder(points, frame, first);
+    const StripPlane plane = stripPlane(points, normals, space, margin);
+    const PrincipalFrame& frame = plane.frame;
+    CylinderFit best = fitCylinder(points, frame, plane.along);
     const double firstError = best.squaredError;
     for (int k = 0; k < kCylinderDirections; ++k) {
         const double angle = M_PI * k / kCylinderDirections;
@@ -410,16 +432,9 @@ CompositeSurface initialCylinderStrip(const std::vector<Vec3>& points,
             best = fit;
         }
     }
-    double low[2] = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
-    double high[2] = {std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
-    for (const Vec3& p : points) {
-        const double t[2] = {dot(p - frame.centroid, best.along),
-                             dot(p - frame.centroid, best.across)};
-        for (int i = 0; i < 2; ++i) {
-            low[i] = std::min(low[i], t[i]);
-            high[i] = std::max(high[i], t[i]);
-        }
-    }
+    double low[2];
+    double high[2];
+    extents(points, frame.centroid, best.along, best.across, low, high);
     const double length = high[0] - low[0];
     const double width = high[1] - low[1];
     const double w0 = low[1] - margin * width;

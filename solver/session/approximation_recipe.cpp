@@ -5,6 +5,8 @@
 #include "model/reference/surface_samples.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/session/drag_lengths.h"
+#include "solver/session/job_options.h"
+#include "solver/session/solve_session.h"
 
 #include <algorithm>
 
@@ -39,6 +41,60 @@ void continueSummary(Summary& summary, const Summary& more) {
     summary.toleranceReached = summary.finalMaxConstraintResidual <= summary.tolerance;
     summary.analysisMs += more.analysisMs;
     summary.totalMs += more.totalMs;
+}
+
+Summary continueApproximation(const ApproximationSteps& run, const ApproximationTarget& target,
+                              const model::CompositeSurface& snapshot,
+                              std::unique_ptr<SolveSession>& session, Summary summary,
+                              SurfaceAssessment& assessment, int& total) {
+    const model::CompositeSurface* start = &snapshot; // of the pull that counts
+    if (summary.status != Status::Cancelled &&
+        approximationFailed(session->surface(), target, summary)) {
+        // The target pulled the strips where they cannot stay developable: the damped recipe
+        // from the start (kDampedApproximationWeightScale).
+        if (target.dampedStart) {
+            start = &*target.dampedStart;
+        }
+        SessionOptions options = optionsFor(run.request, run.key, true);
+        options.approximationFadeAfter = run.iterations;
+        session = std::make_unique<SolveSession>(*start, run.handles, run.points, options);
+        total += run.steps;
+        summary = session->step(run.steps, run.cancel, run.perIteration);
+        assessment.dampedApproximation = true;
+    }
+    const auto shortOf = [&summary](const model::CompositeSurface& s, double fraction) {
+        return worstDevelopability(s) > fraction * summary.tolerance;
+    };
+    if (!summary.succeeded() || summary.status == Status::StoppedBeforeDegenerate ||
+        (summary.toleranceReached &&
+         !shortOf(session->surface(), kApproximationFinishSampledFraction))) {
+        return summary;
+    }
+    // Short of the tolerance once the pull has faded: finished as a Solve of where the pull left
+    // it, whose relative fairness keeps it there while the hard conditions converge (continuing
+    // the pull's own session moved it farther: docs/tuning.md).
+    JobRequest finish;
+    finish.kind = JobKind::Solve;
+    finish.curvePairs = run.request.curvePairs;
+    const model::CompositeSurface pulled = session->surface();
+    session = std::make_unique<SolveSession>(pulled, std::vector<VertexHandle>{},
+                                             optionsFor(finish, run.key));
+    total += kApproximationFinishIterations;
+    continueSummary(summary,
+                    session->step(kApproximationFinishIterations, run.cancel, run.perIteration));
+    if (summary.succeeded() && run.request.curvePairs.count(run.key) == 0 &&
+        shortOf(session->surface(), 1.0) && !shortOf(*start, 1.0)) {
+        // Still short: the start of the damped pull (a flat strip, or the cylinder over its
+        // points), solved; a developable strip a little farther from the target rather than one
+        // that is not developable. Not for a pairing (the Join job), whose start has its edges
+        // apart.
+        session = std::make_unique<SolveSession>(*start, std::vector<VertexHandle>{},
+                                                 optionsFor(finish, run.key));
+        total += kApproximationFinishIterations;
+        summary = session->step(kApproximationFinishIterations, run.cancel, run.perIteration);
+        assessment.approximationKeptStart = true;
+    }
+    return summary;
 }
 
 } // namespace devsurf::solver

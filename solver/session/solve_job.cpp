@@ -368,64 +368,14 @@ JobOutcome SolveJob::run(const JobRequest& request, const std::atomic<bool>* can
         };
         const auto stepped = std::chrono::steady_clock::now();
         Summary summary = session->step(steps, cancel, perIteration);
-        const model::CompositeSurface* start = &snapshot; // of the pull that counts
-        if (target && !target->points.empty() && summary.status != Status::Cancelled &&
-            approximationFailed(session->surface(), *target, summary)) {
-            // The target pulled the strips where they cannot stay developable: the damped
-            // recipe from the start (kDampedApproximationWeightScale).
-            if (target->dampedStart) {
-                start = &*target->dampedStart;
-            }
+        if (target && !target->points.empty()) {
             try {
-                SessionOptions options = optionsFor(request, key, true);
-                options.approximationFadeAfter = iterations;
-                session = std::make_unique<SolveSession>(*start, handles, points, options);
+                const ApproximationSteps run{request, key,    iterations, steps,
+                                             handles, points, cancel,     perIteration};
+                summary = continueApproximation(run, *target, snapshot, session, summary,
+                                                assessment, total);
             } catch (const std::exception& error) {
                 return fail(cannotSolve(key, error));
-            }
-            total += steps;
-            summary = session->step(steps, cancel, perIteration);
-            assessment.dampedApproximation = true;
-        }
-        if (target && !target->points.empty() && summary.succeeded() &&
-            summary.status != Status::StoppedBeforeDegenerate &&
-            (!summary.toleranceReached ||
-             worstDevelopability(session->surface()) >
-                 kApproximationFinishSampledFraction * summary.tolerance)) {
-            // Short of the tolerance once the pull has faded, by the solver's rows or sampled
-            // between them: finished as a Solve of where the pull left it, whose relative
-            // fairness keeps it there while the hard conditions converge (continuing the pull's
-            // own session moved it farther: docs/tuning.md).
-            JobRequest finish;
-            finish.kind = JobKind::Solve;
-            finish.curvePairs = request.curvePairs;
-            try {
-                const model::CompositeSurface pulled = session->surface();
-                session = std::make_unique<SolveSession>(pulled, std::vector<VertexHandle>{},
-                                                         optionsFor(finish, key));
-            } catch (const std::exception& error) {
-                return fail(cannotSolve(key, error));
-            }
-            total += kApproximationFinishIterations;
-            continueSummary(summary,
-                            session->step(kApproximationFinishIterations, cancel, perIteration));
-            if (summary.succeeded() && request.curvePairs.count(key) == 0 &&
-                worstDevelopability(session->surface()) > summary.tolerance &&
-                worstDevelopability(*start) <= summary.tolerance) {
-                // Still short: the start of the damped pull (a flat strip, or the cylinder
-                // over its points: ApproximationTarget::dampedStart), solved; a developable
-                // strip a little farther from the target rather than one that is not
-                // developable. Not for a pairing (the Join job), whose start has its edges
-                // apart.
-                try {
-                    session = std::make_unique<SolveSession>(*start, std::vector<VertexHandle>{},
-                                                             optionsFor(finish, key));
-                } catch (const std::exception& error) {
-                    return fail(cannotSolve(key, error));
-                }
-                total += kApproximationFinishIterations;
-                summary = session->step(kApproximationFinishIterations, cancel, perIteration);
-                assessment.approximationKeptStart = true;
             }
         }
         auto stepTime = std::chrono::steady_clock::now() - stepped;
