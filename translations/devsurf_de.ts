@@ -1344,8 +1344,8 @@
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="46"/>
-        <source>Lay as many flat strips over patches of the shape (k-means clusters; where the shape curves both ways, bands twice as long as wide), pull them towards the shape and add them to the design. A strip that cannot follow the shape and stay developable is pulled again, damped, from the cylinder that fits its points best.</source>
-        <translation>Ebenso viele ebene Streifen über Bereiche der Form legen (k-Means-Cluster; wo die Form in beide Richtungen gekrümmt ist, Bänder doppelt so lang wie breit), sie zur Form hin ziehen und dem Entwurf hinzufügen. Ein Streifen, der der Form nicht folgen und abwickelbar bleiben kann, wird erneut gedämpft gezogen, ausgehend von dem Zylinder, der am besten zu seinen Punkten passt.</translation>
+        <source>Lay as many flat strips over patches of the shape (k-means clusters; where the shape curves both ways, bands twice as long as wide), pull them towards the shape and add them to the design. A strip that cannot follow the shape and stay developable is pulled again, damped, from the cylinder that fits its points best. Then each is trimmed back where it stands off the shape.</source>
+        <translation>Ebenso viele ebene Streifen über Bereiche der Form legen (k-Means-Cluster; wo die Form in beide Richtungen gekrümmt ist, Bänder doppelt so lang wie breit), sie zur Form hin ziehen und dem Entwurf hinzufügen. Ein Streifen, der der Form nicht folgen und abwickelbar bleiben kann, wird erneut gedämpft gezogen, ausgehend von dem Zylinder, der am besten zu seinen Punkten passt. Danach wird jeder Streifen dort zurückgeschnitten, wo er von der Form absteht.</translation>
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="56"/>
@@ -1531,6 +1531,22 @@
         <translation>
             <numerusform>%n Fläche, zu weit von der Form entfernt, blieb unverändert.</numerusform>
             <numerusform>%n Flächen, zu weit von der Form entfernt, blieben unverändert.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
+        <source>%n strip(s) were trimmed back where they stood off the shape.</source>
+        <translation>
+            <numerusform>%n Streifen wurde dort zurückgeschnitten, wo er von der Form abstand.</numerusform>
+            <numerusform>%n Streifen wurden dort zurückgeschnitten, wo sie von der Form abstanden.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
+        <source>%n strip(s) could not be pulled closer and stay developable; they were kept as they were laid.</source>
+        <translation>
+            <numerusform>%n Streifen ließ sich nicht näher heranziehen, ohne die Abwickelbarkeit zu verlieren; er blieb, wie er gelegt wurde.</numerusform>
+            <numerusform>%n Streifen ließen sich nicht näher heranziehen, ohne die Abwickelbarkeit zu verlieren; sie blieben, wie sie gelegt wurden.</numerusform>
         </translation>
     </message>
     <message>

@@ -144,6 +144,22 @@
             <numerusform>%n surfaces too far from the shape were left as they were.</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
+        <source>%n strip(s) were trimmed back where they stood off the shape.</source>
+        <translation>
+            <numerusform>%n strip was trimmed back where it stood off the shape.</numerusform>
+            <numerusform>%n strips were trimmed back where they stood off the shape.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
+        <source>%n strip(s) could not be pulled closer and stay developable; they were kept as they were laid.</source>
+        <translation>
+            <numerusform>%n strip could not be pulled closer and stay developable; it was kept as it was laid.</numerusform>
+            <numerusform>%n strips could not be pulled closer and stay developable; they were kept as they were laid.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>devsurf::app::DistanceReportDialog</name>

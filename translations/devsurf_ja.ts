@@ -1333,8 +1333,8 @@
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="46"/>
-        <source>Lay as many flat strips over patches of the shape (k-means clusters; where the shape curves both ways, bands twice as long as wide), pull them towards the shape and add them to the design. A strip that cannot follow the shape and stay developable is pulled again, damped, from the cylinder that fits its points best.</source>
-        <translation>形状の同数の領域 (k-means クラスタ。形状が二方向に曲がるところでは幅の 2 倍の長さの帯) に平らなストリップを置き、形状へ引き寄せてデザインに追加します。形状に沿いつつ可展のままでいられないストリップは、点に最もよく合う円柱から減衰させて引き寄せ直します。</translation>
+        <source>Lay as many flat strips over patches of the shape (k-means clusters; where the shape curves both ways, bands twice as long as wide), pull them towards the shape and add them to the design. A strip that cannot follow the shape and stay developable is pulled again, damped, from the cylinder that fits its points best. Then each is trimmed back where it stands off the shape.</source>
+        <translation>形状の同数の領域 (k-means クラスタ。形状が二方向に曲がるところでは幅の 2 倍の長さの帯) に平らなストリップを置き、形状へ引き寄せてデザインに追加します。形状に沿いつつ可展のままでいられないストリップは、点に最もよく合う円柱から減衰させて引き寄せ直します。その後、形状から離れて張り出した部分を切り詰めます。</translation>
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="56"/>
@@ -1516,6 +1516,20 @@
         <source>%n surface(s) too far from the shape were left as they were.</source>
         <translation>
             <numerusform>形状から遠すぎる %n 個の曲面はそのままです。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
+        <source>%n strip(s) were trimmed back where they stood off the shape.</source>
+        <translation>
+            <numerusform>形状から離れていた %n 本のストリップを切り詰めました。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
+        <source>%n strip(s) could not be pulled closer and stay developable; they were kept as they were laid.</source>
+        <translation>
+            <numerusform>%n 本のストリップは可展性を保ったまま近づけられなかったため、配置したままにしました。</numerusform>
         </translation>
     </message>
     <message>

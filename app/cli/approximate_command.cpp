@@ -18,6 +18,7 @@
 #include <QString>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -150,6 +151,11 @@ int runApproximateCommand(const SubcommandArguments& args) {
         }
         if (a.approximationKeptStart) {
             std::cout << "  kept as it was laid: pulled closer, it did not end developable\n";
+        }
+        if (a.approximationTrim) {
+            std::cout << "  trimmed where it stood off the shape: "
+                      << std::lround(100.0 * a.approximationTrim->kept())
+                      << " % of its parameters kept\n";
         }
         if (a.summary.status == solver::Status::StoppedBeforeDegenerate) {
             std::cout << "  stopped at the last valid state" << refusedText(a) << "\n";

@@ -47,7 +47,8 @@ ApproximateDialog::ApproximateDialog(const model::Project& project, QWidget* par
         tr("Lay as many flat strips over patches of the shape (k-means clusters; where the "
            "shape curves both ways, bands twice as long as wide), pull them towards the shape "
            "and add them to the design. A strip that cannot follow the shape and stay "
-           "developable is pulled again, damped, from the cylinder that fits its points best."));
+           "developable is pulled again, damped, from the cylinder that fits its points best. "
+           "Then each is trimmed back where it stands off the shape."));
     m_strips = new QSpinBox(this);
     m_strips->setObjectName(QStringLiteral("stripsBox"));
     m_strips->setRange(1, 100);

@@ -386,10 +386,10 @@ CylinderFit fitCylinder(const std::vector<Vec3>& points, const PrincipalFrame& f
     return fit;
 }
 
-// Control points in `space` of the curve `at` (t in [0, 1]) by least squares over samples:
-// exact for a polynomial of at most the space's degree.
-std::vector<Vec3> fittedControlPoints(const SplineSpace& space,
-                                      const std::function<Vec3(double)>& at) {
+} // namespace
+
+std::vector<Vec3> fitControlPoints(const SplineSpace& space,
+                                   const std::function<Vec3(double)>& at) {
     const int count = space.controlPointCount(false);
     const int samples = 4 * count;
     Eigen::MatrixXd basis(samples, count);
@@ -414,7 +414,19 @@ std::vector<Vec3> fittedControlPoints(const SplineSpace& space,
     return points;
 }
 
-} // namespace
+CompositeSurface stripOfCurves(const std::string& name, const SplineSpace& space,
+                               const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+    CompositeSurface s;
+    s.setName(name);
+    const VertexId a0 = s.addVertex(a.front());
+    const VertexId a1 = s.addVertex(a.back());
+    const VertexId b1 = s.addVertex(b.back());
+    const VertexId b0 = s.addVertex(b.front());
+    s.addFace({a0, a1, b1, b0});
+    s.setSpline(a0, a1, space, a);
+    s.setSpline(b0, b1, space, b);
+    return s;
+}
 
 CompositeSurface initialCylinderStrip(const std::vector<Vec3>& points,
                                       const std::vector<Vec3>& normals, const SplineSpace& space,
@@ -448,25 +460,16 @@ CompositeSurface initialCylinderStrip(const std::vector<Vec3>& points,
                    frame.axes[2] * best.height(u, w);
         };
     };
-    const std::vector<Vec3> aPoints = fittedControlPoints(space, curveAt(w0));
-    const std::vector<Vec3> bPoints = fittedControlPoints(space, curveAt(w1));
+    const std::vector<Vec3> aPoints = fitControlPoints(space, curveAt(w0));
+    const std::vector<Vec3> bPoints = fitControlPoints(space, curveAt(w1));
     const auto finite = [](const Vec3& p) { return p.isFinite(); };
     if (!(width > 1e-9 * length) || !(length > 1e-9 * width) ||
         !std::all_of(aPoints.begin(), aPoints.end(), finite) ||
         !std::all_of(bPoints.begin(), bPoints.end(), finite)) {
         throw std::invalid_argument("the points do not spread in two directions");
     }
-    CompositeSurface s;
-    s.setName("strip");
     // The face loop a0, a1, b1, b0 as the flat strip's: its normal is near axes[2].
-    const VertexId va0 = s.addVertex(aPoints.front());
-    const VertexId va1 = s.addVertex(aPoints.back());
-    const VertexId vb1 = s.addVertex(bPoints.back());
-    const VertexId vb0 = s.addVertex(bPoints.front());
-    s.addFace({va0, va1, vb1, vb0});
-    s.setSpline(va0, va1, space, aPoints);
-    s.setSpline(vb0, vb1, space, bPoints);
-    return s;
+    return stripOfCurves("strip", space, aPoints, bPoints);
 }
 
 std::vector<std::vector<std::size_t>> clusterPoints(const std::vector<Vec3>& points, int count) {

@@ -5,6 +5,8 @@
 #include "model/vec3.h"
 
 #include <cstddef>
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace devsurf::model::reference {
@@ -47,6 +49,17 @@ CompositeSurface initialCylinderStrip(const std::vector<Vec3>& points,
                                       const std::vector<Vec3>& normals, const SplineSpace& space,
                                       double margin = 0.05);
 inline constexpr int kCylinderDirections = 12;
+
+// Control points in `space` (open) of the curve `at` (t in [0, 1]), by least squares over
+// 4 samples per control point: exact for a curve of the space, such as a polynomial of at
+// most its degree.
+std::vector<Vec3> fitControlPoints(const SplineSpace& space, const std::function<Vec3(double)>& at);
+
+// A surface of one strip named `name`, its curves a and b given by their control points in
+// `space` (open): the face loop a0, a1, b1, b0, so its normal is a′ × (b − a), and a is the
+// strip's curve a (model::stripOfFace).
+CompositeSurface stripOfCurves(const std::string& name, const SplineSpace& space,
+                               const std::vector<Vec3>& a, const std::vector<Vec3>& b);
 // Another direction replaces the first only where its cylinder's squared error is below this
 // fraction of the first's.
 inline constexpr double kCylinderDirectionGain = 0.8;

@@ -13,6 +13,10 @@
 #include <optional>
 #include <vector>
 
+namespace devsurf::model::reference {
+class OverhangMeasure;
+}
+
 namespace devsurf::solver {
 
 // What a surface is pulled towards, in model coordinates: the thinned reference
@@ -36,6 +40,11 @@ struct ApproximationTarget {
     // (model::reference::initialCylinderStrip). The damped pull moves a strip only a little,
     // so where it starts is most of where it ends. None: from the surface itself.
     std::optional<model::CompositeSurface> dampedStart;
+    // Where a strip the automatic path laid is trimmed back once pulled: the overhang of its
+    // samples from the whole thinned target, and the mean overhang (mm) of a side beyond which
+    // that side is cut (model::reference::overhangTrim; approximation_recipe.h). Null: never.
+    std::shared_ptr<const model::reference::OverhangMeasure> overhang;
+    double trimTolerance = 0.0;
 };
 
 // The weights of the three families (constraint roles judged apart, so that the largest

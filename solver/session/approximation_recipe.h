@@ -51,7 +51,10 @@ struct ApproximationSteps {
 // the solver's rows or sampled between them (kApproximationFinishSampledFraction), a Solve of
 // it; where that is still short, the damped pull's start solved. Replaces `session`, marks
 // `assessment`, adds each step's iterations to `total` (the job's progress) and returns the
-// summary of the result. Throws what SolveSession's constructor throws.
+// summary of the result. Then, for a strip with a target.overhang that ended developable, its
+// sides trimmed back where they overhang the shape (model::reference::overhangTrim) and the
+// trimmed strip solved, kept where that ends developable (assessment.approximationTrim).
+// Throws what SolveSession's constructor throws.
 Summary continueApproximation(const ApproximationSteps& run, const ApproximationTarget& target,
                               const model::CompositeSurface& snapshot,
                               std::unique_ptr<SolveSession>& session, Summary summary,

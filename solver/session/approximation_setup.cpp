@@ -4,6 +4,7 @@
 #include "model/reference/bounding_box.h"
 #include "model/reference/initial_strip.h"
 #include "model/reference/point_index.h"
+#include "model/reference/strip_trim.h"
 #include "model/reference/surface_samples.h"
 #include "model/strip_joining.h"
 
@@ -121,6 +122,22 @@ JobRequest approximationRequest(const std::vector<model::CompositeSurface>& surf
     request.kind = JobKind::Approximate;
     request.iterations = iterations;
     request.surfaces = surfaces;
+    // New strips are trimmed where they overhang the whole target, not only their own points:
+    // a strip lying over its neighbour's points lies on the shape.
+    std::shared_ptr<const model::reference::OverhangMeasure> overhang;
+    if (newStrips) {
+        std::vector<model::Vec3> all;
+        std::vector<model::Vec3> allNormals;
+        for (std::size_t s = 0; s < targets.points.size() && s < targets.normals.size(); ++s) {
+            all.insert(all.end(), targets.points[s].begin(), targets.points[s].end());
+            allNormals.insert(allNormals.end(), targets.normals[s].begin(),
+                              targets.normals[s].end());
+        }
+        if (!all.empty() && all.size() == allNormals.size()) {
+            overhang = std::make_shared<const model::reference::OverhangMeasure>(
+                std::move(all), std::move(allNormals), rho);
+        }
+    }
     for (std::size_t s = 0; s < surfaces.size() && s < targets.points.size(); ++s) {
         if (targets.points[s].size() < kFewestTargetPoints) {
             continue; // too far from the target to be pulled: stays as it is
@@ -132,6 +149,8 @@ JobRequest approximationRequest(const std::vector<model::CompositeSurface>& surf
         t->falloff = kFalloffRhos * rho;
         if (newStrips) {
             t->dampedStart = cylinderStart(surfaces[s], t->points, t->normals);
+            t->overhang = overhang;
+            t->trimTolerance = kTrimToleranceRhos * rho;
         }
         request.targets[static_cast<int>(s)] = std::move(t);
     }

@@ -50,9 +50,14 @@ bool enoughPointsFor(const ThinnedTarget& target, int strips);
 inline constexpr double kStripBandAspect = 2.0;
 
 // The margin of a new strip's cylinder start (ApproximationTarget::dampedStart) around its
-// points, as a fraction of its extent: none, for the damped pull barely grows a strip but a
-// margin overhangs the shape.
-inline constexpr double kCylinderStartMargin = 0.0;
+// points, as a fraction of its extent: the damped pull barely grows a strip, so the margin
+// closes the gaps between strips; where it overhangs the shape, the trim below cuts it back.
+inline constexpr double kCylinderStartMargin = 0.07;
+
+// A new strip's side is trimmed once pulled while it stands off the shape by more than this
+// many thinning radii on average (ApproximationTarget::trimTolerance; docs/tuning.md, "Strips
+// trimmed where they overhang").
+inline constexpr double kTrimToleranceRhos = 0.45;
 
 // `count` flat strips with `intervals` spline intervals (cubic, degree-2 rulings space), one on
 // each band of the thinned points (model::reference::clusterPoints with kStripBandAspect,

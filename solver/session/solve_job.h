@@ -3,6 +3,7 @@
 #include "model/composite_surface.h"
 #include "model/held_by_pins.h"
 #include "model/problem.h"
+#include "model/reference/strip_trim.h"
 #include "model/reference/thinning.h"
 #include "solver/core/summary.h"
 #include "solver/formulation/surface_formulation.h"
@@ -200,6 +201,9 @@ struct SurfaceAssessment {
     // An approximation that stayed short of developable even after its finishing Solve and
     // kept its strip as it was laid (developable), solved.
     bool approximationKeptStart = false;
+    // A strip the automatic path laid, trimmed back where it overhung the shape once pulled
+    // (approximation_recipe.h), and solved: the part of its parameters it keeps.
+    std::optional<model::reference::StripTrim> approximationTrim;
 };
 
 // Samples per spline interval of the development the verdict measures (as the views draw it).

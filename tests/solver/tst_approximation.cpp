@@ -213,6 +213,50 @@ private slots:
         }
     }
 
+    void aNewStripIsTrimmedWhereItOverhangsTheShape() {
+        // A cylinder z = x² / 400 over 160 × 40 mm but for the triangle beyond the line from
+        // (100, 40) to (160, 0): one new strip laid over it covers its rectangle, so it stands
+        // off the shape over the triangle. Once pulled it is trimmed back there, and ends
+        // developable.
+        std::vector<Vec3> points;
+        for (const Vec3& p :
+             sampleGrid([](double s, double t) { return Vec3(160 * s, 40 * t, 0); }, 64, 16)) {
+            if (p.x <= 100.0 + 1e-9 || p.y <= 40.0 * (160.0 - p.x) / 60.0 + 1e-9) {
+                points.emplace_back(p.x, p.y, p.x * p.x / 400.0);
+            }
+        }
+        solver::ApproximationOptions options;
+        options.strips = 1;
+        options.intervals = 2;
+        const solver::ApproximationSetup setup = solver::prepareApproximation(points, {}, options);
+        QCOMPARE(setup.surfaces.size(), std::size_t(1));
+        solver::SolveJob job;
+        const solver::JobOutcome trimmed = job.run(setup.request);
+        // The same job without the trim.
+        solver::JobRequest whole = setup.request;
+        auto target = std::make_shared<solver::ApproximationTarget>(*whole.targets.at(0));
+        target->overhang.reset();
+        whole.targets[0] = target;
+        const solver::JobOutcome untrimmed = job.run(whole);
+        QVERIFY(trimmed.ok && untrimmed.ok);
+        const solver::SurfaceAssessment& a = trimmed.assessments.front();
+        QVERIFY(a.approximationTrim && a.approximationTrim->trims());
+        QVERIFY(!untrimmed.assessments.front().approximationTrim);
+        QVERIFY(a.summary.toleranceReached);
+        QVERIFY(sampledDevelopability(trimmed.surfaces.front()) <= 1e-8);
+        const model::reference::DistanceReport cut =
+            model::reference::measureDistance(trimmed.surfaces, points);
+        const model::reference::DistanceReport full =
+            model::reference::measureDistance(untrimmed.surfaces, points);
+        qInfo("trimmed: surface to target max %.3g mm (untrimmed %.3g), coverage %.3g (%.3g), "
+              "%.2f of the parameters kept",
+              cut.surfaceToTarget.max, full.surfaceToTarget.max, cut.coverage, full.coverage,
+              a.approximationTrim->kept());
+        QVERIFY(cut.surfaceToTarget.max <
+                0.7 * full.surfaceToTarget.max); // measured 16.1 and 26.1 mm
+        QVERIFY(cut.coverage > 0.8);
+    }
+
     void aDoublyCurvedPatchIsFollowedDampedAndStaysDevelopable() {
         // 80° × 50° of a sphere of radius 100 mm, which no developable strip fits closely. At
         // full weight the pull left the strip far from developable and it ran away in the fade

@@ -269,9 +269,13 @@ void ApproximateReaction::onMeasured() {
     }
     int solved = 0;
     int within = 0;
+    int keptAsLaid = 0;
+    int trimmed = 0;
     for (const solver::SurfaceAssessment& a : outcome.assessments) {
         solved += a.solved ? 1 : 0;
         within += a.solved && a.summary.toleranceReached ? 1 : 0;
+        keptAsLaid += a.solved && a.approximationKeptStart ? 1 : 0;
+        trimmed += a.solved && a.approximationTrim ? 1 : 0;
     }
     const int count = static_cast<int>(outcome.surfaces.size());
     // The distance first (what the designer asked for), then whether the strips are
@@ -300,6 +304,22 @@ void ApproximateReaction::onMeasured() {
                                           "were.",
                                           nullptr, count - solved);
     }
+    // How strips ended other than pulled: also in the Solver panel, as the status bar elides
+    // a long sentence.
+    QString how;
+    if (trimmed > 0) {
+        how +=
+            QLatin1Char(' ') +
+            tr("%n strip(s) were trimmed back where they stood off the shape.", nullptr, trimmed);
+    }
+    if (keptAsLaid > 0) {
+        how += QLatin1Char(' ') +
+               tr("%n strip(s) could not be pulled closer and stay developable; they were "
+                  "kept as they were laid.",
+                  nullptr, keptAsLaid);
+    }
+    sentence += how;
+    report.status += how;
     // The verdict is in the Solver panel and the views' corner; the status bar keeps the
     // figures, which a verdict naming many patches would push out of sight.
     report.status +=
