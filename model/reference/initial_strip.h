@@ -49,6 +49,9 @@ CompositeSurface initialCylinderStrip(const std::vector<Vec3>& points,
                                       const std::vector<Vec3>& normals, const SplineSpace& space,
                                       double margin = 0.05);
 inline constexpr int kCylinderDirections = 12;
+// Another direction replaces the first only where its cylinder's squared error is below this
+// fraction of the first's.
+inline constexpr double kCylinderDirectionGain = 0.8;
 
 // Control points in `space` (open) of the curve `at` (t in [0, 1]), by least squares over
 // 4 samples per control point: exact for a curve of the space, such as a polynomial of at
@@ -60,9 +63,6 @@ std::vector<Vec3> fitControlPoints(const SplineSpace& space, const std::function
 // strip's curve a (model::stripOfFace).
 CompositeSurface stripOfCurves(const std::string& name, const SplineSpace& space,
                                const std::vector<Vec3>& a, const std::vector<Vec3>& b);
-// Another direction replaces the first only where its cylinder's squared error is below this
-// fraction of the first's.
-inline constexpr double kCylinderDirectionGain = 0.8;
 
 // Turning ratio of the two directions, least turn over the points (rad), least angle from the
 // longest axis (docs/tuning.md).

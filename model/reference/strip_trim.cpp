@@ -10,13 +10,10 @@
 namespace devsurf::model::reference {
 
 OverhangMeasure::OverhangMeasure(std::vector<Vec3> points, std::vector<Vec3> normals, double rho)
-    : m_index([&points] {
-          if (points.empty()) {
-              throw std::invalid_argument("an overhang needs reference points");
-          }
-          return std::move(points);
-      }()),
-      m_normals(std::move(normals)), m_rho(rho) {
+    : m_index(std::move(points)), m_normals(std::move(normals)), m_rho(rho) {
+    if (m_index.empty()) {
+        throw std::invalid_argument("an overhang needs reference points");
+    }
     if (m_normals.size() != m_index.size()) {
         throw std::invalid_argument("give one normal per point");
     }

@@ -2,10 +2,9 @@
 
 // A strip trimmed back where it overhangs its reference shape. A strip laid over a patch of the
 // shape and pulled towards it covers a rectangle of its parameters; where the patch is not a
-// rectangle, or the shape ends or turns away, its corners and sides stand off the shape (on
-// the bunny by up to 13 mm, 5 % of the diagonal), which is most of the distance surface →
-// target. Trimming them leaves the part that lies on the shape (docs/tuning.md, "Strips
-// trimmed where they overhang").
+// rectangle, or the shape ends or turns away, its corners and sides stand off the shape, and
+// those make most of the largest distances surface → target. Trimming them leaves the part
+// that lies on the shape (docs/tuning.md, "Strips trimmed where they overhang").
 
 #include "model/composite_surface.h"
 #include "model/reference/point_index.h"
@@ -26,7 +25,6 @@ public:
     OverhangMeasure(std::vector<Vec3> points, std::vector<Vec3> normals, double rho);
 
     double operator()(const Vec3& p) const;
-    double rho() const { return m_rho; }
 
 private:
     PointIndex m_index;

@@ -77,12 +77,9 @@ Summary finishApproximation(const ApproximationSteps& run, const ApproximationTa
         summary = session->step(run.steps, run.cancel, run.perIteration);
         assessment.dampedApproximation = true;
     }
-    const auto shortOf = [&summary](const model::CompositeSurface& s, double fraction) {
-        return solver::shortOf(s, summary, fraction);
-    };
     if (!summary.succeeded() || summary.status == Status::StoppedBeforeDegenerate ||
         (summary.toleranceReached &&
-         !shortOf(session->surface(), kApproximationFinishSampledFraction))) {
+         !shortOf(session->surface(), summary, kApproximationFinishSampledFraction))) {
         return summary;
     }
     // Short of the tolerance once the pull has faded: finished as a Solve of where the pull left
@@ -96,7 +93,7 @@ Summary finishApproximation(const ApproximationSteps& run, const ApproximationTa
     continueSummary(summary,
                     session->step(kApproximationFinishIterations, run.cancel, run.perIteration));
     if (summary.succeeded() && run.request.curvePairs.count(run.key) == 0 &&
-        shortOf(session->surface(), 1.0) && !shortOf(*start, 1.0)) {
+        shortOf(session->surface(), summary, 1.0) && !shortOf(*start, summary, 1.0)) {
         // Still short: the start of the damped pull (a flat strip, or the cylinder over its
         // points), solved; a developable strip a little farther from the target rather than one
         // that is not developable. Not for a pairing (the Join job), whose start has its edges
@@ -130,8 +127,7 @@ void trimOverhang(const ApproximationSteps& run, const ApproximationTarget& targ
     model::reference::StripTrim even = *trim;
     even.w0[0] = even.w0[1] = std::max(trim->w0[0], trim->w0[1]);
     even.w1[0] = even.w1[1] = std::min(trim->w1[0], trim->w1[1]);
-    const bool askew = even.w0[0] != trim->w0[0] || even.w0[1] != trim->w0[1] ||
-                       even.w1[0] != trim->w1[0] || even.w1[1] != trim->w1[1];
+    const bool askew = trim->w0[0] != trim->w0[1] || trim->w1[0] != trim->w1[1];
     const model::reference::StripTrim tries[2] = {*trim, even};
     for (int k = 0; k < (askew ? 2 : 1); ++k) {
         const model::reference::StripTrim& t = tries[k];
