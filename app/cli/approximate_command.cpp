@@ -99,7 +99,19 @@ int runApproximateCommand(const SubcommandArguments& args) {
               << " mm; thinned with radius " << rho << " mm to " << thinned.points.size()
               << " points\n";
 
-    if (!from) {
+    bool oneSurface = false;
+    if (!from && !args.isSet("separate")) {
+        // A patch over its plane: the strips side by side as one surface, watertight.
+        if (std::optional<model::CompositeSurface> sheet =
+                solver::initialStripSheet(thinnedTarget, strips, intervals)) {
+            std::cout << "The target is one patch: " << strips
+                      << " strips laid side by side as one surface, each two sharing a "
+                         "curve\n";
+            project.addSurface(std::move(*sheet));
+            oneSurface = true;
+        }
+    }
+    if (!from && !oneSurface) {
         // K bands of the thinned points (k-means), one flat strip each.
         for (model::CompositeSurface& strip :
              solver::initialStrips(thinnedTarget, strips, intervals)) {
@@ -111,8 +123,8 @@ int runApproximateCommand(const SubcommandArguments& args) {
         }
     }
     const solver::SurfaceTargets targets = solver::assignToSurfaces(project.surfaces, thinned);
-    const solver::JobRequest request =
-        solver::approximationRequest(project.surfaces, targets, rho, iterations, !from);
+    const solver::JobRequest request = solver::approximationRequest(
+        project.surfaces, targets, rho, iterations, !from && !oneSurface);
     int surfaceShown = -1;
     auto progress = [&](const solver::JobProgress& step) {
         if (step.surface != surfaceShown) {

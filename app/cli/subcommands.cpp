@@ -255,7 +255,7 @@ const std::vector<SubcommandSpec>& subcommands() {
           {"tolerance", "MM", "The coverage tolerance (default 1 % of the diagonal)."}}},
         {"approximate",
          "approximate TARGET [--from START.devsurf] [--strips K] [--intervals N]\n"
-         "            [--iterations N] [--rho R] [--join] -o OUT.devsurf",
+         "            [--iterations N] [--rho R] [--separate] [--join] -o OUT.devsurf",
          "Developable strips pulled towards a mesh or point cloud TARGET (as\n"
          "import-reference reads it): the target is thinned to points at least\n"
          "R mm apart (default 2 % of its bounding-box diagonal), each with the\n"
@@ -271,7 +271,13 @@ const std::vector<SubcommandSpec>& subcommands() {
          "larger than its points), and the summary says so. A new strip is\n"
          "then trimmed back where its sides or corners stand off the target,\n"
          "and solved again. Writes the strips and the target to\n"
-         "OUT and prints the residual and the distance report. With --join,\n"
+         "OUT and prints the residual and the distance report. Where the target\n"
+         "is one patch over a plane curved mainly one way (its normals within\n"
+         "75 degrees of the plane's, its heights single-valued, its normals\n"
+         "turning twice as much one way as across), K >= 2 new strips are laid side\n"
+         "by side as one surface instead, each two sharing a curve that may\n"
+         "kink: watertight as laid, pulled as one surface (--separate: strips\n"
+         "over patches as above). With --join,\n"
          "the strips become one surface: the boundary curves or rulings of two\n"
          "strips that face each other (ends and middles apart by at most 20 %\n"
          "of their length) are pulled onto each other in a second approximation,\n"
@@ -282,6 +288,7 @@ const std::vector<SubcommandSpec>& subcommands() {
           {"intervals", "N", "Spline intervals of each new strip (default 4)."},
           {"iterations", "N", "Iterations of the pull (default 30)."},
           {"rho", "R", "The thinning radius in mm."},
+          {"separate", "", "Separate strips over patches even where the target is one patch."},
           {"join", "", "Join strips whose edges face each other into one surface."},
           kOutputProject}},
         {"join",

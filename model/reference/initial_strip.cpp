@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 #include <optional>
 #include <stdexcept>
 
@@ -339,6 +340,119 @@ CompositeSurface initialStrip(const std::vector<Vec3>& points, const std::vector
     s.addFace({a0, a1, b1, b0});
     s.setSpline(a0, a1, space, straightControlPoints(space, s.position(a0), s.position(a1)));
     s.setSpline(b0, b1, space, straightControlPoints(space, s.position(b0), s.position(b1)));
+    return s;
+}
+
+bool isPatchOverPlane(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                      double rho) {
+    if (points.size() < 3 || normals.size() != points.size() || !(rho > 0.0)) {
+        return false;
+    }
+    PrincipalFrame frame;
+    try {
+        frame = principalFrame(points);
+    } catch (const std::invalid_argument&) {
+        return false;
+    }
+    const Vec3& up = frame.axes[2];
+    const double cosLimit = std::cos(kPatchNormalAngle);
+    std::size_t facing = 0;
+    // Per cell of side 2ρ: the lowest and highest height and the steepest normal's slope.
+    struct Cell {
+        double low = std::numeric_limits<double>::max();
+        double high = std::numeric_limits<double>::lowest();
+        double slope = 0.0;
+    };
+    std::map<std::pair<long, long>, Cell> cells;
+    const double side = 2.0 * rho;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const double length = normals[i].norm();
+        if (!(length > 0.0) || !std::isfinite(length)) {
+            return false;
+        }
+        const double c = std::min(1.0, std::abs(dot(normals[i], up)) / length);
+        facing += c >= cosLimit ? 1 : 0;
+        const Vec3 d = points[i] - frame.centroid;
+        const std::pair<long, long> key{std::lround(std::floor(dot(d, frame.axes[0]) / side)),
+                                        std::lround(std::floor(dot(d, frame.axes[1]) / side))};
+        Cell& cell = cells[key];
+        const double h = dot(d, up);
+        cell.low = std::min(cell.low, h);
+        cell.high = std::max(cell.high, h);
+        cell.slope =
+            std::max(cell.slope, std::sqrt(std::max(0.0, 1.0 - c * c)) / std::max(c, cosLimit));
+    }
+    if (static_cast<double>(facing) < kPatchNormalShare * static_cast<double>(points.size())) {
+        return false;
+    }
+    const double diagonal = side * std::sqrt(2.0);
+    return std::all_of(cells.begin(), cells.end(), [&](const auto& entry) {
+        const Cell& cell = entry.second;
+        return cell.high - cell.low <= diagonal * cell.slope + rho;
+    });
+}
+
+bool curvesMainlyOneWay(const std::vector<Vec3>& points, const std::vector<Vec3>& normals) {
+    PrincipalFrame frame;
+    try {
+        frame = principalFrame(points);
+    } catch (const std::invalid_argument&) {
+        return false;
+    }
+    const std::optional<Turning> t = normalTurning(points, normals, frame);
+    if (!t) {
+        return false;
+    }
+    const double span = std::max(frame.high[0] - frame.low[0], frame.high[1] - frame.low[1]);
+    return t->most * span < kRulingTurnMinimum || t->most >= kRulingAnisotropy * t->least;
+}
+
+CompositeSurface initialStripSheet(const std::vector<Vec3>& points,
+                                   const std::vector<Vec3>& normals, int count,
+                                   const SplineSpace& space, double margin) {
+    if (count < 1) {
+        throw std::invalid_argument("lay at least one strip");
+    }
+    StripPlane plane = stripPlane(points, normals, space, margin);
+    const PrincipalFrame& frame = plane.frame;
+    // Curves where the normals turn most, wherever that lies against the longest axis: every
+    // strip spans the whole patch along them, so a turn off the longest axis costs nothing.
+    if (const std::optional<Turning> t = normalTurning(points, normals, frame);
+        t && t->most >= kRulingAnisotropy * t->least) {
+        plane.along = t->direction;
+    }
+    const Vec3 along = plane.along;
+    const Vec3 across = cross(frame.axes[2], along);
+    double low[2];
+    double high[2];
+    extents(points, frame.centroid, along, across, low, high);
+    const double length = high[0] - low[0];
+    const double width = high[1] - low[1];
+    if (!(width > 1e-9 * length) || !(length > 1e-9 * width)) {
+        throw std::invalid_argument("the points do not spread in two directions");
+    }
+    const double u0 = low[0] - margin * length;
+    const double u1 = high[0] + margin * length;
+    const double w0 = low[1] - margin * width;
+    const double w1 = high[1] + margin * width;
+    auto at = [&](double u, double w) { return frame.centroid + along * u + across * w; };
+    CompositeSurface s;
+    s.setName("strips");
+    std::vector<VertexId> start;
+    std::vector<VertexId> end;
+    for (int k = 0; k <= count; ++k) {
+        const double w = w0 + (w1 - w0) * k / count;
+        start.push_back(s.addVertex(at(u0, w)));
+        end.push_back(s.addVertex(at(u1, w)));
+    }
+    // Strip k: curve a the k-th line, b the next; the loop a0, a1, b1, b0 as initialStrip's.
+    for (int k = 0; k < count; ++k) {
+        s.addFace({start[k], end[k], end[k + 1], start[k + 1]});
+    }
+    for (int k = 0; k <= count; ++k) {
+        s.setSpline(start[k], end[k], space,
+                    straightControlPoints(space, s.position(start[k]), s.position(end[k])));
+    }
     return s;
 }
 

@@ -53,6 +53,33 @@ inline constexpr int kCylinderDirections = 12;
 // fraction of the first's.
 inline constexpr double kCylinderDirectionGain = 0.8;
 
+// Whether the points, thinned at spacing ρ with a normal each, form one patch over their PCA
+// plane that a sheet laid over the plane can cover: at least kPatchNormalShare of the normals
+// within kPatchNormalAngle of the plane's normal (either sign), and in every cell of side 2ρ
+// of the plane the points' heights no farther apart than the cell's slope allows plus ρ. A
+// closed shape such as the bunny is not one (its sides turn away, its back lies behind its
+// front). False for fewer than 3 points or a missing normal.
+bool isPatchOverPlane(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
+                      double rho);
+inline constexpr double kPatchNormalAngle = 1.3089969389957472; // 75°
+inline constexpr double kPatchNormalShare = 0.98;
+
+// Whether the points' normals (one per point, either sign) turn mainly one way over them, as a
+// cylinder's or a cone's do, by kRulingAnisotropy more than across, or hardly at all (less than
+// kRulingTurnMinimum over their extent): a sheet of strips side by side then follows them. A
+// saddle's or a sphere's turn alike both ways. False for a missing normal.
+bool curvesMainlyOneWay(const std::vector<Vec3>& points, const std::vector<Vec3>& normals);
+
+// `count` flat strips side by side as one surface over the rectangle of the points in their
+// PCA plane, enlarged by `margin`: each strip's curves run where the normals turn most (as
+// initialStrip's), the strips follow one another along the rulings' direction, each two
+// sharing a curve, a crease without a fold condition (free to kink), so that the strips can
+// bend apart while the surface stays watertight. Named "strips". Throws as initialStrip, or
+// for count < 1.
+CompositeSurface initialStripSheet(const std::vector<Vec3>& points,
+                                   const std::vector<Vec3>& normals, int count,
+                                   const SplineSpace& space, double margin = 0.05);
+
 // Control points in `space` (open) of the curve `at` (t in [0, 1]), by least squares over
 // 4 samples per control point: exact for a curve of the space, such as a polynomial of at
 // most its degree.

@@ -74,6 +74,30 @@ std::vector<model::CompositeSurface> initialStrips(const ThinnedTarget& target, 
     return strips;
 }
 
+std::optional<model::CompositeSurface> initialStripSheet(const ThinnedTarget& target, int count,
+                                                         int intervals, int firstNumber) {
+    std::vector<model::Vec3> positions;
+    std::vector<model::Vec3> normals;
+    positions.reserve(target.thinned.points.size());
+    normals.reserve(target.thinned.points.size());
+    for (const model::reference::ThinnedPoint& p : target.thinned.points) {
+        positions.push_back(p.position);
+        normals.push_back(p.normal);
+    }
+    if (count < 2 || !model::reference::isPatchOverPlane(positions, normals, target.rho) ||
+        !model::reference::curvesMainlyOneWay(positions, normals)) {
+        return std::nullopt;
+    }
+    try {
+        model::CompositeSurface sheet = model::reference::initialStripSheet(
+            positions, normals, count, model::SplineSpace{3, 2, intervals});
+        sheet.setName("strips " + std::to_string(firstNumber));
+        return sheet;
+    } catch (const std::invalid_argument&) {
+        return std::nullopt; // the points on a line: strips over their patches instead
+    }
+}
+
 SurfaceTargets assignToSurfaces(const std::vector<model::CompositeSurface>& surfaces,
                                 const model::reference::ThinningResult& thinned) {
     const model::reference::SurfaceSamples samples = model::reference::sampleDensely(surfaces, 8);
@@ -183,9 +207,20 @@ ApproximationSetup prepareApproximation(const std::vector<model::Vec3>& points,
         setup.error = ApproximationSetup::Error::TooFewPoints;
         return setup;
     }
-    setup.surfaces = setup.newStrips
-                         ? initialStrips(setup.target, strips, options.intervals, firstNumber)
-                         : start;
+    std::optional<model::CompositeSurface> sheet;
+    if (setup.newStrips && options.oneSurfaceOverAPatch && strips >= 2) {
+        sheet = initialStripSheet(setup.target, strips, options.intervals, firstNumber);
+    }
+    if (sheet) {
+        // One surface, pulled as a design's surfaces are: no cylinder start, no trim (both
+        // are for surfaces of one strip).
+        setup.surfaces = {std::move(*sheet)};
+        setup.stripsInOneSurface = strips;
+    } else {
+        setup.surfaces = setup.newStrips
+                             ? initialStrips(setup.target, strips, options.intervals, firstNumber)
+                             : start;
+    }
     if (setup.surfaces.empty()) {
         setup.error = ApproximationSetup::Error::Collinear;
         return setup;
@@ -195,8 +230,9 @@ ApproximationSetup prepareApproximation(const std::vector<model::Vec3>& points,
         return setup;
     }
     setup.targets = assignToSurfaces(setup.surfaces, setup.target.thinned);
-    setup.request = approximationRequest(setup.surfaces, setup.targets, setup.target.rho,
-                                         options.iterations, setup.newStrips);
+    setup.request =
+        approximationRequest(setup.surfaces, setup.targets, setup.target.rho, options.iterations,
+                             setup.newStrips && setup.stripsInOneSurface == 0);
     if (setup.request.targets.empty()) {
         setup.error = ApproximationSetup::Error::NothingNear;
     }

@@ -67,6 +67,14 @@ inline constexpr double kTrimToleranceRhos = 0.45;
 std::vector<model::CompositeSurface> initialStrips(const ThinnedTarget& target, int count,
                                                    int intervals, int firstNumber = 1);
 
+// Where the thinned target is one patch over its plane curved mainly one way
+// (model::reference::isPatchOverPlane, curvesMainlyOneWay), `count` ≥ 2 strips side by side
+// as one surface over it (initialStripSheet with the thinned
+// normals, `intervals` intervals), named "strips N" with N = firstNumber: watertight by
+// construction. None for any other target.
+std::optional<model::CompositeSurface> initialStripSheet(const ThinnedTarget& target, int count,
+                                                         int intervals, int firstNumber = 1);
+
 // Every thinned point goes to the surface nearest to it (its nearest dense sample).
 struct SurfaceTargets {
     std::vector<std::vector<model::Vec3>> points; // per surface
@@ -92,6 +100,9 @@ struct ApproximationOptions {
     int intervals = 4; // spline intervals per new strip
     double rho = 0.0;  // thinning radius; ≤ 0: defaultApproximationRadius
     std::optional<int> iterations;
+    // New strips over a target that is one patch are laid side by side as one surface
+    // (initialStripSheet); false: separate strips over its patches always.
+    bool oneSurfaceOverAPatch = true;
 };
 
 struct ApproximationSetup {
@@ -106,6 +117,10 @@ struct ApproximationSetup {
     ThinnedTarget target;
     std::vector<model::CompositeSurface> surfaces; // the start: `start` or the new strips
     bool newStrips = false;
+    // The new strips were laid side by side as one surface (ApproximationOptions::
+    // oneSurfaceOverAPatch): `surfaces` holds that one surface, new (newStrips) but pulled
+    // as a design's surfaces are, without the cylinder start and trim of single strips.
+    int stripsInOneSurface = 0;
     SurfaceTargets targets;
     JobRequest request;
     double milliseconds = 0.0; // the setup's time

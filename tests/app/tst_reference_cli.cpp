@@ -212,9 +212,21 @@ private slots:
 
     void approximateWithSeveralStripsAndFromAProject() {
         QVERIFY(writeFile(path("cylinder.xyz"), xyz(parabolicCylinderPoints())));
+        // One patch curved one way: the two strips are laid side by side as one surface.
         test::CliRun run = test::runCli({"approximate", path("cylinder.xyz"), "--strips", "2",
-                                         "--iterations", "10", "-o", path("two.devsurf")});
+                                         "--iterations", "10", "-o", path("one.devsurf")});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        QVERIFY2(run.out.contains("The target is one patch: 2 strips laid side by side as one "
+                                  "surface"),
+                 qPrintable(run.out));
+        const model::Project one = io::loadProjectFile(path("one.devsurf"));
+        QCOMPARE(one.surfaces.size(), std::size_t(1));
+        QCOMPARE(one.surfaces.front().faces().size(), std::size_t(2));
+        // --separate: two strips over two patches.
+        run = test::runCli({"approximate", path("cylinder.xyz"), "--strips", "2", "--separate",
+                            "--iterations", "10", "-o", path("two.devsurf")});
+        QVERIFY2(run.exitCode == 0, qPrintable(run.err));
+        QVERIFY(!run.out.contains("The target is one patch"));
         QCOMPARE(io::loadProjectFile(path("two.devsurf")).surfaces.size(), std::size_t(2));
         run = test::runCli({"approximate", path("cylinder.xyz"), "--from", path("two.devsurf"),
                             "--iterations", "5", "-o", path("again.devsurf")});
@@ -227,8 +239,9 @@ private slots:
     void approximateJoinsStripsIntoOneSurface() {
         const std::vector<model::Vec3> points = circularCylinder();
         QVERIFY(writeFile(path("circular.xyz"), xyz(points)));
-        const test::CliRun run = test::runCli({"approximate", path("circular.xyz"), "--strips", "2",
-                                               "--join", "-o", path("joined.devsurf")});
+        const test::CliRun run =
+            test::runCli({"approximate", path("circular.xyz"), "--strips", "2", "--separate",
+                          "--join", "-o", path("joined.devsurf")});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         QVERIFY2(run.out.contains(
                      "Join: 1 of 1 pairs of facing edges welded; 2 surfaces now one of 1 part(s)"),
@@ -248,6 +261,7 @@ private slots:
         QVERIFY2(report.targetToSurface.max < 0.5,
                  qPrintable(QString::number(report.targetToSurface.max)));
         QVERIFY(test::runCli({"approximate", "--help"}).out.contains("--join"));
+        QVERIFY(test::runCli({"approximate", "--help"}).out.contains("--separate"));
     }
 
     void joinCommandMakesFourStripsOneSurface() {
@@ -255,8 +269,8 @@ private slots:
         // watertight surface, pulled to the project's reference shape, which the test measures.
         const std::vector<model::Vec3> points = circularCylinder();
         QVERIFY(writeFile(path("circular.xyz"), xyz(points)));
-        test::CliRun run = test::runCli(
-            {"approximate", path("circular.xyz"), "--strips", "4", "-o", path("four.devsurf")});
+        test::CliRun run = test::runCli({"approximate", path("circular.xyz"), "--strips", "4",
+                                         "--separate", "-o", path("four.devsurf")});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));
         run = test::runCli({"join", path("four.devsurf"), "-o", path("joined.devsurf")});
         QVERIFY2(run.exitCode == 0, qPrintable(run.err));

@@ -5,6 +5,7 @@
 #include "model/reference/distance_report.h"
 #include "model/reference/initial_strip.h"
 #include "model/reference/thinning.h"
+#include "model/strip_joining.h"
 #include "sampled_developability.h"
 #include "solver/session/approximation_setup.h"
 #include "solver/session/solve_job.h"
@@ -193,6 +194,7 @@ private slots:
         solver::ApproximationOptions options;
         options.strips = 2;
         options.intervals = 2;
+        options.oneSurfaceOverAPatch = false; // separate strips, as over a closed shape
         const solver::ApproximationSetup setup = solver::prepareApproximation(points, {}, options);
         QCOMPARE(setup.surfaces.size(), std::size_t(2));
         solver::SolveJob job;
@@ -211,6 +213,55 @@ private slots:
         for (const model::CompositeSurface& strip : outcome.surfaces) {
             QVERIFY(sampledDevelopability(strip) <= 1e-8);
         }
+    }
+
+    void stripsOverAPatchAreLaidAsOneSurface() {
+        // The same parabolic cylinder, 100 × 120 mm: one patch curved one way, so three new
+        // strips are laid side by side as one surface and pulled as one: watertight, exactly
+        // developable and as close as separate strips.
+        const std::vector<Vec3> points = sampleGrid(
+            [](double s, double t) {
+                const double x = -50 + 100 * s;
+                return Vec3(x, 0.01 * x * x, 120 * t);
+            },
+            40, 48);
+        solver::ApproximationOptions options;
+        options.strips = 3;
+        options.intervals = 2;
+        const solver::ApproximationSetup setup = solver::prepareApproximation(points, {}, options);
+        QCOMPARE(setup.error, solver::ApproximationSetup::Error::None);
+        QCOMPARE(setup.surfaces.size(), std::size_t(1));
+        QCOMPARE(setup.stripsInOneSurface, 3);
+        QVERIFY(setup.newStrips);
+        QVERIFY(!setup.request.targets.at(0)->overhang); // no trim: it is not one strip
+        QCOMPARE(setup.surfaces.front().faces().size(), std::size_t(3));
+        solver::SolveJob job;
+        const solver::JobOutcome outcome = job.run(setup.request);
+        QVERIFY(outcome.ok);
+        const model::CompositeSurface& result = outcome.surfaces.front();
+        QVERIFY(outcome.assessments.front().summary.toleranceReached);
+        QVERIFY(!outcome.assessments.front().approximationKeptStart);
+        QCOMPARE(model::surfaceParts(result).size(), std::size_t(1));
+        QVERIFY(sampledDevelopability(result) <= 1e-8);
+        const model::reference::DistanceReport distance =
+            model::reference::measureDistance(outcome.surfaces, points);
+        qInfo("one surface of three strips: target to surface mean %.3g, max %.3g of the "
+              "diagonal, coverage %.3g",
+              distance.targetToSurface.mean / distance.diagonal,
+              distance.targetToSurface.max / distance.diagonal, distance.coverage);
+        QVERIFY(distance.targetToSurface.mean <= 1e-3 * distance.diagonal);
+        QCOMPARE(distance.coverage, 1.0);
+        // A saddle is one patch too, but curved both ways alike: separate strips.
+        const std::vector<Vec3> saddle = sampleGrid(
+            [](double s, double t) {
+                const double x = -50 + 100 * s;
+                const double y = -50 + 100 * t;
+                return Vec3(x, y, (x * x - y * y) / 300.0);
+            },
+            40, 40);
+        const solver::ApproximationSetup apart = solver::prepareApproximation(saddle, {}, options);
+        QCOMPARE(apart.stripsInOneSurface, 0);
+        QCOMPARE(apart.surfaces.size(), std::size_t(3));
     }
 
     void aNewStripIsTrimmedWhereItOverhangsTheShape() {
