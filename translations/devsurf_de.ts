@@ -1344,8 +1344,8 @@
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="46"/>
-        <source>Lay as many flat strips over patches of the shape (k-means clusters; where the shape curves both ways, bands twice as long as wide), pull them towards the shape and add them to the design. A strip that cannot follow the shape and stay developable is pulled again, damped, from the cylinder that fits its points best. Then each is trimmed back where it stands off the shape.</source>
-        <translation>Ebenso viele ebene Streifen über Bereiche der Form legen (k-Means-Cluster; wo die Form in beide Richtungen gekrümmt ist, Bänder doppelt so lang wie breit), sie zur Form hin ziehen und dem Entwurf hinzufügen. Ein Streifen, der der Form nicht folgen und abwickelbar bleiben kann, wird erneut gedämpft gezogen, ausgehend von dem Zylinder, der am besten zu seinen Punkten passt. Danach wird jeder Streifen dort zurückgeschnitten, wo er von der Form absteht.</translation>
+        <source>Lay as many flat strips over patches of the shape (k-means clusters; where the shape curves both ways, bands twice as long as wide), pull them towards the shape and add them to the design. A strip that cannot follow the shape and stay developable is pulled again, damped, from the cylinder that fits its points best. Then each is trimmed back where it stands off the shape. Over a shape that is one patch seen from one side (a panel, not a closed shape) the strips are laid side by side as one watertight surface instead, bent to it.</source>
+        <translation>Ebenso viele ebene Streifen über Bereiche der Form legen (k-Means-Cluster; wo die Form in beide Richtungen gekrümmt ist, Bänder doppelt so lang wie breit), sie zur Form hin ziehen und dem Entwurf hinzufügen. Ein Streifen, der der Form nicht folgen und abwickelbar bleiben kann, wird erneut gedämpft gezogen, ausgehend von dem Zylinder, der am besten zu seinen Punkten passt. Danach wird jeder Streifen dort zurückgeschnitten, wo er von der Form absteht. Über einer Form, die ein einziger, von einer Seite gesehener Bereich ist (eine Platte, keine geschlossene Form), werden die Streifen stattdessen nebeneinander als eine wasserdichte Fläche gelegt, an sie angebogen.</translation>
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="56"/>
@@ -1532,6 +1532,19 @@
             <numerusform>%n Fläche, zu weit von der Form entfernt, blieb unverändert.</numerusform>
             <numerusform>%n Flächen, zu weit von der Form entfernt, blieben unverändert.</numerusform>
         </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
+        <source>The reference shape is one patch: its %n strip(s) were laid side by side as one watertight surface.</source>
+        <translation>
+            <numerusform>Die Referenzform ist ein einziger Bereich: ihr %n Streifen wurde als eine wasserdichte Fläche gelegt.</numerusform>
+            <numerusform>Die Referenzform ist ein einziger Bereich: ihre %n Streifen wurden nebeneinander als eine wasserdichte Fläche gelegt.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
+        <source>Pulled closer, the surface did not end developable; it was kept as it was laid, bent to the shape.</source>
+        <translation>Näher herangezogen wurde die Fläche nicht abwickelbar; sie blieb, wie sie gelegt wurde, an die Form angebogen.</translation>
     </message>
     <message numerus="yes">
         <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>

@@ -146,6 +146,14 @@
     </message>
     <message numerus="yes">
         <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
+        <source>The reference shape is one patch: its %n strip(s) were laid side by side as one watertight surface.</source>
+        <translation>
+            <numerusform>The reference shape is one patch: its %n strip was laid as one watertight surface.</numerusform>
+            <numerusform>The reference shape is one patch: its %n strips were laid side by side as one watertight surface.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
         <source>%n strip(s) were trimmed back where they stood off the shape.</source>
         <translation>
             <numerusform>%n strip was trimmed back where it stood off the shape.</numerusform>

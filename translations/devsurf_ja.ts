@@ -1333,8 +1333,8 @@
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="46"/>
-        <source>Lay as many flat strips over patches of the shape (k-means clusters; where the shape curves both ways, bands twice as long as wide), pull them towards the shape and add them to the design. A strip that cannot follow the shape and stay developable is pulled again, damped, from the cylinder that fits its points best. Then each is trimmed back where it stands off the shape.</source>
-        <translation>形状の同数の領域 (k-means クラスタ。形状が二方向に曲がるところでは幅の 2 倍の長さの帯) に平らなストリップを置き、形状へ引き寄せてデザインに追加します。形状に沿いつつ可展のままでいられないストリップは、点に最もよく合う円柱から減衰させて引き寄せ直します。その後、形状から離れて張り出した部分を切り詰めます。</translation>
+        <source>Lay as many flat strips over patches of the shape (k-means clusters; where the shape curves both ways, bands twice as long as wide), pull them towards the shape and add them to the design. A strip that cannot follow the shape and stay developable is pulled again, damped, from the cylinder that fits its points best. Then each is trimmed back where it stands off the shape. Over a shape that is one patch seen from one side (a panel, not a closed shape) the strips are laid side by side as one watertight surface instead, bent to it.</source>
+        <translation>形状の同数の領域 (k-means クラスタ。形状が二方向に曲がるところでは幅の 2 倍の長さの帯) に平らなストリップを置き、形状へ引き寄せてデザインに追加します。形状に沿いつつ可展のままでいられないストリップは、点に最もよく合う円柱から減衰させて引き寄せ直します。その後、形状から離れて張り出した部分を切り詰めます。形状が一方から見た一つのパッチ（閉じた形状ではなくパネル）である場合は、代わりにストリップを並べ、形状に沿って曲げた一つの水密な曲面として配置します。</translation>
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="56"/>
@@ -1517,6 +1517,18 @@
         <translation>
             <numerusform>形状から遠すぎる %n 個の曲面はそのままです。</numerusform>
         </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
+        <source>The reference shape is one patch: its %n strip(s) were laid side by side as one watertight surface.</source>
+        <translation>
+            <numerusform>参照形状は一つのパッチです。%n 本のストリップを並べて一つの水密な曲面として配置しました。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
+        <source>Pulled closer, the surface did not end developable; it was kept as it was laid, bent to the shape.</source>
+        <translation>近づけると曲面が可展にならなかったため、形状に沿って曲げて配置したままにしました。</translation>
     </message>
     <message numerus="yes">
         <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>

@@ -272,12 +272,13 @@ const std::vector<SubcommandSpec>& subcommands() {
          "then trimmed back where its sides or corners stand off the target,\n"
          "and solved again. Writes the strips and the target to\n"
          "OUT and prints the residual and the distance report. Where the target\n"
-         "is one patch over a plane curved mainly one way (its normals within\n"
-         "75 degrees of the plane's, its heights single-valued, its normals\n"
-         "turning twice as much one way as across), K >= 2 new strips are laid side\n"
-         "by side as one surface instead, each two sharing a curve that may\n"
-         "kink: watertight as laid, pulled as one surface (--separate: strips\n"
-         "over patches as above). With --join,\n"
+         "is one patch seen from one side (its normals within 75 degrees of its\n"
+         "plane's, its heights over that plane single-valued), K >= 2 new strips\n"
+         "are laid side by side as one surface instead, each two sharing a curve\n"
+         "that may kink, bent to the target (its height a cubic along the curves\n"
+         "plus a piecewise linear function across them, so every strip is a\n"
+         "cylinder): watertight as laid, then pulled as one surface (--separate:\n"
+         "strips over patches as above). With --join,\n"
          "the strips become one surface: the boundary curves or rulings of two\n"
          "strips that face each other (ends and middles apart by at most 20 %\n"
          "of their length) are pulled onto each other in a second approximation,\n"
@@ -288,7 +289,7 @@ const std::vector<SubcommandSpec>& subcommands() {
           {"intervals", "N", "Spline intervals of each new strip (default 4)."},
           {"iterations", "N", "Iterations of the pull (default 30)."},
           {"rho", "R", "The thinning radius in mm."},
-          {"separate", "", "Separate strips over patches even where the target is one patch."},
+          {"separate", "", "Separate strips over patches, even where the target is one patch."},
           {"join", "", "Join strips whose edges face each other into one surface."},
           kOutputProject}},
         {"join",

@@ -48,7 +48,9 @@ ApproximateDialog::ApproximateDialog(const model::Project& project, QWidget* par
            "shape curves both ways, bands twice as long as wide), pull them towards the shape "
            "and add them to the design. A strip that cannot follow the shape and stay "
            "developable is pulled again, damped, from the cylinder that fits its points best. "
-           "Then each is trimmed back where it stands off the shape."));
+           "Then each is trimmed back where it stands off the shape. Over a shape that is one "
+           "patch seen from one side (a panel, not a closed shape) the strips are laid side by "
+           "side as one watertight surface instead, bent to it."));
     m_strips = new QSpinBox(this);
     m_strips->setObjectName(QStringLiteral("stripsBox"));
     m_strips->setRange(1, 100);

@@ -64,21 +64,22 @@ bool isPatchOverPlane(const std::vector<Vec3>& points, const std::vector<Vec3>& 
 inline constexpr double kPatchNormalAngle = 1.3089969389957472; // 75°
 inline constexpr double kPatchNormalShare = 0.98;
 
-// Whether the points' normals (one per point, either sign) turn mainly one way over them, as a
-// cylinder's or a cone's do, by kRulingAnisotropy more than across, or hardly at all (less than
-// kRulingTurnMinimum over their extent): a sheet of strips side by side then follows them. A
-// saddle's or a sphere's turn alike both ways. False for a missing normal.
-bool curvesMainlyOneWay(const std::vector<Vec3>& points, const std::vector<Vec3>& normals);
 
-// `count` flat strips side by side as one surface over the rectangle of the points in their
-// PCA plane, enlarged by `margin`: each strip's curves run where the normals turn most (as
-// initialStrip's), the strips follow one another along the rulings' direction, each two
-// sharing a curve, a crease without a fold condition (free to kink), so that the strips can
-// bend apart while the surface stays watertight. Named "strips". Throws as initialStrip, or
-// for count < 1.
+// `count` strips side by side as one surface over the rectangle of the points in their PCA
+// plane, enlarged by `margin`, each two sharing a curve, a crease without a fold condition (free
+// to kink), so that the strips can bend apart while the surface stays watertight. Bent to the
+// points: their height over the plane fitted (least squares) as f(u) + g(w), f a cubic along
+// the curves, g piecewise linear across with its kinks at the shared curves, so every strip is
+// exactly a general cylinder (b a translate of a) and the surface developable as laid; a
+// saddle's or a sphere cap's height is such a sum in its principal directions. The curves run
+// where the normals turn most (a cylinder's around it), else along the longest axis, unless
+// one of kCylinderDirections evenly turned directions fits clearly better
+// (kCylinderDirectionGain), among those whose rectangle is at most kSheetAreaSlack times the
+// smallest. Named "strips". Throws as initialStrip, or for count < 1.
 CompositeSurface initialStripSheet(const std::vector<Vec3>& points,
                                    const std::vector<Vec3>& normals, int count,
                                    const SplineSpace& space, double margin = 0.05);
+inline constexpr double kSheetAreaSlack = 1.25;
 
 // Control points in `space` (open) of the curve `at` (t in [0, 1]), by least squares over
 // 4 samples per control point: exact for a curve of the space, such as a polynomial of at

@@ -84,8 +84,7 @@ std::optional<model::CompositeSurface> initialStripSheet(const ThinnedTarget& ta
         positions.push_back(p.position);
         normals.push_back(p.normal);
     }
-    if (count < 2 || !model::reference::isPatchOverPlane(positions, normals, target.rho) ||
-        !model::reference::curvesMainlyOneWay(positions, normals)) {
+    if (count < 2 || !model::reference::isPatchOverPlane(positions, normals, target.rho)) {
         return std::nullopt;
     }
     try {

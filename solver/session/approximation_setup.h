@@ -67,9 +67,8 @@ inline constexpr double kTrimToleranceRhos = 0.45;
 std::vector<model::CompositeSurface> initialStrips(const ThinnedTarget& target, int count,
                                                    int intervals, int firstNumber = 1);
 
-// Where the thinned target is one patch over its plane curved mainly one way
-// (model::reference::isPatchOverPlane, curvesMainlyOneWay), `count` ≥ 2 strips side by side
-// as one surface over it (initialStripSheet with the thinned
+// Where the thinned target is one patch over its plane (model::reference::isPatchOverPlane),
+// `count` ≥ 2 strips side by side as one surface over it (initialStripSheet with the thinned
 // normals, `intervals` intervals), named "strips N" with N = firstNumber: watertight by
 // construction. None for any other target.
 std::optional<model::CompositeSurface> initialStripSheet(const ThinnedTarget& target, int count,

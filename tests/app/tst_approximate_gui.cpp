@@ -10,6 +10,7 @@
 #include "model/document/document.h"
 #include "model/reference/distance_report.h"
 #include "model/reference/thinning.h"
+#include "model/strip_joining.h"
 #include "reactions/approximate_reaction.h"
 #include "sampled_developability.h"
 #include "solve_controller.h"
@@ -194,6 +195,45 @@ private slots:
         QCOMPARE(doc->surfaceCount(), 0);
         doc->undoStack()->redo();
         QCOMPARE(test::bytesOf(window), after);
+    }
+
+    void stripsOverAPatchBecomeOneSurface() {
+        // Three new strips over the cylinder patch (one patch seen from one side): one surface
+        // of three strips added, watertight, developable, on the cylinder; the sentence says
+        // so; one undo step.
+        app::MainWindow window;
+        QVERIFY(test::showActiveWithExample(window, QStringLiteral("sheet")));
+        openCylinderOnly(window);
+        document::Document* doc = window.workspace()->document();
+        const int steps = doc->undoStack()->count();
+        app::ApproximateReaction* reaction = reactionOf(window);
+        QSignalSpy finished(reaction, &app::ApproximateReaction::finished);
+        QTimer poll;
+        whenDialogOpens(poll, [](app::ApproximateDialog* dialog) {
+            dialog->newStripsButton()->setChecked(true);
+            dialog->stripsBox()->setValue(3);
+            dialog->intervalsBox()->setValue(2);
+            dialog->iterationsBox()->setValue(30);
+            dialog->accept();
+        });
+        window.action(QStringLiteral("actionApproximateReference"))->trigger();
+        QVERIFY(finished.wait(120000));
+        QVERIFY2(finished.front().at(0).toBool(), qPrintable(finished.front().at(1).toString()));
+        QVERIFY2(finished.front().at(1).toString().contains(
+                     QStringLiteral("its 3 strips were laid side by side as one watertight")),
+                 qPrintable(finished.front().at(1).toString()));
+        QCOMPARE(doc->undoStack()->count(), steps + 1);
+        QCOMPARE(doc->surfaceCount(), 1);
+        const model::CompositeSurface surface = doc->surface(0);
+        QCOMPARE(surface.faces().size(), std::size_t(3));
+        QCOMPARE(model::surfaceParts(surface).size(), std::size_t(1));
+        QVERIFY(test::sampledDevelopability(surface) <= 1e-8);
+        const model::reference::DistanceReport distance =
+            model::reference::measureDistance(surface, doc->project().referenceShapes[0].points);
+        QVERIFY2(distance.targetToSurface.mean <= 1e-3 * distance.diagonal,
+                 qPrintable(QString::number(distance.targetToSurface.mean)));
+        doc->undoStack()->undo();
+        QCOMPARE(doc->surfaceCount(), 0);
     }
 
     void pullsTheDesignsSurfaces() {

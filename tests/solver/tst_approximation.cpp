@@ -216,9 +216,9 @@ private slots:
     }
 
     void stripsOverAPatchAreLaidAsOneSurface() {
-        // The same parabolic cylinder, 100 × 120 mm: one patch curved one way, so three new
-        // strips are laid side by side as one surface and pulled as one: watertight, exactly
-        // developable and as close as separate strips.
+        // The same parabolic cylinder, 100 × 120 mm: one patch, so three new strips are laid
+        // side by side as one surface and pulled as one: watertight, exactly developable and as
+        // close as separate strips.
         const std::vector<Vec3> points = sampleGrid(
             [](double s, double t) {
                 const double x = -50 + 100 * s;
@@ -251,15 +251,17 @@ private slots:
               distance.targetToSurface.max / distance.diagonal, distance.coverage);
         QVERIFY(distance.targetToSurface.mean <= 1e-3 * distance.diagonal);
         QCOMPARE(distance.coverage, 1.0);
-        // A saddle is one patch too, but curved both ways alike: separate strips.
-        const std::vector<Vec3> saddle = sampleGrid(
+        // A closed shape is no patch: separate strips.
+        const std::vector<Vec3> sphere = sampleGrid(
             [](double s, double t) {
-                const double x = -50 + 100 * s;
-                const double y = -50 + 100 * t;
-                return Vec3(x, y, (x * x - y * y) / 300.0);
+                const double theta = 0.05 + 3.04 * s;
+                const double phi = 6.2 * t;
+                return Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                            std::cos(theta)) *
+                       100.0;
             },
-            40, 40);
-        const solver::ApproximationSetup apart = solver::prepareApproximation(saddle, {}, options);
+            40, 60);
+        const solver::ApproximationSetup apart = solver::prepareApproximation(sphere, {}, options);
         QCOMPARE(apart.stripsInOneSurface, 0);
         QCOMPARE(apart.surfaces.size(), std::size_t(3));
     }

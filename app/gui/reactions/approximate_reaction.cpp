@@ -307,12 +307,20 @@ void ApproximateReaction::onMeasured() {
     // How strips ended other than pulled: also in the Solver panel, as the status bar elides
     // a long sentence.
     QString how;
+    if (run.setup.stripsInOneSurface > 0) {
+        how += QLatin1Char(' ') + tr("The reference shape is one patch: its %n strip(s) were laid "
+                                     "side by side as one watertight surface.",
+                                     nullptr, run.setup.stripsInOneSurface);
+    }
     if (trimmed > 0) {
         how +=
             QLatin1Char(' ') +
             tr("%n strip(s) were trimmed back where they stood off the shape.", nullptr, trimmed);
     }
-    if (keptAsLaid > 0) {
+    if (keptAsLaid > 0 && run.setup.stripsInOneSurface > 0) {
+        how += QLatin1Char(' ') + tr("Pulled closer, the surface did not end developable; it was "
+                                     "kept as it was laid, bent to the shape.");
+    } else if (keptAsLaid > 0) {
         how += QLatin1Char(' ') +
                tr("%n strip(s) could not be pulled closer and stay developable; they were "
                   "kept as they were laid.",
