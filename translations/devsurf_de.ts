@@ -1344,8 +1344,18 @@
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="46"/>
-        <source>Lay as many flat strips over patches of the shape (k-means clusters; where the shape curves both ways, bands twice as long as wide), pull them towards the shape and add them to the design. A strip that cannot follow the shape and stay developable is pulled again, damped, from the cylinder that fits its points best. Then each is trimmed back where it stands off the shape. Over a shape that is one patch seen from one side (a panel, not a closed shape) the strips are laid side by side as one watertight surface instead, bent to it.</source>
-        <translation>Ebenso viele ebene Streifen über Bereiche der Form legen (k-Means-Cluster; wo die Form in beide Richtungen gekrümmt ist, Bänder doppelt so lang wie breit), sie zur Form hin ziehen und dem Entwurf hinzufügen. Ein Streifen, der der Form nicht folgen und abwickelbar bleiben kann, wird erneut gedämpft gezogen, ausgehend von dem Zylinder, der am besten zu seinen Punkten passt. Danach wird jeder Streifen dort zurückgeschnitten, wo er von der Form absteht. Über einer Form, die ein einziger, von einer Seite gesehener Bereich ist (eine Platte, keine geschlossene Form), werden die Streifen stattdessen nebeneinander als eine wasserdichte Fläche gelegt, an sie angebogen.</translation>
+        <source>Lay as many flat strips over patches of the shape (k-means clusters; where the shape curves both ways, bands twice as long as wide), pull them towards the shape and add them to the design. A strip that cannot follow the shape and stay developable is pulled again, damped, from the cylinder that fits its points best. Then each is trimmed back where it stands off the shape.</source>
+        <translation>Ebenso viele ebene Streifen über Bereiche der Form legen (k-Means-Cluster; wo die Form in beide Richtungen gekrümmt ist, Bänder doppelt so lang wie breit), sie zur Form hin ziehen und dem Entwurf hinzufügen. Ein Streifen, der der Form nicht folgen und abwickelbar bleiben kann, wird erneut gedämpft gezogen, ausgehend von dem Zylinder, der am besten zu seinen Punkten passt. Danach wird jeder Streifen dort zurückgeschnitten, wo er von der Form absteht.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="56"/>
+        <source>As &amp;one surface where the shape is one patch</source>
+        <translation>Als &amp;eine Fläche, wo die Form ein einziger Bereich ist</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="56"/>
+        <source>Over a shape seen from one side (a panel, not a closed shape), lay the new strips side by side as one watertight surface, bent to the shape, each two sharing a curve along which they may kink. Off: separate strips over patches of the shape, as over a closed shape.</source>
+        <translation>Über einer von einer Seite gesehenen Form (einer Platte, keiner geschlossenen Form) die neuen Streifen nebeneinander als eine wasserdichte Fläche legen, an die Form angebogen, je zwei mit einer gemeinsamen Kurve, entlang der sie knicken dürfen. Aus: getrennte Streifen über Bereiche der Form, wie über einer geschlossenen Form.</translation>
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="56"/>

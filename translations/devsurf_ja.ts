@@ -1333,8 +1333,18 @@
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="46"/>
-        <source>Lay as many flat strips over patches of the shape (k-means clusters; where the shape curves both ways, bands twice as long as wide), pull them towards the shape and add them to the design. A strip that cannot follow the shape and stay developable is pulled again, damped, from the cylinder that fits its points best. Then each is trimmed back where it stands off the shape. Over a shape that is one patch seen from one side (a panel, not a closed shape) the strips are laid side by side as one watertight surface instead, bent to it.</source>
-        <translation>形状の同数の領域 (k-means クラスタ。形状が二方向に曲がるところでは幅の 2 倍の長さの帯) に平らなストリップを置き、形状へ引き寄せてデザインに追加します。形状に沿いつつ可展のままでいられないストリップは、点に最もよく合う円柱から減衰させて引き寄せ直します。その後、形状から離れて張り出した部分を切り詰めます。形状が一方から見た一つのパッチ（閉じた形状ではなくパネル）である場合は、代わりにストリップを並べ、形状に沿って曲げた一つの水密な曲面として配置します。</translation>
+        <source>Lay as many flat strips over patches of the shape (k-means clusters; where the shape curves both ways, bands twice as long as wide), pull them towards the shape and add them to the design. A strip that cannot follow the shape and stay developable is pulled again, damped, from the cylinder that fits its points best. Then each is trimmed back where it stands off the shape.</source>
+        <translation>形状の同数の領域 (k-means クラスタ。形状が二方向に曲がるところでは幅の 2 倍の長さの帯) に平らなストリップを置き、形状へ引き寄せてデザインに追加します。形状に沿いつつ可展のままでいられないストリップは、点に最もよく合う円柱から減衰させて引き寄せ直します。その後、形状から離れて張り出した部分を切り詰めます。</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="56"/>
+        <source>As &amp;one surface where the shape is one patch</source>
+        <translation>形状が一つのパッチなら一つの曲面として(&amp;O)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/approximate_dialog.cpp" line="56"/>
+        <source>Over a shape seen from one side (a panel, not a closed shape), lay the new strips side by side as one watertight surface, bent to the shape, each two sharing a curve along which they may kink. Off: separate strips over patches of the shape, as over a closed shape.</source>
+        <translation>一方から見た形状（閉じた形状ではなくパネル）では、新しいストリップを並べ、形状に沿って曲げた一つの水密な曲面として配置します。隣り合う二本は折れ曲がってもよい曲線を共有します。オフ: 閉じた形状と同様に、形状の領域ごとに別々のストリップを置きます。</translation>
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="56"/>

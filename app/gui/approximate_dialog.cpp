@@ -6,6 +6,7 @@
 
 #include "model/reference/bounding_box.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
@@ -48,9 +49,7 @@ ApproximateDialog::ApproximateDialog(const model::Project& project, QWidget* par
            "shape curves both ways, bands twice as long as wide), pull them towards the shape "
            "and add them to the design. A strip that cannot follow the shape and stay "
            "developable is pulled again, damped, from the cylinder that fits its points best. "
-           "Then each is trimmed back where it stands off the shape. Over a shape that is one "
-           "patch seen from one side (a panel, not a closed shape) the strips are laid side by "
-           "side as one watertight surface instead, bent to it."));
+           "Then each is trimmed back where it stands off the shape."));
     m_strips = new QSpinBox(this);
     m_strips->setObjectName(QStringLiteral("stripsBox"));
     m_strips->setRange(1, 100);
@@ -70,9 +69,18 @@ ApproximateDialog::ApproximateDialog(const model::Project& project, QWidget* par
     if (!hasSurfaces) {
         m_design->setToolTip(tr("The design has no surface yet."));
     }
+    m_oneSurface = new QCheckBox(tr("As &one surface where the shape is one patch"), this);
+    m_oneSurface->setObjectName(QStringLiteral("oneSurfaceBox"));
+    m_oneSurface->setChecked(true);
+    m_oneSurface->setToolTip(
+        tr("Over a shape seen from one side (a panel, not a closed shape), lay the new strips "
+           "side by side as one watertight surface, bent to the shape, each two sharing a curve "
+           "along which they may kink. Off: separate strips over patches of the shape, as over "
+           "a closed shape."));
     m_newStrips->setChecked(true);
     auto* start = new QVBoxLayout;
     start->addLayout(stripsRow);
+    start->addWidget(m_oneSurface);
     start->addWidget(m_design);
     form->addRow(tr("Start from:"), start);
 
@@ -85,6 +93,7 @@ ApproximateDialog::ApproximateDialog(const model::Project& project, QWidget* par
     form->addRow(tr("&Intervals per strip:"), m_intervals);
     connect(m_newStrips, &QRadioButton::toggled, this, [this](bool on) {
         m_strips->setEnabled(on);
+        m_oneSurface->setEnabled(on);
         m_intervals->setEnabled(on);
     });
 
@@ -147,6 +156,7 @@ ApproximationChoice ApproximateDialog::choice() const {
     c.shape = std::max(0, m_shape->currentIndex());
     c.newStrips = m_newStrips->isChecked();
     c.strips = m_strips->value();
+    c.oneSurface = m_oneSurface->isChecked();
     c.intervals = m_intervals->value();
     c.iterations = m_iterations->value();
     // The default as computed, not as rounded for the box, unless ρ was edited.

@@ -23,6 +23,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
@@ -90,6 +91,17 @@ std::function<void(app::ApproximateDialog*)> oneStrip(int iterations) {
         dialog->iterationsBox()->setValue(iterations);
         dialog->accept();
     };
+}
+
+// The dialog's "one surface" box starts checked and goes with the new strips.
+bool dialogBoxDefaultsToOneSurface(app::MainWindow& window) {
+    app::ApproximateDialog dialog(window.workspace()->document()->project(), &window);
+    const bool checked = dialog.oneSurfaceBox()->isChecked() && dialog.choice().oneSurface;
+    dialog.newStripsButton()->setChecked(false);
+    dialog.designButton()->setEnabled(true);
+    dialog.designButton()->setChecked(true);
+    const bool followsNewStrips = !dialog.oneSurfaceBox()->isEnabled();
+    return checked && followsNewStrips;
 }
 
 } // namespace
@@ -234,6 +246,24 @@ private slots:
                  qPrintable(QString::number(distance.targetToSurface.mean)));
         doc->undoStack()->undo();
         QCOMPARE(doc->surfaceCount(), 0);
+
+        // Unchecked: three separate strips over patches, as over a closed shape.
+        QVERIFY(dialogBoxDefaultsToOneSurface(window));
+        finished.clear();
+        QTimer again;
+        whenDialogOpens(again, [](app::ApproximateDialog* dialog) {
+            dialog->newStripsButton()->setChecked(true);
+            dialog->stripsBox()->setValue(3);
+            dialog->oneSurfaceBox()->setChecked(false);
+            dialog->intervalsBox()->setValue(2);
+            dialog->iterationsBox()->setValue(30);
+            dialog->accept();
+        });
+        window.action(QStringLiteral("actionApproximateReference"))->trigger();
+        QVERIFY(finished.wait(120000));
+        QVERIFY2(finished.front().at(0).toBool(), qPrintable(finished.front().at(1).toString()));
+        QVERIFY(!finished.front().at(1).toString().contains(QStringLiteral("one watertight")));
+        QCOMPARE(doc->surfaceCount(), 3);
     }
 
     void pullsTheDesignsSurfaces() {

@@ -131,6 +131,7 @@ void ApproximateReaction::start(const ApproximationChoice& choice) {
         [run](const BackgroundRead::Progress& progress) {
             solver::ApproximationOptions options;
             options.strips = run->choice.strips;
+            options.oneSurfaceOverAPatch = run->choice.oneSurface;
             options.intervals = run->choice.intervals;
             options.rho = run->choice.rho;
             options.iterations = run->choice.iterations;
