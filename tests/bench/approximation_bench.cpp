@@ -1,8 +1,10 @@
 #include "approximation_bench.h"
+
 #include "bench_json.h"
 
 #include "io/reference/reference_import.h"
 #include "model/reference/distance_report.h"
+#include "model/strip_joining.h"
 #include "solver/core/blas_info.h"
 #include "solver/quality/quality_measures.h"
 #include "solver/session/approximation_setup.h"
@@ -57,8 +59,9 @@ ApproximationBenchReport runApproximationBench(const ApproximationBenchOptions& 
         report.error = "the setup found no strips to pull (too few, collinear or far points)";
         return report;
     }
-    report.strips = static_cast<int>(setup.surfaces.size());
+    report.surfaces = static_cast<int>(setup.surfaces.size());
     for (const model::CompositeSurface& surface : setup.surfaces) {
+        report.strips += static_cast<int>(surface.faces().size());
         report.controlPoints += static_cast<int>(surface.controlPointCount());
     }
     log(options, "approximation: " + std::to_string(report.strips) + " strips on " +
@@ -103,7 +106,9 @@ ApproximationBenchReport runApproximationBench(const ApproximationBenchOptions& 
     for (const model::CompositeSurface& surface : outcome.surfaces) {
         const double worst = solver::worstDevelopability(surface);
         report.developabilityMax = std::max(report.developabilityMax, worst);
-        report.stripsDevelopable += worst <= kDevelopableResidual ? 1 : 0;
+        report.stripsDevelopable +=
+            worst <= kDevelopableResidual ? static_cast<int>(surface.faces().size()) : 0;
+        report.parts += static_cast<int>(model::surfaceParts(surface).size());
     }
     log(options, "approximation: measuring the distance");
     model::reference::DistanceOptions distanceOptions;
@@ -153,6 +158,8 @@ void printApproximationBench(const ApproximationBenchReport& r, bool json, std::
             << ",\n    \"thinned_points\": " << r.thinnedPoints
             << ",\n    \"diagonal_mm\": " << number(r.diagonalMm)
             << ",\n    \"rho_mm\": " << number(r.rhoMm) << ",\n    \"strips\": " << r.strips
+            << ",\n    \"surfaces\": " << r.surfaces << ",\n    \"parts\": " << r.parts
+            << ",\n    \"watertight\": " << (ok && r.parts == 1 ? "true" : "false")
             << ",\n    \"control_points\": " << r.controlPoints
             << ",\n    \"variables\": " << r.variables << ",\n    \"iterations\": " << r.iterations
             << ",\n    \"damped_strips\": " << r.dampedStrips
@@ -190,6 +197,7 @@ void printApproximationBench(const ApproximationBenchReport& r, bool json, std::
                   "%zu points (diagonal %.1f mm), thinned with %.3g mm to "
                   "%zu\n"
                   "  %d strips, %d control points, %d variables (paper: %d, %d, %d)\n"
+                  "  %d surface(s) in %d part(s)%s\n"
                   "  %d iterations at most, %d strips pulled again damped\n"
                   "  per iteration over all strips: assembly %.2f ms, factorize %.2f ms, solve "
                   "%.2f ms, total %.2f ms (%.4f of the paper's %.0f ms)\n"
@@ -199,10 +207,11 @@ void printApproximationBench(const ApproximationBenchReport& r, bool json, std::
                   "  surface to target: mean %.3f %%, p95 %.3f %%, max %.3f %%\n"
                   "  Hausdorff %.3f %%, coverage %.1f %%\n",
                   r.targetPoints, r.diagonalMm, r.rhoMm, r.thinnedPoints, r.strips, r.controlPoints,
-                  r.variables, kPaperStrips, kPaperControlPoints, kPaperVariables, r.iterations,
-                  r.dampedStrips, r.assemblyMs, r.factorizeMs, r.solveMs, r.iterationMs, ratio,
-                  kPaperIterationMs, r.setupMs, r.totalSeconds, r.stripsDevelopable, r.strips,
-                  kDevelopableResidual, r.developabilityMax, r.targetToSurface.meanPercent,
+                  r.variables, kPaperStrips, kPaperControlPoints, kPaperVariables, r.surfaces,
+                  r.parts, r.parts == 1 ? ": watertight" : "", r.iterations, r.dampedStrips,
+                  r.assemblyMs, r.factorizeMs, r.solveMs, r.iterationMs, ratio, kPaperIterationMs,
+                  r.setupMs, r.totalSeconds, r.stripsDevelopable, r.strips, kDevelopableResidual,
+                  r.developabilityMax, r.targetToSurface.meanPercent,
                   r.targetToSurface.percentile95Percent, r.targetToSurface.maxPercent,
                   r.surfaceToTarget.meanPercent, r.surfaceToTarget.percentile95Percent,
                   r.surfaceToTarget.maxPercent, r.hausdorffPercent, 100.0 * r.coverage);

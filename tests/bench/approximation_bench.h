@@ -31,6 +31,8 @@ struct ApproximationBenchReport {
     double diagonalMm = 0.0;
     double rhoMm = 0.0;
     int strips = 0;        // strips pulled (K-means may give fewer than asked)
+    int surfaces = 0;      // the strips laid as separate surfaces, or as one over a patch
+    int parts = 0;         // parts of those surfaces after the solve (model::surfaceParts)
     int controlPoints = 0; // over all strips
     int variables = 0;     // over all strips' problems
     int iterations = 0;    // the most any strip took (the damped rerun's included)
@@ -44,7 +46,7 @@ struct ApproximationBenchReport {
     double totalSeconds = 0.0; // setup and solve
     // Sampled normalised developability residual (solver::worstDevelopability) per strip.
     double developabilityMax = 0.0;
-    int stripsDevelopable = 0;                          // at most kDevelopableResidual
+    int stripsDevelopable = 0; // strips of surfaces at most kDevelopableResidual
     model::reference::OneSidedDistance targetToSurface; // mm and % of the diagonal
     model::reference::OneSidedDistance surfaceToTarget;
     double hausdorffPercent = 0.0;

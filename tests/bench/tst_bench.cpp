@@ -225,6 +225,8 @@ private slots:
         const QJsonObject a = document.object().value("approximation").toObject();
         QCOMPARE(a.value("target_points").toInt(), 41 * 25);
         QCOMPARE(a.value("strips").toInt(), 1);
+        QCOMPARE(a.value("surfaces").toInt(), 1);
+        QVERIFY(a.value("watertight").toBool());
         QVERIFY(a.value("thinned_points").toInt() > 6);
         QVERIFY(a.value("variables").toInt() > 0);
         QVERIFY(a.value("iterations").toInt() > 0);
@@ -255,6 +257,22 @@ private slots:
         QVERIFY(targets.value("strips").toBool());
         QVERIFY(targets.value("developable").toBool());
         QVERIFY(targets.value("per_iteration").isBool());
+
+        // Three strips over the patch: laid as one surface, one part, every strip developable.
+        options.strips = 3;
+        std::ostringstream three;
+        bench::printApproximationBench(bench::runApproximationBench(options), true, three);
+        const QJsonObject c = QJsonDocument::fromJson(QByteArray::fromStdString(three.str()))
+                                  .object()
+                                  .value("approximation")
+                                  .toObject();
+        QCOMPARE(c.value("strips").toInt(), 3);
+        QCOMPARE(c.value("surfaces").toInt(), 1);
+        QCOMPARE(c.value("parts").toInt(), 1);
+        QVERIFY(c.value("watertight").toBool());
+        QCOMPARE(c.value("strips_developable").toInt(), 3);
+        QVERIFY(c.value("targets").toObject().value("developable").toBool());
+        options.strips = 1;
 
         // An unreadable target: the error, still valid JSON, no strips.
         options.target = dir.filePath("missing.obj").toStdString();
