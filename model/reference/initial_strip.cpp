@@ -1,5 +1,7 @@
 #include "model/reference/initial_strip.h"
 
+#include "model/reference/strip_plane.h"
+
 #include "model/bspline_curve.h"
 
 #include <Eigen/Dense>
@@ -8,11 +10,16 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <map>
 #include <optional>
 #include <stdexcept>
 
 namespace devsurf::model::reference {
+
+using detail::extents;
+using detail::normalTurning;
+using detail::stripPlane;
+using detail::StripPlane;
+using detail::Turning;
 
 namespace {
 
@@ -35,16 +42,9 @@ std::vector<Vec3> straightControlPoints(const SplineSpace& space, const Vec3& p,
     return points;
 }
 
-// How the normals turn over the points: a least-squares linear fit of their tilt (their
-// components in the frame's plane, each normal turned to the side of axes[2]) against the
-// points' position in the plane; its singular values (rad per mm, larger first) and the unit
-// direction in the plane of the larger one. None for a missing or zero normal.
-struct Turning {
-    double most = 0.0;
-    double least = 0.0;
-    Vec3 direction;
-    double alongLongest = 0.0; // |cos| of its angle to axes[0]
-};
+} // namespace
+
+namespace detail {
 
 std::optional<Turning> normalTurning(const std::vector<Vec3>& points,
                                      const std::vector<Vec3>& normals,
@@ -85,6 +85,10 @@ std::optional<Turning> normalTurning(const std::vector<Vec3>& points,
     t.alongLongest = std::abs(v(0)) / v.norm();
     return t;
 }
+
+} // namespace detail
+
+namespace {
 
 // The unit direction of the frame's plane along which the normals turn most, if they turn
 // clearly more along it than across it (kRulingAnisotropy) and by kRulingTurnMinimum at least
@@ -245,15 +249,7 @@ CompositeSurface initialStrip(const std::vector<Vec3>& points, const SplineSpace
     return initialStrip(points, {}, space, margin);
 }
 
-namespace {
-
-// The arguments of an initial strip checked (std::invalid_argument as initialStrip documents),
-// the points' frame, and the direction of a and b in its plane: the longest axis, or the
-// direction of most turning.
-struct StripPlane {
-    PrincipalFrame frame;
-    Vec3 along;
-};
+namespace detail {
 
 StripPlane stripPlane(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                       const SplineSpace& space, double margin) {
@@ -276,8 +272,6 @@ StripPlane stripPlane(const std::vector<Vec3>& points, const std::vector<Vec3>& 
     return plane;
 }
 
-// The smallest and largest projection of the points, from `origin`, on `along` (index 0) and
-// on `across` (index 1).
 void extents(const std::vector<Vec3>& points, const Vec3& origin, const Vec3& along,
              const Vec3& across, double low[2], double high[2]) {
     for (int i = 0; i < 2; ++i) {
@@ -293,7 +287,7 @@ void extents(const std::vector<Vec3>& points, const Vec3& origin, const Vec3& al
     }
 }
 
-} // namespace
+} // namespace detail
 
 CompositeSurface initialStrip(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                               const SplineSpace& space, double margin) {
@@ -340,205 +334,6 @@ CompositeSurface initialStrip(const std::vector<Vec3>& points, const std::vector
     s.addFace({a0, a1, b1, b0});
     s.setSpline(a0, a1, space, straightControlPoints(space, s.position(a0), s.position(a1)));
     s.setSpline(b0, b1, space, straightControlPoints(space, s.position(b0), s.position(b1)));
-    return s;
-}
-
-bool isPatchOverPlane(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-                      double rho) {
-    if (points.size() < 3 || normals.size() != points.size() || !(rho > 0.0)) {
-        return false;
-    }
-    PrincipalFrame frame;
-    try {
-        frame = principalFrame(points);
-    } catch (const std::invalid_argument&) {
-        return false;
-    }
-    const Vec3& up = frame.axes[2];
-    const double cosLimit = std::cos(kPatchNormalAngle);
-    std::size_t facing = 0;
-    // Per cell of side 2ρ: the lowest and highest height and the steepest normal's slope.
-    struct Cell {
-        double low = std::numeric_limits<double>::max();
-        double high = std::numeric_limits<double>::lowest();
-        double slope = 0.0;
-    };
-    std::map<std::pair<long, long>, Cell> cells;
-    const double side = 2.0 * rho;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const double length = normals[i].norm();
-        if (!(length > 0.0) || !std::isfinite(length)) {
-            return false;
-        }
-        const double c = std::min(1.0, std::abs(dot(normals[i], up)) / length);
-        facing += c >= cosLimit ? 1 : 0;
-        const Vec3 d = points[i] - frame.centroid;
-        const std::pair<long, long> key{std::lround(std::floor(dot(d, frame.axes[0]) / side)),
-                                        std::lround(std::floor(dot(d, frame.axes[1]) / side))};
-        Cell& cell = cells[key];
-        const double h = dot(d, up);
-        cell.low = std::min(cell.low, h);
-        cell.high = std::max(cell.high, h);
-        cell.slope =
-            std::max(cell.slope, std::sqrt(std::max(0.0, 1.0 - c * c)) / std::max(c, cosLimit));
-    }
-    if (static_cast<double>(facing) < kPatchNormalShare * static_cast<double>(points.size())) {
-        return false;
-    }
-    const double diagonal = side * std::sqrt(2.0);
-    return std::all_of(cells.begin(), cells.end(), [&](const auto& entry) {
-        const Cell& cell = entry.second;
-        return cell.high - cell.low <= diagonal * cell.slope + rho;
-    });
-}
-
-namespace {
-
-// The strips' sheet over direction `along` of the frame's plane: the rectangle of the points
-// (enlarged by the margin) and their height over the plane as h(u, w) = f(u) + g(w), f a cubic
-// without a constant term, g piecewise linear between the strips' lines w0 + k (w1 − w0) /
-// count, by least squares (u scaled for the conditioning; g's second differences held a little
-// towards 0 so that a line no point lies near stays determined). nullopt where the points do
-// not spread both ways.
-struct SheetFit {
-    Vec3 along;
-    Vec3 across;
-    double u0 = 0.0, u1 = 0.0, w0 = 0.0, w1 = 0.0;
-    double scale = 1.0;
-    Eigen::VectorXd c; // f's 3 coefficients, then g at the count + 1 lines
-    double squaredError = 0.0;
-
-    double area() const { return (u1 - u0) * (w1 - w0); }
-
-    Vec3 at(const PrincipalFrame& frame, double u, int k, int count) const {
-        const double x = u / scale;
-        const double height = x * (c(0) + x * (c(1) + x * c(2))) + c(3 + k);
-        return frame.centroid + along * u + across * (w0 + (w1 - w0) * k / count) +
-               frame.axes[2] * height;
-    }
-};
-
-std::optional<SheetFit> fitSheet(const std::vector<Vec3>& points, const PrincipalFrame& frame,
-                                 const Vec3& along, int count, double margin) {
-    SheetFit fit;
-    fit.along = along;
-    fit.across = cross(frame.axes[2], along);
-    double low[2];
-    double high[2];
-    extents(points, frame.centroid, fit.along, fit.across, low, high);
-    const double length = high[0] - low[0];
-    const double width = high[1] - low[1];
-    if (!(width > 1e-9 * length) || !(length > 1e-9 * width)) {
-        return std::nullopt;
-    }
-    fit.u0 = low[0] - margin * length;
-    fit.u1 = high[0] + margin * length;
-    fit.w0 = low[1] - margin * width;
-    fit.w1 = high[1] + margin * width;
-    fit.scale = std::max(length, width);
-    const auto hat = [&](double w, int k) {
-        const double x = (w - fit.w0) / (fit.w1 - fit.w0) * count - k;
-        return std::max(0.0, 1.0 - std::abs(x));
-    };
-    const auto n = static_cast<Eigen::Index>(points.size());
-    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n + std::max(0, count - 1), 3 + count + 1);
-    Eigen::VectorXd h = Eigen::VectorXd::Zero(a.rows());
-    for (Eigen::Index i = 0; i < n; ++i) {
-        const Vec3 d = points[static_cast<std::size_t>(i)] - frame.centroid;
-        const double x = dot(d, fit.along) / fit.scale;
-        const double w = dot(d, fit.across);
-        a(i, 0) = x;
-        a(i, 1) = x * x;
-        a(i, 2) = x * x * x;
-        for (int k = 0; k <= count; ++k) {
-            a(i, 3 + k) = hat(w, k);
-        }
-        h(i) = dot(d, frame.axes[2]);
-    }
-    const double smooth = 1e-3 * std::sqrt(static_cast<double>(n) / (count + 1));
-    for (int k = 1; k < count; ++k) {
-        const Eigen::Index row = n + k - 1;
-        a(row, 3 + k - 1) = smooth;
-        a(row, 3 + k) = -2.0 * smooth;
-        a(row, 3 + k + 1) = smooth;
-    }
-    fit.c = a.colPivHouseholderQr().solve(h);
-    fit.squaredError = (a.topRows(n) * fit.c - h.head(n)).squaredNorm();
-    return fit;
-}
-
-} // namespace
-
-CompositeSurface initialStripSheet(const std::vector<Vec3>& points,
-                                   const std::vector<Vec3>& normals, int count,
-                                   const SplineSpace& space, double margin) {
-    if (count < 1) {
-        throw std::invalid_argument("lay at least one strip");
-    }
-    const StripPlane plane = stripPlane(points, normals, space, margin);
-    const PrincipalFrame& frame = plane.frame;
-    // Curves where the normals turn most (a cylinder's run around it), else along the longest
-    // axis; another of kCylinderDirections evenly turned directions where its sheet fits
-    // clearly better (kCylinderDirectionGain): a saddle's principal directions, which the
-    // normals' turning does not tell apart. Only directions whose rectangle is at most
-    // kSheetAreaSlack times the smallest: a rectangle turned against its patch's footprint
-    // (a square turned 45°) stands off it at its corners.
-    Vec3 first = frame.axes[0];
-    if (const std::optional<Turning> t = normalTurning(points, normals, frame);
-        t && t->most >= kRulingAnisotropy * t->least) {
-        first = t->direction;
-    }
-    std::vector<SheetFit> fits;
-    if (std::optional<SheetFit> fit = fitSheet(points, frame, first, count, margin)) {
-        fits.push_back(std::move(*fit));
-    } else {
-        throw std::invalid_argument("the points do not spread in two directions");
-    }
-    for (int k = 0; k < kCylinderDirections; ++k) {
-        const double angle = M_PI * k / kCylinderDirections;
-        const Vec3 along = frame.axes[0] * std::cos(angle) + frame.axes[1] * std::sin(angle);
-        if (std::optional<SheetFit> fit = fitSheet(points, frame, along, count, margin)) {
-            fits.push_back(std::move(*fit));
-        }
-    }
-    double smallest = std::numeric_limits<double>::max();
-    for (const SheetFit& fit : fits) {
-        smallest = std::min(smallest, fit.area());
-    }
-    const auto eligible = [&](const SheetFit& fit) {
-        return fit.area() <= kSheetAreaSlack * smallest;
-    };
-    const SheetFit* best = eligible(fits.front()) ? &fits.front() : nullptr;
-    double bar = best != nullptr ? kCylinderDirectionGain * best->squaredError
-                                 : std::numeric_limits<double>::infinity();
-    for (std::size_t i = 1; i < fits.size(); ++i) {
-        if (eligible(fits[i]) && fits[i].squaredError < bar) {
-            best = &fits[i];
-            bar = fits[i].squaredError;
-        }
-    }
-    CompositeSurface s;
-    s.setName("strips");
-    std::vector<VertexId> start;
-    std::vector<VertexId> end;
-    for (int k = 0; k <= count; ++k) {
-        start.push_back(s.addVertex(best->at(frame, best->u0, k, count)));
-        end.push_back(s.addVertex(best->at(frame, best->u1, k, count)));
-    }
-    // Strip k: curve a the k-th line, b the next; the loop a0, a1, b1, b0 as initialStrip's.
-    for (int k = 0; k < count; ++k) {
-        s.addFace({start[k], end[k], end[k + 1], start[k + 1]});
-    }
-    // Each line k the cubic u ↦ at(u, k), exact in the cubic space: strip k is the general
-    // cylinder over it along across + g's slope there · normal (b a translate of a).
-    for (int k = 0; k <= count; ++k) {
-        std::vector<Vec3> controls = fitControlPoints(space, [&](double t) {
-            return best->at(frame, best->u0 + (best->u1 - best->u0) * t, k, count);
-        });
-        controls.front() = s.position(start[k]); // as the fit gives them, to the last bit
-        controls.back() = s.position(end[k]);
-        s.setSpline(start[k], end[k], space, controls);
-    }
     return s;
 }
 

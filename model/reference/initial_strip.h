@@ -23,12 +23,11 @@ struct PrincipalFrame {
 // Throws std::invalid_argument for fewer than 3 points or a non-finite coordinate.
 PrincipalFrame principalFrame(const std::vector<Vec3>& points);
 
-// The initial strip of §4.2 (Fig. 10a): one valid SRSR face, a flat trapezoid in the PCA plane
-// of `points`, curves a and b along the longest axis, each spanning the projection of the points
-// of its half of the strip, the whole enlarged by `margin` on every side (a rectangle over a
-// footprint as wide on both sides), normal a′ × (b − a) = axes[2]. Throws
-// std::invalid_argument for fewer than 3 points, a non-finite coordinate, points on a line, an
-// invalid space or margin < 0.
+// The initial strip of §4.2 (Fig. 10a): one SRSR face, a flat trapezoid in the PCA plane of
+// `points`, curves a and b along the longest axis, each spanning its half of the points, enlarged
+// by `margin` on every side; normal a′ × (b − a) = axes[2]. Throws std::invalid_argument for
+// fewer than 3 points, a non-finite coordinate, points on a line, an invalid space or
+// margin < 0.
 CompositeSurface initialStrip(const std::vector<Vec3>& points, const SplineSpace& space,
                               double margin = 0.05);
 
@@ -38,13 +37,10 @@ CompositeSurface initialStrip(const std::vector<Vec3>& points, const SplineSpace
 CompositeSurface initialStrip(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                               const SplineSpace& space, double margin = 0.05);
 
-// The same strip bent into the general cylinder that fits the points best (least squares of
-// the height over the plane): the height a cubic of the position along the curves plus a tilt
-// across them, the curves along the direction among the one above and kCylinderDirections
-// evenly turned ones whose cylinder fits best, the rulings across. Exactly developable (b is a
-// translate of a) and, on a doubly curved patch, far nearer its points than the flat strip: the
-// automatic approximation starts from it. A rectangle (a trapezoid would not be developable).
-// Throws as above.
+// The same strip, a rectangle, bent into the general cylinder that fits the points best: the
+// height a cubic along the curves plus a tilt across, the curves along the direction above or
+// one of kCylinderDirections turned ones, whichever fits best. Exactly developable (b is a
+// translate of a). Throws as above.
 CompositeSurface initialCylinderStrip(const std::vector<Vec3>& points,
                                       const std::vector<Vec3>& normals, const SplineSpace& space,
                                       double margin = 0.05);
@@ -52,34 +48,6 @@ inline constexpr int kCylinderDirections = 12;
 // Another direction replaces the first only where its cylinder's squared error is below this
 // fraction of the first's.
 inline constexpr double kCylinderDirectionGain = 0.8;
-
-// Whether the points, thinned at spacing ρ with a normal each, form one patch over their PCA
-// plane that a sheet laid over the plane can cover: at least kPatchNormalShare of the normals
-// within kPatchNormalAngle of the plane's normal (either sign), and in every cell of side 2ρ
-// of the plane the points' heights no farther apart than the cell's slope allows plus ρ. A
-// closed shape such as the bunny is not one (its sides turn away, its back lies behind its
-// front). False for fewer than 3 points or a missing normal.
-bool isPatchOverPlane(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
-                      double rho);
-inline constexpr double kPatchNormalAngle = 1.3089969389957472; // 75°
-inline constexpr double kPatchNormalShare = 0.98;
-
-
-// `count` strips side by side as one surface over the rectangle of the points in their PCA
-// plane, enlarged by `margin`, each two sharing a curve, a crease without a fold condition (free
-// to kink), so that the strips can bend apart while the surface stays watertight. Bent to the
-// points: their height over the plane fitted (least squares) as f(u) + g(w), f a cubic along
-// the curves, g piecewise linear across with its kinks at the shared curves, so every strip is
-// exactly a general cylinder (b a translate of a) and the surface developable as laid; a
-// saddle's or a sphere cap's height is such a sum in its principal directions. The curves run
-// where the normals turn most (a cylinder's around it), else along the longest axis, unless
-// one of kCylinderDirections evenly turned directions fits clearly better
-// (kCylinderDirectionGain), among those whose rectangle is at most kSheetAreaSlack times the
-// smallest. Named "strips". Throws as initialStrip, or for count < 1.
-CompositeSurface initialStripSheet(const std::vector<Vec3>& points,
-                                   const std::vector<Vec3>& normals, int count,
-                                   const SplineSpace& space, double margin = 0.05);
-inline constexpr double kSheetAreaSlack = 1.25;
 
 // Control points in `space` (open) of the curve `at` (t in [0, 1]), by least squares over
 // 4 samples per control point: exact for a curve of the space, such as a polynomial of at
@@ -108,13 +76,10 @@ inline constexpr double kBandAnisotropy = 1.5;
 std::vector<std::vector<std::size_t>> clusterPoints(const std::vector<Vec3>& points, int count);
 
 // The same groups, those over a doubly curved part drawn out into bands `aspect` times as long
-// as they are wide: k-means whose distance counts a step across such a group's band `aspect`
-// times a step along it, the band running where the group's normals (one per point, either
-// sign) turn most, or along its longest axis where they turn alike every way. A developable
-// strip follows a doubly curved shape along its curves; across them, along its rulings, it
-// stays within κ w² / 8 only for a narrow width w. A group whose normals turn one way or not
-// at all stays compact: a strip fits it at any width. aspect 1: clusterPoints above. Throws as
-// above, or for aspect < 1 or one normal per point missing.
+// as wide (k-means counting a step across the band `aspect` times), the band running where the
+// group's normals (either sign) turn most: a developable strip follows a doubly curved shape
+// only across a narrow width. aspect 1: clusterPoints above. Throws as above, or for aspect < 1
+// or one normal per point missing.
 std::vector<std::vector<std::size_t>> clusterPoints(const std::vector<Vec3>& points,
                                                     const std::vector<Vec3>& normals, int count,
                                                     double aspect);

@@ -4,6 +4,7 @@
 #include "model/reference/bounding_box.h"
 #include "model/reference/initial_strip.h"
 #include "model/reference/point_index.h"
+#include "model/reference/strip_sheet.h"
 #include "model/reference/strip_trim.h"
 #include "model/reference/surface_samples.h"
 #include "model/strip_joining.h"

@@ -93,6 +93,18 @@ std::function<void(app::ApproximateDialog*)> oneStrip(int iterations) {
     };
 }
 
+// Three new strips of 2 intervals, 30 iterations, as one surface over a patch or not.
+std::function<void(app::ApproximateDialog*)> threeStrips(bool oneSurface) {
+    return [oneSurface](app::ApproximateDialog* dialog) {
+        dialog->newStripsButton()->setChecked(true);
+        dialog->stripsBox()->setValue(3);
+        dialog->oneSurfaceBox()->setChecked(oneSurface);
+        dialog->intervalsBox()->setValue(2);
+        dialog->iterationsBox()->setValue(30);
+        dialog->accept();
+    };
+}
+
 // The dialog's "one surface" box starts checked and goes with the new strips.
 bool dialogBoxDefaultsToOneSurface(app::MainWindow& window) {
     app::ApproximateDialog dialog(window.workspace()->document()->project(), &window);
@@ -221,13 +233,7 @@ private slots:
         app::ApproximateReaction* reaction = reactionOf(window);
         QSignalSpy finished(reaction, &app::ApproximateReaction::finished);
         QTimer poll;
-        whenDialogOpens(poll, [](app::ApproximateDialog* dialog) {
-            dialog->newStripsButton()->setChecked(true);
-            dialog->stripsBox()->setValue(3);
-            dialog->intervalsBox()->setValue(2);
-            dialog->iterationsBox()->setValue(30);
-            dialog->accept();
-        });
+        whenDialogOpens(poll, threeStrips(true));
         window.action(QStringLiteral("actionApproximateReference"))->trigger();
         QVERIFY(finished.wait(120000));
         QVERIFY2(finished.front().at(0).toBool(), qPrintable(finished.front().at(1).toString()));
@@ -251,14 +257,7 @@ private slots:
         QVERIFY(dialogBoxDefaultsToOneSurface(window));
         finished.clear();
         QTimer again;
-        whenDialogOpens(again, [](app::ApproximateDialog* dialog) {
-            dialog->newStripsButton()->setChecked(true);
-            dialog->stripsBox()->setValue(3);
-            dialog->oneSurfaceBox()->setChecked(false);
-            dialog->intervalsBox()->setValue(2);
-            dialog->iterationsBox()->setValue(30);
-            dialog->accept();
-        });
+        whenDialogOpens(again, threeStrips(false));
         window.action(QStringLiteral("actionApproximateReference"))->trigger();
         QVERIFY(finished.wait(120000));
         QVERIFY2(finished.front().at(0).toBool(), qPrintable(finished.front().at(1).toString()));
