@@ -120,10 +120,43 @@ int layoutPieces(std::vector<PatternPiece>& pieces, const PatternOptions& option
                  std::vector<PatternProblem>& problems) {
     const double gap = std::max(0.0, options.gap);
     if (!options.layout) {
-        double x = 0.0;
-        for (PatternPiece& piece : pieces) {
+        // In rows from the top down, each at most kSideBySideRowAspect times as wide as the
+        // pieces' square (or the widest piece), so that many long pieces (rings) still read.
+        double area = 0.0;
+        double widest = 0.0;
+        for (const PatternPiece& piece : pieces) {
             const auto [lo, hi] = pieceBounds(piece);
-            transformPiece(piece, Placement{0.0, Vec2(x - lo.x, -lo.y)});
+            area += (hi.x - lo.x + gap) * (hi.y - lo.y + gap);
+            widest = std::max(widest, hi.x - lo.x);
+        }
+        const double rowWidth = std::max(widest, kSideBySideRowAspect * std::sqrt(area));
+        // First the rows and their heights, then each row on its baseline: the first at y = 0,
+        // every next one below the last.
+        std::vector<int> rowOf(pieces.size(), 0);
+        std::vector<double> rowHeight(1, 0.0);
+        double x = 0.0;
+        for (std::size_t i = 0; i < pieces.size(); ++i) {
+            const auto [lo, hi] = pieceBounds(pieces[i]);
+            if (x > 0.0 && x + (hi.x - lo.x) > rowWidth) {
+                x = 0.0;
+                rowHeight.push_back(0.0);
+            }
+            rowOf[i] = static_cast<int>(rowHeight.size()) - 1;
+            rowHeight.back() = std::max(rowHeight.back(), hi.y - lo.y);
+            x += hi.x - lo.x + gap;
+        }
+        std::vector<double> baseline(rowHeight.size(), 0.0);
+        for (std::size_t r = 1; r < rowHeight.size(); ++r) {
+            baseline[r] = baseline[r - 1] - gap - rowHeight[r];
+        }
+        x = 0.0;
+        for (std::size_t i = 0; i < pieces.size(); ++i) {
+            if (i > 0 && rowOf[i] != rowOf[i - 1]) {
+                x = 0.0;
+            }
+            PatternPiece& piece = pieces[i];
+            const auto [lo, hi] = pieceBounds(piece);
+            transformPiece(piece, Placement{0.0, Vec2(x - lo.x, baseline[rowOf[i]] - lo.y)});
             piece.sheet = 0;
             piece.size = hi - lo;
             x += hi.x - lo.x + gap;

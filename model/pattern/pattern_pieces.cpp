@@ -404,20 +404,37 @@ bool anyOverlapsItself(const std::vector<PieceBuild>& builds) {
     });
 }
 
+double worstIsometryError(const std::vector<PieceBuild>& builds) {
+    double worst = 0.0;
+    for (const PieceBuild& build : builds) {
+        worst = std::max(worst, build.piece.maxIsometryError);
+    }
+    return worst;
+}
+
+// mm: a piece whose edges are off by more does not close up where it was cut open.
+constexpr double kRowsIsometryError = 1.0;
+
 } // namespace
 
 std::vector<PieceBuild> developSurface(const CompositeSurface& surface, int surfaceIndex,
                                        const PatternOptions& options, int& nameIndex) {
     const int first = nameIndex;
+    const std::set<EdgeId> cutOpen = chooseCutEdges(surface);
     std::vector<PieceBuild> builds =
-        developAlong(surface, surfaceIndex, options, nameIndex, chooseCutEdges(surface));
-    // A closed surface has no one sheet to keep: where its pieces overlap themselves, it is
-    // cut along its creases too (a torus of cones: one annular sector per row of strips).
-    if (isClosed(surface) && anyOverlapsItself(builds)) {
+        developAlong(surface, surfaceIndex, options, nameIndex, cutOpen);
+    // A surface that closes around (closed, or cut open to develop at all) may have no one
+    // sheet to keep: where its pieces overlap themselves or do not close up (an edge off its
+    // length by more than kRowsIsometryError), it is cut along its creases too (a torus of
+    // cones, or rings of cones laid around a closed shape: one annular sector per row of
+    // strips), if that is better.
+    if ((isClosed(surface) || !cutOpen.empty()) &&
+        (anyOverlapsItself(builds) || worstIsometryError(builds) > kRowsIsometryError)) {
         int next = first;
         std::vector<PieceBuild> rows =
             developAlong(surface, surfaceIndex, options, next, chooseCutEdges(surface, true));
-        if (!anyOverlapsItself(rows)) {
+        if (!anyOverlapsItself(rows) &&
+            (anyOverlapsItself(builds) || worstIsometryError(rows) < worstIsometryError(builds))) {
             nameIndex = next;
             return rows;
         }

@@ -2,6 +2,7 @@
 
 #include "model/examples.h"
 #include "model/pattern/cutting_pattern.h"
+#include "model/pattern/pattern_geometry.h"
 #include "model/sampled_mesh.h"
 #include "pattern_test_geometry.h"
 #include "test_registry.h"
@@ -90,6 +91,42 @@ private slots:
                     QString("%1: %2 vs %3").arg(info.name.c_str()).arg(developed).arg(area3d)));
             QVERIFY(std::abs(pieceAreas - area3d) < 1e-3 * area3d);
         }
+    }
+
+    void manyPiecesSideBySideWrapIntoRows() {
+        // The torus's pieces without a layout: in rows no wider than 1.5 times the side of
+        // their square (or the widest piece), the first on y = 0, none overlapping another.
+        const Project project = makeExample("torus");
+        const CuttingPattern pattern = buildCuttingPattern(project, withoutLayout());
+        QVERIFY(pattern.pieces.size() >= 4);
+        const double gap = withoutLayout().gap;
+        double area = 0.0;
+        double widest = 0.0;
+        std::vector<std::pair<Vec2, Vec2>> boxes;
+        for (const PatternPiece& piece : pattern.pieces) {
+            boxes.push_back(pattern::pieceBounds(piece));
+            const Vec2 size = boxes.back().second - boxes.back().first;
+            area += (size.x + gap) * (size.y + gap);
+            widest = std::max(widest, size.x);
+        }
+        double left = 1e300;
+        double right = -1e300;
+        double bottom = 1e300;
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+            left = std::min(left, boxes[i].first.x);
+            right = std::max(right, boxes[i].second.x);
+            bottom = std::min(bottom, boxes[i].first.y);
+            for (std::size_t j = 0; j < i; ++j) {
+                const bool apart = boxes[i].second.x <= boxes[j].first.x + 1e-9 ||
+                                   boxes[j].second.x <= boxes[i].first.x + 1e-9 ||
+                                   boxes[i].second.y <= boxes[j].first.y + 1e-9 ||
+                                   boxes[j].second.y <= boxes[i].first.y + 1e-9;
+                QVERIFY(apart);
+            }
+        }
+        QVERIFY(std::abs(boxes.front().first.y) < 1e-9);
+        QVERIFY(right - left <= std::max(widest, 1.5 * std::sqrt(area)) + 1e-9);
+        QVERIFY(bottom < 0.0); // more than one row
     }
 };
 
