@@ -1349,13 +1349,13 @@
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="56"/>
-        <source>As &amp;one surface where the shape is one patch</source>
-        <translation>Als &amp;eine Fläche, wo die Form ein einziger Bereich ist</translation>
+        <source>As &amp;one surface where the shape allows</source>
+        <translation>Als &amp;eine Fläche, wo die Form es zulässt</translation>
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="56"/>
-        <source>Over a shape seen from one side (a panel, not a closed shape), lay the new strips side by side as one watertight surface, bent to the shape, each two sharing a curve along which they may kink. Off: separate strips over patches of the shape, as over a closed shape.</source>
-        <translation>Über einer von einer Seite gesehenen Form (einer Platte, keiner geschlossenen Form) die neuen Streifen nebeneinander als eine wasserdichte Fläche legen, an die Form angebogen, je zwei mit einer gemeinsamen Kurve, entlang der sie knicken dürfen. Aus: getrennte Streifen über Bereiche der Form, wie über einer geschlossenen Form.</translation>
+        <source>Over a shape seen from one side (a panel), lay the new strips side by side as one watertight surface, bent to the shape, each two sharing a curve along which they may kink; around a shape that closes around an axis (a tube, a vase, a sphere), lay them as rings one after another, one surface open only at its two ends. Off, or over any other shape: separate strips over patches of the shape.</source>
+        <translation>Über einer von einer Seite gesehenen Form (einer Platte) die neuen Streifen nebeneinander als eine wasserdichte Fläche legen, an die Form angebogen, je zwei mit einer gemeinsamen Kurve, entlang der sie knicken dürfen; um eine Form, die sich um eine Achse schließt (ein Rohr, eine Vase, eine Kugel), sie als Ringe hintereinander legen, eine Fläche, nur an ihren beiden Enden offen. Aus, oder über jeder anderen Form: getrennte Streifen über Bereiche der Form.</translation>
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="56"/>
@@ -1541,6 +1541,14 @@
         <translation>
             <numerusform>%n Fläche, zu weit von der Form entfernt, blieb unverändert.</numerusform>
             <numerusform>%n Flächen, zu weit von der Form entfernt, blieben unverändert.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
+        <source>The reference shape closes around an axis: its %n strip(s) were laid as rings one after another around it, one surface open only at its two ends.</source>
+        <translation>
+            <numerusform>Die Referenzform schließt sich um eine Achse: ihr %n Streifen wurde als Ring um sie gelegt, eine Fläche, nur an ihren beiden Enden offen.</numerusform>
+            <numerusform>Die Referenzform schließt sich um eine Achse: ihre %n Streifen wurden als Ringe hintereinander um sie gelegt, eine Fläche, nur an ihren beiden Enden offen.</numerusform>
         </translation>
     </message>
     <message numerus="yes">

@@ -146,6 +146,14 @@
     </message>
     <message numerus="yes">
         <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
+        <source>The reference shape closes around an axis: its %n strip(s) were laid as rings one after another around it, one surface open only at its two ends.</source>
+        <translation>
+            <numerusform>The reference shape closes around an axis: its %n strip was laid as a ring around it, one surface open only at its two ends.</numerusform>
+            <numerusform>The reference shape closes around an axis: its %n strips were laid as rings one after another around it, one surface open only at its two ends.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
         <source>The reference shape is one patch: its %n strip(s) were laid side by side as one watertight surface.</source>
         <translation>
             <numerusform>The reference shape is one patch: its %n strip was laid as one watertight surface.</numerusform>

@@ -1338,13 +1338,13 @@
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="56"/>
-        <source>As &amp;one surface where the shape is one patch</source>
-        <translation>形状が一つのパッチなら一つの曲面として(&amp;O)</translation>
+        <source>As &amp;one surface where the shape allows</source>
+        <translation>形状が許す場合は一つの曲面として(&amp;O)</translation>
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="56"/>
-        <source>Over a shape seen from one side (a panel, not a closed shape), lay the new strips side by side as one watertight surface, bent to the shape, each two sharing a curve along which they may kink. Off: separate strips over patches of the shape, as over a closed shape.</source>
-        <translation>一方から見た形状（閉じた形状ではなくパネル）では、新しいストリップを並べ、形状に沿って曲げた一つの水密な曲面として配置します。隣り合う二本は折れ曲がってもよい曲線を共有します。オフ: 閉じた形状と同様に、形状の領域ごとに別々のストリップを置きます。</translation>
+        <source>Over a shape seen from one side (a panel), lay the new strips side by side as one watertight surface, bent to the shape, each two sharing a curve along which they may kink; around a shape that closes around an axis (a tube, a vase, a sphere), lay them as rings one after another, one surface open only at its two ends. Off, or over any other shape: separate strips over patches of the shape.</source>
+        <translation>片側から見える形状(パネル)の上では、新しいストリップを横に並べて一つの水密な曲面として敷き、形状に沿って曲げ、隣り合う二つは折れ曲がってよい曲線を共有します。軸の周りに閉じた形状(筒、花瓶、球)の周りでは、リングとして順に敷き、両端だけが開いた一つの曲面にします。オフ、またはその他の形状では、形状のパッチごとに別々のストリップを敷きます。</translation>
     </message>
     <message>
         <location filename="../app/gui/approximate_dialog.cpp" line="56"/>
@@ -1526,6 +1526,13 @@
         <source>%n surface(s) too far from the shape were left as they were.</source>
         <translation>
             <numerusform>形状から遠すぎる %n 個の曲面はそのままです。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/gui/reactions/approximate_reaction.cpp" line="290"/>
+        <source>The reference shape closes around an axis: its %n strip(s) were laid as rings one after another around it, one surface open only at its two ends.</source>
+        <translation>
+            <numerusform>参照形状は軸の周りに閉じています。その %n 本のストリップをリングとして順に周りに敷き、両端だけが開いた一つの曲面にしました。</numerusform>
         </translation>
     </message>
     <message numerus="yes">

@@ -109,6 +109,14 @@ int runApproximateCommand(const SubcommandArguments& args) {
                          "curve\n";
             project.addSurface(std::move(*sheet));
             oneSurface = true;
+        } else if (std::optional<model::CompositeSurface> rings =
+                       solver::initialStripRings(thinnedTarget, strips, intervals)) {
+            // Closed around an axis: rings one after another, watertight but for the ends.
+            std::cout << "The target closes around an axis: " << strips
+                      << " rings laid one after another around it as one surface, each two "
+                         "sharing a closed curve\n";
+            project.addSurface(std::move(*rings));
+            oneSurface = true;
         }
     }
     if (!from && !oneSurface) {

@@ -277,8 +277,13 @@ const std::vector<SubcommandSpec>& subcommands() {
          "are laid side by side as one surface instead, each two sharing a curve\n"
          "that may kink, bent to the target (its height a cubic along the curves\n"
          "plus a piecewise linear function across them, so every strip is a\n"
-         "cylinder): watertight as laid, then pulled as one surface (--separate:\n"
-         "strips over patches as above). With --join,\n"
+         "cylinder): watertight as laid, then pulled as one surface. Where the\n"
+         "target instead closes around an axis (a tube, a vase, a sphere; one\n"
+         "layer all around the line through its slabs' centres), K >= 2 rings\n"
+         "are laid one after another around it, each two sharing a closed curve,\n"
+         "every curve a scaled copy of one fitted closed curve so every ring is\n"
+         "a cone: watertight but for its two ends (--separate: strips over\n"
+         "patches as above, for either). With --join,\n"
          "the strips become one surface: the boundary curves or rulings of two\n"
          "strips that face each other (ends and middles apart by at most 20 %\n"
          "of their length) are pulled onto each other in a second approximation,\n"
@@ -289,7 +294,7 @@ const std::vector<SubcommandSpec>& subcommands() {
           {"intervals", "N", "Spline intervals of each new strip (default 4)."},
           {"iterations", "N", "Iterations of the pull (default 30)."},
           {"rho", "R", "The thinning radius in mm."},
-          {"separate", "", "Separate strips over patches, even where the target is one patch."},
+          {"separate", "", "Separate strips over patches, even over one patch or around an axis."},
           {"join", "", "Join strips whose edges face each other into one surface."},
           kOutputProject}},
         {"join",

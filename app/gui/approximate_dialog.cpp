@@ -69,14 +69,15 @@ ApproximateDialog::ApproximateDialog(const model::Project& project, QWidget* par
     if (!hasSurfaces) {
         m_design->setToolTip(tr("The design has no surface yet."));
     }
-    m_oneSurface = new QCheckBox(tr("As &one surface where the shape is one patch"), this);
+    m_oneSurface = new QCheckBox(tr("As &one surface where the shape allows"), this);
     m_oneSurface->setObjectName(QStringLiteral("oneSurfaceBox"));
     m_oneSurface->setChecked(true);
     m_oneSurface->setToolTip(
-        tr("Over a shape seen from one side (a panel, not a closed shape), lay the new strips "
-           "side by side as one watertight surface, bent to the shape, each two sharing a curve "
-           "along which they may kink. Off: separate strips over patches of the shape, as over "
-           "a closed shape."));
+        tr("Over a shape seen from one side (a panel), lay the new strips side by side as one "
+           "watertight surface, bent to the shape, each two sharing a curve along which they may "
+           "kink; around a shape that closes around an axis (a tube, a vase, a sphere), lay them "
+           "as rings one after another, one surface open only at its two ends. Off, or over any "
+           "other shape: separate strips over patches of the shape."));
     m_newStrips->setChecked(true);
     auto* start = new QVBoxLayout;
     start->addLayout(stripsRow);

@@ -18,7 +18,7 @@ struct ApproximationChoice {
     int shape = 0;          // index into the project's reference shapes
     bool newStrips = true;  // K new flat strips, or the design's surfaces
     int strips = 4;         // K
-    bool oneSurface = true; // new strips over one patch laid side by side as one surface
+    bool oneSurface = true; // new strips laid as one surface over a patch or around an axis
     int intervals = 4;      // spline intervals per new strip
     int iterations = 30;    // of the pull (the job adds its fading iterations)
     double rho = 0.0;       // thinning radius, mm

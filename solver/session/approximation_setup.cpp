@@ -4,6 +4,7 @@
 #include "model/reference/bounding_box.h"
 #include "model/reference/initial_strip.h"
 #include "model/reference/point_index.h"
+#include "model/reference/strip_rings.h"
 #include "model/reference/strip_sheet.h"
 #include "model/reference/strip_trim.h"
 #include "model/reference/surface_samples.h"
@@ -75,16 +76,25 @@ std::vector<model::CompositeSurface> initialStrips(const ThinnedTarget& target, 
     return strips;
 }
 
-std::optional<model::CompositeSurface> initialStripSheet(const ThinnedTarget& target, int count,
-                                                         int intervals, int firstNumber) {
-    std::vector<model::Vec3> positions;
-    std::vector<model::Vec3> normals;
+namespace {
+
+void thinnedPositionsAndNormals(const ThinnedTarget& target, std::vector<model::Vec3>& positions,
+                                std::vector<model::Vec3>& normals) {
     positions.reserve(target.thinned.points.size());
     normals.reserve(target.thinned.points.size());
     for (const model::reference::ThinnedPoint& p : target.thinned.points) {
         positions.push_back(p.position);
         normals.push_back(p.normal);
     }
+}
+
+} // namespace
+
+std::optional<model::CompositeSurface> initialStripSheet(const ThinnedTarget& target, int count,
+                                                         int intervals, int firstNumber) {
+    std::vector<model::Vec3> positions;
+    std::vector<model::Vec3> normals;
+    thinnedPositionsAndNormals(target, positions, normals);
     if (count < 2 || !model::reference::isPatchOverPlane(positions, normals, target.rho)) {
         return std::nullopt;
     }
@@ -95,6 +105,24 @@ std::optional<model::CompositeSurface> initialStripSheet(const ThinnedTarget& ta
         return sheet;
     } catch (const std::invalid_argument&) {
         return std::nullopt; // the points on a line: strips over their patches instead
+    }
+}
+
+std::optional<model::CompositeSurface> initialStripRings(const ThinnedTarget& target, int count,
+                                                         int intervals, int firstNumber) {
+    std::vector<model::Vec3> positions;
+    std::vector<model::Vec3> normals;
+    thinnedPositionsAndNormals(target, positions, normals);
+    if (count < 2) {
+        return std::nullopt;
+    }
+    try {
+        model::CompositeSurface rings = model::reference::initialStripRings(
+            positions, normals, target.rho, count, model::SplineSpace{3, 2, intervals});
+        rings.setName("rings " + std::to_string(firstNumber));
+        return rings;
+    } catch (const std::invalid_argument&) {
+        return std::nullopt; // no axis it closes around: strips over its patches instead
     }
 }
 
@@ -208,8 +236,12 @@ ApproximationSetup prepareApproximation(const std::vector<model::Vec3>& points,
         return setup;
     }
     std::optional<model::CompositeSurface> sheet;
-    if (setup.newStrips && options.oneSurfaceOverAPatch && strips >= 2) {
+    if (setup.newStrips && options.oneSurface && strips >= 2) {
         sheet = initialStripSheet(setup.target, strips, options.intervals, firstNumber);
+        if (!sheet) {
+            sheet = initialStripRings(setup.target, strips, options.intervals, firstNumber);
+            setup.stripsAsRings = sheet.has_value();
+        }
     }
     if (sheet) {
         // One surface, pulled as a design's surfaces are: no cylinder start, no trim (both

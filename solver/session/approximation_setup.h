@@ -74,6 +74,13 @@ std::vector<model::CompositeSurface> initialStrips(const ThinnedTarget& target, 
 std::optional<model::CompositeSurface> initialStripSheet(const ThinnedTarget& target, int count,
                                                          int intervals, int firstNumber = 1);
 
+// Where the thinned target closes around an axis (model::reference::tubeAxis), `count` ≥ 2
+// rings one after another around it as one surface (initialStripRings with the thinned normals,
+// `intervals` intervals per quarter), named "rings N" with N = firstNumber: watertight but for
+// its two ends. None for any other target.
+std::optional<model::CompositeSurface> initialStripRings(const ThinnedTarget& target, int count,
+                                                         int intervals, int firstNumber = 1);
+
 // Every thinned point goes to the surface nearest to it (its nearest dense sample).
 struct SurfaceTargets {
     std::vector<std::vector<model::Vec3>> points; // per surface
@@ -100,8 +107,9 @@ struct ApproximationOptions {
     double rho = 0.0;  // thinning radius; ≤ 0: defaultApproximationRadius
     std::optional<int> iterations;
     // New strips over a target that is one patch are laid side by side as one surface
-    // (initialStripSheet); false: separate strips over its patches always.
-    bool oneSurfaceOverAPatch = true;
+    // (initialStripSheet), over one that closes around an axis as rings one after another
+    // (initialStripRings); false: separate strips over its patches always.
+    bool oneSurface = true;
 };
 
 struct ApproximationSetup {
@@ -116,10 +124,12 @@ struct ApproximationSetup {
     ThinnedTarget target;
     std::vector<model::CompositeSurface> surfaces; // the start: `start` or the new strips
     bool newStrips = false;
-    // The new strips were laid side by side as one surface (ApproximationOptions::
-    // oneSurfaceOverAPatch): `surfaces` holds that one surface, new (newStrips) but pulled
-    // as a design's surfaces are, without the cylinder start and trim of single strips.
+    // The new strips were laid as one surface (ApproximationOptions::oneSurface): `surfaces`
+    // holds that one surface, new (newStrips) but pulled as a design's surfaces are, without
+    // the cylinder start and trim of single strips. As rings around the target's axis, or
+    // side by side over its patch.
     int stripsInOneSurface = 0;
+    bool stripsAsRings = false;
     SurfaceTargets targets;
     JobRequest request;
     double milliseconds = 0.0; // the setup's time

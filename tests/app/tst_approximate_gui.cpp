@@ -9,6 +9,7 @@
 #include "model/document/commands/reference_shapes_command.h"
 #include "model/document/document.h"
 #include "model/reference/distance_report.h"
+#include "model/reference/strip_rings.h"
 #include "model/reference/thinning.h"
 #include "model/strip_joining.h"
 #include "reactions/approximate_reaction.h"
@@ -62,6 +63,24 @@ model::ReferenceShape parabolicCylinder() {
 void openCylinderOnly(app::MainWindow& window) {
     model::Project project;
     project.referenceShapes.push_back(parabolicCylinder());
+    window.workspace()->document()->resetProject(project);
+}
+
+// A project holding only a sphere of radius 100 (but 3° about its poles), which closes around
+// an axis.
+void openSphereOnly(app::MainWindow& window) {
+    model::ReferenceShape sphere{"sphere", "", {}, {}, {}};
+    for (int i = 0; i <= 40; ++i) {
+        const double theta = 0.05 + 3.04 * i / 40;
+        for (int j = 0; j < 60; ++j) {
+            const double phi = 6.283185307179586 * j / 60;
+            sphere.points.push_back(Vec3(std::sin(theta) * std::cos(phi),
+                                         std::sin(theta) * std::sin(phi), std::cos(theta)) *
+                                    100.0);
+        }
+    }
+    model::Project project;
+    project.referenceShapes.push_back(sphere);
     window.workspace()->document()->resetProject(project);
 }
 
@@ -263,6 +282,32 @@ private slots:
         QVERIFY2(finished.front().at(0).toBool(), qPrintable(finished.front().at(1).toString()));
         QVERIFY(!finished.front().at(1).toString().contains(QStringLiteral("one watertight")));
         QCOMPARE(doc->surfaceCount(), 3);
+    }
+
+    void stripsAroundAClosedShapeBecomeRings() {
+        // Three new strips around a sphere: one surface of three rings, open only at the poles,
+        // developable; the sentence says so; one undo step.
+        app::MainWindow window;
+        QVERIFY(test::showActiveWithExample(window, QStringLiteral("sheet")));
+        openSphereOnly(window);
+        document::Document* doc = window.workspace()->document();
+        const int steps = doc->undoStack()->count();
+        QSignalSpy finished(reactionOf(window), &app::ApproximateReaction::finished);
+        QTimer poll;
+        whenDialogOpens(poll, threeStrips(true));
+        window.action(QStringLiteral("actionApproximateReference"))->trigger();
+        QVERIFY(finished.wait(120000));
+        const QString sentence = finished.front().at(1).toString();
+        QVERIFY2(finished.front().at(0).toBool(), qPrintable(sentence));
+        QVERIFY2(sentence.contains(QStringLiteral("closes around an axis: its 3 strips were laid "
+                                                  "as rings")),
+                 qPrintable(sentence));
+        QCOMPARE(doc->undoStack()->count(), steps + 1);
+        QCOMPARE(doc->surfaceCount(), 1);
+        const model::CompositeSurface surface = doc->surface(0);
+        QCOMPARE(surface.faces().size(), std::size_t(3 * model::reference::kRingSectors));
+        QCOMPARE(model::surfaceParts(surface).size(), std::size_t(1));
+        QVERIFY(test::sampledDevelopability(surface) <= 1e-8);
     }
 
     void pullsTheDesignsSurfaces() {

@@ -4,6 +4,7 @@
 
 #include "model/reference/distance_report.h"
 #include "model/reference/initial_strip.h"
+#include "model/reference/strip_rings.h"
 #include "model/reference/thinning.h"
 #include "model/strip_joining.h"
 #include "sampled_developability.h"
@@ -194,7 +195,7 @@ private slots:
         solver::ApproximationOptions options;
         options.strips = 2;
         options.intervals = 2;
-        options.oneSurfaceOverAPatch = false; // separate strips, as over a closed shape
+        options.oneSurface = false; // separate strips, as over a closed shape
         const solver::ApproximationSetup setup = solver::prepareApproximation(points, {}, options);
         QCOMPARE(setup.surfaces.size(), std::size_t(2));
         solver::SolveJob job;
@@ -251,7 +252,24 @@ private slots:
               distance.targetToSurface.max / distance.diagonal, distance.coverage);
         QVERIFY(distance.targetToSurface.mean <= 1e-3 * distance.diagonal);
         QCOMPARE(distance.coverage, 1.0);
-        // A closed shape is no patch: separate strips.
+        // A torus is neither one patch nor closed around an axis: separate strips.
+        const std::vector<Vec3> torus = sampleGrid(
+            [](double s, double t) {
+                const double phi = 6.2 * s;
+                const double psi = 6.2 * t;
+                return Vec3((100 + 30 * std::cos(psi)) * std::cos(phi),
+                            (100 + 30 * std::cos(psi)) * std::sin(phi), 30 * std::sin(psi));
+            },
+            120, 40);
+        const solver::ApproximationSetup apart = solver::prepareApproximation(torus, {}, options);
+        QCOMPARE(apart.stripsInOneSurface, 0);
+        QCOMPARE(apart.surfaces.size(), std::size_t(3));
+    }
+
+    void ringsAroundAClosedShapeAreOneSurface() {
+        // A sphere of radius 100 (all but 3° at its poles) closes around an axis: four new
+        // strips are laid as rings one after another around it, one surface open only at the
+        // poles, and pulled as one: watertight, exactly developable and close.
         const std::vector<Vec3> sphere = sampleGrid(
             [](double s, double t) {
                 const double theta = 0.05 + 3.04 * s;
@@ -261,9 +279,37 @@ private slots:
                        100.0;
             },
             40, 60);
+        solver::ApproximationOptions options;
+        options.strips = 4;
+        options.intervals = 2;
+        const solver::ApproximationSetup setup = solver::prepareApproximation(sphere, {}, options);
+        QCOMPARE(setup.error, solver::ApproximationSetup::Error::None);
+        QCOMPARE(setup.surfaces.size(), std::size_t(1));
+        QCOMPARE(setup.stripsInOneSurface, 4);
+        QVERIFY(setup.stripsAsRings);
+        QCOMPARE(setup.surfaces.front().faces().size(),
+                 std::size_t(4 * model::reference::kRingSectors));
+        solver::SolveJob job;
+        const solver::JobOutcome outcome = job.run(setup.request);
+        QVERIFY(outcome.ok);
+        const model::CompositeSurface& result = outcome.surfaces.front();
+        QVERIFY(outcome.assessments.front().summary.toleranceReached);
+        QCOMPARE(model::surfaceParts(result).size(), std::size_t(1));
+        QVERIFY(sampledDevelopability(result) <= 1e-8);
+        const model::reference::DistanceReport distance =
+            model::reference::measureDistance(outcome.surfaces, sphere);
+        qInfo("four rings around a sphere: target to surface mean %.3g, max %.3g of the "
+              "diagonal, coverage %.3g",
+              distance.targetToSurface.mean / distance.diagonal,
+              distance.targetToSurface.max / distance.diagonal, distance.coverage);
+        QVERIFY(distance.targetToSurface.mean <= 5e-3 * distance.diagonal);
+        QVERIFY(distance.coverage >= 0.9);
+        // Without one surface, separate strips over its patches.
+        options.oneSurface = false;
         const solver::ApproximationSetup apart = solver::prepareApproximation(sphere, {}, options);
         QCOMPARE(apart.stripsInOneSurface, 0);
-        QCOMPARE(apart.surfaces.size(), std::size_t(3));
+        QVERIFY(!apart.stripsAsRings);
+        QCOMPARE(apart.surfaces.size(), std::size_t(4));
     }
 
     void aNewStripIsTrimmedWhereItOverhangsTheShape() {

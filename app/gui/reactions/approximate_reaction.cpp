@@ -131,7 +131,7 @@ void ApproximateReaction::start(const ApproximationChoice& choice) {
         [run](const BackgroundRead::Progress& progress) {
             solver::ApproximationOptions options;
             options.strips = run->choice.strips;
-            options.oneSurfaceOverAPatch = run->choice.oneSurface;
+            options.oneSurface = run->choice.oneSurface;
             options.intervals = run->choice.intervals;
             options.rho = run->choice.rho;
             options.iterations = run->choice.iterations;
@@ -308,7 +308,12 @@ void ApproximateReaction::onMeasured() {
     // How strips ended other than pulled: also in the Solver panel, as the status bar elides
     // a long sentence.
     QString how;
-    if (run.setup.stripsInOneSurface > 0) {
+    if (run.setup.stripsInOneSurface > 0 && run.setup.stripsAsRings) {
+        how += QLatin1Char(' ') + tr("The reference shape closes around an axis: its %n strip(s) "
+                                     "were laid as rings one after another around it, one "
+                                     "surface open only at its two ends.",
+                                     nullptr, run.setup.stripsInOneSurface);
+    } else if (run.setup.stripsInOneSurface > 0) {
         how += QLatin1Char(' ') + tr("The reference shape is one patch: its %n strip(s) were laid "
                                      "side by side as one watertight surface.",
                                      nullptr, run.setup.stripsInOneSurface);
