@@ -110,7 +110,7 @@ int runApproximateCommand(const SubcommandArguments& args) {
             project.addSurface(std::move(*sheet));
             oneSurface = true;
         } else if (std::optional<model::CompositeSurface> rings =
-                       solver::initialStripRings(thinnedTarget, strips, intervals)) {
+                       solver::initialStripRings(thinnedTarget, points, strips, intervals)) {
             // Closed around an axis: rings one after another, watertight but for the ends.
             std::cout << "The target closes around an axis: " << strips
                       << " rings laid one after another around it as one surface, each two "

@@ -10,6 +10,7 @@
 #include <limits>
 #include <map>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 namespace devsurf::model::reference {
@@ -24,6 +25,7 @@ constexpr int kFitRounds = 8;
 // The rings the axes are compared with; a point's distance from the centre line is explained
 // by them within kExplainedRhos ρ or kExplainedFraction of the distance, whichever is larger.
 constexpr int kAxisTrialRings = 4;
+constexpr int kAxisRefinements = 2;
 constexpr double kExplainedRhos = 2.0;
 constexpr double kExplainedFraction = 0.1;
 // A fitted curve that comes nearer its centre than this fraction of its mean distance is
@@ -300,24 +302,34 @@ RingFit fitRings(const std::vector<Local>& local, double zLow, double zHigh, int
         fit.squaredError += e * e;
         fit.explained += std::abs(e) <= std::max(explainedWithin, kExplainedFraction * model);
     }
-    // Where the shape closes (a sphere's pole), an end curve would come out below the smallest
-    // scale: the end ring is shortened to where its cone reaches it, so it stays on the cone
-    // fitted there. Any other curve is held at the smallest scale.
+    // The end rings shortened along their cones, so they stay on the cones fitted there: where
+    // the shape closes (a sphere's pole) an end curve would come out below the smallest scale,
+    // and the ring ends where its cone reaches it; where it stays open (a tube's rim), the ring
+    // ends at the shape's end, the margin having served the fit only. Any other curve is held
+    // at the smallest scale.
     const double smallest = kRingSmallestScale * *std::max_element(scale.begin(), scale.end());
     for (int j = 0; j <= count; ++j) {
         fit.heights.push_back(fit.lines.z0 + fit.lines.step * j);
     }
-    for (const auto& [end, inner] : {std::pair{0, 1}, std::pair{count, count - 1}}) {
+    for (const auto& [end, inner, rim] :
+         {std::tuple{0, 1, zLow}, std::tuple{count, count - 1, zHigh}}) {
         const double outer = fit.scale[end];
         const double next = fit.scale[inner];
+        double t = 1.0;
         if (outer < smallest && next > smallest) {
-            const double t = (next - smallest) / (next - outer);
+            t = (next - smallest) / (next - outer);
+        } else if (outer >= smallest) {
+            t = std::clamp((rim - fit.heights[inner]) / (fit.heights[end] - fit.heights[inner]),
+                           0.0, 1.0);
+        }
+        if (t > 0.0 && t < 1.0) {
             const auto shorten = [&](std::vector<double>& v) {
                 v[end] = v[inner] + t * (v[end] - v[inner]);
             };
             shorten(fit.heights);
             shorten(fit.cx);
             shorten(fit.cy);
+            shorten(fit.scale);
         }
     }
     for (double& scaleAt : fit.scale) {
@@ -387,6 +399,54 @@ std::optional<Choice> chooseAxis(const std::vector<Vec3>& points, const std::vec
     return best;
 }
 
+void pointExtent(const std::vector<Local>& local, double& low, double& high) {
+    low = std::numeric_limits<double>::max();
+    high = std::numeric_limits<double>::lowest();
+    for (const Local& p : local) {
+        low = std::min(low, p.z);
+        high = std::max(high, p.z);
+    }
+}
+
+// The frame turned so that its axis runs along the least-squares line through the fitted
+// centres (the same sense, the same origin), e1 kept as near as it can be.
+AxisFrame alongCentres(const AxisFrame& frame, const RingFit& fit) {
+    std::vector<Vec3> centres;
+    for (std::size_t j = 0; j < fit.cx.size(); ++j) {
+        centres.push_back(frame.axis * fit.heights[j] + frame.e1 * fit.cx[j] +
+                          frame.e2 * fit.cy[j]);
+    }
+    Vec3 mean;
+    for (const Vec3& c : centres) {
+        mean += c / static_cast<double>(centres.size());
+    }
+    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+    for (const Vec3& c : centres) {
+        const Eigen::Vector3d d(c.x - mean.x, c.y - mean.y, c.z - mean.z);
+        scatter += d * d.transpose();
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
+    const Eigen::Vector3d top = eigen.eigenvectors().col(2);
+    Vec3 axis(top(0), top(1), top(2));
+    if (!(axis.norm() > 0.5) || !std::isfinite(axis.norm())) {
+        return frame;
+    }
+    axis = axis / axis.norm();
+    if (dot(axis, frame.axis) < 0.0) {
+        axis = -axis;
+    }
+    Vec3 e1 = frame.e1 - axis * dot(frame.e1, axis);
+    if (!(e1.norm() > 1e-6)) {
+        return frame;
+    }
+    AxisFrame turned;
+    turned.origin = frame.origin;
+    turned.axis = axis;
+    turned.e1 = e1 / e1.norm();
+    turned.e2 = cross(turned.axis, turned.e1);
+    return turned;
+}
+
 } // namespace
 
 std::optional<Vec3> tubeAxis(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
@@ -399,7 +459,8 @@ std::optional<Vec3> tubeAxis(const std::vector<Vec3>& points, const std::vector<
 
 CompositeSurface initialStripRings(const std::vector<Vec3>& points,
                                    const std::vector<Vec3>& normals, double rho, int count,
-                                   const SplineSpace& space, double margin) {
+                                   const SplineSpace& space, double margin,
+                                   const std::vector<Vec3>& whole) {
     if (count < 1) {
         throw std::invalid_argument("lay at least one ring");
     }
@@ -410,12 +471,48 @@ CompositeSurface initialStripRings(const std::vector<Vec3>& points,
     if (!choice) {
         throw std::invalid_argument("the points do not close around an axis");
     }
-    const AxisFrame& frame = choice->frame;
-    // Beyond the points by the margin, and by at least ρ: thinned points may stop short of the
-    // shape's ends by up to ρ.
-    const double beyond = std::max(margin * (choice->zHigh - choice->zLow), rho);
-    const RingFit fit = fitClearRings(choice->local, choice->zLow, choice->zHigh, count, beyond,
-                                      kExplainedRhos * rho);
+    // The principal axis of thinned points may lean (1.3° on a thinned tube): the fitted
+    // centres then drift across it, and the end curves would lie askew to a straight rim. The
+    // axis is turned onto the line through the centres, kAxisRefinements times.
+    AxisFrame frame = choice->frame;
+    std::vector<Local> local = choice->local;
+    for (int round = 0; round < kAxisRefinements; ++round) {
+        double low = 0.0;
+        double high = 0.0;
+        pointExtent(local, low, high);
+        const RingFit trial = fitClearRings(local, low, high, std::max(count, kAxisTrialRings), 0.0,
+                                            kExplainedRhos * rho);
+        if (trial.scale.empty()) {
+            break;
+        }
+        frame = alongCentres(frame, trial);
+        local = localPoints(points, frame);
+    }
+    // Along the whole shape, or else beyond the points by at least ρ: thinned points may stop
+    // short of the shape's ends by up to ρ.
+    double zLow = 0.0;
+    double zHigh = 0.0;
+    pointExtent(local, zLow, zHigh);
+    double least = rho;
+    if (!whole.empty()) {
+        zLow = std::numeric_limits<double>::max();
+        zHigh = std::numeric_limits<double>::lowest();
+        for (const Vec3& p : whole) {
+            const double z = dot(p - frame.origin, frame.axis);
+            if (std::isfinite(z)) {
+                zLow = std::min(zLow, z);
+                zHigh = std::max(zHigh, z);
+            }
+        }
+        least = 0.0;
+        if (!(zHigh > zLow)) {
+            throw std::invalid_argument("the whole shape has no extent along the axis");
+        }
+    }
+    zLow -= least;
+    zHigh += least;
+    const double beyond = std::max(margin * (zHigh - zLow), 0.0);
+    const RingFit fit = fitClearRings(local, zLow, zHigh, count, beyond, kExplainedRhos * rho);
     if (fit.scale.empty()) {
         throw std::invalid_argument("the points do not close around an axis");
     }

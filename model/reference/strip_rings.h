@@ -29,19 +29,26 @@ inline constexpr double kTubeNormalShare = 0.9;
 inline constexpr int kTubeAngularBins = 12;
 inline constexpr double kTubeFitShare = 0.95;
 
+inline constexpr double kRingMargin = 0.05;
+
 // `count` rings one after another along tubeAxis, each a band of kRingSectors faces closed
 // around it; each two rings share a closed curve with no crease condition, so the surface is
 // watertight (open only at its two ends) and may kink there. Bent to the points as laid: the
 // curves are scaled copies ρ_k C(θ) of one closed curve about centres on a polyline along the
-// axis, ρ and C fitted to the points' distances from that line by alternating least squares (C
-// a short Fourier series), so every ring is a general cone (or cylinder) and the surface is
-// developable. The rings span the points along the axis enlarged by `margin` at both ends; a
-// curve is at least kRingSmallestScale of the largest. Named "rings". Throws
-// std::invalid_argument where tubeAxis finds none, for count < 1, an invalid space or
-// margin < 0.
+// axis, the scales, the centres and C fitted to the points' distances from that line by
+// alternating least squares (C a short Fourier series), so every ring is a general cone (or
+// cylinder) and the surface is developable. The rings are fitted over `whole` (the shape the
+// points were thinned from; empty: the points, enlarged by ρ) along the axis enlarged by
+// `margin` at both ends, and the end rings then shortened along their cones: to the shape's
+// ends where it stays open, or where the shape closes (a sphere's pole: the end's fitted scale
+// below kRingSmallestScale of the largest) to where the cone reaches that scale. Every curve is
+// at least kRingSmallestScale of the largest. Named "rings". Throws std::invalid_argument where
+// tubeAxis finds none, for count < 1, an invalid space, margin < 0 or a `whole` without extent
+// along the axis.
 CompositeSurface initialStripRings(const std::vector<Vec3>& points,
                                    const std::vector<Vec3>& normals, double rho, int count,
-                                   const SplineSpace& space, double margin = 0.05);
+                                   const SplineSpace& space, double margin = kRingMargin,
+                                   const std::vector<Vec3>& whole = {});
 inline constexpr int kRingSectors = 4;
 inline constexpr double kRingSmallestScale = 0.1;
 

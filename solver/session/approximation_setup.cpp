@@ -108,8 +108,10 @@ std::optional<model::CompositeSurface> initialStripSheet(const ThinnedTarget& ta
     }
 }
 
-std::optional<model::CompositeSurface> initialStripRings(const ThinnedTarget& target, int count,
-                                                         int intervals, int firstNumber) {
+std::optional<model::CompositeSurface> initialStripRings(const ThinnedTarget& target,
+                                                         const std::vector<model::Vec3>& points,
+                                                         int count, int intervals,
+                                                         int firstNumber) {
     std::vector<model::Vec3> positions;
     std::vector<model::Vec3> normals;
     thinnedPositionsAndNormals(target, positions, normals);
@@ -118,7 +120,8 @@ std::optional<model::CompositeSurface> initialStripRings(const ThinnedTarget& ta
     }
     try {
         model::CompositeSurface rings = model::reference::initialStripRings(
-            positions, normals, target.rho, count, model::SplineSpace{3, 2, intervals});
+            positions, normals, target.rho, count, model::SplineSpace{3, 2, intervals},
+            model::reference::kRingMargin, points);
         rings.setName("rings " + std::to_string(firstNumber));
         return rings;
     } catch (const std::invalid_argument&) {
@@ -239,7 +242,7 @@ ApproximationSetup prepareApproximation(const std::vector<model::Vec3>& points,
     if (setup.newStrips && options.oneSurface && strips >= 2) {
         sheet = initialStripSheet(setup.target, strips, options.intervals, firstNumber);
         if (!sheet) {
-            sheet = initialStripRings(setup.target, strips, options.intervals, firstNumber);
+            sheet = initialStripRings(setup.target, points, strips, options.intervals, firstNumber);
             setup.stripsAsRings = sheet.has_value();
         }
     }

@@ -78,8 +78,11 @@ std::optional<model::CompositeSurface> initialStripSheet(const ThinnedTarget& ta
 // rings one after another around it as one surface (initialStripRings with the thinned normals,
 // `intervals` intervals per quarter), named "rings N" with N = firstNumber: watertight but for
 // its two ends. None for any other target.
-std::optional<model::CompositeSurface> initialStripRings(const ThinnedTarget& target, int count,
-                                                         int intervals, int firstNumber = 1);
+// `points` is the whole target, whose extent along the axis the rings span.
+std::optional<model::CompositeSurface> initialStripRings(const ThinnedTarget& target,
+                                                         const std::vector<model::Vec3>& points,
+                                                         int count, int intervals,
+                                                         int firstNumber = 1);
 
 // Every thinned point goes to the surface nearest to it (its nearest dense sample).
 struct SurfaceTargets {

@@ -118,6 +118,21 @@ private slots:
         qInfo("thinned tube: eight rings as laid, %.3g mm from it at most", off);
         QVERIFY2(off < 0.5, qPrintable(QString::number(off)));
         QVERIFY(sampledDevelopability(rings) < 1e-9);
+        // Given the whole tube, the rings end at its rims (fitted 5 % beyond them, then
+        // shortened along their cones), not ρ beyond.
+        const CompositeSurface rimmed =
+            initialStripRings(points, normals, 15.0, 8, {3, 2, 4}, kRingMargin, c.points);
+        double low = 1e300;
+        double high = -1e300;
+        for (const auto& [vertex, position] : rimmed.vertices()) {
+            (void)vertex;
+            low = std::min(low, position.z);
+            high = std::max(high, position.z);
+        }
+        QVERIFY2(std::abs(low + 120.0) < 1e-6 && std::abs(high - 120.0) < 1e-6,
+                 qPrintable(QString("%1 %2").arg(low).arg(high)));
+        QVERIFY(measureDistance(rimmed, c.points).targetToSurface.max < 0.5);
+        QVERIFY(sampledDevelopability(rimmed) < 1e-9);
     }
 
     void aroundAnAxisOrNot() {
