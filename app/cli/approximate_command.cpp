@@ -103,7 +103,7 @@ int runApproximateCommand(const SubcommandArguments& args) {
     if (!from && !args.isSet("separate")) {
         // A patch over its plane: the strips side by side as one surface, watertight.
         if (std::optional<model::CompositeSurface> sheet =
-                solver::initialStripSheet(thinnedTarget, strips, intervals)) {
+                solver::initialStripSheet(thinnedTarget, points, strips, intervals)) {
             std::cout << "The target is one patch: " << strips
                       << " strips laid side by side as one surface, each two sharing a "
                          "curve\n";

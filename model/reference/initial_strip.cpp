@@ -280,6 +280,9 @@ void extents(const std::vector<Vec3>& points, const Vec3& origin, const Vec3& al
     }
     for (const Vec3& p : points) {
         const double t[2] = {dot(p - origin, along), dot(p - origin, across)};
+        if (!std::isfinite(t[0]) || !std::isfinite(t[1])) {
+            continue;
+        }
         for (int i = 0; i < 2; ++i) {
             low[i] = std::min(low[i], t[i]);
             high[i] = std::max(high[i], t[i]);

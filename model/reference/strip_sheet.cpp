@@ -96,13 +96,14 @@ struct SheetFit {
 };
 
 std::optional<SheetFit> fitSheet(const std::vector<Vec3>& points, const PrincipalFrame& frame,
-                                 const Vec3& along, int count, double margin) {
+                                 const Vec3& along, int count, double margin,
+                                 const std::vector<Vec3>& whole) {
     SheetFit fit;
     fit.along = along;
     fit.across = cross(frame.axes[2], along);
     double low[2];
     double high[2];
-    extents(points, frame.centroid, fit.along, fit.across, low, high);
+    extents(whole.empty() ? points : whole, frame.centroid, fit.along, fit.across, low, high);
     const double length = high[0] - low[0];
     const double width = high[1] - low[1];
     if (!(width > 1e-9 * length) || !(length > 1e-9 * width)) {
@@ -148,7 +149,8 @@ std::optional<SheetFit> fitSheet(const std::vector<Vec3>& points, const Principa
 
 CompositeSurface initialStripSheet(const std::vector<Vec3>& points,
                                    const std::vector<Vec3>& normals, int count,
-                                   const SplineSpace& space, double margin) {
+                                   const SplineSpace& space, double margin,
+                                   const std::vector<Vec3>& whole) {
     if (count < 1) {
         throw std::invalid_argument("lay at least one strip");
     }
@@ -166,7 +168,7 @@ CompositeSurface initialStripSheet(const std::vector<Vec3>& points,
         first = t->direction;
     }
     std::vector<SheetFit> fits;
-    if (std::optional<SheetFit> fit = fitSheet(points, frame, first, count, margin)) {
+    if (std::optional<SheetFit> fit = fitSheet(points, frame, first, count, margin, whole)) {
         fits.push_back(std::move(*fit));
     } else {
         throw std::invalid_argument("the points do not spread in two directions");
@@ -174,7 +176,7 @@ CompositeSurface initialStripSheet(const std::vector<Vec3>& points,
     for (int k = 0; k < kCylinderDirections; ++k) {
         const double angle = M_PI * k / kCylinderDirections;
         const Vec3 along = frame.axes[0] * std::cos(angle) + frame.axes[1] * std::sin(angle);
-        if (std::optional<SheetFit> fit = fitSheet(points, frame, along, count, margin)) {
+        if (std::optional<SheetFit> fit = fitSheet(points, frame, along, count, margin, whole)) {
             fits.push_back(std::move(*fit));
         }
     }

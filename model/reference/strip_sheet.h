@@ -21,17 +21,19 @@ bool isPatchOverPlane(const std::vector<Vec3>& points, const std::vector<Vec3>& 
 inline constexpr double kPatchNormalAngle = 1.3089969389957472; // 75°
 inline constexpr double kPatchNormalShare = 0.98;
 
-// `count` strips in a row over the points' rectangle in their PCA plane (enlarged by
-// `margin`), each two sharing a curve with no crease condition, so the surface is watertight
-// and may kink there. Bent to the points as laid: the height fitted as f(u) + g(w), f a cubic
-// along the curves, g piecewise linear across with its kinks at the shared curves, so every
-// strip is a general cylinder and the surface is developable. The curves run where the normals
-// turn most (else the longest axis) unless another of kCylinderDirections directions fits
-// better by kCylinderDirectionGain, among those whose rectangle is at most kSheetAreaSlack
-// times the smallest. Named "strips". Throws as initialStrip, or for count < 1.
+// `count` strips in a row over the rectangle of the points (or of `whole`, the shape they
+// were thinned from, where given) in their PCA plane, enlarged by `margin`, each two sharing a
+// curve with no crease condition, so the surface is watertight and may kink there. Bent to the
+// points as laid: the height fitted as f(u) + g(w), f a cubic along the curves, g piecewise
+// linear across with its kinks at the shared curves, so every strip is a general cylinder and
+// the surface is developable. The curves run where the normals turn most (else the longest
+// axis) unless another of kCylinderDirections directions fits better by
+// kCylinderDirectionGain, among those whose rectangle is at most kSheetAreaSlack times the
+// smallest. Named "strips". Throws as initialStrip, or for count < 1.
 CompositeSurface initialStripSheet(const std::vector<Vec3>& points,
                                    const std::vector<Vec3>& normals, int count,
-                                   const SplineSpace& space, double margin = 0.05);
+                                   const SplineSpace& space, double margin = 0.05,
+                                   const std::vector<Vec3>& whole = {});
 inline constexpr double kSheetAreaSlack = 1.25;
 
 } // namespace devsurf::model::reference

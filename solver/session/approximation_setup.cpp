@@ -90,8 +90,10 @@ void thinnedPositionsAndNormals(const ThinnedTarget& target, std::vector<model::
 
 } // namespace
 
-std::optional<model::CompositeSurface> initialStripSheet(const ThinnedTarget& target, int count,
-                                                         int intervals, int firstNumber) {
+std::optional<model::CompositeSurface> initialStripSheet(const ThinnedTarget& target,
+                                                         const std::vector<model::Vec3>& points,
+                                                         int count, int intervals,
+                                                         int firstNumber) {
     std::vector<model::Vec3> positions;
     std::vector<model::Vec3> normals;
     thinnedPositionsAndNormals(target, positions, normals);
@@ -99,8 +101,9 @@ std::optional<model::CompositeSurface> initialStripSheet(const ThinnedTarget& ta
         return std::nullopt;
     }
     try {
+        // Over the whole target's rectangle, no margin: it ends where the target does.
         model::CompositeSurface sheet = model::reference::initialStripSheet(
-            positions, normals, count, model::SplineSpace{3, 2, intervals});
+            positions, normals, count, model::SplineSpace{3, 2, intervals}, 0.0, points);
         sheet.setName("strips " + std::to_string(firstNumber));
         return sheet;
     } catch (const std::invalid_argument&) {
@@ -240,7 +243,7 @@ ApproximationSetup prepareApproximation(const std::vector<model::Vec3>& points,
     }
     std::optional<model::CompositeSurface> sheet;
     if (setup.newStrips && options.oneSurface && strips >= 2) {
-        sheet = initialStripSheet(setup.target, strips, options.intervals, firstNumber);
+        sheet = initialStripSheet(setup.target, points, strips, options.intervals, firstNumber);
         if (!sheet) {
             sheet = initialStripRings(setup.target, points, strips, options.intervals, firstNumber);
             setup.stripsAsRings = sheet.has_value();

@@ -69,10 +69,13 @@ std::vector<model::CompositeSurface> initialStrips(const ThinnedTarget& target, 
 
 // Where the thinned target is one patch over its plane (model::reference::isPatchOverPlane),
 // `count` ≥ 2 strips side by side as one surface over it (initialStripSheet with the thinned
-// normals, `intervals` intervals), named "strips N" with N = firstNumber: watertight by
-// construction. None for any other target.
-std::optional<model::CompositeSurface> initialStripSheet(const ThinnedTarget& target, int count,
-                                                         int intervals, int firstNumber = 1);
+// normals, `intervals` intervals, over the rectangle of `points`, the whole target, without a
+// margin), named "strips N" with N = firstNumber: watertight by construction. None for any
+// other target.
+std::optional<model::CompositeSurface> initialStripSheet(const ThinnedTarget& target,
+                                                         const std::vector<model::Vec3>& points,
+                                                         int count, int intervals,
+                                                         int firstNumber = 1);
 
 // Where the thinned target closes around an axis (model::reference::tubeAxis), `count` ≥ 2
 // rings one after another around it as one surface (initialStripRings with the thinned normals,

@@ -65,6 +65,29 @@ private slots:
         QVERIFY(sampledDevelopability(sheet) < 1e-9);
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                                  initialStripSheet(points, normals, 0, {3, 2, 4}));
+        // Laid from the points between z = 20 and 180 over the rectangle of all of them, without
+        // a margin: the strips end where the cylinder does (z from 0 to 200, up to the tilt of
+        // the kept points' plane), not where the kept points do.
+        std::vector<Vec3> kept;
+        std::vector<Vec3> keptNormals;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            if (points[i].z >= 20.0 && points[i].z <= 180.0) {
+                kept.push_back(points[i]);
+                keptNormals.push_back(normals[i]);
+            }
+        }
+        const CompositeSurface whole =
+            initialStripSheet(kept, keptNormals, 3, {3, 2, 4}, 0.0, points);
+        double low = 1e300;
+        double high = -1e300;
+        for (const auto& [vertex, position] : whole.vertices()) {
+            (void)vertex;
+            low = std::min(low, position.z);
+            high = std::max(high, position.z);
+        }
+        QVERIFY2(std::abs(low) < 0.1 && std::abs(high - 200.0) < 0.1,
+                 qPrintable(QString("%1 %2").arg(low).arg(high)));
+        QVERIFY(sampledDevelopability(whole) < 1e-9);
     }
 
     void onePatchOrNot() {
