@@ -13,16 +13,10 @@
 
 namespace devsurf::model::reference {
 
-// The axis the points close around, if any: a principal axis (model::reference::principalFrame)
-// about which, in the plane across it, the points surround a centre line that runs through the
-// mean of every slab. On that axis at least kTubeNormalShare of the normals lie within
-// kPatchNormalAngle of the direction away from the centre line (either sign), in every slab
-// between its lines each of kTubeAngularBins angles around it holds points, in every cell of about
-// 2ρ × 2ρ (around × along) the distances from the centre line are no farther apart than the cell's
-// steepest slope allows, plus ρ: one layer all around; and four rings fitted as initialStripRings
-// fits them give the distance of at least kTubeFitShare of the points within 2ρ or a tenth (no limb
-// or bulge stands off). The axis of the three that passes and fits rings best; none for fewer than
-// 3 points, a missing normal or ρ ≤ 0.
+// The principal axis the thinned points (with normals, either sign) close around as one layer
+// with their normals facing away from it, where four fitted rings explain most of them; the
+// tests and thresholds are in docs/tuning.md, "Rings around a closed shape". None for fewer
+// than 3 points, a missing normal or ρ ≤ 0.
 std::optional<Vec3> tubeAxis(const std::vector<Vec3>& points, const std::vector<Vec3>& normals,
                              double rho);
 inline constexpr double kTubeNormalShare = 0.9;
@@ -31,20 +25,13 @@ inline constexpr double kTubeFitShare = 0.95;
 
 inline constexpr double kRingMargin = 0.05;
 
-// `count` rings one after another along tubeAxis, each a band of kRingSectors faces closed
-// around it; each two rings share a closed curve with no crease condition, so the surface is
-// watertight (open only at its two ends) and may kink there. Bent to the points as laid: the
-// curves are scaled copies ρ_k C(θ) of one closed curve about centres on a polyline along the
-// axis, the scales, the centres and C fitted to the points' distances from that line by
-// alternating least squares (C a short Fourier series), so every ring is a general cone (or
-// cylinder) and the surface is developable. The rings are fitted over `whole` (the shape the
-// points were thinned from; empty: the points, enlarged by ρ) along the axis enlarged by
-// `margin` at both ends, and the end rings then shortened along their cones: to the shape's
-// ends where it stays open, or where the shape closes (a sphere's pole: the end's fitted scale
-// below kRingSmallestScale of the largest) to where the cone reaches that scale. Every curve is
-// at least kRingSmallestScale of the largest. Named "rings". Throws std::invalid_argument where
-// tubeAxis finds none, for count < 1, an invalid space, margin < 0 or a `whole` without extent
-// along the axis.
+// `count` rings one after another around tubeAxis, kRingSectors faces each, each two sharing a
+// closed curve with no crease condition: watertight but for its two ends. Every curve is a
+// scaled copy of one fitted closed curve, so every ring is a cone and the surface developable as
+// laid. The rings span `whole` along the axis (empty: the points, plus ρ), fitted `margin`
+// beyond and then shortened along their cones to the shape's ends, or where it closes (a pole)
+// to kRingSmallestScale of the largest curve. Named "rings". Throws std::invalid_argument where
+// tubeAxis finds none, for count < 1, an invalid space or margin < 0.
 CompositeSurface initialStripRings(const std::vector<Vec3>& points,
                                    const std::vector<Vec3>& normals, double rho, int count,
                                    const SplineSpace& space, double margin = kRingMargin,
